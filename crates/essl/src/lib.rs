@@ -1,1 +1,7 @@
-pub fn placeholder() {}
+//! essl: a front end for GLSL ES 3.00 as WebGL2 accepts it.
+//!
+//! A shader travels one way, and the modules are named for where it is:
+//! `source` → `lex` → `preprocess` → `parse` → `check` → `lower` (naga IR) → `reflect` → `link`.
+
+pub mod program;
+pub mod types;

@@ -1,0 +1,155 @@
+//! A linked program, lowered for a GPU API: the contract between the front end and `essl-gl`.
+//!
+//! The front end links a vertex and a fragment shader the way WebGL2 does and lowers both to
+//! naga modules that follow the conventions below; a renderer (`essl-gl`) only has to create
+//! pipelines from these modules and feed the bindings described here.
+//!
+//! # Conventions of the lowered modules
+//! - Each module has one entry point named `main` (stage vertex or fragment).
+//! - Vertex inputs are entry-point arguments with `Binding::Location { location }` equal to the
+//!   attribute's location in [`ProgramLayout::attributes`]. The shader-side type of an input is
+//!   the declared GLSL type (`vec4` stays `vec4` even when the buffer feeds 3 floats).
+//! - Varyings use `Binding::Location` numbers assigned by the linker (the same in both stages).
+//!   The vertex stage writes `BuiltIn::Position` in the GPU API's clip space: the lowering has
+//!   already remapped GL's depth range (z from −w..w to 0..w) when
+//!   [`LowerOptions::zero_to_one_depth`] is set.
+//! - Fragment outputs use `Binding::Location` equal to the GLSL output's location.
+//! - All loose (default-block) uniforms of both stages live in one uniform buffer at
+//!   `@group(0) @binding(0)`, laid out as [`UniformBlock`] says; both stages declare the same
+//!   struct type. Uniform *blocks* declared in the shader get bindings `1..` in group 0, in
+//!   [`ProgramLayout::blocks`] order.
+//! - Each sampler (each element of a sampler array) becomes a texture at
+//!   `@group(1) @binding(2 * slot)` and a sampler at `@group(1) @binding(2 * slot + 1)`, where
+//!   `slot` indexes [`ProgramLayout::samplers`].
+
+use crate::types::GlType;
+
+/// Options for lowering a linked program to naga modules.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct LowerOptions {
+    /// Remap clip-space z from GL's −w..w to 0..w (Vulkan, Metal, D3D, WebGPU).
+    pub zero_to_one_depth: bool,
+    /// Flip `gl_FragCoord.y` so that it counts from the bottom of the framebuffer, as in GL,
+    /// on an API whose framebuffer y points down. Reads [`InternalUniform::FramebufferHeight`].
+    pub flip_frag_coord_y: bool,
+}
+
+impl Default for LowerOptions {
+    fn default() -> Self {
+        Self { zero_to_one_depth: true, flip_frag_coord_y: true }
+    }
+}
+
+/// Everything a renderer needs to bind and feed a linked, lowered program.
+#[derive(Clone, Debug)]
+pub struct ProgramLayout {
+    /// The lowered vertex shader (entry point `main`).
+    pub vertex: naga::Module,
+    /// Validation info of [`ProgramLayout::vertex`].
+    pub vertex_info: naga::valid::ModuleInfo,
+    /// The lowered fragment shader (entry point `main`).
+    pub fragment: naga::Module,
+    /// Validation info of [`ProgramLayout::fragment`].
+    pub fragment_info: naga::valid::ModuleInfo,
+    /// The default uniform block (group 0, binding 0); `None` when the program has no loose
+    /// uniform and no internal uniform.
+    pub uniform_block: Option<UniformBlock>,
+    /// Active uniforms in WebGL's enumeration order (`getActiveUniform(program, i)`).
+    pub uniforms: Vec<ActiveUniform>,
+    /// Active attributes in WebGL's enumeration order (`getActiveAttrib(program, i)`).
+    pub attributes: Vec<ActiveAttribute>,
+    /// Sampler slots: texture at group 1 binding `2 * slot`, sampler at `2 * slot + 1`.
+    pub samplers: Vec<SamplerSlot>,
+    /// Uniform blocks declared in the shaders, bound at group 0, binding `1 + index`.
+    pub blocks: Vec<UniformBlockBinding>,
+    /// Fragment outputs: (location, type). A renderer with one colour target uses location 0.
+    pub fragment_outputs: Vec<(u32, GlType)>,
+}
+
+/// The layout of the default uniform block (all loose uniforms of a program).
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct UniformBlock {
+    /// Size of the buffer in bytes (a multiple of 16).
+    pub size: u32,
+    /// Values the renderer fills in itself, with their byte offsets.
+    pub internal: Vec<(InternalUniform, u32)>,
+}
+
+/// A value of the default uniform block that the renderer, not the application, provides.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum InternalUniform {
+    /// The height of the framebuffer in pixels, as an `f32` (for `gl_FragCoord.y` flipping).
+    FramebufferHeight,
+}
+
+/// How one active uniform is stored, as WebGL enumerates it (`u_spots[0].position`).
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct ActiveUniform {
+    /// WebGL's name: arrays of basic types end in `[0]`; struct members are expanded.
+    pub name: String,
+    /// WebGL's type (`FLOAT_VEC3`, `SAMPLER_2D`, …).
+    pub ty: GlType,
+    /// Array length (1 for a non-array).
+    pub size: u32,
+    /// Where the values live.
+    pub storage: UniformStorage,
+}
+
+/// Where the values of an active uniform live.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum UniformStorage {
+    /// In the default uniform block.
+    Buffer {
+        /// Byte offset of element 0.
+        offset: u32,
+        /// Byte distance between array elements (16-aligned, std140).
+        array_stride: u32,
+        /// Byte distance between matrix columns (16 in std140); 0 for non-matrices.
+        matrix_stride: u32,
+    },
+    /// A sampler: element `i` of the array is sampler slot `first_slot + i`; its value is the
+    /// texture unit set with `uniform1i`.
+    Sampler {
+        /// Slot of element 0 in [`ProgramLayout::samplers`].
+        first_slot: u32,
+    },
+}
+
+/// How booleans and integers are stored in the default uniform block.
+///
+/// `bool`/`bvecN` are stored as 32-bit unsigned integers (0 or 1), `int` as i32, `uint` as
+/// u32, floats as f32; matrices column by column with [`UniformStorage::Buffer::matrix_stride`].
+pub const BOOL_STORAGE_BYTES: u32 = 4;
+
+/// One sampler slot: a texture binding and a sampler binding.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct SamplerSlot {
+    /// The uniform element this slot belongs to (`u_tex[2]`, `u_cookie`).
+    pub name: String,
+    /// The sampler's GLSL type (`SAMPLER_2D`, `INT_SAMPLER_3D`, `SAMPLER_2D_SHADOW`, …).
+    pub ty: GlType,
+    /// Whether the sampler compares depth (`sampler2DShadow`, …): a comparison sampler.
+    pub comparison: bool,
+}
+
+/// An active vertex attribute.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct ActiveAttribute {
+    /// The attribute's name.
+    pub name: String,
+    /// WebGL's type (`FLOAT_VEC4`, `INT`, `FLOAT_MAT4`, …).
+    pub ty: GlType,
+    /// Array length (attributes cannot be arrays in ES 3.00: always 1).
+    pub size: u32,
+    /// The first location (a `matN` takes N consecutive locations).
+    pub location: u32,
+}
+
+/// A uniform block declared in a shader (`uniform Lights { … } lights;`).
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct UniformBlockBinding {
+    /// The block's name (not the instance name).
+    pub name: String,
+    /// Minimum buffer size in bytes (std140).
+    pub size: u32,
+}
