@@ -3,5 +3,9 @@
 //! A shader travels one way, and the modules are named for where it is:
 //! `source` → `lex` → `preprocess` → `parse` → `check` → `lower` (naga IR) → `reflect` → `link`.
 
+pub mod diagnostic;
+pub mod lex;
+pub mod preprocess;
 pub mod program;
+pub mod source;
 pub mod types;

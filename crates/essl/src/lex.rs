@@ -1,0 +1,642 @@
+//! Splits the original text into preprocessing tokens.
+//!
+//! Line continuations (`\` before a line break) are removed before comments and tokens are
+//! recognised, as GLSL ES 3.00 specifies; comments become whitespace. A U+00A0 no-break space
+//! (what a web page leaves in a copied shader) is treated as a space so that lexing goes on,
+//! and reported once per line: an error outside comments (WebGL rejects it), a warning inside
+//! one (harmless, but fixable). Other characters outside GLSL's character set become
+//! [`PpKind::Invalid`] tokens for the preprocessor to report where they are not skipped.
+
+use std::rc::Rc;
+
+use crate::diagnostic::{Applicability, Diagnostic, Edit, Fix};
+use crate::source::{SourceFile, Span};
+
+/// A punctuator.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+#[allow(missing_docs)]
+pub enum Punct {
+    LeftParen,
+    RightParen,
+    LeftBracket,
+    RightBracket,
+    LeftBrace,
+    RightBrace,
+    Dot,
+    Comma,
+    Colon,
+    Semicolon,
+    Question,
+    Plus,
+    Minus,
+    Star,
+    Slash,
+    Percent,
+    Bang,
+    Tilde,
+    Ampersand,
+    Pipe,
+    Caret,
+    Less,
+    Greater,
+    Equal,
+    LessEqual,
+    GreaterEqual,
+    EqualEqual,
+    BangEqual,
+    AndAnd,
+    OrOr,
+    XorXor,
+    LeftShift,
+    RightShift,
+    PlusPlus,
+    MinusMinus,
+    PlusEqual,
+    MinusEqual,
+    StarEqual,
+    SlashEqual,
+    PercentEqual,
+    AmpersandEqual,
+    PipeEqual,
+    CaretEqual,
+    LeftShiftEqual,
+    RightShiftEqual,
+    /// `#`, only meaningful to the preprocessor.
+    Hash,
+    /// `##`, only meaningful to the preprocessor.
+    HashHash,
+}
+
+impl Punct {
+    /// The punctuator's text.
+    pub fn as_str(self) -> &'static str {
+        use Punct::*;
+        match self {
+            LeftParen => "(",
+            RightParen => ")",
+            LeftBracket => "[",
+            RightBracket => "]",
+            LeftBrace => "{",
+            RightBrace => "}",
+            Dot => ".",
+            Comma => ",",
+            Colon => ":",
+            Semicolon => ";",
+            Question => "?",
+            Plus => "+",
+            Minus => "-",
+            Star => "*",
+            Slash => "/",
+            Percent => "%",
+            Bang => "!",
+            Tilde => "~",
+            Ampersand => "&",
+            Pipe => "|",
+            Caret => "^",
+            Less => "<",
+            Greater => ">",
+            Equal => "=",
+            LessEqual => "<=",
+            GreaterEqual => ">=",
+            EqualEqual => "==",
+            BangEqual => "!=",
+            AndAnd => "&&",
+            OrOr => "||",
+            XorXor => "^^",
+            LeftShift => "<<",
+            RightShift => ">>",
+            PlusPlus => "++",
+            MinusMinus => "--",
+            PlusEqual => "+=",
+            MinusEqual => "-=",
+            StarEqual => "*=",
+            SlashEqual => "/=",
+            PercentEqual => "%=",
+            AmpersandEqual => "&=",
+            PipeEqual => "|=",
+            CaretEqual => "^=",
+            LeftShiftEqual => "<<=",
+            RightShiftEqual => ">>=",
+            Hash => "#",
+            HashHash => "##",
+        }
+    }
+}
+
+/// What a preprocessing token is.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum PpKind {
+    /// An identifier or keyword.
+    Ident,
+    /// A preprocessing number (`1`, `0x1F`, `1.5e3`, `2u`, `3.0f`; also malformed ones).
+    Number,
+    /// A punctuator.
+    Punct(Punct),
+    /// A character outside GLSL ES's character set.
+    Invalid(char),
+    /// The end of a (logical) line.
+    Newline,
+    /// The end of the text.
+    Eof,
+}
+
+/// A preprocessing token.
+#[derive(Clone, Debug, PartialEq)]
+pub struct PpToken {
+    /// What it is.
+    pub kind: PpKind,
+    /// Where it is in the original text (for a token from a macro expansion: where the macro
+    /// was invoked).
+    pub span: Span,
+    /// Its text (line continuations inside it removed).
+    pub text: Rc<str>,
+    /// Whitespace or a comment precedes it on its line.
+    pub space_before: bool,
+    /// It comes from a macro expansion.
+    pub from_macro: bool,
+}
+
+impl PpToken {
+    /// Whether the token is the punctuator `p`.
+    pub fn is(&self, p: Punct) -> bool {
+        self.kind == PpKind::Punct(p)
+    }
+
+    /// Whether the token is the identifier `name`.
+    pub fn is_ident(&self, name: &str) -> bool {
+        self.kind == PpKind::Ident && &*self.text == name
+    }
+}
+
+/// The output of the lexer.
+#[derive(Debug, Default)]
+pub struct Lexed {
+    /// The tokens, with a [`PpKind::Newline`] at the end of each logical line and a final
+    /// [`PpKind::Eof`].
+    pub tokens: Vec<PpToken>,
+    /// Diagnostics: no-break spaces, unterminated comments.
+    pub diagnostics: Vec<Diagnostic>,
+}
+
+/// Characters of the text with line continuations removed.
+struct Cursor<'a> {
+    bytes: &'a [u8],
+    text: &'a str,
+    pos: usize,
+}
+
+impl<'a> Cursor<'a> {
+    /// Skips line continuations at the current position.
+    fn skip_continuations(&mut self) {
+        loop {
+            if self.bytes.get(self.pos) == Some(&b'\\') {
+                match (self.bytes.get(self.pos + 1), self.bytes.get(self.pos + 2)) {
+                    (Some(b'\n'), _) => self.pos += 2,
+                    (Some(b'\r'), Some(b'\n')) => self.pos += 3,
+                    (Some(b'\r'), _) => self.pos += 2,
+                    _ => return,
+                }
+            } else {
+                return;
+            }
+        }
+    }
+
+    fn peek(&mut self) -> Option<char> {
+        self.skip_continuations();
+        self.text[self.pos..].chars().next()
+    }
+
+    fn bump(&mut self) -> Option<char> {
+        self.skip_continuations();
+        let c = self.text[self.pos..].chars().next()?;
+        self.pos += c.len_utf8();
+        Some(c)
+    }
+
+    fn eat(&mut self, c: char) -> bool {
+        if self.peek() == Some(c) {
+            self.bump();
+            true
+        } else {
+            false
+        }
+    }
+}
+
+/// Whether a character is GLSL whitespace (not counting line breaks).
+fn is_space(c: char) -> bool {
+    matches!(c, ' ' | '\t' | '\u{0B}' | '\u{0C}')
+}
+
+/// Lexes a source text into preprocessing tokens.
+pub fn lex(file: &SourceFile) -> Lexed {
+    let text = file.text();
+    let mut cur = Cursor { bytes: text.as_bytes(), text, pos: 0 };
+    let mut out = Lexed::default();
+    // No-break spaces per physical line: (span, inside a comment).
+    let mut nbsp: Vec<(Span, bool)> = Vec::new();
+    let mut space_before = false;
+
+    loop {
+        let start = {
+            cur.skip_continuations();
+            cur.pos
+        };
+        let Some(c) = cur.bump() else { break };
+        match c {
+            '\n' | '\r' => {
+                if c == '\r' {
+                    cur.eat('\n');
+                }
+                out.tokens.push(PpToken {
+                    kind: PpKind::Newline,
+                    span: Span::new(start as u32, cur.pos as u32),
+                    text: Rc::from("\n"),
+                    space_before,
+                    from_macro: false,
+                });
+                space_before = false;
+            }
+            c if is_space(c) => space_before = true,
+            '\u{A0}' => {
+                nbsp.push((Span::new(start as u32, cur.pos as u32), false));
+                space_before = true;
+            }
+            '/' if cur.peek() == Some('/') => {
+                // Line comment: to the end of the line (continuations included).
+                while let Some(c) = cur.peek() {
+                    if c == '\n' || c == '\r' {
+                        break;
+                    }
+                    let at = cur.pos;
+                    cur.bump();
+                    if c == '\u{A0}' {
+                        nbsp.push((Span::new(at as u32, cur.pos as u32), true));
+                    }
+                }
+                space_before = true;
+            }
+            '/' if cur.peek() == Some('*') => {
+                cur.bump();
+                let mut closed = false;
+                while let Some(c) = cur.bump() {
+                    if c == '*' && cur.peek() == Some('/') {
+                        cur.bump();
+                        closed = true;
+                        break;
+                    }
+                    if c == '\u{A0}' {
+                        let at = cur.pos - c.len_utf8();
+                        nbsp.push((Span::new(at as u32, cur.pos as u32), true));
+                    }
+                }
+                if !closed {
+                    out.diagnostics.push(
+                        Diagnostic::error(
+                            "unterminated-comment",
+                            "unterminated `/*` comment",
+                            Span::new(start as u32, start as u32 + 2),
+                        )
+                        .with_label("this comment is never closed")
+                        .with_help("close it with `*/`")
+                        .with_token("/*"),
+                    );
+                }
+                space_before = true;
+            }
+            c if c.is_ascii_alphabetic() || c == '_' => {
+                let mut s = String::new();
+                s.push(c);
+                while let Some(c) = cur.peek() {
+                    if c.is_ascii_alphanumeric() || c == '_' {
+                        s.push(c);
+                        cur.bump();
+                    } else {
+                        break;
+                    }
+                }
+                push(&mut out, PpKind::Ident, start, cur.pos, s, &mut space_before);
+            }
+            c if c.is_ascii_digit()
+                || (c == '.' && cur.peek().is_some_and(|d| d.is_ascii_digit())) =>
+            {
+                let mut s = String::new();
+                s.push(c);
+                let mut prev = c;
+                while let Some(c) = cur.peek() {
+                    let exponent_sign = (c == '+' || c == '-')
+                        && (prev == 'e' || prev == 'E')
+                        && !s.starts_with("0x")
+                        && !s.starts_with("0X");
+                    if c.is_ascii_alphanumeric() || c == '_' || c == '.' || exponent_sign {
+                        s.push(c);
+                        cur.bump();
+                        prev = c;
+                    } else {
+                        break;
+                    }
+                }
+                push(&mut out, PpKind::Number, start, cur.pos, s, &mut space_before);
+            }
+            c => {
+                let kind = match punct(c, &mut cur) {
+                    Some(p) => PpKind::Punct(p),
+                    None => PpKind::Invalid(c),
+                };
+                let s = text[start..cur.pos].replace(['\\', '\n', '\r'], "");
+                let s = if s.is_empty() { c.to_string() } else { s };
+                push(&mut out, kind, start, cur.pos, s, &mut space_before);
+            }
+        }
+    }
+    let end = text.len() as u32;
+    // A last line without a line break still ends.
+    if out.tokens.last().is_some_and(|t| t.kind != PpKind::Newline) {
+        out.tokens.push(PpToken {
+            kind: PpKind::Newline,
+            span: Span::empty(end),
+            text: Rc::from("\n"),
+            space_before,
+            from_macro: false,
+        });
+    }
+    out.tokens.push(PpToken {
+        kind: PpKind::Eof,
+        span: Span::empty(end),
+        text: Rc::from(""),
+        space_before: false,
+        from_macro: false,
+    });
+    report_nbsp(file, &nbsp, &mut out.diagnostics);
+    out
+}
+
+fn push(out: &mut Lexed, kind: PpKind, start: usize, end: usize, text: String, space: &mut bool) {
+    out.tokens.push(PpToken {
+        kind,
+        span: Span::new(start as u32, end as u32),
+        text: Rc::from(text),
+        space_before: *space,
+        from_macro: false,
+    });
+    *space = false;
+}
+
+fn punct(c: char, cur: &mut Cursor<'_>) -> Option<Punct> {
+    use Punct::*;
+    let p = match c {
+        '(' => LeftParen,
+        ')' => RightParen,
+        '[' => LeftBracket,
+        ']' => RightBracket,
+        '{' => LeftBrace,
+        '}' => RightBrace,
+        '.' => Dot,
+        ',' => Comma,
+        ':' => Colon,
+        ';' => Semicolon,
+        '?' => Question,
+        '~' => Tilde,
+        '#' => {
+            if cur.eat('#') {
+                HashHash
+            } else {
+                Hash
+            }
+        }
+        '+' => {
+            if cur.eat('+') {
+                PlusPlus
+            } else if cur.eat('=') {
+                PlusEqual
+            } else {
+                Plus
+            }
+        }
+        '-' => {
+            if cur.eat('-') {
+                MinusMinus
+            } else if cur.eat('=') {
+                MinusEqual
+            } else {
+                Minus
+            }
+        }
+        '*' => {
+            if cur.eat('=') {
+                StarEqual
+            } else {
+                Star
+            }
+        }
+        '/' => {
+            if cur.eat('=') {
+                SlashEqual
+            } else {
+                Slash
+            }
+        }
+        '%' => {
+            if cur.eat('=') {
+                PercentEqual
+            } else {
+                Percent
+            }
+        }
+        '!' => {
+            if cur.eat('=') {
+                BangEqual
+            } else {
+                Bang
+            }
+        }
+        '=' => {
+            if cur.eat('=') {
+                EqualEqual
+            } else {
+                Equal
+            }
+        }
+        '&' => {
+            if cur.eat('&') {
+                AndAnd
+            } else if cur.eat('=') {
+                AmpersandEqual
+            } else {
+                Ampersand
+            }
+        }
+        '|' => {
+            if cur.eat('|') {
+                OrOr
+            } else if cur.eat('=') {
+                PipeEqual
+            } else {
+                Pipe
+            }
+        }
+        '^' => {
+            if cur.eat('^') {
+                XorXor
+            } else if cur.eat('=') {
+                CaretEqual
+            } else {
+                Caret
+            }
+        }
+        '<' => {
+            if cur.peek() == Some('<') {
+                cur.bump();
+                if cur.eat('=') {
+                    LeftShiftEqual
+                } else {
+                    LeftShift
+                }
+            } else if cur.eat('=') {
+                LessEqual
+            } else {
+                Less
+            }
+        }
+        '>' => {
+            if cur.peek() == Some('>') {
+                cur.bump();
+                if cur.eat('=') {
+                    RightShiftEqual
+                } else {
+                    RightShift
+                }
+            } else if cur.eat('=') {
+                GreaterEqual
+            } else {
+                Greater
+            }
+        }
+        _ => return None,
+    };
+    Some(p)
+}
+
+/// Reports no-break spaces: one diagnostic per line, an error when one is outside a comment
+/// (WebGL rejects it there), else a warning; each with a certain fix that replaces them all
+/// on that line with plain spaces.
+fn report_nbsp(file: &SourceFile, nbsp: &[(Span, bool)], diagnostics: &mut Vec<Diagnostic>) {
+    let mut i = 0;
+    while i < nbsp.len() {
+        let line = file.line_index(nbsp[i].0.start);
+        let mut j = i;
+        while j < nbsp.len() && file.line_index(nbsp[j].0.start) == line {
+            j += 1;
+        }
+        let group = &nbsp[i..j];
+        let in_code: Vec<&(Span, bool)> = group.iter().filter(|(_, c)| !c).collect();
+        let primary = in_code.first().map(|(s, _)| *s).unwrap_or(group[0].0);
+        let count = group.len();
+        let (mut d, what) = if in_code.is_empty() {
+            (
+                Diagnostic::warning(
+                    "no-break-space",
+                    "no-break space (U+00A0) in a comment",
+                    primary,
+                ),
+                "harmless in a comment, but invisible and easy to copy into code",
+            )
+        } else {
+            (
+                Diagnostic::error(
+                    "no-break-space",
+                    "no-break space (U+00A0) is not allowed in GLSL ES source",
+                    primary,
+                ),
+                "GLSL ES allows only space, tab, vertical tab and form feed as white space",
+            )
+        };
+        d = d
+            .with_label(if count == 1 {
+                "this looks like a space but is U+00A0".to_string()
+            } else {
+                format!("this looks like a space but is U+00A0 ({count} on this line)")
+            })
+            .with_note(what)
+            .with_token("?")
+            .with_fix(Fix {
+                message: if count == 1 {
+                    "replace it with a space".into()
+                } else {
+                    format!("replace all {count} with spaces")
+                },
+                edits: group
+                    .iter()
+                    .map(|(s, _)| Edit { span: *s, replacement: " ".into() })
+                    .collect(),
+                applicability: Applicability::Certain,
+            });
+        for (s, _) in group.iter().filter(|(s, _)| *s != primary) {
+            d = d.with_secondary(*s, "");
+        }
+        diagnostics.push(d);
+        i = j;
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn kinds(src: &str) -> Vec<(PpKind, String)> {
+        let f = SourceFile::new("t", src);
+        lex(&f).tokens.into_iter().map(|t| (t.kind, t.text.to_string())).collect()
+    }
+
+    #[test]
+    fn punctuators_take_the_longest_match() {
+        let k = kinds("a<<=b>>c^^d");
+        let texts: Vec<&str> = k.iter().map(|(_, t)| t.as_str()).collect();
+        assert_eq!(texts, ["a", "<<=", "b", ">>", "c", "^^", "d", "\n", ""]);
+    }
+
+    #[test]
+    fn numbers_include_exponent_signs_and_suffixes() {
+        let k = kinds("1.5e-3f 0x1Fu .5 1e+x");
+        let nums: Vec<&str> =
+            k.iter().filter(|(k, _)| *k == PpKind::Number).map(|(_, t)| t.as_str()).collect();
+        assert_eq!(nums, ["1.5e-3f", "0x1Fu", ".5", "1e+x"]);
+    }
+
+    #[test]
+    fn line_continuation_joins_tokens_and_lines() {
+        let k = kinds("fo\\\no bar\\\r\n baz");
+        let texts: Vec<&str> = k.iter().map(|(_, t)| t.as_str()).collect();
+        assert_eq!(texts, ["foo", "bar", "baz", "\n", ""]);
+    }
+
+    #[test]
+    fn comments_are_space_and_unterminated_is_an_error() {
+        let f = SourceFile::new("t", "a/*x\ny*/b // c\nd /* e");
+        let l = lex(&f);
+        let texts: Vec<&str> = l.tokens.iter().map(|t| &*t.text).collect();
+        assert_eq!(texts, ["a", "b", "\n", "d", "\n", ""]);
+        assert!(l.tokens[1].space_before);
+        assert_eq!(l.diagnostics.len(), 1);
+        assert_eq!(l.diagnostics[0].code, "unterminated-comment");
+    }
+
+    #[test]
+    fn no_break_spaces_are_one_diagnostic_per_line() {
+        let f = SourceFile::new("t", "#version 300 es \u{a0}\n\u{a0} x;\u{a0}\u{a0}\n// c\u{a0}\n");
+        let l = lex(&f);
+        let sev: Vec<_> = l.diagnostics.iter().map(|d| (d.severity, d.fix.as_ref().unwrap().edits.len())).collect();
+        use crate::diagnostic::Severity::*;
+        assert_eq!(sev, [(Error, 1), (Error, 3), (Warning, 1)]);
+        // Lexing goes on as if they were spaces.
+        let idents: Vec<&str> = l.tokens.iter().filter(|t| t.kind == PpKind::Ident).map(|t| &*t.text).collect();
+        assert_eq!(idents, ["version", "es", "x"]);
+    }
+
+    #[test]
+    fn invalid_characters_become_tokens() {
+        let k = kinds("a $ b");
+        assert_eq!(k[1].0, PpKind::Invalid('$'));
+    }
+}
