@@ -1,0 +1,73 @@
+#version 300 es
+// COMPOSED from the snippets of article 004 (LearnOpenGL-style spot light with smooth edges
+// and a flashlight cookie); the article contains no complete shader. Verbatim from the
+// article (no added indentation) are the 9 lines from `float theta = ...` to
+// `specular *= intensity;` in main() and `uniform vec2 viewPort;`: the smooth-edge snippet
+// (theta, epsilon = light.cutOff - light.outerCutOff, intensity = clamp(... / epsilon, ...),
+// its comment, diffuse/specular *= intensity) with the cookie snippet's two lines
+// (fragCoord = gl_FragCoord.xy / viewPort * vec2(1.0, -1.0); intensity *= length(...))
+// put before the comment, where the intensity must be complete.
+// Added to make a whole shader: precision, the Material and Light structs (LearnOpenGL's,
+// with the `outerCutOff` the article tells to add and the `flashlight` sampler it tells to
+// put in the Light struct), the inputs/output, and the ambient/diffuse/specular terms.
+precision highp float;
+
+struct Material {
+    sampler2D diffuse;
+    sampler2D specular;
+    float shininess;
+};
+
+struct Light {
+    vec3 position;
+    vec3 direction;
+    float cutOff;
+    float outerCutOff;
+
+    vec3 ambient;
+    vec3 diffuse;
+    vec3 specular;
+
+    sampler2D flashlight;
+};
+
+in vec3 FragPos;
+in vec3 Normal;
+in vec2 TexCoords;
+
+out vec4 FragColor;
+
+uniform vec3 viewPos;
+uniform Material material;
+uniform Light light;
+uniform vec2 viewPort;
+
+void main()
+{
+    // ambient
+    vec3 ambient = light.ambient * texture(material.diffuse, TexCoords).rgb;
+
+    // diffuse
+    vec3 norm = normalize(Normal);
+    vec3 lightDir = normalize(light.position - FragPos);
+    float diff = max(dot(norm, lightDir), 0.0);
+    vec3 diffuse = light.diffuse * diff * texture(material.diffuse, TexCoords).rgb;
+
+    // specular
+    vec3 viewDir = normalize(viewPos - FragPos);
+    vec3 reflectDir = reflect(-lightDir, norm);
+    float spec = pow(max(dot(viewDir, reflectDir), 0.0), material.shininess);
+    vec3 specular = light.specular * spec * texture(material.specular, TexCoords).rgb;
+
+    // spotlight (soft edges) and flashlight cookie: verbatim from the article
+float theta = dot(lightDir, normalize(-light.direction));
+float epsilon = light.cutOff - light.outerCutOff;
+float intensity = clamp((theta - light.outerCutOff) / epsilon, 0.0, 1.0);
+vec2 fragCoord = gl_FragCoord.xy / viewPort * vec2(1.0, -1.0);
+intensity *= length(vec3(texture(light.flashlight, fragCoord)));
+// we'll leave ambient unaffected so we always have a little light.
+diffuse *= intensity;
+specular *= intensity;
+
+    FragColor = vec4(ambient + diffuse + specular, 1.0);
+}
