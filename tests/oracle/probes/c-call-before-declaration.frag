@@ -1,0 +1,9 @@
+#version 300 es
+precision mediump float;
+out vec4 o;
+void main() {
+  o = vec4(f());
+}
+float f() {
+  return 1.0;
+}

@@ -1,0 +1,7 @@
+#version 300 es
+precision mediump float;
+out vec4 o;
+void main() {
+  int a = 2147483647;
+  o = vec4(float(a));
+}

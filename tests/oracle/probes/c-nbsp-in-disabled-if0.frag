@@ -1,0 +1,9 @@
+#version 300 es
+precision mediump float;
+out vec4 o;
+#if 0
+float x = 1.0;
+#endif
+void main() {
+  o = vec4(1.0);
+}

@@ -1,0 +1,8 @@
+#version 300 es
+precision mediump float;
+out vec4 o;
+uniform sampler2D u_tex[3];
+const int k = 1;
+void main() {
+  o = texture(u_tex[k + 1], vec2(0.5));
+}

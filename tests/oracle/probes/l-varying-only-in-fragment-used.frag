@@ -1,0 +1,7 @@
+#version 300 es
+precision mediump float;
+out vec4 o;
+in vec3 v_missing;
+void main() {
+  o = vec4(v_missing, 1.0);
+}

@@ -1,0 +1,7 @@
+#version 300 es
+in vec4 a_position;
+out vec3 v;
+void main() {
+  v = a_position.xyz;
+  gl_Position = a_position;
+}

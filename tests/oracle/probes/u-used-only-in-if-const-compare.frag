@@ -1,0 +1,11 @@
+#version 300 es
+precision mediump float;
+out vec4 o;
+uniform float u_dead;
+uniform float u_used;
+void main() {
+  o = vec4(u_used);
+  if (1.0 < 0.0) {
+    o = vec4(u_dead);
+  }
+}
