@@ -5,14 +5,19 @@
 //! `reflect` → `link`.
 
 pub mod ast;
+pub mod builtins;
+pub mod check;
 pub mod diagnostic;
+pub mod hir;
 pub mod lex;
 pub mod parse;
 pub mod preprocess;
 pub mod program;
+pub mod shader;
 pub mod source;
 pub mod token;
 pub mod types;
+pub mod usage;
 
 /// A shader stage.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
@@ -41,3 +46,5 @@ impl Stage {
         }
     }
 }
+
+pub use shader::{compile, CompileOptions, Shader};

@@ -1,0 +1,606 @@
+//! The checker: resolves names, types every expression, folds constants and enforces the rules
+//! GLSL ES 3.00 (and WebGL2) impose, producing a [`hir::Module`].
+//!
+//! Each rule reports a diagnostic and checking goes on, so that every error is reported in one
+//! run; an expression that failed to check gets the type [`Type::Void`] and later rules stay
+//! quiet about it (no cascades).
+
+mod decl;
+mod expr;
+pub mod fold;
+mod stmt;
+
+use std::collections::HashMap;
+use std::rc::Rc;
+
+use crate::ast;
+use crate::builtins::BuiltinVar;
+use crate::diagnostic::Diagnostic;
+use crate::hir::{self, FuncId, GlobalId, LocalId};
+use crate::source::{SourceFile, Span};
+use crate::types::{Precision, SamplerType, StructDef, StructMember, Type};
+use crate::Stage;
+
+/// Checks a parsed shader.
+pub fn check(
+    file: &SourceFile,
+    unit: &ast::TranslationUnit,
+    stage: Stage,
+    invariant_all: bool,
+) -> (hir::Module, Vec<Diagnostic>) {
+    let mut c = Checker::new(file, stage);
+    c.invariant_all = invariant_all;
+    for item in &unit.items {
+        c.external(item);
+    }
+    c.finish();
+    let mut module = hir::Module {
+        stage,
+        structs: c.structs,
+        globals: c.globals,
+        functions: c.functions,
+        entry: c.entry,
+        blocks: c.blocks,
+        used_builtins: Vec::new(),
+        invariant_all,
+    };
+    crate::usage::mark(&mut module);
+    (module, c.diags)
+}
+
+/// What a name refers to.
+#[derive(Clone, Debug)]
+enum Sym {
+    Var(Var),
+    Funcs(Vec<FuncId>),
+    Struct(crate::types::StructId),
+    /// A named uniform block instance.
+    Block(usize),
+}
+
+/// A variable reference.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Var {
+    Local(LocalId),
+    Param(usize),
+    Global(GlobalId),
+}
+
+/// What a default precision applies to.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum PrecKey {
+    Float,
+    Int,
+    Sampler(SamplerType),
+}
+
+#[derive(Default)]
+struct Scope {
+    names: HashMap<Rc<str>, Sym>,
+    precisions: Vec<(PrecKey, Precision)>,
+}
+
+/// The function being checked.
+struct FnCtx {
+    func: FuncId,
+    locals: Vec<hir::Local>,
+    loops: u32,
+    switches: u32,
+    calls: Vec<FuncId>,
+    ret: Type,
+}
+
+pub(crate) struct Checker<'a> {
+    file: &'a SourceFile,
+    stage: Stage,
+    diags: Vec<Diagnostic>,
+    structs: Vec<StructDef>,
+    globals: Vec<hir::Global>,
+    functions: Vec<hir::Function>,
+    /// Per function: defined (has a body), and where it was first declared.
+    fn_defined: Vec<bool>,
+    blocks: Vec<hir::UniformBlock>,
+    scopes: Vec<Scope>,
+    fctx: Option<FnCtx>,
+    entry: Option<FuncId>,
+    invariant_all: bool,
+    depth_range_struct: Option<crate::types::StructId>,
+    /// Fragment outputs declared: (global, has location).
+    frag_outputs: Vec<GlobalId>,
+    /// Names given by `invariant name;` before the name is known (reported if unknown).
+    unnamed_param_counter: u32,
+}
+
+impl<'a> Checker<'a> {
+    fn new(file: &'a SourceFile, stage: Stage) -> Checker<'a> {
+        let mut global = Scope::default();
+        // Predeclared default precisions (ES 3.00 §4.5.4).
+        match stage {
+            Stage::Vertex => {
+                global.precisions.push((PrecKey::Float, Precision::High));
+                global.precisions.push((PrecKey::Int, Precision::High));
+            }
+            Stage::Fragment => global.precisions.push((PrecKey::Int, Precision::Medium)),
+        }
+        for name in ["sampler2D", "samplerCube"] {
+            let s = SamplerType::from_name(name).expect("sampler");
+            global.precisions.push((PrecKey::Sampler(s), Precision::Low));
+        }
+        Checker {
+            file,
+            stage,
+            diags: Vec::new(),
+            structs: Vec::new(),
+            globals: Vec::new(),
+            functions: Vec::new(),
+            fn_defined: Vec::new(),
+            blocks: Vec::new(),
+            scopes: vec![global],
+            fctx: None,
+            entry: None,
+            invariant_all: false,
+            depth_range_struct: None,
+            frag_outputs: Vec::new(),
+            unnamed_param_counter: 0,
+        }
+    }
+
+    // ----- diagnostics -----
+
+    fn error(&mut self, code: &'static str, span: Span, message: impl Into<String>) -> &mut Diagnostic {
+        let token = self.file.slice(span).to_string();
+        self.diags.push(Diagnostic::error(code, message, span).with_token(token));
+        self.diags.last_mut().expect("just pushed")
+    }
+
+    fn warning(&mut self, code: &'static str, span: Span, message: impl Into<String>) -> &mut Diagnostic {
+        let token = self.file.slice(span).to_string();
+        self.diags.push(Diagnostic::warning(code, message, span).with_token(token));
+        self.diags.last_mut().expect("just pushed")
+    }
+
+    fn type_name(&self, ty: &Type) -> String {
+        format!("`{}`", ty.display(&self.structs))
+    }
+
+    // ----- scopes -----
+
+    fn push_scope(&mut self) {
+        self.scopes.push(Scope::default());
+    }
+
+    fn pop_scope(&mut self) {
+        self.scopes.pop();
+    }
+
+    fn at_global_scope(&self) -> bool {
+        self.scopes.len() == 1
+    }
+
+    fn lookup(&self, name: &str) -> Option<&Sym> {
+        self.scopes.iter().rev().find_map(|s| s.names.get(name))
+    }
+
+    /// Declares a name in the innermost scope; reports a redefinition.
+    fn declare(&mut self, name: &ast::Ident, sym: Sym) -> bool {
+        if let Some(prev) = self.scopes.last().expect("scope").names.get(&name.name) {
+            let what = match prev {
+                Sym::Funcs(_) => "a function",
+                Sym::Struct(_) => "a struct",
+                Sym::Block(_) => "a uniform block instance",
+                Sym::Var(_) => "a variable",
+            };
+            let d = self
+                .error("redefinition", name.span, format!("`{}` is already declared in this scope", name.name));
+            d.label = format!("redefines {what}");
+            d.help = Some("rename one of them".into());
+            return false;
+        }
+        self.scopes.last_mut().expect("scope").names.insert(name.name.clone(), sym);
+        true
+    }
+
+    /// Checks a name the user declares: reserved prefixes and double underscores.
+    fn check_name(&mut self, name: &ast::Ident) {
+        let n = &*name.name;
+        if n.starts_with("gl_") || n.starts_with("webgl_") || n.starts_with("_webgl_") {
+            let prefix = if n.starts_with("gl_") {
+                "gl_"
+            } else if n.starts_with("webgl_") {
+                "webgl_"
+            } else {
+                "_webgl_"
+            };
+            let d = self.error(
+                "reserved-name",
+                name.span,
+                format!("`{n}` starts with `{prefix}`, which is reserved for built-in names"),
+            );
+            d.label = "reserved prefix".into();
+            d.help = Some(format!("rename it without the `{prefix}` prefix"));
+        } else if n.contains("__") {
+            let d = self.error(
+                "reserved-name",
+                name.span,
+                format!("`{n}` contains `__`, which is reserved in GLSL ES 3.00"),
+            );
+            d.label = "two consecutive underscores".into();
+            d.help = Some(format!("rename it, e.g. `{}`", n.replace("__", "_")));
+        }
+    }
+
+    // ----- precision -----
+
+    fn default_precision(&self, key: PrecKey) -> Option<Precision> {
+        self.scopes.iter().rev().find_map(|s| {
+            s.precisions.iter().rev().find(|(k, _)| *k == key).map(|(_, p)| *p)
+        })
+    }
+
+    fn prec_key(ty: &Type) -> Option<PrecKey> {
+        match ty {
+            Type::Scalar(k) | Type::Vector(k, _) => match k {
+                crate::types::ScalarKind::Float => Some(PrecKey::Float),
+                crate::types::ScalarKind::Int | crate::types::ScalarKind::Uint => Some(PrecKey::Int),
+                crate::types::ScalarKind::Bool => None,
+            },
+            Type::Matrix { .. } => Some(PrecKey::Float),
+            Type::Sampler(s) => Some(PrecKey::Sampler(*s)),
+            Type::Array(t, _) => Self::prec_key(t),
+            _ => None,
+        }
+    }
+
+    /// The precision of a declaration: its qualifier, else the default in scope. Reports a
+    /// missing default (a `float` in a fragment shader, a `sampler3D` anywhere).
+    fn precision_for(&mut self, ty: &Type, declared: Option<Precision>, span: Span) -> Option<Precision> {
+        let key = Self::prec_key(ty)?;
+        if declared.is_some() {
+            return declared;
+        }
+        if let Some(p) = self.default_precision(key) {
+            return Some(p);
+        }
+        let what = match key {
+            PrecKey::Float => "float".to_string(),
+            PrecKey::Int => "int".to_string(),
+            PrecKey::Sampler(s) => s.name().to_string(),
+        };
+        let insert_at = self.precision_insert_point();
+        let d = self.error(
+            "missing-precision",
+            span,
+            format!("no precision specified for `{what}`"),
+        );
+        d.label = "this declaration needs a precision".into();
+        d.token = String::new();
+        d.notes.push(match key {
+            PrecKey::Float => "fragment shaders have no default precision for `float`".into(),
+            _ => format!("`{what}` has no default precision in GLSL ES 3.00"),
+        });
+        d.help = Some(format!("declare a default precision, e.g. `precision highp {what};`, or qualify the declaration"));
+        if let Some(at) = insert_at {
+            d.fix = Some(crate::diagnostic::Fix::suggested(
+                format!("add `precision highp {what};` after `#version`"),
+                Span::empty(at),
+                format!("precision highp {what};\n"),
+            ));
+        }
+        // Report once per kind: pretend a default exists from here on.
+        self.scopes[0].precisions.push((key, Precision::High));
+        None
+    }
+
+    /// Where a `precision` statement can be inserted: the start of line 2 (after `#version`).
+    fn precision_insert_point(&self) -> Option<u32> {
+        if self.file.line_text(0).trim_start().starts_with("#version") && self.file.line_count() > 1 {
+            Some(self.file.line_start(1))
+        } else {
+            None
+        }
+    }
+
+    // ----- types -----
+
+    /// Resolves a type specifier, declaring an inline struct. `None` after an error.
+    fn resolve_type(&mut self, spec: &ast::TypeSpec) -> Option<Type> {
+        let base = match &spec.name {
+            ast::TypeName::Void => Type::Void,
+            ast::TypeName::Scalar(k) => Type::Scalar(*k),
+            ast::TypeName::Vector(k, n) => Type::Vector(*k, *n),
+            ast::TypeName::Matrix { cols, rows } => Type::Matrix { cols: *cols, rows: *rows },
+            ast::TypeName::Sampler(s) => Type::Sampler(*s),
+            ast::TypeName::Struct(decl) => Type::Struct(self.declare_struct(decl)?),
+            ast::TypeName::Named(id) => match self.lookup(&id.name) {
+                Some(Sym::Struct(s)) => Type::Struct(*s),
+                _ => {
+                    let d = self.error("unknown-type", id.span, format!("`{}` is not a type", id.name));
+                    d.label = "not a type".into();
+                    return None;
+                }
+            },
+        };
+        match &spec.array {
+            None => Some(base),
+            Some(a) => self.array_of(base, a, spec.span),
+        }
+    }
+
+    /// Applies an array size to a type; `[]` gives size 0, to be fixed by an initializer.
+    fn array_of(&mut self, base: Type, size: &ast::ArraySize, span: Span) -> Option<Type> {
+        if base.is_array() {
+            let d = self.error("array-of-arrays", size.span, "arrays of arrays are not allowed in GLSL ES 3.00");
+            d.label = "a second array dimension".into();
+            return None;
+        }
+        if base == Type::Void {
+            let d = self.error("void-array", span, "`void` cannot be an array element");
+            d.label = "an array of `void`".into();
+            return None;
+        }
+        let Some(e) = &size.size else { return Some(Type::Array(Box::new(base), 0)) };
+        let n = self.array_size(e)?;
+        Some(Type::Array(Box::new(base), n))
+    }
+
+    /// Evaluates an array size: a constant integral expression greater than zero.
+    fn array_size(&mut self, e: &ast::Expr) -> Option<u32> {
+        let checked = self.expr(e);
+        if checked.ty == Type::Void {
+            return None;
+        }
+        let Some(c) = checked.as_const() else {
+            let d = self.error("non-constant-array-size", e.span, "array size must be a constant integral expression");
+            d.label = "not a constant expression".into();
+            return None;
+        };
+        let value = match (&checked.ty, c.as_int()) {
+            (Type::Scalar(crate::types::ScalarKind::Int | crate::types::ScalarKind::Uint), Some(v)) => v,
+            _ => {
+                let ty = self.type_name(&checked.ty);
+                let d = self.error("array-size-type", e.span, format!("array size must be an `int` or `uint`, not {ty}"));
+                d.label = "not an integer".into();
+                return None;
+            }
+        };
+        if value <= 0 {
+            let d = self.error("array-size", e.span, format!("array size must be greater than zero, not {value}"));
+            d.label = "not a positive size".into();
+            return None;
+        }
+        Some(value as u32)
+    }
+
+    fn declare_struct(&mut self, decl: &ast::StructDecl) -> Option<crate::types::StructId> {
+        if let Some(name) = &decl.name {
+            self.check_name(name);
+        }
+        let mut members: Vec<StructMember> = Vec::new();
+        let mut ok = true;
+        for m in &decl.members {
+            let fty = &m.ty.0;
+            for (q, s) in &fty.qualifiers {
+                if !matches!(q, ast::Qualifier::Precision(_)) {
+                    let d = self.error(
+                        "struct-member-qualifier",
+                        *s,
+                        "struct members may only have a precision qualifier",
+                    );
+                    d.label = "not allowed on a struct member".into();
+                }
+            }
+            if let ast::TypeName::Struct(inner) = &fty.spec.name {
+                let d = self.error(
+                    "embedded-struct",
+                    inner.span,
+                    "structs cannot be defined inside a struct in GLSL ES 3.00",
+                );
+                d.label = "an embedded struct definition".into();
+                d.help = Some("define it before the outer struct and use its name".into());
+            }
+            let Some(base) = self.resolve_type(&fty.spec) else {
+                ok = false;
+                continue;
+            };
+            for (name, arr) in &m.names {
+                let ty = match arr {
+                    Some(a) => match self.array_of(base.clone(), a, name.span) {
+                        Some(t) => t,
+                        None => {
+                            ok = false;
+                            continue;
+                        }
+                    },
+                    None => base.clone(),
+                };
+                if let Type::Array(_, 0) = ty {
+                    let d = self.error("unsized-array", name.span, "struct members must have a size");
+                    d.label = "an unsized array".into();
+                    ok = false;
+                }
+                if ty == Type::Void {
+                    let d = self.error("void-variable", name.span, "a struct member cannot be `void`");
+                    d.label = "`void` member".into();
+                    ok = false;
+                    continue;
+                }
+                self.check_name(name);
+                if members.iter().any(|mm| *mm.name == *name.name) {
+                    let d = self.error("redefinition", name.span, format!("struct member `{}` is declared twice", name.name));
+                    d.label = "a second member with this name".into();
+                    continue;
+                }
+                let precision = self.precision_for(&ty, fty.precision().map(|p| p.0), name.span);
+                members.push(StructMember { name: name.name.to_string(), ty, precision });
+            }
+        }
+        if members.is_empty() && ok {
+            let d = self.error("empty-struct", decl.span, "a struct must have at least one member");
+            d.label = "no members".into();
+        }
+        let id = crate::types::StructId(self.structs.len() as u32);
+        self.structs.push(StructDef { name: decl.name.as_ref().map(|n| n.name.to_string()), members });
+        if let Some(name) = &decl.name {
+            self.declare(name, Sym::Struct(id));
+        }
+        Some(id)
+    }
+
+    /// The struct type of `gl_DepthRange`.
+    fn depth_range_type(&mut self) -> Type {
+        if let Some(id) = self.depth_range_struct {
+            return Type::Struct(id);
+        }
+        let id = crate::types::StructId(self.structs.len() as u32);
+        let member = |n: &str| StructMember { name: n.into(), ty: Type::FLOAT, precision: Some(Precision::High) };
+        self.structs.push(StructDef {
+            name: Some("gl_DepthRangeParameters".into()),
+            members: vec![member("near"), member("far"), member("diff")],
+        });
+        self.depth_range_struct = Some(id);
+        Type::Struct(id)
+    }
+
+    /// The type of a built-in variable.
+    fn builtin_var_type(&mut self, v: BuiltinVar) -> Type {
+        match v {
+            BuiltinVar::DepthRange => self.depth_range_type(),
+            _ => v.ty(),
+        }
+    }
+
+    // ----- top level -----
+
+    fn external(&mut self, item: &ast::ExternalDecl) {
+        match item {
+            ast::ExternalDecl::Function(f) => self.function_def(f),
+            ast::ExternalDecl::Prototype(p) => {
+                self.function_decl(p, false);
+            }
+            ast::ExternalDecl::Declaration(d) => {
+                self.declaration(d, true);
+            }
+        }
+    }
+
+    /// Checks after the last declaration: `main`, recursion, outputs, uses.
+    fn finish(&mut self) {
+        match self.entry {
+            None => {
+                let at = Span::empty(self.file.text().len() as u32);
+                let d = self.error("missing-main", at, "the shader has no `main` function");
+                d.label = "`void main() { … }` expected".into();
+                d.token = String::new();
+                d.help = Some("add `void main() { … }`".into());
+            }
+            Some(f) if !self.fn_defined[f] => {
+                let span = self.functions[f].span;
+                let d = self.error("missing-main", span, "`main` is declared but never defined");
+                d.label = "declared here without a body".into();
+            }
+            _ => {}
+        }
+        self.check_recursion();
+        self.check_fragment_outputs();
+    }
+
+    fn check_recursion(&mut self) {
+        // Depth-first search for a cycle in the call graph.
+        let n = self.functions.len();
+        let mut state = vec![0u8; n]; // 0 new, 1 on stack, 2 done
+        let mut reported = vec![false; n];
+        for start in 0..n {
+            if state[start] != 0 {
+                continue;
+            }
+            let mut stack: Vec<(usize, usize)> = vec![(start, 0)];
+            state[start] = 1;
+            while let Some(&mut (f, ref mut next)) = stack.last_mut() {
+                if let Some(&callee) = self.functions[f].calls.get(*next) {
+                    *next += 1;
+                    match state[callee] {
+                        0 => {
+                            state[callee] = 1;
+                            stack.push((callee, 0));
+                        }
+                        1 if !reported[callee] => {
+                            reported[callee] = true;
+                            let pos = stack.iter().position(|(g, _)| *g == callee).unwrap_or(0);
+                            let chain: Vec<String> = stack[pos..]
+                                .iter()
+                                .map(|(g, _)| self.functions[*g].name.to_string())
+                                .chain(std::iter::once(self.functions[callee].name.to_string()))
+                                .collect();
+                            let span = self.functions[callee].span;
+                            let msg = if chain.len() == 2 {
+                                format!("function `{}` calls itself", chain[0])
+                            } else {
+                                format!("recursive call chain: {}", chain.join(" → "))
+                            };
+                            let d = self.error("recursion", span, msg);
+                            d.label = "part of a recursive call chain".into();
+                            d.notes.push("GLSL ES 3.00 forbids recursion, even in functions that are never called".into());
+                        }
+                        _ => {}
+                    }
+                } else {
+                    state[f] = 2;
+                    stack.pop();
+                }
+            }
+        }
+    }
+
+    fn check_fragment_outputs(&mut self) {
+        if self.stage != Stage::Fragment || self.frag_outputs.len() < 2 {
+            return;
+        }
+        for &g in &self.frag_outputs.clone() {
+            if self.globals[g].location.is_none() {
+                let span = self.globals[g].span;
+                let name = self.globals[g].name.clone();
+                let d = self.error(
+                    "output-location-required",
+                    span,
+                    format!("fragment output `{name}` needs a `layout(location = N)`"),
+                );
+                d.label = "no location".into();
+                d.notes.push("when a fragment shader has several outputs, every one needs an explicit location".into());
+            }
+        }
+        // Overlapping locations.
+        let mut used: Vec<(u32, GlobalId)> = Vec::new();
+        for &g in &self.frag_outputs.clone() {
+            let Some(loc) = self.globals[g].location else { continue };
+            let n = match &self.globals[g].ty {
+                Type::Array(_, n) => *n,
+                _ => 1,
+            };
+            for l in loc..loc + n {
+                if let Some((_, other)) = used.iter().find(|(u, _)| *u == l) {
+                    let other_name = self.globals[*other].name.clone();
+                    let span = self.globals[g].span;
+                    let d = self.error(
+                        "output-location-overlap",
+                        span,
+                        format!("fragment output location {l} is already used by `{other_name}`"),
+                    );
+                    d.label = "overlapping location".into();
+                    break;
+                }
+                used.push((l, g));
+            }
+        }
+    }
+
+    fn new_local(&mut self, local: hir::Local) -> LocalId {
+        let f = self.fctx.as_mut().expect("in a function");
+        f.locals.push(local);
+        f.locals.len() - 1
+    }
+
+    fn unnamed_param(&mut self) -> Rc<str> {
+        self.unnamed_param_counter += 1;
+        Rc::from(format!("_essl_unnamed{}", self.unnamed_param_counter))
+    }
+}

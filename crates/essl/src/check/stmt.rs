@@ -1,0 +1,332 @@
+//! Statements: control flow, loops, `switch`, `return`, `discard`.
+
+use super::{Checker, Sym, Var};
+use crate::ast;
+use crate::diagnostic::Fix;
+use crate::hir::{self, Cond, StmtKind};
+use crate::types::{ScalarKind, Type};
+use crate::Stage;
+
+impl Checker<'_> {
+    /// Checks statements in the current scope (a function body, a loop body).
+    pub(super) fn block_stmts_same_scope(&mut self, stmts: &[ast::Stmt]) -> Vec<hir::Stmt> {
+        let mut out = Vec::new();
+        for s in stmts {
+            self.stmt_into(s, &mut out);
+        }
+        out
+    }
+
+    fn scoped(&mut self, s: &ast::Stmt) -> Vec<hir::Stmt> {
+        self.push_scope();
+        let mut out = Vec::new();
+        self.stmt_into(s, &mut out);
+        self.pop_scope();
+        out
+    }
+
+    /// A loop body: a compound statement shares the scope of the loop header.
+    fn loop_body(&mut self, s: &ast::Stmt) -> Vec<hir::Stmt> {
+        match &s.kind {
+            ast::StmtKind::Block(b) => self.block_stmts_same_scope(&b.stmts),
+            _ => {
+                let mut out = Vec::new();
+                self.stmt_into(s, &mut out);
+                out
+            }
+        }
+    }
+
+    /// Checks a boolean condition.
+    fn condition_expr(&mut self, e: &ast::Expr, what: &str) -> hir::Expr {
+        let c = self.expr(e);
+        if !super::expr::is_error(&c) && c.ty != Type::BOOL {
+            let ty = self.type_name(&c.ty);
+            let d = self.error("type-mismatch", c.span, format!("{what} must be a `bool`, not {ty}"));
+            d.label = format!("this is {ty}");
+            if c.ty.is_scalar() && c.ty.scalar_kind() != Some(ScalarKind::Bool) {
+                d.help = Some("compare it explicitly, e.g. `x != 0`".into());
+            }
+        }
+        c
+    }
+
+    fn loop_condition(&mut self, c: &ast::Condition) -> Cond {
+        match c {
+            ast::Condition::Expr(e) => Cond::Expr(self.condition_expr(e, "a loop condition")),
+            ast::Condition::Decl(fty, name, init) => {
+                self.check_name(name);
+                let ty = self.resolve_type(&fty.spec).unwrap_or(Type::Void);
+                let init = self.expr(init);
+                if ty != Type::BOOL && ty != Type::Void {
+                    let t = self.type_name(&ty);
+                    let d = self.error("type-mismatch", fty.spec.span, format!("a loop condition must be a `bool`, not {t}"));
+                    d.label = "not `bool`".into();
+                } else if !super::expr::is_error(&init) && init.ty != ty {
+                    let (want, got) = (self.type_name(&ty), self.type_name(&init.ty));
+                    let d = self.error("type-mismatch", init.span, format!("cannot initialize a {want} with a {got}"));
+                    d.label = format!("this is {got}");
+                }
+                let precision = None;
+                let id = self.new_local(hir::Local {
+                    name: name.name.clone(),
+                    ty: Type::BOOL,
+                    constant: None,
+                    precision,
+                    span: name.span,
+                });
+                self.declare(name, Sym::Var(Var::Local(id)));
+                Cond::Decl(id, init)
+            }
+        }
+    }
+
+    fn stmt_into(&mut self, s: &ast::Stmt, out: &mut Vec<hir::Stmt>) {
+        let span = s.span;
+        let kind = match &s.kind {
+            ast::StmtKind::Decl(d) => {
+                out.extend(self.declaration(d, false));
+                return;
+            }
+            ast::StmtKind::Expr(e) => StmtKind::Expr(self.expr(e)),
+            ast::StmtKind::Block(b) => {
+                self.push_scope();
+                let stmts = self.block_stmts_same_scope(&b.stmts);
+                self.pop_scope();
+                StmtKind::Block(stmts)
+            }
+            ast::StmtKind::If(c, then, els) => {
+                let c = self.condition_expr(c, "an `if` condition");
+                let t = self.scoped(then);
+                let e = els.as_ref().map(|e| self.scoped(e)).unwrap_or_default();
+                StmtKind::If(c, t, e)
+            }
+            ast::StmtKind::While(c, body) => {
+                self.push_scope();
+                let cond = self.loop_condition(c);
+                self.fctx_mut().loops += 1;
+                let body = self.loop_body(body);
+                self.fctx_mut().loops -= 1;
+                self.pop_scope();
+                StmtKind::Loop { init: Vec::new(), cond: Some(Box::new(cond)), step: None, body, do_while: false }
+            }
+            ast::StmtKind::DoWhile(body, c) => {
+                self.fctx_mut().loops += 1;
+                let body = self.scoped(body);
+                self.fctx_mut().loops -= 1;
+                let cond = self.condition_expr(c, "a loop condition");
+                StmtKind::Loop { init: Vec::new(), cond: Some(Box::new(Cond::Expr(cond))), step: None, body, do_while: true }
+            }
+            ast::StmtKind::For { init, cond, step, body } => {
+                self.push_scope();
+                let mut init_out = Vec::new();
+                self.stmt_into(init, &mut init_out);
+                let cond = cond.as_ref().map(|c| Box::new(self.loop_condition(c)));
+                let step = step.as_ref().map(|e| self.expr(e));
+                self.fctx_mut().loops += 1;
+                let body = self.loop_body(body);
+                self.fctx_mut().loops -= 1;
+                self.pop_scope();
+                StmtKind::Loop { init: init_out, cond, step, body, do_while: false }
+            }
+            ast::StmtKind::Switch(sel, body) => self.switch(sel, body, span),
+            ast::StmtKind::Case(e) => {
+                let d = self.error("case-outside-switch", span, "`case` label outside a `switch`");
+                d.label = "not directly inside a switch body".into();
+                let _ = e;
+                return;
+            }
+            ast::StmtKind::Default => {
+                let d = self.error("case-outside-switch", span, "`default` label outside a `switch`");
+                d.label = "not directly inside a switch body".into();
+                return;
+            }
+            ast::StmtKind::Continue => {
+                if self.fctx_mut().loops == 0 {
+                    let d = self.error("continue-outside-loop", span, "`continue` outside a loop");
+                    d.label = "no loop to continue".into();
+                    return;
+                }
+                StmtKind::Continue
+            }
+            ast::StmtKind::Break => {
+                let f = self.fctx_mut();
+                if f.loops == 0 && f.switches == 0 {
+                    let d = self.error("break-outside-loop", span, "`break` outside a loop or `switch`");
+                    d.label = "nothing to break out of".into();
+                    return;
+                }
+                StmtKind::Break
+            }
+            ast::StmtKind::Return(e) => self.return_stmt(e.as_ref(), span),
+            ast::StmtKind::Discard => {
+                if self.stage != Stage::Fragment {
+                    let d = self.error("discard-in-vertex", span, "`discard` is only allowed in fragment shaders");
+                    d.label = "in a vertex shader".into();
+                    d.token = "discard".into();
+                    return;
+                }
+                StmtKind::Discard
+            }
+            ast::StmtKind::Empty | ast::StmtKind::Error => return,
+        };
+        out.push(hir::Stmt { kind, span });
+    }
+
+    fn fctx_mut(&mut self) -> &mut super::FnCtx {
+        self.fctx.as_mut().expect("statements are checked inside a function")
+    }
+
+    fn return_stmt(&mut self, e: Option<&ast::Expr>, span: crate::source::Span) -> StmtKind {
+        let ret = self.fctx_mut().ret.clone();
+        match e {
+            None => {
+                if ret != Type::Void {
+                    let t = self.type_name(&ret);
+                    let d = self.error("missing-return-value", span, format!("this function must return a {t}"));
+                    d.label = "`return` without a value".into();
+                    d.token = "return".into();
+                }
+                StmtKind::Return(None)
+            }
+            Some(e) => {
+                let v = self.expr(e);
+                if super::expr::is_error(&v) {
+                    return StmtKind::Return(None);
+                }
+                if ret == Type::Void {
+                    let d = self.error("return-value-in-void", v.span, "a `void` function cannot return a value");
+                    d.label = "a value returned".into();
+                    d.token = "return".into();
+                    return StmtKind::Return(None);
+                }
+                if v.ty != ret {
+                    let (want, got) = (self.type_name(&ret), self.type_name(&v.ty));
+                    let fix = super::expr::conversion_fix(self.file, &v, &ret);
+                    let d = self.error("type-mismatch", v.span, format!("this function returns {want}, not {got}"));
+                    d.label = format!("this is {got}");
+                    d.token = "return".into();
+                    if let Some(f) = fix {
+                        d.help = Some(f.message.clone());
+                        d.fix = Some(f);
+                    }
+                    return StmtKind::Return(None);
+                }
+                StmtKind::Return(Some(v))
+            }
+        }
+    }
+
+    fn switch(&mut self, sel: &ast::Expr, body: &ast::Block, span: crate::source::Span) -> StmtKind {
+        let selector = self.expr(sel);
+        let sel_ty = selector.ty.clone();
+        if !super::expr::is_error(&selector) && sel_ty != Type::INT && sel_ty != Type::UINT {
+            let t = self.type_name(&sel_ty);
+            let d = self.error("type-mismatch", selector.span, format!("a `switch` selector must be an `int` or `uint`, not {t}"));
+            d.label = format!("this is {t}");
+        }
+        self.push_scope();
+        self.fctx_mut().switches += 1;
+        let mut cases: Vec<hir::SwitchCase> = Vec::new();
+        let mut seen: Vec<(i64, crate::source::Span)> = Vec::new();
+        let mut seen_default: Option<crate::source::Span> = None;
+        for s in &body.stmts {
+            match &s.kind {
+                ast::StmtKind::Case(e) => {
+                    let v = self.expr(e);
+                    let value = if super::expr::is_error(&v) {
+                        None
+                    } else if let Some(c) = v.as_const().and_then(|c| c.as_int()).filter(|_| v.ty.is_scalar() && matches!(v.ty.scalar_kind(), Some(ScalarKind::Int | ScalarKind::Uint))) {
+                        if v.ty != sel_ty && (sel_ty == Type::INT || sel_ty == Type::UINT) {
+                            let (a, b) = (self.type_name(&v.ty), self.type_name(&sel_ty));
+                            let d = self.error("type-mismatch", v.span, format!("`case` label is {a} but the selector is {b}"));
+                            d.label = format!("this is {a}");
+                        }
+                        Some(c)
+                    } else {
+                        let d = self.error("non-constant-case", v.span, "a `case` label must be a constant integer expression");
+                        d.label = "not a constant integer".into();
+                        None
+                    };
+                    if let Some(c) = value {
+                        if let Some((_, prev)) = seen.iter().find(|(x, _)| *x == c) {
+                            let prev = *prev;
+                            let d = self.error("duplicate-case", s.span, format!("duplicate `case {c}`"));
+                            d.label = "already handled".into();
+                            d.secondary.push(crate::diagnostic::Label { span: prev, message: "first here".into() });
+                        } else {
+                            seen.push((c, s.span));
+                        }
+                    }
+                    if let Some(last) = cases.last_mut() {
+                        last.fall_through = !ends_in_jump(&last.body);
+                    }
+                    cases.push(hir::SwitchCase { value: Some(value.unwrap_or(i64::MIN)), body: Vec::new(), fall_through: true, span: s.span });
+                }
+                ast::StmtKind::Default => {
+                    if let Some(prev) = seen_default {
+                        let d = self.error("duplicate-case", s.span, "more than one `default` label");
+                        d.label = "second `default`".into();
+                        d.secondary.push(crate::diagnostic::Label { span: prev, message: "first here".into() });
+                    }
+                    seen_default = Some(s.span);
+                    if let Some(last) = cases.last_mut() {
+                        last.fall_through = !ends_in_jump(&last.body);
+                    }
+                    cases.push(hir::SwitchCase { value: None, body: Vec::new(), fall_through: true, span: s.span });
+                }
+                _ => {
+                    let mut stmts = Vec::new();
+                    self.stmt_into(s, &mut stmts);
+                    match cases.last_mut() {
+                        Some(c) => c.body.extend(stmts),
+                        None => {
+                            if !matches!(s.kind, ast::StmtKind::Empty | ast::StmtKind::Error) {
+                                let d = self.error(
+                                    "statement-before-case",
+                                    s.span,
+                                    "statements in a `switch` must come after a `case` or `default` label",
+                                );
+                                d.label = "before the first label".into();
+                            }
+                        }
+                    }
+                }
+            }
+        }
+        self.fctx_mut().switches -= 1;
+        self.pop_scope();
+        // The last label must be followed by a statement.
+        let last_stmt_is_label = body
+            .stmts
+            .last()
+            .is_some_and(|s| matches!(s.kind, ast::StmtKind::Case(_) | ast::StmtKind::Default));
+        if last_stmt_is_label {
+            let end = body.span.end.saturating_sub(1);
+            let d = self.error(
+                "label-at-end-of-switch",
+                crate::source::Span::new(end, end + 1),
+                "no statement between the last `case` label and the end of the `switch`",
+            );
+            d.label = "a statement is needed before `}`".into();
+            d.token = "switch".into();
+            d.fix = Some(Fix::certain("add `break;`", crate::source::Span::empty(end), "break; "));
+        }
+        if let Some(last) = cases.last_mut() {
+            last.fall_through = false;
+        }
+        let _ = span;
+        // Cases with a failed label are dropped.
+        cases.retain(|c| c.value != Some(i64::MIN));
+        StmtKind::Switch(selector, cases)
+    }
+}
+
+/// Whether a statement list ends in `break`, `continue`, `return` or `discard`.
+pub(crate) fn ends_in_jump(stmts: &[hir::Stmt]) -> bool {
+    match stmts.last().map(|s| &s.kind) {
+        Some(StmtKind::Break | StmtKind::Continue | StmtKind::Return(_) | StmtKind::Discard) => true,
+        Some(StmtKind::Block(b)) => ends_in_jump(b),
+        _ => false,
+    }
+}

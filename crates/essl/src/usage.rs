@@ -1,0 +1,271 @@
+//! Which functions, globals, blocks and built-ins the entry point actually uses — WebGL's
+//! notion of "active", which is more than static use: ANGLE folds constant `if`/`?:`
+//! conditions, drops code after `return`, and drops stores to locals that are never read
+//! (measured: `tests/oracle/PROBES.md` §1). Loops are not evaluated and `x * 0.0` is not folded.
+
+use std::collections::BTreeSet;
+
+use crate::builtins::BuiltinVar;
+use crate::hir::{Cond, Expr, ExprKind, Function, GlobalId, LocalId, Module, Scalar, Stmt, StmtKind};
+
+#[derive(Default)]
+struct Uses {
+    globals: BTreeSet<GlobalId>,
+    blocks: BTreeSet<usize>,
+    builtins: BTreeSet<BuiltinVar>,
+    calls: BTreeSet<usize>,
+    locals: BTreeSet<LocalId>,
+}
+
+impl Uses {
+    fn merge(&mut self, o: &Uses) {
+        self.globals.extend(&o.globals);
+        self.blocks.extend(&o.blocks);
+        self.builtins.extend(&o.builtins);
+        self.calls.extend(&o.calls);
+        self.locals.extend(&o.locals);
+    }
+}
+
+/// Marks `used` on functions, globals and blocks, and fills `used_builtins`.
+pub fn mark(m: &mut Module) {
+    let Some(entry) = m.entry else { return };
+    let mut fn_used = vec![false; m.functions.len()];
+    let mut all = Uses::default();
+    let mut stack = vec![entry];
+    fn_used[entry] = true;
+    while let Some(f) = stack.pop() {
+        let uses = analyze(&m.functions[f], m);
+        for &c in &uses.calls {
+            if !fn_used[c] {
+                fn_used[c] = true;
+                stack.push(c);
+            }
+        }
+        all.merge(&uses);
+    }
+    for (f, used) in m.functions.iter_mut().zip(fn_used) {
+        f.used = used;
+    }
+    for &g in &all.globals {
+        m.globals[g].used = true;
+        if let crate::hir::GlobalKind::BlockMember(b, _) = m.globals[g].kind {
+            all.blocks.insert(b);
+        }
+    }
+    for &b in &all.blocks {
+        m.blocks[b].used = true;
+    }
+    m.used_builtins = all.builtins.into_iter().collect();
+}
+
+/// A store to a local: its uses count only if the local is read.
+struct Store {
+    target: LocalId,
+    uses: Uses,
+}
+
+struct Walker {
+    live: Uses,
+    stores: Vec<Store>,
+}
+
+fn analyze(f: &Function, m: &Module) -> Uses {
+    let mut w = Walker { live: Uses::default(), stores: Vec::new() };
+    w.block(&f.body, m);
+    // Locals read in live code make the stores to them live, which may read more locals.
+    let mut done = vec![false; w.stores.len()];
+    loop {
+        let mut progress = false;
+        for (i, s) in w.stores.iter().enumerate() {
+            if !done[i] && w.live.locals.contains(&s.target) {
+                done[i] = true;
+                w.live.merge(&s.uses);
+                progress = true;
+            }
+        }
+        if !progress {
+            break;
+        }
+    }
+    w.live
+}
+
+fn const_bool(e: &Expr) -> Option<bool> {
+    match &e.kind {
+        ExprKind::Const(c) => match c.scalars()? {
+            [Scalar::B(b)] => Some(*b),
+            _ => None,
+        },
+        _ => None,
+    }
+}
+
+/// The local a store writes, if the expression is a write to (part of) a local.
+fn store_target(e: &Expr) -> Option<LocalId> {
+    match &e.kind {
+        ExprKind::Local(l) => Some(*l),
+        ExprKind::Index(b, _) | ExprKind::Member(b, _) | ExprKind::Swizzle(b, _) => store_target(b),
+        _ => None,
+    }
+}
+
+impl Walker {
+    /// Walks statements; returns true when the block ends control flow (later code is dead).
+    fn block(&mut self, stmts: &[Stmt], m: &Module) -> bool {
+        for s in stmts {
+            if self.stmt(s, m) {
+                return true;
+            }
+        }
+        false
+    }
+
+    fn stmt(&mut self, s: &Stmt, m: &Module) -> bool {
+        match &s.kind {
+            StmtKind::Expr(e) => self.effect(e, m),
+            StmtKind::Local(l, init) => {
+                if let Some(e) = init {
+                    let mut u = Uses::default();
+                    expr(e, &mut u, m);
+                    self.stores.push(Store { target: *l, uses: u });
+                }
+            }
+            StmtKind::Block(b) => return self.block(b, m),
+            StmtKind::If(c, t, e) => match const_bool(c) {
+                Some(true) => return self.block(t, m),
+                Some(false) => return self.block(e, m),
+                None => {
+                    expr(c, &mut self.live, m);
+                    let a = self.block(t, m);
+                    let b = self.block(e, m);
+                    return a && b;
+                }
+            },
+            StmtKind::Loop { init, cond, step, body, do_while } => {
+                self.block(init, m);
+                let never = matches!(cond.as_deref(), Some(Cond::Expr(c)) if const_bool(c) == Some(false));
+                if let Some(c) = cond {
+                    match &**c {
+                        Cond::Expr(e) => expr(e, &mut self.live, m),
+                        Cond::Decl(l, e) => {
+                            self.live.locals.insert(*l);
+                            expr(e, &mut self.live, m);
+                        }
+                    }
+                }
+                if never && !do_while {
+                    return false;
+                }
+                if let Some(st) = step {
+                    self.effect(st, m);
+                }
+                self.block(body, m);
+            }
+            StmtKind::Switch(sel, cases) => {
+                expr(sel, &mut self.live, m);
+                for c in cases {
+                    self.block(&c.body, m);
+                }
+            }
+            StmtKind::Return(v) => {
+                if let Some(e) = v {
+                    expr(e, &mut self.live, m);
+                }
+                return true;
+            }
+            StmtKind::Discard => return true,
+            StmtKind::Break | StmtKind::Continue => return true,
+        }
+        false
+    }
+
+    /// An expression statement: a store to a local is only live if the local is read.
+    fn effect(&mut self, e: &Expr, m: &Module) {
+        match &e.kind {
+            ExprKind::Assign(op, lhs, rhs) => {
+                if let Some(t) = store_target(lhs) {
+                    let mut u = Uses::default();
+                    expr(rhs, &mut u, m);
+                    // Indices in the target are reads too.
+                    target_reads(lhs, &mut u, m);
+                    if op.is_some() {
+                        u.locals.insert(t);
+                    }
+                    self.stores.push(Store { target: t, uses: u });
+                    return;
+                }
+                expr(e, &mut self.live, m);
+            }
+            ExprKind::IncDec(_, _, target) if store_target(target).is_some() => {
+                let t = store_target(target).expect("checked");
+                let mut u = Uses::default();
+                target_reads(target, &mut u, m);
+                self.stores.push(Store { target: t, uses: u });
+            }
+            ExprKind::Comma(a, b) => {
+                self.effect(a, m);
+                self.effect(b, m);
+            }
+            _ => expr(e, &mut self.live, m),
+        }
+    }
+}
+
+/// Reads inside an assignment target (`a[i] = …` reads `i`).
+fn target_reads(e: &Expr, u: &mut Uses, m: &Module) {
+    match &e.kind {
+        ExprKind::Index(b, i) => {
+            target_reads(b, u, m);
+            expr(i, u, m);
+        }
+        ExprKind::Member(b, _) | ExprKind::Swizzle(b, _) => target_reads(b, u, m),
+        _ => {}
+    }
+}
+
+/// Collects everything an expression reads or calls.
+fn expr(e: &Expr, u: &mut Uses, m: &Module) {
+    match &e.kind {
+        ExprKind::Const(_) => {}
+        ExprKind::Local(l) => {
+            u.locals.insert(*l);
+        }
+        ExprKind::Param(_) => {}
+        ExprKind::Global(g) => {
+            u.globals.insert(*g);
+        }
+        ExprKind::BuiltinVar(v) => {
+            u.builtins.insert(*v);
+        }
+        ExprKind::Unary(_, a) | ExprKind::IncDec(_, _, a) | ExprKind::Member(a, _) | ExprKind::Swizzle(a, _) => {
+            expr(a, u, m)
+        }
+        ExprKind::Binary(_, a, b) | ExprKind::Assign(_, a, b) | ExprKind::Comma(a, b) | ExprKind::Index(a, b) => {
+            expr(a, u, m);
+            expr(b, u, m);
+        }
+        ExprKind::Select(c, a, b) => {
+            expr(c, u, m);
+            expr(a, u, m);
+            expr(b, u, m);
+        }
+        ExprKind::Call(f, args) => {
+            u.calls.insert(*f);
+            for a in args {
+                expr(a, u, m);
+            }
+        }
+        ExprKind::Builtin(_, args) | ExprKind::Construct(args) => {
+            for a in args {
+                expr(a, u, m);
+            }
+        }
+        ExprKind::BlockMember(b, idx, _) => {
+            u.blocks.insert(*b);
+            if let Some(i) = idx {
+                expr(i, u, m);
+            }
+        }
+    }
+}
