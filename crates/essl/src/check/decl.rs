@@ -266,7 +266,9 @@ impl Checker<'_> {
             }
         };
         let Some(base) = self.resolve_type(&ty.spec) else { return Vec::new() };
-        self.check_declaration_qualifiers(ty, kind, &base);
+        if !declarators.is_empty() {
+            self.check_declaration_qualifiers(ty, kind, &base);
+        }
         let location = if matches!(kind, DeclKind::Input | DeclKind::Output) {
             self.layout_location(ty, kind)
         } else {
