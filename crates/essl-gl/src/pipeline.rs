@@ -1,0 +1,436 @@
+//! Render pipelines, built on demand and cached by everything they depend on: the program,
+//! the vertex layout (and the shader patches it needs), the primitive topology, and the
+//! fixed-function state. Bind group layouts and bind groups are cached here too.
+
+use std::borrow::Cow;
+use std::collections::HashMap;
+
+use crate::context::{Gpu, COLOR_FORMAT, DEPTH_FORMAT};
+use crate::program::LinkedProgram;
+use crate::shader_patch::{wrap_entry_point, InputPatch};
+use crate::texture::SampleKind;
+
+/// Bind groups kept at most before the caches are emptied.
+const MAX_CACHED_BIND_GROUPS: usize = 4096;
+
+/// One vertex buffer slot: one attribute.
+#[derive(Clone, Debug, PartialEq, Eq, Hash)]
+pub(crate) struct VertexSlot {
+    pub(crate) stride: u64,
+    pub(crate) step: wgpu::VertexStepMode,
+    pub(crate) format: wgpu::VertexFormat,
+    pub(crate) offset: u64,
+    pub(crate) location: u32,
+}
+
+/// How a sampler slot is bound (what the bind group layout says about it).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub(crate) struct SlotBinding {
+    pub(crate) dim: wgpu::TextureViewDimension,
+    pub(crate) kind: SampleKind,
+    /// Whether the texture may be filtered (and the sampler may filter).
+    pub(crate) filterable: bool,
+}
+
+/// Everything a render pipeline depends on.
+#[derive(Clone, Debug, PartialEq, Eq, Hash)]
+pub(crate) struct PipelineKey {
+    pub(crate) program: u64,
+    pub(crate) vertex: Vec<VertexSlot>,
+    pub(crate) patches: Vec<InputPatch>,
+    pub(crate) topology: wgpu::PrimitiveTopology,
+    pub(crate) strip_index_format: Option<wgpu::IndexFormat>,
+    pub(crate) cull_mode: Option<wgpu::Face>,
+    pub(crate) front_face: wgpu::FrontFace,
+    pub(crate) depth_write: bool,
+    pub(crate) depth_compare: wgpu::CompareFunction,
+    /// Constant and slope-scale (as bits) depth bias.
+    pub(crate) depth_bias: (i32, u32),
+    pub(crate) blend: Option<wgpu::BlendState>,
+    pub(crate) write_mask: wgpu::ColorWrites,
+    pub(crate) slots: Vec<SlotBinding>,
+}
+
+/// A pipeline and the id draws compare to skip redundant `set_pipeline` calls.
+#[derive(Clone)]
+pub(crate) struct CachedPipeline {
+    pub(crate) id: u64,
+    pub(crate) pipeline: wgpu::RenderPipeline,
+}
+
+/// Pipelines, layouts and bind groups.
+#[derive(Default)]
+pub(crate) struct PipelineCache {
+    pipelines: HashMap<PipelineKey, Result<CachedPipeline, String>>,
+    next_id: u64,
+    group0_layout: Option<wgpu::BindGroupLayout>,
+    group1_layouts: HashMap<Vec<SlotBinding>, wgpu::BindGroupLayout>,
+    group0_groups: HashMap<(u64, u64), wgpu::BindGroup>,
+    #[allow(clippy::type_complexity)]
+    group1_groups:
+        HashMap<(Vec<SlotBinding>, Vec<(wgpu::TextureView, wgpu::Sampler)>), wgpu::BindGroup>,
+    modules: HashMap<(u64, Vec<InputPatch>), Result<wgpu::ShaderModule, String>>,
+    clear: HashMap<(wgpu::ColorWrites, bool), wgpu::RenderPipeline>,
+    /// Pipelines created (for statistics and tests).
+    pub(crate) created: u64,
+}
+
+/// A shader module from a naga module, or wgpu's complaint.
+pub(crate) fn create_module(
+    gpu: &Gpu,
+    module: naga::Module,
+    label: &str,
+) -> Result<wgpu::ShaderModule, String> {
+    let scope = gpu.device.push_error_scope(wgpu::ErrorFilter::Validation);
+    let m = gpu
+        .device
+        .create_shader_module(wgpu::ShaderModuleDescriptor {
+            label: Some(label),
+            source: wgpu::ShaderSource::Naga(Cow::Owned(module)),
+        });
+    match pollster::block_on(scope.pop()) {
+        Some(e) => Err(e.to_string()),
+        None => Ok(m),
+    }
+}
+
+impl PipelineCache {
+    /// The layout of group 0: the default uniform block, with a dynamic offset.
+    fn group0_layout(&mut self, gpu: &Gpu) -> wgpu::BindGroupLayout {
+        self.group0_layout
+            .get_or_insert_with(|| {
+                gpu.device
+                    .create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
+                        label: Some("essl-gl uniforms"),
+                        entries: &[wgpu::BindGroupLayoutEntry {
+                            binding: 0,
+                            visibility: wgpu::ShaderStages::VERTEX_FRAGMENT,
+                            ty: wgpu::BindingType::Buffer {
+                                ty: wgpu::BufferBindingType::Uniform,
+                                has_dynamic_offset: true,
+                                min_binding_size: None,
+                            },
+                            count: None,
+                        }],
+                    })
+            })
+            .clone()
+    }
+
+    /// The layout of group 1 for these sampler slots.
+    fn group1_layout(&mut self, gpu: &Gpu, slots: &[SlotBinding]) -> wgpu::BindGroupLayout {
+        if let Some(l) = self.group1_layouts.get(slots) {
+            return l.clone();
+        }
+        let mut entries = Vec::new();
+        for (i, s) in slots.iter().enumerate() {
+            let sample_type = match s.kind {
+                SampleKind::Float => wgpu::TextureSampleType::Float {
+                    filterable: s.filterable,
+                },
+                SampleKind::Sint => wgpu::TextureSampleType::Sint,
+                SampleKind::Uint => wgpu::TextureSampleType::Uint,
+                SampleKind::Depth => wgpu::TextureSampleType::Depth,
+            };
+            let sampler = match s.kind {
+                SampleKind::Depth => wgpu::SamplerBindingType::Comparison,
+                SampleKind::Float if s.filterable => wgpu::SamplerBindingType::Filtering,
+                _ => wgpu::SamplerBindingType::NonFiltering,
+            };
+            entries.push(wgpu::BindGroupLayoutEntry {
+                binding: 2 * i as u32,
+                visibility: wgpu::ShaderStages::VERTEX_FRAGMENT,
+                ty: wgpu::BindingType::Texture {
+                    sample_type,
+                    view_dimension: s.dim,
+                    multisampled: false,
+                },
+                count: None,
+            });
+            entries.push(wgpu::BindGroupLayoutEntry {
+                binding: 2 * i as u32 + 1,
+                visibility: wgpu::ShaderStages::VERTEX_FRAGMENT,
+                ty: wgpu::BindingType::Sampler(sampler),
+                count: None,
+            });
+        }
+        let layout = gpu
+            .device
+            .create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
+                label: Some("essl-gl textures"),
+                entries: &entries,
+            });
+        self.group1_layouts.insert(slots.to_vec(), layout.clone());
+        layout
+    }
+
+    /// The group-0 bind group for `size` bytes of uniforms in an arena chunk.
+    pub(crate) fn group0(
+        &mut self,
+        gpu: &Gpu,
+        chunk: u64,
+        buffer: &wgpu::Buffer,
+        size: u64,
+    ) -> wgpu::BindGroup {
+        if let Some(g) = self.group0_groups.get(&(chunk, size)) {
+            return g.clone();
+        }
+        let layout = self.group0_layout(gpu);
+        let group = gpu.device.create_bind_group(&wgpu::BindGroupDescriptor {
+            label: Some("essl-gl uniforms"),
+            layout: &layout,
+            entries: &[wgpu::BindGroupEntry {
+                binding: 0,
+                resource: wgpu::BindingResource::Buffer(wgpu::BufferBinding {
+                    buffer,
+                    offset: 0,
+                    size: wgpu::BufferSize::new(size),
+                }),
+            }],
+        });
+        self.group0_groups.insert((chunk, size), group.clone());
+        group
+    }
+
+    /// The group-1 bind group for these textures and samplers.
+    pub(crate) fn group1(
+        &mut self,
+        gpu: &Gpu,
+        slots: &[SlotBinding],
+        resources: Vec<(wgpu::TextureView, wgpu::Sampler)>,
+    ) -> wgpu::BindGroup {
+        let key = (slots.to_vec(), resources);
+        if let Some(g) = self.group1_groups.get(&key) {
+            return g.clone();
+        }
+        if self.group1_groups.len() >= MAX_CACHED_BIND_GROUPS {
+            self.group1_groups.clear();
+        }
+        let layout = self.group1_layout(gpu, slots);
+        let mut entries = Vec::new();
+        for (i, (view, sampler)) in key.1.iter().enumerate() {
+            entries.push(wgpu::BindGroupEntry {
+                binding: 2 * i as u32,
+                resource: wgpu::BindingResource::TextureView(view),
+            });
+            entries.push(wgpu::BindGroupEntry {
+                binding: 2 * i as u32 + 1,
+                resource: wgpu::BindingResource::Sampler(sampler),
+            });
+        }
+        let group = gpu.device.create_bind_group(&wgpu::BindGroupDescriptor {
+            label: Some("essl-gl textures"),
+            layout: &layout,
+            entries: &entries,
+        });
+        self.group1_groups.insert(key, group.clone());
+        group
+    }
+
+    /// The vertex module for a set of input patches.
+    fn vertex_module(
+        &mut self,
+        gpu: &Gpu,
+        program: &LinkedProgram,
+        patches: &[InputPatch],
+    ) -> Result<wgpu::ShaderModule, String> {
+        if patches.is_empty() {
+            return Ok(program.vertex_module.clone());
+        }
+        self.modules
+            .entry((program.serial, patches.to_vec()))
+            .or_insert_with(|| {
+                let module = wrap_entry_point(&program.layout.vertex, patches, false);
+                create_module(gpu, module, "essl-gl vertex (patched inputs)")
+            })
+            .clone()
+    }
+
+    /// The pipeline for `key`, created on first use. An `Err` says why wgpu refused it.
+    pub(crate) fn pipeline(
+        &mut self,
+        gpu: &Gpu,
+        key: &PipelineKey,
+        program: &LinkedProgram,
+    ) -> Result<CachedPipeline, String> {
+        if let Some(p) = self.pipelines.get(key) {
+            return p.clone();
+        }
+        let result = self.create(gpu, key, program);
+        self.pipelines.insert(key.clone(), result.clone());
+        result
+    }
+
+    fn create(
+        &mut self,
+        gpu: &Gpu,
+        key: &PipelineKey,
+        program: &LinkedProgram,
+    ) -> Result<CachedPipeline, String> {
+        let vertex_module = self.vertex_module(gpu, program, &key.patches)?;
+        let group0 = program
+            .layout
+            .uniform_block
+            .is_some()
+            .then(|| self.group0_layout(gpu));
+        let group1 = (!key.slots.is_empty()).then(|| self.group1_layout(gpu, &key.slots));
+        let mut groups: Vec<Option<&wgpu::BindGroupLayout>> = vec![group0.as_ref()];
+        if group1.is_some() {
+            groups.push(group1.as_ref());
+        }
+        let scope = gpu.device.push_error_scope(wgpu::ErrorFilter::Validation);
+        let layout = gpu
+            .device
+            .create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
+                label: Some("essl-gl"),
+                bind_group_layouts: &groups,
+                immediate_size: 0,
+            });
+        let attributes: Vec<[wgpu::VertexAttribute; 1]> = key
+            .vertex
+            .iter()
+            .map(|s| {
+                [wgpu::VertexAttribute {
+                    format: s.format,
+                    offset: s.offset,
+                    shader_location: s.location,
+                }]
+            })
+            .collect();
+        let buffers: Vec<Option<wgpu::VertexBufferLayout>> = key
+            .vertex
+            .iter()
+            .zip(&attributes)
+            .map(|(s, a)| {
+                Some(wgpu::VertexBufferLayout {
+                    array_stride: s.stride,
+                    step_mode: s.step,
+                    attributes: a,
+                })
+            })
+            .collect();
+        let pipeline = gpu
+            .device
+            .create_render_pipeline(&wgpu::RenderPipelineDescriptor {
+                label: Some("essl-gl"),
+                layout: Some(&layout),
+                vertex: wgpu::VertexState {
+                    module: &vertex_module,
+                    entry_point: Some("main"),
+                    compilation_options: Default::default(),
+                    buffers: &buffers,
+                },
+                primitive: wgpu::PrimitiveState {
+                    topology: key.topology,
+                    strip_index_format: key.strip_index_format,
+                    front_face: key.front_face,
+                    cull_mode: key.cull_mode,
+                    unclipped_depth: false,
+                    polygon_mode: wgpu::PolygonMode::Fill,
+                    conservative: false,
+                },
+                depth_stencil: Some(wgpu::DepthStencilState {
+                    format: DEPTH_FORMAT,
+                    depth_write_enabled: Some(key.depth_write),
+                    depth_compare: Some(key.depth_compare),
+                    stencil: Default::default(),
+                    bias: wgpu::DepthBiasState {
+                        constant: key.depth_bias.0,
+                        slope_scale: f32::from_bits(key.depth_bias.1),
+                        clamp: 0.0,
+                    },
+                }),
+                multisample: Default::default(),
+                fragment: Some(wgpu::FragmentState {
+                    module: &program.fragment_module,
+                    entry_point: Some("main"),
+                    compilation_options: Default::default(),
+                    targets: &[Some(wgpu::ColorTargetState {
+                        format: COLOR_FORMAT,
+                        blend: key.blend,
+                        write_mask: key.write_mask,
+                    })],
+                }),
+                multiview_mask: None,
+                cache: None,
+            });
+        if let Some(e) = pollster::block_on(scope.pop()) {
+            return Err(e.to_string());
+        }
+        self.next_id += 1;
+        self.created += 1;
+        Ok(CachedPipeline {
+            id: self.next_id,
+            pipeline,
+        })
+    }
+
+    /// The pipeline that clears with a full-screen triangle (for clears that the colour mask,
+    /// depth mask or scissor restrict): colour from the uniform block, depth from its `w`.
+    pub(crate) fn clear_pipeline(
+        &mut self,
+        gpu: &Gpu,
+        write_mask: wgpu::ColorWrites,
+        depth: bool,
+    ) -> wgpu::RenderPipeline {
+        if let Some(p) = self.clear.get(&(write_mask, depth)) {
+            return p.clone();
+        }
+        const SOURCE: &str = "
+            struct Clear { color: vec4<f32>, depth: vec4<f32> }
+            @group(0) @binding(0) var<uniform> clear: Clear;
+            @vertex fn vs(@builtin(vertex_index) i: u32) -> @builtin(position) vec4<f32> {
+                let x = f32((i << 1u) & 2u) * 2.0 - 1.0;
+                let y = f32(i & 2u) * 2.0 - 1.0;
+                return vec4(x, y, clear.depth.x, 1.0);
+            }
+            @fragment fn fs() -> @location(0) vec4<f32> { return clear.color; }
+        ";
+        let module = naga::front::wgsl::parse_str(SOURCE).expect("the clear shader parses");
+        let module =
+            create_module(gpu, module, "essl-gl clear").expect("the clear shader is valid");
+        let group0 = self.group0_layout(gpu);
+        let layout = gpu
+            .device
+            .create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
+                label: Some("essl-gl clear"),
+                bind_group_layouts: &[Some(&group0)],
+                immediate_size: 0,
+            });
+        let pipeline = gpu
+            .device
+            .create_render_pipeline(&wgpu::RenderPipelineDescriptor {
+                label: Some("essl-gl clear"),
+                layout: Some(&layout),
+                vertex: wgpu::VertexState {
+                    module: &module,
+                    entry_point: Some("vs"),
+                    compilation_options: Default::default(),
+                    buffers: &[],
+                },
+                primitive: Default::default(),
+                depth_stencil: Some(wgpu::DepthStencilState {
+                    format: DEPTH_FORMAT,
+                    depth_write_enabled: Some(depth),
+                    depth_compare: Some(wgpu::CompareFunction::Always),
+                    stencil: Default::default(),
+                    bias: Default::default(),
+                }),
+                multisample: Default::default(),
+                fragment: Some(wgpu::FragmentState {
+                    module: &module,
+                    entry_point: Some("fs"),
+                    compilation_options: Default::default(),
+                    targets: &[Some(wgpu::ColorTargetState {
+                        format: COLOR_FORMAT,
+                        blend: None,
+                        write_mask,
+                    })],
+                }),
+                multiview_mask: None,
+                cache: None,
+            });
+        self.clear.insert((write_mask, depth), pipeline.clone());
+        pipeline
+    }
+}

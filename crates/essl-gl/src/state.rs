@@ -1,0 +1,424 @@
+//! Fixed-function state: viewport, scissor, clear values, depth, culling, blending, masks,
+//! and pixel storage (`pixel_storei`).
+
+use crate::context::Context;
+use crate::gl;
+
+/// The fixed-function state of a context, with GL's initial values.
+#[derive(Clone, Debug)]
+pub(crate) struct RenderState {
+    pub(crate) viewport: [i32; 4],
+    pub(crate) scissor: [i32; 4],
+    pub(crate) scissor_test: bool,
+    pub(crate) clear_color: [f32; 4],
+    pub(crate) clear_depth: f32,
+    pub(crate) clear_stencil: i32,
+    pub(crate) depth_test: bool,
+    pub(crate) depth_func: u32,
+    pub(crate) depth_mask: bool,
+    pub(crate) depth_range: [f32; 2],
+    pub(crate) cull_face: bool,
+    pub(crate) cull_face_mode: u32,
+    pub(crate) front_face: u32,
+    pub(crate) blend: bool,
+    pub(crate) blend_src_rgb: u32,
+    pub(crate) blend_dst_rgb: u32,
+    pub(crate) blend_src_alpha: u32,
+    pub(crate) blend_dst_alpha: u32,
+    pub(crate) blend_equation_rgb: u32,
+    pub(crate) blend_equation_alpha: u32,
+    pub(crate) blend_color: [f32; 4],
+    pub(crate) color_mask: [bool; 4],
+    pub(crate) polygon_offset_fill: bool,
+    pub(crate) polygon_offset_factor: f32,
+    pub(crate) polygon_offset_units: f32,
+    pub(crate) rasterizer_discard: bool,
+    pub(crate) dither: bool,
+    pub(crate) stencil_test: bool,
+    pub(crate) sample_alpha_to_coverage: bool,
+    pub(crate) sample_coverage: bool,
+    pub(crate) line_width: f32,
+}
+
+impl RenderState {
+    pub(crate) fn new(width: u32, height: u32) -> Self {
+        RenderState {
+            viewport: [0, 0, width as i32, height as i32],
+            scissor: [0, 0, width as i32, height as i32],
+            scissor_test: false,
+            clear_color: [0.0; 4],
+            clear_depth: 1.0,
+            clear_stencil: 0,
+            depth_test: false,
+            depth_func: gl::LESS,
+            depth_mask: true,
+            depth_range: [0.0, 1.0],
+            cull_face: false,
+            cull_face_mode: gl::BACK,
+            front_face: gl::CCW,
+            blend: false,
+            blend_src_rgb: gl::ONE,
+            blend_dst_rgb: gl::ZERO,
+            blend_src_alpha: gl::ONE,
+            blend_dst_alpha: gl::ZERO,
+            blend_equation_rgb: gl::FUNC_ADD,
+            blend_equation_alpha: gl::FUNC_ADD,
+            blend_color: [0.0; 4],
+            color_mask: [true; 4],
+            polygon_offset_fill: false,
+            polygon_offset_factor: 0.0,
+            polygon_offset_units: 0.0,
+            rasterizer_discard: false,
+            dither: true,
+            stencil_test: false,
+            sample_alpha_to_coverage: false,
+            sample_coverage: false,
+            line_width: 1.0,
+        }
+    }
+}
+
+/// Pixel storage parameters (`pixel_storei`).
+#[derive(Clone, Debug)]
+pub(crate) struct PixelStore {
+    pub(crate) unpack_alignment: u32,
+    pub(crate) pack_alignment: u32,
+    pub(crate) unpack_row_length: u32,
+    pub(crate) unpack_skip_rows: u32,
+    pub(crate) unpack_skip_pixels: u32,
+    pub(crate) unpack_image_height: u32,
+    pub(crate) unpack_skip_images: u32,
+    pub(crate) pack_row_length: u32,
+    pub(crate) pack_skip_rows: u32,
+    pub(crate) pack_skip_pixels: u32,
+    pub(crate) unpack_flip_y: bool,
+    pub(crate) unpack_premultiply_alpha: bool,
+    pub(crate) unpack_colorspace_conversion: u32,
+}
+
+impl Default for PixelStore {
+    fn default() -> Self {
+        PixelStore {
+            unpack_alignment: 4,
+            pack_alignment: 4,
+            unpack_row_length: 0,
+            unpack_skip_rows: 0,
+            unpack_skip_pixels: 0,
+            unpack_image_height: 0,
+            unpack_skip_images: 0,
+            pack_row_length: 0,
+            pack_skip_rows: 0,
+            pack_skip_pixels: 0,
+            unpack_flip_y: false,
+            unpack_premultiply_alpha: false,
+            unpack_colorspace_conversion: gl::BROWSER_DEFAULT_WEBGL,
+        }
+    }
+}
+
+/// Whether `func` is one of GL's eight comparison functions.
+pub(crate) fn is_compare_func(func: u32) -> bool {
+    (gl::NEVER..=gl::ALWAYS).contains(&func)
+}
+
+fn is_blend_factor(f: u32) -> bool {
+    matches!(
+        f,
+        gl::ZERO
+            | gl::ONE
+            | gl::SRC_COLOR
+            | gl::ONE_MINUS_SRC_COLOR
+            | gl::DST_COLOR
+            | gl::ONE_MINUS_DST_COLOR
+            | gl::SRC_ALPHA
+            | gl::ONE_MINUS_SRC_ALPHA
+            | gl::DST_ALPHA
+            | gl::ONE_MINUS_DST_ALPHA
+            | gl::CONSTANT_COLOR
+            | gl::ONE_MINUS_CONSTANT_COLOR
+            | gl::CONSTANT_ALPHA
+            | gl::ONE_MINUS_CONSTANT_ALPHA
+            | gl::SRC_ALPHA_SATURATE
+    )
+}
+
+fn is_blend_equation(e: u32) -> bool {
+    matches!(
+        e,
+        gl::FUNC_ADD | gl::FUNC_SUBTRACT | gl::FUNC_REVERSE_SUBTRACT | gl::MIN | gl::MAX
+    )
+}
+
+fn uses_constant_color(f: u32) -> bool {
+    matches!(f, gl::CONSTANT_COLOR | gl::ONE_MINUS_CONSTANT_COLOR)
+}
+
+fn uses_constant_alpha(f: u32) -> bool {
+    matches!(f, gl::CONSTANT_ALPHA | gl::ONE_MINUS_CONSTANT_ALPHA)
+}
+
+impl Context {
+    /// Sets the viewport (`viewport`): `x`, `y` from the bottom-left corner, in pixels.
+    /// Negative `width` or `height` → `INVALID_VALUE`.
+    pub fn viewport(&mut self, x: i32, y: i32, width: i32, height: i32) {
+        if width < 0 || height < 0 {
+            return self.error(gl::INVALID_VALUE, "viewport", "negative width or height");
+        }
+        let max = self.gpu.limits.max_texture_dimension_2d as i32;
+        self.state.viewport = [x, y, width.min(max), height.min(max)];
+    }
+
+    /// Sets the scissor box (`scissor`), from the bottom-left corner.
+    pub fn scissor(&mut self, x: i32, y: i32, width: i32, height: i32) {
+        if width < 0 || height < 0 {
+            return self.error(gl::INVALID_VALUE, "scissor", "negative width or height");
+        }
+        self.state.scissor = [x, y, width, height];
+    }
+
+    /// Sets the colour [`Context::clear`] writes (`clearColor`).
+    pub fn clear_color(&mut self, red: f32, green: f32, blue: f32, alpha: f32) {
+        self.state.clear_color = [red, green, blue, alpha];
+    }
+
+    /// Sets the depth [`Context::clear`] writes (`clearDepth`), clamped to 0..1.
+    pub fn clear_depth(&mut self, depth: f32) {
+        self.state.clear_depth = depth.clamp(0.0, 1.0);
+    }
+
+    /// Sets the stencil value [`Context::clear`] writes (`clearStencil`). The default
+    /// framebuffer has no stencil buffer, so this is only state.
+    pub fn clear_stencil(&mut self, s: i32) {
+        self.state.clear_stencil = s;
+    }
+
+    fn capability(&mut self, cap: u32, value: Option<bool>, function: &str) -> Option<bool> {
+        let s = &mut self.state;
+        let slot = match cap {
+            gl::BLEND => &mut s.blend,
+            gl::CULL_FACE => &mut s.cull_face,
+            gl::DEPTH_TEST => &mut s.depth_test,
+            gl::DITHER => &mut s.dither,
+            gl::POLYGON_OFFSET_FILL => &mut s.polygon_offset_fill,
+            gl::RASTERIZER_DISCARD => &mut s.rasterizer_discard,
+            gl::SAMPLE_ALPHA_TO_COVERAGE => &mut s.sample_alpha_to_coverage,
+            gl::SAMPLE_COVERAGE => &mut s.sample_coverage,
+            gl::SCISSOR_TEST => &mut s.scissor_test,
+            gl::STENCIL_TEST => &mut s.stencil_test,
+            _ => {
+                self.error(
+                    gl::INVALID_ENUM,
+                    function,
+                    format_args!("capability 0x{cap:04X}"),
+                );
+                return None;
+            }
+        };
+        if let Some(v) = value {
+            *slot = v;
+        }
+        Some(*slot)
+    }
+
+    /// Enables a capability (`DEPTH_TEST`, `CULL_FACE`, `BLEND`, `SCISSOR_TEST`,
+    /// `POLYGON_OFFSET_FILL`, `RASTERIZER_DISCARD`, …); an unknown one → `INVALID_ENUM`.
+    ///
+    /// `STENCIL_TEST` is accepted but has no effect (the default framebuffer has no stencil
+    /// buffer, so GL's stencil test always passes); `DITHER` and the sample-coverage
+    /// capabilities are state only (the framebuffer is single-sampled).
+    pub fn enable(&mut self, cap: u32) {
+        self.capability(cap, Some(true), "enable");
+    }
+
+    /// Disables a capability; see [`Context::enable`].
+    pub fn disable(&mut self, cap: u32) {
+        self.capability(cap, Some(false), "disable");
+    }
+
+    /// Whether a capability is enabled (`isEnabled`); an unknown one → `INVALID_ENUM`, false.
+    pub fn is_enabled(&mut self, cap: u32) -> bool {
+        self.capability(cap, None, "isEnabled").unwrap_or(false)
+    }
+
+    /// Sets the depth comparison (`depthFunc`): `NEVER`, `LESS`, … `ALWAYS`.
+    pub fn depth_func(&mut self, func: u32) {
+        if !is_compare_func(func) {
+            return self.error(gl::INVALID_ENUM, "depthFunc", format_args!("0x{func:04X}"));
+        }
+        self.state.depth_func = func;
+    }
+
+    /// Enables or disables writing to the depth buffer (`depthMask`).
+    pub fn depth_mask(&mut self, flag: bool) {
+        self.state.depth_mask = flag;
+    }
+
+    /// Maps normalized device depth to window depth (`depthRange`); values are clamped to
+    /// 0..1 and `z_near > z_far` → `INVALID_OPERATION` (WebGL's rule).
+    pub fn depth_range(&mut self, z_near: f32, z_far: f32) {
+        if z_near > z_far {
+            return self.error(gl::INVALID_OPERATION, "depthRange", "zNear > zFar");
+        }
+        self.state.depth_range = [z_near.clamp(0.0, 1.0), z_far.clamp(0.0, 1.0)];
+    }
+
+    /// Chooses which faces `CULL_FACE` culls (`cullFace`): `FRONT`, `BACK`, `FRONT_AND_BACK`.
+    pub fn cull_face(&mut self, mode: u32) {
+        if !matches!(mode, gl::FRONT | gl::BACK | gl::FRONT_AND_BACK) {
+            return self.error(gl::INVALID_ENUM, "cullFace", format_args!("0x{mode:04X}"));
+        }
+        self.state.cull_face_mode = mode;
+    }
+
+    /// Chooses the winding of front faces (`frontFace`): `CCW` (the default) or `CW`.
+    pub fn front_face(&mut self, mode: u32) {
+        if !matches!(mode, gl::CW | gl::CCW) {
+            return self.error(gl::INVALID_ENUM, "frontFace", format_args!("0x{mode:04X}"));
+        }
+        self.state.front_face = mode;
+    }
+
+    /// Sets the blend factors for colour and alpha (`blendFunc`).
+    pub fn blend_func(&mut self, sfactor: u32, dfactor: u32) {
+        self.blend_func_impl(sfactor, dfactor, sfactor, dfactor, "blendFunc");
+    }
+
+    /// Sets separate blend factors for colour and alpha (`blendFuncSeparate`).
+    pub fn blend_func_separate(
+        &mut self,
+        src_rgb: u32,
+        dst_rgb: u32,
+        src_alpha: u32,
+        dst_alpha: u32,
+    ) {
+        self.blend_func_impl(src_rgb, dst_rgb, src_alpha, dst_alpha, "blendFuncSeparate");
+    }
+
+    fn blend_func_impl(&mut self, sr: u32, dr: u32, sa: u32, da: u32, function: &str) {
+        if ![sr, dr, sa, da].into_iter().all(is_blend_factor) {
+            return self.error(gl::INVALID_ENUM, function, "not a blend factor");
+        }
+        // WebGL: constant colour and constant alpha cannot be combined as source and
+        // destination factors.
+        if (uses_constant_color(sr) && uses_constant_alpha(dr))
+            || (uses_constant_alpha(sr) && uses_constant_color(dr))
+        {
+            return self.error(
+                gl::INVALID_OPERATION,
+                function,
+                "CONSTANT_COLOR and CONSTANT_ALPHA cannot be used together",
+            );
+        }
+        let s = &mut self.state;
+        (
+            s.blend_src_rgb,
+            s.blend_dst_rgb,
+            s.blend_src_alpha,
+            s.blend_dst_alpha,
+        ) = (sr, dr, sa, da);
+    }
+
+    /// Sets the blend equation for colour and alpha (`blendEquation`): `FUNC_ADD`,
+    /// `FUNC_SUBTRACT`, `FUNC_REVERSE_SUBTRACT`, `MIN`, `MAX`.
+    pub fn blend_equation(&mut self, mode: u32) {
+        self.blend_equation_separate_impl(mode, mode, "blendEquation");
+    }
+
+    /// Sets separate blend equations for colour and alpha (`blendEquationSeparate`).
+    pub fn blend_equation_separate(&mut self, mode_rgb: u32, mode_alpha: u32) {
+        self.blend_equation_separate_impl(mode_rgb, mode_alpha, "blendEquationSeparate");
+    }
+
+    fn blend_equation_separate_impl(&mut self, rgb: u32, alpha: u32, function: &str) {
+        if !is_blend_equation(rgb) || !is_blend_equation(alpha) {
+            return self.error(gl::INVALID_ENUM, function, "not a blend equation");
+        }
+        self.state.blend_equation_rgb = rgb;
+        self.state.blend_equation_alpha = alpha;
+    }
+
+    /// Sets the constant blend colour (`blendColor`).
+    pub fn blend_color(&mut self, red: f32, green: f32, blue: f32, alpha: f32) {
+        self.state.blend_color = [red, green, blue, alpha];
+    }
+
+    /// Enables or disables writing of each colour component (`colorMask`).
+    pub fn color_mask(&mut self, red: bool, green: bool, blue: bool, alpha: bool) {
+        self.state.color_mask = [red, green, blue, alpha];
+    }
+
+    /// Sets the depth offset of `POLYGON_OFFSET_FILL` (`polygonOffset`).
+    pub fn polygon_offset(&mut self, factor: f32, units: f32) {
+        self.state.polygon_offset_factor = factor;
+        self.state.polygon_offset_units = units;
+    }
+
+    /// Sets the line width (`lineWidth`); only 1 is drawn, as on most WebGL implementations.
+    /// A width ≤ 0 or NaN → `INVALID_VALUE`.
+    pub fn line_width(&mut self, width: f32) {
+        if width.is_nan() || width <= 0.0 {
+            return self.error(gl::INVALID_VALUE, "lineWidth", "width must be > 0");
+        }
+        self.state.line_width = width;
+    }
+
+    /// Sets a pixel storage parameter (`pixelStorei`): `UNPACK_ALIGNMENT`, `PACK_ALIGNMENT`
+    /// (1, 2, 4 or 8), `UNPACK_ROW_LENGTH`, `UNPACK_SKIP_ROWS`, `UNPACK_SKIP_PIXELS`,
+    /// `UNPACK_IMAGE_HEIGHT`, `UNPACK_SKIP_IMAGES`, `PACK_ROW_LENGTH`, `PACK_SKIP_ROWS`,
+    /// `PACK_SKIP_PIXELS`, `UNPACK_FLIP_Y_WEBGL`, `UNPACK_PREMULTIPLY_ALPHA_WEBGL`,
+    /// `UNPACK_COLORSPACE_CONVERSION_WEBGL`.
+    pub fn pixel_storei(&mut self, pname: u32, param: i32) {
+        let p = &mut self.pixel_store;
+        let count = |v: i32| u32::try_from(v).ok();
+        let ok = match pname {
+            gl::UNPACK_ALIGNMENT | gl::PACK_ALIGNMENT => {
+                if !matches!(param, 1 | 2 | 4 | 8) {
+                    return self.error(
+                        gl::INVALID_VALUE,
+                        "pixelStorei",
+                        "alignment must be 1, 2, 4 or 8",
+                    );
+                }
+                if pname == gl::UNPACK_ALIGNMENT {
+                    p.unpack_alignment = param as u32;
+                } else {
+                    p.pack_alignment = param as u32;
+                }
+                true
+            }
+            gl::UNPACK_ROW_LENGTH => count(param).map(|v| p.unpack_row_length = v).is_some(),
+            gl::UNPACK_SKIP_ROWS => count(param).map(|v| p.unpack_skip_rows = v).is_some(),
+            gl::UNPACK_SKIP_PIXELS => count(param).map(|v| p.unpack_skip_pixels = v).is_some(),
+            gl::UNPACK_IMAGE_HEIGHT => count(param).map(|v| p.unpack_image_height = v).is_some(),
+            gl::UNPACK_SKIP_IMAGES => count(param).map(|v| p.unpack_skip_images = v).is_some(),
+            gl::PACK_ROW_LENGTH => count(param).map(|v| p.pack_row_length = v).is_some(),
+            gl::PACK_SKIP_ROWS => count(param).map(|v| p.pack_skip_rows = v).is_some(),
+            gl::PACK_SKIP_PIXELS => count(param).map(|v| p.pack_skip_pixels = v).is_some(),
+            gl::UNPACK_FLIP_Y_WEBGL => {
+                p.unpack_flip_y = param != 0;
+                true
+            }
+            gl::UNPACK_PREMULTIPLY_ALPHA_WEBGL => {
+                p.unpack_premultiply_alpha = param != 0;
+                true
+            }
+            gl::UNPACK_COLORSPACE_CONVERSION_WEBGL => {
+                if !matches!(param as u32, gl::NONE | gl::BROWSER_DEFAULT_WEBGL) {
+                    return self.error(gl::INVALID_ENUM, "pixelStorei", "colorspace conversion");
+                }
+                p.unpack_colorspace_conversion = param as u32;
+                true
+            }
+            _ => {
+                return self.error(
+                    gl::INVALID_ENUM,
+                    "pixelStorei",
+                    format_args!("pname 0x{pname:04X}"),
+                )
+            }
+        };
+        if !ok {
+            self.error(gl::INVALID_VALUE, "pixelStorei", "negative value");
+        }
+    }
+}

@@ -1,0 +1,391 @@
+//! Vertex arrays and vertex attributes: `create_vertex_array`, `bind_vertex_array`,
+//! `vertex_attrib_pointer`, `enable_vertex_attrib_array`, `vertex_attrib4f`, …
+
+use crate::context::Context;
+use crate::gl;
+use crate::objects::{Id, VertexArray};
+
+/// One vertex attribute's array state (part of a vertex array object).
+#[derive(Clone, Debug, PartialEq)]
+pub(crate) struct VertexAttrib {
+    pub(crate) enabled: bool,
+    /// Components per element, 1..=4.
+    pub(crate) size: u8,
+    /// The component type (`FLOAT`, `UNSIGNED_BYTE`, …).
+    pub(crate) ty: u32,
+    pub(crate) normalized: bool,
+    /// Set by `vertex_attrib_i_pointer`: the values stay integers.
+    pub(crate) integer: bool,
+    /// The stride as given (0 means tightly packed).
+    pub(crate) stride: u32,
+    pub(crate) offset: u64,
+    pub(crate) buffer: Option<Id>,
+    pub(crate) divisor: u32,
+}
+
+impl Default for VertexAttrib {
+    fn default() -> Self {
+        VertexAttrib {
+            enabled: false,
+            size: 4,
+            ty: gl::FLOAT,
+            normalized: false,
+            integer: false,
+            stride: 0,
+            offset: 0,
+            buffer: None,
+            divisor: 0,
+        }
+    }
+}
+
+impl VertexAttrib {
+    /// Bytes of one element.
+    pub(crate) fn element_size(&self) -> u64 {
+        self.size as u64 * type_size(self.ty).unwrap_or(4) as u64
+    }
+
+    /// The distance between elements: the stride, or the element size for stride 0.
+    pub(crate) fn effective_stride(&self) -> u64 {
+        if self.stride == 0 {
+            self.element_size()
+        } else {
+            self.stride as u64
+        }
+    }
+}
+
+/// A vertex array object: the attribute arrays and the element array buffer.
+#[derive(Clone, Debug)]
+pub(crate) struct VertexArrayObject {
+    pub(crate) attribs: Vec<VertexAttrib>,
+    pub(crate) element_buffer: Option<Id>,
+    /// `isVertexArray` is false until the object is bound once.
+    pub(crate) bound_once: bool,
+}
+
+impl VertexArrayObject {
+    pub(crate) fn new(max_attribs: u32) -> Self {
+        VertexArrayObject {
+            attribs: vec![VertexAttrib::default(); max_attribs as usize],
+            element_buffer: None,
+            bound_once: false,
+        }
+    }
+}
+
+/// A generic (constant) attribute value, used when an attribute's array is disabled.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) enum GenericAttrib {
+    /// Set by `vertex_attrib*f`.
+    Float([f32; 4]),
+    /// Set by `vertex_attrib_i4i`.
+    Int([i32; 4]),
+    /// Set by `vertex_attrib_i4ui`.
+    Uint([u32; 4]),
+}
+
+impl Default for GenericAttrib {
+    fn default() -> Self {
+        GenericAttrib::Float([0.0, 0.0, 0.0, 1.0])
+    }
+}
+
+/// Bytes of one component of a vertex attribute type; `None` for an unknown type.
+pub(crate) fn type_size(ty: u32) -> Option<u32> {
+    match ty {
+        gl::BYTE | gl::UNSIGNED_BYTE => Some(1),
+        gl::SHORT | gl::UNSIGNED_SHORT | gl::HALF_FLOAT => Some(2),
+        gl::INT | gl::UNSIGNED_INT | gl::FLOAT => Some(4),
+        _ => None,
+    }
+}
+
+impl Context {
+    /// Creates a vertex array object (`createVertexArray`).
+    pub fn create_vertex_array(&mut self) -> VertexArray {
+        let vao = VertexArrayObject::new(self.max_vertex_attribs);
+        VertexArray {
+            ctx: self.id,
+            id: self.vertex_arrays.insert(vao),
+        }
+    }
+
+    /// Binds a vertex array object (`bindVertexArray`); `None` binds the default one.
+    pub fn bind_vertex_array(&mut self, vertex_array: Option<VertexArray>) {
+        const F: &str = "bindVertexArray";
+        match vertex_array {
+            None => self.bound_vao = None,
+            Some(v) => {
+                if !self.owns(v.ctx, F) {
+                    return;
+                }
+                let Some(obj) = self.vertex_arrays.get_mut(v.id) else {
+                    return self.error(gl::INVALID_OPERATION, F, "deleted vertex array");
+                };
+                obj.bound_once = true;
+                self.bound_vao = Some(v.id);
+            }
+        }
+    }
+
+    /// Whether `vertex_array` names a live vertex array that was bound once (`isVertexArray`).
+    pub fn is_vertex_array(&self, vertex_array: VertexArray) -> bool {
+        vertex_array.ctx == self.id
+            && self
+                .vertex_arrays
+                .get(vertex_array.id)
+                .is_some_and(|v| v.bound_once)
+    }
+
+    /// Deletes a vertex array object (`deleteVertexArray`); if bound, the default one is bound.
+    pub fn delete_vertex_array(&mut self, vertex_array: VertexArray) {
+        if !self.owns(vertex_array.ctx, "deleteVertexArray") {
+            return;
+        }
+        let Some(obj) = self.vertex_arrays.get(vertex_array.id) else {
+            return;
+        };
+        let held: Vec<Id> = obj
+            .attribs
+            .iter()
+            .filter_map(|a| a.buffer)
+            .chain(obj.element_buffer)
+            .collect();
+        if self.bound_vao == Some(vertex_array.id) {
+            self.bound_vao = None;
+        }
+        self.vertex_arrays.delete(vertex_array.id);
+        for id in held {
+            self.buffers.release(id);
+        }
+    }
+
+    fn attrib_index(&mut self, index: u32, function: &str) -> Option<usize> {
+        if index >= self.max_vertex_attribs {
+            let msg = format!(
+                "index {index} ≥ MAX_VERTEX_ATTRIBS ({})",
+                self.max_vertex_attribs
+            );
+            self.error(gl::INVALID_VALUE, function, msg);
+            return None;
+        }
+        Some(index as usize)
+    }
+
+    /// Makes attribute `index` read from its array (`enableVertexAttribArray`).
+    pub fn enable_vertex_attrib_array(&mut self, index: u32) {
+        if let Some(i) = self.attrib_index(index, "enableVertexAttribArray") {
+            self.vao_mut().attribs[i].enabled = true;
+        }
+    }
+
+    /// Makes attribute `index` use its generic value (`disableVertexAttribArray`).
+    pub fn disable_vertex_attrib_array(&mut self, index: u32) {
+        if let Some(i) = self.attrib_index(index, "disableVertexAttribArray") {
+            self.vao_mut().attribs[i].enabled = false;
+        }
+    }
+
+    /// Describes attribute `index`'s array in the buffer bound to `ARRAY_BUFFER`
+    /// (`vertexAttribPointer`): `size` 1–4 components of `ty` (`FLOAT`, `BYTE`,
+    /// `UNSIGNED_BYTE`, `SHORT`, `UNSIGNED_SHORT`, `INT`, `UNSIGNED_INT`, `HALF_FLOAT`),
+    /// converted to floats (mapped to −1..1 or 0..1 when `normalized`).
+    ///
+    /// WebGL's rules: `stride` 0..=255 and `offset` ≥ 0 (`INVALID_VALUE`), both multiples of
+    /// the type's size, and a nonzero `offset` needs a bound buffer (`INVALID_OPERATION`).
+    pub fn vertex_attrib_pointer(
+        &mut self,
+        index: u32,
+        size: i32,
+        ty: u32,
+        normalized: bool,
+        stride: i32,
+        offset: i64,
+    ) {
+        const F: &str = "vertexAttribPointer";
+        let float_types = [
+            gl::BYTE,
+            gl::UNSIGNED_BYTE,
+            gl::SHORT,
+            gl::UNSIGNED_SHORT,
+            gl::INT,
+            gl::UNSIGNED_INT,
+            gl::FLOAT,
+            gl::HALF_FLOAT,
+        ];
+        self.attrib_pointer(
+            index,
+            size,
+            ty,
+            normalized,
+            false,
+            stride,
+            offset,
+            &float_types,
+            F,
+        );
+    }
+
+    /// Describes attribute `index`'s array of integers (`vertexAttribIPointer`) for an
+    /// `int`/`uint` shader input: `ty` is `BYTE`, `UNSIGNED_BYTE`, `SHORT`, `UNSIGNED_SHORT`,
+    /// `INT` or `UNSIGNED_INT`. Same rules as [`Context::vertex_attrib_pointer`].
+    pub fn vertex_attrib_i_pointer(
+        &mut self,
+        index: u32,
+        size: i32,
+        ty: u32,
+        stride: i32,
+        offset: i64,
+    ) {
+        const F: &str = "vertexAttribIPointer";
+        let int_types = [
+            gl::BYTE,
+            gl::UNSIGNED_BYTE,
+            gl::SHORT,
+            gl::UNSIGNED_SHORT,
+            gl::INT,
+            gl::UNSIGNED_INT,
+        ];
+        self.attrib_pointer(index, size, ty, false, true, stride, offset, &int_types, F);
+    }
+
+    #[allow(clippy::too_many_arguments)]
+    fn attrib_pointer(
+        &mut self,
+        index: u32,
+        size: i32,
+        ty: u32,
+        normalized: bool,
+        integer: bool,
+        stride: i32,
+        offset: i64,
+        types: &[u32],
+        function: &str,
+    ) {
+        let Some(i) = self.attrib_index(index, function) else {
+            return;
+        };
+        if ty == gl::INT_2_10_10_10_REV || ty == gl::UNSIGNED_INT_2_10_10_10_REV {
+            return self.error(
+                gl::INVALID_ENUM,
+                function,
+                "packed 2_10_10_10 types are not supported by essl-gl",
+            );
+        }
+        if !types.contains(&ty) {
+            return self.error(gl::INVALID_ENUM, function, format_args!("type 0x{ty:04X}"));
+        }
+        if !(1..=4).contains(&size) {
+            return self.error(gl::INVALID_VALUE, function, "size must be 1, 2, 3 or 4");
+        }
+        if !(0..=255).contains(&stride) {
+            return self.error(
+                gl::INVALID_VALUE,
+                function,
+                "stride must be between 0 and 255",
+            );
+        }
+        if offset < 0 {
+            return self.error(gl::INVALID_VALUE, function, "negative offset");
+        }
+        let ts = type_size(ty).expect("checked") as i64;
+        if offset % ts != 0 || stride as i64 % ts != 0 {
+            return self.error(
+                gl::INVALID_OPERATION,
+                function,
+                "offset and stride must be multiples of the type's size",
+            );
+        }
+        if self.array_buffer.is_none() && offset != 0 {
+            return self.error(
+                gl::INVALID_OPERATION,
+                function,
+                "no ARRAY_BUFFER bound and offset ≠ 0",
+            );
+        }
+        let mut slot = self.vao().attribs[i].buffer;
+        self.buffers.retarget(&mut slot, self.array_buffer);
+        let a = &mut self.vao_mut().attribs[i];
+        a.buffer = slot;
+        a.size = size as u8;
+        a.ty = ty;
+        a.normalized = normalized;
+        a.integer = integer;
+        a.stride = stride as u32;
+        a.offset = offset as u64;
+    }
+
+    /// Sets how many instances share one element of attribute `index` (`vertexAttribDivisor`);
+    /// 0 advances per vertex.
+    pub fn vertex_attrib_divisor(&mut self, index: u32, divisor: u32) {
+        if let Some(i) = self.attrib_index(index, "vertexAttribDivisor") {
+            self.vao_mut().attribs[i].divisor = divisor;
+        }
+    }
+
+    fn set_generic(&mut self, index: u32, value: GenericAttrib, function: &str) {
+        if let Some(i) = self.attrib_index(index, function) {
+            self.generic_attribs[i] = value;
+        }
+    }
+
+    /// Sets the generic value of attribute `index` to `(x, 0, 0, 1)` (`vertexAttrib1f`).
+    pub fn vertex_attrib1f(&mut self, index: u32, x: f32) {
+        self.set_generic(
+            index,
+            GenericAttrib::Float([x, 0.0, 0.0, 1.0]),
+            "vertexAttrib1f",
+        );
+    }
+
+    /// Sets the generic value of attribute `index` to `(x, y, 0, 1)` (`vertexAttrib2f`).
+    pub fn vertex_attrib2f(&mut self, index: u32, x: f32, y: f32) {
+        self.set_generic(
+            index,
+            GenericAttrib::Float([x, y, 0.0, 1.0]),
+            "vertexAttrib2f",
+        );
+    }
+
+    /// Sets the generic value of attribute `index` to `(x, y, z, 1)` (`vertexAttrib3f`).
+    pub fn vertex_attrib3f(&mut self, index: u32, x: f32, y: f32, z: f32) {
+        self.set_generic(
+            index,
+            GenericAttrib::Float([x, y, z, 1.0]),
+            "vertexAttrib3f",
+        );
+    }
+
+    /// Sets the generic value of attribute `index` to `(x, y, z, w)` (`vertexAttrib4f`).
+    pub fn vertex_attrib4f(&mut self, index: u32, x: f32, y: f32, z: f32, w: f32) {
+        self.set_generic(index, GenericAttrib::Float([x, y, z, w]), "vertexAttrib4f");
+    }
+
+    /// Sets the generic value of attribute `index` from 1 to 4 floats, filling the rest with
+    /// `(0, 0, 0, 1)` (`vertexAttrib[1234]fv`); an empty slice → `INVALID_VALUE`.
+    pub fn vertex_attrib_fv(&mut self, index: u32, values: &[f32]) {
+        if values.is_empty() {
+            return self.error(gl::INVALID_VALUE, "vertexAttribfv", "no values");
+        }
+        let mut v = [0.0, 0.0, 0.0, 1.0];
+        let n = values.len().min(4);
+        v[..n].copy_from_slice(&values[..n]);
+        self.set_generic(index, GenericAttrib::Float(v), "vertexAttribfv");
+    }
+
+    /// Sets the generic value of attribute `index` to four floats (`vertexAttrib4fv`).
+    pub fn vertex_attrib4fv(&mut self, index: u32, values: [f32; 4]) {
+        self.set_generic(index, GenericAttrib::Float(values), "vertexAttrib4fv");
+    }
+
+    /// Sets the generic value of an `ivec4` attribute (`vertexAttribI4i`).
+    pub fn vertex_attrib_i4i(&mut self, index: u32, x: i32, y: i32, z: i32, w: i32) {
+        self.set_generic(index, GenericAttrib::Int([x, y, z, w]), "vertexAttribI4i");
+    }
+
+    /// Sets the generic value of a `uvec4` attribute (`vertexAttribI4ui`).
+    pub fn vertex_attrib_i4ui(&mut self, index: u32, x: u32, y: u32, z: u32, w: u32) {
+        self.set_generic(index, GenericAttrib::Uint([x, y, z, w]), "vertexAttribI4ui");
+    }
+}

@@ -1,0 +1,196 @@
+//! Helpers for renderer tests: a context (or a skip when no Vulkan adapter exists), program
+//! layouts made by hand from WGSL that follows the front end's conventions, and pixel reads.
+
+#![allow(dead_code)]
+
+use essl::program::{
+    ActiveAttribute, ActiveUniform, InternalUniform, ProgramLayout, SamplerSlot, UniformBlock,
+    UniformStorage,
+};
+use essl::types::GlType;
+use essl_gl::{gl, Context};
+
+/// A context of `w`×`h`, or `None` (with a message) when this machine has no Vulkan adapter.
+/// With `CI` set, a missing adapter fails the test instead.
+pub fn context(w: u32, h: u32) -> Option<Context> {
+    if std::env::var_os("XDG_RUNTIME_DIR").is_none() {
+        // Silences a harmless complaint of the Vulkan loader.
+        std::env::set_var("XDG_RUNTIME_DIR", std::env::temp_dir());
+    }
+    match Context::new(w, h) {
+        Ok(ctx) => Some(ctx),
+        Err(e) if std::env::var_os("CI").is_some() => panic!("CI needs a Vulkan adapter: {e}"),
+        Err(e) => {
+            eprintln!("skipping: {e}");
+            None
+        }
+    }
+}
+
+fn validate(module: &naga::Module) -> naga::valid::ModuleInfo {
+    naga::valid::Validator::new(
+        naga::valid::ValidationFlags::all(),
+        naga::valid::Capabilities::all(),
+    )
+    .validate(module)
+    .unwrap_or_else(|e| panic!("invalid test shader: {e:?}"))
+}
+
+/// A layout builder: WGSL for both stages plus the reflection the front end would provide.
+pub struct Layout {
+    vs: String,
+    fs: String,
+    block_size: u32,
+    internal: Vec<(InternalUniform, u32)>,
+    uniforms: Vec<ActiveUniform>,
+    attributes: Vec<ActiveAttribute>,
+    samplers: Vec<SamplerSlot>,
+}
+
+impl Layout {
+    pub fn new(vs: &str, fs: &str) -> Self {
+        Layout {
+            vs: vs.into(),
+            fs: fs.into(),
+            block_size: 0,
+            internal: Vec::new(),
+            uniforms: Vec::new(),
+            attributes: Vec::new(),
+            samplers: Vec::new(),
+        }
+    }
+
+    pub fn attribute(mut self, name: &str, ty: GlType, location: u32) -> Self {
+        self.attributes.push(ActiveAttribute {
+            name: name.into(),
+            ty,
+            size: 1,
+            location,
+        });
+        self
+    }
+
+    /// A uniform in the default block (std140 offsets given by the test).
+    pub fn uniform(
+        mut self,
+        name: &str,
+        ty: GlType,
+        size: u32,
+        offset: u32,
+        array_stride: u32,
+        matrix_stride: u32,
+    ) -> Self {
+        self.uniforms.push(ActiveUniform {
+            name: name.into(),
+            ty,
+            size,
+            storage: UniformStorage::Buffer {
+                offset,
+                array_stride,
+                matrix_stride,
+            },
+        });
+        self
+    }
+
+    pub fn block_size(mut self, size: u32) -> Self {
+        self.block_size = size;
+        self
+    }
+
+    pub fn internal(mut self, what: InternalUniform, offset: u32) -> Self {
+        self.internal.push((what, offset));
+        self
+    }
+
+    pub fn sampler(mut self, name: &str, ty: GlType) -> Self {
+        let first_slot = self.samplers.len() as u32;
+        self.samplers.push(SamplerSlot {
+            name: name.into(),
+            ty,
+            comparison: false,
+        });
+        self.uniforms.push(ActiveUniform {
+            name: name.into(),
+            ty,
+            size: 1,
+            storage: UniformStorage::Sampler { first_slot },
+        });
+        self
+    }
+
+    pub fn build(self) -> ProgramLayout {
+        let vertex = naga::front::wgsl::parse_str(&self.vs)
+            .unwrap_or_else(|e| panic!("{}", e.emit_to_string(&self.vs)));
+        let fragment = naga::front::wgsl::parse_str(&self.fs)
+            .unwrap_or_else(|e| panic!("{}", e.emit_to_string(&self.fs)));
+        ProgramLayout {
+            vertex_info: validate(&vertex),
+            vertex,
+            fragment_info: validate(&fragment),
+            fragment,
+            uniform_block: (self.block_size > 0).then(|| UniformBlock {
+                size: self.block_size,
+                internal: self.internal,
+            }),
+            uniforms: self.uniforms,
+            attributes: self.attributes,
+            samplers: self.samplers,
+            blocks: Vec::new(),
+            fragment_outputs: vec![(0, GlType::FLOAT_VEC4)],
+        }
+    }
+}
+
+/// A program that draws `a_position` (vec4 at location 0) in a solid colour.
+pub fn solid(r: f32, g: f32, b: f32) -> ProgramLayout {
+    Layout::new(
+        "@vertex fn main(@location(0) a_position: vec4<f32>) -> @builtin(position) vec4<f32> { return a_position; }",
+        &format!("@fragment fn main() -> @location(0) vec4<f32> {{ return vec4({r:?}, {g:?}, {b:?}, 1.0); }}"),
+    )
+    .attribute("a_position", GlType::FLOAT_VEC4, 0)
+    .build()
+}
+
+/// The RGBA of pixel (x, y), y from the bottom.
+pub fn pixel(ctx: &mut Context, x: u32, y: u32) -> [u8; 4] {
+    let p = ctx.read_pixels_rgba8(x, y, 1, 1);
+    [p[0], p[1], p[2], p[3]]
+}
+
+/// Every pixel of the framebuffer, bottom row first.
+pub fn all_pixels(ctx: &mut Context) -> Vec<u8> {
+    let (w, h) = (ctx.drawing_buffer_width(), ctx.drawing_buffer_height());
+    ctx.read_pixels_rgba8(0, 0, w, h)
+}
+
+/// Whether every pixel is `rgba`.
+pub fn all_are(ctx: &mut Context, rgba: [u8; 4]) -> bool {
+    all_pixels(ctx).chunks_exact(4).all(|p| p == rgba)
+}
+
+/// Uploads `data` to a new ARRAY_BUFFER and points attribute `index` at it (`size` floats).
+pub fn float_attribute(ctx: &mut Context, index: u32, size: i32, data: &[f32]) -> essl_gl::Buffer {
+    let b = ctx.create_buffer();
+    ctx.bind_buffer(gl::ARRAY_BUFFER, Some(b));
+    ctx.buffer_data(gl::ARRAY_BUFFER, data, gl::STATIC_DRAW);
+    ctx.enable_vertex_attrib_array(index);
+    ctx.vertex_attrib_pointer(index, size, gl::FLOAT, false, 0, 0);
+    b
+}
+
+/// Clears to opaque black.
+pub fn clear_black(ctx: &mut Context) {
+    ctx.clear_color(0.0, 0.0, 0.0, 1.0);
+    ctx.clear(gl::COLOR_BUFFER_BIT | gl::DEPTH_BUFFER_BIT);
+}
+
+/// Asserts that wgpu reported no validation error (essl-gl checks everything first).
+pub fn assert_clean(ctx: &Context) {
+    assert_eq!(ctx.backend_errors(), Vec::<String>::new());
+}
+
+/// A full-screen quad as two triangles, 2D positions.
+pub const QUAD: [f32; 12] = [
+    -1.0, -1.0, 1.0, -1.0, 1.0, 1.0, -1.0, -1.0, 1.0, 1.0, -1.0, 1.0,
+];

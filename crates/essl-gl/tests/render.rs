@@ -1,0 +1,661 @@
+//! Renderer-level tests: what WebGL2 programs draw, read back from the framebuffer.
+
+mod common;
+
+use common::*;
+use essl::program::InternalUniform;
+use essl::types::GlType;
+use essl_gl::gl;
+
+const W: u32 = 64;
+const H: u32 = 64;
+
+#[test]
+fn clear_color_reads_back() {
+    let Some(mut ctx) = context(W, H) else { return };
+    ctx.clear_color(0.25, 0.5, 0.75, 1.0);
+    ctx.clear(gl::COLOR_BUFFER_BIT);
+    assert_eq!(pixel(&mut ctx, 0, 0), [64, 128, 191, 255]);
+    assert!(all_are(&mut ctx, [64, 128, 191, 255]));
+    assert_eq!(ctx.get_error(), gl::NO_ERROR);
+    assert_clean(&ctx);
+}
+
+#[test]
+fn triangle_covers_the_lower_left_half() {
+    let Some(mut ctx) = context(W, H) else { return };
+    let program = ctx.program_from_layout(solid(1.0, 0.0, 0.0));
+    assert!(
+        ctx.get_program_link_status(program),
+        "{:?}",
+        ctx.get_program_info_log(program)
+    );
+    clear_black(&mut ctx);
+    ctx.use_program(Some(program));
+    // A vec4 input fed 2 floats: z = 0, w = 1.
+    float_attribute(&mut ctx, 0, 2, &[-1.0, -1.0, 1.0, -1.0, -1.0, 1.0]);
+    ctx.draw_arrays(gl::TRIANGLES, 0, 3);
+    assert_eq!(ctx.get_error(), gl::NO_ERROR, "{:?}", ctx.error_message());
+    let px = all_pixels(&mut ctx);
+    for y in 0..H {
+        for x in 0..W {
+            let p = &px[((y * W + x) * 4) as usize..][..4];
+            // Pixel centres strictly below the diagonal x + y = W are inside (row 0 = bottom).
+            if x + y + 1 < W {
+                assert_eq!(p, [255, 0, 0, 255], "({x}, {y}) should be covered");
+            } else if x + y > W {
+                assert_eq!(p, [0, 0, 0, 255], "({x}, {y}) should be clear");
+            }
+        }
+    }
+    assert_clean(&ctx);
+}
+
+/// Two triangles covering the screen at depths `z` (already in 0..1, as the lowering emits).
+fn flat_at(ctx: &mut essl_gl::Context, z: f32) -> essl_gl::Buffer {
+    let mut data = Vec::new();
+    for xy in QUAD.chunks(2) {
+        data.extend_from_slice(&[xy[0], xy[1], z]);
+    }
+    float_attribute(ctx, 0, 3, &data)
+}
+
+#[test]
+fn depth_test_hides_a_far_triangle_behind_a_near_one() {
+    let Some(mut ctx) = context(W, H) else { return };
+    let red = ctx.program_from_layout(solid(1.0, 0.0, 0.0));
+    let green = ctx.program_from_layout(solid(0.0, 1.0, 0.0));
+    ctx.enable(gl::DEPTH_TEST);
+    for near_first in [true, false] {
+        clear_black(&mut ctx);
+        let order = if near_first {
+            [(red, 0.25), (green, 0.75)]
+        } else {
+            [(green, 0.75), (red, 0.25)]
+        };
+        for (program, z) in order {
+            ctx.use_program(Some(program));
+            flat_at(&mut ctx, z);
+            ctx.draw_arrays(gl::TRIANGLES, 0, 6);
+        }
+        assert!(
+            all_are(&mut ctx, [255, 0, 0, 255]),
+            "near (red) wins, near first: {near_first}"
+        );
+    }
+    // Without the test, the last draw wins.
+    ctx.disable(gl::DEPTH_TEST);
+    ctx.use_program(Some(green));
+    flat_at(&mut ctx, 0.75);
+    ctx.draw_arrays(gl::TRIANGLES, 0, 6);
+    assert!(all_are(&mut ctx, [0, 255, 0, 255]));
+    assert_eq!(ctx.get_error(), gl::NO_ERROR);
+    assert_clean(&ctx);
+}
+
+#[test]
+fn counter_clockwise_triangles_are_front_faces() {
+    let Some(mut ctx) = context(W, H) else { return };
+    let program = ctx.program_from_layout(solid(1.0, 1.0, 1.0));
+    ctx.use_program(Some(program));
+    let ccw = [-1.0f32, -1.0, 1.0, -1.0, -1.0, 1.0];
+    let cw = [-1.0f32, -1.0, -1.0, 1.0, 1.0, -1.0];
+    ctx.enable(gl::CULL_FACE);
+    let cases = [
+        (gl::BACK, gl::CCW, ccw, true),
+        (gl::BACK, gl::CCW, cw, false),
+        (gl::FRONT, gl::CCW, ccw, false),
+        (gl::FRONT, gl::CCW, cw, true),
+        (gl::BACK, gl::CW, cw, true),
+        (gl::BACK, gl::CW, ccw, false),
+        (gl::FRONT_AND_BACK, gl::CCW, ccw, false),
+    ];
+    for (cull, front, tri, drawn) in cases {
+        clear_black(&mut ctx);
+        ctx.cull_face(cull);
+        ctx.front_face(front);
+        float_attribute(&mut ctx, 0, 2, &tri);
+        ctx.draw_arrays(gl::TRIANGLES, 0, 3);
+        let expect = if drawn { [255; 4] } else { [0, 0, 0, 255] };
+        assert_eq!(
+            pixel(&mut ctx, 4, 4),
+            expect,
+            "cull {cull:#x} front {front:#x}"
+        );
+    }
+    assert_eq!(ctx.get_error(), gl::NO_ERROR);
+    assert_clean(&ctx);
+}
+
+/// A program that samples `u_tex` at `a_uv` over a full-screen quad.
+fn textured() -> essl::program::ProgramLayout {
+    Layout::new(
+        "struct Out { @builtin(position) pos: vec4<f32>, @location(0) uv: vec2<f32> }
+         @vertex fn main(@location(0) a_position: vec2<f32>, @location(1) a_uv: vec2<f32>) -> Out {
+             return Out(vec4(a_position, 0.0, 1.0), a_uv);
+         }",
+        "@group(1) @binding(0) var u_tex: texture_2d<f32>;
+         @group(1) @binding(1) var u_tex_sampler: sampler;
+         @fragment fn main(@location(0) uv: vec2<f32>) -> @location(0) vec4<f32> {
+             return textureSample(u_tex, u_tex_sampler, uv);
+         }",
+    )
+    .attribute("a_position", GlType::FLOAT_VEC2, 0)
+    .attribute("a_uv", GlType::FLOAT_VEC2, 1)
+    .sampler("u_tex", GlType::SAMPLER_2D)
+    .build()
+}
+
+/// Sets up `textured()` over a full-screen quad with texture coordinates `0..uv_max`.
+fn textured_quad(ctx: &mut essl_gl::Context, uv_max: f32) {
+    let program = ctx.program_from_layout(textured());
+    assert!(
+        ctx.get_program_link_status(program),
+        "{:?}",
+        ctx.get_program_info_log(program)
+    );
+    ctx.use_program(Some(program));
+    float_attribute(ctx, 0, 2, &QUAD);
+    let uv: Vec<f32> = QUAD.iter().map(|&c| (c + 1.0) / 2.0 * uv_max).collect();
+    float_attribute(ctx, 1, 2, &uv);
+}
+
+const CHECKER: [u8; 16] = [
+    255, 0, 0, 255, /* */ 0, 255, 0, 255, // row 0 (t = 0): red, green
+    0, 0, 255, 255, /* */ 255, 255, 255, 255, // row 1: blue, white
+];
+
+#[test]
+fn texture_sampled_with_nearest_and_repeat() {
+    let Some(mut ctx) = context(W, H) else { return };
+    textured_quad(&mut ctx, 2.0);
+    let tex = ctx.create_texture();
+    ctx.bind_texture(gl::TEXTURE_2D, Some(tex));
+    ctx.tex_image_2d(
+        gl::TEXTURE_2D,
+        0,
+        gl::RGBA as i32,
+        2,
+        2,
+        0,
+        gl::RGBA,
+        gl::UNSIGNED_BYTE,
+        Some(&CHECKER),
+    );
+    ctx.tex_parameteri(gl::TEXTURE_2D, gl::TEXTURE_MIN_FILTER, gl::NEAREST as i32);
+    ctx.tex_parameteri(gl::TEXTURE_2D, gl::TEXTURE_MAG_FILTER, gl::NEAREST as i32);
+    clear_black(&mut ctx);
+    ctx.draw_arrays(gl::TRIANGLES, 0, 6);
+    assert_eq!(ctx.get_error(), gl::NO_ERROR, "{:?}", ctx.error_message());
+    // uv 0..2 repeats the 2×2 texture twice: each texel covers 16×16 pixels.
+    let q = W / 4;
+    for (ty, row) in [
+        [255, 0, 0, 255],
+        [0, 255, 0, 255],
+        [0, 0, 255, 255],
+        [255, 255, 255, 255],
+    ]
+    .chunks(2)
+    .enumerate()
+    {
+        for rep in 0..2 {
+            for (tx, &expect) in row.iter().enumerate() {
+                let x = (rep * 2 + tx as u32) * q + q / 2;
+                let y = (rep * 2 + ty as u32) * q + q / 2;
+                assert_eq!(
+                    pixel(&mut ctx, x, y),
+                    expect,
+                    "texel ({tx}, {ty}) at ({x}, {y})"
+                );
+            }
+        }
+    }
+    assert_clean(&ctx);
+}
+
+#[test]
+fn incomplete_textures_read_black() {
+    let Some(mut ctx) = context(W, H) else { return };
+    textured_quad(&mut ctx, 1.0);
+    let tex = ctx.create_texture();
+    ctx.bind_texture(gl::TEXTURE_2D, Some(tex));
+    let white = [255u8; 16];
+    ctx.tex_image_2d(
+        gl::TEXTURE_2D,
+        0,
+        gl::RGBA as i32,
+        2,
+        2,
+        0,
+        gl::RGBA,
+        gl::UNSIGNED_BYTE,
+        Some(&white),
+    );
+    ctx.clear_color(0.5, 0.5, 0.5, 0.5);
+    ctx.clear(gl::COLOR_BUFFER_BIT);
+    // The default MIN_FILTER (NEAREST_MIPMAP_LINEAR) needs levels 1.. too: incomplete.
+    ctx.draw_arrays(gl::TRIANGLES, 0, 6);
+    assert!(all_are(&mut ctx, [0, 0, 0, 255]));
+    // generateMipmap completes it.
+    ctx.generate_mipmap(gl::TEXTURE_2D);
+    ctx.draw_arrays(gl::TRIANGLES, 0, 6);
+    assert!(all_are(&mut ctx, [255; 4]));
+    // An unbound unit reads (0, 0, 0, 1) too.
+    ctx.bind_texture(gl::TEXTURE_2D, None);
+    ctx.draw_arrays(gl::TRIANGLES, 0, 6);
+    assert!(all_are(&mut ctx, [0, 0, 0, 255]));
+    // A texture with only level 0 and a non-mipmap filter is complete.
+    let tex2 = ctx.create_texture();
+    ctx.bind_texture(gl::TEXTURE_2D, Some(tex2));
+    ctx.tex_image_2d(
+        gl::TEXTURE_2D,
+        0,
+        gl::RGBA as i32,
+        2,
+        2,
+        0,
+        gl::RGBA,
+        gl::UNSIGNED_BYTE,
+        Some(&white),
+    );
+    ctx.tex_parameteri(gl::TEXTURE_2D, gl::TEXTURE_MIN_FILTER, gl::LINEAR as i32);
+    ctx.draw_arrays(gl::TRIANGLES, 0, 6);
+    assert!(all_are(&mut ctx, [255; 4]));
+    // A level 1 of the wrong size breaks mipmap completeness again.
+    ctx.tex_parameteri(
+        gl::TEXTURE_2D,
+        gl::TEXTURE_MIN_FILTER,
+        gl::LINEAR_MIPMAP_LINEAR as i32,
+    );
+    ctx.tex_image_2d(
+        gl::TEXTURE_2D,
+        1,
+        gl::RGBA as i32,
+        2,
+        2,
+        0,
+        gl::RGBA,
+        gl::UNSIGNED_BYTE,
+        Some(&white),
+    );
+    ctx.draw_arrays(gl::TRIANGLES, 0, 6);
+    assert!(all_are(&mut ctx, [0, 0, 0, 255]));
+    assert_eq!(ctx.get_error(), gl::NO_ERROR, "{:?}", ctx.error_message());
+    assert_clean(&ctx);
+}
+
+/// A program whose colour is its `vec4` attribute at location 1.
+fn attribute_colour() -> essl::program::ProgramLayout {
+    Layout::new(
+        "struct Out { @builtin(position) pos: vec4<f32>, @location(0) c: vec4<f32> }
+         @vertex fn main(@location(0) a_position: vec2<f32>, @location(1) a_color: vec4<f32>) -> Out {
+             return Out(vec4(a_position, 0.0, 1.0), a_color);
+         }",
+        "@fragment fn main(@location(0) c: vec4<f32>) -> @location(0) vec4<f32> { return c; }",
+    )
+    .attribute("a_position", GlType::FLOAT_VEC2, 0)
+    .attribute("a_color", GlType::FLOAT_VEC4, 1)
+    .build()
+}
+
+#[test]
+fn narrow_attributes_get_gl_defaults() {
+    let Some(mut ctx) = context(W, H) else { return };
+    let program = ctx.program_from_layout(attribute_colour());
+    ctx.use_program(Some(program));
+    float_attribute(&mut ctx, 0, 2, &QUAD);
+    let colour = ctx.create_buffer();
+    ctx.bind_buffer(gl::ARRAY_BUFFER, Some(colour));
+    ctx.enable_vertex_attrib_array(1);
+    let check = |ctx: &mut essl_gl::Context, expect: [u8; 4], what: &str| {
+        ctx.clear_color(0.5, 0.5, 0.5, 0.5);
+        ctx.clear(gl::COLOR_BUFFER_BIT);
+        ctx.draw_arrays(gl::TRIANGLES, 0, 6);
+        assert_eq!(
+            ctx.get_error(),
+            gl::NO_ERROR,
+            "{what}: {:?}",
+            ctx.error_message()
+        );
+        assert_eq!(pixel(ctx, W / 2, H / 2), expect, "{what}");
+    };
+    // 3 floats: w = 1.
+    let three: Vec<f32> = (0..6).flat_map(|_| [0.2, 0.4, 0.6]).collect();
+    ctx.buffer_data(gl::ARRAY_BUFFER, &three, gl::STATIC_DRAW);
+    ctx.vertex_attrib_pointer(1, 3, gl::FLOAT, false, 0, 0);
+    check(&mut ctx, [51, 102, 153, 255], "3 floats");
+    // 2 floats: z = 0, w = 1.
+    ctx.vertex_attrib_pointer(1, 2, gl::FLOAT, false, 12, 0);
+    check(&mut ctx, [51, 102, 0, 255], "2 floats");
+    // 1 float: y = z = 0, w = 1.
+    ctx.vertex_attrib_pointer(1, 1, gl::FLOAT, false, 12, 4);
+    check(&mut ctx, [102, 0, 0, 255], "1 float");
+    // 3 normalized unsigned bytes (no such wgpu format: read as 4 and patched).
+    let bytes: Vec<u8> = (0..6).flat_map(|_| [255u8, 128, 0]).collect();
+    ctx.buffer_data(gl::ARRAY_BUFFER, &bytes, gl::STATIC_DRAW);
+    ctx.vertex_attrib_pointer(1, 3, gl::UNSIGNED_BYTE, true, 0, 0);
+    check(
+        &mut ctx,
+        [255, 128, 0, 255],
+        "3 normalized bytes, stride 3 (re-packed)",
+    );
+    let padded: Vec<u8> = (0..6).flat_map(|_| [255u8, 128, 0, 7]).collect();
+    ctx.buffer_data(gl::ARRAY_BUFFER, &padded, gl::STATIC_DRAW);
+    ctx.vertex_attrib_pointer(1, 3, gl::UNSIGNED_BYTE, true, 4, 0);
+    check(
+        &mut ctx,
+        [255, 128, 0, 255],
+        "3 normalized bytes, stride 4 (patched)",
+    );
+    // Unnormalized shorts become floats.
+    let shorts: Vec<i16> = (0..6).flat_map(|_| [1i16, 0, 1, 0]).collect();
+    ctx.buffer_data(gl::ARRAY_BUFFER, &shorts, gl::STATIC_DRAW);
+    ctx.vertex_attrib_pointer(1, 4, gl::SHORT, false, 0, 0);
+    check(&mut ctx, [255, 0, 255, 0], "4 shorts");
+    // A disabled array reads the generic value.
+    ctx.disable_vertex_attrib_array(1);
+    ctx.vertex_attrib3f(1, 0.0, 1.0, 0.0);
+    check(&mut ctx, [0, 255, 0, 255], "generic vertexAttrib3f");
+    assert_clean(&ctx);
+}
+
+#[test]
+fn indexed_fans_loops_and_byte_indices() {
+    let Some(mut ctx) = context(W, H) else { return };
+    let program = ctx.program_from_layout(solid(0.0, 0.0, 1.0));
+    ctx.use_program(Some(program));
+    float_attribute(
+        &mut ctx,
+        0,
+        2,
+        &[-1.0, -1.0, 1.0, -1.0, 1.0, 1.0, -1.0, 1.0],
+    );
+    let ib = ctx.create_buffer();
+    ctx.bind_buffer(gl::ELEMENT_ARRAY_BUFFER, Some(ib));
+    for (ty, data) in [
+        (gl::UNSIGNED_BYTE, vec![0u8, 1, 2, 3]),
+        (gl::UNSIGNED_SHORT, bytemuck_u16(&[0, 1, 2, 3])),
+        (gl::UNSIGNED_INT, bytemuck_u32(&[0, 1, 2, 3])),
+    ] {
+        ctx.buffer_data(gl::ELEMENT_ARRAY_BUFFER, &data, gl::STATIC_DRAW);
+        clear_black(&mut ctx);
+        ctx.draw_elements(gl::TRIANGLE_FAN, 4, ty, 0);
+        assert!(all_are(&mut ctx, [0, 0, 255, 255]), "fan with type {ty:#x}");
+    }
+    // Arrays: a fan of 4 covers the screen; a strip too.
+    for mode in [gl::TRIANGLE_FAN, gl::TRIANGLE_STRIP] {
+        clear_black(&mut ctx);
+        if mode == gl::TRIANGLE_STRIP {
+            float_attribute(
+                &mut ctx,
+                0,
+                2,
+                &[-1.0, -1.0, 1.0, -1.0, -1.0, 1.0, 1.0, 1.0],
+            );
+        }
+        ctx.draw_arrays(mode, 0, 4);
+        assert!(all_are(&mut ctx, [0, 0, 255, 255]), "mode {mode:#x}");
+    }
+    // A line loop around the edges touches the corner pixels.
+    float_attribute(
+        &mut ctx,
+        0,
+        2,
+        &[-0.9, -0.9, 0.9, -0.9, 0.9, 0.9, -0.9, 0.9],
+    );
+    clear_black(&mut ctx);
+    ctx.draw_arrays(gl::LINE_LOOP, 0, 4);
+    let px = all_pixels(&mut ctx);
+    let lit = px.chunks_exact(4).filter(|p| p[2] == 255).count();
+    assert!(lit > 4 * 50, "line loop drew {lit} pixels");
+    assert_eq!(ctx.get_error(), gl::NO_ERROR, "{:?}", ctx.error_message());
+    assert_clean(&ctx);
+}
+
+fn bytemuck_u16(v: &[u16]) -> Vec<u8> {
+    v.iter().flat_map(|x| x.to_ne_bytes()).collect()
+}
+
+fn bytemuck_u32(v: &[u32]) -> Vec<u8> {
+    v.iter().flat_map(|x| x.to_ne_bytes()).collect()
+}
+
+#[test]
+fn uniforms_and_framebuffer_height() {
+    let Some(mut ctx) = context(W, H) else { return };
+    // u_color at 0, u_offset (vec2) at 16, FramebufferHeight at 24.
+    let layout = Layout::new(
+        "struct U { u_color: vec4<f32>, u_offset: vec2<f32>, height: f32 }
+         @group(0) @binding(0) var<uniform> u: U;
+         @vertex fn main(@location(0) a_position: vec2<f32>) -> @builtin(position) vec4<f32> {
+             return vec4(a_position + u.u_offset, 0.0, 1.0);
+         }",
+        "struct U { u_color: vec4<f32>, u_offset: vec2<f32>, height: f32 }
+         @group(0) @binding(0) var<uniform> u: U;
+         @fragment fn main(@builtin(position) p: vec4<f32>) -> @location(0) vec4<f32> {
+             // GL's gl_FragCoord.y counts from the bottom: the lowering flips with the height.
+             let gl_y = u.height - p.y;
+             return vec4(u.u_color.rgb, select(0.0, 1.0, gl_y < 16.0));
+         }",
+    )
+    .attribute("a_position", GlType::FLOAT_VEC2, 0)
+    .uniform("u_color", GlType::FLOAT_VEC4, 1, 0, 16, 0)
+    .uniform("u_offset", GlType::FLOAT_VEC2, 1, 16, 16, 0)
+    .internal(InternalUniform::FramebufferHeight, 24)
+    .block_size(32)
+    .build();
+    let program = ctx.program_from_layout(layout);
+    ctx.use_program(Some(program));
+    float_attribute(&mut ctx, 0, 2, &QUAD);
+    let color = ctx.get_uniform_location(program, "u_color");
+    let offset = ctx.get_uniform_location(program, "u_offset");
+    assert!(color.is_some() && offset.is_some());
+    assert_eq!(ctx.get_uniform_location(program, "nope"), None);
+    clear_black(&mut ctx);
+    ctx.uniform4f(color, 1.0, 0.0, 1.0, 1.0);
+    ctx.uniform2f(offset, 0.0, 0.0);
+    ctx.draw_arrays(gl::TRIANGLES, 0, 6);
+    // Uniforms change between draws of one batch: each draw sees its own values.
+    ctx.uniform4f(color, 0.0, 1.0, 0.0, 1.0);
+    ctx.uniform2f(offset, 1.0, 0.0);
+    ctx.draw_arrays(gl::TRIANGLES, 0, 6);
+    assert_eq!(ctx.get_error(), gl::NO_ERROR, "{:?}", ctx.error_message());
+    assert_eq!(pixel(&mut ctx, 8, 8), [255, 0, 255, 255]);
+    assert_eq!(
+        pixel(&mut ctx, 8, 40),
+        [255, 0, 255, 0],
+        "alpha 0 above GL row 16"
+    );
+    assert_eq!(pixel(&mut ctx, 56, 8), [0, 255, 0, 255]);
+    // Type mismatch: INVALID_OPERATION, value unchanged.
+    ctx.uniform3f(color, 0.0, 0.0, 0.0);
+    assert_eq!(ctx.get_error(), gl::INVALID_OPERATION);
+    assert_clean(&ctx);
+}
+
+#[test]
+fn instancing_with_divisors() {
+    let Some(mut ctx) = context(W, H) else { return };
+    let layout = Layout::new(
+        "@vertex fn main(@location(0) a_position: vec2<f32>, @location(1) a_offset: vec2<f32>) -> @builtin(position) vec4<f32> {
+             return vec4(a_position + a_offset, 0.0, 1.0);
+         }",
+        "@fragment fn main() -> @location(0) vec4<f32> { return vec4(1.0); }",
+    )
+    .attribute("a_position", GlType::FLOAT_VEC2, 0)
+    .attribute("a_offset", GlType::FLOAT_VEC2, 1)
+    .build();
+    let program = ctx.program_from_layout(layout);
+    ctx.use_program(Some(program));
+    // A quad covering the bottom-left quarter, moved per instance.
+    let quarter: Vec<f32> = QUAD.iter().map(|&c| (c + 1.0) / 2.0 - 1.0).collect();
+    float_attribute(&mut ctx, 0, 2, &quarter);
+    float_attribute(&mut ctx, 1, 2, &[0.0, 0.0, 1.0, 1.0, 1.0, 0.0, 0.0, 1.0]);
+    for (divisor, instances, lit) in [
+        (1, 2, vec![(0, 0), (1, 1)]),
+        (2, 4, vec![(0, 0), (1, 1)]),
+        (1, 4, vec![(0, 0), (1, 1), (1, 0), (0, 1)]),
+    ] {
+        ctx.vertex_attrib_divisor(1, divisor);
+        clear_black(&mut ctx);
+        ctx.draw_arrays_instanced(gl::TRIANGLES, 0, 6, instances);
+        assert_eq!(ctx.get_error(), gl::NO_ERROR, "{:?}", ctx.error_message());
+        for qx in 0..2 {
+            for qy in 0..2 {
+                let expect = if lit.contains(&(qx, qy)) {
+                    [255; 4]
+                } else {
+                    [0, 0, 0, 255]
+                };
+                let p = pixel(&mut ctx, qx * W / 2 + 8, qy * H / 2 + 8);
+                assert_eq!(
+                    p, expect,
+                    "divisor {divisor}, {instances} instances, quarter ({qx}, {qy})"
+                );
+            }
+        }
+    }
+    // 3 instances with divisor 2 need 2 offsets; 5 with divisor 1 need 5: past the end.
+    ctx.vertex_attrib_divisor(1, 1);
+    clear_black(&mut ctx);
+    ctx.draw_arrays_instanced(gl::TRIANGLES, 0, 6, 5);
+    assert_eq!(ctx.get_error(), gl::INVALID_OPERATION);
+    assert!(all_are(&mut ctx, [0, 0, 0, 255]));
+    assert_clean(&ctx);
+}
+
+#[test]
+fn blending_scissor_and_masked_clears() {
+    let Some(mut ctx) = context(W, H) else { return };
+    let layout = Layout::new(
+        "@vertex fn main(@location(0) a_position: vec2<f32>) -> @builtin(position) vec4<f32> { return vec4(a_position, 0.0, 1.0); }",
+        "@fragment fn main() -> @location(0) vec4<f32> { return vec4(1.0, 0.0, 0.0, 0.5); }",
+    )
+    .attribute("a_position", GlType::FLOAT_VEC2, 0)
+    .build();
+    let program = ctx.program_from_layout(layout);
+    ctx.use_program(Some(program));
+    float_attribute(&mut ctx, 0, 2, &QUAD);
+    ctx.clear_color(0.0, 0.0, 1.0, 1.0);
+    ctx.clear(gl::COLOR_BUFFER_BIT);
+    ctx.enable(gl::BLEND);
+    ctx.blend_func(gl::SRC_ALPHA, gl::ONE_MINUS_SRC_ALPHA);
+    ctx.draw_arrays(gl::TRIANGLES, 0, 6);
+    let p = pixel(&mut ctx, 1, 1);
+    assert!(
+        (127..=129).contains(&p[0]) && p[1] == 0 && (126..=128).contains(&p[2]),
+        "{p:?}"
+    );
+    ctx.disable(gl::BLEND);
+    // A scissored clear touches only the box (x 0..16, y 0..8 from the bottom).
+    ctx.enable(gl::SCISSOR_TEST);
+    ctx.scissor(0, 0, 16, 8);
+    ctx.clear_color(0.0, 1.0, 0.0, 1.0);
+    ctx.clear(gl::COLOR_BUFFER_BIT);
+    ctx.disable(gl::SCISSOR_TEST);
+    assert_eq!(pixel(&mut ctx, 2, 2), [0, 255, 0, 255]);
+    assert_eq!(pixel(&mut ctx, 2, 12), p);
+    assert_eq!(pixel(&mut ctx, 20, 2), p);
+    // A colour-masked clear keeps the masked channels.
+    ctx.color_mask(true, false, false, true);
+    ctx.clear_color(1.0, 1.0, 1.0, 1.0);
+    ctx.clear(gl::COLOR_BUFFER_BIT);
+    ctx.color_mask(true, true, true, true);
+    assert_eq!(pixel(&mut ctx, 2, 2), [255, 255, 0, 255]);
+    assert_eq!(ctx.get_error(), gl::NO_ERROR);
+    assert_clean(&ctx);
+}
+
+#[test]
+fn a_deleted_buffer_lives_on_in_a_vertex_array() {
+    let Some(mut ctx) = context(W, H) else { return };
+    let program = ctx.program_from_layout(solid(1.0, 1.0, 0.0));
+    ctx.use_program(Some(program));
+    let vao = ctx.create_vertex_array();
+    ctx.bind_vertex_array(Some(vao));
+    let b = float_attribute(&mut ctx, 0, 2, &QUAD);
+    ctx.bind_vertex_array(None);
+    ctx.delete_buffer(b);
+    assert!(!ctx.is_buffer(b));
+    ctx.bind_buffer(gl::ARRAY_BUFFER, Some(b));
+    assert_eq!(
+        ctx.get_error(),
+        gl::INVALID_OPERATION,
+        "a deleted handle is detected"
+    );
+    ctx.bind_vertex_array(Some(vao));
+    clear_black(&mut ctx);
+    ctx.draw_arrays(gl::TRIANGLES, 0, 6);
+    assert_eq!(ctx.get_error(), gl::NO_ERROR, "{:?}", ctx.error_message());
+    assert!(all_are(&mut ctx, [255, 255, 0, 255]));
+    assert_clean(&ctx);
+}
+
+#[test]
+fn read_pixels_follows_gl_rules() {
+    let Some(mut ctx) = context(W, H) else { return };
+    ctx.clear_color(1.0, 0.0, 0.0, 1.0);
+    ctx.clear(gl::COLOR_BUFFER_BIT);
+    // Partly outside: the outside part of dst is left alone.
+    let mut dst = vec![7u8; 4 * 4];
+    ctx.read_pixels(-2, 0, 4, 1, gl::RGBA, gl::UNSIGNED_BYTE, &mut dst);
+    assert_eq!(&dst[..8], &[7; 8]);
+    assert_eq!(&dst[8..], &[255, 0, 0, 255, 255, 0, 0, 255]);
+    let mut small = vec![0u8; 3];
+    ctx.read_pixels(0, 0, 1, 1, gl::RGBA, gl::UNSIGNED_BYTE, &mut small);
+    assert_eq!(ctx.get_error(), gl::INVALID_OPERATION);
+    ctx.read_pixels(0, 0, 1, 1, gl::RGB, gl::UNSIGNED_BYTE, &mut dst);
+    assert_eq!(ctx.get_error(), gl::INVALID_OPERATION);
+    ctx.read_pixels(0, 0, -1, 1, gl::RGBA, gl::UNSIGNED_BYTE, &mut dst);
+    assert_eq!(ctx.get_error(), gl::INVALID_VALUE);
+    ctx.read_pixels(0, 0, 1, 1, 0x1234, gl::UNSIGNED_BYTE, &mut dst);
+    assert_eq!(ctx.get_error(), gl::INVALID_ENUM);
+    assert_clean(&ctx);
+}
+
+/// Measures a 256² frame (clear + a textured quad + 100 small triangles) with readback.
+#[test]
+fn frame_time_256() {
+    let Some(mut ctx) = context(256, 256) else {
+        return;
+    };
+    textured_quad(&mut ctx, 1.0);
+    let tex = ctx.create_texture();
+    ctx.bind_texture(gl::TEXTURE_2D, Some(tex));
+    ctx.tex_image_2d(
+        gl::TEXTURE_2D,
+        0,
+        gl::RGBA as i32,
+        2,
+        2,
+        0,
+        gl::RGBA,
+        gl::UNSIGNED_BYTE,
+        Some(&CHECKER),
+    );
+    ctx.tex_parameteri(gl::TEXTURE_2D, gl::TEXTURE_MIN_FILTER, gl::NEAREST as i32);
+    let mut frame = |ctx: &mut essl_gl::Context, draws: u32| {
+        ctx.clear(gl::COLOR_BUFFER_BIT | gl::DEPTH_BUFFER_BIT);
+        for _ in 0..draws {
+            ctx.draw_arrays(gl::TRIANGLES, 0, 6);
+        }
+        ctx.read_pixels_rgba8(0, 0, 256, 256)
+    };
+    for _ in 0..5 {
+        frame(&mut ctx, 1);
+    }
+    for draws in [1, 100] {
+        let n = 20;
+        let t = std::time::Instant::now();
+        for _ in 0..n {
+            frame(&mut ctx, draws);
+        }
+        let ms = t.elapsed().as_secs_f64() * 1000.0 / n as f64;
+        eprintln!(
+            "256x256 frame, {draws} draw(s) + readback: {ms:.3} ms ({})",
+            ctx.adapter_info().name
+        );
+    }
+    assert_eq!(ctx.get_error(), gl::NO_ERROR);
+    assert_clean(&ctx);
+}
