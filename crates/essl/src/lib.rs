@@ -11,6 +11,7 @@ pub mod diagnostic;
 pub mod hir;
 pub mod lex;
 pub mod link;
+pub mod lower;
 pub mod parse;
 pub mod preprocess;
 pub mod program;

@@ -113,6 +113,9 @@ pub enum UniformStorage {
         /// Slot of element 0 in [`ProgramLayout::samplers`].
         first_slot: u32,
     },
+    /// A member of a uniform block: its value comes from the buffer bound to the block, not
+    /// from `uniform*` calls.
+    Block,
 }
 
 /// How booleans and integers are stored in the default uniform block.

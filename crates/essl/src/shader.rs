@@ -26,6 +26,8 @@ pub struct Shader {
     pub diagnostics: Vec<Diagnostic>,
     /// The checked module (present even when there are errors, for reflection of what parsed).
     pub module: hir::Module,
+    /// The shader lowered on its own to a validated naga module (when it compiled).
+    pub naga: Option<(naga::Module, naga::valid::ModuleInfo)>,
 }
 
 impl Shader {
@@ -55,6 +57,23 @@ pub fn compile(file: SourceFile, stage: Stage, options: &CompileOptions) -> Shad
     diagnostics.extend(parse_diags);
     let (module, check_diags) = crate::check::check(&file, &unit, stage, pp.invariant_all);
     diagnostics.extend(check_diags);
-    diagnostic::sort(&mut diagnostics);
-    Shader { file, stage, version: pp.version, diagnostics, module }
+    let mut shader = Shader { file, stage, version: pp.version, diagnostics, module, naga: None };
+    if shader.ok() {
+        match crate::lower::lower_shader(&shader, &crate::program::LowerOptions::default()) {
+            Ok(m) => shader.naga = Some(m),
+            Err(e) => shader.diagnostics.push(lowering_diagnostic(&e)),
+        }
+    }
+    diagnostic::sort(&mut shader.diagnostics);
+    shader
+}
+
+/// A diagnostic for a shader essl could not lower: valid GLSL that essl does not support yet,
+/// or a bug in essl; either way, say so plainly.
+pub(crate) fn lowering_diagnostic(e: &crate::lower::LowerError) -> Diagnostic {
+    let (code, help) = match e {
+        crate::lower::LowerError::Unsupported { .. } => ("unsupported", "this is valid GLSL ES 3.00 that essl cannot translate yet"),
+        crate::lower::LowerError::Invalid { .. } => ("internal-error", "this is a bug in essl: please report it with the shader"),
+    };
+    Diagnostic::error(code, e.to_string(), e.span()).with_label("essl stops here").with_help(help)
 }

@@ -242,6 +242,10 @@ pub(super) struct Pp<'a> {
     pos: usize,
     /// `pos` is at the start of a logical line.
     line_start: bool,
+    /// Offset where the current line begins, and the lines skipped by conditionals so far
+    /// (where a no-break space is harmless, as in a comment).
+    line_begin: u32,
+    skipped_lines: Vec<Span>,
     macros: HashMap<Rc<str>, Rc<Macro>>,
     conds: Vec<Cond>,
     diags: Vec<Diagnostic>,
@@ -273,6 +277,8 @@ impl<'a> Pp<'a> {
             toks,
             pos: 0,
             line_start: true,
+            line_begin: 0,
+            skipped_lines: Vec::new(),
             macros: HashMap::new(),
             conds: Vec::new(),
             diags: Vec::new(),
@@ -346,6 +352,11 @@ impl<'a> Pp<'a> {
                     return Tok::raw(self.toks[self.pos].clone());
                 }
                 PpKind::Newline => {
+                    let nl = self.toks[self.pos].span;
+                    if self.skipping() {
+                        self.skipped_lines.push(Span::new(self.line_begin, nl.start));
+                    }
+                    self.line_begin = nl.end;
                     self.pos += 1;
                     self.line_start = true;
                     continue;
@@ -423,6 +434,15 @@ impl<'a> Pp<'a> {
             );
         }
         let mut diagnostics = lexer_diags;
+        for d in &mut diagnostics {
+            let skipped = self.skipped_lines.iter().any(|r| r.start <= d.span.start && d.span.end <= r.end);
+            if d.code == "no-break-space" && d.is_error() && skipped {
+                // WebGL ignores the text of skipped groups: harmless there, as in a comment.
+                d.severity = crate::diagnostic::Severity::Warning;
+                d.message = "no-break space (U+00A0) in a group skipped by the preprocessor".into();
+                d.notes = vec!["harmless while the group is skipped, but an error if it is ever compiled".into()];
+            }
+        }
         diagnostics.append(&mut self.diags);
         diagnostic::sort(&mut diagnostics);
         Preprocessed {

@@ -1,0 +1,477 @@
+//! Built-in functions: math, geometry, matrices, relations and texture lookups.
+
+use naga::{Expression, Handle, Literal, MathFunction as Mf, SampleLevel};
+
+use super::func::FnCx;
+use super::{unsupported, LowerError};
+use crate::builtins::BuiltinFn;
+use crate::hir::Expr;
+use crate::source::Span;
+use crate::types::{SamplerDim, SamplerType, ScalarKind, Type};
+use crate::Stage;
+
+impl FnCx<'_, '_> {
+    /// Widens scalar arguments to the vector size of the result, as naga's math functions
+    /// want identical argument types.
+    fn widen(&mut self, v: Handle<Expression>, from: &Type, to: &Type, span: Span) -> Handle<Expression> {
+        match (from, to) {
+            (Type::Scalar(_), Type::Vector(_, n)) => self.splat(v, *n, span),
+            _ => v,
+        }
+    }
+
+    pub(crate) fn builtin(&mut self, op: BuiltinFn, args: &[Expr], ret: &Type, span: Span) -> Result<Handle<Expression>, LowerError> {
+        use BuiltinFn::*;
+        if op.is_texture() {
+            return self.texture(op, args, ret, span);
+        }
+        let vals: Vec<Handle<Expression>> = args.iter().map(|a| self.expr(a)).collect::<Result<_, _>>()?;
+        let t0 = args[0].ty.clone();
+        let unary = |fx: &mut Self, f: Mf| fx.math(f, &[vals[0]], span);
+        Ok(match op {
+            Radians => unary(self, Mf::Radians),
+            Degrees => unary(self, Mf::Degrees),
+            Sin => unary(self, Mf::Sin),
+            Cos => unary(self, Mf::Cos),
+            Tan => unary(self, Mf::Tan),
+            Asin => unary(self, Mf::Asin),
+            Acos => unary(self, Mf::Acos),
+            Atan if vals.len() == 2 => self.math(Mf::Atan2, &[vals[0], vals[1]], span),
+            Atan => unary(self, Mf::Atan),
+            Sinh => unary(self, Mf::Sinh),
+            Cosh => unary(self, Mf::Cosh),
+            Tanh => unary(self, Mf::Tanh),
+            Asinh => unary(self, Mf::Asinh),
+            Acosh => unary(self, Mf::Acosh),
+            Atanh => unary(self, Mf::Atanh),
+            Pow => self.math(Mf::Pow, &[vals[0], vals[1]], span),
+            Exp => unary(self, Mf::Exp),
+            Log => unary(self, Mf::Log),
+            Exp2 => unary(self, Mf::Exp2),
+            Log2 => unary(self, Mf::Log2),
+            Sqrt => unary(self, Mf::Sqrt),
+            InverseSqrt => unary(self, Mf::InverseSqrt),
+            Abs => unary(self, Mf::Abs),
+            Sign => unary(self, Mf::Sign),
+            Floor => unary(self, Mf::Floor),
+            Trunc => unary(self, Mf::Trunc),
+            Round | RoundEven => unary(self, Mf::Round),
+            Ceil => unary(self, Mf::Ceil),
+            Fract => unary(self, Mf::Fract),
+            Mod => {
+                // GLSL: x - y * floor(x / y).
+                let y = self.widen(vals[1], &args[1].ty, &t0, span);
+                let q = self.binop(naga::BinaryOperator::Divide, vals[0], y, span);
+                let fl = self.math(Mf::Floor, &[q], span);
+                let p = self.binop(naga::BinaryOperator::Multiply, y, fl, span);
+                self.binop(naga::BinaryOperator::Subtract, vals[0], p, span)
+            }
+            Modf => {
+                // modf(x, out i): i = trunc(x), and the result is x - i.
+                let whole = self.math(Mf::Trunc, &[vals[0]], span);
+                self.store_to(&args[1], whole, span)?;
+                self.binop(naga::BinaryOperator::Subtract, vals[0], whole, span)
+            }
+            Min | Max => {
+                let b = self.widen(vals[1], &args[1].ty, &t0, span);
+                self.math(if op == Min { Mf::Min } else { Mf::Max }, &[vals[0], b], span)
+            }
+            Clamp => {
+                let lo = self.widen(vals[1], &args[1].ty, &t0, span);
+                let hi = self.widen(vals[2], &args[2].ty, &t0, span);
+                self.math(Mf::Clamp, &[vals[0], lo, hi], span)
+            }
+            Mix if args[2].ty.scalar_kind() == Some(ScalarKind::Bool) => {
+                // mix(x, y, b) picks y where b is true.
+                self.add(Expression::Select { condition: vals[2], accept: vals[1], reject: vals[0] }, span)
+            }
+            Mix => {
+                let a = self.widen(vals[2], &args[2].ty, &t0, span);
+                self.math(Mf::Mix, &[vals[0], vals[1], a], span)
+            }
+            Step => {
+                let e = self.widen(vals[0], &args[0].ty, &args[1].ty, span);
+                self.math(Mf::Step, &[e, vals[1]], span)
+            }
+            SmoothStep => {
+                let e0 = self.widen(vals[0], &args[0].ty, &args[2].ty, span);
+                let e1 = self.widen(vals[1], &args[1].ty, &args[2].ty, span);
+                self.math(Mf::SmoothStep, &[e0, e1, vals[2]], span)
+            }
+            IsNan => self.add(Expression::Relational { fun: naga::RelationalFunction::IsNan, argument: vals[0] }, span),
+            IsInf => self.add(Expression::Relational { fun: naga::RelationalFunction::IsInf, argument: vals[0] }, span),
+            FloatBitsToInt => self.add(Expression::As { expr: vals[0], kind: naga::ScalarKind::Sint, convert: None }, span),
+            FloatBitsToUint => self.add(Expression::As { expr: vals[0], kind: naga::ScalarKind::Uint, convert: None }, span),
+            IntBitsToFloat | UintBitsToFloat => self.add(Expression::As { expr: vals[0], kind: naga::ScalarKind::Float, convert: None }, span),
+            PackSnorm2x16 => unary(self, Mf::Pack2x16snorm),
+            UnpackSnorm2x16 => unary(self, Mf::Unpack2x16snorm),
+            PackUnorm2x16 => unary(self, Mf::Pack2x16unorm),
+            UnpackUnorm2x16 => unary(self, Mf::Unpack2x16unorm),
+            PackHalf2x16 => self.pack_half(vals[0], span),
+            UnpackHalf2x16 => self.unpack_half(vals[0], span),
+            Length => unary(self, Mf::Length),
+            Distance => self.math(Mf::Distance, &[vals[0], vals[1]], span),
+            Dot if t0.is_scalar() => self.binop(naga::BinaryOperator::Multiply, vals[0], vals[1], span),
+            Dot => self.math(Mf::Dot, &[vals[0], vals[1]], span),
+            Cross => self.math(Mf::Cross, &[vals[0], vals[1]], span),
+            Normalize if t0.is_scalar() => unary(self, Mf::Sign),
+            Normalize => unary(self, Mf::Normalize),
+            FaceForward => self.math(Mf::FaceForward, &[vals[0], vals[1], vals[2]], span),
+            Reflect if t0.is_scalar() => {
+                // I - 2 * dot(N, I) * N for scalars.
+                let d = self.binop(naga::BinaryOperator::Multiply, vals[1], vals[0], span);
+                let two = self.lit(Literal::F32(2.0));
+                let t = self.binop(naga::BinaryOperator::Multiply, two, d, span);
+                let t = self.binop(naga::BinaryOperator::Multiply, t, vals[1], span);
+                self.binop(naga::BinaryOperator::Subtract, vals[0], t, span)
+            }
+            Reflect => self.math(Mf::Reflect, &[vals[0], vals[1]], span),
+            Refract if t0.is_scalar() => return Err(unsupported("`refract` on scalars", span)),
+            Refract => self.math(Mf::Refract, &[vals[0], vals[1], vals[2]], span),
+            MatrixCompMult => {
+                let Type::Matrix { cols, .. } = t0 else { return Err(unsupported("matrixCompMult", span)) };
+                let parts: Vec<_> = (0..cols as u32)
+                    .map(|i| {
+                        let x = self.access_index(vals[0], i, span);
+                        let y = self.access_index(vals[1], i, span);
+                        self.binop(naga::BinaryOperator::Multiply, x, y, span)
+                    })
+                    .collect();
+                self.compose(ret, parts, span)
+            }
+            OuterProduct => self.math(Mf::Outer, &[vals[0], vals[1]], span),
+            Transpose => unary(self, Mf::Transpose),
+            Determinant => unary(self, Mf::Determinant),
+            Inverse => unary(self, Mf::Inverse),
+            LessThan | LessThanEqual | GreaterThan | GreaterThanEqual | Equal | NotEqual => {
+                let o = match op {
+                    LessThan => naga::BinaryOperator::Less,
+                    LessThanEqual => naga::BinaryOperator::LessEqual,
+                    GreaterThan => naga::BinaryOperator::Greater,
+                    GreaterThanEqual => naga::BinaryOperator::GreaterEqual,
+                    Equal => naga::BinaryOperator::Equal,
+                    _ => naga::BinaryOperator::NotEqual,
+                };
+                self.binop(o, vals[0], vals[1], span)
+            }
+            Any => self.add(Expression::Relational { fun: naga::RelationalFunction::Any, argument: vals[0] }, span),
+            All => self.add(Expression::Relational { fun: naga::RelationalFunction::All, argument: vals[0] }, span),
+            Not => self.add(Expression::Unary { op: naga::UnaryOperator::LogicalNot, expr: vals[0] }, span),
+            DFdx | DFdy | Fwidth => {
+                let axis = match op {
+                    DFdx => naga::DerivativeAxis::X,
+                    DFdy => naga::DerivativeAxis::Y,
+                    _ => naga::DerivativeAxis::Width,
+                };
+                let mut d = self.add(Expression::Derivative { axis, ctrl: naga::DerivativeControl::None, expr: vals[0] }, span);
+                if op == DFdy && self.cx.options.flip_frag_coord_y {
+                    // GL's y grows upwards; the framebuffer's grows downwards.
+                    d = self.add(Expression::Unary { op: naga::UnaryOperator::Negate, expr: d }, span);
+                }
+                d
+            }
+            _ => return Err(unsupported(format!("built-in `{}`", op.name()), span)),
+        })
+    }
+
+    /// `packHalf2x16` without float16 capabilities: rounds each component to binary16 by
+    /// integer arithmetic on its bits.
+    fn pack_half(&mut self, v: Handle<Expression>, span: Span) -> Handle<Expression> {
+        let x = self.access_index(v, 0, span);
+        let y = self.access_index(v, 1, span);
+        let hx = self.f32_to_f16_bits(x, span);
+        let hy = self.f32_to_f16_bits(y, span);
+        let sixteen = self.lit(Literal::U32(16));
+        let hy = self.binop(naga::BinaryOperator::ShiftLeft, hy, sixteen, span);
+        self.binop(naga::BinaryOperator::InclusiveOr, hx, hy, span)
+    }
+
+    fn f32_to_f16_bits(&mut self, f: Handle<Expression>, span: Span) -> Handle<Expression> {
+        use naga::BinaryOperator as B;
+        // Branch-free conversion of normal numbers (round to nearest), flushing denormals to
+        // signed zero and overflow to infinity; NaN stays NaN.
+        let bits = self.add(Expression::As { expr: f, kind: naga::ScalarKind::Uint, convert: None }, span);
+        let c = |fx: &mut Self, v: u32| fx.lit(Literal::U32(v));
+        let k16 = c(self, 16);
+        let sign_mask = c(self, 0x8000);
+        let sh = self.binop(B::ShiftRight, bits, k16, span);
+        let sign = self.binop(B::And, sh, sign_mask, span);
+        let abs_mask = c(self, 0x7fff_ffff);
+        let abs = self.binop(B::And, bits, abs_mask, span);
+        // Rounded: (abs + 0x1000) >> 13, rebased from exponent bias 127 to 15.
+        let round = c(self, 0x1000);
+        let r = self.binop(B::Add, abs, round, span);
+        let k13 = c(self, 13);
+        let r = self.binop(B::ShiftRight, r, k13, span);
+        let rebias = c(self, (127 - 15) << 10);
+        let normal = self.binop(B::Subtract, r, rebias, span);
+        // Ranges on |f|'s bits.
+        let min_normal = c(self, 0x3880_0000); // 2^-14
+        let overflow = c(self, 0x477f_f000); // rounds to 65520 and beyond
+        let inf = c(self, 0x7f80_0000);
+        let is_small = self.binop(B::Less, abs, min_normal, span);
+        let is_big = self.binop(B::GreaterEqual, abs, overflow, span);
+        let is_nan = self.binop(B::Greater, abs, inf, span);
+        let zero = c(self, 0);
+        let h_inf = c(self, 0x7c00);
+        let h_nan = c(self, 0x7e00);
+        let v = self.add(Expression::Select { condition: is_small, accept: zero, reject: normal }, span);
+        let v = self.add(Expression::Select { condition: is_big, accept: h_inf, reject: v }, span);
+        let v = self.add(Expression::Select { condition: is_nan, accept: h_nan, reject: v }, span);
+        self.binop(B::InclusiveOr, v, sign, span)
+    }
+
+    fn unpack_half(&mut self, p: Handle<Expression>, span: Span) -> Handle<Expression> {
+        use naga::BinaryOperator as B;
+        let mask = self.lit(Literal::U32(0xffff));
+        let k16 = self.lit(Literal::U32(16));
+        let lo = self.binop(B::And, p, mask, span);
+        let hi = self.binop(B::ShiftRight, p, k16, span);
+        let x = self.f16_bits_to_f32(lo, span);
+        let y = self.f16_bits_to_f32(hi, span);
+        self.compose(&Type::Vector(ScalarKind::Float, 2), vec![x, y], span)
+    }
+
+    fn f16_bits_to_f32(&mut self, h: Handle<Expression>, span: Span) -> Handle<Expression> {
+        use naga::BinaryOperator as B;
+        let c = |fx: &mut Self, v: u32| fx.lit(Literal::U32(v));
+        let k15 = c(self, 15);
+        let one = c(self, 1);
+        let sign = self.binop(B::ShiftRight, h, k15, span);
+        let k10 = c(self, 10);
+        let m31 = c(self, 31);
+        let e = self.binop(B::ShiftRight, h, k10, span);
+        let e = self.binop(B::And, e, m31, span);
+        let m3ff = c(self, 0x3ff);
+        let mant = self.binop(B::And, h, m3ff, span);
+        // value = (e == 0 ? mant * 2^-24 : e == 31 ? (mant == 0 ? inf : nan) : (1 + mant/1024) * 2^(e-15))
+        let fm = self.cast(mant, naga::ScalarKind::Float, span);
+        let fe = self.cast(e, naga::ScalarKind::Sint, span);
+        let bias = self.lit(Literal::I32(15));
+        let fe = self.binop(B::Subtract, fe, bias, span);
+        let fe = self.cast(fe, naga::ScalarKind::Float, span);
+        let two = self.lit(Literal::F32(2.0));
+        let scale = self.math(Mf::Pow, &[two, fe], span);
+        let k1024 = self.lit(Literal::F32(1024.0));
+        let frac = self.binop(B::Divide, fm, k1024, span);
+        let onef = self.lit(Literal::F32(1.0));
+        let norm = self.binop(B::Add, onef, frac, span);
+        let normal = self.binop(B::Multiply, norm, scale, span);
+        let tiny = self.lit(Literal::F32(5.960_464_5e-8));
+        let sub = self.binop(B::Multiply, fm, tiny, span);
+        let zero_u = c(self, 0);
+        let is_sub = self.binop(B::Equal, e, zero_u, span);
+        let v = self.add(Expression::Select { condition: is_sub, accept: sub, reject: normal }, span);
+        let is_special = self.binop(B::Equal, e, m31, span);
+        let inf = self.lit(Literal::F32(f32::INFINITY));
+        let nan = self.lit(Literal::F32(f32::NAN));
+        let mant_zero = self.binop(B::Equal, mant, zero_u, span);
+        let special = self.add(Expression::Select { condition: mant_zero, accept: inf, reject: nan }, span);
+        let v = self.add(Expression::Select { condition: is_special, accept: special, reject: v }, span);
+        let is_neg = self.binop(B::Equal, sign, one, span);
+        let neg = self.add(Expression::Unary { op: naga::UnaryOperator::Negate, expr: v }, span);
+        self.add(Expression::Select { condition: is_neg, accept: neg, reject: v }, span)
+    }
+
+    // ----- textures -----
+
+    fn texture(&mut self, op: BuiltinFn, args: &[Expr], ret: &Type, span: Span) -> Result<Handle<Expression>, LowerError> {
+        use BuiltinFn::*;
+        let Type::Sampler(st) = args[0].ty else { return Err(unsupported("a texture call without a sampler", span)) };
+        if !self.sampler_available(&args[0]) {
+            // An inactive sampler only appears in code the entry point never runs.
+            return Ok(self.zero(ret));
+        }
+        let (image, sampler) = self.sampler(&args[0])?;
+        let vals: Vec<Handle<Expression>> = args[1..].iter().map(|a| self.expr(a)).collect::<Result<_, _>>()?;
+        let tys: Vec<Type> = args[1..].iter().map(|a| a.ty.clone()).collect();
+        if op == TextureSize {
+            return Ok(self.texture_size(image, st, vals[0], span));
+        }
+        if matches!(op, TexelFetch | TexelFetchOffset) {
+            let mut coord = vals[0];
+            if op == TexelFetchOffset {
+                coord = self.binop(naga::BinaryOperator::Add, coord, vals[2], span);
+            }
+            let (coordinate, array_index) = self.split_array_coord_int(coord, st, span);
+            return Ok(self.add(Expression::ImageLoad { image, coordinate, array_index, sample: None, level: Some(vals[1]) }, span));
+        }
+        let proj = matches!(op, TextureProj | TextureProjOffset | TextureProjLod | TextureProjLodOffset | TextureProjGrad | TextureProjGradOffset);
+        let lod = matches!(op, TextureLod | TextureLodOffset | TextureProjLod | TextureProjLodOffset);
+        let grad = matches!(op, TextureGrad | TextureGradOffset | TextureProjGrad | TextureProjGradOffset);
+        let has_offset = op.has_offset();
+        // Arguments after the coordinates: [lod | dPdx, dPdy] [offset] [bias].
+        let mut i = 1;
+        let level_arg = if lod {
+            i += 1;
+            Some(vals[1])
+        } else {
+            None
+        };
+        let grads = if grad {
+            i += 2;
+            Some((vals[1], vals[2]))
+        } else {
+            None
+        };
+        let offset = if has_offset {
+            let o = vals[i];
+            i += 1;
+            Some(o)
+        } else {
+            None
+        };
+        let bias = vals.get(i).copied();
+        // Coordinates, depth reference and array layer.
+        let coord_ty = tys[0].clone();
+        let n = coord_ty.vector_size().unwrap_or(1);
+        let mut coords = vals[0];
+        let dims = st.dim.coord_dims() as u8;
+        let mut depth_ref = None;
+        let mut array_index = None;
+        if proj {
+            // Divide by the last component: textureProj(s2D, vec3) uses .xy/.z; with vec4,
+            // .xy/.w (and for shadow, .z/.w is the reference).
+            let q = self.access_index(coords, n as u32 - 1, span);
+            let keep = if st.shadow { 3 } else { dims };
+            let parts: Vec<u8> = (0..keep).collect();
+            let xyz = self.swizzle(coords, &parts, span);
+            let qv = if keep > 1 { self.splat(q, keep, span) } else { q };
+            coords = self.binop(naga::BinaryOperator::Divide, xyz, qv, span);
+            if st.shadow {
+                depth_ref = Some(self.access_index(coords, 2, span));
+                let xy: Vec<u8> = (0..2).collect();
+                coords = self.swizzle(coords, &xy, span);
+            }
+        } else {
+            let total = n;
+            let mut k = dims;
+            if st.dim == SamplerDim::D2Array {
+                let layer = self.access_index(coords, 2, span);
+                array_index = Some(self.layer_index(layer, span));
+                k = 2;
+            }
+            if st.shadow {
+                let ref_index = if st.dim == SamplerDim::D2Array { 3 } else { total - 1 };
+                depth_ref = Some(self.access_index(coords, ref_index as u32, span));
+            }
+            if total != k {
+                let parts: Vec<u8> = (0..k).collect();
+                coords = self.swizzle(coords, &parts, span);
+            }
+        }
+        if st.kind != ScalarKind::Float {
+            return self.integer_texture(image, st, coords, array_index, level_arg, offset, ret, span);
+        }
+        let vertex = self.stage() == Stage::Vertex;
+        let level = if st.shadow {
+            // naga compares depth only at the implicit level or level 0.
+            if vertex || lod || grad {
+                SampleLevel::Zero
+            } else {
+                SampleLevel::Auto
+            }
+        } else if let Some(l) = level_arg {
+            SampleLevel::Exact(l)
+        } else if let Some((x, y)) = grads {
+            SampleLevel::Gradient { x, y }
+        } else if let Some(b) = bias {
+            SampleLevel::Bias(b)
+        } else if vertex {
+            SampleLevel::Zero
+        } else {
+            SampleLevel::Auto
+        };
+        let offset = match offset {
+            Some(_) => Some(self.const_offset(&args[1 + if lod { 2 } else if grad { 3 } else { 1 }], span)?),
+            None => None,
+        };
+        let sampled = self.add(
+            Expression::ImageSample { image, sampler, gather: None, coordinate: coords, array_index, offset, level, depth_ref, clamp_to_edge: false },
+            span,
+        );
+        Ok(sampled)
+    }
+
+    /// A texel offset as a constant expression.
+    fn const_offset(&mut self, e: &Expr, span: Span) -> Result<Handle<Expression>, LowerError> {
+        match e.as_const() {
+            Some(c) => Ok(self.constant(c, &e.ty, span)),
+            None => Err(unsupported("a texel offset that is not a constant", span)),
+        }
+    }
+
+    /// The array layer of a float coordinate: `floor(z + 0.5)` as an integer, as GLSL says.
+    fn layer_index(&mut self, layer: Handle<Expression>, span: Span) -> Handle<Expression> {
+        let half = self.lit(Literal::F32(0.5));
+        let l = self.binop(naga::BinaryOperator::Add, layer, half, span);
+        let l = self.math(Mf::Floor, &[l], span);
+        let zero = self.lit(Literal::F32(0.0));
+        let l = self.math(Mf::Max, &[l, zero], span);
+        self.cast(l, naga::ScalarKind::Sint, span)
+    }
+
+    fn split_array_coord_int(&mut self, coord: Handle<Expression>, st: SamplerType, span: Span) -> (Handle<Expression>, Option<Handle<Expression>>) {
+        if st.dim == SamplerDim::D2Array {
+            let xy = self.swizzle(coord, &[0, 1], span);
+            let layer = self.access_index(coord, 2, span);
+            (xy, Some(layer))
+        } else {
+            (coord, None)
+        }
+    }
+
+    fn texture_size(&mut self, image: Handle<Expression>, st: SamplerType, lod: Handle<Expression>, span: Span) -> Handle<Expression> {
+        let size = self.add(Expression::ImageQuery { image, query: naga::ImageQuery::Size { level: Some(lod) } }, span);
+        let size = self.cast(size, naga::ScalarKind::Sint, span);
+        if st.dim == SamplerDim::D2Array {
+            let layers = self.add(Expression::ImageQuery { image, query: naga::ImageQuery::NumLayers }, span);
+            let layers = self.cast(layers, naga::ScalarKind::Sint, span);
+            let x = self.access_index(size, 0, span);
+            let y = self.access_index(size, 1, span);
+            return self.compose(&Type::Vector(ScalarKind::Int, 3), vec![x, y, layers], span);
+        }
+        size
+    }
+
+    /// `texture()` on an integer sampler: naga cannot filter integer textures (neither can GL:
+    /// they are only complete with NEAREST filtering), so this loads the nearest texel of the
+    /// chosen level with the coordinates clamped to the edge.
+    #[allow(clippy::too_many_arguments)]
+    fn integer_texture(
+        &mut self,
+        image: Handle<Expression>,
+        st: SamplerType,
+        coords: Handle<Expression>,
+        array_index: Option<Handle<Expression>>,
+        lod: Option<Handle<Expression>>,
+        offset: Option<Handle<Expression>>,
+        _ret: &Type,
+        span: Span,
+    ) -> Result<Handle<Expression>, LowerError> {
+        if st.dim == SamplerDim::Cube {
+            return Err(unsupported("`texture` on an integer cube sampler", span));
+        }
+        let level = match lod {
+            Some(l) => self.cast(l, naga::ScalarKind::Sint, span),
+            None => self.lit(Literal::I32(0)),
+        };
+        let n = if st.dim == SamplerDim::D3 { 3 } else { 2 };
+        let size = self.add(Expression::ImageQuery { image, query: naga::ImageQuery::Size { level: Some(level) } }, span);
+        let size = self.cast(size, naga::ScalarKind::Sint, span);
+        let fsize = self.cast(size, naga::ScalarKind::Float, span);
+        let scaled = self.binop(naga::BinaryOperator::Multiply, coords, fsize, span);
+        let fl = self.math(Mf::Floor, &[scaled], span);
+        let mut texel = self.cast(fl, naga::ScalarKind::Sint, span);
+        if let Some(o) = offset {
+            texel = self.binop(naga::BinaryOperator::Add, texel, o, span);
+        }
+        let zero = self.lit(Literal::I32(0));
+        let zero = self.splat(zero, n, span);
+        let one = self.lit(Literal::I32(1));
+        let one = self.splat(one, n, span);
+        let max = self.binop(naga::BinaryOperator::Subtract, size, one, span);
+        let texel = self.math(Mf::Clamp, &[texel, zero, max], span);
+        Ok(self.add(Expression::ImageLoad { image, coordinate: texel, array_index, sample: None, level: Some(level) }, span))
+    }
+}
