@@ -60,6 +60,9 @@ pub(crate) enum DerivedKey {
     },
 }
 
+/// An index range of a version of a buffer: (type, offset, count, version).
+pub(crate) type IndexRange = (u32, u64, u64, u64);
+
 /// A buffer object.
 pub(crate) struct BufferObject {
     pub(crate) data: Vec<u8>,
@@ -71,8 +74,8 @@ pub(crate) struct BufferObject {
     /// The bytes that changed since the GPU copy was last written.
     pub(crate) dirty: Option<Range<usize>>,
     pub(crate) derived: Vec<Derived>,
-    /// The last index range scanned: (type, offset, count, version) → largest index.
-    pub(crate) max_index_cache: Option<((u32, u64, u64, u64), Option<u32>)>,
+    /// The last index range scanned, and its largest index.
+    pub(crate) max_index_cache: Option<(IndexRange, Option<u32>)>,
 }
 
 impl BufferObject {

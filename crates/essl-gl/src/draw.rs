@@ -369,6 +369,7 @@ impl Context {
         frame.pass_state.pipeline = None;
         frame.pass_state.viewport = None;
         frame.pass_state.scissor = None;
+        frame.pass_state.group0 = None;
     }
 
     /// The scissor rectangle in wgpu's coordinates (origin top-left), clipped to the
@@ -1167,18 +1168,32 @@ impl Context {
             pass.set_blend_constant(wgpu::Color { r, g, b, a });
             ps.blend_constant = Some(blend_bits);
         }
-        if let Some((group, offset)) = &group0 {
+        // Bindings are pass state: set only what changed since the last draw.
+        if group0.is_some() && ps.group0 != group0 {
+            let (group, offset) = group0.as_ref().expect("checked");
             pass.set_bind_group(0, group, &[*offset]);
+            ps.group0 = group0;
         }
-        if let Some(group) = &group1 {
-            pass.set_bind_group(1, group, &[]);
+        if group1.is_some() && ps.group1 != group1 {
+            pass.set_bind_group(1, group1.as_ref().expect("checked"), &[]);
+            ps.group1 = group1;
         }
-        for (slot, (buffer, offset)) in bindings.iter().enumerate() {
-            pass.set_vertex_buffer(slot as u32, buffer.slice(*offset..));
+        if ps.vertex_buffers.len() < bindings.len() {
+            ps.vertex_buffers.resize(bindings.len(), None);
+        }
+        for (slot, binding) in bindings.into_iter().enumerate() {
+            if ps.vertex_buffers[slot].as_ref() != Some(&binding) {
+                pass.set_vertex_buffer(slot as u32, binding.0.slice(binding.1..));
+                ps.vertex_buffers[slot] = Some(binding);
+            }
         }
         match index {
             Some((buffer, offset, format, range)) => {
-                pass.set_index_buffer(buffer.slice(offset..), format);
+                let binding = (buffer, offset, format);
+                if ps.index_buffer.as_ref() != Some(&binding) {
+                    pass.set_index_buffer(binding.0.slice(offset..), format);
+                    ps.index_buffer = Some(binding);
+                }
                 pass.draw_indexed(range, 0, 0..instances);
             }
             None => pass.draw(vertices, 0..instances),

@@ -10,7 +10,7 @@
 use crate::context::{Context, DefaultFramebuffer, Gpu};
 
 /// Bytes of one arena chunk (larger allocations get a chunk of their own size).
-const CHUNK_SIZE: u64 = 1 << 20;
+const CHUNK_SIZE: u64 = 1 << 18;
 
 /// One GPU buffer of the arena and the bytes it will receive at the next submit.
 pub(crate) struct Chunk {
@@ -109,6 +109,10 @@ pub(crate) struct PassState {
     pub(crate) viewport: Option<[u32; 6]>,
     pub(crate) scissor: Option<[u32; 4]>,
     pub(crate) blend_constant: Option<[u32; 4]>,
+    pub(crate) group0: Option<(wgpu::BindGroup, u32)>,
+    pub(crate) group1: Option<wgpu::BindGroup>,
+    pub(crate) vertex_buffers: Vec<Option<(wgpu::Buffer, u64)>>,
+    pub(crate) index_buffer: Option<(wgpu::Buffer, u64, wgpu::IndexFormat)>,
 }
 
 /// The batch being recorded.

@@ -17,6 +17,8 @@
 //! is `t = 0`, front faces are counter-clockwise in normalized device coordinates, and a vertex
 //! input wider than its array gets GL's (0, 0, 0, 1) defaults.
 
+#![warn(missing_docs)]
+
 pub mod gl;
 
 mod buffer;

@@ -569,6 +569,10 @@ impl Context {
             return None;
         }
         for (i, u) in linked.layout.uniforms.iter().enumerate() {
+            // Members of uniform blocks have no location in WebGL.
+            if u.storage == UniformStorage::Block {
+                continue;
+            }
             let element = if u.name == name {
                 Some(0)
             } else if let Some(base) = u.name.strip_suffix("[0]") {
@@ -727,6 +731,7 @@ impl Context {
             .and_then(|p| p.linked.as_mut())
             .expect("checked");
         match storage {
+            UniformStorage::Block => {}
             UniformStorage::Sampler { first_slot } => {
                 let Values::I(v) = values else { return };
                 for (k, e) in (loc.element as usize..last).enumerate() {

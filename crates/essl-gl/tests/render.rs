@@ -613,13 +613,15 @@ fn read_pixels_follows_gl_rules() {
     assert_clean(&ctx);
 }
 
-/// Measures a 256² frame (clear + a textured quad + 100 small triangles) with readback.
+/// Measures a 256² frame with readback: a clear and a textured quad, then the same plus 100
+/// small triangles that each set a uniform (per-draw overhead).
 #[test]
 fn frame_time_256() {
     let Some(mut ctx) = context(256, 256) else {
         return;
     };
     textured_quad(&mut ctx, 1.0);
+    let quad_program = ctx.program_from_layout(textured());
     let tex = ctx.create_texture();
     ctx.bind_texture(gl::TEXTURE_2D, Some(tex));
     ctx.tex_image_2d(
@@ -634,28 +636,144 @@ fn frame_time_256() {
         Some(&CHECKER),
     );
     ctx.tex_parameteri(gl::TEXTURE_2D, gl::TEXTURE_MIN_FILTER, gl::NEAREST as i32);
-    let mut frame = |ctx: &mut essl_gl::Context, draws: u32| {
+    let small = ctx.program_from_layout(
+        Layout::new(
+            "struct U { u_offset: vec2<f32> }
+             @group(0) @binding(0) var<uniform> u: U;
+             @vertex fn main(@location(0) a_position: vec2<f32>) -> @builtin(position) vec4<f32> {
+                 return vec4(a_position * 0.05 + u.u_offset, 0.0, 1.0);
+             }",
+            "@fragment fn main() -> @location(0) vec4<f32> { return vec4(1.0, 0.5, 0.0, 1.0); }",
+        )
+        .attribute("a_position", GlType::FLOAT_VEC2, 0)
+        .uniform("u_offset", GlType::FLOAT_VEC2, 1, 0, 16, 0)
+        .block_size(16)
+        .build(),
+    );
+    let offset = ctx.get_uniform_location(small, "u_offset");
+    let frame = |ctx: &mut essl_gl::Context, small_draws: u32| {
         ctx.clear(gl::COLOR_BUFFER_BIT | gl::DEPTH_BUFFER_BIT);
-        for _ in 0..draws {
-            ctx.draw_arrays(gl::TRIANGLES, 0, 6);
+        ctx.use_program(Some(quad_program));
+        ctx.draw_arrays(gl::TRIANGLES, 0, 6);
+        if small_draws > 0 {
+            ctx.use_program(Some(small));
+            for i in 0..small_draws {
+                ctx.uniform2f(
+                    offset,
+                    (i % 10) as f32 * 0.2 - 0.9,
+                    (i / 10) as f32 * 0.2 - 0.9,
+                );
+                ctx.draw_arrays(gl::TRIANGLES, 0, 3);
+            }
         }
         ctx.read_pixels_rgba8(0, 0, 256, 256)
     };
     for _ in 0..5 {
-        frame(&mut ctx, 1);
+        frame(&mut ctx, 100);
     }
-    for draws in [1, 100] {
-        let n = 20;
+    for small_draws in [0, 100] {
+        let n = 50;
         let t = std::time::Instant::now();
         for _ in 0..n {
-            frame(&mut ctx, draws);
+            frame(&mut ctx, small_draws);
         }
         let ms = t.elapsed().as_secs_f64() * 1000.0 / n as f64;
         eprintln!(
-            "256x256 frame, {draws} draw(s) + readback: {ms:.3} ms ({})",
+            "256x256 frame, textured quad + {small_draws} small draws + readback: {ms:.3} ms ({})",
             ctx.adapter_info().name
         );
     }
+    assert_eq!(ctx.get_error(), gl::NO_ERROR, "{:?}", ctx.error_message());
+    assert_clean(&ctx);
+}
+
+#[test]
+fn updates_between_draws_keep_gl_order() {
+    let Some(mut ctx) = context(W, H) else { return };
+    // Buffer contents change between two draws of one batch.
+    let program = ctx.program_from_layout(solid(1.0, 1.0, 1.0));
+    ctx.use_program(Some(program));
+    let left: Vec<f32> = QUAD
+        .chunks(2)
+        .flat_map(|p| [(p[0] - 1.0) / 2.0, p[1]])
+        .collect();
+    let right: Vec<f32> = QUAD
+        .chunks(2)
+        .flat_map(|p| [(p[0] + 1.0) / 2.0, p[1]])
+        .collect();
+    float_attribute(&mut ctx, 0, 2, &left);
+    clear_black(&mut ctx);
+    ctx.draw_arrays(gl::TRIANGLES, 0, 6);
+    ctx.buffer_sub_data(gl::ARRAY_BUFFER, 0, &right[..6]);
+    ctx.buffer_sub_data(gl::ARRAY_BUFFER, 24, &right[6..]);
+    ctx.draw_arrays(gl::TRIANGLES, 0, 6);
+    assert!(all_are(&mut ctx, [255; 4]), "both halves drawn");
+    // Texture contents change between two draws of one batch.
+    textured_quad(&mut ctx, 1.0);
+    let tex = ctx.create_texture();
+    ctx.bind_texture(gl::TEXTURE_2D, Some(tex));
+    ctx.tex_image_2d(
+        gl::TEXTURE_2D,
+        0,
+        gl::RGBA as i32,
+        1,
+        1,
+        0,
+        gl::RGBA,
+        gl::UNSIGNED_BYTE,
+        Some(&[255, 0, 0, 255]),
+    );
+    ctx.tex_parameteri(gl::TEXTURE_2D, gl::TEXTURE_MIN_FILTER, gl::NEAREST as i32);
+    clear_black(&mut ctx);
+    ctx.enable(gl::SCISSOR_TEST);
+    ctx.scissor(0, 0, W as i32 / 2, H as i32);
+    ctx.draw_arrays(gl::TRIANGLES, 0, 6);
+    ctx.tex_sub_image_2d(
+        gl::TEXTURE_2D,
+        0,
+        0,
+        0,
+        1,
+        1,
+        gl::RGBA,
+        gl::UNSIGNED_BYTE,
+        &[0, 255, 0, 255],
+    );
+    ctx.scissor(W as i32 / 2, 0, W as i32 / 2, H as i32);
+    ctx.draw_arrays(gl::TRIANGLES, 0, 6);
+    ctx.disable(gl::SCISSOR_TEST);
+    assert_eq!(
+        pixel(&mut ctx, 4, 4),
+        [255, 0, 0, 255],
+        "the first draw saw the old texel"
+    );
+    assert_eq!(
+        pixel(&mut ctx, W - 4, 4),
+        [0, 255, 0, 255],
+        "the second draw saw the new texel"
+    );
+    assert_eq!(ctx.get_error(), gl::NO_ERROR, "{:?}", ctx.error_message());
+    assert_clean(&ctx);
+}
+
+#[test]
+fn the_viewport_counts_from_the_bottom_left() {
+    let Some(mut ctx) = context(W, H) else { return };
+    let program = ctx.program_from_layout(solid(1.0, 1.0, 1.0));
+    ctx.use_program(Some(program));
+    float_attribute(&mut ctx, 0, 2, &QUAD);
+    clear_black(&mut ctx);
+    ctx.viewport(0, 0, W as i32 / 2, H as i32 / 4);
+    ctx.draw_arrays(gl::TRIANGLES, 0, 6);
+    assert_eq!(pixel(&mut ctx, 1, 1), [255; 4]);
+    assert_eq!(pixel(&mut ctx, W / 2 - 1, H / 4 - 1), [255; 4]);
+    assert_eq!(pixel(&mut ctx, W / 2 + 1, 1), [0, 0, 0, 255]);
+    assert_eq!(pixel(&mut ctx, 1, H / 4 + 1), [0, 0, 0, 255]);
+    // Partly off-screen viewports are allowed.
+    clear_black(&mut ctx);
+    ctx.viewport(-(W as i32), -(H as i32), 2 * W as i32, 2 * H as i32);
+    ctx.draw_arrays(gl::TRIANGLES, 0, 6);
+    assert!(all_are(&mut ctx, [255; 4]));
     assert_eq!(ctx.get_error(), gl::NO_ERROR);
     assert_clean(&ctx);
 }

@@ -129,7 +129,7 @@ impl Layout {
             vertex,
             fragment_info: validate(&fragment),
             fragment,
-            uniform_block: (self.block_size > 0).then(|| UniformBlock {
+            uniform_block: (self.block_size > 0).then_some(UniformBlock {
                 size: self.block_size,
                 internal: self.internal,
             }),
