@@ -1169,14 +1169,17 @@ impl Context {
             ps.blend_constant = Some(blend_bits);
         }
         // Bindings are pass state: set only what changed since the last draw.
-        if group0.is_some() && ps.group0 != group0 {
-            let (group, offset) = group0.as_ref().expect("checked");
-            pass.set_bind_group(0, group, &[*offset]);
-            ps.group0 = group0;
+        if let Some((group, offset)) = &group0 {
+            if ps.group0.as_ref() != Some(&(group.clone(), *offset)) {
+                pass.set_bind_group(0, group, &[*offset]);
+                ps.group0 = group0.clone();
+            }
         }
-        if group1.is_some() && ps.group1 != group1 {
-            pass.set_bind_group(1, group1.as_ref().expect("checked"), &[]);
-            ps.group1 = group1;
+        if let Some(group) = &group1 {
+            if ps.group1.as_ref() != Some(group) {
+                pass.set_bind_group(1, group, &[]);
+                ps.group1 = group1.clone();
+            }
         }
         if ps.vertex_buffers.len() < bindings.len() {
             ps.vertex_buffers.resize(bindings.len(), None);

@@ -7,6 +7,11 @@ use common::*;
 use essl::types::GlType;
 use essl_gl::{gl, Context, Program};
 
+/// A misuse and the error it records.
+type Case<'a> = (&'a dyn Fn(&mut Context), u32);
+/// A misuse (owning its data) and the error it records.
+type BoxedCase = (Box<dyn Fn(&mut Context)>, u32);
+
 const W: u32 = 32;
 const H: u32 = 32;
 const BLACK: [u8; 4] = [0, 0, 0, 255];
@@ -227,7 +232,7 @@ fn an_integer_texture_on_a_float_sampler_is_invalid_operation() {
 #[test]
 fn vertex_attrib_pointer_errors_change_nothing() {
     let Some((mut ctx, _)) = ready() else { return };
-    let cases: [(&dyn Fn(&mut Context), u32); 8] = [
+    let cases: [Case; 8] = [
         (
             &|c| c.vertex_attrib_pointer(0, 2, gl::FLOAT, false, 256, 0),
             gl::INVALID_VALUE,
@@ -359,7 +364,7 @@ fn texture_errors_change_nothing() {
     ctx.tex_parameteri(gl::TEXTURE_2D, gl::TEXTURE_MIN_FILTER, gl::NEAREST as i32);
     assert_eq!(ctx.get_error(), gl::NO_ERROR);
     let red = [255u8, 0, 0, 255];
-    let cases: Vec<(Box<dyn Fn(&mut Context)>, u32)> = vec![
+    let cases: Vec<BoxedCase> = vec![
         (
             Box::new(move |c| {
                 c.tex_image_2d(
@@ -582,7 +587,7 @@ fn c_texture(ctx: &mut Context) -> essl_gl::Texture {
 #[test]
 fn state_errors_change_nothing() {
     let Some((mut ctx, _)) = ready() else { return };
-    let cases: [(&dyn Fn(&mut Context), u32); 9] = [
+    let cases: [Case; 9] = [
         (&|c| c.enable(0x1234), gl::INVALID_ENUM),
         (&|c| c.depth_func(0x1234), gl::INVALID_ENUM),
         (&|c| c.cull_face(gl::CCW), gl::INVALID_ENUM),
@@ -637,7 +642,7 @@ fn uniform_errors_change_nothing() {
     let unit = ctx.get_uniform_location(program, "u_unit");
     let other_color = ctx.get_uniform_location(other, "u_color");
     ctx.uniform4f(color, 1.0, 1.0, 1.0, 1.0);
-    let cases: [(&dyn Fn(&mut Context), u32); 5] = [
+    let cases: [Case; 5] = [
         (
             &|c| c.uniform3f(color, 0.0, 0.0, 0.0),
             gl::INVALID_OPERATION,
