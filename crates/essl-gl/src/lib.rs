@@ -8,10 +8,11 @@
 //! [`Program`], [`Shader`], [`UniformLocation`]), and misuse records WebGL's error
 //! ([`Context::get_error`]) instead of panicking.
 //!
-//! Programs come from the `essl` front end as an [`essl::program::ProgramLayout`]: two naga
-//! modules and a description of their bindings, installed with
-//! [`Context::link_program_from_layout`] (what `link_program` does once the front end has
-//! compiled and linked the shaders).
+//! Programs are GLSL ES 3.00: [`Context::compile_shader`] runs the `essl` front end, and
+//! [`Context::link_program`] links and lowers the shaders to an
+//! [`essl::program::ProgramLayout`] — two naga modules and a description of their bindings —
+//! which [`Context::link_program_from_layout`] installs (tests and tools may hand it layouts
+//! made otherwise, e.g. from WGSL that follows the same conventions).
 //!
 //! GL's conventions are kept: `read_pixels` returns the bottom row first, texture data row 0
 //! is `t = 0`, front faces are counter-clockwise in normalized device coordinates, and a vertex

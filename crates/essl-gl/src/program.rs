@@ -33,12 +33,17 @@ pub(crate) struct ShaderInput {
 pub(crate) struct ShaderObject {
     pub(crate) ty: u32,
     pub(crate) source: String,
+    /// The front end's result of the last `compile_shader`.
+    pub(crate) compiled: Option<Box<essl::Shader>>,
+    pub(crate) info_log: String,
 }
 
 /// A program object (`WebGLProgram`).
 #[derive(Default)]
 pub(crate) struct ProgramObject {
     pub(crate) attached: Vec<Id>,
+    /// `bind_attrib_location` requests, applied at the next link.
+    pub(crate) attrib_bindings: Vec<(String, u32)>,
     pub(crate) linked: Option<LinkedProgram>,
     pub(crate) link_status: bool,
     pub(crate) info_log: String,
@@ -231,6 +236,8 @@ impl Context {
         let id = self.shaders.insert(ShaderObject {
             ty,
             source: String::new(),
+            compiled: None,
+            info_log: String::new(),
         });
         Some(Shader { ctx: self.id, id })
     }
@@ -257,6 +264,39 @@ impl Context {
     pub fn get_shader_source(&mut self, shader: Shader) -> Option<String> {
         let id = self.shader_id(shader, "getShaderSource")?;
         self.shaders.get(id).map(|s| s.source.clone())
+    }
+
+    /// Compiles a shader's source with the essl front end (`compileShader`); read the result
+    /// with [`Context::get_shader_compile_status`] and [`Context::get_shader_info_log`].
+    pub fn compile_shader(&mut self, shader: Shader) {
+        let Some(id) = self.shader_id(shader, "compileShader") else {
+            return;
+        };
+        let s = self.shaders.get_mut(id).expect("live");
+        let stage = if s.ty == gl::VERTEX_SHADER {
+            essl::Stage::Vertex
+        } else {
+            essl::Stage::Fragment
+        };
+        let file = essl::source::SourceFile::new(stage.as_str(), s.source.clone());
+        let compiled = essl::compile(file, stage, &essl::CompileOptions::default());
+        s.info_log = essl::render::webgl_info_log(&compiled.file, &compiled.diagnostics);
+        s.compiled = Some(Box::new(compiled));
+    }
+
+    /// Whether the last compile succeeded (`getShaderParameter(COMPILE_STATUS)`).
+    pub fn get_shader_compile_status(&mut self, shader: Shader) -> bool {
+        self.shader_id(shader, "getShaderParameter")
+            .and_then(|id| self.shaders.get(id))
+            .and_then(|s| s.compiled.as_ref())
+            .is_some_and(|c| c.ok())
+    }
+
+    /// The log of the last compile, in WebGL's `ERROR: 0:LINE: 'token' : message` form
+    /// (`getShaderInfoLog`).
+    pub fn get_shader_info_log(&mut self, shader: Shader) -> Option<String> {
+        let id = self.shader_id(shader, "getShaderInfoLog")?;
+        self.shaders.get(id).map(|s| s.info_log.clone())
     }
 
     /// A shader's type (`getShaderParameter(SHADER_TYPE)`).
@@ -374,6 +414,72 @@ impl Context {
     pub fn get_program_info_log(&mut self, program: Program) -> Option<String> {
         let p = self.program_id(program, "getProgramInfoLog")?;
         self.programs.get(p).map(|p| p.info_log.clone())
+    }
+
+    /// Binds an attribute name to a location for the next link (`bindAttribLocation`).
+    /// An index ≥ `MAX_VERTEX_ATTRIBS` → `INVALID_VALUE`; a reserved `gl_`/`webgl_` name →
+    /// `INVALID_OPERATION`.
+    pub fn bind_attrib_location(&mut self, program: Program, index: u32, name: &str) {
+        const F: &str = "bindAttribLocation";
+        let Some(p) = self.program_id(program, F) else {
+            return;
+        };
+        if index >= self.max_vertex_attribs {
+            return self.error(gl::INVALID_VALUE, F, "index ≥ MAX_VERTEX_ATTRIBS");
+        }
+        if name.starts_with("gl_") || name.starts_with("webgl_") || name.starts_with("_webgl_") {
+            return self.error(gl::INVALID_OPERATION, F, "reserved name");
+        }
+        let bindings = &mut self.programs.get_mut(p).expect("live").attrib_bindings;
+        bindings.retain(|(n, _)| n != name);
+        bindings.push((name.to_owned(), index));
+    }
+
+    /// Links the attached shaders (`linkProgram`): the essl front end links them as WebGL2
+    /// does and lowers them to a [`ProgramLayout`], which
+    /// [`Context::link_program_from_layout`] installs. Failures set `LINK_STATUS` false with
+    /// the reason in [`Context::get_program_info_log`].
+    pub fn link_program(&mut self, program: Program) {
+        let Some(p) = self.program_id(program, "linkProgram") else {
+            return;
+        };
+        let obj = self.programs.get(p).expect("live");
+        let shader = |ty: u32| {
+            obj.attached
+                .iter()
+                .filter_map(|&s| self.shaders.get_any(s))
+                .find(|s| s.ty == ty)
+        };
+        let result = match (shader(gl::VERTEX_SHADER), shader(gl::FRAGMENT_SHADER)) {
+            (None, _) | (_, None) => {
+                Err("a vertex and a fragment shader must be attached".to_owned())
+            }
+            (Some(vs), Some(fs)) => match (&vs.compiled, &fs.compiled) {
+                (Some(v), Some(f)) if v.ok() && f.ok() => {
+                    let linked = essl::link::link_with_bindings(v, f, &obj.attrib_bindings);
+                    if linked.ok {
+                        essl::lower::lower_program(
+                            v,
+                            f,
+                            &linked,
+                            &essl::program::LowerOptions::default(),
+                        )
+                        .map_err(|e| e.to_string())
+                    } else {
+                        Err(linked.log)
+                    }
+                }
+                _ => Err("an attached shader is not compiled".to_owned()),
+            },
+        };
+        match result {
+            Ok(layout) => self.link_program_from_layout(program, layout),
+            Err(log) => {
+                let obj = self.programs.get_mut(p).expect("live");
+                obj.link_status = false;
+                obj.info_log = log;
+            }
+        }
     }
 
     /// Creates a program and links it from a layout the front end produced: see

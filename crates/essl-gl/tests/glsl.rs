@@ -1,0 +1,362 @@
+//! End to end: GLSL ES 3.00 compiled, linked and lowered by the essl front end, drawn by
+//! essl-gl — the `ProgramLayout` contract exercised by real lowered modules.
+
+mod common;
+
+use common::*;
+use essl_gl::{gl, Context, Program};
+
+const W: u32 = 32;
+const H: u32 = 32;
+
+/// Compiles and links a program, panicking with the logs on failure.
+fn program(ctx: &mut Context, vs: &str, fs: &str) -> Program {
+    let p = ctx.create_program();
+    for (ty, src) in [(gl::VERTEX_SHADER, vs), (gl::FRAGMENT_SHADER, fs)] {
+        let s = ctx.create_shader(ty).expect("a shader type");
+        ctx.shader_source(s, src);
+        ctx.compile_shader(s);
+        assert!(
+            ctx.get_shader_compile_status(s),
+            "{:?}",
+            ctx.get_shader_info_log(s)
+        );
+        ctx.attach_shader(p, s);
+    }
+    ctx.link_program(p);
+    assert!(
+        ctx.get_program_link_status(p),
+        "{:?}",
+        ctx.get_program_info_log(p)
+    );
+    p
+}
+
+const PASS_VS: &str = "#version 300 es
+in vec4 a_position;
+void main() { gl_Position = a_position; }";
+
+#[test]
+fn a_glsl_triangle_with_a_uniform_colour() {
+    let Some(mut ctx) = context(W, H) else { return };
+    let p = program(
+        &mut ctx,
+        PASS_VS,
+        "#version 300 es
+        precision mediump float;
+        uniform vec4 u_color;
+        out vec4 color;
+        void main() { color = u_color; }",
+    );
+    ctx.use_program(Some(p));
+    let loc = ctx.get_attrib_location(p, "a_position");
+    assert!(loc >= 0);
+    float_attribute(&mut ctx, loc as u32, 2, &[-1.0, -1.0, 1.0, -1.0, -1.0, 1.0]);
+    let color = ctx.get_uniform_location(p, "u_color");
+    ctx.uniform4f(color, 0.0, 1.0, 0.0, 1.0);
+    clear_black(&mut ctx);
+    ctx.draw_arrays(gl::TRIANGLES, 0, 3);
+    assert_eq!(ctx.get_error(), gl::NO_ERROR, "{:?}", ctx.error_message());
+    assert_eq!(pixel(&mut ctx, 2, 2), [0, 255, 0, 255]);
+    assert_eq!(pixel(&mut ctx, W - 2, H - 2), [0, 0, 0, 255]);
+    assert_clean(&ctx);
+}
+
+#[test]
+fn gl_depth_range_and_frag_coord_follow_gl() {
+    let Some(mut ctx) = context(W, H) else { return };
+    let p = program(
+        &mut ctx,
+        PASS_VS,
+        "#version 300 es
+        precision highp float;
+        uniform vec4 u_color;
+        out vec4 color;
+        void main() { color = vec4(u_color.rgb, gl_FragCoord.y < 8.0 ? 1.0 : 0.0); }",
+    );
+    ctx.use_program(Some(p));
+    let color = ctx.get_uniform_location(p, "u_color");
+    ctx.enable(gl::DEPTH_TEST);
+    clear_black(&mut ctx);
+    // GL clip z: -0.5 is nearer than +0.5 with LESS, whatever the draw order.
+    for (z, rgb) in [(-0.5f32, [1.0, 0.0, 0.0]), (0.5, [0.0, 0.0, 1.0])] {
+        let data: Vec<f32> = QUAD.chunks(2).flat_map(|c| [c[0], c[1], z]).collect();
+        float_attribute(&mut ctx, 0, 3, &data);
+        ctx.uniform4f(color, rgb[0], rgb[1], rgb[2], 1.0);
+        ctx.draw_arrays(gl::TRIANGLES, 0, 6);
+    }
+    assert_eq!(ctx.get_error(), gl::NO_ERROR, "{:?}", ctx.error_message());
+    // gl_FragCoord.y counts from the bottom: rows 0..8 are opaque.
+    assert_eq!(pixel(&mut ctx, 4, 2), [255, 0, 0, 255]);
+    assert_eq!(pixel(&mut ctx, 4, 20), [255, 0, 0, 0]);
+    assert_clean(&ctx);
+}
+
+#[test]
+fn a_glsl_texture_on_unit_one() {
+    let Some(mut ctx) = context(W, H) else { return };
+    let p = program(
+        &mut ctx,
+        "#version 300 es
+        in vec2 a_position;
+        out vec2 v_uv;
+        void main() { v_uv = a_position * 0.5 + 0.5; gl_Position = vec4(a_position, 0.0, 1.0); }",
+        "#version 300 es
+        precision mediump float;
+        uniform sampler2D u_tex;
+        in vec2 v_uv;
+        out vec4 color;
+        void main() { color = texture(u_tex, v_uv); }",
+    );
+    ctx.use_program(Some(p));
+    let pos = ctx_attrib(&mut ctx, p, "a_position");
+    float_attribute(&mut ctx, pos, 2, &QUAD);
+    let tex = ctx.create_texture();
+    ctx.active_texture(gl::TEXTURE1);
+    ctx.bind_texture(gl::TEXTURE_2D, Some(tex));
+    // Row 0 (t = 0, the bottom) red, row 1 blue.
+    let texels = [
+        255, 0, 0, 255, 255, 0, 0, 255, 0, 0, 255, 255, 0, 0, 255, 255,
+    ];
+    ctx.tex_image_2d(
+        gl::TEXTURE_2D,
+        0,
+        gl::RGBA8 as i32,
+        2,
+        2,
+        0,
+        gl::RGBA,
+        gl::UNSIGNED_BYTE,
+        Some(&texels),
+    );
+    ctx.tex_parameteri(gl::TEXTURE_2D, gl::TEXTURE_MIN_FILTER, gl::NEAREST as i32);
+    ctx.tex_parameteri(gl::TEXTURE_2D, gl::TEXTURE_MAG_FILTER, gl::NEAREST as i32);
+    let sampler = ctx.get_uniform_location(p, "u_tex");
+    ctx.uniform1i(sampler, 1);
+    clear_black(&mut ctx);
+    ctx.draw_arrays(gl::TRIANGLES, 0, 6);
+    assert_eq!(ctx.get_error(), gl::NO_ERROR, "{:?}", ctx.error_message());
+    assert_eq!(pixel(&mut ctx, 4, 4), [255, 0, 0, 255]);
+    assert_eq!(pixel(&mut ctx, 4, H - 4), [0, 0, 255, 255]);
+    assert_clean(&ctx);
+}
+
+fn ctx_attrib(ctx: &mut Context, p: Program, name: &str) -> u32 {
+    let loc = ctx.get_attrib_location(p, name);
+    assert!(loc >= 0, "{name} is not active");
+    loc as u32
+}
+
+#[test]
+fn a_vec4_attribute_fed_three_floats_gets_w_one() {
+    let Some(mut ctx) = context(W, H) else { return };
+    let p = program(
+        &mut ctx,
+        "#version 300 es
+        in vec2 a_position;
+        in vec4 a_color;
+        out vec4 v_color;
+        void main() { v_color = a_color; gl_Position = vec4(a_position, 0.0, 1.0); }",
+        "#version 300 es
+        precision mediump float;
+        in vec4 v_color;
+        out vec4 color;
+        void main() { color = v_color; }",
+    );
+    ctx.use_program(Some(p));
+    let pos = ctx_attrib(&mut ctx, p, "a_position");
+    let col = ctx_attrib(&mut ctx, p, "a_color");
+    float_attribute(&mut ctx, pos, 2, &QUAD);
+    let colours: Vec<f32> = (0..6).flat_map(|_| [1.0, 0.0, 1.0]).collect();
+    float_attribute(&mut ctx, col, 3, &colours);
+    ctx.clear_color(0.0, 0.0, 0.0, 0.0);
+    ctx.clear(gl::COLOR_BUFFER_BIT);
+    ctx.draw_arrays(gl::TRIANGLES, 0, 6);
+    assert_eq!(ctx.get_error(), gl::NO_ERROR, "{:?}", ctx.error_message());
+    assert_eq!(pixel(&mut ctx, W / 2, H / 2), [255, 0, 255, 255]);
+    assert_clean(&ctx);
+}
+
+#[test]
+fn matrices_arrays_and_bind_attrib_location() {
+    let Some(mut ctx) = context(W, H) else { return };
+    let p = ctx.create_program();
+    let vs = ctx.create_shader(gl::VERTEX_SHADER).expect("type");
+    ctx.shader_source(
+        vs,
+        "#version 300 es
+        uniform mat4 u_matrix;
+        in vec2 a_position;
+        void main() { gl_Position = u_matrix * vec4(a_position, 0.0, 1.0); }",
+    );
+    ctx.compile_shader(vs);
+    let fs = ctx.create_shader(gl::FRAGMENT_SHADER).expect("type");
+    ctx.shader_source(
+        fs,
+        "#version 300 es
+        precision mediump float;
+        uniform float u_weights[3];
+        out vec4 color;
+        void main() { color = vec4(u_weights[0], u_weights[1], u_weights[2], 1.0); }",
+    );
+    ctx.compile_shader(fs);
+    ctx.attach_shader(p, vs);
+    ctx.attach_shader(p, fs);
+    ctx.bind_attrib_location(p, 5, "a_position");
+    ctx.link_program(p);
+    assert!(
+        ctx.get_program_link_status(p),
+        "{:?}",
+        ctx.get_program_info_log(p)
+    );
+    assert_eq!(ctx.get_attrib_location(p, "a_position"), 5);
+    ctx.use_program(Some(p));
+    float_attribute(&mut ctx, 5, 2, &QUAD);
+    // Scale by a half: only the middle is covered.
+    let m = ctx.get_uniform_location(p, "u_matrix");
+    #[rustfmt::skip]
+    let half = [0.5, 0.0, 0.0, 0.0, 0.0, 0.5, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0, 1.0];
+    ctx.uniform_matrix4fv(m, false, &half);
+    let weights = ctx.get_uniform_location(p, "u_weights");
+    ctx.uniform1fv(weights, &[1.0, 0.0, 1.0]);
+    let second = ctx.get_uniform_location(p, "u_weights[1]");
+    ctx.uniform1f(second, 1.0);
+    clear_black(&mut ctx);
+    ctx.draw_arrays(gl::TRIANGLES, 0, 6);
+    assert_eq!(ctx.get_error(), gl::NO_ERROR, "{:?}", ctx.error_message());
+    assert_eq!(pixel(&mut ctx, W / 2, H / 2), [255; 4]);
+    assert_eq!(pixel(&mut ctx, 1, 1), [0, 0, 0, 255]);
+    assert_clean(&ctx);
+}
+
+#[test]
+fn compile_and_link_failures_are_reported() {
+    let Some(mut ctx) = context(W, H) else { return };
+    let vs = ctx.create_shader(gl::VERTEX_SHADER).expect("type");
+    ctx.shader_source(
+        vs,
+        "#version 300 es\nvoid main() { gl_Position = vec4(undeclared); }",
+    );
+    ctx.compile_shader(vs);
+    assert!(!ctx.get_shader_compile_status(vs));
+    let log = ctx.get_shader_info_log(vs).unwrap_or_default();
+    assert!(log.starts_with("ERROR: 0:2:"), "{log}");
+    let fs = ctx.create_shader(gl::FRAGMENT_SHADER).expect("type");
+    ctx.shader_source(
+        fs,
+        "#version 300 es\nprecision mediump float;\nout vec4 c;\nvoid main() { c = vec4(1.0); }",
+    );
+    ctx.compile_shader(fs);
+    let p = ctx.create_program();
+    ctx.attach_shader(p, vs);
+    ctx.attach_shader(p, fs);
+    ctx.link_program(p);
+    assert!(!ctx.get_program_link_status(p));
+    ctx.use_program(Some(p));
+    assert_eq!(ctx.get_error(), gl::INVALID_OPERATION);
+    // Varyings that do not match fail the link, with the front end's log.
+    ctx.shader_source(
+        vs,
+        "#version 300 es\nin vec4 a;\nout vec3 v;\nvoid main() { v = a.xyz; gl_Position = a; }",
+    );
+    ctx.compile_shader(vs);
+    ctx.shader_source(fs, "#version 300 es\nprecision mediump float;\nin vec4 v;\nout vec4 c;\nvoid main() { c = v; }");
+    ctx.compile_shader(fs);
+    ctx.link_program(p);
+    assert!(!ctx.get_program_link_status(p));
+    assert!(!ctx.get_program_info_log(p).unwrap_or_default().is_empty());
+    assert_clean(&ctx);
+}
+
+#[test]
+fn narrow_outputs_integer_and_matrix_attributes_sampler_arrays_and_structs() {
+    let Some(mut ctx) = context(W, H) else { return };
+    let p = program(
+        &mut ctx,
+        "#version 300 es
+        in vec2 a_position;
+        in ivec2 a_select;
+        in mat2 a_scale;
+        flat out ivec2 v_select;
+        void main() { v_select = a_select; gl_Position = vec4(a_scale * a_position, 0.0, 1.0); }",
+        "#version 300 es
+        precision mediump float;
+        struct Light { vec3 color; float strength; };
+        uniform Light u_light;
+        uniform sampler2D u_tex[2];
+        flat in ivec2 v_select;
+        out vec3 color;
+        void main() {
+            vec4 t = v_select.x == 1 ? texture(u_tex[1], vec2(0.5)) : texture(u_tex[0], vec2(0.5));
+            color = u_light.color * u_light.strength + t.rgb;
+        }",
+    );
+    ctx.use_program(Some(p));
+    let pos = ctx_attrib(&mut ctx, p, "a_position");
+    let sel = ctx_attrib(&mut ctx, p, "a_select");
+    let scale = ctx_attrib(&mut ctx, p, "a_scale");
+    float_attribute(&mut ctx, pos, 2, &QUAD);
+    let b = ctx.create_buffer();
+    ctx.bind_buffer(gl::ARRAY_BUFFER, Some(b));
+    ctx.buffer_data(gl::ARRAY_BUFFER, &[1i32, 0].repeat(6), gl::STATIC_DRAW);
+    ctx.enable_vertex_attrib_array(sel);
+    ctx.vertex_attrib_i_pointer(sel, 2, gl::INT, 0, 0);
+    // mat2 columns at locations scale and scale + 1, as generic values: identity.
+    ctx.vertex_attrib2f(scale, 1.0, 0.0);
+    ctx.vertex_attrib2f(scale + 1, 0.0, 1.0);
+    let strength = ctx.get_uniform_location(p, "u_light.strength");
+    let light_color = ctx.get_uniform_location(p, "u_light.color");
+    ctx.uniform1f(strength, 1.0);
+    ctx.uniform3f(light_color, 0.0, 0.0, 1.0);
+    // u_tex[1] on unit 2 holds red.
+    let units = ctx.get_uniform_location(p, "u_tex");
+    ctx.uniform1iv(units, &[0, 2]);
+    let tex = ctx.create_texture();
+    ctx.active_texture(gl::TEXTURE2);
+    ctx.bind_texture(gl::TEXTURE_2D, Some(tex));
+    ctx.tex_image_2d(
+        gl::TEXTURE_2D,
+        0,
+        gl::RGBA as i32,
+        1,
+        1,
+        0,
+        gl::RGBA,
+        gl::UNSIGNED_BYTE,
+        Some(&[255, 0, 0, 255]),
+    );
+    ctx.tex_parameteri(gl::TEXTURE_2D, gl::TEXTURE_MIN_FILTER, gl::NEAREST as i32);
+    ctx.clear_color(0.0, 0.0, 0.0, 0.0);
+    ctx.clear(gl::COLOR_BUFFER_BIT);
+    ctx.draw_arrays(gl::TRIANGLES, 0, 6);
+    assert_eq!(ctx.get_error(), gl::NO_ERROR, "{:?}", ctx.error_message());
+    // A vec3 output is widened with alpha 1.
+    assert_eq!(pixel(&mut ctx, W / 2, H / 2), [255, 0, 255, 255]);
+    assert_clean(&ctx);
+}
+
+#[test]
+fn uniform_blocks_are_reported_until_supported() {
+    let Some(mut ctx) = context(W, H) else { return };
+    let p = program(
+        &mut ctx,
+        PASS_VS,
+        "#version 300 es
+        precision mediump float;
+        uniform Material { vec4 tint; };
+        out vec4 color;
+        void main() { color = tint; }",
+    );
+    ctx.use_program(Some(p));
+    float_attribute(&mut ctx, 0, 2, &QUAD);
+    clear_black(&mut ctx);
+    ctx.draw_arrays(gl::TRIANGLES, 0, 6);
+    assert_eq!(ctx.get_error(), gl::INVALID_OPERATION);
+    assert!(all_are(&mut ctx, [0, 0, 0, 255]));
+    assert_eq!(
+        ctx.get_uniform_location(p, "tint"),
+        None,
+        "block members have no location"
+    );
+    assert_clean(&ctx);
+}
