@@ -133,6 +133,22 @@ fn output0(module: &naga::Module) -> Option<(ValueKind, u8)> {
     None
 }
 
+/// WebGL's shader info log: `ERROR: 0:LINE: 'token' : message`, one line per diagnostic, in
+/// source order.
+fn info_log(shader: &essl::Shader) -> String {
+    let mut ordered: Vec<_> = shader.diagnostics.iter().collect();
+    ordered.sort_by_key(|d| d.span.start);
+    let end = shader.file.text().len() as u32;
+    ordered
+        .into_iter()
+        .map(|d| {
+            let kind = if d.is_error() { "ERROR" } else { "WARNING" };
+            let line = shader.file.line_of(d.span.start.min(end));
+            format!("{kind}: 0:{line}: '{}' : {}\n", d.token, d.message)
+        })
+        .collect()
+}
+
 /// What a `uniform*` call provides.
 #[derive(Clone, Copy, Debug, PartialEq)]
 enum Call {
@@ -280,7 +296,7 @@ impl Context {
         };
         let file = essl::source::SourceFile::new(stage.as_str(), s.source.clone());
         let compiled = essl::compile(file, stage, &essl::CompileOptions::default());
-        s.info_log = essl::render::webgl_info_log(&compiled.file, &compiled.diagnostics);
+        s.info_log = info_log(&compiled);
         s.compiled = Some(Box::new(compiled));
     }
 
