@@ -6,7 +6,7 @@
 
 use std::ops::Range;
 
-use crate::context::{Context, Gpu};
+use crate::context::{Context, Gpu, MAX_UNIFORM_BUFFER_BINDINGS};
 use crate::gl;
 use crate::objects::{Buffer, Id};
 
@@ -168,13 +168,14 @@ pub(crate) fn padded_size(len: u64) -> u64 {
     (len + GPU_PADDING).div_ceil(4) * 4
 }
 
-/// A vertex+index buffer of `size` bytes starting with `data`.
+/// A vertex, index and uniform buffer of `size` bytes starting with `data`.
 pub(crate) fn create_buffer_init(gpu: &Gpu, data: &[u8], size: u64, label: &str) -> wgpu::Buffer {
     let buffer = gpu.device.create_buffer(&wgpu::BufferDescriptor {
         label: Some(label),
         size,
         usage: wgpu::BufferUsages::VERTEX
             | wgpu::BufferUsages::INDEX
+            | wgpu::BufferUsages::UNIFORM
             | wgpu::BufferUsages::COPY_DST,
         mapped_at_creation: true,
     });
@@ -267,20 +268,36 @@ impl Context {
     /// As WebGL requires, a buffer first bound to `ELEMENT_ARRAY_BUFFER` cannot later be bound
     /// to a target for other data, and the reverse (`INVALID_OPERATION`).
     pub fn bind_buffer(&mut self, target: u32, buffer: Option<Buffer>) {
-        const F: &str = "bindBuffer";
+        self.bind_buffer_checked(target, buffer, "bindBuffer");
+    }
+
+    /// [`Context::bind_buffer`], saying whether it succeeded.
+    fn bind_buffer_checked(&mut self, target: u32, buffer: Option<Buffer>, function: &str) -> bool {
         let kind = match target {
             gl::ELEMENT_ARRAY_BUFFER => Some(BufferKind::Element),
             gl::ARRAY_BUFFER | gl::UNIFORM_BUFFER => Some(BufferKind::Other),
             gl::COPY_READ_BUFFER | gl::COPY_WRITE_BUFFER => None,
             gl::PIXEL_PACK_BUFFER | gl::PIXEL_UNPACK_BUFFER | gl::TRANSFORM_FEEDBACK_BUFFER => {
-                return self.error(gl::INVALID_ENUM, F, "target not supported by essl-gl");
+                self.error(
+                    gl::INVALID_ENUM,
+                    function,
+                    "target not supported by essl-gl",
+                );
+                return false;
             }
-            _ => return self.error(gl::INVALID_ENUM, F, format_args!("target 0x{target:04X}")),
+            _ => {
+                self.error(
+                    gl::INVALID_ENUM,
+                    function,
+                    format_args!("target 0x{target:04X}"),
+                );
+                return false;
+            }
         };
         let id = match buffer {
-            Some(b) => match self.buffer_id(b, F) {
+            Some(b) => match self.buffer_id(b, function) {
                 Some(id) => Some(id),
-                None => return,
+                None => return false,
             },
             None => None,
         };
@@ -289,11 +306,9 @@ impl Context {
             match (obj.kind, kind) {
                 (None, k) => obj.kind = Some(k.unwrap_or(BufferKind::Other)),
                 (Some(have), Some(want)) if have != want => {
-                    return self.error(
-                        gl::INVALID_OPERATION,
-                        F,
-                        "a buffer cannot hold both indices and other data (WebGL)",
-                    );
+                    let msg = "a buffer cannot hold both indices and other data (WebGL)";
+                    self.error(gl::INVALID_OPERATION, function, msg);
+                    return false;
                 }
                 _ => {}
             }
@@ -309,6 +324,7 @@ impl Context {
             gl::COPY_WRITE_BUFFER => self.copy_write_buffer = id,
             _ => self.uniform_buffer = id,
         }
+        true
     }
 
     /// Creates the data store of the buffer bound to `target` from `data` (`bufferData`).
@@ -456,6 +472,11 @@ impl Context {
                 *slot = None;
             }
         }
+        for binding in &mut self.uniform_bindings {
+            if binding.is_some_and(|(b, _, _)| b == id) {
+                *binding = None;
+            }
+        }
         let mut element = self.vao().element_buffer;
         if element == Some(id) {
             self.buffers.retarget(&mut element, None);
@@ -469,6 +490,91 @@ impl Context {
             }
         }
         self.buffers.delete(id);
+    }
+
+    /// Binds a whole buffer to indexed binding point `index` of `UNIFORM_BUFFER` (and to the
+    /// generic binding) (`bindBufferBase`). An index ≥ `MAX_UNIFORM_BUFFER_BINDINGS` →
+    /// `INVALID_VALUE`; `TRANSFORM_FEEDBACK_BUFFER` is not supported (`INVALID_ENUM`).
+    pub fn bind_buffer_base(&mut self, target: u32, index: u32, buffer: Option<Buffer>) {
+        self.bind_buffer_indexed(target, index, buffer, 0, None, "bindBufferBase");
+    }
+
+    /// Binds `size` bytes from `offset` of a buffer to indexed binding point `index` of
+    /// `UNIFORM_BUFFER` (`bindBufferRange`). `offset` must be a multiple of
+    /// `UNIFORM_BUFFER_OFFSET_ALIGNMENT` and `size` positive (`INVALID_VALUE`).
+    pub fn bind_buffer_range(
+        &mut self,
+        target: u32,
+        index: u32,
+        buffer: Option<Buffer>,
+        offset: i64,
+        size: i64,
+    ) {
+        const F: &str = "bindBufferRange";
+        if buffer.is_some() {
+            if offset < 0 || size <= 0 {
+                return self.error(gl::INVALID_VALUE, F, "negative offset or size ≤ 0");
+            }
+            let align = self.uniform_buffer_offset_alignment() as i64;
+            if target == gl::UNIFORM_BUFFER && offset % align != 0 {
+                let msg = format!(
+                    "offset is not a multiple of UNIFORM_BUFFER_OFFSET_ALIGNMENT ({align})"
+                );
+                return self.error(gl::INVALID_VALUE, F, msg);
+            }
+        }
+        self.bind_buffer_indexed(
+            target,
+            index,
+            buffer,
+            offset.max(0) as u64,
+            Some(size.max(0) as u64),
+            F,
+        );
+    }
+
+    /// `UNIFORM_BUFFER_OFFSET_ALIGNMENT`: the device's uniform offset alignment.
+    pub fn uniform_buffer_offset_alignment(&self) -> u32 {
+        self.gpu.limits.min_uniform_buffer_offset_alignment
+    }
+
+    fn bind_buffer_indexed(
+        &mut self,
+        target: u32,
+        index: u32,
+        buffer: Option<Buffer>,
+        offset: u64,
+        size: Option<u64>,
+        function: &str,
+    ) {
+        match target {
+            gl::UNIFORM_BUFFER => {}
+            gl::TRANSFORM_FEEDBACK_BUFFER => {
+                return self.error(
+                    gl::INVALID_ENUM,
+                    function,
+                    "transform feedback is not supported by essl-gl",
+                );
+            }
+            _ => {
+                return self.error(
+                    gl::INVALID_ENUM,
+                    function,
+                    format_args!("target 0x{target:04X}"),
+                )
+            }
+        }
+        if index >= MAX_UNIFORM_BUFFER_BINDINGS {
+            return self.error(
+                gl::INVALID_VALUE,
+                function,
+                "index ≥ MAX_UNIFORM_BUFFER_BINDINGS",
+            );
+        }
+        // Also binds the generic binding point, with bind_buffer's checks.
+        if self.bind_buffer_checked(gl::UNIFORM_BUFFER, buffer, function) {
+            self.uniform_bindings[index as usize] = buffer.map(|b| (b.id, offset, size));
+        }
     }
 
     /// The size in bytes of the buffer bound to `target` (`getBufferParameter(BUFFER_SIZE)`).

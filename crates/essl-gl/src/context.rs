@@ -29,6 +29,10 @@ pub const MAX_VERTEX_ATTRIBS: u32 = 16;
 /// The number of texture units (`MAX_COMBINED_TEXTURE_IMAGE_UNITS`), WebGL2's minimum.
 pub const MAX_TEXTURE_UNITS: u32 = 32;
 
+/// The number of indexed `UNIFORM_BUFFER` binding points (`MAX_UNIFORM_BUFFER_BINDINGS`),
+/// WebGL2's minimum.
+pub const MAX_UNIFORM_BUFFER_BINDINGS: u32 = 24;
+
 /// The GPU objects the context renders with.
 pub(crate) struct Gpu {
     pub(crate) device: wgpu::Device,
@@ -76,6 +80,8 @@ pub struct Context {
     pub(crate) copy_read_buffer: Option<Id>,
     pub(crate) copy_write_buffer: Option<Id>,
     pub(crate) uniform_buffer: Option<Id>,
+    /// Indexed `UNIFORM_BUFFER` bindings: buffer, offset, size (`None`: the whole buffer).
+    pub(crate) uniform_bindings: Vec<Option<(Id, u64, Option<u64>)>>,
     pub(crate) default_vao: VertexArrayObject,
     pub(crate) bound_vao: Option<Id>,
     pub(crate) generic_attribs: Vec<GenericAttrib>,
@@ -171,6 +177,7 @@ impl Context {
             copy_read_buffer: None,
             copy_write_buffer: None,
             uniform_buffer: None,
+            uniform_bindings: vec![None; MAX_UNIFORM_BUFFER_BINDINGS as usize],
             default_vao: VertexArrayObject::new(max_vertex_attribs),
             bound_vao: None,
             generic_attribs: vec![GenericAttrib::default(); max_vertex_attribs as usize],

@@ -356,7 +356,7 @@ impl Context {
             .push(&self.gpu, bytemuck::cast_slice(&values), align);
         let group = self
             .pipelines
-            .group0(&self.gpu, alloc.chunk, &alloc.buffer, 32);
+            .group0(&self.gpu, Some((alloc.chunk, &alloc.buffer, 32)), &[]);
         let (w, h) = (self.fb.width as f32, self.fb.height as f32);
         self.frame.pass(&self.gpu, &self.fb);
         let frame = &mut self.frame;
@@ -538,12 +538,31 @@ impl Context {
             .get_any(pid)
             .and_then(|p| p.linked.as_ref())
             .expect("current programs are linked");
-        if !linked.layout.blocks.is_empty() {
-            return self.error(
-                gl::INVALID_OPERATION,
-                f,
-                "uniform blocks are not supported by essl-gl yet",
-            );
+        // Uniform blocks read the buffer ranges bound to their binding points.
+        let mut blocks = Vec::new();
+        for (i, block) in linked.layout.blocks.iter().enumerate() {
+            let point = linked.block_bindings[i] as usize;
+            let Some((buffer, offset, size)) = self.uniform_bindings.get(point).copied().flatten()
+            else {
+                let msg = format!(
+                    "uniform block {} has no buffer at binding point {point}",
+                    block.name
+                );
+                return self.error(gl::INVALID_OPERATION, f, msg);
+            };
+            let len = self
+                .buffers
+                .get_any(buffer)
+                .map_or(0, |b| b.data.len() as u64);
+            let size = size.unwrap_or(len.saturating_sub(offset));
+            if offset + size > len || size < block.size as u64 {
+                let msg = format!(
+                    "the buffer range of uniform block {} is too small",
+                    block.name
+                );
+                return self.error(gl::INVALID_OPERATION, f, msg);
+            }
+            blocks.push((buffer, offset, size));
         }
         // Vertex inputs: types must match the arrays or generic values (WebGL2).
         let mut sources = Vec::new();
@@ -726,6 +745,7 @@ impl Context {
             instances as u32,
             sources,
             slot_plans,
+            blocks,
             scissor,
         );
     }
@@ -742,6 +762,7 @@ impl Context {
         instances: u32,
         sources: Vec<(crate::program::ShaderInput, Source)>,
         slot_plans: Vec<SlotPlan>,
+        blocks: Vec<(Id, u64, u64)>,
         scissor: [u32; 4],
     ) {
         let serial = self.frame.serial;
@@ -980,7 +1001,7 @@ impl Context {
             .get_any_mut(pid)
             .and_then(|p| p.linked.as_mut())
             .expect("current programs are linked");
-        let mut group0 = None;
+        let mut default = None;
         if let Some(block) = &linked.layout.uniform_block {
             for (what, offset) in &block.internal {
                 match what {
@@ -1024,10 +1045,25 @@ impl Context {
                     (alloc.chunk, alloc.buffer, alloc.offset)
                 }
             };
-            let group = self
-                .pipelines
-                .group0(gpu, chunk, &buffer, block.size as u64);
-            group0 = Some((group, offset as u32));
+            default = Some((chunk, buffer, offset as u32, block.size as u64));
+        }
+        let block_buffers: Vec<(wgpu::Buffer, u64, u64)> = blocks
+            .iter()
+            .map(|&(id, offset, size)| {
+                let b = self
+                    .buffers
+                    .get_any_mut(id)
+                    .expect("bound buffers are alive");
+                (b.gpu_buffer(gpu, serial), offset, size)
+            })
+            .collect();
+        let mut group0 = None;
+        if default.is_some() || !block_buffers.is_empty() {
+            let arena = default
+                .as_ref()
+                .map(|(chunk, buffer, _, size)| (*chunk, buffer, *size));
+            let group = self.pipelines.group0(gpu, arena, &block_buffers);
+            group0 = Some((group, default.as_ref().map(|d| d.2)));
         }
         let group1 = (!slot_bindings.is_empty())
             .then(|| self.pipelines.group1(gpu, &slot_bindings, resources));
@@ -1171,7 +1207,7 @@ impl Context {
         // Bindings are pass state: set only what changed since the last draw.
         if let Some((group, offset)) = &group0 {
             if ps.group0.as_ref() != Some(&(group.clone(), *offset)) {
-                pass.set_bind_group(0, group, &[*offset]);
+                pass.set_bind_group(0, group, offset.as_slice());
                 ps.group0 = group0.clone();
             }
         }

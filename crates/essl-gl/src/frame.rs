@@ -109,7 +109,7 @@ pub(crate) struct PassState {
     pub(crate) viewport: Option<[u32; 6]>,
     pub(crate) scissor: Option<[u32; 4]>,
     pub(crate) blend_constant: Option<[u32; 4]>,
-    pub(crate) group0: Option<(wgpu::BindGroup, u32)>,
+    pub(crate) group0: Option<(wgpu::BindGroup, Option<u32>)>,
     pub(crate) group1: Option<wgpu::BindGroup>,
     pub(crate) vertex_buffers: Vec<Option<(wgpu::Buffer, u64)>>,
     pub(crate) index_buffer: Option<(wgpu::Buffer, u64, wgpu::IndexFormat)>,

@@ -51,6 +51,10 @@ pub(crate) struct PipelineKey {
     pub(crate) slots: Vec<SlotBinding>,
 }
 
+/// What a group-0 bind group holds: the default block's arena chunk and size, and the
+/// uniform blocks' buffer ranges.
+type Group0Key = (Option<(u64, u64)>, Vec<(wgpu::Buffer, u64, u64)>);
+
 /// A pipeline and the id draws compare to skip redundant `set_pipeline` calls.
 #[derive(Clone)]
 pub(crate) struct CachedPipeline {
@@ -63,9 +67,9 @@ pub(crate) struct CachedPipeline {
 pub(crate) struct PipelineCache {
     pipelines: HashMap<PipelineKey, Result<CachedPipeline, String>>,
     next_id: u64,
-    group0_layout: Option<wgpu::BindGroupLayout>,
+    group0_layouts: HashMap<(bool, usize), wgpu::BindGroupLayout>,
     group1_layouts: HashMap<Vec<SlotBinding>, wgpu::BindGroupLayout>,
-    group0_groups: HashMap<(u64, u64), wgpu::BindGroup>,
+    group0_groups: HashMap<Group0Key, wgpu::BindGroup>,
     #[allow(clippy::type_complexity)]
     group1_groups:
         HashMap<(Vec<SlotBinding>, Vec<(wgpu::TextureView, wgpu::Sampler)>), wgpu::BindGroup>,
@@ -95,23 +99,36 @@ pub(crate) fn create_module(
 }
 
 impl PipelineCache {
-    /// The layout of group 0: the default uniform block, with a dynamic offset.
-    fn group0_layout(&mut self, gpu: &Gpu) -> wgpu::BindGroupLayout {
-        self.group0_layout
-            .get_or_insert_with(|| {
+    /// The layout of group 0: the default uniform block at binding 0 (with a dynamic offset)
+    /// if `default`, and `blocks` uniform blocks at bindings `1..`.
+    pub(crate) fn group0_layout(
+        &mut self,
+        gpu: &Gpu,
+        default: bool,
+        blocks: usize,
+    ) -> wgpu::BindGroupLayout {
+        self.group0_layouts
+            .entry((default, blocks))
+            .or_insert_with(|| {
+                let entry = |binding: u32, dynamic: bool| wgpu::BindGroupLayoutEntry {
+                    binding,
+                    visibility: wgpu::ShaderStages::VERTEX_FRAGMENT,
+                    ty: wgpu::BindingType::Buffer {
+                        ty: wgpu::BufferBindingType::Uniform,
+                        has_dynamic_offset: dynamic,
+                        min_binding_size: None,
+                    },
+                    count: None,
+                };
+                let mut entries = Vec::new();
+                if default {
+                    entries.push(entry(0, true));
+                }
+                entries.extend((0..blocks).map(|i| entry(1 + i as u32, false)));
                 gpu.device
                     .create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
                         label: Some("essl-gl uniforms"),
-                        entries: &[wgpu::BindGroupLayoutEntry {
-                            binding: 0,
-                            visibility: wgpu::ShaderStages::VERTEX_FRAGMENT,
-                            ty: wgpu::BindingType::Buffer {
-                                ty: wgpu::BufferBindingType::Uniform,
-                                has_dynamic_offset: true,
-                                min_binding_size: None,
-                            },
-                            count: None,
-                        }],
+                        entries: &entries,
                     })
             })
             .clone()
@@ -164,31 +181,52 @@ impl PipelineCache {
         layout
     }
 
-    /// The group-0 bind group for `size` bytes of uniforms in an arena chunk.
+    /// The group-0 bind group: `size` bytes of default-block uniforms in an arena chunk (if
+    /// any) and the buffer ranges of the uniform blocks.
     pub(crate) fn group0(
         &mut self,
         gpu: &Gpu,
-        chunk: u64,
-        buffer: &wgpu::Buffer,
-        size: u64,
+        default: Option<(u64, &wgpu::Buffer, u64)>,
+        blocks: &[(wgpu::Buffer, u64, u64)],
     ) -> wgpu::BindGroup {
-        if let Some(g) = self.group0_groups.get(&(chunk, size)) {
+        let key = (
+            default.map(|(chunk, _, size)| (chunk, size)),
+            blocks.to_vec(),
+        );
+        if let Some(g) = self.group0_groups.get(&key) {
             return g.clone();
         }
-        let layout = self.group0_layout(gpu);
-        let group = gpu.device.create_bind_group(&wgpu::BindGroupDescriptor {
-            label: Some("essl-gl uniforms"),
-            layout: &layout,
-            entries: &[wgpu::BindGroupEntry {
+        if self.group0_groups.len() >= MAX_CACHED_BIND_GROUPS {
+            self.group0_groups.clear();
+        }
+        let layout = self.group0_layout(gpu, default.is_some(), blocks.len());
+        let mut entries = Vec::new();
+        if let Some((_, buffer, size)) = default {
+            entries.push(wgpu::BindGroupEntry {
                 binding: 0,
                 resource: wgpu::BindingResource::Buffer(wgpu::BufferBinding {
                     buffer,
                     offset: 0,
                     size: wgpu::BufferSize::new(size),
                 }),
-            }],
+            });
+        }
+        for (i, (buffer, offset, size)) in blocks.iter().enumerate() {
+            entries.push(wgpu::BindGroupEntry {
+                binding: 1 + i as u32,
+                resource: wgpu::BindingResource::Buffer(wgpu::BufferBinding {
+                    buffer,
+                    offset: *offset,
+                    size: wgpu::BufferSize::new(*size),
+                }),
+            });
+        }
+        let group = gpu.device.create_bind_group(&wgpu::BindGroupDescriptor {
+            label: Some("essl-gl uniforms"),
+            layout: &layout,
+            entries: &entries,
         });
-        self.group0_groups.insert((chunk, size), group.clone());
+        self.group0_groups.insert(key, group.clone());
         group
     }
 
@@ -268,11 +306,11 @@ impl PipelineCache {
         program: &LinkedProgram,
     ) -> Result<CachedPipeline, String> {
         let vertex_module = self.vertex_module(gpu, program, &key.patches)?;
-        let group0 = program
-            .layout
-            .uniform_block
-            .is_some()
-            .then(|| self.group0_layout(gpu));
+        let (default, blocks) = (
+            program.layout.uniform_block.is_some(),
+            program.layout.blocks.len(),
+        );
+        let group0 = (default || blocks > 0).then(|| self.group0_layout(gpu, default, blocks));
         let group1 = (!key.slots.is_empty()).then(|| self.group1_layout(gpu, &key.slots));
         let mut groups: Vec<Option<&wgpu::BindGroupLayout>> = vec![group0.as_ref()];
         if group1.is_some() {
@@ -389,7 +427,7 @@ impl PipelineCache {
         let module = naga::front::wgsl::parse_str(SOURCE).expect("the clear shader parses");
         let module =
             create_module(gpu, module, "essl-gl clear").expect("the clear shader is valid");
-        let group0 = self.group0_layout(gpu);
+        let group0 = self.group0_layout(gpu, true, 0);
         let layout = gpu
             .device
             .create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {

@@ -63,6 +63,8 @@ pub(crate) struct LinkedProgram {
     /// Bumped when `uniform_data` changes.
     pub(crate) uniform_version: u64,
     pub(crate) sampler_units: Vec<u32>,
+    /// The `UNIFORM_BUFFER` binding point of each uniform block (`uniformBlockBinding`).
+    pub(crate) block_bindings: Vec<u32>,
     /// Where the current uniform image was last put: (batch, version, chunk, offset).
     pub(crate) uploaded: Option<(u64, u64, u64, u32)>,
 }
@@ -554,6 +556,22 @@ impl Context {
                 i.location
             ));
         }
+        if layout.blocks.len() as u32 + 1 > limits.max_uniform_buffers_per_shader_stage {
+            return Err(format!(
+                "{} uniform blocks: more than the device supports",
+                layout.blocks.len()
+            ));
+        }
+        if let Some(b) = layout
+            .blocks
+            .iter()
+            .find(|b| b.size as u64 > limits.max_uniform_buffer_binding_size)
+        {
+            return Err(format!(
+                "uniform block {} of {} bytes is too large",
+                b.name, b.size
+            ));
+        }
         if let Some(block) = &layout.uniform_block {
             if block.size > limits.max_uniform_buffer_binding_size as u32 {
                 return Err(format!(
@@ -590,6 +608,7 @@ impl Context {
             uniform_data: vec![0; size],
             uniform_version: 0,
             sampler_units: vec![0; layout.samplers.len()],
+            block_bindings: vec![0; layout.blocks.len()],
             uploaded: None,
             vertex_module,
             fragment_module,
@@ -722,6 +741,40 @@ impl Context {
             }
         }
         None
+    }
+
+    /// The index of a uniform block by name, or `INVALID_INDEX` (`getUniformBlockIndex`).
+    pub fn get_uniform_block_index(&mut self, program: Program, name: &str) -> u32 {
+        const F: &str = "getUniformBlockIndex";
+        let Some(id) = self.program_id(program, F) else {
+            return gl::INVALID_INDEX;
+        };
+        let Some(linked) = self.programs.get(id).and_then(|p| p.linked.as_ref()) else {
+            self.error(gl::INVALID_OPERATION, F, "program is not linked");
+            return gl::INVALID_INDEX;
+        };
+        linked
+            .layout
+            .blocks
+            .iter()
+            .position(|b| b.name == name)
+            .map_or(gl::INVALID_INDEX, |i| i as u32)
+    }
+
+    /// Makes uniform block `block_index` read `UNIFORM_BUFFER` binding point `binding`
+    /// (`uniformBlockBinding`). An index or binding out of range → `INVALID_VALUE`.
+    pub fn uniform_block_binding(&mut self, program: Program, block_index: u32, binding: u32) {
+        const F: &str = "uniformBlockBinding";
+        let Some(id) = self.program_id(program, F) else {
+            return;
+        };
+        let Some(linked) = self.programs.get_mut(id).and_then(|p| p.linked.as_mut()) else {
+            return self.error(gl::INVALID_OPERATION, F, "program is not linked");
+        };
+        match linked.block_bindings.get_mut(block_index as usize) {
+            Some(b) if binding < crate::context::MAX_UNIFORM_BUFFER_BINDINGS => *b = binding,
+            _ => self.error(gl::INVALID_VALUE, F, "block index or binding out of range"),
+        }
     }
 
     /// The index-th active attribute's name, type and size (`getActiveAttrib`).

@@ -336,27 +336,61 @@ fn narrow_outputs_integer_and_matrix_attributes_sampler_arrays_and_structs() {
 }
 
 #[test]
-fn uniform_blocks_are_reported_until_supported() {
+fn uniform_blocks_read_their_bound_buffer_ranges() {
     let Some(mut ctx) = context(W, H) else { return };
     let p = program(
         &mut ctx,
         PASS_VS,
         "#version 300 es
         precision mediump float;
-        uniform Material { vec4 tint; };
+        uniform Material { vec4 tint; vec4 unused; };
+        uniform vec4 u_add;
         out vec4 color;
-        void main() { color = tint; }",
+        void main() { color = tint + u_add; }",
     );
     ctx.use_program(Some(p));
     float_attribute(&mut ctx, 0, 2, &QUAD);
-    clear_black(&mut ctx);
-    ctx.draw_arrays(gl::TRIANGLES, 0, 6);
-    assert_eq!(ctx.get_error(), gl::INVALID_OPERATION);
-    assert!(all_are(&mut ctx, [0, 0, 0, 255]));
     assert_eq!(
         ctx.get_uniform_location(p, "tint"),
         None,
         "block members have no location"
     );
+    let add = ctx.get_uniform_location(p, "u_add");
+    ctx.uniform4f(add, 0.0, 0.0, 1.0, 0.0);
+    // No buffer at the block's binding point: INVALID_OPERATION, nothing drawn.
+    clear_black(&mut ctx);
+    ctx.draw_arrays(gl::TRIANGLES, 0, 6);
+    assert_eq!(ctx.get_error(), gl::INVALID_OPERATION);
+    assert!(all_are(&mut ctx, [0, 0, 0, 255]));
+    // A range smaller than the block: INVALID_OPERATION.
+    let ubo = ctx.create_buffer();
+    let align = ctx.uniform_buffer_offset_alignment() as usize;
+    let mut data = vec![0.0f32; align / 4 + 8];
+    data[align / 4..align / 4 + 4].copy_from_slice(&[1.0, 0.0, 0.0, 1.0]);
+    ctx.bind_buffer(gl::UNIFORM_BUFFER, Some(ubo));
+    ctx.buffer_data(gl::UNIFORM_BUFFER, &data, gl::DYNAMIC_DRAW);
+    let block = ctx.get_uniform_block_index(p, "Material");
+    assert_eq!(block, 0);
+    ctx.uniform_block_binding(p, block, 3);
+    ctx.bind_buffer_range(gl::UNIFORM_BUFFER, 3, Some(ubo), align as i64, 16);
+    ctx.draw_arrays(gl::TRIANGLES, 0, 6);
+    assert_eq!(ctx.get_error(), gl::INVALID_OPERATION);
+    assert!(all_are(&mut ctx, [0, 0, 0, 255]));
+    // A misaligned range: INVALID_VALUE.
+    ctx.bind_buffer_range(gl::UNIFORM_BUFFER, 3, Some(ubo), 4, 32);
+    assert_eq!(ctx.get_error(), gl::INVALID_VALUE);
+    // The whole block: tint red + u_add blue.
+    ctx.bind_buffer_range(gl::UNIFORM_BUFFER, 3, Some(ubo), align as i64, 32);
+    ctx.draw_arrays(gl::TRIANGLES, 0, 6);
+    assert_eq!(ctx.get_error(), gl::NO_ERROR, "{:?}", ctx.error_message());
+    assert!(all_are(&mut ctx, [255, 0, 255, 255]));
+    // The buffer changes between draws of one batch: each draw sees its contents.
+    ctx.enable(gl::SCISSOR_TEST);
+    ctx.scissor(0, 0, W as i32 / 2, H as i32);
+    ctx.buffer_sub_data(gl::UNIFORM_BUFFER, align as i64, &[0.0f32, 1.0, 0.0, 1.0]);
+    ctx.draw_arrays(gl::TRIANGLES, 0, 6);
+    ctx.disable(gl::SCISSOR_TEST);
+    assert_eq!(pixel(&mut ctx, 2, 2), [0, 255, 255, 255]);
+    assert_eq!(pixel(&mut ctx, W - 2, 2), [255, 0, 255, 255]);
     assert_clean(&ctx);
 }
