@@ -616,6 +616,11 @@ impl Context {
         })
     }
 
+    /// The program in use (`getParameter(CURRENT_PROGRAM)`).
+    pub fn get_current_program(&self) -> Option<Program> {
+        self.current_program.map(|id| Program { ctx: self.id, id })
+    }
+
     /// Makes a linked program current (`useProgram`); `None` for none. A program whose last
     /// link failed → `INVALID_OPERATION`.
     pub fn use_program(&mut self, program: Option<Program>) {

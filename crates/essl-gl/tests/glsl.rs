@@ -394,3 +394,155 @@ fn uniform_blocks_read_their_bound_buffer_ranges() {
     assert_eq!(pixel(&mut ctx, W - 2, 2), [255, 0, 255, 255]);
     assert_clean(&ctx);
 }
+
+/// Draws a full-screen quad whose fragment shader is `fs` (which sees `v_pos` in -1..1).
+fn full_screen(ctx: &mut Context, fs: &str) -> Program {
+    let p = program(
+        ctx,
+        "#version 300 es
+        in vec2 a_position;
+        out vec2 v_pos;
+        void main() { v_pos = a_position; gl_Position = vec4(a_position, 0.0, 1.0); }",
+        fs,
+    );
+    ctx.use_program(Some(p));
+    let pos = ctx_attrib(ctx, p, "a_position");
+    float_attribute(ctx, pos, 2, &QUAD);
+    p
+}
+
+#[test]
+fn cube_maps_select_faces_and_rows_as_gl() {
+    let Some(mut ctx) = context(W, H) else { return };
+    // Left half samples (1, 0.5, 0) (t = 0.25 on +X: row 0), right half (1, -0.5, 0) (row 1),
+    // top rows sample -Z's centre.
+    full_screen(
+        &mut ctx,
+        "#version 300 es
+        precision mediump float;
+        uniform samplerCube u_cube;
+        in vec2 v_pos;
+        out vec4 color;
+        void main() {
+            vec3 d = v_pos.y > 0.5 ? vec3(0.0, 0.0, -1.0) : vec3(1.0, v_pos.x < 0.0 ? 0.5 : -0.5, 0.0);
+            color = texture(u_cube, d);
+        }",
+    );
+    let tex = ctx.create_texture();
+    ctx.bind_texture(gl::TEXTURE_CUBE_MAP, Some(tex));
+    for face in 0..6u32 {
+        let (a, b): ([u8; 4], [u8; 4]) = match face {
+            0 => ([255, 0, 0, 255], [0, 255, 0, 255]),
+            5 => ([0, 0, 255, 255], [0, 0, 255, 255]),
+            _ => ([9, 9, 9, 255], [9, 9, 9, 255]),
+        };
+        let texels: Vec<u8> = [a, a, b, b].concat();
+        ctx.tex_image_2d(
+            gl::TEXTURE_CUBE_MAP_POSITIVE_X + face,
+            0,
+            gl::RGBA as i32,
+            2,
+            2,
+            0,
+            gl::RGBA,
+            gl::UNSIGNED_BYTE,
+            Some(&texels),
+        );
+    }
+    ctx.tex_parameteri(
+        gl::TEXTURE_CUBE_MAP,
+        gl::TEXTURE_MIN_FILTER,
+        gl::NEAREST as i32,
+    );
+    ctx.tex_parameteri(
+        gl::TEXTURE_CUBE_MAP,
+        gl::TEXTURE_MAG_FILTER,
+        gl::NEAREST as i32,
+    );
+    clear_black(&mut ctx);
+    ctx.draw_arrays(gl::TRIANGLES, 0, 6);
+    assert_eq!(ctx.get_error(), gl::NO_ERROR, "{:?}", ctx.error_message());
+    assert_eq!(
+        pixel(&mut ctx, 2, 2),
+        [255, 0, 0, 255],
+        "+X, t = 0.25: row 0"
+    );
+    assert_eq!(
+        pixel(&mut ctx, W - 2, 2),
+        [0, 255, 0, 255],
+        "+X, t = 0.75: row 1"
+    );
+    assert_eq!(pixel(&mut ctx, 2, H - 2), [0, 0, 255, 255], "-Z");
+    assert_clean(&ctx);
+}
+
+#[test]
+fn array_and_3d_textures() {
+    let Some(mut ctx) = context(W, H) else { return };
+    full_screen(
+        &mut ctx,
+        "#version 300 es
+        precision mediump float;
+        precision mediump sampler2DArray;
+        precision mediump sampler3D;
+        uniform sampler2DArray u_layers;
+        uniform sampler3D u_volume;
+        in vec2 v_pos;
+        out vec4 color;
+        void main() {
+            color = v_pos.x < 0.0 ? texture(u_layers, vec3(0.5, 0.5, 1.0)) : texture(u_volume, vec3(0.5, 0.5, 0.75));
+        }",
+    );
+    let p = ctx.get_current_program().expect("in use");
+    let layers = ctx.get_uniform_location(p, "u_layers");
+    let volume = ctx.get_uniform_location(p, "u_volume");
+    ctx.uniform1i(layers, 0);
+    ctx.uniform1i(volume, 1);
+    let a = ctx.create_texture();
+    ctx.bind_texture(gl::TEXTURE_2D_ARRAY, Some(a));
+    ctx.tex_storage_3d(gl::TEXTURE_2D_ARRAY, 1, gl::RGBA8, 1, 1, 2);
+    ctx.tex_sub_image_3d(
+        gl::TEXTURE_2D_ARRAY,
+        0,
+        0,
+        0,
+        1,
+        1,
+        1,
+        1,
+        gl::RGBA,
+        gl::UNSIGNED_BYTE,
+        &[255, 0, 0, 255],
+    );
+    let v = ctx.create_texture();
+    ctx.active_texture(gl::TEXTURE1);
+    ctx.bind_texture(gl::TEXTURE_3D, Some(v));
+    ctx.tex_image_3d(
+        gl::TEXTURE_3D,
+        0,
+        gl::RGBA as i32,
+        1,
+        1,
+        2,
+        0,
+        gl::RGBA,
+        gl::UNSIGNED_BYTE,
+        Some(&[0, 0, 255, 255, 0, 255, 0, 255]),
+    );
+    ctx.tex_parameteri(gl::TEXTURE_3D, gl::TEXTURE_MIN_FILTER, gl::NEAREST as i32);
+    ctx.tex_parameteri(gl::TEXTURE_3D, gl::TEXTURE_MAG_FILTER, gl::NEAREST as i32);
+    clear_black(&mut ctx);
+    ctx.draw_arrays(gl::TRIANGLES, 0, 6);
+    assert_eq!(ctx.get_error(), gl::NO_ERROR, "{:?}", ctx.error_message());
+    assert_eq!(
+        pixel(&mut ctx, 2, 2),
+        [255, 0, 0, 255],
+        "layer 1 of the array"
+    );
+    assert_eq!(
+        pixel(&mut ctx, W - 2, 2),
+        [0, 255, 0, 255],
+        "slice 1 of the volume"
+    );
+    assert_clean(&ctx);
+}
