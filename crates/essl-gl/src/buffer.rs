@@ -74,8 +74,9 @@ pub(crate) struct BufferObject {
     /// The bytes that changed since the GPU copy was last written.
     pub(crate) dirty: Option<Range<usize>>,
     pub(crate) derived: Vec<Derived>,
-    /// The last index range scanned, and its largest index.
-    pub(crate) max_index_cache: Option<(IndexRange, Option<u32>)>,
+    /// The last index range scanned, its largest index (restart excluded), and whether it
+    /// holds the restart index.
+    pub(crate) max_index_cache: Option<(IndexRange, Option<u32>, bool)>,
 }
 
 impl BufferObject {

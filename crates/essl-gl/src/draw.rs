@@ -26,6 +26,10 @@ enum Emulated {
     LineLoop,
     /// `TRIANGLE_FAN` as a triangle list.
     TriangleFan,
+    /// A list (of primitives of this many vertices) whose indices hold the restart index:
+    /// Vulkan restarts only strips, so the restarts are applied to the indices, dropping
+    /// incomplete primitives as GL does.
+    List(usize),
 }
 
 /// How a vertex format feeds an attribute.
@@ -182,6 +186,10 @@ fn emulate(indices: impl Iterator<Item = u32>, how: Emulated) -> Vec<u32> {
                 }
                 out.extend_from_slice(segment);
                 out.push(segment[0]);
+            }
+            Emulated::List(n) => {
+                let keep = segment.len() / n * n;
+                out.extend_from_slice(&segment[..keep]);
             }
             Emulated::TriangleFan if segment.len() >= 3 => {
                 for i in 1..segment.len() - 1 {
@@ -473,7 +481,7 @@ impl Context {
     ) {
         use wgpu::PrimitiveTopology as T;
         // WebGL's checks, in the order browsers make them.
-        let (topology, emulated) = match mode {
+        let (topology, mut emulated) = match mode {
             gl::POINTS => (T::PointList, Emulated::None),
             gl::LINES => (T::LineList, Emulated::None),
             gl::LINE_STRIP => (T::LineStrip, Emulated::None),
@@ -682,16 +690,30 @@ impl Context {
                     );
                 }
                 let key = (*ty, *offset, count as u64, b.version);
-                match b.max_index_cache {
-                    Some((k, m)) if k == key => m.map(u64::from),
+                let (max, restarts) = match b.max_index_cache {
+                    Some((k, m, r)) if k == key => (m, r),
                     _ => {
-                        let m = read_indices(&b.data, *ty, *offset, count as u64)
-                            .filter(|&i| i != u32::MAX)
-                            .max();
-                        b.max_index_cache = Some((key, m));
-                        m.map(u64::from)
+                        let (mut max, mut restarts) = (None, false);
+                        for i in read_indices(&b.data, *ty, *offset, count as u64) {
+                            if i == u32::MAX {
+                                restarts = true;
+                            } else {
+                                max = max.max(Some(i));
+                            }
+                        }
+                        b.max_index_cache = Some((key, max, restarts));
+                        (max, restarts)
+                    }
+                };
+                if restarts && emulated == Emulated::None {
+                    match mode {
+                        gl::POINTS => emulated = Emulated::List(1),
+                        gl::LINES => emulated = Emulated::List(2),
+                        gl::TRIANGLES => emulated = Emulated::List(3),
+                        _ => {}
                     }
                 }
+                max.map(u64::from)
             }
         };
         for (input, source) in &sources {

@@ -33,8 +33,9 @@ pub(crate) struct ShaderInput {
 pub(crate) struct ShaderObject {
     pub(crate) ty: u32,
     pub(crate) source: String,
-    /// The front end's result of the last `compile_shader`.
-    pub(crate) compiled: Option<Box<essl::Shader>>,
+    /// The source of the last `compile_shader` and whether it compiled. `link_program`
+    /// compiles it again (the front end's `Shader` is not `Send`; a `Context` is).
+    pub(crate) compiled: Option<(String, bool)>,
     pub(crate) info_log: String,
 }
 
@@ -133,6 +134,12 @@ fn output0(module: &naga::Module) -> Option<(ValueKind, u8)> {
         }
     }
     None
+}
+
+/// Runs the essl front end on a shader's text.
+fn compile(stage: essl::Stage, source: &str) -> essl::Shader {
+    let file = essl::source::SourceFile::new(stage.as_str(), source);
+    essl::compile(file, stage, &essl::CompileOptions::default())
 }
 
 /// WebGL's shader info log: `ERROR: 0:LINE: 'token' : message`, one line per diagnostic, in
@@ -296,10 +303,9 @@ impl Context {
         } else {
             essl::Stage::Fragment
         };
-        let file = essl::source::SourceFile::new(stage.as_str(), s.source.clone());
-        let compiled = essl::compile(file, stage, &essl::CompileOptions::default());
+        let compiled = compile(stage, &s.source);
         s.info_log = info_log(&compiled);
-        s.compiled = Some(Box::new(compiled));
+        s.compiled = Some((s.source.clone(), compiled.ok()));
     }
 
     /// Whether the last compile succeeded (`getShaderParameter(COMPILE_STATUS)`).
@@ -307,7 +313,7 @@ impl Context {
         self.shader_id(shader, "getShaderParameter")
             .and_then(|id| self.shaders.get(id))
             .and_then(|s| s.compiled.as_ref())
-            .is_some_and(|c| c.ok())
+            .is_some_and(|c| c.1)
     }
 
     /// The log of the last compile, in WebGL's `ERROR: 0:LINE: 'token' : message` form
@@ -473,7 +479,9 @@ impl Context {
                 Err("a vertex and a fragment shader must be attached".to_owned())
             }
             (Some(vs), Some(fs)) => match (&vs.compiled, &fs.compiled) {
-                (Some(v), Some(f)) if v.ok() && f.ok() => {
+                (Some((v, true)), Some((f, true))) => {
+                    let v = &compile(essl::Stage::Vertex, v);
+                    let f = &compile(essl::Stage::Fragment, f);
                     let linked = essl::link::link_with_bindings(v, f, &obj.attrib_bindings);
                     if linked.ok {
                         essl::lower::lower_program(

@@ -777,3 +777,31 @@ fn the_viewport_counts_from_the_bottom_left() {
     assert_eq!(ctx.get_error(), gl::NO_ERROR);
     assert_clean(&ctx);
 }
+
+#[test]
+fn the_restart_index_splits_lists_too() {
+    let Some(mut ctx) = context(W, H) else { return };
+    let program = ctx.program_from_layout(solid(1.0, 1.0, 1.0));
+    ctx.use_program(Some(program));
+    float_attribute(&mut ctx, 0, 2, &QUAD);
+    let ib = ctx.create_buffer();
+    ctx.bind_buffer(gl::ELEMENT_ARRAY_BUFFER, Some(ib));
+    // Triangle 0, then an incomplete one cut by the restart index, then triangle 1.
+    ctx.buffer_data(
+        gl::ELEMENT_ARRAY_BUFFER,
+        &[0u16, 1, 2, 3, 0xFFFF, 3, 4, 5],
+        gl::STATIC_DRAW,
+    );
+    clear_black(&mut ctx);
+    ctx.draw_elements(gl::TRIANGLES, 8, gl::UNSIGNED_SHORT, 0);
+    assert_eq!(ctx.get_error(), gl::NO_ERROR, "{:?}", ctx.error_message());
+    assert!(all_are(&mut ctx, [255; 4]));
+    assert_clean(&ctx);
+}
+
+/// A context can move to another thread.
+#[test]
+fn contexts_are_send() {
+    fn send<T: Send>() {}
+    send::<essl_gl::Context>();
+}
