@@ -546,3 +546,23 @@ fn array_and_3d_textures() {
     );
     assert_clean(&ctx);
 }
+
+#[test]
+fn a_shadow_sampler_without_a_depth_texture_draws() {
+    let Some(mut ctx) = context(W, H) else { return };
+    full_screen(
+        &mut ctx,
+        "#version 300 es
+        precision mediump float;
+        precision mediump sampler2DShadow;
+        uniform sampler2DShadow u_shadow;
+        out vec4 color;
+        void main() { color = vec4(texture(u_shadow, vec3(0.5, 0.5, 0.5)), 0.0, 0.0, 1.0); }",
+    );
+    clear_black(&mut ctx);
+    ctx.draw_arrays(gl::TRIANGLES, 0, 6);
+    assert_eq!(ctx.get_error(), gl::NO_ERROR, "{:?}", ctx.error_message());
+    let p = pixel(&mut ctx, 2, 2);
+    assert_eq!(p[3], 255);
+    assert_clean(&ctx);
+}
