@@ -1,7 +1,8 @@
 //! Times a 256×256 frame with readback: `cargo run --release -p essl-gl --example frame_time`.
 //!
-//! Builds its program from hand-written WGSL (until the front end lowers GLSL), draws a quad
-//! and `N` small triangles that each set a uniform, and reads the frame back.
+//! Draws `N` small triangles that each set a uniform (a program made from hand-written WGSL
+//! in the front end's conventions) and reads the frame back. With `SAME_UNIFORMS=1` the
+//! uniform is left alone, which shows what a changed uniform costs per draw.
 
 use essl::program::{ActiveAttribute, ActiveUniform, ProgramLayout, UniformBlock, UniformStorage};
 use essl::types::GlType;

@@ -17,6 +17,33 @@
 //! GL's conventions are kept: `read_pixels` returns the bottom row first, texture data row 0
 //! is `t = 0`, front faces are counter-clockwise in normalized device coordinates, and a vertex
 //! input wider than its array gets GL's (0, 0, 0, 1) defaults.
+//!
+//! # How WebGL maps onto wgpu
+//!
+//! - **Vertex formats.** wgpu accepts a format *narrower* than the shader input of the same
+//!   scalar kind, and Vulkan fills the missing components with 0, 0, 1 — GL's defaults — so a
+//!   `vec4` fed 3 floats gets `w = 1` with no work. wgpu rejects a wider format, another
+//!   scalar kind (GL turns unnormalized integers into floats), and has no 3-component
+//!   8/16-bit or normalized 32-bit formats: for those the vertex entry point is wrapped (the
+//!   lowered `main` becomes a function; a new `main` takes the inputs as fed, converts and
+//!   widens them). Pipelines are cached per variant, so the cost is one module per layout.
+//! - **Strides and offsets.** GL's stride 0 means "tightly packed"; wgpu's means "every vertex
+//!   reads the same element" (essl-gl uses that for disabled arrays' generic values). wgpu
+//!   wants strides that are multiples of 4 and aligned attribute offsets; other layouts
+//!   (3 unsigned bytes at stride 3) are re-packed on the CPU once per buffer version, as are
+//!   instanced arrays with a divisor above 1.
+//! - **Topologies and indices.** `LINE_LOOP` and `TRIANGLE_FAN` become strips and lists with
+//!   generated indices; 8-bit indices are widened to 16 bits; WebGL2's always-on primitive
+//!   restart is native for strips and applied on the CPU for lists.
+//! - **Batching.** Draws are recorded into one render pass and submitted when results are
+//!   needed (`read_pixels`, `flush`, `finish`). Per-draw data (uniforms, generic attributes,
+//!   generated indices) goes to an arena written just before the submit; a buffer or texture
+//!   that the open batch already uses is replaced rather than written in place, so every draw
+//!   sees the data of its moment, in GL's order.
+//! - **Textures.** Levels live on the CPU in the GPU format and are uploaded when a draw
+//!   samples a complete texture (GL ES 3.0 completeness; an incomplete one reads (0, 0, 0, 1)
+//!   from a placeholder). Non-mipmapped filters sample the base level with a maximum LOD of
+//!   0.25, Vulkan's way to keep the minification/magnification choice.
 
 #![warn(missing_docs)]
 
