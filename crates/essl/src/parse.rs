@@ -18,7 +18,7 @@ use crate::Stage;
 
 /// How deeply expressions and statements may nest before the parser gives up on them (this
 /// bounds the recursion of every later pass too).
-pub const MAX_NESTING: u32 = 200;
+pub const MAX_NESTING: u32 = 256;
 
 /// Parses a shader's tokens (ending with `Eof`) into a syntax tree, collecting diagnostics.
 pub fn parse(file: &SourceFile, tokens: Vec<Token>, stage: Stage) -> (TranslationUnit, Vec<Diagnostic>) {
@@ -252,7 +252,7 @@ impl<'a> Parser<'a> {
     // ----- errors -----
 
     fn report(&mut self, d: Diagnostic) {
-        if !self.suppress {
+        if !self.suppress && !self.too_deep_reported {
             self.diags.push(d);
         }
         self.suppress = true;
@@ -295,7 +295,7 @@ impl<'a> Parser<'a> {
                 .with_secondary(next.span, format!("the next {} starts here", if matches!(next.tok, Tok::Eof) { "part" } else { "statement" }))
                 .with_fix(Fix::certain("add `;` at the end of the line", at, ";"))
                 .with_token(&*next.text);
-            if !self.suppress {
+            if !self.suppress && !self.too_deep_reported {
                 self.diags.push(d);
             }
             return Ok(());
@@ -1096,21 +1096,31 @@ impl<'a> Parser<'a> {
 
     fn binary(&mut self, min_prec: u8) -> PResult<Expr> {
         let mut lhs = self.unary()?;
-        loop {
-            let Tok::P(p) = self.tok() else { break };
-            let Some((op, prec)) = binary_op(*p) else { break };
+        // Each operator of a left-associative chain deepens the tree by one level, which
+        // counts as nesting (later passes recurse over the tree).
+        let mut chain = 0;
+        let result = loop {
+            let Tok::P(p) = self.tok() else { break Ok(()) };
+            let Some((op, prec)) = binary_op(*p) else { break Ok(()) };
             if prec <= min_prec {
-                break;
+                break Ok(());
             }
             self.bump();
-            self.enter()?;
-            let rhs = self.binary(prec);
-            self.leave();
-            let rhs = rhs?;
+            if let Err(f) = self.enter() {
+                break Err(f);
+            }
+            chain += 1;
+            let rhs = match self.binary(prec) {
+                Ok(r) => r,
+                Err(f) => break Err(f),
+            };
             let span = lhs.span.to(rhs.span);
             lhs = Expr { kind: ExprKind::Binary(op, Box::new(lhs), Box::new(rhs)), span };
+        };
+        for _ in 0..chain {
+            self.leave();
         }
-        Ok(lhs)
+        result.map(|_| lhs)
     }
 
     fn unary(&mut self) -> PResult<Expr> {
@@ -1137,8 +1147,22 @@ impl<'a> Parser<'a> {
         self.postfix(p)
     }
 
-    fn postfix(&mut self, mut e: Expr) -> PResult<Expr> {
+    fn postfix(&mut self, e: Expr) -> PResult<Expr> {
+        // Each postfix operator deepens the tree by one level, which counts as nesting.
+        let mut applied = 0;
+        let r = self.postfix_ops(e, &mut applied);
+        for _ in 0..applied {
+            self.leave();
+        }
+        r
+    }
+
+    fn postfix_ops(&mut self, mut e: Expr, applied: &mut u32) -> PResult<Expr> {
         loop {
+            if matches!(self.tok(), Tok::P(Punct::LeftBracket | Punct::Dot | Punct::PlusPlus | Punct::MinusMinus)) {
+                self.enter()?;
+                *applied += 1;
+            }
             match self.tok() {
                 Tok::P(Punct::LeftBracket) => {
                     let open = self.bump().span;

@@ -73,21 +73,32 @@ struct Walker {
 fn analyze(f: &Function, m: &Module) -> Uses {
     let mut w = Walker { live: Uses::default(), stores: Vec::new() };
     w.block(&f.body, m);
-    // Locals read in live code make the stores to them live, which may read more locals.
-    let mut done = vec![false; w.stores.len()];
-    loop {
-        let mut progress = false;
-        for (i, s) in w.stores.iter().enumerate() {
-            if !done[i] && w.live.locals.contains(&s.target) {
-                done[i] = true;
-                w.live.merge(&s.uses);
-                progress = true;
-            }
+    // Locals read in live code make the stores to them live, which may read more locals: a
+    // worklist over locals, each store visited once.
+    let mut stores_of: std::collections::HashMap<LocalId, Vec<usize>> = std::collections::HashMap::new();
+    for (i, st) in w.stores.iter().enumerate() {
+        stores_of.entry(st.target).or_default().push(i);
+    }
+    let mut pending: Vec<LocalId> = w.live.locals.iter().copied().collect();
+    let mut done = std::collections::HashSet::new();
+    while let Some(l) = pending.pop() {
+        if !done.insert(l) {
+            continue;
         }
-        if !progress {
-            break;
+        for &i in stores_of.get(&l).map(|v| v.as_slice()).unwrap_or(&[]) {
+            let uses = &w.stores[i].uses;
+            for &nl in &uses.locals {
+                if !done.contains(&nl) {
+                    pending.push(nl);
+                }
+            }
+            w.live.globals.extend(&uses.globals);
+            w.live.blocks.extend(&uses.blocks);
+            w.live.builtins.extend(&uses.builtins);
+            w.live.calls.extend(&uses.calls);
         }
     }
+    w.live.locals.extend(done);
     w.live
 }
 
