@@ -1,6 +1,6 @@
 //! The syntax tree of a GLSL ES 3.00 shader, as written (before name resolution and types).
 
-use std::rc::Rc;
+use std::sync::Arc;
 
 use crate::source::Span;
 use crate::types::{Precision, SamplerType, ScalarKind};
@@ -9,7 +9,7 @@ use crate::types::{Precision, SamplerType, ScalarKind};
 #[derive(Clone, Debug, PartialEq)]
 pub struct Ident {
     /// The name.
-    pub name: Rc<str>,
+    pub name: Arc<str>,
     /// Where it is written.
     pub span: Span,
 }
@@ -208,7 +208,7 @@ pub enum TypeName {
     /// A sampler type.
     Sampler(SamplerType),
     /// A struct defined right here (`struct S { … }`).
-    Struct(Rc<StructDecl>),
+    Struct(Arc<StructDecl>),
     /// A struct's name.
     Named(Ident),
 }

@@ -3,7 +3,7 @@
 //! This is what the checker produces and what lowering (to naga IR), reflection and linking
 //! read. Spans still point into the original text.
 
-use std::rc::Rc;
+use std::sync::Arc;
 
 use crate::ast::{BinaryOp, Interpolation};
 use crate::builtins::{BuiltinFn, BuiltinVar};
@@ -61,7 +61,7 @@ pub enum GlobalKind {
 #[derive(Clone, Debug)]
 pub struct Global {
     /// Its name.
-    pub name: Rc<str>,
+    pub name: Arc<str>,
     /// Its type.
     pub ty: Type,
     /// Where it lives.
@@ -97,13 +97,13 @@ pub enum Init {
 #[derive(Clone, Debug)]
 pub struct UniformBlock {
     /// The block's name.
-    pub name: Rc<str>,
+    pub name: Arc<str>,
     /// The instance name (`None`: members are visible at global scope).
-    pub instance: Option<Rc<str>>,
+    pub instance: Option<Arc<str>>,
     /// Instance array size.
     pub array: Option<u32>,
     /// Members: (name, type, precision, row_major).
-    pub members: Vec<(Rc<str>, Type, Option<Precision>, bool)>,
+    pub members: Vec<(Arc<str>, Type, Option<Precision>, bool)>,
     /// `std140` (the default in WebGL), `shared` or `packed`.
     pub layout: BlockLayout,
     /// Where it is declared.
@@ -138,7 +138,7 @@ pub enum ParamMode {
 #[derive(Clone, Debug)]
 pub struct Param {
     /// Its name (parameters without a name get an internal one).
-    pub name: Rc<str>,
+    pub name: Arc<str>,
     /// Its type.
     pub ty: Type,
     /// How it passes.
@@ -155,7 +155,7 @@ pub struct Param {
 #[derive(Clone, Debug)]
 pub struct Local {
     /// Its name.
-    pub name: Rc<str>,
+    pub name: Arc<str>,
     /// Its type.
     pub ty: Type,
     /// `const` locals have a folded value and are never assigned.
@@ -170,7 +170,7 @@ pub struct Local {
 #[derive(Clone, Debug)]
 pub struct Function {
     /// Its name.
-    pub name: Rc<str>,
+    pub name: Arc<str>,
     /// The mangled name (name + parameter types) that distinguishes overloads.
     pub signature: String,
     /// Its parameters.

@@ -7,7 +7,7 @@
 //! one (harmless, but fixable). Other characters outside GLSL's character set become
 //! [`PpKind::Invalid`] tokens for the preprocessor to report where they are not skipped.
 
-use std::rc::Rc;
+use std::sync::Arc;
 
 use crate::diagnostic::{Applicability, Diagnostic, Edit, Fix};
 use crate::source::{SourceFile, Span};
@@ -149,7 +149,7 @@ pub struct PpToken {
     /// was invoked).
     pub span: Span,
     /// Its text (line continuations inside it removed).
-    pub text: Rc<str>,
+    pub text: Arc<str>,
     /// Whitespace or a comment precedes it on its line.
     pub space_before: bool,
     /// It comes from a macro expansion.
@@ -252,7 +252,7 @@ pub fn lex(file: &SourceFile) -> Lexed {
                 out.tokens.push(PpToken {
                     kind: PpKind::Newline,
                     span: Span::new(start as u32, cur.pos as u32),
-                    text: Rc::from("\n"),
+                    text: Arc::from("\n"),
                     space_before,
                     from_macro: false,
                 });
@@ -356,7 +356,7 @@ pub fn lex(file: &SourceFile) -> Lexed {
         out.tokens.push(PpToken {
             kind: PpKind::Newline,
             span: Span::empty(end),
-            text: Rc::from("\n"),
+            text: Arc::from("\n"),
             space_before,
             from_macro: false,
         });
@@ -364,7 +364,7 @@ pub fn lex(file: &SourceFile) -> Lexed {
     out.tokens.push(PpToken {
         kind: PpKind::Eof,
         span: Span::empty(end),
-        text: Rc::from(""),
+        text: Arc::from(""),
         space_before: false,
         from_macro: false,
     });
@@ -376,7 +376,7 @@ fn push(out: &mut Lexed, kind: PpKind, start: usize, end: usize, text: String, s
     out.tokens.push(PpToken {
         kind,
         span: Span::new(start as u32, end as u32),
-        text: Rc::from(text),
+        text: Arc::from(text),
         space_before: *space,
         from_macro: false,
     });

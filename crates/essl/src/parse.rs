@@ -6,7 +6,7 @@
 //! `}`), and errors inside the skipped part are not reported (no cascades).
 
 use std::collections::HashSet;
-use std::rc::Rc;
+use std::sync::Arc;
 
 use crate::ast::*;
 use crate::diagnostic::{Diagnostic, Fix};
@@ -35,7 +35,7 @@ pub fn parse(file: &SourceFile, tokens: Vec<Token>, stage: Stage) -> (Translatio
     };
     if p.toks.last().is_none_or(|t| t.tok != Tok::Eof) {
         let end = file.text().len() as u32;
-        p.toks.push(Token { tok: Tok::Eof, span: Span::empty(end), text: Rc::from(""), from_macro: false });
+        p.toks.push(Token { tok: Tok::Eof, span: Span::empty(end), text: Arc::from(""), from_macro: false });
     }
     let unit = p.translation_unit();
     (unit, p.diags)
@@ -54,7 +54,7 @@ struct Parser<'a> {
     /// After an error, until the next synchronisation point: don't report more.
     suppress: bool,
     /// Struct names visible in each open scope.
-    type_names: Vec<HashSet<Rc<str>>>,
+    type_names: Vec<HashSet<Arc<str>>>,
     depth: u32,
     too_deep_reported: bool,
     stage: Stage,
@@ -632,7 +632,7 @@ impl<'a> Parser<'a> {
     fn type_spec(&mut self) -> PResult<TypeSpec> {
         let t = self.peek().clone();
         let name = match &t.tok {
-            Tok::Kw(Kw::Struct) => TypeName::Struct(Rc::new(self.struct_decl()?)),
+            Tok::Kw(Kw::Struct) => TypeName::Struct(Arc::new(self.struct_decl()?)),
             Tok::Kw(k) => match type_keyword(*k) {
                 Some(n) => {
                     self.bump();

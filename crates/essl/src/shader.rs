@@ -77,3 +77,14 @@ pub(crate) fn lowering_diagnostic(e: &crate::lower::LowerError) -> Diagnostic {
     };
     Diagnostic::error(code, e.to_string(), e.span()).with_label("essl stops here").with_help(help)
 }
+
+#[cfg(test)]
+mod tests {
+    /// Compiled shaders cross threads (the CLI checks files in parallel; a GL context keeps
+    /// them).
+    #[test]
+    fn shader_is_send_and_sync() {
+        fn assert_send_sync<T: Send + Sync>() {}
+        assert_send_sync::<super::Shader>();
+    }
+}

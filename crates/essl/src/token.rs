@@ -1,7 +1,7 @@
 //! Parser tokens: preprocessing tokens classified into keywords, reserved words, identifiers and
 //! literals (with GLSL ES 3.00's rules for number syntax).
 
-use std::rc::Rc;
+use std::sync::Arc;
 
 use crate::diagnostic::{Diagnostic, Fix};
 use crate::lex::{PpKind, PpToken, Punct};
@@ -75,11 +75,11 @@ pub const RESERVED: &[&str] = &[
 #[derive(Clone, Debug, PartialEq)]
 pub enum Tok {
     /// An identifier.
-    Ident(Rc<str>),
+    Ident(Arc<str>),
     /// A keyword.
     Kw(Kw),
     /// A reserved word (an error to use; parsed as an identifier to recover).
-    Reserved(Rc<str>),
+    Reserved(Arc<str>),
     /// An integer literal: its value (possibly past 32 bits: checked later) and `u` suffix.
     Int(u64, bool),
     /// A floating-point literal, rounded to f32.
@@ -100,7 +100,7 @@ pub struct Token {
     /// Where (into the original text).
     pub span: Span,
     /// Its text.
-    pub text: Rc<str>,
+    pub text: Arc<str>,
     /// It comes from a macro expansion.
     pub from_macro: bool,
 }

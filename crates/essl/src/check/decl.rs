@@ -1,6 +1,6 @@
 //! Declarations: variables, qualifiers, precision statements, uniform blocks and functions.
 
-use std::rc::Rc;
+use std::sync::Arc;
 
 use super::{Checker, FnCtx, PrecKey, Sym, Var};
 use crate::ast::{self, Interpolation, Qualifier, Storage};
@@ -645,7 +645,7 @@ impl Checker<'_> {
                     continue;
                 }
                 let precision = self.precision_for(&ty, fty.precision().map(|p| p.0), n.span);
-                if hmembers.iter().any(|(mn, ..): &(Rc<str>, Type, Option<Precision>, bool)| **mn == *n.name) {
+                if hmembers.iter().any(|(mn, ..): &(Arc<str>, Type, Option<Precision>, bool)| **mn == *n.name) {
                     let d = self.error("redefinition", n.span, format!("block member `{}` is declared twice", n.name));
                     d.label = "a second member with this name".into();
                     continue;
@@ -942,7 +942,7 @@ impl Checker<'_> {
     fn check_body_detached(&mut self, f: &ast::FunctionDef) {
         let id = self.functions.len();
         self.functions.push(hir::Function {
-            name: Rc::from("_essl_invalid"),
+            name: Arc::from("_essl_invalid"),
             signature: String::new(),
             params: Vec::new(),
             ret: Type::Void,

@@ -11,7 +11,7 @@ pub mod fold;
 mod stmt;
 
 use std::collections::HashMap;
-use std::rc::Rc;
+use std::sync::Arc;
 
 use crate::ast;
 use crate::builtins::BuiltinVar;
@@ -76,7 +76,7 @@ enum PrecKey {
 
 #[derive(Default)]
 struct Scope {
-    names: HashMap<Rc<str>, Sym>,
+    names: HashMap<Arc<str>, Sym>,
     precisions: Vec<(PrecKey, Precision)>,
 }
 
@@ -599,8 +599,8 @@ impl<'a> Checker<'a> {
         f.locals.len() - 1
     }
 
-    fn unnamed_param(&mut self) -> Rc<str> {
+    fn unnamed_param(&mut self) -> Arc<str> {
         self.unnamed_param_counter += 1;
-        Rc::from(format!("_essl_unnamed{}", self.unnamed_param_counter))
+        Arc::from(format!("_essl_unnamed{}", self.unnamed_param_counter))
     }
 }

@@ -1,7 +1,7 @@
 //! Directives: one line from `#` to the end of the line, read whole, then handled.
 
 use std::cell::Cell;
-use std::rc::Rc;
+use std::sync::Arc;
 
 use crate::diagnostic::{Applicability, Diagnostic, Edit, Fix, Severity};
 use crate::lex::{PpKind, PpToken, Punct};
@@ -121,8 +121,8 @@ impl Pp<'_> {
             self.past_first = true;
             return;
         }
-        let name: Rc<str> =
-            if d.line[0].kind == PpKind::Ident { d.line[0].text.clone() } else { Rc::from("") };
+        let name: Arc<str> =
+            if d.line[0].kind == PpKind::Ident { d.line[0].text.clone() } else { Arc::from("") };
         let skipping = self.skipping();
         match &*name {
             "if" => self.d_if(&d, "#if"),
@@ -178,7 +178,7 @@ impl Pp<'_> {
         list.push(Tok::raw(PpToken {
             kind: PpKind::Eof,
             span: d.end(),
-            text: Rc::from(""),
+            text: Arc::from(""),
             space_before: false,
             from_macro: false,
         }));
@@ -445,10 +445,10 @@ impl Pp<'_> {
 
     /// The parameter list of a function-like macro (`args[1]` is its `(`): the names and the
     /// index in `args` after the `)`.
-    fn parse_params(&mut self, d: &Directive, name: &PpToken) -> Option<(Vec<Rc<str>>, usize)> {
+    fn parse_params(&mut self, d: &Directive, name: &PpToken) -> Option<(Vec<Arc<str>>, usize)> {
         let args = d.args();
         let open = args[1].span;
-        let mut params: Vec<Rc<str>> = Vec::new();
+        let mut params: Vec<Arc<str>> = Vec::new();
         let mut i = 2;
         let unterminated = |pp: &mut Self| {
             pp.diags.push(
@@ -569,7 +569,7 @@ impl Pp<'_> {
             if t.kind == PpKind::Ident {
                 if let Some(index) = params
                     .as_ref()
-                    .and_then(|p: &Vec<Rc<str>>| p.iter().position(|p| **p == *t.text))
+                    .and_then(|p: &Vec<Arc<str>>| p.iter().position(|p| **p == *t.text))
                 {
                     body.push(Body::Param { index, space_before });
                     continue;
@@ -615,7 +615,7 @@ impl Pp<'_> {
 
     fn insert_macro(&mut self, m: Macro) {
         let Some(old) = self.macros.get(&m.name) else {
-            self.macros.insert(m.name.clone(), Rc::new(m));
+            self.macros.insert(m.name.clone(), Arc::new(m));
             return;
         };
         if old.origin == Origin::Options {
@@ -631,7 +631,7 @@ impl Pp<'_> {
                     .with_token(&*m.name),
                 );
             }
-            self.macros.insert(m.name.clone(), Rc::new(m));
+            self.macros.insert(m.name.clone(), Arc::new(m));
             return;
         }
         if old.same_as(&m) {
@@ -723,7 +723,7 @@ impl Pp<'_> {
         let eol = PpToken {
             kind: PpKind::Newline,
             span: Span::empty(0),
-            text: Rc::from("\n"),
+            text: Arc::from("\n"),
             space_before: false,
             from_macro: false,
         };

@@ -9,7 +9,7 @@
 //! too, so that no input expands without end.
 
 use std::cell::Cell;
-use std::rc::Rc;
+use std::sync::Arc;
 
 use crate::diagnostic::Diagnostic;
 use crate::lex::{PpKind, PpToken, Punct};
@@ -80,9 +80,9 @@ pub(super) enum Origin {
 #[derive(Debug)]
 pub(super) struct Macro {
     /// Its name.
-    pub name: Rc<str>,
+    pub name: Arc<str>,
     /// Parameter names of a function-like macro; `None` for an object-like one.
-    pub params: Option<Vec<Rc<str>>>,
+    pub params: Option<Vec<Arc<str>>>,
     /// The replacement list.
     pub body: Vec<Body>,
     /// The name in its `#define` (empty at 0 for predefined macros and options).
@@ -101,7 +101,7 @@ impl Macro {
     /// An object-like macro predefined with the given value.
     pub fn predefined(name: &str, value: &str, dynamic: Option<Dynamic>) -> Macro {
         Macro {
-            name: Rc::from(name),
+            name: Arc::from(name),
             params: None,
             body: vec![Body::Tok(number_token(value, Span::empty(0), false))],
             span: Span::empty(0),
@@ -132,12 +132,12 @@ impl Macro {
 
 /// A number token made up by the preprocessor.
 pub(super) fn number_token(text: &str, span: Span, from_macro: bool) -> PpToken {
-    PpToken { kind: PpKind::Number, span, text: Rc::from(text), space_before: true, from_macro }
+    PpToken { kind: PpKind::Number, span, text: Arc::from(text), space_before: true, from_macro }
 }
 
 /// One macro expansion in progress. Dropping it re-enables the macro.
 struct Ctx {
-    mac: Rc<Macro>,
+    mac: Arc<Macro>,
     /// The remaining tokens, in reverse order.
     toks: Vec<Tok>,
 }
@@ -285,7 +285,7 @@ impl Pp<'_> {
                 if let Some(d) = m.dynamic {
                     let (source, line) = self.presumed(name.loc);
                     let v = if d == Dynamic::Line { line } else { source };
-                    t.text = Rc::from(v.to_string());
+                    t.text = Arc::from(v.to_string());
                 }
                 out.push(Tok { t, loc: name.loc, orig: pt.span, no_expand: false });
             }
@@ -387,7 +387,7 @@ impl Pp<'_> {
         list.push(Tok::raw(PpToken {
             kind: PpKind::Eof,
             span: end,
-            text: Rc::from(""),
+            text: Arc::from(""),
             space_before: false,
             from_macro: false,
         }));

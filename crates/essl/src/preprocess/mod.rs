@@ -41,7 +41,7 @@ mod expand;
 mod expr;
 
 use std::collections::HashMap;
-use std::rc::Rc;
+use std::sync::Arc;
 
 use crate::diagnostic::{self, Diagnostic, Fix};
 use crate::lex::{Lexed, PpKind, PpToken, Punct};
@@ -202,7 +202,7 @@ pub fn preprocess(file: &SourceFile, lexed: Lexed, options: &PreprocessOptions) 
         tokens.push(PpToken {
             kind: PpKind::Eof,
             span: Span::empty(end),
-            text: Rc::from(""),
+            text: Arc::from(""),
             space_before: false,
             from_macro: false,
         });
@@ -246,7 +246,7 @@ pub(super) struct Pp<'a> {
     /// (where a no-break space is harmless, as in a comment).
     line_begin: u32,
     skipped_lines: Vec<Span>,
-    macros: HashMap<Rc<str>, Rc<Macro>>,
+    macros: HashMap<Arc<str>, Arc<Macro>>,
     conds: Vec<Cond>,
     diags: Vec<Diagnostic>,
     out: Vec<PpToken>,
@@ -309,11 +309,11 @@ impl<'a> Pp<'a> {
             ("GL_FRAGMENT_PRECISION_HIGH", "1", None),
         ];
         for (name, value, dynamic) in predefined {
-            self.macros.insert(Rc::from(name), Rc::new(Macro::predefined(name, value, dynamic)));
+            self.macros.insert(Arc::from(name), Arc::new(Macro::predefined(name, value, dynamic)));
         }
         for ext in &self.options.extensions {
-            let name: Rc<str> = Rc::from(ext.as_str());
-            self.macros.entry(name).or_insert_with(|| Rc::new(Macro::predefined(ext, "1", None)));
+            let name: Arc<str> = Arc::from(ext.as_str());
+            self.macros.entry(name).or_insert_with(|| Arc::new(Macro::predefined(ext, "1", None)));
         }
         for (name, value) in &self.options.defines {
             self.define_from_options(name, value);
@@ -323,8 +323,8 @@ impl<'a> Pp<'a> {
     /// Sets `__VERSION__`.
     fn set_version_macro(&mut self, n: u32) {
         self.macros.insert(
-            Rc::from("__VERSION__"),
-            Rc::new(Macro::predefined("__VERSION__", &n.to_string(), None)),
+            Arc::from("__VERSION__"),
+            Arc::new(Macro::predefined("__VERSION__", &n.to_string(), None)),
         );
     }
 
