@@ -19,6 +19,9 @@ pub struct Ident {
 pub struct TranslationUnit {
     /// Top-level declarations in order.
     pub items: Vec<ExternalDecl>,
+    /// The parser gave up before the end (nesting too deep): later declarations are missing,
+    /// so "missing `main`" would be a cascade.
+    pub truncated: bool,
 }
 
 /// A top-level declaration.

@@ -37,7 +37,8 @@ pub fn parse(file: &SourceFile, tokens: Vec<Token>, stage: Stage) -> (Translatio
         let end = file.text().len() as u32;
         p.toks.push(Token { tok: Tok::Eof, span: Span::empty(end), text: Arc::from(""), from_macro: false });
     }
-    let unit = p.translation_unit();
+    let mut unit = p.translation_unit();
+    unit.truncated = p.too_deep_reported;
     (unit, p.diags)
 }
 
@@ -736,7 +737,21 @@ impl<'a> Parser<'a> {
             loop {
                 let name = self.ident("a variable name")?;
                 let array = if self.at(Punct::LeftBracket) { Some(self.array_size()?) } else { None };
-                let init = if self.eat(Punct::Equal) { Some(self.assignment()?) } else { None };
+                let init = if self.eat(Punct::Equal) {
+                    match self.assignment() {
+                        Ok(e) => Some(e),
+                        Err(Failed) => {
+                            // Keep the variable, so later uses of it are not reported as
+                            // undeclared (no cascade), and skip the rest of the statement.
+                            let span = self.span_from(name.span);
+                            declarators.push(Declarator { span, name, array, init: Some(Expr { kind: ExprKind::Error, span }) });
+                            self.synchronize();
+                            return Ok(Declaration::Variables { ty, declarators, span: self.span_from(start) });
+                        }
+                    }
+                } else {
+                    None
+                };
                 declarators.push(Declarator { span: self.span_from(name.span), name, array, init });
                 if !self.eat(Punct::Comma) {
                     break;

@@ -47,8 +47,34 @@ impl Shader {
     }
 }
 
+/// Stack for compiling: the passes recurse over the syntax tree, whose depth the parser bounds
+/// at [`crate::parse::MAX_NESTING`]; this much stack covers that depth in every pass, even in
+/// an unoptimised build, whatever the caller's thread has (2 MiB for Rust's spawned threads).
+pub const COMPILE_STACK: usize = 64 << 20;
+
+/// Runs `f` on a thread with [`COMPILE_STACK`] bytes of stack (or inline if no thread can be
+/// started).
+pub(crate) fn with_stack<T: Send>(f: impl FnOnce() -> T + Send) -> T {
+    let slot = std::sync::Mutex::new(Some(f));
+    let take = || slot.lock().unwrap_or_else(|e| e.into_inner()).take().expect("runs once");
+    std::thread::scope(|scope| {
+        let spawned = std::thread::Builder::new()
+            .name("essl-compile".into())
+            .stack_size(COMPILE_STACK)
+            .spawn_scoped(scope, || take()());
+        match spawned {
+            Ok(handle) => handle.join().unwrap_or_else(|panic| std::panic::resume_unwind(panic)),
+            Err(_) => take()(),
+        }
+    })
+}
+
 /// Compiles a shader's text.
 pub fn compile(file: SourceFile, stage: Stage, options: &CompileOptions) -> Shader {
+    with_stack(move || compile_here(file, stage, options))
+}
+
+fn compile_here(file: SourceFile, stage: Stage, options: &CompileOptions) -> Shader {
     let lexed = crate::lex::lex(&file);
     let pp = preprocess::preprocess(&file, lexed, &PreprocessOptions { defines: options.defines.clone(), extensions: Vec::new(), stage: Some(stage) });
     let mut diagnostics = pp.diagnostics;

@@ -30,6 +30,7 @@ pub fn check(
 ) -> (hir::Module, Vec<Diagnostic>) {
     let mut c = Checker::new(file, stage);
     c.invariant_all = invariant_all;
+    c.truncated = unit.truncated;
     for item in &unit.items {
         c.external(item);
     }
@@ -107,8 +108,10 @@ pub(crate) struct Checker<'a> {
     depth_range_struct: Option<crate::types::StructId>,
     /// Fragment outputs declared: (global, has location).
     frag_outputs: Vec<GlobalId>,
-    /// Names given by `invariant name;` before the name is known (reported if unknown).
+    /// Counter for names of unnamed parameters.
     unnamed_param_counter: u32,
+    /// The parser stopped early: do not report what is missing from the end.
+    truncated: bool,
 }
 
 impl<'a> Checker<'a> {
@@ -142,6 +145,7 @@ impl<'a> Checker<'a> {
             depth_range_struct: None,
             frag_outputs: Vec::new(),
             unnamed_param_counter: 0,
+            truncated: false,
         }
     }
 
@@ -486,6 +490,7 @@ impl<'a> Checker<'a> {
     /// Checks after the last declaration: `main`, recursion, outputs, uses.
     fn finish(&mut self) {
         match self.entry {
+            None if self.truncated => {}
             None => {
                 let at = Span::empty(self.file.text().len() as u32);
                 let d = self.error("missing-main", at, "the shader has no `main` function");

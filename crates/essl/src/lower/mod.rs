@@ -277,6 +277,10 @@ fn validate(module: &naga::Module, stage: Stage) -> Result<naga::valid::ModuleIn
 /// Lowers a linked program for a GPU API: both stages share one default uniform block and one
 /// set of sampler slots; varyings and attributes get the linker's locations.
 pub fn lower_program(vs: &Shader, fs: &Shader, program: &link::Program, options: &LowerOptions) -> Result<ProgramLayout, LowerError> {
+    crate::shader::with_stack(|| lower_program_here(vs, fs, program, options))
+}
+
+fn lower_program_here(vs: &Shader, fs: &Shader, program: &link::Program, options: &LowerOptions) -> Result<ProgramLayout, LowerError> {
     let (vm, fm) = (&vs.module, &fs.module);
     let mut pplan = ProgramPlan::default();
     let mut vplan = StagePlan::default();

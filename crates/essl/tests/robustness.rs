@@ -1,0 +1,100 @@
+//! Bad input gets errors, never a panic or a hang: random bytes, truncated shaders, token soup,
+//! deep nesting, huge files.
+
+use essl::source::SourceFile;
+use essl::{compile, Stage};
+use proptest::prelude::*;
+
+const SEED: &str = include_str!("../../../shaders-glsl/spot-smooth-nbsp.frag");
+const VALID: &str = "#version 300 es\nprecision highp float;\nuniform sampler2D t;\nuniform vec3 u[2];\nin vec2 uv;\nout vec4 o;\nstruct S { vec3 a; float b[2]; };\nfloat f(inout S s, int k) { for (int i = 0; i < k; ++i) { s.a += u[i % 2]; if (s.a.x > 1.0) break; } return s.b[1]; }\nvoid main() {\n  S s = S(vec3(0.0), float[2](1.0, 2.0));\n  switch (int(uv.x * 4.0)) { case 0: o = texture(t, uv); break; default: o = vec4(f(s, 3)); }\n}\n";
+
+fn run(src: &str, stage: Stage) -> essl::Shader {
+    compile(SourceFile::new("fuzz", src), stage, &Default::default())
+}
+
+#[test]
+fn every_truncation_of_real_shaders_is_handled() {
+    for text in [SEED, VALID] {
+        let mut cut = 0;
+        while cut <= text.len() {
+            if text.is_char_boundary(cut) {
+                for stage in [Stage::Vertex, Stage::Fragment] {
+                    let sh = run(&text[..cut], stage);
+                    // Every diagnostic points inside the text.
+                    for d in &sh.diagnostics {
+                        assert!(d.span.end as usize <= cut, "span {:?} past the end at cut {cut}", d.span);
+                    }
+                }
+            }
+            cut += 1;
+        }
+    }
+}
+
+#[test]
+fn ten_thousand_nested_parentheses_are_an_error() {
+    let src = format!("#version 300 es\nprecision mediump float;\nout vec4 o;\nvoid main() {{ o = vec4({}1.0{}); }}\n", "(".repeat(10_000), ")".repeat(10_000));
+    let sh = run(&src, Stage::Fragment);
+    assert!(sh.diagnostics.iter().any(|d| d.code == "nesting-too-deep"));
+    assert!(sh.error_count() <= 3, "{:?}", sh.diagnostics.iter().map(|d| &d.message).collect::<Vec<_>>());
+}
+
+#[test]
+fn deep_blocks_chains_and_macros_are_errors_not_stack_overflows() {
+    let blocks = format!("#version 300 es\nvoid main() {{ {} gl_Position = vec4(0.0); {} }}\n", "{".repeat(10_000), "}".repeat(10_000));
+    let sum = format!("#version 300 es\nvoid main() {{ float x = 1.0{}; gl_Position = vec4(x); }}\n", " + 1.0".repeat(50_000));
+    let fields = format!("#version 300 es\nvoid main() {{ vec4 v = vec4(1.0); float x = v{}; gl_Position = v; }}\n", ".xyzw.x".repeat(5_000));
+    let macros = format!("#version 300 es\n#define A0 1.0\n{}void main() {{ gl_Position = vec4(A9999); }}\n", (1..10_000).map(|i| format!("#define A{i} (A{} + 1.0)\n", i - 1)).collect::<String>());
+    for src in [blocks, sum, fields, macros] {
+        let sh = run(&src, Stage::Vertex);
+        assert!(!sh.ok());
+    }
+}
+
+#[test]
+fn a_ten_megabyte_file_is_handled() {
+    let mut src = String::from("#version 300 es\nprecision highp float;\nout vec4 o;\nvoid main() {\n  float x = 0.0;\n");
+    while src.len() < 10 * 1024 * 1024 {
+        src.push_str("  // a long comment line that pads the file to ten megabytes, as generated code can\n");
+        src.push_str("  x += 1.0;\n");
+    }
+    src.push_str("  o = vec4(x);\n}\n");
+    let sh = run(&src, Stage::Fragment);
+    assert!(sh.ok(), "{:?}", sh.diagnostics.first());
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 512, ..ProptestConfig::default() })]
+
+    #[test]
+    fn random_bytes_never_panic(bytes in proptest::collection::vec(any::<u8>(), 0..400)) {
+        let text = String::from_utf8_lossy(&bytes);
+        let _ = run(&format!("#version 300 es\n{text}"), Stage::Fragment);
+        let _ = run(&text, Stage::Vertex);
+    }
+
+    #[test]
+    fn token_soup_never_panics(words in proptest::collection::vec(prop::sample::select(vec![
+        "float", "vec3", "int", "uint", "bool", "mat4", "struct", "S", "x", "y", "main", "void", "in", "out",
+        "uniform", "const", "precision", "highp", "if", "else", "for", "while", "do", "switch", "case",
+        "default", "break", "continue", "return", "discard", "(", ")", "{", "}", "[", "]", ";", ",", ".",
+        "=", "+=", "+", "-", "*", "/", "%", "<<", "==", "&&", "?", ":", "!", "~", "++", "1", "2.0", "3u",
+        "true", "sampler2D", "texture", "#define", "#if", "#endif", "\n", "length", "xyz", "layout",
+        "location", "flat", "invariant", "gl_Position", "gl_FragCoord",
+    ]), 0..120)) {
+        let body = words.join(" ");
+        let _ = run(&format!("#version 300 es\nprecision mediump float;\n{body}"), Stage::Fragment);
+        let _ = run(&format!("#version 300 es\nvoid main() {{ {body} }}"), Stage::Vertex);
+    }
+
+    #[test]
+    fn mutations_of_a_valid_shader_never_panic(pos in 0usize..VALID.len(), insert in prop::sample::select(vec!["", ";", "{", "}", "(", ")", "[0]", ".x", " float ", "1", "*", "=", "#", "\u{a0}", "\\\n"]), delete in 0usize..8) {
+        let mut s = VALID.to_string();
+        let mut p = pos;
+        while !s.is_char_boundary(p) { p -= 1; }
+        let mut end = (p + delete).min(s.len());
+        while !s.is_char_boundary(end) { end -= 1; }
+        s.replace_range(p..end, insert);
+        let _ = run(&s, Stage::Fragment);
+    }
+}
