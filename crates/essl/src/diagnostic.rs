@@ -163,6 +163,13 @@ impl Diagnostic {
     pub fn help_text(&self, file: &SourceFile) -> Option<String> {
         let Some(fix) = &self.fix else { return self.help.clone() };
         let base = self.help.clone().unwrap_or_else(|| fix.message.clone());
+        // A fix that only changes white space would show a line that looks unchanged.
+        let only_space = fix.edits.iter().all(|e| {
+            e.replacement.chars().all(char::is_whitespace) && file.slice(e.span).chars().all(char::is_whitespace)
+        });
+        if only_space {
+            return Some(base);
+        }
         match fixed_line(file, fix) {
             Some(line) => Some(format!("{base}: `{}`", line.trim())),
             None => Some(base),
