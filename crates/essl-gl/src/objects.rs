@@ -209,13 +209,46 @@ impl<T> Table<T> {
         *slot = new;
     }
 
-    fn free_slot(&mut self, id: Id) {
+    /// Whether `id` names an object that `delete` marked but that is still referenced (GL's
+    /// `DELETE_STATUS`).
+    pub(crate) fn is_marked_deleted(&self, id: Id) -> bool {
+        self.entry(id).is_some_and(|e| e.deleted)
+    }
+
+    /// [`Table::delete`], returning the object if it was freed now (so that the caller can
+    /// drop the references it held).
+    pub(crate) fn delete_freeing(&mut self, id: Id) -> Option<T> {
+        let e = self.entry_mut(id)?;
+        if e.deleted {
+            return None;
+        }
+        e.deleted = true;
+        if e.refs == 0 {
+            self.free_slot(id)
+        } else {
+            None
+        }
+    }
+
+    /// [`Table::release`], returning the object if it was freed now.
+    pub(crate) fn release_freeing(&mut self, id: Id) -> Option<T> {
+        let e = self.entry_mut(id)?;
+        e.refs = e.refs.saturating_sub(1);
+        if e.refs == 0 && e.deleted {
+            self.free_slot(id)
+        } else {
+            None
+        }
+    }
+
+    fn free_slot(&mut self, id: Id) -> Option<T> {
         let e = &mut self.entries[id.index as usize];
-        e.value = None;
+        let value = e.value.take();
         e.generation = e.generation.wrapping_add(1);
         e.deleted = false;
         e.refs = 0;
         self.free.push(id.index);
+        value
     }
 }
 

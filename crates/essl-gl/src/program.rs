@@ -47,6 +47,8 @@ pub(crate) struct ProgramObject {
     pub(crate) attrib_bindings: Vec<(String, u32)>,
     pub(crate) linked: Option<LinkedProgram>,
     pub(crate) link_status: bool,
+    /// The result of the last `validate_program`.
+    pub(crate) validate_status: bool,
     pub(crate) info_log: String,
 }
 
@@ -267,12 +269,19 @@ impl Context {
         Some(Shader { ctx: self.id, id })
     }
 
-    fn shader_id(&mut self, shader: Shader, function: &str) -> Option<Id> {
+    pub(crate) fn shader_id(&mut self, shader: Shader, function: &str) -> Option<Id> {
         if !self.owns(shader.ctx, function) {
             return None;
         }
-        if !self.shaders.is_live(shader.id) {
-            self.error(gl::INVALID_OPERATION, function, "deleted shader");
+        // Chromium's ValidateWebGLProgramOrShader: a shader marked for deletion but still
+        // attached stays usable; one that is gone → INVALID_VALUE (not INVALID_OPERATION as
+        // for other objects).
+        if self.shaders.get_any(shader.id).is_none() {
+            self.error(
+                gl::INVALID_VALUE,
+                function,
+                "attempt to use a deleted shader",
+            );
             return None;
         }
         Some(shader.id)
@@ -281,14 +290,14 @@ impl Context {
     /// Sets a shader's source (`shaderSource`).
     pub fn shader_source(&mut self, shader: Shader, source: &str) {
         if let Some(id) = self.shader_id(shader, "shaderSource") {
-            self.shaders.get_mut(id).expect("live").source = source.to_owned();
+            self.shaders.get_any_mut(id).expect("live").source = source.to_owned();
         }
     }
 
     /// A shader's source (`getShaderSource`).
     pub fn get_shader_source(&mut self, shader: Shader) -> Option<String> {
         let id = self.shader_id(shader, "getShaderSource")?;
-        self.shaders.get(id).map(|s| s.source.clone())
+        self.shaders.get_any(id).map(|s| s.source.clone())
     }
 
     /// Compiles a shader's source with the essl front end (`compileShader`); read the result
@@ -297,7 +306,7 @@ impl Context {
         let Some(id) = self.shader_id(shader, "compileShader") else {
             return;
         };
-        let s = self.shaders.get_mut(id).expect("live");
+        let s = self.shaders.get_any_mut(id).expect("live");
         let stage = if s.ty == gl::VERTEX_SHADER {
             essl::Stage::Vertex
         } else {
@@ -311,7 +320,7 @@ impl Context {
     /// Whether the last compile succeeded (`getShaderParameter(COMPILE_STATUS)`).
     pub fn get_shader_compile_status(&mut self, shader: Shader) -> bool {
         self.shader_id(shader, "getShaderParameter")
-            .and_then(|id| self.shaders.get(id))
+            .and_then(|id| self.shaders.get_any(id))
             .and_then(|s| s.compiled.as_ref())
             .is_some_and(|c| c.1)
     }
@@ -320,13 +329,13 @@ impl Context {
     /// (`getShaderInfoLog`).
     pub fn get_shader_info_log(&mut self, shader: Shader) -> Option<String> {
         let id = self.shader_id(shader, "getShaderInfoLog")?;
-        self.shaders.get(id).map(|s| s.info_log.clone())
+        self.shaders.get_any(id).map(|s| s.info_log.clone())
     }
 
     /// A shader's type (`getShaderParameter(SHADER_TYPE)`).
     pub fn get_shader_type(&mut self, shader: Shader) -> Option<u32> {
         let id = self.shader_id(shader, "getShaderParameter")?;
-        self.shaders.get(id).map(|s| s.ty)
+        self.shaders.get_any(id).map(|s| s.ty)
     }
 
     /// Deletes a shader (`deleteShader`); a shader attached to a program lives on until
@@ -349,8 +358,14 @@ impl Context {
         if !self.owns(program.ctx, function) {
             return None;
         }
-        if !self.programs.is_live(program.id) {
-            self.error(gl::INVALID_OPERATION, function, "deleted program");
+        // As for shaders: a program marked for deletion but still current stays usable; one
+        // that is gone → INVALID_VALUE.
+        if self.programs.get_any(program.id).is_none() {
+            self.error(
+                gl::INVALID_VALUE,
+                function,
+                "attempt to use a deleted program",
+            );
             return None;
         }
         Some(program.id)
@@ -368,8 +383,8 @@ impl Context {
         let (Some(p), Some(s)) = (self.program_id(program, F), self.shader_id(shader, F)) else {
             return;
         };
-        let ty = self.shaders.get(s).expect("live").ty;
-        let attached = &self.programs.get(p).expect("live").attached;
+        let ty = self.shaders.get_any(s).expect("live").ty;
+        let attached = &self.programs.get_any(p).expect("live").attached;
         let clash = attached
             .iter()
             .any(|&a| a == s || self.shaders.get_any(a).is_some_and(|o| o.ty == ty));
@@ -381,7 +396,7 @@ impl Context {
             );
         }
         self.shaders.add_ref(s);
-        self.programs.get_mut(p).expect("live").attached.push(s);
+        self.programs.get_any_mut(p).expect("live").attached.push(s);
     }
 
     /// Detaches a shader (`detachShader`); one not attached → `INVALID_OPERATION`.
@@ -390,7 +405,7 @@ impl Context {
         let (Some(p), Some(s)) = (self.program_id(program, F), self.shader_id(shader, F)) else {
             return;
         };
-        let attached = &mut self.programs.get_mut(p).expect("live").attached;
+        let attached = &mut self.programs.get_any_mut(p).expect("live").attached;
         let Some(i) = attached.iter().position(|&a| a == s) else {
             return self.error(gl::INVALID_OPERATION, F, "shader not attached");
         };
@@ -413,31 +428,36 @@ impl Context {
             .collect()
     }
 
-    /// Deletes a program (`deleteProgram`); the current program stays usable until another
-    /// is made current, as in GL.
+    /// Deletes a program (`deleteProgram`). The current program is only marked for deletion
+    /// (`DELETE_STATUS` true): it stays usable, with its shaders attached, until another
+    /// program is made current, as in GL.
     pub fn delete_program(&mut self, program: Program) {
         if !self.owns(program.ctx, "deleteProgram") || !self.programs.is_live(program.id) {
             return;
         }
-        let attached =
-            std::mem::take(&mut self.programs.get_mut(program.id).expect("live").attached);
-        for s in attached {
+        if let Some(freed) = self.programs.delete_freeing(program.id) {
+            self.detach_all(freed);
+        }
+    }
+
+    /// Drops the references a freed program held on its shaders.
+    fn detach_all(&mut self, freed: ProgramObject) {
+        for s in freed.attached {
             self.shaders.release(s);
         }
-        self.programs.delete(program.id);
     }
 
     /// Whether the last link succeeded (`getProgramParameter(LINK_STATUS)`).
     pub fn get_program_link_status(&mut self, program: Program) -> bool {
         self.program_id(program, "getProgramParameter")
-            .and_then(|p| self.programs.get(p))
+            .and_then(|p| self.programs.get_any(p))
             .is_some_and(|p| p.link_status)
     }
 
     /// The log of the last link (`getProgramInfoLog`).
     pub fn get_program_info_log(&mut self, program: Program) -> Option<String> {
         let p = self.program_id(program, "getProgramInfoLog")?;
-        self.programs.get(p).map(|p| p.info_log.clone())
+        self.programs.get_any(p).map(|p| p.info_log.clone())
     }
 
     /// Binds an attribute name to a location for the next link (`bindAttribLocation`).
@@ -454,7 +474,7 @@ impl Context {
         if name.starts_with("gl_") || name.starts_with("webgl_") || name.starts_with("_webgl_") {
             return self.error(gl::INVALID_OPERATION, F, "reserved name");
         }
-        let bindings = &mut self.programs.get_mut(p).expect("live").attrib_bindings;
+        let bindings = &mut self.programs.get_any_mut(p).expect("live").attrib_bindings;
         bindings.retain(|(n, _)| n != name);
         bindings.push((name.to_owned(), index));
     }
@@ -467,7 +487,7 @@ impl Context {
         let Some(p) = self.program_id(program, "linkProgram") else {
             return;
         };
-        let obj = self.programs.get(p).expect("live");
+        let obj = self.programs.get_any(p).expect("live");
         let shader = |ty: u32| {
             obj.attached
                 .iter()
@@ -501,8 +521,9 @@ impl Context {
         match result {
             Ok(layout) => self.link_program_from_layout(program, layout),
             Err(log) => {
-                let obj = self.programs.get_mut(p).expect("live");
+                let obj = self.programs.get_any_mut(p).expect("live");
                 obj.link_status = false;
+                obj.validate_status = false;
                 obj.info_log = log;
             }
         }
@@ -528,15 +549,17 @@ impl Context {
             return;
         };
         let result = self.link(layout);
-        let obj = self.programs.get_mut(p).expect("live");
+        let obj = self.programs.get_any_mut(p).expect("live");
         match result {
             Ok(linked) => {
                 obj.linked = Some(linked);
                 obj.link_status = true;
+                obj.validate_status = false;
                 obj.info_log.clear();
             }
             Err(log) => {
                 obj.link_status = false;
+                obj.validate_status = false;
                 obj.info_log = log;
             }
         }
@@ -636,28 +659,43 @@ impl Context {
         let id = match program {
             None => None,
             Some(p) => {
-                let Some(id) = self.program_id(p, F) else {
+                if !self.owns(p.ctx, F) {
                     return;
-                };
-                if !self.programs.get(id).is_some_and(|p| p.link_status) {
+                }
+                // Unlike most program functions, useProgram refuses a program marked for
+                // deletion (Chromium's ValidateNullableWebGLObject).
+                if !self.programs.is_live(p.id) {
+                    return self.error(gl::INVALID_OPERATION, F, "attempt to use a deleted object");
+                }
+                if !self.programs.get(p.id).is_some_and(|p| p.link_status) {
                     return self.error(gl::INVALID_OPERATION, F, "program is not linked");
                 }
-                Some(id)
+                Some(p.id)
             }
         };
-        let mut slot = self.current_program;
-        self.programs.retarget(&mut slot, id);
-        self.current_program = slot;
+        if self.current_program == id {
+            return;
+        }
+        if let Some(n) = id {
+            self.programs.add_ref(n);
+        }
+        if let Some(old) = std::mem::replace(&mut self.current_program, id) {
+            if let Some(freed) = self.programs.release_freeing(old) {
+                self.detach_all(freed);
+            }
+        }
     }
 
     /// The linked state of a program, for the low-level setters.
     fn linked_mut(&mut self, program: Program, function: &str) -> Option<&mut LinkedProgram> {
         let id = self.program_id(program, function)?;
-        if self.programs.get(id).is_none_or(|p| p.linked.is_none()) {
+        if self.programs.get_any(id).is_none_or(|p| p.linked.is_none()) {
             self.error(gl::INVALID_OPERATION, function, "program is not linked");
             return None;
         }
-        self.programs.get_mut(id).and_then(|p| p.linked.as_mut())
+        self.programs
+            .get_any_mut(id)
+            .and_then(|p| p.linked.as_mut())
     }
 
     /// Low-level: stores 32-bit words at `byte_offset` of a program's default uniform block
@@ -715,7 +753,7 @@ impl Context {
     ) -> Option<UniformLocation> {
         const F: &str = "getUniformLocation";
         let id = self.program_id(program, F)?;
-        let Some(linked) = self.programs.get(id).and_then(|p| p.linked.as_ref()) else {
+        let Some(linked) = self.programs.get_any(id).and_then(|p| p.linked.as_ref()) else {
             self.error(gl::INVALID_OPERATION, F, "program is not linked");
             return None;
         };
@@ -762,7 +800,7 @@ impl Context {
         let Some(id) = self.program_id(program, F) else {
             return gl::INVALID_INDEX;
         };
-        let Some(linked) = self.programs.get(id).and_then(|p| p.linked.as_ref()) else {
+        let Some(linked) = self.programs.get_any(id).and_then(|p| p.linked.as_ref()) else {
             self.error(gl::INVALID_OPERATION, F, "program is not linked");
             return gl::INVALID_INDEX;
         };
@@ -781,7 +819,11 @@ impl Context {
         let Some(id) = self.program_id(program, F) else {
             return;
         };
-        let Some(linked) = self.programs.get_mut(id).and_then(|p| p.linked.as_mut()) else {
+        let Some(linked) = self
+            .programs
+            .get_any_mut(id)
+            .and_then(|p| p.linked.as_mut())
+        else {
             return self.error(gl::INVALID_OPERATION, F, "program is not linked");
         };
         match linked.block_bindings.get_mut(block_index as usize) {
@@ -797,7 +839,7 @@ impl Context {
         index: u32,
     ) -> Option<(String, u32, u32)> {
         let id = self.program_id(program, "getActiveAttrib")?;
-        let linked = self.programs.get(id)?.linked.as_ref()?;
+        let linked = self.programs.get_any(id)?.linked.as_ref()?;
         match linked.layout.attributes.get(index as usize) {
             Some(a) => Some((a.name.clone(), a.ty as u32, a.size)),
             None => {
@@ -814,7 +856,7 @@ impl Context {
         index: u32,
     ) -> Option<(String, u32, u32)> {
         let id = self.program_id(program, "getActiveUniform")?;
-        let linked = self.programs.get(id)?.linked.as_ref()?;
+        let linked = self.programs.get_any(id)?.linked.as_ref()?;
         match linked.layout.uniforms.get(index as usize) {
             Some(u) => Some((u.name.clone(), u.ty as u32, u.size)),
             None => {
@@ -830,7 +872,7 @@ impl Context {
         let Some(id) = self.program_id(program, F) else {
             return -1;
         };
-        let Some(linked) = self.programs.get(id).and_then(|p| p.linked.as_ref()) else {
+        let Some(linked) = self.programs.get_any(id).and_then(|p| p.linked.as_ref()) else {
             self.error(gl::INVALID_OPERATION, F, "program is not linked");
             return -1;
         };
