@@ -329,7 +329,13 @@ impl Context {
             return;
         };
         let full = rect == [0, 0, self.fb.width, self.fb.height];
-        let [r, g, b, a] = s.clear_color.map(|c| c.clamp(0.0, 1.0));
+        // The default framebuffer is 8-bit UNORM: give the GPU the centre of the byte GL's
+        // round-to-nearest picks, so that the driver's own conversion cannot land elsewhere
+        // (lavapipe's float-to-byte trick turns 0.3, i.e. 76.500003, into 76; GL and
+        // Chromium give 77).
+        let [r, g, b, a] = s
+            .clear_color
+            .map(|c| ((c.clamp(0.0, 1.0) as f64 * 255.0 + 0.5).floor() / 255.0) as f32);
         let clear_color = wgpu::Color {
             r: r as f64,
             g: g as f64,

@@ -59,6 +59,7 @@ mod pipeline;
 mod program;
 mod query;
 mod readback;
+pub mod scene;
 mod shader_patch;
 mod state;
 mod texture;

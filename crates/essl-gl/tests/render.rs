@@ -21,6 +21,25 @@ fn clear_color_reads_back() {
     assert_clean(&ctx);
 }
 
+/// GL converts the clear colour to 8 bits rounding to nearest: 0.3 is 76.500003 → 77 (lavapipe's
+/// own conversion gives 76), 0.5 → 128, 0.2 → 51; a scissored (drawn) clear agrees.
+#[test]
+fn clear_colour_rounds_to_nearest() {
+    let Some(mut ctx) = context(4, 4) else { return };
+    ctx.clear_color(0.3, 0.5, 0.2, 0.1);
+    ctx.clear(gl::COLOR_BUFFER_BIT);
+    assert_eq!(pixel(&mut ctx, 0, 0), [77, 128, 51, 26]);
+    ctx.clear_color(0.0, 0.0, 0.0, 1.0);
+    ctx.clear(gl::COLOR_BUFFER_BIT);
+    ctx.enable(gl::SCISSOR_TEST);
+    ctx.scissor(0, 0, 2, 2);
+    ctx.clear_color(0.3, 0.5, 0.2, 0.1);
+    ctx.clear(gl::COLOR_BUFFER_BIT);
+    assert_eq!(pixel(&mut ctx, 1, 1), [77, 128, 51, 26]);
+    assert_eq!(pixel(&mut ctx, 3, 3), [0, 0, 0, 255]);
+    assert_clean(&ctx);
+}
+
 #[test]
 fn triangle_covers_the_lower_left_half() {
     let Some(mut ctx) = context(W, H) else { return };
