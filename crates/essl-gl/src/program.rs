@@ -866,12 +866,17 @@ impl Context {
         }
     }
 
-    /// The location of an active attribute, or −1 (`getAttribLocation`).
+    /// The location of an active attribute, or −1 (`getAttribLocation`). Built-in inputs
+    /// (`gl_VertexID`, `gl_InstanceID`), which `get_active_attrib` lists, and every reserved
+    /// `gl_`/`webgl_` name have none: −1, as in WebGL.
     pub fn get_attrib_location(&mut self, program: Program, name: &str) -> i32 {
         const F: &str = "getAttribLocation";
         let Some(id) = self.program_id(program, F) else {
             return -1;
         };
+        if name.starts_with("gl_") || name.starts_with("webgl_") || name.starts_with("_webgl_") {
+            return -1;
+        }
         let Some(linked) = self.programs.get_any(id).and_then(|p| p.linked.as_ref()) else {
             self.error(gl::INVALID_OPERATION, F, "program is not linked");
             return -1;
