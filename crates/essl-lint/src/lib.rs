@@ -1,0 +1,166 @@
+//! essl-lint: lints for shaders that WebGL2 compiles but that render NaN or garbage for ordinary
+//! parameter values — `pow` of a negative dot product, `acos` of a dot product that rounding
+//! pushes past 1, `smoothstep` with equal edges, a division by `u_innerLimit - u_outerLimit`,
+//! `normalize(cross(up, dir))`, `mediump` overflow.
+//!
+//! The rules run on the validated naga IR that [`essl::compile`] produces, where every
+//! expression's span points into the user's text. A small interval analysis
+//! ([`analysis::Analysis`]) gives every expression a range per component and facts such as
+//! "unit length" or "non-negative whenever the uniforms are", so that guarded code —
+//! `pow(max(dot(n, h), 0.0), s)`, `acos(clamp(c, -1.0, 1.0))` — is not reported.
+//!
+//! ```
+//! use essl::source::SourceFile;
+//! use essl::{compile, CompileOptions, Stage};
+//!
+//! let text = "#version 300 es\nprecision highp float;\nin vec3 n; in vec3 h;\nuniform float s;\nout vec4 o;\n\
+//!             void main() { o = vec4(pow(dot(normalize(n), normalize(h)), s)); }\n";
+//! let shader = compile(SourceFile::new("a.frag", text), Stage::Fragment, &CompileOptions::default());
+//! let found = essl_lint::lint(&shader, &essl_lint::LintOptions::default());
+//! assert_eq!(found[0].code, "pow-negative-base");
+//! ```
+//!
+//! Every finding is a warning unless [`LintOptions`] denies its rule (or the whole set, `all`);
+//! a comment `// essl-allow: RULE` on the line of the finding or on the line before silences it.
+
+pub mod analysis;
+pub mod interval;
+pub mod precision;
+mod rules;
+pub mod sarif;
+pub mod suppress;
+pub mod symbolic;
+pub mod value;
+
+use essl::diagnostic::{self, Diagnostic, Severity};
+use essl::Shader;
+
+pub use rules::{rule, Rule, RULES};
+
+/// What to do with a rule's findings.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Level {
+    /// Not reported.
+    Allow,
+    /// Reported as a warning (the default): `essl lint` still succeeds.
+    Warn,
+    /// Reported as an error: `essl lint` fails.
+    Deny,
+}
+
+impl Level {
+    /// `"allow"`, `"warn"` or `"deny"`.
+    pub fn as_str(self) -> &'static str {
+        match self {
+            Level::Allow => "allow",
+            Level::Warn => "warn",
+            Level::Deny => "deny",
+        }
+    }
+}
+
+/// A rule name that no rule has.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct UnknownRule(pub String);
+
+impl std::fmt::Display for UnknownRule {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(f, "unknown lint rule `{}` (known: all, {})", self.0, RULES.iter().map(|r| r.id).collect::<Vec<_>>().join(", "))
+    }
+}
+
+impl std::error::Error for UnknownRule {}
+
+/// Which rules run, and how loud they are: `--allow RULE` / `--deny RULE`, in order (a later
+/// setting of the same rule wins; `all` names every rule).
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
+pub struct LintOptions {
+    overrides: Vec<(String, Level)>,
+}
+
+impl LintOptions {
+    /// Every rule at its default level.
+    pub fn new() -> LintOptions {
+        LintOptions::default()
+    }
+
+    /// Sets a rule's level (`all`: every rule's); an unknown name is an error.
+    pub fn set(&mut self, rule_id: &str, level: Level) -> Result<(), UnknownRule> {
+        if rule_id != "all" && rule(rule_id).is_none() {
+            return Err(UnknownRule(rule_id.to_string()));
+        }
+        self.overrides.push((rule_id.to_string(), level));
+        Ok(())
+    }
+
+    /// Silences a rule (`all`: every rule). Unknown names are kept and match nothing; use
+    /// [`LintOptions::set`] to reject them.
+    pub fn allow(mut self, rule_id: &str) -> LintOptions {
+        self.overrides.push((rule_id.to_string(), Level::Allow));
+        self
+    }
+
+    /// Reports a rule as a warning.
+    pub fn warn(mut self, rule_id: &str) -> LintOptions {
+        self.overrides.push((rule_id.to_string(), Level::Warn));
+        self
+    }
+
+    /// Reports a rule as an error.
+    pub fn deny(mut self, rule_id: &str) -> LintOptions {
+        self.overrides.push((rule_id.to_string(), Level::Deny));
+        self
+    }
+
+    /// The level of a rule under these options.
+    pub fn level(&self, r: &Rule) -> Level {
+        self.overrides.iter().rev().find(|(id, _)| id == "all" || id == r.id).map(|(_, l)| *l).unwrap_or(r.default_level)
+    }
+}
+
+/// Lints a compiled shader: every finding of every rule that is not allowed, in source order.
+///
+/// A shader that did not compile (no naga IR) has no findings: its errors come first.
+pub fn lint(shader: &Shader, options: &LintOptions) -> Vec<Diagnostic> {
+    let Some(cx) = rules::Cx::new(shader) else { return Vec::new() };
+    let allowed = suppress::Allowed::scan(&shader.file);
+    let mut out = Vec::new();
+    for r in RULES {
+        let level = options.level(r);
+        if level == Level::Allow {
+            continue;
+        }
+        let mut found = Vec::new();
+        (r.check)(&cx, &mut found);
+        for mut d in found {
+            if allowed.silences(&shader.file, d.span, r.id) {
+                continue;
+            }
+            d.severity = if level == Level::Deny { Severity::Error } else { Severity::Warning };
+            out.push(d);
+        }
+    }
+    out.dedup_by(|a, b| a.code == b.code && a.span == b.span);
+    diagnostic::sort(&mut out);
+    let mut seen = std::collections::HashSet::new();
+    out.retain(|d| seen.insert((d.code, d.span)));
+    out
+}
+
+/// The analysis of every expression of the user's functions, one line each (span text, value):
+/// for debugging the analysis.
+#[doc(hidden)]
+pub fn dump(shader: &Shader) -> String {
+    use std::fmt::Write;
+    let Some(cx) = rules::Cx::new(shader) else { return String::new() };
+    let mut s = String::new();
+    for (id, f) in cx.functions() {
+        let _ = writeln!(s, "fn {}", f.name.as_deref().unwrap_or("?"));
+        for (h, e) in f.expressions.iter() {
+            let span = cx.span(f, h);
+            let v = cx.sound.value(id, h);
+            let _ = writeln!(s, "  {:?} {:?} `{}` = {:?}", h, std::mem::discriminant(e), cx.text(span).replace('\n', " "), v);
+        }
+    }
+    s
+}

@@ -1,0 +1,277 @@
+//! `mediump-overflow`: `mediump`/`lowp` arithmetic that overflows 16-bit floats for ordinary
+//! values, and divisors that underflow to zero there.
+
+use std::collections::HashMap;
+
+use essl::diagnostic::Diagnostic;
+use naga::{BinaryOperator as Bo, Block, Expression as E, Function, Handle, MathFunction as Mf, ScalarKind, Statement};
+
+use super::{fmt_num, Cx, Rule};
+use crate::analysis::TYPICAL;
+use crate::interval::Interval;
+use crate::Level;
+
+/// `mediump-overflow`.
+pub static OVERFLOW: Rule = Rule {
+    id: "mediump-overflow",
+    summary: "`mediump`/`lowp` arithmetic that overflows 65504 for ordinary values, or a divisor that underflows to 0",
+    default_level: Level::Warn,
+    doc: DOC,
+    check,
+};
+
+/// The largest finite 16-bit float, what `mediump` and `lowp` hold on GPUs that use them.
+pub const LIMIT: f64 = 65504.0;
+/// The smallest normal 16-bit float (2^-14); smaller values may flush to zero.
+pub const MIN_NORMAL: f64 = 6.103515625e-5;
+
+const DOC: &str = r#"
+## What it does
+Reports operations computed in `mediump` or `lowp` that amplify a value past 65504 — the
+largest 16-bit float — for ordinary, modest values of the shader's inputs: the square or power
+of one value (`x * x`, `pow(x, 150.0)`, the sum of squares inside `length` and `normalize`), an
+exponential (`exp(x)` beyond 11), a scaling by a constant, a division by a small value.
+"Ordinary" means uniforms and inputs of magnitude up to 10 with the signs the formulas expect
+(distances, densities, exponents positive), matrix entries and texels up to 1; the analysis
+follows the shader's own arithmetic from there. What overflows only for larger parameters, or
+through a product of *different* parameters, depends on values the runtime check sees. An
+overflow whose only use saturates it (`clamp(x / eps, 0.0, 1.0)`, `min(x, 1.0)`, a
+comparison) is not reported.
+
+It also reports a `mediump`/`lowp` divisor (or argument of `inversesqrt`/`log`) that the shader
+keeps away from zero with a guard below 6.1e-5 (`max(d, 1e-6)`): in 16 bits the guard itself
+flushes to zero.
+
+## Why is this bad?
+Desktop GPUs run `mediump` at 32 bits, so the shader looks fine where it is written; phones run
+it at 16 bits, where anything above 65504 is infinity, and `inf - inf`, `0 * inf` and `inf / inf`
+are NaN. GLSL ES 3.00 guarantees `mediump` only a range of 2^14 (§4.5.2).
+
+## Example
+```glsl
+precision mediump float;
+uniform float u_distance;
+…
+float falloff = exp(u_distance * 2.0);   // e^20 = 4.9e8 for u_distance = 10
+```
+
+## Use instead
+```glsl
+highp float falloff = exp(u_distance * 2.0);
+```
+Declare the operands (or the variable) `highp`, or rescale the computation (work in kilometres,
+divide before multiplying). There is no mechanical fix.
+
+## References
+- GLSL ES 3.00 specification, §4.5.2 Precision Qualifiers (minimum ranges and precisions).
+- IEEE 754 binary16: largest finite value 65504, smallest normal 2^-14.
+"#;
+
+/// Who reads an expression's value.
+#[derive(Clone, Copy, Debug, PartialEq)]
+enum User {
+    Expr(Handle<E>),
+    Stmt,
+}
+
+fn operands(e: &E) -> Vec<Handle<E>> {
+    match e {
+        E::Compose { components, .. } => components.clone(),
+        E::Access { base, index } => vec![*base, *index],
+        E::AccessIndex { base, .. } => vec![*base],
+        E::Splat { value, .. } => vec![*value],
+        E::Swizzle { vector, .. } => vec![*vector],
+        E::Load { pointer } => vec![*pointer],
+        E::Unary { expr, .. } | E::Derivative { expr, .. } | E::As { expr, .. } => vec![*expr],
+        E::Binary { left, right, .. } => vec![*left, *right],
+        E::Select { condition, accept, reject } => vec![*condition, *accept, *reject],
+        E::Relational { argument, .. } => vec![*argument],
+        E::Math { arg, arg1, arg2, arg3, .. } => [Some(*arg), *arg1, *arg2, *arg3].into_iter().flatten().collect(),
+        E::ImageSample { coordinate, depth_ref, .. } => [Some(*coordinate), *depth_ref].into_iter().flatten().collect(),
+        E::ImageLoad { coordinate, .. } => vec![*coordinate],
+        _ => Vec::new(),
+    }
+}
+
+fn users(f: &Function) -> HashMap<Handle<E>, Vec<User>> {
+    let mut map: HashMap<Handle<E>, Vec<User>> = HashMap::new();
+    for (h, e) in f.expressions.iter() {
+        for o in operands(e) {
+            map.entry(o).or_default().push(User::Expr(h));
+        }
+    }
+    fn walk(b: &Block, map: &mut HashMap<Handle<E>, Vec<User>>) {
+        for s in b.iter() {
+            let mut read = |h: &Handle<E>| map.entry(*h).or_default().push(User::Stmt);
+            match s {
+                Statement::Store { value, .. } => read(value),
+                Statement::Return { value: Some(v) } => read(v),
+                Statement::Call { arguments, .. } => arguments.iter().for_each(read),
+                Statement::If { condition, accept, reject } => {
+                    read(condition);
+                    walk(accept, map);
+                    walk(reject, map);
+                }
+                Statement::Switch { selector, cases } => {
+                    read(selector);
+                    for c in cases {
+                        walk(&c.body, map);
+                    }
+                }
+                Statement::Loop { body, continuing, break_if } => {
+                    if let Some(b) = break_if {
+                        read(b);
+                    }
+                    walk(body, map);
+                    walk(continuing, map);
+                }
+                Statement::Block(b) => walk(b, map),
+                _ => {}
+            }
+        }
+    }
+    walk(&f.body, &mut map);
+    map
+}
+
+fn check(cx: &Cx, out: &mut Vec<Diagnostic>) {
+    for (id, f) in cx.functions() {
+        let users = users(f);
+        for (h, e) in f.expressions.iter() {
+            let span = cx.span(f, h);
+            if span.is_empty() || cx.kind(id, h) != Some(ScalarKind::Float) {
+                continue;
+            }
+            underflow(cx, f, id, h, e, out);
+            if !cx.prec.is_low(span) {
+                continue;
+            }
+            let ops: Vec<Handle<E>> = match *e {
+                E::Binary { op: Bo::Multiply | Bo::Divide, left, right } => vec![left, right],
+                E::Math { fun: Mf::Pow | Mf::Exp | Mf::Exp2 | Mf::Dot | Mf::Length | Mf::Distance | Mf::Normalize | Mf::Cosh | Mf::Sinh | Mf::Fma | Mf::Ldexp, .. } => operands(e),
+                _ => continue,
+            };
+            let typ: Vec<Interval> = ops.iter().filter_map(|o| cx.typical.num(id, *o).map(|n| n.hull())).collect();
+            if typ.len() != ops.len() || typ.iter().any(|i| i.mag() > LIMIT) {
+                continue;
+            }
+            let Some(r) = amplified(cx, f, id, e, &typ) else { continue };
+            if guarded_operand(cx, f, h, e).is_some_and(|x| underflows(cx, id, f, x).is_some()) {
+                continue; // the underflowing divisor is the finding
+            }
+            let (up, down) = (r.hi > LIMIT, r.lo < -LIMIT);
+            if !up && !down {
+                continue;
+            }
+            if saturated(cx, f, id, h, up, down, &users, 0) {
+                continue;
+            }
+            let peak = if up { r.hi } else { r.lo };
+            let p = cx.prec.at(span).map(|p| p.name()).unwrap_or("mediump");
+            out.push(
+                Diagnostic::warning(OVERFLOW.id, format!("`{p}` result can overflow 65504 for ordinary values"), span)
+                    .with_label(format!("computed in `{p}`: reaches {} with inputs of magnitude {}", fmt_num(peak), fmt_num(TYPICAL)))
+                    .with_note("mediump and lowp are 16-bit floats on many mobile GPUs: the largest finite value is 65504")
+                    .with_help("compute it in `highp`, or rescale the operands"),
+            );
+        }
+    }
+}
+
+/// The range the shader's own amplification gives `e` for ordinary values, when it amplifies:
+/// a square or power of one value, an exponential, a scaling by a constant, a division by a
+/// value bounded away from 0, the sum of squares inside `length`/`normalize`. A product of
+/// different parameters is not an amplification: its scale is the parameters' (the runtime
+/// check sees their values).
+fn amplified(cx: &Cx, f: &Function, id: usize, e: &E, typ: &[Interval]) -> Option<Interval> {
+    let constant = |h: Handle<E>| cx.sound.num(id, h).is_some_and(|n| n.comps().iter().all(|c| c.as_point().is_some()));
+    let squares = |h: Handle<E>| cx.typical.num(id, h).map(|n| n.comps().iter().fold(Interval::point(0.0), |s, c| s.add(c.sqr())));
+    match *e {
+        E::Binary { op: Bo::Multiply, left, right } => {
+            (cx.sound.same(f, id, left, right) || constant(left) || constant(right)).then(|| typ[0].mul(typ[1]))
+        }
+        E::Binary { op: Bo::Divide, .. } => (!typ[1].contains(0.0)).then(|| typ[0].div(typ[1])),
+        E::Math { fun: Mf::Pow, .. } => {
+            // Growth: a base above 1 to a positive power. A base near 0 with a negative
+            // exponent is pow-zero-base's business.
+            let r = typ[0].meet(Interval::new(1.0, f64::INFINITY)).pow(typ[1].meet(Interval::NON_NEGATIVE));
+            (!r.is_empty()).then_some(r)
+        }
+        E::Math { fun: Mf::Exp, .. } => Some(typ[0].exp()),
+        E::Math { fun: Mf::Exp2, .. } => Some(typ[0].exp2()),
+        E::Math { fun: Mf::Sinh, .. } => Some(typ[0].sinh()),
+        E::Math { fun: Mf::Cosh, .. } => Some(typ[0].cosh()),
+        E::Math { fun: Mf::Dot, arg, arg1: Some(b), .. } => {
+            if cx.sound.same(f, id, arg, b) {
+                squares(arg)
+            } else {
+                None
+            }
+        }
+        E::Math { fun: Mf::Length | Mf::Normalize, arg, .. } => squares(arg),
+        E::Math { fun: Mf::Distance, arg, arg1: Some(b), .. } => {
+            let (x, y) = (cx.typical.num(id, arg)?, cx.typical.num(id, b)?);
+            Some(x.zip(y, Interval::sub).iter().fold(Interval::point(0.0), |s, c| s.add(c.sqr())))
+        }
+        E::Math { fun: Mf::Fma, arg, arg1: Some(b), .. } => {
+            (cx.sound.same(f, id, arg, b) || constant(arg) || constant(b)).then(|| typ[0].mul(typ[1]).add(typ[2]))
+        }
+        _ => None,
+    }
+}
+
+/// Whether every use of `h` clamps away its overflow (`up`: towards +∞, `down`: towards −∞).
+#[allow(clippy::too_many_arguments)]
+fn saturated(cx: &Cx, f: &Function, id: usize, h: Handle<E>, up: bool, down: bool, users: &HashMap<Handle<E>, Vec<User>>, depth: u32) -> bool {
+    let Some(us) = users.get(&h) else { return true };
+    let bounded = |x: Option<Handle<E>>| x.and_then(|x| cx.typical.num(id, x)).is_some_and(|n| n.hull().mag() <= LIMIT);
+    us.iter().all(|u| {
+        let User::Expr(u) = *u else { return false };
+        match f.expressions[u] {
+            E::Math { fun: Mf::Clamp, arg, arg1, arg2, .. } => arg == h && bounded(arg1) && bounded(arg2),
+            E::Math { fun: Mf::Saturate | Mf::Step | Mf::SmoothStep, .. } => true,
+            E::Math { fun: Mf::Min, arg, arg1, .. } => !down && bounded(if arg == h { arg1 } else { Some(arg) }),
+            E::Math { fun: Mf::Max, arg, arg1, .. } => !up && bounded(if arg == h { arg1 } else { Some(arg) }),
+            E::Binary { op: Bo::Less | Bo::LessEqual | Bo::Greater | Bo::GreaterEqual | Bo::Equal | Bo::NotEqual, .. } => true,
+            E::Splat { .. } if depth < 3 => saturated(cx, f, id, u, up, down, users, depth + 1),
+            _ => false,
+        }
+    })
+}
+
+/// The operand of `e` that must stay away from zero: a divisor, the argument of `inversesqrt`
+/// or `log`.
+fn guarded_operand(cx: &Cx, f: &Function, h: Handle<E>, e: &E) -> Option<Handle<E>> {
+    match *e {
+        E::Binary { op: Bo::Divide, right, .. } => Some(cx.operand(f, h, right)),
+        E::Math { fun: Mf::InverseSqrt | Mf::Log | Mf::Log2, arg, .. } => Some(cx.operand(f, h, arg)),
+        _ => None,
+    }
+}
+
+/// How small a low-precision value kept above zero can be, when that is below the smallest
+/// normal 16-bit float.
+fn underflows(cx: &Cx, id: usize, f: &Function, x: Handle<E>) -> Option<f64> {
+    let span = cx.span(f, x);
+    if span.is_empty() || !cx.prec.is_low(span) {
+        return None;
+    }
+    let v = cx.sound.num(id, x)?;
+    let m = v.comps().iter().map(|c| c.mig()).fold(f64::INFINITY, f64::min);
+    (m > 0.0 && m < MIN_NORMAL).then_some(m)
+}
+
+/// A low-precision divisor (or `inversesqrt`/`log` argument) kept away from zero by less than
+/// the smallest normal 16-bit float.
+fn underflow(cx: &Cx, f: &Function, id: usize, h: Handle<E>, e: &E, out: &mut Vec<Diagnostic>) {
+    let Some(x) = guarded_operand(cx, f, h, e) else { return };
+    let Some(m) = underflows(cx, id, f, x) else { return };
+    let span = cx.span(f, x);
+    let p = cx.prec.at(span).map(|p| p.name()).unwrap_or("mediump");
+    out.push(
+        Diagnostic::warning(OVERFLOW.id, format!("`{p}` value kept above 0 by less than 6.1e-5 can underflow to 0"), span)
+            .with_label(format!("as small as {} in `{p}`, below the smallest normal 16-bit float", fmt_num(m)))
+            .with_note("mediump and lowp are 16-bit floats on many mobile GPUs: values below 6.1e-5 may flush to 0")
+            .with_help("use a guard of at least 1e-4, or compute it in `highp`"),
+    );
+}

@@ -1,0 +1,136 @@
+//! `normalize-zero`: `normalize(v)` of a vector that can be zero for ordinary parameters.
+
+use essl::diagnostic::Diagnostic;
+use naga::{Expression as E, Function, Handle, MathFunction as Mf};
+
+use super::{Cx, Rule};
+use crate::symbolic::resolve;
+use crate::value::Facts;
+use crate::Level;
+
+/// `normalize-zero`.
+pub static ZERO: Rule = Rule {
+    id: "normalize-zero",
+    summary: "`normalize(v)` of a cross product or per-draw difference that can be the zero vector",
+    default_level: Level::Warn,
+    doc: DOC,
+    check,
+};
+
+const DOC: &str = r#"
+## What it does
+Reports `normalize(v)` where `v` can be the zero vector even though every uniform and input is
+a valid (non-zero) vector and every matrix invertible:
+
+- a cross product, which vanishes when its two vectors are parallel
+  (`normalize(cross(spotLightEx.up, spotLight.direction))` for a spot light pointing straight
+  up or down; `cross(normal, vec3(0.0, 1.0, 0.0))` on a floor);
+- a sum or difference computed from uniforms and constants only — the same for every pixel of
+  a draw, such as `normalize(u_target - u_eye)` or `normalize(u_a + u_b)`.
+
+Not reported: `normalize` of a uniform, an input or a texel itself (`normalize(v_normal)`; the
+runtime check validates uniform values), of a transformed vector (`normalize(mat3(u_world) *
+a_normal)`), and of per-pixel sums and differences such as `normalize(u_lightPos - v_position)`
+or a half vector `normalize(l + v)`: those vanish only at isolated points (the pixel that is at
+the light's position), not for a whole draw.
+
+## Why is this bad?
+`normalize(v)` is `v / length(v)`: for the zero vector it is `0 / 0`, NaN in every component.
+When the zero comes from the parameters — a spot light whose direction is parallel to its `up`
+vector — *every* pixel of the light is NaN: the projected texture's coordinates become NaN and
+the lookup returns garbage for the whole cone.
+
+## Example
+```glsl
+vec3 left = normalize(cross(spotLightEx.up, spotLight.direction));
+```
+
+## Use instead
+```glsl
+vec3 c = cross(spotLightEx.up, spotLight.direction);
+// Parallel vectors: fall back to any vector perpendicular to the direction.
+vec3 left = dot(c, c) > 1e-12 ? normalize(c) : normalize(cross(vec3(1.0, 0.0, 0.0), spotLight.direction));
+```
+There is no mechanical fix: the degenerate case needs a choice (a fallback axis, or no light).
+
+## References
+- GLSL ES 3.00 specification, §8.4 Geometric Functions (normalize: "a vector in the same
+  direction as x but with a length of 1", undefined for a zero vector).
+- Article 003 (A-Frame projected-texture spot lights): `left = normalize(cross(up, direction))`.
+"#;
+
+fn check(cx: &Cx, out: &mut Vec<Diagnostic>) {
+    for (id, f) in cx.functions() {
+        for (h, e) in f.expressions.iter() {
+            let E::Math { fun: Mf::Normalize, arg, .. } = *e else { continue };
+            if cx.span(f, h).is_empty() {
+                continue;
+            }
+            let x = cx.operand(f, h, arg);
+            let Some(v) = cx.sound.num(id, x) else { continue };
+            if v.n < 2 || !v.may_be_zero() || v.facts.has(Facts::NZ) {
+                continue;
+            }
+            let cross = v.facts.any(Facts::CROSS);
+            if cross && orthogonal_cross(cx, f, id, x) {
+                continue;
+            }
+            let per_draw = !v.facts.any(Facts::INPUT.with(Facts::TEXTURE));
+            if !cross && !per_draw {
+                continue;
+            }
+            let span = cx.span(f, x);
+            let what = cx.what(f, id, x);
+            let label = if cross {
+                format!("{what} is the zero vector when its two vectors are parallel")
+            } else if v.facts.any(Facts::UNIFORM) {
+                format!("{what} is the zero vector for some values of the uniforms, for every pixel of the draw")
+            } else {
+                format!("{what} is the zero vector")
+            };
+            out.push(
+                Diagnostic::warning(ZERO.id, "`normalize` of a vector that can be zero, which gives NaN", span)
+                    .with_label(label)
+                    .with_note("normalize(v) divides by length(v): 0 / 0 for the zero vector")
+                    .with_help("test the length first (`dot(v, v) > 1e-12`) and choose a fallback direction"),
+            );
+        }
+    }
+}
+
+/// Whether `h` is `cross(a, b)` of non-zero vectors where every value `a` (or `b`) can hold is
+/// itself a cross product with the other: perpendicular vectors, whose cross product is not
+/// zero (`up = normalize(cross(right, forward)); right = normalize(cross(up, forward))`).
+fn orthogonal_cross(cx: &Cx, f: &Function, id: usize, h: Handle<E>) -> bool {
+    let r = resolve(f, &cx.sound, id, h);
+    let E::Math { fun: Mf::Cross, arg: a, arg1: Some(b), .. } = f.expressions[r] else { return false };
+    let nz = |x: Handle<E>| cx.sound.num(id, x).is_some_and(|n| n.facts.has(Facts::NZ));
+    if !nz(a) || !nz(b) {
+        return false;
+    }
+    let perpendicular = |x: Handle<E>, y: Handle<E>| {
+        values(cx, f, id, x).iter().all(|v| {
+            let mut v = resolve(f, &cx.sound, id, *v);
+            if let E::Math { fun: Mf::Normalize, arg, .. } = f.expressions[v] {
+                v = resolve(f, &cx.sound, id, arg);
+            }
+            match f.expressions[v] {
+                E::Math { fun: Mf::Cross, arg: p, arg1: Some(q), .. } => cx.sound.same(f, id, p, y) || cx.sound.same(f, id, q, y),
+                _ => false,
+            }
+        })
+    };
+    perpendicular(a, b) || perpendicular(b, a)
+}
+
+/// The values `h` can be: every value stored into the local it loads, or itself.
+fn values(cx: &Cx, f: &Function, id: usize, h: Handle<E>) -> Vec<Handle<E>> {
+    if let E::Load { pointer } = f.expressions[h] {
+        if let E::LocalVariable(l) = f.expressions[pointer] {
+            if let Some(vs) = cx.sound.functions[id].stores.get(&l.index()).filter(|vs| !vs.is_empty()) {
+                return vs.clone();
+            }
+        }
+    }
+    vec![h]
+}

@@ -1,0 +1,155 @@
+//! `pow-negative-base` and `pow-zero-base`: `pow(x, y)` where GLSL leaves it undefined.
+
+use essl::diagnostic::{Diagnostic, Fix};
+use naga::{Expression as E, MathFunction as Mf};
+
+use super::{describe, Cx, Rule};
+use crate::value::Facts;
+use crate::Level;
+
+/// `pow-negative-base`.
+pub static NEGATIVE: Rule = Rule {
+    id: "pow-negative-base",
+    summary: "`pow(x, y)` whose base the shader's own arithmetic can make negative",
+    default_level: Level::Warn,
+    doc: DOC_NEGATIVE,
+    check: check_negative,
+};
+
+/// `pow-zero-base`.
+pub static ZERO: Rule = Rule {
+    id: "pow-zero-base",
+    summary: "`pow(x, y)` whose base can be 0 while its exponent can be ≤ 0",
+    default_level: Level::Warn,
+    doc: DOC_ZERO,
+    check: check_zero,
+};
+
+const DOC_NEGATIVE: &str = r#"
+## What it does
+Reports `pow(x, y)` where the shader's own arithmetic can make the base `x` negative: a dot
+product, a difference, a sine. A base that is only negative when a uniform or an input is
+(`pow(u_base, 2.0)`) is not reported: checking uniform values is the runtime check's job.
+
+## Why is this bad?
+GLSL ES 3.00 leaves `pow(x, y)` undefined for `x < 0` (§8.2), and GPUs compute it as
+`exp2(y * log2(x))`: the result is NaN, whatever `y` is — even `pow(x, 2.0)`. A NaN in a
+colour shows as black (or garbage after blending) exactly where the dot product turns
+negative: the back of a specular highlight, the edge of a spot light. The article's spot light
+computes `pow(dot(normal, halfVector), u_shininess)` after a test on a *different* dot product
+(`dot(normal, surfaceToLight) > 0.0`), which does not keep `dot(normal, halfVector)` positive.
+
+## Example
+```glsl
+float specular = pow(dot(normal, halfVector), u_shininess);
+```
+
+## Use instead
+```glsl
+float specular = pow(max(dot(normal, halfVector), 0.0), u_shininess);
+```
+The fix (`max(…, 0.0)`) is suggested, not applied by `--fix`: it changes the value where the
+base was negative (from NaN to 0, which is what the lighting model means).
+
+## References
+- GLSL ES 3.00 specification, §8.2 Exponential Functions: "Results are undefined if x < 0."
+- Article 001 (webgl2fundamentals, spot lights): `pow(dot(normal, halfVector), u_shininess)`.
+"#;
+
+const DOC_ZERO: &str = r#"
+## What it does
+Reports `pow(x, y)` where the base can be 0 (a `max(…, 0.0)`, a product that vanishes) while the
+exponent can be 0 or negative, and where both come from the shader's arithmetic or constants.
+An exponent that is a uniform as such (`u_shininess`) is taken to be valid: the runtime check
+validates uniform values.
+
+## Why is this bad?
+GLSL ES 3.00 leaves `pow(x, y)` undefined for `x = 0` and `y ≤ 0` (§8.2). `exp2(y * log2(0))`
+is `exp2(-∞ * y)`: `+∞` for a negative `y` and NaN for `y = 0`.
+
+## Example
+```glsl
+float f = pow(max(dot(n, l), 0.0), k - 1.0);   // k - 1.0 can be 0 or negative
+```
+
+## Use instead
+```glsl
+float f = pow(max(dot(n, l), 1e-4), k - 1.0);  // a base that is never 0
+```
+(or make the exponent positive, `max(k - 1.0, 1e-4)`). 1e-4 is above `mediump`'s smallest
+normal number (6.1e-5), so the guard survives in `mediump` too.
+
+## References
+- GLSL ES 3.00 specification, §8.2 Exponential Functions: "Results are undefined if x = 0 and
+  y ≤ 0."
+"#;
+
+fn check_negative(cx: &Cx, out: &mut Vec<Diagnostic>) {
+    for (id, f) in cx.functions() {
+        for (h, e) in f.expressions.iter() {
+            let E::Math { fun: Mf::Pow, arg, arg1: Some(_), .. } = *e else { continue };
+            let span = cx.span(f, h);
+            if span.is_empty() {
+                continue;
+            }
+            let base = cx.operand(f, h, arg);
+            let Some(b) = cx.sound.num(id, base) else { continue };
+            let bi = b.hull();
+            if bi.lo >= 0.0 || b.facts.has(Facts::NN) {
+                continue;
+            }
+            let bspan = cx.span(f, base);
+            let what = cx.what(f, id, base);
+            let label = if bi.lo.is_finite() {
+                format!("{what} can be as low as {}", super::fmt_num(bi.lo))
+            } else {
+                format!("{what} can be negative")
+            };
+            let mut d = Diagnostic::warning(NEGATIVE.id, "`pow` base can be negative, where `pow` is undefined (NaN)", bspan)
+                .with_label(label)
+                .with_note("GLSL ES 3.00 §8.2: pow(x, y) is undefined if x < 0")
+                .with_help("clamp the base to 0");
+            if !bspan.is_empty() {
+                d = d.with_fix(Fix::suggested("wrap the base in `max(…, 0.0)`", bspan, format!("max({}, 0.0)", cx.text(bspan))));
+            }
+            out.push(d);
+        }
+    }
+}
+
+fn check_zero(cx: &Cx, out: &mut Vec<Diagnostic>) {
+    for (id, f) in cx.functions() {
+        for (h, e) in f.expressions.iter() {
+            let E::Math { fun: Mf::Pow, arg, arg1: Some(y), .. } = *e else { continue };
+            let span = cx.span(f, h);
+            if span.is_empty() {
+                continue;
+            }
+            let base = cx.operand(f, h, arg);
+            let exp = cx.operand(f, h, y);
+            let (Some(b), Some(x)) = (cx.sound.num(id, base), cx.sound.num(id, exp)) else { continue };
+            let (bi, xi) = (b.hull(), x.hull());
+            if bi.lo < 0.0 && !b.facts.has(Facts::NN) {
+                continue; // pow-negative-base says it
+            }
+            let base_zero = bi.contains(0.0) && !b.facts.has(Facts::POS);
+            let exp_nonpositive = xi.lo <= 0.0 && !x.facts.has(Facts::POS);
+            if !base_zero || !exp_nonpositive {
+                continue;
+            }
+            let bspan = cx.span(f, base);
+            let xspan = cx.span(f, exp);
+            let mut d = Diagnostic::warning(ZERO.id, "`pow` base can be 0 while the exponent can be ≤ 0, where `pow` is undefined", bspan)
+                .with_label(format!("{} can be 0", cx.what(f, id, base)))
+                .with_note("GLSL ES 3.00 §8.2: pow(x, y) is undefined if x = 0 and y <= 0")
+                .with_help("keep the base above 0");
+            if !xspan.is_empty() {
+                d = d.with_secondary(xspan, format!("the exponent can be ≤ 0: {}", describe(xi)));
+            }
+            if !bspan.is_empty() {
+                d = d.with_fix(Fix::suggested("wrap the base in `max(…, 1e-4)`", bspan, format!("max({}, 1e-4)", cx.text(bspan))));
+            }
+            out.push(d);
+        }
+    }
+}

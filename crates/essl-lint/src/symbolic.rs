@@ -1,0 +1,216 @@
+//! Symbolic reasoning on one function's naga expressions, where intervals lose the relation
+//! between two values: `u + 0.1 > u` whatever `u` is, `max(a, b) ≥ b`.
+//!
+//! Values are written as linear forms over *atoms* (a uniform or input read, a parameter, or an
+//! expression the forms do not look into); two forms whose difference is a constant compare
+//! exactly. Locals stored once (outside loops) stand for their stored value.
+
+use std::collections::{HashMap, HashSet};
+
+use naga::{BinaryOperator as Bo, Expression as E, Function, Handle, MathFunction as Mf, UnaryOperator as Uo};
+
+use crate::analysis::{literal, Analysis, Place, Root, ANY};
+
+/// A value a linear form is built on.
+#[derive(Clone, Debug, PartialEq, Eq, Hash)]
+enum Atom {
+    /// A variable that never changes while the shader runs (a uniform, an input).
+    Place(Place),
+    /// A by-value parameter.
+    Arg(u32),
+    /// An expression the forms do not look into.
+    Expr(usize),
+}
+
+/// `Σ coefficient × atom + constant`.
+#[derive(Clone, Debug, PartialEq)]
+struct Lin {
+    terms: Vec<(Atom, f64)>,
+    c: f64,
+}
+
+impl Lin {
+    fn constant(c: f64) -> Lin {
+        Lin { terms: Vec::new(), c }
+    }
+
+    fn atom(a: Atom) -> Lin {
+        Lin { terms: vec![(a, 1.0)], c: 0.0 }
+    }
+
+    fn add(mut self, o: &Lin, k: f64) -> Lin {
+        for (a, x) in &o.terms {
+            match self.terms.iter_mut().find(|(b, _)| b == a) {
+                Some((_, y)) => *y += k * x,
+                None => self.terms.push((a.clone(), k * x)),
+            }
+        }
+        self.terms.retain(|(_, x)| *x != 0.0);
+        self.c += k * o.c;
+        self
+    }
+
+    fn scale(mut self, k: f64) -> Lin {
+        for (_, x) in &mut self.terms {
+            *x *= k;
+        }
+        self.terms.retain(|(_, x)| *x != 0.0);
+        self.c *= k;
+        self
+    }
+
+    fn as_constant(&self) -> Option<f64> {
+        self.terms.is_empty().then_some(self.c)
+    }
+}
+
+/// Symbolic facts about the expressions of one function.
+pub struct Sym<'a> {
+    module: &'a naga::Module,
+    f: &'a Function,
+    id: usize,
+    an: &'a Analysis,
+    /// Private globals some user function writes (not stable across a function).
+    written: &'a HashSet<usize>,
+}
+
+/// The operand `h` stands for: through loads of locals stored once, and splats.
+pub fn resolve(f: &Function, an: &Analysis, id: usize, mut h: Handle<E>) -> Handle<E> {
+    let single: &HashMap<usize, Handle<E>> = &an.functions[id].single_store;
+    for _ in 0..16 {
+        match f.expressions[h] {
+            E::Load { pointer } => match f.expressions[pointer] {
+                E::LocalVariable(l) => match single.get(&l.index()) {
+                    Some(v) => h = *v,
+                    None => return h,
+                },
+                _ => return h,
+            },
+            E::Splat { value, .. } => h = value,
+            _ => return h,
+        }
+    }
+    h
+}
+
+impl<'a> Sym<'a> {
+    /// The symbolic view of function `id`.
+    pub fn new(module: &'a naga::Module, f: &'a Function, id: usize, an: &'a Analysis, written: &'a HashSet<usize>) -> Sym<'a> {
+        Sym { module, f, id, an, written }
+    }
+
+    fn lin(&self, h: Handle<E>, depth: u32) -> Lin {
+        let atom = || Lin::atom(Atom::Expr(h.index()));
+        if depth > 12 {
+            return atom();
+        }
+        let h = resolve(self.f, self.an, self.id, h);
+        match &self.f.expressions[h] {
+            E::Literal(l) => Lin::constant(literal(l)),
+            E::Constant(_) => match self.an.num(self.id, h).and_then(|n| n.hull().as_point()) {
+                Some(c) => Lin::constant(c),
+                None => atom(),
+            },
+            E::Binary { op: Bo::Add, left, right } => self.lin(*left, depth + 1).add(&self.lin(*right, depth + 1), 1.0),
+            E::Binary { op: Bo::Subtract, left, right } => self.lin(*left, depth + 1).add(&self.lin(*right, depth + 1), -1.0),
+            E::Binary { op: Bo::Multiply, left, right } => {
+                let (a, b) = (self.lin(*left, depth + 1), self.lin(*right, depth + 1));
+                match (a.as_constant(), b.as_constant()) {
+                    (Some(k), _) => b.scale(k),
+                    (_, Some(k)) => a.scale(k),
+                    _ => Lin::atom(Atom::Expr(h.index())),
+                }
+            }
+            E::Binary { op: Bo::Divide, left, right } => {
+                let (a, b) = (self.lin(*left, depth + 1), self.lin(*right, depth + 1));
+                match b.as_constant() {
+                    Some(k) if k != 0.0 => a.scale(1.0 / k),
+                    _ => Lin::atom(Atom::Expr(h.index())),
+                }
+            }
+            E::Unary { op: Uo::Negate, expr } => self.lin(*expr, depth + 1).scale(-1.0),
+            E::FunctionArgument(i) => Lin::atom(Atom::Arg(*i)),
+            E::Load { pointer } => match self.an.functions[self.id].places[pointer.index()].clone() {
+                Some(p) if self.stable(&p) => Lin::atom(Atom::Place(p)),
+                _ => Lin::atom(Atom::Expr(h.index())),
+            },
+            _ => Lin::atom(Atom::Expr(h.index())),
+        }
+    }
+
+    /// Whether a place holds the same value for a whole run of the shader.
+    fn stable(&self, p: &Place) -> bool {
+        if p.path.contains(&ANY) {
+            return false;
+        }
+        match p.root {
+            Root::Global(g) => {
+                let h = self.module.global_variables.iter().nth(g).map(|(h, _)| h).expect("global");
+                self.module.global_variables[h].space != naga::AddressSpace::Private || !self.written.contains(&g)
+            }
+            _ => false,
+        }
+    }
+
+    /// A lower bound of `a - b` (`None` standing for 0), in exact arithmetic.
+    pub fn diff_lower(&self, a: Option<Handle<E>>, b: Option<Handle<E>>) -> f64 {
+        self.diff_lower_d(a, b, 0)
+    }
+
+    fn hull(&self, h: Option<Handle<E>>) -> crate::interval::Interval {
+        match h {
+            Some(h) => self.an.num(self.id, h).map(|n| n.hull()).unwrap_or(crate::interval::Interval::FULL),
+            None => crate::interval::Interval::point(0.0),
+        }
+    }
+
+    fn diff_lower_d(&self, a: Option<Handle<E>>, b: Option<Handle<E>>, depth: u32) -> f64 {
+        let (ia, ib) = (self.hull(a), self.hull(b));
+        let mut best = if ia.is_empty() || ib.is_empty() { f64::NEG_INFINITY } else { ia.lo - ib.hi };
+        let la = a.map(|h| self.lin(h, 0)).unwrap_or(Lin::constant(0.0));
+        let lb = b.map(|h| self.lin(h, 0)).unwrap_or(Lin::constant(0.0));
+        if let Some(c) = la.add(&lb, -1.0).as_constant() {
+            best = best.max(c);
+        }
+        if depth >= 4 {
+            return best;
+        }
+        let d = depth + 1;
+        if let Some(a) = a {
+            let ra = resolve(self.f, self.an, self.id, a);
+            match self.f.expressions[ra] {
+                E::Math { fun: Mf::Max, arg, arg1: Some(y), .. } => {
+                    best = best.max(self.diff_lower_d(Some(arg), b, d).max(self.diff_lower_d(Some(y), b, d)));
+                }
+                E::Math { fun: Mf::Clamp, arg1: Some(lo), arg2: Some(hi), .. } => {
+                    best = best.max(self.diff_lower_d(Some(lo), b, d).min(self.diff_lower_d(Some(hi), b, d)));
+                }
+                E::Binary { op: Bo::Subtract, left, right } if b.is_none() => {
+                    best = best.max(self.diff_lower_d(Some(left), Some(right), d));
+                }
+                _ => {}
+            }
+        }
+        if let Some(b) = b {
+            let rb = resolve(self.f, self.an, self.id, b);
+            match self.f.expressions[rb] {
+                E::Math { fun: Mf::Min, arg, arg1: Some(y), .. } => {
+                    best = best.max(self.diff_lower_d(a, Some(arg), d).max(self.diff_lower_d(a, Some(y), d)));
+                }
+                E::Math { fun: Mf::Clamp, arg1: Some(lo), arg2: Some(hi), .. } => {
+                    best = best.max(self.diff_lower_d(a, Some(lo), d).min(self.diff_lower_d(a, Some(hi), d)));
+                }
+                E::Binary { op: Bo::Subtract, left, right } if a.is_none() => {
+                    best = best.max(self.diff_lower_d(Some(right), Some(left), d));
+                }
+                _ => {}
+            }
+        }
+        best
+    }
+
+    /// Whether `h` is certainly not zero (a scalar, or every component of a vector).
+    pub fn nonzero(&self, h: Handle<E>) -> bool {
+        self.diff_lower(Some(h), None) > 0.0 || self.diff_lower(None, Some(h)) > 0.0
+    }
+}
