@@ -1,1 +1,152 @@
-fn main() {}
+//! `essl`: check GLSL ES 3.00 (WebGL2) shaders.
+
+use std::path::PathBuf;
+use std::process::ExitCode;
+
+use clap::{Args, Parser, Subcommand, ValueEnum};
+use essl::Stage;
+use essl_cli::lint::{ColorMode, LintOptions};
+use essl_cli::output::Format;
+
+/// GLSL ES 3.00 (WebGL2) shader toolkit.
+#[derive(Parser, Debug)]
+#[command(name = "essl", version, about, long_about = None)]
+struct Cli {
+    #[command(subcommand)]
+    command: Command,
+}
+
+#[derive(Subcommand, Debug)]
+enum Command {
+    /// Check shaders as WebGL2 would, and link each NAME.vert + NAME.frag pair.
+    ///
+    /// Exit status: 0 clean (warnings allowed), 1 errors, 2 usage or I/O errors.
+    Lint(LintArgs),
+    /// Score the front end on the conformance corpora (WebGL, dEQP, glslang, webgl2fundamentals).
+    Conformance(ConformanceArgs),
+}
+
+#[derive(Args, Debug)]
+struct LintArgs {
+    /// Shader files and folders (searched recursively for .vert/.frag/.vs/.fs/.vsh/.fsh).
+    #[arg(required = true, value_name = "PATH")]
+    paths: Vec<PathBuf>,
+
+    /// The stage of named files whose extension does not tell it.
+    #[arg(long, value_enum, value_name = "STAGE")]
+    stage: Option<StageArg>,
+
+    /// Output format.
+    #[arg(long, value_enum, default_value_t = FormatArg::Human)]
+    format: FormatArg,
+
+    /// When to colour the output (auto: when stdout is a terminal).
+    #[arg(long, value_enum, default_value_t = ColorArg::Auto, value_name = "WHEN")]
+    color: ColorArg,
+
+    /// Apply the fixes that are certain, in place, then report what remains.
+    #[arg(long)]
+    fix: bool,
+
+    /// Make a kind of diagnostic fail the run (`warnings`: every warning).
+    #[arg(long, value_enum, value_name = "LINT")]
+    deny: Vec<DenyArg>,
+
+    /// Define a macro before the first line, as `#define NAME VALUE` (VALUE defaults to 1).
+    #[arg(short = 'D', value_name = "NAME[=VALUE]", value_parser = parse_define)]
+    define: Vec<(String, String)>,
+
+    /// Do not link NAME.vert + NAME.frag pairs.
+    #[arg(long)]
+    no_link: bool,
+}
+
+#[derive(Args, Debug)]
+struct ConformanceArgs {
+    /// The folder holding the corpora's .jsonl files.
+    #[arg(long, default_value = "../shared/corpora", value_name = "DIR")]
+    corpora: PathBuf,
+
+    /// Also write the tables, with an introduction, as Markdown to this file.
+    #[arg(long, value_name = "FILE")]
+    markdown: Option<PathBuf>,
+
+    /// List every case where essl disagrees with the expectation.
+    #[arg(long)]
+    failures: bool,
+}
+
+#[derive(Clone, Copy, Debug, ValueEnum)]
+enum StageArg {
+    Vertex,
+    Fragment,
+}
+
+#[derive(Clone, Copy, Debug, ValueEnum)]
+enum FormatArg {
+    /// rustc-style diagnostics and a summary line.
+    Human,
+    /// JSON Lines: one object per shader and per program.
+    Json,
+}
+
+#[derive(Clone, Copy, Debug, ValueEnum)]
+enum ColorArg {
+    Auto,
+    Always,
+    Never,
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
+enum DenyArg {
+    /// Every warning.
+    Warnings,
+}
+
+fn parse_define(s: &str) -> Result<(String, String), String> {
+    let (name, value) = match s.split_once('=') {
+        Some((n, v)) => (n, v),
+        None => (s, "1"),
+    };
+    let valid = name
+        .chars()
+        .next()
+        .is_some_and(|c| c.is_ascii_alphabetic() || c == '_')
+        && name.chars().all(|c| c.is_ascii_alphanumeric() || c == '_');
+    if !valid {
+        return Err(format!(
+            "`{name}` is not a macro name (letters, digits and `_`, not starting with a digit)"
+        ));
+    }
+    Ok((name.to_string(), value.to_string()))
+}
+
+fn main() -> ExitCode {
+    let cli = Cli::parse();
+    let status = match cli.command {
+        Command::Lint(args) => essl_cli::lint::run(&LintOptions {
+            paths: args.paths,
+            stage: args.stage.map(|s| match s {
+                StageArg::Vertex => Stage::Vertex,
+                StageArg::Fragment => Stage::Fragment,
+            }),
+            format: match args.format {
+                FormatArg::Human => Format::Human,
+                FormatArg::Json => Format::Json,
+            },
+            color: match args.color {
+                ColorArg::Auto => ColorMode::Auto,
+                ColorArg::Always => ColorMode::Always,
+                ColorArg::Never => ColorMode::Never,
+            },
+            fix: args.fix,
+            deny_warnings: args.deny.contains(&DenyArg::Warnings),
+            defines: args.define,
+            link: !args.no_link,
+        }),
+        Command::Conformance(args) => {
+            essl_cli::conformance::run(&args.corpora, args.markdown.as_deref(), args.failures)
+        }
+    };
+    ExitCode::from(status as u8)
+}

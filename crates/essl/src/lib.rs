@@ -16,6 +16,7 @@ pub mod parse;
 pub mod preprocess;
 pub mod program;
 pub mod reflect;
+pub mod render;
 pub mod shader;
 pub mod source;
 pub mod token;

@@ -1,0 +1,13 @@
+//! The `essl` command's library: each subcommand is a module with a `run` function that returns
+//! the exit status, so that the binary (`main.rs`, the clap definitions) stays thin and tests can
+//! call the same code.
+//!
+//! - [`lint`]: `essl lint` — check shaders and programs ([`files`] finds them, [`fix`] applies
+//!   certain fixes, [`output`] prints the results as text or JSON Lines).
+//! - [`conformance`]: `essl conformance` — score the front end on the conformance corpora.
+
+pub mod conformance;
+pub mod files;
+pub mod fix;
+pub mod lint;
+pub mod output;

@@ -1,0 +1,437 @@
+//! Printing `essl lint`'s results: human (codespan, optionally coloured) or JSON Lines.
+//!
+//! Each format is a pair of functions, one for a shader and one for a program, so that a new
+//! format (SARIF, GitHub annotations) is one more pair and one more [`Format`] variant.
+
+use std::io::Write;
+
+use codespan_reporting::term::termcolor::{Buffer, Color, ColorSpec, WriteColor};
+use essl::diagnostic::Diagnostic;
+use essl::link::{LinkDiagnostic, Program};
+use essl::render;
+use essl::source::SourceFile;
+use essl::{Shader, Stage};
+use serde_json::{json, Value};
+
+use crate::files::{Input, ReadError};
+use crate::lint::{Checked, LintOptions, LintResults, ProgramResult};
+
+/// An output format.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
+pub enum Format {
+    /// rustc-style diagnostics and a summary line.
+    #[default]
+    Human,
+    /// JSON Lines: one object per shader, then one per program, then a summary.
+    Json,
+}
+
+/// What the summary line counts.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Totals {
+    /// Files checked (read or not).
+    pub files: usize,
+    /// Errors in shaders and programs.
+    pub errors: usize,
+    /// Warnings in shaders and programs.
+    pub warnings: usize,
+    /// Pairs linked (both shaders compiled).
+    pub programs: usize,
+    /// Pairs not linked because a shader has errors.
+    pub unlinked: usize,
+    /// Fixes applied by `--fix`.
+    pub fixes: usize,
+}
+
+fn plural(n: usize, word: &str) -> String {
+    match (n, word) {
+        (1, _) => format!("{n} {word}"),
+        (_, "fix") => format!("{n} fixes"),
+        _ => format!("{n} {word}s"),
+    }
+}
+
+impl Totals {
+    /// `N files, E errors, W warnings`, plus `, P programs linked` when any were,
+    /// `, U pairs not linked` when a pair was not linked because a shader has errors, and
+    /// `, F fixes applied` when any were.
+    pub fn line(&self) -> String {
+        let mut s = format!(
+            "{}, {}, {}",
+            plural(self.files, "file"),
+            plural(self.errors, "error"),
+            plural(self.warnings, "warning")
+        );
+        if self.programs > 0 {
+            s.push_str(&format!(", {} linked", plural(self.programs, "program")));
+        }
+        if self.unlinked > 0 {
+            s.push_str(&format!(", {} not linked", plural(self.unlinked, "pair")));
+        }
+        if self.fixes > 0 {
+            s.push_str(&format!(", {} applied", plural(self.fixes, "fix")));
+        }
+        s
+    }
+}
+
+/// Errors and warnings a program adds to the totals: its link diagnostics, or one error for a
+/// failed link that has none. A pair that was not linked because a shader has errors adds
+/// nothing (those errors are counted with the shader).
+pub fn program_counts(vs: &Shader, fs: &Shader, program: &Program) -> (usize, usize) {
+    if !vs.ok() || !fs.ok() {
+        return (0, 0);
+    }
+    let errors = program
+        .diagnostics
+        .iter()
+        .filter(|d| d.diagnostic.is_error())
+        .count();
+    let warnings = program.diagnostics.len() - errors;
+    let errors = if !program.ok && errors == 0 {
+        1
+    } else {
+        errors
+    };
+    (errors, warnings)
+}
+
+/// Writes every result in order (files sorted by path, then programs) and the summary (a line
+/// of text, or a `{"kind":"summary"}` object). Files that could not be listed, read or written
+/// are also reported on stderr.
+pub fn write(
+    out: &mut dyn Write,
+    results: &LintResults,
+    options: &LintOptions,
+    color: bool,
+) -> std::io::Result<()> {
+    for e in &results.collect_errors {
+        eprintln!("error: cannot read {e}");
+    }
+    for f in &results.files {
+        if let Some(e) = &f.read_error {
+            eprintln!("error: cannot read `{}`: {e}", f.input.path.display());
+        }
+        if let Some(e) = &f.write_error {
+            eprintln!(
+                "error: cannot write the fixed `{}`: {e}",
+                f.input.path.display()
+            );
+        }
+    }
+    for f in &results.files {
+        out.write_all(&f.rendered)?;
+    }
+    for p in &results.programs {
+        out.write_all(&p.rendered)?;
+    }
+    let t = results.totals();
+    match options.format {
+        Format::Human => {
+            let mut summary = buffer(color);
+            summary.set_color(ColorSpec::new().set_bold(true))?;
+            write!(summary, "{}", t.line())?;
+            summary.reset()?;
+            if options.deny_warnings && t.warnings > 0 {
+                write!(summary, " (warnings denied)")?;
+            }
+            writeln!(summary)?;
+            out.write_all(summary.as_slice())?;
+        }
+        Format::Json => {
+            let summary = json!({
+                "kind": "summary",
+                "files": t.files,
+                "errors": t.errors,
+                "warnings": t.warnings,
+                "programs": t.programs,
+                "unlinked": t.unlinked,
+                "fixes": t.fixes,
+            });
+            writeln!(out, "{summary}")?;
+        }
+    }
+    Ok(())
+}
+
+fn buffer(color: bool) -> Buffer {
+    if color {
+        Buffer::ansi()
+    } else {
+        Buffer::no_color()
+    }
+}
+
+/// A file's output in `options.format`.
+pub fn render_file(
+    input: &Input,
+    checked: &Result<Checked, ReadError>,
+    options: &LintOptions,
+    color: bool,
+) -> Vec<u8> {
+    match options.format {
+        Format::Human => human_file(input, checked, options, color),
+        Format::Json => {
+            let mut line = json_file(input, checked, options).to_string().into_bytes();
+            line.push(b'\n');
+            line
+        }
+    }
+}
+
+/// A program's result, rendered in `options.format`.
+pub fn program_result(
+    vertex: &Input,
+    fragment: &Input,
+    vs: &Shader,
+    fs: &Shader,
+    program: &Program,
+    options: &LintOptions,
+    color: bool,
+) -> ProgramResult {
+    let rendered = match options.format {
+        Format::Human => human_program(vertex, fragment, vs, fs, program, color),
+        Format::Json => {
+            let mut line = json_program(vertex, fragment, vs, fs, program)
+                .to_string()
+                .into_bytes();
+            line.push(b'\n');
+            line
+        }
+    };
+    let (errors, warnings) = program_counts(vs, fs, program);
+    ProgramResult {
+        vertex: vertex.clone(),
+        fragment: fragment.clone(),
+        linked: vs.ok() && fs.ok(),
+        ok: program.ok,
+        errors,
+        warnings,
+        rendered,
+    }
+}
+
+/// A file's human output: how many fixes were applied, then its diagnostics.
+pub fn human_file(
+    input: &Input,
+    checked: &Result<Checked, ReadError>,
+    options: &LintOptions,
+    color: bool,
+) -> Vec<u8> {
+    let mut buf = buffer(color);
+    if let Ok(c) = checked {
+        let _ = write_human_file(&mut buf, input, c, options);
+    }
+    buf.into_inner()
+}
+
+fn write_human_file(
+    buf: &mut Buffer,
+    input: &Input,
+    c: &Checked,
+    options: &LintOptions,
+) -> std::io::Result<()> {
+    if options.fix && c.fixes_applied > 0 {
+        buf.set_color(ColorSpec::new().set_fg(Some(Color::Green)).set_bold(true))?;
+        write!(buf, "fixed")?;
+        buf.reset()?;
+        writeln!(
+            buf,
+            " `{}`: {} applied",
+            input.path.display(),
+            plural(c.fixes_applied, "fix")
+        )?;
+    }
+    render::emit_human(
+        buf,
+        &c.shader.file,
+        &c.shader.diagnostics,
+        &render::default_config(),
+    )
+}
+
+fn program_name(vertex: &Input, fragment: &Input) -> String {
+    format!(
+        "`{}` + `{}`",
+        vertex.path.display(),
+        fragment.path.display()
+    )
+}
+
+/// A program's human output: one line when it links cleanly or was not linked; otherwise its
+/// diagnostics, each shown in the shader it points into, and the info log when linking failed.
+pub fn human_program(
+    vertex: &Input,
+    fragment: &Input,
+    vs: &Shader,
+    fs: &Shader,
+    program: &Program,
+    color: bool,
+) -> Vec<u8> {
+    let mut buf = buffer(color);
+    let _ = write_human_program(&mut buf, vertex, fragment, vs, fs, program);
+    buf.into_inner()
+}
+
+fn write_human_program(
+    buf: &mut Buffer,
+    vertex: &Input,
+    fragment: &Input,
+    vs: &Shader,
+    fs: &Shader,
+    program: &Program,
+) -> std::io::Result<()> {
+    let name = program_name(vertex, fragment);
+    if !vs.ok() || !fs.ok() {
+        let broken = match (vs.ok(), fs.ok()) {
+            (false, false) => "the vertex and fragment shaders have errors",
+            (false, true) => "the vertex shader has errors",
+            _ => "the fragment shader has errors",
+        };
+        writeln!(buf, "program {name}: not linked ({broken})")?;
+        return Ok(());
+    }
+    if program.ok {
+        buf.set_color(ColorSpec::new().set_fg(Some(Color::Green)).set_bold(true))?;
+        write!(buf, "linked")?;
+        buf.reset()?;
+        writeln!(
+            buf,
+            " {name}: {}, {}",
+            plural(program.uniforms.len(), "active uniform"),
+            plural(program.attributes.len(), "active attribute")
+        )?;
+    } else {
+        buf.set_color(ColorSpec::new().set_fg(Some(Color::Red)).set_bold(true))?;
+        write!(buf, "error")?;
+        buf.set_color(ColorSpec::new().set_bold(true))?;
+        write!(buf, ": program {name} does not link")?;
+        buf.reset()?;
+        writeln!(buf)?;
+    }
+    let config = render::default_config();
+    for d in &program.diagnostics {
+        let one = std::slice::from_ref(&d.diagnostic);
+        match file_of(vs, fs, d) {
+            Some(file) => render::emit_human(buf, file, one, &config)?,
+            None => render::emit_human_unlocated(buf, one, &config)?,
+        }
+    }
+    if !program.ok && !program.log.is_empty() {
+        writeln!(buf, "info log (getProgramInfoLog):")?;
+        for line in program.log.lines() {
+            writeln!(buf, "    {line}")?;
+        }
+        writeln!(buf)?;
+    }
+    Ok(())
+}
+
+fn file_of<'a>(vs: &'a Shader, fs: &'a Shader, d: &LinkDiagnostic) -> Option<&'a SourceFile> {
+    match d.stage? {
+        Stage::Vertex => Some(&vs.file),
+        Stage::Fragment => Some(&fs.file),
+    }
+}
+
+/// A shader's JSON object:
+/// `{"kind":"shader","file","stage","ok","diagnostics":[…]}`, with `"fixes_applied"` under
+/// `--fix`, and `"error"` when the file could not be read (or the fix written back).
+pub fn json_file(
+    input: &Input,
+    checked: &Result<Checked, ReadError>,
+    options: &LintOptions,
+) -> Value {
+    let file = input.path.display().to_string();
+    match checked {
+        Err(e) => json!({
+            "kind": "shader",
+            "file": file,
+            "stage": input.stage.as_str(),
+            "ok": false,
+            "error": e.to_string(),
+            "diagnostics": [],
+        }),
+        Ok(c) => {
+            let diagnostics: Vec<Value> = c
+                .shader
+                .diagnostics
+                .iter()
+                .map(|d| render::to_json(&c.shader.file, d))
+                .collect();
+            let mut v = json!({
+                "kind": "shader",
+                "file": file,
+                "stage": input.stage.as_str(),
+                "ok": c.shader.ok(),
+                "diagnostics": diagnostics,
+            });
+            if options.fix {
+                v["fixes_applied"] = json!(c.fixes_applied);
+                if let Some(e) = &c.write_error {
+                    v["error"] = json!(e);
+                }
+            }
+            v
+        }
+    }
+}
+
+/// A program's JSON object: `{"kind":"program","vertex","fragment","ok","log","uniforms":[{"name",
+/// "type","size"}],"attributes":[{"name","type","size","location"}],"diagnostics":[…]}`; each
+/// diagnostic also carries `"file"` (null, with null positions, when it points into neither
+/// shader).
+pub fn json_program(
+    vertex: &Input,
+    fragment: &Input,
+    vs: &Shader,
+    fs: &Shader,
+    program: &Program,
+) -> Value {
+    let uniforms: Vec<Value> = program
+        .uniforms
+        .iter()
+        .map(|u| json!({"name": u.name, "type": u.ty.name(), "size": u.size}))
+        .collect();
+    let attributes: Vec<Value> = program
+        .attributes
+        .iter()
+        .map(|a| json!({"name": a.name, "type": a.ty.name(), "size": a.size, "location": a.location}))
+        .collect();
+    let diagnostics: Vec<Value> = program
+        .diagnostics
+        .iter()
+        .map(|d| match file_of(vs, fs, d) {
+            Some(file) => {
+                let mut v = render::to_json(file, &d.diagnostic);
+                v["file"] = json!(file.name());
+                v
+            }
+            None => unlocated_json(&d.diagnostic),
+        })
+        .collect();
+    json!({
+        "kind": "program",
+        "vertex": vertex.path.display().to_string(),
+        "fragment": fragment.path.display().to_string(),
+        "ok": program.ok,
+        "log": program.log,
+        "uniforms": uniforms,
+        "attributes": attributes,
+        "diagnostics": diagnostics,
+    })
+}
+
+fn unlocated_json(d: &Diagnostic) -> Value {
+    json!({
+        "severity": d.severity.as_str(),
+        "code": d.code,
+        "message": d.message,
+        "file": null,
+        "line": null,
+        "column": null,
+        "end_line": null,
+        "end_column": null,
+        "help": d.help,
+    })
+}

@@ -1,0 +1,380 @@
+//! The `essl` binary end to end: exit statuses, usage and I/O errors, JSON shape, `--fix`.
+
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output};
+
+fn repo_root() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("../..")
+        .canonicalize()
+        .unwrap()
+}
+
+fn essl(args: &[&str], dir: &Path) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_essl"))
+        .args(args)
+        .current_dir(dir)
+        .env_remove("CLICOLOR_FORCE")
+        .output()
+        .expect("the essl binary runs")
+}
+
+fn stdout(o: &Output) -> String {
+    String::from_utf8(o.stdout.clone()).unwrap()
+}
+
+fn stderr(o: &Output) -> String {
+    String::from_utf8(o.stderr.clone()).unwrap()
+}
+
+const GOOD_VERT: &str =
+    "#version 300 es\nin vec4 a_position;\nvoid main() {\n    gl_Position = a_position;\n}\n";
+const GOOD_FRAG: &str = "#version 300 es\nprecision highp float;\nuniform vec4 u_color;\nout vec4 color;\nvoid main() {\n    color = u_color;\n}\n";
+
+#[test]
+fn clean_shaders_exit_0() {
+    let o = essl(
+        &[
+            "lint",
+            "--color",
+            "never",
+            "shaders-glsl/spot-step.vert",
+            "shaders-glsl/spot-step.frag",
+        ],
+        &repo_root(),
+    );
+    assert_eq!(o.status.code(), Some(0), "{}{}", stdout(&o), stderr(&o));
+    assert_eq!(stdout(&o), "linked `shaders-glsl/spot-step.vert` + `shaders-glsl/spot-step.frag`: 9 active uniforms, 2 active attributes\n2 files, 0 errors, 0 warnings, 1 program linked\n");
+}
+
+#[test]
+fn errors_exit_1() {
+    let o = essl(
+        &[
+            "lint",
+            "--color",
+            "never",
+            "shaders-glsl/spot-smooth-nbsp.frag",
+        ],
+        &repo_root(),
+    );
+    assert_eq!(o.status.code(), Some(1));
+    let out = stdout(&o);
+    assert!(out.contains("error[missing-semicolon]"), "{out}");
+    assert!(
+        out.contains("--> shaders-glsl/spot-smooth-nbsp.frag:19:27"),
+        "{out}"
+    );
+    assert!(out.lines().last().unwrap().starts_with("1 file, "), "{out}");
+    assert!(!out.contains('\x1b'), "no colour when piped");
+}
+
+#[test]
+fn color_always_colours() {
+    let o = essl(
+        &[
+            "lint",
+            "--color",
+            "always",
+            "shaders-glsl/spot-smooth-nbsp.frag",
+        ],
+        &repo_root(),
+    );
+    assert!(stdout(&o).contains('\x1b'));
+}
+
+#[test]
+fn missing_file_exits_2_and_checks_the_rest() {
+    let o = essl(
+        &["lint", "no/such/file.frag", "shaders-glsl/spot-step.frag"],
+        &repo_root(),
+    );
+    assert_eq!(o.status.code(), Some(2));
+    assert!(
+        stderr(&o).contains("no/such/file.frag: no such file or directory"),
+        "{}",
+        stderr(&o)
+    );
+    assert!(stdout(&o).contains("1 file, 0 errors"), "{}", stdout(&o));
+}
+
+#[test]
+fn unknown_extension_is_a_usage_error_unless_stage_is_given() {
+    let dir = tempfile::tempdir().unwrap();
+    std::fs::write(dir.path().join("shader.glsl"), GOOD_FRAG).unwrap();
+    let o = essl(&["lint", "shader.glsl"], dir.path());
+    assert_eq!(o.status.code(), Some(2));
+    assert!(
+        stderr(&o).contains("cannot tell the stage of `shader.glsl`"),
+        "{}",
+        stderr(&o)
+    );
+    assert!(stderr(&o).contains("--stage"), "{}", stderr(&o));
+    let o = essl(&["lint", "--stage", "fragment", "shader.glsl"], dir.path());
+    assert_eq!(o.status.code(), Some(0), "{}", stdout(&o));
+    // In a folder, files of other extensions are skipped.
+    let o = essl(&["lint", "."], dir.path());
+    assert_eq!(o.status.code(), Some(0));
+    assert!(stdout(&o).contains("0 files"), "{}", stdout(&o));
+}
+
+#[test]
+fn bad_arguments_exit_2() {
+    let root = repo_root();
+    assert_eq!(essl(&["lint"], &root).status.code(), Some(2));
+    assert_eq!(
+        essl(&["lint", "--format", "xml", "shaders-glsl"], &root)
+            .status
+            .code(),
+        Some(2)
+    );
+    assert_eq!(
+        essl(&["lint", "-D", "1X", "shaders-glsl"], &root)
+            .status
+            .code(),
+        Some(2)
+    );
+    assert_eq!(essl(&["frobnicate"], &root).status.code(), Some(2));
+}
+
+#[test]
+fn non_utf8_file_exits_2_naming_the_offset() {
+    let dir = tempfile::tempdir().unwrap();
+    let mut bytes = b"#version 300 es\n// caf".to_vec();
+    bytes.push(0xE9); // Latin-1 é
+    bytes.extend_from_slice(b"\nvoid main() {}\n");
+    std::fs::write(dir.path().join("latin1.frag"), &bytes).unwrap();
+    let o = essl(&["lint", "latin1.frag"], dir.path());
+    assert_eq!(o.status.code(), Some(2));
+    let err = stderr(&o);
+    assert!(err.contains("latin1.frag"), "{err}");
+    assert!(
+        err.contains("not UTF-8") && err.contains("offset 22"),
+        "{err}"
+    );
+    // --fix never touches it.
+    let o = essl(&["lint", "--fix", "latin1.frag"], dir.path());
+    assert_eq!(o.status.code(), Some(2));
+    assert_eq!(
+        std::fs::read(dir.path().join("latin1.frag")).unwrap(),
+        bytes
+    );
+}
+
+#[test]
+fn huge_file_is_refused() {
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("huge.frag");
+    let f = std::fs::File::create(&path).unwrap();
+    f.set_len(16 * 1024 * 1024 + 1).unwrap();
+    let o = essl(&["lint", "huge.frag"], dir.path());
+    assert_eq!(o.status.code(), Some(2));
+    assert!(
+        stderr(&o).contains("huge.frag") && stderr(&o).contains("16 MiB"),
+        "{}",
+        stderr(&o)
+    );
+}
+
+#[test]
+fn warnings_pass_unless_denied() {
+    let dir = tempfile::tempdir().unwrap();
+    let text = GOOD_VERT.replace("in vec4", "// a\u{a0}comment\nin vec4");
+    std::fs::write(dir.path().join("w.vert"), text).unwrap();
+    let o = essl(&["lint", "w.vert"], dir.path());
+    assert_eq!(o.status.code(), Some(0), "{}", stdout(&o));
+    assert!(stdout(&o).contains("1 warning"), "{}", stdout(&o));
+    let o = essl(&["lint", "--deny", "warnings", "w.vert"], dir.path());
+    assert_eq!(o.status.code(), Some(1));
+    assert!(stdout(&o).contains("(warnings denied)"), "{}", stdout(&o));
+}
+
+#[test]
+fn defines_reach_the_preprocessor() {
+    let dir = tempfile::tempdir().unwrap();
+    let text = GOOD_VERT.replace(
+        "gl_Position = a_position;",
+        "gl_Position = a_position * SCALE;",
+    );
+    std::fs::write(dir.path().join("d.vert"), text).unwrap();
+    assert_eq!(essl(&["lint", "d.vert"], dir.path()).status.code(), Some(1));
+    assert_eq!(
+        essl(&["lint", "-D", "SCALE=2.0", "d.vert"], dir.path())
+            .status
+            .code(),
+        Some(0)
+    );
+    assert_eq!(
+        essl(&["lint", "-DSCALE=2.0", "d.vert"], dir.path())
+            .status
+            .code(),
+        Some(0)
+    );
+}
+
+#[test]
+fn folders_recurse_and_pairs_link() {
+    let dir = tempfile::tempdir().unwrap();
+    let sub = dir.path().join("a/b");
+    std::fs::create_dir_all(&sub).unwrap();
+    std::fs::write(sub.join("p.vert"), GOOD_VERT).unwrap();
+    std::fs::write(sub.join("p.frag"), GOOD_FRAG).unwrap();
+    std::fs::write(sub.join("p.fixed.vert"), GOOD_VERT).unwrap();
+    std::fs::write(
+        sub.join("p.fixed.frag"),
+        GOOD_FRAG.replace("u_color", "u_colour"),
+    )
+    .unwrap();
+    // A varying the vertex shader does not write: a link error.
+    std::fs::write(sub.join("q.vert"), GOOD_VERT).unwrap();
+    std::fs::write(
+        sub.join("q.frag"),
+        GOOD_FRAG
+            .replace("uniform vec4 u_color;", "in vec4 v_color;")
+            .replace("u_color", "v_color"),
+    )
+    .unwrap();
+    std::fs::write(dir.path().join("README.md"), "not a shader").unwrap();
+    let o = essl(&["lint", "--color", "never", "."], dir.path());
+    let out = stdout(&o);
+    assert_eq!(o.status.code(), Some(1), "{out}");
+    assert!(
+        out.contains("linked `a/b/p.fixed.vert` + `a/b/p.fixed.frag`"),
+        "{out}"
+    );
+    assert!(out.contains("linked `a/b/p.vert` + `a/b/p.frag`"), "{out}");
+    assert!(
+        out.contains("error: program `a/b/q.vert` + `a/b/q.frag` does not link"),
+        "{out}"
+    );
+    assert!(
+        out.contains("--> a/b/q.frag:"),
+        "link errors point into the fragment shader: {out}"
+    );
+    assert!(out.contains("info log (getProgramInfoLog):"), "{out}");
+    assert!(
+        out.trim_end()
+            .ends_with("6 files, 1 error, 0 warnings, 3 programs linked"),
+        "{out}"
+    );
+    let o = essl(&["lint", "--no-link", "."], dir.path());
+    assert_eq!(o.status.code(), Some(0));
+}
+
+#[test]
+fn json_lines_shape() {
+    let o = essl(&["lint", "--format", "json", "shaders-glsl"], &repo_root());
+    assert_eq!(o.status.code(), Some(1));
+    let lines: Vec<serde_json::Value> = stdout(&o)
+        .lines()
+        .map(|l| serde_json::from_str(l).expect("each line is JSON"))
+        .collect();
+    let shaders: Vec<_> = lines.iter().filter(|v| v["kind"] == "shader").collect();
+    let programs: Vec<_> = lines.iter().filter(|v| v["kind"] == "program").collect();
+    assert_eq!(shaders.len(), 36);
+    assert_eq!(programs.len(), 18);
+    assert_eq!(lines.last().unwrap()["kind"], "summary");
+    for s in &shaders {
+        assert!(s["file"].as_str().unwrap().starts_with("shaders-glsl/"));
+        assert!(s["stage"] == "vertex" || s["stage"] == "fragment");
+        assert!(s["ok"].is_boolean());
+        for d in s["diagnostics"].as_array().unwrap() {
+            assert!(d["severity"] == "error" || d["severity"] == "warning");
+            for key in ["line", "column", "end_line", "end_column"] {
+                assert!(d[key].as_u64().unwrap() >= 1, "{key} is 1-based: {d}");
+            }
+            assert!(d["code"].is_string() && d["message"].is_string());
+            assert!(d["help"].is_string() || d["help"].is_null());
+            if let Some(fix) = d.get("fix") {
+                assert!(fix["applicability"] == "certain" || fix["applicability"] == "suggested");
+                for e in fix["edits"].as_array().unwrap() {
+                    assert!(e["line"].as_u64().unwrap() >= 1 && e["replacement"].is_string());
+                }
+            }
+        }
+    }
+    let nbsp = shaders
+        .iter()
+        .find(|s| s["file"] == "shaders-glsl/spot-smooth-nbsp.frag")
+        .unwrap();
+    assert_eq!(nbsp["ok"], false);
+    let semi = nbsp["diagnostics"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .find(|d| d["code"] == "missing-semicolon")
+        .unwrap();
+    assert_eq!(
+        (semi["line"].as_u64(), semi["column"].as_u64()),
+        (Some(19), Some(27))
+    );
+    for p in &programs {
+        assert!(p["vertex"].as_str().unwrap().ends_with(".vert"));
+        assert!(p["fragment"].as_str().unwrap().ends_with(".frag"));
+        assert!(p["ok"].is_boolean() && p["log"].is_string());
+        for u in p["uniforms"].as_array().unwrap() {
+            assert!(
+                u["name"].is_string() && u["type"].is_string() && u["size"].as_u64().unwrap() >= 1
+            );
+        }
+        for a in p["attributes"].as_array().unwrap() {
+            assert!(a["name"].is_string() && a["type"].is_string() && a["location"].is_i64());
+        }
+    }
+    let step = programs
+        .iter()
+        .find(|p| p["vertex"] == "shaders-glsl/spot-step.vert")
+        .unwrap();
+    assert_eq!(step["ok"], true);
+    assert!(step["uniforms"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .any(|u| u["name"] == "u_limit" && u["type"] == "FLOAT"));
+    let broken = programs
+        .iter()
+        .find(|p| p["vertex"] == "shaders-glsl/spot-smooth-nbsp.vert")
+        .unwrap();
+    assert_eq!(broken["ok"], false);
+    assert_eq!(broken["log"], "Fragment shader is not compiled.\n");
+}
+
+#[test]
+fn fix_repairs_the_seed_shader() {
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("spot.frag");
+    std::fs::copy(
+        repo_root().join("shaders-glsl/spot-smooth-nbsp.frag"),
+        &path,
+    )
+    .unwrap();
+    let o = essl(
+        &["lint", "--fix", "--color", "never", "spot.frag"],
+        dir.path(),
+    );
+    let out = stdout(&o);
+    assert_eq!(
+        o.status.code(),
+        Some(0),
+        "no error remains after --fix: {out}"
+    );
+    assert!(out.contains("fixed `spot.frag`: "), "{out}");
+    let fixed = std::fs::read_to_string(&path).unwrap();
+    assert!(fixed.contains("uniform float u_innerLimit;\n"));
+    assert!(fixed.contains("-u_lightDirection);\n"));
+    assert!(!fixed
+        .lines()
+        .any(|l| !l.trim_start().starts_with("//") && l.contains('\u{a0}')));
+    // No temporary file is left behind.
+    assert_eq!(std::fs::read_dir(dir.path()).unwrap().count(), 1);
+    // Linting again: no error, nothing left to fix.
+    let o = essl(
+        &["lint", "--fix", "--format", "json", "spot.frag"],
+        dir.path(),
+    );
+    assert_eq!(o.status.code(), Some(0));
+    let first: serde_json::Value =
+        serde_json::from_str(stdout(&o).lines().next().unwrap()).unwrap();
+    assert_eq!(first["ok"], true);
+    assert_eq!(first["fixes_applied"], 0);
+}

@@ -1,0 +1,80 @@
+#!/usr/bin/env bash
+# Times `essl lint` against glslangValidator on the dEQP corpus's `300 es` shaders.
+#
+# Writes every `300 es` case of ../shared/corpora/deqp_gles3.jsonl as CASE.vert + CASE.frag into
+# a temporary folder, builds essl in release mode, then times with hyperfine (in the same run):
+#   essl lint --format json DIR              compile every file, link every CASE.vert + CASE.frag
+#   essl lint --format json --no-link DIR    compile every file (the same work as glslang)
+#   glslangValidator -t case*                one process, all files, its multi-threaded mode
+#   xargs -P2 -n1 glslangValidator           one process per file, two at a time
+# and prints the mean times and the ratios. glslangValidator compiles each file on its own (no
+# `-l`: `-l` links all inputs into one program, which is not what the corpus means).
+#
+# Usage: scripts/bench-lint.sh [CORPORA_DIR] (default: ../shared/corpora)
+# Needs: python3, glslangValidator (Debian glslang-tools), hyperfine (Debian hyperfine).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+corpora="${1:-../shared/corpora}"
+runs="${RUNS:-10}"
+for tool in python3 glslangValidator hyperfine; do
+    command -v "$tool" >/dev/null || { echo "error: $tool is not installed" >&2; exit 2; }
+done
+
+cargo build --release -p essl-cli --quiet
+essl="$PWD/target/release/essl"
+
+dir="$(mktemp -d)"
+trap 'rm -rf "$dir"' EXIT
+python3 - "$corpora/deqp_gles3.jsonl" "$dir/shaders" <<'EOF'
+import json, os, sys
+src, out = sys.argv[1], sys.argv[2]
+os.makedirs(out)
+n = 0
+for line in open(src, encoding="utf-8"):
+    case = json.loads(line)
+    if case.get("version") != "300 es":
+        continue
+    n += 1
+    for key, ext in (("vertex_source", "vert"), ("fragment_source", "frag")):
+        if case.get(key):
+            with open(os.path.join(out, f"case{n:05}.{ext}"), "w", encoding="utf-8") as f:
+                f.write(case[key])
+print(f"{n} cases, {len(os.listdir(out))} files, "
+      f"{sum(os.path.getsize(os.path.join(out, p)) for p in os.listdir(out)) // 1024} KiB")
+EOF
+(cd "$dir/shaders" && ls) > "$dir/files.txt"
+
+echo "machine: $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //')"
+echo "essl: $("$essl" --version); glslangValidator: $(glslangValidator --version | head -1)"
+
+cd "$dir/shaders"
+# The first three are fast: RUNS runs each after a warm-up. One process per file takes minutes,
+# so it runs once (PER_FILE=0 skips it).
+hyperfine --ignore-failure --warmup 1 --runs "$runs" --export-json "$dir/times.json" \
+    -n "essl lint (compile + link pairs)" "$essl lint --format json . > /dev/null" \
+    -n "essl lint --no-link" "$essl lint --format json --no-link . > /dev/null" \
+    -n "glslangValidator -t, all files in one process" "glslangValidator -t case* > /dev/null"
+if [ "${PER_FILE:-1}" != 0 ]; then
+    hyperfine --ignore-failure --runs 1 --export-json "$dir/times-each.json" \
+        -n "glslangValidator, one process per file (xargs -P2)" \
+        "xargs -a $dir/files.txt -P2 -n1 glslangValidator > /dev/null"
+fi
+
+python3 - "$dir/times.json" "$dir/times-each.json" <<'EOF2'
+import json, os, sys
+results = []
+for path in sys.argv[1:]:
+    if os.path.exists(path):
+        results += json.load(open(path))["results"]
+mean = {x["command"]: x["mean"] for x in results}
+print()
+for x in results:
+    print(f"{x['command']:55} {x['mean'] * 1000:9.1f} ms ± {x['stddev'] * 1000 if x['stddev'] else 0:.1f}")
+print()
+essl, essl_nolink, g_all = list(mean.values())[:3]
+print(f"glslangValidator -t (one process) / essl lint:           {g_all / essl:6.2f}x")
+print(f"glslangValidator -t (one process) / essl lint --no-link: {g_all / essl_nolink:6.2f}x")
+if len(mean) > 3:
+    print(f"glslangValidator per file (xargs -P2) / essl lint:       {list(mean.values())[3] / essl:6.2f}x")
+EOF2
