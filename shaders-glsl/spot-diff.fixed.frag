@@ -3,6 +3,9 @@
 //  1. the line marked `-` (`float light = dot(normal, surfaceToLightDirection);`) removed;
 //  2. the `+` and `*` markers at line starts removed (the rest of each line kept as is,
 //     so some lines start with a space).
+//  3. numerics (essl-lint pow-negative-base): `pow(max(dot(normal, halfVector), 0.0), u_shininess)`:
+//     pow is undefined (NaN) for a negative base, and dot(normal, halfVector) < 0 is possible
+//     even where `light > 0.0`.
 // This is the article's `if (dotFromDirection >= u_limit)` spot light with one limit.
 precision mediump float;
 // Passed in from the vertex shader.
@@ -30,7 +33,7 @@ float specular = 0.0;
  if (dotFromDirection >= u_limit) {
  light = dot(normal, surfaceToLightDirection);
  if (light > 0.0) {
- specular = pow(dot(normal, halfVector), u_shininess);
+ specular = pow(max(dot(normal, halfVector), 0.0), u_shininess);
  }
  }
 outColor = u_color;

@@ -2,6 +2,11 @@
 // Variant of article 001 (not a block of the article): spot-step.frag with the article's
 // second diff applied (its `+`/`-` markers removed): `u_limit` -> `u_innerLimit`/`u_outerLimit`,
 // `inLight = clamp((dotFromDirection - u_outerLimit) / limitRange, 0.0, 1.0)`.
+// Numerical fix (essl-lint pow-negative-base): `pow(max(dot(normal, halfVector), 0.0), u_shininess)`;
+// pow is undefined (NaN) for a negative base, and dot(normal, halfVector) < 0 where the surface
+// faces away from the half vector, even where dot(normal, surfaceToLight) > 0.
+// Numerical fix (essl-lint division-by-difference): `limitRange = max(u_innerLimit - u_outerLimit, 1e-4)`;
+// the article notes that equal limits divide by zero (a floor of 1e-4 stays normal in mediump).
 precision mediump float;
 // Passed in from the vertex shader.
 in vec3 v_normal;
@@ -25,10 +30,10 @@ vec3 halfVector = normalize(surfaceToLightDirection + surfaceToViewDirection);
 float dotFromDirection = dot(surfaceToLightDirection,
 -u_lightDirection);
 // inLight will be 1 if we're inside the spotlight and 0 if not
- float limitRange = u_innerLimit - u_outerLimit;
+ float limitRange = max(u_innerLimit - u_outerLimit, 1e-4);
  float inLight = clamp((dotFromDirection - u_outerLimit) / limitRange, 0.0, 1.0);
 float light = inLight * dot(normal, surfaceToLightDirection);
-float specular = inLight * pow(dot(normal, halfVector), u_shininess);
+float specular = inLight * pow(max(dot(normal, halfVector), 0.0), u_shininess);
 outColor = u_color;
 // Lets multiply just the color portion (not the alpha)
 // by the light

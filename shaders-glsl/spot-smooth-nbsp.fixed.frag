@@ -3,6 +3,9 @@
 //  1. every U+00A0 no-break space (version line, comments, indentation) -> ASCII space;
 //  2. `uniform float u_innerLimit` -> add the missing `;`;
 //  3. `float dotFromDirection = dot(unitSurfaceToLight, -u_lightDirection)` -> add the missing `;`.
+//  4. numerics (essl-lint smoothstep-edges): `smoothstep(u_outerLimit, u_innerLimit, …)` is
+//     undefined when the limits are equal or swapped -> edge1 kept above edge0 with
+//     `max(u_innerLimit, u_outerLimit + 1e-4)`.
 // The first line keeps its trailing space(s) from the replaced NBSP.
   
 // fragment shaders don't have a default precision so we need  
@@ -43,7 +46,7 @@ void main() {
 
   float dotFromDirection = dot(unitSurfaceToLight, -u_lightDirection);
   
-  float inLight = smoothstep(u_outerLimit, u_innerLimit, dotFromDirection);
+  float inLight = smoothstep(u_outerLimit, max(u_innerLimit, u_outerLimit + 1e-4), dotFromDirection);
   
   float light = inLight * dot(normal, unitSurfaceToLight);
   float rawSpecular = max(0.0, dot(normal, halfVector));

@@ -2,6 +2,11 @@
 // Variant of article 001 (not a block of the article): spot-linear.frag with the article's
 // third diff applied: the two `limitRange`/`clamp` lines removed, replaced by
 // `float inLight = smoothstep(u_outerLimit, u_innerLimit, dotFromDirection);`.
+// Numerical fix (essl-lint pow-negative-base): `pow(max(dot(normal, halfVector), 0.0), u_shininess)`;
+// pow is undefined (NaN) for a negative base, and dot(normal, halfVector) < 0 where the surface
+// faces away from the half vector, even where dot(normal, surfaceToLight) > 0.
+// Numerical fix (essl-lint smoothstep-edges): edge1 = `max(u_innerLimit, u_outerLimit + 1e-3)`;
+// smoothstep is undefined for equal or swapped edges (1e-3 is more than a mediump ulp below 2).
 precision mediump float;
 // Passed in from the vertex shader.
 in vec3 v_normal;
@@ -25,9 +30,9 @@ vec3 halfVector = normalize(surfaceToLightDirection + surfaceToViewDirection);
 float dotFromDirection = dot(surfaceToLightDirection,
 -u_lightDirection);
 // inLight will be 1 if we're inside the spotlight and 0 if not
-float inLight = smoothstep(u_outerLimit, u_innerLimit, dotFromDirection);
+float inLight = smoothstep(u_outerLimit, max(u_innerLimit, u_outerLimit + 1e-3), dotFromDirection);
 float light = inLight * dot(normal, surfaceToLightDirection);
-float specular = inLight * pow(dot(normal, halfVector), u_shininess);
+float specular = inLight * pow(max(dot(normal, halfVector), 0.0), u_shininess);
 outColor = u_color;
 // Lets multiply just the color portion (not the alpha)
 // by the light

@@ -2,6 +2,9 @@
 // Variant of article 001 (not a block of the article): spot-diff.fixed.frag with the
 // article's `step` snippet put in place of the `light`/`specular`/`if` lines, verbatim:
 // `float inLight = step(u_limit, dotFromDirection);` and light/specular scaled by inLight.
+// Numerical fix (essl-lint pow-negative-base): `pow(max(dot(normal, halfVector), 0.0), u_shininess)`;
+// pow is undefined (NaN) for a negative base, and dot(normal, halfVector) < 0 where the surface
+// faces away from the half vector, even where dot(normal, surfaceToLight) > 0.
 precision mediump float;
 // Passed in from the vertex shader.
 in vec3 v_normal;
@@ -26,7 +29,7 @@ float dotFromDirection = dot(surfaceToLightDirection,
 // inLight will be 1 if we're inside the spotlight and 0 if not
 float inLight = step(u_limit, dotFromDirection);
 float light = inLight * dot(normal, surfaceToLightDirection);
-float specular = inLight * pow(dot(normal, halfVector), u_shininess);
+float specular = inLight * pow(max(dot(normal, halfVector), 0.0), u_shininess);
 outColor = u_color;
 // Lets multiply just the color portion (not the alpha)
 // by the light

@@ -9,18 +9,27 @@ use essl::{compile, CompileOptions, Stage};
 use serde_json::Value;
 
 fn main() {
-    let dir = std::env::args().nth(1).unwrap_or_else(|| "../shared/corpora".to_string());
+    let dir = std::env::args()
+        .nth(1)
+        .unwrap_or_else(|| "../shared/corpora".to_string());
     let mut shaders: Vec<(String, String, Stage, String)> = Vec::new(); // (corpus, case, stage, source)
     let read = |name: &str| -> Vec<Value> {
-        let text = std::fs::read_to_string(format!("{dir}/{name}")).unwrap_or_else(|e| panic!("{dir}/{name}: {e}"));
-        text.lines().filter(|l| !l.trim().is_empty()).map(|l| serde_json::from_str(l).expect("a JSON line")).collect()
+        let text = std::fs::read_to_string(format!("{dir}/{name}"))
+            .unwrap_or_else(|e| panic!("{dir}/{name}: {e}"));
+        text.lines()
+            .filter(|l| !l.trim().is_empty())
+            .map(|l| serde_json::from_str(l).expect("a JSON line"))
+            .collect()
     };
     for c in read("webgl_conformance_es300.jsonl") {
         if c["outcome"] != "must_pass" {
             continue;
         }
         let case = format!("{}#{}", c["file"].as_str().unwrap_or(""), c["index"]);
-        for (key, stage) in [("vertex_source", Stage::Vertex), ("fragment_source", Stage::Fragment)] {
+        for (key, stage) in [
+            ("vertex_source", Stage::Vertex),
+            ("fragment_source", Stage::Fragment),
+        ] {
             if let Some(s) = c[key].as_str() {
                 shaders.push(("webgl".into(), case.clone(), stage, s.to_string()));
             }
@@ -31,7 +40,10 @@ fn main() {
             continue;
         }
         let case = c["name"].as_str().unwrap_or("").to_string();
-        for (key, stage) in [("vertex_source", Stage::Vertex), ("fragment_source", Stage::Fragment)] {
+        for (key, stage) in [
+            ("vertex_source", Stage::Vertex),
+            ("fragment_source", Stage::Fragment),
+        ] {
             if let Some(s) = c[key].as_str() {
                 shaders.push(("deqp".into(), case.clone(), stage, s.to_string()));
             }
@@ -46,7 +58,12 @@ fn main() {
             Some("fragment") => Stage::Fragment,
             _ => continue,
         };
-        shaders.push(("webgl2fundamentals".into(), c["file"].as_str().unwrap_or("").to_string(), stage, c["source"].as_str().unwrap_or("").to_string()));
+        shaders.push((
+            "webgl2fundamentals".into(),
+            c["file"].as_str().unwrap_or("").to_string(),
+            stage,
+            c["source"].as_str().unwrap_or("").to_string(),
+        ));
     }
     let mut seen = HashSet::new();
     let mut per_rule: BTreeMap<&str, usize> = BTreeMap::new();
@@ -60,7 +77,11 @@ fn main() {
         total += 1;
         let e = per_corpus.entry(corpus.clone()).or_default();
         e.0 += 1;
-        let shader = compile(SourceFile::new(case.clone(), source), stage, &CompileOptions::default());
+        let shader = compile(
+            SourceFile::new(case.clone(), source),
+            stage,
+            &CompileOptions::default(),
+        );
         if shader.naga.is_none() {
             continue;
         }
@@ -74,9 +95,19 @@ fn main() {
         for d in found {
             *per_rule.entry(d.code).or_default() += 1;
             let lc = shader.file.line_col(d.span.start);
-            let line = shader.file.line_text(lc.line as usize - 1).trim().to_string();
+            let line = shader
+                .file
+                .line_text(lc.line as usize - 1)
+                .trim()
+                .to_string();
             *distinct.entry((d.code, line.clone())).or_default() += 1;
-            println!("{corpus} {case} ({}) {lc} [{}] {}\n    {line}\n    {}", stage.as_str(), d.code, d.message, d.label);
+            println!(
+                "{corpus} {case} ({}) {lc} [{}] {}\n    {line}\n    {}",
+                stage.as_str(),
+                d.code,
+                d.message,
+                d.label
+            );
         }
     }
     println!("\n== {total} distinct shaders, {compiled} lowered to naga, {flagged_shaders} with findings");

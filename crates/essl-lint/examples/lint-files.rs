@@ -7,9 +7,15 @@ use essl::{compile, CompileOptions, Stage};
 fn main() {
     for path in std::env::args().skip(1) {
         let p = std::path::Path::new(&path);
-        let Some(stage) = Stage::from_path(p) else { continue };
+        let Some(stage) = Stage::from_path(p) else {
+            continue;
+        };
         let text = std::fs::read_to_string(p).expect("readable file");
-        let shader = compile(SourceFile::new(path.clone(), text), stage, &CompileOptions::default());
+        let shader = compile(
+            SourceFile::new(path.clone(), text),
+            stage,
+            &CompileOptions::default(),
+        );
         if !shader.ok() {
             println!("{path}: does not compile");
             continue;

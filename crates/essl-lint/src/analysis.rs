@@ -111,7 +111,12 @@ pub struct Analysis {
 pub fn function(module: &naga::Module, id: usize) -> &Function {
     let n = module.functions.len();
     if id < n {
-        let h = module.functions.iter().nth(id).map(|(h, _)| h).expect("function index");
+        let h = module
+            .functions
+            .iter()
+            .nth(id)
+            .map(|(h, _)| h)
+            .expect("function index");
         &module.functions[h]
     } else {
         &module.entry_points[id - n].function
@@ -119,10 +124,19 @@ pub fn function(module: &naga::Module, id: usize) -> &Function {
 }
 
 /// The validator's information about function `id`.
-pub fn function_info<'a>(module: &naga::Module, info: &'a naga::valid::ModuleInfo, id: usize) -> &'a naga::valid::FunctionInfo {
+pub fn function_info<'a>(
+    module: &naga::Module,
+    info: &'a naga::valid::ModuleInfo,
+    id: usize,
+) -> &'a naga::valid::FunctionInfo {
     let n = module.functions.len();
     if id < n {
-        let h = module.functions.iter().nth(id).map(|(h, _)| h).expect("function index");
+        let h = module
+            .functions
+            .iter()
+            .nth(id)
+            .map(|(h, _)| h)
+            .expect("function index");
         &info[h]
     } else {
         info.get_entry_point(id - n)
@@ -133,8 +147,17 @@ pub fn function_info<'a>(module: &naga::Module, info: &'a naga::valid::ModuleInf
 fn pointee<'a>(module: &'a naga::Module, inner: &'a TypeInner) -> TypeInner {
     match inner {
         TypeInner::Pointer { base, .. } => module.types[*base].inner.clone(),
-        TypeInner::ValuePointer { size: Some(size), scalar, .. } => TypeInner::Vector { size: *size, scalar: *scalar },
-        TypeInner::ValuePointer { size: None, scalar, .. } => TypeInner::Scalar(*scalar),
+        TypeInner::ValuePointer {
+            size: Some(size),
+            scalar,
+            ..
+        } => TypeInner::Vector {
+            size: *size,
+            scalar: *scalar,
+        },
+        TypeInner::ValuePointer {
+            size: None, scalar, ..
+        } => TypeInner::Scalar(*scalar),
         other => other.clone(),
     }
 }
@@ -145,24 +168,48 @@ fn shape(module: &naga::Module, inner: &TypeInner, leaf: &dyn Fn(u8, ScalarKind)
 }
 
 /// [`shape`] whose `leaf` also learns whether it makes a matrix column.
-fn shape_m(module: &naga::Module, inner: &TypeInner, leaf: &dyn Fn(u8, ScalarKind, bool) -> Num) -> Val {
+fn shape_m(
+    module: &naga::Module,
+    inner: &TypeInner,
+    leaf: &dyn Fn(u8, ScalarKind, bool) -> Num,
+) -> Val {
     match inner {
         TypeInner::Scalar(s) => Val::Num(leaf(1, s.kind, false)),
         TypeInner::Vector { size, scalar } => Val::Num(leaf(*size as u8, scalar.kind, false)),
-        TypeInner::Matrix { columns, rows, scalar } => Val::Agg((0..*columns as u8).map(|_| Val::Num(leaf(*rows as u8, scalar.kind, true))).collect()),
-        TypeInner::Array { base, .. } => Val::Arr(Box::new(shape_m(module, &module.types[*base].inner, leaf))),
-        TypeInner::Struct { members, .. } => Val::Agg(members.iter().map(|m| shape_m(module, &module.types[m.ty].inner, leaf)).collect()),
+        TypeInner::Matrix {
+            columns,
+            rows,
+            scalar,
+        } => Val::Agg(
+            (0..*columns as u8)
+                .map(|_| Val::Num(leaf(*rows as u8, scalar.kind, true)))
+                .collect(),
+        ),
+        TypeInner::Array { base, .. } => {
+            Val::Arr(Box::new(shape_m(module, &module.types[*base].inner, leaf)))
+        }
+        TypeInner::Struct { members, .. } => Val::Agg(
+            members
+                .iter()
+                .map(|m| shape_m(module, &module.types[m.ty].inner, leaf))
+                .collect(),
+        ),
         _ => Val::Any,
     }
 }
 
 /// Reads the part of `v` at `path`.
 fn read(v: &Val, path: &[u32]) -> Val {
-    let Some((&step, rest)) = path.split_first() else { return v.clone() };
+    let Some((&step, rest)) = path.split_first() else {
+        return v.clone();
+    };
     match v {
         Val::Arr(x) => read(x, rest),
         Val::Agg(xs) if step == ANY => xs.iter().fold(Val::Bot, |a, x| a.join(&read(x, rest))),
-        Val::Agg(xs) => xs.get(step as usize).map(|x| read(x, rest)).unwrap_or(Val::Any),
+        Val::Agg(xs) => xs
+            .get(step as usize)
+            .map(|x| read(x, rest))
+            .unwrap_or(Val::Any),
         Val::Num(n) if rest.is_empty() => {
             if step == ANY {
                 let h = n.hull();
@@ -179,7 +226,11 @@ fn read(v: &Val, path: &[u32]) -> Val {
 /// Joins (or widens) `new` into the part of `v` at `path`; returns whether `v` changed.
 fn write(v: &mut Val, path: &[u32], new: &Val, widen: bool) -> bool {
     let Some((&step, rest)) = path.split_first() else {
-        let j = if widen { v.widen(&v.join(new)) } else { v.join(new) };
+        let j = if widen {
+            v.widen(&v.join(new))
+        } else {
+            v.join(new)
+        };
         let changed = j != *v;
         *v = j;
         return changed;
@@ -203,7 +254,11 @@ fn write(v: &mut Val, path: &[u32], new: &Val, widen: bool) -> bool {
                 return false;
             }
             let old = *n;
-            let targets: Vec<usize> = if step == ANY { (0..n.n as usize).collect() } else { vec![step as usize] };
+            let targets: Vec<usize> = if step == ANY {
+                (0..n.n as usize).collect()
+            } else {
+                vec![step as usize]
+            };
             for i in targets {
                 if i < n.n as usize {
                     let j = n.c[i].hull(s.c[0]);
@@ -228,7 +283,9 @@ impl Analysis {
             mode,
             functions: vec![FnFacts::default(); count],
             memory: HashMap::new(),
-            args: (0..count).map(|id| vec![Val::Bot; function(module, id).arguments.len()]).collect(),
+            args: (0..count)
+                .map(|id| vec![Val::Bot; function(module, id).arguments.len()])
+                .collect(),
             results: vec![Val::Bot; count],
             changed: false,
             widening: false,
@@ -257,7 +314,9 @@ impl Analysis {
             a.widening = round >= WIDEN_AFTER;
             // Callers after callees is the order naga keeps; entry points last. Walking the
             // entry points first gives the inputs their values before `main_` reads them.
-            let order: Vec<usize> = (module.functions.len()..count).chain(0..module.functions.len()).collect();
+            let order: Vec<usize> = (module.functions.len()..count)
+                .chain(0..module.functions.len())
+                .collect();
             for id in order {
                 a.run_function(module, info, id);
             }
@@ -270,7 +329,10 @@ impl Analysis {
 
     /// The value of expression `h` of function `id`.
     pub fn value(&self, id: usize, h: Handle<E>) -> &Val {
-        self.functions[id].values.get(h.index()).unwrap_or(&Val::Bot)
+        self.functions[id]
+            .values
+            .get(h.index())
+            .unwrap_or(&Val::Bot)
     }
 
     /// The scalar or vector value of expression `h` of function `id`, if it has one.
@@ -286,21 +348,39 @@ impl Analysis {
         let ty = match root {
             Root::Local(f, l) => {
                 let func = function(module, f);
-                let h = func.local_variables.iter().nth(l).map(|(h, _)| h).expect("local");
+                let h = func
+                    .local_variables
+                    .iter()
+                    .nth(l)
+                    .map(|(h, _)| h)
+                    .expect("local");
                 module.types[func.local_variables[h].ty].inner.clone()
             }
             Root::Global(g) => {
-                let h = module.global_variables.iter().nth(g).map(|(h, _)| h).expect("global");
+                let h = module
+                    .global_variables
+                    .iter()
+                    .nth(g)
+                    .map(|(h, _)| h)
+                    .expect("global");
                 module.types[module.global_variables[h].ty].inner.clone()
             }
-            Root::Arg(f, i) => pointee(module, &module.types[function(module, f).arguments[i].ty].inner),
+            Root::Arg(f, i) => pointee(
+                module,
+                &module.types[function(module, f).arguments[i].ty].inner,
+            ),
         };
         shape(module, &ty, &|n, _| Num::bottom(n))
     }
 
     fn store(&mut self, module: &naga::Module, place: &Place, v: &Val) {
         if let Root::Global(g) = place.root {
-            let h = module.global_variables.iter().nth(g).map(|(h, _)| h).expect("global");
+            let h = module
+                .global_variables
+                .iter()
+                .nth(g)
+                .map(|(h, _)| h)
+                .expect("global");
             if module.global_variables[h].space != naga::AddressSpace::Private {
                 return;
             }
@@ -314,7 +394,12 @@ impl Analysis {
 
     fn load(&self, module: &naga::Module, place: &Place, ty: &TypeInner) -> Val {
         if let Root::Global(g) = place.root {
-            let h = module.global_variables.iter().nth(g).map(|(h, _)| h).expect("global");
+            let h = module
+                .global_variables
+                .iter()
+                .nth(g)
+                .map(|(h, _)| h)
+                .expect("global");
             if module.global_variables[h].space != naga::AddressSpace::Private {
                 return self.external(module, ty, Facts::UNIFORM);
             }
@@ -333,7 +418,17 @@ impl Analysis {
                 (_, Mode::Typical) if matrix => Interval::new(0.0, TYPICAL_MATRIX),
                 (_, Mode::Typical) => Interval::new(0.0, TYPICAL),
             };
-            Num::splat(i, n, Facts::NN.with(Facts::POS).with(Facts::NZ).with(Facts::NZ3).with(Facts::UNIT).with(Facts::EXT).with(deps))
+            Num::splat(
+                i,
+                n,
+                Facts::NN
+                    .with(Facts::POS)
+                    .with(Facts::NZ)
+                    .with(Facts::NZ3)
+                    .with(Facts::UNIT)
+                    .with(Facts::EXT)
+                    .with(deps),
+            )
         })
     }
 
@@ -350,7 +445,11 @@ impl Analysis {
     }
 
     fn join_into(slot: &mut Val, v: &Val, widen: bool, changed: &mut bool) {
-        let j = if widen { slot.widen(&slot.join(v)) } else { slot.join(v) };
+        let j = if widen {
+            slot.widen(&slot.join(v))
+        } else {
+            slot.join(v)
+        };
         if j != *slot {
             *slot = j;
             *changed = true;
@@ -375,17 +474,36 @@ impl Analysis {
         for (lh, l) in f.local_variables.iter() {
             if let Some(init) = l.init {
                 let v = self.functions[id].values[init.index()].clone();
-                self.store(module, &Place { root: Root::Local(id, lh.index()), path: Vec::new() }, &v);
+                self.store(
+                    module,
+                    &Place {
+                        root: Root::Local(id, lh.index()),
+                        path: Vec::new(),
+                    },
+                    &v,
+                );
             }
         }
         self.block(module, finfo, f, id, &f.body);
     }
 
-    fn block(&mut self, module: &naga::Module, finfo: &naga::valid::FunctionInfo, f: &Function, id: usize, b: &Block) {
+    fn block(
+        &mut self,
+        module: &naga::Module,
+        finfo: &naga::valid::FunctionInfo,
+        f: &Function,
+        id: usize,
+        b: &Block,
+    ) {
         let depth = self.refine.len();
         let stmts: Vec<&Statement> = b.iter().collect();
         for (i, s) in stmts.iter().enumerate() {
-            if let Statement::If { condition, accept, reject } = s {
+            if let Statement::If {
+                condition,
+                accept,
+                reject,
+            } = s
+            {
                 let d = self.refine.len();
                 fn inside(blk: &Block) -> Vec<&Statement> {
                     blk.iter().collect()
@@ -401,7 +519,8 @@ impl Analysis {
                 let (ad, rd) = (diverges(accept), diverges(reject));
                 if ad != rd {
                     let other = if ad { reject } else { accept };
-                    let rs = self.refinements(module, f, id, *condition, rd, &[&rest, &inside(other)]);
+                    let rs =
+                        self.refinements(module, f, id, *condition, rd, &[&rest, &inside(other)]);
                     self.refine.extend(rs);
                 }
                 continue;
@@ -420,7 +539,9 @@ impl Analysis {
                         self.block(module, finfo, f, id, &c.body);
                     }
                 }
-                Statement::Loop { body, continuing, .. } => {
+                Statement::Loop {
+                    body, continuing, ..
+                } => {
                     self.block(module, finfo, f, id, body);
                     self.block(module, finfo, f, id, continuing);
                 }
@@ -436,13 +557,20 @@ impl Analysis {
                         self.store(module, &p, &v);
                     }
                 }
-                Statement::Call { function: callee, arguments, result } => {
+                Statement::Call {
+                    function: callee,
+                    arguments,
+                    result,
+                } => {
                     let c = callee.index();
                     for (i, a) in arguments.iter().enumerate() {
                         if let Some(p) = self.functions[id].places[a.index()].clone() {
                             // A pointer argument: the caller's variable and the parameter's cell
                             // hold the same values (copy-in for `inout`, copy-out after).
-                            let arg_root = Place { root: Root::Arg(c, i), path: Vec::new() };
+                            let arg_root = Place {
+                                root: Root::Arg(c, i),
+                                path: Vec::new(),
+                            };
                             let ty = pointee(module, finfo[*a].ty.inner_with(&module.types));
                             let mine = self.load(module, &p, &ty);
                             self.store(module, &arg_root, &mine);
@@ -470,12 +598,28 @@ impl Analysis {
     /// What `condition` being `polarity` says about places that `region` (statements) does not
     /// write: `x > 0.0` bounds the loads of `x` there, `dot(v, v) > 0.0` the length of `v`.
     #[allow(clippy::too_many_arguments)]
-    fn refinements(&self, module: &naga::Module, f: &Function, id: usize, condition: Handle<E>, polarity: bool, region: &[&[&Statement]]) -> Vec<(Place, Refinement)> {
+    fn refinements(
+        &self,
+        module: &naga::Module,
+        f: &Function,
+        id: usize,
+        condition: Handle<E>,
+        polarity: bool,
+        region: &[&[&Statement]],
+    ) -> Vec<(Place, Refinement)> {
         let mut out = Vec::new();
         for (subject, r) in self.conditions(f, id, condition, polarity) {
-            let E::Load { pointer } = f.expressions[subject] else { continue };
-            let Some(place) = self.functions[id].places[pointer.index()].clone() else { continue };
-            if place.path.contains(&ANY) || region.iter().any(|stmts| writes(module, f, stmts, place.root)) {
+            let E::Load { pointer } = f.expressions[subject] else {
+                continue;
+            };
+            let Some(place) = self.functions[id].places[pointer.index()].clone() else {
+                continue;
+            };
+            if place.path.contains(&ANY)
+                || region
+                    .iter()
+                    .any(|stmts| writes(module, f, stmts, place.root))
+            {
                 continue;
             }
             out.push((place, r));
@@ -484,40 +628,96 @@ impl Analysis {
     }
 
     /// What `condition` being `polarity` says about the expressions it compares.
-    pub fn conditions(&self, f: &Function, id: usize, condition: Handle<E>, polarity: bool) -> Vec<(Handle<E>, Refinement)> {
+    pub fn conditions(
+        &self,
+        f: &Function,
+        id: usize,
+        condition: Handle<E>,
+        polarity: bool,
+    ) -> Vec<(Handle<E>, Refinement)> {
         let mut out = Vec::new();
         self.collect_conditions(f, id, condition, polarity, &mut out, 0);
         out
     }
 
-    fn collect_conditions(&self, f: &Function, id: usize, c: Handle<E>, polarity: bool, out: &mut Vec<(Handle<E>, Refinement)>, depth: u32) {
+    fn collect_conditions(
+        &self,
+        f: &Function,
+        id: usize,
+        c: Handle<E>,
+        polarity: bool,
+        out: &mut Vec<(Handle<E>, Refinement)>,
+        depth: u32,
+    ) {
         if depth > 8 {
             return;
         }
         match f.expressions[c] {
-            E::Unary { op: Uo::LogicalNot, expr } => self.collect_conditions(f, id, expr, !polarity, out, depth + 1),
-            E::Binary { op: Bo::LogicalAnd, left, right } if polarity => {
+            E::Unary {
+                op: Uo::LogicalNot,
+                expr,
+            } => self.collect_conditions(f, id, expr, !polarity, out, depth + 1),
+            E::Binary {
+                op: Bo::LogicalAnd,
+                left,
+                right,
+            } if polarity => {
                 self.collect_conditions(f, id, left, true, out, depth + 1);
                 self.collect_conditions(f, id, right, true, out, depth + 1);
             }
-            E::Binary { op: Bo::LogicalOr, left, right } if !polarity => {
+            E::Binary {
+                op: Bo::LogicalOr,
+                left,
+                right,
+            } if !polarity => {
                 self.collect_conditions(f, id, left, false, out, depth + 1);
                 self.collect_conditions(f, id, right, false, out, depth + 1);
             }
             E::Binary { op, left, right } => {
                 for (x, bound, x_left) in [(left, right, true), (right, left, false)] {
-                    let Some(b) = self.nm(id, bound).filter(|n| n.n == 1) else { continue };
-                    let Some(i) = relation(op, polarity, x_left, b.c[0]) else { continue };
+                    let Some(b) = self.nm(id, bound).filter(|n| n.n == 1) else {
+                        continue;
+                    };
+                    let Some(i) = relation(op, polarity, x_left, b.c[0]) else {
+                        continue;
+                    };
                     if self.nm(id, x).is_some_and(|n| n.n == 1) {
                         out.push((x, Refinement::Value(i)));
                     }
-                    // `length(v) > c`, `dot(v, v) > c`: a bound on the length of `v`.
+                    // `length(v) > c`, `dot(v, v) > c`: a bound on the length of `v`;
+                    // `abs(y) <= c`: a bound on `y`.
                     match f.expressions[x] {
-                        E::Math { fun: Mf::Length, arg, .. } => out.push((arg, Refinement::Norm(i.meet(Interval::NON_NEGATIVE)))),
-                        E::Math { fun: Mf::Dot, arg, arg1: Some(b2), .. } if self.same(f, id, arg, b2) => {
+                        E::Math {
+                            fun: Mf::Abs, arg, ..
+                        } if i.hi.is_finite() && self.nm(id, arg).is_some_and(|n| n.n == 1) => {
+                            out.push((
+                                arg,
+                                Refinement::Value(Interval {
+                                    lo: -i.hi,
+                                    hi: i.hi,
+                                }),
+                            ));
+                        }
+                        E::Math {
+                            fun: Mf::Length,
+                            arg,
+                            ..
+                        } => out.push((arg, Refinement::Norm(i.meet(Interval::NON_NEGATIVE)))),
+                        E::Math {
+                            fun: Mf::Dot,
+                            arg,
+                            arg1: Some(b2),
+                            ..
+                        } if self.same(f, id, arg, b2) => {
                             let sq = i.meet(Interval::NON_NEGATIVE);
                             if !sq.is_empty() {
-                                out.push((arg, Refinement::Norm(Interval { lo: sq.lo.sqrt(), hi: sq.hi.sqrt() })));
+                                out.push((
+                                    arg,
+                                    Refinement::Norm(Interval {
+                                        lo: sq.lo.sqrt(),
+                                        hi: sq.hi.sqrt(),
+                                    }),
+                                ));
                             }
                         }
                         _ => {}
@@ -531,7 +731,12 @@ impl Analysis {
     /// The refinement of a load of `place`, if an enclosing condition bounds it.
     fn refined(&self, place: &Place, v: Val) -> Val {
         let Val::Num(n) = v else { return v };
-        let rs: Vec<Refinement> = self.refine.iter().filter(|(p, _)| p == place).map(|(_, r)| *r).collect();
+        let rs: Vec<Refinement> = self
+            .refine
+            .iter()
+            .filter(|(p, _)| p == place)
+            .map(|(_, r)| *r)
+            .collect();
         Val::Num(refine_num(n, &rs))
     }
 }
@@ -567,13 +772,18 @@ pub fn const_value(module: &naga::Module, h: Handle<E>) -> Val {
     match &module.global_expressions[h] {
         E::Literal(l) => Val::Num(Num::constant(&[literal(l)])),
         E::Constant(c) => const_value(module, module.constants[*c].init),
-        E::ZeroValue(t) => shape(module, &module.types[*t].inner, &|n, _| Num::constant(&vec![0.0; n as usize])),
+        E::ZeroValue(t) => shape(module, &module.types[*t].inner, &|n, _| {
+            Num::constant(&vec![0.0; n as usize])
+        }),
         E::Splat { size, value } => match const_value(module, *value) {
             Val::Num(x) => Val::Num(Num::splat(x.c[0], *size as u8, x.facts)),
             other => other,
         },
         E::Compose { ty, components } => {
-            let parts: Vec<Val> = ty_of(components).iter().map(|c| const_value(module, *c)).collect();
+            let parts: Vec<Val> = ty_of(components)
+                .iter()
+                .map(|c| const_value(module, *c))
+                .collect();
             match &module.types[*ty].inner {
                 TypeInner::Vector { .. } => {
                     let mut comps = Vec::new();
@@ -585,7 +795,9 @@ pub fn const_value(module: &naga::Module, h: Handle<E>) -> Val {
                     }
                     Val::Num(Num::from_components(&comps, Facts::NONE))
                 }
-                TypeInner::Array { .. } => Val::Arr(Box::new(parts.iter().fold(Val::Bot, |a, p| a.join(p)))),
+                TypeInner::Array { .. } => {
+                    Val::Arr(Box::new(parts.iter().fold(Val::Bot, |a, p| a.join(p))))
+                }
                 _ => Val::Agg(parts),
             }
         }
@@ -628,7 +840,9 @@ fn single_stores(f: &Function) -> (HashMap<usize, Handle<E>>, HashMap<usize, Vec
                         walk(f, &k.body, in_loop, c);
                     }
                 }
-                Statement::Loop { body, continuing, .. } => {
+                Statement::Loop {
+                    body, continuing, ..
+                } => {
                     walk(f, body, true, c);
                     walk(f, continuing, true, c);
                 }
@@ -661,7 +875,11 @@ fn single_stores(f: &Function) -> (HashMap<usize, Handle<E>>, HashMap<usize, Vec
     let mut out = HashMap::new();
     let mut all: HashMap<usize, Vec<Handle<E>>> = HashMap::new();
     for (l, v, in_loop) in c.whole {
-        let has_init = f.local_variables.iter().nth(l).is_some_and(|(_, lv)| lv.init.is_some());
+        let has_init = f
+            .local_variables
+            .iter()
+            .nth(l)
+            .is_some_and(|(_, lv)| lv.init.is_some());
         if counts[&l] == 1 && !in_loop && !c.spoiled.contains(&l) && !has_init {
             out.insert(l, v);
         }
@@ -704,9 +922,15 @@ pub fn relation(op: Bo, polarity: bool, x_left: bool, bound: Interval) -> Option
     };
     match op {
         Bo::Greater => Some(Interval::above(bound.lo)),
-        Bo::GreaterEqual => Some(Interval { lo: bound.lo, hi: f64::INFINITY }),
+        Bo::GreaterEqual => Some(Interval {
+            lo: bound.lo,
+            hi: f64::INFINITY,
+        }),
         Bo::Less => Some(Interval::below(bound.hi)),
-        Bo::LessEqual => Some(Interval { lo: f64::NEG_INFINITY, hi: bound.hi }),
+        Bo::LessEqual => Some(Interval {
+            lo: f64::NEG_INFINITY,
+            hi: bound.hi,
+        }),
         Bo::Equal => Some(bound),
         _ => None,
     }
@@ -715,7 +939,9 @@ pub fn relation(op: Bo, polarity: bool, x_left: bool, bound: Interval) -> Option
 /// Whether a block ends every path through it with `break`, `continue`, `return` or `discard`.
 fn diverges(b: &Block) -> bool {
     match b.last() {
-        Some(Statement::Break | Statement::Continue | Statement::Return { .. } | Statement::Kill) => true,
+        Some(
+            Statement::Break | Statement::Continue | Statement::Return { .. } | Statement::Kill,
+        ) => true,
         Some(Statement::Block(inner)) => diverges(inner),
         Some(Statement::If { accept, reject, .. }) => diverges(accept) && diverges(reject),
         _ => false,
@@ -737,7 +963,12 @@ fn writes(module: &naga::Module, f: &Function, stmts: &[&Statement], root: Root)
     }
     let private_global = match root {
         Root::Global(g) => {
-            let h = module.global_variables.iter().nth(g).map(|(h, _)| h).expect("global");
+            let h = module
+                .global_variables
+                .iter()
+                .nth(g)
+                .map(|(h, _)| h)
+                .expect("global");
             if module.global_variables[h].space != naga::AddressSpace::Private {
                 return false; // uniforms are never written
             }
@@ -750,11 +981,19 @@ fn writes(module: &naga::Module, f: &Function, stmts: &[&Statement], root: Root)
     }
     stmts.iter().any(|s| match s {
         Statement::Store { pointer, .. } => is_root(f, *pointer, root),
-        Statement::Call { arguments, .. } => private_global || arguments.iter().any(|a| is_root(f, *a, root)),
+        Statement::Call { arguments, .. } => {
+            private_global || arguments.iter().any(|a| is_root(f, *a, root))
+        }
         Statement::Block(b) => writes(module, f, &all(b), root),
-        Statement::If { accept, reject, .. } => writes(module, f, &all(accept), root) || writes(module, f, &all(reject), root),
-        Statement::Switch { cases, .. } => cases.iter().any(|c| writes(module, f, &all(&c.body), root)),
-        Statement::Loop { body, continuing, .. } => writes(module, f, &all(body), root) || writes(module, f, &all(continuing), root),
+        Statement::If { accept, reject, .. } => {
+            writes(module, f, &all(accept), root) || writes(module, f, &all(reject), root)
+        }
+        Statement::Switch { cases, .. } => {
+            cases.iter().any(|c| writes(module, f, &all(&c.body), root))
+        }
+        Statement::Loop {
+            body, continuing, ..
+        } => writes(module, f, &all(body), root) || writes(module, f, &all(continuing), root),
         _ => false,
     })
 }
@@ -789,7 +1028,6 @@ pub fn refine_num(mut n: Num, rs: &[Refinement]) -> Num {
     n.settle()
 }
 
-
 /// Evaluation of expressions.
 impl Analysis {
     fn v(&self, id: usize, h: Handle<E>) -> &Val {
@@ -797,7 +1035,10 @@ impl Analysis {
     }
 
     fn nm(&self, id: usize, h: Handle<E>) -> Option<Num> {
-        self.functions[id].values[h.index()].num().copied().filter(|n| !n.is_bottom())
+        self.functions[id].values[h.index()]
+            .num()
+            .copied()
+            .filter(|n| !n.is_bottom())
     }
 
     /// Whether two expressions of a function certainly have the same value.
@@ -816,7 +1057,9 @@ impl Analysis {
         let s = |x: Handle<E>, y: Handle<E>| self.same_depth(f, id, x, y, depth + 1);
         match (&f.expressions[a], &f.expressions[b]) {
             (E::Load { pointer: pa }, E::Load { pointer: pb }) => {
-                let (Some(x), Some(y)) = (&ff.places[pa.index()], &ff.places[pb.index()]) else { return false };
+                let (Some(x), Some(y)) = (&ff.places[pa.index()], &ff.places[pb.index()]) else {
+                    return false;
+                };
                 if x != y || x.path.contains(&ANY) {
                     return false;
                 }
@@ -826,11 +1069,41 @@ impl Analysis {
                     }
                 }
                 let same_emit = ff.emit[a.index()] != 0 && ff.emit[a.index()] == ff.emit[b.index()];
-                same_emit || self.functions[id].values[a.index()].facts().has(Facts::EXT) && matches!(x.root, Root::Global(_))
+                same_emit
+                    || self.functions[id].values[a.index()].facts().has(Facts::EXT)
+                        && matches!(x.root, Root::Global(_))
             }
-            (E::Binary { op: o1, left: l1, right: r1 }, E::Binary { op: o2, left: l2, right: r2 }) => o1 == o2 && s(*l1, *l2) && s(*r1, *r2),
-            (E::Unary { op: o1, expr: x1 }, E::Unary { op: o2, expr: x2 }) => o1 == o2 && s(*x1, *x2),
-            (E::Math { fun: f1, arg: a1, arg1: b1, arg2: c1, .. }, E::Math { fun: f2, arg: a2, arg1: b2, arg2: c2, .. }) => {
+            (
+                E::Binary {
+                    op: o1,
+                    left: l1,
+                    right: r1,
+                },
+                E::Binary {
+                    op: o2,
+                    left: l2,
+                    right: r2,
+                },
+            ) => o1 == o2 && s(*l1, *l2) && s(*r1, *r2),
+            (E::Unary { op: o1, expr: x1 }, E::Unary { op: o2, expr: x2 }) => {
+                o1 == o2 && s(*x1, *x2)
+            }
+            (
+                E::Math {
+                    fun: f1,
+                    arg: a1,
+                    arg1: b1,
+                    arg2: c1,
+                    ..
+                },
+                E::Math {
+                    fun: f2,
+                    arg: a2,
+                    arg1: b2,
+                    arg2: c2,
+                    ..
+                },
+            ) => {
                 let opt = |x: &Option<Handle<E>>, y: &Option<Handle<E>>| match (x, y) {
                     (None, None) => true,
                     (Some(x), Some(y)) => s(*x, *y),
@@ -838,10 +1111,50 @@ impl Analysis {
                 };
                 f1 == f2 && s(*a1, *a2) && opt(b1, b2) && opt(c1, c2)
             }
-            (E::AccessIndex { base: b1, index: i1 }, E::AccessIndex { base: b2, index: i2 }) => i1 == i2 && s(*b1, *b2),
-            (E::Swizzle { size: z1, vector: v1, pattern: p1 }, E::Swizzle { size: z2, vector: v2, pattern: p2 }) => z1 == z2 && p1 == p2 && s(*v1, *v2),
-            (E::Splat { size: z1, value: v1 }, E::Splat { size: z2, value: v2 }) => z1 == z2 && s(*v1, *v2),
-            (E::As { expr: x1, kind: k1, convert: c1 }, E::As { expr: x2, kind: k2, convert: c2 }) => k1 == k2 && c1 == c2 && s(*x1, *x2),
+            (
+                E::AccessIndex {
+                    base: b1,
+                    index: i1,
+                },
+                E::AccessIndex {
+                    base: b2,
+                    index: i2,
+                },
+            ) => i1 == i2 && s(*b1, *b2),
+            (
+                E::Swizzle {
+                    size: z1,
+                    vector: v1,
+                    pattern: p1,
+                },
+                E::Swizzle {
+                    size: z2,
+                    vector: v2,
+                    pattern: p2,
+                },
+            ) => z1 == z2 && p1 == p2 && s(*v1, *v2),
+            (
+                E::Splat {
+                    size: z1,
+                    value: v1,
+                },
+                E::Splat {
+                    size: z2,
+                    value: v2,
+                },
+            ) => z1 == z2 && s(*v1, *v2),
+            (
+                E::As {
+                    expr: x1,
+                    kind: k1,
+                    convert: c1,
+                },
+                E::As {
+                    expr: x2,
+                    kind: k2,
+                    convert: c2,
+                },
+            ) => k1 == k2 && c1 == c2 && s(*x1, *x2),
             (E::Literal(x), E::Literal(y)) => x == y,
             (E::Constant(x), E::Constant(y)) => x == y,
             (E::FunctionArgument(x), E::FunctionArgument(y)) => x == y,
@@ -849,20 +1162,37 @@ impl Analysis {
         }
     }
 
-    fn eval(&mut self, module: &naga::Module, finfo: &naga::valid::FunctionInfo, f: &Function, id: usize, h: Handle<E>) {
+    fn eval(
+        &mut self,
+        module: &naga::Module,
+        finfo: &naga::valid::FunctionInfo,
+        f: &Function,
+        id: usize,
+        h: Handle<E>,
+    ) {
         let ty = finfo[h].ty.inner_with(&module.types).clone();
         let entry = self.functions[id].entry;
         let e = &f.expressions[h];
         let mut place = None;
-        let deps_of = |s: &Self, hs: &[Handle<E>]| hs.iter().fold(Facts::NONE, |acc, x| acc.with(s.v(id, *x).facts().only(Facts::DEPS)));
+        let deps_of = |s: &Self, hs: &[Handle<E>]| {
+            hs.iter().fold(Facts::NONE, |acc, x| {
+                acc.with(s.v(id, *x).facts().only(Facts::DEPS))
+            })
+        };
         let val = match e {
             E::Literal(l) => Val::Num(Num::constant(&[literal(l)])),
             E::Constant(c) => const_value(module, module.constants[*c].init),
             E::ZeroValue(_) => shape(module, &ty, &|n, _| Num::constant(&vec![0.0; n as usize])),
             E::Override(_) => self.external(module, &ty, Facts::UNIFORM),
             E::FunctionArgument(i) => {
-                if matches!(ty, TypeInner::Pointer { .. } | TypeInner::ValuePointer { .. }) {
-                    place = Some(Place { root: Root::Arg(id, *i as usize), path: Vec::new() });
+                if matches!(
+                    ty,
+                    TypeInner::Pointer { .. } | TypeInner::ValuePointer { .. }
+                ) {
+                    place = Some(Place {
+                        root: Root::Arg(id, *i as usize),
+                        path: Vec::new(),
+                    });
                     Val::Any
                 } else if entry {
                     self.external(module, &ty, Facts::INPUT)
@@ -871,25 +1201,35 @@ impl Analysis {
                 }
             }
             E::GlobalVariable(g) => {
-                place = Some(Place { root: Root::Global(g.index()), path: Vec::new() });
+                place = Some(Place {
+                    root: Root::Global(g.index()),
+                    path: Vec::new(),
+                });
                 Val::Any
             }
             E::LocalVariable(l) => {
-                place = Some(Place { root: Root::Local(id, l.index()), path: Vec::new() });
+                place = Some(Place {
+                    root: Root::Local(id, l.index()),
+                    path: Vec::new(),
+                });
                 Val::Any
             }
             E::CallResult(fh) => self.results[fh.index()].clone(),
             _ if entry => {
                 // The entry point only moves data between the pipeline and private variables.
                 match e {
-                    E::Access { base, .. } | E::AccessIndex { base, .. } if self.functions[id].places[base.index()].is_some() => {
+                    E::Access { base, .. } | E::AccessIndex { base, .. }
+                        if self.functions[id].places[base.index()].is_some() =>
+                    {
                         place = self.access_place(module, finfo, id, e);
                         Val::Any
                     }
                     _ => self.external(module, &ty, Facts::INPUT),
                 }
             }
-            E::Access { base, .. } | E::AccessIndex { base, .. } if self.functions[id].places[base.index()].is_some() => {
+            E::Access { base, .. } | E::AccessIndex { base, .. }
+                if self.functions[id].places[base.index()].is_some() =>
+            {
                 place = self.access_place(module, finfo, id, e);
                 Val::Any
             }
@@ -920,22 +1260,40 @@ impl Analysis {
                 Some(x) => {
                     let n = *size as u8;
                     let mut r = Num::splat(x.c[0], n, x.facts);
-                    r.norm = r.norm.meet(x.c[0].abs().mul(Interval::point((n as f64).sqrt())).slack(EPS));
+                    r.norm = r.norm.meet(
+                        x.c[0]
+                            .abs()
+                            .mul(Interval::point((n as f64).sqrt()))
+                            .slack(EPS),
+                    );
                     Val::Num(r.settle())
                 }
                 None => Val::Bot,
             },
-            E::Swizzle { size, vector, pattern } => match self.nm(id, *vector) {
+            E::Swizzle {
+                size,
+                vector,
+                pattern,
+            } => match self.nm(id, *vector) {
                 Some(x) => {
-                    let idx: Vec<usize> = pattern[..*size as usize].iter().map(|c| *c as usize).collect();
-                    let comps: Vec<Interval> = idx.iter().map(|&i| x.c[i.min(x.n as usize - 1)]).collect();
+                    let idx: Vec<usize> = pattern[..*size as usize]
+                        .iter()
+                        .map(|c| *c as usize)
+                        .collect();
+                    let comps: Vec<Interval> =
+                        idx.iter().map(|&i| x.c[i.min(x.n as usize - 1)]).collect();
                     let mut sorted = idx.clone();
                     sorted.sort_unstable();
                     sorted.dedup();
                     let permutation = sorted.len() == x.n as usize && idx.len() == x.n as usize;
                     let xyz = idx.len() == 3 && sorted == [0, 1, 2];
-                    let nz = x.facts.has(Facts::NZ) && (permutation || x.facts.has(Facts::EXT)) || xyz && x.facts.has(Facts::NZ3);
-                    let facts = x.facts.set(Facts::NZ, nz).set(Facts::NZ3, permutation && x.facts.has(Facts::NZ3)).set(Facts::CROSS, permutation && x.facts.any(Facts::CROSS));
+                    let nz = x.facts.has(Facts::NZ) && (permutation || x.facts.has(Facts::EXT))
+                        || xyz && x.facts.has(Facts::NZ3);
+                    let facts = x
+                        .facts
+                        .set(Facts::NZ, nz)
+                        .set(Facts::NZ3, permutation && x.facts.has(Facts::NZ3))
+                        .set(Facts::CROSS, permutation && x.facts.any(Facts::CROSS));
                     let mut r = Num::from_components(&comps, facts);
                     if permutation {
                         r.norm = r.norm.meet(x.norm);
@@ -947,12 +1305,21 @@ impl Analysis {
             E::Compose { components, .. } => self.compose(module, f, &ty, id, components),
             E::Unary { op, expr } => match (op, self.nm(id, *expr)) {
                 (Uo::Negate, Some(x)) => {
-                    let keep = x.facts.only(Facts::NZ.with(Facts::NZ3).with(Facts::UNIT).with(Facts::DIFF).with(Facts::EXT).with(Facts::ALL_OR));
+                    let keep = x.facts.only(
+                        Facts::NZ
+                            .with(Facts::NZ3)
+                            .with(Facts::UNIT)
+                            .with(Facts::DIFF)
+                            .with(Facts::EXT)
+                            .with(Facts::ALL_OR),
+                    );
                     let mut r = Num::from_components(&x.map(Interval::neg), keep);
                     r.norm = r.norm.meet(x.norm);
                     Val::Num(r.settle())
                 }
-                (Uo::LogicalNot, Some(x)) => Val::Num(Num::splat(Interval::UNIT, x.n, x.facts.only(Facts::DEPS))),
+                (Uo::LogicalNot, Some(x)) => {
+                    Val::Num(Num::splat(Interval::UNIT, x.n, x.facts.only(Facts::DEPS)))
+                }
                 (_, Some(x)) => Self::unknown(module, &ty, x.facts),
                 (_, None) => Val::Bot,
             },
@@ -975,9 +1342,23 @@ impl Analysis {
                 let deps = deps_of(self, &[*argument]);
                 shape(module, &ty, &|n, _| Num::splat(Interval::UNIT, n, deps))
             }
-            E::As { expr, kind, convert } => self.convert(module, &ty, id, *expr, *kind, *convert),
-            E::Math { fun, arg, arg1, arg2, arg3 } => self.math(module, f, id, &ty, *fun, *arg, *arg1, *arg2, *arg3),
-            E::ImageSample { coordinate, depth_ref, .. } => {
+            E::As {
+                expr,
+                kind,
+                convert,
+            } => self.convert(module, &ty, id, *expr, *kind, *convert),
+            E::Math {
+                fun,
+                arg,
+                arg1,
+                arg2,
+                arg3,
+            } => self.math(module, f, id, &ty, *fun, *arg, *arg1, *arg2, *arg3),
+            E::ImageSample {
+                coordinate,
+                depth_ref,
+                ..
+            } => {
                 let deps = deps_of(self, &[*coordinate]).with(Facts::TEXTURE);
                 if depth_ref.is_some() {
                     Val::Num(Num::scalar(Interval::UNIT, deps.with(Facts::EXT)))
@@ -989,7 +1370,9 @@ impl Analysis {
                 let deps = deps_of(self, &[*coordinate]).with(Facts::TEXTURE);
                 self.texel(module, &ty, deps)
             }
-            E::ImageQuery { .. } => shape(module, &ty, &|n, _| Num::splat(Interval::NON_NEGATIVE, n, Facts::NONE)),
+            E::ImageQuery { .. } => shape(module, &ty, &|n, _| {
+                Num::splat(Interval::NON_NEGATIVE, n, Facts::NONE)
+            }),
             _ => Self::unknown(module, &ty, Facts::NONE),
         };
         let ff = &mut self.functions[id];
@@ -1000,11 +1383,19 @@ impl Analysis {
     fn texel(&self, module: &naga::Module, ty: &TypeInner, deps: Facts) -> Val {
         match self.mode {
             Mode::Sound => self.external(module, ty, deps),
-            Mode::Typical => shape(module, ty, &|n, _| Num::splat(Interval::UNIT, n, Facts::EXT.with(deps))),
+            Mode::Typical => shape(module, ty, &|n, _| {
+                Num::splat(Interval::UNIT, n, Facts::EXT.with(deps))
+            }),
         }
     }
 
-    fn access_place(&self, module: &naga::Module, finfo: &naga::valid::FunctionInfo, id: usize, e: &E) -> Option<Place> {
+    fn access_place(
+        &self,
+        module: &naga::Module,
+        finfo: &naga::valid::FunctionInfo,
+        id: usize,
+        e: &E,
+    ) -> Option<Place> {
         let (base, index) = match e {
             E::Access { base, .. } => (*base, ANY),
             E::AccessIndex { base, index } => (*base, *index),
@@ -1020,7 +1411,14 @@ impl Analysis {
         Some(p)
     }
 
-    fn compose(&self, module: &naga::Module, f: &Function, ty: &TypeInner, id: usize, components: &[Handle<E>]) -> Val {
+    fn compose(
+        &self,
+        module: &naga::Module,
+        f: &Function,
+        ty: &TypeInner,
+        id: usize,
+        components: &[Handle<E>],
+    ) -> Val {
         match ty {
             TypeInner::Vector { .. } | TypeInner::Scalar(_) => {
                 let mut comps = Vec::new();
@@ -1028,33 +1426,62 @@ impl Analysis {
                 let mut nz = false;
                 let mut nz3 = false;
                 for c in components {
-                    let Some(x) = self.nm(id, *c) else { return Val::Bot };
+                    let Some(x) = self.nm(id, *c) else {
+                        return Val::Bot;
+                    };
                     let start = comps.len();
                     comps.extend_from_slice(x.comps());
                     nz |= x.facts.has(Facts::NZ);
-                    nz3 |= (start + x.n as usize <= 3 && x.facts.has(Facts::NZ)) || (start == 0 && x.facts.has(Facts::NZ3));
+                    nz3 |= (start + x.n as usize <= 3 && x.facts.has(Facts::NZ))
+                        || (start == 0 && x.facts.has(Facts::NZ3));
                     facts = facts.join(x.facts.without(Facts::NZ));
                 }
                 // `vec3(v)` of a vec4 `v` is lowered as a compose of `v[0]`, `v[1]`, `v[2]`.
                 if let [a, b, c] = components {
-                    if let (E::AccessIndex { base: b0, index: 0 }, E::AccessIndex { base: b1, index: 1 }, E::AccessIndex { base: b2, index: 2 }) =
-                        (&f.expressions[*a], &f.expressions[*b], &f.expressions[*c])
+                    if let (
+                        E::AccessIndex { base: b0, index: 0 },
+                        E::AccessIndex { base: b1, index: 1 },
+                        E::AccessIndex { base: b2, index: 2 },
+                    ) = (&f.expressions[*a], &f.expressions[*b], &f.expressions[*c])
                     {
                         if b0 == b1 && b1 == b2 && self.v(id, *b0).facts().has(Facts::NZ3) {
                             nz = true;
                         }
                     }
                 }
-                Val::Num(Num::from_components(&comps, facts.set(Facts::NZ, nz).set(Facts::NZ3, nz3).without(Facts::DIFF).without(Facts::CROSS)))
+                Val::Num(Num::from_components(
+                    &comps,
+                    facts
+                        .set(Facts::NZ, nz)
+                        .set(Facts::NZ3, nz3)
+                        .without(Facts::DIFF)
+                        .without(Facts::CROSS),
+                ))
             }
-            TypeInner::Array { .. } => Val::Arr(Box::new(components.iter().fold(Val::Bot, |a, c| a.join(self.v(id, *c))))),
-            TypeInner::Matrix { .. } | TypeInner::Struct { .. } => Val::Agg(components.iter().map(|c| self.v(id, *c).clone()).collect()),
+            TypeInner::Array { .. } => Val::Arr(Box::new(
+                components
+                    .iter()
+                    .fold(Val::Bot, |a, c| a.join(self.v(id, *c))),
+            )),
+            TypeInner::Matrix { .. } | TypeInner::Struct { .. } => {
+                Val::Agg(components.iter().map(|c| self.v(id, *c).clone()).collect())
+            }
             _ => Self::unknown(module, ty, Facts::NONE),
         }
     }
 
-    fn convert(&self, module: &naga::Module, ty: &TypeInner, id: usize, expr: Handle<E>, kind: ScalarKind, convert: Option<u8>) -> Val {
-        let Some(x) = self.nm(id, expr) else { return Val::Bot };
+    fn convert(
+        &self,
+        module: &naga::Module,
+        ty: &TypeInner,
+        id: usize,
+        expr: Handle<E>,
+        kind: ScalarKind,
+        convert: Option<u8>,
+    ) -> Val {
+        let Some(x) = self.nm(id, expr) else {
+            return Val::Bot;
+        };
         let deps = x.facts.only(Facts::DEPS);
         if convert.is_none() {
             return Self::unknown(module, ty, deps);
@@ -1066,34 +1493,79 @@ impl Analysis {
             ScalarKind::Sint | ScalarKind::Uint => x.map(|c| {
                 let t = c.trunc();
                 if kind == ScalarKind::Uint {
-                    t.meet(Interval::NON_NEGATIVE).hull(if t.lo < 0.0 { Interval::NON_NEGATIVE } else { Interval::EMPTY })
+                    t.meet(Interval::NON_NEGATIVE).hull(if t.lo < 0.0 {
+                        Interval::NON_NEGATIVE
+                    } else {
+                        Interval::EMPTY
+                    })
                 } else {
                     t
                 }
             }),
             _ => x.comps().to_vec(),
         };
-        let keep = if kind == ScalarKind::Float { x.facts } else { x.facts.without(Facts::POS).without(Facts::NZ) };
+        let keep = if kind == ScalarKind::Float {
+            x.facts
+        } else {
+            x.facts.without(Facts::POS).without(Facts::NZ)
+        };
         Val::Num(Num::from_components(&comps, keep.without(Facts::DIFF)))
     }
 
     /// Whether `e` is `x - y * floor(x / y)`: GLSL's `mod` as essl lowers it.
     fn is_mod(f: &Function, left: Handle<E>, right: Handle<E>) -> Option<Handle<E>> {
-        let E::Binary { op: Bo::Multiply, left: y, right: fl } = f.expressions[right] else { return None };
-        let E::Math { fun: Mf::Floor, arg: q, .. } = f.expressions[fl] else { return None };
-        let E::Binary { op: Bo::Divide, left: x2, right: y2 } = f.expressions[q] else { return None };
+        let E::Binary {
+            op: Bo::Multiply,
+            left: y,
+            right: fl,
+        } = f.expressions[right]
+        else {
+            return None;
+        };
+        let E::Math {
+            fun: Mf::Floor,
+            arg: q,
+            ..
+        } = f.expressions[fl]
+        else {
+            return None;
+        };
+        let E::Binary {
+            op: Bo::Divide,
+            left: x2,
+            right: y2,
+        } = f.expressions[q]
+        else {
+            return None;
+        };
         (x2 == left && y2 == y).then_some(y)
     }
 
     #[allow(clippy::too_many_arguments)]
-    fn binary(&self, module: &naga::Module, f: &Function, id: usize, ty: &TypeInner, op: Bo, l: Handle<E>, r: Handle<E>) -> Val {
+    fn binary(
+        &self,
+        module: &naga::Module,
+        f: &Function,
+        id: usize,
+        ty: &TypeInner,
+        op: Bo,
+        l: Handle<E>,
+        r: Handle<E>,
+    ) -> Val {
         let (lv, rv) = (self.v(id, l), self.v(id, r));
         if lv.is_bot() || rv.is_bot() {
             return Val::Bot;
         }
         let deps = lv.facts().with(rv.facts()).only(Facts::DEPS);
         match op {
-            Bo::Equal | Bo::NotEqual | Bo::Less | Bo::LessEqual | Bo::Greater | Bo::GreaterEqual | Bo::LogicalAnd | Bo::LogicalOr => {
+            Bo::Equal
+            | Bo::NotEqual
+            | Bo::Less
+            | Bo::LessEqual
+            | Bo::Greater
+            | Bo::GreaterEqual
+            | Bo::LogicalAnd
+            | Bo::LogicalOr => {
                 return shape(module, ty, &|n, _| Num::splat(Interval::UNIT, n, deps));
             }
             Bo::And | Bo::InclusiveOr | Bo::ExclusiveOr | Bo::ShiftLeft | Bo::ShiftRight => {
@@ -1102,7 +1574,9 @@ impl Analysis {
             _ => {}
         }
         match (lv, rv) {
-            (Val::Num(a), Val::Num(b)) => Val::Num(self.num_binary(f, id, ty, op, l, r, a, b, deps)),
+            (Val::Num(a), Val::Num(b)) => {
+                Val::Num(self.num_binary(f, id, ty, op, l, r, a, b, deps))
+            }
             (Val::Agg(m), Val::Num(v)) if op == Bo::Multiply && v.n > 1 => {
                 // Matrix times column vector.
                 let cols: Vec<Num> = m.iter().filter_map(|c| c.num().copied()).collect();
@@ -1111,14 +1585,27 @@ impl Analysis {
                 }
                 let rows = cols[0].n as usize;
                 let comps: Vec<Interval> = (0..rows)
-                    .map(|row| cols.iter().enumerate().fold(Interval::point(0.0), |s, (c, col)| s.add(col.c[row].mul(v.c[c]))))
+                    .map(|row| {
+                        cols.iter()
+                            .enumerate()
+                            .fold(Interval::point(0.0), |s, (c, col)| {
+                                s.add(col.c[row].mul(v.c[c]))
+                            })
+                    })
                     .collect();
                 let invertible = cols.iter().all(|c| c.facts.has(Facts::NZ));
                 let nz = invertible && v.facts.has(Facts::NZ) && cols.len() == rows;
                 // A direction (w = 0) keeps a non-zero xyz through an invertible (affine or
                 // projective) transform.
-                let nz3 = invertible && rows == 4 && v.n == 4 && v.c[3].as_point() == Some(0.0) && v.facts.has(Facts::NZ3);
-                Val::Num(Num::from_components(&comps, deps.set(Facts::NZ, nz).set(Facts::NZ3, nz3)))
+                let nz3 = invertible
+                    && rows == 4
+                    && v.n == 4
+                    && v.c[3].as_point() == Some(0.0)
+                    && v.facts.has(Facts::NZ3);
+                Val::Num(Num::from_components(
+                    &comps,
+                    deps.set(Facts::NZ, nz).set(Facts::NZ3, nz3),
+                ))
             }
             (Val::Num(v), Val::Agg(m)) if op == Bo::Multiply && v.n > 1 => {
                 // Row vector times matrix.
@@ -1128,10 +1615,17 @@ impl Analysis {
                 }
                 let comps: Vec<Interval> = cols
                     .iter()
-                    .map(|col| (0..col.n as usize).fold(Interval::point(0.0), |s, r| s.add(col.c[r].mul(v.c[r.min(v.n as usize - 1)]))))
+                    .map(|col| {
+                        (0..col.n as usize).fold(Interval::point(0.0), |s, r| {
+                            s.add(col.c[r].mul(v.c[r.min(v.n as usize - 1)]))
+                        })
+                    })
                     .collect();
                 let invertible = cols.iter().all(|c| c.facts.has(Facts::NZ));
-                Val::Num(Num::from_components(&comps, deps.set(Facts::NZ, invertible && v.facts.has(Facts::NZ))))
+                Val::Num(Num::from_components(
+                    &comps,
+                    deps.set(Facts::NZ, invertible && v.facts.has(Facts::NZ)),
+                ))
             }
             (Val::Agg(a), Val::Agg(b)) if op == Bo::Multiply => {
                 // Matrix product: each column of the result is A times a column of B.
@@ -1140,13 +1634,21 @@ impl Analysis {
                     return Self::unknown(module, ty, deps);
                 }
                 let rows = acols[0].n as usize;
-                let inv = acols.iter().all(|c| c.facts.has(Facts::NZ)) && b.iter().all(|c| c.facts().has(Facts::NZ));
+                let inv = acols.iter().all(|c| c.facts.has(Facts::NZ))
+                    && b.iter().all(|c| c.facts().has(Facts::NZ));
                 let cols = b
                     .iter()
                     .map(|bc| match bc.num() {
                         Some(v) => {
                             let comps: Vec<Interval> = (0..rows)
-                                .map(|row| acols.iter().enumerate().fold(Interval::point(0.0), |s, (c, col)| s.add(col.c[row].mul(v.c[c.min(v.n as usize - 1)]))))
+                                .map(|row| {
+                                    acols.iter().enumerate().fold(
+                                        Interval::point(0.0),
+                                        |s, (c, col)| {
+                                            s.add(col.c[row].mul(v.c[c.min(v.n as usize - 1)]))
+                                        },
+                                    )
+                                })
                                 .collect();
                             Val::Num(Num::from_components(&comps, deps.set(Facts::NZ, inv)))
                         }
@@ -1155,15 +1657,22 @@ impl Analysis {
                     .collect();
                 Val::Agg(cols)
             }
-            (Val::Agg(a), Val::Agg(b)) if a.len() == b.len() && matches!(op, Bo::Add | Bo::Subtract) => Val::Agg(
-                a.iter()
-                    .zip(b)
-                    .map(|(x, y)| match (x.num(), y.num()) {
-                        (Some(x), Some(y)) => Val::Num(Num::from_components(&x.zip(y, |p, q| if op == Bo::Add { p.add(q) } else { p.sub(q) }), deps)),
-                        _ => Val::Any,
-                    })
-                    .collect(),
-            ),
+            (Val::Agg(a), Val::Agg(b))
+                if a.len() == b.len() && matches!(op, Bo::Add | Bo::Subtract) =>
+            {
+                Val::Agg(
+                    a.iter()
+                        .zip(b)
+                        .map(|(x, y)| match (x.num(), y.num()) {
+                            (Some(x), Some(y)) => Val::Num(Num::from_components(
+                                &x.zip(y, |p, q| if op == Bo::Add { p.add(q) } else { p.sub(q) }),
+                                deps,
+                            )),
+                            _ => Val::Any,
+                        })
+                        .collect(),
+                )
+            }
             (Val::Agg(m), Val::Num(s)) | (Val::Num(s), Val::Agg(m)) if s.n == 1 => {
                 let scale_nz = s.facts.has(Facts::NZ);
                 Val::Agg(
@@ -1175,7 +1684,13 @@ impl Analysis {
                                     Bo::Divide if matches!(lv, Val::Agg(_)) => x.div(s.c[0]),
                                     _ => Interval::FULL,
                                 });
-                                Val::Num(Num::from_components(&comps, deps.set(Facts::NZ, scale_nz && c.facts.has(Facts::NZ) && op == Bo::Multiply)))
+                                Val::Num(Num::from_components(
+                                    &comps,
+                                    deps.set(
+                                        Facts::NZ,
+                                        scale_nz && c.facts.has(Facts::NZ) && op == Bo::Multiply,
+                                    ),
+                                ))
                             }
                             None => Val::Any,
                         })
@@ -1187,7 +1702,18 @@ impl Analysis {
     }
 
     #[allow(clippy::too_many_arguments)]
-    fn num_binary(&self, f: &Function, id: usize, ty: &TypeInner, op: Bo, l: Handle<E>, r: Handle<E>, a: &Num, b: &Num, deps: Facts) -> Num {
+    fn num_binary(
+        &self,
+        f: &Function,
+        id: usize,
+        ty: &TypeInner,
+        op: Bo,
+        l: Handle<E>,
+        r: Handle<E>,
+        a: &Num,
+        b: &Num,
+        deps: Facts,
+    ) -> Num {
         let fa = a.facts;
         let fb = b.facts;
         let is_int = matches!(ty.scalar_kind(), Some(ScalarKind::Sint | ScalarKind::Uint));
@@ -1197,9 +1723,17 @@ impl Analysis {
             Bo::Add => {
                 let comps = a.zip(b, Interval::add);
                 let nn = fa.has(Facts::NN) && fb.has(Facts::NN);
-                let pos = (fa.has(Facts::POS) && fb.has(Facts::NN)) || (fa.has(Facts::NN) && fb.has(Facts::POS));
-                let nz = if vector_result { nn && (fa.has(Facts::NZ) || fb.has(Facts::NZ)) } else { pos };
-                let facts = deps.set(Facts::NN, nn).set(Facts::POS, pos).set(Facts::NZ, nz);
+                let pos = (fa.has(Facts::POS) && fb.has(Facts::NN))
+                    || (fa.has(Facts::NN) && fb.has(Facts::POS));
+                let nz = if vector_result {
+                    nn && (fa.has(Facts::NZ) || fb.has(Facts::NZ))
+                } else {
+                    pos
+                };
+                let facts = deps
+                    .set(Facts::NN, nn)
+                    .set(Facts::POS, pos)
+                    .set(Facts::NZ, nz);
                 let mut out = Num::from_components(&comps, facts);
                 if !mixed && vector_result {
                     out.norm = out.norm.meet(triangle(a.norm, b.norm));
@@ -1208,12 +1742,18 @@ impl Analysis {
             }
             Bo::Subtract => {
                 if self.same(f, id, l, r) {
-                    return Num::from_components(&vec![Interval::point(0.0); a.n.max(b.n) as usize], deps);
+                    return Num::from_components(
+                        &vec![Interval::point(0.0); a.n.max(b.n) as usize],
+                        deps,
+                    );
                 }
                 if let Some(y) = Self::is_mod(f, l, r) {
                     if let Some(yv) = self.nm(id, y) {
                         let comps = a.zip(&yv, Interval::modulo);
-                        return Num::from_components(&comps, deps.set(Facts::NN, yv.facts.has(Facts::NN)));
+                        return Num::from_components(
+                            &comps,
+                            deps.set(Facts::NN, yv.facts.has(Facts::NN)),
+                        );
                     }
                 }
                 let comps = a.zip(b, Interval::sub);
@@ -1226,7 +1766,13 @@ impl Analysis {
             Bo::Multiply => {
                 if self.same(f, id, l, r) && a.n == b.n {
                     let comps = a.map(Interval::sqr);
-                    let facts = deps.with(Facts::NN).set(Facts::POS, fa.has(Facts::POS) || (a.n == 1 && fa.has(Facts::NZ))).set(Facts::UNIT, fa.has(Facts::UNIT));
+                    let facts = deps
+                        .with(Facts::NN)
+                        .set(
+                            Facts::POS,
+                            fa.has(Facts::POS) || (a.n == 1 && fa.has(Facts::NZ)),
+                        )
+                        .set(Facts::UNIT, fa.has(Facts::UNIT));
                     return Num::from_components(&comps, facts);
                 }
                 let comps = a.zip(b, Interval::mul);
@@ -1235,7 +1781,12 @@ impl Analysis {
                 let nz = fa.has(Facts::NZ) && fb.has(Facts::NZ) && (mixed || !vector_result);
                 let unit = fa.has(Facts::UNIT) && fb.has(Facts::UNIT);
                 let cross = mixed && (fa.any(Facts::CROSS) || fb.any(Facts::CROSS));
-                let facts = deps.set(Facts::NN, nn).set(Facts::POS, pos).set(Facts::NZ, nz).set(Facts::UNIT, unit).set(Facts::CROSS, cross);
+                let facts = deps
+                    .set(Facts::NN, nn)
+                    .set(Facts::POS, pos)
+                    .set(Facts::NZ, nz)
+                    .set(Facts::UNIT, unit)
+                    .set(Facts::CROSS, cross);
                 let mut out = Num::from_components(&comps, facts);
                 if mixed {
                     let (s, v) = if a.n == 1 { (a, b) } else { (b, a) };
@@ -1249,7 +1800,11 @@ impl Analysis {
                 let pos = fa.has(Facts::POS) && fb.has(Facts::POS) && !is_int;
                 let nz = fa.has(Facts::NZ) && !is_int && (b.n == 1 || !vector_result);
                 let cross = b.n == 1 && fa.any(Facts::CROSS);
-                let facts = deps.set(Facts::NN, nn).set(Facts::POS, pos).set(Facts::NZ, nz).set(Facts::CROSS, cross);
+                let facts = deps
+                    .set(Facts::NN, nn)
+                    .set(Facts::POS, pos)
+                    .set(Facts::NZ, nz)
+                    .set(Facts::CROSS, cross);
                 let mut out = Num::from_components(&comps, facts);
                 if b.n == 1 && a.n > 1 && !is_int {
                     out.norm = out.norm.meet(a.norm.div(b.c[0].abs()));
@@ -1262,7 +1817,10 @@ impl Analysis {
                         x.rem_int(y)
                     } else {
                         let m = y.mag();
-                        Interval::new(if x.lo >= 0.0 { 0.0 } else { x.lo.max(-m) }, if x.hi <= 0.0 { 0.0 } else { x.hi.min(m) })
+                        Interval::new(
+                            if x.lo >= 0.0 { 0.0 } else { x.lo.max(-m) },
+                            if x.hi <= 0.0 { 0.0 } else { x.hi.min(m) },
+                        )
                     }
                 });
                 Num::from_components(&comps, deps.set(Facts::NN, fa.has(Facts::NN)))
@@ -1272,19 +1830,34 @@ impl Analysis {
     }
 
     #[allow(clippy::too_many_arguments)]
-    fn math(&self, module: &naga::Module, f: &Function, id: usize, ty: &TypeInner, fun: Mf, arg: Handle<E>, arg1: Option<Handle<E>>, arg2: Option<Handle<E>>, _arg3: Option<Handle<E>>) -> Val {
+    fn math(
+        &self,
+        module: &naga::Module,
+        f: &Function,
+        id: usize,
+        ty: &TypeInner,
+        fun: Mf,
+        arg: Handle<E>,
+        arg1: Option<Handle<E>>,
+        arg2: Option<Handle<E>>,
+        _arg3: Option<Handle<E>>,
+    ) -> Val {
         let args: Vec<Handle<E>> = [Some(arg), arg1, arg2].into_iter().flatten().collect();
         if args.iter().any(|a| self.v(id, *a).is_bot()) {
             return Val::Bot;
         }
-        let deps = args.iter().fold(Facts::NONE, |acc, a| acc.with(self.v(id, *a).facts().only(Facts::DEPS)));
+        let deps = args.iter().fold(Facts::NONE, |acc, a| {
+            acc.with(self.v(id, *a).facts().only(Facts::DEPS))
+        });
         let nums: Vec<Num> = args.iter().filter_map(|a| self.nm(id, *a)).collect();
         if nums.len() != args.len() {
             // Matrix functions and others on aggregates.
             return match fun {
                 Mf::Transpose | Mf::Inverse => {
                     let inv = self.v(id, arg).facts().has(Facts::NZ);
-                    shape(module, ty, &|n, _| Num::splat(Interval::FULL, n, deps.set(Facts::NZ, inv)))
+                    shape(module, ty, &|n, _| {
+                        Num::splat(Interval::FULL, n, deps.set(Facts::NZ, inv))
+                    })
                 }
                 Mf::Determinant => {
                     let inv = self.v(id, arg).facts().has(Facts::NZ);
@@ -1299,10 +1872,21 @@ impl Analysis {
             let comps = x.map(|c| if slack { g(c).slack(EPS) } else { g(c) });
             Val::Num(Num::from_components(&comps, facts.with(deps)))
         };
-        let keep_sign = |f: Facts| Facts::NONE.set(Facts::NN, f.has(Facts::NN)).set(Facts::POS, f.has(Facts::POS)).set(Facts::NZ, f.has(Facts::NZ) && x.n == 1);
+        let keep_sign = |f: Facts| {
+            Facts::NONE
+                .set(Facts::NN, f.has(Facts::NN))
+                .set(Facts::POS, f.has(Facts::POS))
+                .set(Facts::NZ, f.has(Facts::NZ) && x.n == 1)
+        };
         match fun {
             Mf::Abs => {
-                let facts = Facts::NN.set(Facts::POS, fx.has(Facts::POS) || (x.n == 1 && fx.has(Facts::NZ))).set(Facts::NZ, fx.has(Facts::NZ)).set(Facts::UNIT, fx.has(Facts::UNIT));
+                let facts = Facts::NN
+                    .set(
+                        Facts::POS,
+                        fx.has(Facts::POS) || (x.n == 1 && fx.has(Facts::NZ)),
+                    )
+                    .set(Facts::NZ, fx.has(Facts::NZ))
+                    .set(Facts::UNIT, fx.has(Facts::UNIT));
                 let mut r = Num::from_components(&x.map(Interval::abs), facts.with(deps));
                 r.norm = r.norm.meet(x.norm);
                 Val::Num(r.settle())
@@ -1310,93 +1894,204 @@ impl Analysis {
             Mf::Min | Mf::Max => {
                 let y = nums[1];
                 let fy = y.facts;
-                let comps = x.zip(&y, if fun == Mf::Min { Interval::min } else { Interval::max });
+                let comps = x.zip(
+                    &y,
+                    if fun == Mf::Min {
+                        Interval::min
+                    } else {
+                        Interval::max
+                    },
+                );
                 let (nn, pos) = if fun == Mf::Min {
-                    (fx.has(Facts::NN) && fy.has(Facts::NN), fx.has(Facts::POS) && fy.has(Facts::POS))
+                    (
+                        fx.has(Facts::NN) && fy.has(Facts::NN),
+                        fx.has(Facts::POS) && fy.has(Facts::POS),
+                    )
                 } else {
-                    (fx.has(Facts::NN) || fy.has(Facts::NN), fx.has(Facts::POS) || fy.has(Facts::POS))
+                    (
+                        fx.has(Facts::NN) || fy.has(Facts::NN),
+                        fx.has(Facts::POS) || fy.has(Facts::POS),
+                    )
                 };
                 let unit = fx.has(Facts::UNIT) && fy.has(Facts::UNIT);
-                let facts = deps.set(Facts::NN, nn).set(Facts::POS, pos).set(Facts::NZ, pos).set(Facts::UNIT, unit);
+                let facts = deps
+                    .set(Facts::NN, nn)
+                    .set(Facts::POS, pos)
+                    .set(Facts::NZ, pos)
+                    .set(Facts::UNIT, unit);
                 Val::Num(Num::from_components(&comps, facts))
             }
             Mf::Clamp | Mf::Saturate => {
-                let (lo, hi) = if fun == Mf::Clamp { (nums[1], nums[2]) } else { (Num::constant(&[0.0]), Num::constant(&[1.0])) };
+                let (lo, hi) = if fun == Mf::Clamp {
+                    (nums[1], nums[2])
+                } else {
+                    (Num::constant(&[0.0]), Num::constant(&[1.0]))
+                };
                 let comps: Vec<Interval> = (0..x.n as usize)
                     .map(|i| {
-                        let pick = |n: &Num| if n.n == 1 { n.c[0] } else { n.c[i.min(n.n as usize - 1)] };
+                        let pick = |n: &Num| {
+                            if n.n == 1 {
+                                n.c[0]
+                            } else {
+                                n.c[i.min(n.n as usize - 1)]
+                            }
+                        };
                         x.c[i].clamp(pick(&lo), pick(&hi))
                     })
                     .collect();
                 let nn = (fx.has(Facts::NN) || lo.facts.has(Facts::NN)) && hi.facts.has(Facts::NN);
-                let pos = (fx.has(Facts::POS) || lo.facts.has(Facts::POS)) && hi.facts.has(Facts::POS);
-                let unit = fx.has(Facts::UNIT) && lo.facts.has(Facts::UNIT) && hi.facts.has(Facts::UNIT);
-                Val::Num(Num::from_components(&comps, deps.set(Facts::NN, nn).set(Facts::POS, pos).set(Facts::NZ, pos).set(Facts::UNIT, unit)))
+                let pos =
+                    (fx.has(Facts::POS) || lo.facts.has(Facts::POS)) && hi.facts.has(Facts::POS);
+                let unit =
+                    fx.has(Facts::UNIT) && lo.facts.has(Facts::UNIT) && hi.facts.has(Facts::UNIT);
+                Val::Num(Num::from_components(
+                    &comps,
+                    deps.set(Facts::NN, nn)
+                        .set(Facts::POS, pos)
+                        .set(Facts::NZ, pos)
+                        .set(Facts::UNIT, unit),
+                ))
             }
-            Mf::Sin | Mf::Cos => unary(if fun == Mf::Sin { Interval::sin } else { Interval::cos }, false, Facts::UNIT),
+            Mf::Sin | Mf::Cos => unary(
+                if fun == Mf::Sin {
+                    Interval::sin
+                } else {
+                    Interval::cos
+                },
+                false,
+                Facts::UNIT,
+            ),
             Mf::Tan => unary(Interval::tan, true, Facts::NONE),
             Mf::Sinh => unary(Interval::sinh, true, keep_sign(fx)),
-            Mf::Cosh => unary(Interval::cosh, true, Facts::NN.with(Facts::POS).with(Facts::NZ)),
+            Mf::Cosh => unary(
+                Interval::cosh,
+                true,
+                Facts::NN.with(Facts::POS).with(Facts::NZ),
+            ),
             Mf::Tanh => unary(Interval::tanh, true, keep_sign(fx)),
             Mf::Asin => unary(Interval::asin, true, keep_sign(fx)),
             Mf::Acos => unary(Interval::acos, true, Facts::NN),
             Mf::Atan => unary(Interval::atan, true, keep_sign(fx)),
-            Mf::Atan2 => Val::Num(Num::splat(Interval::new(-std::f64::consts::PI, std::f64::consts::PI), x.n, deps)),
-            Mf::Asinh | Mf::Atanh => Val::Num(Num::splat(Interval::FULL, x.n, deps.with(keep_sign(fx)))),
+            Mf::Atan2 => Val::Num(Num::splat(
+                Interval::new(-std::f64::consts::PI, std::f64::consts::PI),
+                x.n,
+                deps,
+            )),
+            Mf::Asinh | Mf::Atanh => {
+                Val::Num(Num::splat(Interval::FULL, x.n, deps.with(keep_sign(fx))))
+            }
             Mf::Acosh => Val::Num(Num::splat(Interval::NON_NEGATIVE, x.n, deps)),
             Mf::Radians | Mf::Degrees => {
-                let k = if fun == Mf::Radians { std::f64::consts::PI / 180.0 } else { 180.0 / std::f64::consts::PI };
+                let k = if fun == Mf::Radians {
+                    std::f64::consts::PI / 180.0
+                } else {
+                    180.0 / std::f64::consts::PI
+                };
                 let comps = x.map(|c| c.mul(Interval::new(k, k)));
                 Val::Num(Num::from_components(&comps, deps.with(keep_sign(fx))))
             }
-            Mf::Ceil => unary(Interval::ceil, false, keep_sign(fx).with(fx.only(Facts::UNIT))),
+            Mf::Ceil => unary(
+                Interval::ceil,
+                false,
+                keep_sign(fx).with(fx.only(Facts::UNIT)),
+            ),
             Mf::Floor | Mf::Round | Mf::Trunc => {
                 let g = match fun {
                     Mf::Floor => Interval::floor,
                     Mf::Round => Interval::round,
                     _ => Interval::trunc,
                 };
-                unary(g, false, Facts::NONE.set(Facts::NN, fx.has(Facts::NN)).with(fx.only(Facts::UNIT)))
+                unary(
+                    g,
+                    false,
+                    Facts::NONE
+                        .set(Facts::NN, fx.has(Facts::NN))
+                        .with(fx.only(Facts::UNIT)),
+                )
             }
             Mf::Fract => unary(Interval::fract, false, Facts::NN.with(Facts::UNIT)),
-            Mf::Exp | Mf::Exp2 => unary(if fun == Mf::Exp { Interval::exp } else { Interval::exp2 }, true, Facts::NN.with(Facts::POS).with(Facts::NZ)),
-            Mf::Log | Mf::Log2 => unary(if fun == Mf::Log { Interval::log } else { Interval::log2 }, true, Facts::NONE),
+            Mf::Exp | Mf::Exp2 => unary(
+                if fun == Mf::Exp {
+                    Interval::exp
+                } else {
+                    Interval::exp2
+                },
+                true,
+                Facts::NN.with(Facts::POS).with(Facts::NZ),
+            ),
+            Mf::Log | Mf::Log2 => unary(
+                if fun == Mf::Log {
+                    Interval::log
+                } else {
+                    Interval::log2
+                },
+                true,
+                Facts::NONE,
+            ),
             Mf::Sqrt => unary(
                 Interval::sqrt,
                 true,
-                Facts::NN.set(Facts::POS, fx.has(Facts::POS)).set(Facts::NZ, fx.has(Facts::POS) && x.n == 1).set(Facts::UNIT, fx.has(Facts::UNIT) && fx.has(Facts::NN)),
+                Facts::NN
+                    .set(Facts::POS, fx.has(Facts::POS))
+                    .set(Facts::NZ, fx.has(Facts::POS) && x.n == 1)
+                    .set(Facts::UNIT, fx.has(Facts::UNIT) && fx.has(Facts::NN)),
             ),
-            Mf::InverseSqrt => unary(Interval::inverse_sqrt, true, Facts::NN.with(Facts::POS).with(Facts::NZ)),
+            Mf::InverseSqrt => unary(
+                Interval::inverse_sqrt,
+                true,
+                Facts::NN.with(Facts::POS).with(Facts::NZ),
+            ),
             Mf::Pow => {
                 let y = nums[1];
                 let comps = x.zip(&y, |p, q| p.pow(q).slack(EPS));
                 let facts = Facts::NN
                     .set(Facts::POS, fx.has(Facts::POS))
                     .set(Facts::NZ, fx.has(Facts::POS) && x.n == 1)
-                    .set(Facts::UNIT, fx.has(Facts::UNIT) && fx.has(Facts::NN) && y.facts.has(Facts::NN));
+                    .set(
+                        Facts::UNIT,
+                        fx.has(Facts::UNIT) && fx.has(Facts::NN) && y.facts.has(Facts::NN),
+                    );
                 Val::Num(Num::from_components(&comps, facts.with(deps)))
             }
             Mf::Sign => unary(Interval::sign, false, keep_sign(fx).with(Facts::UNIT)),
             Mf::Step => {
                 let y = nums[1];
                 let comps = x.zip(&y, Interval::step);
-                Val::Num(Num::from_components(&comps, deps.with(Facts::NN).with(Facts::UNIT)))
+                Val::Num(Num::from_components(
+                    &comps,
+                    deps.with(Facts::NN).with(Facts::UNIT),
+                ))
             }
             Mf::SmoothStep => {
                 let (e1, v) = (nums[1], nums[2]);
                 let comps: Vec<Interval> = (0..v.n as usize)
                     .map(|i| {
-                        let pick = |n: &Num| if n.n == 1 { n.c[0] } else { n.c[i.min(n.n as usize - 1)] };
+                        let pick = |n: &Num| {
+                            if n.n == 1 {
+                                n.c[0]
+                            } else {
+                                n.c[i.min(n.n as usize - 1)]
+                            }
+                        };
                         Interval::smoothstep(pick(&x), pick(&e1), v.c[i])
                     })
                     .collect();
-                Val::Num(Num::from_components(&comps, deps.with(Facts::NN).with(Facts::UNIT)))
+                Val::Num(Num::from_components(
+                    &comps,
+                    deps.with(Facts::NN).with(Facts::UNIT),
+                ))
             }
             Mf::Mix => {
                 let (b, t) = (nums[1], nums[2]);
                 let comps: Vec<Interval> = (0..x.n.max(b.n) as usize)
                     .map(|i| {
-                        let pick = |n: &Num| if n.n == 1 { n.c[0] } else { n.c[i.min(n.n as usize - 1)] };
+                        let pick = |n: &Num| {
+                            if n.n == 1 {
+                                n.c[0]
+                            } else {
+                                n.c[i.min(n.n as usize - 1)]
+                            }
+                        };
                         Interval::mix(pick(&x), pick(&b), pick(&t))
                     })
                     .collect();
@@ -1404,12 +2099,24 @@ impl Analysis {
                 let fb = b.facts;
                 let facts = Facts::NONE
                     .set(Facts::NN, convex && fx.has(Facts::NN) && fb.has(Facts::NN))
-                    .set(Facts::POS, convex && fx.has(Facts::POS) && fb.has(Facts::POS))
-                    .set(Facts::UNIT, convex && fx.has(Facts::UNIT) && fb.has(Facts::UNIT));
+                    .set(
+                        Facts::POS,
+                        convex && fx.has(Facts::POS) && fb.has(Facts::POS),
+                    )
+                    .set(
+                        Facts::UNIT,
+                        convex && fx.has(Facts::UNIT) && fb.has(Facts::UNIT),
+                    );
                 Val::Num(Num::from_components(&comps, facts.with(deps)))
             }
             Mf::Fma => {
-                let comps: Vec<Interval> = (0..x.n as usize).map(|i| x.c[i].mul(nums[1].c[i.min(nums[1].n as usize - 1)]).add(nums[2].c[i.min(nums[2].n as usize - 1)])).collect();
+                let comps: Vec<Interval> = (0..x.n as usize)
+                    .map(|i| {
+                        x.c[i]
+                            .mul(nums[1].c[i.min(nums[1].n as usize - 1)])
+                            .add(nums[2].c[i.min(nums[2].n as usize - 1)])
+                    })
+                    .collect();
                 Val::Num(Num::from_components(&comps, deps))
             }
             Mf::Dot => {
@@ -1417,10 +2124,14 @@ impl Analysis {
                 let slack = EPS * (x.n as f64 + 2.0);
                 if self.same(f, id, arg, args[1]) {
                     let r = x.norm.sqr().slack(slack).meet(Interval::NON_NEGATIVE);
-                    let facts = Facts::NN.set(Facts::POS, fx.has(Facts::NZ)).set(Facts::NZ, fx.has(Facts::NZ));
+                    let facts = Facts::NN
+                        .set(Facts::POS, fx.has(Facts::NZ))
+                        .set(Facts::NZ, fx.has(Facts::NZ));
                     return Val::Num(Num::scalar(r, facts.with(deps)));
                 }
-                let by_comps = (0..x.n as usize).fold(Interval::point(0.0), |s, i| s.add(x.c[i].mul(y.c[i.min(y.n as usize - 1)])));
+                let by_comps = (0..x.n as usize).fold(Interval::point(0.0), |s, i| {
+                    s.add(x.c[i].mul(y.c[i.min(y.n as usize - 1)]))
+                });
                 let m = x.norm.hi * y.norm.hi;
                 let by_norm = Interval::new(-m, m).slack(slack);
                 let r = by_comps.meet(by_norm);
@@ -1439,19 +2150,30 @@ impl Analysis {
                 let per_pixel = Facts::INPUT.with(Facts::TEXTURE);
                 let fixed = !x.facts.any(per_pixel) || !y.facts.any(per_pixel);
                 let mut r = Num::from_components(&comps, deps.set(Facts::CROSS, fixed));
-                r.norm = r.norm.meet(Interval::new(0.0, x.norm.hi * y.norm.hi).slack(EPS * 4.0));
+                r.norm = r
+                    .norm
+                    .meet(Interval::new(0.0, x.norm.hi * y.norm.hi).slack(EPS * 4.0));
                 Val::Num(r.settle())
             }
             Mf::Length => {
                 let r = x.norm.slack(EPS).meet(Interval::NON_NEGATIVE);
-                let facts = Facts::NN.set(Facts::POS, fx.has(Facts::NZ)).set(Facts::NZ, fx.has(Facts::NZ));
+                let facts = Facts::NN
+                    .set(Facts::POS, fx.has(Facts::NZ))
+                    .set(Facts::NZ, fx.has(Facts::NZ));
                 Val::Num(Num::scalar(r, facts.with(deps)))
             }
             Mf::Distance => {
                 let y = nums[1];
                 let comps = x.zip(&y, Interval::sub);
-                let d = if x.n == 1 { comps[0].abs() } else { norm_of(&comps).meet(triangle(x.norm, y.norm)) };
-                Val::Num(Num::scalar(d.slack(EPS).meet(Interval::NON_NEGATIVE), deps.with(Facts::NN)))
+                let d = if x.n == 1 {
+                    comps[0].abs()
+                } else {
+                    norm_of(&comps).meet(triangle(x.norm, y.norm))
+                };
+                Val::Num(Num::scalar(
+                    d.slack(EPS).meet(Interval::NON_NEGATIVE),
+                    deps.with(Facts::NN),
+                ))
             }
             Mf::Normalize => {
                 let one = Interval::new(1.0 - EPS, 1.0 + EPS);
@@ -1460,36 +2182,53 @@ impl Analysis {
                     let hi = if c.hi <= 0.0 { 0.0 } else { one.hi };
                     Interval::new(lo, hi)
                 });
-                let facts = Facts::NZ.set(Facts::NN, fx.has(Facts::NN)).set(Facts::POS, fx.has(Facts::POS));
+                let facts = Facts::NZ
+                    .set(Facts::NN, fx.has(Facts::NN))
+                    .set(Facts::POS, fx.has(Facts::POS));
                 let mut r = Num::from_components(&comps, facts.with(deps));
                 r.norm = one;
                 Val::Num(r.settle())
             }
             Mf::FaceForward => {
                 let comps = x.map(|c| c.hull(c.neg()));
-                let mut r = Num::from_components(&comps, deps.set(Facts::NZ, fx.has(Facts::NZ)).set(Facts::UNIT, fx.has(Facts::UNIT)));
+                let mut r = Num::from_components(
+                    &comps,
+                    deps.set(Facts::NZ, fx.has(Facts::NZ))
+                        .set(Facts::UNIT, fx.has(Facts::UNIT)),
+                );
                 r.norm = r.norm.meet(x.norm);
                 Val::Num(r.settle())
             }
             Mf::Reflect => {
                 let nrm = nums[1];
-                let unit_n = nrm.norm.within(Interval::new(1.0 - 4.0 * EPS, 1.0 + 4.0 * EPS));
+                let unit_n = nrm
+                    .norm
+                    .within(Interval::new(1.0 - 4.0 * EPS, 1.0 + 4.0 * EPS));
                 if unit_n {
                     let len = x.norm.slack(EPS * 8.0);
                     let comps = x.map(|_| Interval::new(-len.hi, len.hi));
-                    let mut r = Num::from_components(&comps, deps.set(Facts::NZ, fx.has(Facts::NZ)));
+                    let mut r =
+                        Num::from_components(&comps, deps.set(Facts::NZ, fx.has(Facts::NZ)));
                     r.norm = r.norm.meet(len);
                     Val::Num(r.settle())
                 } else {
-                    let d = (0..x.n as usize).fold(Interval::point(0.0), |s, i| s.add(x.c[i].mul(nrm.c[i.min(nrm.n as usize - 1)])));
+                    let d = (0..x.n as usize).fold(Interval::point(0.0), |s, i| {
+                        s.add(x.c[i].mul(nrm.c[i.min(nrm.n as usize - 1)]))
+                    });
                     let k = d.mul(Interval::point(2.0));
-                    let comps: Vec<Interval> = (0..x.n as usize).map(|i| x.c[i].sub(k.mul(nrm.c[i.min(nrm.n as usize - 1)]))).collect();
+                    let comps: Vec<Interval> = (0..x.n as usize)
+                        .map(|i| x.c[i].sub(k.mul(nrm.c[i.min(nrm.n as usize - 1)])))
+                        .collect();
                     Val::Num(Num::from_components(&comps, deps))
                 }
             }
             Mf::QuantizeToF16 => Val::Num(Num::from_components(x.comps(), fx)),
-            Mf::Unpack2x16unorm | Mf::Unpack4x8unorm => shape(module, ty, &|n, _| Num::splat(Interval::UNIT, n, deps)),
-            Mf::Unpack2x16snorm | Mf::Unpack4x8snorm => shape(module, ty, &|n, _| Num::splat(Interval::SIGNED_UNIT, n, deps)),
+            Mf::Unpack2x16unorm | Mf::Unpack4x8unorm => {
+                shape(module, ty, &|n, _| Num::splat(Interval::UNIT, n, deps))
+            }
+            Mf::Unpack2x16snorm | Mf::Unpack4x8snorm => shape(module, ty, &|n, _| {
+                Num::splat(Interval::SIGNED_UNIT, n, deps)
+            }),
             _ => Self::unknown(module, ty, deps),
         }
     }

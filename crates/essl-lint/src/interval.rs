@@ -75,17 +75,29 @@ fn mul0(x: f64, y: f64) -> f64 {
     }
 }
 
+// The arithmetic is spelled as methods (`a.add(b)`) rather than operators: each call rounds
+// its bounds outward, which `+` would hide.
+#[allow(clippy::should_implement_trait)]
 impl Interval {
     /// No value at all.
-    pub const EMPTY: Interval = Interval { lo: f64::INFINITY, hi: f64::NEG_INFINITY };
+    pub const EMPTY: Interval = Interval {
+        lo: f64::INFINITY,
+        hi: f64::NEG_INFINITY,
+    };
     /// Any value.
-    pub const FULL: Interval = Interval { lo: f64::NEG_INFINITY, hi: f64::INFINITY };
+    pub const FULL: Interval = Interval {
+        lo: f64::NEG_INFINITY,
+        hi: f64::INFINITY,
+    };
     /// `[0, 1]`.
     pub const UNIT: Interval = Interval { lo: 0.0, hi: 1.0 };
     /// `[-1, 1]`.
     pub const SIGNED_UNIT: Interval = Interval { lo: -1.0, hi: 1.0 };
     /// `[0, +∞]`.
-    pub const NON_NEGATIVE: Interval = Interval { lo: 0.0, hi: f64::INFINITY };
+    pub const NON_NEGATIVE: Interval = Interval {
+        lo: 0.0,
+        hi: f64::INFINITY,
+    };
 
     /// `[lo, hi]` rounded outward to `f32` bounds (empty when `lo > hi`).
     pub fn new(lo: f64, hi: f64) -> Interval {
@@ -95,17 +107,34 @@ impl Interval {
         if lo > hi {
             return Interval::EMPTY;
         }
-        Interval { lo: down(lo), hi: up(hi) }
+        Interval {
+            lo: down(lo),
+            hi: up(hi),
+        }
     }
 
     /// The values of an `f32` strictly above `x` (for `x` an `f32`).
     pub fn above(x: f64) -> Interval {
-        Interval { lo: if x.is_finite() { next_up32(x as f32) as f64 } else { x }, hi: f64::INFINITY }
+        Interval {
+            lo: if x.is_finite() {
+                next_up32(x as f32) as f64
+            } else {
+                x
+            },
+            hi: f64::INFINITY,
+        }
     }
 
     /// The values of an `f32` strictly below `x` (for `x` an `f32`).
     pub fn below(x: f64) -> Interval {
-        Interval { lo: f64::NEG_INFINITY, hi: if x.is_finite() { next_down32(x as f32) as f64 } else { x } }
+        Interval {
+            lo: f64::NEG_INFINITY,
+            hi: if x.is_finite() {
+                next_down32(x as f32) as f64
+            } else {
+                x
+            },
+        }
     }
 
     /// The single value `x` (rounded outward when `x` is not an `f32`).
@@ -168,12 +197,18 @@ impl Interval {
         if o.is_empty() {
             return self;
         }
-        Interval { lo: self.lo.min(o.lo), hi: self.hi.max(o.hi) }
+        Interval {
+            lo: self.lo.min(o.lo),
+            hi: self.hi.max(o.hi),
+        }
     }
 
     /// The values in both.
     pub fn meet(self, o: Interval) -> Interval {
-        let r = Interval { lo: self.lo.max(o.lo), hi: self.hi.min(o.hi) };
+        let r = Interval {
+            lo: self.lo.max(o.lo),
+            hi: self.hi.min(o.hi),
+        };
         if r.is_empty() {
             Interval::EMPTY
         } else {
@@ -190,8 +225,16 @@ impl Interval {
             return self;
         }
         Interval {
-            lo: if newer.lo < self.lo { f64::NEG_INFINITY } else { self.lo },
-            hi: if newer.hi > self.hi { f64::INFINITY } else { self.hi },
+            lo: if newer.lo < self.lo {
+                f64::NEG_INFINITY
+            } else {
+                self.lo
+            },
+            hi: if newer.hi > self.hi {
+                f64::INFINITY
+            } else {
+                self.hi
+            },
         }
     }
 
@@ -224,7 +267,10 @@ impl Interval {
         if self.is_empty() {
             return self;
         }
-        Interval { lo: -self.hi, hi: -self.lo }
+        Interval {
+            lo: -self.hi,
+            hi: -self.lo,
+        }
     }
 
     /// `x + y`
@@ -234,7 +280,10 @@ impl Interval {
         }
         let lo = self.lo + o.lo;
         let hi = self.hi + o.hi;
-        Interval::new(if lo.is_nan() { f64::NEG_INFINITY } else { lo }, if hi.is_nan() { f64::INFINITY } else { hi })
+        Interval::new(
+            if lo.is_nan() { f64::NEG_INFINITY } else { lo },
+            if hi.is_nan() { f64::INFINITY } else { hi },
+        )
     }
 
     /// `x - y`
@@ -247,7 +296,12 @@ impl Interval {
         if self.is_empty() || o.is_empty() {
             return Interval::EMPTY;
         }
-        let c = [mul0(self.lo, o.lo), mul0(self.lo, o.hi), mul0(self.hi, o.lo), mul0(self.hi, o.hi)];
+        let c = [
+            mul0(self.lo, o.lo),
+            mul0(self.lo, o.hi),
+            mul0(self.hi, o.lo),
+            mul0(self.hi, o.hi),
+        ];
         let lo = c.iter().copied().fold(f64::INFINITY, f64::min);
         let hi = c.iter().copied().fold(f64::NEG_INFINITY, f64::max);
         Interval::new(lo, hi)
@@ -290,7 +344,12 @@ impl Interval {
         }
         if o.lo > 0.0 || o.hi < 0.0 {
             // Divide directly: one rounding, tighter than `x * (1 / y)`.
-            let c = [self.lo / o.lo, self.lo / o.hi, self.hi / o.lo, self.hi / o.hi];
+            let c = [
+                self.lo / o.lo,
+                self.lo / o.hi,
+                self.hi / o.lo,
+                self.hi / o.hi,
+            ];
             if c.iter().all(|v| !v.is_nan()) {
                 let lo = c.iter().copied().fold(f64::INFINITY, f64::min);
                 let hi = c.iter().copied().fold(f64::NEG_INFINITY, f64::max);
@@ -305,7 +364,10 @@ impl Interval {
         if self.is_empty() {
             return self;
         }
-        Interval { lo: self.mig(), hi: self.mag() }
+        Interval {
+            lo: self.mig(),
+            hi: self.mag(),
+        }
     }
 
     /// `min(x, y)`
@@ -313,7 +375,10 @@ impl Interval {
         if self.is_empty() || o.is_empty() {
             return Interval::EMPTY;
         }
-        Interval { lo: self.lo.min(o.lo), hi: self.hi.min(o.hi) }
+        Interval {
+            lo: self.lo.min(o.lo),
+            hi: self.hi.min(o.hi),
+        }
     }
 
     /// `max(x, y)`
@@ -321,7 +386,10 @@ impl Interval {
         if self.is_empty() || o.is_empty() {
             return Interval::EMPTY;
         }
-        Interval { lo: self.lo.max(o.lo), hi: self.hi.max(o.hi) }
+        Interval {
+            lo: self.lo.max(o.lo),
+            hi: self.hi.max(o.hi),
+        }
     }
 
     /// `clamp(x, lo, hi)` = `min(max(x, lo), hi)`.
@@ -445,7 +513,8 @@ impl Interval {
         let (a, b) = (f(self.lo), f(self.hi));
         let mut lo = a.min(b);
         let mut hi = a.max(b);
-        let hits = |at: f64| ((self.lo - at) / (2.0 * PI)).ceil() <= ((self.hi - at) / (2.0 * PI)).floor();
+        let hits =
+            |at: f64| ((self.lo - at) / (2.0 * PI)).ceil() <= ((self.hi - at) / (2.0 * PI)).floor();
         if hits(max_at) {
             hi = 1.0;
         }
@@ -482,7 +551,11 @@ impl Interval {
             return self;
         }
         let hi = self.lo.cosh().max(self.hi.cosh());
-        let lo = if self.contains(0.0) { 1.0 } else { self.lo.cosh().min(self.hi.cosh()) };
+        let lo = if self.contains(0.0) {
+            1.0
+        } else {
+            self.lo.cosh().min(self.hi.cosh())
+        };
         Interval::new(lo, hi)
     }
 
@@ -585,7 +658,15 @@ impl Interval {
         if self.is_empty() {
             return self;
         }
-        let s = |x: f64| if x > 0.0 { 1.0 } else if x < 0.0 { -1.0 } else { 0.0 };
+        let s = |x: f64| {
+            if x > 0.0 {
+                1.0
+            } else if x < 0.0 {
+                -1.0
+            } else {
+                0.0
+            }
+        };
         Interval::new(s(self.lo), s(self.hi))
     }
 
@@ -768,10 +849,16 @@ mod tests {
     #[test]
     fn known_values() {
         assert_eq!(Interval::new(-2.0, 3.0).sqr(), Interval::new(0.0, 9.0));
-        assert_eq!(Interval::new(0.0, 1.0).recip(), Interval::new(1.0, f64::INFINITY));
+        assert_eq!(
+            Interval::new(0.0, 1.0).recip(),
+            Interval::new(1.0, f64::INFINITY)
+        );
         assert_eq!(Interval::new(-1.0, 1.0).recip(), Interval::FULL);
         assert_eq!(Interval::new(0.0, 4.0).cos().hi, 1.0);
         assert_eq!(Interval::FULL.sin(), Interval::SIGNED_UNIT);
-        assert_eq!(Interval::new(0.5, 2.0).pow(Interval::point(2.0)), Interval::new(0.25, 4.0));
+        assert_eq!(
+            Interval::new(0.5, 2.0).pow(Interval::point(2.0)),
+            Interval::new(0.25, 4.0)
+        );
     }
 }

@@ -23,6 +23,8 @@
 //! Every finding is a warning unless [`LintOptions`] denies its rule (or the whole set, `all`);
 //! a comment `// essl-allow: RULE` on the line of the finding or on the line before silences it.
 
+#![warn(missing_docs)]
+
 pub mod analysis;
 pub mod interval;
 pub mod precision;
@@ -65,7 +67,12 @@ pub struct UnknownRule(pub String);
 
 impl std::fmt::Display for UnknownRule {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        write!(f, "unknown lint rule `{}` (known: all, {})", self.0, RULES.iter().map(|r| r.id).collect::<Vec<_>>().join(", "))
+        write!(
+            f,
+            "unknown lint rule `{}` (known: all, {})",
+            self.0,
+            RULES.iter().map(|r| r.id).collect::<Vec<_>>().join(", ")
+        )
     }
 }
 
@@ -114,7 +121,12 @@ impl LintOptions {
 
     /// The level of a rule under these options.
     pub fn level(&self, r: &Rule) -> Level {
-        self.overrides.iter().rev().find(|(id, _)| id == "all" || id == r.id).map(|(_, l)| *l).unwrap_or(r.default_level)
+        self.overrides
+            .iter()
+            .rev()
+            .find(|(id, _)| id == "all" || id == r.id)
+            .map(|(_, l)| *l)
+            .unwrap_or(r.default_level)
     }
 }
 
@@ -122,7 +134,9 @@ impl LintOptions {
 ///
 /// A shader that did not compile (no naga IR) has no findings: its errors come first.
 pub fn lint(shader: &Shader, options: &LintOptions) -> Vec<Diagnostic> {
-    let Some(cx) = rules::Cx::new(shader) else { return Vec::new() };
+    let Some(cx) = rules::Cx::new(shader) else {
+        return Vec::new();
+    };
     let allowed = suppress::Allowed::scan(&shader.file);
     let mut out = Vec::new();
     for r in RULES {
@@ -136,7 +150,11 @@ pub fn lint(shader: &Shader, options: &LintOptions) -> Vec<Diagnostic> {
             if allowed.silences(&shader.file, d.span, r.id) {
                 continue;
             }
-            d.severity = if level == Level::Deny { Severity::Error } else { Severity::Warning };
+            d.severity = if level == Level::Deny {
+                Severity::Error
+            } else {
+                Severity::Warning
+            };
             out.push(d);
         }
     }
@@ -152,14 +170,23 @@ pub fn lint(shader: &Shader, options: &LintOptions) -> Vec<Diagnostic> {
 #[doc(hidden)]
 pub fn dump(shader: &Shader) -> String {
     use std::fmt::Write;
-    let Some(cx) = rules::Cx::new(shader) else { return String::new() };
+    let Some(cx) = rules::Cx::new(shader) else {
+        return String::new();
+    };
     let mut s = String::new();
     for (id, f) in cx.functions() {
         let _ = writeln!(s, "fn {}", f.name.as_deref().unwrap_or("?"));
         for (h, e) in f.expressions.iter() {
             let span = cx.span(f, h);
             let v = cx.sound.value(id, h);
-            let _ = writeln!(s, "  {:?} {:?} `{}` = {:?}", h, std::mem::discriminant(e), cx.text(span).replace('\n', " "), v);
+            let _ = writeln!(
+                s,
+                "  {:?} {:?} `{}` = {:?}",
+                h,
+                std::mem::discriminant(e),
+                cx.text(span).replace('\n', " "),
+                v
+            );
         }
     }
     s

@@ -24,7 +24,11 @@ impl Precisions {
     pub fn of(module: &Module) -> Precisions {
         let mut p = Precisions::default();
         for f in &module.functions {
-            let mut w = Walker { m: module, f, out: &mut p.by_span };
+            let mut w = Walker {
+                m: module,
+                f,
+                out: &mut p.by_span,
+            };
             w.stmts(&f.body);
         }
         p
@@ -70,14 +74,21 @@ impl Walker<'_> {
             StmtKind::Local(_, Some(e)) => {
                 self.expr(e);
             }
-            StmtKind::Local(_, None) | StmtKind::Break | StmtKind::Continue | StmtKind::Discard => {}
+            StmtKind::Local(_, None) | StmtKind::Break | StmtKind::Continue | StmtKind::Discard => {
+            }
             StmtKind::Block(b) => self.stmts(b),
             StmtKind::If(c, t, e) => {
                 self.expr(c);
                 self.stmts(t);
                 self.stmts(e);
             }
-            StmtKind::Loop { init, cond, step, body, .. } => {
+            StmtKind::Loop {
+                init,
+                cond,
+                step,
+                body,
+                ..
+            } => {
                 self.stmts(init);
                 if let Some(c) = cond {
                     match &**c {
@@ -106,7 +117,12 @@ impl Walker<'_> {
 
     fn member_precision(&self, base: &Expr, m: usize) -> Option<Precision> {
         match &base.ty {
-            Type::Struct(id) => self.m.structs.get(id.0 as usize).and_then(|s| s.members.get(m)).and_then(|mm| mm.precision),
+            Type::Struct(id) => self
+                .m
+                .structs
+                .get(id.0 as usize)
+                .and_then(|s| s.members.get(m))
+                .and_then(|mm| mm.precision),
             _ => None,
         }
     }
@@ -123,7 +139,18 @@ impl Walker<'_> {
             ExprKind::Binary(op, a, b) => {
                 let (x, y) = (self.expr(a), self.expr(b));
                 use essl::ast::BinaryOp as B;
-                if matches!(op, B::Less | B::Greater | B::LessEq | B::GreaterEq | B::Eq | B::NotEq | B::And | B::Xor | B::Or) {
+                if matches!(
+                    op,
+                    B::Less
+                        | B::Greater
+                        | B::LessEq
+                        | B::GreaterEq
+                        | B::Eq
+                        | B::NotEq
+                        | B::And
+                        | B::Xor
+                        | B::Or
+                ) {
                     None
                 } else {
                     highest(x, y)
@@ -167,12 +194,21 @@ impl Walker<'_> {
                     ps.into_iter().fold(None, highest)
                 }
             }
-            ExprKind::Construct(args) => args.iter().map(|a| self.expr(a)).collect::<Vec<_>>().into_iter().fold(None, highest),
+            ExprKind::Construct(args) => args
+                .iter()
+                .map(|a| self.expr(a))
+                .collect::<Vec<_>>()
+                .into_iter()
+                .fold(None, highest),
             ExprKind::BlockMember(b, idx, m) => {
                 if let Some(i) = idx {
                     self.expr(i);
                 }
-                self.m.blocks.get(*b).and_then(|bl| bl.members.get(*m)).and_then(|x| x.2)
+                self.m
+                    .blocks
+                    .get(*b)
+                    .and_then(|bl| bl.members.get(*m))
+                    .and_then(|x| x.2)
             }
         };
         if let Some(p) = p {

@@ -34,7 +34,9 @@ pub fn uri(name: &str) -> String {
     }
     for b in name.bytes() {
         match b {
-            b'A'..=b'Z' | b'a'..=b'z' | b'0'..=b'9' | b'-' | b'.' | b'_' | b'~' | b'/' => out.push(b as char),
+            b'A'..=b'Z' | b'a'..=b'z' | b'0'..=b'9' | b'-' | b'.' | b'_' | b'~' | b'/' => {
+                out.push(b as char)
+            }
             _ => out.push_str(&format!("%{b:02X}")),
         }
     }
@@ -166,37 +168,82 @@ mod tests {
     fn a_log_of_two_files() {
         let a = SourceFile::new("shaders/a b.frag", "float x = acos(d);\n");
         let b = SourceFile::new("b.frag", "é = 1\n");
-        let da = vec![Diagnostic::warning("acos-domain", "`acos` argument can be outside [-1, 1]", Span::new(15, 16))
-            .with_label("a dot product")
-            .with_secondary(Span::new(6, 7), "here")
-            .with_fix(Fix::suggested("clamp", Span::new(15, 16), "clamp(d, -1.0, 1.0)"))];
-        let db = vec![Diagnostic::error("missing-semicolon", "expected `;`", Span::new(6, 6))];
-        let v = log(&[FileDiagnostics { file: &a, diagnostics: &da }, FileDiagnostics { file: &b, diagnostics: &db }]);
+        let da = vec![Diagnostic::warning(
+            "acos-domain",
+            "`acos` argument can be outside [-1, 1]",
+            Span::new(15, 16),
+        )
+        .with_label("a dot product")
+        .with_secondary(Span::new(6, 7), "here")
+        .with_fix(Fix::suggested(
+            "clamp",
+            Span::new(15, 16),
+            "clamp(d, -1.0, 1.0)",
+        ))];
+        let db = vec![Diagnostic::error(
+            "missing-semicolon",
+            "expected `;`",
+            Span::new(6, 6),
+        )];
+        let v = log(&[
+            FileDiagnostics {
+                file: &a,
+                diagnostics: &da,
+            },
+            FileDiagnostics {
+                file: &b,
+                diagnostics: &db,
+            },
+        ]);
         assert_eq!(v["version"], "2.1.0");
         assert_eq!(v["$schema"], SCHEMA);
         let run = &v["runs"][0];
         assert_eq!(run["tool"]["driver"]["name"], "essl");
         let rules = run["tool"]["driver"]["rules"].as_array().unwrap();
         assert_eq!(rules.len(), RULES.len() + 1);
-        assert!(rules[0]["help"]["markdown"].as_str().unwrap().contains("## What it does"));
+        assert!(rules[0]["help"]["markdown"]
+            .as_str()
+            .unwrap()
+            .contains("## What it does"));
         assert_eq!(run["artifacts"][0]["location"]["uri"], "shaders/a%20b.frag");
         let r0 = &run["results"][0];
         assert_eq!(r0["ruleId"], "acos-domain");
-        assert_eq!(rules[r0["ruleIndex"].as_u64().unwrap() as usize]["id"], "acos-domain");
+        assert_eq!(
+            rules[r0["ruleIndex"].as_u64().unwrap() as usize]["id"],
+            "acos-domain"
+        );
         assert_eq!(r0["level"], "warning");
-        assert_eq!(r0["locations"][0]["physicalLocation"]["region"], json!({"startLine": 1, "startColumn": 16, "endLine": 1, "endColumn": 17}));
+        assert_eq!(
+            r0["locations"][0]["physicalLocation"]["region"],
+            json!({"startLine": 1, "startColumn": 16, "endLine": 1, "endColumn": 17})
+        );
         assert_eq!(r0["locations"][0]["message"]["text"], "a dot product");
         assert_eq!(r0["relatedLocations"][0]["message"]["text"], "here");
         let rep = &r0["fixes"][0]["artifactChanges"][0]["replacements"][0];
         assert_eq!(rep["insertedContent"]["text"], "clamp(d, -1.0, 1.0)");
         let r1 = &run["results"][1];
         assert_eq!(r1["level"], "error");
-        assert_eq!(rules[r1["ruleIndex"].as_u64().unwrap() as usize]["id"], "missing-semicolon");
+        assert_eq!(
+            rules[r1["ruleIndex"].as_u64().unwrap() as usize]["id"],
+            "missing-semicolon"
+        );
         // Columns in characters: `é` is one column, two bytes.
-        assert_eq!(r1["locations"][0]["physicalLocation"]["region"]["startColumn"], 6);
-        assert_eq!(r1["locations"][0]["physicalLocation"]["artifactLocation"]["index"], 1);
+        assert_eq!(
+            r1["locations"][0]["physicalLocation"]["region"]["startColumn"],
+            6
+        );
+        assert_eq!(
+            r1["locations"][0]["physicalLocation"]["artifactLocation"]["index"],
+            1
+        );
         // The text round-trips as JSON.
-        let s = to_string(&[FileDiagnostics { file: &a, diagnostics: &da }]);
-        assert_eq!(serde_json::from_str::<Value>(&s).unwrap()["runs"][0]["results"][0]["ruleId"], "acos-domain");
+        let s = to_string(&[FileDiagnostics {
+            file: &a,
+            diagnostics: &da,
+        }]);
+        assert_eq!(
+            serde_json::from_str::<Value>(&s).unwrap()["runs"][0]["results"][0]["ruleId"],
+            "acos-domain"
+        );
     }
 }

@@ -21,7 +21,9 @@ impl Allowed {
         let mut lines = HashMap::new();
         for i in 0..file.line_count() {
             let text = file.line_text(i);
-            let Some(at) = text.find(MARKER) else { continue };
+            let Some(at) = text.find(MARKER) else {
+                continue;
+            };
             let before = &text[..at];
             if !before.contains("//") && !before.contains("/*") {
                 continue;
@@ -29,7 +31,10 @@ impl Allowed {
             let rules: Vec<String> = text[at + MARKER.len()..]
                 .split(|c: char| c == ',' || c.is_whitespace())
                 .filter(|s| !s.is_empty())
-                .take_while(|s| s.chars().all(|c| c.is_ascii_lowercase() || c.is_ascii_digit() || c == '-'))
+                .take_while(|s| {
+                    s.chars()
+                        .all(|c| c.is_ascii_lowercase() || c.is_ascii_digit() || c == '-')
+                })
                 .map(str::to_string)
                 .collect();
             if !rules.is_empty() {
@@ -42,7 +47,11 @@ impl Allowed {
     /// Whether a finding of `rule` at `span` is silenced.
     pub fn silences(&self, file: &SourceFile, span: Span, rule: &str) -> bool {
         let line = file.line_index(span.start);
-        let hit = |l: usize| self.lines.get(&l).is_some_and(|rs| rs.iter().any(|r| r == rule || r == "all"));
+        let hit = |l: usize| {
+            self.lines
+                .get(&l)
+                .is_some_and(|rs| rs.iter().any(|r| r == rule || r == "all"))
+        };
         hit(line) || (line > 0 && hit(line - 1))
     }
 }

@@ -7,7 +7,10 @@
 
 use std::collections::{HashMap, HashSet};
 
-use naga::{BinaryOperator as Bo, Expression as E, Function, Handle, MathFunction as Mf, UnaryOperator as Uo};
+use naga::{
+    BinaryOperator as Bo, Expression as E, Function, Handle, MathFunction as Mf,
+    UnaryOperator as Uo,
+};
 
 use crate::analysis::{literal, Analysis, Place, Root, ANY};
 
@@ -31,11 +34,17 @@ struct Lin {
 
 impl Lin {
     fn constant(c: f64) -> Lin {
-        Lin { terms: Vec::new(), c }
+        Lin {
+            terms: Vec::new(),
+            c,
+        }
     }
 
     fn atom(a: Atom) -> Lin {
-        Lin { terms: vec![(a, 1.0)], c: 0.0 }
+        Lin {
+            terms: vec![(a, 1.0)],
+            c: 0.0,
+        }
     }
 
     fn add(mut self, o: &Lin, k: f64) -> Lin {
@@ -95,8 +104,20 @@ pub fn resolve(f: &Function, an: &Analysis, id: usize, mut h: Handle<E>) -> Hand
 
 impl<'a> Sym<'a> {
     /// The symbolic view of function `id`.
-    pub fn new(module: &'a naga::Module, f: &'a Function, id: usize, an: &'a Analysis, written: &'a HashSet<usize>) -> Sym<'a> {
-        Sym { module, f, id, an, written }
+    pub fn new(
+        module: &'a naga::Module,
+        f: &'a Function,
+        id: usize,
+        an: &'a Analysis,
+        written: &'a HashSet<usize>,
+    ) -> Sym<'a> {
+        Sym {
+            module,
+            f,
+            id,
+            an,
+            written,
+        }
     }
 
     fn lin(&self, h: Handle<E>, depth: u32) -> Lin {
@@ -111,9 +132,25 @@ impl<'a> Sym<'a> {
                 Some(c) => Lin::constant(c),
                 None => atom(),
             },
-            E::Binary { op: Bo::Add, left, right } => self.lin(*left, depth + 1).add(&self.lin(*right, depth + 1), 1.0),
-            E::Binary { op: Bo::Subtract, left, right } => self.lin(*left, depth + 1).add(&self.lin(*right, depth + 1), -1.0),
-            E::Binary { op: Bo::Multiply, left, right } => {
+            E::Binary {
+                op: Bo::Add,
+                left,
+                right,
+            } => self
+                .lin(*left, depth + 1)
+                .add(&self.lin(*right, depth + 1), 1.0),
+            E::Binary {
+                op: Bo::Subtract,
+                left,
+                right,
+            } => self
+                .lin(*left, depth + 1)
+                .add(&self.lin(*right, depth + 1), -1.0),
+            E::Binary {
+                op: Bo::Multiply,
+                left,
+                right,
+            } => {
                 let (a, b) = (self.lin(*left, depth + 1), self.lin(*right, depth + 1));
                 match (a.as_constant(), b.as_constant()) {
                     (Some(k), _) => b.scale(k),
@@ -121,16 +158,24 @@ impl<'a> Sym<'a> {
                     _ => Lin::atom(Atom::Expr(h.index())),
                 }
             }
-            E::Binary { op: Bo::Divide, left, right } => {
+            E::Binary {
+                op: Bo::Divide,
+                left,
+                right,
+            } => {
                 let (a, b) = (self.lin(*left, depth + 1), self.lin(*right, depth + 1));
                 match b.as_constant() {
                     Some(k) if k != 0.0 => a.scale(1.0 / k),
                     _ => Lin::atom(Atom::Expr(h.index())),
                 }
             }
-            E::Unary { op: Uo::Negate, expr } => self.lin(*expr, depth + 1).scale(-1.0),
+            E::Unary {
+                op: Uo::Negate,
+                expr,
+            } => self.lin(*expr, depth + 1).scale(-1.0),
             E::FunctionArgument(i) => Lin::atom(Atom::Arg(*i)),
-            E::Load { pointer } => match self.an.functions[self.id].places[pointer.index()].clone() {
+            E::Load { pointer } => match self.an.functions[self.id].places[pointer.index()].clone()
+            {
                 Some(p) if self.stable(&p) => Lin::atom(Atom::Place(p)),
                 _ => Lin::atom(Atom::Expr(h.index())),
             },
@@ -145,8 +190,15 @@ impl<'a> Sym<'a> {
         }
         match p.root {
             Root::Global(g) => {
-                let h = self.module.global_variables.iter().nth(g).map(|(h, _)| h).expect("global");
-                self.module.global_variables[h].space != naga::AddressSpace::Private || !self.written.contains(&g)
+                let h = self
+                    .module
+                    .global_variables
+                    .iter()
+                    .nth(g)
+                    .map(|(h, _)| h)
+                    .expect("global");
+                self.module.global_variables[h].space != naga::AddressSpace::Private
+                    || !self.written.contains(&g)
             }
             _ => false,
         }
@@ -159,14 +211,22 @@ impl<'a> Sym<'a> {
 
     fn hull(&self, h: Option<Handle<E>>) -> crate::interval::Interval {
         match h {
-            Some(h) => self.an.num(self.id, h).map(|n| n.hull()).unwrap_or(crate::interval::Interval::FULL),
+            Some(h) => self
+                .an
+                .num(self.id, h)
+                .map(|n| n.hull())
+                .unwrap_or(crate::interval::Interval::FULL),
             None => crate::interval::Interval::point(0.0),
         }
     }
 
     fn diff_lower_d(&self, a: Option<Handle<E>>, b: Option<Handle<E>>, depth: u32) -> f64 {
         let (ia, ib) = (self.hull(a), self.hull(b));
-        let mut best = if ia.is_empty() || ib.is_empty() { f64::NEG_INFINITY } else { ia.lo - ib.hi };
+        let mut best = if ia.is_empty() || ib.is_empty() {
+            f64::NEG_INFINITY
+        } else {
+            ia.lo - ib.hi
+        };
         let la = a.map(|h| self.lin(h, 0)).unwrap_or(Lin::constant(0.0));
         let lb = b.map(|h| self.lin(h, 0)).unwrap_or(Lin::constant(0.0));
         if let Some(c) = la.add(&lb, -1.0).as_constant() {
@@ -179,13 +239,35 @@ impl<'a> Sym<'a> {
         if let Some(a) = a {
             let ra = resolve(self.f, self.an, self.id, a);
             match self.f.expressions[ra] {
-                E::Math { fun: Mf::Max, arg, arg1: Some(y), .. } => {
-                    best = best.max(self.diff_lower_d(Some(arg), b, d).max(self.diff_lower_d(Some(y), b, d)));
+                E::Math {
+                    fun: Mf::Max,
+                    arg,
+                    arg1: Some(y),
+                    ..
+                } => {
+                    best = best.max(self.diff_lower_d(Some(arg), b, d).max(self.diff_lower_d(
+                        Some(y),
+                        b,
+                        d,
+                    )));
                 }
-                E::Math { fun: Mf::Clamp, arg1: Some(lo), arg2: Some(hi), .. } => {
-                    best = best.max(self.diff_lower_d(Some(lo), b, d).min(self.diff_lower_d(Some(hi), b, d)));
+                E::Math {
+                    fun: Mf::Clamp,
+                    arg1: Some(lo),
+                    arg2: Some(hi),
+                    ..
+                } => {
+                    best = best.max(self.diff_lower_d(Some(lo), b, d).min(self.diff_lower_d(
+                        Some(hi),
+                        b,
+                        d,
+                    )));
                 }
-                E::Binary { op: Bo::Subtract, left, right } if b.is_none() => {
+                E::Binary {
+                    op: Bo::Subtract,
+                    left,
+                    right,
+                } if b.is_none() => {
                     best = best.max(self.diff_lower_d(Some(left), Some(right), d));
                 }
                 _ => {}
@@ -194,13 +276,35 @@ impl<'a> Sym<'a> {
         if let Some(b) = b {
             let rb = resolve(self.f, self.an, self.id, b);
             match self.f.expressions[rb] {
-                E::Math { fun: Mf::Min, arg, arg1: Some(y), .. } => {
-                    best = best.max(self.diff_lower_d(a, Some(arg), d).max(self.diff_lower_d(a, Some(y), d)));
+                E::Math {
+                    fun: Mf::Min,
+                    arg,
+                    arg1: Some(y),
+                    ..
+                } => {
+                    best = best.max(self.diff_lower_d(a, Some(arg), d).max(self.diff_lower_d(
+                        a,
+                        Some(y),
+                        d,
+                    )));
                 }
-                E::Math { fun: Mf::Clamp, arg1: Some(lo), arg2: Some(hi), .. } => {
-                    best = best.max(self.diff_lower_d(a, Some(lo), d).min(self.diff_lower_d(a, Some(hi), d)));
+                E::Math {
+                    fun: Mf::Clamp,
+                    arg1: Some(lo),
+                    arg2: Some(hi),
+                    ..
+                } => {
+                    best = best.max(self.diff_lower_d(a, Some(lo), d).min(self.diff_lower_d(
+                        a,
+                        Some(hi),
+                        d,
+                    )));
                 }
-                E::Binary { op: Bo::Subtract, left, right } if a.is_none() => {
+                E::Binary {
+                    op: Bo::Subtract,
+                    left,
+                    right,
+                } if a.is_none() => {
                     best = best.max(self.diff_lower_d(Some(right), Some(left), d));
                 }
                 _ => {}

@@ -134,7 +134,12 @@ pub fn norm_of(c: &[Interval]) -> Interval {
 impl Num {
     /// The value with no possible values, the identity of [`Num::join`].
     pub fn bottom(n: u8) -> Num {
-        Num { n, c: [Interval::EMPTY; 4], norm: Interval::EMPTY, facts: Facts::ALL_AND }
+        Num {
+            n,
+            c: [Interval::EMPTY; 4],
+            norm: Interval::EMPTY,
+            facts: Facts::ALL_AND,
+        }
     }
 
     /// A value with components `c` (its length follows from them), before facts.
@@ -181,9 +186,18 @@ impl Num {
 
     /// Component `i` as a scalar (a component of a non-zero vector may be zero).
     pub fn component(&self, i: usize) -> Num {
-        let c = if i < self.n as usize { self.c[i] } else { Interval::EMPTY };
+        let c = if i < self.n as usize {
+            self.c[i]
+        } else {
+            Interval::EMPTY
+        };
         let keep_nz = self.facts.has(Facts::EXT) || self.n == 1;
-        Num::scalar(c, self.facts.set(Facts::NZ, keep_nz && self.facts.has(Facts::NZ)).without(Facts::CROSS))
+        Num::scalar(
+            c,
+            self.facts
+                .set(Facts::NZ, keep_nz && self.facts.has(Facts::NZ))
+                .without(Facts::CROSS),
+        )
     }
 
     /// Whether it may be zero: a scalar may equal 0, a vector may be the zero vector.
@@ -197,7 +211,11 @@ impl Num {
             return self;
         }
         let n = self.n as usize;
-        let from = if n == 1 { self.c[0].abs() } else { norm_of(&self.c[..n]) };
+        let from = if n == 1 {
+            self.c[0].abs()
+        } else {
+            norm_of(&self.c[..n])
+        };
         let m = self.norm.meet(from);
         self.norm = if m.is_empty() { from } else { m };
         let comps = &self.c[..n];
@@ -213,7 +231,9 @@ impl Num {
         if comps.iter().all(|c| c.within(Interval::SIGNED_UNIT)) {
             self.facts = self.facts.with(Facts::UNIT);
         }
-        if self.n == 3 && self.facts.has(Facts::NZ) || self.n >= 3 && comps[..3].iter().any(|c| !c.contains(0.0)) {
+        if self.n == 3 && self.facts.has(Facts::NZ)
+            || self.n >= 3 && comps[..3].iter().any(|c| !c.contains(0.0))
+        {
             self.facts = self.facts.with(Facts::NZ3);
         }
         self
@@ -253,8 +273,16 @@ impl Num {
         let n = self.n.max(o.n) as usize;
         (0..n)
             .map(|i| {
-                let a = if self.n == 1 { self.c[0] } else { self.c[i.min(self.n as usize - 1)] };
-                let b = if o.n == 1 { o.c[0] } else { o.c[i.min(o.n as usize - 1)] };
+                let a = if self.n == 1 {
+                    self.c[0]
+                } else {
+                    self.c[i.min(self.n as usize - 1)]
+                };
+                let b = if o.n == 1 {
+                    o.c[0]
+                } else {
+                    o.c[i.min(o.n as usize - 1)]
+                };
                 f(a, b)
             })
             .collect()
@@ -289,7 +317,9 @@ impl Val {
         match (self, o) {
             (Val::Bot, x) | (x, Val::Bot) => x.clone(),
             (Val::Num(a), Val::Num(b)) => Val::Num(a.join(b)),
-            (Val::Agg(a), Val::Agg(b)) if a.len() == b.len() => Val::Agg(a.iter().zip(b).map(|(x, y)| x.join(y)).collect()),
+            (Val::Agg(a), Val::Agg(b)) if a.len() == b.len() => {
+                Val::Agg(a.iter().zip(b).map(|(x, y)| x.join(y)).collect())
+            }
             (Val::Arr(a), Val::Arr(b)) => Val::Arr(Box::new(a.join(b))),
             _ => Val::Any,
         }
@@ -300,7 +330,9 @@ impl Val {
         match (self, o) {
             (Val::Bot, x) | (x, Val::Bot) => x.clone(),
             (Val::Num(a), Val::Num(b)) => Val::Num(a.widen(b)),
-            (Val::Agg(a), Val::Agg(b)) if a.len() == b.len() => Val::Agg(a.iter().zip(b).map(|(x, y)| x.widen(y)).collect()),
+            (Val::Agg(a), Val::Agg(b)) if a.len() == b.len() => {
+                Val::Agg(a.iter().zip(b).map(|(x, y)| x.widen(y)).collect())
+            }
             (Val::Arr(a), Val::Arr(b)) => Val::Arr(Box::new(a.widen(b))),
             _ => Val::Any,
         }
@@ -321,7 +353,10 @@ impl Val {
     /// The same shape with the facts changed by `f` on every scalar and vector.
     pub fn map_facts(&self, f: &impl Fn(Facts) -> Facts) -> Val {
         match self {
-            Val::Num(n) => Val::Num(Num { facts: f(n.facts), ..*n }),
+            Val::Num(n) => Val::Num(Num {
+                facts: f(n.facts),
+                ..*n
+            }),
             Val::Agg(v) => Val::Agg(v.iter().map(|x| x.map_facts(f)).collect()),
             Val::Arr(x) => Val::Arr(Box::new(x.map_facts(f))),
             other => other.clone(),
@@ -346,7 +381,10 @@ mod tests {
 
     #[test]
     fn settle_proves_facts_from_intervals() {
-        let v = Num::from_components(&[Interval::new(0.5, 1.0), Interval::new(0.0, 1.0)], Facts::NONE);
+        let v = Num::from_components(
+            &[Interval::new(0.5, 1.0), Interval::new(0.0, 1.0)],
+            Facts::NONE,
+        );
         assert!(v.facts.has(Facts::NN) && v.facts.has(Facts::NZ) && v.facts.has(Facts::UNIT));
         assert!(!v.may_be_zero());
         assert!(Num::constant(&[0.0, 0.0, 0.0]).may_be_zero());

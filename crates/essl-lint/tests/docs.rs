@@ -19,13 +19,23 @@ fn rule_pages_are_up_to_date() {
             stale.push(path.display().to_string());
         }
     }
-    assert!(stale.is_empty(), "stale rule pages (run with ESSL_LINT_BLESS=1): {stale:?}");
+    assert!(
+        stale.is_empty(),
+        "stale rule pages (run with ESSL_LINT_BLESS=1): {stale:?}"
+    );
 }
 
 #[test]
 fn the_index_lists_every_rule() {
-    let index = std::fs::read_to_string(Path::new(env!("CARGO_MANIFEST_DIR")).join("../../docs/lints/README.md")).expect("docs/lints/README.md");
+    let index = std::fs::read_to_string(
+        Path::new(env!("CARGO_MANIFEST_DIR")).join("../../docs/lints/README.md"),
+    )
+    .expect("docs/lints/README.md");
     for r in essl_lint::RULES {
-        assert!(index.contains(&format!("[`{}`]({}.md)", r.id, r.id)), "README.md lists {}", r.id);
+        assert!(
+            index.contains(&format!("[`{}`]({}.md)", r.id, r.id)),
+            "README.md lists {}",
+            r.id
+        );
     }
 }

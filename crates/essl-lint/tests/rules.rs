@@ -18,20 +18,35 @@ fn frag(precision: &str, decls: &str, body: &str) -> String {
 }
 
 fn compiled(text: &str) -> Shader {
-    let s = compile(SourceFile::new("t.frag", text.to_string()), Stage::Fragment, &CompileOptions::default());
+    let s = compile(
+        SourceFile::new("t.frag", text.to_string()),
+        Stage::Fragment,
+        &CompileOptions::default(),
+    );
     assert!(s.ok(), "does not compile:\n{text}\n{:#?}", s.diagnostics);
-    assert!(s.naga.is_some(), "not lowered:\n{text}\n{:#?}", s.diagnostics);
+    assert!(
+        s.naga.is_some(),
+        "not lowered:\n{text}\n{:#?}",
+        s.diagnostics
+    );
     s
 }
 
 /// The findings: (rule, the text of the span).
 fn findings(text: &str) -> Vec<(&'static str, String)> {
     let s = compiled(text);
-    lint(&s, &LintOptions::default()).iter().map(|d| (d.code, s.file.slice(d.span).to_string())).collect()
+    lint(&s, &LintOptions::default())
+        .iter()
+        .map(|d| (d.code, s.file.slice(d.span).to_string()))
+        .collect()
 }
 
 fn codes_of(text: &str, rule: &str) -> Vec<String> {
-    findings(text).into_iter().filter(|(c, _)| *c == rule).map(|(_, t)| t).collect()
+    findings(text)
+        .into_iter()
+        .filter(|(c, _)| *c == rule)
+        .map(|(_, t)| t)
+        .collect()
 }
 
 /// `body` gets exactly the findings `expected` (span texts) of `rule`.
@@ -52,11 +67,17 @@ fn clean(rule: &str, precision: &str, decls: &str, body: &str) {
 fn fixes_clear(rule: &str, precision: &str, decls: &str, body: &str) {
     let text = frag(precision, decls, body);
     let s = compiled(&text);
-    let found: Vec<Diagnostic> = lint(&s, &LintOptions::default()).into_iter().filter(|d| d.code == rule).collect();
+    let found: Vec<Diagnostic> = lint(&s, &LintOptions::default())
+        .into_iter()
+        .filter(|d| d.code == rule)
+        .collect();
     assert!(!found.is_empty());
     let (fixed, n) = apply_fixes(&text, &found, Applicability::Suggested);
     assert_eq!(n, found.len(), "every finding has a fix");
-    assert!(codes_of(&fixed, rule).is_empty(), "still reported after the fix:\n{fixed}");
+    assert!(
+        codes_of(&fixed, rule).is_empty(),
+        "still reported after the fix:\n{fixed}"
+    );
 }
 
 // ----- pow-negative-base -----
@@ -64,9 +85,27 @@ fn fixes_clear(rule: &str, precision: &str, decls: &str, body: &str) {
 #[test]
 fn pow_of_a_dot_product_may_have_a_negative_base() {
     let rule = "pow-negative-base";
-    reports(rule, "highp", "", "  r = pow(dot(normalize(v_n), normalize(v_h)), u_k);", &["dot(normalize(v_n), normalize(v_h))"]);
-    reports(rule, "highp", "", "  r = pow(sin(v_x), 2.0);", &["sin(v_x)"]);
-    reports(rule, "highp", "", "  r = pow(u_a - u_b, 2.0);", &["u_a - u_b"]);
+    reports(
+        rule,
+        "highp",
+        "",
+        "  r = pow(dot(normalize(v_n), normalize(v_h)), u_k);",
+        &["dot(normalize(v_n), normalize(v_h))"],
+    );
+    reports(
+        rule,
+        "highp",
+        "",
+        "  r = pow(sin(v_x), 2.0);",
+        &["sin(v_x)"],
+    );
+    reports(
+        rule,
+        "highp",
+        "",
+        "  r = pow(u_a - u_b, 2.0);",
+        &["u_a - u_b"],
+    );
     // Through a local, and guarded by a test of another dot product (article 001).
     reports(
         rule,
@@ -75,19 +114,49 @@ fn pow_of_a_dot_product_may_have_a_negative_base() {
         "  vec3 n = normalize(v_n);\n  float light = dot(n, normalize(v_t));\n  if (light > 0.0) {\n    float d = dot(n, normalize(v_h));\n    r = pow(d, u_k);\n  }",
         &["d"],
     );
-    fixes_clear(rule, "highp", "", "  r = pow(dot(normalize(v_n), normalize(v_h)), u_k);");
+    fixes_clear(
+        rule,
+        "highp",
+        "",
+        "  r = pow(dot(normalize(v_n), normalize(v_h)), u_k);",
+    );
 }
 
 #[test]
 fn pow_of_a_clamped_or_external_base_is_fine() {
     let rule = "pow-negative-base";
-    clean(rule, "highp", "", "  r = pow(max(dot(normalize(v_n), normalize(v_h)), 0.0), u_k);");
-    clean(rule, "highp", "", "  r = pow(clamp(dot(v_n, v_h), 0.0, 1.0), 5.0);");
-    clean(rule, "highp", "", "  float d = dot(v_n, v_h);\n  float k = max(d, 0.0);\n  r = pow(k, u_k);");
+    clean(
+        rule,
+        "highp",
+        "",
+        "  r = pow(max(dot(normalize(v_n), normalize(v_h)), 0.0), u_k);",
+    );
+    clean(
+        rule,
+        "highp",
+        "",
+        "  r = pow(clamp(dot(v_n, v_h), 0.0, 1.0), 5.0);",
+    );
+    clean(
+        rule,
+        "highp",
+        "",
+        "  float d = dot(v_n, v_h);\n  float k = max(d, 0.0);\n  r = pow(k, u_k);",
+    );
     clean(rule, "highp", "", "  r = pow(u_a, 2.0) + pow(v_x, 3.0);");
-    clean(rule, "highp", "", "  r = pow(texture(u_tex, v_uv).r * u_a, 2.2);");
+    clean(
+        rule,
+        "highp",
+        "",
+        "  r = pow(texture(u_tex, v_uv).r * u_a, 2.2);",
+    );
     clean(rule, "highp", "", "  float x = dot(v_n, v_h);\n  r = pow(x * x, 0.5) + pow(abs(x), 3.0) + pow(length(v_n), 2.0) + pow(exp(x), 2.0);");
-    clean(rule, "highp", "", "  r = pow(1.0 - clamp(dot(v_n, v_h), 0.0, 1.0), 5.0);");
+    clean(
+        rule,
+        "highp",
+        "",
+        "  r = pow(1.0 - clamp(dot(v_n, v_h), 0.0, 1.0), 5.0);",
+    );
 }
 
 // ----- pow-zero-base -----
@@ -95,17 +164,49 @@ fn pow_of_a_clamped_or_external_base_is_fine() {
 #[test]
 fn pow_of_zero_to_a_non_positive_power() {
     let rule = "pow-zero-base";
-    reports(rule, "highp", "", "  r = pow(max(dot(v_n, v_h), 0.0), 0.0);", &["max(dot(v_n, v_h), 0.0)"]);
-    reports(rule, "highp", "", "  r = pow(max(v_x - 1.0, 0.0), u_k - 1.0);", &["max(v_x - 1.0, 0.0)"]);
-    fixes_clear(rule, "highp", "", "  r = pow(max(v_x - 1.0, 0.0), u_k - 1.0);");
+    reports(
+        rule,
+        "highp",
+        "",
+        "  r = pow(max(dot(v_n, v_h), 0.0), 0.0);",
+        &["max(dot(v_n, v_h), 0.0)"],
+    );
+    reports(
+        rule,
+        "highp",
+        "",
+        "  r = pow(max(v_x - 1.0, 0.0), u_k - 1.0);",
+        &["max(v_x - 1.0, 0.0)"],
+    );
+    fixes_clear(
+        rule,
+        "highp",
+        "",
+        "  r = pow(max(v_x - 1.0, 0.0), u_k - 1.0);",
+    );
 }
 
 #[test]
 fn pow_with_a_uniform_or_positive_exponent_is_fine() {
     let rule = "pow-zero-base";
-    clean(rule, "highp", "", "  r = pow(max(dot(v_n, v_h), 0.0), u_k);");
-    clean(rule, "highp", "", "  r = pow(max(dot(v_n, v_h), 0.0), 16.0);");
-    clean(rule, "highp", "", "  r = pow(max(dot(v_n, v_h), 1e-4), u_k - 1.0);");
+    clean(
+        rule,
+        "highp",
+        "",
+        "  r = pow(max(dot(v_n, v_h), 0.0), u_k);",
+    );
+    clean(
+        rule,
+        "highp",
+        "",
+        "  r = pow(max(dot(v_n, v_h), 0.0), 16.0);",
+    );
+    clean(
+        rule,
+        "highp",
+        "",
+        "  r = pow(max(dot(v_n, v_h), 1e-4), u_k - 1.0);",
+    );
     clean(rule, "highp", "", "  r = pow(max(v_x, 0.0) + 1.0, -1.0);");
 }
 
@@ -114,26 +215,69 @@ fn pow_with_a_uniform_or_positive_exponent_is_fine() {
 #[test]
 fn acos_of_a_dot_product_of_unit_vectors() {
     let rule = "acos-domain";
-    reports(rule, "highp", "", "  r = acos(dot(normalize(v_n), normalize(v_h)));", &["dot(normalize(v_n), normalize(v_h))"]);
+    reports(
+        rule,
+        "highp",
+        "",
+        "  r = acos(dot(normalize(v_n), normalize(v_h)));",
+        &["dot(normalize(v_n), normalize(v_h))"],
+    );
     // Article 003: the up vector is a uniform, not known to be unit length.
-    reports(rule, "highp", "", "  float upCos = dot(normalize(v_n), u_up);\n  r = acos(upCos);", &["upCos"]);
-    fixes_clear(rule, "highp", "", "  r = acos(dot(normalize(v_n), normalize(v_h)));");
+    reports(
+        rule,
+        "highp",
+        "",
+        "  float upCos = dot(normalize(v_n), u_up);\n  r = acos(upCos);",
+        &["upCos"],
+    );
+    fixes_clear(
+        rule,
+        "highp",
+        "",
+        "  r = acos(dot(normalize(v_n), normalize(v_h)));",
+    );
 }
 
 #[test]
 fn acos_of_a_clamped_value_or_uniform_is_fine() {
     let rule = "acos-domain";
-    clean(rule, "highp", "", "  r = acos(clamp(dot(normalize(v_n), normalize(v_h)), -1.0, 1.0));");
-    clean(rule, "highp", "", "  r = acos(u_a) + acos(0.5) + acos(cos(v_x));");
-    clean(rule, "highp", "", "  r = acos(min(max(dot(v_n, v_h), -1.0), 1.0));");
+    clean(
+        rule,
+        "highp",
+        "",
+        "  r = acos(clamp(dot(normalize(v_n), normalize(v_h)), -1.0, 1.0));",
+    );
+    clean(
+        rule,
+        "highp",
+        "",
+        "  r = acos(u_a) + acos(0.5) + acos(cos(v_x));",
+    );
+    clean(
+        rule,
+        "highp",
+        "",
+        "  r = acos(min(max(dot(v_n, v_h), -1.0), 1.0));",
+    );
 }
 
 #[test]
 fn asin_domain() {
     let rule = "asin-domain";
-    reports(rule, "highp", "", "  r = asin(normalize(v_pos).y);", &["normalize(v_pos).y"]);
+    reports(
+        rule,
+        "highp",
+        "",
+        "  r = asin(normalize(v_pos).y);",
+        &["normalize(v_pos).y"],
+    );
     reports(rule, "highp", "", "  r = asin(v_x * 2.0);", &["v_x * 2.0"]);
-    clean(rule, "highp", "", "  r = asin(clamp(normalize(v_pos).y, -1.0, 1.0)) + asin(v_x) + asin(sin(v_x));");
+    clean(
+        rule,
+        "highp",
+        "",
+        "  r = asin(clamp(normalize(v_pos).y, -1.0, 1.0)) + asin(v_x) + asin(sin(v_x));",
+    );
     fixes_clear(rule, "highp", "", "  r = asin(normalize(v_pos).y);");
 }
 
@@ -142,8 +286,20 @@ fn asin_domain() {
 #[test]
 fn smoothstep_with_uniform_edges() {
     let rule = "smoothstep-edges";
-    reports(rule, "highp", "", "  r = smoothstep(u_a, u_b, v_x);", &["smoothstep(u_a, u_b, v_x)"]);
-    reports(rule, "highp", "", "  r = smoothstep(0.0, u_b, v_x);", &["smoothstep(0.0, u_b, v_x)"]);
+    reports(
+        rule,
+        "highp",
+        "",
+        "  r = smoothstep(u_a, u_b, v_x);",
+        &["smoothstep(u_a, u_b, v_x)"],
+    );
+    reports(
+        rule,
+        "highp",
+        "",
+        "  r = smoothstep(0.0, u_b, v_x);",
+        &["smoothstep(0.0, u_b, v_x)"],
+    );
     // Edges that reach a function through its parameters (three.js getSpotAttenuation).
     reports(
         rule,
@@ -159,17 +315,44 @@ fn smoothstep_with_uniform_edges() {
 #[test]
 fn smoothstep_with_constant_edges_out_of_order() {
     let rule = "smoothstep-edges";
-    reports(rule, "highp", "", "  r = smoothstep(1.0, 0.0, v_x);", &["smoothstep(1.0, 0.0, v_x)"]);
-    reports(rule, "highp", "", "  r = smoothstep(0.5, 0.5, v_x);", &["smoothstep(0.5, 0.5, v_x)"]);
+    reports(
+        rule,
+        "highp",
+        "",
+        "  r = smoothstep(1.0, 0.0, v_x);",
+        &["smoothstep(1.0, 0.0, v_x)"],
+    );
+    reports(
+        rule,
+        "highp",
+        "",
+        "  r = smoothstep(0.5, 0.5, v_x);",
+        &["smoothstep(0.5, 0.5, v_x)"],
+    );
     fixes_clear(rule, "highp", "", "  r = smoothstep(1.0, 0.0, v_x);");
 }
 
 #[test]
 fn smoothstep_with_ordered_edges_is_fine() {
     let rule = "smoothstep-edges";
-    clean(rule, "highp", "", "  r = smoothstep(0.0, 1.0, v_x) + smoothstep(u_a, u_a + 0.1, v_x);");
-    clean(rule, "mediump", "", "  r = smoothstep(u_a, max(u_b, u_a + 1e-3), v_x);");
-    clean(rule, "highp", "", "  float w = 0.01;\n  r = smoothstep(u_a - w, u_a + w, v_x);");
+    clean(
+        rule,
+        "highp",
+        "",
+        "  r = smoothstep(0.0, 1.0, v_x) + smoothstep(u_a, u_a + 0.1, v_x);",
+    );
+    clean(
+        rule,
+        "mediump",
+        "",
+        "  r = smoothstep(u_a, max(u_b, u_a + 1e-3), v_x);",
+    );
+    clean(
+        rule,
+        "highp",
+        "",
+        "  float w = 0.01;\n  r = smoothstep(u_a - w, u_a + w, v_x);",
+    );
     clean(rule, "highp", "", "  r = smoothstep(v_x, v_pos.x, 0.5);");
 }
 
@@ -178,8 +361,20 @@ fn smoothstep_with_ordered_edges_is_fine() {
 #[test]
 fn division_by_a_difference_of_uniforms() {
     let rule = "division-by-difference";
-    reports(rule, "highp", "", "  r = clamp((v_x - u_b) / (u_a - u_b), 0.0, 1.0);", &["(u_a - u_b)"]);
-    reports(rule, "highp", "", "  float range = u_a - u_b;\n  r = clamp((v_x - u_b) / range, 0.0, 1.0);", &["range"]);
+    reports(
+        rule,
+        "highp",
+        "",
+        "  r = clamp((v_x - u_b) / (u_a - u_b), 0.0, 1.0);",
+        &["(u_a - u_b)"],
+    );
+    reports(
+        rule,
+        "highp",
+        "",
+        "  float range = u_a - u_b;\n  r = clamp((v_x - u_b) / range, 0.0, 1.0);",
+        &["range"],
+    );
     reports(
         rule,
         "highp",
@@ -187,15 +382,30 @@ fn division_by_a_difference_of_uniforms() {
         "  float epsilon = light.cutOff - light.outerCutOff;\n  r = (v_x - light.outerCutOff) / epsilon;",
         &["epsilon"],
     );
-    fixes_clear(rule, "highp", "", "  float range = u_a - u_b;\n  r = clamp((v_x - u_b) / range, 0.0, 1.0);");
+    fixes_clear(
+        rule,
+        "highp",
+        "",
+        "  float range = u_a - u_b;\n  r = clamp((v_x - u_b) / range, 0.0, 1.0);",
+    );
 }
 
 #[test]
 fn a_guarded_or_non_uniform_divisor_is_fine() {
     let rule = "division-by-difference";
-    clean(rule, "highp", "", "  r = (v_x - u_b) / max(u_a - u_b, 1e-4);");
+    clean(
+        rule,
+        "highp",
+        "",
+        "  r = (v_x - u_b) / max(u_a - u_b, 1e-4);",
+    );
     clean(rule, "highp", "", "  r = v_x / (u_a + 1.0 - u_a);");
-    clean(rule, "highp", "", "  r = v_x / (v_pos.x - v_pos.y) + v_x / u_a + v_x / (abs(u_a - u_b) + 0.001);");
+    clean(
+        rule,
+        "highp",
+        "",
+        "  r = v_x / (v_pos.x - v_pos.y) + v_x / u_a + v_x / (abs(u_a - u_b) + 0.001);",
+    );
 }
 
 // ----- normalize-zero -----
@@ -203,19 +413,57 @@ fn a_guarded_or_non_uniform_divisor_is_fine() {
 #[test]
 fn normalize_of_a_cross_product_or_per_draw_difference() {
     let rule = "normalize-zero";
-    reports(rule, "highp", "", "  r = normalize(cross(u_up, u_dir)).x;", &["cross(u_up, u_dir)"]);
-    reports(rule, "highp", "", "  r = normalize(cross(normalize(v_n), vec3(0.0, 1.0, 0.0))).x;", &["cross(normalize(v_n), vec3(0.0, 1.0, 0.0))"]);
-    reports(rule, "highp", "", "  vec3 f = u_target - u_eye;\n  r = normalize(f).x;", &["f"]);
+    reports(
+        rule,
+        "highp",
+        "",
+        "  r = normalize(cross(u_up, u_dir)).x;",
+        &["cross(u_up, u_dir)"],
+    );
+    reports(
+        rule,
+        "highp",
+        "",
+        "  r = normalize(cross(normalize(v_n), vec3(0.0, 1.0, 0.0))).x;",
+        &["cross(normalize(v_n), vec3(0.0, 1.0, 0.0))"],
+    );
+    reports(
+        rule,
+        "highp",
+        "",
+        "  vec3 f = u_target - u_eye;\n  r = normalize(f).x;",
+        &["f"],
+    );
 }
 
 #[test]
 fn normalize_of_inputs_transforms_and_per_pixel_vectors_is_fine() {
     let rule = "normalize-zero";
-    clean(rule, "highp", "", "  r = normalize(v_n).x + normalize(u_dir).x + normalize(-u_dir).x;");
-    clean(rule, "highp", "", "  r = normalize(u_eye - v_pos).x + normalize(normalize(v_n) + normalize(v_h)).x;");
+    clean(
+        rule,
+        "highp",
+        "",
+        "  r = normalize(v_n).x + normalize(u_dir).x + normalize(-u_dir).x;",
+    );
+    clean(
+        rule,
+        "highp",
+        "",
+        "  r = normalize(u_eye - v_pos).x + normalize(normalize(v_n) + normalize(v_h)).x;",
+    );
     clean(rule, "highp", "", "  r = normalize(cross(v_n, v_t)).x;");
-    clean(rule, "highp", "", "  r = normalize(vec3(u_m * vec4(u_dir, 0.0))).x;");
-    clean(rule, "highp", "", "  r = normalize(cross(vec3(1.0, 0.0, 0.0), vec3(0.0, 1.0, 0.0))).x;");
+    clean(
+        rule,
+        "highp",
+        "",
+        "  r = normalize(vec3(u_m * vec4(u_dir, 0.0))).x;",
+    );
+    clean(
+        rule,
+        "highp",
+        "",
+        "  r = normalize(cross(vec3(1.0, 0.0, 0.0), vec3(0.0, 1.0, 0.0))).x;",
+    );
     // A camera frame: the second and third cross products are of perpendicular vectors.
     reports(
         rule,
@@ -231,24 +479,166 @@ fn normalize_of_inputs_transforms_and_per_pixel_vectors_is_fine() {
 #[test]
 fn mediump_overflow() {
     let rule = "mediump-overflow";
-    reports(rule, "mediump", "", "  r = pow(u_a, 150.0);", &["pow(u_a, 150.0)"]);
-    reports(rule, "mediump", "", "  float x = u_a * 1000.0;\n  r = x * x;", &["x * x"]);
-    reports(rule, "mediump", "", "  r = exp(u_a * 2.0);", &["exp(u_a * 2.0)"]);
-    reports(rule, "mediump", "", "  r = length(v_pos * 100.0);", &["length(v_pos * 100.0)"]);
+    reports(
+        rule,
+        "mediump",
+        "",
+        "  r = pow(u_a, 150.0);",
+        &["pow(u_a, 150.0)"],
+    );
+    reports(
+        rule,
+        "mediump",
+        "",
+        "  float x = u_a * 1000.0;\n  r = x * x;",
+        &["x * x"],
+    );
+    reports(
+        rule,
+        "mediump",
+        "",
+        "  r = exp(u_a * 2.0);",
+        &["exp(u_a * 2.0)"],
+    );
+    reports(
+        rule,
+        "mediump",
+        "",
+        "  r = length(v_pos * 100.0);",
+        &["length(v_pos * 100.0)"],
+    );
     // A guard below mediump's smallest normal number flushes to zero.
-    reports(rule, "mediump", "", "  r = v_x / max(u_a - u_b, 1e-6);", &["max(u_a - u_b, 1e-6)"]);
+    reports(
+        rule,
+        "mediump",
+        "",
+        "  r = v_x / max(u_a - u_b, 1e-6);",
+        &["max(u_a - u_b, 1e-6)"],
+    );
 }
 
 #[test]
 fn mediump_without_overflow_and_highp_are_fine() {
     let rule = "mediump-overflow";
     clean(rule, "highp", "", "  float x = u_a * 1000.0;\n  r = pow(u_a, 150.0) + x * x + exp(u_a * 2.0) + v_x / max(u_a, 1e-6);");
-    clean(rule, "mediump", "", "  r = pow(max(dot(normalize(v_n), normalize(v_h)), 0.0), 150.0);");
-    clean(rule, "mediump", "", "  r = clamp((v_x - u_b) / max(u_a - u_b, 1e-4), 0.0, 1.0);");
+    clean(
+        rule,
+        "mediump",
+        "",
+        "  r = pow(max(dot(normalize(v_n), normalize(v_h)), 0.0), 150.0);",
+    );
+    clean(
+        rule,
+        "mediump",
+        "",
+        "  r = clamp((v_x - u_b) / max(u_a - u_b, 1e-4), 0.0, 1.0);",
+    );
     clean(rule, "mediump", "", "  r = u_a * u_b * u_k * v_x;");
-    clean(rule, "mediump", "", "  r = normalize(v_pos).x + length(v_pos) + exp(-u_a * v_x);");
+    clean(
+        rule,
+        "mediump",
+        "",
+        "  r = normalize(v_pos).x + length(v_pos) + exp(-u_a * v_x);",
+    );
     // A highp variable in a mediump shader.
-    clean(rule, "mediump", "", "  highp float x = u_a * 1000.0;\n  highp float y = x * x;\n  r = y > 1.0 ? 1.0 : 0.0;");
+    clean(
+        rule,
+        "mediump",
+        "",
+        "  highp float x = u_a * 1000.0;\n  highp float y = x * x;\n  r = y > 1.0 ? 1.0 : 0.0;",
+    );
+}
+
+// ----- guards -----
+
+#[test]
+fn guarded_code_is_not_reported() {
+    let d = "  float d = dot(normalize(v_n), normalize(v_h));\n";
+    clean(
+        "pow-negative-base",
+        "highp",
+        "",
+        &format!("{d}  if (d > 0.0) {{ r = pow(d, u_k); }}"),
+    );
+    clean(
+        "pow-negative-base",
+        "highp",
+        "",
+        &format!("{d}  r = d > 0.0 ? pow(d, u_k) : 0.0;"),
+    );
+    clean(
+        "pow-negative-base",
+        "highp",
+        "",
+        &format!("{d}  if (d <= 0.0) {{ discard; }}\n  r = pow(d, u_k);"),
+    );
+    clean(
+        "pow-negative-base",
+        "highp",
+        "",
+        "  if (dot(v_n, v_h) > 0.0) { r = pow(dot(v_n, v_h), u_k); }",
+    );
+    reports(
+        "pow-negative-base",
+        "highp",
+        "",
+        &format!("{d}  if (d > -0.5) {{ r = pow(d, u_k); }}"),
+        &["d"],
+    );
+    clean(
+        "pow-zero-base",
+        "highp",
+        "",
+        &format!("{d}  if (d > 0.0) {{ r = pow(d, u_k - 1.0); }}"),
+    );
+    clean(
+        "acos-domain",
+        "highp",
+        "",
+        &format!("{d}  if (abs(d) <= 1.0) {{ r = acos(d); }}"),
+    );
+    clean(
+        "division-by-difference",
+        "highp",
+        "",
+        "  if (u_a != u_b) { r = v_x / (u_a - u_b); }",
+    );
+    clean(
+        "division-by-difference",
+        "highp",
+        "",
+        "  if (u_a > u_b) { r = v_x / (u_a - u_b); }",
+    );
+    clean(
+        "division-by-difference",
+        "highp",
+        "",
+        "  float e = u_a - u_b;\n  if (abs(e) > 1e-4) { r = v_x / e; }",
+    );
+    clean(
+        "smoothstep-edges",
+        "highp",
+        "",
+        "  if (u_a < u_b) { r = smoothstep(u_a, u_b, v_x); }",
+    );
+    clean(
+        "smoothstep-edges",
+        "highp",
+        "",
+        "  r = u_a < u_b ? smoothstep(u_a, u_b, v_x) : step(u_a, v_x);",
+    );
+    clean(
+        "normalize-zero",
+        "highp",
+        "",
+        "  vec3 c = cross(u_up, u_dir);\n  r = (dot(c, c) > 1e-12 ? normalize(c) : u_dir).x;",
+    );
+    clean(
+        "normalize-zero",
+        "highp",
+        "",
+        "  vec3 c = cross(u_up, u_dir);\n  if (length(c) > 0.0) { r = normalize(c).x; }",
+    );
 }
 
 // ----- options and suppressions -----
@@ -266,8 +656,18 @@ fn findings_are_warnings_unless_denied() {
     assert_eq!(denied[0].severity, Severity::Error);
     assert!(lint(&s, &LintOptions::new().allow("pow-negative-base")).is_empty());
     assert!(lint(&s, &LintOptions::new().allow("all")).is_empty());
-    assert_eq!(lint(&s, &LintOptions::new().allow("all").warn("pow-negative-base")).len(), 1);
-    assert_eq!(lint(&s, &LintOptions::new().deny("all"))[0].severity, Severity::Error);
+    assert_eq!(
+        lint(
+            &s,
+            &LintOptions::new().allow("all").warn("pow-negative-base")
+        )
+        .len(),
+        1
+    );
+    assert_eq!(
+        lint(&s, &LintOptions::new().deny("all"))[0].severity,
+        Severity::Error
+    );
 }
 
 #[test]
@@ -281,11 +681,13 @@ fn unknown_rules_are_rejected_by_set() {
 
 #[test]
 fn essl_allow_comments_silence_a_rule_on_their_line_and_the_next() {
-    let same_line = "  r = pow(dot(normalize(v_n), normalize(v_h)), u_k); // essl-allow: pow-negative-base";
+    let same_line =
+        "  r = pow(dot(normalize(v_n), normalize(v_h)), u_k); // essl-allow: pow-negative-base";
     assert!(findings(&frag("highp", "", same_line)).is_empty());
     let line_before = "  // essl-allow: pow-negative-base, acos-domain\n  r = pow(dot(normalize(v_n), normalize(v_h)), u_k);";
     assert!(findings(&frag("highp", "", line_before)).is_empty());
-    let other_rule = "  // essl-allow: acos-domain\n  r = pow(dot(normalize(v_n), normalize(v_h)), u_k);";
+    let other_rule =
+        "  // essl-allow: acos-domain\n  r = pow(dot(normalize(v_n), normalize(v_h)), u_k);";
     assert_eq!(findings(&frag("highp", "", other_rule)).len(), 1);
     let too_far = "  // essl-allow: pow-negative-base\n\n  r = pow(dot(normalize(v_n), normalize(v_h)), u_k);";
     assert_eq!(findings(&frag("highp", "", too_far)).len(), 1);
@@ -293,7 +695,11 @@ fn essl_allow_comments_silence_a_rule_on_their_line_and_the_next() {
 
 #[test]
 fn a_shader_that_does_not_compile_has_no_findings() {
-    let s = compile(SourceFile::new("t.frag", "#version 300 es\nvoid main() { x = 1; }\n"), Stage::Fragment, &CompileOptions::default());
+    let s = compile(
+        SourceFile::new("t.frag", "#version 300 es\nvoid main() { x = 1; }\n"),
+        Stage::Fragment,
+        &CompileOptions::default(),
+    );
     assert!(lint(&s, &LintOptions::default()).is_empty());
 }
 
@@ -307,7 +713,13 @@ fn every_rule_is_registered_once_with_a_page() {
         assert!(essl_lint::rule(r.id).is_some());
         assert_eq!(r.default_level, Level::Warn);
         let page = r.page();
-        for section in ["## What it does", "## Why is this bad?", "## Example", "## Use instead", "## References"] {
+        for section in [
+            "## What it does",
+            "## Why is this bad?",
+            "## Example",
+            "## Use instead",
+            "## References",
+        ] {
             assert!(page.contains(section), "{}: no {section}", r.id);
         }
     }

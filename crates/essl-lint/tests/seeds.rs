@@ -22,8 +22,16 @@ fn shaders(dir: &Path) -> Vec<PathBuf> {
 
 fn compiled(path: &Path) -> Shader {
     let text = std::fs::read_to_string(path).expect("a readable shader");
-    let name = path.file_name().expect("a file name").to_string_lossy().to_string();
-    compile(SourceFile::new(name, text), Stage::from_path(path).expect("a stage"), &CompileOptions::default())
+    let name = path
+        .file_name()
+        .expect("a file name")
+        .to_string_lossy()
+        .to_string();
+    compile(
+        SourceFile::new(name, text),
+        Stage::from_path(path).expect("a stage"),
+        &CompileOptions::default(),
+    )
 }
 
 /// The findings as the snapshots hold them.
@@ -59,7 +67,11 @@ fn shaders_glsl() {
     assert!(files.len() >= 36, "the seeds' shaders are there");
     for path in files {
         let shader = compiled(&path);
-        let name = path.file_name().expect("a file name").to_string_lossy().to_string();
+        let name = path
+            .file_name()
+            .expect("a file name")
+            .to_string_lossy()
+            .to_string();
         insta::assert_json_snapshot!(format!("shaders-glsl__{name}"), findings(&shader));
     }
 }
@@ -70,7 +82,11 @@ fn article_code_before_the_numerical_fixes() {
     for path in shaders(&dir) {
         let shader = compiled(&path);
         assert!(shader.ok(), "{} compiles", path.display());
-        let name = path.file_name().expect("a file name").to_string_lossy().to_string();
+        let name = path
+            .file_name()
+            .expect("a file name")
+            .to_string_lossy()
+            .to_string();
         insta::assert_json_snapshot!(format!("articles__{name}"), findings(&shader));
     }
 }
@@ -80,8 +96,14 @@ fn article_code_before_the_numerical_fixes() {
 #[test]
 fn twins_are_clean_and_fixes_clean_the_article_code() {
     for path in shaders(&repo().join("shaders-glsl")) {
-        let name = path.file_name().expect("a file name").to_string_lossy().to_string();
-        let twin = name.contains(".fixed.") || ["spot-step.frag", "spot-linear.frag", "spot-smoothstep.frag"].contains(&name.as_str());
+        let name = path
+            .file_name()
+            .expect("a file name")
+            .to_string_lossy()
+            .to_string();
+        let twin = name.contains(".fixed.")
+            || ["spot-step.frag", "spot-linear.frag", "spot-smoothstep.frag"]
+                .contains(&name.as_str());
         if twin {
             let shader = compiled(&path);
             assert!(shader.ok(), "{name} compiles");
@@ -95,8 +117,21 @@ fn twins_are_clean_and_fixes_clean_the_article_code() {
         assert!(!found.is_empty(), "{} has hazards", path.display());
         let (fixed, n) = apply_fixes(shader.file.text(), &found, Applicability::Suggested);
         assert_eq!(n, found.len());
-        let again = compile(SourceFile::new("fixed", fixed.clone()), Stage::from_path(&path).expect("a stage"), &CompileOptions::default());
-        assert!(again.ok(), "the fixed {} compiles:\n{fixed}", path.display());
-        assert_eq!(findings(&again), json!([]), "the fixed {} is clean:\n{fixed}", path.display());
+        let again = compile(
+            SourceFile::new("fixed", fixed.clone()),
+            Stage::from_path(&path).expect("a stage"),
+            &CompileOptions::default(),
+        );
+        assert!(
+            again.ok(),
+            "the fixed {} compiles:\n{fixed}",
+            path.display()
+        );
+        assert_eq!(
+            findings(&again),
+            json!([]),
+            "the fixed {} is clean:\n{fixed}",
+            path.display()
+        );
     }
 }

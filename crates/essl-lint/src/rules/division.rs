@@ -59,16 +59,36 @@ fn check(cx: &Cx, out: &mut Vec<Diagnostic>) {
     for (id, f) in cx.functions() {
         let sym = cx.sym(id, f);
         for (h, e) in f.expressions.iter() {
-            let E::Binary { op: Bo::Divide, right, .. } = *e else { continue };
+            let E::Binary {
+                op: Bo::Divide,
+                right,
+                ..
+            } = *e
+            else {
+                continue;
+            };
             if cx.span(f, h).is_empty() {
                 continue;
             }
             let d = cx.operand(f, h, right);
-            let Some(v) = cx.sound.num(id, d) else { continue };
-            if cx.kind(id, d) != Some(ScalarKind::Float) || !v.facts.has(Facts::DIFF) || !v.facts.any(Facts::UNIFORM) {
+            let Some(v) = cx.sound.num(id, d) else {
+                continue;
+            };
+            if cx.kind(id, d) != Some(ScalarKind::Float)
+                || !v.facts.has(Facts::DIFF)
+                || !v.facts.any(Facts::UNIFORM)
+            {
                 continue;
             }
             if !v.comps().iter().any(|c| c.contains(0.0)) || sym.nonzero(d) {
+                continue;
+            }
+            let g = cx.guards(f, id, h);
+            if cx.nonzero(f, id, d, &g)
+                || cx
+                    .refined(f, id, d, &g)
+                    .is_none_or(|v| !v.comps().iter().any(|c| c.contains(0.0)))
+            {
                 continue;
             }
             let span = cx.span(f, d);
@@ -76,15 +96,32 @@ fn check(cx: &Cx, out: &mut Vec<Diagnostic>) {
                 continue;
             }
             let what = cx.what(f, id, d);
-            let mut diag = Diagnostic::warning(DIFFERENCE.id, "division by a difference of uniforms that can be zero", span)
-                .with_label(format!("{what} is 0 when the uniforms are equal"))
-                .with_help("guard the divisor");
+            let mut diag = Diagnostic::warning(
+                DIFFERENCE.id,
+                "division by a difference of uniforms that can be zero",
+                span,
+            )
+            .with_label(format!("{what} is 0 when the uniforms are equal"))
+            .with_help("guard the divisor");
             let def = resolve(f, &cx.sound, id, d);
             let def_span = cx.span(f, def);
-            if def != d && !def_span.is_empty() && matches!(f.expressions[def], E::Binary { op: Bo::Subtract, .. }) {
+            if def != d
+                && !def_span.is_empty()
+                && matches!(
+                    f.expressions[def],
+                    E::Binary {
+                        op: Bo::Subtract,
+                        ..
+                    }
+                )
+            {
                 diag = diag.with_secondary(def_span, "the difference");
             }
-            diag = diag.with_fix(Fix::suggested("wrap the divisor in `max(…, 1e-4)`", span, format!("max({}, 1e-4)", cx.text(span))));
+            diag = diag.with_fix(Fix::suggested(
+                "wrap the divisor in `max(…, 1e-4)`",
+                span,
+                format!("max({}, 1e-4)", cx.text(span)),
+            ));
             out.push(diag);
         }
     }

@@ -4,9 +4,11 @@
 use std::collections::HashMap;
 
 use essl::diagnostic::Diagnostic;
-use naga::{BinaryOperator as Bo, Block, Expression as E, Function, Handle, MathFunction as Mf, ScalarKind, Statement};
+use naga::{
+    BinaryOperator as Bo, Expression as E, Function, Handle, MathFunction as Mf, ScalarKind,
+};
 
-use super::{fmt_num, Cx, Rule};
+use super::{fmt_num, operands, users, Cx, Rule, User};
 use crate::analysis::TYPICAL;
 use crate::interval::Interval;
 use crate::Level;
@@ -67,73 +69,6 @@ divide before multiplying). There is no mechanical fix.
 - IEEE 754 binary16: largest finite value 65504, smallest normal 2^-14.
 "#;
 
-/// Who reads an expression's value.
-#[derive(Clone, Copy, Debug, PartialEq)]
-enum User {
-    Expr(Handle<E>),
-    Stmt,
-}
-
-fn operands(e: &E) -> Vec<Handle<E>> {
-    match e {
-        E::Compose { components, .. } => components.clone(),
-        E::Access { base, index } => vec![*base, *index],
-        E::AccessIndex { base, .. } => vec![*base],
-        E::Splat { value, .. } => vec![*value],
-        E::Swizzle { vector, .. } => vec![*vector],
-        E::Load { pointer } => vec![*pointer],
-        E::Unary { expr, .. } | E::Derivative { expr, .. } | E::As { expr, .. } => vec![*expr],
-        E::Binary { left, right, .. } => vec![*left, *right],
-        E::Select { condition, accept, reject } => vec![*condition, *accept, *reject],
-        E::Relational { argument, .. } => vec![*argument],
-        E::Math { arg, arg1, arg2, arg3, .. } => [Some(*arg), *arg1, *arg2, *arg3].into_iter().flatten().collect(),
-        E::ImageSample { coordinate, depth_ref, .. } => [Some(*coordinate), *depth_ref].into_iter().flatten().collect(),
-        E::ImageLoad { coordinate, .. } => vec![*coordinate],
-        _ => Vec::new(),
-    }
-}
-
-fn users(f: &Function) -> HashMap<Handle<E>, Vec<User>> {
-    let mut map: HashMap<Handle<E>, Vec<User>> = HashMap::new();
-    for (h, e) in f.expressions.iter() {
-        for o in operands(e) {
-            map.entry(o).or_default().push(User::Expr(h));
-        }
-    }
-    fn walk(b: &Block, map: &mut HashMap<Handle<E>, Vec<User>>) {
-        for s in b.iter() {
-            let mut read = |h: &Handle<E>| map.entry(*h).or_default().push(User::Stmt);
-            match s {
-                Statement::Store { value, .. } => read(value),
-                Statement::Return { value: Some(v) } => read(v),
-                Statement::Call { arguments, .. } => arguments.iter().for_each(read),
-                Statement::If { condition, accept, reject } => {
-                    read(condition);
-                    walk(accept, map);
-                    walk(reject, map);
-                }
-                Statement::Switch { selector, cases } => {
-                    read(selector);
-                    for c in cases {
-                        walk(&c.body, map);
-                    }
-                }
-                Statement::Loop { body, continuing, break_if } => {
-                    if let Some(b) = break_if {
-                        read(b);
-                    }
-                    walk(body, map);
-                    walk(continuing, map);
-                }
-                Statement::Block(b) => walk(b, map),
-                _ => {}
-            }
-        }
-    }
-    walk(&f.body, &mut map);
-    map
-}
-
 fn check(cx: &Cx, out: &mut Vec<Diagnostic>) {
     for (id, f) in cx.functions() {
         let users = users(f);
@@ -147,15 +82,38 @@ fn check(cx: &Cx, out: &mut Vec<Diagnostic>) {
                 continue;
             }
             let ops: Vec<Handle<E>> = match *e {
-                E::Binary { op: Bo::Multiply | Bo::Divide, left, right } => vec![left, right],
-                E::Math { fun: Mf::Pow | Mf::Exp | Mf::Exp2 | Mf::Dot | Mf::Length | Mf::Distance | Mf::Normalize | Mf::Cosh | Mf::Sinh | Mf::Fma | Mf::Ldexp, .. } => operands(e),
+                E::Binary {
+                    op: Bo::Multiply | Bo::Divide,
+                    left,
+                    right,
+                } => vec![left, right],
+                E::Math {
+                    fun:
+                        Mf::Pow
+                        | Mf::Exp
+                        | Mf::Exp2
+                        | Mf::Dot
+                        | Mf::Length
+                        | Mf::Distance
+                        | Mf::Normalize
+                        | Mf::Cosh
+                        | Mf::Sinh
+                        | Mf::Fma
+                        | Mf::Ldexp,
+                    ..
+                } => operands(e),
                 _ => continue,
             };
-            let typ: Vec<Interval> = ops.iter().filter_map(|o| cx.typical.num(id, *o).map(|n| n.hull())).collect();
+            let typ: Vec<Interval> = ops
+                .iter()
+                .filter_map(|o| cx.typical.num(id, *o).map(|n| n.hull()))
+                .collect();
             if typ.len() != ops.len() || typ.iter().any(|i| i.mag() > LIMIT) {
                 continue;
             }
-            let Some(r) = amplified(cx, f, id, e, &typ) else { continue };
+            let Some(r) = amplified(cx, f, id, e, &typ) else {
+                continue;
+            };
             if guarded_operand(cx, f, h, e).is_some_and(|x| underflows(cx, id, f, x).is_some()) {
                 continue; // the underflowing divisor is the finding
             }
@@ -184,47 +142,96 @@ fn check(cx: &Cx, out: &mut Vec<Diagnostic>) {
 /// different parameters is not an amplification: its scale is the parameters' (the runtime
 /// check sees their values).
 fn amplified(cx: &Cx, f: &Function, id: usize, e: &E, typ: &[Interval]) -> Option<Interval> {
-    let constant = |h: Handle<E>| cx.sound.num(id, h).is_some_and(|n| n.comps().iter().all(|c| c.as_point().is_some()));
-    let squares = |h: Handle<E>| cx.typical.num(id, h).map(|n| n.comps().iter().fold(Interval::point(0.0), |s, c| s.add(c.sqr())));
+    let constant = |h: Handle<E>| {
+        cx.sound
+            .num(id, h)
+            .is_some_and(|n| n.comps().iter().all(|c| c.as_point().is_some()))
+    };
+    let squares = |h: Handle<E>| {
+        cx.typical.num(id, h).map(|n| {
+            n.comps()
+                .iter()
+                .fold(Interval::point(0.0), |s, c| s.add(c.sqr()))
+        })
+    };
     match *e {
-        E::Binary { op: Bo::Multiply, left, right } => {
-            (cx.sound.same(f, id, left, right) || constant(left) || constant(right)).then(|| typ[0].mul(typ[1]))
-        }
+        E::Binary {
+            op: Bo::Multiply,
+            left,
+            right,
+        } => (cx.sound.same(f, id, left, right) || constant(left) || constant(right))
+            .then(|| typ[0].mul(typ[1])),
         E::Binary { op: Bo::Divide, .. } => (!typ[1].contains(0.0)).then(|| typ[0].div(typ[1])),
         E::Math { fun: Mf::Pow, .. } => {
             // Growth: a base above 1 to a positive power. A base near 0 with a negative
             // exponent is pow-zero-base's business.
-            let r = typ[0].meet(Interval::new(1.0, f64::INFINITY)).pow(typ[1].meet(Interval::NON_NEGATIVE));
+            let r = typ[0]
+                .meet(Interval::new(1.0, f64::INFINITY))
+                .pow(typ[1].meet(Interval::NON_NEGATIVE));
             (!r.is_empty()).then_some(r)
         }
         E::Math { fun: Mf::Exp, .. } => Some(typ[0].exp()),
         E::Math { fun: Mf::Exp2, .. } => Some(typ[0].exp2()),
         E::Math { fun: Mf::Sinh, .. } => Some(typ[0].sinh()),
         E::Math { fun: Mf::Cosh, .. } => Some(typ[0].cosh()),
-        E::Math { fun: Mf::Dot, arg, arg1: Some(b), .. } => {
+        E::Math {
+            fun: Mf::Dot,
+            arg,
+            arg1: Some(b),
+            ..
+        } => {
             if cx.sound.same(f, id, arg, b) {
                 squares(arg)
             } else {
                 None
             }
         }
-        E::Math { fun: Mf::Length | Mf::Normalize, arg, .. } => squares(arg),
-        E::Math { fun: Mf::Distance, arg, arg1: Some(b), .. } => {
+        E::Math {
+            fun: Mf::Length | Mf::Normalize,
+            arg,
+            ..
+        } => squares(arg),
+        E::Math {
+            fun: Mf::Distance,
+            arg,
+            arg1: Some(b),
+            ..
+        } => {
             let (x, y) = (cx.typical.num(id, arg)?, cx.typical.num(id, b)?);
-            Some(x.zip(y, Interval::sub).iter().fold(Interval::point(0.0), |s, c| s.add(c.sqr())))
+            Some(
+                x.zip(y, Interval::sub)
+                    .iter()
+                    .fold(Interval::point(0.0), |s, c| s.add(c.sqr())),
+            )
         }
-        E::Math { fun: Mf::Fma, arg, arg1: Some(b), .. } => {
-            (cx.sound.same(f, id, arg, b) || constant(arg) || constant(b)).then(|| typ[0].mul(typ[1]).add(typ[2]))
-        }
+        E::Math {
+            fun: Mf::Fma,
+            arg,
+            arg1: Some(b),
+            ..
+        } => (cx.sound.same(f, id, arg, b) || constant(arg) || constant(b))
+            .then(|| typ[0].mul(typ[1]).add(typ[2])),
         _ => None,
     }
 }
 
 /// Whether every use of `h` clamps away its overflow (`up`: towards +∞, `down`: towards −∞).
 #[allow(clippy::too_many_arguments)]
-fn saturated(cx: &Cx, f: &Function, id: usize, h: Handle<E>, up: bool, down: bool, users: &HashMap<Handle<E>, Vec<User>>, depth: u32) -> bool {
+fn saturated(
+    cx: &Cx,
+    f: &Function,
+    id: usize,
+    h: Handle<E>,
+    up: bool,
+    down: bool,
+    users: &HashMap<Handle<E>, Vec<User>>,
+    depth: u32,
+) -> bool {
     let Some(us) = users.get(&h) else { return true };
-    let bounded = |x: Option<Handle<E>>| x.and_then(|x| cx.typical.num(id, x)).is_some_and(|n| n.hull().mag() <= LIMIT);
+    let bounded = |x: Option<Handle<E>>| {
+        x.and_then(|x| cx.typical.num(id, x))
+            .is_some_and(|n| n.hull().mag() <= LIMIT)
+    };
     us.iter().all(|u| {
         let User::Expr(u) = *u else { return false };
         match f.expressions[u] {
@@ -243,8 +250,16 @@ fn saturated(cx: &Cx, f: &Function, id: usize, h: Handle<E>, up: bool, down: boo
 /// or `log`.
 fn guarded_operand(cx: &Cx, f: &Function, h: Handle<E>, e: &E) -> Option<Handle<E>> {
     match *e {
-        E::Binary { op: Bo::Divide, right, .. } => Some(cx.operand(f, h, right)),
-        E::Math { fun: Mf::InverseSqrt | Mf::Log | Mf::Log2, arg, .. } => Some(cx.operand(f, h, arg)),
+        E::Binary {
+            op: Bo::Divide,
+            right,
+            ..
+        } => Some(cx.operand(f, h, right)),
+        E::Math {
+            fun: Mf::InverseSqrt | Mf::Log | Mf::Log2,
+            arg,
+            ..
+        } => Some(cx.operand(f, h, arg)),
         _ => None,
     }
 }
@@ -257,15 +272,23 @@ fn underflows(cx: &Cx, id: usize, f: &Function, x: Handle<E>) -> Option<f64> {
         return None;
     }
     let v = cx.sound.num(id, x)?;
-    let m = v.comps().iter().map(|c| c.mig()).fold(f64::INFINITY, f64::min);
+    let m = v
+        .comps()
+        .iter()
+        .map(|c| c.mig())
+        .fold(f64::INFINITY, f64::min);
     (m > 0.0 && m < MIN_NORMAL).then_some(m)
 }
 
 /// A low-precision divisor (or `inversesqrt`/`log` argument) kept away from zero by less than
 /// the smallest normal 16-bit float.
 fn underflow(cx: &Cx, f: &Function, id: usize, h: Handle<E>, e: &E, out: &mut Vec<Diagnostic>) {
-    let Some(x) = guarded_operand(cx, f, h, e) else { return };
-    let Some(m) = underflows(cx, id, f, x) else { return };
+    let Some(x) = guarded_operand(cx, f, h, e) else {
+        return;
+    };
+    let Some(m) = underflows(cx, id, f, x) else {
+        return;
+    };
     let span = cx.span(f, x);
     let p = cx.prec.at(span).map(|p| p.name()).unwrap_or("mediump");
     out.push(

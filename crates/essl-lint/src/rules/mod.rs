@@ -8,17 +8,21 @@ mod normalize;
 mod pow;
 mod smoothstep;
 
-use std::collections::HashSet;
+use std::collections::{HashMap, HashSet};
 
 use essl::diagnostic::Diagnostic;
 use essl::source::{SourceFile, Span};
 use essl::Shader;
-use naga::{Expression as E, Function, Handle, MathFunction as Mf};
+use naga::{
+    BinaryOperator as Bo, Block, Expression as E, Function, Handle, MathFunction as Mf, Statement,
+    UnaryOperator as Uo,
+};
 
-use crate::analysis::{self, Analysis, Mode};
+use crate::analysis::{self, refine_num, relation, Analysis, Mode, Refinement};
 use crate::interval::Interval;
 use crate::precision::Precisions;
 use crate::symbolic::{self, Sym};
+use crate::value::Num;
 use crate::Level;
 
 /// A lint rule: its id, what it reports in one line, its default level and its documentation.
@@ -37,7 +41,10 @@ pub struct Rule {
 
 impl std::fmt::Debug for Rule {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        f.debug_struct("Rule").field("id", &self.id).field("default_level", &self.default_level).finish()
+        f.debug_struct("Rule")
+            .field("id", &self.id)
+            .field("default_level", &self.default_level)
+            .finish()
     }
 }
 
@@ -103,7 +110,15 @@ impl<'a> Cx<'a> {
         for (_, f) in module.functions.iter() {
             collect_written(f, &f.body, &mut written);
         }
-        Some(Cx { file: &shader.file, module, info, sound, typical, prec: Precisions::of(&shader.module), written })
+        Some(Cx {
+            file: &shader.file,
+            module,
+            info,
+            sound,
+            typical,
+            prec: Precisions::of(&shader.module),
+            written,
+        })
     }
 
     /// The user's functions (not the entry-point wrapper): (index, function).
@@ -114,7 +129,10 @@ impl<'a> Cx<'a> {
 
     /// The scalar kind of an expression of function `id`.
     pub fn kind(&self, id: usize, h: Handle<E>) -> Option<naga::ScalarKind> {
-        analysis::function_info(self.module, self.info, id)[h].ty.inner_with(&self.module.types).scalar_kind()
+        analysis::function_info(self.module, self.info, id)[h]
+            .ty
+            .inner_with(&self.module.types)
+            .scalar_kind()
     }
 
     /// The source span of an expression.
@@ -159,13 +177,26 @@ impl<'a> Cx<'a> {
             match &f.expressions[x] {
                 E::CallResult(_) => return false,
                 E::Binary { left, right, .. } => stack.extend([*left, *right]),
-                E::Unary { expr, .. } | E::As { expr, .. } | E::Splat { value: expr, .. } | E::Swizzle { vector: expr, .. } => stack.push(*expr),
+                E::Unary { expr, .. }
+                | E::As { expr, .. }
+                | E::Splat { value: expr, .. }
+                | E::Swizzle { vector: expr, .. } => stack.push(*expr),
                 E::AccessIndex { base, .. } => stack.push(*base),
                 E::Access { base, index } => stack.extend([*base, *index]),
                 E::Load { pointer } => stack.push(*pointer),
-                E::Math { arg, arg1, arg2, arg3, .. } => stack.extend([Some(*arg), *arg1, *arg2, *arg3].into_iter().flatten()),
+                E::Math {
+                    arg,
+                    arg1,
+                    arg2,
+                    arg3,
+                    ..
+                } => stack.extend([Some(*arg), *arg1, *arg2, *arg3].into_iter().flatten()),
                 E::Compose { components, .. } => stack.extend(components.iter().copied()),
-                E::Select { condition, accept, reject } => stack.extend([*condition, *accept, *reject]),
+                E::Select {
+                    condition,
+                    accept,
+                    reject,
+                } => stack.extend([*condition, *accept, *reject]),
                 _ => {}
             }
         }
@@ -176,7 +207,10 @@ impl<'a> Cx<'a> {
     pub fn what(&self, f: &Function, id: usize, h: Handle<E>) -> String {
         let named = match f.expressions[h] {
             E::Load { pointer } => match f.expressions[pointer] {
-                E::LocalVariable(l) => f.local_variables[l].name.clone().filter(|n| !n.starts_with("_essl")),
+                E::LocalVariable(l) => f.local_variables[l]
+                    .name
+                    .clone()
+                    .filter(|n| !n.starts_with("_essl")),
                 _ => None,
             },
             _ => None,
@@ -185,7 +219,10 @@ impl<'a> Cx<'a> {
         let kind = match f.expressions[r] {
             E::Math { fun: Mf::Dot, .. } => Some("a dot product"),
             E::Math { fun: Mf::Cross, .. } => Some("a cross product"),
-            E::Binary { op: naga::BinaryOperator::Subtract, .. } => Some("a difference"),
+            E::Binary {
+                op: naga::BinaryOperator::Subtract,
+                ..
+            } => Some("a difference"),
             _ => None,
         };
         match (named, kind) {
@@ -231,7 +268,9 @@ fn collect_written(f: &Function, b: &naga::Block, out: &mut HashSet<usize>) {
                     collect_written(f, &c.body, out);
                 }
             }
-            naga::Statement::Loop { body, continuing, .. } => {
+            naga::Statement::Loop {
+                body, continuing, ..
+            } => {
                 collect_written(f, body, out);
                 collect_written(f, continuing, out);
             }
@@ -244,7 +283,11 @@ fn collect_written(f: &Function, b: &naga::Block, out: &mut HashSet<usize>) {
 /// show), no trailing zeros, `∞`.
 pub fn fmt_num(x: f64) -> String {
     if x.is_infinite() {
-        return if x > 0.0 { "+∞".into() } else { "-∞".into() };
+        return if x > 0.0 {
+            "+∞".into()
+        } else {
+            "-∞".into()
+        };
     }
     if x == 0.0 {
         return "0".into();
@@ -266,4 +309,351 @@ pub fn describe(i: Interval) -> String {
         return "nothing".into();
     }
     format!("[{}, {}]", fmt_num(i.lo), fmt_num(i.hi))
+}
+
+/// Who reads an expression's value.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum User {
+    /// An expression.
+    Expr(Handle<E>),
+    /// A statement.
+    Stmt,
+}
+
+/// The expressions an expression reads.
+pub fn operands(e: &E) -> Vec<Handle<E>> {
+    match e {
+        E::Compose { components, .. } => components.clone(),
+        E::Access { base, index } => vec![*base, *index],
+        E::AccessIndex { base, .. } => vec![*base],
+        E::Splat { value, .. } => vec![*value],
+        E::Swizzle { vector, .. } => vec![*vector],
+        E::Load { pointer } => vec![*pointer],
+        E::Unary { expr, .. } | E::Derivative { expr, .. } | E::As { expr, .. } => vec![*expr],
+        E::Binary { left, right, .. } => vec![*left, *right],
+        E::Select {
+            condition,
+            accept,
+            reject,
+        } => vec![*condition, *accept, *reject],
+        E::Relational { argument, .. } => vec![*argument],
+        E::Math {
+            arg,
+            arg1,
+            arg2,
+            arg3,
+            ..
+        } => [Some(*arg), *arg1, *arg2, *arg3]
+            .into_iter()
+            .flatten()
+            .collect(),
+        E::ImageSample {
+            coordinate,
+            depth_ref,
+            ..
+        } => [Some(*coordinate), *depth_ref]
+            .into_iter()
+            .flatten()
+            .collect(),
+        E::ImageLoad { coordinate, .. } => vec![*coordinate],
+        _ => Vec::new(),
+    }
+}
+
+/// Who reads each expression of a function.
+pub fn users(f: &Function) -> HashMap<Handle<E>, Vec<User>> {
+    let mut map: HashMap<Handle<E>, Vec<User>> = HashMap::new();
+    for (h, e) in f.expressions.iter() {
+        for o in operands(e) {
+            map.entry(o).or_default().push(User::Expr(h));
+        }
+    }
+    fn walk(b: &Block, map: &mut HashMap<Handle<E>, Vec<User>>) {
+        for s in b.iter() {
+            let mut read = |h: &Handle<E>| map.entry(*h).or_default().push(User::Stmt);
+            match s {
+                Statement::Store { value, .. } => read(value),
+                Statement::Return { value: Some(v) } => read(v),
+                Statement::Call { arguments, .. } => arguments.iter().for_each(read),
+                Statement::If {
+                    condition,
+                    accept,
+                    reject,
+                } => {
+                    read(condition);
+                    walk(accept, map);
+                    walk(reject, map);
+                }
+                Statement::Switch { selector, cases } => {
+                    read(selector);
+                    for c in cases {
+                        walk(&c.body, map);
+                    }
+                }
+                Statement::Loop {
+                    body,
+                    continuing,
+                    break_if,
+                } => {
+                    if let Some(b) = break_if {
+                        read(b);
+                    }
+                    walk(body, map);
+                    walk(continuing, map);
+                }
+                Statement::Block(b) => walk(b, map),
+                _ => {}
+            }
+        }
+    }
+    walk(&f.body, &mut map);
+    map
+}
+
+/// What the conditions under which an expression runs say: the `if`s around it, the branches
+/// of `c ? a : b` it alone feeds, and the `if (…) return;` before it.
+#[derive(Debug, Default)]
+pub struct Guards {
+    /// Bounds on compared expressions (`x > 0.0`, `dot(v, v) > 1e-12`).
+    pub facts: Vec<(Handle<E>, Refinement)>,
+    /// `a OP b` between two expressions, normalised to hold (`Less`, `Greater`, `NotEqual`, …).
+    pub relations: Vec<(Bo, Handle<E>, Handle<E>)>,
+    /// Expressions known not to be 0 (`x != 0.0`, `abs(x) > c`).
+    pub nonzero: Vec<Handle<E>>,
+}
+
+/// The `if` conditions (with the branch taken) around each emitted expression, and after
+/// `if (c) { …; return; }` the negation for the rest of the block.
+fn enclosing(f: &Function) -> HashMap<Handle<E>, Vec<(Handle<E>, bool)>> {
+    fn diverges(b: &Block) -> bool {
+        match b.last() {
+            Some(
+                Statement::Break | Statement::Continue | Statement::Return { .. } | Statement::Kill,
+            ) => true,
+            Some(Statement::Block(inner)) => diverges(inner),
+            Some(Statement::If { accept, reject, .. }) => diverges(accept) && diverges(reject),
+            _ => false,
+        }
+    }
+    fn walk(
+        b: &Block,
+        stack: &mut Vec<(Handle<E>, bool)>,
+        out: &mut HashMap<Handle<E>, Vec<(Handle<E>, bool)>>,
+    ) {
+        let depth = stack.len();
+        for s in b.iter() {
+            match s {
+                Statement::Emit(r) => {
+                    for h in r.clone() {
+                        out.insert(h, stack.clone());
+                    }
+                }
+                Statement::Block(b) => walk(b, stack, out),
+                Statement::If {
+                    condition,
+                    accept,
+                    reject,
+                } => {
+                    stack.push((*condition, true));
+                    walk(accept, stack, out);
+                    stack.pop();
+                    stack.push((*condition, false));
+                    walk(reject, stack, out);
+                    stack.pop();
+                    let (ad, rd) = (diverges(accept), diverges(reject));
+                    if ad != rd {
+                        stack.push((*condition, rd));
+                    }
+                }
+                Statement::Switch { cases, .. } => {
+                    for c in cases {
+                        walk(&c.body, stack, out);
+                    }
+                }
+                Statement::Loop {
+                    body, continuing, ..
+                } => {
+                    walk(body, stack, out);
+                    walk(continuing, stack, out);
+                }
+                _ => {}
+            }
+        }
+        stack.truncate(depth);
+    }
+    let mut out = HashMap::new();
+    walk(&f.body, &mut Vec::new(), &mut out);
+    out
+}
+
+impl Cx<'_> {
+    /// The conditions under which `h` is evaluated for its use.
+    pub fn guards(&self, f: &Function, id: usize, h: Handle<E>) -> Guards {
+        let mut conds: Vec<(Handle<E>, bool)> = Vec::new();
+        // `c ? …h… : …`: the branch `h` alone feeds (through pure expressions).
+        let us = users(f);
+        let mut cur = h;
+        for _ in 0..32 {
+            let Some([User::Expr(u)]) = us.get(&cur).map(|v| v.as_slice()) else {
+                break;
+            };
+            let u = *u;
+            if let E::Select {
+                condition,
+                accept,
+                reject,
+            } = f.expressions[u]
+            {
+                if accept == cur && reject != cur {
+                    conds.push((condition, true));
+                } else if reject == cur && accept != cur {
+                    conds.push((condition, false));
+                } else {
+                    break;
+                }
+            }
+            cur = u;
+        }
+        // The `if`s around the statement that evaluates `h` (or what uses it).
+        let enc = enclosing(f);
+        if let Some(c) = enc.get(&h).or_else(|| enc.get(&cur)) {
+            conds.extend(c.iter().copied());
+        }
+        let mut g = Guards::default();
+        for (c, pol) in conds {
+            g.facts.extend(self.sound.conditions(f, id, c, pol));
+            self.relations(f, id, c, pol, &mut g, 0);
+        }
+        g
+    }
+
+    fn relations(
+        &self,
+        f: &Function,
+        id: usize,
+        c: Handle<E>,
+        pol: bool,
+        g: &mut Guards,
+        depth: u32,
+    ) {
+        if depth > 8 {
+            return;
+        }
+        match f.expressions[c] {
+            E::Unary {
+                op: Uo::LogicalNot,
+                expr,
+            } => self.relations(f, id, expr, !pol, g, depth + 1),
+            E::Binary {
+                op: Bo::LogicalAnd,
+                left,
+                right,
+            } if pol => {
+                self.relations(f, id, left, true, g, depth + 1);
+                self.relations(f, id, right, true, g, depth + 1);
+            }
+            E::Binary {
+                op: Bo::LogicalOr,
+                left,
+                right,
+            } if !pol => {
+                self.relations(f, id, left, false, g, depth + 1);
+                self.relations(f, id, right, false, g, depth + 1);
+            }
+            E::Binary { op, left, right } => {
+                let op = if pol {
+                    op
+                } else {
+                    match op {
+                        Bo::Less => Bo::GreaterEqual,
+                        Bo::LessEqual => Bo::Greater,
+                        Bo::Greater => Bo::LessEqual,
+                        Bo::GreaterEqual => Bo::Less,
+                        Bo::Equal => Bo::NotEqual,
+                        Bo::NotEqual => Bo::Equal,
+                        other => other,
+                    }
+                };
+                if !matches!(
+                    op,
+                    Bo::Less
+                        | Bo::LessEqual
+                        | Bo::Greater
+                        | Bo::GreaterEqual
+                        | Bo::Equal
+                        | Bo::NotEqual
+                ) {
+                    return;
+                }
+                g.relations.push((op, left, right));
+                // `x != 0.0`, `abs(x) > c ≥ 0`, `x > c ≥ 0`, `x < c ≤ 0`: x is not 0.
+                for (x, b, x_left) in [(left, right, true), (right, left, false)] {
+                    let Some(bound) = self.sound.num(id, b).filter(|n| n.n == 1).map(|n| n.c[0])
+                    else {
+                        continue;
+                    };
+                    let Some(rel) = relation(op, true, x_left, bound) else {
+                        if op == Bo::NotEqual && bound.as_point() == Some(0.0) {
+                            g.nonzero.push(x);
+                        }
+                        continue;
+                    };
+                    if !rel.contains(0.0) {
+                        g.nonzero.push(x);
+                        if let E::Math {
+                            fun: Mf::Abs, arg, ..
+                        } = f.expressions[x]
+                        {
+                            g.nonzero.push(arg);
+                        }
+                    }
+                }
+            }
+            _ => {}
+        }
+    }
+
+    /// `x`'s value under the guards (`None`: no value, or the guarded code cannot run).
+    pub fn refined(&self, f: &Function, id: usize, x: Handle<E>, g: &Guards) -> Option<Num> {
+        let n = *self.sound.num(id, x)?;
+        let rs: Vec<Refinement> = g
+            .facts
+            .iter()
+            .filter(|(s, _)| self.sound.same(f, id, *s, x))
+            .map(|(_, r)| *r)
+            .collect();
+        let r = refine_num(n, &rs);
+        (!r.is_bottom()).then_some(r)
+    }
+
+    /// Whether the guards say `a < b`.
+    pub fn ordered(&self, f: &Function, id: usize, a: Handle<E>, b: Handle<E>, g: &Guards) -> bool {
+        let same = |x: Handle<E>, y: Handle<E>| self.sound.same(f, id, x, y);
+        g.relations.iter().any(|&(op, l, r)| match op {
+            Bo::Less => same(l, a) && same(r, b),
+            Bo::Greater => same(l, b) && same(r, a),
+            _ => false,
+        })
+    }
+
+    /// Whether the guards say `x != 0`, or `a != b` for `x = a - b`.
+    pub fn nonzero(&self, f: &Function, id: usize, x: Handle<E>, g: &Guards) -> bool {
+        let same = |p: Handle<E>, q: Handle<E>| self.sound.same(f, id, p, q);
+        if g.nonzero.iter().any(|&y| same(y, x)) {
+            return true;
+        }
+        let r = symbolic::resolve(f, &self.sound, id, x);
+        let E::Binary {
+            op: Bo::Subtract,
+            left,
+            right,
+        } = f.expressions[r]
+        else {
+            return false;
+        };
+        g.relations.iter().any(|&(op, l, rr)| {
+            matches!(op, Bo::Less | Bo::Greater | Bo::NotEqual)
+                && ((same(l, left) && same(rr, right)) || (same(l, right) && same(rr, left)))
+        })
+    }
 }

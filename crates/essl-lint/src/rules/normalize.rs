@@ -62,13 +62,29 @@ There is no mechanical fix: the degenerate case needs a choice (a fallback axis,
 fn check(cx: &Cx, out: &mut Vec<Diagnostic>) {
     for (id, f) in cx.functions() {
         for (h, e) in f.expressions.iter() {
-            let E::Math { fun: Mf::Normalize, arg, .. } = *e else { continue };
+            let E::Math {
+                fun: Mf::Normalize,
+                arg,
+                ..
+            } = *e
+            else {
+                continue;
+            };
             if cx.span(f, h).is_empty() {
                 continue;
             }
             let x = cx.operand(f, h, arg);
-            let Some(v) = cx.sound.num(id, x) else { continue };
+            let Some(v) = cx.sound.num(id, x) else {
+                continue;
+            };
             if v.n < 2 || !v.may_be_zero() || v.facts.has(Facts::NZ) {
+                continue;
+            }
+            // `dot(v, v) > 1e-12 ? normalize(v) : fallback`, `if (length(v) > 0.0)`.
+            let Some(v) = cx.refined(f, id, x, &cx.guards(f, id, h)) else {
+                continue;
+            };
+            if !v.may_be_zero() || v.facts.has(Facts::NZ) {
                 continue;
             }
             let cross = v.facts.any(Facts::CROSS);
@@ -89,10 +105,16 @@ fn check(cx: &Cx, out: &mut Vec<Diagnostic>) {
                 format!("{what} is the zero vector")
             };
             out.push(
-                Diagnostic::warning(ZERO.id, "`normalize` of a vector that can be zero, which gives NaN", span)
-                    .with_label(label)
-                    .with_note("normalize(v) divides by length(v): 0 / 0 for the zero vector")
-                    .with_help("test the length first (`dot(v, v) > 1e-12`) and choose a fallback direction"),
+                Diagnostic::warning(
+                    ZERO.id,
+                    "`normalize` of a vector that can be zero, which gives NaN",
+                    span,
+                )
+                .with_label(label)
+                .with_note("normalize(v) divides by length(v): 0 / 0 for the zero vector")
+                .with_help(
+                    "test the length first (`dot(v, v) > 1e-12`) and choose a fallback direction",
+                ),
             );
         }
     }
@@ -103,7 +125,15 @@ fn check(cx: &Cx, out: &mut Vec<Diagnostic>) {
 /// zero (`up = normalize(cross(right, forward)); right = normalize(cross(up, forward))`).
 fn orthogonal_cross(cx: &Cx, f: &Function, id: usize, h: Handle<E>) -> bool {
     let r = resolve(f, &cx.sound, id, h);
-    let E::Math { fun: Mf::Cross, arg: a, arg1: Some(b), .. } = f.expressions[r] else { return false };
+    let E::Math {
+        fun: Mf::Cross,
+        arg: a,
+        arg1: Some(b),
+        ..
+    } = f.expressions[r]
+    else {
+        return false;
+    };
     let nz = |x: Handle<E>| cx.sound.num(id, x).is_some_and(|n| n.facts.has(Facts::NZ));
     if !nz(a) || !nz(b) {
         return false;
@@ -111,11 +141,21 @@ fn orthogonal_cross(cx: &Cx, f: &Function, id: usize, h: Handle<E>) -> bool {
     let perpendicular = |x: Handle<E>, y: Handle<E>| {
         values(cx, f, id, x).iter().all(|v| {
             let mut v = resolve(f, &cx.sound, id, *v);
-            if let E::Math { fun: Mf::Normalize, arg, .. } = f.expressions[v] {
+            if let E::Math {
+                fun: Mf::Normalize,
+                arg,
+                ..
+            } = f.expressions[v]
+            {
                 v = resolve(f, &cx.sound, id, arg);
             }
             match f.expressions[v] {
-                E::Math { fun: Mf::Cross, arg: p, arg1: Some(q), .. } => cx.sound.same(f, id, p, y) || cx.sound.same(f, id, q, y),
+                E::Math {
+                    fun: Mf::Cross,
+                    arg: p,
+                    arg1: Some(q),
+                    ..
+                } => cx.sound.same(f, id, p, y) || cx.sound.same(f, id, q, y),
                 _ => false,
             }
         })
@@ -127,7 +167,11 @@ fn orthogonal_cross(cx: &Cx, f: &Function, id: usize, h: Handle<E>) -> bool {
 fn values(cx: &Cx, f: &Function, id: usize, h: Handle<E>) -> Vec<Handle<E>> {
     if let E::Load { pointer } = f.expressions[h] {
         if let E::LocalVariable(l) = f.expressions[pointer] {
-            if let Some(vs) = cx.sound.functions[id].stores.get(&l.index()).filter(|vs| !vs.is_empty()) {
+            if let Some(vs) = cx.sound.functions[id]
+                .stores
+                .get(&l.index())
+                .filter(|vs| !vs.is_empty())
+            {
                 return vs.clone();
             }
         }

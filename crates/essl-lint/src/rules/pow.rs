@@ -87,13 +87,30 @@ normal number (6.1e-5), so the guard survives in `mediump` too.
 fn check_negative(cx: &Cx, out: &mut Vec<Diagnostic>) {
     for (id, f) in cx.functions() {
         for (h, e) in f.expressions.iter() {
-            let E::Math { fun: Mf::Pow, arg, arg1: Some(_), .. } = *e else { continue };
+            let E::Math {
+                fun: Mf::Pow,
+                arg,
+                arg1: Some(_),
+                ..
+            } = *e
+            else {
+                continue;
+            };
             let span = cx.span(f, h);
             if span.is_empty() {
                 continue;
             }
             let base = cx.operand(f, h, arg);
-            let Some(b) = cx.sound.num(id, base) else { continue };
+            let Some(b) = cx.sound.num(id, base) else {
+                continue;
+            };
+            if b.hull().lo >= 0.0 || b.facts.has(Facts::NN) {
+                continue;
+            }
+            // Under the conditions the call runs in (`if (d > 0.0)`, `d > 0.0 ? pow(d, k) : 0.0`).
+            let Some(b) = cx.refined(f, id, base, &cx.guards(f, id, h)) else {
+                continue;
+            };
             let bi = b.hull();
             if bi.lo >= 0.0 || b.facts.has(Facts::NN) {
                 continue;
@@ -105,12 +122,20 @@ fn check_negative(cx: &Cx, out: &mut Vec<Diagnostic>) {
             } else {
                 format!("{what} can be negative")
             };
-            let mut d = Diagnostic::warning(NEGATIVE.id, "`pow` base can be negative, where `pow` is undefined (NaN)", bspan)
-                .with_label(label)
-                .with_note("GLSL ES 3.00 §8.2: pow(x, y) is undefined if x < 0")
-                .with_help("clamp the base to 0");
+            let mut d = Diagnostic::warning(
+                NEGATIVE.id,
+                "`pow` base can be negative, where `pow` is undefined (NaN)",
+                bspan,
+            )
+            .with_label(label)
+            .with_note("GLSL ES 3.00 §8.2: pow(x, y) is undefined if x < 0")
+            .with_help("clamp the base to 0");
             if !bspan.is_empty() {
-                d = d.with_fix(Fix::suggested("wrap the base in `max(…, 0.0)`", bspan, format!("max({}, 0.0)", cx.text(bspan))));
+                d = d.with_fix(Fix::suggested(
+                    "wrap the base in `max(…, 0.0)`",
+                    bspan,
+                    format!("max({}, 0.0)", cx.text(bspan)),
+                ));
             }
             out.push(d);
         }
@@ -120,14 +145,24 @@ fn check_negative(cx: &Cx, out: &mut Vec<Diagnostic>) {
 fn check_zero(cx: &Cx, out: &mut Vec<Diagnostic>) {
     for (id, f) in cx.functions() {
         for (h, e) in f.expressions.iter() {
-            let E::Math { fun: Mf::Pow, arg, arg1: Some(y), .. } = *e else { continue };
+            let E::Math {
+                fun: Mf::Pow,
+                arg,
+                arg1: Some(y),
+                ..
+            } = *e
+            else {
+                continue;
+            };
             let span = cx.span(f, h);
             if span.is_empty() {
                 continue;
             }
             let base = cx.operand(f, h, arg);
             let exp = cx.operand(f, h, y);
-            let (Some(b), Some(x)) = (cx.sound.num(id, base), cx.sound.num(id, exp)) else { continue };
+            let (Some(b), Some(x)) = (cx.sound.num(id, base), cx.sound.num(id, exp)) else {
+                continue;
+            };
             let (bi, xi) = (b.hull(), x.hull());
             if bi.lo < 0.0 && !b.facts.has(Facts::NN) {
                 continue; // pow-negative-base says it
@@ -137,17 +172,37 @@ fn check_zero(cx: &Cx, out: &mut Vec<Diagnostic>) {
             if !base_zero || !exp_nonpositive {
                 continue;
             }
+            let g = cx.guards(f, id, h);
+            let (Some(b), Some(x)) = (cx.refined(f, id, base, &g), cx.refined(f, id, exp, &g))
+            else {
+                continue;
+            };
+            let (bi, xi) = (b.hull(), x.hull());
+            let base_zero =
+                bi.contains(0.0) && !b.facts.has(Facts::POS) && !cx.nonzero(f, id, base, &g);
+            let exp_nonpositive = xi.lo <= 0.0 && !x.facts.has(Facts::POS);
+            if !base_zero || !exp_nonpositive {
+                continue;
+            }
             let bspan = cx.span(f, base);
             let xspan = cx.span(f, exp);
-            let mut d = Diagnostic::warning(ZERO.id, "`pow` base can be 0 while the exponent can be ≤ 0, where `pow` is undefined", bspan)
-                .with_label(format!("{} can be 0", cx.what(f, id, base)))
-                .with_note("GLSL ES 3.00 §8.2: pow(x, y) is undefined if x = 0 and y <= 0")
-                .with_help("keep the base above 0");
+            let mut d = Diagnostic::warning(
+                ZERO.id,
+                "`pow` base can be 0 while the exponent can be ≤ 0, where `pow` is undefined",
+                bspan,
+            )
+            .with_label(format!("{} can be 0", cx.what(f, id, base)))
+            .with_note("GLSL ES 3.00 §8.2: pow(x, y) is undefined if x = 0 and y <= 0")
+            .with_help("keep the base above 0");
             if !xspan.is_empty() {
                 d = d.with_secondary(xspan, format!("the exponent can be ≤ 0: {}", describe(xi)));
             }
             if !bspan.is_empty() {
-                d = d.with_fix(Fix::suggested("wrap the base in `max(…, 1e-4)`", bspan, format!("max({}, 1e-4)", cx.text(bspan))));
+                d = d.with_fix(Fix::suggested(
+                    "wrap the base in `max(…, 1e-4)`",
+                    bspan,
+                    format!("max({}, 1e-4)", cx.text(bspan)),
+                ));
             }
             out.push(d);
         }

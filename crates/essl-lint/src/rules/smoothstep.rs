@@ -54,39 +54,91 @@ fn check(cx: &Cx, out: &mut Vec<Diagnostic>) {
     for (id, f) in cx.functions() {
         let sym = cx.sym(id, f);
         for (h, e) in f.expressions.iter() {
-            let E::Math { fun: Mf::SmoothStep, arg, arg1: Some(a1), arg2: Some(a2), .. } = *e else { continue };
+            let E::Math {
+                fun: Mf::SmoothStep,
+                arg,
+                arg1: Some(a1),
+                arg2: Some(a2),
+                ..
+            } = *e
+            else {
+                continue;
+            };
             let span = cx.span(f, h);
             if span.is_empty() {
                 continue;
             }
-            let (e0, e1, x) = (cx.operand(f, h, arg), cx.operand(f, h, a1), cx.operand(f, h, a2));
-            let (Some(v0), Some(v1)) = (cx.sound.num(id, e0), cx.sound.num(id, e1)) else { continue };
+            let (e0, e1, x) = (
+                cx.operand(f, h, arg),
+                cx.operand(f, h, a1),
+                cx.operand(f, h, a2),
+            );
+            let (Some(v0), Some(v1)) = (cx.sound.num(id, e0), cx.sound.num(id, e1)) else {
+                continue;
+            };
             let (s0, s1, sx) = (cx.span(f, e0), cx.span(f, e1), cx.span(f, x));
             let constant = |v: &crate::value::Num| v.comps().iter().all(|c| c.as_point().is_some());
             if constant(v0) && constant(v1) {
-                let pairs: Vec<(f64, f64)> = (0..v0.n.max(v1.n) as usize).map(|i| (v0.c[i.min(v0.n as usize - 1)].lo, v1.c[i.min(v1.n as usize - 1)].lo)).collect();
+                let pairs: Vec<(f64, f64)> = (0..v0.n.max(v1.n) as usize)
+                    .map(|i| {
+                        (
+                            v0.c[i.min(v0.n as usize - 1)].lo,
+                            v1.c[i.min(v1.n as usize - 1)].lo,
+                        )
+                    })
+                    .collect();
                 if pairs.iter().all(|(a, b)| a < b) {
                     continue;
                 }
                 let equal = pairs.iter().any(|(a, b)| a == b);
-                let msg = if equal { "`smoothstep` edges are equal, where `smoothstep` is undefined" } else { "`smoothstep` edges are swapped (edge0 > edge1), where `smoothstep` is undefined" };
+                let msg = if equal {
+                    "`smoothstep` edges are equal, where `smoothstep` is undefined"
+                } else {
+                    "`smoothstep` edges are swapped (edge0 > edge1), where `smoothstep` is undefined"
+                };
                 let mut d = Diagnostic::warning(EDGES.id, msg, span)
-                    .with_label(if pairs.len() == 1 { format!("edge0 = {}, edge1 = {}", fmt_num(pairs[0].0), fmt_num(pairs[0].1)) } else { "edge0 >= edge1 in some component".to_string() })
+                    .with_label(if pairs.len() == 1 {
+                        format!(
+                            "edge0 = {}, edge1 = {}",
+                            fmt_num(pairs[0].0),
+                            fmt_num(pairs[0].1)
+                        )
+                    } else {
+                        "edge0 >= edge1 in some component".to_string()
+                    })
                     .with_note("GLSL ES 3.00 §8.3: smoothstep is undefined if edge0 >= edge1");
                 if equal {
-                    d = d.with_help("use `step(edge, x)` for a hard edge, or give the edges a width");
+                    d = d.with_help(
+                        "use `step(edge, x)` for a hard edge, or give the edges a width",
+                    );
                 } else {
                     d = d.with_help("mirror the call: `1.0 - smoothstep(edge1, edge0, x)`");
-                    if pairs.iter().all(|(a, b)| a > b) && !s0.is_empty() && !s1.is_empty() && !sx.is_empty() {
-                        let fixed = format!("(1.0 - smoothstep({}, {}, {}))", cx.text(s1), cx.text(s0), cx.text(sx));
-                        d = d.with_fix(Fix::suggested("mirror the call with the edges in order", span, fixed));
+                    if pairs.iter().all(|(a, b)| a > b)
+                        && !s0.is_empty()
+                        && !s1.is_empty()
+                        && !sx.is_empty()
+                    {
+                        let fixed = format!(
+                            "(1.0 - smoothstep({}, {}, {}))",
+                            cx.text(s1),
+                            cx.text(s0),
+                            cx.text(sx)
+                        );
+                        d = d.with_fix(Fix::suggested(
+                            "mirror the call with the edges in order",
+                            span,
+                            fixed,
+                        ));
                     }
                 }
                 out.push(d);
                 continue;
             }
             let uniform = v0.facts.any(Facts::UNIFORM) || v1.facts.any(Facts::UNIFORM);
-            if !uniform || sym.diff_lower(Some(e1), Some(e0)) > 0.0 {
+            if !uniform
+                || sym.diff_lower(Some(e1), Some(e0)) > 0.0
+                || cx.ordered(f, id, e0, e1, &cx.guards(f, id, h))
+            {
                 continue;
             }
             let low = cx.prec.is_low(span) || cx.prec.is_low(s0) || cx.prec.is_low(s1);
@@ -103,7 +155,11 @@ fn check(cx: &Cx, out: &mut Vec<Diagnostic>) {
             }
             if !s0.is_empty() && !s1.is_empty() && cx.pure(f, e0) {
                 let fixed = format!("max({}, {} + {eps})", cx.text(s1), cx.text(s0));
-                d = d.with_fix(Fix::suggested(format!("keep edge1 at least {eps} above edge0"), s1, fixed));
+                d = d.with_fix(Fix::suggested(
+                    format!("keep edge1 at least {eps} above edge0"),
+                    s1,
+                    fixed,
+                ));
             }
             out.push(d);
         }
