@@ -49,7 +49,9 @@ float specular = pow(dot(normal, halfVector), u_shininess);
 float specular = pow(max(dot(normal, halfVector), 0.0), u_shininess);
 ```
 The fix (`max(…, 0.0)`) is suggested, not applied by `--fix`: it changes the value where the
-base was negative (from NaN to 0, which is what the lighting model means).
+base was negative (from NaN to 0, which is what the lighting model means). For a constant
+integer exponent the suggestion keeps the power's meaning instead: `pow(abs(x), 2.0)` for an
+even power, `sign(x) * pow(abs(x), 3.0)` for an odd one (or write the product, `x * x`).
 
 ## References
 - GLSL ES 3.00 specification, §8.2 Exponential Functions: "Results are undefined if x < 0."
@@ -90,7 +92,7 @@ fn check_negative(cx: &Cx, out: &mut Vec<Diagnostic>) {
             let E::Math {
                 fun: Mf::Pow,
                 arg,
-                arg1: Some(_),
+                arg1: Some(y),
                 ..
             } = *e
             else {
@@ -101,6 +103,7 @@ fn check_negative(cx: &Cx, out: &mut Vec<Diagnostic>) {
                 continue;
             }
             let base = cx.operand(f, h, arg);
+            let exp = cx.operand(f, h, y);
             let Some(b) = cx.sound.num(id, base) else {
                 continue;
             };
@@ -122,22 +125,14 @@ fn check_negative(cx: &Cx, out: &mut Vec<Diagnostic>) {
             } else {
                 format!("{what} can be negative")
             };
-            let mut d = Diagnostic::warning(
+            let d = Diagnostic::warning(
                 NEGATIVE.id,
                 "`pow` base can be negative, where `pow` is undefined (NaN)",
                 bspan,
             )
             .with_label(label)
-            .with_note("GLSL ES 3.00 §8.2: pow(x, y) is undefined if x < 0")
-            .with_help("clamp the base to 0");
-            if !bspan.is_empty() {
-                d = d.with_fix(Fix::suggested(
-                    "wrap the base in `max(…, 0.0)`",
-                    bspan,
-                    format!("max({}, 0.0)", cx.text(bspan)),
-                ));
-            }
-            out.push(d);
+            .with_note("GLSL ES 3.00 §8.2: pow(x, y) is undefined if x < 0");
+            out.push(fix_negative(cx, f, id, span, base, exp, d));
         }
     }
 }
@@ -206,5 +201,48 @@ fn check_zero(cx: &Cx, out: &mut Vec<Diagnostic>) {
             }
             out.push(d);
         }
+    }
+}
+
+/// The fix for a base that can be negative, by exponent: an even integer power is the power of
+/// `abs(x)`; an odd one keeps the sign, `sign(x) * pow(abs(x), n)`; any other exponent means a
+/// base that should not go below 0, `max(x, 0.0)`.
+fn fix_negative(
+    cx: &Cx,
+    f: &naga::Function,
+    id: usize,
+    span: essl::source::Span,
+    base: naga::Handle<E>,
+    exp: naga::Handle<E>,
+    d: Diagnostic,
+) -> Diagnostic {
+    let bspan = cx.span(f, base);
+    if bspan.is_empty() {
+        return d.with_help("clamp the base to 0");
+    }
+    let b = cx.text(bspan);
+    let n = cx
+        .sound
+        .num(id, exp)
+        .and_then(|v| v.hull().as_point())
+        .filter(|n| n.fract() == 0.0 && n.abs() < 1e6);
+    match n {
+        Some(n) if n % 2.0 == 0.0 => d
+            .with_help(format!("an even power of a negative number is the power of its magnitude: `pow(abs(x), {})`", super::fmt_num(n)))
+            .with_fix(Fix::suggested("take the magnitude of the base", bspan, format!("abs({b})"))),
+        Some(n) => {
+            let espan = cx.span(f, exp);
+            let help = format!("an odd power keeps the sign: `sign(x) * pow(abs(x), {})`", super::fmt_num(n));
+            let d = d.with_help(help);
+            if cx.pure(f, base) && !espan.is_empty() {
+                let fixed = format!("(sign({b}) * pow(abs({b}), {}))", cx.text(espan));
+                d.with_fix(Fix::suggested("keep the sign outside the power", span, fixed))
+            } else {
+                d
+            }
+        }
+        None => d
+            .with_help("clamp the base to 0")
+            .with_fix(Fix::suggested("wrap the base in `max(…, 0.0)`", bspan, format!("max({b}, 0.0)"))),
     }
 }
