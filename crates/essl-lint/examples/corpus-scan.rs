@@ -1,6 +1,7 @@
 //! Runs the lints over the must-pass shaders of the shared corpora and prints every finding with
 //! its source line, then the counts per rule — the figures of `docs/lints/README.md`:
-//! `cargo run --release -p essl-lint --example corpus-scan [-- CORPORA_DIR]`.
+//! `cargo run --release -p essl-lint --example corpus-scan [-- CORPORA_DIR [--all]]`.
+//! `--all` takes every case (must-fail ones too, and glslang's), to check that nothing panics.
 
 use std::collections::{BTreeMap, HashSet};
 
@@ -12,6 +13,7 @@ fn main() {
     let dir = std::env::args()
         .nth(1)
         .unwrap_or_else(|| "../shared/corpora".to_string());
+    let all = std::env::args().any(|a| a == "--all");
     let mut shaders: Vec<(String, String, Stage, String)> = Vec::new(); // (corpus, case, stage, source)
     let read = |name: &str| -> Vec<Value> {
         let text = std::fs::read_to_string(format!("{dir}/{name}"))
@@ -22,7 +24,7 @@ fn main() {
             .collect()
     };
     for c in read("webgl_conformance_es300.jsonl") {
-        if c["outcome"] != "must_pass" {
+        if c["outcome"] != "must_pass" && !all {
             continue;
         }
         let case = format!("{}#{}", c["file"].as_str().unwrap_or(""), c["index"]);
@@ -36,7 +38,7 @@ fn main() {
         }
     }
     for c in read("deqp_gles3.jsonl") {
-        if !matches!(c["expect"].as_str(), Some("pass" | "build_successful")) {
+        if !matches!(c["expect"].as_str(), Some("pass" | "build_successful")) && !all {
             continue;
         }
         let case = c["name"].as_str().unwrap_or("").to_string();
@@ -50,7 +52,7 @@ fn main() {
         }
     }
     for c in read("webgl2fundamentals_shaders.jsonl") {
-        if c["templated"] == true || c["expect_compile"] == false {
+        if (c["templated"] == true || c["expect_compile"] == false) && !all {
             continue;
         }
         let stage = match c["stage"].as_str() {
@@ -64,6 +66,21 @@ fn main() {
             stage,
             c["source"].as_str().unwrap_or("").to_string(),
         ));
+    }
+    if all {
+        for c in read("glslang_es300.jsonl") {
+            let stage = if c["stage"] == "vertex" {
+                Stage::Vertex
+            } else {
+                Stage::Fragment
+            };
+            shaders.push((
+                "glslang".into(),
+                c["file"].as_str().unwrap_or("").to_string(),
+                stage,
+                c["source"].as_str().unwrap_or("").to_string(),
+            ));
+        }
     }
     let mut seen = HashSet::new();
     let mut per_rule: BTreeMap<&str, usize> = BTreeMap::new();
