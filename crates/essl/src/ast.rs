@@ -171,12 +171,16 @@ impl FullType {
 
     /// Whether `invariant` is given.
     pub fn invariant(&self) -> Option<Span> {
-        self.qualifiers.iter().find_map(|(q, s)| matches!(q, Qualifier::Invariant).then_some(*s))
+        self.qualifiers
+            .iter()
+            .find_map(|(q, s)| matches!(q, Qualifier::Invariant).then_some(*s))
     }
 
     /// Whether `centroid` is given.
     pub fn centroid(&self) -> Option<Span> {
-        self.qualifiers.iter().find_map(|(q, s)| matches!(q, Qualifier::Centroid).then_some(*s))
+        self.qualifiers
+            .iter()
+            .find_map(|(q, s)| matches!(q, Qualifier::Centroid).then_some(*s))
     }
 
     /// All `layout(...)` items.

@@ -1,5 +1,8 @@
 //! GLSL ES 3.00's built-in functions (chapter 8), variables and constants (chapter 7).
 
+// The overload table reads best with owned `t.clone()` arguments throughout.
+#![allow(clippy::cloned_ref_to_slice_refs)]
+
 use std::collections::HashMap;
 use std::sync::OnceLock;
 
@@ -98,7 +101,10 @@ impl BuiltinVar {
 
     /// Whether the shader may write it.
     pub fn writable(self) -> bool {
-        matches!(self, BuiltinVar::Position | BuiltinVar::PointSize | BuiltinVar::FragDepth)
+        matches!(
+            self,
+            BuiltinVar::Position | BuiltinVar::PointSize | BuiltinVar::FragDepth
+        )
     }
 }
 
@@ -244,11 +250,27 @@ struct Builder {
 
 impl Builder {
     fn add(&mut self, op: BuiltinFn, params: &[Type], ret: Type) {
-        self.add_full(op, params.iter().map(|t| (t.clone(), ParamMode::In)).collect(), ret, false);
+        self.add_full(
+            op,
+            params.iter().map(|t| (t.clone(), ParamMode::In)).collect(),
+            ret,
+            false,
+        );
     }
 
-    fn add_full(&mut self, op: BuiltinFn, params: Vec<(Type, ParamMode)>, ret: Type, fragment_only: bool) {
-        self.map.entry(op.name()).or_default().push(Signature { op, params, ret, fragment_only });
+    fn add_full(
+        &mut self,
+        op: BuiltinFn,
+        params: Vec<(Type, ParamMode)>,
+        ret: Type,
+        fragment_only: bool,
+    ) {
+        self.map.entry(op.name()).or_default().push(Signature {
+            op,
+            params,
+            ret,
+            fragment_only,
+        });
     }
 }
 
@@ -259,16 +281,44 @@ fn v(kind: ScalarKind, n: u8) -> Type {
 fn build() -> HashMap<&'static str, Vec<Signature>> {
     use BuiltinFn::*;
     use ScalarKind::*;
-    let mut b = Builder { map: HashMap::new() };
+    let mut b = Builder {
+        map: HashMap::new(),
+    };
     let f = Type::FLOAT;
     let i = Type::INT;
     let u = Type::UINT;
 
     // 8.1 Angle and trigonometry, 8.2 exponential: genType → genType.
     for op in [
-        Radians, Degrees, Sin, Cos, Tan, Asin, Acos, Sinh, Cosh, Tanh, Asinh, Acosh, Atanh, Exp,
-        Log, Exp2, Log2, Sqrt, InverseSqrt, Floor, Trunc, Round, RoundEven, Ceil, Fract,
-        Normalize, DFdx, DFdy, Fwidth,
+        Radians,
+        Degrees,
+        Sin,
+        Cos,
+        Tan,
+        Asin,
+        Acos,
+        Sinh,
+        Cosh,
+        Tanh,
+        Asinh,
+        Acosh,
+        Atanh,
+        Exp,
+        Log,
+        Exp2,
+        Log2,
+        Sqrt,
+        InverseSqrt,
+        Floor,
+        Trunc,
+        Round,
+        RoundEven,
+        Ceil,
+        Fract,
+        Normalize,
+        DFdx,
+        DFdy,
+        Fwidth,
     ] {
         for n in 1..=4 {
             let t = v(Float, n);
@@ -292,7 +342,12 @@ fn build() -> HashMap<&'static str, Vec<Signature>> {
         if n > 1 {
             b.add(Mod, &[t.clone(), t.clone()], t.clone());
         }
-        b.add_full(Modf, vec![(t.clone(), ParamMode::In), (t.clone(), ParamMode::Out)], t.clone(), false);
+        b.add_full(
+            Modf,
+            vec![(t.clone(), ParamMode::In), (t.clone(), ParamMode::Out)],
+            t.clone(),
+            false,
+        );
         for (ty, s) in [(&t, &f), (&it, &i), (&ut, &u)] {
             b.add(Min, &[ty.clone(), ty.clone()], ty.clone());
             b.add(Max, &[ty.clone(), ty.clone()], ty.clone());
@@ -332,7 +387,14 @@ fn build() -> HashMap<&'static str, Vec<Signature>> {
         // 8.6 Vector relational.
         if n > 1 {
             for ty in [&t, &it, &ut] {
-                for op in [LessThan, LessThanEqual, GreaterThan, GreaterThanEqual, Equal, NotEqual] {
+                for op in [
+                    LessThan,
+                    LessThanEqual,
+                    GreaterThan,
+                    GreaterThanEqual,
+                    Equal,
+                    NotEqual,
+                ] {
                     b.add(op, &[ty.clone(), ty.clone()], bt.clone());
                 }
             }
@@ -360,7 +422,14 @@ fn build() -> HashMap<&'static str, Vec<Signature>> {
             let m = Type::Matrix { cols, rows };
             b.add(MatrixCompMult, &[m.clone(), m.clone()], m.clone());
             b.add(OuterProduct, &[v(Float, rows), v(Float, cols)], m.clone());
-            b.add(Transpose, &[m.clone()], Type::Matrix { cols: rows, rows: cols });
+            b.add(
+                Transpose,
+                &[m.clone()],
+                Type::Matrix {
+                    cols: rows,
+                    rows: cols,
+                },
+            );
             if cols == rows {
                 b.add(Determinant, &[m.clone()], f.clone());
                 b.add(Inverse, &[m.clone()], m.clone());
@@ -372,85 +441,499 @@ fn build() -> HashMap<&'static str, Vec<Signature>> {
     let ivec = |n| v(Int, n);
     for kind in [Float, Int, Uint] {
         let gvec4 = v(kind, 4);
-        let s = |dim| Type::Sampler(SamplerType { dim, kind, shadow: false });
+        let s = |dim| {
+            Type::Sampler(SamplerType {
+                dim,
+                kind,
+                shadow: false,
+            })
+        };
         let s2 = s(SamplerDim::D2);
         let s3 = s(SamplerDim::D3);
         let sc = s(SamplerDim::Cube);
         let sa = s(SamplerDim::D2Array);
-        tex(&mut b, TextureSize, &[s2.clone(), i.clone()], ivec(2), false);
-        tex(&mut b, TextureSize, &[s3.clone(), i.clone()], ivec(3), false);
-        tex(&mut b, TextureSize, &[sc.clone(), i.clone()], ivec(2), false);
-        tex(&mut b, TextureSize, &[sa.clone(), i.clone()], ivec(3), false);
-        tex(&mut b, Texture, &[s2.clone(), v2.clone()], gvec4.clone(), true);
-        tex(&mut b, Texture, &[s3.clone(), v3.clone()], gvec4.clone(), true);
-        tex(&mut b, Texture, &[sc.clone(), v3.clone()], gvec4.clone(), true);
-        tex(&mut b, Texture, &[sa.clone(), v3.clone()], gvec4.clone(), true);
-        tex(&mut b, TextureProj, &[s2.clone(), v3.clone()], gvec4.clone(), true);
-        tex(&mut b, TextureProj, &[s2.clone(), v4.clone()], gvec4.clone(), true);
-        tex(&mut b, TextureProj, &[s3.clone(), v4.clone()], gvec4.clone(), true);
-        tex(&mut b, TextureLod, &[s2.clone(), v2.clone(), f.clone()], gvec4.clone(), false);
-        tex(&mut b, TextureLod, &[s3.clone(), v3.clone(), f.clone()], gvec4.clone(), false);
-        tex(&mut b, TextureLod, &[sc.clone(), v3.clone(), f.clone()], gvec4.clone(), false);
-        tex(&mut b, TextureLod, &[sa.clone(), v3.clone(), f.clone()], gvec4.clone(), false);
-        tex(&mut b, TextureOffset, &[s2.clone(), v2.clone(), ivec(2)], gvec4.clone(), true);
-        tex(&mut b, TextureOffset, &[s3.clone(), v3.clone(), ivec(3)], gvec4.clone(), true);
-        tex(&mut b, TextureOffset, &[sa.clone(), v3.clone(), ivec(2)], gvec4.clone(), true);
-        tex(&mut b, TexelFetch, &[s2.clone(), ivec(2), i.clone()], gvec4.clone(), false);
-        tex(&mut b, TexelFetch, &[s3.clone(), ivec(3), i.clone()], gvec4.clone(), false);
-        tex(&mut b, TexelFetch, &[sa.clone(), ivec(3), i.clone()], gvec4.clone(), false);
-        tex(&mut b, TexelFetchOffset, &[s2.clone(), ivec(2), i.clone(), ivec(2)], gvec4.clone(), false);
-        tex(&mut b, TexelFetchOffset, &[s3.clone(), ivec(3), i.clone(), ivec(3)], gvec4.clone(), false);
-        tex(&mut b, TexelFetchOffset, &[sa.clone(), ivec(3), i.clone(), ivec(2)], gvec4.clone(), false);
-        tex(&mut b, TextureProjOffset, &[s2.clone(), v3.clone(), ivec(2)], gvec4.clone(), true);
-        tex(&mut b, TextureProjOffset, &[s2.clone(), v4.clone(), ivec(2)], gvec4.clone(), true);
-        tex(&mut b, TextureProjOffset, &[s3.clone(), v4.clone(), ivec(3)], gvec4.clone(), true);
-        tex(&mut b, TextureLodOffset, &[s2.clone(), v2.clone(), f.clone(), ivec(2)], gvec4.clone(), false);
-        tex(&mut b, TextureLodOffset, &[s3.clone(), v3.clone(), f.clone(), ivec(3)], gvec4.clone(), false);
-        tex(&mut b, TextureLodOffset, &[sa.clone(), v3.clone(), f.clone(), ivec(2)], gvec4.clone(), false);
-        tex(&mut b, TextureProjLod, &[s2.clone(), v3.clone(), f.clone()], gvec4.clone(), false);
-        tex(&mut b, TextureProjLod, &[s2.clone(), v4.clone(), f.clone()], gvec4.clone(), false);
-        tex(&mut b, TextureProjLod, &[s3.clone(), v4.clone(), f.clone()], gvec4.clone(), false);
-        tex(&mut b, TextureProjLodOffset, &[s2.clone(), v3.clone(), f.clone(), ivec(2)], gvec4.clone(), false);
-        tex(&mut b, TextureProjLodOffset, &[s2.clone(), v4.clone(), f.clone(), ivec(2)], gvec4.clone(), false);
-        tex(&mut b, TextureProjLodOffset, &[s3.clone(), v4.clone(), f.clone(), ivec(3)], gvec4.clone(), false);
-        tex(&mut b, TextureGrad, &[s2.clone(), v2.clone(), v2.clone(), v2.clone()], gvec4.clone(), false);
-        tex(&mut b, TextureGrad, &[s3.clone(), v3.clone(), v3.clone(), v3.clone()], gvec4.clone(), false);
-        tex(&mut b, TextureGrad, &[sc.clone(), v3.clone(), v3.clone(), v3.clone()], gvec4.clone(), false);
-        tex(&mut b, TextureGrad, &[sa.clone(), v3.clone(), v2.clone(), v2.clone()], gvec4.clone(), false);
-        tex(&mut b, TextureGradOffset, &[s2.clone(), v2.clone(), v2.clone(), v2.clone(), ivec(2)], gvec4.clone(), false);
-        tex(&mut b, TextureGradOffset, &[s3.clone(), v3.clone(), v3.clone(), v3.clone(), ivec(3)], gvec4.clone(), false);
-        tex(&mut b, TextureGradOffset, &[sa.clone(), v3.clone(), v2.clone(), v2.clone(), ivec(2)], gvec4.clone(), false);
-        tex(&mut b, TextureProjGrad, &[s2.clone(), v3.clone(), v2.clone(), v2.clone()], gvec4.clone(), false);
-        tex(&mut b, TextureProjGrad, &[s2.clone(), v4.clone(), v2.clone(), v2.clone()], gvec4.clone(), false);
-        tex(&mut b, TextureProjGrad, &[s3.clone(), v4.clone(), v3.clone(), v3.clone()], gvec4.clone(), false);
-        tex(&mut b, TextureProjGradOffset, &[s2.clone(), v3.clone(), v2.clone(), v2.clone(), ivec(2)], gvec4.clone(), false);
-        tex(&mut b, TextureProjGradOffset, &[s2.clone(), v4.clone(), v2.clone(), v2.clone(), ivec(2)], gvec4.clone(), false);
-        tex(&mut b, TextureProjGradOffset, &[s3.clone(), v4.clone(), v3.clone(), v3.clone(), ivec(3)], gvec4.clone(), false);
+        tex(
+            &mut b,
+            TextureSize,
+            &[s2.clone(), i.clone()],
+            ivec(2),
+            false,
+        );
+        tex(
+            &mut b,
+            TextureSize,
+            &[s3.clone(), i.clone()],
+            ivec(3),
+            false,
+        );
+        tex(
+            &mut b,
+            TextureSize,
+            &[sc.clone(), i.clone()],
+            ivec(2),
+            false,
+        );
+        tex(
+            &mut b,
+            TextureSize,
+            &[sa.clone(), i.clone()],
+            ivec(3),
+            false,
+        );
+        tex(
+            &mut b,
+            Texture,
+            &[s2.clone(), v2.clone()],
+            gvec4.clone(),
+            true,
+        );
+        tex(
+            &mut b,
+            Texture,
+            &[s3.clone(), v3.clone()],
+            gvec4.clone(),
+            true,
+        );
+        tex(
+            &mut b,
+            Texture,
+            &[sc.clone(), v3.clone()],
+            gvec4.clone(),
+            true,
+        );
+        tex(
+            &mut b,
+            Texture,
+            &[sa.clone(), v3.clone()],
+            gvec4.clone(),
+            true,
+        );
+        tex(
+            &mut b,
+            TextureProj,
+            &[s2.clone(), v3.clone()],
+            gvec4.clone(),
+            true,
+        );
+        tex(
+            &mut b,
+            TextureProj,
+            &[s2.clone(), v4.clone()],
+            gvec4.clone(),
+            true,
+        );
+        tex(
+            &mut b,
+            TextureProj,
+            &[s3.clone(), v4.clone()],
+            gvec4.clone(),
+            true,
+        );
+        tex(
+            &mut b,
+            TextureLod,
+            &[s2.clone(), v2.clone(), f.clone()],
+            gvec4.clone(),
+            false,
+        );
+        tex(
+            &mut b,
+            TextureLod,
+            &[s3.clone(), v3.clone(), f.clone()],
+            gvec4.clone(),
+            false,
+        );
+        tex(
+            &mut b,
+            TextureLod,
+            &[sc.clone(), v3.clone(), f.clone()],
+            gvec4.clone(),
+            false,
+        );
+        tex(
+            &mut b,
+            TextureLod,
+            &[sa.clone(), v3.clone(), f.clone()],
+            gvec4.clone(),
+            false,
+        );
+        tex(
+            &mut b,
+            TextureOffset,
+            &[s2.clone(), v2.clone(), ivec(2)],
+            gvec4.clone(),
+            true,
+        );
+        tex(
+            &mut b,
+            TextureOffset,
+            &[s3.clone(), v3.clone(), ivec(3)],
+            gvec4.clone(),
+            true,
+        );
+        tex(
+            &mut b,
+            TextureOffset,
+            &[sa.clone(), v3.clone(), ivec(2)],
+            gvec4.clone(),
+            true,
+        );
+        tex(
+            &mut b,
+            TexelFetch,
+            &[s2.clone(), ivec(2), i.clone()],
+            gvec4.clone(),
+            false,
+        );
+        tex(
+            &mut b,
+            TexelFetch,
+            &[s3.clone(), ivec(3), i.clone()],
+            gvec4.clone(),
+            false,
+        );
+        tex(
+            &mut b,
+            TexelFetch,
+            &[sa.clone(), ivec(3), i.clone()],
+            gvec4.clone(),
+            false,
+        );
+        tex(
+            &mut b,
+            TexelFetchOffset,
+            &[s2.clone(), ivec(2), i.clone(), ivec(2)],
+            gvec4.clone(),
+            false,
+        );
+        tex(
+            &mut b,
+            TexelFetchOffset,
+            &[s3.clone(), ivec(3), i.clone(), ivec(3)],
+            gvec4.clone(),
+            false,
+        );
+        tex(
+            &mut b,
+            TexelFetchOffset,
+            &[sa.clone(), ivec(3), i.clone(), ivec(2)],
+            gvec4.clone(),
+            false,
+        );
+        tex(
+            &mut b,
+            TextureProjOffset,
+            &[s2.clone(), v3.clone(), ivec(2)],
+            gvec4.clone(),
+            true,
+        );
+        tex(
+            &mut b,
+            TextureProjOffset,
+            &[s2.clone(), v4.clone(), ivec(2)],
+            gvec4.clone(),
+            true,
+        );
+        tex(
+            &mut b,
+            TextureProjOffset,
+            &[s3.clone(), v4.clone(), ivec(3)],
+            gvec4.clone(),
+            true,
+        );
+        tex(
+            &mut b,
+            TextureLodOffset,
+            &[s2.clone(), v2.clone(), f.clone(), ivec(2)],
+            gvec4.clone(),
+            false,
+        );
+        tex(
+            &mut b,
+            TextureLodOffset,
+            &[s3.clone(), v3.clone(), f.clone(), ivec(3)],
+            gvec4.clone(),
+            false,
+        );
+        tex(
+            &mut b,
+            TextureLodOffset,
+            &[sa.clone(), v3.clone(), f.clone(), ivec(2)],
+            gvec4.clone(),
+            false,
+        );
+        tex(
+            &mut b,
+            TextureProjLod,
+            &[s2.clone(), v3.clone(), f.clone()],
+            gvec4.clone(),
+            false,
+        );
+        tex(
+            &mut b,
+            TextureProjLod,
+            &[s2.clone(), v4.clone(), f.clone()],
+            gvec4.clone(),
+            false,
+        );
+        tex(
+            &mut b,
+            TextureProjLod,
+            &[s3.clone(), v4.clone(), f.clone()],
+            gvec4.clone(),
+            false,
+        );
+        tex(
+            &mut b,
+            TextureProjLodOffset,
+            &[s2.clone(), v3.clone(), f.clone(), ivec(2)],
+            gvec4.clone(),
+            false,
+        );
+        tex(
+            &mut b,
+            TextureProjLodOffset,
+            &[s2.clone(), v4.clone(), f.clone(), ivec(2)],
+            gvec4.clone(),
+            false,
+        );
+        tex(
+            &mut b,
+            TextureProjLodOffset,
+            &[s3.clone(), v4.clone(), f.clone(), ivec(3)],
+            gvec4.clone(),
+            false,
+        );
+        tex(
+            &mut b,
+            TextureGrad,
+            &[s2.clone(), v2.clone(), v2.clone(), v2.clone()],
+            gvec4.clone(),
+            false,
+        );
+        tex(
+            &mut b,
+            TextureGrad,
+            &[s3.clone(), v3.clone(), v3.clone(), v3.clone()],
+            gvec4.clone(),
+            false,
+        );
+        tex(
+            &mut b,
+            TextureGrad,
+            &[sc.clone(), v3.clone(), v3.clone(), v3.clone()],
+            gvec4.clone(),
+            false,
+        );
+        tex(
+            &mut b,
+            TextureGrad,
+            &[sa.clone(), v3.clone(), v2.clone(), v2.clone()],
+            gvec4.clone(),
+            false,
+        );
+        tex(
+            &mut b,
+            TextureGradOffset,
+            &[s2.clone(), v2.clone(), v2.clone(), v2.clone(), ivec(2)],
+            gvec4.clone(),
+            false,
+        );
+        tex(
+            &mut b,
+            TextureGradOffset,
+            &[s3.clone(), v3.clone(), v3.clone(), v3.clone(), ivec(3)],
+            gvec4.clone(),
+            false,
+        );
+        tex(
+            &mut b,
+            TextureGradOffset,
+            &[sa.clone(), v3.clone(), v2.clone(), v2.clone(), ivec(2)],
+            gvec4.clone(),
+            false,
+        );
+        tex(
+            &mut b,
+            TextureProjGrad,
+            &[s2.clone(), v3.clone(), v2.clone(), v2.clone()],
+            gvec4.clone(),
+            false,
+        );
+        tex(
+            &mut b,
+            TextureProjGrad,
+            &[s2.clone(), v4.clone(), v2.clone(), v2.clone()],
+            gvec4.clone(),
+            false,
+        );
+        tex(
+            &mut b,
+            TextureProjGrad,
+            &[s3.clone(), v4.clone(), v3.clone(), v3.clone()],
+            gvec4.clone(),
+            false,
+        );
+        tex(
+            &mut b,
+            TextureProjGradOffset,
+            &[s2.clone(), v3.clone(), v2.clone(), v2.clone(), ivec(2)],
+            gvec4.clone(),
+            false,
+        );
+        tex(
+            &mut b,
+            TextureProjGradOffset,
+            &[s2.clone(), v4.clone(), v2.clone(), v2.clone(), ivec(2)],
+            gvec4.clone(),
+            false,
+        );
+        tex(
+            &mut b,
+            TextureProjGradOffset,
+            &[s3.clone(), v4.clone(), v3.clone(), v3.clone(), ivec(3)],
+            gvec4.clone(),
+            false,
+        );
     }
-    let shadow = |dim| Type::Sampler(SamplerType { dim, kind: Float, shadow: true });
+    let shadow = |dim| {
+        Type::Sampler(SamplerType {
+            dim,
+            kind: Float,
+            shadow: true,
+        })
+    };
     let s2s = shadow(SamplerDim::D2);
     let scs = shadow(SamplerDim::Cube);
     let sas = shadow(SamplerDim::D2Array);
-    tex(&mut b, TextureSize, &[s2s.clone(), i.clone()], ivec(2), false);
-    tex(&mut b, TextureSize, &[scs.clone(), i.clone()], ivec(2), false);
-    tex(&mut b, TextureSize, &[sas.clone(), i.clone()], ivec(3), false);
+    tex(
+        &mut b,
+        TextureSize,
+        &[s2s.clone(), i.clone()],
+        ivec(2),
+        false,
+    );
+    tex(
+        &mut b,
+        TextureSize,
+        &[scs.clone(), i.clone()],
+        ivec(2),
+        false,
+    );
+    tex(
+        &mut b,
+        TextureSize,
+        &[sas.clone(), i.clone()],
+        ivec(3),
+        false,
+    );
     tex(&mut b, Texture, &[s2s.clone(), v3.clone()], f.clone(), true);
     tex(&mut b, Texture, &[scs.clone(), v4.clone()], f.clone(), true);
-    tex(&mut b, Texture, &[sas.clone(), v4.clone()], f.clone(), false);
-    tex(&mut b, TextureProj, &[s2s.clone(), v4.clone()], f.clone(), true);
-    tex(&mut b, TextureLod, &[s2s.clone(), v3.clone(), f.clone()], f.clone(), false);
-    tex(&mut b, TextureOffset, &[s2s.clone(), v3.clone(), ivec(2)], f.clone(), true);
-    tex(&mut b, TextureProjOffset, &[s2s.clone(), v4.clone(), ivec(2)], f.clone(), true);
-    tex(&mut b, TextureLodOffset, &[s2s.clone(), v3.clone(), f.clone(), ivec(2)], f.clone(), false);
-    tex(&mut b, TextureProjLod, &[s2s.clone(), v4.clone(), f.clone()], f.clone(), false);
-    tex(&mut b, TextureProjLodOffset, &[s2s.clone(), v4.clone(), f.clone(), ivec(2)], f.clone(), false);
-    tex(&mut b, TextureGrad, &[s2s.clone(), v3.clone(), v2.clone(), v2.clone()], f.clone(), false);
-    tex(&mut b, TextureGrad, &[scs.clone(), v4.clone(), v3.clone(), v3.clone()], f.clone(), false);
-    tex(&mut b, TextureGrad, &[sas.clone(), v4.clone(), v2.clone(), v2.clone()], f.clone(), false);
-    tex(&mut b, TextureGradOffset, &[s2s.clone(), v3.clone(), v2.clone(), v2.clone(), ivec(2)], f.clone(), false);
-    tex(&mut b, TextureGradOffset, &[sas.clone(), v4.clone(), v2.clone(), v2.clone(), ivec(2)], f.clone(), false);
-    tex(&mut b, TextureProjGrad, &[s2s.clone(), v4.clone(), v2.clone(), v2.clone()], f.clone(), false);
-    tex(&mut b, TextureProjGradOffset, &[s2s.clone(), v4.clone(), v2.clone(), v2.clone(), ivec(2)], f.clone(), false);
+    tex(
+        &mut b,
+        Texture,
+        &[sas.clone(), v4.clone()],
+        f.clone(),
+        false,
+    );
+    tex(
+        &mut b,
+        TextureProj,
+        &[s2s.clone(), v4.clone()],
+        f.clone(),
+        true,
+    );
+    tex(
+        &mut b,
+        TextureLod,
+        &[s2s.clone(), v3.clone(), f.clone()],
+        f.clone(),
+        false,
+    );
+    tex(
+        &mut b,
+        TextureOffset,
+        &[s2s.clone(), v3.clone(), ivec(2)],
+        f.clone(),
+        true,
+    );
+    tex(
+        &mut b,
+        TextureProjOffset,
+        &[s2s.clone(), v4.clone(), ivec(2)],
+        f.clone(),
+        true,
+    );
+    tex(
+        &mut b,
+        TextureLodOffset,
+        &[s2s.clone(), v3.clone(), f.clone(), ivec(2)],
+        f.clone(),
+        false,
+    );
+    tex(
+        &mut b,
+        TextureProjLod,
+        &[s2s.clone(), v4.clone(), f.clone()],
+        f.clone(),
+        false,
+    );
+    tex(
+        &mut b,
+        TextureProjLodOffset,
+        &[s2s.clone(), v4.clone(), f.clone(), ivec(2)],
+        f.clone(),
+        false,
+    );
+    tex(
+        &mut b,
+        TextureGrad,
+        &[s2s.clone(), v3.clone(), v2.clone(), v2.clone()],
+        f.clone(),
+        false,
+    );
+    tex(
+        &mut b,
+        TextureGrad,
+        &[scs.clone(), v4.clone(), v3.clone(), v3.clone()],
+        f.clone(),
+        false,
+    );
+    tex(
+        &mut b,
+        TextureGrad,
+        &[sas.clone(), v4.clone(), v2.clone(), v2.clone()],
+        f.clone(),
+        false,
+    );
+    tex(
+        &mut b,
+        TextureGradOffset,
+        &[s2s.clone(), v3.clone(), v2.clone(), v2.clone(), ivec(2)],
+        f.clone(),
+        false,
+    );
+    tex(
+        &mut b,
+        TextureGradOffset,
+        &[sas.clone(), v4.clone(), v2.clone(), v2.clone(), ivec(2)],
+        f.clone(),
+        false,
+    );
+    tex(
+        &mut b,
+        TextureProjGrad,
+        &[s2s.clone(), v4.clone(), v2.clone(), v2.clone()],
+        f.clone(),
+        false,
+    );
+    tex(
+        &mut b,
+        TextureProjGradOffset,
+        &[s2s.clone(), v4.clone(), v2.clone(), v2.clone(), ivec(2)],
+        f.clone(),
+        false,
+    );
     b.map
 }
 
@@ -459,7 +942,8 @@ fn build() -> HashMap<&'static str, Vec<Signature>> {
 fn tex(b: &mut Builder, op: BuiltinFn, params: &[Type], ret: Type, bias: bool) {
     b.add(op, params, ret.clone());
     if bias {
-        let mut p: Vec<(Type, ParamMode)> = params.iter().map(|t| (t.clone(), ParamMode::In)).collect();
+        let mut p: Vec<(Type, ParamMode)> =
+            params.iter().map(|t| (t.clone(), ParamMode::In)).collect();
         p.push((Type::FLOAT, ParamMode::In));
         b.add_full(op, p, ret, true);
     }

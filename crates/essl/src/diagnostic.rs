@@ -125,7 +125,10 @@ impl Diagnostic {
 
     /// Adds a secondary label.
     pub fn with_secondary(mut self, span: Span, message: impl Into<String>) -> Diagnostic {
-        self.secondary.push(Label { span, message: message.into() });
+        self.secondary.push(Label {
+            span,
+            message: message.into(),
+        });
         self
     }
 
@@ -161,11 +164,14 @@ impl Diagnostic {
     /// The help text, or, where there is a fix on one line, the help with the fixed line:
     /// ``insert `;`: `uniform float u_innerLimit;` ``.
     pub fn help_text(&self, file: &SourceFile) -> Option<String> {
-        let Some(fix) = &self.fix else { return self.help.clone() };
+        let Some(fix) = &self.fix else {
+            return self.help.clone();
+        };
         let base = self.help.clone().unwrap_or_else(|| fix.message.clone());
         // A fix that only changes white space would show a line that looks unchanged.
         let only_space = fix.edits.iter().all(|e| {
-            e.replacement.chars().all(char::is_whitespace) && file.slice(e.span).chars().all(char::is_whitespace)
+            e.replacement.chars().all(char::is_whitespace)
+                && file.slice(e.span).chars().all(char::is_whitespace)
         });
         if only_space {
             return Some(base);
@@ -182,7 +188,10 @@ impl Fix {
     pub fn certain(message: impl Into<String>, span: Span, replacement: impl Into<String>) -> Fix {
         Fix {
             message: message.into(),
-            edits: vec![Edit { span, replacement: replacement.into() }],
+            edits: vec![Edit {
+                span,
+                replacement: replacement.into(),
+            }],
             applicability: Applicability::Certain,
         }
     }
@@ -195,7 +204,10 @@ impl Fix {
     ) -> Fix {
         Fix {
             message: message.into(),
-            edits: vec![Edit { span, replacement: replacement.into() }],
+            edits: vec![Edit {
+                span,
+                replacement: replacement.into(),
+            }],
             applicability: Applicability::Suggested,
         }
     }
@@ -206,9 +218,11 @@ impl Fix {
 fn fixed_line(file: &SourceFile, fix: &Fix) -> Option<String> {
     let first = fix.edits.first()?;
     let line = file.line_index(first.span.start);
-    if fix.edits.iter().any(|e| {
-        file.line_index(e.span.start) != line || file.line_index(e.span.end) != line
-    }) {
+    if fix
+        .edits
+        .iter()
+        .any(|e| file.line_index(e.span.start) != line || file.line_index(e.span.end) != line)
+    {
         return None;
     }
     let range = file.line_range(line);
@@ -228,7 +242,11 @@ fn fixed_line(file: &SourceFile, fix: &Fix) -> Option<String> {
 
 /// Applies every fix of the given applicability to the text, skipping fixes that overlap one
 /// already applied. Returns the new text and the number of fixes applied.
-pub fn apply_fixes(text: &str, diagnostics: &[Diagnostic], which: Applicability) -> (String, usize) {
+pub fn apply_fixes(
+    text: &str,
+    diagnostics: &[Diagnostic],
+    which: Applicability,
+) -> (String, usize) {
     let mut chosen: Vec<&Edit> = Vec::new();
     let mut applied = 0;
     for fix in diagnostics.iter().filter_map(|d| d.fix.as_ref()) {
@@ -266,8 +284,11 @@ pub fn apply_fixes(text: &str, diagnostics: &[Diagnostic], which: Applicability)
 /// Sorts diagnostics by position, then severity, as they are shown.
 pub fn sort(diagnostics: &mut [Diagnostic]) {
     diagnostics.sort_by(|a, b| {
-        (a.span.start, a.span.end, std::cmp::Reverse(a.severity))
-            .cmp(&(b.span.start, b.span.end, std::cmp::Reverse(b.severity)))
+        (a.span.start, a.span.end, std::cmp::Reverse(a.severity)).cmp(&(
+            b.span.start,
+            b.span.end,
+            std::cmp::Reverse(b.severity),
+        ))
     });
 }
 
@@ -280,20 +301,35 @@ mod tests {
         let file = SourceFile::new("a.frag", "uniform float x\nfloat y;");
         let d = Diagnostic::error("missing-semicolon", "expected `;`", Span::empty(15))
             .with_fix(Fix::certain("insert `;`", Span::empty(15), ";"));
-        assert_eq!(d.help_text(&file).unwrap(), "insert `;`: `uniform float x;`");
+        assert_eq!(
+            d.help_text(&file).unwrap(),
+            "insert `;`: `uniform float x;`"
+        );
     }
 
     #[test]
     fn applies_non_overlapping_certain_fixes() {
         let text = "a b c";
         let ds = vec![
-            Diagnostic::error("x", "", Span::new(0, 1))
-                .with_fix(Fix::certain("", Span::new(0, 1), "A")),
-            Diagnostic::error("x", "", Span::new(0, 1))
-                .with_fix(Fix::certain("", Span::new(0, 1), "Z")),
-            Diagnostic::error("x", "", Span::new(4, 5))
-                .with_fix(Fix::suggested("", Span::new(4, 5), "C")),
+            Diagnostic::error("x", "", Span::new(0, 1)).with_fix(Fix::certain(
+                "",
+                Span::new(0, 1),
+                "A",
+            )),
+            Diagnostic::error("x", "", Span::new(0, 1)).with_fix(Fix::certain(
+                "",
+                Span::new(0, 1),
+                "Z",
+            )),
+            Diagnostic::error("x", "", Span::new(4, 5)).with_fix(Fix::suggested(
+                "",
+                Span::new(4, 5),
+                "C",
+            )),
         ];
-        assert_eq!(apply_fixes(text, &ds, Applicability::Certain), ("A b c".to_string(), 1));
+        assert_eq!(
+            apply_fixes(text, &ds, Applicability::Certain),
+            ("A b c".to_string(), 1)
+        );
     }
 }

@@ -232,7 +232,11 @@ fn is_space(c: char) -> bool {
 /// Lexes a source text into preprocessing tokens.
 pub fn lex(file: &SourceFile) -> Lexed {
     let text = file.text();
-    let mut cur = Cursor { bytes: text.as_bytes(), text, pos: 0 };
+    let mut cur = Cursor {
+        bytes: text.as_bytes(),
+        text,
+        pos: 0,
+    };
     let mut out = Lexed::default();
     // No-break spaces per physical line: (span, inside a comment).
     let mut nbsp: Vec<(Span, bool)> = Vec::new();
@@ -316,7 +320,14 @@ pub fn lex(file: &SourceFile) -> Lexed {
                         break;
                     }
                 }
-                push(&mut out, PpKind::Ident, start, cur.pos, s, &mut space_before);
+                push(
+                    &mut out,
+                    PpKind::Ident,
+                    start,
+                    cur.pos,
+                    s,
+                    &mut space_before,
+                );
             }
             c if c.is_ascii_digit()
                 || (c == '.' && cur.peek().is_some_and(|d| d.is_ascii_digit())) =>
@@ -337,7 +348,14 @@ pub fn lex(file: &SourceFile) -> Lexed {
                         break;
                     }
                 }
-                push(&mut out, PpKind::Number, start, cur.pos, s, &mut space_before);
+                push(
+                    &mut out,
+                    PpKind::Number,
+                    start,
+                    cur.pos,
+                    s,
+                    &mut space_before,
+                );
             }
             c => {
                 let kind = match punct(c, &mut cur) {
@@ -568,7 +586,10 @@ fn report_nbsp(file: &SourceFile, nbsp: &[(Span, bool)], diagnostics: &mut Vec<D
                 },
                 edits: group
                     .iter()
-                    .map(|(s, _)| Edit { span: *s, replacement: " ".into() })
+                    .map(|(s, _)| Edit {
+                        span: *s,
+                        replacement: " ".into(),
+                    })
                     .collect(),
                 applicability: Applicability::Certain,
             });
@@ -586,7 +607,11 @@ mod tests {
 
     fn kinds(src: &str) -> Vec<(PpKind, String)> {
         let f = SourceFile::new("t", src);
-        lex(&f).tokens.into_iter().map(|t| (t.kind, t.text.to_string())).collect()
+        lex(&f)
+            .tokens
+            .into_iter()
+            .map(|t| (t.kind, t.text.to_string()))
+            .collect()
     }
 
     #[test]
@@ -599,8 +624,11 @@ mod tests {
     #[test]
     fn numbers_include_exponent_signs_and_suffixes() {
         let k = kinds("1.5e-3f 0x1Fu .5 1e+x");
-        let nums: Vec<&str> =
-            k.iter().filter(|(k, _)| *k == PpKind::Number).map(|(_, t)| t.as_str()).collect();
+        let nums: Vec<&str> = k
+            .iter()
+            .filter(|(k, _)| *k == PpKind::Number)
+            .map(|(_, t)| t.as_str())
+            .collect();
         assert_eq!(nums, ["1.5e-3f", "0x1Fu", ".5", "1e+x"]);
     }
 
@@ -624,13 +652,25 @@ mod tests {
 
     #[test]
     fn no_break_spaces_are_one_diagnostic_per_line() {
-        let f = SourceFile::new("t", "#version 300 es \u{a0}\n\u{a0} x;\u{a0}\u{a0}\n// c\u{a0}\n");
+        let f = SourceFile::new(
+            "t",
+            "#version 300 es \u{a0}\n\u{a0} x;\u{a0}\u{a0}\n// c\u{a0}\n",
+        );
         let l = lex(&f);
-        let sev: Vec<_> = l.diagnostics.iter().map(|d| (d.severity, d.fix.as_ref().unwrap().edits.len())).collect();
+        let sev: Vec<_> = l
+            .diagnostics
+            .iter()
+            .map(|d| (d.severity, d.fix.as_ref().unwrap().edits.len()))
+            .collect();
         use crate::diagnostic::Severity::*;
         assert_eq!(sev, [(Error, 1), (Error, 3), (Warning, 1)]);
         // Lexing goes on as if they were spaces.
-        let idents: Vec<&str> = l.tokens.iter().filter(|t| t.kind == PpKind::Ident).map(|t| &*t.text).collect();
+        let idents: Vec<&str> = l
+            .tokens
+            .iter()
+            .filter(|t| t.kind == PpKind::Ident)
+            .map(|t| &*t.text)
+            .collect();
         assert_eq!(idents, ["version", "es", "x"]);
     }
 

@@ -102,7 +102,10 @@ pub fn same_type(a: &Type, sa: &[StructDef], b: &Type, sb: &[StructDef]) -> bool
             let (x, y) = (&sa[x.0 as usize], &sb[y.0 as usize]);
             x.name == y.name
                 && x.members.len() == y.members.len()
-                && x.members.iter().zip(&y.members).all(|(m, n)| m.name == n.name && same_type(&m.ty, sa, &n.ty, sb))
+                && x.members
+                    .iter()
+                    .zip(&y.members)
+                    .all(|(m, n)| m.name == n.name && same_type(&m.ty, sa, &n.ty, sb))
         }
         (Type::Array(x, n), Type::Array(y, m)) => n == m && same_type(x, sa, y, sb),
         _ => a == b,
@@ -110,11 +113,21 @@ pub fn same_type(a: &Type, sa: &[StructDef], b: &Type, sb: &[StructDef]) -> bool
 }
 
 /// Whether two types agree in precision throughout (for uniforms used in both stages).
-fn same_precision(a: &Type, pa: Option<Precision>, sa: &[StructDef], b: &Type, pb: Option<Precision>, sb: &[StructDef]) -> bool {
+fn same_precision(
+    a: &Type,
+    pa: Option<Precision>,
+    sa: &[StructDef],
+    b: &Type,
+    pb: Option<Precision>,
+    sb: &[StructDef],
+) -> bool {
     match (a, b) {
         (Type::Struct(x), Type::Struct(y)) => {
             let (x, y) = (&sa[x.0 as usize], &sb[y.0 as usize]);
-            x.members.iter().zip(&y.members).all(|(m, n)| same_precision(&m.ty, m.precision, sa, &n.ty, n.precision, sb))
+            x.members
+                .iter()
+                .zip(&y.members)
+                .all(|(m, n)| same_precision(&m.ty, m.precision, sa, &n.ty, n.precision, sb))
         }
         (Type::Array(x, _), Type::Array(y, _)) => same_precision(x, pa, sa, y, pb, sb),
         _ => pa == pb,
@@ -125,7 +138,11 @@ fn field_names_differ(a: &Type, sa: &[StructDef], b: &Type, sb: &[StructDef]) ->
     match (a, b) {
         (Type::Struct(x), Type::Struct(y)) => {
             let (x, y) = (&sa[x.0 as usize], &sb[y.0 as usize]);
-            x.members.len() != y.members.len() || x.members.iter().zip(&y.members).any(|(m, n)| m.name != n.name)
+            x.members.len() != y.members.len()
+                || x.members
+                    .iter()
+                    .zip(&y.members)
+                    .any(|(m, n)| m.name != n.name)
         }
         (Type::Array(x, _), Type::Array(y, _)) => field_names_differ(x, sa, y, sb),
         _ => false,
@@ -137,7 +154,11 @@ pub fn location_count(ty: &Type, structs: &[StructDef]) -> u32 {
     match ty {
         Type::Matrix { cols, .. } => *cols as u32,
         Type::Array(el, n) => n * location_count(el, structs),
-        Type::Struct(id) => structs[id.0 as usize].members.iter().map(|m| location_count(&m.ty, structs)).sum(),
+        Type::Struct(id) => structs[id.0 as usize]
+            .members
+            .iter()
+            .map(|m| location_count(&m.ty, structs))
+            .sum(),
         _ => 1,
     }
 }
@@ -148,8 +169,14 @@ fn static_uses(m: &Module) -> Vec<bool> {
     fn e(x: &Expr, out: &mut Vec<bool>) {
         match &x.kind {
             ExprKind::Global(g) => out[*g] = true,
-            ExprKind::Unary(_, a) | ExprKind::IncDec(_, _, a) | ExprKind::Member(a, _) | ExprKind::Swizzle(a, _) => e(a, out),
-            ExprKind::Binary(_, a, b) | ExprKind::Assign(_, a, b) | ExprKind::Comma(a, b) | ExprKind::Index(a, b) => {
+            ExprKind::Unary(_, a)
+            | ExprKind::IncDec(_, _, a)
+            | ExprKind::Member(a, _)
+            | ExprKind::Swizzle(a, _) => e(a, out),
+            ExprKind::Binary(_, a, b)
+            | ExprKind::Assign(_, a, b)
+            | ExprKind::Comma(a, b)
+            | ExprKind::Index(a, b) => {
                 e(a, out);
                 e(b, out);
             }
@@ -158,7 +185,9 @@ fn static_uses(m: &Module) -> Vec<bool> {
                 e(a, out);
                 e(b, out);
             }
-            ExprKind::Call(_, args) | ExprKind::Builtin(_, args) | ExprKind::Construct(args) => args.iter().for_each(|a| e(a, out)),
+            ExprKind::Call(_, args) | ExprKind::Builtin(_, args) | ExprKind::Construct(args) => {
+                args.iter().for_each(|a| e(a, out))
+            }
             ExprKind::BlockMember(_, Some(i), _) => e(i, out),
             _ => {}
         }
@@ -166,14 +195,22 @@ fn static_uses(m: &Module) -> Vec<bool> {
     fn s(x: &[Stmt], out: &mut Vec<bool>) {
         for st in x {
             match &st.kind {
-                StmtKind::Expr(x) | StmtKind::Local(_, Some(x)) | StmtKind::Return(Some(x)) => e(x, out),
+                StmtKind::Expr(x) | StmtKind::Local(_, Some(x)) | StmtKind::Return(Some(x)) => {
+                    e(x, out)
+                }
                 StmtKind::Block(b) => s(b, out),
                 StmtKind::If(c, a, b) => {
                     e(c, out);
                     s(a, out);
                     s(b, out);
                 }
-                StmtKind::Loop { init, cond, step, body, .. } => {
+                StmtKind::Loop {
+                    init,
+                    cond,
+                    step,
+                    body,
+                    ..
+                } => {
                     s(init, out);
                     if let Some(c) = cond {
                         match &**c {
@@ -211,25 +248,51 @@ struct Linker<'a> {
 }
 
 impl Linker<'_> {
-    fn error(&mut self, stage: Option<Stage>, span: Span, code: &'static str, message: String, log_line: String) -> &mut Diagnostic {
+    fn error(
+        &mut self,
+        stage: Option<Stage>,
+        span: Span,
+        code: &'static str,
+        message: String,
+        log_line: String,
+    ) -> &mut Diagnostic {
         self.ok = false;
         self.log.push_str(&log_line);
         self.log.push('\n');
-        self.diagnostics.push(LinkDiagnostic { stage, diagnostic: Diagnostic::error(code, message, span) });
+        self.diagnostics.push(LinkDiagnostic {
+            stage,
+            diagnostic: Diagnostic::error(code, message, span),
+        });
         &mut self.diagnostics.last_mut().expect("pushed").diagnostic
     }
 
-    fn warning(&mut self, stage: Option<Stage>, span: Span, code: &'static str, message: String, log_line: String) -> &mut Diagnostic {
+    fn warning(
+        &mut self,
+        stage: Option<Stage>,
+        span: Span,
+        code: &'static str,
+        message: String,
+        log_line: String,
+    ) -> &mut Diagnostic {
         self.log.push_str(&log_line);
         self.log.push('\n');
-        self.diagnostics.push(LinkDiagnostic { stage, diagnostic: Diagnostic::warning(code, message, span) });
+        self.diagnostics.push(LinkDiagnostic {
+            stage,
+            diagnostic: Diagnostic::warning(code, message, span),
+        });
         &mut self.diagnostics.last_mut().expect("pushed").diagnostic
     }
 }
 
 /// Links two compiled shaders; `bindings` are `bindAttribLocation` calls made before linking.
 pub fn link_with_bindings(vs: &Shader, fs: &Shader, bindings: &[(String, u32)]) -> Program {
-    let mut l = Linker { vs, fs, log: String::new(), diagnostics: Vec::new(), ok: true };
+    let mut l = Linker {
+        vs,
+        fs,
+        log: String::new(),
+        diagnostics: Vec::new(),
+        ok: true,
+    };
     let empty = Program {
         ok: false,
         log: String::new(),
@@ -241,7 +304,10 @@ pub fn link_with_bindings(vs: &Shader, fs: &Shader, bindings: &[(String, u32)]) 
         fragment_outputs: Vec::new(),
     };
     if vs.stage != Stage::Vertex || fs.stage != Stage::Fragment {
-        return Program { log: "Attached shaders must be one vertex and one fragment shader.\n".into(), ..empty };
+        return Program {
+            log: "Attached shaders must be one vertex and one fragment shader.\n".into(),
+            ..empty
+        };
     }
     if !vs.ok() || !fs.ok() {
         let mut log = String::new();
@@ -307,26 +373,49 @@ impl Linker<'_> {
                         format!("FRAGMENT varying {name} does not match any VERTEX varying"),
                     );
                     d.label = "read here but never declared `out` in the vertex shader".into();
-                    d.help = Some(format!("declare `out {} {name};` in the vertex shader and write it", fg.ty.display(&fm.structs)));
+                    d.help = Some(format!(
+                        "declare `out {} {name};` in the vertex shader and write it",
+                        fg.ty.display(&fm.structs)
+                    ));
                 }
                 continue;
             };
             let vg = &vm.globals[vi];
             let name = fg.name.clone();
             if !same_type(&vg.ty, &vm.structs, &fg.ty, &fm.structs) {
-                let (vt, ft) = (vg.ty.display(&vm.structs).to_string(), fg.ty.display(&fm.structs).to_string());
+                let (vt, ft) = (
+                    vg.ty.display(&vm.structs).to_string(),
+                    fg.ty.display(&fm.structs).to_string(),
+                );
                 let arrays = vg.ty.is_array() && fg.ty.is_array();
                 let what = if arrays { "Array sizes" } else { "Types" };
                 let msg = format!("varying `{name}` is `{vt}` in the vertex shader but `{ft}` in the fragment shader");
-                let line = format!("{what} of varying '{name}' differ between VERTEX and FRAGMENT shaders.");
+                let line = format!(
+                    "{what} of varying '{name}' differ between VERTEX and FRAGMENT shaders."
+                );
                 let vspan = vg.span;
                 if used {
-                    let d = self.error(Some(Stage::Fragment), fg.span, "varying-type-mismatch", msg, line);
+                    let d = self.error(
+                        Some(Stage::Fragment),
+                        fg.span,
+                        "varying-type-mismatch",
+                        msg,
+                        line,
+                    );
                     d.label = format!("`{ft}` here");
-                    d.notes.push(format!("the vertex shader declares it as `{vt}`"));
-                    self.log.push_str(&format!("FRAGMENT varying {name} does not match any VERTEX varying\n"));
+                    d.notes
+                        .push(format!("the vertex shader declares it as `{vt}`"));
+                    self.log.push_str(&format!(
+                        "FRAGMENT varying {name} does not match any VERTEX varying\n"
+                    ));
                 } else {
-                    let d = self.warning(Some(Stage::Fragment), fg.span, "varying-type-mismatch", msg, line);
+                    let d = self.warning(
+                        Some(Stage::Fragment),
+                        fg.span,
+                        "varying-type-mismatch",
+                        msg,
+                        line,
+                    );
                     d.label = format!("`{ft}` here (never read, so the program still links)");
                 }
                 let _ = vspan;
@@ -337,13 +426,31 @@ impl Linker<'_> {
             if vflat != fflat {
                 let msg = format!("varying `{name}` is `flat` in one shader only");
                 let line = format!("Interpolation types of varying '{name}' differ between VERTEX and FRAGMENT shaders.");
-                let d = self.error(Some(Stage::Fragment), fg.span, "varying-interpolation-mismatch", msg, line);
-                d.label = if fflat { "`flat` here but not in the vertex shader" } else { "not `flat` here but `flat` in the vertex shader" }.into();
-                self.log.push_str(&format!("FRAGMENT varying {name} does not match any VERTEX varying\n"));
+                let d = self.error(
+                    Some(Stage::Fragment),
+                    fg.span,
+                    "varying-interpolation-mismatch",
+                    msg,
+                    line,
+                );
+                d.label = if fflat {
+                    "`flat` here but not in the vertex shader"
+                } else {
+                    "not `flat` here but `flat` in the vertex shader"
+                }
+                .into();
+                self.log.push_str(&format!(
+                    "FRAGMENT varying {name} does not match any VERTEX varying\n"
+                ));
                 continue;
             }
             let n = location_count(&fg.ty, &fm.structs);
-            out.push(Varying { name: name.to_string(), vertex: vi, fragment: fi, location: next_location });
+            out.push(Varying {
+                name: name.to_string(),
+                vertex: vi,
+                fragment: fi,
+                location: next_location,
+            });
             next_location += n;
         }
         if next_location > MAX_VARYING_VECTORS {
@@ -366,13 +473,21 @@ impl Linker<'_> {
             if fg.kind != GlobalKind::Uniform {
                 continue;
             }
-            let Some((vi, vg)) = vm.globals.iter().enumerate().find(|(_, g)| g.kind == GlobalKind::Uniform && g.name == fg.name) else {
+            let Some((vi, vg)) = vm
+                .globals
+                .iter()
+                .enumerate()
+                .find(|(_, g)| g.kind == GlobalKind::Uniform && g.name == fg.name)
+            else {
                 continue;
             };
             let name = fg.name.clone();
             if !same_type(&vg.ty, &vm.structs, &fg.ty, &fm.structs) {
                 let names = field_names_differ(&vg.ty, &vm.structs, &fg.ty, &fm.structs);
-                let (vt, ft) = (vg.ty.display(&vm.structs).to_string(), fg.ty.display(&fm.structs).to_string());
+                let (vt, ft) = (
+                    vg.ty.display(&vm.structs).to_string(),
+                    fg.ty.display(&fm.structs).to_string(),
+                );
                 let line = if names {
                     format!("Field names of uniform '{name}' differ between VERTEX and FRAGMENT shaders.")
                 } else {
@@ -386,10 +501,23 @@ impl Linker<'_> {
                     line,
                 );
                 d.label = "declared differently in the two shaders".into();
-                d.notes.push("a uniform declared in both stages is one variable and must have one type".into());
+                d.notes.push(
+                    "a uniform declared in both stages is one variable and must have one type"
+                        .into(),
+                );
                 continue;
             }
-            if vuse[vi] && fuse[fi] && !same_precision(&vg.ty, vg.precision, &vm.structs, &fg.ty, fg.precision, &fm.structs) {
+            if vuse[vi]
+                && fuse[fi]
+                && !same_precision(
+                    &vg.ty,
+                    vg.precision,
+                    &vm.structs,
+                    &fg.ty,
+                    fg.precision,
+                    &fm.structs,
+                )
+            {
                 let d = self.error(
                     Some(Stage::Fragment),
                     fg.span,
@@ -398,7 +526,10 @@ impl Linker<'_> {
                     format!("Precisions of uniform '{name}' differ between VERTEX and FRAGMENT shaders."),
                 );
                 d.label = format!("{} here", fg.precision.map_or("no precision", |p| p.name()));
-                d.notes.push(format!("the vertex shader declares it {}", vg.precision.map_or("without precision", |p| p.name())));
+                d.notes.push(format!(
+                    "the vertex shader declares it {}",
+                    vg.precision.map_or("without precision", |p| p.name())
+                ));
                 d.help = Some("give it the same precision qualifier in both shaders".into());
             }
         }
@@ -441,7 +572,9 @@ impl Linker<'_> {
         for (stage_rank, (module, refl)) in [(vm, &vr), (fm, &fr)].into_iter().enumerate() {
             let mut decl_order: HashMap<GlobalId, usize> = HashMap::new();
             for (leaf, used) in &refl.uniforms {
-                let UniformSource::Default { global, .. } = &leaf.source else { continue };
+                let UniformSource::Default { global, .. } = &leaf.source else {
+                    continue;
+                };
                 let n = decl_order.len();
                 let decl = *decl_order.entry(*global).or_insert(n);
                 if let Some(&i) = index.get(&leaf.name) {
@@ -507,12 +640,20 @@ impl Linker<'_> {
     fn link_blocks(&mut self) {
         let (vm, fm) = (&self.vs.module, &self.fs.module);
         for fb in &fm.blocks {
-            let Some(vb) = vm.blocks.iter().find(|b| b.name == fb.name) else { continue };
+            let Some(vb) = vm.blocks.iter().find(|b| b.name == fb.name) else {
+                continue;
+            };
             let name = fb.name.clone();
-            let names_differ = vb.members.len() != fb.members.len() || vb.members.iter().zip(&fb.members).any(|(a, b)| a.0 != b.0);
+            let names_differ = vb.members.len() != fb.members.len()
+                || vb.members.iter().zip(&fb.members).any(|(a, b)| a.0 != b.0);
             let types_differ = !names_differ
-                && vb.members.iter().zip(&fb.members).any(|(a, b)| !same_type(&a.1, &vm.structs, &b.1, &fm.structs));
-            let layout_differs = vb.layout != fb.layout || vb.members.iter().zip(&fb.members).any(|(a, b)| a.3 != b.3);
+                && vb
+                    .members
+                    .iter()
+                    .zip(&fb.members)
+                    .any(|(a, b)| !same_type(&a.1, &vm.structs, &b.1, &fm.structs));
+            let layout_differs = vb.layout != fb.layout
+                || vb.members.iter().zip(&fb.members).any(|(a, b)| a.3 != b.3);
             let (what, code) = if names_differ {
                 ("Field names", "block-member-mismatch")
             } else if types_differ {
@@ -527,19 +668,32 @@ impl Linker<'_> {
                 fb.span,
                 code,
                 format!("uniform block `{name}` is declared differently in the two shaders"),
-                format!("{what} of uniform block '{name}' differ between VERTEX and FRAGMENT shaders."),
+                format!(
+                    "{what} of uniform block '{name}' differ between VERTEX and FRAGMENT shaders."
+                ),
             );
-            d.label = format!("{} differ from the vertex shader's `{name}`", what.to_lowercase());
+            d.label = format!(
+                "{} differ from the vertex shader's `{name}`",
+                what.to_lowercase()
+            );
         }
     }
 
     /// Puts an attribute at `loc` (taking `n` locations) unless that aliases another one.
-    fn place_attribute(&mut self, taken: &mut [Option<GlobalId>], locations: &mut Vec<(GlobalId, u32)>, gi: GlobalId, loc: u32, n: u32) {
+    fn place_attribute(
+        &mut self,
+        taken: &mut [Option<GlobalId>],
+        locations: &mut Vec<(GlobalId, u32)>,
+        gi: GlobalId,
+        loc: u32,
+        n: u32,
+    ) {
         let vm = &self.vs.module;
         for l in loc..loc + n {
             if let Some(Some(other)) = taken.get(l as usize) {
                 let (name, span) = (vm.globals[gi].name.clone(), vm.globals[gi].span);
-                let (other_name, other_span) = (vm.globals[*other].name.clone(), vm.globals[*other].span);
+                let (other_name, other_span) =
+                    (vm.globals[*other].name.clone(), vm.globals[*other].span);
                 let d = self.error(
                     Some(Stage::Vertex),
                     span,
@@ -548,7 +702,10 @@ impl Linker<'_> {
                     format!("Attribute '{name}' aliases attribute '{other_name}' at location {l}"),
                 );
                 d.label = "location already taken".into();
-                d.secondary.push(Label { span: other_span, message: format!("`{other_name}` is here") });
+                d.secondary.push(Label {
+                    span: other_span,
+                    message: format!("`{other_name}` is here"),
+                });
                 return;
             }
         }
@@ -560,17 +717,28 @@ impl Linker<'_> {
         locations.push((gi, loc));
     }
 
-    fn link_attributes(&mut self, bindings: &[(String, u32)]) -> (Vec<ActiveAttribute>, Vec<(GlobalId, u32)>) {
+    fn link_attributes(
+        &mut self,
+        bindings: &[(String, u32)],
+    ) -> (Vec<ActiveAttribute>, Vec<(GlobalId, u32)>) {
         let vm = &self.vs.module;
-        let inputs: Vec<GlobalId> =
-            vm.globals.iter().enumerate().filter(|(_, g)| g.kind == GlobalKind::Input).map(|(i, _)| i).collect();
+        let inputs: Vec<GlobalId> = vm
+            .globals
+            .iter()
+            .enumerate()
+            .filter(|(_, g)| g.kind == GlobalKind::Input)
+            .map(|(i, _)| i)
+            .collect();
         let mut taken: Vec<Option<GlobalId>> = vec![None; 64];
         let mut locations: Vec<(GlobalId, u32)> = Vec::new();
         // Explicit: `layout(location)` first, then `bindAttribLocation`.
         for &gi in &inputs {
             let g = &self.vs.module.globals[gi];
             let n = location_count(&g.ty, &self.vs.module.structs);
-            let bound = bindings.iter().find(|(name, _)| **name == *g.name).map(|b| b.1);
+            let bound = bindings
+                .iter()
+                .find(|(name, _)| **name == *g.name)
+                .map(|b| b.1);
             if let Some(loc) = g.location.or(bound) {
                 self.place_attribute(&mut taken, &mut locations, gi, loc, n);
             }
@@ -581,16 +749,26 @@ impl Linker<'_> {
             }
             let g = &self.vs.module.globals[gi];
             let n = location_count(&g.ty, &self.vs.module.structs);
-            match (0..64u32).find(|&s| (s..s + n).all(|l| taken.get(l as usize).is_some_and(|t| t.is_none()))) {
+            match (0..64u32)
+                .find(|&s| (s..s + n).all(|l| taken.get(l as usize).is_some_and(|t| t.is_none())))
+            {
                 Some(start) => self.place_attribute(&mut taken, &mut locations, gi, start, n),
                 None => {
                     let (name, span) = (g.name.clone(), g.span);
-                    self.error(Some(Stage::Vertex), span, "too-many-attributes", "no free attribute location".into(), format!("Too many attributes ({name})"));
+                    self.error(
+                        Some(Stage::Vertex),
+                        span,
+                        "too-many-attributes",
+                        "no free attribute location".into(),
+                        format!("Too many attributes ({name})"),
+                    );
                 }
             }
         }
         let vm = &self.vs.module;
-        if let Some((gi, _)) = locations.iter().find(|(gi, loc)| loc + location_count(&vm.globals[*gi].ty, &vm.structs) > MAX_VERTEX_ATTRIBS) {
+        if let Some((gi, _)) = locations.iter().find(|(gi, loc)| {
+            loc + location_count(&vm.globals[*gi].ty, &vm.structs) > MAX_VERTEX_ATTRIBS
+        }) {
             let g = &vm.globals[*gi];
             let (name, span) = (g.name.clone(), g.span);
             let d = self.error(
@@ -608,15 +786,26 @@ impl Linker<'_> {
             .filter(|(_, g)| g.used)
             .filter_map(|(gi, g)| {
                 let loc = locations.iter().find(|(x, _)| *x == gi)?.1;
-                Some(ActiveAttribute { name: g.name.to_string(), ty: g.ty.gl_type()?, size: 1, location: loc as i32, global: Some(gi) })
+                Some(ActiveAttribute {
+                    name: g.name.to_string(),
+                    ty: g.ty.gl_type()?,
+                    size: 1,
+                    location: loc as i32,
+                    global: Some(gi),
+                })
             })
             .collect();
         for b in [BuiltinVar::VertexId, BuiltinVar::InstanceId] {
             if vm.used_builtins.contains(&b) {
-                attributes.push(ActiveAttribute { name: b.name().into(), ty: GlType::INT, size: 1, location: -1, global: None });
+                attributes.push(ActiveAttribute {
+                    name: b.name().into(),
+                    ty: GlType::INT,
+                    size: 1,
+                    location: -1,
+                    global: None,
+                });
             }
         }
         (attributes, locations)
     }
 }
-

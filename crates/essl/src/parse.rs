@@ -21,7 +21,11 @@ use crate::Stage;
 pub const MAX_NESTING: u32 = 256;
 
 /// Parses a shader's tokens (ending with `Eof`) into a syntax tree, collecting diagnostics.
-pub fn parse(file: &SourceFile, tokens: Vec<Token>, stage: Stage) -> (TranslationUnit, Vec<Diagnostic>) {
+pub fn parse(
+    file: &SourceFile,
+    tokens: Vec<Token>,
+    stage: Stage,
+) -> (TranslationUnit, Vec<Diagnostic>) {
     let mut p = Parser {
         file,
         toks: tokens,
@@ -35,7 +39,12 @@ pub fn parse(file: &SourceFile, tokens: Vec<Token>, stage: Stage) -> (Translatio
     };
     if p.toks.last().is_none_or(|t| t.tok != Tok::Eof) {
         let end = file.text().len() as u32;
-        p.toks.push(Token { tok: Tok::Eof, span: Span::empty(end), text: Arc::from(""), from_macro: false });
+        p.toks.push(Token {
+            tok: Tok::Eof,
+            span: Span::empty(end),
+            text: Arc::from(""),
+            from_macro: false,
+        });
     }
     let mut unit = p.translation_unit();
     unit.truncated = p.too_deep_reported;
@@ -287,15 +296,30 @@ impl<'a> Parser<'a> {
         }
         let prev = self.prev_span();
         let next = self.peek().clone();
-        let later_line = self.file.line_of(next.span.start) > self.file.line_of(prev.end.max(1) - 1)
+        let later_line = self.file.line_of(next.span.start)
+            > self.file.line_of(prev.end.max(1) - 1)
             || matches!(next.tok, Tok::Eof | Tok::P(Punct::RightBrace));
         if later_line {
             let at = prev.end_point();
-            let d = Diagnostic::error("missing-semicolon", format!("expected `;` after {what}"), at)
-                .with_label("expected `;` here")
-                .with_secondary(next.span, format!("the next {} starts here", if matches!(next.tok, Tok::Eof) { "part" } else { "statement" }))
-                .with_fix(Fix::certain("add `;` at the end of the line", at, ";"))
-                .with_token(&*next.text);
+            let d = Diagnostic::error(
+                "missing-semicolon",
+                format!("expected `;` after {what}"),
+                at,
+            )
+            .with_label("expected `;` here")
+            .with_secondary(
+                next.span,
+                format!(
+                    "the next {} starts here",
+                    if matches!(next.tok, Tok::Eof) {
+                        "part"
+                    } else {
+                        "statement"
+                    }
+                ),
+            )
+            .with_fix(Fix::certain("add `;` at the end of the line", at, ";"))
+            .with_token(&*next.text);
             if !self.suppress && !self.too_deep_reported {
                 self.diags.push(d);
             }
@@ -333,7 +357,11 @@ impl<'a> Parser<'a> {
         let open_text = self.file.slice(open).to_string();
         let d = Diagnostic::error(
             "syntax-error",
-            format!("expected `{}`, found {}", close.as_str(), Self::describe(&t)),
+            format!(
+                "expected `{}`, found {}",
+                close.as_str(),
+                Self::describe(&t)
+            ),
             t.span,
         )
         .with_label(format!("expected `{}`", close.as_str()))
@@ -348,12 +376,18 @@ impl<'a> Parser<'a> {
         match &t.tok {
             Tok::Ident(name) => {
                 self.bump();
-                Ok(Ident { name: name.clone(), span: t.span })
+                Ok(Ident {
+                    name: name.clone(),
+                    span: t.span,
+                })
             }
             Tok::Reserved(name) => {
                 self.bump();
                 self.reserved_word(name, t.span);
-                Ok(Ident { name: name.clone(), span: t.span })
+                Ok(Ident {
+                    name: name.clone(),
+                    span: t.span,
+                })
             }
             Tok::Kw(k) => {
                 let d = Diagnostic::error(
@@ -434,7 +468,9 @@ impl<'a> Parser<'a> {
                 self.diags.push(
                     Diagnostic::error(
                         "nesting-too-deep",
-                        format!("expressions or statements nested more than {MAX_NESTING} levels deep"),
+                        format!(
+                            "expressions or statements nested more than {MAX_NESTING} levels deep"
+                        ),
                         span,
                     )
                     .with_label("too deep here")
@@ -471,9 +507,13 @@ impl<'a> Parser<'a> {
                 // Never loop without progress.
                 let t = self.peek().clone();
                 self.report(
-                    Diagnostic::error("syntax-error", format!("unexpected {}", Self::describe(&t)), t.span)
-                        .with_label("not expected here")
-                        .with_token(&*t.text),
+                    Diagnostic::error(
+                        "syntax-error",
+                        format!("unexpected {}", Self::describe(&t)),
+                        t.span,
+                    )
+                    .with_label("not expected here")
+                    .with_token(&*t.text),
                 );
                 self.bump();
                 self.synchronize();
@@ -516,7 +556,9 @@ impl<'a> Parser<'a> {
         if !qualifiers.is_empty() {
             if let Tok::Ident(name) = self.tok().clone() {
                 if self.peek_at(1).tok == Tok::P(Punct::LeftBrace) && !self.is_type_name(&name) {
-                    return Ok(Some(ExternalDecl::Declaration(self.block(qualifiers, start)?)));
+                    return Ok(Some(ExternalDecl::Declaration(
+                        self.block(qualifiers, start)?,
+                    )));
                 }
             }
             if self.at(Punct::Semicolon) {
@@ -528,7 +570,11 @@ impl<'a> Parser<'a> {
             }
         }
         let spec = self.type_spec()?;
-        let ty = FullType { span: start.to(spec.span), qualifiers, spec };
+        let ty = FullType {
+            span: start.to(spec.span),
+            qualifiers,
+            spec,
+        };
         if let Tok::Ident(_) | Tok::Reserved(_) = self.tok() {
             if self.peek_at(1).tok == Tok::P(Punct::LeftParen) {
                 let name = self.ident("a function name")?;
@@ -550,7 +596,11 @@ impl<'a> Parser<'a> {
         self.bump();
         let ty = self.type_spec()?;
         self.expect_semicolon("precision statement")?;
-        Ok(Declaration::Precision { precision, ty, span: self.span_from(start) })
+        Ok(Declaration::Precision {
+            precision,
+            ty,
+            span: self.span_from(start),
+        })
     }
 
     fn invariant_statement(&mut self) -> PResult<Declaration> {
@@ -560,7 +610,10 @@ impl<'a> Parser<'a> {
             names.push(self.ident("a variable name")?);
         }
         self.expect_semicolon("`invariant` declaration")?;
-        Ok(Declaration::Invariant { names, span: self.span_from(start) })
+        Ok(Declaration::Invariant {
+            names,
+            span: self.span_from(start),
+        })
     }
 
     /// Parses qualifiers in any order (the checker enforces ES 3.00's order).
@@ -587,7 +640,11 @@ impl<'a> Parser<'a> {
                     let mut items = Vec::new();
                     loop {
                         let name = self.ident("a layout qualifier")?;
-                        let value = if self.eat(Punct::Equal) { Some(self.unary()?) } else { None };
+                        let value = if self.eat(Punct::Equal) {
+                            Some(self.unary()?)
+                        } else {
+                            None
+                        };
                         items.push(LayoutItem { name, value });
                         if !self.eat(Punct::Comma) {
                             break;
@@ -618,7 +675,11 @@ impl<'a> Parser<'a> {
                     if !self.suppress {
                         self.diags.push(d);
                     }
-                    Qualifier::Storage(if replacement == "in" { Storage::In } else { Storage::Out })
+                    Qualifier::Storage(if replacement == "in" {
+                        Storage::In
+                    } else {
+                        Storage::Out
+                    })
                 }
                 _ => break,
             };
@@ -643,7 +704,10 @@ impl<'a> Parser<'a> {
             },
             Tok::Ident(name) if self.is_type_name(name) => {
                 self.bump();
-                TypeName::Named(Ident { name: name.clone(), span: t.span })
+                TypeName::Named(Ident {
+                    name: name.clone(),
+                    span: t.span,
+                })
             }
             Tok::Ident(name) => {
                 let d = Diagnostic::error("unknown-type", format!("unknown type `{name}`"), t.span)
@@ -665,15 +729,30 @@ impl<'a> Parser<'a> {
             }
             _ => return Err(self.expected("a type")),
         };
-        let array = if self.at(Punct::LeftBracket) { Some(self.array_size()?) } else { None };
-        Ok(TypeSpec { name, array, span: self.span_from(t.span) })
+        let array = if self.at(Punct::LeftBracket) {
+            Some(self.array_size()?)
+        } else {
+            None
+        };
+        Ok(TypeSpec {
+            name,
+            array,
+            span: self.span_from(t.span),
+        })
     }
 
     fn array_size(&mut self) -> PResult<ArraySize> {
         let open = self.expect(Punct::LeftBracket)?;
-        let size = if self.at(Punct::RightBracket) { None } else { Some(Box::new(self.conditional()?)) };
+        let size = if self.at(Punct::RightBracket) {
+            None
+        } else {
+            Some(Box::new(self.conditional()?))
+        };
         self.expect_close(Punct::RightBracket, open)?;
-        Ok(ArraySize { size, span: self.span_from(open) })
+        Ok(ArraySize {
+            size,
+            span: self.span_from(open),
+        })
     }
 
     fn struct_decl(&mut self) -> PResult<StructDecl> {
@@ -685,9 +764,16 @@ impl<'a> Parser<'a> {
         let open = self.expect(Punct::LeftBrace)?;
         let members = self.member_list(open)?;
         if let Some(n) = &name {
-            self.type_names.last_mut().expect("scope").insert(n.name.clone());
+            self.type_names
+                .last_mut()
+                .expect("scope")
+                .insert(n.name.clone());
         }
-        Ok(StructDecl { name, members, span: self.span_from(start) })
+        Ok(StructDecl {
+            name,
+            members,
+            span: self.span_from(start),
+        })
     }
 
     /// Member declarations up to and including the closing `}`.
@@ -697,18 +783,30 @@ impl<'a> Parser<'a> {
             let start = self.peek().span;
             let qualifiers = self.qualifiers()?;
             let spec = self.type_spec()?;
-            let ty = FullType { span: start.to(spec.span), qualifiers, spec };
+            let ty = FullType {
+                span: start.to(spec.span),
+                qualifiers,
+                spec,
+            };
             let mut names = Vec::new();
             loop {
                 let n = self.ident("a member name")?;
-                let a = if self.at(Punct::LeftBracket) { Some(self.array_size()?) } else { None };
+                let a = if self.at(Punct::LeftBracket) {
+                    Some(self.array_size()?)
+                } else {
+                    None
+                };
                 names.push((n, a));
                 if !self.eat(Punct::Comma) {
                     break;
                 }
             }
             self.expect_semicolon("member declaration")?;
-            members.push(MemberDecl { ty: Box::new(FullTypeEq(ty)), names, span: self.span_from(start) });
+            members.push(MemberDecl {
+                ty: Box::new(FullTypeEq(ty)),
+                names,
+                span: self.span_from(start),
+            });
         }
         self.expect_close(Punct::RightBrace, open)?;
         Ok(members)
@@ -721,13 +819,23 @@ impl<'a> Parser<'a> {
         let instance = match self.tok() {
             Tok::Ident(_) | Tok::Reserved(_) => {
                 let n = self.ident("an instance name")?;
-                let a = if self.at(Punct::LeftBracket) { Some(self.array_size()?) } else { None };
+                let a = if self.at(Punct::LeftBracket) {
+                    Some(self.array_size()?)
+                } else {
+                    None
+                };
                 Some((n, a))
             }
             _ => None,
         };
         self.expect_semicolon("uniform block")?;
-        Ok(Declaration::Block { qualifiers, name, members, instance, span: self.span_from(start) })
+        Ok(Declaration::Block {
+            qualifiers,
+            name,
+            members,
+            instance,
+            span: self.span_from(start),
+        })
     }
 
     /// `name [array] [= init], …;` after a type; an empty list declares only a struct.
@@ -736,7 +844,11 @@ impl<'a> Parser<'a> {
         if !self.at(Punct::Semicolon) {
             loop {
                 let name = self.ident("a variable name")?;
-                let array = if self.at(Punct::LeftBracket) { Some(self.array_size()?) } else { None };
+                let array = if self.at(Punct::LeftBracket) {
+                    Some(self.array_size()?)
+                } else {
+                    None
+                };
                 let init = if self.eat(Punct::Equal) {
                     match self.assignment() {
                         Ok(e) => Some(e),
@@ -744,22 +856,43 @@ impl<'a> Parser<'a> {
                             // Keep the variable, so later uses of it are not reported as
                             // undeclared (no cascade), and skip the rest of the statement.
                             let span = self.span_from(name.span);
-                            declarators.push(Declarator { span, name, array, init: Some(Expr { kind: ExprKind::Error, span }) });
+                            declarators.push(Declarator {
+                                span,
+                                name,
+                                array,
+                                init: Some(Expr {
+                                    kind: ExprKind::Error,
+                                    span,
+                                }),
+                            });
                             self.synchronize();
-                            return Ok(Declaration::Variables { ty, declarators, span: self.span_from(start) });
+                            return Ok(Declaration::Variables {
+                                ty,
+                                declarators,
+                                span: self.span_from(start),
+                            });
                         }
                     }
                 } else {
                     None
                 };
-                declarators.push(Declarator { span: self.span_from(name.span), name, array, init });
+                declarators.push(Declarator {
+                    span: self.span_from(name.span),
+                    name,
+                    array,
+                    init,
+                });
                 if !self.eat(Punct::Comma) {
                     break;
                 }
             }
         }
         self.expect_semicolon("declaration")?;
-        Ok(Declaration::Variables { ty, declarators, span: self.span_from(start) })
+        Ok(Declaration::Variables {
+            ty,
+            declarators,
+            span: self.span_from(start),
+        })
     }
 
     fn function(&mut self, ret: FullType, name: Ident, start: Span) -> PResult<ExternalDecl> {
@@ -776,7 +909,12 @@ impl<'a> Parser<'a> {
             }
         }
         self.expect_close(Punct::RightParen, open)?;
-        let proto = FunctionProto { ret, name, params, span: self.span_from(start) };
+        let proto = FunctionProto {
+            ret,
+            name,
+            params,
+            span: self.span_from(start),
+        };
         if self.at(Punct::LeftBrace) {
             self.push_scope();
             let body = self.block_stmts();
@@ -793,13 +931,26 @@ impl<'a> Parser<'a> {
         let start = self.peek().span;
         let qualifiers = self.qualifiers()?;
         let spec = self.type_spec()?;
-        let ty = FullType { span: start.to(spec.span), qualifiers, spec };
+        let ty = FullType {
+            span: start.to(spec.span),
+            qualifiers,
+            spec,
+        };
         let name = match self.tok() {
             Tok::Ident(_) | Tok::Reserved(_) => Some(self.ident("a parameter name")?),
             _ => None,
         };
-        let array = if name.is_some() && self.at(Punct::LeftBracket) { Some(self.array_size()?) } else { None };
-        Ok(Param { ty, name, array, span: self.span_from(start) })
+        let array = if name.is_some() && self.at(Punct::LeftBracket) {
+            Some(self.array_size()?)
+        } else {
+            None
+        };
+        Ok(Param {
+            ty,
+            name,
+            array,
+            span: self.span_from(start),
+        })
     }
 
     // ----- statements -----
@@ -814,21 +965,31 @@ impl<'a> Parser<'a> {
                 Ok(s) => stmts.push(s),
                 Err(Failed) => {
                     self.synchronize();
-                    stmts.push(Stmt { kind: StmtKind::Error, span: self.span_from(self.toks[before].span) });
+                    stmts.push(Stmt {
+                        kind: StmtKind::Error,
+                        span: self.span_from(self.toks[before].span),
+                    });
                 }
             }
             if self.pos == before {
                 let t = self.bump();
                 self.report(
-                    Diagnostic::error("syntax-error", format!("unexpected {}", Self::describe(&t)), t.span)
-                        .with_label("not expected here")
-                        .with_token(&*t.text),
+                    Diagnostic::error(
+                        "syntax-error",
+                        format!("unexpected {}", Self::describe(&t)),
+                        t.span,
+                    )
+                    .with_label("not expected here")
+                    .with_token(&*t.text),
                 );
                 self.synchronize();
             }
         }
         self.expect_close(Punct::RightBrace, open)?;
-        Ok(Block { stmts, span: self.span_from(open) })
+        Ok(Block {
+            stmts,
+            span: self.span_from(open),
+        })
     }
 
     /// Whether the tokens ahead start a declaration (not an expression).
@@ -864,7 +1025,10 @@ impl<'a> Parser<'a> {
                 i += 1;
             }
         }
-        !matches!(self.peek_at(i).tok, Tok::P(Punct::LeftParen) | Tok::P(Punct::Dot))
+        !matches!(
+            self.peek_at(i).tok,
+            Tok::P(Punct::LeftParen) | Tok::P(Punct::Dot)
+        )
     }
 
     fn statement(&mut self) -> PResult<Stmt> {
@@ -893,7 +1057,11 @@ impl<'a> Parser<'a> {
                 let cond = self.expr()?;
                 self.expect_close(Punct::RightParen, open)?;
                 let then = self.scoped_statement()?;
-                let els = if self.eat_kw(Kw::Else) { Some(Box::new(self.scoped_statement()?)) } else { None };
+                let els = if self.eat_kw(Kw::Else) {
+                    Some(Box::new(self.scoped_statement()?))
+                } else {
+                    None
+                };
                 StmtKind::If(cond, Box::new(then), els)
             }
             Tok::Kw(Kw::Switch) => {
@@ -950,21 +1118,43 @@ impl<'a> Parser<'a> {
                     let init_start = self.peek().span;
                     let init = if self.at(Punct::Semicolon) {
                         self.bump();
-                        Stmt { kind: StmtKind::Empty, span: init_start }
+                        Stmt {
+                            kind: StmtKind::Empty,
+                            span: init_start,
+                        }
                     } else if self.at_declaration() {
                         let d = self.local_declaration()?;
-                        Stmt { kind: StmtKind::Decl(d), span: self.span_from(init_start) }
+                        Stmt {
+                            kind: StmtKind::Decl(d),
+                            span: self.span_from(init_start),
+                        }
                     } else {
                         let e = self.expr()?;
                         self.expect(Punct::Semicolon)?;
-                        Stmt { kind: StmtKind::Expr(e), span: self.span_from(init_start) }
+                        Stmt {
+                            kind: StmtKind::Expr(e),
+                            span: self.span_from(init_start),
+                        }
                     };
-                    let cond = if self.at(Punct::Semicolon) { None } else { Some(self.condition()?) };
+                    let cond = if self.at(Punct::Semicolon) {
+                        None
+                    } else {
+                        Some(self.condition()?)
+                    };
                     self.expect(Punct::Semicolon)?;
-                    let step = if self.at(Punct::RightParen) { None } else { Some(self.expr()?) };
+                    let step = if self.at(Punct::RightParen) {
+                        None
+                    } else {
+                        Some(self.expr()?)
+                    };
                     self.expect_close(Punct::RightParen, open)?;
                     let body = self.statement_no_new_scope()?;
-                    Ok(StmtKind::For { init: Box::new(init), cond, step, body: Box::new(body) })
+                    Ok(StmtKind::For {
+                        init: Box::new(init),
+                        cond,
+                        step,
+                        body: Box::new(body),
+                    })
                 })();
                 self.pop_scope();
                 r?
@@ -986,7 +1176,11 @@ impl<'a> Parser<'a> {
             }
             Tok::Kw(Kw::Return) => {
                 self.bump();
-                let e = if self.at(Punct::Semicolon) { None } else { Some(self.expr()?) };
+                let e = if self.at(Punct::Semicolon) {
+                    None
+                } else {
+                    Some(self.expr()?)
+                };
                 self.expect_semicolon("`return` statement")?;
                 StmtKind::Return(e)
             }
@@ -997,7 +1191,10 @@ impl<'a> Parser<'a> {
                 StmtKind::Expr(e)
             }
         };
-        Ok(Stmt { kind, span: self.span_from(start) })
+        Ok(Stmt {
+            kind,
+            span: self.span_from(start),
+        })
     }
 
     /// A sub-statement of `if`/`else`/`do`: a scope of its own.
@@ -1020,7 +1217,11 @@ impl<'a> Parser<'a> {
             let start = self.peek().span;
             let qualifiers = self.qualifiers()?;
             let spec = self.type_spec()?;
-            let ty = FullType { span: start.to(spec.span), qualifiers, spec };
+            let ty = FullType {
+                span: start.to(spec.span),
+                qualifiers,
+                spec,
+            };
             let name = self.ident("a variable name")?;
             self.expect(Punct::Equal)?;
             let init = self.assignment()?;
@@ -1047,12 +1248,19 @@ impl<'a> Parser<'a> {
             }
         }
         let spec = self.type_spec()?;
-        let ty = FullType { span: start.to(spec.span), qualifiers, spec };
+        let ty = FullType {
+            span: start.to(spec.span),
+            qualifiers,
+            spec,
+        };
         if let (Tok::Ident(_), Tok::P(Punct::LeftParen)) = (self.tok(), &self.peek_at(1).tok) {
             let name = self.ident("a function name")?;
             let d = Diagnostic::error(
                 "nested-function",
-                format!("function `{}` is declared inside another function", name.name),
+                format!(
+                    "function `{}` is declared inside another function",
+                    name.name
+                ),
                 name.span,
             )
             .with_label("functions can only be declared at global scope")
@@ -1071,7 +1279,10 @@ impl<'a> Parser<'a> {
             self.bump();
             let rhs = self.assignment()?;
             let span = e.span.to(rhs.span);
-            e = Expr { kind: ExprKind::Comma(Box::new(e), Box::new(rhs)), span };
+            e = Expr {
+                kind: ExprKind::Comma(Box::new(e), Box::new(rhs)),
+                span,
+            };
         }
         Ok(e)
     }
@@ -1090,7 +1301,10 @@ impl<'a> Parser<'a> {
                 self.bump();
                 let rhs = self.assignment()?;
                 let span = lhs.span.to(rhs.span);
-                return Ok(Expr { kind: ExprKind::Assign(op, Box::new(lhs), Box::new(rhs)), span });
+                return Ok(Expr {
+                    kind: ExprKind::Assign(op, Box::new(lhs), Box::new(rhs)),
+                    span,
+                });
             }
         }
         Ok(lhs)
@@ -1104,7 +1318,10 @@ impl<'a> Parser<'a> {
             self.expect(Punct::Colon)?;
             let b = self.assignment()?;
             let span = c.span.to(b.span);
-            return Ok(Expr { kind: ExprKind::Ternary(Box::new(c), Box::new(a), Box::new(b)), span });
+            return Ok(Expr {
+                kind: ExprKind::Ternary(Box::new(c), Box::new(a), Box::new(b)),
+                span,
+            });
         }
         Ok(c)
     }
@@ -1116,7 +1333,9 @@ impl<'a> Parser<'a> {
         let mut chain = 0;
         let result = loop {
             let Tok::P(p) = self.tok() else { break Ok(()) };
-            let Some((op, prec)) = binary_op(*p) else { break Ok(()) };
+            let Some((op, prec)) = binary_op(*p) else {
+                break Ok(());
+            };
             if prec <= min_prec {
                 break Ok(());
             }
@@ -1130,7 +1349,10 @@ impl<'a> Parser<'a> {
                 Err(f) => break Err(f),
             };
             let span = lhs.span.to(rhs.span);
-            lhs = Expr { kind: ExprKind::Binary(op, Box::new(lhs), Box::new(rhs)), span };
+            lhs = Expr {
+                kind: ExprKind::Binary(op, Box::new(lhs), Box::new(rhs)),
+                span,
+            };
         };
         for _ in 0..chain {
             self.leave();
@@ -1156,7 +1378,10 @@ impl<'a> Parser<'a> {
             self.leave();
             let e = e?;
             let span = t.span.to(e.span);
-            return Ok(Expr { kind: ExprKind::Unary(op, Box::new(e)), span });
+            return Ok(Expr {
+                kind: ExprKind::Unary(op, Box::new(e)),
+                span,
+            });
         }
         let p = self.primary()?;
         self.postfix(p)
@@ -1174,7 +1399,10 @@ impl<'a> Parser<'a> {
 
     fn postfix_ops(&mut self, mut e: Expr, applied: &mut u32) -> PResult<Expr> {
         loop {
-            if matches!(self.tok(), Tok::P(Punct::LeftBracket | Punct::Dot | Punct::PlusPlus | Punct::MinusMinus)) {
+            if matches!(
+                self.tok(),
+                Tok::P(Punct::LeftBracket | Punct::Dot | Punct::PlusPlus | Punct::MinusMinus)
+            ) {
                 self.enter()?;
                 *applied += 1;
             }
@@ -1184,7 +1412,10 @@ impl<'a> Parser<'a> {
                     let i = self.expr()?;
                     self.expect_close(Punct::RightBracket, open)?;
                     let span = self.span_from(e.span);
-                    e = Expr { kind: ExprKind::Index(Box::new(e), Box::new(i)), span };
+                    e = Expr {
+                        kind: ExprKind::Index(Box::new(e), Box::new(i)),
+                        span,
+                    };
                 }
                 Tok::P(Punct::Dot) => {
                     self.bump();
@@ -1198,11 +1429,17 @@ impl<'a> Parser<'a> {
                         let open = self.bump().span;
                         self.expect_close(Punct::RightParen, open)?;
                         let span = self.span_from(e.span);
-                        e = Expr { kind: ExprKind::Call(Callee::Length(Box::new(e)), Vec::new()), span };
+                        e = Expr {
+                            kind: ExprKind::Call(Callee::Length(Box::new(e)), Vec::new()),
+                            span,
+                        };
                     } else if self.at(Punct::LeftParen) {
                         let d = Diagnostic::error(
                             "method-call",
-                            format!("`{}` is not a method: GLSL ES 3.00 has only `.length()`", name.name),
+                            format!(
+                                "`{}` is not a method: GLSL ES 3.00 has only `.length()`",
+                                name.name
+                            ),
                             name.span,
                         )
                         .with_label("no such method")
@@ -1211,18 +1448,27 @@ impl<'a> Parser<'a> {
                         return Err(Failed);
                     } else {
                         let span = e.span.to(name.span);
-                        e = Expr { kind: ExprKind::Field(Box::new(e), name), span };
+                        e = Expr {
+                            kind: ExprKind::Field(Box::new(e), name),
+                            span,
+                        };
                     }
                 }
                 Tok::P(Punct::PlusPlus) => {
                     let s = self.bump().span;
                     let span = e.span.to(s);
-                    e = Expr { kind: ExprKind::Unary(UnaryOp::PostInc, Box::new(e)), span };
+                    e = Expr {
+                        kind: ExprKind::Unary(UnaryOp::PostInc, Box::new(e)),
+                        span,
+                    };
                 }
                 Tok::P(Punct::MinusMinus) => {
                     let s = self.bump().span;
                     let span = e.span.to(s);
-                    e = Expr { kind: ExprKind::Unary(UnaryOp::PostDec, Box::new(e)), span };
+                    e = Expr {
+                        kind: ExprKind::Unary(UnaryOp::PostDec, Box::new(e)),
+                        span,
+                    };
                 }
                 _ => return Ok(e),
             }
@@ -1269,7 +1515,10 @@ impl<'a> Parser<'a> {
                 let open = self.bump().span;
                 let e = self.expr()?;
                 let close = self.expect_close(Punct::RightParen, open)?;
-                return Ok(Expr { kind: e.kind, span: open.to(close) });
+                return Ok(Expr {
+                    kind: e.kind,
+                    span: open.to(close),
+                });
             }
             Tok::Ident(name) if self.is_type_name(name) => {
                 let spec = self.type_spec()?;
@@ -1279,7 +1528,9 @@ impl<'a> Parser<'a> {
                 let args = self.call_args()?;
                 match spec.array {
                     None => {
-                        let TypeName::Named(id) = spec.name else { unreachable!() };
+                        let TypeName::Named(id) = spec.name else {
+                            unreachable!()
+                        };
                         ExprKind::Call(Callee::Name(id), args)
                     }
                     Some(_) => ExprKind::Call(Callee::Type(spec), args),
@@ -1295,9 +1546,13 @@ impl<'a> Parser<'a> {
                 }
             }
             Tok::Kw(Kw::Struct) => {
-                let d = Diagnostic::error("syntax-error", "a struct cannot be defined inside an expression", t.span)
-                    .with_label("not expected here")
-                    .with_token("struct");
+                let d = Diagnostic::error(
+                    "syntax-error",
+                    "a struct cannot be defined inside an expression",
+                    t.span,
+                )
+                .with_label("not expected here")
+                .with_token("struct");
                 self.report(d);
                 return Err(Failed);
             }
@@ -1311,6 +1566,9 @@ impl<'a> Parser<'a> {
             }
             _ => return Err(self.expected("an expression")),
         };
-        Ok(Expr { kind, span: self.span_from(t.span) })
+        Ok(Expr {
+            kind,
+            span: self.span_from(t.span),
+        })
     }
 }

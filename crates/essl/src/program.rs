@@ -36,7 +36,10 @@ pub struct LowerOptions {
 
 impl Default for LowerOptions {
     fn default() -> Self {
-        Self { zero_to_one_depth: true, flip_frag_coord_y: true }
+        Self {
+            zero_to_one_depth: true,
+            flip_frag_coord_y: true,
+        }
     }
 }
 

@@ -80,6 +80,9 @@ pub struct Reflection {
     pub block_uniforms: Vec<UniformLeaf>,
 }
 
+/// One expanded leaf: WebGL name, type, array size, precision, path from the variable.
+pub type Leaf = (String, GlType, u32, Option<Precision>, Vec<PathStep>);
+
 /// Expands a value of type `ty` named `name` into WebGL's uniform leaves.
 pub fn expand(
     name: &str,
@@ -87,13 +90,20 @@ pub fn expand(
     precision: Option<Precision>,
     structs: &[StructDef],
     path: &mut Vec<PathStep>,
-    out: &mut Vec<(String, GlType, u32, Option<Precision>, Vec<PathStep>)>,
+    out: &mut Vec<Leaf>,
 ) {
     match ty {
         Type::Struct(id) => {
             for (i, m) in structs[id.0 as usize].members.iter().enumerate() {
                 path.push(PathStep::Member(i as u32));
-                expand(&format!("{name}.{}", m.name), &m.ty, m.precision, structs, path, out);
+                expand(
+                    &format!("{name}.{}", m.name),
+                    &m.ty,
+                    m.precision,
+                    structs,
+                    path,
+                    out,
+                );
                 path.pop();
             }
         }
@@ -136,10 +146,23 @@ pub fn reflect(m: &Module) -> Reflection {
             GlobalKind::Output => r.outputs.push(var()),
             GlobalKind::Uniform => {
                 let mut leaves = Vec::new();
-                expand(&g.name, &g.ty, g.precision, &m.structs, &mut Vec::new(), &mut leaves);
+                expand(
+                    &g.name,
+                    &g.ty,
+                    g.precision,
+                    &m.structs,
+                    &mut Vec::new(),
+                    &mut leaves,
+                );
                 for (name, ty, size, precision, path) in leaves {
                     r.uniforms.push((
-                        UniformLeaf { name, ty, size, precision, source: UniformSource::Default { global: gi, path } },
+                        UniformLeaf {
+                            name,
+                            ty,
+                            size,
+                            precision,
+                            source: UniformSource::Default { global: gi, path },
+                        },
                         g.used,
                     ));
                 }
@@ -154,14 +177,25 @@ pub fn reflect(m: &Module) -> Reflection {
                 None => mname.to_string(),
             };
             let mut leaves = Vec::new();
-            expand(&base, ty, *precision, &m.structs, &mut Vec::new(), &mut leaves);
+            expand(
+                &base,
+                ty,
+                *precision,
+                &m.structs,
+                &mut Vec::new(),
+                &mut leaves,
+            );
             for (name, ty, size, precision, path) in leaves {
                 r.block_uniforms.push(UniformLeaf {
                     name,
                     ty,
                     size,
                     precision,
-                    source: UniformSource::Block { block: bi, member: mi, path },
+                    source: UniformSource::Block {
+                        block: bi,
+                        member: mi,
+                        path,
+                    },
                 });
             }
         }
@@ -176,9 +210,17 @@ mod tests {
     use crate::Stage;
 
     fn uniforms(src: &str) -> Vec<(String, &'static str, u32, bool)> {
-        let sh = crate::compile(SourceFile::new("t.frag", src), Stage::Fragment, &Default::default());
+        let sh = crate::compile(
+            SourceFile::new("t.frag", src),
+            Stage::Fragment,
+            &Default::default(),
+        );
         assert!(sh.ok(), "{:?}", sh.diagnostics);
-        reflect(&sh.module).uniforms.into_iter().map(|(l, used)| (l.name, l.ty.name(), l.size, used)).collect()
+        reflect(&sh.module)
+            .uniforms
+            .into_iter()
+            .map(|(l, used)| (l.name, l.ty.name(), l.size, used))
+            .collect()
     }
 
     #[test]
@@ -187,7 +229,16 @@ mod tests {
             "#version 300 es\nprecision mediump float;\nstruct S { vec3 position; float w[3]; };\nuniform S u_spots[2];\nuniform vec4 u_a[4];\nout vec4 o;\nvoid main() { o = vec4(u_spots[1].position, u_a[1].x); }\n",
         );
         let names: Vec<&str> = u.iter().map(|x| x.0.as_str()).collect();
-        assert_eq!(names, ["u_spots[0].position", "u_spots[0].w[0]", "u_spots[1].position", "u_spots[1].w[0]", "u_a[0]"]);
+        assert_eq!(
+            names,
+            [
+                "u_spots[0].position",
+                "u_spots[0].w[0]",
+                "u_spots[1].position",
+                "u_spots[1].w[0]",
+                "u_a[0]"
+            ]
+        );
         assert_eq!(u[1].2, 3);
         assert_eq!(u[4], ("u_a[0]".to_string(), "FLOAT_VEC4", 4, true));
     }

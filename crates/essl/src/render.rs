@@ -308,7 +308,7 @@ mod tests {
     fn out_of_range_spans_do_not_panic() {
         let file = SourceFile::new("a.frag", "é");
         let d = Diagnostic::error("x", "m", Span::new(1, 99));
-        let _ = human_string(&file, &[d.clone()]);
+        let _ = human_string(&file, std::slice::from_ref(&d));
         let _ = to_json(&file, &d);
         assert_eq!(webgl_info_log(&file, &[d]), "ERROR: 0:1: '' : m\n");
     }

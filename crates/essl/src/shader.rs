@@ -56,14 +56,21 @@ pub const COMPILE_STACK: usize = 64 << 20;
 /// started).
 pub(crate) fn with_stack<T: Send>(f: impl FnOnce() -> T + Send) -> T {
     let slot = std::sync::Mutex::new(Some(f));
-    let take = || slot.lock().unwrap_or_else(|e| e.into_inner()).take().expect("runs once");
+    let take = || {
+        slot.lock()
+            .unwrap_or_else(|e| e.into_inner())
+            .take()
+            .expect("runs once")
+    };
     std::thread::scope(|scope| {
         let spawned = std::thread::Builder::new()
             .name("essl-compile".into())
             .stack_size(COMPILE_STACK)
             .spawn_scoped(scope, || take()());
         match spawned {
-            Ok(handle) => handle.join().unwrap_or_else(|panic| std::panic::resume_unwind(panic)),
+            Ok(handle) => handle
+                .join()
+                .unwrap_or_else(|panic| std::panic::resume_unwind(panic)),
             Err(_) => take()(),
         }
     })
@@ -76,14 +83,29 @@ pub fn compile(file: SourceFile, stage: Stage, options: &CompileOptions) -> Shad
 
 fn compile_here(file: SourceFile, stage: Stage, options: &CompileOptions) -> Shader {
     let lexed = crate::lex::lex(&file);
-    let pp = preprocess::preprocess(&file, lexed, &PreprocessOptions { defines: options.defines.clone(), extensions: Vec::new(), stage: Some(stage) });
+    let pp = preprocess::preprocess(
+        &file,
+        lexed,
+        &PreprocessOptions {
+            defines: options.defines.clone(),
+            extensions: Vec::new(),
+            stage: Some(stage),
+        },
+    );
     let mut diagnostics = pp.diagnostics;
     let tokens = crate::token::classify(pp.tokens, &mut diagnostics);
     let (unit, parse_diags) = crate::parse::parse(&file, tokens, stage);
     diagnostics.extend(parse_diags);
     let (module, check_diags) = crate::check::check(&file, &unit, stage, pp.invariant_all);
     diagnostics.extend(check_diags);
-    let mut shader = Shader { file, stage, version: pp.version, diagnostics, module, naga: None };
+    let mut shader = Shader {
+        file,
+        stage,
+        version: pp.version,
+        diagnostics,
+        module,
+        naga: None,
+    };
     if shader.ok() {
         match crate::lower::lower_shader(&shader, &crate::program::LowerOptions::default()) {
             Ok(m) => shader.naga = Some(m),
@@ -98,10 +120,18 @@ fn compile_here(file: SourceFile, stage: Stage, options: &CompileOptions) -> Sha
 /// or a bug in essl; either way, say so plainly.
 pub(crate) fn lowering_diagnostic(e: &crate::lower::LowerError) -> Diagnostic {
     let (code, help) = match e {
-        crate::lower::LowerError::Unsupported { .. } => ("unsupported", "this is valid GLSL ES 3.00 that essl cannot translate yet"),
-        crate::lower::LowerError::Invalid { .. } => ("internal-error", "this is a bug in essl: please report it with the shader"),
+        crate::lower::LowerError::Unsupported { .. } => (
+            "unsupported",
+            "this is valid GLSL ES 3.00 that essl cannot translate yet",
+        ),
+        crate::lower::LowerError::Invalid { .. } => (
+            "internal-error",
+            "this is a bug in essl: please report it with the shader",
+        ),
     };
-    Diagnostic::error(code, e.to_string(), e.span()).with_label("essl stops here").with_help(help)
+    Diagnostic::error(code, e.to_string(), e.span())
+        .with_label("essl stops here")
+        .with_help(help)
 }
 
 #[cfg(test)]

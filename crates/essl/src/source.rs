@@ -22,12 +22,18 @@ impl Span {
 
     /// An empty span at `offset`.
     pub fn empty(offset: u32) -> Span {
-        Span { start: offset, end: offset }
+        Span {
+            start: offset,
+            end: offset,
+        }
     }
 
     /// The smallest span covering both.
     pub fn to(self, other: Span) -> Span {
-        Span { start: self.start.min(other.start), end: self.end.max(other.end) }
+        Span {
+            start: self.start.min(other.start),
+            end: self.end.max(other.end),
+        }
     }
 
     /// The empty span at the end of this one.
@@ -109,7 +115,11 @@ impl SourceFile {
             }
             i += 1;
         }
-        SourceFile { name: name.into(), text, line_starts }
+        SourceFile {
+            name: name.into(),
+            text,
+            line_starts,
+        }
     }
 
     /// The file's name as given.
@@ -147,7 +157,10 @@ impl SourceFile {
 
     /// Byte offset where a 0-based line starts.
     pub fn line_start(&self, line_index: usize) -> u32 {
-        self.line_starts.get(line_index).copied().unwrap_or(self.text.len() as u32)
+        self.line_starts
+            .get(line_index)
+            .copied()
+            .unwrap_or(self.text.len() as u32)
     }
 
     /// The byte range of a 0-based line, without its line break.
@@ -176,6 +189,9 @@ impl SourceFile {
         let line = self.line_index(offset as u32);
         let start = self.line_starts[line] as usize;
         let column = self.text[start..offset].chars().count() as u32 + 1;
-        LineCol { line: line as u32 + 1, column }
+        LineCol {
+            line: line as u32 + 1,
+            column,
+        }
     }
 }

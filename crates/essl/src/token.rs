@@ -21,7 +21,7 @@ macro_rules! keywords {
             }
 
             /// The keyword spelled `text`, if any.
-            pub fn from_str(text: &str) -> Option<Kw> {
+            pub fn lookup(text: &str) -> Option<Kw> {
                 match text { $($text => Some(Kw::$kw),)* _ => None }
             }
         }
@@ -52,23 +52,107 @@ keywords! {
 
 /// Words GLSL ES 3.00 reserves for future use: using one is an error.
 pub const RESERVED: &[&str] = &[
-    "attribute", "varying", "coherent", "volatile", "restrict", "readonly", "writeonly",
-    "resource", "atomic_uint", "noperspective", "patch", "sample", "subroutine", "common",
-    "partition", "active", "asm", "class", "union", "enum", "typedef", "template", "this",
-    "goto", "inline", "noinline", "public", "static", "extern", "external", "interface",
-    "long", "short", "double", "half", "fixed", "unsigned", "superp", "input", "output",
-    "hvec2", "hvec3", "hvec4", "dvec2", "dvec3", "dvec4", "fvec2", "fvec3", "fvec4",
-    "sampler3DRect", "filter", "image1D", "image2D", "image3D", "imageCube", "iimage1D",
-    "iimage2D", "iimage3D", "iimageCube", "uimage1D", "uimage2D", "uimage3D", "uimageCube",
-    "image1DArray", "image2DArray", "iimage1DArray", "iimage2DArray", "uimage1DArray",
-    "uimage2DArray", "image1DShadow", "image2DShadow", "image1DArrayShadow",
-    "image2DArrayShadow", "imageBuffer", "iimageBuffer", "uimageBuffer", "sampler1D",
-    "sampler1DShadow", "sampler1DArray", "sampler1DArrayShadow", "isampler1D",
-    "isampler1DArray", "usampler1D", "usampler1DArray", "sampler2DRect",
-    "sampler2DRectShadow", "isampler2DRect", "usampler2DRect", "samplerBuffer",
-    "isamplerBuffer", "usamplerBuffer", "sampler2DMS", "isampler2DMS", "usampler2DMS",
-    "sampler2DMSArray", "isampler2DMSArray", "usampler2DMSArray", "sizeof", "cast",
-    "namespace", "using",
+    "attribute",
+    "varying",
+    "coherent",
+    "volatile",
+    "restrict",
+    "readonly",
+    "writeonly",
+    "resource",
+    "atomic_uint",
+    "noperspective",
+    "patch",
+    "sample",
+    "subroutine",
+    "common",
+    "partition",
+    "active",
+    "asm",
+    "class",
+    "union",
+    "enum",
+    "typedef",
+    "template",
+    "this",
+    "goto",
+    "inline",
+    "noinline",
+    "public",
+    "static",
+    "extern",
+    "external",
+    "interface",
+    "long",
+    "short",
+    "double",
+    "half",
+    "fixed",
+    "unsigned",
+    "superp",
+    "input",
+    "output",
+    "hvec2",
+    "hvec3",
+    "hvec4",
+    "dvec2",
+    "dvec3",
+    "dvec4",
+    "fvec2",
+    "fvec3",
+    "fvec4",
+    "sampler3DRect",
+    "filter",
+    "image1D",
+    "image2D",
+    "image3D",
+    "imageCube",
+    "iimage1D",
+    "iimage2D",
+    "iimage3D",
+    "iimageCube",
+    "uimage1D",
+    "uimage2D",
+    "uimage3D",
+    "uimageCube",
+    "image1DArray",
+    "image2DArray",
+    "iimage1DArray",
+    "iimage2DArray",
+    "uimage1DArray",
+    "uimage2DArray",
+    "image1DShadow",
+    "image2DShadow",
+    "image1DArrayShadow",
+    "image2DArrayShadow",
+    "imageBuffer",
+    "iimageBuffer",
+    "uimageBuffer",
+    "sampler1D",
+    "sampler1DShadow",
+    "sampler1DArray",
+    "sampler1DArrayShadow",
+    "isampler1D",
+    "isampler1DArray",
+    "usampler1D",
+    "usampler1DArray",
+    "sampler2DRect",
+    "sampler2DRectShadow",
+    "isampler2DRect",
+    "usampler2DRect",
+    "samplerBuffer",
+    "isamplerBuffer",
+    "usamplerBuffer",
+    "sampler2DMS",
+    "isampler2DMS",
+    "usampler2DMS",
+    "sampler2DMSArray",
+    "isampler2DMSArray",
+    "usampler2DMSArray",
+    "sizeof",
+    "cast",
+    "namespace",
+    "using",
 ];
 
 /// What a parser token is.
@@ -112,7 +196,7 @@ pub fn classify(tokens: Vec<PpToken>, diagnostics: &mut Vec<Diagnostic>) -> Vec<
         .filter(|t| t.kind != PpKind::Newline)
         .map(|t| {
             let tok = match t.kind {
-                PpKind::Ident => match Kw::from_str(&t.text) {
+                PpKind::Ident => match Kw::lookup(&t.text) {
                     Some(kw) => Tok::Kw(kw),
                     None if RESERVED.contains(&&*t.text) => Tok::Reserved(t.text.clone()),
                     None => Tok::Ident(t.text.clone()),
@@ -123,7 +207,12 @@ pub fn classify(tokens: Vec<PpToken>, diagnostics: &mut Vec<Diagnostic>) -> Vec<
                 PpKind::Eof => Tok::Eof,
                 PpKind::Newline => unreachable!("filtered"),
             };
-            Token { tok, span: t.span, text: t.text, from_macro: t.from_macro }
+            Token {
+                tok,
+                span: t.span,
+                text: t.text,
+                from_macro: t.from_macro,
+            }
         })
         .collect()
 }
@@ -145,7 +234,10 @@ pub fn number(text: &str, span: Span, diagnostics: &mut Vec<Diagnostic>) -> Tok 
             None => (hex, false),
         };
         if digits.is_empty() || !digits.bytes().all(|b| b.is_ascii_hexdigit()) {
-            return bad(diagnostics, "a hexadecimal integer has only digits 0-9, a-f after `0x`");
+            return bad(
+                diagnostics,
+                "a hexadecimal integer has only digits 0-9, a-f after `0x`",
+            );
         }
         return int_value(digits, 16, unsigned, text, span, diagnostics);
     }
@@ -178,7 +270,10 @@ pub fn number(text: &str, span: Span, diagnostics: &mut Vec<Diagnostic>) -> Tok 
         None => (lower.as_str(), false),
     };
     if digits.is_empty() || !digits.bytes().all(|b| b.is_ascii_digit()) {
-        return bad(diagnostics, "an integer literal has only digits and an optional `u`");
+        return bad(
+            diagnostics,
+            "an integer literal has only digits and an optional `u`",
+        );
     }
     if digits.len() > 1 && digits.starts_with('0') {
         if !digits.bytes().all(|b| (b'0'..=b'7').contains(&b)) {

@@ -266,7 +266,10 @@ impl Type {
 
     /// Whether the type is a scalar, vector or matrix (a "basic" non-opaque type).
     pub fn is_numeric_basic(&self) -> bool {
-        matches!(self, Type::Scalar(_) | Type::Vector(..) | Type::Matrix { .. })
+        matches!(
+            self,
+            Type::Scalar(_) | Type::Vector(..) | Type::Matrix { .. }
+        )
     }
 
     /// Whether the type is an array.
@@ -369,7 +372,10 @@ impl fmt::Display for TypeDisplay<'_> {
             Type::Matrix { cols, rows } if cols == rows => write!(f, "mat{cols}"),
             Type::Matrix { cols, rows } => write!(f, "mat{cols}x{rows}"),
             Type::Sampler(s) => f.write_str(s.name()),
-            Type::Struct(id) => match self.structs.get(id.0 as usize).and_then(|s| s.name.as_deref())
+            Type::Struct(id) => match self
+                .structs
+                .get(id.0 as usize)
+                .and_then(|s| s.name.as_deref())
             {
                 Some(name) => write!(f, "struct {name}"),
                 None => f.write_str("struct"),
@@ -623,7 +629,15 @@ mod tests {
 
     #[test]
     fn displays_glsl_names() {
-        assert_eq!(Type::Matrix { cols: 3, rows: 2 }.display(&[]).to_string(), "mat3x2");
-        assert_eq!(Type::Array(Box::new(Type::Vector(ScalarKind::Uint, 3)), 4).display(&[]).to_string(), "uvec3[4]");
+        assert_eq!(
+            Type::Matrix { cols: 3, rows: 2 }.display(&[]).to_string(),
+            "mat3x2"
+        );
+        assert_eq!(
+            Type::Array(Box::new(Type::Vector(ScalarKind::Uint, 3)), 4)
+                .display(&[])
+                .to_string(),
+            "uvec3[4]"
+        );
     }
 }

@@ -6,7 +6,9 @@
 use std::collections::BTreeSet;
 
 use crate::builtins::BuiltinVar;
-use crate::hir::{Cond, Expr, ExprKind, Function, GlobalId, LocalId, Module, Scalar, Stmt, StmtKind};
+use crate::hir::{
+    Cond, Expr, ExprKind, Function, GlobalId, LocalId, Module, Scalar, Stmt, StmtKind,
+};
 
 #[derive(Default)]
 struct Uses {
@@ -35,7 +37,7 @@ pub fn mark(m: &mut Module) {
     let mut stack = vec![entry];
     fn_used[entry] = true;
     while let Some(f) = stack.pop() {
-        let uses = analyze(&m.functions[f], m);
+        let uses = analyze(&m.functions[f]);
         for &c in &uses.calls {
             if !fn_used[c] {
                 fn_used[c] = true;
@@ -70,12 +72,16 @@ struct Walker {
     stores: Vec<Store>,
 }
 
-fn analyze(f: &Function, m: &Module) -> Uses {
-    let mut w = Walker { live: Uses::default(), stores: Vec::new() };
-    w.block(&f.body, m);
+fn analyze(f: &Function) -> Uses {
+    let mut w = Walker {
+        live: Uses::default(),
+        stores: Vec::new(),
+    };
+    w.block(&f.body);
     // Locals read in live code make the stores to them live, which may read more locals: a
     // worklist over locals, each store visited once.
-    let mut stores_of: std::collections::HashMap<LocalId, Vec<usize>> = std::collections::HashMap::new();
+    let mut stores_of: std::collections::HashMap<LocalId, Vec<usize>> =
+        std::collections::HashMap::new();
     for (i, st) in w.stores.iter().enumerate() {
         stores_of.entry(st.target).or_default().push(i);
     }
@@ -123,45 +129,55 @@ fn store_target(e: &Expr) -> Option<LocalId> {
 
 impl Walker {
     /// Walks statements; returns true when the block ends control flow (later code is dead).
-    fn block(&mut self, stmts: &[Stmt], m: &Module) -> bool {
+    fn block(&mut self, stmts: &[Stmt]) -> bool {
         for s in stmts {
-            if self.stmt(s, m) {
+            if self.stmt(s) {
                 return true;
             }
         }
         false
     }
 
-    fn stmt(&mut self, s: &Stmt, m: &Module) -> bool {
+    fn stmt(&mut self, s: &Stmt) -> bool {
         match &s.kind {
-            StmtKind::Expr(e) => self.effect(e, m),
+            StmtKind::Expr(e) => self.effect(e),
             StmtKind::Local(l, init) => {
                 if let Some(e) = init {
                     let mut u = Uses::default();
-                    expr(e, &mut u, m);
-                    self.stores.push(Store { target: *l, uses: u });
+                    expr(e, &mut u);
+                    self.stores.push(Store {
+                        target: *l,
+                        uses: u,
+                    });
                 }
             }
-            StmtKind::Block(b) => return self.block(b, m),
+            StmtKind::Block(b) => return self.block(b),
             StmtKind::If(c, t, e) => match const_bool(c) {
-                Some(true) => return self.block(t, m),
-                Some(false) => return self.block(e, m),
+                Some(true) => return self.block(t),
+                Some(false) => return self.block(e),
                 None => {
-                    expr(c, &mut self.live, m);
-                    let a = self.block(t, m);
-                    let b = self.block(e, m);
+                    expr(c, &mut self.live);
+                    let a = self.block(t);
+                    let b = self.block(e);
                     return a && b;
                 }
             },
-            StmtKind::Loop { init, cond, step, body, do_while } => {
-                self.block(init, m);
-                let never = matches!(cond.as_deref(), Some(Cond::Expr(c)) if const_bool(c) == Some(false));
+            StmtKind::Loop {
+                init,
+                cond,
+                step,
+                body,
+                do_while,
+            } => {
+                self.block(init);
+                let never =
+                    matches!(cond.as_deref(), Some(Cond::Expr(c)) if const_bool(c) == Some(false));
                 if let Some(c) = cond {
                     match &**c {
-                        Cond::Expr(e) => expr(e, &mut self.live, m),
+                        Cond::Expr(e) => expr(e, &mut self.live),
                         Cond::Decl(l, e) => {
                             self.live.locals.insert(*l);
-                            expr(e, &mut self.live, m);
+                            expr(e, &mut self.live);
                         }
                     }
                 }
@@ -169,19 +185,19 @@ impl Walker {
                     return false;
                 }
                 if let Some(st) = step {
-                    self.effect(st, m);
+                    self.effect(st);
                 }
-                self.block(body, m);
+                self.block(body);
             }
             StmtKind::Switch(sel, cases) => {
-                expr(sel, &mut self.live, m);
+                expr(sel, &mut self.live);
                 for c in cases {
-                    self.block(&c.body, m);
+                    self.block(&c.body);
                 }
             }
             StmtKind::Return(v) => {
                 if let Some(e) = v {
-                    expr(e, &mut self.live, m);
+                    expr(e, &mut self.live);
                 }
                 return true;
             }
@@ -192,51 +208,51 @@ impl Walker {
     }
 
     /// An expression statement: a store to a local is only live if the local is read.
-    fn effect(&mut self, e: &Expr, m: &Module) {
+    fn effect(&mut self, e: &Expr) {
         match &e.kind {
             ExprKind::Assign(op, lhs, rhs) => {
                 if let Some(t) = store_target(lhs) {
                     let mut u = Uses::default();
-                    expr(rhs, &mut u, m);
+                    expr(rhs, &mut u);
                     // Indices in the target are reads too.
-                    target_reads(lhs, &mut u, m);
+                    target_reads(lhs, &mut u);
                     if op.is_some() {
                         u.locals.insert(t);
                     }
                     self.stores.push(Store { target: t, uses: u });
                     return;
                 }
-                expr(e, &mut self.live, m);
+                expr(e, &mut self.live);
             }
             ExprKind::IncDec(_, _, target) if store_target(target).is_some() => {
                 let t = store_target(target).expect("checked");
                 let mut u = Uses::default();
-                target_reads(target, &mut u, m);
+                target_reads(target, &mut u);
                 self.stores.push(Store { target: t, uses: u });
             }
             ExprKind::Comma(a, b) => {
-                self.effect(a, m);
-                self.effect(b, m);
+                self.effect(a);
+                self.effect(b);
             }
-            _ => expr(e, &mut self.live, m),
+            _ => expr(e, &mut self.live),
         }
     }
 }
 
 /// Reads inside an assignment target (`a[i] = …` reads `i`).
-fn target_reads(e: &Expr, u: &mut Uses, m: &Module) {
+fn target_reads(e: &Expr, u: &mut Uses) {
     match &e.kind {
         ExprKind::Index(b, i) => {
-            target_reads(b, u, m);
-            expr(i, u, m);
+            target_reads(b, u);
+            expr(i, u);
         }
-        ExprKind::Member(b, _) | ExprKind::Swizzle(b, _) => target_reads(b, u, m),
+        ExprKind::Member(b, _) | ExprKind::Swizzle(b, _) => target_reads(b, u),
         _ => {}
     }
 }
 
 /// Collects everything an expression reads or calls.
-fn expr(e: &Expr, u: &mut Uses, m: &Module) {
+fn expr(e: &Expr, u: &mut Uses) {
     match &e.kind {
         ExprKind::Const(_) => {}
         ExprKind::Local(l) => {
@@ -249,33 +265,37 @@ fn expr(e: &Expr, u: &mut Uses, m: &Module) {
         ExprKind::BuiltinVar(v) => {
             u.builtins.insert(*v);
         }
-        ExprKind::Unary(_, a) | ExprKind::IncDec(_, _, a) | ExprKind::Member(a, _) | ExprKind::Swizzle(a, _) => {
-            expr(a, u, m)
-        }
-        ExprKind::Binary(_, a, b) | ExprKind::Assign(_, a, b) | ExprKind::Comma(a, b) | ExprKind::Index(a, b) => {
-            expr(a, u, m);
-            expr(b, u, m);
+        ExprKind::Unary(_, a)
+        | ExprKind::IncDec(_, _, a)
+        | ExprKind::Member(a, _)
+        | ExprKind::Swizzle(a, _) => expr(a, u),
+        ExprKind::Binary(_, a, b)
+        | ExprKind::Assign(_, a, b)
+        | ExprKind::Comma(a, b)
+        | ExprKind::Index(a, b) => {
+            expr(a, u);
+            expr(b, u);
         }
         ExprKind::Select(c, a, b) => {
-            expr(c, u, m);
-            expr(a, u, m);
-            expr(b, u, m);
+            expr(c, u);
+            expr(a, u);
+            expr(b, u);
         }
         ExprKind::Call(f, args) => {
             u.calls.insert(*f);
             for a in args {
-                expr(a, u, m);
+                expr(a, u);
             }
         }
         ExprKind::Builtin(_, args) | ExprKind::Construct(args) => {
             for a in args {
-                expr(a, u, m);
+                expr(a, u);
             }
         }
         ExprKind::BlockMember(b, idx, _) => {
             u.blocks.insert(*b);
             if let Some(i) = idx {
-                expr(i, u, m);
+                expr(i, u);
             }
         }
     }

@@ -42,7 +42,11 @@ fn compare_program(p: &Program, expected: &Value) -> Vec<String> {
     let mut diffs = Vec::new();
     let ok = expected["ok"].as_bool().unwrap_or(false);
     if p.ok != ok {
-        diffs.push(format!("link ok: essl {} vs WebGL {ok}; essl log: {}", p.ok, p.log.trim()));
+        diffs.push(format!(
+            "link ok: essl {} vs WebGL {ok}; essl log: {}",
+            p.ok,
+            p.log.trim()
+        ));
         return diffs;
     }
     if !ok {
@@ -51,7 +55,9 @@ fn compare_program(p: &Program, expected: &Value) -> Vec<String> {
     let gl_name = |v: &Value| -> String {
         match v {
             Value::String(s) => s.clone(),
-            Value::Number(n) => essl::types::GlType::from_u32(n.as_u64().unwrap_or(0) as u32).map(|t| t.name().to_string()).unwrap_or_default(),
+            Value::Number(n) => essl::types::GlType::from_u32(n.as_u64().unwrap_or(0) as u32)
+                .map(|t| t.name().to_string())
+                .unwrap_or_default(),
             _ => String::new(),
         }
     };
@@ -59,9 +65,20 @@ fn compare_program(p: &Program, expected: &Value) -> Vec<String> {
         .as_array()
         .unwrap()
         .iter()
-        .map(|u| format!("{} {} {}", u["name"].as_str().unwrap(), gl_name(&u["type"]), u["size"]))
+        .map(|u| {
+            format!(
+                "{} {} {}",
+                u["name"].as_str().unwrap(),
+                gl_name(&u["type"]),
+                u["size"]
+            )
+        })
         .collect();
-    let got_u: Vec<String> = p.uniforms.iter().map(|u| format!("{} {} {}", u.name, u.ty.name(), u.size)).collect();
+    let got_u: Vec<String> = p
+        .uniforms
+        .iter()
+        .map(|u| format!("{} {} {}", u.name, u.ty.name(), u.size))
+        .collect();
     if want_u != got_u {
         diffs.push(format!("uniforms:\n  WebGL {want_u:?}\n  essl  {got_u:?}"));
     }
@@ -69,18 +86,33 @@ fn compare_program(p: &Program, expected: &Value) -> Vec<String> {
         .as_array()
         .unwrap()
         .iter()
-        .map(|a| format!("{} {} {} @{}", a["name"].as_str().unwrap(), gl_name(&a["type"]), a["size"], a["location"]))
+        .map(|a| {
+            format!(
+                "{} {} {} @{}",
+                a["name"].as_str().unwrap(),
+                gl_name(&a["type"]),
+                a["size"],
+                a["location"]
+            )
+        })
         .collect();
-    let got_a: Vec<String> = p.attributes.iter().map(|a| format!("{} {} {} @{}", a.name, a.ty.name(), a.size, a.location)).collect();
+    let got_a: Vec<String> = p
+        .attributes
+        .iter()
+        .map(|a| format!("{} {} {} @{}", a.name, a.ty.name(), a.size, a.location))
+        .collect();
     if want_a != got_a {
-        diffs.push(format!("attributes:\n  WebGL {want_a:?}\n  essl  {got_a:?}"));
+        diffs.push(format!(
+            "attributes:\n  WebGL {want_a:?}\n  essl  {got_a:?}"
+        ));
     }
     diffs
 }
 
 /// Checks an oracle file produced by `webgl2-oracle.py` over a folder of NAME.vert/NAME.frag.
 fn check_oracle_folder(json: &str) -> Vec<String> {
-    let data: Value = serde_json::from_str(&std::fs::read_to_string(repo().join(json)).unwrap()).unwrap();
+    let data: Value =
+        serde_json::from_str(&std::fs::read_to_string(repo().join(json)).unwrap()).unwrap();
     let mut failures = Vec::new();
     let mut shaders = std::collections::HashMap::new();
     for (file, expect) in data["compile"].as_object().unwrap() {
@@ -88,13 +120,27 @@ fn check_oracle_folder(json: &str) -> Vec<String> {
         let sh = compile_str(file, &src, stage_of(file));
         let ok = expect["ok"].as_bool().unwrap();
         if sh.ok() != ok {
-            let first = sh.diagnostics.iter().find(|d| d.is_error()).map(|d| d.message.clone()).unwrap_or_default();
-            failures.push(format!("{file}: compile ok essl {} vs WebGL {ok} ({}) {first}", sh.ok(), expect["log"].as_str().unwrap_or("").trim()));
+            let first = sh
+                .diagnostics
+                .iter()
+                .find(|d| d.is_error())
+                .map(|d| d.message.clone())
+                .unwrap_or_default();
+            failures.push(format!(
+                "{file}: compile ok essl {} vs WebGL {ok} ({}) {first}",
+                sh.ok(),
+                expect["log"].as_str().unwrap_or("").trim()
+            ));
         }
         shaders.insert(file.clone(), sh);
     }
     for (base, expect) in data["link"].as_object().unwrap() {
-        let (Some(vs), Some(fs)) = (shaders.get(&format!("{base}.vert")), shaders.get(&format!("{base}.frag"))) else { continue };
+        let (Some(vs), Some(fs)) = (
+            shaders.get(&format!("{base}.vert")),
+            shaders.get(&format!("{base}.frag")),
+        ) else {
+            continue;
+        };
         let p = link(vs, fs);
         for d in compare_program(&p, expect) {
             failures.push(format!("{base}: {d}"));
@@ -106,7 +152,12 @@ fn check_oracle_folder(json: &str) -> Vec<String> {
 #[test]
 fn shaders_glsl_agree_with_webgl2() {
     let failures = check_oracle_folder("tests/oracle/shaders-glsl.json");
-    assert!(failures.is_empty(), "{} disagreements:\n{}", failures.len(), failures.join("\n"));
+    assert!(
+        failures.is_empty(),
+        "{} disagreements:\n{}",
+        failures.len(),
+        failures.join("\n")
+    );
 }
 
 /// Probes where essl knowingly differs from WebGL2: shaders without `#version 300 es` are
@@ -118,41 +169,74 @@ const KNOWN_GAPS: &[&str] = &["probes/c-no-version", "probes/l-version-mismatch-
 #[test]
 fn probes_agree_with_webgl2() {
     let failures = check_oracle_folder("tests/oracle/probes.json");
-    let (known, unexpected): (Vec<_>, Vec<_>) =
-        failures.iter().partition(|f| KNOWN_GAPS.iter().any(|k| f.contains(k)));
-    assert!(unexpected.is_empty(), "{} disagreements:\n{}", unexpected.len(), unexpected.iter().map(|s| s.as_str()).collect::<Vec<_>>().join("\n"));
+    let (known, unexpected): (Vec<_>, Vec<_>) = failures
+        .iter()
+        .partition(|f| KNOWN_GAPS.iter().any(|k| f.contains(k)));
+    assert!(
+        unexpected.is_empty(),
+        "{} disagreements:\n{}",
+        unexpected.len(),
+        unexpected
+            .iter()
+            .map(|s| s.as_str())
+            .collect::<Vec<_>>()
+            .join("\n")
+    );
     for gap in KNOWN_GAPS {
-        assert!(known.iter().any(|f| f.contains(gap)), "known gap `{gap}` no longer differs: remove it from KNOWN_GAPS");
+        assert!(
+            known.iter().any(|f| f.contains(gap)),
+            "known gap `{gap}` no longer differs: remove it from KNOWN_GAPS"
+        );
     }
 }
 
 #[test]
 fn webgl2fundamentals_programs_agree_with_webgl2() {
     let Some(shared) = shared() else { return };
-    let corpus: Vec<Value> = std::fs::read_to_string(shared.join("corpora/webgl2fundamentals_shaders.jsonl"))
-        .unwrap()
-        .lines()
-        .map(|l| serde_json::from_str(l).unwrap())
-        .collect();
-    let data: Value = serde_json::from_str(&std::fs::read_to_string(repo().join("tests/oracle/webgl2fundamentals.json")).unwrap()).unwrap();
+    let corpus: Vec<Value> =
+        std::fs::read_to_string(shared.join("corpora/webgl2fundamentals_shaders.jsonl"))
+            .unwrap()
+            .lines()
+            .map(|l| serde_json::from_str(l).unwrap())
+            .collect();
+    let data: Value = serde_json::from_str(
+        &std::fs::read_to_string(repo().join("tests/oracle/webgl2fundamentals.json")).unwrap(),
+    )
+    .unwrap();
     let mut failures = Vec::new();
     let mut compiled = std::collections::HashMap::new();
     for (idx, expect) in data["shaders"].as_object().unwrap() {
         let i: usize = idx.parse().unwrap();
         let entry = &corpus[i];
-        let stage = if entry["stage"] == "vertex" { Stage::Vertex } else { Stage::Fragment };
+        let stage = if entry["stage"] == "vertex" {
+            Stage::Vertex
+        } else {
+            Stage::Fragment
+        };
         let sh = compile_str(&format!("{i}"), entry["source"].as_str().unwrap(), stage);
         if sh.ok() != expect["ok"].as_bool().unwrap() {
-            failures.push(format!("shader {i} ({}): compile ok essl {}", entry["file"], sh.ok()));
+            failures.push(format!(
+                "shader {i} ({}): compile ok essl {}",
+                entry["file"],
+                sh.ok()
+            ));
         }
         compiled.insert(i, sh);
     }
     for p in data["programs"].as_array().unwrap() {
-        let (v, f) = (p["vertex"].as_u64().unwrap() as usize, p["fragment"].as_u64().unwrap() as usize);
+        let (v, f) = (
+            p["vertex"].as_u64().unwrap() as usize,
+            p["fragment"].as_u64().unwrap() as usize,
+        );
         let prog = link(&compiled[&v], &compiled[&f]);
         for d in compare_program(&prog, p) {
             failures.push(format!("program {v}+{f} ({}): {d}", p["file"]));
         }
     }
-    assert!(failures.is_empty(), "{} disagreements:\n{}", failures.len(), failures.join("\n"));
+    assert!(
+        failures.is_empty(),
+        "{} disagreements:\n{}",
+        failures.len(),
+        failures.join("\n")
+    );
 }

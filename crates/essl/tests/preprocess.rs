@@ -29,7 +29,11 @@ fn v(body: &str) -> String {
 
 /// The output tokens' texts, without `Eof`.
 fn texts(p: &Preprocessed) -> Vec<String> {
-    p.tokens.iter().filter(|t| t.kind != PpKind::Eof).map(|t| t.text.to_string()).collect()
+    p.tokens
+        .iter()
+        .filter(|t| t.kind != PpKind::Eof)
+        .map(|t| t.text.to_string())
+        .collect()
 }
 
 /// The output as one string, tokens separated by single spaces.
@@ -41,11 +45,19 @@ fn out(src: &str) -> String {
 }
 
 fn errors(p: &Preprocessed) -> Vec<&'static str> {
-    p.diagnostics.iter().filter(|d| d.is_error()).map(|d| d.code).collect()
+    p.diagnostics
+        .iter()
+        .filter(|d| d.is_error())
+        .map(|d| d.code)
+        .collect()
 }
 
 fn warnings(p: &Preprocessed) -> Vec<&'static str> {
-    p.diagnostics.iter().filter(|d| d.severity == Severity::Warning).map(|d| d.code).collect()
+    p.diagnostics
+        .iter()
+        .filter(|d| d.severity == Severity::Warning)
+        .map(|d| d.code)
+        .collect()
 }
 
 /// The only error of a shader (body after `#version 300 es`), which must have `code`.
@@ -70,7 +82,9 @@ fn at(f: &SourceFile, d: &Diagnostic) -> String {
 // Corpora
 
 fn corpus(name: &str) -> Option<Vec<serde_json::Value>> {
-    let path = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../../../shared/corpora").join(name);
+    let path = PathBuf::from(env!("CARGO_MANIFEST_DIR"))
+        .join("../../../shared/corpora")
+        .join(name);
     match std::fs::read_to_string(&path) {
         Ok(text) => Some(
             text.lines()
@@ -90,27 +104,37 @@ fn corpus(name: &str) -> Option<Vec<serde_json::Value>> {
 
 /// Error diagnostics of one shader source.
 fn shader_errors(src: &str, stage: Stage) -> Vec<Diagnostic> {
-    let options = PreprocessOptions { stage: Some(stage), ..Default::default() };
+    let options = PreprocessOptions {
+        stage: Some(stage),
+        ..Default::default()
+    };
     let (_, p) = run_with(src, &options);
     p.diagnostics.into_iter().filter(|d| d.is_error()).collect()
 }
 
 #[test]
 fn deqp_preprocessor_cases() {
-    let Some(rows) = corpus("deqp_gles3.jsonl") else { return };
+    let Some(rows) = corpus("deqp_gles3.jsonl") else {
+        return;
+    };
     let mut pass = 0;
     let mut pass_bad = Vec::new();
     let mut fail = 0;
     let mut rejected = 0;
     let mut not_rejected = Vec::new();
-    for row in
-        rows.iter().filter(|r| r["file"].as_str().unwrap_or("").ends_with("preprocessor.test"))
-    {
+    for row in rows.iter().filter(|r| {
+        r["file"]
+            .as_str()
+            .unwrap_or("")
+            .ends_with("preprocessor.test")
+    }) {
         let name = row["name"].as_str().unwrap_or("?");
         let expect = row["expect"].as_str().unwrap_or("?");
         let mut errs = Vec::new();
-        for (key, stage) in [("vertex_source", Stage::Vertex), ("fragment_source", Stage::Fragment)]
-        {
+        for (key, stage) in [
+            ("vertex_source", Stage::Vertex),
+            ("fragment_source", Stage::Fragment),
+        ] {
             if let Some(src) = row[key].as_str() {
                 errs.extend(
                     shader_errors(src, stage)
@@ -137,7 +161,10 @@ fn deqp_preprocessor_cases() {
             _ => {}
         }
     }
-    println!("dEQP preprocessor.test: pass cases clean {}/{pass}", pass - pass_bad.len());
+    println!(
+        "dEQP preprocessor.test: pass cases clean {}/{pass}",
+        pass - pass_bad.len()
+    );
     println!(
         "dEQP preprocessor.test: compile_fail cases rejected by the preprocessor {rejected}/{fail}"
     );
@@ -145,14 +172,28 @@ fn deqp_preprocessor_cases() {
         println!("  not rejected (later stages' job): {n}");
     }
     assert!(pass > 0, "no preprocessor.test cases found");
-    assert!(pass_bad.is_empty(), "pass cases with preprocessor errors:\n{}", pass_bad.join("\n"));
+    assert!(
+        pass_bad.is_empty(),
+        "pass cases with preprocessor errors:\n{}",
+        pass_bad.join("\n")
+    );
 }
 
 #[test]
 fn webgl_conformance_preprocessor_cases() {
-    let Some(rows) = corpus("webgl_conformance_es300.jsonl") else { return };
-    let re =
-        ["preprocess", "macro", "version", "line", "extension", "pragma", "invariant", "define"];
+    let Some(rows) = corpus("webgl_conformance_es300.jsonl") else {
+        return;
+    };
+    let re = [
+        "preprocess",
+        "macro",
+        "version",
+        "line",
+        "extension",
+        "pragma",
+        "invariant",
+        "define",
+    ];
     let mut must_pass_bad = Vec::new();
     let (mut fails, mut rejected) = (0, 0);
     for row in &rows {
@@ -198,11 +239,17 @@ fn webgl_conformance_preprocessor_cases() {
 #[test]
 fn object_and_function_like_macros_expand() {
     assert_eq!(out("#define A 1.0\nfloat x = A;"), "float x = 1.0 ;");
-    assert_eq!(out("#define F(a, b) (a - b)\nfloat x = F(3.0, 2.0);"), "float x = ( 3.0 - 2.0 ) ;");
+    assert_eq!(
+        out("#define F(a, b) (a - b)\nfloat x = F(3.0, 2.0);"),
+        "float x = ( 3.0 - 2.0 ) ;"
+    );
     assert_eq!(out("#define E\nE x E;"), "x ;");
     assert_eq!(out("#define F(a)\nF(1) x;"), "x ;");
     assert_eq!(out("#define Z() 7\nZ() Z( );"), "7 7 ;");
-    assert_eq!(out("#define FOO(a, b) (1 a 9) b 2\nFOO(+, *)"), "( 1 + 9 ) * 2");
+    assert_eq!(
+        out("#define FOO(a, b) (1 a 9) b 2\nFOO(+, *)"),
+        "( 1 + 9 ) * 2"
+    );
 }
 
 #[test]
@@ -223,7 +270,10 @@ fn expanded_tokens_carry_the_invocation_span() {
         assert!(t.from_macro);
         assert_eq!(f.slice(t.span), "F(y,\n  2.0)");
     }
-    assert_eq!(toks[6..9].iter().map(|t| &*t.text).collect::<Vec<_>>(), ["y", "*", "2.0"]);
+    assert_eq!(
+        toks[6..9].iter().map(|t| &*t.text).collect::<Vec<_>>(),
+        ["y", "*", "2.0"]
+    );
 }
 
 #[test]
@@ -231,19 +281,27 @@ fn nested_expansions_take_the_outermost_span() {
     let src = v("#define B 2.0\n#define A (B)\nA");
     let (f, p) = run(&src);
     assert_eq!(texts(&p), ["(", "2.0", ")"]);
-    assert!(p.tokens[..3].iter().all(|t| f.slice(t.span) == "A" && t.from_macro));
+    assert!(p.tokens[..3]
+        .iter()
+        .all(|t| f.slice(t.span) == "A" && t.from_macro));
 }
 
 #[test]
 fn function_like_name_without_parenthesis_is_an_identifier() {
-    assert_eq!(out("#define F(x) x\nfloat F; F + F(2);"), "float F ; F + 2 ;");
+    assert_eq!(
+        out("#define F(x) x\nfloat F; F + F(2);"),
+        "float F ; F + 2 ;"
+    );
     // The parenthesis may come on a later line.
     assert_eq!(out("#define F(x) [x]\nF\n\n(1)"), "[ 1 ]");
 }
 
 #[test]
 fn arguments_span_lines_and_nest() {
-    assert_eq!(out("#define F(a, b) a|b\nF((1, 2),\n (3, (4)))"), "( 1 , 2 ) | ( 3 , ( 4 ) )");
+    assert_eq!(
+        out("#define F(a, b) a|b\nF((1, 2),\n (3, (4)))"),
+        "( 1 , 2 ) | ( 3 , ( 4 ) )"
+    );
     // Brackets do not group: only parentheses do.
     the_error("#define F(a, b) a|b\nF(x[1, 2], y)", "macro-argument-count");
 }
@@ -259,7 +317,10 @@ fn arguments_are_expanded_first_and_rescanned() {
         "8.0 / 4.0 * ( 8.0 / 4.0 - 2.0 ) * 2.0 * 2.0 - 0.75 * 2.0 - 40.0 * ( 40.0 - 10.0 * 5.0 - 3.0 )"
     );
     // semantic.correct_order: the argument `A` expands before substitution.
-    assert_eq!(out("#define FUNC(A) A\n#define A 2.0\nFUNC(A - 1.0)"), "2.0 - 1.0");
+    assert_eq!(
+        out("#define FUNC(A) A\n#define A 2.0\nFUNC(A - 1.0)"),
+        "2.0 - 1.0"
+    );
     // A parameter shadows a macro of the same name.
     assert_eq!(
         out("#define VALUE 1.0\n#define F(VALUE, B) (VALUE-B)\nF(3.0, 2.0)"),
@@ -271,16 +332,25 @@ fn arguments_are_expanded_first_and_rescanned() {
 fn a_macro_is_not_expanded_inside_its_own_expansion() {
     assert_eq!(out("#define AAA AAA\nAAA"), "AAA");
     assert_eq!(out("#define AAA BBB\n#define BBB AAA\nAAA BBB"), "AAA BBB");
-    assert_eq!(out("#define A (1.0+B)\n#define B (2.0+A)\nA"), "( 1.0 + ( 2.0 + A ) )");
+    assert_eq!(
+        out("#define A (1.0+B)\n#define B (2.0+A)\nA"),
+        "( 1.0 + ( 2.0 + A ) )"
+    );
     assert_eq!(out("#define F(a) F(a)\nF(1.0)"), "F ( 1.0 )");
-    assert_eq!(out("#define F(a, b) F(b, a)\nF(1.0, 2.0)"), "F ( 2.0 , 1.0 )");
+    assert_eq!(
+        out("#define F(a, b) F(b, a)\nF(1.0, 2.0)"),
+        "F ( 2.0 , 1.0 )"
+    );
     // An argument may use the macro itself: it is expanded before the call is.
     assert_eq!(out("#define F(a) (a)\nF(F(1))"), "( ( 1 ) )");
 }
 
 #[test]
 fn wrong_argument_count_is_an_error_at_the_call() {
-    let (f, d) = the_error("#define FUNC(a,b) a+b\nvec4(FUNC(1.0));", "macro-argument-count");
+    let (f, d) = the_error(
+        "#define FUNC(a,b) a+b\nvec4(FUNC(1.0));",
+        "macro-argument-count",
+    );
     assert_eq!(at(&f, &d), "FUNC(1.0)");
     assert_eq!(d.message, "macro `FUNC` takes 2 arguments, but 1 was given");
     assert_eq!(d.token, "FUNC");
@@ -288,7 +358,10 @@ fn wrong_argument_count_is_an_error_at_the_call() {
     assert_eq!(f.slice(d.secondary[0].span), "FUNC");
     let (_, d) = the_error("#define FUNC(a,b) a+b\nFUNC()", "macro-argument-count");
     assert!(d.message.contains("1 was given"), "{}", d.message);
-    the_error("#define FUNC(a,b) a+b\nFUNC(1.0, 2.0, 3.0)", "macro-argument-count");
+    the_error(
+        "#define FUNC(a,b) a+b\nFUNC(1.0, 2.0, 3.0)",
+        "macro-argument-count",
+    );
     the_error("#define Z() 1\nZ(2)", "macro-argument-count");
     // An empty argument is an argument.
     assert_eq!(out("#define F(a,b) [a|b]\nF(1,)"), "[ 1 | ]");
@@ -312,24 +385,48 @@ fn unterminated_call_is_an_error() {
 fn redefinition_must_be_identical() {
     // Identical (white space amount and comments do not matter, only its presence).
     assert!(errors(&run(&v("#define A 1\n#define A 1\n")).1).is_empty());
-    assert!(errors(&run(&v("#define F(a,b) (a  +b)\n#define F( a, b )(a\t/* c\n */ +b)\n")).1)
-        .is_empty());
-    let (f, d) =
-        the_error("# define VALUE (AAA - 1.0)\n# define VALUE (AAA- 1.0)\n", "macro-redefinition");
+    assert!(errors(
+        &run(&v(
+            "#define F(a,b) (a  +b)\n#define F( a, b )(a\t/* c\n */ +b)\n"
+        ))
+        .1
+    )
+    .is_empty());
+    let (f, d) = the_error(
+        "# define VALUE (AAA - 1.0)\n# define VALUE (AAA- 1.0)\n",
+        "macro-redefinition",
+    );
     assert_eq!(at(&f, &d), "VALUE");
     assert_eq!(f.line_col(d.span.start).line, 3);
     assert_eq!(f.line_col(d.secondary[0].span.start).line, 2);
-    for (a, b) in
-        [("(AAA - 1.0)", "(AAA - 1.1)"), ("(AAA - 1)", "(AAA - 0x1)"), ("(AAA - 1)", "(AAAA - 1)")]
-    {
-        the_error(&format!("#define V {a}\n#define V {b}\n"), "macro-redefinition");
+    for (a, b) in [
+        ("(AAA - 1.0)", "(AAA - 1.1)"),
+        ("(AAA - 1)", "(AAA - 0x1)"),
+        ("(AAA - 1)", "(AAAA - 1)"),
+    ] {
+        the_error(
+            &format!("#define V {a}\n#define V {b}\n"),
+            "macro-redefinition",
+        );
     }
-    the_error("#define F(a,b) a+b\n#define F(A,b) A+b\n", "macro-redefinition");
-    the_error("#define F(a,b) a+b\n#define F(a,b,c) a+b+c\n", "macro-redefinition");
-    the_error("#define F(a,b) a+b\n#define F(a,b) b+a\n", "macro-redefinition");
+    the_error(
+        "#define F(a,b) a+b\n#define F(A,b) A+b\n",
+        "macro-redefinition",
+    );
+    the_error(
+        "#define F(a,b) a+b\n#define F(a,b,c) a+b+c\n",
+        "macro-redefinition",
+    );
+    the_error(
+        "#define F(a,b) a+b\n#define F(a,b) b+a\n",
+        "macro-redefinition",
+    );
     the_error("#define F(a) a\n#define F a\n", "macro-redefinition");
     // `#undef` first makes it fine.
-    assert_eq!(out("#define F(a,b) a+b\n#undef F\n#define F(a,b) a-b\nF(3.0, 2.0)"), "3.0 - 2.0");
+    assert_eq!(
+        out("#define F(a,b) a+b\n#undef F\n#define F(a,b) a-b\nF(3.0, 2.0)"),
+        "3.0 - 2.0"
+    );
 }
 
 #[test]
@@ -376,10 +473,19 @@ fn undef_errors() {
 
 #[test]
 fn predefined_macros() {
-    assert_eq!(out("__VERSION__ GL_ES GL_FRAGMENT_PRECISION_HIGH __FILE__"), "300 1 1 0");
+    assert_eq!(
+        out("__VERSION__ GL_ES GL_FRAGMENT_PRECISION_HIGH __FILE__"),
+        "300 1 1 0"
+    );
     assert_eq!(out("#define AAA __VERSION__\nAAA"), "300");
     assert_eq!(out("#define AAA(A) A\nAAA(GL_ES)"), "1");
-    for name in ["__LINE__", "__FILE__", "__VERSION__", "GL_ES", "GL_FRAGMENT_PRECISION_HIGH"] {
+    for name in [
+        "__LINE__",
+        "__FILE__",
+        "__VERSION__",
+        "GL_ES",
+        "GL_FRAGMENT_PRECISION_HIGH",
+    ] {
         let (f, d) = the_error(&format!("#undef {name}\n"), "predefined-macro-undefined");
         assert_eq!(at(&f, &d), name);
         let (f, d) = the_error(&format!("#define {name} 2\n"), "predefined-macro-redefined");
@@ -392,7 +498,10 @@ fn predefined_macros() {
 fn line_macro_follows_webgl() {
     // dEQP predefined_macros.line_1 and line_2: arguments are expanded where they are written;
     // the replacement list of a function-like macro is at its closing parenthesis.
-    assert_eq!(out("const mediump int line = __LINE__;"), "const mediump int line = 2 ;");
+    assert_eq!(
+        out("const mediump int line = __LINE__;"),
+        "const mediump int line = 2 ;"
+    );
     let src = "precision mediump float;\nin highp vec4 dEQP_Position; out vec4 out0;\n#define BBB\t\t__LINE__, /*\n\t*/ __LINE__\n#define AAA(a,b) BBB, a, b\n\nvoid main()\n{\n\tout0 = vec4(AAA(__LINE__,\n\t\t__LINE__\n\t\t));\n}\n";
     let (_, p) = run(&v(src));
     assert!(errors(&p).is_empty());
@@ -507,9 +616,14 @@ fn if_expressions_evaluate_like_c() {
 
 #[test]
 fn if_short_circuits_errors() {
-    for e in
-        ["1 || AAA", "0 && AAA", "0 && 1 / 0", "1 || 1 % 0", "0 && (1 << 40)", "1 || (0 && X) || Y"]
-    {
+    for e in [
+        "1 || AAA",
+        "0 && AAA",
+        "0 && 1 / 0",
+        "1 || 1 % 0",
+        "0 && (1 << 40)",
+        "1 || (0 && X) || Y",
+    ] {
         holds(e);
     }
 }
@@ -533,7 +647,10 @@ fn undefined_identifier_in_if_is_an_error() {
     let (f, d) = the_error("#define M X\n#if M\n#endif\n", "undefined-macro-in-if");
     assert_eq!(at(&f, &d), "M");
     // Undefined after `#undef`.
-    the_error("#define A 2\n#undef A\n#if A\n#endif\n", "undefined-macro-in-if");
+    the_error(
+        "#define A 2\n#undef A\n#if A\n#endif\n",
+        "undefined-macro-in-if",
+    );
 }
 
 #[test]
@@ -554,7 +671,11 @@ fn if_expression_errors() {
         ("#if !\n", "invalid-expression", ""),
         ("#if 3+4+\n", "invalid-expression", ""),
         ("#if 4 * * 4\n", "invalid-expression", "*"),
-        ("#if !((~(+ ++1 - - - -1) >> 1) & 1)\n", "invalid-expression", "++"),
+        (
+            "#if !((~(+ ++1 - - - -1) >> 1) & 1)\n",
+            "invalid-expression",
+            "++",
+        ),
         ("#if 1 = 1\n", "extra-tokens", "= 1"),
         ("#if defined\n", "invalid-defined", "defined"),
         ("#if defined()\n", "invalid-defined", ")"),
@@ -591,9 +712,15 @@ fn defined_from_a_macro_is_an_error() {
 
 #[test]
 fn conditional_groups() {
-    assert_eq!(out("#if 0\na\n#elif 0\nb\n#elif 1\nc\n#else\nd\n#endif"), "c");
+    assert_eq!(
+        out("#if 0\na\n#elif 0\nb\n#elif 1\nc\n#else\nd\n#endif"),
+        "c"
+    );
     assert_eq!(out("#if 1\na\n#elif 1\nb\n#else\nc\n#endif"), "a");
-    assert_eq!(out("#ifdef GL_ES\na\n#endif\n#ifndef GL_ES\nb\n#endif"), "a");
+    assert_eq!(
+        out("#ifdef GL_ES\na\n#endif\n#ifndef GL_ES\nb\n#endif"),
+        "a"
+    );
     assert_eq!(out("#if 1\n#  if 0\na\n#  else\n#    if 0\nb\n#    elif 1\nc\n#    endif\n#  endif\n#endif"), "c");
     assert_eq!(out("#ifndef AAA\na\n#elif 1\nb\n#endif"), "a");
     // A taken group stops later `#elif` expressions from being evaluated.
@@ -626,7 +753,10 @@ fn conditional_structure_errors() {
         the_error(src, "unterminated-conditional");
     }
     let (_, p) = run(&v("#if 1\n#\tif 1\n"));
-    assert_eq!(errors(&p), ["unterminated-conditional", "unterminated-conditional"]);
+    assert_eq!(
+        errors(&p),
+        ["unterminated-conditional", "unterminated-conditional"]
+    );
     let (f, d) = the_error("#if 0\n#else\n#elif 1\n#endif\n", "elif-after-else");
     assert_eq!(at(&f, &d), "#elif");
     assert_eq!(f.slice(d.secondary[0].span), "#else");
@@ -643,7 +773,10 @@ fn conditional_structure_errors() {
         ("#if 1\n#else foobar 1.231\n#endif\n", "foobar 1.231"),
         ("#if 1\n#else\n#endif foobar\n", "foobar"),
         ("#ifdef FOOBAR foobar\n#endif\n", "foobar"),
-        ("#ifndef FOOBAR ,, +- << barbar\n#endif\n", ",, +- << barbar"),
+        (
+            "#ifndef FOOBAR ,, +- << barbar\n#endif\n",
+            ",, +- << barbar",
+        ),
     ] {
         let (f, d) = the_error(src, "extra-tokens");
         assert_eq!(at(&f, &d), extra);
@@ -673,12 +806,18 @@ fn null_and_unknown_directives() {
     let (f, d) = the_error("# 123\n", "unknown-directive");
     assert_eq!(at(&f, &d), "123");
     // Line continuations inside a directive name.
-    assert_eq!(out("#def\\\nine A(X) (-1.0*(X))\nA(2.0)"), "( - 1.0 * ( 2.0 ) )");
+    assert_eq!(
+        out("#def\\\nine A(X) (-1.0*(X))\nA(2.0)"),
+        "( - 1.0 * ( 2.0 ) )"
+    );
 }
 
 #[test]
 fn error_directive() {
-    let (f, d) = the_error("#define AAA asdf\n#error 1 * AAA /* comment */\n", "error-directive");
+    let (f, d) = the_error(
+        "#define AAA asdf\n#error 1 * AAA /* comment */\n",
+        "error-directive",
+    );
     assert_eq!(d.message, "1 * AAA");
     assert_eq!(at(&f, &d), "#error 1 * AAA");
     assert_eq!(d.token, "#error");
@@ -691,7 +830,10 @@ fn pragmas() {
     let (f, p) = run(&v("#pragma\n#pragma STDGL invariant(all)\n#pragma debug(off)\n#pragma optimize(on)\n#pragma **%\n#pragma whatever(1.0)\n"));
     assert!(p.diagnostics.is_empty(), "{:?}", p.diagnostics);
     assert!(p.invariant_all);
-    assert_eq!(f.slice(p.invariant_all_span.unwrap()), "#pragma STDGL invariant(all)");
+    assert_eq!(
+        f.slice(p.invariant_all_span.unwrap()),
+        "#pragma STDGL invariant(all)"
+    );
     // Not macro-expanded.
     let (_, p) = run(&v("#define off INVALID\n#pragma debug(off)\n"));
     assert!(p.diagnostics.is_empty());
@@ -699,12 +841,24 @@ fn pragmas() {
     let (_, p) = run(&v("#pragma debug(1.23)\n"));
     assert_eq!((errors(&p), warnings(&p)), (vec![], vec!["invalid-pragma"]));
     // Not in a fragment shader.
-    let opts = PreprocessOptions { stage: Some(Stage::Fragment), ..Default::default() };
+    let opts = PreprocessOptions {
+        stage: Some(Stage::Fragment),
+        ..Default::default()
+    };
     let (f, p) = run_with(&v("#pragma STDGL invariant(all)\n"), &opts);
     assert_eq!(errors(&p), ["invariant-all-in-fragment-shader"]);
-    assert_eq!(f.slice(p.diagnostics[0].span), "#pragma STDGL invariant(all)");
-    let opts = PreprocessOptions { stage: Some(Stage::Vertex), ..Default::default() };
-    assert!(run_with(&v("#pragma STDGL invariant(all)\n"), &opts).1.diagnostics.is_empty());
+    assert_eq!(
+        f.slice(p.diagnostics[0].span),
+        "#pragma STDGL invariant(all)"
+    );
+    let opts = PreprocessOptions {
+        stage: Some(Stage::Vertex),
+        ..Default::default()
+    };
+    assert!(run_with(&v("#pragma STDGL invariant(all)\n"), &opts)
+        .1
+        .diagnostics
+        .is_empty());
 }
 
 #[test]
@@ -721,11 +875,31 @@ fn extensions() {
         ("#extension all\n", "invalid-extension-directive", ""),
         ("#extension all ;\n", "invalid-extension-directive", ";"),
         ("#extension all :\n", "invalid-extension-behavior", ""),
-        ("#extension all : WARN\n", "invalid-extension-behavior", "WARN"),
-        ("#extension all : require\n", "extension-all-behavior", "require"),
-        ("#extension all : enable\n", "extension-all-behavior", "enable"),
-        ("#extension all* : warn\n", "invalid-extension-directive", "*"),
-        ("#extension all : war*n\n", "invalid-extension-behavior", "war"),
+        (
+            "#extension all : WARN\n",
+            "invalid-extension-behavior",
+            "WARN",
+        ),
+        (
+            "#extension all : require\n",
+            "extension-all-behavior",
+            "require",
+        ),
+        (
+            "#extension all : enable\n",
+            "extension-all-behavior",
+            "enable",
+        ),
+        (
+            "#extension all* : warn\n",
+            "invalid-extension-directive",
+            "*",
+        ),
+        (
+            "#extension all : war*n\n",
+            "invalid-extension-behavior",
+            "war",
+        ),
         ("#extension all : warn *\n", "extra-tokens", "*"),
         (
             "#extension GL_EXT_draw_buffers : require\n",
@@ -746,12 +920,20 @@ fn extensions() {
     // Unknown extensions: a warning unless required; WebGL 1 extensions built into ES 3.00 are
     // not defined as macros.
     let (_, p) = run(&v("#extension GL_OES_standard_derivatives : enable\n#ifdef GL_OES_standard_derivatives\nx\n#endif\n"));
-    assert_eq!((errors(&p), warnings(&p)), (vec![], vec!["extension-not-supported"]));
+    assert_eq!(
+        (errors(&p), warnings(&p)),
+        (vec![], vec!["extension-not-supported"])
+    );
     assert!(texts(&p).is_empty());
     // Supported ones are macros and may be required.
-    let opts =
-        PreprocessOptions { extensions: vec!["GL_OVR_multiview2".into()], ..Default::default() };
-    let (_, p) = run_with(&v("#extension GL_OVR_multiview2 : require\nGL_OVR_multiview2\n"), &opts);
+    let opts = PreprocessOptions {
+        extensions: vec!["GL_OVR_multiview2".into()],
+        ..Default::default()
+    };
+    let (_, p) = run_with(
+        &v("#extension GL_OVR_multiview2 : require\nGL_OVR_multiview2\n"),
+        &opts,
+    );
     assert!(p.diagnostics.is_empty());
     assert_eq!(texts(&p), ["1"]);
     assert_eq!(p.extensions[0].1, ExtensionBehavior::Require);
@@ -848,12 +1030,18 @@ fn reserved_macro_names() {
     assert_eq!(d.token, "GL_VALUE");
     for name in ["__VALUE__", "__FOO", "FOO__BAR"] {
         let (f, p) = run(&v(&format!("#define {name} 1\n{name}")));
-        assert_eq!((errors(&p), warnings(&p)), (vec![], vec!["double-underscore-macro-name"]));
+        assert_eq!(
+            (errors(&p), warnings(&p)),
+            (vec![], vec!["double-underscore-macro-name"])
+        );
         assert_eq!(f.slice(p.diagnostics[0].span), name);
         assert_eq!(texts(&p), ["1"]);
     }
     // A parameter named like a predefined macro is fine.
-    assert_eq!(out("#define FUNCTION(__LINE__, b) __LINE__+b\nFUNCTION(1.0, 2.0)"), "1.0 + 2.0");
+    assert_eq!(
+        out("#define FUNCTION(__LINE__, b) __LINE__+b\nFUNCTION(1.0, 2.0)"),
+        "1.0 + 2.0"
+    );
 }
 
 #[test]
@@ -873,7 +1061,10 @@ fn invalid_characters() {
     let (_, p) = run(&v("a @ b"));
     assert_eq!(texts(&p), ["a", "@", "b"]);
     // In a `#define`: only an error where the macro is used.
-    assert!(run(&v("#define A a \\ b\n#define QUOTE \"ab\"\n")).1.diagnostics.is_empty());
+    assert!(run(&v("#define A a \\ b\n#define QUOTE \"ab\"\n"))
+        .1
+        .diagnostics
+        .is_empty());
     let (f, d) = the_error("#define C int q3 = $ 1\nC;\n", "invalid-character");
     assert_eq!(at(&f, &d), "C");
     assert_eq!(f.slice(d.secondary[0].span), "$");
@@ -885,7 +1076,10 @@ fn invalid_characters() {
         essl::diagnostic::apply_fixes(f.text(), &p.diagnostics, Applicability::Certain);
     assert_eq!(fixed, "#version 300 es\nx");
     // In comments and skipped groups: fine.
-    assert!(run(&v("// $ @ \u{2019}\n/* ` */\n#if 0\n$\n#endif\n")).1.diagnostics.is_empty());
+    assert!(run(&v("// $ @ \u{2019}\n/* ` */\n#if 0\n$\n#endif\n"))
+        .1
+        .diagnostics
+        .is_empty());
 }
 
 #[test]
@@ -927,14 +1121,19 @@ fn defines_from_options() {
     assert_eq!(texts(&p), ["2", "(", "3", "*", "3", ")", "yes"]);
     // The shader may redefine them (warning) or undefine them.
     let (_, p) = run_with(&v("#define QUALITY 1\nQUALITY"), &opts);
-    assert_eq!((errors(&p), warnings(&p)), (vec![], vec!["option-macro-redefined"]));
+    assert_eq!(
+        (errors(&p), warnings(&p)),
+        (vec![], vec!["option-macro-redefined"])
+    );
     assert_eq!(texts(&p), ["1"]);
     let (_, p) = run_with(&v("#define QUALITY 2\n#undef QUALITY\nQUALITY"), &opts);
     assert!(p.diagnostics.is_empty());
     assert_eq!(texts(&p), ["QUALITY"]);
     // Bad ones are reported, with a note.
-    let opts =
-        PreprocessOptions { defines: vec![("GL_X".into(), "1".into())], ..Default::default() };
+    let opts = PreprocessOptions {
+        defines: vec![("GL_X".into(), "1".into())],
+        ..Default::default()
+    };
     let (_, p) = run_with(&v(""), &opts);
     assert_eq!(errors(&p), ["reserved-macro-name"]);
     assert!(p.diagnostics[0].notes.iter().any(|n| n.contains("options")));
@@ -955,8 +1154,9 @@ fn output_ends_with_one_eof_and_no_newlines() {
 
 #[test]
 fn errors_do_not_stop_the_run() {
-    let (_, p) =
-        run(&v("#defin A\n#define 1\n#if X\n#endif\n#undef __LINE__\n#error e\nok\n#if 1\n"));
+    let (_, p) = run(&v(
+        "#defin A\n#define 1\n#if X\n#endif\n#undef __LINE__\n#error e\nok\n#if 1\n",
+    ));
     assert_eq!(
         errors(&p),
         [
@@ -974,11 +1174,19 @@ fn errors_do_not_stop_the_run() {
 #[test]
 fn deep_nesting_of_conditionals() {
     let n = 10_000;
-    let src = v(&format!("{}x\n{}", "#if 1\n".repeat(n), "#endif\n".repeat(n)));
+    let src = v(&format!(
+        "{}x\n{}",
+        "#if 1\n".repeat(n),
+        "#endif\n".repeat(n)
+    ));
     let (_, p) = run(&src);
     assert!(p.diagnostics.is_empty());
     assert_eq!(texts(&p), ["x"]);
-    let src = v(&format!("{}x\n{}", "#if 0\n".repeat(n), "#endif\n".repeat(n)));
+    let src = v(&format!(
+        "{}x\n{}",
+        "#if 0\n".repeat(n),
+        "#endif\n".repeat(n)
+    ));
     assert!(texts(&run(&src).1).is_empty());
     // Unterminated: reported, but not 10,000 times.
     let (_, p) = run(&v(&"#if 1\n".repeat(n)));
@@ -1000,11 +1208,22 @@ fn long_macro_chains() {
 #[test]
 fn calls_nested_deep_in_arguments() {
     let n = 10_000;
-    let src = v(&format!("#define F(x) x\n{}1{}", "F(".repeat(n), ")".repeat(n)));
+    let src = v(&format!(
+        "#define F(x) x\n{}1{}",
+        "F(".repeat(n),
+        ")".repeat(n)
+    ));
     let (_, p) = run(&src);
     assert_eq!(errors(&p), ["macro-nesting-too-deep"]);
     // Up to the limit, calls nest as usual.
-    assert_eq!(out(&format!("#define F(x) x\n{}1{}", "F(".repeat(60), ")".repeat(60))), "1");
+    assert_eq!(
+        out(&format!(
+            "#define F(x) x\n{}1{}",
+            "F(".repeat(60),
+            ")".repeat(60)
+        )),
+        "1"
+    );
 }
 
 #[test]
@@ -1036,7 +1255,11 @@ fn large_input_is_linear() {
     let start = std::time::Instant::now();
     let (_, p) = run(&src);
     assert!(errors(&p).is_empty());
-    assert!(start.elapsed().as_secs() < 120, "took {:?}", start.elapsed());
+    assert!(
+        start.elapsed().as_secs() < 120,
+        "took {:?}",
+        start.elapsed()
+    );
 }
 
 mod never_panics {

@@ -22,7 +22,11 @@ fn every_truncation_of_real_shaders_is_handled() {
                     let sh = run(&text[..cut], stage);
                     // Every diagnostic points inside the text.
                     for d in &sh.diagnostics {
-                        assert!(d.span.end as usize <= cut, "span {:?} past the end at cut {cut}", d.span);
+                        assert!(
+                            d.span.end as usize <= cut,
+                            "span {:?} past the end at cut {cut}",
+                            d.span
+                        );
                     }
                 }
             }
@@ -36,15 +40,37 @@ fn ten_thousand_nested_parentheses_are_an_error() {
     let src = format!("#version 300 es\nprecision mediump float;\nout vec4 o;\nvoid main() {{ o = vec4({}1.0{}); }}\n", "(".repeat(10_000), ")".repeat(10_000));
     let sh = run(&src, Stage::Fragment);
     assert!(sh.diagnostics.iter().any(|d| d.code == "nesting-too-deep"));
-    assert!(sh.error_count() <= 3, "{:?}", sh.diagnostics.iter().map(|d| &d.message).collect::<Vec<_>>());
+    assert!(
+        sh.error_count() <= 3,
+        "{:?}",
+        sh.diagnostics
+            .iter()
+            .map(|d| &d.message)
+            .collect::<Vec<_>>()
+    );
 }
 
 #[test]
 fn deep_blocks_chains_and_macros_are_errors_not_stack_overflows() {
-    let blocks = format!("#version 300 es\nvoid main() {{ {} gl_Position = vec4(0.0); {} }}\n", "{".repeat(10_000), "}".repeat(10_000));
-    let sum = format!("#version 300 es\nvoid main() {{ float x = 1.0{}; gl_Position = vec4(x); }}\n", " + 1.0".repeat(50_000));
-    let fields = format!("#version 300 es\nvoid main() {{ vec4 v = vec4(1.0); float x = v{}; gl_Position = v; }}\n", ".xyzw.x".repeat(5_000));
-    let macros = format!("#version 300 es\n#define A0 1.0\n{}void main() {{ gl_Position = vec4(A9999); }}\n", (1..10_000).map(|i| format!("#define A{i} (A{} + 1.0)\n", i - 1)).collect::<String>());
+    let blocks = format!(
+        "#version 300 es\nvoid main() {{ {} gl_Position = vec4(0.0); {} }}\n",
+        "{".repeat(10_000),
+        "}".repeat(10_000)
+    );
+    let sum = format!(
+        "#version 300 es\nvoid main() {{ float x = 1.0{}; gl_Position = vec4(x); }}\n",
+        " + 1.0".repeat(50_000)
+    );
+    let fields = format!(
+        "#version 300 es\nvoid main() {{ vec4 v = vec4(1.0); float x = v{}; gl_Position = v; }}\n",
+        ".xyzw.x".repeat(5_000)
+    );
+    let macros = format!(
+        "#version 300 es\n#define A0 1.0\n{}void main() {{ gl_Position = vec4(A9999); }}\n",
+        (1..10_000)
+            .map(|i| format!("#define A{i} (A{} + 1.0)\n", i - 1))
+            .collect::<String>()
+    );
     for src in [blocks, sum, fields, macros] {
         let sh = run(&src, Stage::Vertex);
         assert!(!sh.ok());
@@ -53,9 +79,13 @@ fn deep_blocks_chains_and_macros_are_errors_not_stack_overflows() {
 
 #[test]
 fn a_ten_megabyte_file_is_handled() {
-    let mut src = String::from("#version 300 es\nprecision highp float;\nout vec4 o;\nvoid main() {\n  float x = 0.0;\n");
+    let mut src = String::from(
+        "#version 300 es\nprecision highp float;\nout vec4 o;\nvoid main() {\n  float x = 0.0;\n",
+    );
     while src.len() < 10 * 1024 * 1024 {
-        src.push_str("  // a long comment line that pads the file to ten megabytes, as generated code can\n");
+        src.push_str(
+            "  // a long comment line that pads the file to ten megabytes, as generated code can\n",
+        );
         src.push_str("  x += 1.0;\n");
     }
     src.push_str("  o = vec4(x);\n}\n");

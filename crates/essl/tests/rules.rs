@@ -38,12 +38,31 @@ fn check(stage: Stage, src: &str) {
         .iter()
         .map(|d| {
             let lc = sh.file.line_col(d.span.start);
-            (lc.line, lc.column, d.severity.as_str().to_string(), d.code.to_string())
+            (
+                lc.line,
+                lc.column,
+                d.severity.as_str().to_string(),
+                d.code.to_string(),
+            )
         })
         .collect();
-    let describe = |v: &[(u32, u32, String, String)]| v.iter().map(|(l, c, s, k)| format!("{l}:{c} {s} {k}")).collect::<Vec<_>>().join("\n  ");
-    let all: Vec<String> = sh.diagnostics.iter().map(|d| format!("{}: {}", d.code, d.message)).collect();
-    assert_eq!(describe(&got), describe(&want), "\nmessages:\n  {}", all.join("\n  "));
+    let describe = |v: &[(u32, u32, String, String)]| {
+        v.iter()
+            .map(|(l, c, s, k)| format!("{l}:{c} {s} {k}"))
+            .collect::<Vec<_>>()
+            .join("\n  ")
+    };
+    let all: Vec<String> = sh
+        .diagnostics
+        .iter()
+        .map(|d| format!("{}: {}", d.code, d.message))
+        .collect();
+    assert_eq!(
+        describe(&got),
+        describe(&want),
+        "\nmessages:\n  {}",
+        all.join("\n  ")
+    );
 }
 
 fn frag(body: &str) -> String {
@@ -92,11 +111,18 @@ fn accepts_defines_and_conditionals() {
 
 #[test]
 fn user_defines_come_from_the_api() {
-    let src = "#version 300 es\nprecision highp float;\nout vec4 o;\nvoid main() { o = vec4(LIGHTS); }\n";
-    let opts = essl::CompileOptions { defines: vec![("LIGHTS".into(), "3.0".into())] };
+    let src =
+        "#version 300 es\nprecision highp float;\nout vec4 o;\nvoid main() { o = vec4(LIGHTS); }\n";
+    let opts = essl::CompileOptions {
+        defines: vec![("LIGHTS".into(), "3.0".into())],
+    };
     let sh = compile(SourceFile::new("t", src), Stage::Fragment, &opts);
     assert!(sh.ok(), "{:?}", sh.diagnostics);
-    let without = compile(SourceFile::new("t", src), Stage::Fragment, &Default::default());
+    let without = compile(
+        SourceFile::new("t", src),
+        Stage::Fragment,
+        &Default::default(),
+    );
     assert_eq!(without.diagnostics[0].code, "undeclared-identifier");
 }
 
@@ -236,11 +262,21 @@ fn webgl_forbids_ternary_and_sequence_on_arrays() {
 #[test]
 fn no_break_spaces_are_one_error_per_line_and_harmless_in_comments() {
     let src = "#version 300 es\u{a0}\nprecision mediump float; // note\u{a0}\nout vec4 o;\nvoid main() {\n\u{a0}\u{a0}o = vec4(1.0);\n}\n";
-    let sh = compile(SourceFile::new("t", src), Stage::Fragment, &Default::default());
+    let sh = compile(
+        SourceFile::new("t", src),
+        Stage::Fragment,
+        &Default::default(),
+    );
     let got: Vec<(u32, &str, usize)> = sh
         .diagnostics
         .iter()
-        .map(|d| (sh.file.line_col(d.span.start).line, d.severity.as_str(), d.fix.as_ref().map_or(0, |f| f.edits.len())))
+        .map(|d| {
+            (
+                sh.file.line_col(d.span.start).line,
+                d.severity.as_str(),
+                d.fix.as_ref().map_or(0, |f| f.edits.len()),
+            )
+        })
         .collect();
     assert_eq!(got, [(1, "error", 1), (2, "warning", 1), (5, "error", 2)]);
 }

@@ -56,11 +56,18 @@ impl Checker<'_> {
                     && !matches!(q, Qualifier::Layout(_))
                     && !matches!(
                         (p, q),
-                        (Qualifier::Storage(Storage::Const), Qualifier::Storage(Storage::In))
+                        (
+                            Qualifier::Storage(Storage::Const),
+                            Qualifier::Storage(Storage::In)
+                        )
                     )
             });
             if dup {
-                let d = self.error("duplicate-qualifier", *s, format!("`{}` qualifier given twice", qualifier_text(q)));
+                let d = self.error(
+                    "duplicate-qualifier",
+                    *s,
+                    format!("`{}` qualifier given twice", qualifier_text(q)),
+                );
                 d.label = "a second qualifier of this kind".into();
                 d.fix = Some(Fix::suggested("remove it", *s, ""));
                 continue;
@@ -86,7 +93,11 @@ impl Checker<'_> {
 
     pub(super) fn declaration(&mut self, d: &ast::Declaration, global: bool) -> Vec<hir::Stmt> {
         match d {
-            ast::Declaration::Precision { precision, ty, span } => {
+            ast::Declaration::Precision {
+                precision,
+                ty,
+                span,
+            } => {
                 self.precision_statement(*precision, ty, *span);
                 Vec::new()
             }
@@ -94,9 +105,19 @@ impl Checker<'_> {
                 self.invariant_statement(names, *span);
                 Vec::new()
             }
-            ast::Declaration::Block { qualifiers, name, members, instance, span } => {
+            ast::Declaration::Block {
+                qualifiers,
+                name,
+                members,
+                instance,
+                span,
+            } => {
                 if !global {
-                    let d = self.error("block-not-global", *span, "uniform blocks can only be declared at global scope");
+                    let d = self.error(
+                        "block-not-global",
+                        *span,
+                        "uniform blocks can only be declared at global scope",
+                    );
                     d.label = "inside a function".into();
                 } else {
                     self.uniform_block(qualifiers, name, members, instance.as_ref(), *span);
@@ -106,13 +127,23 @@ impl Checker<'_> {
             ast::Declaration::Qualifiers { qualifiers, span } => {
                 self.check_qualifier_list(qualifiers);
                 let ok = global
-                    && qualifiers.iter().all(|(q, _)| matches!(q, Qualifier::Layout(_) | Qualifier::Storage(Storage::Uniform)))
-                    && qualifiers.iter().any(|(q, _)| matches!(q, Qualifier::Layout(_)));
+                    && qualifiers.iter().all(|(q, _)| {
+                        matches!(
+                            q,
+                            Qualifier::Layout(_) | Qualifier::Storage(Storage::Uniform)
+                        )
+                    })
+                    && qualifiers
+                        .iter()
+                        .any(|(q, _)| matches!(q, Qualifier::Layout(_)));
                 if ok {
                     for (q, _) in qualifiers {
                         if let Qualifier::Layout(items) = q {
                             for item in items {
-                                if !matches!(&*item.name.name, "std140" | "shared" | "packed" | "row_major" | "column_major") {
+                                if !matches!(
+                                    &*item.name.name,
+                                    "std140" | "shared" | "packed" | "row_major" | "column_major"
+                                ) {
                                     let d = self.error(
                                         "invalid-layout",
                                         item.name.span,
@@ -124,12 +155,20 @@ impl Checker<'_> {
                         }
                     }
                 } else {
-                    let d = self.error("invalid-declaration", *span, "a declaration with qualifiers but no type");
+                    let d = self.error(
+                        "invalid-declaration",
+                        *span,
+                        "a declaration with qualifiers but no type",
+                    );
                     d.label = "only `layout(...) uniform;` is allowed without a type".into();
                 }
                 Vec::new()
             }
-            ast::Declaration::Variables { ty, declarators, span } => self.variables(ty, declarators, *span, global),
+            ast::Declaration::Variables {
+                ty,
+                declarators,
+                span,
+            } => self.variables(ty, declarators, *span, global),
         }
     }
 
@@ -141,7 +180,12 @@ impl Checker<'_> {
             _ => None,
         };
         match key {
-            Some(k) => self.scopes.last_mut().expect("scope").precisions.push((k, precision)),
+            Some(k) => self
+                .scopes
+                .last_mut()
+                .expect("scope")
+                .precisions
+                .push((k, precision)),
             None => {
                 let d = self.error(
                     "invalid-precision-statement",
@@ -156,7 +200,11 @@ impl Checker<'_> {
 
     fn invariant_statement(&mut self, names: &[ast::Ident], span: Span) {
         if !self.at_global_scope() {
-            let d = self.error("invariant-not-global", span, "`invariant` declarations must be at global scope");
+            let d = self.error(
+                "invariant-not-global",
+                span,
+                "`invariant` declarations must be at global scope",
+            );
             d.label = "inside a function".into();
             return;
         }
@@ -165,20 +213,35 @@ impl Checker<'_> {
                 if bv == BuiltinVar::Position || bv == BuiltinVar::PointSize {
                     continue;
                 }
-                let d = self.error("invalid-invariant", n.span, format!("`{}` cannot be declared invariant", n.name));
+                let d = self.error(
+                    "invalid-invariant",
+                    n.span,
+                    format!("`{}` cannot be declared invariant", n.name),
+                );
                 d.label = "not an output of the vertex shader".into();
                 continue;
             }
             match self.lookup(&n.name).cloned() {
-                Some(Sym::Var(Var::Global(g))) if self.globals[g].kind == GlobalKind::Output && self.stage == Stage::Vertex => {
+                Some(Sym::Var(Var::Global(g)))
+                    if self.globals[g].kind == GlobalKind::Output
+                        && self.stage == Stage::Vertex =>
+                {
                     self.globals[g].invariant = true;
                 }
                 Some(Sym::Var(_)) => {
-                    let d = self.error("invalid-invariant", n.span, format!("`{}` cannot be declared invariant", n.name));
+                    let d = self.error(
+                        "invalid-invariant",
+                        n.span,
+                        format!("`{}` cannot be declared invariant", n.name),
+                    );
                     d.label = "only vertex shader outputs can be invariant".into();
                 }
                 _ => {
-                    let d = self.error("undeclared-identifier", n.span, format!("`{}` is not declared", n.name));
+                    let d = self.error(
+                        "undeclared-identifier",
+                        n.span,
+                        format!("`{}` is not declared", n.name),
+                    );
                     d.label = "declare the output before making it invariant".into();
                 }
             }
@@ -203,7 +266,11 @@ impl Checker<'_> {
                         continue;
                     }
                     let Some(v) = &item.value else {
-                        let d = self.error("invalid-layout", item.name.span, "`location` needs a value: `location = N`");
+                        let d = self.error(
+                            "invalid-layout",
+                            item.name.span,
+                            "`location` needs a value: `location = N`",
+                        );
                         d.label = "no value".into();
                         continue;
                     };
@@ -214,7 +281,11 @@ impl Checker<'_> {
                     match value {
                         Some(n) if (0..=i32::MAX as i64).contains(&n) => location = Some(n as u32),
                         _ => {
-                            let d = self.error("invalid-layout", v.span, "a location must be a non-negative integer literal");
+                            let d = self.error(
+                                "invalid-layout",
+                                v.span,
+                                "a location must be a non-negative integer literal",
+                            );
                             d.label = "not an integer literal".into();
                         }
                     }
@@ -228,7 +299,11 @@ impl Checker<'_> {
                     d.label = "not allowed on a variable".into();
                 }
                 other => {
-                    let d = self.error("invalid-layout", item.name.span, format!("unknown layout qualifier `{other}`"));
+                    let d = self.error(
+                        "invalid-layout",
+                        item.name.span,
+                        format!("unknown layout qualifier `{other}`"),
+                    );
                     d.label = "not a GLSL ES 3.00 layout qualifier".into();
                 }
             }
@@ -236,7 +311,13 @@ impl Checker<'_> {
         location
     }
 
-    fn variables(&mut self, ty: &ast::FullType, declarators: &[ast::Declarator], span: Span, global: bool) -> Vec<hir::Stmt> {
+    fn variables(
+        &mut self,
+        ty: &ast::FullType,
+        declarators: &[ast::Declarator],
+        span: Span,
+        global: bool,
+    ) -> Vec<hir::Stmt> {
         self.check_qualifier_list(&ty.qualifiers);
         let storage = ty.storage();
         let kind = match (storage.map(|s| s.0), global) {
@@ -254,7 +335,10 @@ impl Checker<'_> {
                     if global {
                         format!("`{}` is only for function parameters", s.as_str())
                     } else {
-                        format!("`{}` variables can only be declared at global scope", st.as_str())
+                        format!(
+                            "`{}` variables can only be declared at global scope",
+                            st.as_str()
+                        )
                     },
                 );
                 d.label = "not allowed here".into();
@@ -265,7 +349,9 @@ impl Checker<'_> {
                 }
             }
         };
-        let Some(base) = self.resolve_type(&ty.spec) else { return Vec::new() };
+        let Some(base) = self.resolve_type(&ty.spec) else {
+            return Vec::new();
+        };
         if !declarators.is_empty() {
             self.check_declaration_qualifiers(ty, kind, &base);
         }
@@ -279,13 +365,21 @@ impl Checker<'_> {
         };
         if declarators.is_empty() {
             if let Type::Array(_, 0) = base {
-                let d = self.error("unsized-array", ty.spec.span, "an unsized array type needs a variable and an initializer");
+                let d = self.error(
+                    "unsized-array",
+                    ty.spec.span,
+                    "an unsized array type needs a variable and an initializer",
+                );
                 d.label = "declares nothing".into();
                 return Vec::new();
             }
             if !matches!(ty.spec.name, ast::TypeName::Struct(_)) && ty.qualifiers.is_empty() {
                 // `float;` declares nothing: harmless, as C compilers warn.
-                let d = self.warning("empty-declaration", span, "this declaration declares nothing");
+                let d = self.warning(
+                    "empty-declaration",
+                    span,
+                    "this declaration declares nothing",
+                );
                 d.label = "no variable name".into();
             }
             return Vec::new();
@@ -304,24 +398,40 @@ impl Checker<'_> {
             || (kind == DeclKind::Input && self.stage == Stage::Fragment);
         if let Some((_, s)) = ty.interpolation() {
             if !varying {
-                let d = self.error("invalid-interpolation", s, "interpolation qualifiers only apply to vertex outputs and fragment inputs");
+                let d = self.error(
+                    "invalid-interpolation",
+                    s,
+                    "interpolation qualifiers only apply to vertex outputs and fragment inputs",
+                );
                 d.label = "not a varying".into();
             }
         }
         if let Some(s) = ty.centroid() {
             if !varying {
-                let d = self.error("invalid-centroid", s, "`centroid` only applies to vertex outputs and fragment inputs");
+                let d = self.error(
+                    "invalid-centroid",
+                    s,
+                    "`centroid` only applies to vertex outputs and fragment inputs",
+                );
                 d.label = "not a varying".into();
             }
         }
         if let Some(s) = ty.invariant() {
             if !(kind == DeclKind::Output && self.stage == Stage::Vertex) {
-                let d = self.error("invalid-invariant", s, "only vertex shader outputs can be declared `invariant`");
+                let d = self.error(
+                    "invalid-invariant",
+                    s,
+                    "only vertex shader outputs can be declared `invariant`",
+                );
                 d.label = "not allowed here".into();
             }
         }
         if *base == Type::Void {
-            let d = self.error("void-variable", ty.spec.span, "variables cannot have type `void`");
+            let d = self.error(
+                "void-variable",
+                ty.spec.span,
+                "variables cannot have type `void`",
+            );
             d.label = "`void`".into();
         }
         if base.contains_sampler(&self.structs) && !matches!(kind, DeclKind::Uniform) {
@@ -361,7 +471,11 @@ impl Checker<'_> {
             }
         }
         if let Type::Array(_, 0) = ty {
-            let d = self.error("unsized-array", decl.name.span, format!("array `{}` needs a size", decl.name.name));
+            let d = self.error(
+                "unsized-array",
+                decl.name.span,
+                format!("array `{}` needs a size", decl.name.name),
+            );
             d.label = "no size and no initializer to take it from".into();
             return None;
         }
@@ -375,7 +489,11 @@ impl Checker<'_> {
                     DeclKind::Input => "inputs",
                     _ => "outputs",
                 };
-                let d = self.error("invalid-initializer", i.span, format!("{what} cannot have an initializer"));
+                let d = self.error(
+                    "invalid-initializer",
+                    i.span,
+                    format!("{what} cannot have an initializer"),
+                );
                 d.label = "initializer not allowed".into();
             } else if i.ty != Type::Void && i.ty != ty {
                 self.type_mismatch_in_init(&ty, i, eq_span);
@@ -385,10 +503,15 @@ impl Checker<'_> {
                     let d = self.error(
                         "non-constant-initializer",
                         i.span,
-                        format!("`const` variable `{}` needs a constant initializer", decl.name.name),
+                        format!(
+                            "`const` variable `{}` needs a constant initializer",
+                            decl.name.name
+                        ),
                     );
                     d.label = "not a constant expression".into();
-                    d.help = Some("remove `const`, or initialize it from literals and other constants".into());
+                    d.help = Some(
+                        "remove `const`, or initialize it from literals and other constants".into(),
+                    );
                 } else if kind == DeclKind::GlobalPrivate && !constant {
                     let d = self.error(
                         "non-constant-initializer",
@@ -400,20 +523,39 @@ impl Checker<'_> {
                 }
             }
         } else if kind == DeclKind::Const {
-            let d = self.error("missing-initializer", decl.name.span, format!("`const` variable `{}` needs an initializer", decl.name.name));
+            let d = self.error(
+                "missing-initializer",
+                decl.name.span,
+                format!("`const` variable `{}` needs an initializer", decl.name.name),
+            );
             d.label = "no initializer".into();
         }
         let init_ok = init.as_ref().filter(|i| i.ty == ty);
         match kind {
             DeclKind::Local => {
-                let local = hir::Local { name: decl.name.name.clone(), ty: ty.clone(), constant: None, precision, span: decl.name.span };
+                let local = hir::Local {
+                    name: decl.name.name.clone(),
+                    ty: ty.clone(),
+                    constant: None,
+                    precision,
+                    span: decl.name.span,
+                };
                 let id = self.new_local(local);
                 self.declare(&decl.name, Sym::Var(Var::Local(id)));
-                Some(hir::Stmt { kind: hir::StmtKind::Local(id, init_ok.cloned()), span: decl.span })
+                Some(hir::Stmt {
+                    kind: hir::StmtKind::Local(id, init_ok.cloned()),
+                    span: decl.span,
+                })
             }
             DeclKind::Const if self.fctx.is_some() => {
                 let constant = init_ok.and_then(|i| i.as_const().cloned());
-                let local = hir::Local { name: decl.name.name.clone(), ty: ty.clone(), constant: constant.clone(), precision, span: decl.name.span };
+                let local = hir::Local {
+                    name: decl.name.name.clone(),
+                    ty: ty.clone(),
+                    constant: constant.clone(),
+                    precision,
+                    span: decl.name.span,
+                };
                 let id = self.new_local(local);
                 self.declare(&decl.name, Sym::Var(Var::Local(id)));
                 None
@@ -431,7 +573,9 @@ impl Checker<'_> {
                     None => hir::Init::Expr(i.clone()),
                 });
                 let invariant = fty.invariant().is_some()
-                    || (self.invariant_all && gkind == GlobalKind::Output && self.stage == Stage::Vertex);
+                    || (self.invariant_all
+                        && gkind == GlobalKind::Output
+                        && self.stage == Stage::Vertex);
                 let g = hir::Global {
                     name: decl.name.name.clone(),
                     ty,
@@ -468,8 +612,12 @@ impl Checker<'_> {
         );
         d.label = format!("this is {got}");
         d.token = "=".into();
-        if init.ty.scalar_kind().is_some() && ty.scalar_kind().is_some() && init.ty.scalar_kind() != ty.scalar_kind() {
-            d.notes.push("GLSL ES 3.00 has no implicit conversions".into());
+        if init.ty.scalar_kind().is_some()
+            && ty.scalar_kind().is_some()
+            && init.ty.scalar_kind() != ty.scalar_kind()
+        {
+            d.notes
+                .push("GLSL ES 3.00 has no implicit conversions".into());
         }
         if let Some(fix) = fix {
             d.help = Some(fix.message.clone());
@@ -492,16 +640,35 @@ impl Checker<'_> {
         }
         let qualifier = if kind == DeclKind::Input { "in" } else { "out" };
         let has_bool = ty.contains_kind(ScalarKind::Bool, structs);
-        let is_int = ty.contains_kind(ScalarKind::Int, structs) || ty.contains_kind(ScalarKind::Uint, structs);
+        let is_int = ty.contains_kind(ScalarKind::Int, structs)
+            || ty.contains_kind(ScalarKind::Uint, structs);
         let mut problem: Option<String> = None;
         if ty.contains_sampler(structs) {
             problem = Some("a sampler".into());
         } else if has_bool {
             problem = Some("a `bool`".into());
         } else if vertex_in && (ty.is_array() || ty.contains_struct()) {
-            problem = Some(if ty.is_array() { "an array" } else { "a struct" }.into());
-        } else if frag_out && (matches!(ty, Type::Matrix { .. }) || ty.contains_struct() || matches!(ty, Type::Array(t, _) if matches!(**t, Type::Matrix { .. }))) {
-            problem = Some(if ty.contains_struct() { "a struct" } else { "a matrix" }.into());
+            problem = Some(
+                if ty.is_array() {
+                    "an array"
+                } else {
+                    "a struct"
+                }
+                .into(),
+            );
+        } else if frag_out
+            && (matches!(ty, Type::Matrix { .. })
+                || ty.contains_struct()
+                || matches!(ty, Type::Array(t, _) if matches!(**t, Type::Matrix { .. })))
+        {
+            problem = Some(
+                if ty.contains_struct() {
+                    "a struct"
+                } else {
+                    "a matrix"
+                }
+                .into(),
+            );
         } else if varying_out || varying_in {
             if let Type::Array(el, _) = ty {
                 if el.contains_struct() {
@@ -526,13 +693,24 @@ impl Checker<'_> {
             } else {
                 "fragment shader output"
             };
-            let d = self.error("invalid-interface-type", span, format!("a {role} cannot be {p}"));
+            let d = self.error(
+                "invalid-interface-type",
+                span,
+                format!("a {role} cannot be {p}"),
+            );
             d.label = format!("`{qualifier}` of this type is not allowed");
             d.token = qualifier.into();
             return;
         }
-        if (varying_out || varying_in) && is_int && fty.interpolation().map(|i| i.0) != Some(Interpolation::Flat) {
-            let role = if varying_out { "vertex shader output" } else { "fragment shader input" };
+        if (varying_out || varying_in)
+            && is_int
+            && fty.interpolation().map(|i| i.0) != Some(Interpolation::Flat)
+        {
+            let role = if varying_out {
+                "vertex shader output"
+            } else {
+                "fragment shader input"
+            };
             let d = self.error(
                 "integer-varying-not-flat",
                 span,
@@ -572,24 +750,46 @@ impl Checker<'_> {
                                 );
                                 d.label = "only `std140` is portable".into();
                                 d.notes.push("WebGL2 forbids `shared` and `packed` layouts so that block layouts are the same everywhere".into());
-                                d.fix = Some(Fix::certain("use `std140`", item.name.span, "std140"));
-                                layout = if &*which == "shared" { hir::BlockLayout::Shared } else { hir::BlockLayout::Packed };
+                                d.fix =
+                                    Some(Fix::certain("use `std140`", item.name.span, "std140"));
+                                layout = if &*which == "shared" {
+                                    hir::BlockLayout::Shared
+                                } else {
+                                    hir::BlockLayout::Packed
+                                };
                             }
                             "row_major" => block_row_major = true,
                             "column_major" => block_row_major = false,
                             other => {
-                                let d = self.error("invalid-layout", item.name.span, format!("`{other}` is not a uniform block layout"));
-                                d.label = "expected std140, shared, packed, row_major or column_major".into();
+                                let d = self.error(
+                                    "invalid-layout",
+                                    item.name.span,
+                                    format!("`{other}` is not a uniform block layout"),
+                                );
+                                d.label =
+                                    "expected std140, shared, packed, row_major or column_major"
+                                        .into();
                             }
                         }
                     }
                 }
                 Qualifier::Storage(st) => {
-                    let d = self.error("invalid-block", *s, format!("`{}` blocks are not allowed in GLSL ES 3.00: only uniform blocks", st.as_str()));
+                    let d = self.error(
+                        "invalid-block",
+                        *s,
+                        format!(
+                            "`{}` blocks are not allowed in GLSL ES 3.00: only uniform blocks",
+                            st.as_str()
+                        ),
+                    );
                     d.label = "not `uniform`".into();
                 }
                 _ => {
-                    let d = self.error("invalid-block", *s, "this qualifier cannot apply to a uniform block");
+                    let d = self.error(
+                        "invalid-block",
+                        *s,
+                        "this qualifier cannot apply to a uniform block",
+                    );
                     d.label = "not allowed here".into();
                 }
             }
@@ -609,23 +809,37 @@ impl Checker<'_> {
                                 "row_major" => row_major = true,
                                 "column_major" => row_major = false,
                                 other => {
-                                    let d = self.error("invalid-layout", item.name.span, format!("`{other}` cannot qualify a block member"));
+                                    let d = self.error(
+                                        "invalid-layout",
+                                        item.name.span,
+                                        format!("`{other}` cannot qualify a block member"),
+                                    );
                                     d.label = "only row_major or column_major here".into();
                                 }
                             }
                         }
                     }
                     _ => {
-                        let d = self.error("invalid-block", *s, "block members may only have a precision or a matrix layout");
+                        let d = self.error(
+                            "invalid-block",
+                            *s,
+                            "block members may only have a precision or a matrix layout",
+                        );
                         d.label = "not allowed here".into();
                     }
                 }
             }
             if let ast::TypeName::Struct(inner) = &fty.spec.name {
-                let d = self.error("embedded-struct", inner.span, "structs cannot be defined inside a uniform block");
+                let d = self.error(
+                    "embedded-struct",
+                    inner.span,
+                    "structs cannot be defined inside a uniform block",
+                );
                 d.label = "define it before the block".into();
             }
-            let Some(base) = self.resolve_type(&fty.spec) else { continue };
+            let Some(base) = self.resolve_type(&fty.spec) else {
+                continue;
+            };
             for (n, arr) in &m.names {
                 let ty = match arr {
                     Some(a) => match self.array_of(base.clone(), a, n.span) {
@@ -635,7 +849,11 @@ impl Checker<'_> {
                     None => base.clone(),
                 };
                 if ty.contains_sampler(&self.structs) {
-                    let d = self.error("sampler-in-block", n.span, "a uniform block cannot contain a sampler");
+                    let d = self.error(
+                        "sampler-in-block",
+                        n.span,
+                        "a uniform block cannot contain a sampler",
+                    );
                     d.label = "a sampler".into();
                     continue;
                 }
@@ -645,8 +863,15 @@ impl Checker<'_> {
                     continue;
                 }
                 let precision = self.precision_for(&ty, fty.precision().map(|p| p.0), n.span);
-                if hmembers.iter().any(|(mn, ..): &(Arc<str>, Type, Option<Precision>, bool)| **mn == *n.name) {
-                    let d = self.error("redefinition", n.span, format!("block member `{}` is declared twice", n.name));
+                if hmembers
+                    .iter()
+                    .any(|(mn, ..): &(Arc<str>, Type, Option<Precision>, bool)| **mn == *n.name)
+                {
+                    let d = self.error(
+                        "redefinition",
+                        n.span,
+                        format!("block member `{}` is declared twice", n.name),
+                    );
                     d.label = "a second member with this name".into();
                     continue;
                 }
@@ -654,7 +879,11 @@ impl Checker<'_> {
             }
         }
         if self.blocks.iter().any(|b| *b.name == *name.name) {
-            let d = self.error("redefinition", name.span, format!("uniform block `{}` is declared twice", name.name));
+            let d = self.error(
+                "redefinition",
+                name.span,
+                format!("uniform block `{}` is declared twice", name.name),
+            );
             d.label = "a second block with this name".into();
             return;
         }
@@ -662,7 +891,11 @@ impl Checker<'_> {
             Some(a) => match &a.size {
                 Some(e) => self.array_size(e),
                 None => {
-                    let d = self.error("unsized-array", a.span, "a uniform block array needs a size");
+                    let d = self.error(
+                        "unsized-array",
+                        a.span,
+                        "a uniform block array needs a size",
+                    );
                     d.label = "unsized".into();
                     None
                 }
@@ -683,7 +916,11 @@ impl Checker<'_> {
             Some((inst, _)) => {
                 self.check_name(inst);
                 if *inst.name == *name.name {
-                    let d = self.error("redefinition", inst.span, "a block's instance name cannot be the block's name");
+                    let d = self.error(
+                        "redefinition",
+                        inst.span,
+                        "a block's instance name cannot be the block's name",
+                    );
                     d.label = "same name as the block".into();
                 }
                 self.declare(inst, Sym::Block(idx));
@@ -705,7 +942,13 @@ impl Checker<'_> {
                     };
                     let id = self.globals.len();
                     self.globals.push(g);
-                    self.declare(&ast::Ident { name: mname.clone(), span }, Sym::Var(Var::Global(id)));
+                    self.declare(
+                        &ast::Ident {
+                            name: mname.clone(),
+                            span,
+                        },
+                        Sym::Var(Var::Global(id)),
+                    );
                 }
             }
         }
@@ -714,13 +957,20 @@ impl Checker<'_> {
     // ----- functions -----
 
     /// Declares a function (prototype or the signature of a definition). Returns its id.
-    pub(super) fn function_decl(&mut self, proto: &ast::FunctionProto, defining: bool) -> Option<usize> {
+    pub(super) fn function_decl(
+        &mut self,
+        proto: &ast::FunctionProto,
+        defining: bool,
+    ) -> Option<usize> {
         let name = &proto.name;
         if crate::builtins::is_builtin_function(&name.name) {
             let d = self.error(
                 "builtin-redeclared",
                 name.span,
-                format!("`{}` is a built-in function and cannot be declared or overloaded", name.name),
+                format!(
+                    "`{}` is a built-in function and cannot be declared or overloaded",
+                    name.name
+                ),
             );
             d.label = "a built-in function's name".into();
             d.help = Some("choose another name".into());
@@ -730,23 +980,39 @@ impl Checker<'_> {
         // Return type.
         for (q, s) in &proto.ret.qualifiers {
             if !matches!(q, Qualifier::Precision(_)) {
-                let d = self.error("invalid-qualifier", *s, "a return type can only have a precision qualifier");
+                let d = self.error(
+                    "invalid-qualifier",
+                    *s,
+                    "a return type can only have a precision qualifier",
+                );
                 d.label = "not allowed on a return type".into();
             }
         }
         let ret = self.resolve_type(&proto.ret.spec)?;
         if let Type::Array(_, 0) = ret {
-            let d = self.error("unsized-array", proto.ret.spec.span, "a returned array needs a size");
+            let d = self.error(
+                "unsized-array",
+                proto.ret.spec.span,
+                "a returned array needs a size",
+            );
             d.label = "unsized".into();
         }
         if ret.contains_sampler(&self.structs) {
-            let d = self.error("sampler-return", proto.ret.spec.span, "functions cannot return a sampler");
+            let d = self.error(
+                "sampler-return",
+                proto.ret.spec.span,
+                "functions cannot return a sampler",
+            );
             d.label = "a sampler".into();
         }
         let ret_precision = if ret == Type::Void {
             None
         } else {
-            self.precision_for(&ret, proto.ret.precision().map(|p| p.0), proto.ret.spec.span)
+            self.precision_for(
+                &ret,
+                proto.ret.precision().map(|p| p.0),
+                proto.ret.spec.span,
+            )
         };
         let mut params = Vec::new();
         for p in &proto.params {
@@ -760,7 +1026,11 @@ impl Checker<'_> {
         let signature = format!(
             "{}({})",
             name.name,
-            params.iter().map(|p| p.ty.display(&self.structs).to_string()).collect::<Vec<_>>().join(",")
+            params
+                .iter()
+                .map(|p| p.ty.display(&self.structs).to_string())
+                .collect::<Vec<_>>()
+                .join(",")
         );
         if &*name.name == "main" {
             if !params.is_empty() {
@@ -768,15 +1038,29 @@ impl Checker<'_> {
                 d.label = "`void main()` expected".into();
             }
             if ret != Type::Void {
-                let d = self.error("invalid-main", proto.ret.spec.span, "`main` must return `void`");
+                let d = self.error(
+                    "invalid-main",
+                    proto.ret.spec.span,
+                    "`main` must return `void`",
+                );
                 d.label = "`void main()` expected".into();
             }
         }
         // Find an earlier declaration with the same parameter types.
         let existing = match self.lookup(&name.name).cloned() {
-            Some(Sym::Funcs(ids)) => ids.iter().copied().find(|&f| self.functions[f].signature == signature),
+            Some(Sym::Funcs(ids)) => ids
+                .iter()
+                .copied()
+                .find(|&f| self.functions[f].signature == signature),
             Some(_) if self.scopes[0].names.contains_key(&name.name) => {
-                let d = self.error("redefinition", name.span, format!("`{}` is already declared as something other than a function", name.name));
+                let d = self.error(
+                    "redefinition",
+                    name.span,
+                    format!(
+                        "`{}` is already declared as something other than a function",
+                        name.name
+                    ),
+                );
                 d.label = "name already in use".into();
                 return None;
             }
@@ -784,7 +1068,10 @@ impl Checker<'_> {
         };
         if &*name.name == "main" {
             if let Some(Sym::Funcs(ids)) = self.lookup("main") {
-                if ids.iter().any(|&f| self.functions[f].signature != signature) {
+                if ids
+                    .iter()
+                    .any(|&f| self.functions[f].signature != signature)
+                {
                     let d = self.error("invalid-main", name.span, "`main` cannot be overloaded");
                     d.label = "a second `main`".into();
                     return None;
@@ -797,10 +1084,16 @@ impl Checker<'_> {
                 let d = self.error(
                     "function-redeclared",
                     name.span,
-                    format!("`{}` is declared again with a different return type", name.name),
+                    format!(
+                        "`{}` is declared again with a different return type",
+                        name.name
+                    ),
                 );
                 d.label = "return type differs from the earlier declaration".into();
-                d.secondary.push(crate::diagnostic::Label { span: prev, message: "first declared here".into() });
+                d.secondary.push(crate::diagnostic::Label {
+                    span: prev,
+                    message: "first declared here".into(),
+                });
                 return None;
             }
             let modes_differ = self.functions[f]
@@ -812,7 +1105,10 @@ impl Checker<'_> {
                 let d = self.error(
                     "function-redeclared",
                     name.span,
-                    format!("`{}` is declared again with different parameter qualifiers", name.name),
+                    format!(
+                        "`{}` is declared again with different parameter qualifiers",
+                        name.name
+                    ),
                 );
                 d.label = "qualifiers differ from the earlier declaration".into();
                 return None;
@@ -820,9 +1116,16 @@ impl Checker<'_> {
             if defining {
                 if self.fn_defined[f] {
                     let prev = self.functions[f].span;
-                    let d = self.error("function-redefined", name.span, format!("function `{}` is defined twice", name.name));
+                    let d = self.error(
+                        "function-redefined",
+                        name.span,
+                        format!("function `{}` is defined twice", name.name),
+                    );
                     d.label = "second definition".into();
-                    d.secondary.push(crate::diagnostic::Label { span: prev, message: "first defined here".into() });
+                    d.secondary.push(crate::diagnostic::Label {
+                        span: prev,
+                        message: "first defined here".into(),
+                    });
                     return None;
                 }
                 // The definition's parameter names win.
@@ -848,7 +1151,9 @@ impl Checker<'_> {
         match self.scopes[0].names.get_mut(&name.name) {
             Some(Sym::Funcs(ids)) => ids.push(id),
             _ => {
-                self.scopes[0].names.insert(name.name.clone(), Sym::Funcs(vec![id]));
+                self.scopes[0]
+                    .names
+                    .insert(name.name.clone(), Sym::Funcs(vec![id]));
             }
         }
         if &*name.name == "main" {
@@ -869,14 +1174,22 @@ impl Checker<'_> {
                 Qualifier::Storage(Storage::Inout) => mode = ParamMode::InOut,
                 Qualifier::Precision(_) => {}
                 _ => {
-                    let d = self.error("invalid-qualifier", *s, "this qualifier cannot apply to a parameter");
+                    let d = self.error(
+                        "invalid-qualifier",
+                        *s,
+                        "this qualifier cannot apply to a parameter",
+                    );
                     d.label = "not allowed on a parameter".into();
                 }
             }
         }
         if is_const && mode != ParamMode::In {
             let span = p.ty.span;
-            let d = self.error("invalid-qualifier", span, "`const` parameters can only be `in`");
+            let d = self.error(
+                "invalid-qualifier",
+                span,
+                "`const` parameters can only be `in`",
+            );
             d.label = "`const` with `out` or `inout`".into();
         }
         let base = self.resolve_type(&p.ty.spec)?;
@@ -885,7 +1198,11 @@ impl Checker<'_> {
             None => base,
         };
         if ty == Type::Void {
-            let d = self.error("void-parameter", p.ty.spec.span, "a parameter cannot be `void`");
+            let d = self.error(
+                "void-parameter",
+                p.ty.spec.span,
+                "a parameter cannot be `void`",
+            );
             d.label = "`void`".into();
             return None;
         }
@@ -895,7 +1212,11 @@ impl Checker<'_> {
             return None;
         }
         if ty.contains_sampler(&self.structs) && mode != ParamMode::In {
-            let d = self.error("sampler-out-parameter", p.span, "samplers can only be `in` parameters");
+            let d = self.error(
+                "sampler-out-parameter",
+                p.span,
+                "samplers can only be `in` parameters",
+            );
             d.label = "an `out` or `inout` sampler".into();
         }
         let precision = self.precision_for(&ty, p.ty.precision().map(|q| q.0), p.span);
@@ -906,7 +1227,14 @@ impl Checker<'_> {
             }
             None => self.unnamed_param(),
         };
-        Some(hir::Param { name, ty, mode, is_const, precision, span: p.name.as_ref().map_or(p.span, |n| n.span) })
+        Some(hir::Param {
+            name,
+            ty,
+            mode,
+            is_const,
+            precision,
+            span: p.name.as_ref().map_or(p.span, |n| n.span),
+        })
     }
 
     pub(super) fn function_def(&mut self, f: &ast::FunctionDef) {
@@ -917,10 +1245,22 @@ impl Checker<'_> {
         };
         self.fn_defined[id] = true;
         let ret = self.functions[id].ret.clone();
-        self.fctx = Some(FnCtx { func: id, locals: Vec::new(), loops: 0, switches: 0, calls: Vec::new(), ret });
+        self.fctx = Some(FnCtx {
+            func: id,
+            locals: Vec::new(),
+            loops: 0,
+            switches: 0,
+            calls: Vec::new(),
+            ret,
+        });
         self.push_scope();
-        let params: Vec<(usize, Option<ast::Ident>)> =
-            f.proto.params.iter().enumerate().map(|(i, p)| (i, p.name.clone())).collect();
+        let params: Vec<(usize, Option<ast::Ident>)> = f
+            .proto
+            .params
+            .iter()
+            .enumerate()
+            .map(|(i, p)| (i, p.name.clone()))
+            .collect();
         for (i, name) in params {
             if let Some(n) = name {
                 self.declare(&n, Sym::Var(Var::Param(i)));
@@ -954,7 +1294,14 @@ impl Checker<'_> {
             used: false,
         });
         self.fn_defined.push(true);
-        self.fctx = Some(FnCtx { func: id, locals: Vec::new(), loops: 0, switches: 0, calls: Vec::new(), ret: Type::Void });
+        self.fctx = Some(FnCtx {
+            func: id,
+            locals: Vec::new(),
+            loops: 0,
+            switches: 0,
+            calls: Vec::new(),
+            ret: Type::Void,
+        });
         self.push_scope();
         // Parameters are unknown: declare nothing; uses of them report undeclared names, which
         // is acceptable after a signature error.

@@ -12,7 +12,11 @@ use crate::Stage;
 
 /// An expression that failed to check: type `void`, already reported.
 pub(crate) fn error_expr(span: Span) -> Expr {
-    Expr { kind: ExprKind::Const(ConstValue::Composite(Vec::new())), ty: Type::Void, span }
+    Expr {
+        kind: ExprKind::Const(ConstValue::Composite(Vec::new())),
+        ty: Type::Void,
+        span,
+    }
 }
 
 /// Whether an expression failed to check (errors are silent from then on).
@@ -21,7 +25,11 @@ pub(crate) fn is_error(e: &Expr) -> bool {
 }
 
 fn constant(value: ConstValue, ty: Type, span: Span) -> Expr {
-    Expr { kind: ExprKind::Const(value), ty, span }
+    Expr {
+        kind: ExprKind::Const(value),
+        ty,
+        span,
+    }
 }
 
 /// A fix that converts an expression to the wanted type: `1` → `1.0` for an integer literal
@@ -29,7 +37,10 @@ fn constant(value: ConstValue, ty: Type, span: Span) -> Expr {
 pub(crate) fn conversion_fix(file: &SourceFile, e: &Expr, want: &Type) -> Option<Fix> {
     let got = &e.ty;
     let text = file.slice(e.span);
-    if got.vector_size() != want.vector_size() || got.scalar_kind().is_none() || want.scalar_kind().is_none() {
+    if got.vector_size() != want.vector_size()
+        || got.scalar_kind().is_none()
+        || want.scalar_kind().is_none()
+    {
         return None;
     }
     let want_kind = want.scalar_kind()?;
@@ -38,19 +49,29 @@ pub(crate) fn conversion_fix(file: &SourceFile, e: &Expr, want: &Type) -> Option
         return match want_kind {
             ScalarKind::Float if value < (1 << 24) => Some(Fix {
                 message: format!("write a float literal: `{text}.0`"),
-                edits: vec![crate::diagnostic::Edit { span: e.span, replacement: format!("{text}.0") }],
+                edits: vec![crate::diagnostic::Edit {
+                    span: e.span,
+                    replacement: format!("{text}.0"),
+                }],
                 applicability: Applicability::Certain,
             }),
             ScalarKind::Uint => Some(Fix {
                 message: format!("write an unsigned literal: `{text}u`"),
-                edits: vec![crate::diagnostic::Edit { span: e.span, replacement: format!("{text}u") }],
+                edits: vec![crate::diagnostic::Edit {
+                    span: e.span,
+                    replacement: format!("{text}u"),
+                }],
                 applicability: Applicability::Certain,
             }),
             _ => None,
         };
     }
     let ctor = want.display(&[]).to_string();
-    Some(Fix::suggested(format!("convert explicitly: `{ctor}({text})`"), e.span, format!("{ctor}({text})")))
+    Some(Fix::suggested(
+        format!("convert explicitly: `{ctor}({text})`"),
+        e.span,
+        format!("{ctor}({text})"),
+    ))
 }
 
 /// The component set of a swizzle letter, and its index.
@@ -73,7 +94,12 @@ fn swizzle_component(c: u8) -> Option<(u8, u8)> {
 }
 
 /// The result type of `lhs op rhs`, or why it is invalid.
-pub(crate) fn binary_result(op: BinaryOp, l: &Type, r: &Type, structs: &[crate::types::StructDef]) -> Result<Type, String> {
+pub(crate) fn binary_result(
+    op: BinaryOp,
+    l: &Type,
+    r: &Type,
+    structs: &[crate::types::StructDef],
+) -> Result<Type, String> {
     use BinaryOp::*;
     use ScalarKind::*;
     let lk = l.scalar_kind();
@@ -94,7 +120,10 @@ pub(crate) fn binary_result(op: BinaryOp, l: &Type, r: &Type, structs: &[crate::
                     if op == Mul {
                         if let Type::Matrix { cols, rows } = a {
                             if cols != rows {
-                                return Err("a non-square matrix times itself has mismatched dimensions".into());
+                                return Err(
+                                    "a non-square matrix times itself has mismatched dimensions"
+                                        .into(),
+                                );
                             }
                         }
                     }
@@ -105,30 +134,50 @@ pub(crate) fn binary_result(op: BinaryOp, l: &Type, r: &Type, structs: &[crate::
                     if *cols == *n {
                         Ok(Type::Vector(Float, *rows))
                     } else {
-                        Err(format!("a matrix with {cols} columns cannot multiply a {n}-component vector"))
+                        Err(format!(
+                            "a matrix with {cols} columns cannot multiply a {n}-component vector"
+                        ))
                     }
                 }
                 (Type::Vector(_, n), Type::Matrix { cols, rows }) if op == Mul => {
                     if *rows == *n {
                         Ok(Type::Vector(Float, *cols))
                     } else {
-                        Err(format!("a {n}-component vector cannot multiply a matrix with {rows} rows"))
+                        Err(format!(
+                            "a {n}-component vector cannot multiply a matrix with {rows} rows"
+                        ))
                     }
                 }
-                (Type::Matrix { cols: c1, rows: r1 }, Type::Matrix { cols: c2, rows: r2 }) if op == Mul => {
+                (Type::Matrix { cols: c1, rows: r1 }, Type::Matrix { cols: c2, rows: r2 })
+                    if op == Mul =>
+                {
                     if c1 == r2 {
-                        Ok(Type::Matrix { cols: *c2, rows: *r1 })
+                        Ok(Type::Matrix {
+                            cols: *c2,
+                            rows: *r1,
+                        })
                     } else {
-                        Err(format!("a {c1}-column matrix cannot multiply a {r2}-row matrix"))
+                        Err(format!(
+                            "a {c1}-column matrix cannot multiply a {r2}-row matrix"
+                        ))
                     }
                 }
                 _ => Err("the operands' sizes do not match".into()),
             }
         }
         Mod | BitAnd | BitOr | BitXor => {
-            let (Some(lk), Some(rk)) = (lk, rk) else { return Err("needs integers".into()) };
-            if !matches!(lk, Int | Uint) || !matches!(rk, Int | Uint) || l.vector_size().is_none() || r.vector_size().is_none() {
-                return Err(format!("`{}` needs `int` or `uint` operands (scalars or vectors)", op.as_str()));
+            let (Some(lk), Some(rk)) = (lk, rk) else {
+                return Err("needs integers".into());
+            };
+            if !matches!(lk, Int | Uint)
+                || !matches!(rk, Int | Uint)
+                || l.vector_size().is_none()
+                || r.vector_size().is_none()
+            {
+                return Err(format!(
+                    "`{}` needs `int` or `uint` operands (scalars or vectors)",
+                    op.as_str()
+                ));
             }
             if lk != rk {
                 return Err("the operands must both be signed or both unsigned".into());
@@ -140,15 +189,23 @@ pub(crate) fn binary_result(op: BinaryOp, l: &Type, r: &Type, structs: &[crate::
             }
         }
         Shl | Shr => {
-            let (Some(lk), Some(rk)) = (lk, rk) else { return Err("needs integers".into()) };
-            if !matches!(lk, Int | Uint) || !matches!(rk, Int | Uint) || l.vector_size().is_none() || r.vector_size().is_none() {
+            let (Some(lk), Some(rk)) = (lk, rk) else {
+                return Err("needs integers".into());
+            };
+            if !matches!(lk, Int | Uint)
+                || !matches!(rk, Int | Uint)
+                || l.vector_size().is_none()
+                || r.vector_size().is_none()
+            {
                 return Err("shifts need `int` or `uint` operands (scalars or vectors)".into());
             }
             match (l, r) {
                 (Type::Scalar(_), Type::Scalar(_)) => Ok(l.clone()),
                 (Type::Vector(_, n), Type::Scalar(_)) => Ok(Type::Vector(lk, *n)),
                 (Type::Vector(_, n), Type::Vector(_, m)) if n == m => Ok(l.clone()),
-                (Type::Scalar(_), Type::Vector(..)) => Err("a scalar cannot be shifted by a vector".into()),
+                (Type::Scalar(_), Type::Vector(..)) => {
+                    Err("a scalar cannot be shifted by a vector".into())
+                }
                 _ => Err("the operands' sizes do not match".into()),
             }
         }
@@ -188,13 +245,25 @@ impl Checker<'_> {
             ast::ExprKind::Error => error_expr(span),
             ast::ExprKind::Int(v, unsigned) => {
                 if *unsigned {
-                    constant(ConstValue::Basic(vec![Scalar::U(*v as u32)]), Type::UINT, span)
+                    constant(
+                        ConstValue::Basic(vec![Scalar::U(*v as u32)]),
+                        Type::UINT,
+                        span,
+                    )
                 } else {
-                    constant(ConstValue::Basic(vec![Scalar::I(*v as u32 as i32)]), Type::INT, span)
+                    constant(
+                        ConstValue::Basic(vec![Scalar::I(*v as u32 as i32)]),
+                        Type::INT,
+                        span,
+                    )
                 }
             }
-            ast::ExprKind::Float(f) => constant(ConstValue::Basic(vec![Scalar::F(*f)]), Type::FLOAT, span),
-            ast::ExprKind::Bool(b) => constant(ConstValue::Basic(vec![Scalar::B(*b)]), Type::BOOL, span),
+            ast::ExprKind::Float(f) => {
+                constant(ConstValue::Basic(vec![Scalar::F(*f)]), Type::FLOAT, span)
+            }
+            ast::ExprKind::Bool(b) => {
+                constant(ConstValue::Basic(vec![Scalar::B(*b)]), Type::BOOL, span)
+            }
             ast::ExprKind::Ident(id) => self.ident(id),
             ast::ExprKind::Unary(op, a) => self.unary(*op, a, span),
             ast::ExprKind::Binary(op, a, b) => {
@@ -210,14 +279,25 @@ impl Checker<'_> {
                 if is_error(&a) || is_error(&b) {
                     return error_expr(span);
                 }
-                if let Some(what) = [&a, &b].iter().find_map(|e| self.webgl_forbidden_operand(&e.ty)) {
-                    let d = self.error("webgl-forbidden-operand", span, format!("the sequence operator `,` cannot be used with {what} in WebGL"));
+                if let Some(what) = [&a, &b]
+                    .iter()
+                    .find_map(|e| self.webgl_forbidden_operand(&e.ty))
+                {
+                    let d = self.error(
+                        "webgl-forbidden-operand",
+                        span,
+                        format!("the sequence operator `,` cannot be used with {what} in WebGL"),
+                    );
                     d.label = format!("an operand is {what}");
                     d.token = ",".into();
                     return error_expr(span);
                 }
                 let ty = b.ty.clone();
-                Expr { kind: ExprKind::Comma(Box::new(a), Box::new(b)), ty, span }
+                Expr {
+                    kind: ExprKind::Comma(Box::new(a), Box::new(b)),
+                    ty,
+                    span,
+                }
             }
             ast::ExprKind::Index(base, index) => self.index(base, index, span),
             ast::ExprKind::Field(base, name) => self.field(base, name, span),
@@ -230,7 +310,9 @@ impl Checker<'_> {
         match ty {
             Type::Void => Some("`void` values"),
             Type::Array(..) => Some("arrays"),
-            Type::Struct(_) if ty.contains_array(&self.structs) => Some("structs containing arrays"),
+            Type::Struct(_) if ty.contains_array(&self.structs) => {
+                Some("structs containing arrays")
+            }
             _ => None,
         }
     }
@@ -244,13 +326,21 @@ impl Checker<'_> {
                 match &local.constant {
                     Some(c) => constant(c.clone(), ty, span),
                     None if ty == Type::Void => error_expr(span),
-                    None => Expr { kind: ExprKind::Local(l), ty, span },
+                    None => Expr {
+                        kind: ExprKind::Local(l),
+                        ty,
+                        span,
+                    },
                 }
             }
             Some(Sym::Var(Var::Param(i))) => {
                 let f = self.fctx.as_ref().expect("function").func;
                 let ty = self.functions[f].params[i].ty.clone();
-                Expr { kind: ExprKind::Param(i), ty, span }
+                Expr {
+                    kind: ExprKind::Param(i),
+                    ty,
+                    span,
+                }
             }
             Some(Sym::Var(Var::Global(g))) => {
                 let global = &self.globals[g];
@@ -261,28 +351,48 @@ impl Checker<'_> {
                         _ => return error_expr(span),
                     }
                 }
-                Expr { kind: ExprKind::Global(g), ty, span }
+                Expr {
+                    kind: ExprKind::Global(g),
+                    ty,
+                    span,
+                }
             }
             Some(Sym::Funcs(_)) => {
-                let d = self.error("not-a-value", span, format!("`{}` is a function, not a value", id.name));
+                let d = self.error(
+                    "not-a-value",
+                    span,
+                    format!("`{}` is a function, not a value", id.name),
+                );
                 d.label = "a function name".into();
                 d.help = Some(format!("call it: `{}(…)`", id.name));
                 error_expr(span)
             }
             Some(Sym::Struct(_)) => {
-                let d = self.error("not-a-value", span, format!("`{}` is a type, not a value", id.name));
+                let d = self.error(
+                    "not-a-value",
+                    span,
+                    format!("`{}` is a type, not a value", id.name),
+                );
                 d.label = "a struct name".into();
                 error_expr(span)
             }
             Some(Sym::Block(_)) => {
-                let d = self.error("not-a-value", span, format!("`{}` is a uniform block; use one of its members", id.name));
+                let d = self.error(
+                    "not-a-value",
+                    span,
+                    format!("`{}` is a uniform block; use one of its members", id.name),
+                );
                 d.label = "a block instance".into();
                 error_expr(span)
             }
             None => {
                 if let Some(v) = BuiltinVar::lookup(&id.name, self.stage) {
                     let ty = self.builtin_var_type(v);
-                    return Expr { kind: ExprKind::BuiltinVar(v), ty, span };
+                    return Expr {
+                        kind: ExprKind::BuiltinVar(v),
+                        ty,
+                        span,
+                    };
                 }
                 if let Some(c) = builtins::constant(&id.name) {
                     return constant(ConstValue::Basic(vec![Scalar::I(c)]), Type::INT, span);
@@ -295,10 +405,25 @@ impl Checker<'_> {
 
     fn undeclared(&mut self, id: &ast::Ident) {
         let name = &*id.name;
-        let other_stage = BuiltinVar::lookup(name, if self.stage == Stage::Vertex { Stage::Fragment } else { Stage::Vertex });
-        let stage_name = if self.stage == Stage::Vertex { "fragment" } else { "vertex" };
+        let other_stage = BuiltinVar::lookup(
+            name,
+            if self.stage == Stage::Vertex {
+                Stage::Fragment
+            } else {
+                Stage::Vertex
+            },
+        );
+        let stage_name = if self.stage == Stage::Vertex {
+            "fragment"
+        } else {
+            "vertex"
+        };
         let similar = self.similar_name(name);
-        let d = self.error("undeclared-identifier", id.span, format!("`{name}` is not declared"));
+        let d = self.error(
+            "undeclared-identifier",
+            id.span,
+            format!("`{name}` is not declared"),
+        );
         d.label = "not declared in this scope".into();
         match name {
             "gl_FragColor" | "gl_FragData" => {
@@ -329,8 +454,15 @@ impl Checker<'_> {
                 if matches!(sym, Sym::Funcs(_)) {
                     continue;
                 }
-                let dist = if n.eq_ignore_ascii_case(name) { 0 } else { edit_distance(n, name) };
-                if dist <= 2 && dist < name.len().max(2) && best.as_ref().is_none_or(|(b, _)| dist < *b) {
+                let dist = if n.eq_ignore_ascii_case(name) {
+                    0
+                } else {
+                    edit_distance(n, name)
+                };
+                if dist <= 2
+                    && dist < name.len().max(2)
+                    && best.as_ref().is_none_or(|(b, _)| dist < *b)
+                {
                     best = Some((dist, n.to_string()));
                 }
             }
@@ -346,9 +478,17 @@ impl Checker<'_> {
         let kind = a.ty.scalar_kind();
         let numeric = a.ty.is_numeric_basic() && kind != Some(ScalarKind::Bool);
         let ok = match op {
-            UnaryOp::Plus | UnaryOp::Neg | UnaryOp::PreInc | UnaryOp::PreDec | UnaryOp::PostInc | UnaryOp::PostDec => numeric,
+            UnaryOp::Plus
+            | UnaryOp::Neg
+            | UnaryOp::PreInc
+            | UnaryOp::PreDec
+            | UnaryOp::PostInc
+            | UnaryOp::PostDec => numeric,
             UnaryOp::Not => a.ty == Type::BOOL,
-            UnaryOp::BitNot => a.ty.is_scalar_or_vector() && matches!(kind, Some(ScalarKind::Int | ScalarKind::Uint)),
+            UnaryOp::BitNot => {
+                a.ty.is_scalar_or_vector()
+                    && matches!(kind, Some(ScalarKind::Int | ScalarKind::Uint))
+            }
         };
         if !ok {
             let t = self.type_name(&a.ty);
@@ -357,7 +497,11 @@ impl Checker<'_> {
                 UnaryOp::BitNot => "an `int` or `uint` scalar or vector",
                 _ => "a number, vector or matrix (not `bool`)",
             };
-            let d = self.error("invalid-operand", span, format!("`{}` cannot be applied to {t}", op.as_str()));
+            let d = self.error(
+                "invalid-operand",
+                span,
+                format!("`{}` cannot be applied to {t}", op.as_str()),
+            );
             d.label = format!("needs {need}");
             d.token = op.as_str().into();
             return error_expr(span);
@@ -376,7 +520,11 @@ impl Checker<'_> {
                         return constant(v, ty, span);
                     }
                 }
-                Expr { kind: ExprKind::Unary(hop, Box::new(a)), ty, span }
+                Expr {
+                    kind: ExprKind::Unary(hop, Box::new(a)),
+                    ty,
+                    span,
+                }
             }
             _ => {
                 let inc = matches!(op, UnaryOp::PreInc | UnaryOp::PostInc);
@@ -384,7 +532,11 @@ impl Checker<'_> {
                 if !self.check_lvalue(&a, span, op.as_str()) {
                     return error_expr(span);
                 }
-                Expr { kind: ExprKind::IncDec(inc, pre, Box::new(a)), ty, span }
+                Expr {
+                    kind: ExprKind::IncDec(inc, pre, Box::new(a)),
+                    ty,
+                    span,
+                }
             }
         }
     }
@@ -398,8 +550,11 @@ impl Checker<'_> {
             Err(why) => {
                 let (lt, rt) = (self.type_name(&a.ty), self.type_name(&b.ty));
                 let op_span = Span::new(a.span.end, b.span.start);
-                let fix = if a.ty.scalar_kind() != b.ty.scalar_kind() && a.ty.vector_size() == b.ty.vector_size() {
-                    conversion_fix(self.file, &b, &a.ty).or_else(|| conversion_fix(self.file, &a, &b.ty))
+                let fix = if a.ty.scalar_kind() != b.ty.scalar_kind()
+                    && a.ty.vector_size() == b.ty.vector_size()
+                {
+                    conversion_fix(self.file, &b, &a.ty)
+                        .or_else(|| conversion_fix(self.file, &a, &b.ty))
                 } else {
                     None
                 };
@@ -410,8 +565,14 @@ impl Checker<'_> {
                 );
                 d.label = why;
                 d.token = op.as_str().into();
-                d.secondary.push(Label { span: a.span, message: format!("{lt}") });
-                d.secondary.push(Label { span: b.span, message: format!("{rt}") });
+                d.secondary.push(Label {
+                    span: a.span,
+                    message: lt.to_string(),
+                });
+                d.secondary.push(Label {
+                    span: b.span,
+                    message: rt.to_string(),
+                });
                 if let Some(f) = fix {
                     d.help = Some(f.message.clone());
                     d.fix = Some(f);
@@ -424,7 +585,11 @@ impl Checker<'_> {
             match fold::binary(op, x, &a.ty, y, &b.ty, &ty) {
                 Ok(v) => return constant(v, ty, span),
                 Err(fold::FoldError::DivideByZero) => {
-                    let d = self.warning("division-by-zero", span, "division by zero in a constant expression");
+                    let d = self.warning(
+                        "division-by-zero",
+                        span,
+                        "division by zero in a constant expression",
+                    );
                     d.label = "the divisor is zero".into();
                     d.token = "/".into();
                     d.notes.push("the result is undefined".into());
@@ -432,7 +597,11 @@ impl Checker<'_> {
                 Err(fold::FoldError::Unsupported) => {}
             }
         }
-        Expr { kind: ExprKind::Binary(op, Box::new(a), Box::new(b)), ty, span }
+        Expr {
+            kind: ExprKind::Binary(op, Box::new(a), Box::new(b)),
+            ty,
+            span,
+        }
     }
 
     fn assign(&mut self, op: Option<BinaryOp>, l: &ast::Expr, r: &ast::Expr, span: Span) -> Expr {
@@ -462,9 +631,13 @@ impl Checker<'_> {
             );
             d.label = format!("this is {rt}");
             d.token = op_text;
-            d.secondary.push(Label { span: lhs.span, message: format!("this is {lt}") });
+            d.secondary.push(Label {
+                span: lhs.span,
+                message: format!("this is {lt}"),
+            });
             if lhs.ty.scalar_kind() != rhs.ty.scalar_kind() {
-                d.notes.push("GLSL ES 3.00 has no implicit conversions".into());
+                d.notes
+                    .push("GLSL ES 3.00 has no implicit conversions".into());
             }
             if let Some(f) = fix {
                 d.help = Some(f.message.clone());
@@ -478,7 +651,11 @@ impl Checker<'_> {
             d.label = "assigns a sampler".into();
             return error_expr(span);
         }
-        Expr { kind: ExprKind::Assign(op, Box::new(lhs), Box::new(rhs)), ty, span }
+        Expr {
+            kind: ExprKind::Assign(op, Box::new(lhs), Box::new(rhs)),
+            ty,
+            span,
+        }
     }
 
     /// Whether an expression can be written; reports why not.
@@ -489,7 +666,11 @@ impl Checker<'_> {
             Some((msg, span)) => {
                 let d = self.error("not-assignable", span, msg);
                 d.label = "cannot be written".into();
-                d.token = if op.contains('=') { "assign".into() } else { op.into() };
+                d.token = if op.contains('=') {
+                    "assign".into()
+                } else {
+                    op.into()
+                };
                 let _ = at;
                 false
             }
@@ -502,7 +683,12 @@ impl Checker<'_> {
             ExprKind::Param(i) => {
                 let f = self.fctx.as_ref()?.func;
                 let p = &self.functions[f].params[*i];
-                p.is_const.then(|| (format!("cannot assign to `const` parameter `{}`", p.name), e.span))
+                p.is_const.then(|| {
+                    (
+                        format!("cannot assign to `const` parameter `{}`", p.name),
+                        e.span,
+                    )
+                })
             }
             ExprKind::Global(g) => {
                 let g = &self.globals[*g];
@@ -511,30 +697,46 @@ impl Checker<'_> {
                     GlobalKind::Uniform | GlobalKind::BlockMember(..) => {
                         Some((format!("cannot assign to uniform `{}`", g.name), e.span))
                     }
-                    GlobalKind::Input => Some((format!("cannot assign to input `{}`", g.name), e.span)),
-                    GlobalKind::Const => Some((format!("cannot assign to constant `{}`", g.name), e.span)),
+                    GlobalKind::Input => {
+                        Some((format!("cannot assign to input `{}`", g.name), e.span))
+                    }
+                    GlobalKind::Const => {
+                        Some((format!("cannot assign to constant `{}`", g.name), e.span))
+                    }
                 }
             }
-            ExprKind::BuiltinVar(v) => {
-                (!v.writable()).then(|| (format!("cannot assign to read-only built-in `{}`", v.name()), e.span))
+            ExprKind::BuiltinVar(v) => (!v.writable()).then(|| {
+                (
+                    format!("cannot assign to read-only built-in `{}`", v.name()),
+                    e.span,
+                )
+            }),
+            ExprKind::BlockMember(..) => {
+                Some(("cannot assign to a uniform block member".into(), e.span))
             }
-            ExprKind::BlockMember(..) => Some(("cannot assign to a uniform block member".into(), e.span)),
             ExprKind::Index(b, _) | ExprKind::Member(b, _) => self.lvalue_problem(b),
             ExprKind::Swizzle(b, comps) => {
                 for (i, c) in comps.iter().enumerate() {
                     if comps[..i].contains(c) {
-                        return Some(("a swizzle with repeated components cannot be assigned".into(), e.span));
+                        return Some((
+                            "a swizzle with repeated components cannot be assigned".into(),
+                            e.span,
+                        ));
                     }
                 }
                 self.lvalue_problem(b)
             }
             ExprKind::Const(_) => Some(match self.file.slice(e.span).chars().next() {
-                Some(c) if c.is_ascii_alphabetic() || c == '_' => {
-                    (format!("cannot assign to constant `{}`", self.file.slice(e.span)), e.span)
-                }
+                Some(c) if c.is_ascii_alphabetic() || c == '_' => (
+                    format!("cannot assign to constant `{}`", self.file.slice(e.span)),
+                    e.span,
+                ),
                 _ => ("cannot assign to a constant value".into(), e.span),
             }),
-            _ => Some(("this expression cannot be assigned (it is not a variable)".into(), e.span)),
+            _ => Some((
+                "this expression cannot be assigned (it is not a variable)".into(),
+                e.span,
+            )),
         }
     }
 
@@ -547,22 +749,40 @@ impl Checker<'_> {
         }
         if c.ty != Type::BOOL {
             let t = self.type_name(&c.ty);
-            let d = self.error("type-mismatch", c.span, format!("the condition of `?:` must be a `bool`, not {t}"));
+            let d = self.error(
+                "type-mismatch",
+                c.span,
+                format!("the condition of `?:` must be a `bool`, not {t}"),
+            );
             d.label = format!("this is {t}");
             d.token = "?".into();
             return error_expr(span);
         }
         if a.ty != b.ty {
             let (at, bt) = (self.type_name(&a.ty), self.type_name(&b.ty));
-            let d = self.error("type-mismatch", span, format!("the two sides of `?:` differ: {at} and {bt}"));
+            let d = self.error(
+                "type-mismatch",
+                span,
+                format!("the two sides of `?:` differ: {at} and {bt}"),
+            );
             d.label = "both sides must have the same type".into();
             d.token = ":".into();
-            d.secondary.push(Label { span: a.span, message: at });
-            d.secondary.push(Label { span: b.span, message: bt });
+            d.secondary.push(Label {
+                span: a.span,
+                message: at,
+            });
+            d.secondary.push(Label {
+                span: b.span,
+                message: bt,
+            });
             return error_expr(span);
         }
         if let Some(what) = self.webgl_forbidden_operand(&a.ty) {
-            let d = self.error("webgl-forbidden-operand", span, format!("the ternary operator `?:` cannot select {what} in WebGL"));
+            let d = self.error(
+                "webgl-forbidden-operand",
+                span,
+                format!("the ternary operator `?:` cannot select {what} in WebGL"),
+            );
             d.label = format!("both sides are {what}");
             d.token = "?:".into();
             return error_expr(span);
@@ -578,14 +798,22 @@ impl Checker<'_> {
             let chosen = if *v { a } else { b };
             return Expr { span, ..chosen };
         }
-        Expr { kind: ExprKind::Select(Box::new(c), Box::new(a), Box::new(b)), ty, span }
+        Expr {
+            kind: ExprKind::Select(Box::new(c), Box::new(a), Box::new(b)),
+            ty,
+            span,
+        }
     }
 
     fn index(&mut self, base: &ast::Expr, index: &ast::Expr, span: Span) -> Expr {
         // A uniform block instance array: `blocks[i]` is only valid before `.member`.
         if let ast::ExprKind::Ident(id) = &base.kind {
             if let Some(Sym::Block(_)) = self.lookup(&id.name) {
-                let d = self.error("not-a-value", span, "an element of a uniform block array must be followed by `.member`");
+                let d = self.error(
+                    "not-a-value",
+                    span,
+                    "an element of a uniform block array must be followed by `.member`",
+                );
                 d.label = "a block, not a value".into();
                 return error_expr(span);
             }
@@ -608,7 +836,11 @@ impl Checker<'_> {
         };
         if i.ty != Type::INT && i.ty != Type::UINT {
             let t = self.type_name(&i.ty);
-            let d = self.error("type-mismatch", i.span, format!("an index must be an `int` or `uint`, not {t}"));
+            let d = self.error(
+                "type-mismatch",
+                i.span,
+                format!("an index must be an `int` or `uint`, not {t}"),
+            );
             d.label = format!("this is {t}");
             d.token = "[".into();
             return error_expr(span);
@@ -616,7 +848,11 @@ impl Checker<'_> {
         let bound = b.ty.index_bound().unwrap_or(0);
         if let Some(v) = i.as_const().and_then(|c| c.as_int()) {
             if v < 0 {
-                let d = self.error("index-out-of-range", i.span, format!("index {v} is negative"));
+                let d = self.error(
+                    "index-out-of-range",
+                    i.span,
+                    format!("index {v} is negative"),
+                );
                 d.label = "negative index".into();
                 d.token = "[]".into();
                 return error_expr(span);
@@ -651,11 +887,17 @@ impl Checker<'_> {
             );
             d.label = "not a constant expression".into();
             d.token = "[".into();
-            d.notes.push("GLSL ES 3.00 does not allow selecting a sampler at run time".into());
-            d.help = Some("use a constant index, or an `if`/`switch` over the possible samplers".into());
+            d.notes
+                .push("GLSL ES 3.00 does not allow selecting a sampler at run time".into());
+            d.help =
+                Some("use a constant index, or an `if`/`switch` over the possible samplers".into());
             return error_expr(span);
         }
-        Expr { kind: ExprKind::Index(Box::new(b), Box::new(i)), ty: elem, span }
+        Expr {
+            kind: ExprKind::Index(Box::new(b), Box::new(i)),
+            ty: elem,
+            span,
+        }
     }
 
     fn field(&mut self, base: &ast::Expr, name: &ast::Ident, span: Span) -> Expr {
@@ -687,19 +929,30 @@ impl Checker<'_> {
                 match def.members.iter().position(|m| *m.name == *name.name) {
                     Some(i) => {
                         let ty = def.members[i].ty.clone();
-                        if let Some(c) = b.as_const() {
-                            if let ConstValue::Composite(members) = c {
-                                return constant(members[i].clone(), ty, span);
-                            }
+                        if let Some(ConstValue::Composite(members)) = b.as_const() {
+                            return constant(members[i].clone(), ty, span);
                         }
-                        Expr { kind: ExprKind::Member(Box::new(b), i), ty, span }
+                        Expr {
+                            kind: ExprKind::Member(Box::new(b), i),
+                            ty,
+                            span,
+                        }
                     }
                     None => {
-                        let members: Vec<String> = def.members.iter().map(|m| format!("`{}`", m.name)).collect();
+                        let members: Vec<String> = def
+                            .members
+                            .iter()
+                            .map(|m| format!("`{}`", m.name))
+                            .collect();
                         let sname = def.name.clone().unwrap_or_else(|| "struct".into());
-                        let d = self.error("no-such-field", name.span, format!("`{sname}` has no member `{}`", name.name));
+                        let d = self.error(
+                            "no-such-field",
+                            name.span,
+                            format!("`{sname}` has no member `{}`", name.name),
+                        );
                         d.label = "unknown member".into();
-                        d.notes.push(format!("its members are {}", members.join(", ")));
+                        d.notes
+                            .push(format!("its members are {}", members.join(", ")));
                         error_expr(span)
                     }
                 }
@@ -709,7 +962,11 @@ impl Checker<'_> {
                 self.swizzle(b, k, n, name, span)
             }
             Type::Array(..) => {
-                let d = self.error("invalid-field", name.span, format!("an array has no field `{}`", name.name));
+                let d = self.error(
+                    "invalid-field",
+                    name.span,
+                    format!("an array has no field `{}`", name.name),
+                );
                 d.label = "not a struct or vector".into();
                 if &*name.name == "length" {
                     d.help = Some("the length of an array is `a.length()`".into());
@@ -721,11 +978,15 @@ impl Checker<'_> {
                 let d = self.error(
                     "invalid-field",
                     name.span,
-                    format!("{t} has no fields: `.{}` needs a struct or a vector", name.name),
+                    format!(
+                        "{t} has no fields: `.{}` needs a struct or a vector",
+                        name.name
+                    ),
                 );
                 d.label = "field selection on a non-vector".into();
                 if b.ty.is_scalar() {
-                    d.notes.push("GLSL ES 3.00 does not allow swizzling a scalar".into());
+                    d.notes
+                        .push("GLSL ES 3.00 does not allow swizzling a scalar".into());
                 }
                 error_expr(span)
             }
@@ -738,12 +999,23 @@ impl Checker<'_> {
         let mut set: Option<u8> = None;
         for &c in text {
             let Some((s, i)) = swizzle_component(c) else {
-                let d = self.error("invalid-swizzle", name.span, format!("`{}` is not a swizzle: `{}` is not a component name", name.name, c as char));
+                let d = self.error(
+                    "invalid-swizzle",
+                    name.span,
+                    format!(
+                        "`{}` is not a swizzle: `{}` is not a component name",
+                        name.name, c as char
+                    ),
+                );
                 d.label = "use x, y, z, w or r, g, b, a or s, t, p, q".into();
                 return error_expr(span);
             };
             if set.is_some_and(|p| p != s) {
-                let d = self.error("invalid-swizzle", name.span, format!("swizzle `{}` mixes component sets", name.name));
+                let d = self.error(
+                    "invalid-swizzle",
+                    name.span,
+                    format!("swizzle `{}` mixes component sets", name.name),
+                );
                 d.label = "use only one of xyzw, rgba or stpq".into();
                 return error_expr(span);
             }
@@ -752,7 +1024,10 @@ impl Checker<'_> {
                 let d = self.error(
                     "invalid-swizzle",
                     name.span,
-                    format!("swizzle `{}` reads past the end of a {n}-component vector", name.name),
+                    format!(
+                        "swizzle `{}` reads past the end of a {n}-component vector",
+                        name.name
+                    ),
                 );
                 d.label = "component out of range".into();
                 return error_expr(span);
@@ -760,7 +1035,11 @@ impl Checker<'_> {
             comps.push(i);
         }
         if comps.len() > 4 {
-            let d = self.error("invalid-swizzle", name.span, "a swizzle selects at most 4 components");
+            let d = self.error(
+                "invalid-swizzle",
+                name.span,
+                "a swizzle selects at most 4 components",
+            );
             d.label = "too many components".into();
             return error_expr(span);
         }
@@ -770,10 +1049,20 @@ impl Checker<'_> {
                 return constant(v, ty, span);
             }
         }
-        Expr { kind: ExprKind::Swizzle(Box::new(b), comps), ty, span }
+        Expr {
+            kind: ExprKind::Swizzle(Box::new(b), comps),
+            ty,
+            span,
+        }
     }
 
-    fn block_member(&mut self, block: usize, idx: Option<&ast::Expr>, name: &ast::Ident, span: Span) -> Expr {
+    fn block_member(
+        &mut self,
+        block: usize,
+        idx: Option<&ast::Expr>,
+        name: &ast::Ident,
+        span: Span,
+    ) -> Expr {
         let idx = match idx {
             Some(i) => {
                 let i = self.expr(i);
@@ -781,19 +1070,31 @@ impl Checker<'_> {
                     return error_expr(span);
                 }
                 let Some(n) = self.blocks[block].array else {
-                    let d = self.error("not-indexable", i.span, "this uniform block is not an array");
+                    let d = self.error(
+                        "not-indexable",
+                        i.span,
+                        "this uniform block is not an array",
+                    );
                     d.label = "index on a non-array block".into();
                     return error_expr(span);
                 };
                 match i.as_const().and_then(|c| c.as_int()) {
                     Some(v) if v >= 0 && v < n as i64 => Some(Box::new(i)),
                     Some(v) => {
-                        let d = self.error("index-out-of-range", i.span, format!("index {v} is out of range for a block array of {n}"));
+                        let d = self.error(
+                            "index-out-of-range",
+                            i.span,
+                            format!("index {v} is out of range for a block array of {n}"),
+                        );
                         d.label = "out of range".into();
                         return error_expr(span);
                     }
                     None => {
-                        let d = self.error("dynamic-block-index", i.span, "uniform block arrays can only be indexed with constant expressions");
+                        let d = self.error(
+                            "dynamic-block-index",
+                            i.span,
+                            "uniform block arrays can only be indexed with constant expressions",
+                        );
                         d.label = "not a constant expression".into();
                         return error_expr(span);
                     }
@@ -801,7 +1102,11 @@ impl Checker<'_> {
             }
             None => {
                 if self.blocks[block].array.is_some() {
-                    let d = self.error("not-a-value", span, "a uniform block array needs an index before `.member`");
+                    let d = self.error(
+                        "not-a-value",
+                        span,
+                        "a uniform block array needs an index before `.member`",
+                    );
                     d.label = "missing `[i]`".into();
                     return error_expr(span);
                 }
@@ -812,11 +1117,19 @@ impl Checker<'_> {
         match b.members.iter().position(|m| *m.0 == *name.name) {
             Some(m) => {
                 let ty = b.members[m].1.clone();
-                Expr { kind: ExprKind::BlockMember(block, idx, m), ty, span }
+                Expr {
+                    kind: ExprKind::BlockMember(block, idx, m),
+                    ty,
+                    span,
+                }
             }
             None => {
                 let bname = b.name.clone();
-                let d = self.error("no-such-field", name.span, format!("uniform block `{bname}` has no member `{}`", name.name));
+                let d = self.error(
+                    "no-such-field",
+                    name.span,
+                    format!("uniform block `{bname}` has no member `{}`", name.name),
+                );
                 d.label = "unknown member".into();
                 error_expr(span)
             }
@@ -833,10 +1146,18 @@ impl Checker<'_> {
                     return error_expr(span);
                 }
                 match b.ty {
-                    Type::Array(_, n) => constant(ConstValue::Basic(vec![Scalar::I(n as i32)]), Type::INT, span),
+                    Type::Array(_, n) => constant(
+                        ConstValue::Basic(vec![Scalar::I(n as i32)]),
+                        Type::INT,
+                        span,
+                    ),
                     _ => {
                         let t = self.type_name(&b.ty);
-                        let d = self.error("invalid-length", span, format!("`.length()` needs an array, not {t}"));
+                        let d = self.error(
+                            "invalid-length",
+                            span,
+                            format!("`.length()` needs an array, not {t}"),
+                        );
                         d.label = "not an array".into();
                         d.token = "length".into();
                         error_expr(span)
@@ -845,7 +1166,9 @@ impl Checker<'_> {
             }
             Callee::Type(spec) => {
                 let args: Vec<Expr> = args.iter().map(|a| self.expr(a)).collect();
-                let Some(ty) = self.resolve_type(spec) else { return error_expr(span) };
+                let Some(ty) = self.resolve_type(spec) else {
+                    return error_expr(span);
+                };
                 self.construct(ty, args, span, spec.span)
             }
             Callee::Name(id) => {
@@ -854,18 +1177,32 @@ impl Checker<'_> {
                     Some(Sym::Struct(s)) => self.construct(Type::Struct(s), args, span, id.span),
                     Some(Sym::Funcs(ids)) => self.user_call(id, &ids, args, span),
                     Some(Sym::Var(_)) | Some(Sym::Block(_)) => {
-                        let hides = self.scopes[0].names.get(&id.name).is_some_and(|s| matches!(s, Sym::Funcs(_)));
-                        let d = self.error("not-a-function", id.span, format!("`{}` is a variable, not a function", id.name));
+                        let hides = self.scopes[0]
+                            .names
+                            .get(&id.name)
+                            .is_some_and(|s| matches!(s, Sym::Funcs(_)));
+                        let d = self.error(
+                            "not-a-function",
+                            id.span,
+                            format!("`{}` is a variable, not a function", id.name),
+                        );
                         d.label = "not a function".into();
                         if hides {
-                            d.notes.push(format!("a local declaration hides the function `{}`", id.name));
+                            d.notes.push(format!(
+                                "a local declaration hides the function `{}`",
+                                id.name
+                            ));
                         }
                         error_expr(span)
                     }
                     None => match builtins::overloads(&id.name) {
                         Some(sigs) => self.builtin_call(id, sigs, args, span),
                         None => {
-                            let d = self.error("undeclared-function", id.span, format!("no function named `{}` is declared", id.name));
+                            let d = self.error(
+                                "undeclared-function",
+                                id.span,
+                                format!("no function named `{}` is declared", id.name),
+                            );
                             d.label = "not declared before this call".into();
                             let help = match &*id.name {
                                 "texture2D" | "textureCube" | "texture3D" => Some("`texture2D`/`textureCube` are GLSL ES 1.00; in GLSL ES 3.00 use `texture`".to_string()),
@@ -885,7 +1222,11 @@ impl Checker<'_> {
                                         "texture2DLod" | "textureCubeLod" => "textureLod",
                                         _ => "textureProj",
                                     };
-                                    d.fix = Some(Fix::suggested(format!("use `{replacement}`"), id.span, replacement));
+                                    d.fix = Some(Fix::suggested(
+                                        format!("use `{replacement}`"),
+                                        id.span,
+                                        replacement,
+                                    ));
                                 }
                                 d.help = Some(h);
                             }
@@ -898,7 +1239,10 @@ impl Checker<'_> {
     }
 
     fn arg_types(&self, args: &[Expr]) -> String {
-        args.iter().map(|a| format!("`{}`", a.ty.display(&self.structs))).collect::<Vec<_>>().join(", ")
+        args.iter()
+            .map(|a| format!("`{}`", a.ty.display(&self.structs)))
+            .collect::<Vec<_>>()
+            .join(", ")
     }
 
     fn user_call(&mut self, id: &ast::Ident, ids: &[usize], args: Vec<Expr>, span: Span) -> Expr {
@@ -918,7 +1262,11 @@ impl Checker<'_> {
                         "`{} {}({})`",
                         func.ret.display(&self.structs),
                         func.name,
-                        func.params.iter().map(|p| p.ty.display(&self.structs).to_string()).collect::<Vec<_>>().join(", ")
+                        func.params
+                            .iter()
+                            .map(|p| p.ty.display(&self.structs).to_string())
+                            .collect::<Vec<_>>()
+                            .join(", ")
                     )
                 })
                 .collect();
@@ -942,14 +1290,26 @@ impl Checker<'_> {
             ctx.calls.push(f);
         }
         let ty = self.functions[f].ret.clone();
-        Expr { kind: ExprKind::Call(f, args), ty, span }
+        Expr {
+            kind: ExprKind::Call(f, args),
+            ty,
+            span,
+        }
     }
 
-    fn builtin_call(&mut self, id: &ast::Ident, sigs: &'static [builtins::Signature], args: Vec<Expr>, span: Span) -> Expr {
+    fn builtin_call(
+        &mut self,
+        id: &ast::Ident,
+        sigs: &'static [builtins::Signature],
+        args: Vec<Expr>,
+        span: Span,
+    ) -> Expr {
         if args.iter().any(is_error) {
             return error_expr(span);
         }
-        let sig = sigs.iter().find(|s| s.params.len() == args.len() && s.params.iter().zip(&args).all(|(p, a)| p.0 == a.ty));
+        let sig = sigs.iter().find(|s| {
+            s.params.len() == args.len() && s.params.iter().zip(&args).all(|(p, a)| p.0 == a.ty)
+        });
         let Some(sig) = sig else {
             let at = self.arg_types(&args);
             let mut cands: Vec<String> = sigs
@@ -959,7 +1319,11 @@ impl Checker<'_> {
                     format!(
                         "{}({})",
                         id.name,
-                        s.params.iter().map(|p| p.0.display(&[]).to_string()).collect::<Vec<_>>().join(", ")
+                        s.params
+                            .iter()
+                            .map(|p| p.0.display(&[]).to_string())
+                            .collect::<Vec<_>>()
+                            .join(", ")
                     )
                 })
                 .collect();
@@ -977,7 +1341,11 @@ impl Checker<'_> {
                 d.notes.push(format!(
                     "candidates: {}{}",
                     cands.join("; "),
-                    if total > 6 { format!("; and {} more", total - 6) } else { String::new() }
+                    if total > 6 {
+                        format!("; and {} more", total - 6)
+                    } else {
+                        String::new()
+                    }
                 ));
             }
             if let Some(f) = fix {
@@ -990,10 +1358,16 @@ impl Checker<'_> {
             let d = self.error(
                 "fragment-only-builtin",
                 id.span,
-                if matches!(sig.op, BuiltinFn::DFdx | BuiltinFn::DFdy | BuiltinFn::Fwidth) {
+                if matches!(
+                    sig.op,
+                    BuiltinFn::DFdx | BuiltinFn::DFdy | BuiltinFn::Fwidth
+                ) {
                     format!("`{}` is only available in fragment shaders", id.name)
                 } else {
-                    format!("`{}` with a bias argument is only available in fragment shaders", id.name)
+                    format!(
+                        "`{}` with a bias argument is only available in fragment shaders",
+                        id.name
+                    )
                 },
             );
             d.label = "not available in a vertex shader".into();
@@ -1007,18 +1381,36 @@ impl Checker<'_> {
         if sig.op.has_offset() {
             // The offset is the argument after the coordinates and lod/gradients: the one of
             // integer vector type after the first two.
-            if let Some(off) = args.iter().skip(2).find(|a| matches!(a.ty, Type::Vector(ScalarKind::Int, _))) {
+            if let Some(off) = args
+                .iter()
+                .skip(2)
+                .find(|a| matches!(a.ty, Type::Vector(ScalarKind::Int, _)))
+            {
                 match off.as_const().and_then(|c| c.scalars()) {
                     Some(vals) => {
-                        let (lo, hi) = (builtins::constant("gl_MinProgramTexelOffset").unwrap_or(-8), builtins::constant("gl_MaxProgramTexelOffset").unwrap_or(7));
-                        if vals.iter().any(|v| !matches!(v, Scalar::I(x) if (lo..=hi).contains(x))) {
-                            let d = self.error("texel-offset-range", off.span, format!("texel offsets must be between {lo} and {hi}"));
+                        let (lo, hi) = (
+                            builtins::constant("gl_MinProgramTexelOffset").unwrap_or(-8),
+                            builtins::constant("gl_MaxProgramTexelOffset").unwrap_or(7),
+                        );
+                        if vals
+                            .iter()
+                            .any(|v| !matches!(v, Scalar::I(x) if (lo..=hi).contains(x)))
+                        {
+                            let d = self.error(
+                                "texel-offset-range",
+                                off.span,
+                                format!("texel offsets must be between {lo} and {hi}"),
+                            );
                             d.label = "out of range".into();
                             return error_expr(span);
                         }
                     }
                     None => {
-                        let d = self.error("non-constant-offset", off.span, "a texel offset must be a constant expression");
+                        let d = self.error(
+                            "non-constant-offset",
+                            off.span,
+                            "a texel offset must be a constant expression",
+                        );
                         d.label = "not a constant expression".into();
                         return error_expr(span);
                     }
@@ -1026,7 +1418,12 @@ impl Checker<'_> {
             }
         }
         let ty = sig.ret.clone();
-        if !sig.op.is_texture() && !matches!(sig.op, BuiltinFn::DFdx | BuiltinFn::DFdy | BuiltinFn::Fwidth | BuiltinFn::Modf) {
+        if !sig.op.is_texture()
+            && !matches!(
+                sig.op,
+                BuiltinFn::DFdx | BuiltinFn::DFdy | BuiltinFn::Fwidth | BuiltinFn::Modf
+            )
+        {
             let consts: Option<Vec<&ConstValue>> = args.iter().map(|a| a.as_const()).collect();
             if let Some(cs) = consts {
                 let tys: Vec<&Type> = args.iter().map(|a| &a.ty).collect();
@@ -1035,12 +1432,21 @@ impl Checker<'_> {
                 }
             }
         }
-        Expr { kind: ExprKind::Builtin(sig.op, args), ty, span }
+        Expr {
+            kind: ExprKind::Builtin(sig.op, args),
+            ty,
+            span,
+        }
     }
 
     /// For a failed built-in call: a candidate reached by widening scalar arguments to the
     /// vector type the other arguments have (`pow(v, 2.0)` → `pow(v, vec3(2.0))`).
-    fn builtin_fix(&self, id: &ast::Ident, sigs: &[builtins::Signature], args: &[Expr]) -> Option<Fix> {
+    fn builtin_fix(
+        &self,
+        id: &ast::Ident,
+        sigs: &[builtins::Signature],
+        args: &[Expr],
+    ) -> Option<Fix> {
         for s in sigs.iter().filter(|s| s.params.len() == args.len()) {
             let mut edits = Vec::new();
             let mut ok = true;
@@ -1048,10 +1454,16 @@ impl Checker<'_> {
                 if p.0 == a.ty {
                     continue;
                 }
-                if a.ty.is_scalar() && p.0.scalar_kind() == a.ty.scalar_kind() && matches!(p.0, Type::Vector(..)) {
+                if a.ty.is_scalar()
+                    && p.0.scalar_kind() == a.ty.scalar_kind()
+                    && matches!(p.0, Type::Vector(..))
+                {
                     let ctor = p.0.display(&[]).to_string();
                     let text = self.file.slice(a.span);
-                    edits.push(crate::diagnostic::Edit { span: a.span, replacement: format!("{ctor}({text})") });
+                    edits.push(crate::diagnostic::Edit {
+                        span: a.span,
+                        replacement: format!("{ctor}({text})"),
+                    });
                 } else {
                     ok = false;
                     break;
@@ -1059,7 +1471,10 @@ impl Checker<'_> {
             }
             if ok && !edits.is_empty() {
                 return Some(Fix {
-                    message: format!("`{}` has no mixed vector/scalar form here: widen the scalar", id.name),
+                    message: format!(
+                        "`{}` has no mixed vector/scalar form here: widen the scalar",
+                        id.name
+                    ),
                     edits,
                     applicability: Applicability::Suggested,
                 });
@@ -1083,29 +1498,55 @@ impl Checker<'_> {
             error_expr(span)
         };
         if args.is_empty() {
-            return fail(self, format!("a {tname} constructor needs arguments"), "no arguments");
+            return fail(
+                self,
+                format!("a {tname} constructor needs arguments"),
+                "no arguments",
+            );
         }
         for a in &args {
             if a.ty == Type::Void {
-                return fail(self, "a `void` value cannot be a constructor argument".into(), "void argument");
+                return fail(
+                    self,
+                    "a `void` value cannot be a constructor argument".into(),
+                    "void argument",
+                );
             }
             if a.ty.contains_sampler(&self.structs) {
-                return fail(self, "samplers cannot be constructor arguments".into(), "sampler argument");
+                return fail(
+                    self,
+                    "samplers cannot be constructor arguments".into(),
+                    "sampler argument",
+                );
             }
         }
         let mut ty = ty;
         match &ty {
-            Type::Void | Type::Sampler(_) => return fail(self, format!("{tname} has no constructor"), "no constructor"),
+            Type::Void | Type::Sampler(_) => {
+                return fail(
+                    self,
+                    format!("{tname} has no constructor"),
+                    "no constructor",
+                )
+            }
             Type::Array(el, n) => {
                 let el = (**el).clone();
                 let n = *n;
                 if n != 0 && args.len() != n as usize {
-                    return fail(self, format!("{tname} needs {n} arguments, not {}", args.len()), "wrong number of elements");
+                    return fail(
+                        self,
+                        format!("{tname} needs {n} arguments, not {}", args.len()),
+                        "wrong number of elements",
+                    );
                 }
                 if let Some(bad) = args.iter().find(|a| a.ty != el) {
                     let (e, b) = (self.type_name(&el), self.type_name(&bad.ty));
                     let bspan = bad.span;
-                    let d = self.error("invalid-constructor", bspan, format!("array elements must be {e}, not {b}"));
+                    let d = self.error(
+                        "invalid-constructor",
+                        bspan,
+                        format!("array elements must be {e}, not {b}"),
+                    );
                     d.label = format!("this is {b}");
                     return error_expr(span);
                 }
@@ -1114,13 +1555,25 @@ impl Checker<'_> {
             Type::Struct(id) => {
                 let members = self.structs[id.0 as usize].members.clone();
                 if members.len() != args.len() {
-                    return fail(self, format!("{tname} has {} members but {} arguments are given", members.len(), args.len()), "wrong number of arguments");
+                    return fail(
+                        self,
+                        format!(
+                            "{tname} has {} members but {} arguments are given",
+                            members.len(),
+                            args.len()
+                        ),
+                        "wrong number of arguments",
+                    );
                 }
                 for (m, a) in members.iter().zip(&args) {
                     if m.ty != a.ty {
                         let (want, got) = (self.type_name(&m.ty), self.type_name(&a.ty));
                         let aspan = a.span;
-                        let d = self.error("invalid-constructor", aspan, format!("member `{}` is {want}, not {got}", m.name));
+                        let d = self.error(
+                            "invalid-constructor",
+                            aspan,
+                            format!("member `{}` is {want}, not {got}", m.name),
+                        );
                         d.label = format!("this is {got}");
                         return error_expr(span);
                     }
@@ -1128,11 +1581,19 @@ impl Checker<'_> {
             }
             Type::Scalar(_) => {
                 if args.len() != 1 {
-                    return fail(self, format!("a {tname} constructor takes one argument"), "too many arguments");
+                    return fail(
+                        self,
+                        format!("a {tname} constructor takes one argument"),
+                        "too many arguments",
+                    );
                 }
                 if !args[0].ty.is_numeric_basic() {
                     let t = self.type_name(&args[0].ty);
-                    return fail(self, format!("cannot construct {tname} from {t}"), "not a scalar, vector or matrix");
+                    return fail(
+                        self,
+                        format!("cannot construct {tname} from {t}"),
+                        "not a scalar, vector or matrix",
+                    );
                 }
             }
             Type::Vector(_, n) | Type::Matrix { cols: n, .. } => {
@@ -1140,21 +1601,53 @@ impl Checker<'_> {
                 let is_matrix = matches!(ty, Type::Matrix { .. });
                 let _ = n;
                 if args.iter().any(|a| !a.ty.is_numeric_basic()) {
-                    return fail(self, format!("{tname} can only be built from scalars, vectors and matrices"), "invalid argument type");
+                    return fail(
+                        self,
+                        format!("{tname} can only be built from scalars, vectors and matrices"),
+                        "invalid argument type",
+                    );
                 }
                 let single = args.len() == 1;
-                if is_matrix && !single && args.iter().any(|a| matches!(a.ty, Type::Matrix { .. })) {
-                    return fail(self, format!("a matrix argument must be the only argument of a {tname} constructor"), "matrix among other arguments");
+                if is_matrix && !single && args.iter().any(|a| matches!(a.ty, Type::Matrix { .. }))
+                {
+                    return fail(
+                        self,
+                        format!(
+                            "a matrix argument must be the only argument of a {tname} constructor"
+                        ),
+                        "matrix among other arguments",
+                    );
                 }
-                if !single || !(args[0].ty.is_scalar() || (is_matrix && matches!(args[0].ty, Type::Matrix { .. }))) {
-                    let total: u32 = args.iter().map(|a| a.ty.component_count().unwrap_or(0)).sum();
-                    let before_last: u32 = args[..args.len() - 1].iter().map(|a| a.ty.component_count().unwrap_or(0)).sum();
+                if !single
+                    || !(args[0].ty.is_scalar()
+                        || (is_matrix && matches!(args[0].ty, Type::Matrix { .. })))
+                {
+                    let total: u32 = args
+                        .iter()
+                        .map(|a| a.ty.component_count().unwrap_or(0))
+                        .sum();
+                    let before_last: u32 = args[..args.len() - 1]
+                        .iter()
+                        .map(|a| a.ty.component_count().unwrap_or(0))
+                        .sum();
                     if single && !is_matrix && total >= needed {
                         // vecN(vecM) with M >= N, vecN(matrix) with enough components.
                     } else if total < needed {
-                        return fail(self, format!("{tname} needs {needed} components, but the arguments have {total}"), "not enough components");
+                        return fail(
+                            self,
+                            format!(
+                                "{tname} needs {needed} components, but the arguments have {total}"
+                            ),
+                            "not enough components",
+                        );
                     } else if before_last >= needed {
-                        return fail(self, format!("too many arguments for {tname}: the last argument is not used"), "too many arguments");
+                        return fail(
+                            self,
+                            format!(
+                                "too many arguments for {tname}: the last argument is not used"
+                            ),
+                            "too many arguments",
+                        );
                     } else if is_matrix && single {
                         // mat from a vector: needs exactly enough? handled above.
                     }
@@ -1168,7 +1661,11 @@ impl Checker<'_> {
                 return constant(v, ty, span);
             }
         }
-        Expr { kind: ExprKind::Construct(args), ty, span }
+        Expr {
+            kind: ExprKind::Construct(args),
+            ty,
+            span,
+        }
     }
 }
 
@@ -1182,11 +1679,12 @@ fn edit_distance(a: &str, b: &str) -> usize {
     for (i, ca) in a.iter().enumerate() {
         let mut cur = vec![i + 1];
         for (j, cb) in b.iter().enumerate() {
-            let v = (prev[j] + usize::from(ca != cb)).min(prev[j + 1] + 1).min(cur[j] + 1);
+            let v = (prev[j] + usize::from(ca != cb))
+                .min(prev[j + 1] + 1)
+                .min(cur[j] + 1);
             cur.push(v);
         }
         prev = cur;
     }
     prev[b.len()]
 }
-

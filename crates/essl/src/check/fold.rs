@@ -101,12 +101,23 @@ fn shift(op: BinaryOp, a: Scalar, b: Scalar) -> Result<Scalar, FoldError> {
 }
 
 /// Folds a binary operation whose result type is `rt`.
-pub fn binary(op: BinaryOp, a: &ConstValue, at: &Type, b: &ConstValue, bt: &Type, rt: &Type) -> Result<ConstValue, FoldError> {
+pub fn binary(
+    op: BinaryOp,
+    a: &ConstValue,
+    at: &Type,
+    b: &ConstValue,
+    bt: &Type,
+    rt: &Type,
+) -> Result<ConstValue, FoldError> {
     use BinaryOp::*;
     match op {
         Eq | NotEq => {
             let eq = const_eq(a, b);
-            return Ok(ConstValue::Basic(vec![Scalar::B(if op == Eq { eq } else { !eq })]));
+            return Ok(ConstValue::Basic(vec![Scalar::B(if op == Eq {
+                eq
+            } else {
+                !eq
+            })]));
         }
         And | Or | Xor => {
             let (Some([Scalar::B(x)]), Some([Scalar::B(y)])) = (basic(a), basic(b)) else {
@@ -120,7 +131,9 @@ pub fn binary(op: BinaryOp, a: &ConstValue, at: &Type, b: &ConstValue, bt: &Type
             return Ok(ConstValue::Basic(vec![Scalar::B(v)]));
         }
         Less | Greater | LessEq | GreaterEq => {
-            let (Some([x]), Some([y])) = (basic(a), basic(b)) else { return Err(FoldError::Unsupported) };
+            let (Some([x]), Some([y])) = (basic(a), basic(b)) else {
+                return Err(FoldError::Unsupported);
+            };
             let ord = match (x, y) {
                 (Scalar::F(x), Scalar::F(y)) => x.partial_cmp(y),
                 (Scalar::I(x), Scalar::I(y)) => Some(x.cmp(y)),
@@ -140,17 +153,23 @@ pub fn binary(op: BinaryOp, a: &ConstValue, at: &Type, b: &ConstValue, bt: &Type
         }
         _ => {}
     }
-    let (Some(x), Some(y)) = (basic(a), basic(b)) else { return Err(FoldError::Unsupported) };
+    let (Some(x), Some(y)) = (basic(a), basic(b)) else {
+        return Err(FoldError::Unsupported);
+    };
     if op == Mul {
         match (at, bt) {
             (Type::Matrix { cols, rows }, Type::Vector(_, _)) => {
                 let (c, r) = (*cols as usize, *rows as usize);
-                let out = (0..r).map(|i| Scalar::F((0..c).map(|k| f(x[k * r + i]) * f(y[k])).sum())).collect();
+                let out = (0..r)
+                    .map(|i| Scalar::F((0..c).map(|k| f(x[k * r + i]) * f(y[k])).sum()))
+                    .collect();
                 return Ok(ConstValue::Basic(out));
             }
             (Type::Vector(_, _), Type::Matrix { cols, rows }) => {
                 let (c, r) = (*cols as usize, *rows as usize);
-                let out = (0..c).map(|j| Scalar::F((0..r).map(|k| f(x[k]) * f(y[j * r + k])).sum())).collect();
+                let out = (0..c)
+                    .map(|j| Scalar::F((0..r).map(|k| f(x[k]) * f(y[j * r + k])).sum()))
+                    .collect();
                 return Ok(ConstValue::Basic(out));
             }
             (Type::Matrix { cols: c1, rows: r1 }, Type::Matrix { cols: c2, .. }) => {
@@ -158,7 +177,9 @@ pub fn binary(op: BinaryOp, a: &ConstValue, at: &Type, b: &ConstValue, bt: &Type
                 let mut out = Vec::with_capacity(c2 * r1);
                 for j in 0..c2 {
                     for i in 0..r1 {
-                        out.push(Scalar::F((0..c1).map(|k| f(x[k * r1 + i]) * f(y[j * c1 + k])).sum()));
+                        out.push(Scalar::F(
+                            (0..c1).map(|k| f(x[k * r1 + i]) * f(y[j * c1 + k])).sum(),
+                        ));
                     }
                 }
                 return Ok(ConstValue::Basic(out));
@@ -181,8 +202,12 @@ pub fn binary(op: BinaryOp, a: &ConstValue, at: &Type, b: &ConstValue, bt: &Type
 
 fn const_eq(a: &ConstValue, b: &ConstValue) -> bool {
     match (a, b) {
-        (ConstValue::Basic(x), ConstValue::Basic(y)) => x.len() == y.len() && x.iter().zip(y).all(|(p, q)| p == q),
-        (ConstValue::Composite(x), ConstValue::Composite(y)) => x.len() == y.len() && x.iter().zip(y).all(|(p, q)| const_eq(p, q)),
+        (ConstValue::Basic(x), ConstValue::Basic(y)) => {
+            x.len() == y.len() && x.iter().zip(y).all(|(p, q)| p == q)
+        }
+        (ConstValue::Composite(x), ConstValue::Composite(y)) => {
+            x.len() == y.len() && x.iter().zip(y).all(|(p, q)| const_eq(p, q))
+        }
         _ => false,
     }
 }
@@ -203,7 +228,12 @@ pub fn index(c: &ConstValue, ty: &Type, i: usize) -> Option<ConstValue> {
 /// Folds a swizzle.
 pub fn swizzle(c: &ConstValue, comps: &[u8]) -> Option<ConstValue> {
     let v = basic(c)?;
-    Some(ConstValue::Basic(comps.iter().map(|&i| v.get(i as usize).copied()).collect::<Option<Vec<_>>>()?))
+    Some(ConstValue::Basic(
+        comps
+            .iter()
+            .map(|&i| v.get(i as usize).copied())
+            .collect::<Option<Vec<_>>>()?,
+    ))
 }
 
 /// Converts a scalar to a kind, as constructors do.
@@ -247,22 +277,35 @@ fn float_to_u32(v: f32) -> u32 {
 /// Folds a constructor.
 pub fn construct(ty: &Type, args: &[&ConstValue], arg_tys: &[&Type]) -> Option<ConstValue> {
     match ty {
-        Type::Array(..) | Type::Struct(_) => Some(ConstValue::Composite(args.iter().map(|a| (*a).clone()).collect())),
-        Type::Scalar(k) => Some(ConstValue::Basic(vec![convert(*basic(args[0])?.first()?, *k)])),
+        Type::Array(..) | Type::Struct(_) => Some(ConstValue::Composite(
+            args.iter().map(|a| (*a).clone()).collect(),
+        )),
+        Type::Scalar(k) => Some(ConstValue::Basic(vec![convert(
+            *basic(args[0])?.first()?,
+            *k,
+        )])),
         Type::Vector(k, n) => {
             let n = *n as usize;
             if args.len() == 1 && arg_tys[0].is_scalar() {
                 let s = convert(basic(args[0])?[0], *k);
                 return Some(ConstValue::Basic(vec![s; n]));
             }
-            let comps: Vec<Scalar> = args.iter().map(|a| basic(a)).collect::<Option<Vec<_>>>()?.concat();
-            Some(ConstValue::Basic(comps.into_iter().take(n).map(|s| convert(s, *k)).collect()))
+            let comps: Vec<Scalar> = args
+                .iter()
+                .map(|a| basic(a))
+                .collect::<Option<Vec<_>>>()?
+                .concat();
+            Some(ConstValue::Basic(
+                comps.into_iter().take(n).map(|s| convert(s, *k)).collect(),
+            ))
         }
         Type::Matrix { cols, rows } => {
             let (c, r) = (*cols as usize, *rows as usize);
             if args.len() == 1 && arg_tys[0].is_scalar() {
                 let s = f(basic(args[0])?[0]);
-                let out = (0..c * r).map(|i| Scalar::F(if i / r == i % r { s } else { 0.0 })).collect();
+                let out = (0..c * r)
+                    .map(|i| Scalar::F(if i / r == i % r { s } else { 0.0 }))
+                    .collect();
                 return Some(ConstValue::Basic(out));
             }
             if args.len() == 1 {
@@ -284,8 +327,18 @@ pub fn construct(ty: &Type, args: &[&ConstValue], arg_tys: &[&Type]) -> Option<C
                     return Some(ConstValue::Basic(out));
                 }
             }
-            let comps: Vec<Scalar> = args.iter().map(|a| basic(a)).collect::<Option<Vec<_>>>()?.concat();
-            Some(ConstValue::Basic(comps.into_iter().take(c * r).map(|s| Scalar::F(f(s))).collect()))
+            let comps: Vec<Scalar> = args
+                .iter()
+                .map(|a| basic(a))
+                .collect::<Option<Vec<_>>>()?
+                .concat();
+            Some(ConstValue::Basic(
+                comps
+                    .into_iter()
+                    .take(c * r)
+                    .map(|s| Scalar::F(f(s)))
+                    .collect(),
+            ))
         }
         _ => None,
     }
@@ -313,11 +366,18 @@ fn map_f(args: &[&ConstValue], n: usize, g: impl Fn(&[f32]) -> f32) -> Option<Co
     Some(fvec(out))
 }
 
-fn map_scalars(args: &[&ConstValue], n: usize, g: impl Fn(&[Scalar]) -> Option<Scalar>) -> Option<ConstValue> {
+fn map_scalars(
+    args: &[&ConstValue],
+    n: usize,
+    g: impl Fn(&[Scalar]) -> Option<Scalar>,
+) -> Option<ConstValue> {
     let vs: Vec<&[Scalar]> = args.iter().map(|a| basic(a)).collect::<Option<_>>()?;
     let mut out = Vec::with_capacity(n);
     for i in 0..n {
-        let xs: Vec<Scalar> = vs.iter().map(|v| if v.len() == 1 { v[0] } else { v[i] }).collect();
+        let xs: Vec<Scalar> = vs
+            .iter()
+            .map(|v| if v.len() == 1 { v[0] } else { v[i] })
+            .collect();
         out.push(g(&xs)?);
     }
     Some(ConstValue::Basic(out))
@@ -331,7 +391,8 @@ fn determinant(m: &[f32], n: usize) -> f32 {
     match n {
         2 => m[0] * m[3] - m[2] * m[1],
         3 => {
-            m[0] * (m[4] * m[8] - m[7] * m[5]) - m[3] * (m[1] * m[8] - m[7] * m[2]) + m[6] * (m[1] * m[5] - m[4] * m[2])
+            m[0] * (m[4] * m[8] - m[7] * m[5]) - m[3] * (m[1] * m[8] - m[7] * m[2])
+                + m[6] * (m[1] * m[5] - m[4] * m[2])
         }
         _ => {
             let mut det = 0.0;
@@ -361,7 +422,11 @@ fn inverse(m: &[f32], n: usize) -> Vec<f32> {
                 .map(|(cc, rr)| m[cc * n + rr])
                 .collect();
             let sign = if (r + c) % 2 == 0 { 1.0 } else { -1.0 };
-            let cof = if n == 2 { minor[0] } else { determinant(&minor, n - 1) };
+            let cof = if n == 2 {
+                minor[0]
+            } else {
+                determinant(&minor, n - 1)
+            };
             out[r * n + c] = sign * cof / det;
         }
     }
@@ -410,7 +475,12 @@ fn f32_to_half(v: f32) -> u16 {
 }
 
 /// Folds a built-in function call (not texture functions or derivatives).
-pub fn builtin(op: BuiltinFn, args: &[&ConstValue], tys: &[&Type], ret: &Type) -> Option<ConstValue> {
+pub fn builtin(
+    op: BuiltinFn,
+    args: &[&ConstValue],
+    tys: &[&Type],
+    ret: &Type,
+) -> Option<ConstValue> {
     use BuiltinFn::*;
     let n = ret.component_count().unwrap_or(1) as usize;
     let n0 = tys.first().and_then(|t| t.component_count()).unwrap_or(1) as usize;
@@ -444,40 +514,58 @@ pub fn builtin(op: BuiltinFn, args: &[&ConstValue], tys: &[&Type], ret: &Type) -
         Ceil => map_f(args, n, |x| x[0].ceil())?,
         Fract => map_f(args, n, |x| x[0] - x[0].floor())?,
         Mod => map_f(args, n, |x| x[0] - x[1] * (x[0] / x[1]).floor())?,
-        Abs | Sign | Min | Max | Clamp if kind0 != Some(ScalarKind::Float) => map_scalars(args, n, |x| {
-            Some(match op {
-                Abs => match x[0] {
-                    Scalar::I(v) => Scalar::I(v.wrapping_abs()),
-                    s => s,
-                },
-                Sign => match x[0] {
-                    Scalar::I(v) => Scalar::I(v.signum()),
-                    s => s,
-                },
-                Min => match (x[0], x[1]) {
-                    (Scalar::I(a), Scalar::I(b)) => Scalar::I(a.min(b)),
-                    (Scalar::U(a), Scalar::U(b)) => Scalar::U(a.min(b)),
-                    _ => return None,
-                },
-                Max => match (x[0], x[1]) {
-                    (Scalar::I(a), Scalar::I(b)) => Scalar::I(a.max(b)),
-                    (Scalar::U(a), Scalar::U(b)) => Scalar::U(a.max(b)),
-                    _ => return None,
-                },
-                _ => match (x[0], x[1], x[2]) {
-                    (Scalar::I(a), Scalar::I(lo), Scalar::I(hi)) => Scalar::I(a.max(lo).min(hi)),
-                    (Scalar::U(a), Scalar::U(lo), Scalar::U(hi)) => Scalar::U(a.max(lo).min(hi)),
-                    _ => return None,
-                },
-            })
-        })?,
+        Abs | Sign | Min | Max | Clamp if kind0 != Some(ScalarKind::Float) => {
+            map_scalars(args, n, |x| {
+                Some(match op {
+                    Abs => match x[0] {
+                        Scalar::I(v) => Scalar::I(v.wrapping_abs()),
+                        s => s,
+                    },
+                    Sign => match x[0] {
+                        Scalar::I(v) => Scalar::I(v.signum()),
+                        s => s,
+                    },
+                    Min => match (x[0], x[1]) {
+                        (Scalar::I(a), Scalar::I(b)) => Scalar::I(a.min(b)),
+                        (Scalar::U(a), Scalar::U(b)) => Scalar::U(a.min(b)),
+                        _ => return None,
+                    },
+                    Max => match (x[0], x[1]) {
+                        (Scalar::I(a), Scalar::I(b)) => Scalar::I(a.max(b)),
+                        (Scalar::U(a), Scalar::U(b)) => Scalar::U(a.max(b)),
+                        _ => return None,
+                    },
+                    _ => match (x[0], x[1], x[2]) {
+                        (Scalar::I(a), Scalar::I(lo), Scalar::I(hi)) => {
+                            Scalar::I(a.max(lo).min(hi))
+                        }
+                        (Scalar::U(a), Scalar::U(lo), Scalar::U(hi)) => {
+                            Scalar::U(a.max(lo).min(hi))
+                        }
+                        _ => return None,
+                    },
+                })
+            })?
+        }
         Abs => map_f(args, n, |x| x[0].abs())?,
-        Sign => map_f(args, n, |x| if x[0] > 0.0 { 1.0 } else if x[0] < 0.0 { -1.0 } else { 0.0 })?,
+        Sign => map_f(args, n, |x| {
+            if x[0] > 0.0 {
+                1.0
+            } else if x[0] < 0.0 {
+                -1.0
+            } else {
+                0.0
+            }
+        })?,
         Min => map_f(args, n, |x| x[0].min(x[1]))?,
         Max => map_f(args, n, |x| x[0].max(x[1]))?,
         Clamp => map_f(args, n, |x| x[0].max(x[1]).min(x[2]))?,
         Mix if tys[2].scalar_kind() == Some(ScalarKind::Bool) => map_scalars(args, n, |x| {
-            Some(if matches!(x[2], Scalar::B(true)) { x[1] } else { x[0] })
+            Some(if matches!(x[2], Scalar::B(true)) {
+                x[1]
+            } else {
+                x[0]
+            })
         })?,
         Mix => map_f(args, n, |x| x[0] * (1.0 - x[2]) + x[1] * x[2])?,
         Step => map_f(args, n, |x| if x[1] < x[0] { 0.0 } else { 1.0 })?,
@@ -500,7 +588,9 @@ pub fn builtin(op: BuiltinFn, args: &[&ConstValue], tys: &[&Type], ret: &Type) -
             let v = floats(args[0])?;
             let enc = |x: f32| -> u32 {
                 match op {
-                    PackSnorm2x16 => ((x.clamp(-1.0, 1.0) * 32767.0).round() as i32 as i16) as u16 as u32,
+                    PackSnorm2x16 => {
+                        ((x.clamp(-1.0, 1.0) * 32767.0).round() as i32 as i16) as u16 as u32
+                    }
                     PackUnorm2x16 => (x.clamp(0.0, 1.0) * 65535.0).round() as u32,
                     _ => f32_to_half(x) as u32,
                 }
@@ -508,7 +598,9 @@ pub fn builtin(op: BuiltinFn, args: &[&ConstValue], tys: &[&Type], ret: &Type) -
             ConstValue::Basic(vec![Scalar::U(enc(v[0]) | (enc(v[1]) << 16))])
         }
         UnpackSnorm2x16 | UnpackUnorm2x16 | UnpackHalf2x16 => {
-            let Scalar::U(p) = basic(args[0])?[0] else { return None };
+            let Scalar::U(p) = basic(args[0])?[0] else {
+                return None;
+            };
             let dec = |h: u32| -> f32 {
                 match op {
                     UnpackSnorm2x16 => ((h as u16 as i16) as f32 / 32767.0).clamp(-1.0, 1.0),
@@ -527,7 +619,11 @@ pub fn builtin(op: BuiltinFn, args: &[&ConstValue], tys: &[&Type], ret: &Type) -
         Dot => fvec(vec![dot(&floats(args[0])?, &floats(args[1])?)]),
         Cross => {
             let (a, b) = (floats(args[0])?, floats(args[1])?);
-            fvec(vec![a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]])
+            fvec(vec![
+                a[1] * b[2] - a[2] * b[1],
+                a[2] * b[0] - a[0] * b[2],
+                a[0] * b[1] - a[1] * b[0],
+            ])
         }
         Normalize => {
             let a = floats(args[0])?;
@@ -551,22 +647,29 @@ pub fn builtin(op: BuiltinFn, args: &[&ConstValue], tys: &[&Type], ret: &Type) -
             if k < 0.0 {
                 fvec(vec![0.0; n0])
             } else {
-                fvec(i.iter().zip(&nn).map(|(a, b)| eta * a - (eta * d + k.sqrt()) * b).collect())
+                fvec(
+                    i.iter()
+                        .zip(&nn)
+                        .map(|(a, b)| eta * a - (eta * d + k.sqrt()) * b)
+                        .collect(),
+                )
             }
         }
         MatrixCompMult => map_f(args, n, |x| x[0] * x[1])?,
         OuterProduct => {
             let (c, r) = (floats(args[0])?, floats(args[1])?);
             let mut out = Vec::new();
-            for j in 0..r.len() {
+            for rj in &r {
                 for ci in &c {
-                    out.push(ci * r[j]);
+                    out.push(ci * rj);
                 }
             }
             fvec(out)
         }
         Transpose => {
-            let Type::Matrix { cols, rows } = tys[0] else { return None };
+            let Type::Matrix { cols, rows } = tys[0] else {
+                return None;
+            };
             let (c, r) = (*cols as usize, *rows as usize);
             let m = floats(args[0])?;
             let mut out = Vec::with_capacity(c * r);
@@ -578,11 +681,15 @@ pub fn builtin(op: BuiltinFn, args: &[&ConstValue], tys: &[&Type], ret: &Type) -
             fvec(out)
         }
         Determinant => {
-            let Type::Matrix { cols, .. } = tys[0] else { return None };
+            let Type::Matrix { cols, .. } = tys[0] else {
+                return None;
+            };
             fvec(vec![determinant(&floats(args[0])?, *cols as usize)])
         }
         Inverse => {
-            let Type::Matrix { cols, .. } = tys[0] else { return None };
+            let Type::Matrix { cols, .. } = tys[0] else {
+                return None;
+            };
             fvec(inverse(&floats(args[0])?, *cols as usize))
         }
         LessThan | LessThanEqual | GreaterThan | GreaterThanEqual | Equal | NotEqual => {
@@ -606,8 +713,12 @@ pub fn builtin(op: BuiltinFn, args: &[&ConstValue], tys: &[&Type], ret: &Type) -
                 }))
             })?
         }
-        Any => ConstValue::Basic(vec![Scalar::B(basic(args[0])?.iter().any(|s| matches!(s, Scalar::B(true))))]),
-        All => ConstValue::Basic(vec![Scalar::B(basic(args[0])?.iter().all(|s| matches!(s, Scalar::B(true))))]),
+        Any => ConstValue::Basic(vec![Scalar::B(
+            basic(args[0])?.iter().any(|s| matches!(s, Scalar::B(true))),
+        )]),
+        All => ConstValue::Basic(vec![Scalar::B(
+            basic(args[0])?.iter().all(|s| matches!(s, Scalar::B(true))),
+        )]),
         Not => map_scalars(args, n, |x| match x[0] {
             Scalar::B(b) => Some(Scalar::B(!b)),
             _ => None,
@@ -630,7 +741,15 @@ mod tests {
         // mat2(1, 2, 3, 4): columns (1,2) and (3,4); times (1, 1) = (4, 6).
         let m = c(&[1.0, 2.0, 3.0, 4.0]);
         let v = c(&[1.0, 1.0]);
-        let r = binary(BinaryOp::Mul, &m, &Type::Matrix { cols: 2, rows: 2 }, &v, &Type::Vector(ScalarKind::Float, 2), &Type::Vector(ScalarKind::Float, 2)).unwrap();
+        let r = binary(
+            BinaryOp::Mul,
+            &m,
+            &Type::Matrix { cols: 2, rows: 2 },
+            &v,
+            &Type::Vector(ScalarKind::Float, 2),
+            &Type::Vector(ScalarKind::Float, 2),
+        )
+        .unwrap();
         assert_eq!(r, c(&[4.0, 6.0]));
     }
 
@@ -658,6 +777,16 @@ mod tests {
     fn integer_division_by_zero_is_reported() {
         let one = ConstValue::Basic(vec![Scalar::I(1)]);
         let zero = ConstValue::Basic(vec![Scalar::I(0)]);
-        assert_eq!(binary(BinaryOp::Div, &one, &Type::INT, &zero, &Type::INT, &Type::INT), Err(FoldError::DivideByZero));
+        assert_eq!(
+            binary(
+                BinaryOp::Div,
+                &one,
+                &Type::INT,
+                &zero,
+                &Type::INT,
+                &Type::INT
+            ),
+            Err(FoldError::DivideByZero)
+        );
     }
 }

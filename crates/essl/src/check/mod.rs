@@ -127,7 +127,9 @@ impl<'a> Checker<'a> {
         }
         for name in ["sampler2D", "samplerCube"] {
             let s = SamplerType::from_name(name).expect("sampler");
-            global.precisions.push((PrecKey::Sampler(s), Precision::Low));
+            global
+                .precisions
+                .push((PrecKey::Sampler(s), Precision::Low));
         }
         Checker {
             file,
@@ -151,15 +153,27 @@ impl<'a> Checker<'a> {
 
     // ----- diagnostics -----
 
-    fn error(&mut self, code: &'static str, span: Span, message: impl Into<String>) -> &mut Diagnostic {
+    fn error(
+        &mut self,
+        code: &'static str,
+        span: Span,
+        message: impl Into<String>,
+    ) -> &mut Diagnostic {
         let token = self.file.slice(span).to_string();
-        self.diags.push(Diagnostic::error(code, message, span).with_token(token));
+        self.diags
+            .push(Diagnostic::error(code, message, span).with_token(token));
         self.diags.last_mut().expect("just pushed")
     }
 
-    fn warning(&mut self, code: &'static str, span: Span, message: impl Into<String>) -> &mut Diagnostic {
+    fn warning(
+        &mut self,
+        code: &'static str,
+        span: Span,
+        message: impl Into<String>,
+    ) -> &mut Diagnostic {
         let token = self.file.slice(span).to_string();
-        self.diags.push(Diagnostic::warning(code, message, span).with_token(token));
+        self.diags
+            .push(Diagnostic::warning(code, message, span).with_token(token));
         self.diags.last_mut().expect("just pushed")
     }
 
@@ -194,13 +208,20 @@ impl<'a> Checker<'a> {
                 Sym::Block(_) => "a uniform block instance",
                 Sym::Var(_) => "a variable",
             };
-            let d = self
-                .error("redefinition", name.span, format!("`{}` is already declared in this scope", name.name));
+            let d = self.error(
+                "redefinition",
+                name.span,
+                format!("`{}` is already declared in this scope", name.name),
+            );
             d.label = format!("redefines {what}");
             d.help = Some("rename one of them".into());
             return false;
         }
-        self.scopes.last_mut().expect("scope").names.insert(name.name.clone(), sym);
+        self.scopes
+            .last_mut()
+            .expect("scope")
+            .names
+            .insert(name.name.clone(), sym);
         true
     }
 
@@ -237,7 +258,11 @@ impl<'a> Checker<'a> {
 
     fn default_precision(&self, key: PrecKey) -> Option<Precision> {
         self.scopes.iter().rev().find_map(|s| {
-            s.precisions.iter().rev().find(|(k, _)| *k == key).map(|(_, p)| *p)
+            s.precisions
+                .iter()
+                .rev()
+                .find(|(k, _)| *k == key)
+                .map(|(_, p)| *p)
         })
     }
 
@@ -245,7 +270,9 @@ impl<'a> Checker<'a> {
         match ty {
             Type::Scalar(k) | Type::Vector(k, _) => match k {
                 crate::types::ScalarKind::Float => Some(PrecKey::Float),
-                crate::types::ScalarKind::Int | crate::types::ScalarKind::Uint => Some(PrecKey::Int),
+                crate::types::ScalarKind::Int | crate::types::ScalarKind::Uint => {
+                    Some(PrecKey::Int)
+                }
                 crate::types::ScalarKind::Bool => None,
             },
             Type::Matrix { .. } => Some(PrecKey::Float),
@@ -257,7 +284,12 @@ impl<'a> Checker<'a> {
 
     /// The precision of a declaration: its qualifier, else the default in scope. Reports a
     /// missing default (a `float` in a fragment shader, a `sampler3D` anywhere).
-    fn precision_for(&mut self, ty: &Type, declared: Option<Precision>, span: Span) -> Option<Precision> {
+    fn precision_for(
+        &mut self,
+        ty: &Type,
+        declared: Option<Precision>,
+        span: Span,
+    ) -> Option<Precision> {
         let key = Self::prec_key(ty)?;
         if declared.is_some() {
             return declared;
@@ -297,7 +329,8 @@ impl<'a> Checker<'a> {
 
     /// Where a `precision` statement can be inserted: the start of line 2 (after `#version`).
     fn precision_insert_point(&self) -> Option<u32> {
-        if self.file.line_text(0).trim_start().starts_with("#version") && self.file.line_count() > 1 {
+        if self.file.line_text(0).trim_start().starts_with("#version") && self.file.line_count() > 1
+        {
             Some(self.file.line_start(1))
         } else {
             None
@@ -312,13 +345,20 @@ impl<'a> Checker<'a> {
             ast::TypeName::Void => Type::Void,
             ast::TypeName::Scalar(k) => Type::Scalar(*k),
             ast::TypeName::Vector(k, n) => Type::Vector(*k, *n),
-            ast::TypeName::Matrix { cols, rows } => Type::Matrix { cols: *cols, rows: *rows },
+            ast::TypeName::Matrix { cols, rows } => Type::Matrix {
+                cols: *cols,
+                rows: *rows,
+            },
             ast::TypeName::Sampler(s) => Type::Sampler(*s),
             ast::TypeName::Struct(decl) => Type::Struct(self.declare_struct(decl)?),
             ast::TypeName::Named(id) => match self.lookup(&id.name) {
                 Some(Sym::Struct(s)) => Type::Struct(*s),
                 _ => {
-                    let d = self.error("unknown-type", id.span, format!("`{}` is not a type", id.name));
+                    let d = self.error(
+                        "unknown-type",
+                        id.span,
+                        format!("`{}` is not a type", id.name),
+                    );
                     d.label = "not a type".into();
                     return None;
                 }
@@ -333,7 +373,11 @@ impl<'a> Checker<'a> {
     /// Applies an array size to a type; `[]` gives size 0, to be fixed by an initializer.
     fn array_of(&mut self, base: Type, size: &ast::ArraySize, span: Span) -> Option<Type> {
         if base.is_array() {
-            let d = self.error("array-of-arrays", size.span, "arrays of arrays are not allowed in GLSL ES 3.00");
+            let d = self.error(
+                "array-of-arrays",
+                size.span,
+                "arrays of arrays are not allowed in GLSL ES 3.00",
+            );
             d.label = "a second array dimension".into();
             return None;
         }
@@ -342,7 +386,9 @@ impl<'a> Checker<'a> {
             d.label = "an array of `void`".into();
             return None;
         }
-        let Some(e) = &size.size else { return Some(Type::Array(Box::new(base), 0)) };
+        let Some(e) = &size.size else {
+            return Some(Type::Array(Box::new(base), 0));
+        };
         let n = self.array_size(e)?;
         Some(Type::Array(Box::new(base), n))
     }
@@ -354,21 +400,36 @@ impl<'a> Checker<'a> {
             return None;
         }
         let Some(c) = checked.as_const() else {
-            let d = self.error("non-constant-array-size", e.span, "array size must be a constant integral expression");
+            let d = self.error(
+                "non-constant-array-size",
+                e.span,
+                "array size must be a constant integral expression",
+            );
             d.label = "not a constant expression".into();
             return None;
         };
         let value = match (&checked.ty, c.as_int()) {
-            (Type::Scalar(crate::types::ScalarKind::Int | crate::types::ScalarKind::Uint), Some(v)) => v,
+            (
+                Type::Scalar(crate::types::ScalarKind::Int | crate::types::ScalarKind::Uint),
+                Some(v),
+            ) => v,
             _ => {
                 let ty = self.type_name(&checked.ty);
-                let d = self.error("array-size-type", e.span, format!("array size must be an `int` or `uint`, not {ty}"));
+                let d = self.error(
+                    "array-size-type",
+                    e.span,
+                    format!("array size must be an `int` or `uint`, not {ty}"),
+                );
                 d.label = "not an integer".into();
                 return None;
             }
         };
         if value <= 0 {
-            let d = self.error("array-size", e.span, format!("array size must be greater than zero, not {value}"));
+            let d = self.error(
+                "array-size",
+                e.span,
+                format!("array size must be greater than zero, not {value}"),
+            );
             d.label = "not a positive size".into();
             return None;
         }
@@ -418,32 +479,55 @@ impl<'a> Checker<'a> {
                     None => base.clone(),
                 };
                 if let Type::Array(_, 0) = ty {
-                    let d = self.error("unsized-array", name.span, "struct members must have a size");
+                    let d = self.error(
+                        "unsized-array",
+                        name.span,
+                        "struct members must have a size",
+                    );
                     d.label = "an unsized array".into();
                     ok = false;
                 }
                 if ty == Type::Void {
-                    let d = self.error("void-variable", name.span, "a struct member cannot be `void`");
+                    let d = self.error(
+                        "void-variable",
+                        name.span,
+                        "a struct member cannot be `void`",
+                    );
                     d.label = "`void` member".into();
                     ok = false;
                     continue;
                 }
                 self.check_name(name);
                 if members.iter().any(|mm| *mm.name == *name.name) {
-                    let d = self.error("redefinition", name.span, format!("struct member `{}` is declared twice", name.name));
+                    let d = self.error(
+                        "redefinition",
+                        name.span,
+                        format!("struct member `{}` is declared twice", name.name),
+                    );
                     d.label = "a second member with this name".into();
                     continue;
                 }
                 let precision = self.precision_for(&ty, fty.precision().map(|p| p.0), name.span);
-                members.push(StructMember { name: name.name.to_string(), ty, precision });
+                members.push(StructMember {
+                    name: name.name.to_string(),
+                    ty,
+                    precision,
+                });
             }
         }
         if members.is_empty() && ok {
-            let d = self.error("empty-struct", decl.span, "a struct must have at least one member");
+            let d = self.error(
+                "empty-struct",
+                decl.span,
+                "a struct must have at least one member",
+            );
             d.label = "no members".into();
         }
         let id = crate::types::StructId(self.structs.len() as u32);
-        self.structs.push(StructDef { name: decl.name.as_ref().map(|n| n.name.to_string()), members });
+        self.structs.push(StructDef {
+            name: decl.name.as_ref().map(|n| n.name.to_string()),
+            members,
+        });
         if let Some(name) = &decl.name {
             self.declare(name, Sym::Struct(id));
         }
@@ -456,7 +540,11 @@ impl<'a> Checker<'a> {
             return Type::Struct(id);
         }
         let id = crate::types::StructId(self.structs.len() as u32);
-        let member = |n: &str| StructMember { name: n.into(), ty: Type::FLOAT, precision: Some(Precision::High) };
+        let member = |n: &str| StructMember {
+            name: n.into(),
+            ty: Type::FLOAT,
+            precision: Some(Precision::High),
+        };
         self.structs.push(StructDef {
             name: Some("gl_DepthRangeParameters".into()),
             members: vec![member("near"), member("far"), member("diff")],
@@ -576,7 +664,9 @@ impl<'a> Checker<'a> {
         // Overlapping locations.
         let mut used: Vec<(u32, GlobalId)> = Vec::new();
         for &g in &self.frag_outputs.clone() {
-            let Some(loc) = self.globals[g].location else { continue };
+            let Some(loc) = self.globals[g].location else {
+                continue;
+            };
             let n = match &self.globals[g].ty {
                 Type::Array(_, n) => *n,
                 _ => 1,

@@ -42,7 +42,11 @@ impl Checker<'_> {
         let c = self.expr(e);
         if !super::expr::is_error(&c) && c.ty != Type::BOOL {
             let ty = self.type_name(&c.ty);
-            let d = self.error("type-mismatch", c.span, format!("{what} must be a `bool`, not {ty}"));
+            let d = self.error(
+                "type-mismatch",
+                c.span,
+                format!("{what} must be a `bool`, not {ty}"),
+            );
             d.label = format!("this is {ty}");
             if c.ty.is_scalar() && c.ty.scalar_kind() != Some(ScalarKind::Bool) {
                 d.help = Some("compare it explicitly, e.g. `x != 0`".into());
@@ -60,11 +64,19 @@ impl Checker<'_> {
                 let init = self.expr(init);
                 if ty != Type::BOOL && ty != Type::Void {
                     let t = self.type_name(&ty);
-                    let d = self.error("type-mismatch", fty.spec.span, format!("a loop condition must be a `bool`, not {t}"));
+                    let d = self.error(
+                        "type-mismatch",
+                        fty.spec.span,
+                        format!("a loop condition must be a `bool`, not {t}"),
+                    );
                     d.label = "not `bool`".into();
                 } else if !super::expr::is_error(&init) && init.ty != ty {
                     let (want, got) = (self.type_name(&ty), self.type_name(&init.ty));
-                    let d = self.error("type-mismatch", init.span, format!("cannot initialize a {want} with a {got}"));
+                    let d = self.error(
+                        "type-mismatch",
+                        init.span,
+                        format!("cannot initialize a {want} with a {got}"),
+                    );
                     d.label = format!("this is {got}");
                 }
                 let precision = None;
@@ -108,16 +120,33 @@ impl Checker<'_> {
                 let body = self.loop_body(body);
                 self.fctx_mut().loops -= 1;
                 self.pop_scope();
-                StmtKind::Loop { init: Vec::new(), cond: Some(Box::new(cond)), step: None, body, do_while: false }
+                StmtKind::Loop {
+                    init: Vec::new(),
+                    cond: Some(Box::new(cond)),
+                    step: None,
+                    body,
+                    do_while: false,
+                }
             }
             ast::StmtKind::DoWhile(body, c) => {
                 self.fctx_mut().loops += 1;
                 let body = self.scoped(body);
                 self.fctx_mut().loops -= 1;
                 let cond = self.condition_expr(c, "a loop condition");
-                StmtKind::Loop { init: Vec::new(), cond: Some(Box::new(Cond::Expr(cond))), step: None, body, do_while: true }
+                StmtKind::Loop {
+                    init: Vec::new(),
+                    cond: Some(Box::new(Cond::Expr(cond))),
+                    step: None,
+                    body,
+                    do_while: true,
+                }
             }
-            ast::StmtKind::For { init, cond, step, body } => {
+            ast::StmtKind::For {
+                init,
+                cond,
+                step,
+                body,
+            } => {
                 self.push_scope();
                 let mut init_out = Vec::new();
                 self.stmt_into(init, &mut init_out);
@@ -127,17 +156,31 @@ impl Checker<'_> {
                 let body = self.loop_body(body);
                 self.fctx_mut().loops -= 1;
                 self.pop_scope();
-                StmtKind::Loop { init: init_out, cond, step, body, do_while: false }
+                StmtKind::Loop {
+                    init: init_out,
+                    cond,
+                    step,
+                    body,
+                    do_while: false,
+                }
             }
             ast::StmtKind::Switch(sel, body) => self.switch(sel, body, span),
             ast::StmtKind::Case(e) => {
-                let d = self.error("case-outside-switch", span, "`case` label outside a `switch`");
+                let d = self.error(
+                    "case-outside-switch",
+                    span,
+                    "`case` label outside a `switch`",
+                );
                 d.label = "not directly inside a switch body".into();
                 let _ = e;
                 return;
             }
             ast::StmtKind::Default => {
-                let d = self.error("case-outside-switch", span, "`default` label outside a `switch`");
+                let d = self.error(
+                    "case-outside-switch",
+                    span,
+                    "`default` label outside a `switch`",
+                );
                 d.label = "not directly inside a switch body".into();
                 return;
             }
@@ -152,7 +195,11 @@ impl Checker<'_> {
             ast::StmtKind::Break => {
                 let f = self.fctx_mut();
                 if f.loops == 0 && f.switches == 0 {
-                    let d = self.error("break-outside-loop", span, "`break` outside a loop or `switch`");
+                    let d = self.error(
+                        "break-outside-loop",
+                        span,
+                        "`break` outside a loop or `switch`",
+                    );
                     d.label = "nothing to break out of".into();
                     return;
                 }
@@ -161,7 +208,11 @@ impl Checker<'_> {
             ast::StmtKind::Return(e) => self.return_stmt(e.as_ref(), span),
             ast::StmtKind::Discard => {
                 if self.stage != Stage::Fragment {
-                    let d = self.error("discard-in-vertex", span, "`discard` is only allowed in fragment shaders");
+                    let d = self.error(
+                        "discard-in-vertex",
+                        span,
+                        "`discard` is only allowed in fragment shaders",
+                    );
                     d.label = "in a vertex shader".into();
                     d.token = "discard".into();
                     return;
@@ -174,7 +225,9 @@ impl Checker<'_> {
     }
 
     fn fctx_mut(&mut self) -> &mut super::FnCtx {
-        self.fctx.as_mut().expect("statements are checked inside a function")
+        self.fctx
+            .as_mut()
+            .expect("statements are checked inside a function")
     }
 
     fn return_stmt(&mut self, e: Option<&ast::Expr>, span: crate::source::Span) -> StmtKind {
@@ -183,7 +236,11 @@ impl Checker<'_> {
             None => {
                 if ret != Type::Void {
                     let t = self.type_name(&ret);
-                    let d = self.error("missing-return-value", span, format!("this function must return a {t}"));
+                    let d = self.error(
+                        "missing-return-value",
+                        span,
+                        format!("this function must return a {t}"),
+                    );
                     d.label = "`return` without a value".into();
                     d.token = "return".into();
                 }
@@ -195,7 +252,11 @@ impl Checker<'_> {
                     return StmtKind::Return(None);
                 }
                 if ret == Type::Void {
-                    let d = self.error("return-value-in-void", v.span, "a `void` function cannot return a value");
+                    let d = self.error(
+                        "return-value-in-void",
+                        v.span,
+                        "a `void` function cannot return a value",
+                    );
                     d.label = "a value returned".into();
                     d.token = "return".into();
                     return StmtKind::Return(None);
@@ -203,7 +264,11 @@ impl Checker<'_> {
                 if v.ty != ret {
                     let (want, got) = (self.type_name(&ret), self.type_name(&v.ty));
                     let fix = super::expr::conversion_fix(self.file, &v, &ret);
-                    let d = self.error("type-mismatch", v.span, format!("this function returns {want}, not {got}"));
+                    let d = self.error(
+                        "type-mismatch",
+                        v.span,
+                        format!("this function returns {want}, not {got}"),
+                    );
                     d.label = format!("this is {got}");
                     d.token = "return".into();
                     if let Some(f) = fix {
@@ -217,12 +282,21 @@ impl Checker<'_> {
         }
     }
 
-    fn switch(&mut self, sel: &ast::Expr, body: &ast::Block, span: crate::source::Span) -> StmtKind {
+    fn switch(
+        &mut self,
+        sel: &ast::Expr,
+        body: &ast::Block,
+        span: crate::source::Span,
+    ) -> StmtKind {
         let selector = self.expr(sel);
         let sel_ty = selector.ty.clone();
         if !super::expr::is_error(&selector) && sel_ty != Type::INT && sel_ty != Type::UINT {
             let t = self.type_name(&sel_ty);
-            let d = self.error("type-mismatch", selector.span, format!("a `switch` selector must be an `int` or `uint`, not {t}"));
+            let d = self.error(
+                "type-mismatch",
+                selector.span,
+                format!("a `switch` selector must be an `int` or `uint`, not {t}"),
+            );
             d.label = format!("this is {t}");
         }
         self.push_scope();
@@ -236,24 +310,45 @@ impl Checker<'_> {
                     let v = self.expr(e);
                     let value = if super::expr::is_error(&v) {
                         None
-                    } else if let Some(c) = v.as_const().and_then(|c| c.as_int()).filter(|_| v.ty.is_scalar() && matches!(v.ty.scalar_kind(), Some(ScalarKind::Int | ScalarKind::Uint))) {
+                    } else if let Some(c) = v.as_const().and_then(|c| c.as_int()).filter(|_| {
+                        v.ty.is_scalar()
+                            && matches!(
+                                v.ty.scalar_kind(),
+                                Some(ScalarKind::Int | ScalarKind::Uint)
+                            )
+                    }) {
                         if v.ty != sel_ty && (sel_ty == Type::INT || sel_ty == Type::UINT) {
                             let (a, b) = (self.type_name(&v.ty), self.type_name(&sel_ty));
-                            let d = self.error("type-mismatch", v.span, format!("`case` label is {a} but the selector is {b}"));
+                            let d = self.error(
+                                "type-mismatch",
+                                v.span,
+                                format!("`case` label is {a} but the selector is {b}"),
+                            );
                             d.label = format!("this is {a}");
                         }
                         Some(c)
                     } else {
-                        let d = self.error("non-constant-case", v.span, "a `case` label must be a constant integer expression");
+                        let d = self.error(
+                            "non-constant-case",
+                            v.span,
+                            "a `case` label must be a constant integer expression",
+                        );
                         d.label = "not a constant integer".into();
                         None
                     };
                     if let Some(c) = value {
                         if let Some((_, prev)) = seen.iter().find(|(x, _)| *x == c) {
                             let prev = *prev;
-                            let d = self.error("duplicate-case", s.span, format!("duplicate `case {c}`"));
+                            let d = self.error(
+                                "duplicate-case",
+                                s.span,
+                                format!("duplicate `case {c}`"),
+                            );
                             d.label = "already handled".into();
-                            d.secondary.push(crate::diagnostic::Label { span: prev, message: "first here".into() });
+                            d.secondary.push(crate::diagnostic::Label {
+                                span: prev,
+                                message: "first here".into(),
+                            });
                         } else {
                             seen.push((c, s.span));
                         }
@@ -261,19 +356,33 @@ impl Checker<'_> {
                     if let Some(last) = cases.last_mut() {
                         last.fall_through = !ends_in_jump(&last.body);
                     }
-                    cases.push(hir::SwitchCase { value: Some(value.unwrap_or(i64::MIN)), body: Vec::new(), fall_through: true, span: s.span });
+                    cases.push(hir::SwitchCase {
+                        value: Some(value.unwrap_or(i64::MIN)),
+                        body: Vec::new(),
+                        fall_through: true,
+                        span: s.span,
+                    });
                 }
                 ast::StmtKind::Default => {
                     if let Some(prev) = seen_default {
-                        let d = self.error("duplicate-case", s.span, "more than one `default` label");
+                        let d =
+                            self.error("duplicate-case", s.span, "more than one `default` label");
                         d.label = "second `default`".into();
-                        d.secondary.push(crate::diagnostic::Label { span: prev, message: "first here".into() });
+                        d.secondary.push(crate::diagnostic::Label {
+                            span: prev,
+                            message: "first here".into(),
+                        });
                     }
                     seen_default = Some(s.span);
                     if let Some(last) = cases.last_mut() {
                         last.fall_through = !ends_in_jump(&last.body);
                     }
-                    cases.push(hir::SwitchCase { value: None, body: Vec::new(), fall_through: true, span: s.span });
+                    cases.push(hir::SwitchCase {
+                        value: None,
+                        body: Vec::new(),
+                        fall_through: true,
+                        span: s.span,
+                    });
                 }
                 _ => {
                     let mut stmts = Vec::new();
@@ -310,7 +419,11 @@ impl Checker<'_> {
             );
             d.label = "a statement is needed before `}`".into();
             d.token = "switch".into();
-            d.fix = Some(Fix::certain("add `break;`", crate::source::Span::empty(end), "break; "));
+            d.fix = Some(Fix::certain(
+                "add `break;`",
+                crate::source::Span::empty(end),
+                "break; ",
+            ));
         }
         if let Some(last) = cases.last_mut() {
             last.fall_through = false;
@@ -325,7 +438,9 @@ impl Checker<'_> {
 /// Whether a statement list ends in `break`, `continue`, `return` or `discard`.
 pub(crate) fn ends_in_jump(stmts: &[hir::Stmt]) -> bool {
     match stmts.last().map(|s| &s.kind) {
-        Some(StmtKind::Break | StmtKind::Continue | StmtKind::Return(_) | StmtKind::Discard) => true,
+        Some(StmtKind::Break | StmtKind::Continue | StmtKind::Return(_) | StmtKind::Discard) => {
+            true
+        }
         Some(StmtKind::Block(b)) => ends_in_jump(b),
         _ => false,
     }

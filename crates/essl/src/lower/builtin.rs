@@ -13,19 +13,34 @@ use crate::Stage;
 impl FnCx<'_, '_> {
     /// Widens scalar arguments to the vector size of the result, as naga's math functions
     /// want identical argument types.
-    fn widen(&mut self, v: Handle<Expression>, from: &Type, to: &Type, span: Span) -> Handle<Expression> {
+    fn widen(
+        &mut self,
+        v: Handle<Expression>,
+        from: &Type,
+        to: &Type,
+        span: Span,
+    ) -> Handle<Expression> {
         match (from, to) {
             (Type::Scalar(_), Type::Vector(_, n)) => self.splat(v, *n, span),
             _ => v,
         }
     }
 
-    pub(crate) fn builtin(&mut self, op: BuiltinFn, args: &[Expr], ret: &Type, span: Span) -> Result<Handle<Expression>, LowerError> {
+    pub(crate) fn builtin(
+        &mut self,
+        op: BuiltinFn,
+        args: &[Expr],
+        ret: &Type,
+        span: Span,
+    ) -> Result<Handle<Expression>, LowerError> {
         use BuiltinFn::*;
         if op.is_texture() {
             return self.texture(op, args, ret, span);
         }
-        let vals: Vec<Handle<Expression>> = args.iter().map(|a| self.expr(a)).collect::<Result<_, _>>()?;
+        let vals: Vec<Handle<Expression>> = args
+            .iter()
+            .map(|a| self.expr(a))
+            .collect::<Result<_, _>>()?;
         let t0 = args[0].ty.clone();
         let unary = |fx: &mut Self, f: Mf| fx.math(f, &[vals[0]], span);
         Ok(match op {
@@ -74,7 +89,11 @@ impl FnCx<'_, '_> {
             }
             Min | Max => {
                 let b = self.widen(vals[1], &args[1].ty, &t0, span);
-                self.math(if op == Min { Mf::Min } else { Mf::Max }, &[vals[0], b], span)
+                self.math(
+                    if op == Min { Mf::Min } else { Mf::Max },
+                    &[vals[0], b],
+                    span,
+                )
             }
             Clamp => {
                 let lo = self.widen(vals[1], &args[1].ty, &t0, span);
@@ -83,7 +102,14 @@ impl FnCx<'_, '_> {
             }
             Mix if args[2].ty.scalar_kind() == Some(ScalarKind::Bool) => {
                 // mix(x, y, b) picks y where b is true.
-                self.add(Expression::Select { condition: vals[2], accept: vals[1], reject: vals[0] }, span)
+                self.add(
+                    Expression::Select {
+                        condition: vals[2],
+                        accept: vals[1],
+                        reject: vals[0],
+                    },
+                    span,
+                )
             }
             Mix => {
                 let a = self.widen(vals[2], &args[2].ty, &t0, span);
@@ -98,11 +124,44 @@ impl FnCx<'_, '_> {
                 let e1 = self.widen(vals[1], &args[1].ty, &args[2].ty, span);
                 self.math(Mf::SmoothStep, &[e0, e1, vals[2]], span)
             }
-            IsNan => self.add(Expression::Relational { fun: naga::RelationalFunction::IsNan, argument: vals[0] }, span),
-            IsInf => self.add(Expression::Relational { fun: naga::RelationalFunction::IsInf, argument: vals[0] }, span),
-            FloatBitsToInt => self.add(Expression::As { expr: vals[0], kind: naga::ScalarKind::Sint, convert: None }, span),
-            FloatBitsToUint => self.add(Expression::As { expr: vals[0], kind: naga::ScalarKind::Uint, convert: None }, span),
-            IntBitsToFloat | UintBitsToFloat => self.add(Expression::As { expr: vals[0], kind: naga::ScalarKind::Float, convert: None }, span),
+            IsNan => self.add(
+                Expression::Relational {
+                    fun: naga::RelationalFunction::IsNan,
+                    argument: vals[0],
+                },
+                span,
+            ),
+            IsInf => self.add(
+                Expression::Relational {
+                    fun: naga::RelationalFunction::IsInf,
+                    argument: vals[0],
+                },
+                span,
+            ),
+            FloatBitsToInt => self.add(
+                Expression::As {
+                    expr: vals[0],
+                    kind: naga::ScalarKind::Sint,
+                    convert: None,
+                },
+                span,
+            ),
+            FloatBitsToUint => self.add(
+                Expression::As {
+                    expr: vals[0],
+                    kind: naga::ScalarKind::Uint,
+                    convert: None,
+                },
+                span,
+            ),
+            IntBitsToFloat | UintBitsToFloat => self.add(
+                Expression::As {
+                    expr: vals[0],
+                    kind: naga::ScalarKind::Float,
+                    convert: None,
+                },
+                span,
+            ),
             PackSnorm2x16 => unary(self, Mf::Pack2x16snorm),
             UnpackSnorm2x16 => unary(self, Mf::Unpack2x16snorm),
             PackUnorm2x16 => unary(self, Mf::Pack2x16unorm),
@@ -111,7 +170,9 @@ impl FnCx<'_, '_> {
             UnpackHalf2x16 => self.unpack_half(vals[0], span),
             Length => unary(self, Mf::Length),
             Distance => self.math(Mf::Distance, &[vals[0], vals[1]], span),
-            Dot if t0.is_scalar() => self.binop(naga::BinaryOperator::Multiply, vals[0], vals[1], span),
+            Dot if t0.is_scalar() => {
+                self.binop(naga::BinaryOperator::Multiply, vals[0], vals[1], span)
+            }
             Dot => self.math(Mf::Dot, &[vals[0], vals[1]], span),
             Cross => self.math(Mf::Cross, &[vals[0], vals[1]], span),
             Normalize if t0.is_scalar() => unary(self, Mf::Sign),
@@ -129,7 +190,9 @@ impl FnCx<'_, '_> {
             Refract if t0.is_scalar() => return Err(unsupported("`refract` on scalars", span)),
             Refract => self.math(Mf::Refract, &[vals[0], vals[1], vals[2]], span),
             MatrixCompMult => {
-                let Type::Matrix { cols, .. } = t0 else { return Err(unsupported("matrixCompMult", span)) };
+                let Type::Matrix { cols, .. } = t0 else {
+                    return Err(unsupported("matrixCompMult", span));
+                };
                 let parts: Vec<_> = (0..cols as u32)
                     .map(|i| {
                         let x = self.access_index(vals[0], i, span);
@@ -154,19 +217,50 @@ impl FnCx<'_, '_> {
                 };
                 self.binop(o, vals[0], vals[1], span)
             }
-            Any => self.add(Expression::Relational { fun: naga::RelationalFunction::Any, argument: vals[0] }, span),
-            All => self.add(Expression::Relational { fun: naga::RelationalFunction::All, argument: vals[0] }, span),
-            Not => self.add(Expression::Unary { op: naga::UnaryOperator::LogicalNot, expr: vals[0] }, span),
+            Any => self.add(
+                Expression::Relational {
+                    fun: naga::RelationalFunction::Any,
+                    argument: vals[0],
+                },
+                span,
+            ),
+            All => self.add(
+                Expression::Relational {
+                    fun: naga::RelationalFunction::All,
+                    argument: vals[0],
+                },
+                span,
+            ),
+            Not => self.add(
+                Expression::Unary {
+                    op: naga::UnaryOperator::LogicalNot,
+                    expr: vals[0],
+                },
+                span,
+            ),
             DFdx | DFdy | Fwidth => {
                 let axis = match op {
                     DFdx => naga::DerivativeAxis::X,
                     DFdy => naga::DerivativeAxis::Y,
                     _ => naga::DerivativeAxis::Width,
                 };
-                let mut d = self.add(Expression::Derivative { axis, ctrl: naga::DerivativeControl::None, expr: vals[0] }, span);
+                let mut d = self.add(
+                    Expression::Derivative {
+                        axis,
+                        ctrl: naga::DerivativeControl::None,
+                        expr: vals[0],
+                    },
+                    span,
+                );
                 if op == DFdy && self.cx.options.flip_frag_coord_y {
                     // GL's y grows upwards; the framebuffer's grows downwards.
-                    d = self.add(Expression::Unary { op: naga::UnaryOperator::Negate, expr: d }, span);
+                    d = self.add(
+                        Expression::Unary {
+                            op: naga::UnaryOperator::Negate,
+                            expr: d,
+                        },
+                        span,
+                    );
                 }
                 d
             }
@@ -190,7 +284,14 @@ impl FnCx<'_, '_> {
         use naga::BinaryOperator as B;
         // Branch-free conversion of normal numbers (round to nearest), flushing denormals to
         // signed zero and overflow to infinity; NaN stays NaN.
-        let bits = self.add(Expression::As { expr: f, kind: naga::ScalarKind::Uint, convert: None }, span);
+        let bits = self.add(
+            Expression::As {
+                expr: f,
+                kind: naga::ScalarKind::Uint,
+                convert: None,
+            },
+            span,
+        );
         let c = |fx: &mut Self, v: u32| fx.lit(Literal::U32(v));
         let k16 = c(self, 16);
         let sign_mask = c(self, 0x8000);
@@ -215,9 +316,30 @@ impl FnCx<'_, '_> {
         let zero = c(self, 0);
         let h_inf = c(self, 0x7c00);
         let h_nan = c(self, 0x7e00);
-        let v = self.add(Expression::Select { condition: is_small, accept: zero, reject: normal }, span);
-        let v = self.add(Expression::Select { condition: is_big, accept: h_inf, reject: v }, span);
-        let v = self.add(Expression::Select { condition: is_nan, accept: h_nan, reject: v }, span);
+        let v = self.add(
+            Expression::Select {
+                condition: is_small,
+                accept: zero,
+                reject: normal,
+            },
+            span,
+        );
+        let v = self.add(
+            Expression::Select {
+                condition: is_big,
+                accept: h_inf,
+                reject: v,
+            },
+            span,
+        );
+        let v = self.add(
+            Expression::Select {
+                condition: is_nan,
+                accept: h_nan,
+                reject: v,
+            },
+            span,
+        );
         self.binop(B::InclusiveOr, v, sign, span)
     }
 
@@ -261,29 +383,74 @@ impl FnCx<'_, '_> {
         let sub = self.binop(B::Multiply, fm, tiny, span);
         let zero_u = c(self, 0);
         let is_sub = self.binop(B::Equal, e, zero_u, span);
-        let v = self.add(Expression::Select { condition: is_sub, accept: sub, reject: normal }, span);
+        let v = self.add(
+            Expression::Select {
+                condition: is_sub,
+                accept: sub,
+                reject: normal,
+            },
+            span,
+        );
         let is_special = self.binop(B::Equal, e, m31, span);
         let inf = self.lit(Literal::F32(f32::INFINITY));
         let nan = self.lit(Literal::F32(f32::NAN));
         let mant_zero = self.binop(B::Equal, mant, zero_u, span);
-        let special = self.add(Expression::Select { condition: mant_zero, accept: inf, reject: nan }, span);
-        let v = self.add(Expression::Select { condition: is_special, accept: special, reject: v }, span);
+        let special = self.add(
+            Expression::Select {
+                condition: mant_zero,
+                accept: inf,
+                reject: nan,
+            },
+            span,
+        );
+        let v = self.add(
+            Expression::Select {
+                condition: is_special,
+                accept: special,
+                reject: v,
+            },
+            span,
+        );
         let is_neg = self.binop(B::Equal, sign, one, span);
-        let neg = self.add(Expression::Unary { op: naga::UnaryOperator::Negate, expr: v }, span);
-        self.add(Expression::Select { condition: is_neg, accept: neg, reject: v }, span)
+        let neg = self.add(
+            Expression::Unary {
+                op: naga::UnaryOperator::Negate,
+                expr: v,
+            },
+            span,
+        );
+        self.add(
+            Expression::Select {
+                condition: is_neg,
+                accept: neg,
+                reject: v,
+            },
+            span,
+        )
     }
 
     // ----- textures -----
 
-    fn texture(&mut self, op: BuiltinFn, args: &[Expr], ret: &Type, span: Span) -> Result<Handle<Expression>, LowerError> {
+    fn texture(
+        &mut self,
+        op: BuiltinFn,
+        args: &[Expr],
+        ret: &Type,
+        span: Span,
+    ) -> Result<Handle<Expression>, LowerError> {
         use BuiltinFn::*;
-        let Type::Sampler(st) = args[0].ty else { return Err(unsupported("a texture call without a sampler", span)) };
+        let Type::Sampler(st) = args[0].ty else {
+            return Err(unsupported("a texture call without a sampler", span));
+        };
         if !self.sampler_available(&args[0]) {
             // An inactive sampler only appears in code the entry point never runs.
             return Ok(self.zero(ret));
         }
         let (image, sampler) = self.sampler(&args[0])?;
-        let vals: Vec<Handle<Expression>> = args[1..].iter().map(|a| self.expr(a)).collect::<Result<_, _>>()?;
+        let vals: Vec<Handle<Expression>> = args[1..]
+            .iter()
+            .map(|a| self.expr(a))
+            .collect::<Result<_, _>>()?;
         let tys: Vec<Type> = args[1..].iter().map(|a| a.ty.clone()).collect();
         if op == TextureSize {
             return Ok(self.texture_size(image, st, vals[0], span));
@@ -294,11 +461,34 @@ impl FnCx<'_, '_> {
                 coord = self.binop(naga::BinaryOperator::Add, coord, vals[2], span);
             }
             let (coordinate, array_index) = self.split_array_coord_int(coord, st, span);
-            return Ok(self.add(Expression::ImageLoad { image, coordinate, array_index, sample: None, level: Some(vals[1]) }, span));
+            return Ok(self.add(
+                Expression::ImageLoad {
+                    image,
+                    coordinate,
+                    array_index,
+                    sample: None,
+                    level: Some(vals[1]),
+                },
+                span,
+            ));
         }
-        let proj = matches!(op, TextureProj | TextureProjOffset | TextureProjLod | TextureProjLodOffset | TextureProjGrad | TextureProjGradOffset);
-        let lod = matches!(op, TextureLod | TextureLodOffset | TextureProjLod | TextureProjLodOffset);
-        let grad = matches!(op, TextureGrad | TextureGradOffset | TextureProjGrad | TextureProjGradOffset);
+        let proj = matches!(
+            op,
+            TextureProj
+                | TextureProjOffset
+                | TextureProjLod
+                | TextureProjLodOffset
+                | TextureProjGrad
+                | TextureProjGradOffset
+        );
+        let lod = matches!(
+            op,
+            TextureLod | TextureLodOffset | TextureProjLod | TextureProjLodOffset
+        );
+        let grad = matches!(
+            op,
+            TextureGrad | TextureGradOffset | TextureProjGrad | TextureProjGradOffset
+        );
         let has_offset = op.has_offset();
         // Arguments after the coordinates: [lod | dPdx, dPdy] [offset] [bias].
         let mut i = 1;
@@ -326,7 +516,7 @@ impl FnCx<'_, '_> {
         let coord_ty = tys[0].clone();
         let n = coord_ty.vector_size().unwrap_or(1);
         let mut coords = vals[0];
-        let dims = st.dim.coord_dims() as u8;
+        let dims = st.dim.coord_dims();
         let mut depth_ref = None;
         let mut array_index = None;
         if proj {
@@ -336,7 +526,11 @@ impl FnCx<'_, '_> {
             let keep = if st.shadow { 3 } else { dims };
             let parts: Vec<u8> = (0..keep).collect();
             let xyz = self.swizzle(coords, &parts, span);
-            let qv = if keep > 1 { self.splat(q, keep, span) } else { q };
+            let qv = if keep > 1 {
+                self.splat(q, keep, span)
+            } else {
+                q
+            };
             coords = self.binop(naga::BinaryOperator::Divide, xyz, qv, span);
             if st.shadow {
                 depth_ref = Some(self.access_index(coords, 2, span));
@@ -352,7 +546,11 @@ impl FnCx<'_, '_> {
                 k = 2;
             }
             if st.shadow {
-                let ref_index = if st.dim == SamplerDim::D2Array { 3 } else { total - 1 };
+                let ref_index = if st.dim == SamplerDim::D2Array {
+                    3
+                } else {
+                    total - 1
+                };
                 depth_ref = Some(self.access_index(coords, ref_index as u32, span));
             }
             if total != k {
@@ -361,7 +559,16 @@ impl FnCx<'_, '_> {
             }
         }
         if st.kind != ScalarKind::Float {
-            return self.integer_texture(image, st, coords, array_index, level_arg, offset, ret, span);
+            return self.integer_texture(
+                image,
+                st,
+                coords,
+                array_index,
+                level_arg,
+                offset,
+                ret,
+                span,
+            );
         }
         let vertex = self.stage() == Stage::Vertex;
         let level = if st.shadow {
@@ -383,11 +590,30 @@ impl FnCx<'_, '_> {
             SampleLevel::Auto
         };
         let offset = match offset {
-            Some(_) => Some(self.const_offset(&args[1 + if lod { 2 } else if grad { 3 } else { 1 }], span)?),
+            Some(_) => Some(self.const_offset(
+                &args[1 + if lod {
+                    2
+                } else if grad {
+                    3
+                } else {
+                    1
+                }],
+                span,
+            )?),
             None => None,
         };
         let sampled = self.add(
-            Expression::ImageSample { image, sampler, gather: None, coordinate: coords, array_index, offset, level, depth_ref, clamp_to_edge: false },
+            Expression::ImageSample {
+                image,
+                sampler,
+                gather: None,
+                coordinate: coords,
+                array_index,
+                offset,
+                level,
+                depth_ref,
+                clamp_to_edge: false,
+            },
             span,
         );
         Ok(sampled)
@@ -411,7 +637,12 @@ impl FnCx<'_, '_> {
         self.cast(l, naga::ScalarKind::Sint, span)
     }
 
-    fn split_array_coord_int(&mut self, coord: Handle<Expression>, st: SamplerType, span: Span) -> (Handle<Expression>, Option<Handle<Expression>>) {
+    fn split_array_coord_int(
+        &mut self,
+        coord: Handle<Expression>,
+        st: SamplerType,
+        span: Span,
+    ) -> (Handle<Expression>, Option<Handle<Expression>>) {
         if st.dim == SamplerDim::D2Array {
             let xy = self.swizzle(coord, &[0, 1], span);
             let layer = self.access_index(coord, 2, span);
@@ -421,11 +652,29 @@ impl FnCx<'_, '_> {
         }
     }
 
-    fn texture_size(&mut self, image: Handle<Expression>, st: SamplerType, lod: Handle<Expression>, span: Span) -> Handle<Expression> {
-        let size = self.add(Expression::ImageQuery { image, query: naga::ImageQuery::Size { level: Some(lod) } }, span);
+    fn texture_size(
+        &mut self,
+        image: Handle<Expression>,
+        st: SamplerType,
+        lod: Handle<Expression>,
+        span: Span,
+    ) -> Handle<Expression> {
+        let size = self.add(
+            Expression::ImageQuery {
+                image,
+                query: naga::ImageQuery::Size { level: Some(lod) },
+            },
+            span,
+        );
         let size = self.cast(size, naga::ScalarKind::Sint, span);
         if st.dim == SamplerDim::D2Array {
-            let layers = self.add(Expression::ImageQuery { image, query: naga::ImageQuery::NumLayers }, span);
+            let layers = self.add(
+                Expression::ImageQuery {
+                    image,
+                    query: naga::ImageQuery::NumLayers,
+                },
+                span,
+            );
             let layers = self.cast(layers, naga::ScalarKind::Sint, span);
             let x = self.access_index(size, 0, span);
             let y = self.access_index(size, 1, span);
@@ -457,7 +706,13 @@ impl FnCx<'_, '_> {
             None => self.lit(Literal::I32(0)),
         };
         let n = if st.dim == SamplerDim::D3 { 3 } else { 2 };
-        let size = self.add(Expression::ImageQuery { image, query: naga::ImageQuery::Size { level: Some(level) } }, span);
+        let size = self.add(
+            Expression::ImageQuery {
+                image,
+                query: naga::ImageQuery::Size { level: Some(level) },
+            },
+            span,
+        );
         let size = self.cast(size, naga::ScalarKind::Sint, span);
         let fsize = self.cast(size, naga::ScalarKind::Float, span);
         let scaled = self.binop(naga::BinaryOperator::Multiply, coords, fsize, span);
@@ -472,6 +727,15 @@ impl FnCx<'_, '_> {
         let one = self.splat(one, n, span);
         let max = self.binop(naga::BinaryOperator::Subtract, size, one, span);
         let texel = self.math(Mf::Clamp, &[texel, zero, max], span);
-        Ok(self.add(Expression::ImageLoad { image, coordinate: texel, array_index, sample: None, level: Some(level) }, span))
+        Ok(self.add(
+            Expression::ImageLoad {
+                image,
+                coordinate: texel,
+                array_index,
+                sample: None,
+                level: Some(level),
+            },
+            span,
+        ))
     }
 }

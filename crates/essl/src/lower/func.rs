@@ -56,31 +56,59 @@ pub(crate) fn global_constant(cx: &mut ModuleCx, c: &ConstValue, ty: &Type) -> H
     let e = match (c, ty) {
         (ConstValue::Basic(v), Type::Scalar(_)) => Expression::Literal(literal(v[0])),
         (ConstValue::Basic(v), Type::Vector(k, n)) => {
-            let comps = v.iter().map(|s| cx.module.global_expressions.append(Expression::Literal(literal(*s)), NSpan::UNDEFINED)).collect();
+            let comps = v
+                .iter()
+                .map(|s| {
+                    cx.module
+                        .global_expressions
+                        .append(Expression::Literal(literal(*s)), NSpan::UNDEFINED)
+                })
+                .collect();
             let ty = cx.types.logical(&mut cx.module, &Type::Vector(*k, *n));
-            Expression::Compose { ty, components: comps }
+            Expression::Compose {
+                ty,
+                components: comps,
+            }
         }
         (ConstValue::Basic(v), Type::Matrix { cols, rows }) => {
             let col_ty = Type::Vector(ScalarKind::Float, *rows);
             let comps = (0..*cols as usize)
                 .map(|c| {
-                    let col = ConstValue::Basic(v[c * *rows as usize..(c + 1) * *rows as usize].to_vec());
+                    let col =
+                        ConstValue::Basic(v[c * *rows as usize..(c + 1) * *rows as usize].to_vec());
                     global_constant(cx, &col, &col_ty)
                 })
                 .collect();
             let ty = cx.types.logical(&mut cx.module, ty);
-            Expression::Compose { ty, components: comps }
+            Expression::Compose {
+                ty,
+                components: comps,
+            }
         }
         (ConstValue::Composite(elems), Type::Array(el, _)) => {
             let comps = elems.iter().map(|e| global_constant(cx, e, el)).collect();
             let ty = cx.types.logical(&mut cx.module, ty);
-            Expression::Compose { ty, components: comps }
+            Expression::Compose {
+                ty,
+                components: comps,
+            }
         }
         (ConstValue::Composite(members), Type::Struct(id)) => {
-            let mtys: Vec<Type> = cx.hir.structs[id.0 as usize].members.iter().map(|m| m.ty.clone()).collect();
-            let comps = members.iter().zip(&mtys).map(|(e, t)| global_constant(cx, e, t)).collect();
+            let mtys: Vec<Type> = cx.hir.structs[id.0 as usize]
+                .members
+                .iter()
+                .map(|m| m.ty.clone())
+                .collect();
+            let comps = members
+                .iter()
+                .zip(&mtys)
+                .map(|(e, t)| global_constant(cx, e, t))
+                .collect();
             let ty = cx.types.logical(&mut cx.module, ty);
-            Expression::Compose { ty, components: comps }
+            Expression::Compose {
+                ty,
+                components: comps,
+            }
         }
         _ => {
             let ty = cx.types.logical(&mut cx.module, ty);
@@ -102,7 +130,10 @@ pub(crate) fn literal(s: Scalar) -> Literal {
 /// Lowers a user function.
 pub(crate) fn lower_function(cx: &mut ModuleCx, id: FuncId) -> Result<naga::Function, LowerError> {
     let hir_fn = &cx.hir.functions[id];
-    let mut f = naga::Function { name: Some(format!("{}_", hir_fn.name)), ..Default::default() };
+    let mut f = naga::Function {
+        name: Some(format!("{}_", hir_fn.name)),
+        ..Default::default()
+    };
     let mut params = Vec::new();
     let mut copies = Vec::new();
     for p in &hir_fn.params {
@@ -110,29 +141,61 @@ pub(crate) fn lower_function(cx: &mut ModuleCx, id: FuncId) -> Result<naga::Func
             Type::Sampler(st) => {
                 let (img, smp) = super::sampler_types(&mut cx.module, *st);
                 let i = f.arguments.len() as u32;
-                f.arguments.push(naga::FunctionArgument { name: Some(p.name.to_string()), ty: img, binding: None });
-                f.arguments.push(naga::FunctionArgument { name: Some(format!("{}_sampler", p.name)), ty: smp, binding: None });
+                f.arguments.push(naga::FunctionArgument {
+                    name: Some(p.name.to_string()),
+                    ty: img,
+                    binding: None,
+                });
+                f.arguments.push(naga::FunctionArgument {
+                    name: Some(format!("{}_sampler", p.name)),
+                    ty: smp,
+                    binding: None,
+                });
                 params.push(ParamLower::Sampler(i, i + 1));
             }
             t if t.contains_sampler(&cx.hir.structs) => {
-                return Err(unsupported("a struct or array of samplers as a function parameter", p.span));
+                return Err(unsupported(
+                    "a struct or array of samplers as a function parameter",
+                    p.span,
+                ));
             }
             t => {
                 let ty = cx.types.logical(&mut cx.module, t);
                 let i = f.arguments.len() as u32;
                 match p.mode {
                     ParamMode::In => {
-                        f.arguments.push(naga::FunctionArgument { name: Some(p.name.to_string()), ty, binding: None });
-                        let local = f.local_variables.append(naga::LocalVariable { name: Some(p.name.to_string()), ty, init: None }, nspan(p.span));
+                        f.arguments.push(naga::FunctionArgument {
+                            name: Some(p.name.to_string()),
+                            ty,
+                            binding: None,
+                        });
+                        let local = f.local_variables.append(
+                            naga::LocalVariable {
+                                name: Some(p.name.to_string()),
+                                ty,
+                                init: None,
+                            },
+                            nspan(p.span),
+                        );
                         copies.push((i, local));
                         params.push(ParamLower::Local(local));
                     }
                     _ => {
                         let ptr = cx.module.types.insert(
-                            naga::Type { name: None, inner: naga::TypeInner::Pointer { base: ty, space: naga::AddressSpace::Function } },
+                            naga::Type {
+                                name: None,
+                                inner: naga::TypeInner::Pointer {
+                                    base: ty,
+                                    space: naga::AddressSpace::Function,
+                                },
+                            },
                             NSpan::UNDEFINED,
                         );
-                        f.arguments.push(naga::FunctionArgument { name: Some(p.name.to_string()), ty: ptr, binding: None });
+                        f.arguments.push(naga::FunctionArgument {
+                            name: Some(p.name.to_string()),
+                            ty: ptr,
+                            binding: None,
+                        });
                         params.push(ParamLower::Pointer(i));
                     }
                 }
@@ -143,12 +206,26 @@ pub(crate) fn lower_function(cx: &mut ModuleCx, id: FuncId) -> Result<naga::Func
         let ty = cx.types.logical(&mut cx.module, &hir_fn.ret);
         f.result = Some(naga::FunctionResult { ty, binding: None });
     }
-    let mut fx = FnCx { cx, f, emitter: Emitter::default(), blocks: vec![naga::Block::new()], locals: vec![None; hir_fn.locals.len()], params, hir_fn: Some(hir_fn) };
+    let mut fx = FnCx {
+        cx,
+        f,
+        emitter: Emitter::default(),
+        blocks: vec![naga::Block::new()],
+        locals: vec![None; hir_fn.locals.len()],
+        params,
+        hir_fn: Some(hir_fn),
+    };
     fx.emitter.start(&fx.f.expressions);
     for (arg, local) in copies {
         let a = fx.add(Expression::FunctionArgument(arg), Span::default());
         let l = fx.add(Expression::LocalVariable(local), Span::default());
-        fx.push(Statement::Store { pointer: l, value: a }, Span::default());
+        fx.push(
+            Statement::Store {
+                pointer: l,
+                value: a,
+            },
+            Span::default(),
+        );
     }
     fx.stmts(&hir_fn.body)?;
     fx.flush();
@@ -201,7 +278,10 @@ impl<'c, 'a> FnCx<'c, 'a> {
     }
 
     /// Runs `f` with its statements collected into a new block.
-    fn capture(&mut self, f: impl FnOnce(&mut Self) -> Result<(), LowerError>) -> Result<naga::Block, LowerError> {
+    fn capture(
+        &mut self,
+        f: impl FnOnce(&mut Self) -> Result<(), LowerError>,
+    ) -> Result<naga::Block, LowerError> {
         self.flush();
         self.blocks.push(naga::Block::new());
         f(self)?;
@@ -215,7 +295,14 @@ impl<'c, 'a> FnCx<'c, 'a> {
 
     pub(crate) fn new_local(&mut self, name: &str, t: &Type) -> Handle<naga::LocalVariable> {
         let ty = self.ty(t);
-        self.f.local_variables.append(naga::LocalVariable { name: Some(name.to_string()), ty, init: None }, NSpan::UNDEFINED)
+        self.f.local_variables.append(
+            naga::LocalVariable {
+                name: Some(name.to_string()),
+                ty,
+                init: None,
+            },
+            NSpan::UNDEFINED,
+        )
     }
 
     pub(crate) fn lit(&mut self, l: Literal) -> Handle<Expression> {
@@ -228,32 +315,81 @@ impl<'c, 'a> FnCx<'c, 'a> {
     }
 
     pub(crate) fn splat(&mut self, v: Handle<Expression>, n: u8, span: Span) -> Handle<Expression> {
-        self.add(Expression::Splat { size: vsize(n), value: v }, span)
-    }
-
-    pub(crate) fn compose(&mut self, t: &Type, components: Vec<Handle<Expression>>, span: Span) -> Handle<Expression> {
-        let ty = self.ty(t);
-        self.add(Expression::Compose { ty, components }, span)
-    }
-
-    pub(crate) fn access_index(&mut self, base: Handle<Expression>, index: u32, span: Span) -> Handle<Expression> {
-        self.add(Expression::AccessIndex { base, index }, span)
-    }
-
-    pub(crate) fn binop(&mut self, op: naga::BinaryOperator, left: Handle<Expression>, right: Handle<Expression>, span: Span) -> Handle<Expression> {
-        self.add(Expression::Binary { op, left, right }, span)
-    }
-
-    pub(crate) fn math(&mut self, fun: naga::MathFunction, args: &[Handle<Expression>], span: Span) -> Handle<Expression> {
         self.add(
-            Expression::Math { fun, arg: args[0], arg1: args.get(1).copied(), arg2: args.get(2).copied(), arg3: args.get(3).copied() },
+            Expression::Splat {
+                size: vsize(n),
+                value: v,
+            },
             span,
         )
     }
 
-    pub(crate) fn cast(&mut self, v: Handle<Expression>, kind: naga::ScalarKind, span: Span) -> Handle<Expression> {
-        let convert = if kind == naga::ScalarKind::Bool { Some(naga::BOOL_WIDTH) } else { Some(4) };
-        self.add(Expression::As { expr: v, kind, convert }, span)
+    pub(crate) fn compose(
+        &mut self,
+        t: &Type,
+        components: Vec<Handle<Expression>>,
+        span: Span,
+    ) -> Handle<Expression> {
+        let ty = self.ty(t);
+        self.add(Expression::Compose { ty, components }, span)
+    }
+
+    pub(crate) fn access_index(
+        &mut self,
+        base: Handle<Expression>,
+        index: u32,
+        span: Span,
+    ) -> Handle<Expression> {
+        self.add(Expression::AccessIndex { base, index }, span)
+    }
+
+    pub(crate) fn binop(
+        &mut self,
+        op: naga::BinaryOperator,
+        left: Handle<Expression>,
+        right: Handle<Expression>,
+        span: Span,
+    ) -> Handle<Expression> {
+        self.add(Expression::Binary { op, left, right }, span)
+    }
+
+    pub(crate) fn math(
+        &mut self,
+        fun: naga::MathFunction,
+        args: &[Handle<Expression>],
+        span: Span,
+    ) -> Handle<Expression> {
+        self.add(
+            Expression::Math {
+                fun,
+                arg: args[0],
+                arg1: args.get(1).copied(),
+                arg2: args.get(2).copied(),
+                arg3: args.get(3).copied(),
+            },
+            span,
+        )
+    }
+
+    pub(crate) fn cast(
+        &mut self,
+        v: Handle<Expression>,
+        kind: naga::ScalarKind,
+        span: Span,
+    ) -> Handle<Expression> {
+        let convert = if kind == naga::ScalarKind::Bool {
+            Some(naga::BOOL_WIDTH)
+        } else {
+            Some(4)
+        };
+        self.add(
+            Expression::As {
+                expr: v,
+                kind,
+                convert,
+            },
+            span,
+        )
     }
 
     pub(crate) fn stage(&self) -> Stage {
@@ -283,7 +419,13 @@ impl<'c, 'a> FnCx<'c, 'a> {
                 if let Some(e) = init {
                     let v = self.expr(e)?;
                     let p = self.add(Expression::LocalVariable(local), s.span);
-                    self.push(Statement::Store { pointer: p, value: v }, s.span);
+                    self.push(
+                        Statement::Store {
+                            pointer: p,
+                            value: v,
+                        },
+                        s.span,
+                    );
                 }
             }
             StmtKind::Block(b) => {
@@ -300,9 +442,22 @@ impl<'c, 'a> FnCx<'c, 'a> {
                 let cond = self.expr(c)?;
                 let accept = self.block_of(t)?;
                 let reject = self.block_of(e)?;
-                self.push(Statement::If { condition: cond, accept, reject }, s.span);
+                self.push(
+                    Statement::If {
+                        condition: cond,
+                        accept,
+                        reject,
+                    },
+                    s.span,
+                );
             }
-            StmtKind::Loop { init, cond, step, body, do_while } => {
+            StmtKind::Loop {
+                init,
+                cond,
+                step,
+                body,
+                do_while,
+            } => {
                 for st in init {
                     if self.stmt(st)? {
                         return Ok(true);
@@ -313,8 +468,21 @@ impl<'c, 'a> FnCx<'c, 'a> {
                     if !do_while {
                         if let Some(c) = &cond {
                             let v = fx.loop_cond(c)?;
-                            let not = fx.add(Expression::Unary { op: naga::UnaryOperator::LogicalNot, expr: v }, s.span);
-                            fx.push(Statement::If { condition: not, accept: naga::Block::from_vec(vec![Statement::Break]), reject: naga::Block::new() }, s.span);
+                            let not = fx.add(
+                                Expression::Unary {
+                                    op: naga::UnaryOperator::LogicalNot,
+                                    expr: v,
+                                },
+                                s.span,
+                            );
+                            fx.push(
+                                Statement::If {
+                                    condition: not,
+                                    accept: naga::Block::from_vec(vec![Statement::Break]),
+                                    reject: naga::Block::new(),
+                                },
+                                s.span,
+                            );
                         }
                     }
                     fx.stmts(body)
@@ -327,13 +495,26 @@ impl<'c, 'a> FnCx<'c, 'a> {
                     if *do_while {
                         if let Some(c) = &cond {
                             let v = fx.loop_cond(c)?;
-                            let not = fx.add(Expression::Unary { op: naga::UnaryOperator::LogicalNot, expr: v }, s.span);
+                            let not = fx.add(
+                                Expression::Unary {
+                                    op: naga::UnaryOperator::LogicalNot,
+                                    expr: v,
+                                },
+                                s.span,
+                            );
                             break_if = Some(not);
                         }
                     }
                     Ok(())
                 })?;
-                self.push(Statement::Loop { body: body_block, continuing, break_if }, s.span);
+                self.push(
+                    Statement::Loop {
+                        body: body_block,
+                        continuing,
+                        break_if,
+                    },
+                    s.span,
+                );
             }
             StmtKind::Switch(sel, cases) => {
                 let selector = self.expr(sel)?;
@@ -350,15 +531,29 @@ impl<'c, 'a> FnCx<'c, 'a> {
                         Some(v) if unsigned => naga::SwitchValue::U32(v as u32),
                         Some(v) => naga::SwitchValue::I32(v as i32),
                     };
-                    ncases.push(naga::SwitchCase { value, body, fall_through: c.fall_through });
+                    ncases.push(naga::SwitchCase {
+                        value,
+                        body,
+                        fall_through: c.fall_through,
+                    });
                 }
                 if let Some(last) = ncases.last_mut() {
                     last.fall_through = false;
                 }
                 if !has_default {
-                    ncases.push(naga::SwitchCase { value: naga::SwitchValue::Default, body: naga::Block::new(), fall_through: false });
+                    ncases.push(naga::SwitchCase {
+                        value: naga::SwitchValue::Default,
+                        body: naga::Block::new(),
+                        fall_through: false,
+                    });
                 }
-                self.push(Statement::Switch { selector, cases: ncases }, s.span);
+                self.push(
+                    Statement::Switch {
+                        selector,
+                        cases: ncases,
+                    },
+                    s.span,
+                );
             }
             StmtKind::Break => {
                 self.push(Statement::Break, s.span);
@@ -391,7 +586,13 @@ impl<'c, 'a> FnCx<'c, 'a> {
                 let v = self.expr(init)?;
                 let local = self.local_handle(*l);
                 let p = self.add(Expression::LocalVariable(local), init.span);
-                self.push(Statement::Store { pointer: p, value: v }, init.span);
+                self.push(
+                    Statement::Store {
+                        pointer: p,
+                        value: v,
+                    },
+                    init.span,
+                );
                 Ok(v)
             }
         }
@@ -416,7 +617,11 @@ impl<'c, 'a> FnCx<'c, 'a> {
                 self.effect(a)?;
                 self.effect(b)
             }
-            ExprKind::Const(_) | ExprKind::Local(_) | ExprKind::Global(_) | ExprKind::Param(_) | ExprKind::BuiltinVar(_) => Ok(()),
+            ExprKind::Const(_)
+            | ExprKind::Local(_)
+            | ExprKind::Global(_)
+            | ExprKind::Param(_)
+            | ExprKind::BuiltinVar(_) => Ok(()),
             _ => self.expr(e).map(|_| ()),
         }
     }
@@ -429,18 +634,47 @@ impl<'c, 'a> FnCx<'c, 'a> {
         Ok(Some(match &e.kind {
             ExprKind::Local(l) => {
                 let h = self.local_handle(*l);
-                Place { ptr: self.add(Expression::LocalVariable(h), span), repr: Repr::Same, ty: e.ty.clone() }
+                Place {
+                    ptr: self.add(Expression::LocalVariable(h), span),
+                    repr: Repr::Same,
+                    ty: e.ty.clone(),
+                }
             }
             ExprKind::Param(i) => match self.params[*i] {
-                ParamLower::Local(h) => Place { ptr: self.add(Expression::LocalVariable(h), span), repr: Repr::Same, ty: e.ty.clone() },
-                ParamLower::Pointer(a) => Place { ptr: self.add(Expression::FunctionArgument(a), span), repr: Repr::Same, ty: e.ty.clone() },
+                ParamLower::Local(h) => Place {
+                    ptr: self.add(Expression::LocalVariable(h), span),
+                    repr: Repr::Same,
+                    ty: e.ty.clone(),
+                },
+                ParamLower::Pointer(a) => Place {
+                    ptr: self.add(Expression::FunctionArgument(a), span),
+                    repr: Repr::Same,
+                    ty: e.ty.clone(),
+                },
                 ParamLower::Sampler(..) => return Ok(None),
             },
             ExprKind::Global(g) => match self.cx.globals[*g].clone() {
-                GlobalLower::Private(h) => Place { ptr: self.add(Expression::GlobalVariable(h), span), repr: Repr::Same, ty: e.ty.clone() },
-                GlobalLower::Uniform { block, member, repr } | GlobalLower::BlockMember { block, member, repr } => {
+                GlobalLower::Private(h) => Place {
+                    ptr: self.add(Expression::GlobalVariable(h), span),
+                    repr: Repr::Same,
+                    ty: e.ty.clone(),
+                },
+                GlobalLower::Uniform {
+                    block,
+                    member,
+                    repr,
+                }
+                | GlobalLower::BlockMember {
+                    block,
+                    member,
+                    repr,
+                } => {
                     let b = self.add(Expression::GlobalVariable(block), span);
-                    Place { ptr: self.access_index(b, member, span), repr, ty: e.ty.clone() }
+                    Place {
+                        ptr: self.access_index(b, member, span),
+                        repr,
+                        ty: e.ty.clone(),
+                    }
                 }
                 GlobalLower::None => return Ok(None),
             },
@@ -457,31 +691,55 @@ impl<'c, 'a> FnCx<'c, 'a> {
                         h
                     }
                 };
-                Place { ptr: self.add(Expression::GlobalVariable(h), span), repr: Repr::Same, ty: e.ty.clone() }
+                Place {
+                    ptr: self.add(Expression::GlobalVariable(h), span),
+                    repr: Repr::Same,
+                    ty: e.ty.clone(),
+                }
             }
             ExprKind::BlockMember(b, idx, m) => {
-                let Some((gv, reprs)) = self.cx.blocks[*b].clone() else { return Ok(None) };
+                let Some((gv, reprs)) = self.cx.blocks[*b].clone() else {
+                    return Ok(None);
+                };
                 let mut base = self.add(Expression::GlobalVariable(gv), span);
                 if let Some(i) = idx {
                     let iv = self.expr(i)?;
                     base = self.add(Expression::Access { base, index: iv }, span);
                 }
-                Place { ptr: self.access_index(base, *m as u32, span), repr: reprs[*m].clone(), ty: e.ty.clone() }
+                Place {
+                    ptr: self.access_index(base, *m as u32, span),
+                    repr: reprs[*m].clone(),
+                    ty: e.ty.clone(),
+                }
             }
             ExprKind::Index(b, i) => {
-                let Some(base) = self.place(b)? else { return Ok(None) };
+                let Some(base) = self.place(b)? else {
+                    return Ok(None);
+                };
                 let repr = base.repr.index();
                 let ptr = match i.as_const().and_then(|c| c.as_int()) {
                     Some(k) => self.access_index(base.ptr, k as u32, span),
                     None => {
                         let iv = self.expr(i)?;
-                        self.add(Expression::Access { base: base.ptr, index: iv }, span)
+                        self.add(
+                            Expression::Access {
+                                base: base.ptr,
+                                index: iv,
+                            },
+                            span,
+                        )
                     }
                 };
-                Place { ptr, repr, ty: e.ty.clone() }
+                Place {
+                    ptr,
+                    repr,
+                    ty: e.ty.clone(),
+                }
             }
             ExprKind::Member(b, m) => {
-                let Some(base) = self.place(b)? else { return Ok(None) };
+                let Some(base) = self.place(b)? else {
+                    return Ok(None);
+                };
                 let (index, repr) = match &base.repr {
                     Repr::Struct(members) => match &members[*m] {
                         Some((si, r)) => (*si, r.clone()),
@@ -489,7 +747,11 @@ impl<'c, 'a> FnCx<'c, 'a> {
                     },
                     _ => (*m as u32, Repr::Same),
                 };
-                Place { ptr: self.access_index(base.ptr, index, span), repr, ty: e.ty.clone() }
+                Place {
+                    ptr: self.access_index(base.ptr, index, span),
+                    repr,
+                    ty: e.ty.clone(),
+                }
             }
             _ => return Ok(None),
         }))
@@ -502,19 +764,33 @@ impl<'c, 'a> FnCx<'c, 'a> {
     }
 
     /// Converts a value read from a uniform buffer to its GLSL type.
-    fn convert(&mut self, v: Handle<Expression>, repr: &Repr, ty: &Type, span: Span) -> Handle<Expression> {
+    fn convert(
+        &mut self,
+        v: Handle<Expression>,
+        repr: &Repr,
+        ty: &Type,
+        span: Span,
+    ) -> Handle<Expression> {
         match repr {
             Repr::Same => v,
             Repr::Bool(size) => {
                 let zero = self.lit(Literal::U32(0));
                 let zero = match size {
-                    Some(s) => self.add(Expression::Splat { size: *s, value: zero }, span),
+                    Some(s) => self.add(
+                        Expression::Splat {
+                            size: *s,
+                            value: zero,
+                        },
+                        span,
+                    ),
                     None => zero,
                 };
                 self.binop(naga::BinaryOperator::NotEqual, v, zero, span)
             }
             Repr::Columns { cols, .. } => {
-                let comps = (0..*cols as u32).map(|i| self.access_index(v, i, span)).collect();
+                let comps = (0..*cols as u32)
+                    .map(|i| self.access_index(v, i, span))
+                    .collect();
                 self.compose(ty, comps, span)
             }
             Repr::Array(el) => {
@@ -528,7 +804,11 @@ impl<'c, 'a> FnCx<'c, 'a> {
             }
             Repr::Struct(members) => {
                 let Type::Struct(id) = ty else { return v };
-                let mtys: Vec<Type> = self.cx.hir.structs[id.0 as usize].members.iter().map(|m| m.ty.clone()).collect();
+                let mtys: Vec<Type> = self.cx.hir.structs[id.0 as usize]
+                    .members
+                    .iter()
+                    .map(|m| m.ty.clone())
+                    .collect();
                 let mut comps = Vec::new();
                 for (m, mty) in members.iter().zip(&mtys) {
                     comps.push(match m {
@@ -549,10 +829,16 @@ impl<'c, 'a> FnCx<'c, 'a> {
 
     fn lvalue(&mut self, e: &Expr) -> Result<LValue, LowerError> {
         if let ExprKind::Swizzle(b, comps) = &e.kind {
-            let Some(base) = self.place(b)? else { return Ok(LValue::Nowhere) };
+            let Some(base) = self.place(b)? else {
+                return Ok(LValue::Nowhere);
+            };
             if comps.len() == 1 {
                 let ptr = self.access_index(base.ptr, comps[0] as u32, e.span);
-                return Ok(LValue::Place(Place { ptr, repr: Repr::Same, ty: e.ty.clone() }));
+                return Ok(LValue::Place(Place {
+                    ptr,
+                    repr: Repr::Same,
+                    ty: e.ty.clone(),
+                }));
             }
             return Ok(LValue::Swizzle(base, comps.clone()));
         }
@@ -575,7 +861,13 @@ impl<'c, 'a> FnCx<'c, 'a> {
 
     fn store(&mut self, lv: &LValue, value: Handle<Expression>, span: Span) {
         match lv {
-            LValue::Place(p) => self.push(Statement::Store { pointer: p.ptr, value }, span),
+            LValue::Place(p) => self.push(
+                Statement::Store {
+                    pointer: p.ptr,
+                    value,
+                },
+                span,
+            ),
             LValue::Swizzle(p, comps) => {
                 let old = self.load(p, span);
                 let Type::Vector(_, n) = p.ty else { return };
@@ -588,20 +880,36 @@ impl<'c, 'a> FnCx<'c, 'a> {
                 }
                 let ty = p.ty.clone();
                 let v = self.compose(&ty, parts, span);
-                self.push(Statement::Store { pointer: p.ptr, value: v }, span);
+                self.push(
+                    Statement::Store {
+                        pointer: p.ptr,
+                        value: v,
+                    },
+                    span,
+                );
             }
             LValue::Nowhere => {}
         }
     }
 
     /// Stores a value into the l-value `target` (for `out` parameters of built-ins).
-    pub(crate) fn store_to(&mut self, target: &Expr, value: Handle<Expression>, span: Span) -> Result<(), LowerError> {
+    pub(crate) fn store_to(
+        &mut self,
+        target: &Expr,
+        value: Handle<Expression>,
+        span: Span,
+    ) -> Result<(), LowerError> {
         let lv = self.lvalue(target)?;
         self.store(&lv, value, span);
         Ok(())
     }
 
-    pub(crate) fn swizzle(&mut self, v: Handle<Expression>, comps: &[u8], span: Span) -> Handle<Expression> {
+    pub(crate) fn swizzle(
+        &mut self,
+        v: Handle<Expression>,
+        comps: &[u8],
+        span: Span,
+    ) -> Handle<Expression> {
         if comps.len() == 1 {
             return self.access_index(v, comps[0] as u32, span);
         }
@@ -614,7 +922,14 @@ impl<'c, 'a> FnCx<'c, 'a> {
                 _ => naga::SwizzleComponent::W,
             };
         }
-        self.add(Expression::Swizzle { size: vsize(comps.len() as u8), vector: v, pattern }, span)
+        self.add(
+            Expression::Swizzle {
+                size: vsize(comps.len() as u8),
+                vector: v,
+                pattern,
+            },
+            span,
+        )
     }
 
     // ----- expressions -----
@@ -624,12 +939,16 @@ impl<'c, 'a> FnCx<'c, 'a> {
         let span = e.span;
         Ok(match &e.kind {
             ExprKind::Const(c) => self.constant(c, &e.ty, span),
-            ExprKind::Local(_) | ExprKind::Param(_) | ExprKind::Global(_) | ExprKind::BuiltinVar(_) | ExprKind::BlockMember(..) | ExprKind::Member(..) | ExprKind::Index(..) => {
-                match self.place(e)? {
-                    Some(p) => self.load(&p, span),
-                    None => self.value_access(e)?,
-                }
-            }
+            ExprKind::Local(_)
+            | ExprKind::Param(_)
+            | ExprKind::Global(_)
+            | ExprKind::BuiltinVar(_)
+            | ExprKind::BlockMember(..)
+            | ExprKind::Member(..)
+            | ExprKind::Index(..) => match self.place(e)? {
+                Some(p) => self.load(&p, span),
+                None => self.value_access(e)?,
+            },
             ExprKind::Swizzle(b, comps) => {
                 let v = self.expr(b)?;
                 self.swizzle(v, comps, span)
@@ -637,8 +956,20 @@ impl<'c, 'a> FnCx<'c, 'a> {
             ExprKind::Unary(op, a) => {
                 let v = self.expr(a)?;
                 match op {
-                    hir::UnaryOp::Not => self.add(Expression::Unary { op: naga::UnaryOperator::LogicalNot, expr: v }, span),
-                    hir::UnaryOp::BitNot => self.add(Expression::Unary { op: naga::UnaryOperator::BitwiseNot, expr: v }, span),
+                    hir::UnaryOp::Not => self.add(
+                        Expression::Unary {
+                            op: naga::UnaryOperator::LogicalNot,
+                            expr: v,
+                        },
+                        span,
+                    ),
+                    hir::UnaryOp::BitNot => self.add(
+                        Expression::Unary {
+                            op: naga::UnaryOperator::BitwiseNot,
+                            expr: v,
+                        },
+                        span,
+                    ),
                     hir::UnaryOp::Neg => self.negate(v, &a.ty, span),
                 }
             }
@@ -676,23 +1007,49 @@ impl<'c, 'a> FnCx<'c, 'a> {
                     let cv = self.expr(c)?;
                     let av = self.expr(a)?;
                     let bv = self.expr(b)?;
-                    self.add(Expression::Select { condition: cv, accept: av, reject: bv }, span)
+                    self.add(
+                        Expression::Select {
+                            condition: cv,
+                            accept: av,
+                            reject: bv,
+                        },
+                        span,
+                    )
                 } else {
                     let tmp = self.new_local("_essl_select", &e.ty);
                     let cv = self.expr(c)?;
                     let accept = self.capture(|fx| {
                         let v = fx.expr(a)?;
                         let p = fx.add(Expression::LocalVariable(tmp), span);
-                        fx.push(Statement::Store { pointer: p, value: v }, span);
+                        fx.push(
+                            Statement::Store {
+                                pointer: p,
+                                value: v,
+                            },
+                            span,
+                        );
                         Ok(())
                     })?;
                     let reject = self.capture(|fx| {
                         let v = fx.expr(b)?;
                         let p = fx.add(Expression::LocalVariable(tmp), span);
-                        fx.push(Statement::Store { pointer: p, value: v }, span);
+                        fx.push(
+                            Statement::Store {
+                                pointer: p,
+                                value: v,
+                            },
+                            span,
+                        );
                         Ok(())
                     })?;
-                    self.push(Statement::If { condition: cv, accept, reject }, span);
+                    self.push(
+                        Statement::If {
+                            condition: cv,
+                            accept,
+                            reject,
+                        },
+                        span,
+                    );
                     let p = self.add(Expression::LocalVariable(tmp), span);
                     self.add(Expression::Load { pointer: p }, span)
                 }
@@ -726,11 +1083,23 @@ impl<'c, 'a> FnCx<'c, 'a> {
                     // A dynamic index into a matrix (or array) value goes through a variable.
                     let tmp = self.new_local("_essl_index", &b.ty);
                     let p = self.add(Expression::LocalVariable(tmp), span);
-                    self.push(Statement::Store { pointer: p, value: bv }, span);
+                    self.push(
+                        Statement::Store {
+                            pointer: p,
+                            value: bv,
+                        },
+                        span,
+                    );
                     let ep = self.add(Expression::Access { base: p, index: iv }, span);
                     return Ok(self.add(Expression::Load { pointer: ep }, span));
                 }
-                Ok(self.add(Expression::Access { base: bv, index: iv }, span))
+                Ok(self.add(
+                    Expression::Access {
+                        base: bv,
+                        index: iv,
+                    },
+                    span,
+                ))
             }
             ExprKind::Member(b, m) => {
                 if self.is_unlowered_variable(b) {
@@ -769,11 +1138,20 @@ impl<'c, 'a> FnCx<'c, 'a> {
             return self.runtime_constant(c, ty, span);
         }
         match (c, ty) {
-            (ConstValue::Basic(v), Type::Scalar(_)) => self.add(Expression::Literal(literal(v[0])), span),
+            (ConstValue::Basic(v), Type::Scalar(_)) => {
+                self.add(Expression::Literal(literal(v[0])), span)
+            }
             _ => {
                 let init = global_constant(self.cx, c, ty);
                 let nty = self.ty(ty);
-                let h = self.cx.module.constants.append(naga::Constant { name: None, ty: nty, init }, NSpan::UNDEFINED);
+                let h = self.cx.module.constants.append(
+                    naga::Constant {
+                        name: None,
+                        ty: nty,
+                        init,
+                    },
+                    NSpan::UNDEFINED,
+                );
                 self.add(Expression::Constant(h), span)
             }
         }
@@ -786,29 +1164,60 @@ impl<'c, 'a> FnCx<'c, 'a> {
             (ConstValue::Basic(v), Type::Scalar(_)) => match v[0] {
                 Scalar::F(f) if !f.is_finite() => {
                     let bits = self.lit(Literal::U32(f.to_bits()));
-                    self.add(Expression::As { expr: bits, kind: naga::ScalarKind::Float, convert: None }, span)
+                    self.add(
+                        Expression::As {
+                            expr: bits,
+                            kind: naga::ScalarKind::Float,
+                            convert: None,
+                        },
+                        span,
+                    )
                 }
                 s => self.add(Expression::Literal(literal(s)), span),
             },
             (ConstValue::Basic(v), Type::Vector(k, _)) => {
-                let parts: Vec<_> = v.iter().map(|s| self.runtime_constant(&ConstValue::Basic(vec![*s]), &Type::Scalar(*k), span)).collect();
+                let parts: Vec<_> = v
+                    .iter()
+                    .map(|s| {
+                        self.runtime_constant(&ConstValue::Basic(vec![*s]), &Type::Scalar(*k), span)
+                    })
+                    .collect();
                 self.compose(ty, parts, span)
             }
             (ConstValue::Basic(v), Type::Matrix { cols, rows }) => {
                 let col_ty = Type::Vector(ScalarKind::Float, *rows);
                 let parts: Vec<_> = (0..*cols as usize)
-                    .map(|c| self.runtime_constant(&ConstValue::Basic(v[c * *rows as usize..(c + 1) * *rows as usize].to_vec()), &col_ty, span))
+                    .map(|c| {
+                        self.runtime_constant(
+                            &ConstValue::Basic(
+                                v[c * *rows as usize..(c + 1) * *rows as usize].to_vec(),
+                            ),
+                            &col_ty,
+                            span,
+                        )
+                    })
                     .collect();
                 self.compose(ty, parts, span)
             }
             (ConstValue::Composite(elems), Type::Array(el, _)) => {
                 let el = (**el).clone();
-                let parts: Vec<_> = elems.iter().map(|e| self.runtime_constant(e, &el, span)).collect();
+                let parts: Vec<_> = elems
+                    .iter()
+                    .map(|e| self.runtime_constant(e, &el, span))
+                    .collect();
                 self.compose(ty, parts, span)
             }
             (ConstValue::Composite(members), Type::Struct(id)) => {
-                let mtys: Vec<Type> = self.cx.hir.structs[id.0 as usize].members.iter().map(|m| m.ty.clone()).collect();
-                let parts: Vec<_> = members.iter().zip(&mtys).map(|(e, t)| self.runtime_constant(e, t, span)).collect();
+                let mtys: Vec<Type> = self.cx.hir.structs[id.0 as usize]
+                    .members
+                    .iter()
+                    .map(|m| m.ty.clone())
+                    .collect();
+                let parts: Vec<_> = members
+                    .iter()
+                    .zip(&mtys)
+                    .map(|(e, t)| self.runtime_constant(e, t, span))
+                    .collect();
                 self.compose(ty, parts, span)
             }
             _ => self.zero(ty),
@@ -849,11 +1258,24 @@ impl<'c, 'a> FnCx<'c, 'a> {
                 let zero = self.zero(t);
                 self.binop(naga::BinaryOperator::Subtract, zero, v, span)
             }
-            _ => self.add(Expression::Unary { op: naga::UnaryOperator::Negate, expr: v }, span),
+            _ => self.add(
+                Expression::Unary {
+                    op: naga::UnaryOperator::Negate,
+                    expr: v,
+                },
+                span,
+            ),
         }
     }
 
-    fn binary(&mut self, op: BinaryOp, a: &Expr, b: &Expr, rt: &Type, span: Span) -> Result<Handle<Expression>, LowerError> {
+    fn binary(
+        &mut self,
+        op: BinaryOp,
+        a: &Expr,
+        b: &Expr,
+        rt: &Type,
+        span: Span,
+    ) -> Result<Handle<Expression>, LowerError> {
         use naga::BinaryOperator as Bo;
         match op {
             BinaryOp::And | BinaryOp::Or if has_effects(b) => {
@@ -861,15 +1283,38 @@ impl<'c, 'a> FnCx<'c, 'a> {
                 let tmp = self.new_local("_essl_logic", &Type::BOOL);
                 let av = self.expr(a)?;
                 let p = self.add(Expression::LocalVariable(tmp), span);
-                self.push(Statement::Store { pointer: p, value: av }, span);
+                self.push(
+                    Statement::Store {
+                        pointer: p,
+                        value: av,
+                    },
+                    span,
+                );
                 let eval_b = self.capture(|fx| {
                     let bv = fx.expr(b)?;
                     let p = fx.add(Expression::LocalVariable(tmp), span);
-                    fx.push(Statement::Store { pointer: p, value: bv }, span);
+                    fx.push(
+                        Statement::Store {
+                            pointer: p,
+                            value: bv,
+                        },
+                        span,
+                    );
                     Ok(())
                 })?;
-                let (accept, reject) = if op == BinaryOp::And { (eval_b, naga::Block::new()) } else { (naga::Block::new(), eval_b) };
-                self.push(Statement::If { condition: av, accept, reject }, span);
+                let (accept, reject) = if op == BinaryOp::And {
+                    (eval_b, naga::Block::new())
+                } else {
+                    (naga::Block::new(), eval_b)
+                };
+                self.push(
+                    Statement::If {
+                        condition: av,
+                        accept,
+                        reject,
+                    },
+                    span,
+                );
                 let p = self.add(Expression::LocalVariable(tmp), span);
                 Ok(self.add(Expression::Load { pointer: p }, span))
             }
@@ -887,7 +1332,17 @@ impl<'c, 'a> FnCx<'c, 'a> {
                 let av = self.expr(a)?;
                 let bv = self.expr(b)?;
                 let eq = self.equal(av, bv, &a.ty, span);
-                Ok(if op == BinaryOp::Eq { eq } else { self.add(Expression::Unary { op: naga::UnaryOperator::LogicalNot, expr: eq }, span) })
+                Ok(if op == BinaryOp::Eq {
+                    eq
+                } else {
+                    self.add(
+                        Expression::Unary {
+                            op: naga::UnaryOperator::LogicalNot,
+                            expr: eq,
+                        },
+                        span,
+                    )
+                })
             }
             BinaryOp::Less | BinaryOp::Greater | BinaryOp::LessEq | BinaryOp::GreaterEq => {
                 let av = self.expr(a)?;
@@ -913,13 +1368,25 @@ impl<'c, 'a> FnCx<'c, 'a> {
     }
 
     /// Deep equality of two values of the same type, as one `bool`.
-    fn equal(&mut self, a: Handle<Expression>, b: Handle<Expression>, ty: &Type, span: Span) -> Handle<Expression> {
+    fn equal(
+        &mut self,
+        a: Handle<Expression>,
+        b: Handle<Expression>,
+        ty: &Type,
+        span: Span,
+    ) -> Handle<Expression> {
         use naga::BinaryOperator as Bo;
         match ty {
             Type::Scalar(_) => self.binop(Bo::Equal, a, b, span),
             Type::Vector(..) => {
                 let v = self.binop(Bo::Equal, a, b, span);
-                self.add(Expression::Relational { fun: naga::RelationalFunction::All, argument: v }, span)
+                self.add(
+                    Expression::Relational {
+                        fun: naga::RelationalFunction::All,
+                        argument: v,
+                    },
+                    span,
+                )
             }
             Type::Matrix { cols, rows } => {
                 let col = Type::Vector(ScalarKind::Float, *rows);
@@ -930,7 +1397,11 @@ impl<'c, 'a> FnCx<'c, 'a> {
                 self.fold_and(*n, a, b, &el, span)
             }
             Type::Struct(id) => {
-                let mtys: Vec<Type> = self.cx.hir.structs[id.0 as usize].members.iter().map(|m| m.ty.clone()).collect();
+                let mtys: Vec<Type> = self.cx.hir.structs[id.0 as usize]
+                    .members
+                    .iter()
+                    .map(|m| m.ty.clone())
+                    .collect();
                 let mut acc: Option<Handle<Expression>> = None;
                 for (i, t) in mtys.iter().enumerate() {
                     let x = self.access_index(a, i as u32, span);
@@ -947,7 +1418,14 @@ impl<'c, 'a> FnCx<'c, 'a> {
         }
     }
 
-    fn fold_and(&mut self, n: u32, a: Handle<Expression>, b: Handle<Expression>, el: &Type, span: Span) -> Handle<Expression> {
+    fn fold_and(
+        &mut self,
+        n: u32,
+        a: Handle<Expression>,
+        b: Handle<Expression>,
+        el: &Type,
+        span: Span,
+    ) -> Handle<Expression> {
         let mut acc: Option<Handle<Expression>> = None;
         for i in 0..n {
             let x = self.access_index(a, i, span);
@@ -963,7 +1441,16 @@ impl<'c, 'a> FnCx<'c, 'a> {
 
     /// Arithmetic and bitwise operators with GLSL's scalar/vector/matrix mixing.
     #[allow(clippy::too_many_arguments)]
-    pub(crate) fn arith(&mut self, op: BinaryOp, a: Handle<Expression>, at: &Type, b: Handle<Expression>, bt: &Type, rt: &Type, span: Span) -> Result<Handle<Expression>, LowerError> {
+    pub(crate) fn arith(
+        &mut self,
+        op: BinaryOp,
+        a: Handle<Expression>,
+        at: &Type,
+        b: Handle<Expression>,
+        bt: &Type,
+        rt: &Type,
+        span: Span,
+    ) -> Result<Handle<Expression>, LowerError> {
         use naga::BinaryOperator as Bo;
         let nop = match op {
             BinaryOp::Add => Bo::Add,
@@ -976,7 +1463,12 @@ impl<'c, 'a> FnCx<'c, 'a> {
             BinaryOp::BitXor => Bo::ExclusiveOr,
             BinaryOp::Shl => Bo::ShiftLeft,
             BinaryOp::Shr => Bo::ShiftRight,
-            _ => return Err(unsupported(format!("operator `{}` here", op.as_str()), span)),
+            _ => {
+                return Err(unsupported(
+                    format!("operator `{}` here", op.as_str()),
+                    span,
+                ))
+            }
         };
         // Shifts: the amount is unsigned, and a vector when the value is.
         if matches!(op, BinaryOp::Shl | BinaryOp::Shr) {
@@ -991,7 +1483,8 @@ impl<'c, 'a> FnCx<'c, 'a> {
         }
         match (at, bt) {
             (Type::Matrix { cols, rows }, _) | (_, Type::Matrix { cols, rows })
-                if matches!((at, bt), (Type::Matrix { .. }, Type::Matrix { .. })) && op != BinaryOp::Mul =>
+                if matches!((at, bt), (Type::Matrix { .. }, Type::Matrix { .. }))
+                    && op != BinaryOp::Mul =>
             {
                 if matches!(op, BinaryOp::Add | BinaryOp::Sub) {
                     return Ok(self.binop(nop, a, b, span));
@@ -1008,7 +1501,10 @@ impl<'c, 'a> FnCx<'c, 'a> {
                 let _ = col;
                 Ok(self.compose(rt, parts, span))
             }
-            (Type::Matrix { cols, rows }, Type::Scalar(_)) | (Type::Scalar(_), Type::Matrix { cols, rows }) if op != BinaryOp::Mul => {
+            (Type::Matrix { cols, rows }, Type::Scalar(_))
+            | (Type::Scalar(_), Type::Matrix { cols, rows })
+                if op != BinaryOp::Mul =>
+            {
                 let scalar_left = at.is_scalar();
                 let s = if scalar_left { a } else { b };
                 let m = if scalar_left { b } else { a };
@@ -1039,9 +1535,20 @@ impl<'c, 'a> FnCx<'c, 'a> {
 
     // ----- calls and constructors -----
 
-    fn call(&mut self, f: FuncId, args: &[Expr], ret: &Type, span: Span) -> Result<Handle<Expression>, LowerError> {
+    fn call(
+        &mut self,
+        f: FuncId,
+        args: &[Expr],
+        ret: &Type,
+        span: Span,
+    ) -> Result<Handle<Expression>, LowerError> {
         let callee = &self.cx.hir.functions[f];
-        let Some(function) = self.cx.functions[f] else { return Err(unsupported("a call to a function that was not lowered", span)) };
+        let Some(function) = self.cx.functions[f] else {
+            return Err(unsupported(
+                "a call to a function that was not lowered",
+                span,
+            ));
+        };
         let mut arguments = Vec::new();
         let mut writebacks = Vec::new();
         for (arg, p) in args.iter().zip(callee.params.clone()) {
@@ -1059,7 +1566,13 @@ impl<'c, 'a> FnCx<'c, 'a> {
                     if mode == ParamMode::InOut {
                         let v = self.load_lvalue(&lv, &arg.ty, span);
                         let tp = self.add(Expression::LocalVariable(tmp), span);
-                        self.push(Statement::Store { pointer: tp, value: v }, span);
+                        self.push(
+                            Statement::Store {
+                                pointer: tp,
+                                value: v,
+                            },
+                            span,
+                        );
                     }
                     let tp = self.add(Expression::LocalVariable(tmp), span);
                     arguments.push(tp);
@@ -1068,8 +1581,23 @@ impl<'c, 'a> FnCx<'c, 'a> {
             }
         }
         self.flush_only();
-        let result = if *ret != Type::Void { Some(self.f.expressions.append(Expression::CallResult(function), nspan(span))) } else { None };
-        self.blocks.last_mut().expect("block").push(Statement::Call { function, arguments, result }, nspan(span));
+        let result = if *ret != Type::Void {
+            Some(
+                self.f
+                    .expressions
+                    .append(Expression::CallResult(function), nspan(span)),
+            )
+        } else {
+            None
+        };
+        self.blocks.last_mut().expect("block").push(
+            Statement::Call {
+                function,
+                arguments,
+                result,
+            },
+            nspan(span),
+        );
         self.emitter.start(&self.f.expressions);
         for (lv, tmp) in writebacks {
             let tp = self.add(Expression::LocalVariable(tmp), span);
@@ -1083,7 +1611,10 @@ impl<'c, 'a> FnCx<'c, 'a> {
     }
 
     /// The texture and sampler a sampler-typed expression denotes (resolved statically).
-    pub(crate) fn sampler(&mut self, e: &Expr) -> Result<(Handle<Expression>, Handle<Expression>), LowerError> {
+    pub(crate) fn sampler(
+        &mut self,
+        e: &Expr,
+    ) -> Result<(Handle<Expression>, Handle<Expression>), LowerError> {
         let mut path = Vec::new();
         let mut cur = e;
         loop {
@@ -1102,14 +1633,20 @@ impl<'c, 'a> FnCx<'c, 'a> {
                 ExprKind::Global(g) => {
                     path.reverse();
                     return Ok(match self.cx.samplers.get(&(*g, path)).copied() {
-                        Some((t, s)) => (self.add(Expression::GlobalVariable(t), e.span), self.add(Expression::GlobalVariable(s), e.span)),
+                        Some((t, s)) => (
+                            self.add(Expression::GlobalVariable(t), e.span),
+                            self.add(Expression::GlobalVariable(s), e.span),
+                        ),
                         None => return Err(unsupported("an inactive sampler", e.span)),
                     });
                 }
                 ExprKind::Param(i) => {
                     if let ParamLower::Sampler(t, s) = self.params[*i] {
                         if path.is_empty() {
-                            return Ok((self.add(Expression::FunctionArgument(t), e.span), self.add(Expression::FunctionArgument(s), e.span)));
+                            return Ok((
+                                self.add(Expression::FunctionArgument(t), e.span),
+                                self.add(Expression::FunctionArgument(s), e.span),
+                            ));
                         }
                     }
                     return Err(unsupported("a sampler inside a parameter", e.span));
@@ -1126,7 +1663,9 @@ impl<'c, 'a> FnCx<'c, 'a> {
         loop {
             match &cur.kind {
                 ExprKind::Index(b, i) => {
-                    let Some(k) = i.as_const().and_then(|c| c.as_int()) else { return true };
+                    let Some(k) = i.as_const().and_then(|c| c.as_int()) else {
+                        return true;
+                    };
                     path.push(PathStep::Index(k as u32));
                     cur = b;
                 }
@@ -1143,21 +1682,41 @@ impl<'c, 'a> FnCx<'c, 'a> {
         }
     }
 
-    fn construct(&mut self, ty: &Type, args: &[Expr], span: Span) -> Result<Handle<Expression>, LowerError> {
-        let vals: Vec<Handle<Expression>> = args.iter().map(|a| self.expr(a)).collect::<Result<_, _>>()?;
+    fn construct(
+        &mut self,
+        ty: &Type,
+        args: &[Expr],
+        span: Span,
+    ) -> Result<Handle<Expression>, LowerError> {
+        let vals: Vec<Handle<Expression>> = args
+            .iter()
+            .map(|a| self.expr(a))
+            .collect::<Result<_, _>>()?;
         match ty {
             Type::Array(..) | Type::Struct(_) => Ok(self.compose(ty, vals, span)),
             Type::Scalar(k) => {
                 let a = &args[0];
                 let first = self.first_component(vals[0], &a.ty, span);
-                Ok(self.convert_scalar(first, a.ty.scalar_kind().unwrap_or(ScalarKind::Float), *k, span))
+                Ok(self.convert_scalar(
+                    first,
+                    a.ty.scalar_kind().unwrap_or(ScalarKind::Float),
+                    *k,
+                    span,
+                ))
             }
             Type::Vector(k, n) => {
                 if args.len() == 1 && args[0].ty.is_scalar() {
-                    let s = self.convert_scalar(vals[0], args[0].ty.scalar_kind().unwrap_or(*k), *k, span);
+                    let s = self.convert_scalar(
+                        vals[0],
+                        args[0].ty.scalar_kind().unwrap_or(*k),
+                        *k,
+                        span,
+                    );
                     return Ok(self.splat(s, *n, span));
                 }
-                if args.len() == 1 && args[0].ty == Type::Vector(args[0].ty.scalar_kind().unwrap_or(*k), *n) {
+                if args.len() == 1
+                    && args[0].ty == Type::Vector(args[0].ty.scalar_kind().unwrap_or(*k), *n)
+                {
                     return Ok(self.convert_vector(vals[0], &args[0].ty, *k, span));
                 }
                 let comps = self.components(&vals, args, *n as usize, *k, span);
@@ -1167,11 +1726,17 @@ impl<'c, 'a> FnCx<'c, 'a> {
                 let (cols, rows) = (*cols, *rows);
                 let col_ty = Type::Vector(ScalarKind::Float, rows);
                 if args.len() == 1 && args[0].ty.is_scalar() {
-                    let s = self.convert_scalar(vals[0], args[0].ty.scalar_kind().unwrap_or(ScalarKind::Float), ScalarKind::Float, span);
+                    let s = self.convert_scalar(
+                        vals[0],
+                        args[0].ty.scalar_kind().unwrap_or(ScalarKind::Float),
+                        ScalarKind::Float,
+                        span,
+                    );
                     let zero = self.lit(Literal::F32(0.0));
                     let mut columns = Vec::new();
                     for c in 0..cols {
-                        let comps: Vec<_> = (0..rows).map(|r| if r == c { s } else { zero }).collect();
+                        let comps: Vec<_> =
+                            (0..rows).map(|r| if r == c { s } else { zero }).collect();
                         columns.push(self.compose(&col_ty, comps, span));
                     }
                     return Ok(self.compose(ty, columns, span));
@@ -1187,7 +1752,11 @@ impl<'c, 'a> FnCx<'c, 'a> {
                             columns.push(self.access_index(m, c as u32, span));
                             continue;
                         }
-                        let src = if c < c2 { Some(self.access_index(m, c as u32, span)) } else { None };
+                        let src = if c < c2 {
+                            Some(self.access_index(m, c as u32, span))
+                        } else {
+                            None
+                        };
                         let comps: Vec<_> = (0..rows)
                             .map(|r| match src {
                                 Some(col) if r < r2 => self.access_index(col, r as u32, span),
@@ -1199,7 +1768,8 @@ impl<'c, 'a> FnCx<'c, 'a> {
                     }
                     return Ok(self.compose(ty, columns, span));
                 }
-                let comps = self.components(&vals, args, (cols * rows) as usize, ScalarKind::Float, span);
+                let comps =
+                    self.components(&vals, args, (cols * rows) as usize, ScalarKind::Float, span);
                 let mut columns = Vec::new();
                 for c in 0..cols as usize {
                     let part = comps[c * rows as usize..(c + 1) * rows as usize].to_vec();
@@ -1211,7 +1781,12 @@ impl<'c, 'a> FnCx<'c, 'a> {
         }
     }
 
-    fn first_component(&mut self, v: Handle<Expression>, ty: &Type, span: Span) -> Handle<Expression> {
+    fn first_component(
+        &mut self,
+        v: Handle<Expression>,
+        ty: &Type,
+        span: Span,
+    ) -> Handle<Expression> {
         match ty {
             Type::Vector(..) => self.access_index(v, 0, span),
             Type::Matrix { .. } => {
@@ -1223,7 +1798,14 @@ impl<'c, 'a> FnCx<'c, 'a> {
     }
 
     /// The first `n` scalar components of the arguments, converted to `kind`.
-    fn components(&mut self, vals: &[Handle<Expression>], args: &[Expr], n: usize, kind: ScalarKind, span: Span) -> Vec<Handle<Expression>> {
+    fn components(
+        &mut self,
+        vals: &[Handle<Expression>],
+        args: &[Expr],
+        n: usize,
+        kind: ScalarKind,
+        span: Span,
+    ) -> Vec<Handle<Expression>> {
         let mut out = Vec::new();
         for (v, a) in vals.iter().zip(args) {
             let from = a.ty.scalar_kind().unwrap_or(kind);
@@ -1260,14 +1842,26 @@ impl<'c, 'a> FnCx<'c, 'a> {
         out
     }
 
-    pub(crate) fn convert_scalar(&mut self, v: Handle<Expression>, from: ScalarKind, to: ScalarKind, span: Span) -> Handle<Expression> {
+    pub(crate) fn convert_scalar(
+        &mut self,
+        v: Handle<Expression>,
+        from: ScalarKind,
+        to: ScalarKind,
+        span: Span,
+    ) -> Handle<Expression> {
         if from == to {
             return v;
         }
         self.convert_kind(v, from, to, None, span)
     }
 
-    fn convert_vector(&mut self, v: Handle<Expression>, from_ty: &Type, to: ScalarKind, span: Span) -> Handle<Expression> {
+    fn convert_vector(
+        &mut self,
+        v: Handle<Expression>,
+        from_ty: &Type,
+        to: ScalarKind,
+        span: Span,
+    ) -> Handle<Expression> {
         let from = from_ty.scalar_kind().unwrap_or(to);
         if from == to {
             return v;
@@ -1276,7 +1870,14 @@ impl<'c, 'a> FnCx<'c, 'a> {
     }
 
     /// GLSL conversions between kinds: to bool is `!= 0`; from bool is 0/1.
-    fn convert_kind(&mut self, v: Handle<Expression>, from: ScalarKind, to: ScalarKind, n: Option<u8>, span: Span) -> Handle<Expression> {
+    fn convert_kind(
+        &mut self,
+        v: Handle<Expression>,
+        from: ScalarKind,
+        to: ScalarKind,
+        n: Option<u8>,
+        span: Span,
+    ) -> Handle<Expression> {
         let n = n.filter(|n| *n > 1);
         if to == ScalarKind::Bool {
             let zero = match from {
@@ -1311,9 +1912,13 @@ impl<'c, 'a> FnCx<'c, 'a> {
 pub(crate) fn has_effects(e: &Expr) -> bool {
     match &e.kind {
         ExprKind::Assign(..) | ExprKind::IncDec(..) | ExprKind::Call(..) => true,
-        ExprKind::Builtin(op, args) => *op == crate::builtins::BuiltinFn::Modf || args.iter().any(has_effects),
+        ExprKind::Builtin(op, args) => {
+            *op == crate::builtins::BuiltinFn::Modf || args.iter().any(has_effects)
+        }
         ExprKind::Unary(_, a) | ExprKind::Member(a, _) | ExprKind::Swizzle(a, _) => has_effects(a),
-        ExprKind::Binary(_, a, b) | ExprKind::Comma(a, b) | ExprKind::Index(a, b) => has_effects(a) || has_effects(b),
+        ExprKind::Binary(_, a, b) | ExprKind::Comma(a, b) | ExprKind::Index(a, b) => {
+            has_effects(a) || has_effects(b)
+        }
         ExprKind::Select(c, a, b) => has_effects(c) || has_effects(a) || has_effects(b),
         ExprKind::Construct(args) => args.iter().any(has_effects),
         ExprKind::BlockMember(_, Some(i), _) => has_effects(i),
@@ -1324,13 +1929,17 @@ pub(crate) fn has_effects(e: &Expr) -> bool {
 /// Whether `op` is an integer division or remainder by a constant with a zero component.
 fn int_zero_divisor(op: BinaryOp, b: &Expr) -> bool {
     matches!(op, BinaryOp::Div | BinaryOp::Mod)
-        && b.as_const().and_then(|c| c.scalars()).is_some_and(|v| v.iter().any(|s| matches!(s, Scalar::I(0) | Scalar::U(0))))
+        && b.as_const()
+            .and_then(|c| c.scalars())
+            .is_some_and(|v| v.iter().any(|s| matches!(s, Scalar::I(0) | Scalar::U(0))))
 }
 
 /// Whether a constant has only finite floats (naga literals must be finite).
 pub(crate) fn all_finite(c: &ConstValue) -> bool {
     match c {
-        ConstValue::Basic(v) => v.iter().all(|s| !matches!(s, Scalar::F(f) if !f.is_finite())),
+        ConstValue::Basic(v) => v
+            .iter()
+            .all(|s| !matches!(s, Scalar::F(f) if !f.is_finite())),
         ConstValue::Composite(v) => v.iter().all(all_finite),
     }
 }
@@ -1345,7 +1954,12 @@ fn const_bool(e: &Expr) -> Option<bool> {
 /// IO leaves of a value: (path of struct members / array elements / matrix columns, leaf type).
 fn io_leaves(ty: &Type, structs: &[crate::types::StructDef]) -> Vec<(Vec<u32>, Type)> {
     let mut out = Vec::new();
-    fn walk(ty: &Type, structs: &[crate::types::StructDef], path: &mut Vec<u32>, out: &mut Vec<(Vec<u32>, Type)>) {
+    fn walk(
+        ty: &Type,
+        structs: &[crate::types::StructDef],
+        path: &mut Vec<u32>,
+        out: &mut Vec<(Vec<u32>, Type)>,
+    ) {
         match ty {
             Type::Matrix { cols, rows } => {
                 for c in 0..*cols as u32 {
@@ -1376,39 +1990,83 @@ fn io_leaves(ty: &Type, structs: &[crate::types::StructDef]) -> Vec<(Vec<u32>, T
 }
 
 /// Builds the entry point that wraps the shader's `main`.
-pub(crate) fn entry_point(cx: &mut ModuleCx, main: Handle<naga::Function>, plan: &StagePlan) -> Result<naga::Function, LowerError> {
+pub(crate) fn entry_point(
+    cx: &mut ModuleCx,
+    main: Handle<naga::Function>,
+    plan: &StagePlan,
+) -> Result<naga::Function, LowerError> {
     let hir = cx.hir;
     let stage = cx.stage;
-    let mut fx = FnCx { cx, f: naga::Function { name: Some("main".into()), ..Default::default() }, emitter: Emitter::default(), blocks: vec![naga::Block::new()], locals: Vec::new(), params: Vec::new(), hir_fn: None };
+    let mut fx = FnCx {
+        cx,
+        f: naga::Function {
+            name: Some("main".into()),
+            ..Default::default()
+        },
+        emitter: Emitter::default(),
+        blocks: vec![naga::Block::new()],
+        locals: Vec::new(),
+        params: Vec::new(),
+        hir_fn: None,
+    };
     fx.emitter.start(&fx.f.expressions);
     let sp = Span::default();
-    let store_private = |fx: &mut FnCx, var: Handle<naga::GlobalVariable>, value: Handle<Expression>| {
-        let p = fx.add(Expression::GlobalVariable(var), sp);
-        fx.push(Statement::Store { pointer: p, value }, sp);
-    };
+    let store_private =
+        |fx: &mut FnCx, var: Handle<naga::GlobalVariable>, value: Handle<Expression>| {
+            let p = fx.add(Expression::GlobalVariable(var), sp);
+            fx.push(Statement::Store { pointer: p, value }, sp);
+        };
     // Inputs.
     for &(gi, loc) in &plan.inputs {
         let g = &hir.globals[gi];
-        let GlobalLower::Private(var) = fx.cx.globals[gi] else { continue };
+        let GlobalLower::Private(var) = fx.cx.globals[gi] else {
+            continue;
+        };
         let leaves = io_leaves(&g.ty, &hir.structs);
-        let flat = g.interpolation == Some(crate::ast::Interpolation::Flat) || g.ty.contains_kind(ScalarKind::Int, &hir.structs) || g.ty.contains_kind(ScalarKind::Uint, &hir.structs);
+        let flat = g.interpolation == Some(crate::ast::Interpolation::Flat)
+            || g.ty.contains_kind(ScalarKind::Int, &hir.structs)
+            || g.ty.contains_kind(ScalarKind::Uint, &hir.structs);
         for (i, (path, leaf_ty)) in leaves.iter().enumerate() {
             let ty = fx.ty(leaf_ty);
             let interpolation = if stage == Stage::Fragment {
-                Some(if flat || leaf_ty.scalar_kind() != Some(ScalarKind::Float) { naga::Interpolation::Flat } else { naga::Interpolation::Perspective })
+                Some(
+                    if flat || leaf_ty.scalar_kind() != Some(ScalarKind::Float) {
+                        naga::Interpolation::Flat
+                    } else {
+                        naga::Interpolation::Perspective
+                    },
+                )
             } else {
                 None
             };
             let sampling = match interpolation {
-                Some(naga::Interpolation::Perspective) => Some(if g.centroid { naga::Sampling::Centroid } else { naga::Sampling::Center }),
+                Some(naga::Interpolation::Perspective) => Some(if g.centroid {
+                    naga::Sampling::Centroid
+                } else {
+                    naga::Sampling::Center
+                }),
                 Some(_) => None,
                 None => None,
             };
             let arg = fx.f.arguments.len() as u32;
             fx.f.arguments.push(naga::FunctionArgument {
-                name: Some(format!("{}{}", g.name, if leaves.len() > 1 { format!("_{i}") } else { String::new() })),
+                name: Some(format!(
+                    "{}{}",
+                    g.name,
+                    if leaves.len() > 1 {
+                        format!("_{i}")
+                    } else {
+                        String::new()
+                    }
+                )),
                 ty,
-                binding: Some(naga::Binding::Location { location: loc + i as u32, interpolation, sampling, blend_src: None, per_primitive: false }),
+                binding: Some(naga::Binding::Location {
+                    location: loc + i as u32,
+                    interpolation,
+                    sampling,
+                    blend_src: None,
+                    per_primitive: false,
+                }),
             });
             let value = fx.add(Expression::FunctionArgument(arg), sp);
             let mut p = fx.add(Expression::GlobalVariable(var), sp);
@@ -1419,7 +2077,8 @@ pub(crate) fn entry_point(cx: &mut ModuleCx, main: Handle<naga::Function>, plan:
         }
     }
     // Built-in inputs.
-    let builtins: Vec<(BuiltinVar, Handle<naga::GlobalVariable>)> = fx.cx.builtins.iter().map(|(k, v)| (*k, *v)).collect();
+    let builtins: Vec<(BuiltinVar, Handle<naga::GlobalVariable>)> =
+        fx.cx.builtins.iter().map(|(k, v)| (*k, *v)).collect();
     let mut builtins = builtins;
     builtins.sort_by_key(|(k, _)| *k);
     let mut frag_coord_arg = None;
@@ -1427,20 +2086,34 @@ pub(crate) fn entry_point(cx: &mut ModuleCx, main: Handle<naga::Function>, plan:
         let (builtin, ty) = match b {
             BuiltinVar::VertexId => (naga::BuiltIn::VertexIndex, Type::UINT),
             BuiltinVar::InstanceId => (naga::BuiltIn::InstanceIndex, Type::UINT),
-            BuiltinVar::FragCoord => (naga::BuiltIn::Position { invariant: false }, Type::Vector(ScalarKind::Float, 4)),
+            BuiltinVar::FragCoord => (
+                naga::BuiltIn::Position { invariant: false },
+                Type::Vector(ScalarKind::Float, 4),
+            ),
             BuiltinVar::FrontFacing => (naga::BuiltIn::FrontFacing, Type::BOOL),
-            BuiltinVar::PointCoord => (naga::BuiltIn::PointCoord, Type::Vector(ScalarKind::Float, 2)),
+            BuiltinVar::PointCoord => (
+                naga::BuiltIn::PointCoord,
+                Type::Vector(ScalarKind::Float, 2),
+            ),
             _ => continue,
         };
         let nty = fx.ty(&ty);
         let arg = fx.f.arguments.len() as u32;
-        fx.f.arguments.push(naga::FunctionArgument { name: Some(b.name().into()), ty: nty, binding: Some(naga::Binding::BuiltIn(builtin)) });
+        fx.f.arguments.push(naga::FunctionArgument {
+            name: Some(b.name().into()),
+            ty: nty,
+            binding: Some(naga::Binding::BuiltIn(builtin)),
+        });
         let mut value = fx.add(Expression::FunctionArgument(arg), sp);
         match b {
-            BuiltinVar::VertexId | BuiltinVar::InstanceId => value = fx.cast(value, naga::ScalarKind::Sint, sp),
+            BuiltinVar::VertexId | BuiltinVar::InstanceId => {
+                value = fx.cast(value, naga::ScalarKind::Sint, sp)
+            }
             BuiltinVar::FragCoord => {
                 frag_coord_arg = Some(value);
-                if let (true, Some((block, member))) = (fx.cx.options.flip_frag_coord_y, fx.cx.fb_height) {
+                if let (true, Some((block, member))) =
+                    (fx.cx.options.flip_frag_coord_y, fx.cx.fb_height)
+                {
                     let bp = fx.add(Expression::GlobalVariable(block), sp);
                     let hp = fx.access_index(bp, member, sp);
                     let h = fx.add(Expression::Load { pointer: hp }, sp);
@@ -1463,7 +2136,13 @@ pub(crate) fn entry_point(cx: &mut ModuleCx, main: Handle<naga::Function>, plan:
             None => {
                 let nty = fx.ty(&Type::Vector(ScalarKind::Float, 4));
                 let arg = fx.f.arguments.len() as u32;
-                fx.f.arguments.push(naga::FunctionArgument { name: Some("gl_FragCoord".into()), ty: nty, binding: Some(naga::Binding::BuiltIn(naga::BuiltIn::Position { invariant: false })) });
+                fx.f.arguments.push(naga::FunctionArgument {
+                    name: Some("gl_FragCoord".into()),
+                    ty: nty,
+                    binding: Some(naga::Binding::BuiltIn(naga::BuiltIn::Position {
+                        invariant: false,
+                    })),
+                });
                 fx.add(Expression::FunctionArgument(arg), sp)
             }
         };
@@ -1471,7 +2150,14 @@ pub(crate) fn entry_point(cx: &mut ModuleCx, main: Handle<naga::Function>, plan:
         store_private(&mut fx, var, z);
     }
     // Call the shader's main.
-    fx.push(Statement::Call { function: main, arguments: Vec::new(), result: None }, sp);
+    fx.push(
+        Statement::Call {
+            function: main,
+            arguments: Vec::new(),
+            result: None,
+        },
+        sp,
+    );
     // Outputs.
     let mut members = Vec::new();
     let mut values = Vec::new();
@@ -1491,20 +2177,36 @@ pub(crate) fn entry_point(cx: &mut ModuleCx, main: Handle<naga::Function>, plan:
         }
         let invariant = hir.invariant_all;
         let vec4 = fx.ty(&Type::Vector(ScalarKind::Float, 4));
-        members.push(naga::StructMember { name: Some("gl_Position".into()), ty: vec4, binding: Some(naga::Binding::BuiltIn(naga::BuiltIn::Position { invariant })), offset: 0 });
+        members.push(naga::StructMember {
+            name: Some("gl_Position".into()),
+            ty: vec4,
+            binding: Some(naga::Binding::BuiltIn(naga::BuiltIn::Position {
+                invariant,
+            })),
+            offset: 0,
+        });
         values.push(pos);
         if let Some(&var) = fx.cx.builtins.get(&BuiltinVar::PointSize) {
             let p = fx.add(Expression::GlobalVariable(var), sp);
             let v = fx.add(Expression::Load { pointer: p }, sp);
             let f32_ty = fx.ty(&Type::FLOAT);
-            members.push(naga::StructMember { name: Some("gl_PointSize".into()), ty: f32_ty, binding: Some(naga::Binding::BuiltIn(naga::BuiltIn::PointSize)), offset: 0 });
+            members.push(naga::StructMember {
+                name: Some("gl_PointSize".into()),
+                ty: f32_ty,
+                binding: Some(naga::Binding::BuiltIn(naga::BuiltIn::PointSize)),
+                offset: 0,
+            });
             values.push(v);
         }
     }
     for &(gi, loc) in &plan.outputs {
         let g = &hir.globals[gi];
-        let GlobalLower::Private(var) = fx.cx.globals[gi] else { continue };
-        let flat = g.interpolation == Some(crate::ast::Interpolation::Flat) || g.ty.contains_kind(ScalarKind::Int, &hir.structs) || g.ty.contains_kind(ScalarKind::Uint, &hir.structs);
+        let GlobalLower::Private(var) = fx.cx.globals[gi] else {
+            continue;
+        };
+        let flat = g.interpolation == Some(crate::ast::Interpolation::Flat)
+            || g.ty.contains_kind(ScalarKind::Int, &hir.structs)
+            || g.ty.contains_kind(ScalarKind::Uint, &hir.structs);
         let leaves = io_leaves(&g.ty, &hir.structs);
         for (i, (path, leaf_ty)) in leaves.iter().enumerate() {
             let ty = fx.ty(leaf_ty);
@@ -1517,15 +2219,36 @@ pub(crate) fn entry_point(cx: &mut ModuleCx, main: Handle<naga::Function>, plan:
                 if flat || leaf_ty.scalar_kind() != Some(ScalarKind::Float) {
                     (Some(naga::Interpolation::Flat), None)
                 } else {
-                    (Some(naga::Interpolation::Perspective), Some(if g.centroid { naga::Sampling::Centroid } else { naga::Sampling::Center }))
+                    (
+                        Some(naga::Interpolation::Perspective),
+                        Some(if g.centroid {
+                            naga::Sampling::Centroid
+                        } else {
+                            naga::Sampling::Center
+                        }),
+                    )
                 }
             } else {
                 (None, None)
             };
             members.push(naga::StructMember {
-                name: Some(format!("{}{}", g.name, if leaves.len() > 1 { format!("_{i}") } else { String::new() })),
+                name: Some(format!(
+                    "{}{}",
+                    g.name,
+                    if leaves.len() > 1 {
+                        format!("_{i}")
+                    } else {
+                        String::new()
+                    }
+                )),
                 ty,
-                binding: Some(naga::Binding::Location { location: loc + i as u32, interpolation, sampling, blend_src: None, per_primitive: false }),
+                binding: Some(naga::Binding::Location {
+                    location: loc + i as u32,
+                    interpolation,
+                    sampling,
+                    blend_src: None,
+                    per_primitive: false,
+                }),
                 offset: 0,
             });
             values.push(v);
@@ -1536,7 +2259,12 @@ pub(crate) fn entry_point(cx: &mut ModuleCx, main: Handle<naga::Function>, plan:
             let p = fx.add(Expression::GlobalVariable(var), sp);
             let v = fx.add(Expression::Load { pointer: p }, sp);
             let f32_ty = fx.ty(&Type::FLOAT);
-            members.push(naga::StructMember { name: Some("gl_FragDepth".into()), ty: f32_ty, binding: Some(naga::Binding::BuiltIn(naga::BuiltIn::FragDepth)), offset: 0 });
+            members.push(naga::StructMember {
+                name: Some("gl_FragDepth".into()),
+                ty: f32_ty,
+                binding: Some(naga::Binding::BuiltIn(naga::BuiltIn::FragDepth)),
+                offset: 0,
+            });
             values.push(v);
         }
     }
@@ -1552,12 +2280,31 @@ pub(crate) fn entry_point(cx: &mut ModuleCx, main: Handle<naga::Function>, plan:
         }
         let span = off.div_ceil(16) * 16;
         let out_ty = fx.cx.module.types.insert(
-            naga::Type { name: Some(format!("_essl_{}Output", if stage == Stage::Vertex { "Vertex" } else { "Fragment" })), inner: naga::TypeInner::Struct { members, span } },
+            naga::Type {
+                name: Some(format!(
+                    "_essl_{}Output",
+                    if stage == Stage::Vertex {
+                        "Vertex"
+                    } else {
+                        "Fragment"
+                    }
+                )),
+                inner: naga::TypeInner::Struct { members, span },
+            },
             NSpan::UNDEFINED,
         );
-        let r = fx.add(Expression::Compose { ty: out_ty, components: values }, sp);
+        let r = fx.add(
+            Expression::Compose {
+                ty: out_ty,
+                components: values,
+            },
+            sp,
+        );
         fx.push(Statement::Return { value: Some(r) }, sp);
-        fx.f.result = Some(naga::FunctionResult { ty: out_ty, binding: None });
+        fx.f.result = Some(naga::FunctionResult {
+            ty: out_ty,
+            binding: None,
+        });
     }
     fx.flush();
     let body = fx.blocks.pop().expect("body");

@@ -66,7 +66,10 @@ pub fn has_data(ty: &Type, structs: &[StructDef]) -> bool {
     match ty {
         Type::Sampler(_) | Type::Void => false,
         Type::Array(el, _) => has_data(el, structs),
-        Type::Struct(id) => structs[id.0 as usize].members.iter().any(|m| has_data(&m.ty, structs)),
+        Type::Struct(id) => structs[id.0 as usize]
+            .members
+            .iter()
+            .any(|m| has_data(&m.ty, structs)),
         _ => true,
     }
 }
@@ -119,20 +122,36 @@ pub struct Types<'a> {
 impl<'a> Types<'a> {
     /// A builder for a module's struct table.
     pub fn new(structs: &'a [StructDef]) -> Types<'a> {
-        Types { structs, logical_structs: vec![None; structs.len()] }
+        Types {
+            structs,
+            logical_structs: vec![None; structs.len()],
+        }
     }
 
     /// The naga type of a GLSL value (function and private variables, expressions).
     pub fn logical(&mut self, m: &mut naga::Module, ty: &Type) -> Handle<naga::Type> {
         let inner = match ty {
             Type::Scalar(k) => TypeInner::Scalar(scalar(*k)),
-            Type::Vector(k, n) => TypeInner::Vector { size: vsize(*n), scalar: scalar(*k) },
-            Type::Matrix { cols, rows } => TypeInner::Matrix { columns: vsize(*cols), rows: vsize(*rows), scalar: NScalar::F32 },
+            Type::Vector(k, n) => TypeInner::Vector {
+                size: vsize(*n),
+                scalar: scalar(*k),
+            },
+            Type::Matrix { cols, rows } => TypeInner::Matrix {
+                columns: vsize(*cols),
+                rows: vsize(*rows),
+                scalar: NScalar::F32,
+            },
             Type::Array(el, n) => {
                 let base = self.logical(m, el);
                 let stride = m.types[base].inner.size(m.to_ctx()).max(1);
                 let align = naga_align(m, base);
-                TypeInner::Array { base, size: naga::ArraySize::Constant(std::num::NonZeroU32::new((*n).max(1)).expect("non-zero")), stride: round_up(stride, align) }
+                TypeInner::Array {
+                    base,
+                    size: naga::ArraySize::Constant(
+                        std::num::NonZeroU32::new((*n).max(1)).expect("non-zero"),
+                    ),
+                    stride: round_up(stride, align),
+                }
             }
             Type::Struct(id) => {
                 if let Some(h) = self.logical_structs[id.0 as usize] {
@@ -146,9 +165,20 @@ impl<'a> Types<'a> {
                     if matches!(mem.ty, Type::Sampler(_)) || !has_data(&mem.ty, self.structs) {
                         // Samplers in structs live in their own bindings; keep a placeholder
                         // so member indices stay the same.
-                        let h = m.types.insert(naga::Type { name: None, inner: TypeInner::Scalar(NScalar::U32) }, Default::default());
+                        let h = m.types.insert(
+                            naga::Type {
+                                name: None,
+                                inner: TypeInner::Scalar(NScalar::U32),
+                            },
+                            Default::default(),
+                        );
                         offset = round_up(offset, 4);
-                        members.push(StructMember { name: Some(mem.name.clone()), ty: h, binding: None, offset });
+                        members.push(StructMember {
+                            name: Some(mem.name.clone()),
+                            ty: h,
+                            binding: None,
+                            offset,
+                        });
                         offset += 4;
                         max_align = max_align.max(4);
                         continue;
@@ -157,13 +187,21 @@ impl<'a> Types<'a> {
                     let a = naga_align(m, h);
                     let s = m.types[h].inner.size(m.to_ctx());
                     offset = round_up(offset, a);
-                    members.push(StructMember { name: Some(mem.name.clone()), ty: h, binding: None, offset });
+                    members.push(StructMember {
+                        name: Some(mem.name.clone()),
+                        ty: h,
+                        binding: None,
+                        offset,
+                    });
                     offset += s;
                     max_align = max_align.max(a);
                 }
                 let span = round_up(offset.max(1), max_align);
                 let h = m.types.insert(
-                    naga::Type { name: def.name.clone(), inner: TypeInner::Struct { members, span } },
+                    naga::Type {
+                        name: def.name.clone(),
+                        inner: TypeInner::Struct { members, span },
+                    },
                     Default::default(),
                 );
                 self.logical_structs[id.0 as usize] = Some(h);
@@ -171,7 +209,8 @@ impl<'a> Types<'a> {
             }
             Type::Sampler(_) | Type::Void => TypeInner::Scalar(NScalar::U32),
         };
-        m.types.insert(naga::Type { name: None, inner }, Default::default())
+        m.types
+            .insert(naga::Type { name: None, inner }, Default::default())
     }
 
     /// The naga type a uniform of this GLSL type is stored as (std140), and its repr.
@@ -179,19 +218,49 @@ impl<'a> Types<'a> {
         match ty {
             Type::Scalar(ScalarKind::Bool) => (self.scalar_ty(m, NScalar::U32), Repr::Bool(None)),
             Type::Vector(ScalarKind::Bool, n) => {
-                let h = m.types.insert(naga::Type { name: None, inner: TypeInner::Vector { size: vsize(*n), scalar: NScalar::U32 } }, Default::default());
-                (h, Repr::Bool(Some(vsize(*n))))
-            }
-            Type::Matrix { cols, rows: 2 } => {
-                let col = m.types.insert(naga::Type { name: None, inner: TypeInner::Vector { size: VectorSize::Bi, scalar: NScalar::F32 } }, Default::default());
                 let h = m.types.insert(
                     naga::Type {
                         name: None,
-                        inner: TypeInner::Array { base: col, size: naga::ArraySize::Constant(std::num::NonZeroU32::new(*cols as u32).expect("cols")), stride: 16 },
+                        inner: TypeInner::Vector {
+                            size: vsize(*n),
+                            scalar: NScalar::U32,
+                        },
                     },
                     Default::default(),
                 );
-                (h, Repr::Columns { cols: *cols, rows: 2 })
+                (h, Repr::Bool(Some(vsize(*n))))
+            }
+            Type::Matrix { cols, rows: 2 } => {
+                let col = m.types.insert(
+                    naga::Type {
+                        name: None,
+                        inner: TypeInner::Vector {
+                            size: VectorSize::Bi,
+                            scalar: NScalar::F32,
+                        },
+                    },
+                    Default::default(),
+                );
+                let h = m.types.insert(
+                    naga::Type {
+                        name: None,
+                        inner: TypeInner::Array {
+                            base: col,
+                            size: naga::ArraySize::Constant(
+                                std::num::NonZeroU32::new(*cols as u32).expect("cols"),
+                            ),
+                            stride: 16,
+                        },
+                    },
+                    Default::default(),
+                );
+                (
+                    h,
+                    Repr::Columns {
+                        cols: *cols,
+                        rows: 2,
+                    },
+                )
             }
             Type::Array(el, n) => {
                 let (base, repr) = self.storage(m, el);
@@ -199,11 +268,24 @@ impl<'a> Types<'a> {
                 let h = m.types.insert(
                     naga::Type {
                         name: None,
-                        inner: TypeInner::Array { base, size: naga::ArraySize::Constant(std::num::NonZeroU32::new((*n).max(1)).expect("n")), stride: round_up(size, 16) },
+                        inner: TypeInner::Array {
+                            base,
+                            size: naga::ArraySize::Constant(
+                                std::num::NonZeroU32::new((*n).max(1)).expect("n"),
+                            ),
+                            stride: round_up(size, 16),
+                        },
                     },
                     Default::default(),
                 );
-                (h, if repr.is_same() { Repr::Same } else { Repr::Array(Box::new(repr)) })
+                (
+                    h,
+                    if repr.is_same() {
+                        Repr::Same
+                    } else {
+                        Repr::Array(Box::new(repr))
+                    },
+                )
             }
             Type::Struct(id) => {
                 let def = &self.structs[id.0 as usize];
@@ -222,14 +304,22 @@ impl<'a> Types<'a> {
                     offset = round_up(offset, a);
                     reprs.push(Some((members.len() as u32, r.clone())));
                     same &= r.is_same();
-                    members.push(StructMember { name: Some(mem.name.clone()), ty: h, binding: None, offset });
+                    members.push(StructMember {
+                        name: Some(mem.name.clone()),
+                        ty: h,
+                        binding: None,
+                        offset,
+                    });
                     offset += s;
                 }
                 let (size, _) = std140(ty, self.structs);
                 let h = m.types.insert(
                     naga::Type {
                         name: def.name.as_ref().map(|n| format!("{n}_std140")),
-                        inner: TypeInner::Struct { members, span: size },
+                        inner: TypeInner::Struct {
+                            members,
+                            span: size,
+                        },
                     },
                     Default::default(),
                 );
@@ -243,7 +333,13 @@ impl<'a> Types<'a> {
     }
 
     fn scalar_ty(&mut self, m: &mut naga::Module, s: NScalar) -> Handle<naga::Type> {
-        m.types.insert(naga::Type { name: None, inner: TypeInner::Scalar(s) }, Default::default())
+        m.types.insert(
+            naga::Type {
+                name: None,
+                inner: TypeInner::Scalar(s),
+            },
+            Default::default(),
+        )
     }
 }
 
@@ -266,7 +362,11 @@ pub fn naga_align(m: &naga::Module, h: Handle<naga::Type>) -> u32 {
             }
         }
         TypeInner::Array { base, .. } => naga_align(m, *base),
-        TypeInner::Struct { members, .. } => members.iter().map(|mm| naga_align(m, mm.ty)).max().unwrap_or(1),
+        TypeInner::Struct { members, .. } => members
+            .iter()
+            .map(|mm| naga_align(m, mm.ty))
+            .max()
+            .unwrap_or(1),
         _ => 4,
     }
 }
@@ -279,7 +379,10 @@ mod tests {
     fn std140_sizes() {
         let v3 = Type::Vector(ScalarKind::Float, 3);
         assert_eq!(std140(&v3, &[]), (12, 16));
-        assert_eq!(std140(&Type::Array(Box::new(Type::FLOAT), 4), &[]), (64, 16));
+        assert_eq!(
+            std140(&Type::Array(Box::new(Type::FLOAT), 4), &[]),
+            (64, 16)
+        );
         assert_eq!(std140(&Type::Matrix { cols: 3, rows: 3 }, &[]), (48, 16));
         assert_eq!(std140(&Type::Matrix { cols: 2, rows: 2 }, &[]), (32, 16));
     }

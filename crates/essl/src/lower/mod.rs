@@ -60,7 +60,10 @@ impl LowerError {
 }
 
 pub(crate) fn unsupported(message: impl Into<String>, span: Span) -> LowerError {
-    LowerError::Unsupported { message: message.into(), span }
+    LowerError::Unsupported {
+        message: message.into(),
+        span,
+    }
 }
 
 /// A member of the program's default uniform block.
@@ -102,10 +105,21 @@ pub(crate) enum GlobalLower {
     /// A private variable (plain globals, inputs, outputs).
     Private(Handle<naga::GlobalVariable>),
     /// A member of the default uniform block.
-    Uniform { block: Handle<naga::GlobalVariable>, member: u32, repr: Repr },
+    Uniform {
+        block: Handle<naga::GlobalVariable>,
+        member: u32,
+        repr: Repr,
+    },
     /// A member of a uniform block without instance name.
-    BlockMember { block: Handle<naga::GlobalVariable>, member: u32, repr: Repr },
+    BlockMember {
+        block: Handle<naga::GlobalVariable>,
+        member: u32,
+        repr: Repr,
+    },
 }
+
+/// The texture and sampler globals of one sampler slot.
+pub(crate) type TextureAndSampler = (Handle<naga::GlobalVariable>, Handle<naga::GlobalVariable>);
 
 /// Module-level lowering state shared by function lowering.
 pub(crate) struct ModuleCx<'a> {
@@ -118,7 +132,7 @@ pub(crate) struct ModuleCx<'a> {
     /// Uniform blocks with instance names: (global, per-member reprs).
     pub blocks: Vec<Option<(Handle<naga::GlobalVariable>, Vec<Repr>)>>,
     /// Sampler slots: (global, path) → (texture, sampler).
-    pub samplers: HashMap<(GlobalId, Vec<PathStep>), (Handle<naga::GlobalVariable>, Handle<naga::GlobalVariable>)>,
+    pub samplers: HashMap<(GlobalId, Vec<PathStep>), TextureAndSampler>,
     pub stage: Stage,
     pub options: LowerOptions,
     /// The default uniform block global and the framebuffer-height member, for gl_FragCoord.
@@ -130,9 +144,21 @@ fn nspan(s: Span) -> NSpan {
 }
 
 impl ModuleCx<'_> {
-    pub(crate) fn private(&mut self, name: &str, ty: Handle<naga::Type>, init: Option<Handle<naga::Expression>>) -> Handle<naga::GlobalVariable> {
+    pub(crate) fn private(
+        &mut self,
+        name: &str,
+        ty: Handle<naga::Type>,
+        init: Option<Handle<naga::Expression>>,
+    ) -> Handle<naga::GlobalVariable> {
         self.module.global_variables.append(
-            naga::GlobalVariable { name: Some(name.to_string()), space: naga::AddressSpace::Private, binding: None, ty, init, memory_decorations: Default::default() },
+            naga::GlobalVariable {
+                name: Some(name.to_string()),
+                space: naga::AddressSpace::Private,
+                binding: None,
+                ty,
+                init,
+                memory_decorations: Default::default(),
+            },
             NSpan::UNDEFINED,
         )
     }
@@ -140,11 +166,19 @@ impl ModuleCx<'_> {
 
 /// Lowers one compiled shader on its own (validation and reflection of a single stage):
 /// inputs and outputs get locations in declaration order, uniforms a block of their own.
-pub fn lower_shader(shader: &Shader, options: &LowerOptions) -> Result<(naga::Module, naga::valid::ModuleInfo), LowerError> {
+pub fn lower_shader(
+    shader: &Shader,
+    options: &LowerOptions,
+) -> Result<(naga::Module, naga::valid::ModuleInfo), LowerError> {
     let m = &shader.module;
-    let mut plan = StagePlan::default();
-    plan.inputs = assign_locations(m, GlobalKind::Input).into_iter().filter(|(g, _)| m.globals[*g].used).collect();
-    plan.outputs = assign_locations(m, GlobalKind::Output);
+    let mut plan = StagePlan {
+        inputs: assign_locations(m, GlobalKind::Input)
+            .into_iter()
+            .filter(|(g, _)| m.globals[*g].used)
+            .collect(),
+        outputs: assign_locations(m, GlobalKind::Output),
+        ..StagePlan::default()
+    };
     let mut pplan = ProgramPlan::default();
     let mut offset = 0u32;
     let mut slot = 0u32;
@@ -156,7 +190,10 @@ pub fn lower_shader(shader: &Shader, options: &LowerOptions) -> Result<(naga::Mo
             let (size, align) = layout::std140(&g.ty, &m.structs);
             offset = offset.div_ceil(align) * align;
             plan.uniforms.push((gi, pplan.block_members.len()));
-            pplan.block_members.push(BlockMember { name: g.name.to_string(), offset });
+            pplan.block_members.push(BlockMember {
+                name: g.name.to_string(),
+                offset,
+            });
             offset += size;
         }
         for path in sampler_paths(&g.ty, &m.structs) {
@@ -164,9 +201,14 @@ pub fn lower_shader(shader: &Shader, options: &LowerOptions) -> Result<(naga::Mo
             slot += 1;
         }
     }
-    if options.flip_frag_coord_y && shader.stage == Stage::Fragment && m.used_builtins.contains(&BuiltinVar::FragCoord) {
+    if options.flip_frag_coord_y
+        && shader.stage == Stage::Fragment
+        && m.used_builtins.contains(&BuiltinVar::FragCoord)
+    {
         offset = offset.div_ceil(4) * 4;
-        pplan.internal.push((InternalUniform::FramebufferHeight, offset));
+        pplan
+            .internal
+            .push((InternalUniform::FramebufferHeight, offset));
         offset += 4;
     }
     pplan.block_size = offset.div_ceil(16) * 16;
@@ -193,7 +235,9 @@ fn assign_locations(m: &hir::Module, kind: GlobalKind) -> Vec<(GlobalId, u32)> {
         .collect();
     let mut taken = vec![false; 256];
     let mut out = Vec::new();
-    let free = |taken: &[bool], s: u32, n: u32| (s..s + n).all(|l| !taken.get(l as usize).copied().unwrap_or(true));
+    let free = |taken: &[bool], s: u32, n: u32| {
+        (s..s + n).all(|l| !taken.get(l as usize).copied().unwrap_or(true))
+    };
     for &(g, n, loc) in &vars {
         if let Some(l) = loc {
             if free(&taken, l, n) {
@@ -217,16 +261,19 @@ fn assign_locations(m: &hir::Module, kind: GlobalKind) -> Vec<(GlobalId, u32)> {
 /// Paths to every sampler inside a value of type `ty` (an array of samplers: each element).
 pub fn sampler_paths(ty: &Type, structs: &[StructDef]) -> Vec<Vec<PathStep>> {
     let mut out = Vec::new();
-    fn walk(ty: &Type, structs: &[StructDef], path: &mut Vec<PathStep>, out: &mut Vec<Vec<PathStep>>) {
+    fn walk(
+        ty: &Type,
+        structs: &[StructDef],
+        path: &mut Vec<PathStep>,
+        out: &mut Vec<Vec<PathStep>>,
+    ) {
         match ty {
             Type::Sampler(_) => out.push(path.clone()),
-            Type::Array(el, n) => {
-                if el.contains_sampler(structs) {
-                    for i in 0..*n {
-                        path.push(PathStep::Index(i));
-                        walk(el, structs, path, out);
-                        path.pop();
-                    }
+            Type::Array(el, n) if el.contains_sampler(structs) => {
+                for i in 0..*n {
+                    path.push(PathStep::Index(i));
+                    walk(el, structs, path, out);
+                    path.pop();
                 }
             }
             Type::Struct(id) => {
@@ -243,12 +290,18 @@ pub fn sampler_paths(ty: &Type, structs: &[StructDef]) -> Vec<Vec<PathStep>> {
     out
 }
 
-fn sampler_type_at(ty: &Type, path: &[PathStep], structs: &[StructDef]) -> Option<crate::types::SamplerType> {
+fn sampler_type_at(
+    ty: &Type,
+    path: &[PathStep],
+    structs: &[StructDef],
+) -> Option<crate::types::SamplerType> {
     let mut t = ty.clone();
     for step in path {
         t = match (step, &t) {
             (PathStep::Index(_), Type::Array(el, _)) => (**el).clone(),
-            (PathStep::Member(i), Type::Struct(id)) => structs[id.0 as usize].members[*i as usize].ty.clone(),
+            (PathStep::Member(i), Type::Struct(id)) => {
+                structs[id.0 as usize].members[*i as usize].ty.clone()
+            }
             _ => return None,
         };
     }
@@ -260,9 +313,16 @@ fn sampler_type_at(ty: &Type, path: &[PathStep], structs: &[StructDef]) -> Optio
 
 /// Validates a lowered module the way wgpu will.
 fn validate(module: &naga::Module, stage: Stage) -> Result<naga::valid::ModuleInfo, LowerError> {
-    let mut v = naga::valid::Validator::new(naga::valid::ValidationFlags::all(), naga::valid::Capabilities::default());
+    let mut v = naga::valid::Validator::new(
+        naga::valid::ValidationFlags::all(),
+        naga::valid::Capabilities::default(),
+    );
     v.validate(module).map_err(|e| {
-        let span = e.spans().next().map(|(s, _)| Span::from(*s)).unwrap_or_default();
+        let span = e
+            .spans()
+            .next()
+            .map(|(s, _)| Span::from(*s))
+            .unwrap_or_default();
         let mut message = e.as_inner().to_string();
         let mut source: Option<&dyn std::error::Error> = std::error::Error::source(e.as_inner());
         while let Some(s) = source {
@@ -270,17 +330,31 @@ fn validate(module: &naga::Module, stage: Stage) -> Result<naga::valid::ModuleIn
             message.push_str(&s.to_string());
             source = s.source();
         }
-        LowerError::Invalid { stage: stage.as_str(), message, span }
+        LowerError::Invalid {
+            stage: stage.as_str(),
+            message,
+            span,
+        }
     })
 }
 
 /// Lowers a linked program for a GPU API: both stages share one default uniform block and one
 /// set of sampler slots; varyings and attributes get the linker's locations.
-pub fn lower_program(vs: &Shader, fs: &Shader, program: &link::Program, options: &LowerOptions) -> Result<ProgramLayout, LowerError> {
+pub fn lower_program(
+    vs: &Shader,
+    fs: &Shader,
+    program: &link::Program,
+    options: &LowerOptions,
+) -> Result<ProgramLayout, LowerError> {
     crate::shader::with_stack(|| lower_program_here(vs, fs, program, options))
 }
 
-fn lower_program_here(vs: &Shader, fs: &Shader, program: &link::Program, options: &LowerOptions) -> Result<ProgramLayout, LowerError> {
+fn lower_program_here(
+    vs: &Shader,
+    fs: &Shader,
+    program: &link::Program,
+    options: &LowerOptions,
+) -> Result<ProgramLayout, LowerError> {
     let (vm, fm) = (&vs.module, &fs.module);
     let mut pplan = ProgramPlan::default();
     let mut vplan = StagePlan::default();
@@ -292,8 +366,12 @@ fn lower_program_here(vs: &Shader, fs: &Shader, program: &link::Program, options
     let mut uniforms_out: Vec<program::ActiveUniform> = Vec::new();
     let mut offsets: Vec<(usize, u32)> = Vec::new(); // (member index, offset) by member
     for u in &program.uniforms {
-        for (stage_src, module, plan) in [(&u.vertex, vm, &mut vplan), (&u.fragment, fm, &mut fplan)] {
-            let Some(crate::reflect::UniformSource::Default { global, .. }) = stage_src else { continue };
+        for (stage_src, module, plan) in
+            [(&u.vertex, vm, &mut vplan), (&u.fragment, fm, &mut fplan)]
+        {
+            let Some(crate::reflect::UniformSource::Default { global, .. }) = stage_src else {
+                continue;
+            };
             let g = &module.globals[*global];
             if !layout::has_data(&g.ty, &module.structs) {
                 continue;
@@ -305,7 +383,10 @@ fn lower_program_here(vs: &Shader, fs: &Shader, program: &link::Program, options
                     let (size, align) = layout::std140(&g.ty, &module.structs);
                     offset = offset.div_ceil(align) * align;
                     let i = pplan.block_members.len();
-                    pplan.block_members.push(BlockMember { name: name.clone(), offset });
+                    pplan.block_members.push(BlockMember {
+                        name: name.clone(),
+                        offset,
+                    });
                     offsets.push((i, offset));
                     offset += size;
                     member_of.insert(name, i);
@@ -320,13 +401,19 @@ fn lower_program_here(vs: &Shader, fs: &Shader, program: &link::Program, options
     let frag_coord = fm.used_builtins.contains(&BuiltinVar::FragCoord);
     if options.flip_frag_coord_y && frag_coord {
         offset = offset.div_ceil(4) * 4;
-        pplan.internal.push((InternalUniform::FramebufferHeight, offset));
+        pplan
+            .internal
+            .push((InternalUniform::FramebufferHeight, offset));
         offset += 4;
     }
     pplan.block_size = offset.div_ceil(16) * 16;
     // Active uniforms with their storage.
     for u in &program.uniforms {
-        let src = u.vertex.as_ref().map(|s| (s, vm)).or(u.fragment.as_ref().map(|s| (s, fm)));
+        let src = u
+            .vertex
+            .as_ref()
+            .map(|s| (s, vm))
+            .or(u.fragment.as_ref().map(|s| (s, fm)));
         let Some((crate::reflect::UniformSource::Default { global, path }, module)) = src else {
             if let Some((crate::reflect::UniformSource::Block { .. }, _)) = src {
                 uniforms_out.push(program::ActiveUniform {
@@ -343,7 +430,9 @@ fn lower_program_here(vs: &Shader, fs: &Shader, program: &link::Program, options
             let first = slots.len() as u32;
             for i in 0..u.size {
                 let mut p = path.clone();
-                if matches!(u.ty.to_type(), Type::Sampler(_)) && (u.size > 1 || leaf_is_array(&g.ty, path, &module.structs)) {
+                if matches!(u.ty.to_type(), Type::Sampler(_))
+                    && (u.size > 1 || leaf_is_array(&g.ty, path, &module.structs))
+                {
                     p.push(PathStep::Index(i));
                 }
                 let st = sampler_type_at(&g.ty, &p, &module.structs).expect("sampler path");
@@ -353,14 +442,23 @@ fn lower_program_here(vs: &Shader, fs: &Shader, program: &link::Program, options
                 } else {
                     u.name.clone()
                 };
-                slots.push(program::SamplerSlot { name, ty: u.ty, comparison: st.shadow });
+                slots.push(program::SamplerSlot {
+                    name,
+                    ty: u.ty,
+                    comparison: st.shadow,
+                });
                 for (stage_src, plan) in [(&u.vertex, &mut vplan), (&u.fragment, &mut fplan)] {
                     if let Some(crate::reflect::UniformSource::Default { global, .. }) = stage_src {
                         plan.samplers.push((*global, p.clone(), slot));
                     }
                 }
             }
-            uniforms_out.push(program::ActiveUniform { name: u.name.clone(), ty: u.ty, size: u.size, storage: program::UniformStorage::Sampler { first_slot: first } });
+            uniforms_out.push(program::ActiveUniform {
+                name: u.name.clone(),
+                ty: u.ty,
+                size: u.size,
+                storage: program::UniformStorage::Sampler { first_slot: first },
+            });
             continue;
         }
         let member = member_of[&*g.name];
@@ -370,7 +468,11 @@ fn lower_program_here(vs: &Shader, fs: &Shader, program: &link::Program, options
             name: u.name.clone(),
             ty: u.ty,
             size: u.size,
-            storage: program::UniformStorage::Buffer { offset: base + leaf_offset, array_stride, matrix_stride },
+            storage: program::UniformStorage::Buffer {
+                offset: base + leaf_offset,
+                array_stride,
+                matrix_stride,
+            },
         });
     }
     // Samplers of a used uniform that a stage uses but whose leaf is inactive cannot happen:
@@ -401,7 +503,10 @@ fn lower_program_here(vs: &Shader, fs: &Shader, program: &link::Program, options
                         let (s, a) = layout::std140(ty, &module.structs);
                         off.div_ceil(a) * a + s
                     });
-                    blocks_out.push(program::UniformBlockBinding { name: b.name.to_string(), size: size.div_ceil(16) * 16 });
+                    blocks_out.push(program::UniformBlockBinding {
+                        name: b.name.to_string(),
+                        size: size.div_ceil(16) * 16,
+                    });
                     block_names.len() - 1
                 }
             };
@@ -420,12 +525,20 @@ fn lower_program_here(vs: &Shader, fs: &Shader, program: &link::Program, options
         vertex_info,
         fragment,
         fragment_info,
-        uniform_block: (pplan.block_size > 0).then(|| program::UniformBlock { size: pplan.block_size, internal: pplan.internal.clone() }),
+        uniform_block: (pplan.block_size > 0).then(|| program::UniformBlock {
+            size: pplan.block_size,
+            internal: pplan.internal.clone(),
+        }),
         uniforms: uniforms_out,
         attributes: program
             .attributes
             .iter()
-            .map(|a| program::ActiveAttribute { name: a.name.clone(), ty: a.ty, size: a.size, location: a.location.max(0) as u32 })
+            .map(|a| program::ActiveAttribute {
+                name: a.name.clone(),
+                ty: a.ty,
+                size: a.size,
+                location: a.location.max(0) as u32,
+            })
             .collect(),
         samplers: slots,
         blocks: blocks_out,
@@ -443,7 +556,9 @@ fn leaf_is_array(ty: &Type, path: &[PathStep], structs: &[StructDef]) -> bool {
     for step in path {
         t = match (step, &t) {
             (PathStep::Index(_), Type::Array(el, _)) => (**el).clone(),
-            (PathStep::Member(i), Type::Struct(id)) => structs[id.0 as usize].members[*i as usize].ty.clone(),
+            (PathStep::Member(i), Type::Struct(id)) => {
+                structs[id.0 as usize].members[*i as usize].ty.clone()
+            }
             _ => return false,
         };
     }
@@ -482,15 +597,27 @@ fn leaf_layout(ty: &Type, path: &[PathStep], structs: &[StructDef]) -> (u32, u32
         }
     }
     let (array_stride, el) = match &t {
-        Type::Array(el, _) => (layout::std140(el, structs).0.div_ceil(16) * 16, (**el).clone()),
+        Type::Array(el, _) => (
+            layout::std140(el, structs).0.div_ceil(16) * 16,
+            (**el).clone(),
+        ),
         other => (0, other.clone()),
     };
-    let matrix_stride = if matches!(el, Type::Matrix { .. }) { 16 } else { 0 };
+    let matrix_stride = if matches!(el, Type::Matrix { .. }) {
+        16
+    } else {
+        0
+    };
     (offset, array_stride, matrix_stride)
 }
 
 /// Builds the naga module of one stage.
-fn lower_stage(m: &hir::Module, plan: &StagePlan, pplan: &ProgramPlan, options: &LowerOptions) -> Result<naga::Module, LowerError> {
+fn lower_stage(
+    m: &hir::Module,
+    plan: &StagePlan,
+    pplan: &ProgramPlan,
+    options: &LowerOptions,
+) -> Result<naga::Module, LowerError> {
     let mut cx = ModuleCx {
         hir: m,
         module: naga::Module::default(),
@@ -513,27 +640,52 @@ fn lower_stage(m: &hir::Module, plan: &StagePlan, pplan: &ProgramPlan, options: 
         let g = &m.globals[*gi];
         let (ty, repr) = cx.types.storage(&mut cx.module, &g.ty);
         member_index.insert(*gi, (members.len() as u32, repr));
-        members.push(naga::StructMember { name: Some(pplan.block_members[*idx].name.clone()), ty, binding: None, offset: pplan.block_members[*idx].offset });
+        members.push(naga::StructMember {
+            name: Some(pplan.block_members[*idx].name.clone()),
+            ty,
+            binding: None,
+            offset: pplan.block_members[*idx].offset,
+        });
     }
-    let wants_height = m.stage == Stage::Fragment && options.flip_frag_coord_y && m.used_builtins.contains(&BuiltinVar::FragCoord);
+    let wants_height = m.stage == Stage::Fragment
+        && options.flip_frag_coord_y
+        && m.used_builtins.contains(&BuiltinVar::FragCoord);
     let mut height_member = None;
     if wants_height {
-        if let Some((_, off)) = pplan.internal.iter().find(|(k, _)| *k == InternalUniform::FramebufferHeight) {
+        if let Some((_, off)) = pplan
+            .internal
+            .iter()
+            .find(|(k, _)| *k == InternalUniform::FramebufferHeight)
+        {
             let f32_ty = cx.types.logical(&mut cx.module, &Type::FLOAT);
             height_member = Some(members.len() as u32);
-            members.push(naga::StructMember { name: Some("_essl_framebuffer_height".into()), ty: f32_ty, binding: None, offset: *off });
+            members.push(naga::StructMember {
+                name: Some("_essl_framebuffer_height".into()),
+                ty: f32_ty,
+                binding: None,
+                offset: *off,
+            });
         }
     }
     if !members.is_empty() {
         let ty = cx.module.types.insert(
-            naga::Type { name: Some("_essl_DefaultUniforms".into()), inner: naga::TypeInner::Struct { members, span: pplan.block_size.max(16) } },
+            naga::Type {
+                name: Some("_essl_DefaultUniforms".into()),
+                inner: naga::TypeInner::Struct {
+                    members,
+                    span: pplan.block_size.max(16),
+                },
+            },
             NSpan::UNDEFINED,
         );
         let block = cx.module.global_variables.append(
             naga::GlobalVariable {
                 name: Some("_essl_uniforms".into()),
                 space: naga::AddressSpace::Uniform,
-                binding: Some(naga::ResourceBinding { group: 0, binding: 0 }),
+                binding: Some(naga::ResourceBinding {
+                    group: 0,
+                    binding: 0,
+                }),
                 ty,
                 init: None,
                 memory_decorations: Default::default(),
@@ -541,7 +693,11 @@ fn lower_stage(m: &hir::Module, plan: &StagePlan, pplan: &ProgramPlan, options: 
             NSpan::UNDEFINED,
         );
         for (gi, (idx, repr)) in member_index {
-            cx.globals[gi] = GlobalLower::Uniform { block, member: idx, repr };
+            cx.globals[gi] = GlobalLower::Uniform {
+                block,
+                member: idx,
+                repr,
+            };
         }
         if let Some(hm) = height_member {
             cx.fb_height = Some((block, hm));
@@ -557,7 +713,12 @@ fn lower_stage(m: &hir::Module, plan: &StagePlan, pplan: &ProgramPlan, options: 
             let (h, r) = cx.types.storage(&mut cx.module, ty);
             let (s, a) = layout::std140(ty, &m.structs);
             off = off.div_ceil(a) * a;
-            members.push(naga::StructMember { name: Some(name.to_string()), ty: h, binding: None, offset: off });
+            members.push(naga::StructMember {
+                name: Some(name.to_string()),
+                ty: h,
+                binding: None,
+                offset: off,
+            });
             reprs.push(r);
             off += s;
         }
@@ -565,7 +726,13 @@ fn lower_stage(m: &hir::Module, plan: &StagePlan, pplan: &ProgramPlan, options: 
         if b.array.is_some() {
             return Err(unsupported("arrays of uniform blocks", b.span));
         }
-        let ty = cx.module.types.insert(naga::Type { name: Some(b.name.to_string()), inner: naga::TypeInner::Struct { members, span } }, NSpan::UNDEFINED);
+        let ty = cx.module.types.insert(
+            naga::Type {
+                name: Some(b.name.to_string()),
+                inner: naga::TypeInner::Struct { members, span },
+            },
+            NSpan::UNDEFINED,
+        );
         let gv = cx.module.global_variables.append(
             naga::GlobalVariable {
                 name: Some(b.name.to_string()),
@@ -583,7 +750,11 @@ fn lower_stage(m: &hir::Module, plan: &StagePlan, pplan: &ProgramPlan, options: 
             for (gi, g) in m.globals.iter().enumerate() {
                 if let GlobalKind::BlockMember(b2, mi) = g.kind {
                     if b2 == bi {
-                        cx.globals[gi] = GlobalLower::BlockMember { block: gv, member: mi as u32, repr: reprs[mi].clone() };
+                        cx.globals[gi] = GlobalLower::BlockMember {
+                            block: gv,
+                            member: mi as u32,
+                            repr: reprs[mi].clone(),
+                        };
                     }
                 }
             }
@@ -592,14 +763,19 @@ fn lower_stage(m: &hir::Module, plan: &StagePlan, pplan: &ProgramPlan, options: 
     // Samplers.
     for (gi, path, slot) in &plan.samplers {
         let g = &m.globals[*gi];
-        let Some(st) = sampler_type_at(&g.ty, path, &m.structs) else { continue };
+        let Some(st) = sampler_type_at(&g.ty, path, &m.structs) else {
+            continue;
+        };
         let (img_ty, smp_ty) = sampler_types(&mut cx.module, st);
         let name = format!("{}{}", g.name, path_suffix(path, &g.ty, &m.structs));
         let tex = cx.module.global_variables.append(
             naga::GlobalVariable {
                 name: Some(name.clone()),
                 space: naga::AddressSpace::Handle,
-                binding: Some(naga::ResourceBinding { group: 1, binding: 2 * slot }),
+                binding: Some(naga::ResourceBinding {
+                    group: 1,
+                    binding: 2 * slot,
+                }),
                 ty: img_ty,
                 init: None,
                 memory_decorations: Default::default(),
@@ -610,7 +786,10 @@ fn lower_stage(m: &hir::Module, plan: &StagePlan, pplan: &ProgramPlan, options: 
             naga::GlobalVariable {
                 name: Some(format!("{name}_sampler")),
                 space: naga::AddressSpace::Handle,
-                binding: Some(naga::ResourceBinding { group: 1, binding: 2 * slot + 1 }),
+                binding: Some(naga::ResourceBinding {
+                    group: 1,
+                    binding: 2 * slot + 1,
+                }),
                 ty: smp_ty,
                 init: None,
                 memory_decorations: Default::default(),
@@ -632,7 +811,9 @@ fn lower_stage(m: &hir::Module, plan: &StagePlan, pplan: &ProgramPlan, options: 
         }
         let ty = cx.types.logical(&mut cx.module, &g.ty);
         let init = match &g.init {
-            Some(hir::Init::Const(c)) if func::all_finite(c) => Some(func::global_constant(&mut cx, c, &g.ty)),
+            Some(hir::Init::Const(c)) if func::all_finite(c) => {
+                Some(func::global_constant(&mut cx, c, &g.ty))
+            }
             _ => None,
         };
         let h = cx.private(&g.name, ty, init);
@@ -653,7 +834,9 @@ fn lower_stage(m: &hir::Module, plan: &StagePlan, pplan: &ProgramPlan, options: 
         cx.builtins.insert(BuiltinVar::Position, h);
     }
     // Functions, callees first.
-    let Some(entry) = m.entry else { return Err(unsupported("a shader without `main`", Span::default())) };
+    let Some(entry) = m.entry else {
+        return Err(unsupported("a shader without `main`", Span::default()));
+    };
     let mut order = Vec::new();
     let mut seen = vec![false; m.functions.len()];
     fn visit(f: usize, m: &hir::Module, seen: &mut [bool], order: &mut Vec<usize>) {
@@ -669,7 +852,10 @@ fn lower_stage(m: &hir::Module, plan: &StagePlan, pplan: &ProgramPlan, options: 
     visit(entry, m, &mut seen, &mut order);
     for f in order {
         let lowered = func::lower_function(&mut cx, f)?;
-        let h = cx.module.functions.append(lowered, nspan(m.functions[f].span));
+        let h = cx
+            .module
+            .functions
+            .append(lowered, nspan(m.functions[f].span));
         cx.functions[f] = Some(h);
     }
     let main = cx.functions[entry].expect("main lowered");
@@ -713,7 +899,10 @@ fn path_suffix(path: &[PathStep], ty: &Type, structs: &[StructDef]) -> String {
 }
 
 /// naga's image and sampler types for a GLSL sampler type.
-pub(crate) fn sampler_types(m: &mut naga::Module, st: crate::types::SamplerType) -> (Handle<naga::Type>, Handle<naga::Type>) {
+pub(crate) fn sampler_types(
+    m: &mut naga::Module,
+    st: crate::types::SamplerType,
+) -> (Handle<naga::Type>, Handle<naga::Type>) {
     use crate::types::SamplerDim;
     let (dim, arrayed) = match st.dim {
         SamplerDim::D2 => (naga::ImageDimension::D2, false),
@@ -733,7 +922,25 @@ pub(crate) fn sampler_types(m: &mut naga::Module, st: crate::types::SamplerType)
             multi: false,
         }
     };
-    let img = m.types.insert(naga::Type { name: None, inner: naga::TypeInner::Image { dim, arrayed, class } }, NSpan::UNDEFINED);
-    let smp = m.types.insert(naga::Type { name: None, inner: naga::TypeInner::Sampler { comparison: st.shadow } }, NSpan::UNDEFINED);
+    let img = m.types.insert(
+        naga::Type {
+            name: None,
+            inner: naga::TypeInner::Image {
+                dim,
+                arrayed,
+                class,
+            },
+        },
+        NSpan::UNDEFINED,
+    );
+    let smp = m.types.insert(
+        naga::Type {
+            name: None,
+            inner: naga::TypeInner::Sampler {
+                comparison: st.shadow,
+            },
+        },
+        NSpan::UNDEFINED,
+    );
     (img, smp)
 }

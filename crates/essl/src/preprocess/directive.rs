@@ -1,6 +1,7 @@
 //! Directives: one line from `#` to the end of the line, read whole, then handled.
 
 use std::cell::Cell;
+use std::rc::Rc;
 use std::sync::Arc;
 
 use crate::diagnostic::{Applicability, Diagnostic, Edit, Fix, Severity};
@@ -113,16 +114,22 @@ impl Pp<'_> {
         while !matches!(self.toks[end].kind, PpKind::Newline | PpKind::Eof) {
             end += 1;
         }
-        let d =
-            Directive { hash, line: self.toks[start..end].to_vec(), eol: self.toks[end].clone() };
+        let d = Directive {
+            hash,
+            line: self.toks[start..end].to_vec(),
+            eol: self.toks[end].clone(),
+        };
         self.pos = end;
         if d.line.is_empty() {
             // The null directive.
             self.past_first = true;
             return;
         }
-        let name: Arc<str> =
-            if d.line[0].kind == PpKind::Ident { d.line[0].text.clone() } else { Arc::from("") };
+        let name: Arc<str> = if d.line[0].kind == PpKind::Ident {
+            d.line[0].text.clone()
+        } else {
+            Arc::from("")
+        };
         let skipping = self.skipping();
         match &*name {
             "if" => self.d_if(&d, "#if"),
@@ -152,8 +159,15 @@ impl Pp<'_> {
             self.file.line_index(d.hash.span.start) == self.file.line_index(d.eol.span.start);
         let fix = Fix {
             message: "turn the extra text into a comment".into(),
-            edits: vec![Edit { span: Span::empty(t.span.start), replacement: "// ".into() }],
-            applicability: if one_line { Applicability::Certain } else { Applicability::Suggested },
+            edits: vec![Edit {
+                span: Span::empty(t.span.start),
+                replacement: "// ".into(),
+            }],
+            applicability: if one_line {
+                Applicability::Certain
+            } else {
+                Applicability::Suggested
+            },
         };
         Diagnostic::error(
             "extra-tokens",
@@ -245,13 +259,18 @@ impl Pp<'_> {
             return false;
         }
         let mut p = ExprParser::new(&toks, what, false);
-        let Some(v) = p.parse(&mut self.diags) else { return false };
+        let Some(v) = p.parse(&mut self.diags) else {
+            return false;
+        };
         if !p.at_end() {
             let t = p.current();
             let last = &toks[toks.len() - 2];
             let mut e = Diagnostic::error(
                 "extra-tokens",
-                format!("unexpected {} after the `{what}` expression", describe(&t.t)),
+                format!(
+                    "unexpected {} after the `{what}` expression",
+                    describe(&t.t)
+                ),
                 t.t.span.to(last.t.span),
             )
             .with_label("the expression ends before this")
@@ -398,7 +417,11 @@ impl Pp<'_> {
     /// Whether a macro of this name may be defined (reports why not; warns about `__`).
     fn check_definable(&mut self, name: &PpToken) -> bool {
         let n = &*name.text;
-        if self.macros.get(n).is_some_and(|m| m.origin == Origin::Predefined) {
+        if self
+            .macros
+            .get(n)
+            .is_some_and(|m| m.origin == Origin::Predefined)
+        {
             self.diags.push(
                 Diagnostic::error(
                     "predefined-macro-redefined",
@@ -550,15 +573,22 @@ impl Pp<'_> {
     }
 
     fn d_define(&mut self, d: &Directive, origin: Origin) {
-        let Some(name) = self.macro_name(d, "#define") else { return };
+        let Some(name) = self.macro_name(d, "#define") else {
+            return;
+        };
         if !self.check_definable(&name) {
             return;
         }
         let args = d.args();
         let mut params = None;
         let mut i = 1;
-        if args.get(1).is_some_and(|t| t.is(Punct::LeftParen) && !t.space_before) {
-            let Some((p, next)) = self.parse_params(d, &name) else { return };
+        if args
+            .get(1)
+            .is_some_and(|t| t.is(Punct::LeftParen) && !t.space_before)
+        {
+            let Some((p, next)) = self.parse_params(d, &name) else {
+                return;
+            };
             params = Some(p);
             i = next;
         }
@@ -571,7 +601,10 @@ impl Pp<'_> {
                     .as_ref()
                     .and_then(|p: &Vec<Arc<str>>| p.iter().position(|p| **p == *t.text))
                 {
-                    body.push(Body::Param { index, space_before });
+                    body.push(Body::Param {
+                        index,
+                        space_before,
+                    });
                     continue;
                 }
             }
@@ -615,7 +648,7 @@ impl Pp<'_> {
 
     fn insert_macro(&mut self, m: Macro) {
         let Some(old) = self.macros.get(&m.name) else {
-            self.macros.insert(m.name.clone(), Arc::new(m));
+            self.macros.insert(m.name.clone(), Rc::new(m));
             return;
         };
         if old.origin == Origin::Options {
@@ -623,7 +656,10 @@ impl Pp<'_> {
                 self.diags.push(
                     Diagnostic::warning(
                         "option-macro-redefined",
-                        format!("`#define {}` replaces the value given in the options", m.name),
+                        format!(
+                            "`#define {}` replaces the value given in the options",
+                            m.name
+                        ),
                         m.span,
                     )
                     .with_label("the shader's definition is used")
@@ -631,7 +667,7 @@ impl Pp<'_> {
                     .with_token(&*m.name),
                 );
             }
-            self.macros.insert(m.name.clone(), Arc::new(m));
+            self.macros.insert(m.name.clone(), Rc::new(m));
             return;
         }
         if old.same_as(&m) {
@@ -667,13 +703,18 @@ impl Pp<'_> {
     }
 
     fn d_undef(&mut self, d: &Directive) {
-        let Some(name) = self.macro_name(d, "#undef") else { return };
+        let Some(name) = self.macro_name(d, "#undef") else {
+            return;
+        };
         if let Some(m) = self.macros.get(&*name.text) {
             if m.origin == Origin::Predefined {
                 self.diags.push(
                     Diagnostic::error(
                         "predefined-macro-undefined",
-                        format!("`{}` is a predefined macro and cannot be undefined", name.text),
+                        format!(
+                            "`{}` is a predefined macro and cannot be undefined",
+                            name.text
+                        ),
                         name.span,
                     )
                     .with_label("predefined")
@@ -728,9 +769,17 @@ impl Pp<'_> {
             from_macro: false,
         };
         let before = self.diags.len();
-        self.d_define(&Directive { hash, line: toks, eol }, Origin::Options);
+        self.d_define(
+            &Directive {
+                hash,
+                line: toks,
+                eol,
+            },
+            Origin::Options,
+        );
         for d in &mut self.diags[before..] {
-            d.notes.push(format!("in the define `{name}` = `{value}` of the options"));
+            d.notes
+                .push(format!("in the define `{name}` = `{value}` of the options"));
         }
     }
 
@@ -741,7 +790,11 @@ impl Pp<'_> {
         self.diags.push(
             Diagnostic::error(
                 "error-directive",
-                if text.is_empty() { "`#error` directive".to_string() } else { text },
+                if text.is_empty() {
+                    "`#error` directive".to_string()
+                } else {
+                    text
+                },
                 d.span(),
             )
             .with_label("`#error` stops the compilation")
@@ -754,7 +807,9 @@ impl Pp<'_> {
         let args = d.args();
         let stdgl = args.first().is_some_and(|t| t.is_ident("STDGL"));
         let rest = if stdgl { &args[1..] } else { args };
-        let Some(name) = rest.first().filter(|t| t.kind == PpKind::Ident) else { return };
+        let Some(name) = rest.first().filter(|t| t.kind == PpKind::Ident) else {
+            return;
+        };
         let value =
             (rest.len() == 4 && rest[1].is(Punct::LeftParen) && rest[3].is(Punct::RightParen))
                 .then(|| &rest[2]);
@@ -838,7 +893,11 @@ impl Pp<'_> {
             other => {
                 let (span, found, token) = match other {
                     Some(t) => (t.span, describe(t), t.text.to_string()),
-                    None => (name.span.end_point(), "end of line".to_string(), "\n".to_string()),
+                    None => (
+                        name.span.end_point(),
+                        "end of line".to_string(),
+                        "\n".to_string(),
+                    ),
                 };
                 self.diags.push(
                     Diagnostic::error(
@@ -867,8 +926,11 @@ impl Pp<'_> {
             );
             return;
         };
-        let behavior =
-            if bt.kind == PpKind::Ident { ExtensionBehavior::from_str(&bt.text) } else { None };
+        let behavior = if bt.kind == PpKind::Ident {
+            ExtensionBehavior::from_str(&bt.text)
+        } else {
+            None
+        };
         let Some(behavior) = behavior else {
             let mut e = Diagnostic::error(
                 "invalid-extension-behavior",
@@ -886,12 +948,19 @@ impl Pp<'_> {
             return;
         };
         if args.len() > 3 {
-            self.extra_tokens(d, 4, &format!("#extension {} : {}", name.text, behavior.as_str()));
+            self.extra_tokens(
+                d,
+                4,
+                &format!("#extension {} : {}", name.text, behavior.as_str()),
+            );
             return;
         }
         if self.seen_code {
-            let sev =
-                if self.version == Version::Es100 { Severity::Warning } else { Severity::Error };
+            let sev = if self.version == Version::Es100 {
+                Severity::Warning
+            } else {
+                Severity::Error
+            };
             self.diags.push(
                 Diagnostic::new(
                     sev,
@@ -909,7 +978,10 @@ impl Pp<'_> {
         }
         let n = &*name.text;
         if n == "all" {
-            if matches!(behavior, ExtensionBehavior::Require | ExtensionBehavior::Enable) {
+            if matches!(
+                behavior,
+                ExtensionBehavior::Require | ExtensionBehavior::Enable
+            ) {
                 self.diags.push(
                     Diagnostic::error(
                         "extension-all-behavior",
@@ -925,7 +997,11 @@ impl Pp<'_> {
         } else if !self.options.extensions.iter().any(|e| e == n) {
             let require = behavior == ExtensionBehavior::Require;
             let mut e = Diagnostic::new(
-                if require { Severity::Error } else { Severity::Warning },
+                if require {
+                    Severity::Error
+                } else {
+                    Severity::Warning
+                },
                 "extension-not-supported",
                 format!("extension `{n}` is not supported"),
                 name.span,
@@ -949,8 +1025,14 @@ impl Pp<'_> {
         Fix {
             message: "move it to the first line".into(),
             edits: vec![
-                Edit { span: Span::empty(0), replacement: format!("{text}\n") },
-                Edit { span: d.whole_line(), replacement: String::new() },
+                Edit {
+                    span: Span::empty(0),
+                    replacement: format!("{text}\n"),
+                },
+                Edit {
+                    span: d.whole_line(),
+                    replacement: String::new(),
+                },
             ],
             applicability,
         }
@@ -987,8 +1069,11 @@ impl Pp<'_> {
                     next = args.len();
                 }
                 if next < args.len() {
-                    let what =
-                        if es { format!("#version {n} es") } else { format!("#version {n}") };
+                    let what = if es {
+                        format!("#version {n} es")
+                    } else {
+                        format!("#version {n}")
+                    };
                     errors.push(self.extra_tokens_diag(d, next + 1, &what));
                 }
                 parsed = Some((n, es));
@@ -1018,7 +1103,8 @@ impl Pp<'_> {
             }
         }
         if let Some((n, es)) = parsed {
-            self.declared_version.get_or_insert(Version::from_parts(n, es));
+            self.declared_version
+                .get_or_insert(Version::from_parts(n, es));
         }
         if self.past_first {
             self.diags.push(
@@ -1109,10 +1195,14 @@ impl Pp<'_> {
             return;
         }
         let mut p = ExprParser::new(&toks, "#line", true);
-        let Some(line) = p.parse(&mut self.diags) else { return };
+        let Some(line) = p.parse(&mut self.diags) else {
+            return;
+        };
         let mut source = None;
         if !p.at_end() {
-            let Some(s) = p.parse(&mut self.diags) else { return };
+            let Some(s) = p.parse(&mut self.diags) else {
+                return;
+            };
             source = Some(s);
         }
         if !p.at_end() {
@@ -1178,11 +1268,9 @@ impl Pp<'_> {
         if name == "include" {
             e = e.with_help("GLSL ES has no `#include`: put the code in the shader");
         } else if let Some((_, k)) = best {
-            e = e.with_help(format!("did you mean `#{k}`?")).with_fix(Fix::suggested(
-                format!("write `#{k}`"),
-                t.span,
-                k,
-            ));
+            e = e
+                .with_help(format!("did you mean `#{k}`?"))
+                .with_fix(Fix::suggested(format!("write `#{k}`"), t.span, k));
         } else {
             e = e.with_help(
                 "the directives are #define, #undef, #if, #ifdef, #ifndef, #elif, #else, #endif, #error, #pragma, #extension, #version and #line",

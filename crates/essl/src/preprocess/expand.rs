@@ -9,6 +9,7 @@
 //! too, so that no input expands without end.
 
 use std::cell::Cell;
+use std::rc::Rc;
 use std::sync::Arc;
 
 use crate::diagnostic::Diagnostic;
@@ -37,7 +38,12 @@ pub(super) struct Tok {
 impl Tok {
     /// A token straight from the text.
     pub fn raw(t: PpToken) -> Tok {
-        Tok { loc: t.span.start, orig: t.span, t, no_expand: false }
+        Tok {
+            loc: t.span.start,
+            orig: t.span,
+            t,
+            no_expand: false,
+        }
     }
 }
 
@@ -117,27 +123,45 @@ impl Macro {
     pub fn same_as(&self, other: &Macro) -> bool {
         self.params == other.params
             && self.body.len() == other.body.len()
-            && self.body.iter().zip(&other.body).all(|(a, b)| match (a, b) {
-                (Body::Tok(a), Body::Tok(b)) => {
-                    a.kind == b.kind && a.text == b.text && a.space_before == b.space_before
-                }
-                (
-                    Body::Param { index: i, space_before: s, .. },
-                    Body::Param { index: j, space_before: t, .. },
-                ) => i == j && s == t,
-                _ => false,
-            })
+            && self
+                .body
+                .iter()
+                .zip(&other.body)
+                .all(|(a, b)| match (a, b) {
+                    (Body::Tok(a), Body::Tok(b)) => {
+                        a.kind == b.kind && a.text == b.text && a.space_before == b.space_before
+                    }
+                    (
+                        Body::Param {
+                            index: i,
+                            space_before: s,
+                            ..
+                        },
+                        Body::Param {
+                            index: j,
+                            space_before: t,
+                            ..
+                        },
+                    ) => i == j && s == t,
+                    _ => false,
+                })
     }
 }
 
 /// A number token made up by the preprocessor.
 pub(super) fn number_token(text: &str, span: Span, from_macro: bool) -> PpToken {
-    PpToken { kind: PpKind::Number, span, text: Arc::from(text), space_before: true, from_macro }
+    PpToken {
+        kind: PpKind::Number,
+        span,
+        text: Arc::from(text),
+        space_before: true,
+        from_macro,
+    }
 }
 
 /// One macro expansion in progress. Dropping it re-enables the macro.
 struct Ctx {
-    mac: Arc<Macro>,
+    mac: Rc<Macro>,
     /// The remaining tokens, in reverse order.
     toks: Vec<Tok>,
 }
@@ -236,7 +260,9 @@ impl Pp<'_> {
             if ex.if_mode && &*t.t.text == "defined" {
                 return self.defined_operator(ex, t);
             }
-            let Some(m) = self.macros.get(&*t.t.text).cloned() else { return t };
+            let Some(m) = self.macros.get(&*t.t.text).cloned() else {
+                return t;
+            };
             if m.disabled.get() {
                 t.no_expand = true;
                 return t;
@@ -287,7 +313,12 @@ impl Pp<'_> {
                     let v = if d == Dynamic::Line { line } else { source };
                     t.text = Arc::from(v.to_string());
                 }
-                out.push(Tok { t, loc: name.loc, orig: pt.span, no_expand: false });
+                out.push(Tok {
+                    t,
+                    loc: name.loc,
+                    orig: pt.span,
+                    no_expand: false,
+                });
             }
         }
         if let Some(first) = out.first_mut() {
@@ -341,7 +372,10 @@ impl Pp<'_> {
             ex.failed = true;
             return None;
         }
-        let args: Vec<Vec<Tok>> = args.into_iter().map(|a| self.pre_expand(ex, a, name)).collect();
+        let args: Vec<Vec<Tok>> = args
+            .into_iter()
+            .map(|a| self.pre_expand(ex, a, name))
+            .collect();
         let mut out = Vec::new();
         for b in &m.body {
             match b {
@@ -349,9 +383,18 @@ impl Pp<'_> {
                     let mut t = pt.clone();
                     t.span = span;
                     t.from_macro = true;
-                    out.push(Tok { t, loc: close.loc, orig: pt.span, no_expand: false });
+                    out.push(Tok {
+                        t,
+                        loc: close.loc,
+                        orig: pt.span,
+                        no_expand: false,
+                    });
                 }
-                Body::Param { index, space_before, .. } => {
+                Body::Param {
+                    index,
+                    space_before,
+                    ..
+                } => {
                     for (k, a) in args[*index].iter().enumerate() {
                         let mut a = a.clone();
                         a.t.span = span;
@@ -519,7 +562,11 @@ impl Pp<'_> {
                     Diagnostic::error(
                         "invalid-defined",
                         format!("expected a macro name after `defined`, found {found}"),
-                        if t.t.kind == PpKind::Eof { op.t.span } else { t.t.span },
+                        if t.t.kind == PpKind::Eof {
+                            op.t.span
+                        } else {
+                            t.t.span
+                        },
                     )
                     .with_label("a macro name must follow `defined`")
                     .with_help("write `defined(NAME)` or `defined NAME`")

@@ -51,7 +51,14 @@ fn binary(p: Punct) -> Option<u8> {
 impl<'t> ExprParser<'t> {
     /// A parser over `toks` (which end with `Eof`).
     pub fn new(toks: &'t [Tok], directive: &'static str, signed_literals: bool) -> Self {
-        ExprParser { toks, pos: 0, directive, signed_literals, depth: 0, invalid: false }
+        ExprParser {
+            toks,
+            pos: 0,
+            directive,
+            signed_literals,
+            depth: 0,
+            invalid: false,
+        }
     }
 
     fn peek(&self) -> &'t Tok {
@@ -99,7 +106,9 @@ impl<'t> ExprParser<'t> {
         let (mut lhs, mut span) = self.unary(diags, eval)?;
         loop {
             let op_tok = self.peek();
-            let PpKind::Punct(op) = op_tok.t.kind else { break };
+            let PpKind::Punct(op) = op_tok.t.kind else {
+                break;
+            };
             let Some(prec) = binary(op) else { break };
             if prec < min {
                 break;
@@ -224,7 +233,10 @@ impl<'t> ExprParser<'t> {
         diags.push(
             Diagnostic::error(
                 "expression-too-deep",
-                format!("`{}` expression nested more than {MAX_DEPTH} levels deep", self.directive),
+                format!(
+                    "`{}` expression nested more than {MAX_DEPTH} levels deep",
+                    self.directive
+                ),
                 t.t.span,
             )
             .with_label("too deep here")
@@ -295,7 +307,9 @@ impl<'t> ExprParser<'t> {
             ));
         } else {
             d = d
-                .with_help(format!("to test whether it is defined, write `defined({name})`"))
+                .with_help(format!(
+                    "to test whether it is defined, write `defined({name})`"
+                ))
                 .with_fix(Fix::suggested(
                     format!("write `defined({name})`"),
                     span,
@@ -371,7 +385,11 @@ impl<'t> ExprParser<'t> {
             }
             _ => Diagnostic::error(
                 "invalid-expression",
-                format!("unexpected {} in `{}` expression", describe(&t.t), self.directive),
+                format!(
+                    "unexpected {} in `{}` expression",
+                    describe(&t.t),
+                    self.directive
+                ),
                 span,
             )
             .with_label("expected a number, a macro, `defined`, `(` or a unary operator")
@@ -426,7 +444,11 @@ impl<'t> ExprParser<'t> {
             );
             return None;
         };
-        let limit = if self.signed_literals { i32::MAX as u64 } else { u32::MAX as u64 };
+        let limit = if self.signed_literals {
+            i32::MAX as u64
+        } else {
+            u32::MAX as u64
+        };
         if v > limit {
             self.invalid = true;
             diags.push(

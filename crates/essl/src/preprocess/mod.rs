@@ -41,6 +41,7 @@ mod expand;
 mod expr;
 
 use std::collections::HashMap;
+use std::rc::Rc;
 use std::sync::Arc;
 
 use crate::diagnostic::{self, Diagnostic, Fix};
@@ -196,7 +197,10 @@ fn presumed(dirs: &[LineDirective], file: &SourceFile, offset: u32) -> (i64, i64
 
 /// Preprocesses a lexed shader.
 pub fn preprocess(file: &SourceFile, lexed: Lexed, options: &PreprocessOptions) -> Preprocessed {
-    let Lexed { mut tokens, diagnostics } = lexed;
+    let Lexed {
+        mut tokens,
+        diagnostics,
+    } = lexed;
     if tokens.last().is_none_or(|t| t.kind != PpKind::Eof) {
         let end = file.text().len() as u32;
         tokens.push(PpToken {
@@ -246,7 +250,7 @@ pub(super) struct Pp<'a> {
     /// (where a no-break space is harmless, as in a comment).
     line_begin: u32,
     skipped_lines: Vec<Span>,
-    macros: HashMap<Arc<str>, Arc<Macro>>,
+    macros: HashMap<Arc<str>, Rc<Macro>>,
     conds: Vec<Cond>,
     diags: Vec<Diagnostic>,
     out: Vec<PpToken>,
@@ -309,11 +313,16 @@ impl<'a> Pp<'a> {
             ("GL_FRAGMENT_PRECISION_HIGH", "1", None),
         ];
         for (name, value, dynamic) in predefined {
-            self.macros.insert(Arc::from(name), Arc::new(Macro::predefined(name, value, dynamic)));
+            self.macros.insert(
+                Arc::from(name),
+                Rc::new(Macro::predefined(name, value, dynamic)),
+            );
         }
         for ext in &self.options.extensions {
             let name: Arc<str> = Arc::from(ext.as_str());
-            self.macros.entry(name).or_insert_with(|| Arc::new(Macro::predefined(ext, "1", None)));
+            self.macros
+                .entry(name)
+                .or_insert_with(|| Rc::new(Macro::predefined(ext, "1", None)));
         }
         for (name, value) in &self.options.defines {
             self.define_from_options(name, value);
@@ -324,13 +333,15 @@ impl<'a> Pp<'a> {
     fn set_version_macro(&mut self, n: u32) {
         self.macros.insert(
             Arc::from("__VERSION__"),
-            Arc::new(Macro::predefined("__VERSION__", &n.to_string(), None)),
+            Rc::new(Macro::predefined("__VERSION__", &n.to_string(), None)),
         );
     }
 
     /// Whether the current group is skipped.
     fn skipping(&self) -> bool {
-        self.conds.last().is_some_and(|c| c.skip_block || c.skip_group)
+        self.conds
+            .last()
+            .is_some_and(|c| c.skip_block || c.skip_group)
     }
 
     /// The source string and line number of an offset, after the `#line` directives so far.
@@ -354,7 +365,8 @@ impl<'a> Pp<'a> {
                 PpKind::Newline => {
                     let nl = self.toks[self.pos].span;
                     if self.skipping() {
-                        self.skipped_lines.push(Span::new(self.line_begin, nl.start));
+                        self.skipped_lines
+                            .push(Span::new(self.line_begin, nl.start));
                     }
                     self.line_begin = nl.end;
                     self.pos += 1;
@@ -435,12 +447,18 @@ impl<'a> Pp<'a> {
         }
         let mut diagnostics = lexer_diags;
         for d in &mut diagnostics {
-            let skipped = self.skipped_lines.iter().any(|r| r.start <= d.span.start && d.span.end <= r.end);
+            let skipped = self
+                .skipped_lines
+                .iter()
+                .any(|r| r.start <= d.span.start && d.span.end <= r.end);
             if d.code == "no-break-space" && d.is_error() && skipped {
                 // WebGL ignores the text of skipped groups: harmless there, as in a comment.
                 d.severity = crate::diagnostic::Severity::Warning;
                 d.message = "no-break space (U+00A0) in a group skipped by the preprocessor".into();
-                d.notes = vec!["harmless while the group is skipped, but an error if it is ever compiled".into()];
+                d.notes = vec![
+                    "harmless while the group is skipped, but an error if it is ever compiled"
+                        .into(),
+                ];
             }
         }
         diagnostics.append(&mut self.diags);
@@ -484,7 +502,10 @@ impl<'a> Pp<'a> {
                 ));
             }
             if i + 1 == MAX_REPORTED && n > MAX_REPORTED {
-                d = d.with_note(format!("{} more conditionals are not closed", n - MAX_REPORTED));
+                d = d.with_note(format!(
+                    "{} more conditionals are not closed",
+                    n - MAX_REPORTED
+                ));
             }
             self.diags.push(d);
         }
@@ -530,7 +551,10 @@ impl<'a> Pp<'a> {
             d = d.with_label("not part of GLSL ES's character set");
         }
         let invisible = is_invisible(c);
-        let space = matches!(c, '\u{2000}'..='\u{200A}' | '\u{202F}' | '\u{205F}' | '\u{3000}');
+        let space = matches!(
+            c,
+            '\u{2000}'..='\u{200A}' | '\u{202F}' | '\u{205F}' | '\u{3000}'
+        );
         let replacement = match c {
             '\u{2212}' | '\u{2013}' | '\u{2014}' => Some("-"),
             '\u{00D7}' => Some("*"),
@@ -546,7 +570,11 @@ impl<'a> Pp<'a> {
             } else if space {
                 d = d.with_fix(Fix::certain("replace it with a space", t.t.span, " "));
             } else if let Some(r) = replacement {
-                d = d.with_fix(Fix::suggested(format!("replace it with `{r}`"), t.t.span, r));
+                d = d.with_fix(Fix::suggested(
+                    format!("replace it with `{r}`"),
+                    t.t.span,
+                    r,
+                ));
             }
         }
         self.diags.push(d);
@@ -600,7 +628,10 @@ fn char_display(c: char) -> String {
 
 /// Whether a character is invisible (zero width, byte order mark).
 fn is_invisible(c: char) -> bool {
-    matches!(c, '\u{200B}' | '\u{200C}' | '\u{200D}' | '\u{2060}' | '\u{FEFF}')
+    matches!(
+        c,
+        '\u{200B}' | '\u{200C}' | '\u{200D}' | '\u{2060}' | '\u{FEFF}'
+    )
 }
 
 /// The token WebGL's info log quotes for a character: itself if ASCII, else `?`.
