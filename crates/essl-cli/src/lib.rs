@@ -11,3 +11,4 @@ pub mod files;
 pub mod fix;
 pub mod lint;
 pub mod output;
+pub mod rules;

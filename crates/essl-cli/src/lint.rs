@@ -66,6 +66,8 @@ pub struct LintOptions {
     pub defines: Vec<(String, String)>,
     /// Link `NAME.vert` + `NAME.frag` pairs (on unless `--no-link`).
     pub link: bool,
+    /// Which numerical-hazard lints run and how loud (`--allow/--warn/--deny RULE`).
+    pub rules: essl_lint::LintOptions,
 }
 
 /// A shader that was read and compiled.
@@ -79,8 +81,24 @@ pub struct Checked {
     pub write_error: Option<String>,
 }
 
-/// Reads, (fixes,) and compiles one file.
+/// Adds the numerical-hazard lints to a compiled shader's diagnostics.
+fn add_lints(shader: &mut Shader, options: &LintOptions) {
+    let found = essl_lint::lint(shader, &options.rules);
+    if !found.is_empty() {
+        shader.diagnostics.extend(found);
+        essl::diagnostic::sort(&mut shader.diagnostics);
+    }
+}
+
+/// Reads, (fixes,) compiles and lints one file.
 pub fn check_file(input: &Input, options: &LintOptions) -> Result<Checked, ReadError> {
+    check_file_unlinted(input, options).map(|mut c| {
+        add_lints(&mut c.shader, options);
+        c
+    })
+}
+
+fn check_file_unlinted(input: &Input, options: &LintOptions) -> Result<Checked, ReadError> {
     let compile_options = CompileOptions {
         defines: options.defines.clone(),
     };
@@ -131,6 +149,8 @@ pub struct FileResult {
     pub fixes_applied: usize,
     /// Its output (human text or one JSON line).
     pub rendered: Vec<u8>,
+    /// Its text and diagnostics, kept for formats that need every file at once (SARIF).
+    pub diagnostics: Option<(SourceFile, Vec<essl::diagnostic::Diagnostic>)>,
 }
 
 /// One linked pair's result, rendered.
@@ -150,6 +170,9 @@ pub struct ProgramResult {
     pub warnings: usize,
     /// Its output (human text or one JSON line).
     pub rendered: Vec<u8>,
+    /// Its link diagnostics with the file each points into, for formats that need every file
+    /// at once (SARIF).
+    pub diagnostics: Vec<(Option<PathBuf>, essl::diagnostic::Diagnostic)>,
 }
 
 /// Everything `essl lint` found, rendered, before printing.
@@ -237,6 +260,7 @@ fn file_result(
             warnings: 0,
             fixes_applied: 0,
             rendered,
+            diagnostics: None,
         },
         Ok(c) => FileResult {
             input: input.clone(),
@@ -247,6 +271,8 @@ fn file_result(
             warnings: c.shader.warning_count(),
             fixes_applied: c.fixes_applied,
             rendered,
+            diagnostics: (options.format == Format::Sarif)
+                .then(|| (c.shader.file.clone(), c.shader.diagnostics.clone())),
         },
     }
 }

@@ -24,6 +24,11 @@ enum Command {
     Lint(LintArgs),
     /// Score the front end on the conformance corpora (WebGL, dEQP, glslang, webgl2fundamentals).
     Conformance(ConformanceArgs),
+    /// List the lint rules, or show one rule's documentation.
+    Rules {
+        /// A rule id (`pow-negative-base`…).
+        rule: Option<String>,
+    },
 }
 
 #[derive(Args, Debug)]
@@ -48,9 +53,19 @@ struct LintArgs {
     #[arg(long)]
     fix: bool,
 
-    /// Make a kind of diagnostic fail the run (`warnings`: every warning).
-    #[arg(long, value_enum, value_name = "LINT")]
-    deny: Vec<DenyArg>,
+    /// Report a lint rule as an error (`warnings`: make every warning fail the run; `all`:
+    /// every rule). See `essl rules`.
+    #[arg(long, value_name = "RULE")]
+    deny: Vec<String>,
+
+    /// Report a lint rule as a warning (its default).
+    #[arg(long, value_name = "RULE")]
+    warn: Vec<String>,
+
+    /// Do not run a lint rule (`all`: none). A `// essl-allow: RULE` comment on a line (or the
+    /// line before) silences one finding.
+    #[arg(long, value_name = "RULE")]
+    allow: Vec<String>,
 
     /// Define a macro before the first line, as `#define NAME VALUE` (VALUE defaults to 1).
     #[arg(short = 'D', value_name = "NAME[=VALUE]", value_parser = parse_define)]
@@ -88,6 +103,8 @@ enum FormatArg {
     Human,
     /// JSON Lines: one object per shader and per program.
     Json,
+    /// A SARIF 2.1.0 log, for code-scanning services.
+    Sarif,
 }
 
 #[derive(Clone, Copy, Debug, ValueEnum)]
@@ -95,12 +112,6 @@ enum ColorArg {
     Auto,
     Always,
     Never,
-}
-
-#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
-enum DenyArg {
-    /// Every warning.
-    Warnings,
 }
 
 fn parse_define(s: &str) -> Result<(String, String), String> {
@@ -121,9 +132,54 @@ fn parse_define(s: &str) -> Result<(String, String), String> {
     Ok((name.to_string(), value.to_string()))
 }
 
+/// The lint levels given on the command line, in the order given (a later one wins).
+fn rule_levels(
+    matches: &clap::ArgMatches,
+) -> Result<(essl_lint::LintOptions, bool), essl_lint::UnknownRule> {
+    let Some(("lint", m)) = matches.subcommand() else {
+        return Ok((essl_lint::LintOptions::new(), false));
+    };
+    let mut given: Vec<(usize, &str, essl_lint::Level)> = Vec::new();
+    for (flag, level) in [
+        ("allow", essl_lint::Level::Allow),
+        ("warn", essl_lint::Level::Warn),
+        ("deny", essl_lint::Level::Deny),
+    ] {
+        if let (Some(values), Some(indices)) = (m.get_many::<String>(flag), m.indices_of(flag)) {
+            for (v, i) in values.zip(indices) {
+                given.push((i, v.as_str(), level));
+            }
+        }
+    }
+    given.sort_by_key(|(i, _, _)| *i);
+    let mut options = essl_lint::LintOptions::new();
+    let mut deny_warnings = false;
+    for (_, rule, level) in given {
+        if rule == "warnings" && level == essl_lint::Level::Deny {
+            deny_warnings = true;
+            continue;
+        }
+        options.set(rule, level)?;
+    }
+    Ok((options, deny_warnings))
+}
+
 fn main() -> ExitCode {
-    let cli = Cli::parse();
+    use clap::{CommandFactory, FromArgMatches};
+    let matches = Cli::command().get_matches();
+    let (rules, deny_warnings) = match rule_levels(&matches) {
+        Ok(r) => r,
+        Err(e) => {
+            eprintln!("error: {e}");
+            return ExitCode::from(2);
+        }
+    };
+    let cli = match Cli::from_arg_matches(&matches) {
+        Ok(c) => c,
+        Err(e) => e.exit(),
+    };
     let status = match cli.command {
+        Command::Rules { rule } => essl_cli::rules::run(rule.as_deref()),
         Command::Lint(args) => essl_cli::lint::run(&LintOptions {
             paths: args.paths,
             stage: args.stage.map(|s| match s {
@@ -133,6 +189,7 @@ fn main() -> ExitCode {
             format: match args.format {
                 FormatArg::Human => Format::Human,
                 FormatArg::Json => Format::Json,
+                FormatArg::Sarif => Format::Sarif,
             },
             color: match args.color {
                 ColorArg::Auto => ColorMode::Auto,
@@ -140,9 +197,10 @@ fn main() -> ExitCode {
                 ColorArg::Never => ColorMode::Never,
             },
             fix: args.fix,
-            deny_warnings: args.deny.contains(&DenyArg::Warnings),
+            deny_warnings,
             defines: args.define,
             link: !args.no_link,
+            rules,
         }),
         Command::Conformance(args) => {
             essl_cli::conformance::run(&args.corpora, args.markdown.as_deref(), args.failures)

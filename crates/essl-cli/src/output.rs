@@ -24,6 +24,8 @@ pub enum Format {
     Human,
     /// JSON Lines: one object per shader, then one per program, then a summary.
     Json,
+    /// One SARIF 2.1.0 log of every file's diagnostics, for code-scanning services.
+    Sarif,
 }
 
 /// What the summary line counts.
@@ -138,6 +140,9 @@ pub fn write(
             writeln!(summary)?;
             out.write_all(summary.as_slice())?;
         }
+        Format::Sarif => {
+            writeln!(out, "{}", sarif(results))?;
+        }
         Format::Json => {
             let summary = json!({
                 "kind": "summary",
@@ -176,6 +181,7 @@ pub fn render_file(
             line.push(b'\n');
             line
         }
+        Format::Sarif => Vec::new(),
     }
 }
 
@@ -198,8 +204,25 @@ pub fn program_result(
             line.push(b'\n');
             line
         }
+        Format::Sarif => Vec::new(),
     };
     let (errors, warnings) = program_counts(vs, fs, program);
+    let diagnostics = if options.format == Format::Sarif {
+        program
+            .diagnostics
+            .iter()
+            .map(|d| {
+                let path = match d.stage {
+                    Some(Stage::Vertex) => Some(vertex.path.clone()),
+                    Some(Stage::Fragment) => Some(fragment.path.clone()),
+                    None => None,
+                };
+                (path, d.diagnostic.clone())
+            })
+            .collect()
+    } else {
+        Vec::new()
+    };
     ProgramResult {
         vertex: vertex.clone(),
         fragment: fragment.clone(),
@@ -208,7 +231,32 @@ pub fn program_result(
         errors,
         warnings,
         rendered,
+        diagnostics,
     }
+}
+
+/// The SARIF log of every file's diagnostics, link diagnostics included (added to the file
+/// they point into; one that points into no file goes to the vertex shader's).
+fn sarif(results: &LintResults) -> String {
+    let mut files: Vec<(SourceFile, Vec<Diagnostic>)> = results
+        .files
+        .iter()
+        .filter_map(|f| f.diagnostics.clone())
+        .collect();
+    for p in &results.programs {
+        for (path, d) in &p.diagnostics {
+            let path = path.clone().unwrap_or_else(|| p.vertex.path.clone());
+            let name = path.display().to_string();
+            if let Some((_, ds)) = files.iter_mut().find(|(f, _)| f.name() == name) {
+                ds.push(d.clone());
+            }
+        }
+    }
+    let list: Vec<essl_lint::sarif::FileDiagnostics> = files
+        .iter()
+        .map(|(file, diagnostics)| essl_lint::sarif::FileDiagnostics { file, diagnostics })
+        .collect();
+    essl_lint::sarif::to_string(&list)
 }
 
 /// A file's human output: how many fixes were applied, then its diagnostics.

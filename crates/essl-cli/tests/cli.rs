@@ -378,3 +378,122 @@ fn fix_repairs_the_seed_shader() {
     assert_eq!(first["ok"], true);
     assert_eq!(first["fixes_applied"], 0);
 }
+
+const HAZARD_FRAG: &str = "#version 300 es\nprecision highp float;\nuniform vec3 u_a;\nuniform vec3 u_b;\nin vec3 v_n;\nout vec4 color;\nvoid main() {\n    float d = dot(normalize(v_n), normalize(u_a));\n    color = vec4(acos(d), pow(d, 2.5), 0.0, 1.0);\n}\n";
+
+#[test]
+fn lints_warn_by_default_and_rules_can_be_allowed_or_denied() {
+    let dir = tempfile::tempdir().unwrap();
+    std::fs::write(dir.path().join("h.frag"), HAZARD_FRAG).unwrap();
+    let o = essl(&["lint", "--color", "never", "h.frag"], dir.path());
+    let out = stdout(&o);
+    assert_eq!(o.status.code(), Some(0), "{out}");
+    assert!(
+        out.contains("warning[acos-domain]") && out.contains("warning[pow-negative-base]"),
+        "{out}"
+    );
+    // Allowed: not reported.
+    let o = essl(
+        &[
+            "lint",
+            "--color",
+            "never",
+            "--allow",
+            "acos-domain",
+            "h.frag",
+        ],
+        dir.path(),
+    );
+    assert!(!stdout(&o).contains("acos-domain"));
+    // Denied: an error, exit 1; a later --allow wins over an earlier --deny.
+    let o = essl(
+        &[
+            "lint",
+            "--color",
+            "never",
+            "--deny",
+            "pow-negative-base",
+            "h.frag",
+        ],
+        dir.path(),
+    );
+    assert_eq!(o.status.code(), Some(1));
+    assert!(stdout(&o).contains("error[pow-negative-base]"));
+    let o = essl(
+        &[
+            "lint", "--color", "never", "--deny", "all", "--allow", "all", "h.frag",
+        ],
+        dir.path(),
+    );
+    assert_eq!(o.status.code(), Some(0));
+    assert!(!stdout(&o).contains("warning["));
+    // --deny warnings fails on the default warnings.
+    let o = essl(
+        &["lint", "--color", "never", "--deny", "warnings", "h.frag"],
+        dir.path(),
+    );
+    assert_eq!(o.status.code(), Some(1));
+    // An unknown rule is a usage error naming the known ones.
+    let o = essl(&["lint", "--deny", "no-such-rule", "h.frag"], dir.path());
+    assert_eq!(o.status.code(), Some(2));
+    assert!(
+        stderr(&o).contains("unknown lint rule `no-such-rule`"),
+        "{}",
+        stderr(&o)
+    );
+}
+
+#[test]
+fn an_essl_allow_comment_silences_one_finding() {
+    let dir = tempfile::tempdir().unwrap();
+    let src = HAZARD_FRAG.replace(
+        "    color = vec4(acos(d)",
+        "    // essl-allow: acos-domain\n    color = vec4(acos(d)",
+    );
+    std::fs::write(dir.path().join("h.frag"), src).unwrap();
+    let out = stdout(&essl(&["lint", "--color", "never", "h.frag"], dir.path()));
+    assert!(
+        !out.contains("acos-domain") && out.contains("pow-negative-base"),
+        "{out}"
+    );
+}
+
+#[test]
+fn sarif_output_is_one_log_with_rules_and_results() {
+    let dir = tempfile::tempdir().unwrap();
+    std::fs::write(dir.path().join("h.frag"), HAZARD_FRAG).unwrap();
+    std::fs::write(
+        dir.path().join("bad.vert"),
+        "#version 300 es\nvoid main() { gl_Position = vec4(1) }\n",
+    )
+    .unwrap();
+    let o = essl(&["lint", "--format", "sarif", "."], dir.path());
+    assert_eq!(o.status.code(), Some(1));
+    let log: serde_json::Value = serde_json::from_str(&stdout(&o)).expect("one JSON document");
+    assert_eq!(log["version"], "2.1.0");
+    let results = log["runs"][0]["results"].as_array().unwrap();
+    let ids: Vec<&str> = results
+        .iter()
+        .map(|r| r["ruleId"].as_str().unwrap())
+        .collect();
+    assert!(
+        ids.contains(&"acos-domain") && ids.contains(&"missing-semicolon"),
+        "{ids:?}"
+    );
+    let rules = log["runs"][0]["tool"]["driver"]["rules"]
+        .as_array()
+        .unwrap();
+    assert!(rules.iter().any(|r| r["id"] == "pow-negative-base"));
+}
+
+#[test]
+fn rules_subcommand_lists_and_documents_rules() {
+    let dir = tempfile::tempdir().unwrap();
+    let o = essl(&["rules"], dir.path());
+    assert!(stdout(&o)
+        .lines()
+        .any(|l| l.starts_with("smoothstep-edges")));
+    let o = essl(&["rules", "acos-domain"], dir.path());
+    assert!(stdout(&o).contains("## What it does"), "{}", stdout(&o));
+    assert_eq!(essl(&["rules", "nope"], dir.path()).status.code(), Some(2));
+}
