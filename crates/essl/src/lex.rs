@@ -570,6 +570,11 @@ fn report_nbsp(file: &SourceFile, nbsp: &[(Span, bool)], diagnostics: &mut Vec<D
                 "GLSL ES allows only space, tab, vertical tab and form feed as white space",
             )
         };
+        if !in_code.is_empty() && file.line_text(line).trim_start().starts_with("#version") {
+            d = d.with_note(
+                "on the `#version` line this is the serious one: WebGL2 does not recognise the directive, compiles the shader as GLSL ES 1.00, and then rejects every `in`/`out` (Chromium reports `'?' : unexpected token` on line 1)",
+            );
+        }
         d = d
             .with_label(if count == 1 {
                 "this looks like a space but is U+00A0".to_string()

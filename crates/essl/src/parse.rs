@@ -276,15 +276,40 @@ impl<'a> Parser<'a> {
             self.suppress = true;
             return Failed;
         }
-        let d = Diagnostic::error(
+        let mut d = Diagnostic::error(
             "syntax-error",
             format!("expected {what}, found {}", Self::describe(&t)),
             t.span,
         )
         .with_label(format!("expected {what}"))
         .with_token(&*t.text);
+        let prev = self.prev_span();
+        let prev_text = self.file.slice(prev);
+        if t.tok == Tok::P(Punct::Star) && prev_text == "*" && prev.end == t.span.start {
+            // `a ** b`: markdown damage, or exponentiation from another language.
+            d = d
+                .with_note("`**` is not an operator in GLSL (a copy from a web page often turns `*` into `**`)")
+                .with_help("write `*` for a product, or `pow(a, b)` for a power")
+                .with_fix(Fix::suggested("remove the second `*`", t.span, ""));
+        } else if matches!(t.tok, Tok::P(Punct::Plus | Punct::Minus | Punct::Star))
+            && self.starts_line(t.span)
+        {
+            // A line that starts with `+`, `-` or `*` where a statement should start: a diff.
+            d = d.with_note(format!(
+                "this line starts with `{}`, like a line of a diff or a markdown list; remove the marker",
+                t.text
+            ));
+        }
         self.report(d);
         Failed
+    }
+
+    /// Whether a token is the first thing on its line.
+    fn starts_line(&self, span: Span) -> bool {
+        let line = self.file.line_index(span.start);
+        self.file.text()[self.file.line_start(line) as usize..span.start as usize]
+            .trim()
+            .is_empty()
     }
 
     /// Expects `;` to end `what` (`declaration`, `expression`, …). When the next token is on a
@@ -309,14 +334,12 @@ impl<'a> Parser<'a> {
             .with_label("expected `;` here")
             .with_secondary(
                 next.span,
-                format!(
-                    "the next {} starts here",
-                    if matches!(next.tok, Tok::Eof) {
-                        "part"
-                    } else {
-                        "statement"
-                    }
-                ),
+                match next.tok {
+                    Tok::Eof => "the file ends here",
+                    Tok::P(Punct::RightBrace) => "the block ends here",
+                    _ if self.type_names.len() == 1 => "the next declaration starts here",
+                    _ => "the next statement starts here",
+                },
             )
             .with_fix(Fix::certain("add `;` at the end of the line", at, ";"))
             .with_token(&*next.text);
@@ -595,7 +618,7 @@ impl<'a> Parser<'a> {
         };
         self.bump();
         let ty = self.type_spec()?;
-        self.expect_semicolon("precision statement")?;
+        self.expect_semicolon("the `precision` statement")?;
         Ok(Declaration::Precision {
             precision,
             ty,
@@ -609,7 +632,7 @@ impl<'a> Parser<'a> {
         while self.eat(Punct::Comma) {
             names.push(self.ident("a variable name")?);
         }
-        self.expect_semicolon("`invariant` declaration")?;
+        self.expect_semicolon("the `invariant` declaration")?;
         Ok(Declaration::Invariant {
             names,
             span: self.span_from(start),
@@ -801,7 +824,7 @@ impl<'a> Parser<'a> {
                     break;
                 }
             }
-            self.expect_semicolon("member declaration")?;
+            self.expect_semicolon("the member declaration")?;
             members.push(MemberDecl {
                 ty: Box::new(FullTypeEq(ty)),
                 names,
@@ -828,7 +851,7 @@ impl<'a> Parser<'a> {
             }
             _ => None,
         };
-        self.expect_semicolon("uniform block")?;
+        self.expect_semicolon("the uniform block")?;
         Ok(Declaration::Block {
             qualifiers,
             name,
@@ -887,7 +910,7 @@ impl<'a> Parser<'a> {
                 }
             }
         }
-        self.expect_semicolon("declaration")?;
+        self.expect_semicolon("the declaration")?;
         Ok(Declaration::Variables {
             ty,
             declarators,
@@ -922,7 +945,7 @@ impl<'a> Parser<'a> {
             let body = body?;
             Ok(ExternalDecl::Function(FunctionDef { proto, body }))
         } else {
-            self.expect_semicolon("function prototype")?;
+            self.expect_semicolon("the function prototype")?;
             Ok(ExternalDecl::Prototype(proto))
         }
     }
@@ -1107,7 +1130,7 @@ impl<'a> Parser<'a> {
                 let open = self.expect(Punct::LeftParen)?;
                 let cond = self.expr()?;
                 self.expect_close(Punct::RightParen, open)?;
-                self.expect_semicolon("`do`-`while` loop")?;
+                self.expect_semicolon("the `do`-`while` loop")?;
                 StmtKind::DoWhile(Box::new(body), cond)
             }
             Tok::Kw(Kw::For) => {
@@ -1181,13 +1204,13 @@ impl<'a> Parser<'a> {
                 } else {
                     Some(self.expr()?)
                 };
-                self.expect_semicolon("`return` statement")?;
+                self.expect_semicolon("the `return` statement")?;
                 StmtKind::Return(e)
             }
             _ if self.at_declaration() => StmtKind::Decl(self.local_declaration()?),
             _ => {
                 let e = self.expr()?;
-                self.expect_semicolon("expression")?;
+                self.expect_semicolon("the expression")?;
                 StmtKind::Expr(e)
             }
         };

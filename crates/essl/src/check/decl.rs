@@ -1244,6 +1244,7 @@ impl Checker<'_> {
             return;
         };
         self.fn_defined[id] = true;
+        self.ended.clear();
         let ret = self.functions[id].ret.clone();
         self.fctx = Some(FnCtx {
             func: id,

@@ -419,6 +419,13 @@ impl Checker<'_> {
             "vertex"
         };
         let similar = self.similar_name(name);
+        let ended = self
+            .ended
+            .iter()
+            .rev()
+            .find(|(n, _)| &**n == name)
+            .map(|(_, sp)| *sp);
+        let ended_line = ended.map(|sp| self.file.line_of(sp.start));
         let d = self.error(
             "undeclared-identifier",
             id.span,
@@ -439,7 +446,15 @@ impl Checker<'_> {
                 d.help = Some(format!("`{name}` only exists in {stage_name} shaders"));
             }
             _ => {
-                if let Some(similar) = similar {
+                if let (Some(sp), Some(line)) = (ended, ended_line) {
+                    d.secondary.push(Label {
+                        span: sp,
+                        message: format!(
+                            "`{name}` is declared here, in a block that ends before this use"
+                        ),
+                    });
+                    d.help = Some(format!("move the declaration of `{name}` (line {line}) out of its block, before it, so that it is still in scope here"));
+                } else if let Some(similar) = similar {
                     d.help = Some(format!("a name in scope is similar: `{similar}`"));
                 }
             }

@@ -112,6 +112,8 @@ pub(crate) struct Checker<'a> {
     unnamed_param_counter: u32,
     /// The parser stopped early: do not report what is missing from the end.
     truncated: bool,
+    /// Locals of the current function whose block has ended: (name, declaration).
+    ended: Vec<(Arc<str>, Span)>,
 }
 
 impl<'a> Checker<'a> {
@@ -148,6 +150,7 @@ impl<'a> Checker<'a> {
             frag_outputs: Vec::new(),
             unnamed_param_counter: 0,
             truncated: false,
+            ended: Vec::new(),
         }
     }
 
@@ -188,7 +191,17 @@ impl<'a> Checker<'a> {
     }
 
     fn pop_scope(&mut self) {
-        self.scopes.pop();
+        if let Some(scope) = self.scopes.pop() {
+            // Remember variables whose block ended, to explain a later "undeclared" use.
+            if self.fctx.is_some() {
+                for (name, sym) in scope.names {
+                    if let Sym::Var(Var::Local(l)) = sym {
+                        let span = self.fctx.as_ref().expect("in a function").locals[l].span;
+                        self.ended.push((name, span));
+                    }
+                }
+            }
+        }
     }
 
     fn at_global_scope(&self) -> bool {
