@@ -193,11 +193,10 @@ impl<'a> Checker<'a> {
     fn pop_scope(&mut self) {
         if let Some(scope) = self.scopes.pop() {
             // Remember variables whose block ended, to explain a later "undeclared" use.
-            if self.fctx.is_some() {
+            if let Some(f) = &self.fctx {
                 for (name, sym) in scope.names {
                     if let Sym::Var(Var::Local(l)) = sym {
-                        let span = self.fctx.as_ref().expect("in a function").locals[l].span;
-                        self.ended.push((name, span));
+                        self.ended.push((name, f.locals[l].span));
                     }
                 }
             }

@@ -1,0 +1,22 @@
+//! Any bytes, as a vertex and as a fragment shader: the front end and the lints must not panic
+//! (and every diagnostic must point inside the text).
+#![no_main]
+
+use essl::source::SourceFile;
+use essl::{compile, Stage};
+use libfuzzer_sys::fuzz_target;
+
+fuzz_target!(|data: &[u8]| {
+    let text = String::from_utf8_lossy(data);
+    for stage in [Stage::Vertex, Stage::Fragment] {
+        // With and without a version line, so that most inputs get past the preprocessor.
+        for src in [text.to_string(), format!("#version 300 es\nprecision mediump float;\n{text}")] {
+            let len = src.len();
+            let shader = compile(SourceFile::new("fuzz", src), stage, &Default::default());
+            for d in &shader.diagnostics {
+                assert!(d.span.end as usize <= len && d.span.start <= d.span.end);
+            }
+            let _ = essl_lint::lint(&shader, &essl_lint::LintOptions::new());
+        }
+    }
+});
