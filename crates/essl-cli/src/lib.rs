@@ -11,4 +11,5 @@ pub mod files;
 pub mod fix;
 pub mod lint;
 pub mod output;
+pub mod render;
 pub mod rules;

@@ -24,6 +24,18 @@ enum Command {
     Lint(LintArgs),
     /// Score the front end on the conformance corpora (WebGL, dEQP, glslang, webgl2fundamentals).
     Conformance(ConformanceArgs),
+    /// Render a scene (../shared/scenes/FORMAT.md) through essl's WebGL2 API to a PNG, and print
+    /// one JSON line as webgl2-render.py does.
+    Render {
+        /// The scene file.
+        scene: PathBuf,
+        /// The PNG to write.
+        #[arg(short = 'o', long = "output", value_name = "PNG")]
+        output: PathBuf,
+        /// Time this many frames (clear + draw + read one pixel) and report the median.
+        #[arg(long, default_value_t = 0, value_name = "N")]
+        times: usize,
+    },
     /// List the lint rules, or show one rule's documentation.
     Rules {
         /// A rule id (`pow-negative-base`…).
@@ -180,6 +192,11 @@ fn main() -> ExitCode {
     };
     let status = match cli.command {
         Command::Rules { rule } => essl_cli::rules::run(rule.as_deref()),
+        Command::Render {
+            scene,
+            output,
+            times,
+        } => essl_cli::render::run(&scene, &output, times),
         Command::Lint(args) => essl_cli::lint::run(&LintOptions {
             paths: args.paths,
             stage: args.stage.map(|s| match s {

@@ -497,3 +497,60 @@ fn rules_subcommand_lists_and_documents_rules() {
     assert!(stdout(&o).contains("## What it does"), "{}", stdout(&o));
     assert_eq!(essl(&["rules", "nope"], dir.path()).status.code(), Some(2));
 }
+
+#[test]
+fn render_writes_the_png_and_a_json_line() {
+    let dir = tempfile::tempdir().unwrap();
+    std::fs::write(dir.path().join("bad.json"), "{\"width\": 0}").unwrap();
+    let o = essl(&["render", "bad.json", "-o", "x.png"], dir.path());
+    assert_eq!(
+        o.status.code(),
+        Some(2),
+        "a malformed scene is a usage error"
+    );
+    let scene = repo_root().join("../shared/scenes/spot-smooth.json");
+    if !scene.exists() {
+        assert!(
+            std::env::var_os("CI").is_none(),
+            "../shared is missing and CI is set"
+        );
+        eprintln!("SKIPPED: ../shared/scenes is absent");
+        return;
+    }
+    let png = dir.path().join("spot.png");
+    let o = Command::new(env!("CARGO_BIN_EXE_essl"))
+        .args([
+            "render",
+            scene.to_str().unwrap(),
+            "-o",
+            png.to_str().unwrap(),
+            "--times",
+            "3",
+        ])
+        .env("XDG_RUNTIME_DIR", dir.path())
+        .output()
+        .unwrap();
+    if o.status.code() == Some(2) && stderr(&o).contains("adapter") {
+        assert!(
+            std::env::var_os("CI").is_none(),
+            "no GPU adapter and CI is set: {}",
+            stderr(&o)
+        );
+        eprintln!("SKIPPED: no adapter: {}", stderr(&o));
+        return;
+    }
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    let line: serde_json::Value = serde_json::from_str(stdout(&o).trim()).unwrap();
+    assert_eq!(line["triangles"], 8192);
+    assert_eq!(line["width"], 256);
+    assert!(line["ms_per_frame"].as_f64().unwrap() > 0.0);
+    let image = essl_scene::read_png(&png).unwrap();
+    let reference =
+        essl_scene::read_png(&repo_root().join("../shared/scenes/reference/spot-smooth.png"))
+            .unwrap();
+    let diff = essl_scene::compare(&image, &reference, 3).unwrap();
+    assert!(
+        diff.within_tolerance as f64 >= 0.999 * diff.pixels as f64,
+        "{diff:?}"
+    );
+}
