@@ -6,6 +6,8 @@
 //!   certain fixes, [`output`] prints the results as text or JSON Lines).
 //! - [`conformance`]: `essl conformance` — score the front end on the conformance corpora.
 
+#![warn(missing_docs)]
+
 pub mod conformance;
 pub mod files;
 pub mod fix;

@@ -4,6 +4,8 @@
 //! `source` → `lex` → `preprocess` → `token` → `parse` → `check` → `lower` (naga IR) →
 //! `reflect` → `link`.
 
+#![warn(missing_docs)]
+
 pub mod ast;
 pub mod builtins;
 pub mod check;
