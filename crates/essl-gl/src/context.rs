@@ -97,6 +97,8 @@ pub struct Context {
     pub(crate) max_vertex_attribs: u32,
     pub(crate) link_serial: u64,
     pub(crate) readback: Option<wgpu::Buffer>,
+    /// The uniform-value checks ([`Context::set_validation`]) and their warnings.
+    pub(crate) validation: crate::validation::Validation,
 }
 
 impl Context {
@@ -192,6 +194,7 @@ impl Context {
             max_vertex_attribs,
             link_serial: 0,
             readback: None,
+            validation: Default::default(),
             gpu,
         })
     }

@@ -483,7 +483,7 @@ impl Context {
         count: i32,
         elements: Option<(u32, i64)>,
         instances: i32,
-        f: &str,
+        f: &'static str,
     ) {
         use wgpu::PrimitiveTopology as T;
         // WebGL's checks, in the order browsers make them.
@@ -763,6 +763,11 @@ impl Context {
         let Some(scissor) = self.scissor_rect() else {
             return;
         };
+        // The debug mode: one test when it is off (the checks and their bookkeeping live
+        // behind it).
+        if self.validation.enabled {
+            self.validate_uniforms(pid, f);
+        }
         self.encode_draw(
             pid,
             topology,

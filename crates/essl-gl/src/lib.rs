@@ -63,6 +63,7 @@ pub mod scene;
 mod shader_patch;
 mod state;
 mod texture;
+mod validation;
 mod vertex_array;
 
 pub use bytemuck;
@@ -70,4 +71,5 @@ pub use context::{Context, COLOR_FORMAT, DEPTH_FORMAT, MAX_TEXTURE_UNITS, MAX_VE
 pub use error::{error_name, ContextError};
 pub use objects::{Buffer, Program, Shader, Texture, UniformLocation, VertexArray};
 pub use query::{Parameter, SHADING_LANGUAGE_VERSION, SUBPIXEL_BITS, VENDOR, VERSION};
+pub use validation::{SourceLocation, ValidationWarning, MAX_VALIDATION_WARNINGS};
 pub use wgpu;

@@ -37,6 +37,8 @@ pub(crate) struct ShaderObject {
     /// compiles it again (the front end's `Shader` is not `Send`; a `Context` is).
     pub(crate) compiled: Option<(String, bool)>,
     pub(crate) info_log: String,
+    /// The file name validation warnings give the shader ([`Context::set_shader_name`]).
+    pub(crate) name: Option<String>,
 }
 
 /// A program object (`WebGLProgram`).
@@ -70,6 +72,11 @@ pub(crate) struct LinkedProgram {
     pub(crate) block_bindings: Vec<u32>,
     /// Where the current uniform image was last put: (batch, version, chunk, offset).
     pub(crate) uploaded: Option<(u64, u64, u64, u32)>,
+    /// The shaders' names and texts as linked (`link_program`; `None` for a layout linked
+    /// directly), from which validation extracts the uniform preconditions when it is on.
+    pub(crate) sources: Option<Box<crate::validation::LinkedSources>>,
+    /// The runtime checks of uniform values, built at the first draw with validation on.
+    pub(crate) checks: Option<Box<crate::validation::ProgramChecks>>,
 }
 
 fn value_kind(scalar: naga::Scalar) -> Option<ValueKind> {
@@ -200,7 +207,7 @@ impl Values<'_> {
 }
 
 /// Components and matrix shape of a uniform type.
-fn uniform_shape(ty: GlType) -> (u8, Option<(u8, u8)>, bool) {
+pub(crate) fn uniform_shape(ty: GlType) -> (u8, Option<(u8, u8)>, bool) {
     use GlType::*;
     match ty {
         FLOAT | INT | UNSIGNED_INT => (1, None, false),
@@ -248,6 +255,38 @@ fn call_matches(call: Call, ty: GlType) -> bool {
     }
 }
 
+/// The active uniform (its index) and the array element that WebGL's `name` designates
+/// (`"u_color"`, `"u_lights[2].position"`, `"u_weights[3]"`); members of uniform blocks have
+/// none.
+pub(crate) fn find_uniform(layout: &ProgramLayout, name: &str) -> Option<(usize, u32)> {
+    for (i, u) in layout.uniforms.iter().enumerate() {
+        // Members of uniform blocks have no location in WebGL.
+        if u.storage == UniformStorage::Block {
+            continue;
+        }
+        let element = if u.name == name {
+            Some(0)
+        } else if let Some(base) = u.name.strip_suffix("[0]") {
+            if name == base {
+                Some(0)
+            } else {
+                name.strip_prefix(base)
+                    .and_then(|rest| rest.strip_prefix('['))
+                    .and_then(|rest| rest.strip_suffix(']'))
+                    .filter(|k| !k.is_empty() && k.bytes().all(|b| b.is_ascii_digit()))
+                    .and_then(|k| k.parse::<u32>().ok())
+                    .filter(|&k| k < u.size)
+            }
+        } else {
+            None
+        };
+        if let Some(element) = element {
+            return Some((i, element));
+        }
+    }
+    None
+}
+
 impl Context {
     /// Creates a shader object of type `VERTEX_SHADER` or `FRAGMENT_SHADER` (`createShader`);
     /// another type → `INVALID_ENUM` and `None`.
@@ -265,6 +304,7 @@ impl Context {
             source: String::new(),
             compiled: None,
             info_log: String::new(),
+            name: None,
         });
         Some(Shader { ctx: self.id, id })
     }
@@ -494,12 +534,17 @@ impl Context {
                 .filter_map(|&s| self.shaders.get_any(s))
                 .find(|s| s.ty == ty)
         };
+        let mut sources = None;
         let result = match (shader(gl::VERTEX_SHADER), shader(gl::FRAGMENT_SHADER)) {
             (None, _) | (_, None) => {
                 Err("a vertex and a fragment shader must be attached".to_owned())
             }
             (Some(vs), Some(fs)) => match (&vs.compiled, &fs.compiled) {
                 (Some((v, true)), Some((f, true))) => {
+                    sources = Some(Box::new(crate::validation::LinkedSources {
+                        vertex: (vs.name.clone(), v.clone()),
+                        fragment: (fs.name.clone(), f.clone()),
+                    }));
                     let v = &compile(essl::Stage::Vertex, v);
                     let f = &compile(essl::Stage::Fragment, f);
                     let linked = essl::link::link_with_bindings(v, f, &obj.attrib_bindings);
@@ -519,7 +564,12 @@ impl Context {
             },
         };
         match result {
-            Ok(layout) => self.link_program_from_layout(program, layout),
+            Ok(layout) => {
+                self.link_program_from_layout(program, layout);
+                if let Some(linked) = self.programs.get_any_mut(p).and_then(|o| o.linked.as_mut()) {
+                    linked.sources = sources;
+                }
+            }
             Err(log) => {
                 let obj = self.programs.get_any_mut(p).expect("live");
                 obj.link_status = false;
@@ -641,6 +691,8 @@ impl Context {
             sampler_units: vec![0; layout.samplers.len()],
             block_bindings: vec![0; layout.blocks.len()],
             uploaded: None,
+            sources: None,
+            checks: None,
             vertex_module,
             fragment_module,
             layout,
@@ -760,38 +812,14 @@ impl Context {
         if name.starts_with("gl_") || name.starts_with("webgl_") || name.starts_with("_webgl_") {
             return None;
         }
-        for (i, u) in linked.layout.uniforms.iter().enumerate() {
-            // Members of uniform blocks have no location in WebGL.
-            if u.storage == UniformStorage::Block {
-                continue;
-            }
-            let element = if u.name == name {
-                Some(0)
-            } else if let Some(base) = u.name.strip_suffix("[0]") {
-                if name == base {
-                    Some(0)
-                } else {
-                    name.strip_prefix(base)
-                        .and_then(|rest| rest.strip_prefix('['))
-                        .and_then(|rest| rest.strip_suffix(']'))
-                        .filter(|k| !k.is_empty() && k.bytes().all(|b| b.is_ascii_digit()))
-                        .and_then(|k| k.parse::<u32>().ok())
-                        .filter(|&k| k < u.size)
-                }
-            } else {
-                None
-            };
-            if let Some(element) = element {
-                return Some(UniformLocation {
-                    ctx: self.id,
-                    program: id,
-                    link: linked.serial,
-                    uniform: i as u32,
-                    element,
-                });
-            }
-        }
-        None
+        let (i, element) = find_uniform(&linked.layout, name)?;
+        Some(UniformLocation {
+            ctx: self.id,
+            program: id,
+            link: linked.serial,
+            uniform: i as u32,
+            element,
+        })
     }
 
     /// The index of a uniform block by name, or `INVALID_INDEX` (`getUniformBlockIndex`).

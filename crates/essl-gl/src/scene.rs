@@ -181,6 +181,8 @@ impl SceneRenderer {
             (gl::FRAGMENT_SHADER, &scene.fragment_shader),
         ] {
             let sh = gl.create_shader(ty).expect("a valid shader type");
+            // Validation warnings (if the context has them on) name the scene's files.
+            gl.set_shader_name(sh, &shader.name);
             gl.shader_source(sh, &shader.source);
             gl.compile_shader(sh);
             let log = gl.get_shader_info_log(sh).unwrap_or_default();

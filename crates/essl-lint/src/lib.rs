@@ -28,6 +28,7 @@
 pub mod analysis;
 pub mod interval;
 pub mod precision;
+pub mod precondition;
 mod rules;
 pub mod sarif;
 pub mod suppress;
@@ -37,6 +38,7 @@ pub mod value;
 use essl::diagnostic::{self, Diagnostic, Severity};
 use essl::Shader;
 
+pub use precondition::{preconditions, Condition, Precondition, Term, UniformRef};
 pub use rules::{rule, Rule, RULES};
 
 /// What to do with a rule's findings.

@@ -8,6 +8,8 @@ mod normalize;
 mod pow;
 mod smoothstep;
 
+pub(crate) use normalize::orthogonal_cross;
+
 use std::collections::{HashMap, HashSet};
 
 use essl::diagnostic::Diagnostic;

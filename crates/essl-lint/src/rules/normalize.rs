@@ -123,7 +123,7 @@ fn check(cx: &Cx, out: &mut Vec<Diagnostic>) {
 /// Whether `h` is `cross(a, b)` of non-zero vectors where every value `a` (or `b`) can hold is
 /// itself a cross product with the other: perpendicular vectors, whose cross product is not
 /// zero (`up = normalize(cross(right, forward)); right = normalize(cross(up, forward))`).
-fn orthogonal_cross(cx: &Cx, f: &Function, id: usize, h: Handle<E>) -> bool {
+pub(crate) fn orthogonal_cross(cx: &Cx, f: &Function, id: usize, h: Handle<E>) -> bool {
     let r = resolve(f, &cx.sound, id, h);
     let E::Math {
         fun: Mf::Cross,
