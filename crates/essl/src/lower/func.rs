@@ -1989,6 +1989,49 @@ fn io_leaves(ty: &Type, structs: &[crate::types::StructDef]) -> Vec<(Vec<u32>, T
     out
 }
 
+/// The name and location binding of leaf `i` (of `count`) of an input or output `g` whose first
+/// location is `location`. `varying` says whether the value travels between the stages (a
+/// vertex output or a fragment input): then it is interpolated — perspective-correct, at the
+/// centroid for `centroid` — unless it is `flat` or not a float.
+fn io_binding(
+    g: &hir::Global,
+    count: usize,
+    i: usize,
+    leaf_ty: &Type,
+    location: u32,
+    varying: bool,
+) -> (String, naga::Binding) {
+    let flat = g.interpolation == Some(crate::ast::Interpolation::Flat)
+        || leaf_ty.scalar_kind() != Some(ScalarKind::Float);
+    let (interpolation, sampling) = match (varying, flat) {
+        (false, _) => (None, None),
+        (true, true) => (Some(naga::Interpolation::Flat), None),
+        (true, false) => (
+            Some(naga::Interpolation::Perspective),
+            Some(if g.centroid {
+                naga::Sampling::Centroid
+            } else {
+                naga::Sampling::Center
+            }),
+        ),
+    };
+    let name = if count > 1 {
+        format!("{}_{i}", g.name)
+    } else {
+        g.name.to_string()
+    };
+    (
+        name,
+        naga::Binding::Location {
+            location: location + i as u32,
+            interpolation,
+            sampling,
+            blend_src: None,
+            per_primitive: false,
+        },
+    )
+}
+
 /// Builds the entry point that wraps the shader's `main`.
 pub(crate) fn entry_point(
     cx: &mut ModuleCx,
@@ -2023,50 +2066,15 @@ pub(crate) fn entry_point(
             continue;
         };
         let leaves = io_leaves(&g.ty, &hir.structs);
-        let flat = g.interpolation == Some(crate::ast::Interpolation::Flat)
-            || g.ty.contains_kind(ScalarKind::Int, &hir.structs)
-            || g.ty.contains_kind(ScalarKind::Uint, &hir.structs);
         for (i, (path, leaf_ty)) in leaves.iter().enumerate() {
             let ty = fx.ty(leaf_ty);
-            let interpolation = if stage == Stage::Fragment {
-                Some(
-                    if flat || leaf_ty.scalar_kind() != Some(ScalarKind::Float) {
-                        naga::Interpolation::Flat
-                    } else {
-                        naga::Interpolation::Perspective
-                    },
-                )
-            } else {
-                None
-            };
-            let sampling = match interpolation {
-                Some(naga::Interpolation::Perspective) => Some(if g.centroid {
-                    naga::Sampling::Centroid
-                } else {
-                    naga::Sampling::Center
-                }),
-                Some(_) => None,
-                None => None,
-            };
+            let (name, binding) =
+                io_binding(g, leaves.len(), i, leaf_ty, loc, stage == Stage::Fragment);
             let arg = fx.f.arguments.len() as u32;
             fx.f.arguments.push(naga::FunctionArgument {
-                name: Some(format!(
-                    "{}{}",
-                    g.name,
-                    if leaves.len() > 1 {
-                        format!("_{i}")
-                    } else {
-                        String::new()
-                    }
-                )),
+                name: Some(name),
                 ty,
-                binding: Some(naga::Binding::Location {
-                    location: loc + i as u32,
-                    interpolation,
-                    sampling,
-                    blend_src: None,
-                    per_primitive: false,
-                }),
+                binding: Some(binding),
             });
             let value = fx.add(Expression::FunctionArgument(arg), sp);
             let mut p = fx.add(Expression::GlobalVariable(var), sp);
@@ -2204,9 +2212,6 @@ pub(crate) fn entry_point(
         let GlobalLower::Private(var) = fx.cx.globals[gi] else {
             continue;
         };
-        let flat = g.interpolation == Some(crate::ast::Interpolation::Flat)
-            || g.ty.contains_kind(ScalarKind::Int, &hir.structs)
-            || g.ty.contains_kind(ScalarKind::Uint, &hir.structs);
         let leaves = io_leaves(&g.ty, &hir.structs);
         for (i, (path, leaf_ty)) in leaves.iter().enumerate() {
             let ty = fx.ty(leaf_ty);
@@ -2215,40 +2220,12 @@ pub(crate) fn entry_point(
                 p = fx.access_index(p, k, sp);
             }
             let v = fx.add(Expression::Load { pointer: p }, sp);
-            let (interpolation, sampling) = if stage == Stage::Vertex {
-                if flat || leaf_ty.scalar_kind() != Some(ScalarKind::Float) {
-                    (Some(naga::Interpolation::Flat), None)
-                } else {
-                    (
-                        Some(naga::Interpolation::Perspective),
-                        Some(if g.centroid {
-                            naga::Sampling::Centroid
-                        } else {
-                            naga::Sampling::Center
-                        }),
-                    )
-                }
-            } else {
-                (None, None)
-            };
+            let (name, binding) =
+                io_binding(g, leaves.len(), i, leaf_ty, loc, stage == Stage::Vertex);
             members.push(naga::StructMember {
-                name: Some(format!(
-                    "{}{}",
-                    g.name,
-                    if leaves.len() > 1 {
-                        format!("_{i}")
-                    } else {
-                        String::new()
-                    }
-                )),
+                name: Some(name),
                 ty,
-                binding: Some(naga::Binding::Location {
-                    location: loc + i as u32,
-                    interpolation,
-                    sampling,
-                    blend_src: None,
-                    per_primitive: false,
-                }),
+                binding: Some(binding),
                 offset: 0,
             });
             values.push(v);
