@@ -45,6 +45,19 @@
 //!   from a placeholder). Non-mipmapped filters sample the base level with a maximum LOD of
 //!   0.25, Vulkan's way to keep the minification/magnification choice.
 
+//!
+//! # Validation of uniform values
+//!
+//! A debug mode that no WebGL implementation has: with [`Context::set_validation`] (or
+//! [`Context::with_validation`]) on, each draw checks the current program's uniform values
+//! against the hazards `essl-lint` finds in its shaders ([`essl_lint::preconditions`]) —
+//! `smoothstep(u_outerLimit, u_innerLimit, d)` with equal or swapped limits, a division by
+//! `u_innerLimit - u_outerLimit` with equal limits, `normalize` of a zero vector,
+//! `pow(x, u_shininess)` with `u_shininess <= 0`, a NaN anywhere — once per change of the values
+//! involved, and queues a [`ValidationWarning`] with the uniforms' names and the
+//! `file:line:col` of the expression at risk ([`Context::take_validation_warnings`]). Off (the
+//! default) it costs a draw one test of a flag; see `docs/runtime-checks.md`.
+
 #![warn(missing_docs)]
 
 pub mod gl;

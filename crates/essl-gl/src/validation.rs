@@ -20,7 +20,7 @@ use essl::program::{ProgramLayout, UniformStorage};
 use essl::source::{SourceFile, Span};
 use essl::types::GlType;
 use essl::Stage;
-use essl_lint::precondition::{Condition, Outcome, Precondition, UniformRef, Value};
+use essl_lint::precondition::{Condition, Outcome, Precision, Precondition, UniformRef, Value};
 
 use crate::context::Context;
 use crate::error::ContextError;
@@ -30,6 +30,9 @@ use crate::program::{find_uniform, uniform_shape, LinkedProgram};
 /// The most warnings the queue holds; later ones are counted
 /// ([`Context::validation_warnings_dropped`]) until it is read.
 pub const MAX_VALIDATION_WARNINGS: usize = 4096;
+
+/// The largest finite 16-bit float: what `mediump` holds on GPUs that compute it in 16 bits.
+const MEDIUMP_MAX: f32 = 65504.0;
 
 /// A place in a shader's source: the span of an expression, with its file name, 1-based line
 /// and column (in characters) and the text of that line. `Display` writes `file:line:col`.
@@ -87,8 +90,8 @@ pub struct ValidationWarning {
     /// The draw call that found it (`drawArrays`, `drawElements`, …).
     pub function: &'static str,
     /// The rule: an `essl-lint` rule id (`smoothstep-edges`, `division-by-difference`,
-    /// `normalize-zero`, `pow-zero-base`, …) or a runtime-only one (`division-by-zero`,
-    /// `non-finite-uniform`).
+    /// `normalize-zero`, `pow-zero-base`, `pow-negative-base`, `acos-domain`, `asin-domain`,
+    /// `mediump-overflow`) or a runtime-only one (`division-by-zero`, `non-finite-uniform`).
     pub rule: &'static str,
     /// The uniforms involved, as WebGL names them (`u_innerLimit`, `light.cutOff`,
     /// `spotLights[0].coneCos`).
@@ -225,8 +228,8 @@ struct Check {
     uniforms: Vec<(UniformRef, String, Slot)>,
     location: Option<SourceLocation>,
     call_sites: Vec<SourceLocation>,
-    /// The uniforms' bytes when last evaluated.
-    last: Option<Vec<u8>>,
+    /// The uniforms' bytes when last evaluated (empty: never).
+    last: Vec<u8>,
 }
 
 /// `non-finite-uniform`: the float words of one active uniform (one array element).
@@ -235,7 +238,11 @@ struct FiniteCheck {
     offsets: Vec<u32>,
     stage: Option<Stage>,
     location: Option<SourceLocation>,
-    last: Option<Vec<u32>>,
+    /// The first read of it in `mediump`/`lowp` arithmetic, if any.
+    mediump: Option<(Stage, Option<SourceLocation>)>,
+    /// The words when last checked (empty: never), and whether one was not finite.
+    last: Vec<u32>,
+    bad: bool,
 }
 
 /// The runtime checks of a linked program.
@@ -304,7 +311,7 @@ impl ProgramChecks {
                         .iter()
                         .filter_map(|s| location(p, *s))
                         .collect(),
-                    last: None,
+                    last: Vec::new(),
                 });
             }
         }
@@ -350,12 +357,21 @@ impl ProgramChecks {
                                 && matches!(&p.condition, Condition::Finite(r) if r.covers(&name))
                         })
                     });
+                let mediump = preconditions
+                    .iter()
+                    .find(|p| {
+                        p.precision == Precision::Low
+                            && matches!(&p.condition, Condition::Finite(r) if r.covers(&name))
+                    })
+                    .map(|p| (p.stage, location(p, p.span)));
                 finite.push(FiniteCheck {
                     name,
                     offsets,
                     stage: pre.map(|p| p.stage),
                     location: pre.and_then(|p| location(p, p.span)),
-                    last: None,
+                    mediump,
+                    last: Vec::new(),
+                    bad: false,
                 });
             }
         }
@@ -380,56 +396,83 @@ impl ProgramChecks {
             return;
         }
         self.version = Some(version);
+        let word = |o: u32| {
+            data.get(o as usize..o as usize + 4)
+                .map_or(0, |b| u32::from_ne_bytes([b[0], b[1], b[2], b[3]]))
+        };
         let mut not_finite: Vec<&str> = Vec::new();
         for fc in &mut self.finite {
-            let words: Vec<u32> = fc
-                .offsets
-                .iter()
-                .map(|&o| {
-                    data.get(o as usize..o as usize + 4)
-                        .map_or(0, |b| u32::from_ne_bytes([b[0], b[1], b[2], b[3]]))
-                })
-                .collect();
-            let bad: Vec<f32> = words
-                .iter()
-                .map(|w| f32::from_bits(*w))
-                .filter(|x| !x.is_finite())
-                .collect();
-            if !bad.is_empty() {
+            // Unchanged since the last check: nothing new (no allocation on this path).
+            let same = fc.last.len() == fc.offsets.len()
+                && fc.offsets.iter().zip(&fc.last).all(|(o, w)| word(*o) == *w);
+            if !same {
+                fc.last.clear();
+                fc.last.extend(fc.offsets.iter().map(|o| word(*o)));
+                let first_bad = fc
+                    .last
+                    .iter()
+                    .map(|w| f32::from_bits(*w))
+                    .find(|x| !x.is_finite());
+                fc.bad = first_bad.is_some();
+                if let Some(x) = first_bad {
+                    out.push(ValidationWarning {
+                        program,
+                        function,
+                        rule: essl_lint::precondition::NON_FINITE_UNIFORM,
+                        uniforms: vec![fc.name.clone()],
+                        message: format!(
+                            "`{}` holds {}: a NaN or infinite uniform value spreads through \
+                             everything computed from it",
+                            fc.name,
+                            if x.is_nan() { "NaN" } else { "an infinity" }
+                        ),
+                        stage: fc.stage,
+                        location: fc.location.clone(),
+                        call_sites: Vec::new(),
+                    });
+                } else if let Some((stage, location)) = &fc.mediump {
+                    let big = fc
+                        .last
+                        .iter()
+                        .map(|w| f32::from_bits(*w))
+                        .find(|x| x.abs() > MEDIUMP_MAX);
+                    if let Some(x) = big {
+                        out.push(ValidationWarning {
+                            program,
+                            function,
+                            rule: "mediump-overflow",
+                            uniforms: vec![fc.name.clone()],
+                            message: format!(
+                                "`{}` holds {x}, beyond the range of mediump (±65504): a GPU \
+                                 that computes mediump in 16 bits reads it as infinity",
+                                fc.name
+                            ),
+                            stage: Some(*stage),
+                            location: location.clone(),
+                            call_sites: Vec::new(),
+                        });
+                    }
+                }
+            }
+            if fc.bad {
                 not_finite.push(&fc.name);
-            }
-            if fc.last.as_ref() == Some(&words) {
-                continue;
-            }
-            fc.last = Some(words);
-            if let Some(x) = bad.first() {
-                out.push(ValidationWarning {
-                    program,
-                    function,
-                    rule: essl_lint::precondition::NON_FINITE_UNIFORM,
-                    uniforms: vec![fc.name.clone()],
-                    message: format!(
-                        "`{}` holds {}: a NaN or infinite uniform value spreads through \
-                         everything computed from it",
-                        fc.name,
-                        if x.is_nan() { "NaN" } else { "an infinity" }
-                    ),
-                    stage: fc.stage,
-                    location: fc.location.clone(),
-                    call_sites: Vec::new(),
-                });
             }
         }
         for c in &mut self.checks {
-            let bytes: Vec<u8> = c
-                .uniforms
-                .iter()
-                .flat_map(|(_, _, s)| s.words(data).iter().copied())
-                .collect();
-            if c.last.as_ref() == Some(&bytes) {
+            let mut at = 0;
+            let mut same = true;
+            for (_, _, s) in &c.uniforms {
+                let w = s.words(data);
+                same &= c.last.get(at..at + w.len()) == Some(w);
+                at += w.len();
+            }
+            if same && at == c.last.len() {
                 continue;
             }
-            c.last = Some(bytes);
+            c.last.clear();
+            for (_, _, s) in &c.uniforms {
+                c.last.extend_from_slice(s.words(data));
+            }
             // A NaN is reported as such, not as every comparison it breaks.
             if c.uniforms
                 .iter()
@@ -493,7 +536,8 @@ impl Context {
     /// `essl-lint` finds in its shaders ([`essl_lint::preconditions`]): equal or swapped
     /// `smoothstep` edges, a zero divisor, the zero vector (or parallel vectors under a cross
     /// product) given to `normalize`, a `pow` exponent ≤ 0 where the base can be 0, an `acos`
-    /// argument outside [-1, 1], a NaN or infinite value in any uniform. Each check runs when
+    /// argument outside [-1, 1], a NaN or infinite value in any uniform, a value beyond ±65504
+    /// in a uniform read in `mediump` arithmetic. Each check runs when
     /// the values it reads have changed since it last ran, so a bad value is reported once,
     /// at the first draw that uses it, not at every frame. Read the warnings with
     /// [`Context::take_validation_warnings`].

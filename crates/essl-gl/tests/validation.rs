@@ -725,3 +725,130 @@ fn the_preconditions_of_a_program() {
     let q = ctx.program_from_layout(common::solid(1.0, 0.0, 0.0));
     assert!(ctx.program_preconditions(q).is_empty());
 }
+
+#[test]
+fn mediump_range() {
+    let Some(mut ctx) = validating(8, 8) else {
+        return;
+    };
+    // Article 001's shader is `precision mediump float`; its vertex shader is highp.
+    let p = program(
+        &mut ctx,
+        "shaders-glsl/spot-linear.vert",
+        "crates/essl-lint/tests/articles/spot-linear.frag",
+    );
+    set(&mut ctx, p, "u_innerLimit", &[0.98]);
+    set(&mut ctx, p, "u_outerLimit", &[0.9]);
+    set(&mut ctx, p, "u_shininess", &[150.0]);
+    // 1e5 is a fine highp value.
+    set(&mut ctx, p, "u_lightWorldPosition", &[1e5, 0.0, 0.0]);
+    let ws = draw(&mut ctx);
+    assert!(ws.is_empty(), "{}", show(&ws));
+    set(&mut ctx, p, "u_shininess", &[1e5]);
+    let ws = draw(&mut ctx);
+    let w = expect(&ws, "mediump-overflow", &["u_shininess"], 31, "u_shininess");
+    assert!(w.message.contains("65504"), "{w}");
+    assert_eq!(ws.len(), 1, "{}", show(&ws));
+    // Equal limits that differ in highp but not in mediump.
+    set(&mut ctx, p, "u_shininess", &[150.0]);
+    set(&mut ctx, p, "u_innerLimit", &[0.9001]);
+    let ws = draw(&mut ctx);
+    let w = expect(&ws, "division-by-difference", &RANGE, 29, "/ limitRange");
+    assert!(
+        w.message.contains("0.9001") && w.message.contains("in mediump"),
+        "{w}"
+    );
+}
+
+#[test]
+fn arrays_of_structs_indexed_in_a_loop() {
+    let Some(mut ctx) = validating(8, 8) else {
+        return;
+    };
+    let vert = "#version 300 es\nin vec4 a_position;\nvoid main() { gl_Position = a_position; }\n";
+    let frag = "#version 300 es\nprecision highp float;\n\
+                struct Spot { vec3 direction; float inner; float outer; };\n\
+                uniform Spot u_spots[3];\nin vec3 v_dummy;\nout vec4 o;\n\
+                void main() {\n  float light = 0.0;\n\
+                \x20 for (int i = 0; i < 3; i++) {\n\
+                \x20   float d = dot(vec3(0.0, 0.0, -1.0), normalize(u_spots[i].direction));\n\
+                \x20   light += smoothstep(u_spots[i].outer, u_spots[i].inner, d);\n  }\n\
+                \x20 o = vec4(light);\n}\n";
+    let vert = vert
+        .replace(
+            "in vec4 a_position;\n",
+            "in vec4 a_position;\nout vec3 v_dummy;\n",
+        )
+        .replace(
+            "gl_Position = a_position;",
+            "gl_Position = a_position; v_dummy = a_position.xyz;",
+        );
+    let p = ctx.create_program();
+    for (ty, text, name) in [
+        (gl::VERTEX_SHADER, vert.as_str(), "spots.vert"),
+        (gl::FRAGMENT_SHADER, frag, "spots.frag"),
+    ] {
+        let sh = ctx.create_shader(ty).expect("a shader");
+        ctx.set_shader_name(sh, name);
+        ctx.shader_source(sh, text);
+        ctx.compile_shader(sh);
+        assert!(
+            ctx.get_shader_compile_status(sh),
+            "{:?}",
+            ctx.get_shader_info_log(sh)
+        );
+        ctx.attach_shader(p, sh);
+    }
+    ctx.link_program(p);
+    assert!(
+        ctx.get_program_link_status(p),
+        "{:?}",
+        ctx.get_program_info_log(p)
+    );
+    ctx.use_program(Some(p));
+    let conds: Vec<String> = ctx
+        .program_preconditions(p)
+        .iter()
+        .filter(|p| p.rule != "non-finite-uniform")
+        .map(|p| p.condition.to_string())
+        .collect();
+    assert_eq!(
+        conds,
+        [
+            "length(u_spots[*].direction) > 0",
+            "u_spots[*].outer < u_spots[*].inner"
+        ]
+    );
+    for i in 0..3 {
+        set(
+            &mut ctx,
+            p,
+            &format!("u_spots[{i}].direction"),
+            &[0.0, 0.0, -1.0],
+        );
+        set(&mut ctx, p, &format!("u_spots[{i}].inner"), &[0.98]);
+        set(&mut ctx, p, &format!("u_spots[{i}].outer"), &[0.9]);
+    }
+    let ws = draw(&mut ctx);
+    assert!(ws.is_empty(), "{}", show(&ws));
+    // Element 1's limits equal, element 2's direction zero: each named with its index.
+    set(&mut ctx, p, "u_spots[1].outer", &[0.98]);
+    set(&mut ctx, p, "u_spots[2].direction", &[0.0, 0.0, 0.0]);
+    let ws = draw(&mut ctx);
+    let w = expect(
+        &ws,
+        "smoothstep-edges",
+        &["u_spots[1].outer", "u_spots[1].inner"],
+        11,
+        "smoothstep(u_spots[i].outer",
+    );
+    assert!(w.message.contains("`u_spots[1].outer` = 0.98"), "{w}");
+    expect(
+        &ws,
+        "normalize-zero",
+        &["u_spots[2].direction"],
+        10,
+        "normalize(u_spots[i].direction)",
+    );
+    assert_eq!(ws.len(), 2, "{}", show(&ws));
+}

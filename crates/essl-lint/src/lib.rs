@@ -22,6 +22,11 @@
 //!
 //! Every finding is a warning unless [`LintOptions`] denies its rule (or the whole set, `all`);
 //! a comment `// essl-allow: RULE` on the line of the finding or on the line before silences it.
+//!
+//! What the rules cannot decide statically because it depends on uniform values — equal
+//! `smoothstep` edges, a zero `u_lightDirection` given to `normalize`, `u_shininess <= 0` —
+//! [`preconditions`] exports as conditions on the uniforms ([`precondition`]), for a renderer
+//! to check with the values it draws with (`essl-gl`'s validation mode).
 
 #![warn(missing_docs)]
 
