@@ -654,12 +654,19 @@ impl Linker<'_> {
                     .any(|(a, b)| !same_type(&a.1, &vm.structs, &b.1, &fm.structs));
             let layout_differs = vb.layout != fb.layout
                 || vb.members.iter().zip(&fb.members).any(|(a, b)| a.3 != b.3);
+            let precision_differs = vb
+                .members
+                .iter()
+                .zip(&fb.members)
+                .any(|(a, b)| !same_precision(&a.1, a.2, &vm.structs, &b.1, b.2, &fm.structs));
             let (what, code) = if names_differ {
                 ("Field names", "block-member-mismatch")
             } else if types_differ {
                 ("Types", "block-type-mismatch")
             } else if layout_differs {
                 ("Layout qualifiers", "block-layout-mismatch")
+            } else if precision_differs {
+                ("Precisions", "block-precision-mismatch")
             } else {
                 continue;
             };

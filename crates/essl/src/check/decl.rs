@@ -732,7 +732,8 @@ impl Checker<'_> {
         span: Span,
     ) {
         self.check_qualifier_list(qualifiers);
-        let mut layout = hir::BlockLayout::Shared;
+        // WebGL2 has only std140: a block without a layout qualifier is std140.
+        let mut layout = hir::BlockLayout::Std140;
         let mut block_row_major = false;
         for (q, s) in qualifiers {
             match q {
