@@ -5,6 +5,7 @@
 //! - [`lint`]: `essl lint` — check shaders and programs ([`files`] finds them, [`fix`] applies
 //!   certain fixes, [`output`] prints the results as text or JSON Lines).
 //! - [`conformance`]: `essl conformance` — score the front end on the conformance corpora.
+//! - [`report`]: `essl report` — the light shaders' error against run time on essl-gl.
 
 #![warn(missing_docs)]
 
@@ -14,4 +15,5 @@ pub mod fix;
 pub mod lint;
 pub mod output;
 pub mod render;
+pub mod report;
 pub mod rules;

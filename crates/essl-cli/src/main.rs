@@ -36,6 +36,20 @@ enum Command {
         #[arg(long, default_value_t = 0, value_name = "N")]
         times: usize,
     },
+    /// Measure the light shaders (essl-lights) through essl's WebGL2 API: error against the
+    /// float64 reference and time per frame for each variant; write report.md, report.svg, the
+    /// pictures and (full run) the GPU stiff section of stability.md.
+    Report {
+        /// The folder to write into.
+        #[arg(long, default_value = "docs", value_name = "DIR")]
+        out: std::path::PathBuf,
+        /// A short run (small images, few frames, fewer variants, no stiff matrix).
+        #[arg(long)]
+        quick: bool,
+        /// The shared seed scenes (for the specialised-vs-uber part).
+        #[arg(long, default_value = "../shared/scenes", value_name = "DIR")]
+        scenes: std::path::PathBuf,
+    },
     /// List the lint rules, or show one rule's documentation.
     Rules {
         /// A rule id (`pow-negative-base`…).
@@ -219,6 +233,7 @@ fn main() -> ExitCode {
             link: !args.no_link,
             rules,
         }),
+        Command::Report { out, quick, scenes } => essl_cli::report::run(&out, quick, &scenes),
         Command::Conformance(args) => {
             essl_cli::conformance::run(&args.corpora, args.markdown.as_deref(), args.failures)
         }

@@ -120,6 +120,18 @@ pub enum LightsError {
         /// Second image's height.
         b_height: u32,
     },
+    /// essl-gl could not render (no Vulkan adapter, a shader that does not compile, a GL
+    /// error); the message is essl-gl's.
+    #[error("gpu: {0}")]
+    Gpu(String),
+    /// Writing a report file failed.
+    #[error("{path}: {message}")]
+    Io {
+        /// The file.
+        path: String,
+        /// What went wrong.
+        message: String,
+    },
     /// An error of the scene format crate.
     #[error(transparent)]
     Scene(#[from] std::sync::Arc<essl_scene::SceneError>),

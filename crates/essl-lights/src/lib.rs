@@ -20,6 +20,12 @@
 //!   binary16 and the stiff-case matrix of `docs/stability.md`.
 //! - [`bridge`]: a lit scene on a base scene's geometry as an [`essl_scene::Scene`] (and its
 //!   JSON), for renderers of scene files; [`presets`]: the shared seed scenes as lit scenes.
+//! - On the GPU (essl-gl: WebGL2's API on wgpu): [`gpu`] draws programs, times frames and
+//!   makes the NaN probe of a program (an RGBA8 target cannot show NaN); [`seed_glsl`] writes the
+//!   seeds' formulas as GLSL programs on the library's interface; [`gpu_stiff`] draws the
+//!   stiff-case matrix with both (`docs/stability.md`, "The matrix on the GPU"); [`report`]
+//!   measures error against run time for shading, tessellation, edge profiles, precision,
+//!   projector coordinates and specialised-vs-uber programs (`essl report`, `docs/report.md`).
 //!
 //! ```
 //! use essl_lights::*;
@@ -69,13 +75,17 @@ pub mod bridge;
 pub mod error;
 pub mod formulas;
 pub mod glsl;
+pub mod gpu;
+pub mod gpu_stiff;
 pub mod ideal;
 pub mod names;
 pub mod presets;
 pub mod program;
 pub mod real;
 pub mod reference;
+pub mod report;
 pub mod scene;
+pub mod seed_glsl;
 pub mod seeds;
 pub mod specialise;
 pub mod stiff;

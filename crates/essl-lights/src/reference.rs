@@ -260,6 +260,186 @@ pub fn compare_rgba8(
     })
 }
 
+/// A reference *band*: per pixel the lowest and highest value, clamped to [0, 1], of a set of
+/// float64 renders of one picture (cone cosines moved by a few float32 ulps, rays moved by a
+/// fraction of a pixel), with the coverage of the first render. Where the model is continuous
+/// the band is a point; across a hard edge (a step spot edge, `inner == outer`) it spans both
+/// sides for the pixels that a float32 GPU may legitimately put on either side.
+#[derive(Clone, Debug, PartialEq)]
+pub struct BandImage {
+    /// Width.
+    pub width: u32,
+    /// Height.
+    pub height: u32,
+    /// The lowest value of each pixel, RGBA, top row first.
+    pub lo: Vec<DVec4>,
+    /// The highest value of each pixel.
+    pub hi: Vec<DVec4>,
+    /// The coverage of the first render (the unmoved one).
+    pub coverage: Vec<bool>,
+}
+
+impl BandImage {
+    /// The band of `images` (all of one size; the first gives the coverage). Panics when
+    /// `images` is empty or the sizes differ.
+    pub fn from_images(images: &[RefImage]) -> BandImage {
+        let first = &images[0];
+        let clamp = |v: DVec4| v.clamp(DVec4::ZERO, DVec4::ONE);
+        let mut lo: Vec<DVec4> = first.pixels.iter().map(|&v| clamp(v)).collect();
+        let mut hi = lo.clone();
+        for img in &images[1..] {
+            assert_eq!((img.width, img.height), (first.width, first.height));
+            for (i, &v) in img.pixels.iter().enumerate() {
+                lo[i] = lo[i].min(clamp(v));
+                hi[i] = hi[i].max(clamp(v));
+            }
+        }
+        BandImage {
+            width: first.width,
+            height: first.height,
+            lo,
+            hi,
+            coverage: first.coverage.clone(),
+        }
+    }
+
+    /// A band of one image (a point per pixel).
+    pub fn point(image: &RefImage) -> BandImage {
+        BandImage::from_images(std::slice::from_ref(image))
+    }
+
+    /// The coverage as a [`RefImage`] of the band's midpoint (for [`RefImage::silhouette_mask`]
+    /// and pictures).
+    pub fn midpoint(&self) -> RefImage {
+        RefImage {
+            width: self.width,
+            height: self.height,
+            pixels: self
+                .lo
+                .iter()
+                .zip(&self.hi)
+                .map(|(a, b)| (*a + *b) * 0.5)
+                .collect(),
+            coverage: self.coverage.clone(),
+        }
+    }
+}
+
+/// The band of `shaders` (each a float64 shader of the same picture, e.g. the model with its
+/// cone cosines moved) rendered with every ray offset of `offsets` (pixels; include
+/// `DVec2::ZERO` first for the coverage).
+pub fn band(
+    scene: &Scene,
+    shaders: &[&dyn RefShader],
+    offsets: &[DVec2],
+    geometry: Geometry,
+) -> Result<BandImage, LightsError> {
+    let mut images = Vec::with_capacity(shaders.len() * offsets.len());
+    for &o in offsets {
+        for s in shaders {
+            images.push(render_offset(scene, *s, geometry, o)?);
+        }
+    }
+    if images.is_empty() {
+        return Err(LightsError::Reference(
+            "a band needs a shader and an offset".into(),
+        ));
+    }
+    Ok(BandImage::from_images(&images))
+}
+
+/// Compares a GPU image with a reference band, in 1/255 units: per channel the distance of
+/// the byte from `[255 · lo, 255 · hi]` (0 inside), so rounding alone costs up to 0.5. The
+/// silhouette mask is the band's coverage's ([`RefImage::silhouette_mask`], radius 1).
+pub fn compare_band(
+    gpu: &RgbaImage,
+    band: &BandImage,
+    options: CompareOptions,
+) -> Result<RefDiff, LightsError> {
+    compare_band_excluding(gpu, band, options, &[])
+}
+
+/// [`compare_band`] leaving out, besides the silhouettes, the pixels where `exclude` is true
+/// (e.g. those a NaN probe flagged; an empty slice excludes none).
+pub fn compare_band_excluding(
+    gpu: &RgbaImage,
+    band: &BandImage,
+    options: CompareOptions,
+    exclude: &[bool],
+) -> Result<RefDiff, LightsError> {
+    if gpu.width != band.width || gpu.height != band.height {
+        return Err(LightsError::SizeMismatch {
+            a_width: gpu.width,
+            a_height: gpu.height,
+            b_width: band.width,
+            b_height: band.height,
+        });
+    }
+    let mut mask = if options.ignore_silhouettes {
+        band.midpoint().silhouette_mask(1)
+    } else {
+        vec![false; band.lo.len()]
+    };
+    for (m, &e) in mask.iter_mut().zip(exclude) {
+        *m |= e;
+    }
+    let (mut compared, mut ignored, mut over, mut sum2) = (0usize, 0usize, 0usize, 0.0f64);
+    let (mut max, mut worst) = (0.0f64, None);
+    let mut per_pixel = Vec::with_capacity(band.lo.len());
+    for (i, &masked) in mask.iter().enumerate() {
+        if masked {
+            ignored += 1;
+            continue;
+        }
+        compared += 1;
+        let mut px = 0.0f64;
+        for c in 0..4 {
+            let (lo, hi) = (band.lo[i][c] * 255.0, band.hi[i][c] * 255.0);
+            let g = f64::from(gpu.data[4 * i + c]);
+            let e = if lo.is_nan() || hi.is_nan() {
+                f64::INFINITY
+            } else {
+                (lo - g).max(g - hi).max(0.0)
+            };
+            sum2 += e * e;
+            px = px.max(e);
+        }
+        per_pixel.push(px);
+        if px > 1.0 {
+            over += 1;
+        }
+        if worst.is_none() || px > max {
+            max = px;
+            let w = band.width as usize;
+            worst = Some(((i % w) as u32, (i / w) as u32));
+        }
+    }
+    per_pixel.sort_by(|a, b| a.total_cmp(b));
+    let p99 = if per_pixel.is_empty() {
+        0.0
+    } else {
+        per_pixel[((per_pixel.len() - 1) as f64 * 0.99).round() as usize]
+    };
+    Ok(RefDiff {
+        compared,
+        ignored,
+        max,
+        rms: if compared == 0 {
+            0.0
+        } else {
+            (sum2 / (compared as f64 * 4.0)).sqrt()
+        },
+        p99,
+        over_one: over,
+        over_one_percent: if compared == 0 {
+            0.0
+        } else {
+            100.0 * over as f64 / compared as f64
+        },
+        worst,
+    })
+}
+
 /// A picture of the error: black where within 1/255, then blue (≤ 2), yellow (≤ 8), red
 /// (more), grey where left out.
 pub fn error_image(
@@ -380,6 +560,19 @@ pub fn render(
     shader: &dyn RefShader,
     geometry: Geometry,
 ) -> Result<RefImage, LightsError> {
+    render_offset(scene, shader, geometry, DVec2::ZERO)
+}
+
+/// [`render`] with every ray moved by `offset` pixels from the pixel centre (x right, y down),
+/// `gl_FragCoord` left at the centre: the picture a rasteriser draws when it snaps the
+/// vertices by `-offset` (lavapipe snaps window coordinates to 1/256 pixel). The reference
+/// bands of [`band`] use it.
+pub fn render_offset(
+    scene: &Scene,
+    shader: &dyn RefShader,
+    geometry: Geometry,
+    offset: DVec2,
+) -> Result<RefImage, LightsError> {
     let (w, h) = (scene.width(), scene.height());
     let mvp = mat(&scene.matrices.model_view_projection);
     let inv = mvp.inverse();
@@ -400,8 +593,8 @@ pub fn render(
         coverage: vec![false; (w * h) as usize],
     };
     let ray = |x: u32, row: u32| -> (DVec3, DVec3) {
-        let ndc_x = 2.0 * (f64::from(x) + 0.5) / f64::from(w) - 1.0;
-        let win_y = f64::from(h - 1 - row) + 0.5;
+        let ndc_x = 2.0 * (f64::from(x) + 0.5 + offset.x) / f64::from(w) - 1.0;
+        let win_y = f64::from(h - 1 - row) + 0.5 - offset.y;
         let ndc_y = 2.0 * win_y / f64::from(h) - 1.0;
         let a = inv * DVec4::new(ndc_x, ndc_y, -1.0, 1.0);
         let b = inv * DVec4::new(ndc_x, ndc_y, 1.0, 1.0);
@@ -474,12 +667,12 @@ fn render_mesh(
     for (ti, t) in tris.iter().enumerate() {
         let mut lo = DVec2::splat(f64::INFINITY);
         let mut hi = DVec2::splat(f64::NEG_INFINITY);
-        let mut behind = false;
+        let mut behind = 0;
         for &i in &t.idx {
             let c = *mvp * verts[i].position.extend(1.0);
             if c.w <= 0.0 {
-                behind = true;
-                break;
+                behind += 1;
+                continue;
             }
             let win = DVec2::new(
                 (c.x / c.w + 1.0) * 0.5 * f64::from(w),
@@ -488,7 +681,11 @@ fn render_mesh(
             lo = lo.min(win);
             hi = hi.max(win);
         }
-        let (x0, x1, y0, y1) = if behind {
+        if behind == 3 {
+            // Wholly behind the eye: clipped away.
+            continue;
+        }
+        let (x0, x1, y0, y1) = if behind > 0 {
             (0, tw - 1, 0, th - 1)
         } else {
             if hi.x < -1.0 || hi.y < -1.0 || lo.x > f64::from(w) + 1.0 || lo.y > f64::from(h) + 1.0
@@ -727,6 +924,8 @@ pub struct LitShader {
     normal: glam::DMat3,
     eye: DVec3,
     inv_viewport: DVec2,
+    shift: f64,
+    offset: DVec3,
 }
 
 impl LitShader {
@@ -746,7 +945,24 @@ impl LitShader {
             normal: glam::DMat3::from_cols_array(&nm),
             eye: DVec3::from_array(view.matrices.eye),
             inv_viewport: DVec2::from_array(inv_viewport),
+            shift: 0.0,
+            offset: DVec3::ZERO,
         })
+    }
+
+    /// The same shader with every world position moved by `offset` before lighting (the
+    /// reference band of a float32 GPU's interpolated position near a singular point, such as a
+    /// light on the surface).
+    pub fn with_offset(mut self, offset: DVec3) -> LitShader {
+        self.offset = offset;
+        self
+    }
+
+    /// The same shader with both cone cosines of every spot light moved by `shift` (the
+    /// reference band of a hard edge: see [`band`] and [`crate::stiff::BAND`]).
+    pub fn with_shift(mut self, shift: f64) -> LitShader {
+        self.shift = shift;
+        self
     }
 
     fn cookie(&self, i: usize, uv: DVec2) -> DVec3 {
@@ -766,7 +982,7 @@ impl LitShader {
 
 impl RefShader for LitShader {
     fn vertex(&self, v: &VertexIn) -> Vec<f64> {
-        let p = (self.model * v.position.extend(1.0)).truncate();
+        let p = (self.model * v.position.extend(1.0)).truncate() + self.offset;
         let n = self.normal * v.normal;
         match self.scene.shading {
             crate::Shading::Phong => vec![p.x, p.y, p.z, n.x, n.y, n.z],
@@ -783,7 +999,7 @@ impl RefShader for LitShader {
                     &s,
                     &|i, uv| self.cookie(i, uv),
                     self.inv_viewport,
-                    0.0,
+                    self.shift,
                     true,
                 );
                 let mut out = t.base.to_array().to_vec();
@@ -805,13 +1021,16 @@ impl RefShader for LitShader {
                     eye: self.eye,
                     frag_coord: f.frag_coord,
                 };
-                crate::ideal::color(
+                crate::ideal::terms(
                     &self.scene,
                     &self.prepared,
                     &s,
                     &|i, uv| self.cookie(i, uv),
                     self.inv_viewport,
+                    self.shift,
+                    false,
                 )
+                .base
             }
             crate::Shading::Gouraud => {
                 let mut c = DVec3::new(v[0], v[1], v[2]);

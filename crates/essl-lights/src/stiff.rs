@@ -364,8 +364,10 @@ pub struct Setup {
     pub viewport: [f64; 2],
 }
 
-const LIGHT_SPOT: DVec3 = DVec3::new(0.0, 100.0, 0.0);
-const EYE: DVec3 = DVec3::new(0.0, 140.0, 70.0);
+/// Where the matrix's spot lights are (pointing down, −y).
+pub const LIGHT_SPOT: DVec3 = DVec3::new(0.0, 100.0, 0.0);
+/// Where the matrix's plane samples are seen from.
+pub const EYE: DVec3 = DVec3::new(0.0, 140.0, 70.0);
 
 fn material(shininess: f64) -> Material {
     Material {
