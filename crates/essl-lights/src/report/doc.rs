@@ -221,7 +221,8 @@ fn edge_section(report: &Report, out: &mut String) {
          shading, 8×8 grid). The step is discontinuous: its reference is a band (cone cosines \
          moved by ±2⁻²², rays by ±1/256 pixel, as lavapipe snaps vertices to 1/256 pixel), so \
          a pixel whose centre lies within rounding of the edge counts as right on either side. \
-         The three programs differ by one line of the fragment shader.\n\n",
+         The three programs differ only in the edge computation (`step`, or a clamped ramp with \
+         a CPU-computed slope, smoothed or not).\n\n",
     );
     for r in rows {
         let _ = writeln!(
@@ -514,10 +515,12 @@ pub fn markdown(report: &Report) -> String {
     let _ = writeln!(
         out,
         "**Method.** Each variant is a lit scene on a geometry drawn by one program through \
-         essl-gl's WebGL2 API. *Error*: the picture at {0}×{0} against the float64 reference \
-         of the library's light model (`reference::render`, the same mesh and interpolation; \
-         a band across hard edges), in 1/255 units per channel — the largest (max), the RMS \
-         over all channels, and the pixels more than 1/255 off. **Mask**: pixels within 1 \
+         essl-gl's WebGL2 API. *Error*: the picture at {0}×{0} against the float64 reference: \
+         the library's light model evaluated at every pixel of the same mesh, positions and \
+         normals interpolated as GL interpolates them (`reference::render`; a band across hard \
+         edges), so a Gouraud picture's interpolated colours are part of its error. In 1/255 \
+         units per channel, the 8-bit rounding alone costing up to 0.5: the largest (max), the \
+         RMS over all channels, and the pixels more than 1/255 off. **Mask**: pixels within 1 \
          pixel (Chebyshev) of a coverage change of the reference (silhouettes) are left out. \
          *NaN px*: fragments the NaN probe flags (the program with its output replaced by a \
          flag when the colour or a texture coordinate is NaN or infinite; an RGBA8 target \
