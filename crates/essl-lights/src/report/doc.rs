@@ -340,8 +340,8 @@ fn projector_section(report: &Report, out: &mut String) {
         );
         if lin.error.max > 1.0 && near.error.max <= 1.0 {
             out.push_str(
-                ": the excess over 1/255 is lavapipe's bilinear filter (fixed-point weights) \
-                 against exact bilinear interpolation, not the coordinates",
+                ": the excess over 1/255 is lavapipe's bilinear filter against exact \
+                 bilinear interpolation, not the coordinates",
             );
         }
         out.push_str(".\n");
