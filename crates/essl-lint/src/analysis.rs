@@ -636,7 +636,7 @@ impl Analysis {
         polarity: bool,
     ) -> Vec<(Handle<E>, Refinement)> {
         let mut out = Vec::new();
-        self.collect_conditions(f, id, condition, polarity, &mut out, 0);
+        self.collect_conditions(f, id, condition, polarity, &mut out);
         out
     }
 
@@ -647,84 +647,72 @@ impl Analysis {
         c: Handle<E>,
         polarity: bool,
         out: &mut Vec<(Handle<E>, Refinement)>,
-        depth: u32,
     ) {
-        if depth > 8 {
+        condition_atoms(f, c, polarity, &mut |atom, polarity| {
+            self.atom_refinements(f, id, atom, polarity, out)
+        });
+    }
+
+    /// The refinements one comparison implies when it holds (`polarity`) or fails.
+    fn atom_refinements(
+        &self,
+        f: &Function,
+        id: usize,
+        c: Handle<E>,
+        polarity: bool,
+        out: &mut Vec<(Handle<E>, Refinement)>,
+    ) {
+        let E::Binary { op, left, right } = f.expressions[c] else {
             return;
-        }
-        match f.expressions[c] {
-            E::Unary {
-                op: Uo::LogicalNot,
-                expr,
-            } => self.collect_conditions(f, id, expr, !polarity, out, depth + 1),
-            E::Binary {
-                op: Bo::LogicalAnd,
-                left,
-                right,
-            } if polarity => {
-                self.collect_conditions(f, id, left, true, out, depth + 1);
-                self.collect_conditions(f, id, right, true, out, depth + 1);
+        };
+        for (x, bound, x_left) in [(left, right, true), (right, left, false)] {
+            let Some(b) = self.nm(id, bound).filter(|n| n.n == 1) else {
+                continue;
+            };
+            let Some(i) = relation(op, polarity, x_left, b.c[0]) else {
+                continue;
+            };
+            if self.nm(id, x).is_some_and(|n| n.n == 1) {
+                out.push((x, Refinement::Value(i)));
             }
-            E::Binary {
-                op: Bo::LogicalOr,
-                left,
-                right,
-            } if !polarity => {
-                self.collect_conditions(f, id, left, false, out, depth + 1);
-                self.collect_conditions(f, id, right, false, out, depth + 1);
-            }
-            E::Binary { op, left, right } => {
-                for (x, bound, x_left) in [(left, right, true), (right, left, false)] {
-                    let Some(b) = self.nm(id, bound).filter(|n| n.n == 1) else {
-                        continue;
-                    };
-                    let Some(i) = relation(op, polarity, x_left, b.c[0]) else {
-                        continue;
-                    };
-                    if self.nm(id, x).is_some_and(|n| n.n == 1) {
-                        out.push((x, Refinement::Value(i)));
-                    }
-                    // `length(v) > c`, `dot(v, v) > c`: a bound on the length of `v`;
-                    // `abs(y) <= c`: a bound on `y`.
-                    match f.expressions[x] {
-                        E::Math {
-                            fun: Mf::Abs, arg, ..
-                        } if i.hi.is_finite() && self.nm(id, arg).is_some_and(|n| n.n == 1) => {
-                            out.push((
-                                arg,
-                                Refinement::Value(Interval {
-                                    lo: -i.hi,
-                                    hi: i.hi,
-                                }),
-                            ));
-                        }
-                        E::Math {
-                            fun: Mf::Length,
+            // `length(v) > c`, `dot(v, v) > c`: a bound on the length of `v`;
+            // `abs(y) <= c`: a bound on `y`.
+            match f.expressions[x] {
+                E::Math {
+                    fun: Mf::Abs, arg, ..
+                } if i.hi.is_finite() && self.nm(id, arg).is_some_and(|n| n.n == 1) => {
+                    out.push((
+                        arg,
+                        Refinement::Value(Interval {
+                            lo: -i.hi,
+                            hi: i.hi,
+                        }),
+                    ));
+                }
+                E::Math {
+                    fun: Mf::Length,
+                    arg,
+                    ..
+                } => out.push((arg, Refinement::Norm(i.meet(Interval::NON_NEGATIVE)))),
+                E::Math {
+                    fun: Mf::Dot,
+                    arg,
+                    arg1: Some(b2),
+                    ..
+                } if self.same(f, id, arg, b2) => {
+                    let sq = i.meet(Interval::NON_NEGATIVE);
+                    if !sq.is_empty() {
+                        out.push((
                             arg,
-                            ..
-                        } => out.push((arg, Refinement::Norm(i.meet(Interval::NON_NEGATIVE)))),
-                        E::Math {
-                            fun: Mf::Dot,
-                            arg,
-                            arg1: Some(b2),
-                            ..
-                        } if self.same(f, id, arg, b2) => {
-                            let sq = i.meet(Interval::NON_NEGATIVE);
-                            if !sq.is_empty() {
-                                out.push((
-                                    arg,
-                                    Refinement::Norm(Interval {
-                                        lo: sq.lo.sqrt(),
-                                        hi: sq.hi.sqrt(),
-                                    }),
-                                ));
-                            }
-                        }
-                        _ => {}
+                            Refinement::Norm(Interval {
+                                lo: sq.lo.sqrt(),
+                                hi: sq.hi.sqrt(),
+                            }),
+                        ));
                     }
                 }
+                _ => {}
             }
-            _ => {}
         }
     }
 
@@ -739,6 +727,52 @@ impl Analysis {
             .collect();
         Val::Num(refine_num(n, &rs))
     }
+}
+
+/// Calls `visit(atom, polarity)` for each comparison a condition implies when it holds
+/// (`polarity`) or when it fails (`!polarity`): through `!`, through `&&` when it holds and
+/// through `||` when it fails (a bounded depth: conditions are small).
+pub(crate) fn condition_atoms(
+    f: &Function,
+    c: Handle<E>,
+    polarity: bool,
+    visit: &mut dyn FnMut(Handle<E>, bool),
+) {
+    fn walk(
+        f: &Function,
+        c: Handle<E>,
+        polarity: bool,
+        visit: &mut dyn FnMut(Handle<E>, bool),
+        depth: u32,
+    ) {
+        if depth > 8 {
+            return;
+        }
+        match f.expressions[c] {
+            E::Unary {
+                op: Uo::LogicalNot,
+                expr,
+            } => walk(f, expr, !polarity, visit, depth + 1),
+            E::Binary {
+                op: Bo::LogicalAnd,
+                left,
+                right,
+            } if polarity => {
+                walk(f, left, true, visit, depth + 1);
+                walk(f, right, true, visit, depth + 1);
+            }
+            E::Binary {
+                op: Bo::LogicalOr,
+                left,
+                right,
+            } if !polarity => {
+                walk(f, left, false, visit, depth + 1);
+                walk(f, right, false, visit, depth + 1);
+            }
+            _ => visit(c, polarity),
+        }
+    }
+    walk(f, c, polarity, visit, 0);
 }
 
 /// The length of `a ± b` from the lengths of `a` and `b`.

@@ -17,7 +17,6 @@ use essl::source::{SourceFile, Span};
 use essl::Shader;
 use naga::{
     BinaryOperator as Bo, Block, Expression as E, Function, Handle, MathFunction as Mf, Statement,
-    UnaryOperator as Uo,
 };
 
 use crate::analysis::{self, refine_num, relation, Analysis, Mode, Refinement};
@@ -524,94 +523,62 @@ impl Cx<'_> {
         let mut g = Guards::default();
         for (c, pol) in conds {
             g.facts.extend(self.sound.conditions(f, id, c, pol));
-            self.relations(f, id, c, pol, &mut g, 0);
+            self.relations(f, id, c, pol, &mut g);
         }
         g
     }
 
-    fn relations(
-        &self,
-        f: &Function,
-        id: usize,
-        c: Handle<E>,
-        pol: bool,
-        g: &mut Guards,
-        depth: u32,
-    ) {
-        if depth > 8 {
+    fn relations(&self, f: &Function, id: usize, c: Handle<E>, pol: bool, g: &mut Guards) {
+        crate::analysis::condition_atoms(f, c, pol, &mut |atom, pol| {
+            self.atom_relations(f, id, atom, pol, g)
+        });
+    }
+
+    /// What one comparison says when it holds (`pol`) or fails: an ordering, a non-zero value.
+    fn atom_relations(&self, f: &Function, id: usize, c: Handle<E>, pol: bool, g: &mut Guards) {
+        let E::Binary { op, left, right } = f.expressions[c] else {
+            return;
+        };
+        let op = if pol {
+            op
+        } else {
+            match op {
+                Bo::Less => Bo::GreaterEqual,
+                Bo::LessEqual => Bo::Greater,
+                Bo::Greater => Bo::LessEqual,
+                Bo::GreaterEqual => Bo::Less,
+                Bo::Equal => Bo::NotEqual,
+                Bo::NotEqual => Bo::Equal,
+                other => other,
+            }
+        };
+        if !matches!(
+            op,
+            Bo::Less | Bo::LessEqual | Bo::Greater | Bo::GreaterEqual | Bo::Equal | Bo::NotEqual
+        ) {
             return;
         }
-        match f.expressions[c] {
-            E::Unary {
-                op: Uo::LogicalNot,
-                expr,
-            } => self.relations(f, id, expr, !pol, g, depth + 1),
-            E::Binary {
-                op: Bo::LogicalAnd,
-                left,
-                right,
-            } if pol => {
-                self.relations(f, id, left, true, g, depth + 1);
-                self.relations(f, id, right, true, g, depth + 1);
-            }
-            E::Binary {
-                op: Bo::LogicalOr,
-                left,
-                right,
-            } if !pol => {
-                self.relations(f, id, left, false, g, depth + 1);
-                self.relations(f, id, right, false, g, depth + 1);
-            }
-            E::Binary { op, left, right } => {
-                let op = if pol {
-                    op
-                } else {
-                    match op {
-                        Bo::Less => Bo::GreaterEqual,
-                        Bo::LessEqual => Bo::Greater,
-                        Bo::Greater => Bo::LessEqual,
-                        Bo::GreaterEqual => Bo::Less,
-                        Bo::Equal => Bo::NotEqual,
-                        Bo::NotEqual => Bo::Equal,
-                        other => other,
-                    }
-                };
-                if !matches!(
-                    op,
-                    Bo::Less
-                        | Bo::LessEqual
-                        | Bo::Greater
-                        | Bo::GreaterEqual
-                        | Bo::Equal
-                        | Bo::NotEqual
-                ) {
-                    return;
+        g.relations.push((op, left, right));
+        // `x != 0.0`, `abs(x) > c ≥ 0`, `x > c ≥ 0`, `x < c ≤ 0`: x is not 0.
+        for (x, b, x_left) in [(left, right, true), (right, left, false)] {
+            let Some(bound) = self.sound.num(id, b).filter(|n| n.n == 1).map(|n| n.c[0]) else {
+                continue;
+            };
+            let Some(rel) = relation(op, true, x_left, bound) else {
+                if op == Bo::NotEqual && bound.as_point() == Some(0.0) {
+                    g.nonzero.push(x);
                 }
-                g.relations.push((op, left, right));
-                // `x != 0.0`, `abs(x) > c ≥ 0`, `x > c ≥ 0`, `x < c ≤ 0`: x is not 0.
-                for (x, b, x_left) in [(left, right, true), (right, left, false)] {
-                    let Some(bound) = self.sound.num(id, b).filter(|n| n.n == 1).map(|n| n.c[0])
-                    else {
-                        continue;
-                    };
-                    let Some(rel) = relation(op, true, x_left, bound) else {
-                        if op == Bo::NotEqual && bound.as_point() == Some(0.0) {
-                            g.nonzero.push(x);
-                        }
-                        continue;
-                    };
-                    if !rel.contains(0.0) {
-                        g.nonzero.push(x);
-                        if let E::Math {
-                            fun: Mf::Abs, arg, ..
-                        } = f.expressions[x]
-                        {
-                            g.nonzero.push(arg);
-                        }
-                    }
+                continue;
+            };
+            if !rel.contains(0.0) {
+                g.nonzero.push(x);
+                if let E::Math {
+                    fun: Mf::Abs, arg, ..
+                } = f.expressions[x]
+                {
+                    g.nonzero.push(arg);
                 }
             }
-            _ => {}
         }
     }
 
