@@ -204,60 +204,99 @@ pub fn compare_rgba8(
     } else {
         vec![false; reference.pixels.len()]
     };
-    let (mut compared, mut ignored, mut over, mut sum2) = (0usize, 0usize, 0usize, 0.0f64);
-    let (mut max, mut worst) = (0.0f64, None);
-    let mut per_pixel = Vec::with_capacity(reference.pixels.len());
+    let mut stats = ErrorStats::new(reference.width, reference.pixels.len());
     for (i, r) in reference.pixels.iter().enumerate() {
         if mask[i] {
-            ignored += 1;
+            stats.ignore();
             continue;
         }
-        compared += 1;
-        let mut px = 0.0f64;
-        for c in 0..4 {
+        let mut errors = [0.0f64; 4];
+        for (c, e) in errors.iter_mut().enumerate() {
             let want = r[c].clamp(0.0, 1.0) * 255.0;
-            let e = if want.is_nan() {
+            *e = if want.is_nan() {
                 f64::INFINITY
             } else {
                 (f64::from(gpu.data[4 * i + c]) - want).abs()
             };
-            sum2 += e * e;
-            px = px.max(e);
         }
-        per_pixel.push(px);
-        if px > 1.0 {
-            over += 1;
-        }
-        if worst.is_none() || px > max {
-            max = px;
-            let w = reference.width as usize;
-            worst = Some(((i % w) as u32, (i / w) as u32));
+        stats.add(i, errors);
+    }
+    Ok(stats.finish())
+}
+
+/// Accumulates per-pixel channel errors (in 1/255 units) into a [`RefDiff`].
+struct ErrorStats {
+    width: usize,
+    compared: usize,
+    ignored: usize,
+    over: usize,
+    sum2: f64,
+    max: f64,
+    worst: Option<(u32, u32)>,
+    per_pixel: Vec<f64>,
+}
+
+impl ErrorStats {
+    fn new(width: u32, pixels: usize) -> ErrorStats {
+        ErrorStats {
+            width: width as usize,
+            compared: 0,
+            ignored: 0,
+            over: 0,
+            sum2: 0.0,
+            max: 0.0,
+            worst: None,
+            per_pixel: Vec::with_capacity(pixels),
         }
     }
-    per_pixel.sort_by(|a, b| a.total_cmp(b));
-    let p99 = if per_pixel.is_empty() {
-        0.0
-    } else {
-        per_pixel[((per_pixel.len() - 1) as f64 * 0.99).round() as usize]
-    };
-    Ok(RefDiff {
-        compared,
-        ignored,
-        max,
-        rms: if compared == 0 {
+
+    /// A pixel left out of the comparison.
+    fn ignore(&mut self) {
+        self.ignored += 1;
+    }
+
+    /// Pixel `i`'s four channel errors.
+    fn add(&mut self, i: usize, errors: [f64; 4]) {
+        self.compared += 1;
+        let px = errors.iter().fold(0.0f64, |m, e| m.max(*e));
+        self.sum2 += errors.iter().map(|e| e * e).sum::<f64>();
+        self.per_pixel.push(px);
+        if px > 1.0 {
+            self.over += 1;
+        }
+        if self.worst.is_none() || px > self.max {
+            self.max = px;
+            self.worst = Some(((i % self.width) as u32, (i / self.width) as u32));
+        }
+    }
+
+    fn finish(mut self) -> RefDiff {
+        self.per_pixel.sort_by(|a, b| a.total_cmp(b));
+        let p99 = if self.per_pixel.is_empty() {
             0.0
         } else {
-            (sum2 / (compared as f64 * 4.0)).sqrt()
-        },
-        p99,
-        over_one: over,
-        over_one_percent: if compared == 0 {
-            0.0
-        } else {
-            100.0 * over as f64 / compared as f64
-        },
-        worst,
-    })
+            self.per_pixel[((self.per_pixel.len() - 1) as f64 * 0.99).round() as usize]
+        };
+        let n = self.compared as f64;
+        RefDiff {
+            compared: self.compared,
+            ignored: self.ignored,
+            max: self.max,
+            rms: if self.compared == 0 {
+                0.0
+            } else {
+                (self.sum2 / (n * 4.0)).sqrt()
+            },
+            p99,
+            over_one: self.over,
+            over_one_percent: if self.compared == 0 {
+                0.0
+            } else {
+                100.0 * self.over as f64 / n
+            },
+            worst: self.worst,
+        }
+    }
 }
 
 /// A reference *band*: per pixel the lowest and highest value, clamped to [0, 1], of a set of
@@ -383,61 +422,25 @@ pub fn compare_band_excluding(
     for (m, &e) in mask.iter_mut().zip(exclude) {
         *m |= e;
     }
-    let (mut compared, mut ignored, mut over, mut sum2) = (0usize, 0usize, 0usize, 0.0f64);
-    let (mut max, mut worst) = (0.0f64, None);
-    let mut per_pixel = Vec::with_capacity(band.lo.len());
+    let mut stats = ErrorStats::new(band.width, band.lo.len());
     for (i, &masked) in mask.iter().enumerate() {
         if masked {
-            ignored += 1;
+            stats.ignore();
             continue;
         }
-        compared += 1;
-        let mut px = 0.0f64;
-        for c in 0..4 {
+        let mut errors = [0.0f64; 4];
+        for (c, e) in errors.iter_mut().enumerate() {
             let (lo, hi) = (band.lo[i][c] * 255.0, band.hi[i][c] * 255.0);
             let g = f64::from(gpu.data[4 * i + c]);
-            let e = if lo.is_nan() || hi.is_nan() {
+            *e = if lo.is_nan() || hi.is_nan() {
                 f64::INFINITY
             } else {
                 (lo - g).max(g - hi).max(0.0)
             };
-            sum2 += e * e;
-            px = px.max(e);
         }
-        per_pixel.push(px);
-        if px > 1.0 {
-            over += 1;
-        }
-        if worst.is_none() || px > max {
-            max = px;
-            let w = band.width as usize;
-            worst = Some(((i % w) as u32, (i / w) as u32));
-        }
+        stats.add(i, errors);
     }
-    per_pixel.sort_by(|a, b| a.total_cmp(b));
-    let p99 = if per_pixel.is_empty() {
-        0.0
-    } else {
-        per_pixel[((per_pixel.len() - 1) as f64 * 0.99).round() as usize]
-    };
-    Ok(RefDiff {
-        compared,
-        ignored,
-        max,
-        rms: if compared == 0 {
-            0.0
-        } else {
-            (sum2 / (compared as f64 * 4.0)).sqrt()
-        },
-        p99,
-        over_one: over,
-        over_one_percent: if compared == 0 {
-            0.0
-        } else {
-            100.0 * over as f64 / compared as f64
-        },
-        worst,
-    })
+    Ok(stats.finish())
 }
 
 /// A picture of the error: black where within 1/255, then blue (≤ 2), yellow (≤ 8), red
