@@ -271,8 +271,19 @@ fn json_lines_shape() {
         .collect();
     let shaders: Vec<_> = lines.iter().filter(|v| v["kind"] == "shader").collect();
     let programs: Vec<_> = lines.iter().filter(|v| v["kind"] == "program").collect();
-    assert_eq!(shaders.len(), 36);
-    assert_eq!(programs.len(), 18);
+    // One object per shader file and one per NAME.vert + NAME.frag pair in the folder.
+    let names: Vec<String> = std::fs::read_dir(repo_root().join("shaders-glsl"))
+        .unwrap()
+        .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+        .filter(|n| n.ends_with(".vert") || n.ends_with(".frag"))
+        .collect();
+    let pairs = names
+        .iter()
+        .filter(|n| n.ends_with(".vert") && names.contains(&n.replace(".vert", ".frag")))
+        .count();
+    assert_eq!(shaders.len(), names.len());
+    assert_eq!(programs.len(), pairs);
+    assert!(pairs >= 18, "the seeds give at least 18 pairs");
     assert_eq!(lines.last().unwrap()["kind"], "summary");
     for s in &shaders {
         assert!(s["file"].as_str().unwrap().starts_with("shaders-glsl/"));
