@@ -109,18 +109,15 @@ pub struct Analysis {
 
 /// The function with index `id` (module functions first, then entry points).
 pub fn function(module: &naga::Module, id: usize) -> &Function {
-    let n = module.functions.len();
-    if id < n {
-        let h = module
-            .functions
-            .iter()
-            .nth(id)
-            .map(|(h, _)| h)
-            .expect("function index");
-        &module.functions[h]
-    } else {
-        &module.entry_points[id - n].function
+    match function_handle(module, id) {
+        Some(h) => &module.functions[h],
+        None => &module.entry_points[id - module.functions.len()].function,
     }
+}
+
+/// The handle of function `id` when it is a module function (`None` for an entry point).
+fn function_handle(module: &naga::Module, id: usize) -> Option<naga::Handle<Function>> {
+    module.functions.iter().nth(id).map(|(h, _)| h)
 }
 
 /// The validator's information about function `id`.
@@ -129,17 +126,9 @@ pub fn function_info<'a>(
     info: &'a naga::valid::ModuleInfo,
     id: usize,
 ) -> &'a naga::valid::FunctionInfo {
-    let n = module.functions.len();
-    if id < n {
-        let h = module
-            .functions
-            .iter()
-            .nth(id)
-            .map(|(h, _)| h)
-            .expect("function index");
-        &info[h]
-    } else {
-        info.get_entry_point(id - n)
+    match function_handle(module, id) {
+        Some(h) => &info[h],
+        None => info.get_entry_point(id - module.functions.len()),
     }
 }
 

@@ -122,13 +122,29 @@ pub fn text_table(report: &Report) -> String {
     s
 }
 
-fn shading_section(report: &Report, out: &mut String) {
-    let big = largest(report);
-    let rows: Vec<&VariantResult> = report
+/// The results of one group of variants, in report order.
+fn group_rows(report: &Report, group: Group) -> Vec<&VariantResult> {
+    report
         .results
         .iter()
-        .filter(|r| r.variant.group == Group::Shading)
-        .collect();
+        .filter(|r| r.variant.group == group)
+        .collect()
+}
+
+/// Embeds the report's picture `file` with its caption, if the run made it.
+fn embed_picture(report: &Report, file: &str, out: &mut String) {
+    if let Some(pic) = report.pictures.iter().find(|p| p.file == file) {
+        let _ = writeln!(
+            out,
+            "\n![{}]({})\n\n*{}*",
+            pic.caption, pic.file, pic.caption
+        );
+    }
+}
+
+fn shading_section(report: &Report, out: &mut String) {
+    let big = largest(report);
+    let rows = group_rows(report, Group::Shading);
     if rows.is_empty() {
         return;
     }
@@ -193,25 +209,11 @@ fn small_spot_section(report: &Report, out: &mut String) {
             f(g64.error.rms)
         );
     }
-    if let Some(pic) = report
-        .pictures
-        .iter()
-        .find(|p| p.file == "report-small-spot.png")
-    {
-        let _ = writeln!(
-            out,
-            "\n![{}]({})\n\n*{}*",
-            pic.caption, pic.file, pic.caption
-        );
-    }
+    embed_picture(report, "report-small-spot.png", out);
 }
 
 fn edge_section(report: &Report, out: &mut String) {
-    let rows: Vec<&VariantResult> = report
-        .results
-        .iter()
-        .filter(|r| r.variant.group == Group::Edge)
-        .collect();
+    let rows = group_rows(report, Group::Edge);
     if rows.is_empty() {
         return;
     }
@@ -235,25 +237,11 @@ fn edge_section(report: &Report, out: &mut String) {
             ms(r, big)
         );
     }
-    if let Some(pic) = report
-        .pictures
-        .iter()
-        .find(|p| p.file == "report-edges.png")
-    {
-        let _ = writeln!(
-            out,
-            "\n![{}]({})\n\n*{}*",
-            pic.caption, pic.file, pic.caption
-        );
-    }
+    embed_picture(report, "report-edges.png", out);
 }
 
 fn precision_section(report: &Report, out: &mut String) {
-    let rows: Vec<&VariantResult> = report
-        .results
-        .iter()
-        .filter(|r| r.variant.group == Group::Precision)
-        .collect();
+    let rows = group_rows(report, Group::Precision);
     if rows.is_empty() {
         return;
     }
@@ -290,11 +278,7 @@ fn precision_section(report: &Report, out: &mut String) {
 }
 
 fn projector_section(report: &Report, out: &mut String) {
-    let rows: Vec<&VariantResult> = report
-        .results
-        .iter()
-        .filter(|r| r.variant.group == Group::Projector)
-        .collect();
+    let rows = group_rows(report, Group::Projector);
     if rows.is_empty() {
         return;
     }
@@ -346,21 +330,11 @@ fn projector_section(report: &Report, out: &mut String) {
         }
         out.push_str(".\n");
     }
-    if let Some(pic) = report.pictures.iter().find(|p| p.file == "report-acos.png") {
-        let _ = writeln!(
-            out,
-            "\n![{}]({})\n\n*{}*",
-            pic.caption, pic.file, pic.caption
-        );
-    }
+    embed_picture(report, "report-acos.png", out);
 }
 
 fn program_section(report: &Report, out: &mut String) {
-    let rows: Vec<&VariantResult> = report
-        .results
-        .iter()
-        .filter(|r| r.variant.group == Group::Program)
-        .collect();
+    let rows = group_rows(report, Group::Program);
     out.push_str("\n## Specialised program against the uber-shader\n\n");
     if rows.is_empty() {
         let where_ = report
