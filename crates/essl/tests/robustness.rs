@@ -36,6 +36,15 @@ fn every_truncation_of_real_shaders_is_handled() {
 }
 
 #[test]
+fn indexing_a_struct_member_whose_size_is_missing_is_one_error() {
+    // Found by `mutations_of_a_valid_shader_never_panic`: `float b[]` in a struct, then `s.b[1]`.
+    let src = "#version 300 es\nprecision highp float;\nstruct S { float b[]; };\nout vec4 o;\nvoid main() { S s; o = vec4(s.b[1]); }\n";
+    let sh = run(src, Stage::Fragment);
+    let codes: Vec<&str> = sh.diagnostics.iter().map(|d| d.code).collect();
+    assert_eq!(codes, ["unsized-array"]);
+}
+
+#[test]
 fn ten_thousand_nested_parentheses_are_an_error() {
     let src = format!("#version 300 es\nprecision mediump float;\nout vec4 o;\nvoid main() {{ o = vec4({}1.0{}); }}\n", "(".repeat(10_000), ")".repeat(10_000));
     let sh = run(&src, Stage::Fragment);

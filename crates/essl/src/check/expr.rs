@@ -861,6 +861,10 @@ impl Checker<'_> {
             return error_expr(span);
         }
         let bound = b.ty.index_bound().unwrap_or(0);
+        if bound == 0 {
+            // An array whose size is missing (a struct member `float b[]`), already reported.
+            return error_expr(span);
+        }
         if let Some(v) = i.as_const().and_then(|c| c.as_int()) {
             if v < 0 {
                 let d = self.error(
