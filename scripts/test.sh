@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
 # The whole test suite on a fresh machine: system packages, formatting, clippy, every test.
-# GPU tests render on lavapipe (software Vulkan); with CI set, a missing adapter or a missing
-# ../shared folder fails the run instead of skipping.
+# GPU tests render on lavapipe (software Vulkan). Tests that need data outside the repository
+# (corpora, scenes, seeds: ESSL_CORPORA / ESSL_SCENES / ESSL_SEEDS, else ../shared/...) skip
+# with a message where it is absent; ESSL_REQUIRE_CORPORA=1 turns that skip into a failure, and
+# ESSL_REQUIRE_ADAPTER=1 does the same for a missing Vulkan adapter (.ci/run sets both).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 ./scripts/setup.sh

@@ -1,25 +1,13 @@
 //! The conformance bars (docs/conformance.md): scores the front end on `../shared/corpora/`.
-//! Skips, with a message, when `../shared` is absent, unless `CI` is set (then it fails).
-
-use std::path::Path;
+//! Skips, with a message, when the corpora are absent, unless `ESSL_REQUIRE_CORPORA=1`.
 
 use essl_cli::conformance::{bars, score};
 
 #[test]
 fn conformance_bars_are_met() {
-    let corpora = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../../shared/corpora");
-    if !corpora.is_dir() {
-        assert!(
-            std::env::var_os("CI").is_none(),
-            "CI is set but the corpora are missing at {}",
-            corpora.display()
-        );
-        println!(
-            "skipped: no corpora at {} (../shared is absent)",
-            corpora.display()
-        );
+    let Some(corpora) = essl_testdata::corpora() else {
         return;
-    }
+    };
     let report = score(&corpora).expect("the corpora parse");
     println!("{}", report.tables());
     assert_eq!(report.webgl.pass.total, 159);

@@ -21,18 +21,7 @@ fn repo() -> PathBuf {
 }
 
 fn shared_dir() -> Option<PathBuf> {
-    let dir = repo().join("../shared/scenes");
-    if dir.is_dir() {
-        return Some(dir);
-    }
-    if std::env::var_os("CI").is_some() {
-        panic!("{} is missing and CI is set", dir.display());
-    }
-    eprintln!(
-        "SKIPPED: {} is absent; shared scenes not checked",
-        dir.display()
-    );
-    None
+    essl_testdata::scenes()
 }
 
 /// A context with validation on, or `None` (with a message) without an adapter.

@@ -4,21 +4,13 @@
 //!
 //! Skips with a message when `../shared` is absent; fails then if the `CI` variable is set.
 
-use std::path::{Path, PathBuf};
+use std::path::PathBuf;
 
 use essl_lights::reference::{compare_rgba8, render, CompareOptions, Geometry};
 use essl_lights::seeds::seed_shader;
 
 fn shared_scenes() -> Option<PathBuf> {
-    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../../shared/scenes");
-    if dir.join("spot-smooth.json").is_file() {
-        return Some(dir);
-    }
-    if std::env::var_os("CI").is_some() {
-        panic!("{} is missing and CI is set", dir.display());
-    }
-    eprintln!("skipped: {} is absent", dir.display());
-    None
+    essl_testdata::scenes()
 }
 
 /// (scene, largest error allowed away from silhouettes, pixels allowed past 1/255)

@@ -20,9 +20,8 @@ fn adapter() -> Option<String> {
     }
     match gpu::adapter() {
         Ok((name, _)) => Some(name),
-        Err(e) if std::env::var_os("CI").is_some() => panic!("CI needs a Vulkan adapter: {e}"),
         Err(e) => {
-            eprintln!("skipped: {e}");
+            essl_testdata::adapter_missing(&e);
             None
         }
     }

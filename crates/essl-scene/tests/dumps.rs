@@ -6,9 +6,9 @@
 //! `tests/data/make_expectations.py` from the tool's `--dump` (uniform values as read back from
 //! the page, mesh streams and indices, texture units, attribute bindings) and from the tool's own
 //! functions (every derived value and the meshes as float32 and float64 bit patterns, the texels'
-//! hash). Without `shared/` the shared-scene tests print why and pass, unless the `CI`
-//! environment variable is set, in which case they fail; the local scenes need nothing outside
-//! the crate.
+//! hash). Without the shared scenes (`ESSL_SCENES` or `../shared/scenes`) the shared-scene tests
+//! print why and pass, unless `ESSL_REQUIRE_CORPORA=1`, in which case they fail; the local
+//! scenes need nothing outside the crate.
 
 use std::collections::{BTreeMap, BTreeSet};
 use std::path::{Path, PathBuf};
@@ -16,28 +16,9 @@ use std::path::{Path, PathBuf};
 use essl_scene::{Derived, DerivedValue, Draw, Scene, Stream, UniformType, UploadValues};
 use serde_json::Value;
 
-fn repo_root() -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR")).join("../..")
-}
-
-/// `shared/scenes`, or `None` (after saying so) when it is absent outside CI.
+/// The shared scenes, or `None` (after saying so) when they are absent and not required.
 fn shared_scenes() -> Option<PathBuf> {
-    let dir = repo_root().join("../shared/scenes");
-    if dir.join("FORMAT.md").is_file() {
-        return Some(dir);
-    }
-    if std::env::var_os("CI").is_some() {
-        panic!(
-            "{} is missing, and CI is set: the scene tests need shared/ beside the repository",
-            dir.display()
-        );
-    }
-    eprintln!(
-        "SKIPPED: {} not found (shared/ is not beside the repository); the scene-dump tests did \
-         not run",
-        dir.display()
-    );
-    None
+    essl_testdata::scenes()
 }
 
 fn data_dir() -> PathBuf {

@@ -13,16 +13,8 @@ fn repo() -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR")).join("../..")
 }
 
-fn shared() -> Option<PathBuf> {
-    let p = repo().join("../shared");
-    if p.is_dir() {
-        Some(p)
-    } else if std::env::var_os("CI").is_some() {
-        panic!("../shared is missing and CI is set: the corpora are required");
-    } else {
-        eprintln!("SKIPPED: ../shared is absent (a user's own clone); corpus checks skipped");
-        None
-    }
+fn corpora() -> Option<PathBuf> {
+    essl_testdata::corpora()
 }
 
 fn compile_str(name: &str, src: &str, stage: Stage) -> Shader {
@@ -192,9 +184,9 @@ fn probes_agree_with_webgl2() {
 
 #[test]
 fn webgl2fundamentals_programs_agree_with_webgl2() {
-    let Some(shared) = shared() else { return };
+    let Some(corpora) = corpora() else { return };
     let corpus: Vec<Value> =
-        std::fs::read_to_string(shared.join("corpora/webgl2fundamentals_shaders.jsonl"))
+        std::fs::read_to_string(corpora.join("webgl2fundamentals_shaders.jsonl"))
             .unwrap()
             .lines()
             .map(|l| serde_json::from_str(l).unwrap())

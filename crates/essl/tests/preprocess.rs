@@ -1,6 +1,5 @@
 //! The preprocessor against dEQP's and WebGL's conformance cases, and rule by rule.
 
-use std::path::PathBuf;
 
 use essl::diagnostic::{Applicability, Diagnostic, Severity};
 use essl::lex::{lex, PpKind};
@@ -82,24 +81,14 @@ fn at(f: &SourceFile, d: &Diagnostic) -> String {
 // Corpora
 
 fn corpus(name: &str) -> Option<Vec<serde_json::Value>> {
-    let path = PathBuf::from(env!("CARGO_MANIFEST_DIR"))
-        .join("../../../shared/corpora")
-        .join(name);
-    match std::fs::read_to_string(&path) {
-        Ok(text) => Some(
-            text.lines()
-                .filter(|l| !l.trim().is_empty())
-                .map(|l| serde_json::from_str(l).expect("valid JSON line"))
-                .collect(),
-        ),
-        Err(_) => {
-            if std::env::var_os("CI").is_some() {
-                panic!("corpus {} is missing", path.display());
-            }
-            eprintln!("skipping: corpus {} not found", path.display());
-            None
-        }
-    }
+    let path = essl_testdata::corpus_file(name)?;
+    let text = std::fs::read_to_string(&path).expect("the corpus file reads");
+    Some(
+        text.lines()
+            .filter(|l| !l.trim().is_empty())
+            .map(|l| serde_json::from_str(l).expect("valid JSON line"))
+            .collect(),
+    )
 }
 
 /// Error diagnostics of one shader source.
