@@ -192,6 +192,13 @@ fn rule_levels(
 
 fn main() -> ExitCode {
     use clap::{CommandFactory, FromArgMatches};
+    // Worker threads with room for a whole compile, so that `essl::compile` runs on them
+    // directly instead of switching to a fresh stack segment per shader. The stack is reserved,
+    // not touched: only the pages a compile uses are ever mapped.
+    let _ = rayon::ThreadPoolBuilder::new()
+        .stack_size(2 * essl::shader::COMPILE_STACK)
+        .thread_name(|i| format!("essl-{i}"))
+        .build_global();
     let matches = Cli::command().get_matches();
     let (rules, deny_warnings) = match rule_levels(&matches) {
         Ok(r) => r,

@@ -47,33 +47,23 @@ impl Shader {
     }
 }
 
-/// Stack for compiling: the passes recurse over the syntax tree, whose depth the parser bounds
-/// at [`crate::parse::MAX_NESTING`]; this much stack covers that depth in every pass, even in
-/// an unoptimised build, whatever the caller's thread has (2 MiB for Rust's spawned threads).
-pub const COMPILE_STACK: usize = 64 << 20;
+/// Stack that one compile (or link) may need. The passes recurse over the syntax tree, whose
+/// depth the parser bounds at [`crate::parse::MAX_NESTING`]. The deepest shaders it admits (256
+/// nested loops, blocks, parentheses, calls, else-ifs…) need at most 0.95 MiB in an optimised
+/// build and 5.1 MiB in an unoptimised one (`docs/reliability.md`); this is about four and two
+/// times that.
+pub const COMPILE_STACK: usize = if cfg!(debug_assertions) {
+    12 << 20
+} else {
+    4 << 20
+};
 
-/// Runs `f` on a thread with [`COMPILE_STACK`] bytes of stack (or inline if no thread can be
-/// started).
-pub(crate) fn with_stack<T: Send>(f: impl FnOnce() -> T + Send) -> T {
-    let slot = std::sync::Mutex::new(Some(f));
-    let take = || {
-        slot.lock()
-            .unwrap_or_else(|e| e.into_inner())
-            .take()
-            .expect("runs once")
-    };
-    std::thread::scope(|scope| {
-        let spawned = std::thread::Builder::new()
-            .name("essl-compile".into())
-            .stack_size(COMPILE_STACK)
-            .spawn_scoped(scope, || take()());
-        match spawned {
-            Ok(handle) => handle
-                .join()
-                .unwrap_or_else(|panic| std::panic::resume_unwind(panic)),
-            Err(_) => take()(),
-        }
-    })
+/// Runs `f` on the current thread when it has at least [`COMPILE_STACK`] bytes of stack left,
+/// else on a fresh stack segment of that size (`stacker`, as rustc does). A program that
+/// compiles many shaders keeps threads with enough stack (the main thread's 8 MiB, or the CLI's
+/// workers), so the common path allocates nothing and starts no thread.
+pub(crate) fn with_stack<T>(f: impl FnOnce() -> T) -> T {
+    stacker::maybe_grow(COMPILE_STACK, COMPILE_STACK, f)
 }
 
 /// Compiles a shader's text.

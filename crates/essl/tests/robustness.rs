@@ -137,3 +137,107 @@ proptest! {
         let _ = run(&s, Stage::Fragment);
     }
 }
+
+/// The deepest shaders the parser admits, one per kind of nesting (256 levels at most).
+fn deepest_shaders() -> Vec<(&'static str, String)> {
+    let n = 250;
+    let fs = |body: String| {
+        format!("#version 300 es\nprecision highp float;\nout vec4 o;\nuniform float u;\n{body}\n")
+    };
+    vec![
+        (
+            "parentheses",
+            fs(format!(
+                "void main() {{ o = vec4({}u{}); }}",
+                "(".repeat(n),
+                ")".repeat(n)
+            )),
+        ),
+        (
+            "blocks",
+            fs(format!(
+                "void main() {{ {} o = vec4(u); {} }}",
+                "{".repeat(n),
+                "}".repeat(n)
+            )),
+        ),
+        (
+            "sum",
+            fs(format!(
+                "void main() {{ float x = u{}; o = vec4(x); }}",
+                " + u".repeat(n)
+            )),
+        ),
+        (
+            "calls",
+            fs(format!(
+                "void main() {{ o = vec4({}u{}); }}",
+                "sin(".repeat(n),
+                ")".repeat(n)
+            )),
+        ),
+        (
+            "constructors",
+            fs(format!(
+                "void main() {{ o = {}vec4(u){}; }}",
+                "vec4(".repeat(n),
+                ")".repeat(n)
+            )),
+        ),
+        (
+            "else-ifs",
+            fs(format!(
+                "void main() {{ o = vec4(0.0); {} o = vec4(1.0); }}",
+                "if (u > 0.0) o.x += 1.0; else ".repeat(n)
+            )),
+        ),
+        (
+            "constant",
+            fs(format!(
+                "const float c = {}1.0{};\nvoid main() {{ o = vec4(c * u); }}",
+                "(".repeat(n),
+                " + 1.0)".repeat(n)
+            )),
+        ),
+        (
+            "for loops",
+            fs(format!(
+                "void main() {{ float x = 0.0; {} x += u; o = vec4(x); }}",
+                "for (int i = 0; i < 2; i++) ".repeat(n)
+            )),
+        ),
+        (
+            "while loops",
+            fs(format!(
+                "void main() {{ float x = 0.0; int i = 0; {} x += u; o = vec4(x); }}",
+                "while (i++ < 2) ".repeat(n)
+            )),
+        ),
+    ]
+}
+
+#[test]
+fn the_deepest_shaders_compile_and_link_from_a_small_thread() {
+    // `compile` and `link` switch to a stack segment of `COMPILE_STACK` bytes when the caller's
+    // thread has less left; 128 KiB forces that path for every shader.
+    let handle = std::thread::Builder::new()
+        .stack_size(128 << 10)
+        .spawn(|| {
+            let vs = run(
+                "#version 300 es\nvoid main() { gl_Position = vec4(0.0); }\n",
+                Stage::Vertex,
+            );
+            let mut failed = Vec::new();
+            for (kind, src) in deepest_shaders() {
+                let fs = run(&src, Stage::Fragment);
+                let program = essl::link::link(&vs, &fs);
+                if !fs.ok() || !program.ok {
+                    failed.push((kind, fs.diagnostics.first().map(|d| d.message.clone())));
+                }
+            }
+            failed
+        })
+        .unwrap();
+    let failed = handle.join().unwrap();
+    assert!(failed.is_empty(), "{failed:?}");
+}
