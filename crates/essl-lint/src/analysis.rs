@@ -14,7 +14,7 @@
 //! `[0, 1]`): what the
 //! `mediump` rule needs to ask "does this overflow for ordinary parameter values?".
 
-use std::collections::HashMap;
+use rustc_hash::FxHashMap as HashMap;
 
 use naga::{
     BinaryOperator as Bo, Block, Expression as E, Function, Handle, Literal, MathFunction as Mf,
@@ -271,7 +271,7 @@ impl Analysis {
         let mut a = Analysis {
             mode,
             functions: vec![FnFacts::default(); count],
-            memory: HashMap::new(),
+            memory: HashMap::default(),
             args: (0..count)
                 .map(|id| vec![Val::Bot; function(module, id).arguments.len()])
                 .collect(),
@@ -835,7 +835,7 @@ fn single_stores(f: &Function) -> (HashMap<usize, Handle<E>>, HashMap<usize, Vec
     #[derive(Default)]
     struct Count {
         whole: Vec<(usize, Handle<E>, bool)>,
-        spoiled: std::collections::HashSet<usize>,
+        spoiled: rustc_hash::FxHashSet<usize>,
     }
     fn root_local(f: &Function, mut p: Handle<E>) -> Option<(usize, bool)> {
         let mut whole = true;
@@ -891,12 +891,12 @@ fn single_stores(f: &Function) -> (HashMap<usize, Handle<E>>, HashMap<usize, Vec
     }
     let mut c = Count::default();
     walk(f, &f.body, false, &mut c);
-    let mut counts: HashMap<usize, usize> = HashMap::new();
+    let mut counts: HashMap<usize, usize> = HashMap::default();
     for (l, _, _) in &c.whole {
         *counts.entry(*l).or_default() += 1;
     }
-    let mut out = HashMap::new();
-    let mut all: HashMap<usize, Vec<Handle<E>>> = HashMap::new();
+    let mut out = HashMap::default();
+    let mut all: HashMap<usize, Vec<Handle<E>>> = HashMap::default();
     for (l, v, in_loop) in c.whole {
         let has_init = f
             .local_variables

@@ -7,7 +7,7 @@
 //! return precision. Every naga expression essl lowers from a HIR expression carries that
 //! expression's span, so the span finds the precision.
 
-use std::collections::HashMap;
+use rustc_hash::FxHashMap as HashMap;
 
 use essl::hir::{self, Expr, ExprKind, Function, Module, Stmt, StmtKind};
 use essl::source::Span;

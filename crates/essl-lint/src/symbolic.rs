@@ -5,7 +5,7 @@
 //! expression the forms do not look into); two forms whose difference is a constant compare
 //! exactly. Locals stored once (outside loops) stand for their stored value.
 
-use std::collections::{HashMap, HashSet};
+use rustc_hash::{FxHashMap as HashMap, FxHashSet as HashSet};
 
 use naga::{
     BinaryOperator as Bo, Expression as E, Function, Handle, MathFunction as Mf,

@@ -237,7 +237,12 @@ pub fn lex(file: &SourceFile) -> Lexed {
         text,
         pos: 0,
     };
-    let mut out = Lexed::default();
+    let mut out = Lexed {
+        tokens: Vec::with_capacity(text.len() / 3 + 2),
+        diagnostics: Vec::new(),
+    };
+    let mut names = Interner::default();
+    let newline = names.intern("\n");
     // No-break spaces per physical line: (span, inside a comment).
     let mut nbsp: Vec<(Span, bool)> = Vec::new();
     let mut space_before = false;
@@ -256,7 +261,7 @@ pub fn lex(file: &SourceFile) -> Lexed {
                 out.tokens.push(PpToken {
                     kind: PpKind::Newline,
                     span: Span::new(start as u32, cur.pos as u32),
-                    text: Arc::from("\n"),
+                    text: newline.clone(),
                     space_before,
                     from_macro: false,
                 });
@@ -310,22 +315,20 @@ pub fn lex(file: &SourceFile) -> Lexed {
                 space_before = true;
             }
             c if c.is_ascii_alphabetic() || c == '_' => {
-                let mut s = String::new();
-                s.push(c);
                 while let Some(c) = cur.peek() {
                     if c.is_ascii_alphanumeric() || c == '_' {
-                        s.push(c);
                         cur.bump();
                     } else {
                         break;
                     }
                 }
+                let text = names.text(text, start, cur.pos);
                 push(
                     &mut out,
                     PpKind::Ident,
                     start,
                     cur.pos,
-                    s,
+                    text,
                     &mut space_before,
                 );
             }
@@ -353,7 +356,7 @@ pub fn lex(file: &SourceFile) -> Lexed {
                     PpKind::Number,
                     start,
                     cur.pos,
-                    s,
+                    Arc::from(s),
                     &mut space_before,
                 );
             }
@@ -362,8 +365,7 @@ pub fn lex(file: &SourceFile) -> Lexed {
                     Some(p) => PpKind::Punct(p),
                     None => PpKind::Invalid(c),
                 };
-                let s = text[start..cur.pos].replace(['\\', '\n', '\r'], "");
-                let s = if s.is_empty() { c.to_string() } else { s };
+                let s = names.text(text, start, cur.pos);
                 push(&mut out, kind, start, cur.pos, s, &mut space_before);
             }
         }
@@ -390,15 +392,46 @@ pub fn lex(file: &SourceFile) -> Lexed {
     out
 }
 
-fn push(out: &mut Lexed, kind: PpKind, start: usize, end: usize, text: String, space: &mut bool) {
+fn push(out: &mut Lexed, kind: PpKind, start: usize, end: usize, text: Arc<str>, space: &mut bool) {
     out.tokens.push(PpToken {
         kind,
         span: Span::new(start as u32, end as u32),
-        text: Arc::from(text),
+        text,
         space_before: *space,
         from_macro: false,
     });
     *space = false;
+}
+
+/// One shared `Arc<str>` per distinct token text of a file: shaders repeat their names and
+/// punctuation, and a clone of an `Arc` costs less than an allocation per token.
+#[derive(Default)]
+struct Interner<'a> {
+    map: rustc_hash::FxHashMap<&'a str, Arc<str>>,
+}
+
+impl<'a> Interner<'a> {
+    /// The token text of `text[start..end]`, with line continuations removed (rare: then the
+    /// text is not interned).
+    fn text(&mut self, text: &'a str, start: usize, end: usize) -> Arc<str> {
+        let raw = &text[start..end];
+        if raw.contains(['\\', '\n', '\r']) {
+            let joined = raw.replace(['\\', '\n', '\r'], "");
+            if !joined.is_empty() {
+                return Arc::from(joined);
+            }
+        }
+        self.intern(raw)
+    }
+
+    fn intern(&mut self, s: &'a str) -> Arc<str> {
+        if let Some(a) = self.map.get(s) {
+            return a.clone();
+        }
+        let a: Arc<str> = Arc::from(s);
+        self.map.insert(s, a.clone());
+        a
+    }
 }
 
 fn punct(c: char, cur: &mut Cursor<'_>) -> Option<Punct> {

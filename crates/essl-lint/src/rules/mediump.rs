@@ -1,7 +1,7 @@
 //! `mediump-overflow`: `mediump`/`lowp` arithmetic that overflows 16-bit floats for ordinary
 //! values, and divisors that underflow to zero there.
 
-use std::collections::HashMap;
+use rustc_hash::FxHashMap as HashMap;
 
 use essl::diagnostic::Diagnostic;
 use naga::{

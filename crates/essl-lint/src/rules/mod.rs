@@ -10,7 +10,7 @@ mod smoothstep;
 
 pub(crate) use normalize::orthogonal_cross;
 
-use std::collections::{HashMap, HashSet};
+use rustc_hash::{FxHashMap as HashMap, FxHashSet as HashSet};
 
 use essl::diagnostic::Diagnostic;
 use essl::source::{SourceFile, Span};
@@ -107,7 +107,7 @@ impl<'a> Cx<'a> {
         let (module, info) = shader.naga.as_ref()?;
         let sound = Analysis::run(module, info, Mode::Sound);
         let typical = Analysis::run(module, info, Mode::Typical);
-        let mut written = HashSet::new();
+        let mut written = HashSet::default();
         for (_, f) in module.functions.iter() {
             collect_written(f, &f.body, &mut written);
         }
@@ -363,7 +363,7 @@ pub fn operands(e: &E) -> Vec<Handle<E>> {
 
 /// Who reads each expression of a function.
 pub fn users(f: &Function) -> HashMap<Handle<E>, Vec<User>> {
-    let mut map: HashMap<Handle<E>, Vec<User>> = HashMap::new();
+    let mut map: HashMap<Handle<E>, Vec<User>> = HashMap::default();
     for (h, e) in f.expressions.iter() {
         for o in operands(e) {
             map.entry(o).or_default().push(User::Expr(h));
@@ -482,7 +482,7 @@ fn enclosing(f: &Function) -> HashMap<Handle<E>, Vec<(Handle<E>, bool)>> {
         }
         stack.truncate(depth);
     }
-    let mut out = HashMap::new();
+    let mut out = HashMap::default();
     walk(&f.body, &mut Vec::new(), &mut out);
     out
 }
