@@ -22,12 +22,18 @@
 #     Chromium answered when the cases ran in a browser; this script extracts the upstream
 #     fields only and leaves those two out.
 #   - the WebGL conformance files are extracted by running the pages' own scripts in a small
-#     JavaScript interpreter (scripts/testdata/jsmini.py); pages it cannot run are reported
-#     and left out (see scripts/testdata/webgl_conformance.py for what differs).
+#     JavaScript interpreter (scripts/testdata/jsmini.py). Pages it cannot run are reported
+#     ("note: ...") and left out; at the pinned commit that is three pages that have no
+#     cases in the shared corpora either (conditional-texture-fetch, texture-bias,
+#     cube-map-uploads-out-of-order). Limits a page queries (gl.getParameter) are answered
+#     with fixed values (texel offsets -8..7, 15 varyings, ...).
 #   - ../shared/scenes and ../shared/seeds do not come from a public upstream repository and
 #     are not fetched.
-# By default the upstream files that the shared corpora hold back are left out too, so the
-# output matches ../shared/corpora; --include-held-back keeps them.
+# By default the upstream files that the shared corpora hold back are left out too
+# (scripts/testdata/selection.py), so the output matches ../shared/corpora: every case of
+# every file agrees byte for byte (compare with scripts/testdata/compare.py DIR), except
+# the browser fields above and webgl2fundamentals-pages/README.md, which is written here.
+# --include-held-back keeps those files.
 set -euo pipefail
 
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"

@@ -14,6 +14,8 @@ import json
 import os
 import sys
 
+sys.dont_write_bytecode = True
+sys.setrecursionlimit(10000)
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 
 import deqp  # noqa: E402

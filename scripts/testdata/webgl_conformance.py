@@ -7,7 +7,9 @@ each case handed to `GLSLConformanceTester.runTests`, `runRenderTests`, `runTest
 `runRenderTest`. A case's fields follow the harness (`runOneTest`): default shaders,
 `vShaderId`/`fShaderId` looked up in the page's `<script>` elements, `vShaderPrep`.
 Cases with a `#version 300 es` shader go to the ES 3.00 file, the others to the ES 1.00 one.
-Pages the interpreter cannot run are reported and left out.
+Pages the interpreter cannot run are reported and left out. A body `onload` handler (or
+`window.onload`) runs after the scripts, and elements with an id are globals, as in a
+browser. Not produced: the browser's answers (`chromium_webgl1`, `chromium_webgl2`).
 """
 
 import html.parser
@@ -35,9 +37,12 @@ class _Page(html.parser.HTMLParser):
     def __init__(self):
         super().__init__(convert_charrefs=False)
         self.scripts = []
+        self.onload = None
         self._cur = None
 
     def handle_starttag(self, tag, attrs):
+        if tag == 'body':
+            self.onload = dict(attrs).get('onload')
         if tag == 'script':
             self._cur = (dict(attrs), [])
             self.scripts.append(self._cur)
@@ -58,7 +63,31 @@ def _scripts(text):
     p = _Page()
     p.feed(text)
     p.close()
-    return [(a, ''.join(parts)) for a, parts in p.scripts]
+    return [(a, ''.join(parts)) for a, parts in p.scripts], p.onload
+
+
+class _Element(JSObject):
+    """A <script> element: its text is shared with the recorder, so pages may rewrite it."""
+
+    TEXT = ('text', 'textContent', 'innerHTML', 'innerText')
+
+    def __init__(self, rec, elem_id):
+        super().__init__(id=elem_id)
+        self.rec, self.elem_id = rec, elem_id
+
+    def __contains__(self, k):
+        return k in self.TEXT or dict.__contains__(self, k)
+
+    def __getitem__(self, k):
+        if k in self.TEXT:
+            return self.rec.by_id[self.elem_id]
+        return dict.__getitem__(self, k)
+
+    def __setitem__(self, k, v):
+        if k in self.TEXT:
+            self.rec.by_id[self.elem_id] = to_str(v)
+        else:
+            dict.__setitem__(self, k, v)
 
 
 def read_test_lists(base):
@@ -213,8 +242,12 @@ def _install_harness(interp, rec):
         return Native(run, api)
     g['GLSLConformanceTester'] = JSObject({a: runner(a) for a in ('runTests', 'runRenderTests', 'runTest', 'runRenderTest')})
     doc = _AnyObject()
-    doc['getElementById'] = Native(lambda this, i: JSObject(text=rec.by_id[to_str(i)]) if to_str(i) in rec.by_id else None)
+    elements = {i: _Element(rec, i) for i in rec.by_id}
+    doc['getElementById'] = Native(lambda this, i: elements.get(to_str(i), None))
     g['document'] = doc
+    for i, el in elements.items():
+        if re.match(r'^[A-Za-z_$][\w$]*$', i) and i not in g:
+            g[i] = el  # browsers expose elements with an id as globals
     g['window'] = _AnyObject()
     g['navigator'] = _AnyObject(userAgent='')
 
@@ -314,7 +347,7 @@ def run_page(base, rel):
     path = os.path.join(base, rel)
     with open(path, encoding='utf-8', newline='') as f:
         text = f.read()
-    scripts = _scripts(text)
+    scripts, onload = _scripts(text)
     interp = jsmini.Interpreter()
     rec = _Recorder(interp, scripts)
     _install_harness(interp, rec)
@@ -330,6 +363,11 @@ def run_page(base, rel):
             with open(spath, encoding='utf-8') as f:
                 body = f.read()
         interp.run(body)
+    handler = interp.glob.vars['window'].get('onload') if 'onload' in dict.keys(interp.glob.vars['window']) else None
+    if onload:
+        interp.run(onload)
+    elif handler is not None:
+        interp.call(handler, undefined, [])
     out = []
     for api, index, info, ctx in rec.cases:
         info = JSObject(info)
