@@ -72,7 +72,6 @@ declare -A envsrc=([webgl]=ESSL_WEBGL_SRC [glslang]=ESSL_GLSLANG_SRC [fundamenta
 
 mkdir -p "$out"
 sources="$(cd "$out/.." && pwd)/sources"
-mkdir -p "$sources"
 
 # checkout_from GITDIR NAME: the pinned commit's files of NAME into $sources/NAME.
 checkout_from() {
@@ -82,6 +81,7 @@ checkout_from() {
         exit 1
     fi
     local wt="$sources/$name"
+    mkdir -p "$sources"
     rm -rf "$wt"
     mkdir -p "$wt"
     # A private index: the git directory itself is only read.
@@ -104,6 +104,7 @@ for name in webgl glslang fundamentals; do
     else
         clone="$sources/$name.git"
         if [ ! -d "$clone" ]; then
+            mkdir -p "$sources"
             echo "$name: cloning ${url[$name]} (blobless)" >&2
             git clone -q --bare --filter=blob:none "${url[$name]}" "$clone"
         fi

@@ -348,13 +348,10 @@ def install(interp):
     g['Object'] = obj
     arr = Native(lambda t, *a: JSArray([undefined] * int(to_num(a[0]))) if len(a) == 1 and isinstance(a[0], float) else JSArray(a), 'Array')
     arr.props['construct'] = lambda a: JSArray([undefined] * int(to_num(a[0]))) if len(a) == 1 and isinstance(a[0], float) else JSArray(a)
-    arr.props.update(isArray=_n(lambda t, x: isinstance(x, list)),
-                     prototype=JSObject(),
-                     from_=None)
+    arr.props.update(isArray=_n(lambda t, x: isinstance(x, list)), prototype=JSObject())
     arr.props['from'] = _n(lambda t, x, f=undefined: JSArray(
         (interp.call(f, undefined, [v, float(i)]) if f is not undefined else v)
         for i, v in enumerate(x if isinstance(x, (list, str)) else [undefined] * int(to_num(x.get('length', 0.0))))))
-    del arr.props['from_']
     g['Array'] = arr
     for typed in ('Float32Array', 'Uint8Array', 'Int32Array', 'Uint16Array', 'Uint32Array', 'Int8Array', 'Int16Array'):
         t = Native(lambda th, *a: undefined, typed)
@@ -381,8 +378,8 @@ def install(interp):
     g['Error'] = err
     g['RegExp'] = Native(lambda t, s, f='': JSRegExp(to_str(s), to_str(f)), 'RegExp')
     g['RegExp'].props['construct'] = lambda a: JSRegExp(to_str(a[0]), to_str(a[1]) if len(a) > 1 else '')
-    g['console'] = JSObject(log=_n(lambda t, *a: undefined), error=_n(lambda t, *a: undefined),
-                            warn=_n(lambda t, *a: undefined), assert_=_n(lambda t, *a: undefined))
+    quiet = _n(lambda t, *a: undefined)
+    g['console'] = JSObject({'log': quiet, 'error': quiet, 'warn': quiet, 'assert': quiet})
 
 
 def _from_json(v):
