@@ -408,6 +408,49 @@ probe("l-too-many-attributes-17-vec4",
       " + ".join("a%d" % i for i in range(17)) + ";\n}\n")
 
 
+# ---------------------------------------------------------------- p. preprocessor limits
+# ANGLE holds at most 10,000 tokens of macro expansions in progress (expanded arguments plus the
+# replacement being built); past that the compile fails with "out of memory". Empty statements
+# keep the expanded text valid, so only the limit decides.
+TEN = "#define T(x) x x x x x x x x x x\n"
+probe("p-macro-tenfold-4-levels", frag=fs(TEN, "  T(T(T(T(;))))\n  o = vec4(1.0);\n"))
+probe("p-macro-tenfold-5-levels", frag=fs(TEN, "  T(T(T(T(T(;)))))\n  o = vec4(1.0);\n"))
+probe("p-macro-tenfold-6-levels", frag=fs(TEN, "  T(T(T(T(T(T(;))))))\n  o = vec4(1.0);\n"))
+probe("p-macro-argument-10000", frag=fs("#define I(x) x\n", "  I(" + "; " * 10000 + ")\n  o = vec4(1.0);\n"))
+probe("p-macro-argument-10001", frag=fs("#define I(x) x\n", "  I(" + "; " * 10001 + ")\n  o = vec4(1.0);\n"))
+probe("p-macro-replacement-3x5000", frag=fs("#define R(x) x x x\n", "  R(" + "; " * 5000 + ")\n  o = vec4(1.0);\n"))
+probe("p-macro-replacement-3x5001", frag=fs("#define R(x) x x x\n", "  R(" + "; " * 5001 + ")\n  o = vec4(1.0);\n"))
+probe("p-macro-object-fourfold-7-levels", frag=fs(
+    "".join("#define E%d E%d E%d E%d E%d\n" % (i, i + 1, i + 1, i + 1, i + 1) for i in range(7)) + "#define E7 ;\n",
+    "  E0\n  o = vec4(1.0);\n"))
+
+
+# ---------------------------------------------------------------- s. variable size limits
+# ANGLE refuses a variable of 2 GiB or more measured as a std140 member, a private variable (local,
+# global, const, parameter, varying) of 64 KiB or more measured at 4 bytes per component, and
+# private variables of more than 16 MiB in all. The pairs below sit on each boundary.
+def local(decl, use):
+    return fs("", "  %s\n  %s\n  o = vec4(1.0);\n" % (decl, use))
+probe("s-local-float-16383", frag=local("float a[16383];", "a[0] = 1.0;"))
+probe("s-local-float-16384", frag=local("float a[16384];", "a[0] = 1.0;"))
+probe("s-local-vec3-5461", frag=local("vec3 a[5461];", "a[0] = vec3(1.0);"))
+probe("s-local-vec3-5462", frag=local("vec3 a[5462];", "a[0] = vec3(1.0);"))
+probe("s-local-mat4-1023", frag=local("mat4 a[1023];", "a[0] = mat4(1.0);"))
+probe("s-local-mat4-1024", frag=local("mat4 a[1024];", "a[0] = mat4(1.0);"))
+probe("s-local-struct-float-vec2-5461", frag=fs("struct S {\n  float b;\n  vec2 a;\n};\n", "  S s[5461];\n  s[0].b = 1.0;\n  o = vec4(s[0].b);\n"))
+probe("s-local-struct-float-vec2-5462", frag=fs("struct S {\n  float b;\n  vec2 a;\n};\n", "  S s[5462];\n  s[0].b = 1.0;\n  o = vec4(s[0].b);\n"))
+probe("s-local-int-2147483647", frag=local("int a[2147483647];", "a[0] = 1;"))
+probe("s-global-unused-int-2147483647", frag=fs("int g[2147483647];\n", "  o = vec4(1.0);\n"))
+probe("s-global-float-16384", frag=fs("float g[16384];\n", "  g[0] = 1.0;\n  o = vec4(g[0]);\n"))
+probe("s-parameter-float-16384", frag=fs("float f(float p[16384]) {\n  return p[0];\n}\n", "  o = vec4(1.0);\n"))
+probe("s-struct-type-only-float-20000", frag=fs("struct S {\n  float x[20000];\n};\n", "  o = vec4(1.0);\n"))
+probe("s-varying-out-vec4-4095", vert=vs("out vec4 v[4095];\n", "  gl_Position = a_position;\n"))
+probe("s-varying-out-vec4-4096", vert=vs("out vec4 v[4096];\n", "  gl_Position = a_position;\n"))
+probe("s-uniform-float-134217727", frag=fs("uniform float u[134217727];\n", "  o = vec4(u[0]);\n"))
+probe("s-uniform-float-134217728", frag=fs("uniform float u[134217728];\n", "  o = vec4(u[0]);\n"))
+probe("s-total-private-262-locals", frag=fs("", "".join("  vec4 a%d[4000];\n" % i for i in range(262)) + "  o = vec4(1.0);\n"))
+probe("s-total-private-263-locals", frag=fs("", "".join("  vec4 a%d[4000];\n" % i for i in range(263)) + "  o = vec4(1.0);\n"))
+
 def main():
     os.chdir(ROOT)
     if os.path.isdir(DIR):

@@ -48,10 +48,10 @@ impl Shader {
 }
 
 /// Stack that one compile (or link) may need. The passes recurse over the syntax tree, whose
-/// depth the parser bounds at [`crate::parse::MAX_NESTING`]. The deepest shaders it admits (256
-/// nested loops, blocks, parentheses, calls, else-ifs…) need at most 0.95 MiB in an optimised
-/// build and 5.1 MiB in an unoptimised one (`docs/reliability.md`); this is about four and two
-/// times that.
+/// depth the parser bounds at [`crate::parse::MAX_NESTING`], and the preprocessor over macro
+/// calls nested in arguments (1,000 at most). The deepest inputs admitted need at most 1.5 MiB
+/// in an optimised build (1,000 nested macro calls) and 5.1 MiB in an unoptimised one (256
+/// nested loops), measured on x86-64 (`docs/reliability.md`); this is 2.7 and 2.3 times that.
 pub const COMPILE_STACK: usize = if cfg!(debug_assertions) {
     12 << 20
 } else {

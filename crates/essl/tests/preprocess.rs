@@ -1,6 +1,5 @@
 //! The preprocessor against dEQP's and WebGL's conformance cases, and rule by rule.
 
-
 use essl::diagnostic::{Applicability, Diagnostic, Severity};
 use essl::lex::{lex, PpKind};
 use essl::preprocess::{preprocess, ExtensionBehavior, PreprocessOptions, Preprocessed, Version};
@@ -1196,23 +1195,22 @@ fn long_macro_chains() {
 
 #[test]
 fn calls_nested_deep_in_arguments() {
-    let n = 10_000;
-    let src = v(&format!(
-        "#define F(x) x\n{}1{}",
-        "F(".repeat(n),
-        ")".repeat(n)
-    ));
-    let (_, p) = run(&src);
-    assert_eq!(errors(&p), ["macro-nesting-too-deep"]);
-    // Up to the limit, calls nest as usual.
-    assert_eq!(
-        out(&format!(
+    // Chromium compiles 1,000 nested calls and refuses 1,001 ("macro invocation chain too
+    // deep"), with no other preprocessor error.
+    let nested = |n: usize| {
+        v(&format!(
             "#define F(x) x\n{}1{}",
-            "F(".repeat(60),
-            ")".repeat(60)
-        )),
-        "1"
-    );
+            "F(".repeat(n),
+            ")".repeat(n)
+        ))
+    };
+    for n in [1001, 10_000] {
+        let (_, p) = run(&nested(n));
+        assert_eq!(errors(&p), ["macro-nesting-too-deep"], "{n} nested calls");
+    }
+    let (_, p) = run(&nested(1000));
+    assert!(errors(&p).is_empty());
+    assert_eq!(texts(&p), ["1"]);
 }
 
 #[test]
@@ -1324,6 +1322,61 @@ mod never_panics {
             }
             let (_, p) = run(&src);
             prop_assert_eq!(p.tokens.last().map(|t| t.kind), Some(PpKind::Eof));
+        }
+    }
+}
+
+/// A shader whose body repeats `;` through macros: only the expansion limit can reject it.
+fn expansion_limit_shader(defines: &str, body: &str) -> String {
+    format!("#version 300 es\nprecision mediump float;\nout vec4 o;\n{defines}\nvoid main() {{ {body} o = vec4(1.0); }}\n")
+}
+
+#[test]
+fn macro_expansions_in_progress_are_bounded_as_in_angle() {
+    // Chromium's answers: tests/oracle/PROBES.md, "Preprocessor limits".
+    let ten = "#define T(x) x x x x x x x x x x";
+    let cases = [
+        (ten, "T(T(T(T(;))))".to_string(), true),
+        (ten, "T(T(T(T(T(;)))))".to_string(), false),
+        (ten, "T(T(T(T(T(T(;))))))".to_string(), false),
+        (
+            "#define I(x) x",
+            format!("I({})", "; ".repeat(10_000)),
+            true,
+        ),
+        (
+            "#define I(x) x",
+            format!("I({})", "; ".repeat(10_001)),
+            false,
+        ),
+        (
+            "#define R(x) x x x",
+            format!("R({})", "; ".repeat(5_000)),
+            true,
+        ),
+        (
+            "#define R(x) x x x",
+            format!("R({})", "; ".repeat(5_001)),
+            false,
+        ),
+    ];
+    for (defines, body, ok) in cases {
+        let errs = shader_errors(&expansion_limit_shader(defines, &body), Stage::Fragment);
+        let codes: Vec<&str> = errs.iter().map(|d| d.code).collect();
+        if ok {
+            assert!(codes.is_empty(), "{defines} / {}…: {codes:?}", &body[..12]);
+        } else {
+            assert_eq!(
+                codes,
+                ["macro-expansion-too-large"],
+                "{defines} / {}…",
+                &body[..12]
+            );
+            assert!(
+                errs[0].message.contains("10000 tokens at once"),
+                "{}",
+                errs[0].message
+            );
         }
     }
 }

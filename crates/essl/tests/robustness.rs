@@ -241,3 +241,50 @@ fn the_deepest_shaders_compile_and_link_from_a_small_thread() {
     let failed = handle.join().unwrap();
     assert!(failed.is_empty(), "{failed:?}");
 }
+
+#[test]
+fn oversized_variables_are_user_errors_with_webgl_limits() {
+    // Chromium's answers for these: tests/oracle/PROBES.md, "Variable size limits".
+    let fs = |body: &str| format!("#version 300 es\nprecision highp float;\nout vec4 o;\n{body}\n");
+    let cases = [
+        (
+            "void main() { int a[2147483647]; a[0] = 1; o = vec4(float(a[0])); }",
+            "variable-too-large",
+            "`a` takes 32.0 GiB laid out as a std140 block member, and WebGL implementations allow less than 2 GiB for one variable",
+        ),
+        (
+            "void main() { float a[16384]; a[0] = 1.0; o = vec4(a[0]); }",
+            "private-variable-too-large",
+            "`a` takes 64 KiB, and WebGL implementations allow less than 64 KiB for a local, global, constant, parameter or varying",
+        ),
+        (
+            "float f(float p[16384]) { return p[0]; }\nvoid main() { o = vec4(1.0); }",
+            "private-variable-too-large",
+            "`p` takes 64 KiB, and WebGL implementations allow less than 64 KiB for a local, global, constant, parameter or varying",
+        ),
+    ];
+    for (body, code, message) in cases {
+        let sh = run(&fs(body), Stage::Fragment);
+        let errors: Vec<(&str, &str)> = sh
+            .diagnostics
+            .iter()
+            .filter(|d| d.is_error())
+            .map(|d| (d.code, d.message.as_str()))
+            .collect();
+        assert_eq!(errors, [(code, message)], "{body}");
+    }
+    let many = (0..263)
+        .map(|i| format!("vec4 a{i}[4000];"))
+        .collect::<String>();
+    let sh = run(
+        &fs(&format!("void main() {{ {many} o = vec4(1.0); }}")),
+        Stage::Fragment,
+    );
+    let codes: Vec<&str> = sh.diagnostics.iter().map(|d| d.code).collect();
+    assert_eq!(codes, ["private-variables-too-large"]);
+    let sh = run(
+        &fs("void main() { float a[16383]; a[0] = 1.0; o = vec4(a[0]); }"),
+        Stage::Fragment,
+    );
+    assert!(sh.ok(), "{:?}", sh.diagnostics.first());
+}

@@ -479,6 +479,13 @@ impl Checker<'_> {
             d.label = "no size and no initializer to take it from".into();
             return None;
         }
+        let private = match kind {
+            DeclKind::Local | DeclKind::Const | DeclKind::GlobalPrivate => true,
+            DeclKind::Input => self.stage == Stage::Fragment,
+            DeclKind::Output => self.stage == Stage::Vertex,
+            DeclKind::Uniform => false,
+        };
+        self.check_variable_size(&decl.name.name, decl.name.span, &ty, private);
         let precision = self.precision_for(&ty, fty.precision().map(|p| p.0), decl.name.span);
         self.check_interface_type(fty, &ty, kind, decl.name.span);
         if let Some(i) = &init {
@@ -1228,6 +1235,8 @@ impl Checker<'_> {
             }
             None => self.unnamed_param(),
         };
+        let name_span = p.name.as_ref().map_or(p.span, |n| n.span);
+        self.check_variable_size(&name, name_span, &ty, true);
         Some(hir::Param {
             name,
             ty,

@@ -8,6 +8,7 @@
 mod decl;
 mod expr;
 pub mod fold;
+mod limits;
 mod stmt;
 
 use std::collections::HashMap;
@@ -114,6 +115,8 @@ pub(crate) struct Checker<'a> {
     truncated: bool,
     /// Locals of the current function whose block has ended: (name, declaration).
     ended: Vec<(Arc<str>, Span)>,
+    /// Bytes of private variables declared so far ([`limits`]).
+    private_bytes: u64,
 }
 
 impl<'a> Checker<'a> {
@@ -151,6 +154,7 @@ impl<'a> Checker<'a> {
             unnamed_param_counter: 0,
             truncated: false,
             ended: Vec::new(),
+            private_bytes: 0,
         }
     }
 

@@ -18,8 +18,25 @@ use crate::source::Span;
 
 use super::Pp;
 
-/// How deeply macro calls may nest inside macro arguments (`F(F(F(...)))`).
-pub(super) const MAX_ARGUMENT_NESTING: u32 = 64;
+/// How deeply macro calls may nest inside macro arguments (`F(F(F(...)))`): ANGLE's
+/// `maxMacroExpansionDepth`; Chromium compiles 1,000 nested calls and refuses 1,001 ("macro
+/// invocation chain too deep").
+pub(super) const MAX_ARGUMENT_NESTING: u32 = 1000;
+
+/// Why an argument could not be expanded (reported where it was found).
+enum ArgFailure {
+    /// Macro calls nested past [`MAX_ARGUMENT_NESTING`].
+    TooDeep,
+    /// More tokens than [`MAX_CONTEXT_TOKENS`] allow.
+    TooLarge,
+}
+
+/// How many tokens the expansions in progress of one expander may hold at once, counting the
+/// expanded arguments of the call being substituted: ANGLE's limit (`kMaxContextTokens`),
+/// past which WebGL browsers refuse the shader ("out of memory"). It is what keeps a
+/// function-like macro that repeats its argument, nested a few times, from growing
+/// exponentially.
+pub(super) const MAX_CONTEXT_TOKENS: usize = 10_000;
 
 /// A token on its way through the expander.
 #[derive(Clone, Debug)]
@@ -164,6 +181,8 @@ struct Ctx {
     mac: Rc<Macro>,
     /// The remaining tokens, in reverse order.
     toks: Vec<Tok>,
+    /// How many tokens the expansion had (counted in [`Expander::in_contexts`] until popped).
+    len: usize,
 }
 
 impl Drop for Ctx {
@@ -186,10 +205,14 @@ pub(super) struct Expander {
     source: Source,
     contexts: Vec<Ctx>,
     pending: Option<Tok>,
+    /// The tokens of the expansions on `contexts` (their whole lengths, as ANGLE counts).
+    in_contexts: usize,
     /// In an `#if` or `#elif` line: `defined` is an operator.
     if_mode: bool,
     /// How deeply this expander is nested in argument pre-expansion.
     depth: u32,
+    /// A macro call in it was nested past [`MAX_ARGUMENT_NESTING`].
+    too_deep: bool,
     /// An error in a macro call or a `defined` operator was reported: the line's value is
     /// unusable.
     pub failed: bool,
@@ -202,8 +225,10 @@ impl Expander {
             source: Source::Main,
             contexts: Vec::new(),
             pending: None,
+            in_contexts: 0,
             if_mode: false,
             depth: 0,
+            too_deep: false,
             failed: false,
         }
     }
@@ -216,8 +241,10 @@ impl Expander {
             source: Source::List(toks),
             contexts: Vec::new(),
             pending: None,
+            in_contexts: 0,
             if_mode,
             depth,
+            too_deep: false,
             failed: false,
         }
     }
@@ -231,7 +258,9 @@ impl Pp<'_> {
             return t;
         }
         while ex.contexts.last().is_some_and(|c| c.toks.is_empty()) {
-            ex.contexts.pop();
+            if let Some(c) = ex.contexts.pop() {
+                ex.in_contexts -= c.len;
+            }
         }
         if let Some(c) = ex.contexts.last_mut() {
             if let Some(t) = c.toks.pop() {
@@ -296,7 +325,9 @@ impl Pp<'_> {
             let mut toks = toks;
             toks.reverse();
             m.disabled.set(true);
-            ex.contexts.push(Ctx { mac: m, toks });
+            let len = toks.len();
+            ex.in_contexts += len;
+            ex.contexts.push(Ctx { mac: m, toks, len });
         }
     }
 
@@ -372,12 +403,36 @@ impl Pp<'_> {
             ex.failed = true;
             return None;
         }
-        let args: Vec<Vec<Tok>> = args
-            .into_iter()
-            .map(|a| self.pre_expand(ex, a, name))
-            .collect();
+        // The expanded arguments and the replacement count against the tokens that this
+        // expander's expansions in progress hold, as in ANGLE.
+        let room = MAX_CONTEXT_TOKENS.saturating_sub(ex.in_contexts);
+        let mut expanded = Vec::with_capacity(args.len());
+        let mut counted = 0;
+        for a in args {
+            match self.pre_expand(ex, a, name, room - counted.min(room)) {
+                Ok(a) => {
+                    counted += a.len();
+                    expanded.push(a);
+                }
+                Err(failure) => {
+                    match failure {
+                        ArgFailure::TooLarge => self.report_context_tokens(m, name),
+                        ArgFailure::TooDeep => ex.too_deep = true,
+                    }
+                    // The call is dropped, as the calls around it will be.
+                    ex.failed = true;
+                    return None;
+                }
+            }
+        }
+        let args = expanded;
         let mut out = Vec::new();
         for b in &m.body {
+            if !out.is_empty() && out.len() > room {
+                self.report_context_tokens(m, name);
+                ex.failed = true;
+                return None;
+            }
             match b {
                 Body::Tok(pt) => {
                     let mut t = pt.clone();
@@ -414,16 +469,22 @@ impl Pp<'_> {
         Some(out)
     }
 
-    /// Fully expands one macro argument on its own.
-    fn pre_expand(&mut self, outer: &mut Expander, arg: Vec<Tok>, name: &Tok) -> Vec<Tok> {
+    /// Fully expands one macro argument on its own, into at most `room` tokens.
+    fn pre_expand(
+        &mut self,
+        outer: &mut Expander,
+        arg: Vec<Tok>,
+        name: &Tok,
+        room: usize,
+    ) -> Result<Vec<Tok>, ArgFailure> {
         if arg.is_empty() {
-            return arg;
+            return Ok(arg);
         }
         if outer.depth >= MAX_ARGUMENT_NESTING {
             if !self.depth_reported {
                 self.report_nesting(name);
             }
-            return arg;
+            return Err(ArgFailure::TooDeep);
         }
         let end = arg.last().map(|t| t.t.span.end_point()).unwrap_or_default();
         let mut list = arg;
@@ -441,10 +502,47 @@ impl Pp<'_> {
             if t.t.kind == PpKind::Eof {
                 break;
             }
+            if out.len() == room {
+                outer.failed = true;
+                return Err(ArgFailure::TooLarge);
+            }
             out.push(t);
         }
         outer.failed |= sub.failed;
-        out
+        if sub.too_deep {
+            // A call nested too deep inside: drop the calls around it too.
+            return Err(ArgFailure::TooDeep);
+        }
+        Ok(out)
+    }
+
+    #[cold]
+    #[inline(never)]
+    fn report_context_tokens(&mut self, m: &Macro, name: &Tok) {
+        if self.context_tokens_reported {
+            return;
+        }
+        self.context_tokens_reported = true;
+        self.diags.push(
+            Diagnostic::error(
+                "macro-expansion-too-large",
+                format!(
+                    "expanding `{}` needs more than {MAX_CONTEXT_TOKENS} tokens at once",
+                    m.name
+                ),
+                name.t.span,
+            )
+            .with_label("this call expands past the limit")
+            .with_note(format!(
+                "WebGL implementations hold at most {MAX_CONTEXT_TOKENS} tokens of macro \
+                 expansions in progress; Chromium reports \"out of memory\" here"
+            ))
+            .with_help(
+                "a macro that repeats its argument grows exponentially when nested: use a \
+                 function instead",
+            )
+            .with_token(&*m.name),
+        );
     }
 
     #[cold]
@@ -518,7 +616,7 @@ impl Pp<'_> {
                 name.t.span,
             )
             .with_label("too deep here")
-            .with_note("arguments nested deeper are not expanded before substitution")
+            .with_note("WebGL implementations refuse deeper macro calls (Chromium: \"macro invocation chain too deep\")")
             .with_token(&*name.t.text),
         );
     }

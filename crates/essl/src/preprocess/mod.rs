@@ -197,6 +197,11 @@ fn presumed(dirs: &[LineDirective], file: &SourceFile, offset: u32) -> (i64, i64
 
 /// Preprocesses a lexed shader.
 pub fn preprocess(file: &SourceFile, lexed: Lexed, options: &PreprocessOptions) -> Preprocessed {
+    // Macro calls nested in arguments recurse (up to `MAX_ARGUMENT_NESTING` levels).
+    crate::shader::with_stack(|| preprocess_here(file, lexed, options))
+}
+
+fn preprocess_here(file: &SourceFile, lexed: Lexed, options: &PreprocessOptions) -> Preprocessed {
     let Lexed {
         mut tokens,
         diagnostics,
@@ -268,6 +273,7 @@ pub(super) struct Pp<'a> {
     expanded: usize,
     budget: usize,
     budget_reported: bool,
+    context_tokens_reported: bool,
     depth_reported: bool,
     eof_reached: bool,
 }
@@ -298,6 +304,7 @@ impl<'a> Pp<'a> {
             expanded: 0,
             budget,
             budget_reported: false,
+            context_tokens_reported: false,
             depth_reported: false,
             eof_reached: false,
         }
