@@ -38,7 +38,7 @@ enum Command {
     },
     /// Measure the light shaders (essl-lights) through essl's WebGL2 API: error against the
     /// float64 reference and time per frame for each variant; write report.md, report.svg, the
-    /// pictures and (full run) the GPU stiff section of stability.md.
+    /// pictures and (full run) the GPU stiff section of numerical-stability.md.
     Report {
         /// The folder to write into.
         #[arg(long, default_value = "docs", value_name = "DIR")]

@@ -7,8 +7,8 @@ use std::path::Path;
 use essl_lights::report::{self, Settings};
 
 /// Runs the report and writes `report.md`, `report.svg`, the pictures and (full run) the GPU
-/// section of `stability.md` into `out`; prints the table. Returns the exit status: 0 written,
-/// 1 a measurement or a write failed, 2 no Vulkan adapter.
+/// section of `numerical-stability.md` into `out`; prints the table. Returns the exit status:
+/// 0 written, 1 a measurement or a write failed, 2 no Vulkan adapter.
 pub fn run(out: &Path, quick: bool, scenes: &Path) -> i32 {
     if std::env::var_os("XDG_RUNTIME_DIR").is_none() {
         // Silences a harmless complaint of the Vulkan loader.

@@ -1,6 +1,6 @@
-//! The library's GLSL building blocks: the stable formulations (`docs/stability.md`), each the
-//! GLSL twin of a function in [`crate::formulas`] (which the stiff-case matrix evaluates on the
-//! CPU). All names start with `el_`.
+//! The library's GLSL building blocks: the stable formulations
+//! (`docs/numerical-stability.md`), each the GLSL twin of a function in [`crate::formulas`]
+//! (which the stiff-case matrix evaluates on the CPU). All names start with `el_`.
 
 /// Unit vector of `v`, or zero when `v` is zero. Dividing by the largest component first keeps
 /// `dot` in `[1, 3]`: no overflow above `1.8e19`, no underflow below `1e-19` (mediump: 256 and

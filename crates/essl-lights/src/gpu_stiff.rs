@@ -548,7 +548,7 @@ pub fn markdown(rows: &[GpuRow]) -> String {
     s
 }
 
-/// The start marker of the GPU section in `docs/stability.md`.
+/// The start marker of the GPU section in `docs/numerical-stability.md`.
 pub const BEGIN_MARKER: &str = "<!-- gpu-stiff-table:begin -->";
 /// The end marker.
 pub const END_MARKER: &str = "<!-- gpu-stiff-table:end -->";

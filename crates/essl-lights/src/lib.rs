@@ -17,14 +17,14 @@
 //!   the shared scenes' own shaders, [`reference::LitShader`] for the library's model), with
 //!   an exact-surface mode, coverage masks and the comparison of an RGBA8 image against it.
 //! - [`real`], [`formulas`], [`stiff`]: the shader formulas generic over float64 / float32 /
-//!   binary16 and the stiff-case matrix of `docs/stability.md`.
+//!   binary16 and the stiff-case matrix of `docs/numerical-stability.md`.
 //! - [`bridge`]: a lit scene on a base scene's geometry as an [`essl_scene::Scene`] (and its
 //!   JSON), for renderers of scene files; [`presets`]: the shared seed scenes as lit scenes.
 //! - On the GPU (essl-gl: WebGL2's API on wgpu): [`gpu`] draws programs, times frames and
 //!   makes the NaN probe of a program (an RGBA8 target cannot show NaN); [`seed_glsl`] writes the
 //!   seeds' formulas as GLSL programs on the library's interface; [`gpu_stiff`] draws the
-//!   stiff-case matrix with both (`docs/stability.md`, "The matrix on the GPU"); [`report`]
-//!   measures error against run time for shading, tessellation, edge profiles, precision,
+//!   stiff-case matrix with both (`docs/numerical-stability.md`, "The matrix on the GPU");
+//!   [`report`] measures error against run time for shading, tessellation, edge profiles, precision,
 //!   projector coordinates and specialised-vs-uber programs (`essl report`, `docs/report.md`).
 //!
 //! ```

@@ -3,9 +3,10 @@
 //! and what the GPU comparison renders with the library's shaders.
 //!
 //! The library's model differs from the seeds' formulas on purpose where those are fragile or
-//! wrong (see `docs/stability.md`): the Lambert term is clamped, the specular term is weighted
-//! by `max(N·L, 0)` instead of gated by `step(0.1, light)` or `if (lambert > 0)`, and a cookie
-//! multiplies the light by its RGB rather than by `length(rgb)` (which makes white √3 bright).
+//! wrong (see `docs/numerical-stability.md`): the Lambert term is clamped, the specular term is
+//! weighted by `max(N·L, 0)` instead of gated by `step(0.1, light)` or `if (lambert > 0)`, and a
+//! cookie multiplies the light by its RGB rather than by `length(rgb)` (which makes white √3
+//! bright).
 
 use glam::{DMat4, DVec3};
 

@@ -6,8 +6,9 @@
 //! the spot's axis and the cone's edge, as three.js's `angle`), `0 ≤ inner ≤ outer ≤ 180`.
 //!
 //! [`LitScene::validate`] refuses what would render NaN or an undefined picture (see
-//! `docs/stability.md` and [`LightsError`]); [`LitScene::prepare`] computes, in float64, the
-//! values the shaders receive (unit directions, cone cosines and slopes, the projector basis).
+//! `docs/numerical-stability.md` and [`LightsError`]); [`LitScene::prepare`] computes, in
+//! float64, the values the shaders receive (unit directions, cone cosines and slopes, the
+//! projector basis).
 
 use glam::DVec3;
 
@@ -28,7 +29,7 @@ pub const MIN_UP_SINE: f64 = 1.0e-6;
 
 /// The steepest edge ramp sent to a shader, in 1 / (unit of cosine): a cone whose inner and
 /// outer cosines are closer than `1 / MAX_EDGE_SLOPE` (inner == outer included) gets this slope,
-/// which is a step for every float32 input (see `docs/stability.md`, "inner == outer").
+/// which is a step for every float32 input (see `docs/numerical-stability.md`, "inner == outer").
 pub const MAX_EDGE_SLOPE: f64 = 1_099_511_627_776.0; // 2^40
 
 /// Where lighting is evaluated.

@@ -196,7 +196,8 @@ fn fragment_uniforms(seed: Seed) -> Vec<(&'static str, GlslType)> {
 pub fn seed_program(seed: Seed) -> ShaderPair {
     let frag_uniforms = fragment_uniforms(seed);
     let mut fs = format!(
-        "#version 300 es\nprecision {} float;\n// essl-lights seed program: {:?}, transplanted (docs/stability.md).\n",
+        "#version 300 es\nprecision {} float;\n// essl-lights seed program: {:?}, transplanted \
+         (docs/numerical-stability.md).\n",
         seed.precision(),
         seed
     );

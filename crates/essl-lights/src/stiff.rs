@@ -918,7 +918,7 @@ pub fn summary(rows: &[Row]) -> (usize, usize, usize) {
     (rows.len(), seed_fail, lib_fail)
 }
 
-/// The start marker of the generated section in `docs/stability.md`.
+/// The start marker of the generated section in `docs/numerical-stability.md`.
 pub const BEGIN_MARKER: &str = "<!-- stiff-table:begin -->";
 /// The end marker.
 pub const END_MARKER: &str = "<!-- stiff-table:end -->";

@@ -1,5 +1,6 @@
-//! The stiff cases on the GPU: every (light model, stiff case) row of `docs/stability.md` drawn
-//! through essl-gl (lavapipe here) with the library's program and the seed's, 65×65.
+//! The stiff cases on the GPU: every (light model, stiff case) row of
+//! `docs/numerical-stability.md` drawn through essl-gl (lavapipe here) with the library's program
+//! and the seed's, 65×65.
 //!
 //! The library's program must draw no NaN or infinite fragment (the NaN probe,
 //! `gpu::probe_program`) and be within 1/255 of the float64 model away from silhouettes, or be

@@ -137,8 +137,8 @@ fn quick_report_end_to_end() {
             assert!(v.is_finite(), "{line}");
         }
     }
-    // --quick leaves stability.md alone.
-    assert!(!out.join("stability.md").exists());
+    // --quick leaves numerical-stability.md alone.
+    assert!(!out.join("numerical-stability.md").exists());
 }
 
 #[test]

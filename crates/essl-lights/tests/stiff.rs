@@ -1,6 +1,6 @@
 //! The stiff-case matrix: the library's formulations are finite and within 1/255 of the f64
 //! model everywhere (or the API refuses the parameters); the seeds' formulas fail where
-//! `docs/stability.md` says, and its table is this run's.
+//! `docs/numerical-stability.md` says, and its table is this run's.
 
 use essl_lights::stiff::{self, Case, Model, Outcome};
 
@@ -135,8 +135,9 @@ fn class(cell: &str) -> char {
 
 #[test]
 fn the_documented_table_is_this_runs() {
-    let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../../docs/stability.md");
-    let doc = std::fs::read_to_string(&path).expect("docs/stability.md");
+    let path =
+        std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../../docs/numerical-stability.md");
+    let doc = std::fs::read_to_string(&path).expect("docs/numerical-stability.md");
     let a = doc.find(stiff::BEGIN_MARKER).expect("begin marker");
     let b = doc.find(stiff::END_MARKER).expect("end marker");
     let classes = |text: &str| -> Vec<String> {
@@ -158,6 +159,6 @@ fn the_documented_table_is_this_runs() {
     let run = classes(&stiff::markdown(&rows()));
     assert_eq!(
         documented, run,
-        "docs/stability.md is stale: run `cargo run -p essl-lights --bin stiff-table`"
+        "docs/numerical-stability.md is stale: run `cargo run -p essl-lights --bin stiff-table`"
     );
 }

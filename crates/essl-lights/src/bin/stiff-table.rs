@@ -1,4 +1,4 @@
-//! Runs the stiff-case matrix and writes its table into `docs/stability.md`, between the
+//! Runs the stiff-case matrix and writes its table into `docs/numerical-stability.md`, between the
 //! `<!-- stiff-table:begin -->` and `<!-- stiff-table:end -->` markers.
 //!
 //! `cargo run -p essl-lights --bin stiff-table` rewrites the table; with `--check` it only
@@ -26,7 +26,7 @@ fn main() -> ExitCode {
         println!("{table}");
         return ExitCode::SUCCESS;
     }
-    let path = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../../docs/stability.md");
+    let path = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../../docs/numerical-stability.md");
     let doc = match std::fs::read_to_string(&path) {
         Ok(d) => d,
         Err(e) => {

@@ -426,7 +426,7 @@ fn stiff_section(report: &Report, out: &mut String) {
     match &report.stiff {
         None => out.push_str(
             "Not run (`--quick`). The full run draws every (light model, stiff case) row of \
-             `docs/stability.md` on the GPU.\n",
+             `docs/numerical-stability.md` on the GPU.\n",
         ),
         Some(rows) => {
             let (total, seed, lib) = gpu_stiff::summary(rows);
@@ -436,8 +436,8 @@ fn stiff_section(report: &Report, out: &mut String) {
                 "Every (light model, stiff case) row of the CPU matrix drawn at {0}×{0} through \
                  essl-gl with the library's program and with the seed's (`gpu_stiff`; the \
                  table, beside the CPU's `highp` column, is in \
-                 [stability.md](stability.md#the-matrix-on-the-gpu)): of {total} rows, the \
-                 library's program is NaN or more than 1/255 off in **{lib}**, the seed's in \
+                 [numerical-stability.md](numerical-stability.md#the-matrix-on-the-gpu)): of \
+                 {total} rows, the library's program is NaN or more than 1/255 off in **{lib}**, the seed's in \
                  **{seed}** ({nan_seed} of them with NaN or infinite fragments). \
                  `tests/gpu_stiff.rs` asserts the library's 0.",
                 report.settings.stiff_size.unwrap_or(gpu_stiff::SIZE)

@@ -20,7 +20,7 @@
 //!   load over every variant).
 //!
 //! [`run`] does everything and returns a [`Report`]; [`write`] writes `report.md`, the chart
-//! `report.svg`, the pictures `report-*.png` and the GPU stiff section of `stability.md`.
+//! `report.svg`, the pictures `report-*.png` and the GPU stiff section of `numerical-stability.md`.
 
 mod chart;
 mod doc;
@@ -536,7 +536,7 @@ pub fn run(settings: &Settings, progress: &mut dyn FnMut(&str)) -> Result<Report
 }
 
 /// Writes `report.md`, `report.svg` and the pictures into `out` (created if needed), and the
-/// GPU stiff section into `out/stability.md` when the report has it and that file exists.
+/// GPU stiff section into `out/numerical-stability.md` when the report has it and that file exists.
 /// Returns the files written.
 pub fn write(report: &Report, out: &Path) -> Result<Vec<PathBuf>, LightsError> {
     std::fs::create_dir_all(out).map_err(|e| io_err(out, e))?;
@@ -554,7 +554,7 @@ pub fn write(report: &Report, out: &Path) -> Result<Vec<PathBuf>, LightsError> {
     std::fs::write(&p, doc::markdown(report)).map_err(|e| io_err(&p, e))?;
     written.push(p);
     if let Some(rows) = &report.stiff {
-        let p = out.join("stability.md");
+        let p = out.join("numerical-stability.md");
         if let Ok(text) = std::fs::read_to_string(&p) {
             let section = gpu_stiff::document_section(
                 rows,
