@@ -58,7 +58,7 @@ pub struct Collected {
 /// files whose extension names a stage (others, hidden entries and symbolic links to folders are
 /// skipped).
 pub fn collect(paths: &[PathBuf], forced: Option<Stage>) -> Result<Collected, CollectError> {
-    let mut found: BTreeMap<PathBuf, Stage> = BTreeMap::new();
+    let mut found: Vec<(PathBuf, Stage)> = Vec::new();
     let mut errors = Vec::new();
     for path in paths {
         match std::fs::metadata(path) {
@@ -75,7 +75,7 @@ pub fn collect(paths: &[PathBuf], forced: Option<Stage>) -> Result<Collected, Co
                         )))
                     }
                 };
-                found.insert(path.clone(), stage);
+                found.push((path.clone(), stage));
             }
             Err(e) => errors.push(CollectError::Io {
                 path: path.clone(),
@@ -84,19 +84,24 @@ pub fn collect(paths: &[PathBuf], forced: Option<Stage>) -> Result<Collected, Co
         }
     }
     // The same file named twice (`a.frag` and `./a.frag`, or a file and its folder) is
-    // checked once, under the first name in path order.
+    // checked once, under the first name in path order. One path names every file once.
     let mut seen = std::collections::HashSet::new();
+    let several = paths.len() > 1;
+    if several {
+        found.sort_by(|a, b| a.0.cmp(&b.0));
+        found.dedup_by(|later, first| later.0 == first.0);
+    }
     let inputs = found
         .into_iter()
         .filter(|(path, _)| {
-            seen.insert(std::fs::canonicalize(path).unwrap_or_else(|_| path.clone()))
+            !several || seen.insert(std::fs::canonicalize(path).unwrap_or_else(|_| path.clone()))
         })
         .map(|(path, stage)| Input { path, stage })
         .collect();
     Ok(Collected { inputs, errors })
 }
 
-fn walk(dir: &Path, found: &mut BTreeMap<PathBuf, Stage>, errors: &mut Vec<CollectError>) {
+fn walk(dir: &Path, found: &mut Vec<(PathBuf, Stage)>, errors: &mut Vec<CollectError>) {
     let entries = match std::fs::read_dir(dir) {
         Ok(entries) => entries,
         Err(e) => {
@@ -107,16 +112,23 @@ fn walk(dir: &Path, found: &mut BTreeMap<PathBuf, Stage>, errors: &mut Vec<Colle
             return;
         }
     };
-    let mut children: Vec<PathBuf> = entries
-        .filter_map(|e| e.ok().map(|e| e.path()))
+    // The entry's own type (from the directory listing on most file systems: no `stat` per
+    // file). A symbolic link to a folder is not followed; one with a shader's name is read.
+    let mut children: Vec<(PathBuf, std::fs::FileType)> = entries
+        .filter_map(|e| {
+            let e = e.ok()?;
+            Some((e.path(), e.file_type().ok()?))
+        })
         // `essl lint .` shows `a.frag`, not `./a.frag`.
-        .map(|p| match p.strip_prefix(".") {
-            Ok(rest) if dir == Path::new(".") => rest.to_path_buf(),
-            _ => p,
+        .map(|(p, t)| match p.strip_prefix(".") {
+            Ok(rest) if dir == Path::new(".") => (rest.to_path_buf(), t),
+            _ => (p, t),
         })
         .collect();
-    children.sort();
-    for path in children {
+    // Siblings: their names order them (a depth-first walk of sorted siblings visits paths in
+    // `Path` order, so `found` stays sorted for one folder).
+    children.sort_by(|a, b| a.0.file_name().cmp(&b.0.file_name()));
+    for (path, file_type) in children {
         if path
             .file_name()
             .and_then(|n| n.to_str())
@@ -124,13 +136,12 @@ fn walk(dir: &Path, found: &mut BTreeMap<PathBuf, Stage>, errors: &mut Vec<Colle
         {
             continue;
         }
-        let Ok(meta) = std::fs::symlink_metadata(&path) else {
-            continue;
-        };
-        if meta.is_dir() {
+        if file_type.is_dir() {
             walk(&path, found, errors);
-        } else if let Some(stage) = Stage::from_path(&path) {
-            found.insert(path, stage);
+        } else {
+            if let Some(stage) = Stage::from_path(&path) {
+                found.push((path, stage));
+            }
         }
     }
 }

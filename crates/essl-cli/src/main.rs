@@ -190,6 +190,10 @@ fn rule_levels(
     Ok((options, deny_warnings))
 }
 
+#[cfg(feature = "mimalloc")]
+#[global_allocator]
+static ALLOCATOR: mimalloc::MiMalloc = mimalloc::MiMalloc;
+
 fn main() -> ExitCode {
     use clap::{CommandFactory, FromArgMatches};
     // Worker threads with room for a whole compile, so that `essl::compile` runs on them

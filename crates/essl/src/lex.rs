@@ -415,7 +415,7 @@ impl<'a> Interner<'a> {
     /// text is not interned).
     fn text(&mut self, text: &'a str, start: usize, end: usize) -> Arc<str> {
         let raw = &text[start..end];
-        if raw.contains(['\\', '\n', '\r']) {
+        if raw.bytes().any(|b| matches!(b, b'\\' | b'\n' | b'\r')) {
             let joined = raw.replace(['\\', '\n', '\r'], "");
             if !joined.is_empty() {
                 return Arc::from(joined);

@@ -106,7 +106,7 @@ fn check(cx: &Cx, out: &mut Vec<Diagnostic>) {
             };
             let typ: Vec<Interval> = ops
                 .iter()
-                .filter_map(|o| cx.typical.num(id, *o).map(|n| n.hull()))
+                .filter_map(|o| cx.typical().num(id, *o).map(|n| n.hull()))
                 .collect();
             if typ.len() != ops.len() || typ.iter().any(|i| i.mag() > LIMIT) {
                 continue;
@@ -148,7 +148,7 @@ fn amplified(cx: &Cx, f: &Function, id: usize, e: &E, typ: &[Interval]) -> Optio
             .is_some_and(|n| n.comps().iter().all(|c| c.as_point().is_some()))
     };
     let squares = |h: Handle<E>| {
-        cx.typical.num(id, h).map(|n| {
+        cx.typical().num(id, h).map(|n| {
             n.comps()
                 .iter()
                 .fold(Interval::point(0.0), |s, c| s.add(c.sqr()))
@@ -197,7 +197,7 @@ fn amplified(cx: &Cx, f: &Function, id: usize, e: &E, typ: &[Interval]) -> Optio
             arg1: Some(b),
             ..
         } => {
-            let (x, y) = (cx.typical.num(id, arg)?, cx.typical.num(id, b)?);
+            let (x, y) = (cx.typical().num(id, arg)?, cx.typical().num(id, b)?);
             Some(
                 x.zip(y, Interval::sub)
                     .iter()
@@ -229,7 +229,7 @@ fn saturated(
 ) -> bool {
     let Some(us) = users.get(&h) else { return true };
     let bounded = |x: Option<Handle<E>>| {
-        x.and_then(|x| cx.typical.num(id, x))
+        x.and_then(|x| cx.typical().num(id, x))
             .is_some_and(|n| n.hull().mag() <= LIMIT)
     };
     us.iter().all(|u| {

@@ -93,8 +93,9 @@ pub struct Cx<'a> {
     pub info: &'a naga::valid::ModuleInfo,
     /// The analysis with any external value.
     pub sound: Analysis,
-    /// The analysis with ordinary external values.
-    pub typical: Analysis,
+    /// The analysis with ordinary external values: computed on first use ([`Cx::typical`]),
+    /// since only low-precision arithmetic asks for it.
+    typical: std::cell::OnceCell<Analysis>,
     /// Precisions by span.
     pub prec: Precisions,
     /// Private globals that user functions write.
@@ -106,7 +107,6 @@ impl<'a> Cx<'a> {
     pub fn new(shader: &'a Shader) -> Option<Cx<'a>> {
         let (module, info) = shader.naga.as_ref()?;
         let sound = Analysis::run(module, info, Mode::Sound);
-        let typical = Analysis::run(module, info, Mode::Typical);
         let mut written = HashSet::default();
         for (_, f) in module.functions.iter() {
             collect_written(f, &f.body, &mut written);
@@ -116,10 +116,17 @@ impl<'a> Cx<'a> {
             module,
             info,
             sound,
-            typical,
+            typical: std::cell::OnceCell::new(),
             prec: Precisions::of(&shader.module),
             written,
         })
+    }
+
+    /// The analysis with ordinary external values (`[0, TYPICAL]`, matrix entries and texels in
+    /// `[0, 1]`).
+    pub fn typical(&self) -> &Analysis {
+        self.typical
+            .get_or_init(|| Analysis::run(self.module, self.info, Mode::Typical))
     }
 
     /// The user's functions (not the entry-point wrapper): (index, function).
