@@ -32,12 +32,14 @@ product, a difference, a sine. A base that is only negative when a uniform or an
 (`pow(u_base, 2.0)`) is not reported: checking uniform values is the runtime check's job.
 
 ## Why is this bad?
-GLSL ES 3.00 leaves `pow(x, y)` undefined for `x < 0` (§8.2), and GPUs compute it as
-`exp2(y * log2(x))`: the result is NaN, whatever `y` is — even `pow(x, 2.0)`. A NaN in a
-colour shows as black (or garbage after blending) exactly where the dot product turns
-negative: the back of a specular highlight, the edge of a spot light. The article's spot light
-computes `pow(dot(normal, halfVector), u_shininess)` after a test on a *different* dot product
-(`dot(normal, surfaceToLight) > 0.0`), which does not keep `dot(normal, halfVector)` positive.
+GLSL ES 3.00 leaves `pow(x, y)` undefined for `x < 0` (§8.2), whatever `y` is. Many GPUs
+compute it as `exp2(y * log2(x))`, which is NaN for a negative base; optimisers may rewrite
+`pow(a, 2.0)` as `a * a`, so a constant exponent can give the square on one device and NaN on
+another. A NaN in a colour shows as black (or garbage after blending) exactly where the dot
+product turns negative: the back of a specular highlight, the edge of a spot light. The
+article's spot light computes `pow(dot(normal, halfVector), u_shininess)` after a test on a
+*different* dot product (`dot(normal, surfaceToLight) > 0.0`), which does not keep
+`dot(normal, halfVector)` positive.
 
 ## Example
 ```glsl
@@ -49,9 +51,10 @@ float specular = pow(dot(normal, halfVector), u_shininess);
 float specular = pow(max(dot(normal, halfVector), 0.0), u_shininess);
 ```
 The fix (`max(…, 0.0)`) is suggested, not applied by `--fix`: it changes the value where the
-base was negative (from NaN to 0, which is what the lighting model means). For a constant
-integer exponent the suggestion keeps the power's meaning instead: `pow(abs(x), 2.0)` for an
-even power, `sign(x) * pow(abs(x), 3.0)` for an odd one (or write the product, `x * x`).
+base was negative (from undefined, NaN on many GPUs, to 0, which is what the lighting model
+means). For a constant integer exponent the suggestion keeps the power's meaning instead:
+`pow(abs(x), 2.0)` for an even power, `sign(x) * pow(abs(x), 3.0)` for an odd one (or write the
+product, `x * x`).
 
 ## References
 - GLSL ES 3.00 specification, §8.2 Exponential Functions: "Results are undefined if x < 0."
@@ -127,7 +130,7 @@ fn check_negative(cx: &Cx, out: &mut Vec<Diagnostic>) {
             };
             let d = Diagnostic::warning(
                 NEGATIVE.id,
-                "`pow` base can be negative, where `pow` is undefined (NaN)",
+                "`pow` base can be negative, where `pow` is undefined (NaN on many GPUs)",
                 bspan,
             )
             .with_label(label)
