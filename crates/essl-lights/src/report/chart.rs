@@ -1,6 +1,8 @@
 //! The chart: RMS error against milliseconds per frame, log–log, one labelled point per
 //! variant, coloured by group, the Pareto front drawn as a staircase and its points ringed;
-//! each specialised/uber pair joined by a thin line (same picture, different cost).
+//! each specialised/uber pair joined by a thin line (same picture, different cost). Emulated
+//! variants (a `mediump` error from the CPU's binary16 emulation beside lavapipe's 32-bit time)
+//! are hollow triangles with their own legend entry, and are never on the front.
 
 use plotters::prelude::*;
 
@@ -20,6 +22,16 @@ fn colour(g: Group) -> RGBColor {
 
 /// The smallest RMS the log axis shows (a perfect variant sits on the axis).
 const RMS_FLOOR: f64 = 0.02;
+
+/// An emulated variant's marker: a hollow triangle centred on the point, in pixels.
+fn triangle(cx: i32, cy: i32) -> Vec<(i32, i32)> {
+    vec![
+        (cx, cy - 7),
+        (cx + 6, cy + 4),
+        (cx - 6, cy + 4),
+        (cx, cy - 7),
+    ]
+}
 
 fn plot_err<E: std::fmt::Display>(e: E) -> LightsError {
     LightsError::Io {
@@ -140,7 +152,7 @@ pub fn svg(report: &Report) -> Result<String, LightsError> {
             let members: Vec<_> = pts
                 .iter()
                 .zip(&offsets)
-                .filter(|(p, _)| p.2.variant.group == g)
+                .filter(|(p, _)| p.2.variant.group == g && !p.2.emulated())
                 .collect();
             if members.is_empty() {
                 continue;
@@ -158,6 +170,28 @@ pub fn svg(report: &Report) -> Result<String, LightsError> {
                 .map_err(plot_err)?
                 .label(g.title())
                 .legend(move |(x, y)| Circle::new((x + 10, y), 5, c.filled()));
+        }
+        let emulated: Vec<_> = pts
+            .iter()
+            .zip(&offsets)
+            .filter(|(p, _)| p.2.emulated())
+            .collect();
+        if !emulated.is_empty() {
+            let grey = RGBColor(90, 90, 90);
+            chart
+                .draw_series(emulated.iter().map(|(p, o)| {
+                    let c = colour(p.2.variant.group);
+                    EmptyElement::at((p.0, p.1))
+                        + PathElement::new(triangle(0, 0), c.stroke_width(2))
+                        + Text::new(
+                            p.2.variant.label.clone(),
+                            **o,
+                            ("sans-serif", 12).into_font().color(&c),
+                        )
+                }))
+                .map_err(plot_err)?
+                .label("emulated: binary16 error, fp32 lavapipe time (off the front)")
+                .legend(move |(x, y)| PathElement::new(triangle(x + 10, y), grey.stroke_width(2)));
         }
         chart
             .configure_series_labels()

@@ -74,7 +74,9 @@ fn table(report: &Report) -> String {
         let spread = r
             .spread_percent(big)
             .map_or("–".into(), |p| format!("{p:.0} %"));
-        let mark = if r.pareto {
+        let mark = if r.emulated() {
+            "emulated"
+        } else if r.pareto {
             "●"
         } else if r.pareto_group {
             "○"
@@ -110,7 +112,9 @@ pub fn text_table(report: &Report) -> String {
         for &z in sizes {
             let _ = write!(s, " {:>10}", ms(r, z));
         }
-        let mark = if r.pareto {
+        let mark = if r.emulated() {
+            "emulated"
+        } else if r.pareto {
             "global"
         } else if r.pareto_group {
             "group"
@@ -255,7 +259,7 @@ fn precision_section(report: &Report, out: &mut String) {
          `essl_lights::real::F16`), on the varyings the reference interpolates. The `mediump` \
          rows' error columns are that emulation; their times are lavapipe's for the program \
          with `precision mediump float` (no faster here; a GPU with binary16 arithmetic may \
-         be).\n\n",
+         be). The rows are marked *emulated* and kept off the Pareto fronts.\n\n",
     );
     for r in rows {
         let gpu = match r.mediump_gpu_diff {
@@ -500,7 +504,10 @@ pub fn markdown(report: &Report) -> String {
          flag when the colour or a texture coordinate is NaN or infinite; an RGBA8 target \
          cannot show NaN). *Time*: ms per frame (clear + draw + `readPixels` of one pixel, \
          which waits for the GPU) at {1}. *Pareto*: ● on the front of all variants (no other \
-         is both faster at {big}² and lower in RMS error), ○ on the front of its group only.\n",
+         is both faster at {big}² and lower in RMS error), ○ on the front of its group only. \
+         *emulated*: a `mediump` row, whose error comes from the CPU's binary16 emulation while \
+         its time is lavapipe's, which computes in 32 bits; error and time do not describe one \
+         run, so these rows are drawn as hollow triangles and take no part in either front.\n",
         s.error_size,
         s.time_sizes
             .iter()

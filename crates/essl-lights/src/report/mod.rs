@@ -137,9 +137,10 @@ pub struct VariantResult {
     /// Declared uniforms that are inactive plus functions that are unused (0 for a minimal
     /// program).
     pub unused: usize,
-    /// On the Pareto front of all variants (error RMS, ms at the largest timing size).
+    /// On the Pareto front of all variants (error RMS, ms at the largest timing size); never
+    /// for an [emulated](VariantResult::emulated) variant.
     pub pareto: bool,
-    /// On the Pareto front of its group.
+    /// On the Pareto front of its group; never for an emulated variant.
     pub pareto_group: bool,
     /// For a mediump variant: pixels where lavapipe's picture of the mediump program differs
     /// from its picture of the highp one.
@@ -147,6 +148,13 @@ pub struct VariantResult {
 }
 
 impl VariantResult {
+    /// Whether the error is emulated: a `mediump` variant's error is the CPU's binary16
+    /// emulation while its time is lavapipe's (which computes in 32 bits), so the two do not
+    /// describe one program run and the point stays off the Pareto fronts.
+    pub fn emulated(&self) -> bool {
+        self.variant.program == ProgramKind::Mediump
+    }
+
     /// The median ms at `size`.
     pub fn ms(&self, size: u32) -> Option<f64> {
         self.times.iter().find(|t| t.0 == size).map(|t| t.1)
@@ -330,21 +338,24 @@ fn measure_error(v: &Variant, size: u32) -> Result<(VariantResult, RgbaImage), L
     ))
 }
 
-/// Marks the Pareto fronts (minimal RMS error and minimal ms at `size`).
+/// Marks the Pareto fronts (minimal RMS error and minimal ms at `size`). Emulated variants
+/// ([`VariantResult::emulated`]) take no part: they are on no front and dominate no other.
 fn mark_pareto(results: &mut [VariantResult], size: u32) {
-    let pts: Vec<(f64, f64, Group)> = results
+    let pts: Vec<(f64, f64, Group, bool)> = results
         .iter()
         .map(|r| {
             (
                 r.ms(size).unwrap_or(f64::INFINITY),
                 r.error.rms,
                 r.variant.group,
+                r.emulated(),
             )
         })
         .collect();
     let dominated = |i: usize, same_group: bool| {
         pts.iter().enumerate().any(|(j, q)| {
             j != i
+                && !q.3
                 && (!same_group || q.2 == pts[i].2)
                 && q.0 <= pts[i].0
                 && q.1 <= pts[i].1
@@ -352,8 +363,9 @@ fn mark_pareto(results: &mut [VariantResult], size: u32) {
         })
     };
     for (i, r) in results.iter_mut().enumerate() {
-        r.pareto = !dominated(i, false);
-        r.pareto_group = !dominated(i, true);
+        let emulated = pts[i].3;
+        r.pareto = !emulated && !dominated(i, false);
+        r.pareto_group = !emulated && !dominated(i, true);
     }
 }
 
@@ -577,6 +589,48 @@ pub fn text_table(report: &Report) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn emulated_points_stay_off_the_pareto_fronts() {
+        let vs = variants(Extent::Quick, None).unwrap();
+        let highp = vs
+            .iter()
+            .find(|v| v.group == Group::Precision && v.program == ProgramKind::Specialised)
+            .unwrap();
+        let mediump = vs
+            .iter()
+            .find(|v| v.program == ProgramKind::Mediump)
+            .unwrap();
+        let result = |v: &Variant, rms: f64, ms: f64| VariantResult {
+            variant: v.clone(),
+            error: RefDiff {
+                compared: 1,
+                ignored: 0,
+                max: rms,
+                rms,
+                p99: rms,
+                over_one: 0,
+                over_one_percent: 0.0,
+                worst: None,
+            },
+            non_finite: 0,
+            times: vec![(128, ms, vec![ms])],
+            shader_bytes: (0, 0),
+            active_uniforms: 0,
+            uniform_scalars: 0,
+            unused: 0,
+            pareto: false,
+            pareto_group: false,
+            mediump_gpu_diff: None,
+        };
+        // The emulated point is faster and more accurate, yet dominates nothing and is on no
+        // front.
+        let mut rs = vec![result(highp, 0.5, 2.0), result(mediump, 0.1, 1.0)];
+        mark_pareto(&mut rs, 128);
+        assert!(!rs[0].emulated() && rs[1].emulated());
+        assert!(rs[0].pareto && rs[0].pareto_group);
+        assert!(!rs[1].pareto && !rs[1].pareto_group);
+    }
 
     #[test]
     fn civil_dates() {
