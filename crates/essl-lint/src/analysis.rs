@@ -1193,7 +1193,7 @@ impl Analysis {
         id: usize,
         h: Handle<E>,
     ) {
-        let ty = finfo[h].ty.inner_with(&module.types).clone();
+        let ty = finfo[h].ty.inner_with(&module.types);
         let entry = self.functions[id].entry;
         let e = &f.expressions[h];
         let mut place = None;
@@ -1205,8 +1205,8 @@ impl Analysis {
         let val = match e {
             E::Literal(l) => Val::Num(Num::constant(&[literal(l)])),
             E::Constant(c) => const_value(module, module.constants[*c].init),
-            E::ZeroValue(_) => shape(module, &ty, &|n, _| Num::constant(&vec![0.0; n as usize])),
-            E::Override(_) => self.external(module, &ty, Facts::UNIFORM),
+            E::ZeroValue(_) => shape(module, ty, &|n, _| Num::constant(&vec![0.0; n as usize])),
+            E::Override(_) => self.external(module, ty, Facts::UNIFORM),
             E::FunctionArgument(i) => {
                 if matches!(
                     ty,
@@ -1218,7 +1218,7 @@ impl Analysis {
                     });
                     Val::Any
                 } else if entry {
-                    self.external(module, &ty, Facts::INPUT)
+                    self.external(module, ty, Facts::INPUT)
                 } else {
                     self.args[id].get(*i as usize).cloned().unwrap_or(Val::Any)
                 }
@@ -1247,7 +1247,7 @@ impl Analysis {
                         place = self.access_place(module, finfo, id, e);
                         Val::Any
                     }
-                    _ => self.external(module, &ty, Facts::INPUT),
+                    _ => self.external(module, ty, Facts::INPUT),
                 }
             }
             E::Access { base, .. } | E::AccessIndex { base, .. }
@@ -1270,14 +1270,14 @@ impl Analysis {
             },
             E::Load { pointer } => match self.functions[id].places[pointer.index()].clone() {
                 Some(p) => {
-                    let v = self.load(module, &p, &ty);
+                    let v = self.load(module, &p, ty);
                     if self.refine.is_empty() {
                         v
                     } else {
                         self.refined(&p, v)
                     }
                 }
-                None => Self::unknown(module, &ty, Facts::NONE),
+                None => Self::unknown(module, ty, Facts::NONE),
             },
             E::Splat { size, value } => match self.nm(id, *value) {
                 Some(x) => {
@@ -1325,7 +1325,7 @@ impl Analysis {
                 }
                 None => Val::Bot,
             },
-            E::Compose { components, .. } => self.compose(module, f, &ty, id, components),
+            E::Compose { components, .. } => self.compose(module, f, ty, id, components),
             E::Unary { op, expr } => match (op, self.nm(id, *expr)) {
                 (Uo::Negate, Some(x)) => {
                     let keep = x.facts.only(
@@ -1343,10 +1343,10 @@ impl Analysis {
                 (Uo::LogicalNot, Some(x)) => {
                     Val::Num(Num::splat(Interval::UNIT, x.n, x.facts.only(Facts::DEPS)))
                 }
-                (_, Some(x)) => Self::unknown(module, &ty, x.facts),
+                (_, Some(x)) => Self::unknown(module, ty, x.facts),
                 (_, None) => Val::Bot,
             },
-            E::Binary { op, left, right } => self.binary(module, f, id, &ty, *op, *left, *right),
+            E::Binary { op, left, right } => self.binary(module, f, id, ty, *op, *left, *right),
             E::Select { accept, reject, .. } => self.v(id, *accept).join(self.v(id, *reject)),
             E::Derivative { axis, expr, .. } => match self.nm(id, *expr) {
                 Some(x) => {
@@ -1363,20 +1363,20 @@ impl Analysis {
             },
             E::Relational { argument, .. } => {
                 let deps = deps_of(self, &[*argument]);
-                shape(module, &ty, &|n, _| Num::splat(Interval::UNIT, n, deps))
+                shape(module, ty, &|n, _| Num::splat(Interval::UNIT, n, deps))
             }
             E::As {
                 expr,
                 kind,
                 convert,
-            } => self.convert(module, &ty, id, *expr, *kind, *convert),
+            } => self.convert(module, ty, id, *expr, *kind, *convert),
             E::Math {
                 fun,
                 arg,
                 arg1,
                 arg2,
                 arg3,
-            } => self.math(module, f, id, &ty, *fun, *arg, *arg1, *arg2, *arg3),
+            } => self.math(module, f, id, ty, *fun, *arg, *arg1, *arg2, *arg3),
             E::ImageSample {
                 coordinate,
                 depth_ref,
@@ -1386,17 +1386,17 @@ impl Analysis {
                 if depth_ref.is_some() {
                     Val::Num(Num::scalar(Interval::UNIT, deps.with(Facts::EXT)))
                 } else {
-                    self.texel(module, &ty, deps)
+                    self.texel(module, ty, deps)
                 }
             }
             E::ImageLoad { coordinate, .. } => {
                 let deps = deps_of(self, &[*coordinate]).with(Facts::TEXTURE);
-                self.texel(module, &ty, deps)
+                self.texel(module, ty, deps)
             }
-            E::ImageQuery { .. } => shape(module, &ty, &|n, _| {
+            E::ImageQuery { .. } => shape(module, ty, &|n, _| {
                 Num::splat(Interval::NON_NEGATIVE, n, Facts::NONE)
             }),
-            _ => Self::unknown(module, &ty, Facts::NONE),
+            _ => Self::unknown(module, ty, Facts::NONE),
         };
         let ff = &mut self.functions[id];
         ff.values[h.index()] = val;

@@ -215,6 +215,9 @@ impl Fix {
 
 /// The text of the one line a fix touches, with the fix applied; `None` when the fix spans
 /// several lines.
+/// The longest line (in bytes) that a help shows fixed.
+const MAX_PREVIEW_LINE: usize = 200;
+
 fn fixed_line(file: &SourceFile, fix: &Fix) -> Option<String> {
     let first = fix.edits.first()?;
     let line = file.line_index(first.span.start);
@@ -226,6 +229,11 @@ fn fixed_line(file: &SourceFile, fix: &Fix) -> Option<String> {
         return None;
     }
     let range = file.line_range(line);
+    // A preview of a very long line (generated or minified code) would repeat the whole line in
+    // every diagnostic on it.
+    if range.len() > MAX_PREVIEW_LINE {
+        return None;
+    }
     let mut text = file.text()[range.clone()].to_string();
     let mut edits: Vec<&Edit> = fix.edits.iter().collect();
     edits.sort_by_key(|e| std::cmp::Reverse(e.span.start));
@@ -238,6 +246,24 @@ fn fixed_line(file: &SourceFile, fix: &Fix) -> Option<String> {
         text.replace_range(s..t, &e.replacement);
     }
     Some(text)
+}
+
+/// The most diagnostics one shader reports: enough for any shader a person wrote, and a bound
+/// on the time and memory that generated or hostile input can take. Each pass stops collecting
+/// past it (keeping an error if it has none yet), and the compile keeps the first ones in source
+/// order with a note that says more were found.
+pub const MAX_DIAGNOSTICS: usize = 1000;
+
+/// Whether a pass that has collected `list` still takes `d`.
+pub(crate) fn accepts(list: &[Diagnostic], d: &Diagnostic) -> bool {
+    list.len() <= MAX_DIAGNOSTICS || (d.is_error() && !list.iter().any(Diagnostic::is_error))
+}
+
+/// Adds `d` to a pass's diagnostics unless the pass has collected enough ([`MAX_DIAGNOSTICS`]).
+pub(crate) fn push_capped(list: &mut Vec<Diagnostic>, d: Diagnostic) {
+    if accepts(list, &d) {
+        list.push(d);
+    }
 }
 
 /// Applies every fix of the given applicability to the text, skipping fixes that overlap one

@@ -572,6 +572,24 @@ fn punct(c: char, cur: &mut Cursor<'_>) -> Option<Punct> {
 /// Reports no-break spaces: one diagnostic per line, an error when one is outside a comment
 /// (WebGL rejects it there), else a warning; each with a certain fix that replaces them all
 /// on that line with plain spaces.
+/// How many no-break spaces of one line are labelled besides the first.
+const MAX_NBSP_LABELS: usize = 8;
+
+/// Runs of adjacent no-break spaces: (span of the run, how many).
+fn runs(group: &[(Span, bool)]) -> Vec<(Span, usize)> {
+    let mut out: Vec<(Span, usize)> = Vec::new();
+    for (s, _) in group {
+        match out.last_mut() {
+            Some((run, n)) if run.end == s.start => {
+                run.end = s.end;
+                *n += 1;
+            }
+            _ => out.push((*s, 1)),
+        }
+    }
+    out
+}
+
 fn report_nbsp(file: &SourceFile, nbsp: &[(Span, bool)], diagnostics: &mut Vec<Diagnostic>) {
     let mut i = 0;
     while i < nbsp.len() {
@@ -622,16 +640,21 @@ fn report_nbsp(file: &SourceFile, nbsp: &[(Span, bool)], diagnostics: &mut Vec<D
                 } else {
                     format!("replace all {count} with spaces")
                 },
-                edits: group
-                    .iter()
-                    .map(|(s, _)| Edit {
-                        span: *s,
-                        replacement: " ".into(),
+                edits: runs(group)
+                    .into_iter()
+                    .map(|(span, n)| Edit {
+                        span,
+                        replacement: " ".repeat(n),
                     })
                     .collect(),
                 applicability: Applicability::Certain,
             });
-        for (s, _) in group.iter().filter(|(s, _)| *s != primary) {
+        // A few more places on the line are shown; the label gives the count.
+        for (s, _) in group
+            .iter()
+            .filter(|(s, _)| *s != primary)
+            .take(MAX_NBSP_LABELS)
+        {
             d = d.with_secondary(*s, "");
         }
         diagnostics.push(d);
@@ -701,7 +724,13 @@ mod tests {
             .map(|d| (d.severity, d.fix.as_ref().unwrap().edits.len()))
             .collect();
         use crate::diagnostic::Severity::*;
-        assert_eq!(sev, [(Error, 1), (Error, 3), (Warning, 1)]);
+        // One edit per run of adjacent no-break spaces: line 2 has one, then a run of two.
+        assert_eq!(sev, [(Error, 1), (Error, 2), (Warning, 1)]);
+        let run = &l.diagnostics[1].fix.as_ref().unwrap().edits[1];
+        assert_eq!(
+            (run.span.end - run.span.start, &*run.replacement),
+            (4, "  ")
+        );
         // Lexing goes on as if they were spaces.
         let idents: Vec<&str> = l
             .tokens

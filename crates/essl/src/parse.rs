@@ -261,9 +261,14 @@ impl<'a> Parser<'a> {
 
     // ----- errors -----
 
+    /// Adds a diagnostic unless enough were collected ([`crate::diagnostic::MAX_DIAGNOSTICS`]).
+    fn push_diag(&mut self, d: Diagnostic) {
+        crate::diagnostic::push_capped(&mut self.diags, d);
+    }
+
     fn report(&mut self, d: Diagnostic) {
         if !self.suppress && !self.too_deep_reported {
-            self.diags.push(d);
+            self.push_diag(d);
         }
         self.suppress = true;
     }
@@ -344,7 +349,7 @@ impl<'a> Parser<'a> {
             .with_fix(Fix::certain("add `;` at the end of the line", at, ";"))
             .with_token(&*next.text);
             if !self.suppress && !self.too_deep_reported {
-                self.diags.push(d);
+                self.push_diag(d);
             }
             return Ok(());
         }
@@ -444,7 +449,7 @@ impl<'a> Parser<'a> {
             _ => d.with_help("choose another name"),
         };
         if !self.suppress {
-            self.diags.push(d);
+            self.push_diag(d);
         }
     }
 
@@ -488,7 +493,7 @@ impl<'a> Parser<'a> {
             if !self.too_deep_reported {
                 self.too_deep_reported = true;
                 let span = self.peek().span;
-                self.diags.push(
+                self.push_diag(
                     Diagnostic::error(
                         "nesting-too-deep",
                         format!(
@@ -696,7 +701,7 @@ impl<'a> Parser<'a> {
                     ))
                     .with_token(&**name);
                     if !self.suppress {
-                        self.diags.push(d);
+                        self.push_diag(d);
                     }
                     Qualifier::Storage(if replacement == "in" {
                         Storage::In

@@ -1,6 +1,6 @@
 //! Compiling one shader: the whole front-end pipeline from text to a checked module.
 
-use crate::diagnostic::{self, Diagnostic};
+use crate::diagnostic::{self, Diagnostic, MAX_DIAGNOSTICS};
 use crate::hir;
 use crate::preprocess::{self, PreprocessOptions, Version};
 use crate::source::SourceFile;
@@ -87,6 +87,8 @@ fn compile_here(file: SourceFile, stage: Stage, options: &CompileOptions) -> Sha
     let (unit, parse_diags) = crate::parse::parse(&file, tokens, stage);
     diagnostics.extend(parse_diags);
     let (module, check_diags) = crate::check::check(&file, &unit, stage, pp.invariant_all);
+    // The syntax tree is not needed past this point: free it before lowering.
+    drop(unit);
     diagnostics.extend(check_diags);
     let mut shader = Shader {
         file,
@@ -103,7 +105,36 @@ fn compile_here(file: SourceFile, stage: Stage, options: &CompileOptions) -> Sha
         }
     }
     diagnostic::sort(&mut shader.diagnostics);
+    cap_diagnostics(&mut shader.diagnostics);
     shader
+}
+
+/// Keeps the first [`MAX_DIAGNOSTICS`] diagnostics (in source order) and says that more were
+/// found; the note is an error when an error was dropped, so that the shader still fails.
+fn cap_diagnostics(diagnostics: &mut Vec<Diagnostic>) {
+    if diagnostics.len() <= MAX_DIAGNOSTICS {
+        return;
+    }
+    let dropped = diagnostics.split_off(MAX_DIAGNOSTICS);
+    let errors = dropped.iter().filter(|d| d.is_error()).count();
+    let at = dropped
+        .first()
+        .map_or(crate::source::Span::default(), |d| d.span);
+    // Each pass stops collecting past the limit too, so the count is a lower bound.
+    let message = format!(
+        "at least {} more diagnostics ({errors} of them errors) after the first \
+         {MAX_DIAGNOSTICS} are not shown",
+        dropped.len()
+    );
+    let d = if errors > 0 {
+        Diagnostic::error("too-many-diagnostics", message, at)
+    } else {
+        Diagnostic::warning("too-many-diagnostics", message, at)
+    };
+    diagnostics.push(
+        d.with_label("the rest start here")
+            .with_help("fix the first ones and run again"),
+    );
 }
 
 /// A diagnostic for a shader essl could not lower: valid GLSL that essl does not support yet,

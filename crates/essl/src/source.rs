@@ -93,6 +93,9 @@ pub struct SourceFile {
     name: String,
     text: String,
     line_starts: Vec<u32>,
+    /// Whether the text is ASCII: then a column is a byte distance, found without counting
+    /// characters (which would make a diagnostic on a long line cost the line's length).
+    ascii: bool,
 }
 
 impl SourceFile {
@@ -117,6 +120,7 @@ impl SourceFile {
         }
         SourceFile {
             name: name.into(),
+            ascii: text.is_ascii(),
             text,
             line_starts,
         }
@@ -188,7 +192,11 @@ impl SourceFile {
         }
         let line = self.line_index(offset as u32);
         let start = self.line_starts[line] as usize;
-        let column = self.text[start..offset].chars().count() as u32 + 1;
+        let column = if self.ascii {
+            (offset - start) as u32 + 1
+        } else {
+            self.text[start..offset].chars().count() as u32 + 1
+        };
         LineCol {
             line: line as u32 + 1,
             column,

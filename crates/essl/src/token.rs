@@ -220,7 +220,8 @@ pub fn classify(tokens: Vec<PpToken>, diagnostics: &mut Vec<Diagnostic>) -> Vec<
 /// Parses a preprocessing number as GLSL ES 3.00 does.
 pub fn number(text: &str, span: Span, diagnostics: &mut Vec<Diagnostic>) -> Tok {
     let bad = |diagnostics: &mut Vec<Diagnostic>, why: &str| {
-        diagnostics.push(
+        crate::diagnostic::push_capped(
+            diagnostics,
             Diagnostic::error("invalid-number", format!("invalid number `{text}`"), span)
                 .with_label(why.to_string())
                 .with_token(text),
@@ -253,7 +254,8 @@ pub fn number(text: &str, span: Span, diagnostics: &mut Vec<Diagnostic>) -> Tok 
         }
         let f = value as f32;
         if f.is_infinite() {
-            diagnostics.push(
+            crate::diagnostic::push_capped(
+                diagnostics,
                 Diagnostic::warning(
                     "float-literal-overflow",
                     format!("`{text}` is too large for a 32-bit float and becomes infinity"),
@@ -294,7 +296,7 @@ pub fn number(text: &str, span: Span, diagnostics: &mut Vec<Diagnostic>) -> Tok 
             } else {
                 d
             };
-            diagnostics.push(d);
+            crate::diagnostic::push_capped(diagnostics, d);
             return Tok::Error;
         }
         return int_value(&digits[1..], 8, unsigned, text, span, diagnostics);
@@ -316,7 +318,8 @@ fn int_value(
     match u64::from_str_radix(digits, radix) {
         Ok(v) if v <= u32::MAX as u64 => Tok::Int(v, unsigned),
         _ => {
-            diagnostics.push(
+            crate::diagnostic::push_capped(
+                diagnostics,
                 Diagnostic::error(
                     "integer-overflow",
                     format!("integer literal `{text}` does not fit in 32 bits"),

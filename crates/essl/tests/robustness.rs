@@ -288,3 +288,40 @@ fn oversized_variables_are_user_errors_with_webgl_limits() {
     );
     assert!(sh.ok(), "{:?}", sh.diagnostics.first());
 }
+
+#[test]
+fn a_flood_of_errors_is_capped_with_a_count() {
+    let src = format!("#version 300 es\nprecision mediump float;\nout vec4 o;\nvoid main() {{ {} o = vec4(1.0); }}\n", "@ ".repeat(5000));
+    let sh = run(&src, Stage::Fragment);
+    assert_eq!(sh.diagnostics.len(), essl::diagnostic::MAX_DIAGNOSTICS + 1);
+    let last = sh.diagnostics.last().unwrap();
+    assert_eq!(last.code, "too-many-diagnostics");
+    assert!(
+        last.is_error(),
+        "errors were dropped: the shader must still fail"
+    );
+    assert!(last.message.starts_with("at least "), "{}", last.message);
+    assert!(!sh.ok());
+}
+
+#[test]
+fn a_fix_on_a_long_line_is_not_previewed_in_the_help() {
+    // Each of these 100 errors would otherwise repeat the whole line in its help.
+    let src = format!("#version 300 es\nprecision mediump float;\nout vec4 o;\nvoid main() {{ float x; {} o = vec4(x); }}\n", "x = 1;".repeat(100));
+    let sh = run(&src, Stage::Fragment);
+    let helps: Vec<String> = sh
+        .diagnostics
+        .iter()
+        .filter_map(|d| d.help_text(&sh.file))
+        .collect();
+    assert_eq!(helps.len(), 100);
+    assert!(
+        helps.iter().all(|h| h == "write a float literal: `1.0`"),
+        "{}",
+        helps[0]
+    );
+    // A short line still shows its fixed text.
+    let sh = run("#version 300 es\nprecision mediump float;\nout vec4 o;\nvoid main() {\n  float x = 1;\n  o = vec4(x);\n}\n", Stage::Fragment);
+    let help = sh.diagnostics[0].help_text(&sh.file).unwrap();
+    assert_eq!(help, "write a float literal: `1.0`: `float x = 1.0;`");
+}

@@ -117,6 +117,8 @@ pub(crate) struct Checker<'a> {
     ended: Vec<(Arc<str>, Span)>,
     /// Bytes of private variables declared so far ([`limits`]).
     private_bytes: u64,
+    /// Where diagnostics past the limit are completed and dropped.
+    dropped: Diagnostic,
 }
 
 impl<'a> Checker<'a> {
@@ -155,6 +157,7 @@ impl<'a> Checker<'a> {
             truncated: false,
             ended: Vec::new(),
             private_bytes: 0,
+            dropped: Diagnostic::warning("dropped", "", Span::default()),
         }
     }
 
@@ -167,9 +170,7 @@ impl<'a> Checker<'a> {
         message: impl Into<String>,
     ) -> &mut Diagnostic {
         let token = self.file.slice(span).to_string();
-        self.diags
-            .push(Diagnostic::error(code, message, span).with_token(token));
-        self.diags.last_mut().expect("just pushed")
+        self.keep(Diagnostic::error(code, message, span).with_token(token))
     }
 
     fn warning(
@@ -179,9 +180,19 @@ impl<'a> Checker<'a> {
         message: impl Into<String>,
     ) -> &mut Diagnostic {
         let token = self.file.slice(span).to_string();
-        self.diags
-            .push(Diagnostic::warning(code, message, span).with_token(token));
-        self.diags.last_mut().expect("just pushed")
+        self.keep(Diagnostic::warning(code, message, span).with_token(token))
+    }
+
+    /// Adds a diagnostic (for the caller to complete), or, past
+    /// [`crate::diagnostic::MAX_DIAGNOSTICS`], lets the caller complete one that is dropped.
+    fn keep(&mut self, d: Diagnostic) -> &mut Diagnostic {
+        if crate::diagnostic::accepts(&self.diags, &d) {
+            self.diags.push(d);
+            self.diags.last_mut().expect("just pushed")
+        } else {
+            self.dropped = d;
+            &mut self.dropped
+        }
     }
 
     fn type_name(&self, ty: &Type) -> String {

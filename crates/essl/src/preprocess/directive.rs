@@ -182,7 +182,7 @@ impl Pp<'_> {
 
     fn extra_tokens(&mut self, d: &Directive, from: usize, what: &str) {
         let e = self.extra_tokens_diag(d, from, what);
-        self.diags.push(e);
+        self.push_diag(e);
     }
 
     /// Expands a directive's arguments (for `#if`, `#elif`, `#line`): the tokens, ending with
@@ -242,7 +242,7 @@ impl Pp<'_> {
     /// The value of an `#if`/`#elif` line; false after an error.
     fn eval_if(&mut self, d: &Directive, what: &'static str) -> bool {
         if d.args().is_empty() {
-            self.diags.push(
+            self.push_diag(
                 Diagnostic::error(
                     "missing-expression",
                     format!("`{what}` needs an expression"),
@@ -284,7 +284,7 @@ impl Pp<'_> {
             } else {
                 e.with_help("remove them, or make them a comment")
             };
-            self.diags.push(e);
+            self.push_diag(e);
             return false;
         }
         !p.invalid && v != 0
@@ -301,7 +301,7 @@ impl Pp<'_> {
 
     fn d_elif(&mut self, d: &Directive) {
         let Some(c) = self.conds.last() else {
-            self.diags.push(
+            self.push_diag(
                 Diagnostic::error("elif-without-if", "`#elif` without `#if`", d.name_span())
                     .with_label("no `#if` is open here")
                     .with_help("remove it, or add the `#if` it belongs to")
@@ -313,7 +313,7 @@ impl Pp<'_> {
             return;
         }
         if let Some(e) = c.else_span {
-            self.diags.push(
+            self.push_diag(
                 Diagnostic::error("elif-after-else", "`#elif` after `#else`", d.name_span())
                     .with_label("the `#else` group must be the last one")
                     .with_secondary(e, "the `#else` is here")
@@ -335,7 +335,7 @@ impl Pp<'_> {
 
     fn d_else(&mut self, d: &Directive) {
         let Some(c) = self.conds.last_mut() else {
-            self.diags.push(
+            self.push_diag(
                 Diagnostic::error("else-without-if", "`#else` without `#if`", d.name_span())
                     .with_label("no `#if` is open here")
                     .with_help("remove it, or add the `#if` it belongs to")
@@ -347,7 +347,7 @@ impl Pp<'_> {
             return;
         }
         if let Some(e) = c.else_span {
-            self.diags.push(
+            self.push_diag(
                 Diagnostic::error("else-after-else", "`#else` after `#else`", d.name_span())
                     .with_label("a second `#else`")
                     .with_secondary(e, "the first `#else` is here")
@@ -366,7 +366,7 @@ impl Pp<'_> {
 
     fn d_endif(&mut self, d: &Directive) {
         if self.conds.pop().is_none() {
-            self.diags.push(
+            self.push_diag(
                 Diagnostic::error("endif-without-if", "`#endif` without `#if`", d.name_span())
                     .with_label("no `#if` is open here")
                     .with_fix(Fix::suggested("remove it", d.whole_line(), ""))
@@ -385,7 +385,7 @@ impl Pp<'_> {
     fn macro_name(&mut self, d: &Directive, what: &str) -> Option<PpToken> {
         match d.args().first() {
             None => {
-                self.diags.push(
+                self.push_diag(
                     Diagnostic::error(
                         "missing-macro-name",
                         format!("`{what}` needs a macro name"),
@@ -398,7 +398,7 @@ impl Pp<'_> {
                 None
             }
             Some(t) if t.kind != PpKind::Ident => {
-                self.diags.push(
+                self.push_diag(
                     Diagnostic::error(
                         "invalid-macro-name",
                         format!("expected a macro name after `{what}`, found {}", describe(t)),
@@ -422,7 +422,7 @@ impl Pp<'_> {
             .get(n)
             .is_some_and(|m| m.origin == Origin::Predefined)
         {
-            self.diags.push(
+            self.push_diag(
                 Diagnostic::error(
                     "predefined-macro-redefined",
                     format!("`{n}` is a predefined macro and cannot be redefined"),
@@ -435,7 +435,7 @@ impl Pp<'_> {
             return false;
         }
         if n == "defined" || n.starts_with("GL_") {
-            self.diags.push(
+            self.push_diag(
                 Diagnostic::error(
                     "reserved-macro-name",
                     format!("macro name `{n}` is reserved"),
@@ -452,7 +452,7 @@ impl Pp<'_> {
             return false;
         }
         if n.contains("__") {
-            self.diags.push(
+            self.push_diag(
                 Diagnostic::warning(
                     "double-underscore-macro-name",
                     format!("macro name `{n}` contains `__`, which is reserved"),
@@ -503,7 +503,7 @@ impl Pp<'_> {
                             .nth(first)
                             .map(|a| a.span)
                             .unwrap_or(t.span);
-                        self.diags.push(
+                        self.push_diag(
                             Diagnostic::error(
                                 "duplicate-macro-parameter",
                                 format!(
@@ -523,7 +523,7 @@ impl Pp<'_> {
                     i += 1;
                 }
                 Some(t) => {
-                    self.diags.push(
+                    self.push_diag(
                         Diagnostic::error(
                             "invalid-macro-parameters",
                             format!(
@@ -550,7 +550,7 @@ impl Pp<'_> {
                     return None;
                 }
                 Some(t) => {
-                    self.diags.push(
+                    self.push_diag(
                         Diagnostic::error(
                             "invalid-macro-parameters",
                             format!(
@@ -611,7 +611,7 @@ impl Pp<'_> {
             if matches!(t.kind, PpKind::Punct(Punct::Hash | Punct::HashHash)) && !warned {
                 warned = true;
                 let pasting = t.is(Punct::HashHash);
-                self.diags.push(
+                self.push_diag(
                     Diagnostic::warning(
                         "token-pasting",
                         if pasting {
@@ -653,7 +653,7 @@ impl Pp<'_> {
         };
         if old.origin == Origin::Options {
             if m.origin == Origin::Shader && !old.same_as(&m) {
-                self.diags.push(
+                self.push_diag(
                     Diagnostic::warning(
                         "option-macro-redefined",
                         format!(
@@ -699,7 +699,7 @@ impl Pp<'_> {
         if !old.span.is_empty() {
             e = e.with_secondary(old.span, "previous definition");
         }
-        self.diags.push(e);
+        self.push_diag(e);
     }
 
     fn d_undef(&mut self, d: &Directive) {
@@ -708,7 +708,7 @@ impl Pp<'_> {
         };
         if let Some(m) = self.macros.get(&*name.text) {
             if m.origin == Origin::Predefined {
-                self.diags.push(
+                self.push_diag(
                     Diagnostic::error(
                         "predefined-macro-undefined",
                         format!(
@@ -725,7 +725,7 @@ impl Pp<'_> {
                 return;
             }
             if m.disabled.get() || m.invoking.get() > 0 {
-                self.diags.push(
+                self.push_diag(
                     Diagnostic::error(
                         "macro-undefined-while-expanding",
                         format!("`#undef {}` inside a call of that macro", name.text),
@@ -787,7 +787,7 @@ impl Pp<'_> {
 
     fn d_error(&mut self, d: &Directive) {
         let text = join(d.args());
-        self.diags.push(
+        self.push_diag(
             Diagnostic::error(
                 "error-directive",
                 if text.is_empty() {
@@ -831,7 +831,7 @@ impl Pp<'_> {
                     self.invariant_all_span = Some(d.span());
                 }
                 if self.options.stage == Some(Stage::Fragment) && self.version == Version::Es300 {
-                    self.diags.push(
+                    self.push_diag(
                         Diagnostic::error(
                             "invariant-all-in-fragment-shader",
                             "`#pragma STDGL invariant(all)` is not allowed in a fragment shader",
@@ -862,7 +862,7 @@ impl Pp<'_> {
         let shape = "`#extension` takes `name : behavior`";
         let name = match args.first() {
             None => {
-                self.diags.push(
+                self.push_diag(
                     Diagnostic::error("invalid-extension-directive", shape, d.name_span())
                         .with_label("expected an extension name")
                         .with_help("write `#extension NAME : behavior`")
@@ -871,7 +871,7 @@ impl Pp<'_> {
                 return;
             }
             Some(t) if t.kind != PpKind::Ident => {
-                self.diags.push(
+                self.push_diag(
                     Diagnostic::error(
                         "invalid-extension-name",
                         format!(
@@ -899,7 +899,7 @@ impl Pp<'_> {
                         "\n".to_string(),
                     ),
                 };
-                self.diags.push(
+                self.push_diag(
                     Diagnostic::error(
                         "invalid-extension-directive",
                         format!("expected `:` after the extension name, found {found}"),
@@ -914,7 +914,7 @@ impl Pp<'_> {
         }
         let behaviors = "`require`, `enable`, `warn` or `disable`";
         let Some(bt) = args.get(2) else {
-            self.diags.push(
+            self.push_diag(
                 Diagnostic::error(
                     "invalid-extension-behavior",
                     format!("expected {behaviors} after `:`"),
@@ -944,7 +944,7 @@ impl Pp<'_> {
             if bt.kind == PpKind::Ident && ExtensionBehavior::from_str(&lower).is_some() {
                 e = e.with_fix(Fix::certain(format!("write `{lower}`"), bt.span, lower));
             }
-            self.diags.push(e);
+            self.push_diag(e);
             return;
         };
         if args.len() > 3 {
@@ -961,7 +961,7 @@ impl Pp<'_> {
             } else {
                 Severity::Error
             };
-            self.diags.push(
+            self.push_diag(
                 Diagnostic::new(
                     sev,
                     "extension-after-code",
@@ -982,7 +982,7 @@ impl Pp<'_> {
                 behavior,
                 ExtensionBehavior::Require | ExtensionBehavior::Enable
             ) {
-                self.diags.push(
+                self.push_diag(
                     Diagnostic::error(
                         "extension-all-behavior",
                         format!("`#extension all` cannot be `{}`", behavior.as_str()),
@@ -1014,7 +1014,7 @@ impl Pp<'_> {
                     .with_note("its features are part of GLSL ES 3.00, under their core names")
                     .with_fix(Fix::suggested("remove the directive", d.whole_line(), ""));
             }
-            self.diags.push(e);
+            self.push_diag(e);
         }
         self.extensions.push((n.to_string(), behavior, d.span()));
     }
@@ -1107,7 +1107,7 @@ impl Pp<'_> {
                 .get_or_insert(Version::from_parts(n, es));
         }
         if self.past_first {
-            self.diags.push(
+            self.push_diag(
                 Diagnostic::error(
                     "version-not-first",
                     "`#version` must come before anything else in the shader",
@@ -1128,7 +1128,7 @@ impl Pp<'_> {
         let (n, es) = parsed.expect("no errors");
         let line = self.file.line_of(d.hash.span.start);
         if n >= 300 && line > 1 {
-            self.diags.push(
+            self.push_diag(
                 Diagnostic::error(
                     "version-not-first-line",
                     format!("`#version {n} es` must be on the first line of the shader"),
@@ -1148,7 +1148,7 @@ impl Pp<'_> {
         let number_span = args[0].span.to(args[if es { 1 } else { 0 }].span);
         match v {
             Version::Es300 => {}
-            Version::Es100 => self.diags.push(
+            Version::Es100 => self.push_diag(
                 Diagnostic::error(
                     "unsupported-version",
                     "`#version 100` is GLSL ES 1.00: essl compiles GLSL ES 3.00",
@@ -1159,7 +1159,7 @@ impl Pp<'_> {
                 .with_fix(Fix::suggested("write `300 es`", number_span, "300 es"))
                 .with_token("100"),
             ),
-            Version::Other(..) => self.diags.push(
+            Version::Other(..) => self.push_diag(
                 Diagnostic::error(
                     "unsupported-version",
                     format!(
@@ -1178,7 +1178,7 @@ impl Pp<'_> {
 
     fn d_line(&mut self, d: &Directive) {
         if d.args().is_empty() {
-            self.diags.push(
+            self.push_diag(
                 Diagnostic::error(
                     "invalid-line-directive",
                     "`#line` needs a line number",
@@ -1208,7 +1208,7 @@ impl Pp<'_> {
         if !p.at_end() {
             let t = p.current();
             let last = &toks[toks.len() - 2];
-            self.diags.push(
+            self.push_diag(
                 Diagnostic::error(
                     "extra-tokens",
                     format!(
@@ -1241,7 +1241,7 @@ impl Pp<'_> {
     fn d_unknown(&mut self, d: &Directive) {
         let t = &d.line[0];
         if t.kind != PpKind::Ident {
-            self.diags.push(
+            self.push_diag(
                 Diagnostic::error(
                     "unknown-directive",
                     format!("expected a directive name after `#`, found {}", describe(t)),
@@ -1276,6 +1276,6 @@ impl Pp<'_> {
                 "the directives are #define, #undef, #if, #ifdef, #ifndef, #elif, #else, #endif, #error, #pragma, #extension, #version and #line",
             );
         }
-        self.diags.push(e);
+        self.push_diag(e);
     }
 }

@@ -523,7 +523,7 @@ impl Pp<'_> {
             return;
         }
         self.context_tokens_reported = true;
-        self.diags.push(
+        self.push_diag(
             Diagnostic::error(
                 "macro-expansion-too-large",
                 format!(
@@ -549,7 +549,7 @@ impl Pp<'_> {
     #[inline(never)]
     fn report_budget(&mut self, m: &Macro, t: &Tok) {
         self.budget_reported = true;
-        self.diags.push(
+        self.push_diag(
             Diagnostic::error(
                 "macro-expansion-too-large",
                 format!("macro expansion produces more than {} tokens", self.budget),
@@ -565,7 +565,7 @@ impl Pp<'_> {
     #[cold]
     #[inline(never)]
     fn report_unterminated_call(&mut self, m: &Macro, name: &Tok, open: &Tok) {
-        self.diags.push(
+        self.push_diag(
             Diagnostic::error(
                 "unterminated-macro-call",
                 format!("unterminated call of macro `{}`", m.name),
@@ -600,14 +600,14 @@ impl Pp<'_> {
         if !m.span.is_empty() {
             d = d.with_secondary(m.span, "defined here");
         }
-        self.diags.push(d);
+        self.push_diag(d);
     }
 
     #[cold]
     #[inline(never)]
     fn report_nesting(&mut self, name: &Tok) {
         self.depth_reported = true;
-        self.diags.push(
+        self.push_diag(
             Diagnostic::error(
                 "macro-nesting-too-deep",
                 format!(
@@ -638,7 +638,7 @@ impl Pp<'_> {
             if op.orig != op.t.span && !op.orig.is_empty() {
                 d = d.with_secondary(op.orig, "`defined` is written here");
             }
-            self.diags.push(d);
+            self.push_diag(d);
         }
         let mut t = self.raw_get(ex);
         let paren = t.t.is(Punct::LeftParen);
@@ -656,7 +656,7 @@ impl Pp<'_> {
             if !ex.failed {
                 ex.failed = true;
                 let found = super::describe(&t.t);
-                self.diags.push(
+                self.push_diag(
                     Diagnostic::error(
                         "invalid-defined",
                         format!("expected a macro name after `defined`, found {found}"),
@@ -683,7 +683,7 @@ impl Pp<'_> {
             if !close.t.is(Punct::RightParen) {
                 if !ex.failed {
                     ex.failed = true;
-                    self.diags.push(
+                    self.push_diag(
                         Diagnostic::error(
                             "invalid-defined",
                             format!(

@@ -278,9 +278,15 @@ pub(super) struct Pp<'a> {
     eof_reached: bool,
 }
 
+/// Tokens that macro expansions may produce in all, besides four per token of the text: far
+/// above what real shaders expand to (the largest corpus shader expands to a few thousand), and
+/// a bound on the memory that object-like macros expanding to several copies of each other can
+/// take (they are not bounded by [`expand::MAX_CONTEXT_TOKENS`]).
+pub const MAX_EXPANDED_TOKENS: usize = 500_000;
+
 impl<'a> Pp<'a> {
     fn new(file: &'a SourceFile, toks: Vec<PpToken>, options: &'a PreprocessOptions) -> Pp<'a> {
-        let budget = 2_000_000 + 4 * toks.len();
+        let budget = MAX_EXPANDED_TOKENS + 4 * toks.len();
         Pp {
             file,
             options,
@@ -436,10 +442,15 @@ impl<'a> Pp<'a> {
         self.out.push(eof);
     }
 
+    /// Adds a diagnostic unless enough were collected ([`crate::diagnostic::MAX_DIAGNOSTICS`]).
+    fn push_diag(&mut self, d: Diagnostic) {
+        crate::diagnostic::push_capped(&mut self.diags, d);
+    }
+
     fn finish(mut self, lexer_diags: Vec<Diagnostic>) -> Preprocessed {
         if self.version_span.is_none() {
             let at = Span::empty(0);
-            self.diags.push(
+            self.push_diag(
                 Diagnostic::error(
                     "missing-version",
                     "missing `#version 300 es`: this is a GLSL ES 1.00 shader, and essl compiles GLSL ES 3.00",
@@ -514,7 +525,7 @@ impl<'a> Pp<'a> {
                     n - MAX_REPORTED
                 ));
             }
-            self.diags.push(d);
+            crate::diagnostic::push_capped(&mut self.diags, d);
         }
     }
 
@@ -539,7 +550,7 @@ impl<'a> Pp<'a> {
         } else {
             d = d.with_label("not at the start of a line");
         }
-        self.diags.push(d);
+        self.push_diag(d);
     }
 
     fn report_invalid_char(&mut self, t: &Tok, c: char) {
@@ -584,11 +595,11 @@ impl<'a> Pp<'a> {
                 ));
             }
         }
-        self.diags.push(d);
+        self.push_diag(d);
     }
 
     fn report_long_identifier(&mut self, t: &PpToken) {
-        self.diags.push(
+        self.push_diag(
             Diagnostic::error(
                 "identifier-too-long",
                 format!(
