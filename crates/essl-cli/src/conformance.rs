@@ -243,6 +243,8 @@ impl Report {
                 );
             }
         }
+        s.push('\n');
+        s.push_str(KNOWN_GAPS);
         s.push_str("\n## Bars\n\n");
         let unmet = self.unmet_bars();
         if unmet.is_empty() {
@@ -256,6 +258,28 @@ impl Report {
         s
     }
 }
+
+/// Where essl answers differently from a WebGL2 browser beyond the scored cases.
+const KNOWN_GAPS: &str = "\
+## Known gaps
+
+Where essl still answers differently from a WebGL2 browser, beyond the cases above:
+
+- **GLSL ES 1.00 shaders are not compiled yet.** WebGL2 compiles a shader that does not start
+  with `#version 300 es` (or that says `#version 100`) as GLSL ES 1.00; essl reports it as an
+  error (`missing-version`, with a help on what to change for ES 3.00) and checks the rest as
+  ES 3.00, so `attribute`, `varying` and `gl_FragColor` add their own errors. The scores above count `300 es` cases only; the ES 1.00 WebGL conformance cases
+  (`webgl_conformance_es100.jsonl`) are not scored.
+- **Valid shaders not lowered yet:** arrays of uniform blocks, a struct or array of samplers as
+  a function parameter, and `texture()` on an integer cube sampler are accepted by WebGL2; essl
+  checks them and then reports an `unsupported` error.
+- **Extensions:** `essl::compile` supports no shader extension. `#extension NAME : require`
+  is an error (`GL_EXT_conservative_depth` above) and `enable` or `warn` a warning, the
+  extension's features staying unavailable, where a browser accepts the extensions its WebGL2
+  implementation exposes.
+
+Rendering has its own list: [what essl-gl does not do](rendering.md#what-differs-from-webgl2).
+";
 
 const MARKDOWN_INTRO: &str = "\
 # Conformance
@@ -276,7 +300,7 @@ The score is **compile + link** (`essl::compile`, with whatever checking and low
   needs a shader to fail to compile; `link_fail` needs both shaders to compile and the link to
   fail; `compile_link_fail` accepts either failure.
 - **glslang tests** (`glslang_es300.jsonl`): glslang's own `300 es` test files; essl's compile
-  status should agree with `expect_compile`, and we count how many of glslang's expected error
+  status should agree with `expect_compile`, and the table counts how many of glslang's expected error
   lines essl reports an error on (a measure of where errors are reported, not a bar). glslang
   is more permissive than WebGL2 in places (its clean files include a shader with no `main`,
   which WebGL2 rejects at compile time), so this row informs and is not a bar.

@@ -24,7 +24,7 @@ enum Command {
     Lint(LintArgs),
     /// Score the front end on the conformance corpora (WebGL, dEQP, glslang, webgl2fundamentals).
     Conformance(ConformanceArgs),
-    /// Render a scene (../shared/scenes/FORMAT.md) through essl's WebGL2 API to a PNG, and print
+    /// Render a scene (docs/scene-format.md) through essl's WebGL2 API to a PNG, and print
     /// one JSON line as webgl2-render.py does.
     Render {
         /// The scene file.

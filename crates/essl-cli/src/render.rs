@@ -1,5 +1,5 @@
 //! `essl render SCENE.json -o OUT.png [--times N]`: renders a scene of the
-//! `../shared/scenes/FORMAT.md` format through essl-gl's WebGL2 API and writes a PNG; prints one
+//! `docs/scene-format.md` format through essl-gl's WebGL2 API and writes a PNG; prints one
 //! JSON line like `webgl2-render.py` (scene, png, size, triangles, logs, warnings, ms per frame,
 //! renderer), so that the two can be compared line for line.
 

@@ -5,8 +5,9 @@
 //! absolute error of at most 0.1/255. What is left are outline and `step()`-threshold pixels:
 //! SwiftShader snaps vertices to 1/16 pixel, lavapipe to 1/256 (see `docs/rendering.md`).
 //!
-//! Without `../shared` (a user's own clone) the test prints why and passes, unless `CI` is set;
-//! without a Vulkan adapter likewise. Our renders and difference images are written to
+//! Without the scenes (`ESSL_SCENES` or `../shared/scenes`) the test prints why and passes,
+//! unless `ESSL_REQUIRE_CORPORA=1`; without a Vulkan adapter likewise, unless
+//! `ESSL_REQUIRE_ADAPTER=1`. Our renders and difference images are written to
 //! Cargo's per-target temporary folder (the path is printed).
 
 use std::path::{Path, PathBuf};

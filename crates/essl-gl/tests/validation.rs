@@ -4,8 +4,8 @@
 //! its rule, uniforms and shader line; valid values report nothing; with validation off nothing
 //! is reported.
 //!
-//! Without a Vulkan adapter the tests print why and pass, unless `CI` is set; without
-//! `../shared` (a user's own clone) the shared-scene test likewise.
+//! Without a Vulkan adapter the tests print why and pass, unless `ESSL_REQUIRE_ADAPTER=1`;
+//! without the shared scenes the shared-scene test likewise, unless `ESSL_REQUIRE_CORPORA=1`.
 
 mod common;
 

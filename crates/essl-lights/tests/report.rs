@@ -3,7 +3,7 @@
 //! variant's numbers finite, the files written. And the programs the report compares are
 //! minimal (no inactive uniform, no unused function).
 //!
-//! The GPU parts skip with a message when no Vulkan adapter exists, unless `CI` is set.
+//! The GPU parts skip with a message when no Vulkan adapter exists, unless `ESSL_REQUIRE_ADAPTER=1`.
 
 use std::path::{Path, PathBuf};
 
