@@ -1280,6 +1280,19 @@ impl Checker<'_> {
         let body = self.block_stmts_same_scope(&f.body.stmts);
         self.pop_scope();
         let ctx = self.fctx.take().expect("function context");
+        if ctx.ret != Type::Void && !has_return(&f.body.stmts) {
+            let name = f.proto.name.clone();
+            let ret = ctx.ret.display(&self.structs).to_string();
+            let d = self.error(
+                "missing-return",
+                name.span,
+                format!("function `{}` never returns a value", name.name),
+            );
+            d.label = format!("declared to return `{ret}`");
+            d.notes
+                .push("WebGL rejects a non-void function without any `return` statement".into());
+            d.help = Some("return a value at the end of the function".into());
+        }
         let func = &mut self.functions[id];
         func.body = body;
         func.locals = ctx.locals;
@@ -1319,5 +1332,26 @@ impl Checker<'_> {
         let _ = self.block_stmts_same_scope(&f.body.stmts);
         self.pop_scope();
         self.fctx = None;
+    }
+}
+
+/// Whether a statement list holds a `return` anywhere (nested blocks, branches and loops
+/// included): ANGLE rejects a non-void function with none.
+fn has_return(stmts: &[ast::Stmt]) -> bool {
+    stmts.iter().any(stmt_has_return)
+}
+
+fn stmt_has_return(s: &ast::Stmt) -> bool {
+    use ast::StmtKind as K;
+    match &s.kind {
+        K::Return(_) => true,
+        K::Block(b) => has_return(&b.stmts),
+        K::If(_, then, otherwise) => {
+            stmt_has_return(then) || otherwise.as_deref().is_some_and(stmt_has_return)
+        }
+        K::While(_, body) | K::DoWhile(body, _) => stmt_has_return(body),
+        K::For { body, .. } => stmt_has_return(body),
+        K::Switch(_, body) => has_return(&body.stmts),
+        _ => false,
     }
 }

@@ -50,6 +50,16 @@ pub fn check(
     (module, c.diags)
 }
 
+/// Whether a type is `bool`, a `bool` vector, or an array of them.
+fn is_bool(ty: &Type) -> bool {
+    match ty {
+        Type::Scalar(crate::types::ScalarKind::Bool)
+        | Type::Vector(crate::types::ScalarKind::Bool, _) => true,
+        Type::Array(el, _) => is_bool(el),
+        _ => false,
+    }
+}
+
 /// What a name refers to.
 #[derive(Clone, Debug)]
 enum Sym {
@@ -317,6 +327,19 @@ impl<'a> Checker<'a> {
         declared: Option<Precision>,
         span: Span,
     ) -> Option<Precision> {
+        if declared.is_some() && is_bool(ty) {
+            let d = self.error(
+                "invalid-precision",
+                span,
+                "`bool` takes no precision qualifier",
+            );
+            d.label = "a precision on a `bool`".into();
+            d.token = "bool".into();
+            d.notes
+                .push("precision qualifiers apply to float, integer and sampler types only".into());
+            d.help = Some("remove the precision qualifier".into());
+            return None;
+        }
         let key = Self::prec_key(ty)?;
         if declared.is_some() {
             return declared;
