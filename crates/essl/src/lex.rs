@@ -241,7 +241,13 @@ pub fn lex(file: &SourceFile) -> Lexed {
         tokens: Vec::with_capacity(text.len() / 3 + 2),
         diagnostics: Vec::new(),
     };
-    let mut names = Interner::default();
+    let mut names = Interner {
+        // About one distinct text per 16 bytes of a typical shader: no rehash while it fills.
+        map: rustc_hash::FxHashMap::with_capacity_and_hasher(
+            (text.len() / 16).clamp(64, 4096),
+            Default::default(),
+        ),
+    };
     let newline = names.intern("\n");
     // No-break spaces per physical line: (span, inside a comment).
     let mut nbsp: Vec<(Span, bool)> = Vec::new();
@@ -405,7 +411,6 @@ fn push(out: &mut Lexed, kind: PpKind, start: usize, end: usize, text: Arc<str>,
 
 /// One shared `Arc<str>` per distinct token text of a file: shaders repeat their names and
 /// punctuation, and a clone of an `Arc` costs less than an allocation per token.
-#[derive(Default)]
 struct Interner<'a> {
     map: rustc_hash::FxHashMap<&'a str, Arc<str>>,
 }
