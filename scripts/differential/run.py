@@ -212,6 +212,8 @@ def main():
         return reclassify(a)
 
     os.makedirs(a.out, exist_ok=True)
+    commit = git_head()  # read now: the tree may move during a long run
+    essl_built = time.strftime("%Y-%m-%d %H:%M:%S UTC", time.gmtime(os.stat(a.essl).st_mtime))
     work = a.work or tempfile.mkdtemp(prefix="essl-diff-")
     os.makedirs(work, exist_ok=True)
     t_start = time.time()
@@ -239,13 +241,13 @@ def main():
     with open(os.path.join(a.out, "records.jsonl"), "w") as fh:
         for r in records:
             if r["file"] in chrome:
-                r["chromium_ok"], r["chromium_log"] = chrome[r["file"]][0], chrome[r["file"]][1][:600]
+                r["chromium_ok"], r["chromium_log"] = chrome[r["file"]][0], chrome[r["file"]][1][:3000]
             fh.write(json.dumps(r) + "\n")
     classes, rule_counts, cases = classify(records, work, a.seed, a.mutate_rate, a.out)
     total = len(records)
     elapsed = time.time() - t_start
     report = {
-        "commit": git_head(), "seed": a.seed, "start": a.start, "count": total,
+        "commit": commit, "essl_binary_built": essl_built, "seed": a.seed, "start": a.start, "count": total,
         "mutate_rate": a.mutate_rate, "check_agreements": a.check_agreements,
         "seconds": {"total": round(elapsed, 1), "generate_and_check": round(t_checked - t_start, 1),
                     "chromium": round(t_oracle - t_checked, 1), "essl_cpu": round(t_essl, 1),
