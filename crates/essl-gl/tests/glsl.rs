@@ -566,3 +566,43 @@ fn a_shadow_sampler_without_a_depth_texture_draws() {
     assert_eq!(p[3], 255);
     assert_clean(&ctx);
 }
+
+#[test]
+fn non_square_outer_products_and_scalar_faceforward_and_refract_compute_as_glsl() {
+    let Some(mut ctx) = context(W, H) else { return };
+    // Uniform inputs keep the values out of constant folding. Each check is a pass/fail bit;
+    // green means every one held on the GPU.
+    let p = full_screen(
+        &mut ctx,
+        "#version 300 es
+        precision highp float;
+        uniform vec2 u_c;
+        uniform vec3 u_r;
+        uniform float u_one;
+        out vec4 color;
+        bool near(float a, float b) { return abs(a - b) < 1e-4; }
+        void main() {
+            mat3x2 m = outerProduct(u_c, u_r);          // column i = c * r[i]
+            mat2x3 n = outerProduct(u_r, u_c);
+            bool ok = near(m[0][0], 3.0) && near(m[0][1], 6.0) && near(m[2][0], 5.0)
+                && near(m[2][1], 10.0) && near(n[1][2], 10.0) && near(n[0][1], 4.0);
+            ok = ok && near(faceforward(2.0 * u_one, u_one, -u_one), 2.0)
+                && near(faceforward(2.0 * u_one, u_one, u_one), -2.0);
+            // refract(I, N, eta) = eta I - (eta N.I + sqrt(k)) N, k = 1 - eta^2 (1 - (N.I)^2)
+            float r = refract(-u_one, u_one, 0.5 * u_one);
+            ok = ok && near(r, -0.5 - (0.5 * -1.0 + 1.0) * 1.0);
+            ok = ok && near(refract(0.5 * u_one, u_one, 4.0 * u_one), 0.0);
+            color = ok ? vec4(0.0, 1.0, 0.0, 1.0) : vec4(1.0, 0.0, 0.0, 1.0);
+        }",
+    );
+    let c = ctx.get_uniform_location(p, "u_c");
+    ctx.uniform2f(c, 1.0, 2.0);
+    let r = ctx.get_uniform_location(p, "u_r");
+    ctx.uniform3f(r, 3.0, 4.0, 5.0);
+    let one = ctx.get_uniform_location(p, "u_one");
+    ctx.uniform1f(one, 1.0);
+    clear_black(&mut ctx);
+    ctx.draw_arrays(gl::TRIANGLES, 0, 6);
+    assert_eq!(pixel(&mut ctx, W / 2, H / 2), [0, 255, 0, 255]);
+    assert_clean(&ctx);
+}

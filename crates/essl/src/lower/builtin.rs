@@ -177,6 +177,27 @@ impl FnCx<'_, '_> {
             Cross => self.math(Mf::Cross, &[vals[0], vals[1]], span),
             Normalize if t0.is_scalar() => unary(self, Mf::Sign),
             Normalize => unary(self, Mf::Normalize),
+            FaceForward if t0.is_scalar() => {
+                // dot(Nref, I) < 0 ? N : -N, for scalars (naga's FaceForward takes vectors).
+                let d = self.binop(naga::BinaryOperator::Multiply, vals[2], vals[1], span);
+                let zero = self.lit(Literal::F32(0.0));
+                let negative = self.binop(naga::BinaryOperator::Less, d, zero, span);
+                let minus_n = self.add(
+                    Expression::Unary {
+                        op: naga::UnaryOperator::Negate,
+                        expr: vals[0],
+                    },
+                    span,
+                );
+                self.add(
+                    Expression::Select {
+                        condition: negative,
+                        accept: vals[0],
+                        reject: minus_n,
+                    },
+                    span,
+                )
+            }
             FaceForward => self.math(Mf::FaceForward, &[vals[0], vals[1], vals[2]], span),
             Reflect if t0.is_scalar() => {
                 // I - 2 * dot(N, I) * N for scalars.
@@ -187,7 +208,37 @@ impl FnCx<'_, '_> {
                 self.binop(naga::BinaryOperator::Subtract, vals[0], t, span)
             }
             Reflect => self.math(Mf::Reflect, &[vals[0], vals[1]], span),
-            Refract if t0.is_scalar() => return Err(unsupported("`refract` on scalars", span)),
+            Refract if t0.is_scalar() => {
+                // k = 1 - eta² (1 - (N·I)²); k < 0 ? 0 : eta I - (eta N·I + sqrt(k)) N, for
+                // scalars (naga's Refract takes vectors).
+                use naga::BinaryOperator::{Less, Multiply, Subtract};
+                let (i, n, eta) = (vals[0], vals[1], vals[2]);
+                let d = self.binop(Multiply, n, i, span);
+                let one = self.lit(Literal::F32(1.0));
+                let zero = self.lit(Literal::F32(0.0));
+                let d2 = self.binop(Multiply, d, d, span);
+                let one_minus_d2 = self.binop(Subtract, one, d2, span);
+                let eta2 = self.binop(Multiply, eta, eta, span);
+                let t = self.binop(Multiply, eta2, one_minus_d2, span);
+                let one_again = self.lit(Literal::F32(1.0));
+                let k = self.binop(Subtract, one_again, t, span);
+                let total = self.binop(Less, k, zero, span);
+                let root = self.math(Mf::Sqrt, &[k], span);
+                let eta_d = self.binop(Multiply, eta, d, span);
+                let coef = self.binop(naga::BinaryOperator::Add, eta_d, root, span);
+                let eta_i = self.binop(Multiply, eta, i, span);
+                let coef_n = self.binop(Multiply, coef, n, span);
+                let refracted = self.binop(Subtract, eta_i, coef_n, span);
+                let zero_again = self.lit(Literal::F32(0.0));
+                self.add(
+                    Expression::Select {
+                        condition: total,
+                        accept: zero_again,
+                        reject: refracted,
+                    },
+                    span,
+                )
+            }
             Refract => self.math(Mf::Refract, &[vals[0], vals[1], vals[2]], span),
             MatrixCompMult => {
                 let Type::Matrix { cols, .. } = t0 else {
@@ -202,7 +253,20 @@ impl FnCx<'_, '_> {
                     .collect();
                 self.compose(ret, parts, span)
             }
-            OuterProduct => self.math(Mf::Outer, &[vals[0], vals[1]], span),
+            OuterProduct => {
+                // Column i of outerProduct(c, r) is c * r[i]. Built by hand: naga's `Outer` gives
+                // a non-square result the transposed shape.
+                let Type::Vector(_, n) = args[1].ty else {
+                    return Err(unsupported("outerProduct", span));
+                };
+                let parts: Vec<_> = (0..n as u32)
+                    .map(|i| {
+                        let r = self.access_index(vals[1], i, span);
+                        self.binop(naga::BinaryOperator::Multiply, vals[0], r, span)
+                    })
+                    .collect();
+                self.compose(ret, parts, span)
+            }
             Transpose => unary(self, Mf::Transpose),
             Determinant => unary(self, Mf::Determinant),
             Inverse => unary(self, Mf::Inverse),
