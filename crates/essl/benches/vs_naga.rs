@@ -84,6 +84,7 @@ fn shaders() -> Vec<(String, String, Stage)> {
             out.extend(pair);
         }
     }
+    std::panic::set_hook(hook);
     eprintln!(
         "{cases} cases, {} shaders that both front ends accept",
         out.len()
