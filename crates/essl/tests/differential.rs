@@ -18,7 +18,6 @@ const KNOWN_DIFFERENCES: &[&str] = &[
     "global-int-division-by-zero.vert",
     "infinite-loop-while-true.frag",
     "int-division-by-zero-in-expression.frag",
-    "shift-by-large-uint-constant.frag",
     "struct-with-array-assign-from-uniform.frag",
     "struct-with-array-equality.vert",
     "switch-last-case-if-false.frag",

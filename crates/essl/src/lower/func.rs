@@ -1470,12 +1470,19 @@ impl<'c, 'a> FnCx<'c, 'a> {
                 ))
             }
         };
-        // Shifts: the amount is unsigned, and a vector when the value is.
+        // Shifts: the amount is unsigned, and a vector when the value is. It is taken modulo 32:
+        // GLSL leaves a shift by 32 or more undefined (Chromium compiles `3 >> 40u` with a
+        // warning), and naga rejects a constant one.
         if matches!(op, BinaryOp::Shl | BinaryOp::Shr) {
             let mut amount = b;
             if bt.scalar_kind() == Some(ScalarKind::Int) {
                 amount = self.cast(amount, naga::ScalarKind::Uint, span);
             }
+            let mut mask = self.lit(naga::Literal::U32(31));
+            if let Type::Vector(_, n) = bt {
+                mask = self.splat(mask, *n, span);
+            }
+            amount = self.binop(Bo::And, amount, mask, span);
             if let (Type::Vector(_, n), true) = (at, bt.is_scalar()) {
                 amount = self.splat(amount, *n, span);
             }
