@@ -13,7 +13,6 @@ use essl::{compile, Stage};
 const KNOWN_DIFFERENCES: &[&str] = &[
     "comma-expression-assignment.vert",
     "const-int-division-by-zero.frag",
-    "const-shift-out-of-range.frag",
     "fragment-output-dynamic-component-index.frag",
     "global-int-division-by-zero.vert",
     "infinite-loop-while-true.frag",

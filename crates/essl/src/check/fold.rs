@@ -85,10 +85,12 @@ fn scalar_op(op: BinaryOp, a: Scalar, b: Scalar) -> Result<Scalar, FoldError> {
     })
 }
 
+/// A constant shift. An amount outside 0..32 is undefined in GLSL; Chromium folds it with a
+/// warning, and essl takes it modulo 32, as the lowering does at run time.
 fn shift(op: BinaryOp, a: Scalar, b: Scalar) -> Result<Scalar, FoldError> {
     let amount = match b {
-        Scalar::I(v) if (0..32).contains(&v) => v as u32,
-        Scalar::U(v) if v < 32 => v,
+        Scalar::I(v) => (v as u32) & 31,
+        Scalar::U(v) => v & 31,
         _ => return Err(FoldError::Unsupported),
     };
     Ok(match (a, op) {
