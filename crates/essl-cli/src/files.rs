@@ -138,10 +138,8 @@ fn walk(dir: &Path, found: &mut Vec<(PathBuf, Stage)>, errors: &mut Vec<CollectE
         }
         if file_type.is_dir() {
             walk(&path, found, errors);
-        } else {
-            if let Some(stage) = Stage::from_path(&path) {
-                found.push((path, stage));
-            }
+        } else if let Some(stage) = Stage::from_path(&path) {
+            found.push((path, stage));
         }
     }
 }

@@ -213,11 +213,11 @@ impl Fix {
     }
 }
 
-/// The text of the one line a fix touches, with the fix applied; `None` when the fix spans
-/// several lines.
 /// The longest line (in bytes) that a help shows fixed.
 const MAX_PREVIEW_LINE: usize = 200;
 
+/// The text of the one line a fix touches, with the fix applied; `None` when the fix spans
+/// several lines or the line is longer than [`MAX_PREVIEW_LINE`].
 fn fixed_line(file: &SourceFile, fix: &Fix) -> Option<String> {
     let first = fix.edits.first()?;
     let line = file.line_index(first.span.start);
@@ -256,7 +256,8 @@ pub const MAX_DIAGNOSTICS: usize = 1000;
 
 /// Whether a pass that has collected `list` still takes `d`.
 pub(crate) fn accepts(list: &[Diagnostic], d: &Diagnostic) -> bool {
-    list.len() <= MAX_DIAGNOSTICS || (d.is_error() && !list.iter().any(Diagnostic::is_error))
+    // From the end: past the limit, the only error kept may be the one just added.
+    list.len() <= MAX_DIAGNOSTICS || (d.is_error() && !list.iter().rev().any(Diagnostic::is_error))
 }
 
 /// Adds `d` to a pass's diagnostics unless the pass has collected enough ([`MAX_DIAGNOSTICS`]).

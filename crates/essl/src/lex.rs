@@ -430,12 +430,7 @@ impl<'a> Interner<'a> {
     }
 
     fn intern(&mut self, s: &'a str) -> Arc<str> {
-        if let Some(a) = self.map.get(s) {
-            return a.clone();
-        }
-        let a: Arc<str> = Arc::from(s);
-        self.map.insert(s, a.clone());
-        a
+        self.map.entry(s).or_insert_with(|| Arc::from(s)).clone()
     }
 }
 
@@ -574,9 +569,6 @@ fn punct(c: char, cur: &mut Cursor<'_>) -> Option<Punct> {
     Some(p)
 }
 
-/// Reports no-break spaces: one diagnostic per line, an error when one is outside a comment
-/// (WebGL rejects it there), else a warning; each with a certain fix that replaces them all
-/// on that line with plain spaces.
 /// How many no-break spaces of one line are labelled besides the first.
 const MAX_NBSP_LABELS: usize = 8;
 
@@ -595,6 +587,9 @@ fn runs(group: &[(Span, bool)]) -> Vec<(Span, usize)> {
     out
 }
 
+/// Reports no-break spaces: one diagnostic per line, an error when one is outside a comment
+/// (WebGL rejects it there), else a warning; each with a certain fix that replaces them all
+/// on that line with plain spaces.
 fn report_nbsp(file: &SourceFile, nbsp: &[(Span, bool)], diagnostics: &mut Vec<Diagnostic>) {
     let mut i = 0;
     while i < nbsp.len() {

@@ -53,10 +53,8 @@ pub fn check(
 /// Whether a type is `bool`, a `bool` vector, or an array of them.
 fn is_bool(ty: &Type) -> bool {
     match ty {
-        Type::Scalar(crate::types::ScalarKind::Bool)
-        | Type::Vector(crate::types::ScalarKind::Bool, _) => true,
         Type::Array(el, _) => is_bool(el),
-        _ => false,
+        _ => ty.scalar_kind() == Some(crate::types::ScalarKind::Bool),
     }
 }
 

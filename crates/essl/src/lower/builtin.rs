@@ -211,7 +211,7 @@ impl FnCx<'_, '_> {
             Refract if t0.is_scalar() => {
                 // k = 1 - eta² (1 - (N·I)²); k < 0 ? 0 : eta I - (eta N·I + sqrt(k)) N, for
                 // scalars (naga's Refract takes vectors).
-                use naga::BinaryOperator::{Less, Multiply, Subtract};
+                use naga::BinaryOperator::{Add, Less, Multiply, Subtract};
                 let (i, n, eta) = (vals[0], vals[1], vals[2]);
                 let d = self.binop(Multiply, n, i, span);
                 let one = self.lit(Literal::F32(1.0));
@@ -220,20 +220,18 @@ impl FnCx<'_, '_> {
                 let one_minus_d2 = self.binop(Subtract, one, d2, span);
                 let eta2 = self.binop(Multiply, eta, eta, span);
                 let t = self.binop(Multiply, eta2, one_minus_d2, span);
-                let one_again = self.lit(Literal::F32(1.0));
-                let k = self.binop(Subtract, one_again, t, span);
+                let k = self.binop(Subtract, one, t, span);
                 let total = self.binop(Less, k, zero, span);
                 let root = self.math(Mf::Sqrt, &[k], span);
                 let eta_d = self.binop(Multiply, eta, d, span);
-                let coef = self.binop(naga::BinaryOperator::Add, eta_d, root, span);
+                let coef = self.binop(Add, eta_d, root, span);
                 let eta_i = self.binop(Multiply, eta, i, span);
                 let coef_n = self.binop(Multiply, coef, n, span);
                 let refracted = self.binop(Subtract, eta_i, coef_n, span);
-                let zero_again = self.lit(Literal::F32(0.0));
                 self.add(
                     Expression::Select {
                         condition: total,
-                        accept: zero_again,
+                        accept: zero,
                         reject: refracted,
                     },
                     span,

@@ -409,7 +409,7 @@ impl Pp<'_> {
         let mut expanded = Vec::with_capacity(args.len());
         let mut counted = 0;
         for a in args {
-            match self.pre_expand(ex, a, name, room - counted.min(room)) {
+            match self.pre_expand(ex, a, name, room.saturating_sub(counted)) {
                 Ok(a) => {
                     counted += a.len();
                     expanded.push(a);
@@ -428,7 +428,7 @@ impl Pp<'_> {
         let args = expanded;
         let mut out = Vec::new();
         for b in &m.body {
-            if !out.is_empty() && out.len() > room {
+            if out.len() > room {
                 self.report_context_tokens(m, name);
                 ex.failed = true;
                 return None;
