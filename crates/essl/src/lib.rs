@@ -20,6 +20,7 @@ pub mod program;
 pub mod reflect;
 pub mod render;
 pub mod shader;
+pub mod snapshot;
 pub mod source;
 pub mod token;
 pub mod types;
