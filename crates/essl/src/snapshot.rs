@@ -7,8 +7,10 @@
 //! text is the same on every machine. A program's text goes on with the link result and the
 //! active attributes and uniforms in WebGL's enumeration order (`getActiveAttrib`,
 //! `getActiveUniform`) with their WebGL types. [`shader_info_log`] and [`program_info_log`]
-//! give instead what a browser's `getShaderInfoLog` / `getProgramInfoLog` print, for those who
-//! compare with one.
+//! give instead the info logs in a browser's format (`ERROR: 0:LINE: 'token' : message`, as
+//! `essl-gl`'s `getShaderInfoLog` returns them), for those who compare with one. The lints of
+//! `essl-lint` are not part of either: add `essl_lint::lint`'s findings to a shader's
+//! diagnostics before [`shader_text`] to snapshot them too.
 //!
 //! ```
 //! # let dir = std::env::temp_dir().join("essl-snapshot-doc");
@@ -56,8 +58,8 @@ pub fn program(vertex: impl AsRef<Path>, fragment: impl AsRef<Path>) -> String {
     }
 }
 
-/// What `getShaderInfoLog` says about the shader at `path` (`ERROR: 0:LINE: 'token' : message`
-/// lines; empty when it compiles without warnings).
+/// The shader's info log in a browser's format (`ERROR: 0:LINE: 'token' : message` lines;
+/// empty when it compiles without warnings), as `essl-gl`'s `getShaderInfoLog` gives it.
 pub fn shader_info_log(path: impl AsRef<Path>) -> String {
     match load(path.as_ref()) {
         Ok(s) => render::webgl_info_log(&s.file, &s.diagnostics),
@@ -208,28 +210,40 @@ fn plural(n: usize, what: &str) -> String {
     }
 }
 
-/// The name a snapshot shows for `path`: relative to `CARGO_MANIFEST_DIR` when it lies under
-/// it, with `/` between components on every platform.
+/// The name a snapshot shows for `path`: relative to `CARGO_MANIFEST_DIR` (with `..` where
+/// it lies outside), with `/` between components on every platform; the path as given when
+/// the variable is unset or the file does not exist.
 pub fn display_path(path: &Path) -> String {
-    let base: Option<PathBuf> = std::env::var_os("CARGO_MANIFEST_DIR").map(PathBuf::from);
-    let relative = base
-        .as_deref()
-        .and_then(|base| {
-            let abs = if path.is_absolute() {
-                path.to_path_buf()
-            } else {
-                std::env::current_dir().ok()?.join(path)
-            };
-            let abs = std::fs::canonicalize(&abs).unwrap_or(abs);
-            let base = std::fs::canonicalize(base).unwrap_or_else(|_| base.to_path_buf());
-            abs.strip_prefix(&base).ok().map(Path::to_path_buf)
-        })
+    let relative = std::env::var_os("CARGO_MANIFEST_DIR")
+        .and_then(|base| relative_to(path, Path::new(&base)))
         .unwrap_or_else(|| path.to_path_buf());
     let parts: Vec<String> = relative
         .components()
         .map(|c| c.as_os_str().to_string_lossy().into_owned())
         .collect();
     parts.join("/")
+}
+
+/// `path` relative to the folder `base`, both resolved (links, `..`) first.
+fn relative_to(path: &Path, base: &Path) -> Option<PathBuf> {
+    let path = std::fs::canonicalize(path).ok()?;
+    let base = std::fs::canonicalize(base).ok()?;
+    let common = path
+        .components()
+        .zip(base.components())
+        .take_while(|(a, b)| a == b)
+        .count();
+    if common == 0 {
+        return None;
+    }
+    let mut out = PathBuf::new();
+    for _ in base.components().skip(common) {
+        out.push("..");
+    }
+    for c in path.components().skip(common) {
+        out.push(c);
+    }
+    Some(out)
 }
 
 /// Reads and compiles a file, or gives the one line that says why it could not be.
