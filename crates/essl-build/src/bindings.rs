@@ -330,6 +330,20 @@ fn indent(text: &str) -> String {
         .collect()
 }
 
+/// A raw string literal of `text` (`r#"…"#` with as many `#` as it needs), for shader text
+/// that stays readable in the generated file.
+fn raw_string_literal(text: &str) -> String {
+    // Rust refuses a bare carriage return in a raw string.
+    if text.contains('\r') {
+        return string_literal(text);
+    }
+    let mut hashes = String::new();
+    while text.contains(&format!("\"{hashes}")) {
+        hashes.push('#');
+    }
+    format!("r{hashes}\"{text}\"{hashes}")
+}
+
 /// A Rust string literal of `text`.
 fn string_literal(text: &str) -> String {
     format!("{text:?}")
@@ -496,7 +510,7 @@ pub fn program_module(p: &LinkedProgram, sources: Sources) -> String {
                     string_literal(&abs.display().to_string())
                 )
             }
-            Sources::Inline => string_literal(shader.file.text()),
+            Sources::Inline => raw_string_literal(shader.file.text()),
         };
         let _ = writeln!(
             out,
