@@ -17,15 +17,15 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
 
     // The seeds' shaders that compile: each `*.fixed.*` twin, and the files that need none.
     let report = essl_build::Check::new("../../shaders-glsl")
-        .filter(|path| corrected(path))
+        .filter(corrected)
         .run()?;
     report.write_bindings(out.join("seeds.rs"))?;
 
     // Every webgl2fundamentals program Chromium links (pairs from the oracle's record).
     println!("cargo:rerun-if-env-changed=ESSL_CORPORA");
     println!("cargo:rerun-if-changed=../../tests/oracle/webgl2fundamentals.json");
-    let corpus = essl_testdata::location("ESSL_CORPORA", "corpora")
-        .join("webgl2fundamentals_shaders.jsonl");
+    let corpus =
+        essl_testdata::location("ESSL_CORPORA", "corpora").join("webgl2fundamentals_shaders.jsonl");
     if corpus.is_file() {
         println!("cargo:rerun-if-changed={}", corpus.display());
         let dir = out.join("corpus");
@@ -95,7 +95,10 @@ fn write_scene_programs(scenes: &Path, dir: &Path) -> Result<(), Box<dyn std::er
             continue;
         }
         let scene: serde_json::Value = serde_json::from_str(&std::fs::read_to_string(&path)?)?;
-        let stem = path.file_stem().and_then(|s| s.to_str()).ok_or("a scene name")?;
+        let stem = path
+            .file_stem()
+            .and_then(|s| s.to_str())
+            .ok_or("a scene name")?;
         for (key, ext) in [("vertex_shader", "vert"), ("fragment_shader", "frag")] {
             let file = scene[key].as_str().ok_or("a shader name")?;
             std::fs::copy(scenes.join(file), dir.join(format!("{stem}.{ext}")))?;

@@ -34,8 +34,8 @@ use std::collections::HashMap;
 use std::fmt::Write as _;
 
 use essl::hir::Module;
-use essl::reflect::UniformSource;
 use essl::reflect::PathStep;
+use essl::reflect::UniformSource;
 use essl::types::{ScalarKind, StructDef, StructId, Type};
 
 use crate::check::LinkedProgram;
@@ -277,9 +277,9 @@ fn scalar_zero(k: ScalarKind) -> &'static str {
 const RUST_KEYWORDS: &[&str] = &[
     "abstract", "as", "async", "await", "become", "box", "break", "const", "continue", "crate",
     "do", "dyn", "else", "enum", "extern", "false", "final", "fn", "for", "gen", "if", "impl",
-    "in", "let", "loop", "macro", "match", "mod", "move", "mut", "override", "priv", "pub",
-    "ref", "return", "self", "Self", "static", "struct", "super", "trait", "true", "try",
-    "type", "typeof", "union", "unsafe", "unsized", "use", "virtual", "where", "while", "yield",
+    "in", "let", "loop", "macro", "match", "mod", "move", "mut", "override", "priv", "pub", "ref",
+    "return", "self", "Self", "static", "struct", "super", "trait", "true", "try", "type",
+    "typeof", "union", "unsafe", "unsized", "use", "virtual", "where", "while", "yield",
 ];
 
 /// A GLSL name as a Rust field or constant name.
@@ -389,11 +389,7 @@ fn upload_statement(ty: &Type, expr: &str, loc: &str) -> String {
             };
             format!("gl.uniform{n}iv({loc}, {values});")
         }
-        Type::Vector(k, n) => format!(
-            "gl.uniform{n}{}v({loc}, {});",
-            kind_suffix(*k),
-            flat(expr)
-        ),
+        Type::Vector(k, n) => format!("gl.uniform{n}{}v({loc}, {});", kind_suffix(*k), flat(expr)),
         Type::Matrix { cols, rows } => format!(
             "gl.uniform_matrix{}fv({loc}, false, {});",
             matrix_suffix(*cols, *rows),

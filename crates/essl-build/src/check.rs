@@ -290,7 +290,8 @@ impl Check {
                 };
                 tally.report(cargo, &path, file, &d.diagnostic, deny)?;
                 if let Some(file) = file {
-                    let text = essl::render::human_string(file, std::slice::from_ref(&d.diagnostic));
+                    let text =
+                        essl::render::human_string(file, std::slice::from_ref(&d.diagnostic));
                     human.write_all(text.as_bytes())?;
                 }
             }
@@ -405,7 +406,11 @@ impl Tally {
         };
         // One line each: Cargo's warning lines end at a newline.
         let message = d.message.replace(['\n', '\r'], " ");
-        writeln!(cargo, "cargo:warning={at}: {severity}[{}]: {message}", d.code)
+        writeln!(
+            cargo,
+            "cargo:warning={at}: {severity}[{}]: {message}",
+            d.code
+        )
     }
 }
 
@@ -450,6 +455,9 @@ mod tests {
             module_name(root, Path::new("shaders/lights/spot-smooth.fixed.vert")),
             "lights_spot_smooth_fixed"
         );
-        assert_eq!(module_name(root, Path::new("shaders/3d.vert")), "program_3d");
+        assert_eq!(
+            module_name(root, Path::new("shaders/3d.vert")),
+            "program_3d"
+        );
     }
 }

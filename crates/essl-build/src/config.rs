@@ -227,7 +227,10 @@ mod tests {
              [rules]\nsmoothstep-edges = \"deny\"\nall = \"allow\"\nwarnings = \"deny\"\n",
         )
         .unwrap();
-        assert_eq!(c.defines, [("A".into(), "1".into()), ("B".into(), "2".into())]);
+        assert_eq!(
+            c.defines,
+            [("A".into(), "1".into()), ("B".into(), "2".into())]
+        );
         assert!(c.deny_warnings);
         let smoothstep = essl_lint::rule("smoothstep-edges").unwrap();
         assert_eq!(c.rules.level(smoothstep), Level::Deny, "a rule beats `all`");
@@ -244,7 +247,9 @@ mod tests {
             e("target = \"webgl1\"\n"),
             "/p/essl.toml: target `webgl1` is not supported (supported: webgl2)"
         );
-        assert!(e("[rules]\nno-such-rule = \"deny\"\n").contains("unknown lint rule `no-such-rule`"));
+        assert!(
+            e("[rules]\nno-such-rule = \"deny\"\n").contains("unknown lint rule `no-such-rule`")
+        );
         assert_eq!(
             e("[rules]\nall = \"error\"\n"),
             "/p/essl.toml: [rules] all = \"error\": the level is allow, warn or deny"
@@ -262,7 +267,9 @@ mod tests {
             "exclude = [\"shaders/vendor/**\", \"*.old.frag\"]\n",
         )
         .unwrap();
-        let c = Config::discover(&root.join("shaders/vendor")).unwrap().unwrap();
+        let c = Config::discover(&root.join("shaders/vendor"))
+            .unwrap()
+            .unwrap();
         assert!(c.excludes(&root.join("shaders/vendor/x.frag")));
         assert!(c.excludes(&root.join("shaders/a.old.frag")));
         assert!(!c.excludes(&root.join("shaders/a.frag")));

@@ -64,9 +64,7 @@ pub enum ReadError {
     #[error("{}", io_message(.0))]
     Io(#[from] std::io::Error),
     /// The file is larger than [`MAX_FILE_SIZE`].
-    #[error(
-        "the file is {0} bytes; essl reads shaders of at most {MAX_FILE_SIZE} bytes (16 MiB)"
-    )]
+    #[error("the file is {0} bytes; essl reads shaders of at most {MAX_FILE_SIZE} bytes (16 MiB)")]
     TooLarge(u64),
     /// The file is not UTF-8: the byte offset of the first invalid byte.
     #[error(

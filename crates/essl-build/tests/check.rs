@@ -30,7 +30,11 @@ fn project(edit: impl Fn(String) -> String) -> tempfile::TempDir {
 fn run(check: Check) -> (Result<Report, CheckError>, Vec<String>, String) {
     let (mut cargo, mut human) = (Vec::new(), Vec::new());
     let result = check.run_with(&mut cargo, &mut human);
-    let lines = String::from_utf8(cargo).unwrap().lines().map(str::to_owned).collect();
+    let lines = String::from_utf8(cargo)
+        .unwrap()
+        .lines()
+        .map(str::to_owned)
+        .collect();
     (result, lines, String::from_utf8(human).unwrap())
 }
 
@@ -51,7 +55,10 @@ fn the_corrected_shaders_pass_and_cargo_watches_the_folder() {
     assert_eq!((report.files, report.warnings), (2, 0));
     assert_eq!(report.programs.len(), 1);
     assert_eq!(report.programs[0].name, "spot");
-    assert_eq!(lines, [format!("cargo:rerun-if-changed={}", shaders.display())]);
+    assert_eq!(
+        lines,
+        [format!("cargo:rerun-if-changed={}", shaders.display())]
+    );
     assert_eq!(human, "");
 }
 
@@ -64,8 +71,23 @@ fn a_planted_error_fails_with_its_position() {
     let (line, column) = position(&text, "normalise");
     let (result, lines, human) = run(Check::new(&shaders));
     let e = result.unwrap_err();
-    assert!(matches!(e, CheckError::Failed { errors: 1, files: 2, programs: 0, .. }), "{e}");
-    assert!(e.to_string().starts_with("essl: 1 error in the shaders under"), "{e}");
+    assert!(
+        matches!(
+            e,
+            CheckError::Failed {
+                errors: 1,
+                files: 2,
+                programs: 0,
+                ..
+            }
+        ),
+        "{e}"
+    );
+    assert!(
+        e.to_string()
+            .starts_with("essl: 1 error in the shaders under"),
+        "{e}"
+    );
     let expected = format!(
         "cargo:warning={}:{line}:{column}: error[undeclared-function]: ",
         shaders.join("spot.frag").display()
@@ -74,7 +96,10 @@ fn a_planted_error_fails_with_its_position() {
         lines.iter().any(|l| l.starts_with(&expected)),
         "no `{expected}` in {lines:#?}"
     );
-    assert!(human.contains(&format!("spot.frag:{line}:{column}")), "{human}");
+    assert!(
+        human.contains(&format!("spot.frag:{line}:{column}")),
+        "{human}"
+    );
     // `fn main() -> Result<(), Box<dyn Error>>` prints the Debug form: the same sentence.
     assert_eq!(format!("{e:?}"), e.to_string());
 }
@@ -86,10 +111,18 @@ fn a_link_error_points_into_the_fragment_shader() {
     let text = std::fs::read_to_string(shaders.join("spot.frag")).unwrap();
     let (line, _) = position(&text, "flat in vec3 v_normal;");
     let (result, lines, _) = run(Check::new(&shaders).lints(false));
-    assert!(matches!(result, Err(CheckError::Failed { errors: 1, .. })), "{lines:?}");
-    let prefix = format!("cargo:warning={}:{line}:", shaders.join("spot.frag").display());
     assert!(
-        lines.iter().any(|l| l.starts_with(&prefix) && l.contains("error[varying-interpolation-mismatch]")),
+        matches!(result, Err(CheckError::Failed { errors: 1, .. })),
+        "{lines:?}"
+    );
+    let prefix = format!(
+        "cargo:warning={}:{line}:",
+        shaders.join("spot.frag").display()
+    );
+    assert!(
+        lines
+            .iter()
+            .any(|l| l.starts_with(&prefix) && l.contains("error[varying-interpolation-mismatch]")),
         "{lines:#?}"
     );
 }
@@ -107,17 +140,28 @@ fn essl_toml_denies_warnings_and_excludes() {
     let shaders = dir.path().join("shaders");
     let (result, lines, _) = run(Check::new(&shaders));
     assert_eq!(result.unwrap().warnings, 1, "{lines:#?}");
-    assert!(lines.iter().any(|l| l.contains(": warning[smoothstep-edges]: ")));
+    assert!(lines
+        .iter()
+        .any(|l| l.contains(": warning[smoothstep-edges]: ")));
 
     let config = dir.path().join("essl.toml");
     std::fs::write(&config, "[rules]\nwarnings = \"deny\"\n").unwrap();
     let (result, lines, _) = run(Check::new(&shaders));
     assert!(matches!(result, Err(CheckError::Failed { errors: 1, .. })));
-    assert!(lines.iter().any(|l| l.contains(": error (denied warning)[smoothstep-edges]: ")));
-    let watched = format!("cargo:rerun-if-changed={}", std::fs::canonicalize(&config).unwrap().display());
+    assert!(lines
+        .iter()
+        .any(|l| l.contains(": error (denied warning)[smoothstep-edges]: ")));
+    let watched = format!(
+        "cargo:rerun-if-changed={}",
+        std::fs::canonicalize(&config).unwrap().display()
+    );
     assert!(lines.contains(&watched), "{lines:#?}");
 
-    std::fs::write(&config, "[rules]\nsmoothstep-edges = \"allow\"\nwarnings = \"deny\"\n").unwrap();
+    std::fs::write(
+        &config,
+        "[rules]\nsmoothstep-edges = \"allow\"\nwarnings = \"deny\"\n",
+    )
+    .unwrap();
     assert_eq!(run(Check::new(&shaders)).0.unwrap().warnings, 0);
 
     std::fs::write(&config, "exclude = [\"spot.frag\"]\n").unwrap();
@@ -127,7 +171,10 @@ fn essl_toml_denies_warnings_and_excludes() {
     std::fs::write(&config, "[rules]\nsmoothstep = \"deny\"\n").unwrap();
     let e = run(Check::new(&shaders)).0.unwrap_err();
     assert!(matches!(e, CheckError::Config(_)));
-    assert!(e.to_string().contains("unknown lint rule `smoothstep`"), "{e}");
+    assert!(
+        e.to_string().contains("unknown lint rule `smoothstep`"),
+        "{e}"
+    );
 }
 
 #[test]
@@ -137,7 +184,10 @@ fn a_missing_folder_or_an_empty_one() {
     assert!(e.to_string().ends_with("no such file or directory"), "{e}");
     let (result, lines, _) = run(Check::new(dir.path()));
     assert_eq!(result.unwrap().files, 0);
-    assert!(lines[1].starts_with("cargo:warning=essl: no shader under"), "{lines:?}");
+    assert!(
+        lines[1].starts_with("cargo:warning=essl: no shader under"),
+        "{lines:?}"
+    );
 }
 
 /// The generated text, reviewed for readability: every kind of uniform.
@@ -146,6 +196,9 @@ fn bindings_text() {
     let shaders = Path::new("../../examples/shader-tests/shaders");
     let (result, _, _) = run(Check::new(shaders));
     let report = result.unwrap();
-    let text = essl_build::bindings::generate_with(&report.programs, essl_build::bindings::Sources::Inline);
+    let text = essl_build::bindings::generate_with(
+        &report.programs,
+        essl_build::bindings::Sources::Inline,
+    );
     insta::assert_snapshot!(text);
 }

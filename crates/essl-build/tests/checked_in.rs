@@ -12,11 +12,7 @@ use essl_build::Check;
 #[test]
 fn spot_light_example_bindings_are_current() {
     let report = Check::new("../../shaders-glsl")
-        .filter(|p| {
-            p.is_dir()
-                || p.file_stem()
-                    .is_some_and(|s| s == "spot-smooth-nbsp.fixed")
-        })
+        .filter(|p| p.is_dir() || p.file_stem().is_some_and(|s| s == "spot-smooth-nbsp.fixed"))
         .run_with(&mut std::io::sink(), &mut std::io::sink())
         .unwrap();
     assert_eq!(report.programs.len(), 1);

@@ -139,9 +139,10 @@ pub fn link_text(vs: &Shader, fs: &Shader, program: &Program) -> String {
             None => None,
         };
         match file {
-            Some(file) => {
-                out.push_str(&render::human_string(file, std::slice::from_ref(&d.diagnostic)))
-            }
+            Some(file) => out.push_str(&render::human_string(
+                file,
+                std::slice::from_ref(&d.diagnostic),
+            )),
             None => {
                 let mut buf = codespan_reporting::term::termcolor::NoColor::new(Vec::new());
                 render::emit_human_unlocated(

@@ -37,7 +37,10 @@ fn expected() -> every_uniform::Uniforms {
         u_light: light([1.0, 2.0, 3.0], 0.5, true),
         u_lights: [0.0f32, 1.0, 2.0].map(|f| light([f, f + 0.25, -f], f * 0.125, f != 1.0)),
         u_rig: types::Rig {
-            lights: [light([0.0; 3], 0.0, false), light([7.0, 8.0, 9.0], 0.0, true)],
+            lights: [
+                light([0.0; 3], 0.0, false),
+                light([7.0, 8.0, 9.0], 0.0, true),
+            ],
             warp: [1.0, 2.0, 3.0, 4.0, 5.0, 6.0],
             cells: [-3, 4],
         },
@@ -45,7 +48,9 @@ fn expected() -> every_uniform::Uniforms {
         u_mask: [1, u32::MAX, 3, 4],
         u_counts: [-1, 0, i32::MAX],
         u_turns: [[2.0, 0.0, 0.0, 2.0], [0.0, 1.0, -1.0, 0.0]],
-        u_frame: [1.0, 2.0, 3.0, 4.0, 5.0, 6.0, 7.0, 8.0, 9.0, 10.0, 11.0, 12.0],
+        u_frame: [
+            1.0, 2.0, 3.0, 4.0, 5.0, 6.0, 7.0, 8.0, 9.0, 10.0, 11.0, 12.0,
+        ],
         u_colors: [[0.0; 4], [0.25, 0.5, 0.75, 1.0]],
         r#type: -2.5,
         u_textures: [1, 2],
@@ -53,7 +58,11 @@ fn expected() -> every_uniform::Uniforms {
 }
 
 /// Draws with `uniforms` and returns the centre pixel.
-fn draw(gl: &mut Context, program: &every_uniform::Program, u: &every_uniform::Uniforms) -> [u8; 4] {
+fn draw(
+    gl: &mut Context,
+    program: &every_uniform::Program,
+    u: &every_uniform::Uniforms,
+) -> [u8; 4] {
     program.upload(gl, u);
     gl.clear(gl::COLOR_BUFFER_BIT);
     gl.draw_arrays(gl::TRIANGLES, 0, 3);
@@ -73,7 +82,17 @@ fn every_kind_of_uniform_arrives() {
         let t = gl.create_texture();
         gl.active_texture(gl::TEXTURE0 + unit);
         gl.bind_texture(gl::TEXTURE_2D, Some(t));
-        gl.tex_image_2d(gl::TEXTURE_2D, 0, gl::RGBA8 as i32, 1, 1, 0, gl::RGBA, gl::UNSIGNED_BYTE, Some(&texel));
+        gl.tex_image_2d(
+            gl::TEXTURE_2D,
+            0,
+            gl::RGBA8 as i32,
+            1,
+            1,
+            0,
+            gl::RGBA,
+            gl::UNSIGNED_BYTE,
+            Some(&texel),
+        );
         gl.tex_parameteri(gl::TEXTURE_2D, gl::TEXTURE_MIN_FILTER, gl::NEAREST as i32);
     }
     let green = [0, 255, 0, 255];
@@ -81,10 +100,13 @@ fn every_kind_of_uniform_arrives() {
     assert_eq!(draw(gl, &program, &expected()), green);
 
     // Each change below reaches the shader (the test can fail), and the next upload repairs it.
-    let changes: [(&str, fn(&mut every_uniform::Uniforms)); 12] = [
+    type Change = (&'static str, fn(&mut every_uniform::Uniforms));
+    let changes: [Change; 12] = [
         ("struct member", |u| u.u_light.cutoff = 0.25),
         ("bool in an array of structs", |u| u.u_lights[1].on = true),
-        ("nested struct array", |u| u.u_rig.lights[1].position[2] = 0.0),
+        ("nested struct array", |u| {
+            u.u_rig.lights[1].position[2] = 0.0
+        }),
         ("non-square matrix in a struct", |u| u.u_rig.warp[5] = 0.0),
         ("ivec2 in a struct", |u| u.u_rig.cells[0] = 3),
         ("bvec3", |u| u.u_flags[1] = true),

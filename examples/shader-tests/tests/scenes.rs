@@ -18,8 +18,13 @@ mod typed {
     }
 
     fn values(scene: &Scene, name: &str, ty: UniformType) -> Vec<f32> {
-        let uniform = scene.uniform(name).unwrap_or_else(|| panic!("the scene sets no {name}"));
-        match uniform.upload(ty, 1).unwrap_or_else(|e| panic!("{name}: {e}")) {
+        let uniform = scene
+            .uniform(name)
+            .unwrap_or_else(|| panic!("the scene sets no {name}"));
+        match uniform
+            .upload(ty, 1)
+            .unwrap_or_else(|e| panic!("{name}: {e}"))
+        {
             UploadValues::F32(v) => v,
             other => panic!("{name}: {other:?}"),
         }
@@ -49,7 +54,10 @@ mod typed {
 
     /// The texture unit of a sampler of the scene.
     fn unit(scene: &Scene, name: &str) -> i32 {
-        scene.texture(name).map(|t| t.unit as i32).expect("the scene's texture")
+        scene
+            .texture(name)
+            .map(|t| t.unit as i32)
+            .expect("the scene's texture")
     }
 
     /// Draws `scene` with its uniforms set by `upload` (through typed bindings) and compares
@@ -59,7 +67,9 @@ mod typed {
         upload: impl FnOnce(&mut essl_gl::Context, essl_gl::Program, &Scene),
         attributes: &[(&str, u32)],
     ) {
-        let Some(dir) = essl_testdata::scenes() else { return };
+        let Some(dir) = essl_testdata::scenes() else {
+            return;
+        };
         let scene = Scene::load(dir.join(format!("{name}.json"))).unwrap();
         if std::env::var_os("XDG_RUNTIME_DIR").is_none() {
             std::env::set_var("XDG_RUNTIME_DIR", std::env::temp_dir());
@@ -84,7 +94,10 @@ mod typed {
         renderer.frame();
         let unset = renderer.read_image().unwrap();
         let diff = essl_scene::compare(&unset, &reference, 0).unwrap();
-        assert!(!diff.all_within(), "{name}: the scene draws the same without uniforms");
+        assert!(
+            !diff.all_within(),
+            "{name}: the scene draws the same without uniforms"
+        );
         upload(renderer.context(), program, &scene);
         renderer.frame();
         let typed = renderer.read_image().unwrap();
@@ -134,7 +147,11 @@ mod typed {
             };
             p::Program::from_linked(gl, program).upload(gl, &u);
         };
-        same_as_render("phong-positional", upload, scenes::phong_positional::ATTRIBUTES);
+        same_as_render(
+            "phong-positional",
+            upload,
+            scenes::phong_positional::ATTRIBUTES,
+        );
     }
 
     /// The uniforms of `spot.vert` and the lighting every spot fragment shader shares.
@@ -201,5 +218,8 @@ mod typed {
 #[cfg(not(essl_scenes))]
 #[test]
 fn scenes_are_absent() {
-    assert!(essl_testdata::scenes().is_none(), "the scenes appeared after the build: rebuild");
+    assert!(
+        essl_testdata::scenes().is_none(),
+        "the scenes appeared after the build: rebuild"
+    );
 }
