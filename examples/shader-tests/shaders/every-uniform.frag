@@ -29,6 +29,15 @@ uniform vec4 u_colors[2];
 uniform float type;
 uniform sampler2D u_textures[2];
 
+// A block with an instance name, holding a struct, an array, a matrix and a bvec.
+layout(std140) uniform Material {
+  Light key;
+  vec2 uvs[3];
+  mat3 basis;
+  bvec2 bits;
+  uint tag;
+} material;
+
 out vec4 color;
 
 bool same(vec3 a, vec3 b) { return all(equal(a, b)); }
@@ -49,6 +58,11 @@ void main() {
   ok = ok && u_turns[1][0] == vec2(0.0, 1.0) && u_turns[1][1] == vec2(-1.0, 0.0) && u_turns[0][0].x == 2.0;
   ok = ok && u_frame[3] == vec3(10.0, 11.0, 12.0) && u_frame[0] == vec3(1.0, 2.0, 3.0);
   ok = ok && u_colors[1] == vec4(0.25, 0.5, 0.75, 1.0) && type == -2.5;
+  ok = ok && same(material.key.position, vec3(-1.0, -2.0, -3.0)) && material.key.cutoff == 0.75
+       && material.key.on;
+  ok = ok && material.uvs[0] == vec2(0.5, 1.5) && material.uvs[2] == vec2(4.5, 5.5);
+  ok = ok && material.basis[1] == vec3(4.0, 5.0, 6.0) && material.basis[2][2] == 9.0;
+  ok = ok && material.bits == bvec2(false, true) && material.tag == 77u;
   vec4 a = texture(u_textures[0], vec2(0.5));
   vec4 b = texture(u_textures[1], vec2(0.5));
   ok = ok && a.r > 0.9 && b.g > 0.9;

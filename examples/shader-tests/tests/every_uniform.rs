@@ -5,7 +5,7 @@
 //! `Program::upload`, and red when any one differs.
 
 use essl_gl::{gl, Context};
-use shader_tests::shaders::every_uniform::{self, types};
+use shader_tests::shaders::every_uniform::{self, blocks, types};
 
 fn context() -> Option<Context> {
     if std::env::var_os("XDG_RUNTIME_DIR").is_none() {
@@ -57,6 +57,50 @@ fn expected() -> every_uniform::Uniforms {
     }
 }
 
+/// The blocks' values the shaders expect.
+fn camera() -> blocks::Camera {
+    let mut view = [0.0; 16];
+    view[0] = 1.0;
+    view[5] = 1.0;
+    view[10] = 1.0;
+    view[15] = 1.0;
+    blocks::Camera {
+        u_view: view,
+        u_eye: [0.0, 0.0, 1.0],
+        u_scale: 1.0,
+    }
+}
+
+fn material() -> blocks::Material {
+    blocks::Material {
+        key: light([-1.0, -2.0, -3.0], 0.75, true),
+        uvs: [[0.5, 1.5], [2.5, 3.5], [4.5, 5.5]],
+        basis: [1.0, 2.0, 3.0, 4.0, 5.0, 6.0, 7.0, 8.0, 9.0],
+        bits: [false, true],
+        tag: 77,
+    }
+}
+
+/// Uploads the blocks' bytes to buffers bound at binding points 3 (Camera) and 5 (Material).
+fn bind_blocks(
+    gl: &mut Context,
+    program: &every_uniform::Program,
+    c: &blocks::Camera,
+    m: &blocks::Material,
+) {
+    for (name, binding, bytes) in [
+        (blocks::Camera::NAME, 3, c.to_std140()),
+        (blocks::Material::NAME, 5, m.to_std140()),
+    ] {
+        let buffer = gl.create_buffer();
+        gl.bind_buffer(gl::UNIFORM_BUFFER, Some(buffer));
+        gl.buffer_data(gl::UNIFORM_BUFFER, &bytes, gl::STATIC_DRAW);
+        gl.bind_buffer_base(gl::UNIFORM_BUFFER, binding, Some(buffer));
+        let index = gl.get_uniform_block_index(program.program, name);
+        gl.uniform_block_binding(program.program, index, binding);
+    }
+}
+
 /// Draws with `uniforms` and returns the centre pixel.
 fn draw(
     gl: &mut Context,
@@ -95,6 +139,8 @@ fn every_kind_of_uniform_arrives() {
         );
         gl.tex_parameteri(gl::TEXTURE_2D, gl::TEXTURE_MIN_FILTER, gl::NEAREST as i32);
     }
+    assert_eq!(every_uniform::UNIFORM_BLOCKS, ["Camera", "Material"]);
+    bind_blocks(gl, &program, &camera(), &material());
     let green = [0, 255, 0, 255];
     let red = [255, 0, 0, 255];
     assert_eq!(draw(gl, &program, &expected()), green);
@@ -123,6 +169,32 @@ fn every_kind_of_uniform_arrives() {
         assert_eq!(draw(gl, &program, &u), red, "{what}");
         assert_eq!(draw(gl, &program, &expected()), green, "after {what}");
     }
+    // The blocks' bytes: each change below reaches the shader, through std140 offsets.
+    type BlockChange = (&'static str, fn(&mut blocks::Material));
+    let block_changes: [BlockChange; 5] = [
+        ("struct member in a block", |m| m.key.cutoff = 0.5),
+        ("array element in a block", |m| m.uvs[2][1] = 0.0),
+        ("mat3 column in a block", |m| m.basis[4] = 0.0),
+        ("bvec2 in a block", |m| m.bits = [true, true]),
+        ("uint after a bvec2", |m| m.tag = 78),
+    ];
+    for (what, change) in block_changes {
+        let mut m = material();
+        change(&mut m);
+        bind_blocks(gl, &program, &camera(), &m);
+        assert_eq!(draw(gl, &program, &expected()), red, "{what}");
+    }
+    let mut c = camera();
+    c.u_eye[2] = 5.0; // z = 4 > w: clipped
+    bind_blocks(gl, &program, &c, &material());
+    assert_eq!(
+        draw(gl, &program, &expected()),
+        [0, 0, 0, 0],
+        "the vertex stage's block"
+    );
+    bind_blocks(gl, &program, &camera(), &material());
+    assert_eq!(draw(gl, &program, &expected()), green);
+
     // The vertex-only uniform moves the triangle off the sampled pixel.
     let mut u = expected();
     u.u_offset = [-10.0, 0.0];
@@ -137,4 +209,12 @@ fn zero_is_what_a_fresh_program_holds() {
     assert_eq!(every_uniform::ATTRIBUTES, &[] as &[(&str, u32)]);
     assert_eq!(every_uniform::UNIFORM_NAMES.len(), 30);
     assert_eq!(every_uniform::UNIFORM_NAMES[20], "u_rig.warp");
+    assert_eq!(blocks::Camera::SIZE, 80);
+    assert_eq!(blocks::Material::SIZE, 144);
+    // std140: `uvs[1]` at 32 + 16, `basis` column 1 at 80 + 16, `tag` at 136.
+    let bytes = material().to_std140();
+    let f32_at = |o: usize| f32::from_ne_bytes(bytes[o..o + 4].try_into().unwrap());
+    assert_eq!((f32_at(48), f32_at(52)), (2.5, 3.5));
+    assert_eq!((f32_at(96), f32_at(104)), (4.0, 6.0));
+    assert_eq!(u32::from_ne_bytes(bytes[136..140].try_into().unwrap()), 77);
 }

@@ -28,6 +28,12 @@ impl ::core::fmt::Display for ProgramError {
 
 impl ::std::error::Error for ProgramError {}
 
+/// Writes one 4-byte value at `offset` of a std140 buffer.
+#[allow(dead_code)]
+fn put_std140(out: &mut [u8], offset: usize, bytes: [u8; 4]) {
+    out[offset..offset + 4].copy_from_slice(&bytes);
+}
+
 /// Compiles `vertex` and `fragment`, binds each attribute to its location, links, and returns
 /// the linked program (not yet in use).
 pub fn create_program(
