@@ -29,6 +29,7 @@ use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
 
 use crate::link::{self, Program};
+use crate::reflect::UniformSource;
 use crate::render;
 use crate::source::SourceFile;
 use crate::{compile, CompileOptions, Shader, Stage};
@@ -185,7 +186,19 @@ pub fn link_text(vs: &Shader, fs: &Shader, program: &Program) -> String {
             } else {
                 String::new()
             };
-            (format!("{}{size}", u.name), u.ty.name().to_string())
+            let block = [(&u.vertex, vs), (&u.fragment, fs)]
+                .into_iter()
+                .find_map(|(source, shader)| match source {
+                    Some(UniformSource::Block { block, .. }) => {
+                        Some(format!(" (block {})", shader.module.blocks[*block].name))
+                    }
+                    _ => None,
+                })
+                .unwrap_or_default();
+            (
+                format!("{}{size}", u.name),
+                format!("{}{block}", u.ty.name()),
+            )
         })
         .collect();
     table(&mut out, &uniforms);
