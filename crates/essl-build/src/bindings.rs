@@ -293,6 +293,11 @@ const RUST_KEYWORDS: &[&str] = &[
     "typeof", "union", "unsafe", "unsized", "use", "virtual", "where", "while", "yield",
 ];
 
+/// Whether Rust reserves `name` (a module or field of that name needs another spelling).
+pub(crate) fn is_keyword(name: &str) -> bool {
+    RUST_KEYWORDS.contains(&name)
+}
+
 /// A GLSL name as a Rust field or constant name.
 fn field_ident(name: &str) -> String {
     match name {

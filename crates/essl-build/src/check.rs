@@ -76,7 +76,8 @@ fn s(n: usize) -> &'static str {
 #[derive(Debug)]
 pub struct LinkedProgram {
     /// A Rust module name for it: its path under the checked folder, without extensions, in
-    /// snake case (`lights/spot.vert` → `lights_spot`).
+    /// snake case (`lights/spot.vert` → `lights_spot`, `3d.vert` → `program_3d`, `match.vert` →
+    /// `match_`).
     pub name: String,
     /// The vertex shader's path.
     pub vertex_path: PathBuf,
@@ -365,6 +366,8 @@ pub fn module_name(root: &Path, path: &Path) -> String {
     let name = name.trim_end_matches('_').to_string();
     if name.is_empty() || name.starts_with(|c: char| c.is_ascii_digit()) {
         format!("program_{name}")
+    } else if crate::bindings::is_keyword(&name) {
+        format!("{name}_")
     } else {
         name
     }

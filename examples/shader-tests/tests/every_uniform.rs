@@ -218,3 +218,28 @@ fn zero_is_what_a_fresh_program_holds() {
     assert_eq!((f32_at(96), f32_at(104)), (4.0, 6.0));
     assert_eq!(u32::from_ne_bytes(bytes[136..140].try_into().unwrap()), 77);
 }
+
+/// `shaders/match.*` uses names that Rust reserves or that the bindings use themselves; its
+/// module compiles (this file would not otherwise) and works on a context.
+#[test]
+fn odd_names_link_and_upload() {
+    use shader_tests::shaders::match_;
+    let Some(mut ctx) = context() else { return };
+    let gl = &mut ctx;
+    let program = match_::Program::new(gl).unwrap_or_else(|e| panic!("{e}"));
+    let mut u = match_::Uniforms::ZERO;
+    u.self_.r#impl = 2.0;
+    u.self_.Self_ = 3;
+    u.u_anonymous.r#mod = 1.0;
+    u.u_anonymous.ZERO = true;
+    u.u_fragmentLight.r#loop = 0.5;
+    u.gl = 1.0;
+    program.upload(gl, &u);
+    assert_eq!(gl.get_error(), gl::NO_ERROR, "{:?}", gl.error_message());
+    assert_eq!(match_::attributes::r#type, 0);
+    assert_eq!(
+        gl.get_attrib_location(program.program, "a_uv"),
+        match_::attributes::a_uv as i32
+    );
+    assert_eq!(match_::UNIFORM_NAMES[0], "self.impl");
+}
