@@ -17,8 +17,6 @@ const KNOWN_DIFFERENCES: &[&str] = &[
     "global-int-division-by-zero.vert",
     "infinite-loop-while-true.frag",
     "int-division-by-zero-in-expression.frag",
-    "struct-with-array-assign-from-uniform.frag",
-    "struct-with-array-equality.vert",
     "switch-last-case-if-false.frag",
     "unary-plus-inout-argument.frag",
     "unpackhalf2x16.vert",

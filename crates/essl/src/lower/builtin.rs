@@ -124,20 +124,38 @@ impl FnCx<'_, '_> {
                 let e1 = self.widen(vals[1], &args[1].ty, &args[2].ty, span);
                 self.math(Mf::SmoothStep, &[e0, e1, vals[2]], span)
             }
-            IsNan => self.add(
-                Expression::Relational {
-                    fun: naga::RelationalFunction::IsNan,
-                    argument: vals[0],
-                },
-                span,
-            ),
-            IsInf => self.add(
-                Expression::Relational {
-                    fun: naga::RelationalFunction::IsInf,
-                    argument: vals[0],
-                },
-                span,
-            ),
+            IsNan | IsInf => {
+                // By the bits (exponent all ones; a mantissa for NaN, none for infinity), which
+                // every target can say: WGSL has no isnan or isinf.
+                let n = match &args[0].ty {
+                    Type::Vector(_, n) => Some(*n),
+                    _ => None,
+                };
+                let bits = self.add(
+                    Expression::As {
+                        expr: vals[0],
+                        kind: naga::ScalarKind::Uint,
+                        convert: None,
+                    },
+                    span,
+                );
+                let constant = |fx: &mut Self, v: u32| {
+                    let l = fx.lit(Literal::U32(v));
+                    match n {
+                        Some(n) => fx.splat(l, n, span),
+                        None => l,
+                    }
+                };
+                let mask = constant(self, 0x7fff_ffff);
+                let magnitude = self.binop(naga::BinaryOperator::And, bits, mask, span);
+                let infinity = constant(self, 0x7f80_0000);
+                let compare = if op == IsNan {
+                    naga::BinaryOperator::Greater
+                } else {
+                    naga::BinaryOperator::Equal
+                };
+                self.binop(compare, magnitude, infinity, span)
+            }
             FloatBitsToInt => self.add(
                 Expression::As {
                     expr: vals[0],
@@ -323,6 +341,8 @@ impl FnCx<'_, '_> {
                         },
                         span,
                     );
+                    // Named so that a translation can point at it (essl-translate's comments).
+                    self.f.named_expressions.insert(d, "dFdy_y_up".into());
                 }
                 d
             }

@@ -730,6 +730,11 @@ impl<'c, 'a> FnCx<'c, 'a> {
                         )
                     }
                 };
+                // A padded element: its value is the struct's only member.
+                let (ptr, repr) = match repr {
+                    Repr::Padded(inner) => (self.access_index(ptr, 0, span), *inner),
+                    r => (ptr, r),
+                };
                 Place {
                     ptr,
                     repr,
@@ -789,9 +794,16 @@ impl<'c, 'a> FnCx<'c, 'a> {
             }
             Repr::Columns { cols, .. } => {
                 let comps = (0..*cols as u32)
-                    .map(|i| self.access_index(v, i, span))
+                    .map(|i| {
+                        let padded = self.access_index(v, i, span);
+                        self.access_index(padded, 0, span)
+                    })
                     .collect();
                 self.compose(ty, comps, span)
+            }
+            Repr::Padded(inner) => {
+                let x = self.access_index(v, 0, span);
+                self.convert(x, inner, ty, span)
             }
             Repr::Array(el) => {
                 let Type::Array(elty, n) = ty else { return v };
@@ -2138,6 +2150,9 @@ pub(crate) fn entry_point(
                     let w = fx.access_index(value, 3, sp);
                     let fy = fx.binop(naga::BinaryOperator::Subtract, h, y, sp);
                     value = fx.compose(&Type::Vector(ScalarKind::Float, 4), vec![x, fy, z, w], sp);
+                    // Named so that a translation can point at it (essl-translate's comments).
+                    fx.f.named_expressions
+                        .insert(value, "frag_coord_y_up".into());
                 }
             }
             _ => {}
@@ -2189,6 +2204,9 @@ pub(crate) fn entry_point(
             let half = fx.lit(Literal::F32(0.5));
             let nz = fx.binop(naga::BinaryOperator::Multiply, zw, half, sp);
             pos = fx.compose(&Type::Vector(ScalarKind::Float, 4), vec![x, y, nz, w], sp);
+            // Named so that a translation can point at it (essl-translate's comments).
+            fx.f.named_expressions
+                .insert(pos, "clip_position_depth_0_to_w".into());
         }
         let invariant = hir.invariant_all;
         let vec4 = fx.ty(&Type::Vector(ScalarKind::Float, 4));

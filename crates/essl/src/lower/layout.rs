@@ -90,6 +90,11 @@ pub enum Repr {
     },
     /// An array whose elements are stored differently.
     Array(Box<Repr>),
+    /// An array element stored as the only member (`value`, offset 0) of a 16-byte struct:
+    /// std140 puts array elements 16 bytes apart, and a scalar or two-component vector has a
+    /// smaller natural stride in WGSL, which has no stride attribute to say otherwise. naga's
+    /// IR could say it with the array's stride, but its WGSL writer cannot write that.
+    Padded(Box<Repr>),
     /// A struct: for each GLSL member, its index in the stored struct and its repr (`None`
     /// for a sampler member, which is not stored).
     Struct(Vec<Option<(u32, Repr)>>),
@@ -106,6 +111,7 @@ impl Repr {
         match self {
             Repr::Array(el) => (**el).clone(),
             Repr::Bool(Some(_)) => Repr::Bool(None),
+            Repr::Columns { .. } => Repr::Padded(Box::new(Repr::Same)),
             _ => Repr::Same,
         }
     }
@@ -241,6 +247,7 @@ impl<'a> Types<'a> {
                     },
                     Default::default(),
                 );
+                let col = self.padded(m, col);
                 let h = m.types.insert(
                     naga::Type {
                         name: None,
@@ -263,8 +270,13 @@ impl<'a> Types<'a> {
                 )
             }
             Type::Array(el, n) => {
-                let (base, repr) = self.storage(m, el);
+                let (mut base, mut repr) = self.storage(m, el);
                 let (size, _) = std140(el, self.structs);
+                let natural = m.types[base].inner.size(m.to_ctx());
+                if round_up(natural, naga_align(m, base)) < round_up(size, 16) {
+                    base = self.padded(m, base);
+                    repr = Repr::Padded(Box::new(repr));
+                }
                 let h = m.types.insert(
                     naga::Type {
                         name: None,
@@ -332,6 +344,32 @@ impl<'a> Types<'a> {
         }
     }
 
+    /// The 16-byte struct that holds one array element of type `base` ([`Repr::Padded`]).
+    fn padded(&mut self, m: &mut naga::Module, base: Handle<naga::Type>) -> Handle<naga::Type> {
+        let name = match &m.types[base].inner {
+            TypeInner::Scalar(s) => format!("std140_{}", scalar_name(*s)),
+            TypeInner::Vector { size, scalar } => {
+                format!("std140_vec{}{}", *size as u8, scalar_name(*scalar))
+            }
+            _ => "std140_element".to_owned(),
+        };
+        m.types.insert(
+            naga::Type {
+                name: Some(name),
+                inner: TypeInner::Struct {
+                    members: vec![StructMember {
+                        name: Some("value".into()),
+                        ty: base,
+                        binding: None,
+                        offset: 0,
+                    }],
+                    span: 16,
+                },
+            },
+            Default::default(),
+        )
+    }
+
     fn scalar_ty(&mut self, m: &mut naga::Module, s: NScalar) -> Handle<naga::Type> {
         m.types.insert(
             naga::Type {
@@ -340,6 +378,16 @@ impl<'a> Types<'a> {
             },
             Default::default(),
         )
+    }
+}
+
+/// `f32`, `i32`, `u32`: a scalar's name in a padded element's struct name.
+fn scalar_name(s: NScalar) -> &'static str {
+    match s.kind {
+        naga::ScalarKind::Sint => "i32",
+        naga::ScalarKind::Uint => "u32",
+        naga::ScalarKind::Bool => "bool",
+        _ => "f32",
     }
 }
 
