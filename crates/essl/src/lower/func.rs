@@ -521,8 +521,25 @@ impl<'c, 'a> FnCx<'c, 'a> {
                 let unsigned = sel.ty == Type::UINT;
                 let mut ncases = Vec::new();
                 let mut has_default = false;
-                for c in cases {
-                    let body = self.block_of(&c.body)?;
+                for (i, c) in cases.iter().enumerate() {
+                    // A case with statements that falls through gets the statements of the
+                    // cases it falls into, up to one that does not fall through: WGSL has no
+                    // fall-through (an empty case that falls through shares the next one's
+                    // body in every target). Each copy is lowered anew, with its own
+                    // expressions.
+                    let copies = c.fall_through && !c.body.is_empty();
+                    let body = if copies {
+                        let mut stmts = c.body.clone();
+                        for next in &cases[i + 1..] {
+                            stmts.extend(next.body.iter().cloned());
+                            if !next.fall_through {
+                                break;
+                            }
+                        }
+                        self.block_of(&stmts)?
+                    } else {
+                        self.block_of(&c.body)?
+                    };
                     let value = match c.value {
                         None => {
                             has_default = true;
@@ -534,7 +551,7 @@ impl<'c, 'a> FnCx<'c, 'a> {
                     ncases.push(naga::SwitchCase {
                         value,
                         body,
-                        fall_through: c.fall_through,
+                        fall_through: c.fall_through && !copies,
                     });
                 }
                 if let Some(last) = ncases.last_mut() {
