@@ -99,7 +99,14 @@ pub struct Context {
     pub(crate) readback: Option<wgpu::Buffer>,
     /// The uniform-value checks ([`Context::set_validation`]) and their warnings.
     pub(crate) validation: crate::validation::Validation,
+    /// What every program `link_program` lowers goes through ([`Context::set_program_filter`]).
+    pub(crate) program_filter: Option<ProgramFilter>,
 }
+
+/// A step between lowering and installing a program: see [`Context::set_program_filter`].
+pub type ProgramFilter = Box<
+    dyn FnMut(essl::program::ProgramLayout) -> Result<essl::program::ProgramLayout, String> + Send,
+>;
 
 impl Context {
     /// Creates a context with an offscreen default framebuffer of `width` × `height` pixels:
@@ -195,6 +202,7 @@ impl Context {
             link_serial: 0,
             readback: None,
             validation: Default::default(),
+            program_filter: None,
             gpu,
         })
     }

@@ -80,7 +80,9 @@ mod validation;
 mod vertex_array;
 
 pub use bytemuck;
-pub use context::{Context, COLOR_FORMAT, DEPTH_FORMAT, MAX_TEXTURE_UNITS, MAX_VERTEX_ATTRIBS};
+pub use context::{
+    Context, ProgramFilter, COLOR_FORMAT, DEPTH_FORMAT, MAX_TEXTURE_UNITS, MAX_VERTEX_ATTRIBS,
+};
 pub use error::{error_name, ContextError};
 pub use objects::{Buffer, Program, Shader, Texture, UniformLocation, VertexArray};
 pub use query::{Parameter, SHADING_LANGUAGE_VERSION, SUBPIXEL_BITS, VENDOR, VERSION};

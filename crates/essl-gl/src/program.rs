@@ -556,6 +556,12 @@ impl Context {
                             &essl::program::LowerOptions::default(),
                         )
                         .map_err(|e| e.to_string())
+                        .and_then(|layout| {
+                            match &mut self.program_filter {
+                                Some(filter) => filter(layout),
+                                None => Ok(layout),
+                            }
+                        })
                     } else {
                         Err(linked.log)
                     }
@@ -577,6 +583,15 @@ impl Context {
                 obj.info_log = log;
             }
         }
+    }
+
+    /// Puts a step between lowering and installing every program [`Context::link_program`]
+    /// links from now on (`None` removes it): the step may change the lowered modules (the
+    /// translation tests write them as WGSL text and read them back) as long as they keep the
+    /// conventions of [`essl::program`]; an `Err` fails the link with that message in the info
+    /// log. Programs installed with [`Context::link_program_from_layout`] do not go through it.
+    pub fn set_program_filter(&mut self, filter: Option<crate::context::ProgramFilter>) {
+        self.program_filter = filter;
     }
 
     /// Creates a program and links it from a layout the front end produced: see
