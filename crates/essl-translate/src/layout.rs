@@ -1,0 +1,110 @@
+//! std140 offsets in WGSL text.
+//!
+//! essl lays out uniform buffers as std140 and says so in naga IR with explicit member offsets
+//! and struct sizes. WGSL has no offsets: it computes them from the member types, and naga's
+//! WGSL writer (30.0) writes none of the IR's, so a struct whose std140 layout differs from
+//! WGSL's own would come out with other offsets than the binding map's — or be rejected in
+//! the uniform address space. This pass puts `@size(N)` on each member of a struct used in a
+//! uniform buffer where the next member (or the struct's end) would otherwise land elsewhere
+//! than the IR says; WGSL then computes exactly the IR's offsets. (Array strides already agree:
+//! essl pads array elements smaller than 16 bytes into 16-byte structs.)
+
+use std::collections::HashSet;
+
+use naga::proc::{Layouter, NameKey, Namer};
+use naga::{Handle, Module, TypeInner};
+
+/// The WGSL text with `@size` attributes where the IR's struct layout needs them.
+pub fn sized_members(module: &Module, wgsl: &str) -> String {
+    let mut layouter = Layouter::default();
+    if layouter.update(module.to_ctx()).is_err() {
+        return wgsl.to_owned();
+    }
+    let mut names = naga::FastHashMap::default();
+    Namer::default().reset(
+        module,
+        &naga::keywords::wgsl::RESERVED_SET,
+        &naga::keywords::wgsl::BUILTIN_IDENTIFIER_SET,
+        naga::proc::CaseInsensitiveKeywordSet::empty(),
+        &["__", "_naga"],
+        &mut names,
+    );
+    // The structs reachable from uniform buffers.
+    let mut structs = HashSet::new();
+    for (_, g) in module.global_variables.iter() {
+        if g.space == naga::AddressSpace::Uniform {
+            reach(module, g.ty, &mut structs);
+        }
+    }
+    let mut text = wgsl.to_owned();
+    let mut handles: Vec<_> = structs.into_iter().collect();
+    handles.sort();
+    for h in handles {
+        let TypeInner::Struct { members, span } = &module.types[h].inner else {
+            continue;
+        };
+        let mut sizes = Vec::new();
+        for (i, m) in members.iter().enumerate() {
+            let size = layouter[m.ty].size;
+            let end = m.offset + size;
+            let (next, next_align) = match members.get(i + 1) {
+                Some(n) => (n.offset, layouter[n.ty].alignment),
+                None => (*span, layouter[h].alignment),
+            };
+            if next_align.round_up(end) != next {
+                sizes.push((i, next - m.offset));
+            }
+        }
+        // WGSL's first member is at 0: bytes before the IR's first member (those of the other
+        // stage's uniforms, in a program's shared buffer) become a member of their own.
+        let lead = members.first().map_or(0, |m| m.offset);
+        if sizes.is_empty() && lead == 0 {
+            continue;
+        }
+        let Some(name) = names.get(&NameKey::Type(h)) else {
+            continue;
+        };
+        let header = format!("struct {name} {{\n");
+        let Some(start) = text.find(&header) else {
+            continue;
+        };
+        let body_start = start + header.len();
+        let Some(body_len) = text[body_start..].find("\n}") else {
+            continue;
+        };
+        let mut body: Vec<String> = text[body_start..body_start + body_len]
+            .split('\n')
+            .map(str::to_owned)
+            .collect();
+        for (i, size) in sizes {
+            let member = &names[&NameKey::StructMember(h, i as u32)];
+            if let Some(line) = body
+                .iter_mut()
+                .find(|l| l.trim_start().starts_with(&format!("{member}: ")))
+            {
+                let indent = line.len() - line.trim_start().len();
+                line.insert_str(indent, &format!("@size({size}) "));
+            }
+        }
+        if lead > 0 {
+            body.insert(0, format!("    @size({lead}) _essl_padding: u32,"));
+        }
+        text.replace_range(body_start..body_start + body_len, &body.join("\n"));
+    }
+    text
+}
+
+/// Adds the structs inside `ty` to `out`.
+fn reach(module: &Module, ty: Handle<naga::Type>, out: &mut HashSet<Handle<naga::Type>>) {
+    match &module.types[ty].inner {
+        TypeInner::Struct { members, .. } if out.insert(ty) => {
+            for m in members {
+                reach(module, m.ty, out);
+            }
+        }
+        TypeInner::Array { base, .. } | TypeInner::BindingArray { base, .. } => {
+            reach(module, *base, out)
+        }
+        _ => {}
+    }
+}

@@ -1,0 +1,71 @@
+//! The WGSL of the seeds' corrected programs (`shaders-glsl/`), as `essl translate` writes it,
+//! with the binding map: snapshots a person reviews for readability (GLSL names kept, the
+//! comments where the lowering added something) and that change only on purpose.
+
+use std::path::Path;
+
+use essl::source::SourceFile;
+use essl::{CompileOptions, Stage};
+use essl_translate::{Options, Target};
+
+fn shader(path: &Path, stage: Stage) -> essl::Shader {
+    let text = std::fs::read_to_string(path).expect("the seed reads");
+    let name = path.file_name().expect("a file").to_string_lossy();
+    essl::compile(
+        SourceFile::new(name, text),
+        stage,
+        &CompileOptions::default(),
+    )
+}
+
+fn translate(name: &str, options: &Options) -> String {
+    let dir = essl_testdata::repo_root().join("shaders-glsl");
+    let vs = shader(&dir.join(format!("{name}.vert")), Stage::Vertex);
+    let fs = shader(&dir.join(format!("{name}.frag")), Stage::Fragment);
+    let t = essl_translate::translate_program(&vs, &fs, options).expect("the seed translates");
+    for (stage, code) in [(Stage::Vertex, &t.vertex), (Stage::Fragment, &t.fragment)] {
+        if options.target == Target::Wgsl {
+            let text = code.as_text().expect("WGSL is text");
+            essl_translate::roundtrip::read_wgsl(text, stage).expect("the WGSL reads back");
+        }
+    }
+    let text = |c: &essl_translate::Code| c.as_text().unwrap_or("(binary)").to_owned();
+    format!(
+        "// ==== {name}.vert\n{}\n// ==== {name}.frag\n{}\n// ==== {name}.bindings.json\n{}\n",
+        text(&t.vertex),
+        text(&t.fragment),
+        t.bindings.to_json()
+    )
+}
+
+#[test]
+fn seed_programs_in_wgsl() {
+    for name in [
+        "gouraud-lambert.fixed",
+        "phong-positional.fixed",
+        "spot-linear",
+        "spot-projected-texture.fixed",
+        "spot-flashlight-cookie.fixed",
+    ] {
+        insta::assert_snapshot!(name, translate(name, &Options::default()));
+    }
+}
+
+#[test]
+fn without_the_webgl_conventions() {
+    let options = Options {
+        depth_remap: false,
+        flip_y: false,
+        comments: false,
+        ..Options::default()
+    };
+    insta::assert_snapshot!(translate("spot-flashlight-cookie.fixed", &options));
+}
+
+#[test]
+fn desktop_glsl_keeps_opengl_conventions() {
+    let text = translate("phong-positional.fixed", &Options::new(Target::Glsl));
+    assert!(text.contains("#version 450 core"), "{text}");
+    assert!(!text.contains("clip_position_depth_0_to_w"), "{text}");
+    insta::assert_snapshot!(text);
+}
