@@ -5,11 +5,14 @@
 //! - [`lint`]: `essl lint` — check shaders and programs ([`files`] finds them, [`fix`] applies
 //!   certain fixes, [`output`] prints the results as text or JSON Lines).
 //! - [`conformance`]: `essl conformance` — score the front end on the conformance corpora.
+//! - [`deqp_exec`]: `essl deqp-exec` — execute the dEQP value cases through essl-gl.
 //! - [`report`]: `essl report` — the light shaders' error against run time on essl-gl.
+//! - [`translate`]: `essl translate` — shaders to WGSL, SPIR-V, MSL, HLSL or GLSL.
 
 #![warn(missing_docs)]
 
 pub mod conformance;
+pub mod deqp_exec;
 pub mod files;
 pub mod fix;
 pub mod lint;
@@ -17,3 +20,4 @@ pub mod output;
 pub mod render;
 pub mod report;
 pub mod rules;
+pub mod translate;

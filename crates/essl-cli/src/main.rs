@@ -24,6 +24,34 @@ enum Command {
     Lint(LintArgs),
     /// Score the front end on the conformance corpora (WebGL, dEQP, glslang, webgl2fundamentals).
     Conformance(ConformanceArgs),
+    /// Translate shaders to WGSL, SPIR-V, MSL, HLSL or desktop GLSL (NAME.vert + NAME.frag
+    /// pairs linked first), next to each input or into the folder -o names.
+    ///
+    /// Exit status: 0 all translated, 1 some have errors or could not be translated, 2 usage
+    /// or I/O errors.
+    Translate(TranslateArgs),
+    /// Execute the dEQP value cases through essl's WebGL2 API as
+    /// ../shared/tools/deqp-exec-oracle.py does in Chromium, with the same JSON Lines output.
+    ///
+    /// Exit status: 0 all pass, 1 some fail, 2 the corpus cannot be read or no context.
+    DeqpExec {
+        /// The dEQP corpus.
+        #[arg(
+            default_value = "../shared/corpora/deqp_gles3.jsonl",
+            value_name = "CORPUS"
+        )]
+        corpus: PathBuf,
+        /// Only the cases whose name contains this.
+        #[arg(long, value_name = "SUBSTRING")]
+        only: Option<String>,
+        /// Write the JSON lines to this file instead of standard output.
+        #[arg(short = 'o', long = "output", value_name = "FILE")]
+        output: Option<PathBuf>,
+        /// Run each program from its WGSL translation (written, read back by naga's WGSL front
+        /// end) instead of from essl's IR.
+        #[arg(long)]
+        via_wgsl: bool,
+    },
     /// Render a scene (docs/scene-format.md) through essl's WebGL2 API to a PNG, and print
     /// one JSON line as webgl2-render.py does.
     Render {
@@ -55,6 +83,66 @@ enum Command {
         /// A rule id (`pow-negative-base`…).
         rule: Option<String>,
     },
+}
+
+#[derive(Args, Debug)]
+struct TranslateArgs {
+    /// Shader files and folders (searched recursively for .vert/.frag/.vs/.fs/.vsh/.fsh).
+    #[arg(required = true, value_name = "PATH")]
+    paths: Vec<PathBuf>,
+
+    /// The language to write.
+    #[arg(long, value_enum, default_value_t = TargetArg::Wgsl)]
+    to: TargetArg,
+
+    /// Write into this folder instead of next to each input (`-`: standard output).
+    #[arg(short = 'o', long = "output", value_name = "DIR")]
+    output: Option<PathBuf>,
+
+    /// Also write the binding map (uniform offsets, sampler and attribute bindings) as
+    /// NAME.bindings.json.
+    #[arg(long, value_enum, value_name = "FORMAT")]
+    bindings: Option<BindingsArg>,
+
+    /// Leave clip-space z as WebGL's -w..w (on by default except for glsl).
+    #[arg(long)]
+    no_depth_remap: bool,
+
+    /// Leave gl_FragCoord.y counting from the top (on by default except for glsl).
+    #[arg(long)]
+    no_flip_y: bool,
+
+    /// Write no comments.
+    #[arg(long)]
+    no_comments: bool,
+
+    /// The stage of named files whose extension does not tell it.
+    #[arg(long, value_enum, value_name = "STAGE")]
+    stage: Option<StageArg>,
+
+    /// Do not link NAME.vert + NAME.frag pairs: translate each shader on its own.
+    #[arg(long)]
+    no_link: bool,
+}
+
+#[derive(Clone, Copy, Debug, ValueEnum)]
+enum TargetArg {
+    /// WGSL (WebGPU, wgpu).
+    Wgsl,
+    /// SPIR-V 1.0 for Vulkan.
+    Spirv,
+    /// Metal Shading Language 2.1 (for `invariant`).
+    Msl,
+    /// HLSL shader model 5.1.
+    Hlsl,
+    /// Desktop GLSL 4.50 core.
+    Glsl,
+}
+
+#[derive(Clone, Copy, Debug, ValueEnum)]
+enum BindingsArg {
+    /// JSON.
+    Json,
 }
 
 #[derive(Args, Debug)]
@@ -245,6 +333,36 @@ fn main() -> ExitCode {
             rules,
         }),
         Command::Report { out, quick, scenes } => essl_cli::report::run(&out, quick, &scenes),
+        Command::DeqpExec {
+            corpus,
+            only,
+            output,
+            via_wgsl,
+        } => essl_cli::deqp_exec::run(&corpus, only.as_deref(), output.as_deref(), via_wgsl),
+        Command::Translate(args) => {
+            let target = match args.to {
+                TargetArg::Wgsl => essl_translate::Target::Wgsl,
+                TargetArg::Spirv => essl_translate::Target::SpirV,
+                TargetArg::Msl => essl_translate::Target::Msl,
+                TargetArg::Hlsl => essl_translate::Target::Hlsl,
+                TargetArg::Glsl => essl_translate::Target::Glsl,
+            };
+            let mut options = essl_translate::Options::new(target);
+            options.depth_remap &= !args.no_depth_remap;
+            options.flip_y &= !args.no_flip_y;
+            options.comments = !args.no_comments;
+            essl_cli::translate::run(&essl_cli::translate::TranslateArgs {
+                paths: args.paths,
+                stage: args.stage.map(|s| match s {
+                    StageArg::Vertex => Stage::Vertex,
+                    StageArg::Fragment => Stage::Fragment,
+                }),
+                options,
+                bindings: args.bindings.is_some(),
+                out: args.output,
+                no_link: args.no_link,
+            })
+        }
         Command::Conformance(args) => {
             essl_cli::conformance::run(&args.corpora, args.markdown.as_deref(), args.failures)
         }
