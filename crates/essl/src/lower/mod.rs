@@ -338,6 +338,63 @@ fn validate(module: &naga::Module, stage: Stage) -> Result<naga::valid::ModuleIn
     })
 }
 
+/// Gives each varying of the vertex stage the sampling of the fragment stage's input at its
+/// location. GLSL ES 3.00 lets `centroid` differ between the stages (the fragment shader's
+/// decides); the GPU APIs want the two ends of a varying to agree.
+fn match_sampling(vertex: &mut naga::Module, fragment: &naga::Module) {
+    let mut sampling = HashMap::new();
+    for ep in &fragment.entry_points {
+        for a in &ep.function.arguments {
+            if let Some(naga::Binding::Location {
+                location,
+                sampling: s,
+                ..
+            }) = &a.binding
+            {
+                sampling.insert(*location, *s);
+            }
+        }
+    }
+    let Some(result) = vertex
+        .entry_points
+        .first()
+        .and_then(|ep| ep.function.result.clone())
+    else {
+        return;
+    };
+    let naga::TypeInner::Struct { members, span } = vertex.types[result.ty].inner.clone() else {
+        return;
+    };
+    let mut changed = false;
+    let members = members
+        .into_iter()
+        .map(|mut m| {
+            if let Some(naga::Binding::Location {
+                location,
+                sampling: s,
+                interpolation,
+                ..
+            }) = &mut m.binding
+            {
+                if let Some(&want) = sampling.get(location) {
+                    if *s != want && interpolation.is_some() {
+                        *s = want;
+                        changed = true;
+                    }
+                }
+            }
+            m
+        })
+        .collect();
+    let new = naga::Type {
+        name: vertex.types[result.ty].name.clone(),
+        inner: naga::TypeInner::Struct { members, span },
+    };
+    if changed && vertex.types.get(&new).is_none() {
+        vertex.types.replace(result.ty, new);
+    }
+}
+
 /// Lowers a linked program for a GPU API: both stages share one default uniform block and one
 /// set of sampler slots; varyings and attributes get the linker's locations.
 pub fn lower_program(
@@ -515,8 +572,9 @@ fn lower_program_here(
             }
         }
     }
-    let vertex = lower_stage(vm, &vplan, &pplan, options)?;
+    let mut vertex = lower_stage(vm, &vplan, &pplan, options)?;
     let fragment = lower_stage(fm, &fplan, &pplan, options)?;
+    match_sampling(&mut vertex, &fragment);
     let vertex_info = validate(&vertex, Stage::Vertex)?;
     let fragment_info = validate(&fragment, Stage::Fragment)?;
     let _ = offsets;
