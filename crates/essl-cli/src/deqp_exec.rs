@@ -141,6 +141,15 @@ impl Runner {
         })
     }
 
+    /// [`Runner::via_wgsl`] if `via_wgsl`, else [`Runner::new`].
+    pub fn with(via_wgsl: bool) -> Result<Runner, essl_gl::ContextError> {
+        if via_wgsl {
+            Runner::via_wgsl()
+        } else {
+            Runner::new()
+        }
+    }
+
     /// A 128×128 context that runs every program from its WGSL translation, read back by
     /// naga's WGSL front end ([`essl_translate::roundtrip::through_wgsl`]).
     pub fn via_wgsl() -> Result<Runner, essl_gl::ContextError> {
@@ -407,12 +416,7 @@ pub fn run(corpus: &Path, only: Option<&str>, out: Option<&Path>, via_wgsl: bool
             return 2;
         }
     };
-    let runner = if via_wgsl {
-        Runner::via_wgsl()
-    } else {
-        Runner::new()
-    };
-    let mut runner = match runner {
+    let mut runner = match Runner::with(via_wgsl) {
         Ok(r) => r,
         Err(e) => {
             eprintln!("error: no WebGL2 context: {e}");

@@ -15,12 +15,7 @@ fn value_cases_pass_from_ir_and_from_wgsl() {
     assert_eq!(cases.len(), 4113, "executed cases");
     let sample: Vec<_> = cases.iter().step_by(20).collect();
     for via_wgsl in [false, true] {
-        let runner = if via_wgsl {
-            Runner::via_wgsl()
-        } else {
-            Runner::new()
-        };
-        let mut runner = match runner {
+        let mut runner = match Runner::with(via_wgsl) {
             Ok(r) => r,
             Err(e) => {
                 essl_testdata::adapter_missing(&e);

@@ -11,7 +11,7 @@
 
 use std::collections::HashSet;
 
-use naga::proc::{Layouter, NameKey, Namer};
+use naga::proc::{Layouter, NameKey};
 use naga::{Handle, Module, TypeInner};
 
 /// The WGSL text with `@size` attributes where the IR's struct layout needs them.
@@ -20,15 +20,7 @@ pub fn sized_members(module: &Module, wgsl: &str) -> String {
     if layouter.update(module.to_ctx()).is_err() {
         return wgsl.to_owned();
     }
-    let mut names = naga::FastHashMap::default();
-    Namer::default().reset(
-        module,
-        &naga::keywords::wgsl::RESERVED_SET,
-        &naga::keywords::wgsl::BUILTIN_IDENTIFIER_SET,
-        naga::proc::CaseInsensitiveKeywordSet::empty(),
-        &["__", "_naga"],
-        &mut names,
-    );
+    let names = crate::names::wgsl_names(module);
     // The structs reachable from uniform buffers.
     let mut structs = HashSet::new();
     for (_, g) in module.global_variables.iter() {

@@ -58,6 +58,21 @@ pub fn prepare(module: &Module) -> Module {
     module
 }
 
+/// The name naga's WGSL writer gives each item of the module: its own namer, reset as the
+/// writer resets it (WGSL's reserved words and built-ins, no `__` or `_naga` prefix).
+pub(crate) fn wgsl_names(module: &Module) -> naga::FastHashMap<NameKey, String> {
+    let mut names = naga::FastHashMap::default();
+    Namer::default().reset(
+        module,
+        &naga::keywords::wgsl::RESERVED_SET,
+        &naga::keywords::wgsl::BUILTIN_IDENTIFIER_SET,
+        naga::proc::CaseInsensitiveKeywordSet::empty(),
+        &["__", "_naga"],
+        &mut names,
+    );
+    names
+}
+
 /// `u_tex[2].s` → `u_tex_2_s`.
 pub(crate) fn identifier(name: &str) -> String {
     let mut out = String::new();
@@ -94,15 +109,7 @@ struct Named {
 
 /// The WGSL text with GLSL names given back where that is safe (see the module doc).
 pub fn restore(module: &Module, wgsl: &str) -> String {
-    let mut names = naga::FastHashMap::default();
-    Namer::default().reset(
-        module,
-        &naga::keywords::wgsl::RESERVED_SET,
-        &naga::keywords::wgsl::BUILTIN_IDENTIFIER_SET,
-        naga::proc::CaseInsensitiveKeywordSet::empty(),
-        &["__", "_naga"],
-        &mut names,
-    );
+    let names = wgsl_names(module);
     // Functions in the order the writer writes them: functions, then entry points.
     let mut function_index: HashMap<Handle<naga::Function>, usize> = HashMap::new();
     for (i, (h, _)) in module.functions.iter().enumerate() {
@@ -195,29 +202,20 @@ fn original_name(
             Scope::Module,
             Some(module.entry_points.get(i as usize)?.name.clone()),
         ),
-        NameKey::EntryPointArgument(i, a) => (
-            Scope::Function(ep_base + i as usize),
-            name(
-                &module
-                    .entry_points
-                    .get(i as usize)?
-                    .function
-                    .arguments
-                    .get(a as usize)?
-                    .name,
-            ),
-        ),
-        NameKey::EntryPointLocal(i, l) => (
-            Scope::Function(ep_base + i as usize),
-            name(
-                &module
-                    .entry_points
-                    .get(i as usize)?
-                    .function
-                    .local_variables[l]
-                    .name,
-            ),
-        ),
+        NameKey::EntryPointArgument(i, a) => {
+            let f = &module.entry_points.get(i as usize)?.function;
+            (
+                Scope::Function(ep_base + i as usize),
+                name(&f.arguments.get(a as usize)?.name),
+            )
+        }
+        NameKey::EntryPointLocal(i, l) => {
+            let f = &module.entry_points.get(i as usize)?.function;
+            (
+                Scope::Function(ep_base + i as usize),
+                name(&f.local_variables[l].name),
+            )
+        }
         _ => return None,
     };
     Some((scope, original?))
