@@ -1307,15 +1307,6 @@ impl<'a> Extractor<'a> {
     }
 
     /// A uniform place of type `ty`: a term for a scalar or vector, the place otherwise.
-    /// Whether `ty` is a padded std140 array element (`std140_f32 { value }`): its one member
-    /// is the element itself, named without a `.value`.
-    fn padded(&self, ty: Handle<naga::Type>) -> bool {
-        let t = &self.module.types[ty];
-        t.name.as_deref().is_some_and(|n| n.starts_with("std140_"))
-            && matches!(&t.inner, TypeInner::Struct { members, span: 16 }
-                if members.len() == 1 && members[0].name.as_deref() == Some("value"))
-    }
-
     fn leaf(&self, r: UniformRef, ty: Handle<naga::Type>) -> Option<X> {
         match self.module.types[ty].inner {
             TypeInner::Scalar(_) | TypeInner::Vector { .. } => Some(X::Num(Term::Uniform(r))),
@@ -1337,7 +1328,7 @@ impl<'a> Extractor<'a> {
                             return None;
                         }
                         r.base = name;
-                    } else if !self.padded(ty) {
+                    } else if !essl::lower::layout::is_padded(self.module, ty) {
                         r.path.push(PathStep::Member(name));
                     }
                     self.leaf(r, m.ty)
@@ -1390,7 +1381,7 @@ impl<'a> Extractor<'a> {
                 (TypeInner::Struct { members, .. }, Step::Index(i)) => {
                     let m = members.get(i as usize)?;
                     let name = m.name.clone()?;
-                    let padded = self.padded(ty);
+                    let padded = essl::lower::layout::is_padded(self.module, ty);
                     if r.base.is_empty() {
                         if name.starts_with("_essl") {
                             return None;

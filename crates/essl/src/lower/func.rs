@@ -2028,9 +2028,10 @@ fn io_leaves(ty: &Type, structs: &[crate::types::StructDef]) -> Vec<(Vec<u32>, T
 /// The name and location binding of leaf `i` (of `count`) of an input or output `g` whose first
 /// location is `location`. `varying` says whether the value travels between the stages (a
 /// vertex output or a fragment input): then it is interpolated — perspective-correct, at the
-/// centroid for `centroid` — unless it is `flat` or not a float.
+/// centroid when `centroid` says so — unless it is `flat` or not a float.
 fn io_binding(
     g: &hir::Global,
+    centroid: bool,
     count: usize,
     i: usize,
     leaf_ty: &Type,
@@ -2044,7 +2045,7 @@ fn io_binding(
         (true, true) => (Some(naga::Interpolation::Flat), None),
         (true, false) => (
             Some(naga::Interpolation::Perspective),
-            Some(if g.centroid {
+            Some(if centroid {
                 naga::Sampling::Centroid
             } else {
                 naga::Sampling::Center
@@ -2104,8 +2105,15 @@ pub(crate) fn entry_point(
         let leaves = io_leaves(&g.ty, &hir.structs);
         for (i, (path, leaf_ty)) in leaves.iter().enumerate() {
             let ty = fx.ty(leaf_ty);
-            let (name, binding) =
-                io_binding(g, leaves.len(), i, leaf_ty, loc, stage == Stage::Fragment);
+            let (name, binding) = io_binding(
+                g,
+                g.centroid,
+                leaves.len(),
+                i,
+                leaf_ty,
+                loc,
+                stage == Stage::Fragment,
+            );
             let arg = fx.f.arguments.len() as u32;
             fx.f.arguments.push(naga::FunctionArgument {
                 name: Some(name),
@@ -2262,8 +2270,16 @@ pub(crate) fn entry_point(
                 p = fx.access_index(p, k, sp);
             }
             let v = fx.add(Expression::Load { pointer: p }, sp);
-            let (name, binding) =
-                io_binding(g, leaves.len(), i, leaf_ty, loc, stage == Stage::Vertex);
+            let centroid = plan.output_centroid.get(&gi).copied().unwrap_or(g.centroid);
+            let (name, binding) = io_binding(
+                g,
+                centroid,
+                leaves.len(),
+                i,
+                leaf_ty,
+                loc,
+                stage == Stage::Vertex,
+            );
             members.push(naga::StructMember {
                 name: Some(name),
                 ty,

@@ -7,6 +7,7 @@
 
 use naga::{Handle, Scalar as NScalar, StructMember, TypeInner, VectorSize};
 
+use crate::reflect::PathStep;
 use crate::types::{ScalarKind, StructDef, Type};
 
 /// naga's scalar for a GLSL scalar kind (in a logical value).
@@ -379,6 +380,59 @@ impl<'a> Types<'a> {
             Default::default(),
         )
     }
+}
+
+/// Offset of a leaf inside a uniform (a uniform leaf's path from its variable, as
+/// [`crate::reflect`] gives it), its array stride and matrix stride (std140).
+pub fn leaf_layout(ty: &Type, path: &[PathStep], structs: &[StructDef]) -> (u32, u32, u32) {
+    let mut t = ty.clone();
+    let mut offset = 0;
+    for step in path {
+        match (step, &t) {
+            (PathStep::Index(i), Type::Array(el, _)) => {
+                let (s, _) = std140(el, structs);
+                offset += s.div_ceil(16) * 16 * i;
+                t = (**el).clone();
+            }
+            (PathStep::Member(i), Type::Struct(id)) => {
+                let mut off: u32 = 0;
+                let members = &structs[id.0 as usize].members;
+                for (j, m) in members.iter().enumerate() {
+                    if !has_data(&m.ty, structs) {
+                        continue;
+                    }
+                    let (s, a) = std140(&m.ty, structs);
+                    off = off.div_ceil(a) * a;
+                    if j == *i as usize {
+                        break;
+                    }
+                    off += s;
+                }
+                offset += off;
+                t = members[*i as usize].ty.clone();
+            }
+            _ => break,
+        }
+    }
+    let (array_stride, el) = match &t {
+        Type::Array(el, _) => (std140(el, structs).0.div_ceil(16) * 16, (**el).clone()),
+        other => (0, other.clone()),
+    };
+    let matrix_stride = if matches!(el, Type::Matrix { .. }) {
+        16
+    } else {
+        0
+    };
+    (offset, array_stride, matrix_stride)
+}
+
+/// Whether `ty` is the 16-byte struct of a padded array element ([`Repr::Padded`]): its one
+/// member, `value`, is the element (passes that name uniforms leave the member out).
+pub fn is_padded(m: &naga::Module, ty: Handle<naga::Type>) -> bool {
+    let t = &m.types[ty];
+    t.name.as_deref().is_some_and(|n| n.starts_with("std140_"))
+        && matches!(&t.inner, TypeInner::Struct { members, span: 16 }
+            if members.len() == 1 && members[0].name.as_deref() == Some("value"))
 }
 
 /// `f32`, `i32`, `u32`: a scalar's name in a padded element's struct name.

@@ -87,6 +87,11 @@ struct StagePlan {
     samplers: Vec<(GlobalId, Vec<PathStep>, u32)>,
     /// Uniform blocks: block index → binding in group 0.
     blocks: Vec<(usize, u32)>,
+    /// Whether each varying output is sampled at the centroid: the fragment shader's
+    /// `centroid` decides for both ends (GLSL ES 3.00 lets the stages differ; the GPU APIs
+    /// want the two ends of a varying to agree). Outputs not listed follow their own
+    /// declaration.
+    output_centroid: HashMap<GlobalId, bool>,
 }
 
 /// The program-wide part of the plan.
@@ -338,63 +343,6 @@ fn validate(module: &naga::Module, stage: Stage) -> Result<naga::valid::ModuleIn
     })
 }
 
-/// Gives each varying of the vertex stage the sampling of the fragment stage's input at its
-/// location. GLSL ES 3.00 lets `centroid` differ between the stages (the fragment shader's
-/// decides); the GPU APIs want the two ends of a varying to agree.
-fn match_sampling(vertex: &mut naga::Module, fragment: &naga::Module) {
-    let mut sampling = HashMap::new();
-    for ep in &fragment.entry_points {
-        for a in &ep.function.arguments {
-            if let Some(naga::Binding::Location {
-                location,
-                sampling: s,
-                ..
-            }) = &a.binding
-            {
-                sampling.insert(*location, *s);
-            }
-        }
-    }
-    let Some(result) = vertex
-        .entry_points
-        .first()
-        .and_then(|ep| ep.function.result.clone())
-    else {
-        return;
-    };
-    let naga::TypeInner::Struct { members, span } = vertex.types[result.ty].inner.clone() else {
-        return;
-    };
-    let mut changed = false;
-    let members = members
-        .into_iter()
-        .map(|mut m| {
-            if let Some(naga::Binding::Location {
-                location,
-                sampling: s,
-                interpolation,
-                ..
-            }) = &mut m.binding
-            {
-                if let Some(&want) = sampling.get(location) {
-                    if *s != want && interpolation.is_some() {
-                        *s = want;
-                        changed = true;
-                    }
-                }
-            }
-            m
-        })
-        .collect();
-    let new = naga::Type {
-        name: vertex.types[result.ty].name.clone(),
-        inner: naga::TypeInner::Struct { members, span },
-    };
-    if changed && vertex.types.get(&new).is_none() {
-        vertex.types.replace(result.ty, new);
-    }
-}
-
 /// Lowers a linked program for a GPU API: both stages share one default uniform block and one
 /// set of sampler slots; varyings and attributes get the linker's locations.
 pub fn lower_program(
@@ -520,7 +468,8 @@ fn lower_program_here(
         }
         let member = member_of[&*g.name];
         let base = pplan.block_members[member].offset;
-        let (leaf_offset, array_stride, matrix_stride) = leaf_layout(&g.ty, path, &module.structs);
+        let (leaf_offset, array_stride, matrix_stride) =
+            layout::leaf_layout(&g.ty, path, &module.structs);
         uniforms_out.push(program::ActiveUniform {
             name: u.name.clone(),
             ty: u.ty,
@@ -542,6 +491,9 @@ fn lower_program_here(
     }
     for v in &program.varyings {
         vplan.outputs.push((v.vertex, v.location));
+        vplan
+            .output_centroid
+            .insert(v.vertex, fm.globals[v.fragment].centroid);
         if fm.globals[v.fragment].used {
             fplan.inputs.push((v.fragment, v.location));
         }
@@ -572,9 +524,8 @@ fn lower_program_here(
             }
         }
     }
-    let mut vertex = lower_stage(vm, &vplan, &pplan, options)?;
+    let vertex = lower_stage(vm, &vplan, &pplan, options)?;
     let fragment = lower_stage(fm, &fplan, &pplan, options)?;
-    match_sampling(&mut vertex, &fragment);
     let vertex_info = validate(&vertex, Stage::Vertex)?;
     let fragment_info = validate(&fragment, Stage::Fragment)?;
     let _ = offsets;
@@ -621,52 +572,6 @@ fn leaf_is_array(ty: &Type, path: &[PathStep], structs: &[StructDef]) -> bool {
         };
     }
     t.is_array()
-}
-
-/// Offset of a leaf inside a uniform, its array stride and matrix stride (std140).
-fn leaf_layout(ty: &Type, path: &[PathStep], structs: &[StructDef]) -> (u32, u32, u32) {
-    let mut t = ty.clone();
-    let mut offset = 0;
-    for step in path {
-        match (step, &t) {
-            (PathStep::Index(i), Type::Array(el, _)) => {
-                let (s, _) = layout::std140(el, structs);
-                offset += s.div_ceil(16) * 16 * i;
-                t = (**el).clone();
-            }
-            (PathStep::Member(i), Type::Struct(id)) => {
-                let mut off: u32 = 0;
-                let members = &structs[id.0 as usize].members;
-                for (j, m) in members.iter().enumerate() {
-                    if !layout::has_data(&m.ty, structs) {
-                        continue;
-                    }
-                    let (s, a) = layout::std140(&m.ty, structs);
-                    off = off.div_ceil(a) * a;
-                    if j == *i as usize {
-                        break;
-                    }
-                    off += s;
-                }
-                offset += off;
-                t = members[*i as usize].ty.clone();
-            }
-            _ => break,
-        }
-    }
-    let (array_stride, el) = match &t {
-        Type::Array(el, _) => (
-            layout::std140(el, structs).0.div_ceil(16) * 16,
-            (**el).clone(),
-        ),
-        other => (0, other.clone()),
-    };
-    let matrix_stride = if matches!(el, Type::Matrix { .. }) {
-        16
-    } else {
-        0
-    };
-    (offset, array_stride, matrix_stride)
 }
 
 /// Builds the naga module of one stage.
