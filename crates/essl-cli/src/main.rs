@@ -125,6 +125,15 @@ struct TranslateArgs {
     no_link: bool,
 }
 
+impl From<StageArg> for Stage {
+    fn from(s: StageArg) -> Stage {
+        match s {
+            StageArg::Vertex => Stage::Vertex,
+            StageArg::Fragment => Stage::Fragment,
+        }
+    }
+}
+
 #[derive(Clone, Copy, Debug, ValueEnum)]
 enum TargetArg {
     /// WGSL (WebGPU, wgpu).
@@ -312,10 +321,7 @@ fn main() -> ExitCode {
         } => essl_cli::render::run(&scene, &output, times),
         Command::Lint(args) => essl_cli::lint::run(&LintOptions {
             paths: args.paths,
-            stage: args.stage.map(|s| match s {
-                StageArg::Vertex => Stage::Vertex,
-                StageArg::Fragment => Stage::Fragment,
-            }),
+            stage: args.stage.map(Stage::from),
             format: match args.format {
                 FormatArg::Human => Format::Human,
                 FormatArg::Json => Format::Json,
@@ -353,10 +359,7 @@ fn main() -> ExitCode {
             options.comments = !args.no_comments;
             essl_cli::translate::run(&essl_cli::translate::TranslateArgs {
                 paths: args.paths,
-                stage: args.stage.map(|s| match s {
-                    StageArg::Vertex => Stage::Vertex,
-                    StageArg::Fragment => Stage::Fragment,
-                }),
+                stage: args.stage.map(Stage::from),
                 options,
                 bindings: args.bindings.is_some(),
                 out: args.output,

@@ -11,9 +11,9 @@
 
 use std::path::{Path, PathBuf};
 
+use crate::files;
 use essl::source::SourceFile;
 use essl::{CompileOptions, Shader, Stage};
-use essl_build::files::{self, ShaderFile};
 use essl_translate::{BindingMap, Code, Options, Target, TranslateError};
 
 /// What `essl translate` was asked.
@@ -36,35 +36,24 @@ pub struct TranslateArgs {
 /// Runs `essl translate`; the exit status (0 all translated, 1 some could not be, 2 usage or
 /// I/O errors).
 pub fn run(args: &TranslateArgs) -> i32 {
-    let mut shader_files = Vec::new();
-    for path in &args.paths {
-        if path.is_dir() {
-            let (found, errors) = files::walk(path, &mut |_| true);
-            if let Some((p, e)) = errors.first() {
-                eprintln!("error: {}: {}", p.display(), files::io_message(e));
-                return 2;
+    let shader_files = match crate::files::collect(&args.paths, args.stage) {
+        Ok(c) if c.errors.is_empty() => c.inputs,
+        Ok(c) => {
+            for e in &c.errors {
+                eprintln!("error: {e}");
             }
-            shader_files.extend(found);
-        } else {
-            let Some(stage) = args.stage.or_else(|| Stage::from_path(path)) else {
-                eprintln!(
-                    "error: {}: the extension does not say the stage (.vert or .frag); use \
-                     --stage",
-                    path.display()
-                );
-                return 2;
-            };
-            shader_files.push(ShaderFile {
-                path: path.clone(),
-                stage,
-            });
+            return 2;
         }
-    }
+        Err(e) => {
+            eprintln!("error: {e}");
+            return 2;
+        }
+    };
     if shader_files.is_empty() {
         eprintln!("error: no shader files (.vert, .frag, .vs, .fs, .vsh, .fsh) found");
         return 2;
     }
-    if let Some(out) = args.out.as_ref().filter(|o| o.as_os_str() != "-") {
+    if let Some(out) = args.folder() {
         if let Err(e) = std::fs::create_dir_all(out) {
             eprintln!("error: {}: {}", out.display(), files::io_message(&e));
             return 2;
@@ -102,7 +91,8 @@ pub fn run(args: &TranslateArgs) -> i32 {
         }
         match essl_translate::translate_program(vs, fs, &args.options) {
             Ok(t) => {
-                let base = program_base(&shader_files[v].path);
+                // `dir/light.vert` → the program's map is `light.bindings.json`.
+                let base = shader_files[v].path.with_extension("");
                 let outputs = [
                     (output_path(&shader_files[v].path, args), t.vertex),
                     (output_path(&shader_files[f].path, args), t.fragment),
@@ -135,7 +125,8 @@ pub fn run(args: &TranslateArgs) -> i32 {
             Ok(t) => {
                 let path = &shader_files[i].path;
                 let outputs = [(output_path(path, args), t.code)];
-                match write_all(&outputs, &t.bindings, &lone_base(path), args) {
+                // A lone `light.frag` has `light.frag.bindings.json`.
+                match write_all(&outputs, &t.bindings, path, args) {
                     Ok(n) => written += n,
                     Err(()) => return 2,
                 }
@@ -146,7 +137,7 @@ pub fn run(args: &TranslateArgs) -> i32 {
             }
         }
     }
-    if args.out.as_ref().is_none_or(|o| o.as_os_str() != "-") {
+    if !args.to_stdout() {
         eprintln!(
             "essl translate: {written} file(s) written ({})",
             args.options.target.name()
@@ -181,25 +172,28 @@ fn message(e: &TranslateError) -> String {
 
 /// `dir/light.frag` → `OUT/light.frag.wgsl` (or next to the input).
 fn output_path(input: &Path, args: &TranslateArgs) -> PathBuf {
-    let name = format!(
-        "{}.{}",
-        input.file_name().unwrap_or_default().to_string_lossy(),
-        args.options.target.extension()
-    );
-    match args.out.as_ref().filter(|o| o.as_os_str() != "-") {
-        Some(dir) => dir.join(name),
-        None => input.with_file_name(name),
+    let name = input.file_name().unwrap_or_default().to_string_lossy();
+    args.place(input, format!("{name}.{}", args.options.target.extension()))
+}
+
+impl TranslateArgs {
+    /// The folder `-o` names (none for `-`, standard output).
+    fn folder(&self) -> Option<&Path> {
+        self.out.as_deref().filter(|o| o.as_os_str() != "-")
     }
-}
 
-/// `dir/light.vert` → `dir/light` (the program's binding map is `light.bindings.json`).
-fn program_base(vertex: &Path) -> PathBuf {
-    vertex.with_extension("")
-}
+    /// Whether `-o -` asks for standard output.
+    fn to_stdout(&self) -> bool {
+        self.out.as_deref().is_some_and(|o| o.as_os_str() == "-")
+    }
 
-/// `dir/light.frag` stays itself (its binding map is `light.frag.bindings.json`).
-fn lone_base(path: &Path) -> PathBuf {
-    path.to_path_buf()
+    /// Where a file named `name` goes: into `-o`'s folder, else beside `beside`.
+    fn place(&self, beside: &Path, name: String) -> PathBuf {
+        match self.folder() {
+            Some(dir) => dir.join(name),
+            None => beside.with_file_name(name),
+        }
+    }
 }
 
 /// Writes the code and, if asked, the binding map; the number of files written.
@@ -209,17 +203,8 @@ fn write_all(
     base: &Path,
     args: &TranslateArgs,
 ) -> Result<usize, ()> {
-    let to_stdout = args.out.as_ref().is_some_and(|o| o.as_os_str() == "-");
-    let json_path = {
-        let name = format!(
-            "{}.bindings.json",
-            base.file_name().unwrap_or_default().to_string_lossy()
-        );
-        match args.out.as_ref().filter(|o| o.as_os_str() != "-") {
-            Some(dir) => dir.join(name),
-            None => base.with_file_name(name),
-        }
-    };
+    let name = base.file_name().unwrap_or_default().to_string_lossy();
+    let json_path = args.place(base, format!("{name}.bindings.json"));
     let mut files: Vec<(PathBuf, Vec<u8>)> = outputs
         .iter()
         .map(|(p, code)| (p.clone(), code.to_bytes()))
@@ -227,16 +212,12 @@ fn write_all(
     if args.bindings {
         files.push((json_path, (bindings.to_json() + "\n").into_bytes()));
     }
-    if to_stdout {
+    if args.to_stdout() {
+        if args.options.target == Target::SpirV {
+            eprintln!("error: SPIR-V is binary; write it to a folder with -o");
+            return Err(());
+        }
         for (path, bytes) in &files {
-            if args.options.target == Target::SpirV && path.extension().is_some_and(|e| e == "spv")
-            {
-                eprintln!(
-                    "error: {}: SPIR-V is binary; write it to a folder with -o",
-                    path.display()
-                );
-                return Err(());
-            }
             println!("// ---- {}", path.display());
             print!("{}", String::from_utf8_lossy(bytes));
         }

@@ -10,8 +10,7 @@
 //! json`) and reads back with serde.
 
 use essl::program::{InternalUniform, ProgramLayout, UniformStorage};
-use essl::reflect::PathStep;
-use essl::types::{GlType, StructDef, Type};
+use essl::types::GlType;
 use essl::Shader;
 use serde::{Deserialize, Serialize};
 
@@ -104,6 +103,20 @@ pub enum Place {
     },
 }
 
+impl Place {
+    /// `count` sampler elements from slot `first`: each slot's texture at group 1, binding
+    /// `2 * slot`, its sampler at `2 * slot + 1` (the conventions of [`essl::program`]).
+    fn sampler(first: u32, count: u32, comparison: bool) -> Place {
+        let slots = first..first + count;
+        Place::Sampler {
+            group: 1,
+            textures: slots.clone().map(|s| 2 * s).collect(),
+            samplers: slots.map(|s| 2 * s + 1).collect(),
+            comparison,
+        }
+    }
+}
+
 /// A value the host writes into the uniform buffer for the translation itself.
 #[derive(Clone, Debug, PartialEq, Eq, Serialize, Deserialize)]
 pub struct Internal {
@@ -158,18 +171,14 @@ impl BindingMap {
                         array_stride: *array_stride,
                         matrix_stride: *matrix_stride,
                     },
-                    UniformStorage::Sampler { first_slot } => {
-                        let slots = *first_slot..*first_slot + u.size;
-                        Place::Sampler {
-                            group: 1,
-                            textures: slots.clone().map(|s| 2 * s).collect(),
-                            samplers: slots.map(|s| 2 * s + 1).collect(),
-                            comparison: layout
-                                .samplers
-                                .get(*first_slot as usize)
-                                .is_some_and(|s| s.comparison),
-                        }
-                    }
+                    UniformStorage::Sampler { first_slot } => Place::sampler(
+                        *first_slot,
+                        u.size,
+                        layout
+                            .samplers
+                            .get(*first_slot as usize)
+                            .is_some_and(|s| s.comparison),
+                    ),
                     UniformStorage::Block => Place::Block {
                         block: u
                             .name
@@ -253,14 +262,9 @@ impl BindingMap {
                 continue;
             }
             let place = if leaf.ty.is_sampler() {
-                let slots = slot..slot + leaf.size;
+                let first = slot;
                 slot += leaf.size;
-                Place::Sampler {
-                    group: 1,
-                    textures: slots.clone().map(|s| 2 * s).collect(),
-                    samplers: slots.map(|s| 2 * s + 1).collect(),
-                    comparison: leaf.ty.name().ends_with("_SHADOW"),
-                }
+                Place::sampler(first, leaf.size, leaf.ty.name().ends_with("_SHADOW"))
             } else {
                 let Some(base) = default
                     .as_ref()
@@ -269,26 +273,14 @@ impl BindingMap {
                 else {
                     continue;
                 };
-                let (offset, leaf_ty) = std140_path(&g.ty, &m.structs, path);
-                let element = match &leaf_ty {
-                    Type::Array(el, _) => el.as_ref().clone(),
-                    t => t.clone(),
-                };
-                let (size, _) = essl::lower::layout::std140(&element, &m.structs);
+                let (offset, array_stride, matrix_stride) =
+                    essl::lower::layout::leaf_layout(&g.ty, path, &m.structs);
                 Place::Buffer {
                     group: 0,
                     binding: 0,
                     offset: base + offset,
-                    array_stride: if matches!(leaf_ty, Type::Array(..)) {
-                        size.div_ceil(16) * 16
-                    } else {
-                        0
-                    },
-                    matrix_stride: if matches!(element, Type::Matrix { .. }) {
-                        16
-                    } else {
-                        0
-                    },
+                    array_stride,
+                    matrix_stride,
                 }
             };
             uniforms.push(Uniform {
@@ -434,35 +426,4 @@ fn default_block(module: &naga::Module) -> Option<(u32, Vec<(&str, u32)>)> {
         )),
         _ => None,
     }
-}
-
-/// The std140 offset of the leaf at `path` inside a value of type `ty`, and the leaf's type.
-fn std140_path(ty: &Type, structs: &[StructDef], path: &[PathStep]) -> (u32, Type) {
-    let mut offset = 0;
-    let mut ty = ty.clone();
-    for step in path {
-        match (step, &ty) {
-            (PathStep::Member(i), Type::Struct(id)) => {
-                let mut at = 0u32;
-                let members = &structs[id.0 as usize].members;
-                for (k, m) in members.iter().enumerate() {
-                    let (size, align) = essl::lower::layout::std140(&m.ty, structs);
-                    at = at.div_ceil(align) * align;
-                    if k == *i as usize {
-                        break;
-                    }
-                    at += size;
-                }
-                offset += at;
-                ty = members[*i as usize].ty.clone();
-            }
-            (PathStep::Index(i), Type::Array(el, _)) => {
-                let (size, _) = essl::lower::layout::std140(el, structs);
-                offset += i * size.div_ceil(16) * 16;
-                ty = el.as_ref().clone();
-            }
-            _ => break,
-        }
-    }
-    (offset, ty)
 }

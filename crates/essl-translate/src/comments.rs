@@ -31,14 +31,12 @@ pub fn annotate(
         Anchor::Token(vec!["_essl_padding".into()]),
         "Bytes of the buffer that only the other stage reads.".into(),
     ));
-    if has_member(module, "_essl_framebuffer_height") {
-        notes.push((
-            Anchor::Token(vec!["_essl_framebuffer_height".into()]),
-            "Not the shader's: the host writes the framebuffer's height in pixels here, for \
-             the gl_FragCoord.y flip."
-                .into(),
-        ));
-    }
+    notes.push((
+        Anchor::Token(vec!["_essl_framebuffer_height".into()]),
+        "Not the shader's: the host writes the framebuffer's height in pixels here, for the \
+         gl_FragCoord.y flip."
+            .into(),
+    ));
     for (name, binding) in textures(module) {
         let ident = crate::names::identifier(&name);
         notes.push((
@@ -154,16 +152,6 @@ fn has_token(line: &str, token: &str) -> bool {
         let before = line[..i].chars().next_back();
         let after = line[i + token.len()..].chars().next();
         !before.is_some_and(ident) && !after.is_some_and(ident)
-    })
-}
-
-/// Whether some struct of the module has a member of this name.
-fn has_member(module: &Module, name: &str) -> bool {
-    module.types.iter().any(|(_, t)| match &t.inner {
-        naga::TypeInner::Struct { members, .. } => {
-            members.iter().any(|m| m.name.as_deref() == Some(name))
-        }
-        _ => false,
     })
 }
 

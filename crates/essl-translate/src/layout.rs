@@ -15,12 +15,16 @@ use naga::proc::{Layouter, NameKey};
 use naga::{Handle, Module, TypeInner};
 
 /// The WGSL text with `@size` attributes where the IR's struct layout needs them.
-pub fn sized_members(module: &Module, wgsl: &str) -> String {
+/// `names` are the WGSL writer's ([`crate::names::wgsl_names`]).
+pub fn sized_members(
+    module: &Module,
+    names: &naga::FastHashMap<NameKey, String>,
+    wgsl: &str,
+) -> String {
     let mut layouter = Layouter::default();
     if layouter.update(module.to_ctx()).is_err() {
         return wgsl.to_owned();
     }
-    let names = crate::names::wgsl_names(module);
     // The structs reachable from uniform buffers.
     let mut structs = HashSet::new();
     for (_, g) in module.global_variables.iter() {

@@ -60,7 +60,7 @@ pub fn prepare(module: &Module) -> Module {
 
 /// The name naga's WGSL writer gives each item of the module: its own namer, reset as the
 /// writer resets it (WGSL's reserved words and built-ins, no `__` or `_naga` prefix).
-pub(crate) fn wgsl_names(module: &Module) -> naga::FastHashMap<NameKey, String> {
+pub fn wgsl_names(module: &Module) -> naga::FastHashMap<NameKey, String> {
     let mut names = naga::FastHashMap::default();
     Namer::default().reset(
         module,
@@ -107,20 +107,27 @@ struct Named {
     emitted: String,
 }
 
-/// The WGSL text with GLSL names given back where that is safe (see the module doc).
-pub fn restore(module: &Module, wgsl: &str) -> String {
-    let names = wgsl_names(module);
+/// The WGSL text with GLSL names given back where that is safe (see the module doc); `names`
+/// are the writer's ([`wgsl_names`]).
+pub fn restore(module: &Module, names: &naga::FastHashMap<NameKey, String>, wgsl: &str) -> String {
     // Functions in the order the writer writes them: functions, then entry points.
     let mut function_index: HashMap<Handle<naga::Function>, usize> = HashMap::new();
     for (i, (h, _)) in module.functions.iter().enumerate() {
         function_index.insert(h, i);
     }
     let ep_base = module.functions.len();
+    // Every named item's original, and the emitted names that belong to more than one
+    // meaning (a member and a local, say).
     let mut items = Vec::new();
-    for (key, emitted) in &names {
+    let mut meanings: HashMap<&str, HashSet<String>> = HashMap::new();
+    for (key, emitted) in names {
         let Some((scope, original)) = original_name(module, key, &function_index, ep_base) else {
             continue;
         };
+        meanings
+            .entry(emitted.as_str())
+            .or_default()
+            .insert(original.clone());
         if *emitted != original {
             items.push(Named {
                 scope,
@@ -137,16 +144,6 @@ pub fn restore(module: &Module, wgsl: &str) -> String {
         };
         (rank(a.scope), &a.emitted).cmp(&(rank(b.scope), &b.emitted))
     });
-    // Emitted names that belong to more than one meaning (a member and a local, say).
-    let mut meanings: HashMap<&str, HashSet<String>> = HashMap::new();
-    for (key, emitted) in &names {
-        if let Some((_, original)) = original_name(module, key, &function_index, ep_base) {
-            meanings
-                .entry(emitted.as_str())
-                .or_default()
-                .insert(original);
-        }
-    }
     let mut tokens = Tokens::new(wgsl);
     for item in &items {
         if !renamable(&item.original)

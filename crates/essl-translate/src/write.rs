@@ -1,9 +1,11 @@
 //! One stage in one target language, through naga's backend for it.
 //!
-//! Before writing, [`names::prepare`] gives the module names the backends keep; after, for
-//! WGSL, [`names::restore`] gives back the GLSL names the namer changed and
-//! [`comments::annotate`] explains what the lowering added. The other text targets get the
-//! comments too; their namers' choices stay (each has its own reserved words and rules).
+//! Before writing, [`names::prepare`] gives the module names the backends keep, and for WGSL
+//! [`points::drop_point_builtins`] removes what WGSL cannot say; after, for WGSL,
+//! [`layout::sized_members`] spells out the std140 offsets and [`names::restore`] gives back
+//! the GLSL names the namer changed. [`comments::annotate`] then explains what the lowering
+//! added, in every text target; the other targets keep their namers' choices (each has its
+//! own reserved words and rules).
 
 use essl::Stage;
 use naga::valid::ModuleInfo;
@@ -18,6 +20,11 @@ pub(crate) fn stage(
     stage: Stage,
     options: &Options,
 ) -> Result<Code, TranslateError> {
+    let fail = |message: String| TranslateError::Write {
+        target: options.target.name(),
+        stage: stage.as_str(),
+        message,
+    };
     let original = module;
     let mut module = names::prepare(module);
     let mut notes = Vec::new();
@@ -43,19 +50,10 @@ pub(crate) fn stage(
                 naga::valid::Capabilities::default(),
             )
             .validate(&module)
-            .map_err(|e| TranslateError::Write {
-                target: options.target.name(),
-                stage: stage.as_str(),
-                message: e.into_inner().to_string(),
-            })?;
+            .map_err(|e| fail(e.into_inner().to_string()))?;
             info = &revalidated;
         }
     }
-    let fail = |message: String| TranslateError::Write {
-        target: options.target.name(),
-        stage: stage.as_str(),
-        message,
-    };
     let naga_stage = match stage {
         Stage::Vertex => naga::ShaderStage::Vertex,
         Stage::Fragment => naga::ShaderStage::Fragment,
@@ -65,9 +63,10 @@ pub(crate) fn stage(
             let flags = naga::back::wgsl::WriterFlags::empty();
             let text = naga::back::wgsl::write_string(&module, info, flags)
                 .map_err(|e| fail(e.to_string()))?;
-            let text = layout::sized_members(&module, &text);
+            let written = names::wgsl_names(&module);
+            let text = layout::sized_members(&module, &written, &text);
             if options.restore_names {
-                names::restore(&module, &text)
+                names::restore(&module, &written, &text)
             } else {
                 text
             }
