@@ -2,8 +2,8 @@
 //! the exit status, so that the binary (`main.rs`, the clap definitions) stays thin and tests can
 //! call the same code.
 //!
-//! - [`lint`]: `essl lint` — check shaders and programs ([`files`] finds them, [`fix`] applies
-//!   certain fixes, [`output`] prints the results as text or JSON Lines).
+//! - [`lint`]: `essl lint` — check shaders and programs: collect the inputs (`files`), check
+//!   them, render the results as text, JSON Lines or SARIF (its module doc shows the pipeline).
 //! - [`conformance`]: `essl conformance` — score the front end on the conformance corpora.
 //! - [`deqp_exec`]: `essl deqp-exec` — execute the dEQP value cases through essl-gl.
 //! - [`report`]: `essl report` — the light shaders' error against run time on essl-gl.
@@ -13,10 +13,8 @@
 
 pub mod conformance;
 pub mod deqp_exec;
-pub mod files;
-pub mod fix;
+mod files;
 pub mod lint;
-pub mod output;
 pub mod render;
 pub mod report;
 pub mod rules;

@@ -5,8 +5,8 @@ use std::process::ExitCode;
 
 use clap::{Args, Parser, Subcommand, ValueEnum};
 use essl::Stage;
+use essl_cli::lint::Format;
 use essl_cli::lint::{ColorMode, LintOptions};
-use essl_cli::output::Format;
 
 /// GLSL ES 3.00 (WebGL2) shader toolkit.
 #[derive(Parser, Debug)]

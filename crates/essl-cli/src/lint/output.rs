@@ -1,49 +1,22 @@
 //! Printing `essl lint`'s results: human (codespan, optionally coloured) or JSON Lines.
 //!
 //! Each format is a pair of functions, one for a shader and one for a program, so that a new
-//! format (SARIF, GitHub annotations) is one more pair and one more [`Format`] variant.
+//! format (GitHub annotations, say) is one more pair and one more [`Format`] variant. SARIF
+//! needs every file at once, so it is written by [`write`] from the kept diagnostics.
 
 use std::io::Write;
 
 use codespan_reporting::term::termcolor::{Buffer, Color, ColorSpec, WriteColor};
 use essl::diagnostic::Diagnostic;
-use essl::link::{LinkDiagnostic, Program};
+use essl::link::LinkDiagnostic;
 use essl::render;
 use essl::source::SourceFile;
 use essl::{Shader, Stage};
 use serde_json::{json, Value};
 
+use super::options::{Format, Look};
+use super::results::{Checked, Linked, LintResults, Totals};
 use crate::files::{Input, ReadError};
-use crate::lint::{Checked, LintOptions, LintResults, ProgramResult};
-
-/// An output format.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
-pub enum Format {
-    /// rustc-style diagnostics and a summary line.
-    #[default]
-    Human,
-    /// JSON Lines: one object per shader, then one per program, then a summary.
-    Json,
-    /// One SARIF 2.1.0 log of every file's diagnostics, for code-scanning services.
-    Sarif,
-}
-
-/// What the summary line counts.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-pub struct Totals {
-    /// Files checked (read or not).
-    pub files: usize,
-    /// Errors in shaders and programs.
-    pub errors: usize,
-    /// Warnings in shaders and programs.
-    pub warnings: usize,
-    /// Pairs linked (both shaders compiled).
-    pub programs: usize,
-    /// Pairs not linked because a shader has errors.
-    pub unlinked: usize,
-    /// Fixes applied by `--fix`.
-    pub fixes: usize,
-}
 
 fn plural(n: usize, word: &str) -> String {
     match (n, word) {
@@ -53,60 +26,32 @@ fn plural(n: usize, word: &str) -> String {
     }
 }
 
-impl Totals {
-    /// `N files, E errors, W warnings`, plus `, P programs linked` when any were,
-    /// `, U pairs not linked` when a pair was not linked because a shader has errors, and
-    /// `, F fixes applied` when any were.
-    pub fn line(&self) -> String {
-        let mut s = format!(
-            "{}, {}, {}",
-            plural(self.files, "file"),
-            plural(self.errors, "error"),
-            plural(self.warnings, "warning")
-        );
-        if self.programs > 0 {
-            s.push_str(&format!(", {} linked", plural(self.programs, "program")));
-        }
-        if self.unlinked > 0 {
-            s.push_str(&format!(", {} not linked", plural(self.unlinked, "pair")));
-        }
-        if self.fixes > 0 {
-            s.push_str(&format!(", {} applied", plural(self.fixes, "fix")));
-        }
-        s
+/// `N files, E errors, W warnings`, plus `, P programs linked` when any were,
+/// `, U pairs not linked` when a pair was not linked because a shader has errors, and
+/// `, F fixes applied` when any were.
+fn summary_line(t: &Totals) -> String {
+    let mut s = format!(
+        "{}, {}, {}",
+        plural(t.files, "file"),
+        plural(t.errors, "error"),
+        plural(t.warnings, "warning")
+    );
+    if t.programs > 0 {
+        s.push_str(&format!(", {} linked", plural(t.programs, "program")));
     }
-}
-
-/// Errors and warnings a program adds to the totals: its link diagnostics, or one error for a
-/// failed link that has none. A pair that was not linked because a shader has errors adds
-/// nothing (those errors are counted with the shader).
-pub fn program_counts(vs: &Shader, fs: &Shader, program: &Program) -> (usize, usize) {
-    if !vs.ok() || !fs.ok() {
-        return (0, 0);
+    if t.unlinked > 0 {
+        s.push_str(&format!(", {} not linked", plural(t.unlinked, "pair")));
     }
-    let errors = program
-        .diagnostics
-        .iter()
-        .filter(|d| d.diagnostic.is_error())
-        .count();
-    let warnings = program.diagnostics.len() - errors;
-    let errors = if !program.ok && errors == 0 {
-        1
-    } else {
-        errors
-    };
-    (errors, warnings)
+    if t.fixes > 0 {
+        s.push_str(&format!(", {} applied", plural(t.fixes, "fix")));
+    }
+    s
 }
 
 /// Writes every result in order (files sorted by path, then programs) and the summary (a line
 /// of text, or a `{"kind":"summary"}` object). Files that could not be listed, read or written
 /// are also reported on stderr.
-pub fn write(
-    out: &mut dyn Write,
-    results: &LintResults,
-    options: &LintOptions,
-    color: bool,
-) -> std::io::Result<()> {
+pub(crate) fn write(out: &mut dyn Write, results: &LintResults, look: Look) -> std::io::Result<()> {
     for e in &results.collect_errors {
         eprintln!("error: cannot read {e}");
     }
@@ -128,13 +73,13 @@ pub fn write(
         out.write_all(&p.rendered)?;
     }
     let t = results.totals();
-    match options.format {
+    match look.format {
         Format::Human => {
-            let mut summary = buffer(color);
+            let mut summary = buffer(look.color);
             summary.set_color(ColorSpec::new().set_bold(true))?;
-            write!(summary, "{}", t.line())?;
+            write!(summary, "{}", summary_line(&t))?;
             summary.reset()?;
-            if options.deny_warnings && t.warnings > 0 {
+            if look.deny_warnings && t.warnings > 0 {
                 write!(summary, " (warnings denied)")?;
             }
             writeln!(summary)?;
@@ -167,17 +112,16 @@ fn buffer(color: bool) -> Buffer {
     }
 }
 
-/// A file's output in `options.format`.
-pub fn render_file(
+/// A file's output in `look.format`.
+pub(crate) fn render_file(
     input: &Input,
     checked: &Result<Checked, ReadError>,
-    options: &LintOptions,
-    color: bool,
+    look: Look,
 ) -> Vec<u8> {
-    match options.format {
-        Format::Human => human_file(input, checked, options, color),
+    match look.format {
+        Format::Human => human_file(input, checked, look),
         Format::Json => {
-            let mut line = json_file(input, checked, options).to_string().into_bytes();
+            let mut line = json_file(input, checked, look.fix).to_string().into_bytes();
             line.push(b'\n');
             line
         }
@@ -185,53 +129,16 @@ pub fn render_file(
     }
 }
 
-/// A program's result, rendered in `options.format`.
-pub fn program_result(
-    vertex: &Input,
-    fragment: &Input,
-    vs: &Shader,
-    fs: &Shader,
-    program: &Program,
-    options: &LintOptions,
-    color: bool,
-) -> ProgramResult {
-    let rendered = match options.format {
-        Format::Human => human_program(vertex, fragment, vs, fs, program, color),
+/// A program's output in `look.format`.
+pub(crate) fn render_program(linked: &Linked, look: Look) -> Vec<u8> {
+    match look.format {
+        Format::Human => human_program(linked, look.color),
         Format::Json => {
-            let mut line = json_program(vertex, fragment, vs, fs, program)
-                .to_string()
-                .into_bytes();
+            let mut line = json_program(linked).to_string().into_bytes();
             line.push(b'\n');
             line
         }
         Format::Sarif => Vec::new(),
-    };
-    let (errors, warnings) = program_counts(vs, fs, program);
-    let diagnostics = if options.format == Format::Sarif {
-        program
-            .diagnostics
-            .iter()
-            .map(|d| {
-                let path = match d.stage {
-                    Some(Stage::Vertex) => Some(vertex.path.clone()),
-                    Some(Stage::Fragment) => Some(fragment.path.clone()),
-                    None => None,
-                };
-                (path, d.diagnostic.clone())
-            })
-            .collect()
-    } else {
-        Vec::new()
-    };
-    ProgramResult {
-        vertex: vertex.clone(),
-        fragment: fragment.clone(),
-        linked: vs.ok() && fs.ok(),
-        ok: program.ok,
-        errors,
-        warnings,
-        rendered,
-        diagnostics,
     }
 }
 
@@ -260,15 +167,10 @@ fn sarif(results: &LintResults) -> String {
 }
 
 /// A file's human output: how many fixes were applied, then its diagnostics.
-pub fn human_file(
-    input: &Input,
-    checked: &Result<Checked, ReadError>,
-    options: &LintOptions,
-    color: bool,
-) -> Vec<u8> {
-    let mut buf = buffer(color);
+fn human_file(input: &Input, checked: &Result<Checked, ReadError>, look: Look) -> Vec<u8> {
+    let mut buf = buffer(look.color);
     if let Ok(c) = checked {
-        let _ = write_human_file(&mut buf, input, c, options);
+        let _ = write_human_file(&mut buf, input, c, look.fix);
     }
     buf.into_inner()
 }
@@ -277,9 +179,9 @@ fn write_human_file(
     buf: &mut Buffer,
     input: &Input,
     c: &Checked,
-    options: &LintOptions,
+    fix: bool,
 ) -> std::io::Result<()> {
-    if options.fix && c.fixes_applied > 0 {
+    if fix && c.fixes_applied > 0 {
         buf.set_color(ColorSpec::new().set_fg(Some(Color::Green)).set_bold(true))?;
         write!(buf, "fixed")?;
         buf.reset()?;
@@ -308,27 +210,20 @@ fn program_name(vertex: &Input, fragment: &Input) -> String {
 
 /// A program's human output: one line when it links cleanly or was not linked; otherwise its
 /// diagnostics, each shown in the shader it points into, and the info log when linking failed.
-pub fn human_program(
-    vertex: &Input,
-    fragment: &Input,
-    vs: &Shader,
-    fs: &Shader,
-    program: &Program,
-    color: bool,
-) -> Vec<u8> {
+fn human_program(linked: &Linked, color: bool) -> Vec<u8> {
     let mut buf = buffer(color);
-    let _ = write_human_program(&mut buf, vertex, fragment, vs, fs, program);
+    let _ = write_human_program(&mut buf, linked);
     buf.into_inner()
 }
 
-fn write_human_program(
-    buf: &mut Buffer,
-    vertex: &Input,
-    fragment: &Input,
-    vs: &Shader,
-    fs: &Shader,
-    program: &Program,
-) -> std::io::Result<()> {
+fn write_human_program(buf: &mut Buffer, linked: &Linked) -> std::io::Result<()> {
+    let Linked {
+        vertex,
+        fragment,
+        vs,
+        fs,
+        program,
+    } = *linked;
     let name = program_name(vertex, fragment);
     if !vs.ok() || !fs.ok() {
         let broken = match (vs.ok(), fs.ok()) {
@@ -385,11 +280,7 @@ fn file_of<'a>(vs: &'a Shader, fs: &'a Shader, d: &LinkDiagnostic) -> Option<&'a
 /// A shader's JSON object:
 /// `{"kind":"shader","file","stage","ok","diagnostics":[…]}`, with `"fixes_applied"` under
 /// `--fix`, and `"error"` when the file could not be read (or the fix written back).
-pub fn json_file(
-    input: &Input,
-    checked: &Result<Checked, ReadError>,
-    options: &LintOptions,
-) -> Value {
+fn json_file(input: &Input, checked: &Result<Checked, ReadError>, fix: bool) -> Value {
     let file = input.path.display().to_string();
     match checked {
         Err(e) => json!({
@@ -414,7 +305,7 @@ pub fn json_file(
                 "ok": c.shader.ok(),
                 "diagnostics": diagnostics,
             });
-            if options.fix {
+            if fix {
                 v["fixes_applied"] = json!(c.fixes_applied);
                 if let Some(e) = &c.write_error {
                     v["error"] = json!(e);
@@ -429,13 +320,14 @@ pub fn json_file(
 /// "type","size"}],"attributes":[{"name","type","size","location"}],"diagnostics":[…]}`; each
 /// diagnostic also carries `"file"` (null, with null positions, when it points into neither
 /// shader).
-pub fn json_program(
-    vertex: &Input,
-    fragment: &Input,
-    vs: &Shader,
-    fs: &Shader,
-    program: &Program,
-) -> Value {
+fn json_program(linked: &Linked) -> Value {
+    let Linked {
+        vertex,
+        fragment,
+        vs,
+        fs,
+        program,
+    } = *linked;
     let uniforms: Vec<Value> = program
         .uniforms
         .iter()

@@ -1,0 +1,172 @@
+//! What checking gives: one result per file and per linked pair, already rendered on the
+//! thread that compiled it, and the totals and exit status computed from them.
+
+use std::path::PathBuf;
+
+use essl::link::Program;
+use essl::source::SourceFile;
+use essl::Shader;
+
+use super::options::{EXIT_ERRORS, EXIT_OK, EXIT_USAGE};
+use crate::files::{CollectError, Input};
+
+/// A shader that was read and compiled.
+#[derive(Debug)]
+pub(crate) struct Checked {
+    /// The compiled shader (after `--fix`, of the fixed text).
+    pub shader: Shader,
+    /// How many fixes `--fix` applied.
+    pub fixes_applied: usize,
+    /// Why the fixed text could not be written back, if it could not.
+    pub write_error: Option<String>,
+}
+
+/// The two shaders of a linked pair and their program.
+pub(crate) struct Linked<'a> {
+    /// The vertex shader's file.
+    pub vertex: &'a Input,
+    /// The fragment shader's file.
+    pub fragment: &'a Input,
+    /// The compiled vertex shader.
+    pub vs: &'a Shader,
+    /// The compiled fragment shader.
+    pub fs: &'a Shader,
+    /// The program linked from them.
+    pub program: &'a Program,
+}
+
+/// One file's result, rendered in the requested format (shaders stay on the thread that
+/// compiled them; what crosses threads is this).
+#[derive(Debug)]
+pub(crate) struct FileResult {
+    /// The file.
+    pub input: Input,
+    /// Why it could not be read, if it could not.
+    pub read_error: Option<String>,
+    /// Why the fixed text could not be written back, if it could not.
+    pub write_error: Option<String>,
+    /// Its errors.
+    pub errors: usize,
+    /// Its warnings.
+    pub warnings: usize,
+    /// Fixes applied by `--fix`.
+    pub fixes_applied: usize,
+    /// Its output (human text or one JSON line).
+    pub rendered: Vec<u8>,
+    /// Its text and diagnostics, kept for formats that need every file at once (SARIF).
+    pub diagnostics: Option<(SourceFile, Vec<essl::diagnostic::Diagnostic>)>,
+}
+
+/// One linked pair's result, rendered.
+#[derive(Debug)]
+pub(crate) struct ProgramResult {
+    /// The vertex shader.
+    pub vertex: Input,
+    /// Whether it was linked (both shaders compiled).
+    pub linked: bool,
+    /// Errors it adds to the totals (see [`program_counts`]).
+    pub errors: usize,
+    /// Warnings it adds to the totals.
+    pub warnings: usize,
+    /// Its output (human text or one JSON line).
+    pub rendered: Vec<u8>,
+    /// Its link diagnostics with the file each points into, for formats that need every file
+    /// at once (SARIF).
+    pub diagnostics: Vec<(Option<PathBuf>, essl::diagnostic::Diagnostic)>,
+}
+
+/// Everything `essl lint` found, rendered, before printing.
+#[derive(Debug, Default)]
+pub(crate) struct LintResults {
+    /// Paths that could not be listed.
+    pub collect_errors: Vec<CollectError>,
+    /// One result per file, sorted by path.
+    pub files: Vec<FileResult>,
+    /// One result per linked pair, sorted by the vertex shader's path.
+    pub programs: Vec<ProgramResult>,
+}
+
+/// What the summary line counts.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub(crate) struct Totals {
+    /// Files checked (read or not).
+    pub files: usize,
+    /// Errors in shaders and programs.
+    pub errors: usize,
+    /// Warnings in shaders and programs.
+    pub warnings: usize,
+    /// Pairs linked (both shaders compiled).
+    pub programs: usize,
+    /// Pairs not linked because a shader has errors.
+    pub unlinked: usize,
+    /// Fixes applied by `--fix`.
+    pub fixes: usize,
+}
+
+impl LintResults {
+    /// Error and warning counts, and how many programs were linked.
+    pub fn totals(&self) -> Totals {
+        let mut t = Totals {
+            files: self.files.len(),
+            ..Totals::default()
+        };
+        for f in &self.files {
+            t.errors += f.errors;
+            t.warnings += f.warnings;
+            t.fixes += f.fixes_applied;
+        }
+        for p in &self.programs {
+            if p.linked {
+                t.programs += 1;
+            } else {
+                t.unlinked += 1;
+            }
+            t.errors += p.errors;
+            t.warnings += p.warnings;
+        }
+        t
+    }
+
+    /// Whether a file could not be listed, read or written back.
+    pub fn has_io_errors(&self) -> bool {
+        !self.collect_errors.is_empty()
+            || self
+                .files
+                .iter()
+                .any(|f| f.read_error.is_some() || f.write_error.is_some())
+    }
+
+    /// The exit status: 2 for I/O errors, 1 for errors (or warnings under `--deny warnings`),
+    /// 0 otherwise.
+    pub fn exit_status(&self, deny_warnings: bool) -> i32 {
+        let t = self.totals();
+        if self.has_io_errors() {
+            EXIT_USAGE
+        } else if t.errors > 0 || (deny_warnings && t.warnings > 0) {
+            EXIT_ERRORS
+        } else {
+            EXIT_OK
+        }
+    }
+}
+
+/// Errors and warnings a program adds to the totals: its link diagnostics, or one error for a
+/// failed link that has none. A pair that was not linked because a shader has errors adds
+/// nothing (those errors are counted with the shader).
+pub(crate) fn program_counts(vs: &Shader, fs: &Shader, program: &Program) -> (usize, usize) {
+    if !vs.ok() || !fs.ok() {
+        return (0, 0);
+    }
+    let errors = program
+        .diagnostics
+        .iter()
+        .filter(|d| d.diagnostic.is_error())
+        .count();
+    let warnings = program.diagnostics.len() - errors;
+    let errors = if !program.ok && errors == 0 {
+        1
+    } else {
+        errors
+    };
+    (errors, warnings)
+}
