@@ -1,5 +1,5 @@
 //! Checking: read, (fix,) compile and lint each file, link the pairs, on a thread pool; each
-//! result is rendered on the thread that compiled it, since a compiled shader stays there.
+//! result is rendered on the thread that compiled it, so that only its bytes cross threads.
 
 use essl::link::link;
 use essl::source::SourceFile;
