@@ -207,100 +207,205 @@ fn highlight_peak(scene: &LitScene) -> Result<DVec3, LightsError> {
     Ok(best.1)
 }
 
+/// What a case's GPU picture shows: the mesh, the camera, a description, and how far the
+/// reference moves the world (see [`GpuSetup::world_jitter`]).
+struct Shot {
+    mesh: MeshSpec,
+    cam: Camera,
+    geometry: &'static str,
+    jitter: f64,
+}
+
+impl Shot {
+    /// The default picture: the plane y = 0 from above, scaled by `scale`.
+    fn plane(scale: f64, geometry: &'static str) -> Shot {
+        Shot {
+            mesh: default_grid(scale),
+            cam: default_camera(scale),
+            geometry,
+            jitter: 0.0,
+        }
+    }
+
+    /// The default plane seen by another camera.
+    fn plane_from(cam: Camera, geometry: &'static str) -> Shot {
+        Shot {
+            cam,
+            ..Shot::plane(1.0, geometry)
+        }
+    }
+
+    /// Another mesh seen by another camera.
+    fn of(mesh: MeshSpec, cam: Camera, geometry: &'static str) -> Shot {
+        Shot {
+            mesh,
+            cam,
+            geometry,
+            jitter: 0.0,
+        }
+    }
+}
+
+/// The cases drawn on planes whose normals the case sets: zero, away from the light, or half
+/// and half.
+fn normals_shot(case: Case) -> Shot {
+    let mut a = Arrays::default();
+    let n = match case {
+        Case::ZeroNormal => DVec3::ZERO,
+        _ => DVec3::NEG_Y,
+    };
+    let geometry = if case == Case::Shininess0 {
+        // Left half facing the light, right half away from it.
+        // (A gap between the halves: a seam on a pixel centre would be a depth tie.)
+        a.plane(
+            DVec3::new(-51.0, 0.0, 0.0),
+            DVec3::X,
+            DVec3::Z,
+            50.0,
+            4,
+            &|_| DVec3::Y,
+        );
+        a.plane(
+            DVec3::new(51.0, 0.0, 0.0),
+            DVec3::X,
+            DVec3::Z,
+            50.0,
+            4,
+            &|_| n,
+        );
+        "plane, left half normal +y, right half −y"
+    } else {
+        a.plane(DVec3::ZERO, DVec3::X, DVec3::Z, 100.0, 8, &|_| n);
+        if case == Case::ZeroNormal {
+            "plane with zero normals"
+        } else {
+            "plane with normals −y (away from the light)"
+        }
+    };
+    Shot {
+        mesh: a.mesh(),
+        ..Shot::plane(1.0, geometry)
+    }
+}
+
+/// A plane through the light, the centre pixel on it.
+fn light_on_surface_shot(lp: Option<DVec3>) -> Shot {
+    let p = lp.unwrap_or(LIGHT_SPOT);
+    let mut a = Arrays::default();
+    a.plane(p, DVec3::X, DVec3::Z, 100.0, 8, &|_| DVec3::Y);
+    let cam = camera(
+        p + DVec3::new(0.0, 40.0, 20.0),
+        p,
+        DVec3::Y,
+        60.0,
+        1.0,
+        1000.0,
+    );
+    Shot {
+        jitter: WORLD_JITTER,
+        ..Shot::of(a.mesh(), cam, "plane through the light, centre pixel on it")
+    }
+}
+
+/// A plane containing the light's rays: N·L = 0 at every point (exactly, for a positional
+/// light on an axis-aligned plane). Left half normal +n, right half −n.
+fn grazing_shot(scene: &LitScene, lp: Option<DVec3>) -> Shot {
+    let (centre, n, u) = match (scene.lights.first(), lp) {
+        (Some(Light::Directional(d)), _) => {
+            let l = -d.direction.normalize();
+            let n = l.cross(DVec3::Z).normalize();
+            (DVec3::ZERO, n, l)
+        }
+        (_, Some(p)) => (p + DVec3::new(0.0, -60.0, 0.0), DVec3::X, DVec3::NEG_Y),
+        _ => (DVec3::ZERO, DVec3::X, DVec3::Y),
+    };
+    let v = n.cross(u).normalize();
+    let mut a = Arrays::default();
+    a.plane(centre - v * 31.0, u, v, 30.0, 4, &|_| n);
+    a.plane(centre + v * 31.0, u, v, 30.0, 4, &|_| -n);
+    let cam = camera(centre + n * 120.0 + u * 10.0, centre, u, 60.0, 1.0, 1000.0);
+    Shot::of(
+        a.mesh(),
+        cam,
+        "plane containing the light's rays, halves with normals ±n",
+    )
+}
+
+/// The inside of a sphere of radius 50 around the light, normals inwards, seen from the
+/// light towards the middle of the cone's ramp.
+fn wide_cone_shot(scene: &LitScene, lp: Option<DVec3>) -> Shot {
+    let (inner, outer) = match scene.lights.first() {
+        Some(Light::Spot(s)) => (s.inner_deg, s.outer_deg),
+        _ => (0.0, 90.0),
+    };
+    let centre = lp.unwrap_or(LIGHT_SPOT);
+    let sphere = essl_scene::Mesh::sphere(1.0, 64, 32);
+    let pos = sphere.position.unwrap_or_default();
+    let mut a = Arrays::default();
+    for k in 0..pos.len() / 3 {
+        let n = DVec3::new(pos[3 * k], pos[3 * k + 1], pos[3 * k + 2]);
+        a.position.extend((centre + n * 50.0).to_array());
+        a.normal.extend((-n).to_array());
+    }
+    a.indices = sphere.indices.unwrap_or_default();
+    let t = (0.5 * (inner + outer)).to_radians();
+    let w = DVec3::new(t.sin(), -t.cos(), 0.0);
+    let cam = camera(centre, centre + w * 50.0, DVec3::Z, 60.0, 1.0, 200.0);
+    Shot::of(
+        a.mesh(),
+        cam,
+        "inside of a sphere around the light, seen from the light",
+    )
+}
+
+/// A zoom on the point 90° off the projector's axis along its up vector.
+fn acos_shot(scene: &LitScene, lp: Option<DVec3>) -> Shot {
+    let (f, up) = match scene.lights.first() {
+        Some(Light::Spot(s)) => match &s.cookie {
+            Some(crate::Cookie::Projected { up, .. }) => (s.direction.normalize(), *up),
+            _ => (s.direction.normalize(), DVec3::Y),
+        },
+        _ => (DVec3::NEG_Y, DVec3::Z),
+    };
+    let u = (up - f * up.dot(f)).normalize();
+    let left = f.cross(u).normalize();
+    let centre = lp.unwrap_or(LIGHT_SPOT);
+    let target = centre + u * 50.0;
+    let mut a = Arrays::default();
+    a.plane(target, left, u.cross(left), 1.0, 2, &|_| -u);
+    // ±0.05 units across at distance 10.
+    let fov = 2.0 * (0.05f64 / 10.0).atan().to_degrees();
+    let cam = camera(centre + u * 40.0, target, left, fov, 1.0, 100.0);
+    Shot::of(a.mesh(), cam, "zoom on the point 90° off the axis along up")
+}
+
+/// The default plane, the camera aimed at `target` from the usual offset.
+fn aimed_at(target: DVec3, geometry: &'static str) -> Shot {
+    let cam = camera(
+        target + DVec3::new(0.0, 140.0, 70.0),
+        target,
+        DVec3::Y,
+        60.0,
+        1.0,
+        2000.0,
+    );
+    Shot::plane_from(cam, geometry)
+}
+
 /// The GPU scene of `case` for `model` on a `size`×`size` canvas (see the module docs).
 pub fn gpu_setup(model: Model, case: Case, size: u32) -> Result<GpuSetup, LightsError> {
     let cpu = stiff::setup(model, case);
     let scene = &cpu.scene;
     let lp = light_position(scene);
-    let mut mesh = default_grid(1.0);
-    let mut cam = default_camera(1.0);
-    let mut geometry = "plane y = 0 from above";
-    let mut jitter = 0.0;
-    match case {
-        Case::ScaleMicro | Case::ScaleMega | Case::MediumpRange => {
-            let s = match case {
-                Case::ScaleMicro => 1e-6,
-                Case::ScaleMega => 1e6,
-                _ => 4.0,
-            };
-            mesh = default_grid(s);
-            cam = default_camera(s);
-            geometry = "plane from above, scene scaled";
-        }
-        Case::ZeroNormal | Case::LightBehind | Case::Shininess0 => {
-            let mut a = Arrays::default();
-            let n = match case {
-                Case::ZeroNormal => DVec3::ZERO,
-                _ => DVec3::NEG_Y,
-            };
-            if case == Case::Shininess0 {
-                // Left half facing the light, right half away from it.
-                // (A gap between the halves: a seam on a pixel centre would be a depth tie.)
-                a.plane(
-                    DVec3::new(-51.0, 0.0, 0.0),
-                    DVec3::X,
-                    DVec3::Z,
-                    50.0,
-                    4,
-                    &|_| DVec3::Y,
-                );
-                a.plane(
-                    DVec3::new(51.0, 0.0, 0.0),
-                    DVec3::X,
-                    DVec3::Z,
-                    50.0,
-                    4,
-                    &|_| n,
-                );
-                geometry = "plane, left half normal +y, right half −y";
-            } else {
-                a.plane(DVec3::ZERO, DVec3::X, DVec3::Z, 100.0, 8, &|_| n);
-                geometry = if case == Case::ZeroNormal {
-                    "plane with zero normals"
-                } else {
-                    "plane with normals −y (away from the light)"
-                };
-            }
-            mesh = a.mesh();
-        }
-        Case::LightOnSurface => {
-            let p = lp.unwrap_or(LIGHT_SPOT);
-            let mut a = Arrays::default();
-            a.plane(p, DVec3::X, DVec3::Z, 100.0, 8, &|_| DVec3::Y);
-            mesh = a.mesh();
-            cam = camera(
-                p + DVec3::new(0.0, 40.0, 20.0),
-                p,
-                DVec3::Y,
-                60.0,
-                1.0,
-                1000.0,
-            );
-            geometry = "plane through the light, centre pixel on it";
-            jitter = WORLD_JITTER;
-        }
-        Case::Grazing => {
-            // A plane containing the light's rays: N·L = 0 at every point (exactly, for a
-            // positional light on an axis-aligned plane). Left half normal +n, right half −n.
-            let (centre, n, u) = match (scene.lights.first(), lp) {
-                (Some(Light::Directional(d)), _) => {
-                    let l = -d.direction.normalize();
-                    let n = l.cross(DVec3::Z).normalize();
-                    (DVec3::ZERO, n, l)
-                }
-                (_, Some(p)) => (p + DVec3::new(0.0, -60.0, 0.0), DVec3::X, DVec3::NEG_Y),
-                _ => (DVec3::ZERO, DVec3::X, DVec3::Y),
-            };
-            let v = n.cross(u).normalize();
-            let mut a = Arrays::default();
-            a.plane(centre - v * 31.0, u, v, 30.0, 4, &|_| n);
-            a.plane(centre + v * 31.0, u, v, 30.0, 4, &|_| -n);
-            mesh = a.mesh();
-            cam = camera(centre + n * 120.0 + u * 10.0, centre, u, 60.0, 1.0, 1000.0);
-            geometry = "plane containing the light's rays, halves with normals ±n";
-        }
+    let shot = match case {
+        Case::ScaleMicro => Shot::plane(1e-6, "plane from above, scene scaled"),
+        Case::ScaleMega => Shot::plane(1e6, "plane from above, scene scaled"),
+        Case::MediumpRange => Shot::plane(4.0, "plane from above, scene scaled"),
+        Case::ZeroNormal | Case::LightBehind | Case::Shininess0 => normals_shot(case),
+        Case::LightOnSurface => light_on_surface_shot(lp),
+        Case::Grazing => grazing_shot(scene, lp),
         Case::BackFace => {
-            cam = camera(
+            let cam = camera(
                 DVec3::new(EYE.x, -EYE.y, EYE.z),
                 DVec3::ZERO,
                 DVec3::Y,
@@ -308,91 +413,38 @@ pub fn gpu_setup(model: Model, case: Case, size: u32) -> Result<GpuSetup, Lights
                 1.0,
                 2000.0,
             );
-            geometry = "plane seen from below, the light above";
+            Shot::plane_from(cam, "plane seen from below, the light above")
         }
-        Case::Cone90 | Case::Cone120 | Case::Cone180 => {
-            // The inside of a sphere of radius 50 around the light, normals inwards, seen from
-            // the light towards the middle of the cone's ramp.
-            let (inner, outer) = match scene.lights.first() {
-                Some(Light::Spot(s)) => (s.inner_deg, s.outer_deg),
-                _ => (0.0, 90.0),
-            };
-            let centre = lp.unwrap_or(LIGHT_SPOT);
-            let sphere = essl_scene::Mesh::sphere(1.0, 64, 32);
-            let pos = sphere.position.unwrap_or_default();
-            let mut a = Arrays::default();
-            for k in 0..pos.len() / 3 {
-                let n = DVec3::new(pos[3 * k], pos[3 * k + 1], pos[3 * k + 2]);
-                a.position.extend((centre + n * 50.0).to_array());
-                a.normal.extend((-n).to_array());
-            }
-            a.indices = sphere.indices.unwrap_or_default();
-            mesh = a.mesh();
-            let t = (0.5 * (inner + outer)).to_radians();
-            let w = DVec3::new(t.sin(), -t.cos(), 0.0);
-            cam = camera(centre, centre + w * 50.0, DVec3::Z, 60.0, 1.0, 200.0);
-            geometry = "inside of a sphere around the light, seen from the light";
-        }
-        Case::AcosPastOne => {
-            let (f, up) = match scene.lights.first() {
-                Some(Light::Spot(s)) => match &s.cookie {
-                    Some(crate::Cookie::Projected { up, .. }) => (s.direction.normalize(), *up),
-                    _ => (s.direction.normalize(), DVec3::Y),
-                },
-                _ => (DVec3::NEG_Y, DVec3::Z),
-            };
-            let u = (up - f * up.dot(f)).normalize();
-            let left = f.cross(u).normalize();
-            let centre = lp.unwrap_or(LIGHT_SPOT);
-            let target = centre + u * 50.0;
-            let mut a = Arrays::default();
-            a.plane(target, left, u.cross(left), 1.0, 2, &|_| -u);
-            mesh = a.mesh();
-            // ±0.05 units across at distance 10.
-            let fov = 2.0 * (0.05f64 / 10.0).atan().to_degrees();
-            cam = camera(centre + u * 40.0, target, left, fov, 1.0, 100.0);
-            geometry = "zoom on the point 90° off the axis along up";
-        }
+        Case::Cone90 | Case::Cone120 | Case::Cone180 => wide_cone_shot(scene, lp),
+        Case::AcosPastOne => acos_shot(scene, lp),
         Case::Shininess1e4 => {
             let peak = highlight_peak(scene)?;
             let fov = 2.0 * (6.0 / (EYE - peak).length()).atan().to_degrees();
-            cam = camera(EYE, peak, DVec3::Y, fov, 1.0, 2000.0);
-            geometry = "zoom on the highlight";
+            let cam = camera(EYE, peak, DVec3::Y, fov, 1.0, 2000.0);
+            Shot::plane_from(cam, "zoom on the highlight")
         }
         Case::LimitOnSample => {
             let p = lp.unwrap_or(LIGHT_SPOT);
             let r = p.y * outer_deg(scene).to_radians().tan();
-            let target = DVec3::new(p.x + r, 0.0, p.z);
-            cam = camera(
-                target + DVec3::new(0.0, 140.0, 70.0),
-                target,
-                DVec3::Y,
-                60.0,
-                1.0,
-                2000.0,
-            );
-            geometry = "plane, centre pixel on the outer cone";
+            aimed_at(
+                DVec3::new(p.x + r, 0.0, p.z),
+                "plane, centre pixel on the outer cone",
+            )
         }
         Case::Cone0 => {
             let p = lp.unwrap_or(LIGHT_SPOT);
-            let target = DVec3::new(p.x, 0.0, p.z);
-            cam = camera(
-                target + DVec3::new(0.0, 140.0, 70.0),
-                target,
-                DVec3::Y,
-                60.0,
-                1.0,
-                2000.0,
-            );
-            geometry = "plane, centre pixel on the cone's axis";
+            aimed_at(
+                DVec3::new(p.x, 0.0, p.z),
+                "plane, centre pixel on the cone's axis",
+            )
         }
-        _ => {}
-    }
+        _ => Shot::plane(1.0, "plane y = 0 from above"),
+    };
     Ok(GpuSetup {
         cpu,
-        base: file(mesh, cam, size),
-        geometry,
-        world_jitter: jitter,
+        base: file(shot.mesh, shot.cam, size),
+        geometry: shot.geometry,
+        world_jitter: shot.jitter,
     })
 }
 
