@@ -19,7 +19,8 @@ TABLES = set()
 
 
 def strip(line, state):
-    """The line without string literals and comments; `state` carries block comments."""
+    """The line without string literals and comments; `state` carries block comments and
+    string literals (plain or raw) that run over several lines."""
     out = []
     i = 0
     while i < len(line):
@@ -30,6 +31,22 @@ def strip(line, state):
             state["block"] = False
             i = end + 2
             continue
+        if state["str"] is not None:
+            close = state["str"]
+            if close == '"':
+                j = i
+                while j < len(line) and line[j] != '"':
+                    j += 2 if line[j] == "\\" else 1
+                if j >= len(line):
+                    return "".join(out)
+                i = j + 1
+            else:
+                end = line.find(close, i)
+                if end < 0:
+                    return "".join(out)
+                i = end + len(close)
+            state["str"] = None
+            continue
         c = line[i]
         if line.startswith("//", i):
             break
@@ -37,11 +54,14 @@ def strip(line, state):
             state["block"] = True
             i += 2
             continue
+        raw = re.match(r'b?r(#*)"', line[i:])
+        if raw and (i == 0 or not (line[i - 1].isalnum() or line[i - 1] == "_")):
+            state["str"] = '"' + raw.group(1)
+            i += raw.end()
+            continue
         if c == '"':
-            j = i + 1
-            while j < len(line) and line[j] != '"':
-                j += 2 if line[j] == "\\" else 1
-            i = j + 1
+            state["str"] = '"'
+            i += 1
             continue
         if c == "'" and i + 2 < len(line) and (line[i + 2] == "'" or line[i + 1] == "\\"):
             j = line.find("'", i + 2)
@@ -54,7 +74,7 @@ def strip(line, state):
 
 def measure(path):
     lines = path.read_text().splitlines()
-    state = {"block": False}
+    state = {"block": False, "str": None}
     clean = [strip(line, state) for line in lines]
     test_start = None
     for i, line in enumerate(lines):
