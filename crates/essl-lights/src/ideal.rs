@@ -110,20 +110,30 @@ pub struct Terms {
     pub deferred: Vec<(usize, DVec3)>,
 }
 
-/// Evaluates the model at `s`. `shift` moves both cone cosines of every spot light (the
-/// reference band of the stiff matrix; 0 for the model itself). With `defer_screen`,
-/// screen-cookie lights are returned in [`Terms::deferred`] instead of being sampled (Gouraud:
-/// the vertex stage cannot know `gl_FragCoord`).
-#[allow(clippy::too_many_arguments)]
+/// How [`terms`] evaluates the model.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct TermOptions {
+    /// Moves both cone cosines of every spot light (the reference band of the stiff matrix;
+    /// 0 for the model itself).
+    pub shift: f64,
+    /// Returns screen-cookie lights in [`Terms::deferred`] instead of sampling them (Gouraud:
+    /// the vertex stage cannot know `gl_FragCoord`).
+    pub defer_screen: bool,
+}
+
+/// Evaluates the model at `s` as `options` say.
 pub fn terms(
     scene: &LitScene,
     prepared: &PreparedScene,
     s: &Surface,
     cookie: CookieFn<'_>,
     inv_viewport: DVec2,
-    shift: f64,
-    defer_screen: bool,
+    options: TermOptions,
 ) -> Terms {
+    let TermOptions {
+        shift,
+        defer_screen,
+    } = options;
     let m = &scene.material;
     let mut base = scene
         .ambient_light
@@ -191,5 +201,13 @@ pub fn color(
     cookie: CookieFn<'_>,
     inv_viewport: DVec2,
 ) -> DVec3 {
-    terms(scene, prepared, s, cookie, inv_viewport, 0.0, false).base
+    terms(
+        scene,
+        prepared,
+        s,
+        cookie,
+        inv_viewport,
+        TermOptions::default(),
+    )
+    .base
 }

@@ -92,8 +92,10 @@ impl RefShader for LitShader {
                     &s,
                     &|i, uv| self.cookie(i, uv),
                     self.inv_viewport,
-                    self.shift,
-                    true,
+                    crate::ideal::TermOptions {
+                        shift: self.shift,
+                        defer_screen: true,
+                    },
                 );
                 let mut out = t.base.to_array().to_vec();
                 for (_, c) in t.deferred {
@@ -120,8 +122,10 @@ impl RefShader for LitShader {
                     &s,
                     &|i, uv| self.cookie(i, uv),
                     self.inv_viewport,
-                    self.shift,
-                    false,
+                    crate::ideal::TermOptions {
+                        shift: self.shift,
+                        defer_screen: false,
+                    },
                 )
                 .base
             }

@@ -40,6 +40,140 @@ fn plot_err<E: std::fmt::Display>(e: E) -> LightsError {
     }
 }
 
+/// A point of the chart: milliseconds per frame, RMS error (floored), the variant.
+type Point<'r> = (f64, f64, &'r super::VariantResult);
+
+/// The chart's drawing context: log–log axes on an SVG string.
+type Chart<'a, 'b> = ChartContext<'a, SVGBackend<'b>, Cartesian2d<LogCoord<f64>, LogCoord<f64>>>;
+
+/// The range of the points: (x0, x1, y0, y1), a default when there are none.
+fn bounds(pts: &[Point]) -> (f64, f64, f64, f64) {
+    if pts.is_empty() {
+        return (0.1, 10.0, RMS_FLOOR, 10.0);
+    }
+    let (mut x0, mut x1) = (f64::INFINITY, 0.0f64);
+    let (mut y0, mut y1) = (f64::INFINITY, 0.0f64);
+    for &(x, y, _) in pts {
+        x0 = x0.min(x);
+        x1 = x1.max(x);
+        y0 = y0.min(y);
+        y1 = y1.max(y);
+    }
+    (x0, x1, y0, y1)
+}
+
+/// Joins each specialised/uber pair: same picture, different cost.
+fn draw_pairs(chart: &mut Chart, report: &Report, size: u32) -> Result<(), LightsError> {
+    for w in report.results.windows(2) {
+        if w[0].variant.program == ProgramKind::Specialised
+            && w[1].variant.program == ProgramKind::Uber
+            && w[0].variant.lit == w[1].variant.lit
+        {
+            let a = (w[0].ms(size), w[0].error.rms.max(RMS_FLOOR));
+            let b = (w[1].ms(size), w[1].error.rms.max(RMS_FLOOR));
+            if let ((Some(ax), ay), (Some(bx), by)) = (a, b) {
+                chart
+                    .draw_series(LineSeries::new(
+                        [(ax, ay), (bx, by)],
+                        RGBColor(190, 190, 190).stroke_width(1),
+                    ))
+                    .map_err(plot_err)?;
+            }
+        }
+    }
+    Ok(())
+}
+
+/// The Pareto front: a staircase through the non-dominated points (to `x_end`), and a ring
+/// around each of them.
+fn draw_front(chart: &mut Chart, pts: &[Point], x_end: f64) -> Result<(), LightsError> {
+    let mut front: Vec<(f64, f64)> = pts
+        .iter()
+        .filter(|p| p.2.pareto)
+        .map(|p| (p.0, p.1))
+        .collect();
+    front.sort_by(|a, b| a.0.total_cmp(&b.0));
+    let mut stairs = Vec::new();
+    for (i, &(x, y)) in front.iter().enumerate() {
+        if i > 0 {
+            stairs.push((x, front[i - 1].1));
+        }
+        stairs.push((x, y));
+    }
+    if let Some(&(_, y)) = front.last() {
+        stairs.push((x_end, y));
+    }
+    chart
+        .draw_series(DashedLineSeries::new(stairs, 6, 4, BLACK.stroke_width(2)))
+        .map_err(plot_err)?
+        .label("Pareto front (ringed points)")
+        .legend(|(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], BLACK.stroke_width(2)));
+    chart
+        .draw_series(
+            pts.iter()
+                .filter(|p| p.2.pareto)
+                .map(|p| Circle::new((p.0, p.1), 9, BLACK.stroke_width(2))),
+        )
+        .map_err(plot_err)?;
+    Ok(())
+}
+
+/// The points, labelled: a filled dot per measured variant, one legend entry per group, and
+/// a hollow triangle per emulated variant.
+fn draw_points(
+    chart: &mut Chart,
+    pts: &[Point],
+    offsets: &[(i32, i32)],
+) -> Result<(), LightsError> {
+    for g in Group::ALL {
+        let c = colour(g);
+        let members: Vec<_> = pts
+            .iter()
+            .zip(offsets)
+            .filter(|(p, _)| p.2.variant.group == g && !p.2.emulated())
+            .collect();
+        if members.is_empty() {
+            continue;
+        }
+        chart
+            .draw_series(members.iter().map(|(p, o)| {
+                EmptyElement::at((p.0, p.1))
+                    + Circle::new((0, 0), 5, c.filled())
+                    + Text::new(
+                        p.2.variant.label.clone(),
+                        **o,
+                        ("sans-serif", 12).into_font().color(&c),
+                    )
+            }))
+            .map_err(plot_err)?
+            .label(g.title())
+            .legend(move |(x, y)| Circle::new((x + 10, y), 5, c.filled()));
+    }
+    let emulated: Vec<_> = pts
+        .iter()
+        .zip(offsets)
+        .filter(|(p, _)| p.2.emulated())
+        .collect();
+    if !emulated.is_empty() {
+        let grey = RGBColor(90, 90, 90);
+        chart
+            .draw_series(emulated.iter().map(|(p, o)| {
+                let c = colour(p.2.variant.group);
+                EmptyElement::at((p.0, p.1))
+                    + PathElement::new(triangle(0, 0), c.stroke_width(2))
+                    + Text::new(
+                        p.2.variant.label.clone(),
+                        **o,
+                        ("sans-serif", 12).into_font().color(&c),
+                    )
+            }))
+            .map_err(plot_err)?
+            .label("emulated: binary16 error, fp32 lavapipe time (off the front)")
+            .legend(move |(x, y)| PathElement::new(triangle(x + 10, y), grey.stroke_width(2)));
+    }
+    Ok(())
+}
+
 /// The chart as SVG text.
 pub fn svg(report: &Report) -> Result<String, LightsError> {
     let size = report
@@ -49,7 +183,7 @@ pub fn svg(report: &Report) -> Result<String, LightsError> {
         .copied()
         .max()
         .unwrap_or(256);
-    let pts: Vec<(f64, f64, &super::VariantResult)> = report
+    let pts: Vec<Point> = report
         .results
         .iter()
         .filter_map(|r| Some((r.ms(size)?, r.error.rms.max(RMS_FLOOR), r)))
@@ -59,17 +193,7 @@ pub fn svg(report: &Report) -> Result<String, LightsError> {
     {
         let root = SVGBackend::with_string(&mut out, (1280, 860)).into_drawing_area();
         root.fill(&WHITE).map_err(plot_err)?;
-        let (mut x0, mut x1) = (f64::INFINITY, 0.0f64);
-        let (mut y0, mut y1) = (f64::INFINITY, 0.0f64);
-        for &(x, y, _) in &pts {
-            x0 = x0.min(x);
-            x1 = x1.max(x);
-            y0 = y0.min(y);
-            y1 = y1.max(y);
-        }
-        if pts.is_empty() {
-            (x0, x1, y0, y1) = (0.1, 10.0, RMS_FLOOR, 10.0);
-        }
+        let (x0, x1, y0, y1) = bounds(&pts);
         let caption = format!(
             "RMS error against time per frame at {size}² — essl-gl on {}",
             report.machine.renderer
@@ -95,104 +219,11 @@ pub fn svg(report: &Report) -> Result<String, LightsError> {
             .light_line_style(RGBColor(235, 235, 235))
             .draw()
             .map_err(plot_err)?;
-
-        // Specialised/uber pairs: same picture, different cost.
-        for w in report.results.windows(2) {
-            if w[0].variant.program == ProgramKind::Specialised
-                && w[1].variant.program == ProgramKind::Uber
-                && w[0].variant.lit == w[1].variant.lit
-            {
-                let a = (w[0].ms(size), w[0].error.rms.max(RMS_FLOOR));
-                let b = (w[1].ms(size), w[1].error.rms.max(RMS_FLOOR));
-                if let ((Some(ax), ay), (Some(bx), by)) = (a, b) {
-                    chart
-                        .draw_series(LineSeries::new(
-                            [(ax, ay), (bx, by)],
-                            RGBColor(190, 190, 190).stroke_width(1),
-                        ))
-                        .map_err(plot_err)?;
-                }
-            }
-        }
-
-        // The Pareto front: a staircase through the non-dominated points.
-        let mut front: Vec<(f64, f64)> = pts
-            .iter()
-            .filter(|p| p.2.pareto)
-            .map(|p| (p.0, p.1))
-            .collect();
-        front.sort_by(|a, b| a.0.total_cmp(&b.0));
-        let mut stairs = Vec::new();
-        for (i, &(x, y)) in front.iter().enumerate() {
-            if i > 0 {
-                stairs.push((x, front[i - 1].1));
-            }
-            stairs.push((x, y));
-        }
-        if let Some(&(_, y)) = front.last() {
-            stairs.push((x1 * 1.6, y));
-        }
-        chart
-            .draw_series(DashedLineSeries::new(stairs, 6, 4, BLACK.stroke_width(2)))
-            .map_err(plot_err)?
-            .label("Pareto front (ringed points)")
-            .legend(|(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], BLACK.stroke_width(2)));
-        chart
-            .draw_series(
-                pts.iter()
-                    .filter(|p| p.2.pareto)
-                    .map(|p| Circle::new((p.0, p.1), 9, BLACK.stroke_width(2))),
-            )
-            .map_err(plot_err)?;
-
+        draw_pairs(&mut chart, report, size)?;
+        draw_front(&mut chart, &pts, x1 * 1.6)?;
         // Labels placed greedily where they overlap no earlier label (estimated text boxes).
         let offsets = place_labels(&pts, |x, y| chart.backend_coord(&(x, y)));
-        for g in Group::ALL {
-            let c = colour(g);
-            let members: Vec<_> = pts
-                .iter()
-                .zip(&offsets)
-                .filter(|(p, _)| p.2.variant.group == g && !p.2.emulated())
-                .collect();
-            if members.is_empty() {
-                continue;
-            }
-            chart
-                .draw_series(members.iter().map(|(p, o)| {
-                    EmptyElement::at((p.0, p.1))
-                        + Circle::new((0, 0), 5, c.filled())
-                        + Text::new(
-                            p.2.variant.label.clone(),
-                            **o,
-                            ("sans-serif", 12).into_font().color(&c),
-                        )
-                }))
-                .map_err(plot_err)?
-                .label(g.title())
-                .legend(move |(x, y)| Circle::new((x + 10, y), 5, c.filled()));
-        }
-        let emulated: Vec<_> = pts
-            .iter()
-            .zip(&offsets)
-            .filter(|(p, _)| p.2.emulated())
-            .collect();
-        if !emulated.is_empty() {
-            let grey = RGBColor(90, 90, 90);
-            chart
-                .draw_series(emulated.iter().map(|(p, o)| {
-                    let c = colour(p.2.variant.group);
-                    EmptyElement::at((p.0, p.1))
-                        + PathElement::new(triangle(0, 0), c.stroke_width(2))
-                        + Text::new(
-                            p.2.variant.label.clone(),
-                            **o,
-                            ("sans-serif", 12).into_font().color(&c),
-                        )
-                }))
-                .map_err(plot_err)?
-                .label("emulated: binary16 error, fp32 lavapipe time (off the front)")
-                .legend(move |(x, y)| PathElement::new(triangle(x + 10, y), grey.stroke_width(2)));
-        }
+        draw_points(&mut chart, &pts, &offsets)?;
         chart
             .configure_series_labels()
             .position(SeriesLabelPosition::UpperRight)

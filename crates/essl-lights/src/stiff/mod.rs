@@ -391,9 +391,19 @@ fn bands(setup: &Setup) -> Option<Vec<(DVec3, DVec3)>> {
                 let vals: Vec<DVec3> = [-BAND, 0.0, BAND]
                     .iter()
                     .map(|&sh| {
-                        ideal::terms(r, &prepared, &s, &cookie, inv, sh, false)
-                            .base
-                            .clamp(DVec3::ZERO, DVec3::ONE)
+                        ideal::terms(
+                            r,
+                            &prepared,
+                            &s,
+                            &cookie,
+                            inv,
+                            ideal::TermOptions {
+                                shift: sh,
+                                defer_screen: false,
+                            },
+                        )
+                        .base
+                        .clamp(DVec3::ZERO, DVec3::ONE)
                     })
                     .collect();
                 (
