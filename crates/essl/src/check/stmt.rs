@@ -307,61 +307,8 @@ impl Checker<'_> {
         for s in &body.stmts {
             match &s.kind {
                 ast::StmtKind::Case(e) => {
-                    let v = self.expr(e);
-                    let value = if super::expr::is_error(&v) {
-                        None
-                    } else if let Some(c) = v.as_const().and_then(|c| c.as_int()).filter(|_| {
-                        v.ty.is_scalar()
-                            && matches!(
-                                v.ty.scalar_kind(),
-                                Some(ScalarKind::Int | ScalarKind::Uint)
-                            )
-                    }) {
-                        if v.ty != sel_ty && (sel_ty == Type::INT || sel_ty == Type::UINT) {
-                            let (a, b) = (self.type_name(&v.ty), self.type_name(&sel_ty));
-                            let d = self.error(
-                                "type-mismatch",
-                                v.span,
-                                format!("`case` label is {a} but the selector is {b}"),
-                            );
-                            d.label = format!("this is {a}");
-                        }
-                        Some(c)
-                    } else {
-                        let d = self.error(
-                            "non-constant-case",
-                            v.span,
-                            "a `case` label must be a constant integer expression",
-                        );
-                        d.label = "not a constant integer".into();
-                        None
-                    };
-                    if let Some(c) = value {
-                        if let Some((_, prev)) = seen.iter().find(|(x, _)| *x == c) {
-                            let prev = *prev;
-                            let d = self.error(
-                                "duplicate-case",
-                                s.span,
-                                format!("duplicate `case {c}`"),
-                            );
-                            d.label = "already handled".into();
-                            d.secondary.push(crate::diagnostic::Label {
-                                span: prev,
-                                message: "first here".into(),
-                            });
-                        } else {
-                            seen.push((c, s.span));
-                        }
-                    }
-                    if let Some(last) = cases.last_mut() {
-                        last.fall_through = !ends_in_jump(&last.body);
-                    }
-                    cases.push(hir::SwitchCase {
-                        value: Some(value.unwrap_or(i64::MIN)),
-                        body: Vec::new(),
-                        fall_through: true,
-                        span: s.span,
-                    });
+                    let value = self.case_label(e, s.span, &sel_ty, &mut seen);
+                    open_case(&mut cases, Some(value.unwrap_or(i64::MIN)), s.span);
                 }
                 ast::StmtKind::Default => {
                     if let Some(prev) = seen_default {
@@ -374,15 +321,7 @@ impl Checker<'_> {
                         });
                     }
                     seen_default = Some(s.span);
-                    if let Some(last) = cases.last_mut() {
-                        last.fall_through = !ends_in_jump(&last.body);
-                    }
-                    cases.push(hir::SwitchCase {
-                        value: None,
-                        body: Vec::new(),
-                        fall_through: true,
-                        span: s.span,
-                    });
+                    open_case(&mut cases, None, s.span);
                 }
                 _ => {
                     let mut stmts = Vec::new();
@@ -405,7 +344,69 @@ impl Checker<'_> {
         }
         self.fctx_mut().switches -= 1;
         self.pop_scope();
-        // The last label must be followed by a statement.
+        self.check_label_at_end(body);
+        if let Some(last) = cases.last_mut() {
+            last.fall_through = false;
+        }
+        let _ = span;
+        // Cases with a failed label are dropped.
+        cases.retain(|c| c.value != Some(i64::MIN));
+        StmtKind::Switch(selector, cases)
+    }
+
+    /// A `case` label's value: a constant integer of the selector's type, not seen before in
+    /// this `switch` (`seen` holds the values so far and where). `None` when invalid.
+    fn case_label(
+        &mut self,
+        e: &ast::Expr,
+        span: crate::source::Span,
+        sel_ty: &Type,
+        seen: &mut Vec<(i64, crate::source::Span)>,
+    ) -> Option<i64> {
+        let v = self.expr(e);
+        let value = if super::expr::is_error(&v) {
+            None
+        } else if let Some(c) = v.as_const().and_then(|c| c.as_int()).filter(|_| {
+            v.ty.is_scalar()
+                && matches!(v.ty.scalar_kind(), Some(ScalarKind::Int | ScalarKind::Uint))
+        }) {
+            if v.ty != *sel_ty && (*sel_ty == Type::INT || *sel_ty == Type::UINT) {
+                let (a, b) = (self.type_name(&v.ty), self.type_name(sel_ty));
+                let d = self.error(
+                    "type-mismatch",
+                    v.span,
+                    format!("`case` label is {a} but the selector is {b}"),
+                );
+                d.label = format!("this is {a}");
+            }
+            Some(c)
+        } else {
+            let d = self.error(
+                "non-constant-case",
+                v.span,
+                "a `case` label must be a constant integer expression",
+            );
+            d.label = "not a constant integer".into();
+            None
+        };
+        if let Some(c) = value {
+            if let Some((_, prev)) = seen.iter().find(|(x, _)| *x == c) {
+                let prev = *prev;
+                let d = self.error("duplicate-case", span, format!("duplicate `case {c}`"));
+                d.label = "already handled".into();
+                d.secondary.push(crate::diagnostic::Label {
+                    span: prev,
+                    message: "first here".into(),
+                });
+            } else {
+                seen.push((c, span));
+            }
+        }
+        value
+    }
+
+    /// The last label of a `switch` must be followed by a statement.
+    fn check_label_at_end(&mut self, body: &ast::Block) {
         let last_stmt_is_label = body
             .stmts
             .last()
@@ -425,13 +426,6 @@ impl Checker<'_> {
                 "break; ",
             ));
         }
-        if let Some(last) = cases.last_mut() {
-            last.fall_through = false;
-        }
-        let _ = span;
-        // Cases with a failed label are dropped.
-        cases.retain(|c| c.value != Some(i64::MIN));
-        StmtKind::Switch(selector, cases)
     }
 }
 
@@ -444,4 +438,18 @@ pub(crate) fn ends_in_jump(stmts: &[hir::Stmt]) -> bool {
         Some(StmtKind::Block(b)) => ends_in_jump(b),
         _ => false,
     }
+}
+
+/// Starts a new case in `cases` (`value` `None` for `default`); the case before falls through
+/// unless it ends in a jump.
+fn open_case(cases: &mut Vec<hir::SwitchCase>, value: Option<i64>, span: crate::source::Span) {
+    if let Some(last) = cases.last_mut() {
+        last.fall_through = !ends_in_jump(&last.body);
+    }
+    cases.push(hir::SwitchCase {
+        value,
+        body: Vec::new(),
+        fall_through: true,
+        span,
+    });
 }
