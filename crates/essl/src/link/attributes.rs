@@ -47,6 +47,8 @@ impl Linker<'_> {
         locations.push((gi, loc));
     }
 
+    /// Gives every active attribute a location: its binding or `layout(location)`, else the
+    /// first free slots; the active attributes and the locations.
     pub(super) fn link_attributes(
         &mut self,
         bindings: &[(String, u32)],

@@ -1,0 +1,263 @@
+//! GLSL ES 3.00's built-in functions (chapter 8), variables and constants (chapter 7).
+
+// The overload table reads best with owned `t.clone()` arguments throughout.
+#![allow(clippy::cloned_ref_to_slice_refs)]
+
+use std::collections::HashMap;
+use std::sync::OnceLock;
+
+mod signatures;
+mod texture;
+
+use crate::hir::ParamMode;
+use crate::types::{Precision, ScalarKind, Type};
+use crate::Stage;
+
+/// A built-in variable.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub enum BuiltinVar {
+    /// `out highp vec4 gl_Position` (vertex)
+    Position,
+    /// `out highp float gl_PointSize` (vertex)
+    PointSize,
+    /// `in highp int gl_VertexID` (vertex)
+    VertexId,
+    /// `in highp int gl_InstanceID` (vertex)
+    InstanceId,
+    /// `in highp vec4 gl_FragCoord` (fragment)
+    FragCoord,
+    /// `in bool gl_FrontFacing` (fragment)
+    FrontFacing,
+    /// `out highp float gl_FragDepth` (fragment)
+    FragDepth,
+    /// `in mediump vec2 gl_PointCoord` (fragment)
+    PointCoord,
+    /// `uniform gl_DepthRangeParameters gl_DepthRange` (both): near, far, diff.
+    DepthRange,
+}
+
+impl BuiltinVar {
+    /// The GLSL name.
+    pub fn name(self) -> &'static str {
+        match self {
+            BuiltinVar::Position => "gl_Position",
+            BuiltinVar::PointSize => "gl_PointSize",
+            BuiltinVar::VertexId => "gl_VertexID",
+            BuiltinVar::InstanceId => "gl_InstanceID",
+            BuiltinVar::FragCoord => "gl_FragCoord",
+            BuiltinVar::FrontFacing => "gl_FrontFacing",
+            BuiltinVar::FragDepth => "gl_FragDepth",
+            BuiltinVar::PointCoord => "gl_PointCoord",
+            BuiltinVar::DepthRange => "gl_DepthRange",
+        }
+    }
+
+    /// The variable called `name` in `stage`.
+    pub fn lookup(name: &str, stage: Stage) -> Option<BuiltinVar> {
+        use BuiltinVar::*;
+        let v = match name {
+            "gl_Position" => Position,
+            "gl_PointSize" => PointSize,
+            "gl_VertexID" => VertexId,
+            "gl_InstanceID" => InstanceId,
+            "gl_FragCoord" => FragCoord,
+            "gl_FrontFacing" => FrontFacing,
+            "gl_FragDepth" => FragDepth,
+            "gl_PointCoord" => PointCoord,
+            "gl_DepthRange" => DepthRange,
+            _ => return None,
+        };
+        (v.stage().is_none() || v.stage() == Some(stage)).then_some(v)
+    }
+
+    /// The stage that has it (`None`: both).
+    pub fn stage(self) -> Option<Stage> {
+        use BuiltinVar::*;
+        match self {
+            Position | PointSize | VertexId | InstanceId => Some(Stage::Vertex),
+            FragCoord | FrontFacing | FragDepth | PointCoord => Some(Stage::Fragment),
+            DepthRange => None,
+        }
+    }
+
+    /// Its type (`gl_DepthRange` is typed by the checker's built-in struct).
+    pub fn ty(self) -> Type {
+        use BuiltinVar::*;
+        match self {
+            Position | FragCoord => Type::Vector(ScalarKind::Float, 4),
+            PointSize | FragDepth => Type::FLOAT,
+            VertexId | InstanceId => Type::INT,
+            FrontFacing => Type::BOOL,
+            PointCoord => Type::Vector(ScalarKind::Float, 2),
+            DepthRange => Type::Void,
+        }
+    }
+
+    /// Its precision.
+    pub fn precision(self) -> Option<Precision> {
+        match self {
+            BuiltinVar::FrontFacing => None,
+            BuiltinVar::PointCoord => Some(Precision::Medium),
+            _ => Some(Precision::High),
+        }
+    }
+
+    /// Whether the shader may write it.
+    pub fn writable(self) -> bool {
+        matches!(
+            self,
+            BuiltinVar::Position | BuiltinVar::PointSize | BuiltinVar::FragDepth
+        )
+    }
+}
+
+/// Built-in constants (WebGL2's minimums, which ANGLE reports on SwiftShader too).
+pub fn constant(name: &str) -> Option<i32> {
+    Some(match name {
+        "gl_MaxVertexAttribs" => 16,
+        "gl_MaxVertexUniformVectors" => 256,
+        "gl_MaxVertexOutputVectors" => 16,
+        "gl_MaxFragmentInputVectors" => 15,
+        "gl_MaxVertexTextureImageUnits" => 16,
+        "gl_MaxCombinedTextureImageUnits" => 32,
+        "gl_MaxTextureImageUnits" => 16,
+        "gl_MaxFragmentUniformVectors" => 224,
+        "gl_MaxDrawBuffers" => 4,
+        "gl_MinProgramTexelOffset" => -8,
+        "gl_MaxProgramTexelOffset" => 7,
+        _ => return None,
+    })
+}
+
+macro_rules! ops {
+    ($($op:ident = $name:literal,)*) => {
+        /// A built-in function.
+        #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+        #[allow(missing_docs)]
+        pub enum BuiltinFn { $($op,)* }
+
+        impl BuiltinFn {
+            /// The GLSL name.
+            pub fn name(self) -> &'static str {
+                match self { $(BuiltinFn::$op => $name,)* }
+            }
+        }
+    };
+}
+
+ops! {
+    Radians = "radians", Degrees = "degrees", Sin = "sin", Cos = "cos", Tan = "tan",
+    Asin = "asin", Acos = "acos", Atan = "atan", Sinh = "sinh", Cosh = "cosh", Tanh = "tanh",
+    Asinh = "asinh", Acosh = "acosh", Atanh = "atanh",
+    Pow = "pow", Exp = "exp", Log = "log", Exp2 = "exp2", Log2 = "log2", Sqrt = "sqrt",
+    InverseSqrt = "inversesqrt",
+    Abs = "abs", Sign = "sign", Floor = "floor", Trunc = "trunc", Round = "round",
+    RoundEven = "roundEven", Ceil = "ceil", Fract = "fract", Mod = "mod", Modf = "modf",
+    Min = "min", Max = "max", Clamp = "clamp", Mix = "mix", Step = "step",
+    SmoothStep = "smoothstep", IsNan = "isnan", IsInf = "isinf",
+    FloatBitsToInt = "floatBitsToInt", FloatBitsToUint = "floatBitsToUint",
+    IntBitsToFloat = "intBitsToFloat", UintBitsToFloat = "uintBitsToFloat",
+    PackSnorm2x16 = "packSnorm2x16", UnpackSnorm2x16 = "unpackSnorm2x16",
+    PackUnorm2x16 = "packUnorm2x16", UnpackUnorm2x16 = "unpackUnorm2x16",
+    PackHalf2x16 = "packHalf2x16", UnpackHalf2x16 = "unpackHalf2x16",
+    Length = "length", Distance = "distance", Dot = "dot", Cross = "cross",
+    Normalize = "normalize", FaceForward = "faceforward", Reflect = "reflect",
+    Refract = "refract",
+    MatrixCompMult = "matrixCompMult", OuterProduct = "outerProduct", Transpose = "transpose",
+    Determinant = "determinant", Inverse = "inverse",
+    LessThan = "lessThan", LessThanEqual = "lessThanEqual", GreaterThan = "greaterThan",
+    GreaterThanEqual = "greaterThanEqual", Equal = "equal", NotEqual = "notEqual",
+    Any = "any", All = "all", Not = "not",
+    TextureSize = "textureSize", Texture = "texture", TextureProj = "textureProj",
+    TextureLod = "textureLod", TextureOffset = "textureOffset", TexelFetch = "texelFetch",
+    TexelFetchOffset = "texelFetchOffset", TextureProjOffset = "textureProjOffset",
+    TextureLodOffset = "textureLodOffset", TextureProjLod = "textureProjLod",
+    TextureProjLodOffset = "textureProjLodOffset", TextureGrad = "textureGrad",
+    TextureGradOffset = "textureGradOffset", TextureProjGrad = "textureProjGrad",
+    TextureProjGradOffset = "textureProjGradOffset",
+    DFdx = "dFdx", DFdy = "dFdy", Fwidth = "fwidth",
+}
+
+impl BuiltinFn {
+    /// Whether this is a texture lookup or query (not allowed in constant expressions).
+    pub fn is_texture(self) -> bool {
+        use BuiltinFn::*;
+        matches!(
+            self,
+            TextureSize
+                | Texture
+                | TextureProj
+                | TextureLod
+                | TextureOffset
+                | TexelFetch
+                | TexelFetchOffset
+                | TextureProjOffset
+                | TextureLodOffset
+                | TextureProjLod
+                | TextureProjLodOffset
+                | TextureGrad
+                | TextureGradOffset
+                | TextureProjGrad
+                | TextureProjGradOffset
+        )
+    }
+
+    /// Whether the function takes a constant `offset` argument (the last, or second to last
+    /// before a bias).
+    pub fn has_offset(self) -> bool {
+        use BuiltinFn::*;
+        matches!(
+            self,
+            TextureOffset
+                | TexelFetchOffset
+                | TextureProjOffset
+                | TextureLodOffset
+                | TextureProjLodOffset
+                | TextureGradOffset
+                | TextureProjGradOffset
+        )
+    }
+}
+
+/// One overload of a built-in function.
+#[derive(Clone, Debug)]
+pub struct Signature {
+    /// The function.
+    pub op: BuiltinFn,
+    /// Parameter types and modes.
+    pub params: Vec<(Type, ParamMode)>,
+    /// The return type.
+    pub ret: Type,
+    /// Only available in fragment shaders (bias variants, derivatives).
+    pub fragment_only: bool,
+}
+
+/// All overloads of the built-in function `name`.
+pub fn overloads(name: &str) -> Option<&'static [Signature]> {
+    table().get(name).map(|v| v.as_slice())
+}
+
+/// Whether `name` is a built-in function.
+pub fn is_builtin_function(name: &str) -> bool {
+    table().contains_key(name)
+}
+
+fn table() -> &'static HashMap<&'static str, Vec<Signature>> {
+    static TABLE: OnceLock<HashMap<&'static str, Vec<Signature>>> = OnceLock::new();
+    TABLE.get_or_init(signatures::build)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn table_has_the_expected_overloads() {
+        assert_eq!(overloads("dot").unwrap().len(), 4);
+        assert_eq!(overloads("texture").unwrap().len(), 3 * 4 * 2 + 2 * 2 + 1);
+        assert!(overloads("texture2D").is_none());
+        assert_eq!(overloads("transpose").unwrap().len(), 9);
+        // min: 3 kinds × (4 same-type + 3 scalar-second).
+        assert_eq!(overloads("min").unwrap().len(), 21);
+    }
+}
