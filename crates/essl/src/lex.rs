@@ -222,6 +222,17 @@ impl<'a> Cursor<'a> {
             false
         }
     }
+
+    /// Advances past the characters for which `f` holds.
+    fn eat_while(&mut self, f: impl Fn(char) -> bool) {
+        while let Some(c) = self.peek() {
+            if f(c) {
+                self.bump();
+            } else {
+                break;
+            }
+        }
+    }
 }
 
 /// Whether a character is GLSL whitespace (not counting line breaks).
@@ -279,55 +290,16 @@ pub fn lex(file: &SourceFile) -> Lexed {
                 space_before = true;
             }
             '/' if cur.peek() == Some('/') => {
-                // Line comment: to the end of the line (continuations included).
-                while let Some(c) = cur.peek() {
-                    if c == '\n' || c == '\r' {
-                        break;
-                    }
-                    let at = cur.pos;
-                    cur.bump();
-                    if c == '\u{A0}' {
-                        nbsp.push((Span::new(at as u32, cur.pos as u32), true));
-                    }
-                }
+                line_comment(&mut cur, &mut nbsp);
                 space_before = true;
             }
             '/' if cur.peek() == Some('*') => {
                 cur.bump();
-                let mut closed = false;
-                while let Some(c) = cur.bump() {
-                    if c == '*' && cur.peek() == Some('/') {
-                        cur.bump();
-                        closed = true;
-                        break;
-                    }
-                    if c == '\u{A0}' {
-                        let at = cur.pos - c.len_utf8();
-                        nbsp.push((Span::new(at as u32, cur.pos as u32), true));
-                    }
-                }
-                if !closed {
-                    out.diagnostics.push(
-                        Diagnostic::error(
-                            "unterminated-comment",
-                            "unterminated `/*` comment",
-                            Span::new(start as u32, start as u32 + 2),
-                        )
-                        .with_label("this comment is never closed")
-                        .with_help("close it with `*/`")
-                        .with_token("/*"),
-                    );
-                }
+                block_comment(&mut cur, start, &mut nbsp, &mut out.diagnostics);
                 space_before = true;
             }
             c if c.is_ascii_alphabetic() || c == '_' => {
-                while let Some(c) = cur.peek() {
-                    if c.is_ascii_alphanumeric() || c == '_' {
-                        cur.bump();
-                    } else {
-                        break;
-                    }
-                }
+                cur.eat_while(|c| c.is_ascii_alphanumeric() || c == '_');
                 let text = names.text(text, start, cur.pos);
                 push(
                     &mut out,
@@ -341,22 +313,7 @@ pub fn lex(file: &SourceFile) -> Lexed {
             c if c.is_ascii_digit()
                 || (c == '.' && cur.peek().is_some_and(|d| d.is_ascii_digit())) =>
             {
-                let mut s = String::new();
-                s.push(c);
-                let mut prev = c;
-                while let Some(c) = cur.peek() {
-                    let exponent_sign = (c == '+' || c == '-')
-                        && (prev == 'e' || prev == 'E')
-                        && !s.starts_with("0x")
-                        && !s.starts_with("0X");
-                    if c.is_ascii_alphanumeric() || c == '_' || c == '.' || exponent_sign {
-                        s.push(c);
-                        cur.bump();
-                        prev = c;
-                    } else {
-                        break;
-                    }
-                }
+                let s = number(&mut cur, c);
                 push(
                     &mut out,
                     PpKind::Number,
@@ -376,7 +333,84 @@ pub fn lex(file: &SourceFile) -> Lexed {
             }
         }
     }
-    let end = text.len() as u32;
+    finish(&mut out, text.len() as u32, space_before);
+    report_nbsp(file, &nbsp, &mut out.diagnostics);
+    out
+}
+
+/// A line comment after its `/`: to the end of the line (continuations included). No-break
+/// spaces in it go to `nbsp`.
+fn line_comment(cur: &mut Cursor<'_>, nbsp: &mut Vec<(Span, bool)>) {
+    while let Some(c) = cur.peek() {
+        if c == '\n' || c == '\r' {
+            break;
+        }
+        let at = cur.pos;
+        cur.bump();
+        if c == '\u{A0}' {
+            nbsp.push((Span::new(at as u32, cur.pos as u32), true));
+        }
+    }
+}
+
+/// A block comment after its `/*` (which starts at `start`): to the `*/`, or reported as
+/// unterminated. No-break spaces in it go to `nbsp`.
+fn block_comment(
+    cur: &mut Cursor<'_>,
+    start: usize,
+    nbsp: &mut Vec<(Span, bool)>,
+    diagnostics: &mut Vec<Diagnostic>,
+) {
+    let mut closed = false;
+    while let Some(c) = cur.bump() {
+        if c == '*' && cur.peek() == Some('/') {
+            cur.bump();
+            closed = true;
+            break;
+        }
+        if c == '\u{A0}' {
+            let at = cur.pos - c.len_utf8();
+            nbsp.push((Span::new(at as u32, cur.pos as u32), true));
+        }
+    }
+    if !closed {
+        diagnostics.push(
+            Diagnostic::error(
+                "unterminated-comment",
+                "unterminated `/*` comment",
+                Span::new(start as u32, start as u32 + 2),
+            )
+            .with_label("this comment is never closed")
+            .with_help("close it with `*/`")
+            .with_token("/*"),
+        );
+    }
+}
+
+/// A preprocessing number starting with `first`: digits, letters, `_`, `.`, and a sign after
+/// a decimal exponent's `e`.
+fn number(cur: &mut Cursor<'_>, first: char) -> String {
+    let mut s = String::new();
+    s.push(first);
+    let mut prev = first;
+    while let Some(c) = cur.peek() {
+        let exponent_sign = (c == '+' || c == '-')
+            && (prev == 'e' || prev == 'E')
+            && !s.starts_with("0x")
+            && !s.starts_with("0X");
+        if c.is_ascii_alphanumeric() || c == '_' || c == '.' || exponent_sign {
+            s.push(c);
+            cur.bump();
+            prev = c;
+        } else {
+            break;
+        }
+    }
+    s
+}
+
+/// Ends the token list: a line break if the last line has none, then the end of file.
+fn finish(out: &mut Lexed, end: u32, space_before: bool) {
     // A last line without a line break still ends.
     if out.tokens.last().is_some_and(|t| t.kind != PpKind::Newline) {
         out.tokens.push(PpToken {
@@ -394,8 +428,6 @@ pub fn lex(file: &SourceFile) -> Lexed {
         space_before: false,
         from_macro: false,
     });
-    report_nbsp(file, &nbsp, &mut out.diagnostics);
-    out
 }
 
 fn push(out: &mut Lexed, kind: PpKind, start: usize, end: usize, text: Arc<str>, space: &mut bool) {

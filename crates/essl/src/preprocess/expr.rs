@@ -48,6 +48,23 @@ fn binary(p: Punct) -> Option<u8> {
     })
 }
 
+/// A binary operation to evaluate.
+struct Operation<'a> {
+    /// The operator.
+    op: Punct,
+    /// The operator's token (for diagnostics).
+    op_tok: &'a Tok,
+    /// The left operand's value.
+    a: i32,
+    /// The right operand's value.
+    b: i32,
+    /// The right operand's span.
+    bspan: Span,
+    /// Whether the operation is evaluated: `false` in the skipped operand of `&&` and `||`,
+    /// where errors are not reported.
+    eval: bool,
+}
+
 impl<'t> ExprParser<'t> {
     /// A parser over `toks` (which end with `Eof`).
     pub fn new(toks: &'t [Tok], directive: &'static str, signed_literals: bool) -> Self {
@@ -119,24 +136,32 @@ impl<'t> ExprParser<'t> {
                 Punct::OrOr => self.binary(diags, prec + 1, eval && lhs == 0)?,
                 _ => self.binary(diags, prec + 1, eval)?,
             };
-            lhs = self.apply(diags, op, op_tok, lhs, rhs, rspan, eval);
+            let operation = Operation {
+                op,
+                op_tok,
+                a: lhs,
+                b: rhs,
+                bspan: rspan,
+                eval,
+            };
+            lhs = self.apply(diags, operation);
             span = span.to(rspan);
         }
         Some((lhs, span))
     }
 
-    #[allow(clippy::too_many_arguments)]
-    fn apply(
-        &mut self,
-        diags: &mut Vec<Diagnostic>,
-        op: Punct,
-        op_tok: &Tok,
-        a: i32,
-        b: i32,
-        bspan: Span,
-        eval: bool,
-    ) -> i32 {
+    /// The value of a binary operation; a shift out of range or a division by zero is
+    /// reported (where evaluated) and gives 0.
+    fn apply(&mut self, diags: &mut Vec<Diagnostic>, operation: Operation<'_>) -> i32 {
         use Punct::*;
+        let Operation {
+            op,
+            op_tok,
+            a,
+            b,
+            bspan,
+            eval,
+        } = operation;
         match op {
             OrOr => (a != 0 || b != 0) as i32,
             AndAnd => (a != 0 && b != 0) as i32,
