@@ -1,7 +1,7 @@
 //! Access to parts of a value: indexing, struct fields, swizzles and uniform block members.
 
 use super::{constant, error_expr, is_error};
-use crate::ast::{self};
+use crate::ast;
 use crate::check::fold;
 use crate::check::{Checker, Sym};
 use crate::hir::{ConstValue, Expr, ExprKind};

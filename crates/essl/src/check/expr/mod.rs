@@ -9,7 +9,7 @@ mod construct;
 mod operators;
 
 use super::{Checker, Sym, Var};
-use crate::ast::{self};
+use crate::ast;
 use crate::builtins::{self, BuiltinVar};
 use crate::diagnostic::{Applicability, Fix, Label};
 use crate::hir::{self, ConstValue, Expr, ExprKind, GlobalKind, Scalar};
@@ -31,6 +31,7 @@ pub(crate) fn is_error(e: &Expr) -> bool {
     e.ty == Type::Void && matches!(e.kind, ExprKind::Const(_))
 }
 
+/// A constant expression of type `ty`.
 pub(super) fn constant(value: ConstValue, ty: Type, span: Span) -> Expr {
     Expr {
         kind: ExprKind::Const(value),
