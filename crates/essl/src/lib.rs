@@ -22,6 +22,7 @@ pub mod render;
 pub mod shader;
 pub mod snapshot;
 pub mod source;
+mod stack;
 pub mod token;
 pub mod types;
 pub mod usage;

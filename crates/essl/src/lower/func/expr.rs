@@ -4,8 +4,8 @@
 
 use naga::{Expression, Handle, Literal, Span as NSpan, Statement};
 
-use super::{all_finite, global_constant, has_effects, int_zero_divisor, literal};
 use super::operators::Operand;
+use super::{all_finite, global_constant, has_effects, int_zero_divisor, literal};
 use super::{FnCx, ParamLower};
 use crate::ast::BinaryOp;
 use crate::builtins::BuiltinVar;
