@@ -1,0 +1,282 @@
+//! What a draw reads, collected from the program and the bound state: the buffer ranges of
+//! its uniform blocks, where each vertex input's values come from, and the texture each
+//! sampler slot samples. WebGL2's type rules are checked along the way (an input fed another
+//! type than the shader's, a unit serving two sampler types, a texture of the wrong kind).
+
+use essl::types::{SamplerDim, ScalarKind, Type};
+
+use super::{SlotPlan, Source};
+use crate::context::Context;
+use crate::gl;
+use crate::objects::Id;
+use crate::program::{ShaderInput, ValueKind};
+use crate::shader_patch::Norm32;
+use crate::texture::{view_dimension, SampleKind};
+use crate::vertex_array::{GenericAttrib, VertexAttrib};
+
+/// How a vertex format feeds an attribute.
+#[derive(Clone, Copy, Debug)]
+pub(super) struct Feed {
+    pub(super) format: wgpu::VertexFormat,
+    pub(super) kind: ValueKind,
+    pub(super) count: u8,
+    pub(super) used: u8,
+    pub(super) norm: Option<Norm32>,
+}
+
+/// The wgpu vertex format for an attribute array, and what the shader must still do.
+fn feed_for(a: &VertexAttrib) -> Feed {
+    use wgpu::VertexFormat as V;
+    let n = a.size;
+    // wgpu has no 3-component 8/16-bit formats: those are read as 4 components.
+    let pick = |one: V, two: V, four: V| match n {
+        1 => (one, 1),
+        2 => (two, 2),
+        _ => (four, 4),
+    };
+    let (format, count, kind, norm) = match (a.ty, a.normalized && !a.integer) {
+        (gl::FLOAT, _) => {
+            let f = [V::Float32, V::Float32x2, V::Float32x3, V::Float32x4][n as usize - 1];
+            (f, n, ValueKind::Float, None)
+        }
+        (gl::HALF_FLOAT, _) => {
+            let (f, c) = pick(V::Float16, V::Float16x2, V::Float16x4);
+            (f, c, ValueKind::Float, None)
+        }
+        (gl::BYTE, true) => {
+            let (f, c) = pick(V::Snorm8, V::Snorm8x2, V::Snorm8x4);
+            (f, c, ValueKind::Float, None)
+        }
+        (gl::UNSIGNED_BYTE, true) => {
+            let (f, c) = pick(V::Unorm8, V::Unorm8x2, V::Unorm8x4);
+            (f, c, ValueKind::Float, None)
+        }
+        (gl::SHORT, true) => {
+            let (f, c) = pick(V::Snorm16, V::Snorm16x2, V::Snorm16x4);
+            (f, c, ValueKind::Float, None)
+        }
+        (gl::UNSIGNED_SHORT, true) => {
+            let (f, c) = pick(V::Unorm16, V::Unorm16x2, V::Unorm16x4);
+            (f, c, ValueKind::Float, None)
+        }
+        (gl::BYTE, false) => {
+            let (f, c) = pick(V::Sint8, V::Sint8x2, V::Sint8x4);
+            (f, c, ValueKind::Sint, None)
+        }
+        (gl::UNSIGNED_BYTE, false) => {
+            let (f, c) = pick(V::Uint8, V::Uint8x2, V::Uint8x4);
+            (f, c, ValueKind::Uint, None)
+        }
+        (gl::SHORT, false) => {
+            let (f, c) = pick(V::Sint16, V::Sint16x2, V::Sint16x4);
+            (f, c, ValueKind::Sint, None)
+        }
+        (gl::UNSIGNED_SHORT, false) => {
+            let (f, c) = pick(V::Uint16, V::Uint16x2, V::Uint16x4);
+            (f, c, ValueKind::Uint, None)
+        }
+        (gl::INT, norm) => {
+            let f = [V::Sint32, V::Sint32x2, V::Sint32x3, V::Sint32x4][n as usize - 1];
+            (f, n, ValueKind::Sint, norm.then_some(Norm32::Signed))
+        }
+        (_, norm) => {
+            let f = [V::Uint32, V::Uint32x2, V::Uint32x3, V::Uint32x4][n as usize - 1];
+            (f, n, ValueKind::Uint, norm.then_some(Norm32::Unsigned))
+        }
+    };
+    Feed {
+        format,
+        kind,
+        count,
+        used: n.min(count),
+        norm,
+    }
+}
+
+/// The sampler type of a GLSL type, `None` for a type that is not a sampler.
+fn sampler_type(ty: essl::types::GlType) -> Option<essl::types::SamplerType> {
+    match ty.to_type() {
+        Type::Sampler(s) => Some(s),
+        _ => None,
+    }
+}
+
+/// The texture target a sampler of dimension `dim` reads.
+fn dim_target(dim: SamplerDim) -> u32 {
+    match dim {
+        SamplerDim::D2 => gl::TEXTURE_2D,
+        SamplerDim::D3 => gl::TEXTURE_3D,
+        SamplerDim::Cube => gl::TEXTURE_CUBE_MAP,
+        SamplerDim::D2Array => gl::TEXTURE_2D_ARRAY,
+    }
+}
+
+impl Context {
+    /// The buffer range (buffer, offset, size) bound for each uniform block of program
+    /// `pid`; a block without a buffer, or with too small a range → `INVALID_OPERATION`.
+    pub(super) fn gather_blocks(&mut self, pid: Id, f: &str) -> Option<Vec<(Id, u64, u64)>> {
+        let linked = self
+            .programs
+            .get_any(pid)
+            .and_then(|p| p.linked.as_ref())
+            .expect("current programs are linked");
+        // Uniform blocks read the buffer ranges bound to their binding points.
+        let mut blocks = Vec::new();
+        for (i, block) in linked.layout.blocks.iter().enumerate() {
+            let point = linked.block_bindings[i] as usize;
+            let Some((buffer, offset, size)) = self.uniform_bindings.get(point).copied().flatten()
+            else {
+                let msg = format!(
+                    "uniform block {} has no buffer at binding point {point}",
+                    block.name
+                );
+                return self.fail(gl::INVALID_OPERATION, f, msg);
+            };
+            let len = self
+                .buffers
+                .get_any(buffer)
+                .map_or(0, |b| b.data.len() as u64);
+            let size = size.unwrap_or(len.saturating_sub(offset));
+            if offset + size > len || size < block.size as u64 {
+                let msg = format!(
+                    "the buffer range of uniform block {} is too small",
+                    block.name
+                );
+                return self.fail(gl::INVALID_OPERATION, f, msg);
+            }
+            blocks.push((buffer, offset, size));
+        }
+        Some(blocks)
+    }
+
+    /// Where each vertex input of program `pid` comes from; an array or generic value of
+    /// another type than the shader's → `INVALID_OPERATION` (WebGL2).
+    pub(super) fn gather_sources(
+        &mut self,
+        pid: Id,
+        f: &str,
+    ) -> Option<Vec<(ShaderInput, Source)>> {
+        let linked = self
+            .programs
+            .get_any(pid)
+            .and_then(|p| p.linked.as_ref())
+            .expect("current programs are linked");
+        let mut sources = Vec::new();
+        for input in &linked.inputs {
+            let a = &self.vao().attribs[input.location as usize];
+            let source = if a.enabled {
+                let feed = feed_for(a);
+                let ok = if a.integer {
+                    feed.kind == input.kind
+                } else {
+                    input.kind == ValueKind::Float
+                };
+                if !ok {
+                    let msg = format!(
+                        "attribute {} is fed a type that does not match the shader's",
+                        input.location
+                    );
+                    return self.fail(gl::INVALID_OPERATION, f, msg);
+                }
+                Source::Array {
+                    buffer: a.buffer.expect("checked above"),
+                    attrib: a.clone(),
+                    feed,
+                }
+            } else {
+                let g = self.generic_attribs[input.location as usize];
+                let kind = match g {
+                    GenericAttrib::Float(_) => ValueKind::Float,
+                    GenericAttrib::Int(_) => ValueKind::Sint,
+                    GenericAttrib::Uint(_) => ValueKind::Uint,
+                };
+                if kind != input.kind {
+                    let msg = format!(
+                        "generic value of attribute {} does not match the shader's type",
+                        input.location
+                    );
+                    return self.fail(gl::INVALID_OPERATION, f, msg);
+                }
+                Source::Constant(g)
+            };
+            sources.push((*input, source));
+        }
+        Some(sources)
+    }
+
+    /// What each sampler slot of program `pid` reads. One unit may not serve two sampler
+    /// types, and a complete texture must match its sampler's kind (`INVALID_OPERATION`).
+    pub(super) fn gather_samplers(&mut self, pid: Id, f: &str) -> Option<Vec<SlotPlan>> {
+        let linked = self
+            .programs
+            .get_any(pid)
+            .and_then(|p| p.linked.as_ref())
+            .expect("current programs are linked");
+        let mut slot_plans = Vec::new();
+        let mut unit_targets: Vec<(u32, u32)> = Vec::new();
+        for (s, slot) in linked.layout.samplers.iter().enumerate() {
+            let Some(st) = sampler_type(slot.ty) else {
+                return self.fail(
+                    gl::INVALID_OPERATION,
+                    f,
+                    "sampler slot of a non-sampler type",
+                );
+            };
+            let unit = linked.sampler_units[s];
+            let target = dim_target(st.dim);
+            if unit_targets.iter().any(|&(u, t)| u == unit && t != target) {
+                return self.fail(
+                    gl::INVALID_OPERATION,
+                    f,
+                    format_args!("texture unit {unit} used by samplers of two types"),
+                );
+            }
+            unit_targets.push((unit, target));
+            let kind = match (st.shadow || slot.comparison, st.kind) {
+                (true, _) => SampleKind::Depth,
+                (false, ScalarKind::Int) => SampleKind::Sint,
+                (false, ScalarKind::Uint) => SampleKind::Uint,
+                _ => SampleKind::Float,
+            };
+            let texture = self.texture_units[unit as usize]
+                .get(target)
+                .and_then(|id| {
+                    self.textures
+                        .get_any(id)
+                        .and_then(|t| t.completeness())
+                        .map(|c| (id, c))
+                });
+            if let Some((_, c)) = &texture {
+                if c.format.kind() != kind {
+                    let msg = format!("texture on unit {unit} does not match its sampler's type");
+                    return self.fail(gl::INVALID_OPERATION, f, msg);
+                }
+            }
+            slot_plans.push(SlotPlan {
+                texture,
+                dim: view_dimension(target),
+                kind,
+            });
+        }
+        Some(slot_plans)
+    }
+
+    /// Checks that program `pid` writes floats to the (normalized) default framebuffer.
+    pub(super) fn check_output(&mut self, pid: Id, f: &str) -> Option<()> {
+        let linked = self
+            .programs
+            .get_any(pid)
+            .and_then(|p| p.linked.as_ref())
+            .expect("current programs are linked");
+        if let Some((kind, _)) = linked.output0 {
+            if kind != ValueKind::Float {
+                return self.fail(
+                    gl::INVALID_OPERATION,
+                    f,
+                    "integer fragment output to a normalized framebuffer",
+                );
+            }
+        }
+        Some(())
+    }
+}

@@ -1,0 +1,307 @@
+//! The end of a draw: the pipeline for the program, vertex layout and GL state (fetched from
+//! the cache or built), and the commands recorded into the open render pass — only the pass
+//! state that changed since the last draw is set again.
+
+use super::encode::{DrawRange, Groups};
+use super::DrawCall;
+use crate::context::Context;
+use crate::gl;
+use crate::pipeline::{CachedPipeline, PipelineKey, VertexSlot};
+use crate::shader_patch::InputPatch;
+use crate::texture::compare_function;
+
+/// The wgpu blend factor for a GL one.
+fn blend_factor(f: u32) -> wgpu::BlendFactor {
+    use wgpu::BlendFactor as B;
+    match f {
+        gl::ZERO => B::Zero,
+        gl::ONE => B::One,
+        gl::SRC_COLOR => B::Src,
+        gl::ONE_MINUS_SRC_COLOR => B::OneMinusSrc,
+        gl::DST_COLOR => B::Dst,
+        gl::ONE_MINUS_DST_COLOR => B::OneMinusDst,
+        gl::SRC_ALPHA => B::SrcAlpha,
+        gl::ONE_MINUS_SRC_ALPHA => B::OneMinusSrcAlpha,
+        gl::DST_ALPHA => B::DstAlpha,
+        gl::ONE_MINUS_DST_ALPHA => B::OneMinusDstAlpha,
+        gl::CONSTANT_COLOR | gl::CONSTANT_ALPHA => B::Constant,
+        gl::ONE_MINUS_CONSTANT_COLOR | gl::ONE_MINUS_CONSTANT_ALPHA => B::OneMinusConstant,
+        _ => B::SrcAlphaSaturated,
+    }
+}
+
+/// The wgpu blend component for GL's source and destination factors and equation.
+fn blend_component(src: u32, dst: u32, eq: u32) -> wgpu::BlendComponent {
+    let operation = match eq {
+        gl::FUNC_SUBTRACT => wgpu::BlendOperation::Subtract,
+        gl::FUNC_REVERSE_SUBTRACT => wgpu::BlendOperation::ReverseSubtract,
+        gl::MIN => wgpu::BlendOperation::Min,
+        gl::MAX => wgpu::BlendOperation::Max,
+        _ => wgpu::BlendOperation::Add,
+    };
+    // GL ignores the factors of MIN and MAX; wgpu requires them to be One.
+    if matches!(eq, gl::MIN | gl::MAX) {
+        return wgpu::BlendComponent {
+            src_factor: wgpu::BlendFactor::One,
+            dst_factor: wgpu::BlendFactor::One,
+            operation,
+        };
+    }
+    wgpu::BlendComponent {
+        src_factor: blend_factor(src),
+        dst_factor: blend_factor(dst),
+        operation,
+    }
+}
+
+/// The colour write mask for GL's `colorMask`.
+fn write_mask(color_mask: &[bool; 4]) -> wgpu::ColorWrites {
+    let mut write_mask = wgpu::ColorWrites::empty();
+    for (m, bit) in color_mask.iter().zip([
+        wgpu::ColorWrites::RED,
+        wgpu::ColorWrites::GREEN,
+        wgpu::ColorWrites::BLUE,
+        wgpu::ColorWrites::ALPHA,
+    ]) {
+        if *m {
+            write_mask |= bit;
+        }
+    }
+    write_mask
+}
+
+/// What the pass is set to for a draw beyond its pipeline and bindings.
+struct PassValues {
+    /// x, y, width, height, near, far, in wgpu's coordinates.
+    viewport: [f32; 6],
+    /// The blend constant, and whether the blend state reads it.
+    blend_constant: [f32; 4],
+    uses_constant: bool,
+}
+
+impl Context {
+    /// Encodes a checked draw and records it into the open render pass.
+    pub(super) fn encode_draw(&mut self, call: DrawCall) {
+        let vertex = self.bind_vertex_inputs(&call);
+        let Some(range) = self.bind_indices(&call) else {
+            return;
+        };
+        let groups = self.bind_groups(&call);
+        let (key, values) = self.pipeline_key(&call, vertex.slots, vertex.patches, &range, &groups);
+        let linked = self
+            .programs
+            .get_any_mut(call.program)
+            .and_then(|p| p.linked.as_mut())
+            .expect("current programs are linked");
+        let pipeline = match self.pipelines.pipeline(&self.gpu, &key, linked) {
+            Ok(p) => p,
+            Err(e) => {
+                self.errors.record(gl::INVALID_OPERATION, || {
+                    format!("draw: INVALID_OPERATION: wgpu rejected the pipeline: {e}")
+                });
+                return;
+            }
+        };
+        self.record_draw(&call, &pipeline, &values, groups, vertex.bindings, range);
+    }
+
+    /// The pipeline key of the draw from the GL state, and the pass values that go with it.
+    fn pipeline_key(
+        &self,
+        call: &DrawCall,
+        slots: Vec<VertexSlot>,
+        patches: Vec<InputPatch>,
+        range: &DrawRange,
+        groups: &Groups,
+    ) -> (PipelineKey, PassValues) {
+        let strip = matches!(
+            call.topology,
+            wgpu::PrimitiveTopology::LineStrip | wgpu::PrimitiveTopology::TriangleStrip
+        );
+        let strip_index_format = if strip {
+            range.index.as_ref().map(|i| i.2)
+        } else {
+            None
+        };
+        let program = self
+            .programs
+            .get_any(call.program)
+            .and_then(|p| p.linked.as_ref())
+            .expect("current programs are linked")
+            .serial;
+        let s = &self.state;
+        let blend = s.blend.then(|| wgpu::BlendState {
+            color: blend_component(s.blend_src_rgb, s.blend_dst_rgb, s.blend_equation_rgb),
+            alpha: blend_component(s.blend_src_alpha, s.blend_dst_alpha, s.blend_equation_alpha),
+        });
+        let constant_alpha = [
+            s.blend_src_rgb,
+            s.blend_dst_rgb,
+            s.blend_src_alpha,
+            s.blend_dst_alpha,
+        ]
+        .iter()
+        .any(|&f| matches!(f, gl::CONSTANT_ALPHA | gl::ONE_MINUS_CONSTANT_ALPHA));
+        let blend_constant = if constant_alpha {
+            [s.blend_color[3]; 4]
+        } else {
+            s.blend_color
+        };
+        let cull_mode = match (s.cull_face, s.cull_face_mode) {
+            (true, gl::FRONT) => Some(wgpu::Face::Front),
+            (true, gl::BACK) => Some(wgpu::Face::Back),
+            _ => None,
+        };
+        let (depth_write, depth_compare) = if s.depth_test {
+            (s.depth_mask, compare_function(s.depth_func))
+        } else {
+            (false, wgpu::CompareFunction::Always)
+        };
+        let depth_bias = if s.polygon_offset_fill && call.triangles {
+            (
+                s.polygon_offset_units as i32,
+                s.polygon_offset_factor.to_bits(),
+            )
+        } else {
+            (0, 0f32.to_bits())
+        };
+        let key = PipelineKey {
+            program,
+            vertex: slots,
+            patches,
+            topology: call.topology,
+            strip_index_format,
+            cull_mode,
+            front_face: if s.front_face == gl::CW {
+                wgpu::FrontFace::Cw
+            } else {
+                wgpu::FrontFace::Ccw
+            },
+            depth_write,
+            depth_compare,
+            depth_bias,
+            blend,
+            write_mask: write_mask(&s.color_mask),
+            slots: groups.slot_bindings.clone(),
+        };
+        let uses_constant = blend.is_some_and(|b| {
+            [
+                b.color.src_factor,
+                b.color.dst_factor,
+                b.alpha.src_factor,
+                b.alpha.dst_factor,
+            ]
+            .iter()
+            .any(|f| {
+                matches!(
+                    f,
+                    wgpu::BlendFactor::Constant | wgpu::BlendFactor::OneMinusConstant
+                )
+            })
+        });
+        let values = PassValues {
+            viewport: self.draw_viewport(),
+            blend_constant,
+            uses_constant,
+        };
+        (key, values)
+    }
+
+    /// The viewport in wgpu's coordinates (origin top-left), clamped to what wgpu accepts,
+    /// with the depth range.
+    fn draw_viewport(&self) -> [f32; 6] {
+        let s = &self.state;
+        let fh = self.fb.height as i64;
+        let [vx, vy, vw, vh] = s.viewport.map(|v| v as i64);
+        let max = 2 * self.gpu.limits.max_texture_dimension_2d as i64 - 1;
+        let top = (fh - (vy + vh)).clamp(-max, max - vh);
+        let vx = vx.clamp(-max, max - vw);
+        [
+            vx as f32,
+            top as f32,
+            vw as f32,
+            vh as f32,
+            s.depth_range[0],
+            s.depth_range[1],
+        ]
+    }
+
+    /// Records the draw into the open render pass, setting only the pass state that changed.
+    fn record_draw(
+        &mut self,
+        call: &DrawCall,
+        pipeline: &CachedPipeline,
+        values: &PassValues,
+        groups: Groups,
+        bindings: Vec<(wgpu::Buffer, u64)>,
+        range: DrawRange,
+    ) {
+        let viewport = values.viewport;
+        let viewport_bits = viewport.map(f32::to_bits);
+        let blend_bits = values.blend_constant.map(f32::to_bits);
+        let scissor = call.scissor;
+        self.frame.pass(&self.gpu, &self.fb);
+        let frame = &mut self.frame;
+        let pass = frame.pass.as_mut().expect("opened above");
+        let ps = &mut frame.pass_state;
+        if ps.pipeline != Some(pipeline.id) {
+            pass.set_pipeline(&pipeline.pipeline);
+            ps.pipeline = Some(pipeline.id);
+        }
+        if ps.viewport != Some(viewport_bits) {
+            pass.set_viewport(
+                viewport[0],
+                viewport[1],
+                viewport[2],
+                viewport[3],
+                viewport[4],
+                viewport[5],
+            );
+            ps.viewport = Some(viewport_bits);
+        }
+        if ps.scissor != Some(scissor) {
+            pass.set_scissor_rect(scissor[0], scissor[1], scissor[2], scissor[3]);
+            ps.scissor = Some(scissor);
+        }
+        if values.uses_constant && ps.blend_constant != Some(blend_bits) {
+            let [r, g, b, a] = values.blend_constant.map(|c| c as f64);
+            pass.set_blend_constant(wgpu::Color { r, g, b, a });
+            ps.blend_constant = Some(blend_bits);
+        }
+        // Bindings are pass state: set only what changed since the last draw.
+        if let Some((group, offset)) = &groups.group0 {
+            if ps.group0.as_ref() != Some(&(group.clone(), *offset)) {
+                pass.set_bind_group(0, group, offset.as_slice());
+                ps.group0 = groups.group0.clone();
+            }
+        }
+        if let Some(group) = &groups.group1 {
+            if ps.group1.as_ref() != Some(group) {
+                pass.set_bind_group(1, group, &[]);
+                ps.group1 = groups.group1.clone();
+            }
+        }
+        if ps.vertex_buffers.len() < bindings.len() {
+            ps.vertex_buffers.resize(bindings.len(), None);
+        }
+        for (slot, binding) in bindings.into_iter().enumerate() {
+            if ps.vertex_buffers[slot].as_ref() != Some(&binding) {
+                pass.set_vertex_buffer(slot as u32, binding.0.slice(binding.1..));
+                ps.vertex_buffers[slot] = Some(binding);
+            }
+        }
+        let instances = call.instances;
+        match range.index {
+            Some((buffer, offset, format, range)) => {
+                let binding = (buffer, offset, format);
+                if ps.index_buffer.as_ref() != Some(&binding) {
+                    pass.set_index_buffer(binding.0.slice(offset..), format);
+                    ps.index_buffer = Some(binding);
+                }
+                pass.draw_indexed(range, 0, 0..instances);
+            }
+            None => pass.draw(range.vertices, 0..instances),
+        }
+        frame.draws += 1;
+    }
+}

@@ -1,0 +1,231 @@
+//! WebGL's checks of a draw, in the order browsers make them, and the [`DrawCall`] that a
+//! draw which passes them becomes. What the program reads is collected (and checked) by
+//! [`super::gather`].
+
+use super::topology::{index_size, read_indices, Emulated};
+use super::{DrawArgs, DrawCall, Indices, Source};
+use crate::context::Context;
+use crate::gl;
+use crate::program::ShaderInput;
+
+impl Context {
+    /// Records a GL error and answers `None`, for checks that end a draw.
+    pub(super) fn fail<T>(
+        &mut self,
+        code: u32,
+        function: &str,
+        what: impl std::fmt::Display,
+    ) -> Option<T> {
+        self.error(code, function, what);
+        None
+    }
+
+    /// Checks a draw and gathers what it reads; `None` when it draws nothing (with the error
+    /// recorded when WebGL's rules are broken).
+    pub(super) fn prepare_draw(&mut self, args: DrawArgs) -> Option<DrawCall> {
+        let f = args.function;
+        let (topology, mut emulated) = self.draw_topology(args.mode, f)?;
+        if args.first < 0 || args.count < 0 || args.instances < 0 {
+            return self.fail(
+                gl::INVALID_VALUE,
+                f,
+                "negative first, count or instance count",
+            );
+        }
+        let index_info = match args.elements {
+            Some((ty, offset)) => Some(self.check_index_args(ty, offset, f)?),
+            None => None,
+        };
+        let Some(pid) = self.current_program else {
+            return self.fail(gl::INVALID_OPERATION, f, "no program in use");
+        };
+        let indices = match index_info {
+            None => Indices::None {
+                first: args.first as u32,
+            },
+            Some((ty, offset)) => match self.vao().element_buffer {
+                Some(buffer) => Indices::Elements { buffer, ty, offset },
+                None => {
+                    return self.fail(gl::INVALID_OPERATION, f, "no ELEMENT_ARRAY_BUFFER bound")
+                }
+            },
+        };
+        if let Some(i) = self
+            .vao()
+            .attribs
+            .iter()
+            .position(|a| a.enabled && a.buffer.is_none())
+        {
+            return self.fail(
+                gl::INVALID_OPERATION,
+                f,
+                format_args!("attribute {i} is enabled but has no buffer"),
+            );
+        }
+        let blocks = self.gather_blocks(pid, f)?;
+        let sources = self.gather_sources(pid, f)?;
+        let slot_plans = self.gather_samplers(pid, f)?;
+        self.check_output(pid, f)?;
+        if args.count == 0 || args.instances == 0 {
+            return None;
+        }
+        let (count, instances) = (args.count as u32, args.instances as u32);
+        let (max_vertex, restarts) = self.index_range(&indices, count, f)?;
+        if restarts && emulated == Emulated::None {
+            match args.mode {
+                gl::POINTS => emulated = Emulated::List(1),
+                gl::LINES => emulated = Emulated::List(2),
+                gl::TRIANGLES => emulated = Emulated::List(3),
+                _ => {}
+            }
+        }
+        self.check_attribute_ranges(&sources, max_vertex, instances, f)?;
+
+        // Draws that GL would rasterize to nothing.
+        let s = &self.state;
+        let triangles = matches!(
+            args.mode,
+            gl::TRIANGLES | gl::TRIANGLE_STRIP | gl::TRIANGLE_FAN
+        );
+        if s.rasterizer_discard
+            || (s.cull_face && s.cull_face_mode == gl::FRONT_AND_BACK && triangles)
+            || s.viewport[2] == 0
+            || s.viewport[3] == 0
+        {
+            return None;
+        }
+        let scissor = self.scissor_rect()?;
+        Some(DrawCall {
+            program: pid,
+            topology,
+            emulated,
+            triangles,
+            indices,
+            count,
+            instances,
+            sources,
+            slot_plans,
+            blocks,
+            scissor,
+        })
+    }
+
+    /// The wgpu topology for a GL mode, and how it is emulated; `INVALID_ENUM` for others.
+    fn draw_topology(&mut self, mode: u32, f: &str) -> Option<(wgpu::PrimitiveTopology, Emulated)> {
+        use wgpu::PrimitiveTopology as T;
+        Some(match mode {
+            gl::POINTS => (T::PointList, Emulated::None),
+            gl::LINES => (T::LineList, Emulated::None),
+            gl::LINE_STRIP => (T::LineStrip, Emulated::None),
+            gl::LINE_LOOP => (T::LineStrip, Emulated::LineLoop),
+            gl::TRIANGLES => (T::TriangleList, Emulated::None),
+            gl::TRIANGLE_STRIP => (T::TriangleStrip, Emulated::None),
+            gl::TRIANGLE_FAN => (T::TriangleList, Emulated::TriangleFan),
+            _ => return self.fail(gl::INVALID_ENUM, f, format_args!("mode 0x{mode:04X}")),
+        })
+    }
+
+    /// Checks the index type and offset of `draw_elements`: the type and the offset as
+    /// `u64`.
+    fn check_index_args(&mut self, ty: u32, offset: i64, f: &str) -> Option<(u32, u64)> {
+        let Some(size) = index_size(ty) else {
+            return self.fail(gl::INVALID_ENUM, f, format_args!("index type 0x{ty:04X}"));
+        };
+        if offset < 0 {
+            return self.fail(gl::INVALID_VALUE, f, "negative offset");
+        }
+        if offset as u64 % size != 0 {
+            return self.fail(
+                gl::INVALID_OPERATION,
+                f,
+                "offset is not a multiple of the index size",
+            );
+        }
+        Some((ty, offset as u64))
+    }
+
+    /// The largest vertex the draw reads (`None`: no vertex, all indices restart) and
+    /// whether the indices hold the restart index; indices past the end of the element
+    /// buffer → `INVALID_OPERATION`. The element buffer caches the answer per version.
+    fn index_range(
+        &mut self,
+        indices: &Indices,
+        count: u32,
+        f: &str,
+    ) -> Option<(Option<u64>, bool)> {
+        let (buffer, ty, offset) = match indices {
+            Indices::None { first } => {
+                return Some((Some(*first as u64 + count as u64 - 1), false))
+            }
+            Indices::Elements { buffer, ty, offset } => (*buffer, *ty, *offset),
+        };
+        let size = index_size(ty).expect("checked");
+        let b = self
+            .buffers
+            .get_any_mut(buffer)
+            .expect("bound buffers are alive");
+        if offset + count as u64 * size > b.data.len() as u64 {
+            return self.fail(
+                gl::INVALID_OPERATION,
+                f,
+                "indices past the end of the element buffer",
+            );
+        }
+        let key = (ty, offset, count as u64, b.version);
+        let (max, restarts) = match b.max_index_cache {
+            Some((k, m, r)) if k == key => (m, r),
+            _ => {
+                let (mut max, mut restarts) = (None, false);
+                for i in read_indices(&b.data, ty, offset, count as u64) {
+                    if i == u32::MAX {
+                        restarts = true;
+                    } else {
+                        max = max.max(Some(i));
+                    }
+                }
+                b.max_index_cache = Some((key, max, restarts));
+                (max, restarts)
+            }
+        };
+        Some((max.map(u64::from), restarts))
+    }
+
+    /// Checks that no enabled array is read past the end of its buffer, up to vertex
+    /// `max_vertex` (or the last instance, for instanced arrays).
+    fn check_attribute_ranges(
+        &mut self,
+        sources: &[(ShaderInput, Source)],
+        max_vertex: Option<u64>,
+        instances: u32,
+        f: &str,
+    ) -> Option<()> {
+        for (input, source) in sources {
+            let Source::Array {
+                buffer, attrib: a, ..
+            } = source
+            else {
+                continue;
+            };
+            let last = if a.divisor == 0 {
+                max_vertex
+            } else {
+                Some((instances as u64 - 1) / a.divisor as u64)
+            };
+            let Some(last) = last else { continue };
+            let len = self
+                .buffers
+                .get_any(*buffer)
+                .expect("attached buffers are alive")
+                .data
+                .len() as u64;
+            if a.offset + last * a.effective_stride() + a.element_size() > len {
+                let msg = format!(
+                    "attribute {} reads past the end of its buffer",
+                    input.location
+                );
+                return self.fail(gl::INVALID_OPERATION, f, msg);
+            }
+        }
+        Some(())
+    }
+}
