@@ -1,0 +1,374 @@
+//! A texture object: its level images on the CPU, its parameters, GL ES 3.0 completeness,
+//! and the GPU texture made from the complete levels when a draw samples it.
+
+use super::format::InternalFormat;
+use super::sampling::SamplerKey;
+use crate::context::Gpu;
+use crate::gl;
+
+/// One level image (of one cube face).
+#[derive(Clone, Debug)]
+pub(crate) struct Level {
+    pub(crate) width: u32,
+    pub(crate) height: u32,
+    /// Depth of a 3D texture, layers of a 2D array, 1 otherwise.
+    pub(crate) depth: u32,
+    pub(crate) format: InternalFormat,
+    /// Texels in the GPU format, tightly packed, row 0 first.
+    pub(crate) data: Vec<u8>,
+}
+
+/// Sampling parameters (`tex_parameteri`/`tex_parameterf`).
+#[derive(Clone, Debug, PartialEq)]
+pub(crate) struct TexParams {
+    pub(crate) min_filter: u32,
+    pub(crate) mag_filter: u32,
+    pub(crate) wrap_s: u32,
+    pub(crate) wrap_t: u32,
+    pub(crate) wrap_r: u32,
+    pub(crate) min_lod: f32,
+    pub(crate) max_lod: f32,
+    pub(crate) base_level: u32,
+    pub(crate) max_level: u32,
+    pub(crate) compare_mode: u32,
+    pub(crate) compare_func: u32,
+}
+
+impl Default for TexParams {
+    fn default() -> Self {
+        TexParams {
+            min_filter: gl::NEAREST_MIPMAP_LINEAR,
+            mag_filter: gl::LINEAR,
+            wrap_s: gl::REPEAT,
+            wrap_t: gl::REPEAT,
+            wrap_r: gl::REPEAT,
+            min_lod: -1000.0,
+            max_lod: 1000.0,
+            base_level: 0,
+            max_level: 1000,
+            compare_mode: gl::NONE,
+            compare_func: gl::LEQUAL,
+        }
+    }
+}
+
+impl TexParams {
+    pub(super) fn mipmapped(&self) -> bool {
+        !matches!(self.min_filter, gl::NEAREST | gl::LINEAR)
+    }
+}
+
+/// The GPU copy of a texture: levels `base..base + levels` of the GL texture.
+pub(crate) struct GpuTexture {
+    pub(crate) view: wgpu::TextureView,
+    texture: wgpu::Texture,
+    base: u32,
+    levels: u32,
+    version: u64,
+    pub(crate) last_batch: u64,
+}
+
+/// A texture object.
+pub(crate) struct TextureObject {
+    /// The target it was first bound to; fixed from then on.
+    pub(crate) target: Option<u32>,
+    /// `faces[face][level]`: 6 faces for a cube map, 1 otherwise.
+    pub(crate) faces: Vec<Vec<Option<Level>>>,
+    pub(crate) params: TexParams,
+    /// Levels of an immutable texture (`tex_storage_*`).
+    pub(crate) immutable_levels: Option<u32>,
+    /// Bumped on every change of an image.
+    pub(crate) version: u64,
+    pub(crate) gpu: Option<GpuTexture>,
+}
+
+/// What a complete texture uses: levels `base..base + levels`.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) struct Complete {
+    pub(crate) base: u32,
+    pub(crate) levels: u32,
+    pub(crate) format: InternalFormat,
+}
+
+pub(super) fn mip_size(size: u32, level: u32) -> u32 {
+    (size >> level.min(31)).max(1)
+}
+
+impl TextureObject {
+    pub(super) fn new() -> Self {
+        TextureObject {
+            target: None,
+            faces: Vec::new(),
+            params: TexParams::default(),
+            immutable_levels: None,
+            version: 0,
+            gpu: None,
+        }
+    }
+
+    pub(super) fn level(&self, face: usize, level: u32) -> Option<&Level> {
+        self.faces.get(face)?.get(level as usize)?.as_ref()
+    }
+
+    pub(super) fn set_level(&mut self, face: usize, level: u32, image: Level) {
+        let faces = if self.target == Some(gl::TEXTURE_CUBE_MAP) {
+            6
+        } else {
+            1
+        };
+        if self.faces.len() < faces {
+            self.faces.resize_with(faces, Vec::new);
+        }
+        let levels = &mut self.faces[face];
+        if levels.len() <= level as usize {
+            levels.resize_with(level as usize + 1, || None);
+        }
+        levels[level as usize] = Some(image);
+        self.version += 1;
+    }
+
+    /// The effective base and max levels (clamped for immutable textures, ES 3.0 §3.8.10).
+    pub(super) fn level_range(&self) -> (u32, u32) {
+        let p = &self.params;
+        match self.immutable_levels {
+            Some(n) => {
+                let base = p.base_level.min(n - 1);
+                (base, p.max_level.clamp(base, n - 1))
+            }
+            None => (p.base_level, p.max_level),
+        }
+    }
+
+    /// GL ES 3.0's texture completeness (§3.8.13): `None` when incomplete, in which case
+    /// sampling returns (0, 0, 0, 1).
+    pub(crate) fn completeness(&self) -> Option<Complete> {
+        let target = self.target?;
+        let (base, max) = self.level_range();
+        let faces = if target == gl::TEXTURE_CUBE_MAP { 6 } else { 1 };
+        let first = self.level(0, base)?;
+        if first.width == 0 || first.height == 0 || first.depth == 0 {
+            return None;
+        }
+        let format = first.format;
+        for face in 1..faces {
+            let l = self.level(face, base)?;
+            if (l.width, l.height, l.depth, l.format)
+                != (first.width, first.height, first.depth, format)
+            {
+                return None;
+            }
+        }
+        if target == gl::TEXTURE_CUBE_MAP && first.width != first.height {
+            return None;
+        }
+        let p = &self.params;
+        if !format.filterable()
+            && (p.mag_filter != gl::NEAREST
+                || !matches!(p.min_filter, gl::NEAREST | gl::NEAREST_MIPMAP_NEAREST))
+        {
+            return None;
+        }
+        if !p.mipmapped() {
+            return Some(Complete {
+                base,
+                levels: 1,
+                format,
+            });
+        }
+        if base > max {
+            return None;
+        }
+        let largest = match target {
+            gl::TEXTURE_3D => first.width.max(first.height).max(first.depth),
+            _ => first.width.max(first.height),
+        };
+        let q = (base + (31 - largest.leading_zeros())).min(max);
+        for level in base + 1..=q {
+            let i = level - base;
+            let depth = if target == gl::TEXTURE_3D {
+                mip_size(first.depth, i)
+            } else {
+                first.depth
+            };
+            let want = (
+                mip_size(first.width, i),
+                mip_size(first.height, i),
+                depth,
+                format,
+            );
+            for face in 0..faces {
+                let l = self.level(face, level)?;
+                if (l.width, l.height, l.depth, l.format) != want {
+                    return None;
+                }
+            }
+        }
+        Some(Complete {
+            base,
+            levels: q - base + 1,
+            format,
+        })
+    }
+
+    /// The GPU texture view for a complete texture, made or updated as needed.
+    pub(crate) fn gpu_view(&mut self, gpu: &Gpu, serial: u64, c: &Complete) -> wgpu::TextureView {
+        if let Some(g) = &mut self.gpu {
+            if g.version == self.version && g.base == c.base && g.levels == c.levels {
+                g.last_batch = serial;
+                return g.view.clone();
+            }
+        }
+        let target = self.target.expect("complete textures have a target");
+        let first = self.level(0, c.base).expect("complete");
+        let (width, height, depth) = (first.width, first.height, first.depth);
+        let layers = if target == gl::TEXTURE_CUBE_MAP {
+            6
+        } else {
+            depth
+        };
+        let same_shape = self.gpu.as_ref().is_some_and(|g| {
+            g.base == c.base
+                && g.levels == c.levels
+                && g.last_batch != serial
+                && g.texture.format() == c.format.gpu_format()
+                && g.texture.width() == width
+                && g.texture.height() == height
+                && g.texture.depth_or_array_layers() == layers
+        });
+        if !same_shape {
+            let dimension = if target == gl::TEXTURE_3D {
+                wgpu::TextureDimension::D3
+            } else {
+                wgpu::TextureDimension::D2
+            };
+            let texture = gpu.device.create_texture(&wgpu::TextureDescriptor {
+                label: Some("essl-gl texture"),
+                size: wgpu::Extent3d {
+                    width,
+                    height,
+                    depth_or_array_layers: layers,
+                },
+                mip_level_count: c.levels,
+                sample_count: 1,
+                dimension,
+                format: c.format.gpu_format(),
+                usage: wgpu::TextureUsages::TEXTURE_BINDING | wgpu::TextureUsages::COPY_DST,
+                view_formats: &[],
+            });
+            let view = texture.create_view(&wgpu::TextureViewDescriptor {
+                dimension: Some(view_dimension(target)),
+                ..Default::default()
+            });
+            self.gpu = Some(GpuTexture {
+                view,
+                texture,
+                base: c.base,
+                levels: c.levels,
+                version: 0,
+                last_batch: 0,
+            });
+        }
+        let faces = if target == gl::TEXTURE_CUBE_MAP { 6 } else { 1 };
+        let g = self.gpu.as_ref().expect("made above");
+        for i in 0..c.levels {
+            for face in 0..faces {
+                let l = self.faces[face][(c.base + i) as usize]
+                    .as_ref()
+                    .expect("complete");
+                let texel = l.format.texel_size() as u32;
+                gpu.queue.write_texture(
+                    wgpu::TexelCopyTextureInfo {
+                        texture: &g.texture,
+                        mip_level: i,
+                        origin: wgpu::Origin3d {
+                            x: 0,
+                            y: 0,
+                            z: face as u32,
+                        },
+                        aspect: wgpu::TextureAspect::All,
+                    },
+                    &l.data,
+                    wgpu::TexelCopyBufferLayout {
+                        offset: 0,
+                        bytes_per_row: Some(l.width * texel),
+                        rows_per_image: Some(l.height),
+                    },
+                    wgpu::Extent3d {
+                        width: l.width,
+                        height: l.height,
+                        depth_or_array_layers: l.depth,
+                    },
+                );
+            }
+        }
+        let version = self.version;
+        let g = self.gpu.as_mut().expect("made above");
+        g.version = version;
+        g.last_batch = serial;
+        g.view.clone()
+    }
+
+    /// The sampler a complete texture is sampled with.
+    pub(crate) fn sampler_key(&self, comparison: bool) -> SamplerKey {
+        let p = &self.params;
+        let filter = |f: u32| match f {
+            gl::NEAREST | gl::NEAREST_MIPMAP_NEAREST | gl::NEAREST_MIPMAP_LINEAR => {
+                wgpu::FilterMode::Nearest
+            }
+            _ => wgpu::FilterMode::Linear,
+        };
+        let (mip, lod_min, lod_max) = if p.mipmapped() {
+            let mip = match p.min_filter {
+                gl::NEAREST_MIPMAP_NEAREST | gl::LINEAR_MIPMAP_NEAREST => {
+                    wgpu::MipmapFilterMode::Nearest
+                }
+                _ => wgpu::MipmapFilterMode::Linear,
+            };
+            let lo = p.min_lod.clamp(0.0, 1000.0);
+            let hi = p.max_lod.min(1000.0).max(lo);
+            (mip, lo, hi)
+        } else {
+            // Vulkan's way to sample only the base level while keeping the
+            // minification/magnification choice: a maximum LOD of 0.25.
+            (wgpu::MipmapFilterMode::Nearest, 0.0, 0.25)
+        };
+        let wrap = |w: u32| match w {
+            gl::CLAMP_TO_EDGE => wgpu::AddressMode::ClampToEdge,
+            gl::MIRRORED_REPEAT => wgpu::AddressMode::MirrorRepeat,
+            _ => wgpu::AddressMode::Repeat,
+        };
+        SamplerKey {
+            min: filter(p.min_filter),
+            mag: filter(p.mag_filter),
+            mip,
+            wrap: [wrap(p.wrap_s), wrap(p.wrap_t), wrap(p.wrap_r)],
+            lod_min: lod_min.to_bits(),
+            lod_max: lod_max.to_bits(),
+            compare: comparison.then(|| compare_function(p.compare_func)),
+        }
+    }
+}
+
+/// wgpu's comparison function for a GL one.
+pub(crate) fn compare_function(func: u32) -> wgpu::CompareFunction {
+    match func {
+        gl::NEVER => wgpu::CompareFunction::Never,
+        gl::LESS => wgpu::CompareFunction::Less,
+        gl::EQUAL => wgpu::CompareFunction::Equal,
+        gl::LEQUAL => wgpu::CompareFunction::LessEqual,
+        gl::GREATER => wgpu::CompareFunction::Greater,
+        gl::NOTEQUAL => wgpu::CompareFunction::NotEqual,
+        gl::GEQUAL => wgpu::CompareFunction::GreaterEqual,
+        _ => wgpu::CompareFunction::Always,
+    }
+}
+
+/// The view dimension for a texture target.
+pub(crate) fn view_dimension(target: u32) -> wgpu::TextureViewDimension {
+    match target {
+        gl::TEXTURE_CUBE_MAP => wgpu::TextureViewDimension::Cube,
+        gl::TEXTURE_3D => wgpu::TextureViewDimension::D3,
+        gl::TEXTURE_2D_ARRAY => wgpu::TextureViewDimension::D2Array,
+        _ => wgpu::TextureViewDimension::D2,
+    }
+}

@@ -1,0 +1,178 @@
+//! Client pixel data: where a region lies by GL's `UNPACK_*` rules, and the conversion of
+//! pixels of a `(format, type)` into an internal format's storage layout.
+
+use super::format::{f32_to_f16, Expand, InternalFormat};
+use crate::gl;
+use crate::state::PixelStore;
+
+pub(super) fn unpack_16(v: u16, ty: u32) -> [u8; 4] {
+    let scale = |x: u16, bits: u32| -> u8 {
+        let max = (1u32 << bits) - 1;
+        ((x as u32 * 255 + max / 2) / max) as u8
+    };
+    match ty {
+        gl::UNSIGNED_SHORT_5_6_5 => [
+            scale(v >> 11, 5),
+            scale((v >> 5) & 0x3F, 6),
+            scale(v & 0x1F, 5),
+            255,
+        ],
+        gl::UNSIGNED_SHORT_4_4_4_4 => [
+            scale(v >> 12, 4),
+            scale((v >> 8) & 0xF, 4),
+            scale((v >> 4) & 0xF, 4),
+            scale(v & 0xF, 4),
+        ],
+        _ => [
+            scale(v >> 11, 5),
+            scale((v >> 6) & 0x1F, 5),
+            scale((v >> 1) & 0x1F, 5),
+            if v & 1 != 0 { 255 } else { 0 },
+        ],
+    }
+}
+
+/// Converts `count` pixels of `(format, ty)` client data to the storage of `f`.
+pub(super) fn convert_pixels(
+    src: &[u8],
+    count: usize,
+    f: &InternalFormat,
+    ty: u32,
+    out: &mut Vec<u8>,
+) {
+    if matches!(
+        ty,
+        gl::UNSIGNED_SHORT_5_6_5 | gl::UNSIGNED_SHORT_4_4_4_4 | gl::UNSIGNED_SHORT_5_5_5_1
+    ) {
+        for px in src.chunks_exact(2).take(count) {
+            out.extend_from_slice(&unpack_16(u16::from_ne_bytes([px[0], px[1]]), ty));
+        }
+        return;
+    }
+    let cs = f.comp.size();
+    let src_cs = if ty == gl::FLOAT { 4 } else { cs };
+    let n = f.channels as usize;
+    let one = f.comp.one();
+    let zero = [0u8; 4];
+    let comp = |px: &[u8], c: usize| -> [u8; 4] {
+        let s = &px[c * src_cs..(c + 1) * src_cs];
+        let mut b = [0u8; 4];
+        if src_cs == cs {
+            b[..cs].copy_from_slice(s);
+        } else {
+            let v = f32::from_ne_bytes([s[0], s[1], s[2], s[3]]);
+            b[..2].copy_from_slice(&f32_to_f16(v).to_ne_bytes());
+        }
+        b
+    };
+    for px in src.chunks_exact(n * src_cs).take(count) {
+        let mut push = |b: [u8; 4]| out.extend_from_slice(&b[..cs]);
+        match f.expand {
+            Expand::None => {
+                for c in 0..n {
+                    push(comp(px, c));
+                }
+                if n == 3 {
+                    push(one);
+                }
+            }
+            Expand::Luminance => {
+                let l = comp(px, 0);
+                [l, l, l, one].into_iter().for_each(push);
+            }
+            Expand::Alpha => [zero, zero, zero, comp(px, 0)].into_iter().for_each(push),
+            Expand::LuminanceAlpha => {
+                let l = comp(px, 0);
+                [l, l, l, comp(px, 1)].into_iter().for_each(push);
+            }
+        }
+    }
+}
+
+/// Where a region of client pixel data lies, by GL's unpack rules.
+pub(super) struct Unpack {
+    pub(super) start: usize,
+    pub(super) row_stride: usize,
+    pub(super) image_stride: usize,
+    pub(super) pixel: usize,
+    pub(super) needed: usize,
+}
+
+pub(super) fn unpack_layout(
+    store: &PixelStore,
+    w: u32,
+    h: u32,
+    d: u32,
+    pixel: usize,
+    three_d: bool,
+) -> Unpack {
+    let row_len = if store.unpack_row_length > 0 {
+        store.unpack_row_length
+    } else {
+        w
+    } as usize;
+    let a = store.unpack_alignment as usize;
+    let row_stride = (row_len * pixel).div_ceil(a) * a;
+    let image_height = if three_d && store.unpack_image_height > 0 {
+        store.unpack_image_height
+    } else {
+        h
+    };
+    let image_stride = row_stride * image_height as usize;
+    let skip_images = if three_d {
+        store.unpack_skip_images as usize
+    } else {
+        0
+    };
+    let start = skip_images * image_stride
+        + store.unpack_skip_rows as usize * row_stride
+        + store.unpack_skip_pixels as usize * pixel;
+    let needed = if w == 0 || h == 0 || d == 0 {
+        0
+    } else {
+        start + (d as usize - 1) * image_stride + (h as usize - 1) * row_stride + w as usize * pixel
+    };
+    Unpack {
+        start,
+        row_stride,
+        image_stride,
+        pixel,
+        needed,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::texture::internal_format;
+
+    #[test]
+    pub(super) fn half_floats_round_to_nearest_even() {
+        assert_eq!(f32_to_f16(1.0), 0x3C00);
+        assert_eq!(f32_to_f16(-2.0), 0xC000);
+        assert_eq!(f32_to_f16(65504.0), 0x7BFF);
+        assert_eq!(f32_to_f16(1.0e6), 0x7C00);
+        assert_eq!(f32_to_f16(5.960_464_5e-8), 0x0001);
+        assert_eq!(f32_to_f16(0.0), 0);
+    }
+
+    #[test]
+    pub(super) fn legacy_formats_expand_to_rgba() {
+        let f = internal_format(gl::LUMINANCE_ALPHA).unwrap();
+        let mut out = Vec::new();
+        convert_pixels(&[10, 20], 1, &f, gl::UNSIGNED_BYTE, &mut out);
+        assert_eq!(out, [10, 10, 10, 20]);
+        let f = internal_format(gl::RGB).unwrap();
+        out.clear();
+        convert_pixels(&[0xFF, 0xFF], 1, &f, gl::UNSIGNED_SHORT_5_6_5, &mut out);
+        assert_eq!(out, [255, 255, 255, 255]);
+    }
+
+    #[test]
+    pub(super) fn unpack_alignment_pads_rows() {
+        let store = PixelStore::default();
+        let u = unpack_layout(&store, 3, 2, 1, 3, false);
+        assert_eq!(u.row_stride, 12);
+        assert_eq!(u.needed, 12 + 9);
+    }
+}

@@ -1,0 +1,464 @@
+//! Specifying level images from client data: `tex_image_2d`, `tex_image_3d`,
+//! `tex_sub_image_2d`, `tex_sub_image_3d`, with GL's checks of level, size and format.
+
+use super::format::{
+    format_channels, internal_format, is_pixel_type, pixel_size, Comp, InternalFormat,
+};
+use super::image_target;
+use super::object::Level;
+use super::pixels::{convert_pixels, unpack_layout};
+use crate::context::Context;
+use crate::gl;
+
+/// What `texImage2D` and `texImage3D` specify: a level of the texture bound to `target` (or
+/// of a cube map face), its internal format and size, and the client data (zeros for `None`).
+struct TexImage<'a> {
+    target: u32,
+    level: i32,
+    internalformat: i32,
+    /// Width, height, depth (1 in 2D).
+    size: [i32; 3],
+    border: i32,
+    format: u32,
+    ty: u32,
+    pixels: Option<&'a [u8]>,
+    function: &'static str,
+}
+
+/// What `texSubImage2D` and `texSubImage3D` replace: a box of a level, and the client data.
+struct TexSubImage<'a> {
+    target: u32,
+    level: i32,
+    /// x, y, z of the box's first texel (z is 0 in 2D).
+    offset: [i32; 3],
+    /// Width, height, depth of the box (depth is 1 in 2D).
+    size: [i32; 3],
+    format: u32,
+    ty: u32,
+    pixels: &'a [u8],
+    function: &'static str,
+}
+
+/// A block of client pixel data to read: its bytes, size in pixels, `(format, type)`, and
+/// whether the 3D unpack parameters (`UNPACK_IMAGE_HEIGHT`, `UNPACK_SKIP_IMAGES`) apply.
+struct ClientPixels<'a> {
+    src: &'a [u8],
+    size: [u32; 3],
+    format: u32,
+    ty: u32,
+    three_d: bool,
+}
+
+impl Context {
+    /// Specifies a level of a 2D texture or of a cube map face (`texImage2D`) from
+    /// `width` × `height` pixels of `(format, ty)` data, laid out by the `UNPACK_*` pixel
+    /// storage parameters, or zeros for `None`. Row 0 of the data is row 0 of the texture.
+    ///
+    /// Supported internal formats: `RGBA`, `RGB`, `LUMINANCE_ALPHA`, `LUMINANCE`, `ALPHA`
+    /// (unsigned bytes and the packed 16-bit types), and the sized colour formats of
+    /// ES 3.0 except `R11F_G11F_B10F`, `RGB9_E5`, `RGB10_A2`, `RGB10_A2UI` (those and depth
+    /// formats record `INVALID_ENUM`).
+    #[allow(clippy::too_many_arguments)]
+    pub fn tex_image_2d(
+        &mut self,
+        target: u32,
+        level: i32,
+        internalformat: i32,
+        width: i32,
+        height: i32,
+        border: i32,
+        format: u32,
+        ty: u32,
+        pixels: Option<&[u8]>,
+    ) {
+        const F: &str = "texImage2D";
+        match image_target(target) {
+            Some((gl::TEXTURE_2D | gl::TEXTURE_CUBE_MAP, _)) => {}
+            _ => return self.error(gl::INVALID_ENUM, F, format_args!("target 0x{target:04X}")),
+        }
+        self.tex_image(TexImage {
+            target,
+            level,
+            internalformat,
+            size: [width, height, 1],
+            border,
+            format,
+            ty,
+            pixels,
+            function: F,
+        });
+    }
+
+    /// Specifies a level of a 3D texture or 2D array texture (`texImage3D`); see
+    /// [`Context::tex_image_2d`].
+    #[allow(clippy::too_many_arguments)]
+    pub fn tex_image_3d(
+        &mut self,
+        target: u32,
+        level: i32,
+        internalformat: i32,
+        width: i32,
+        height: i32,
+        depth: i32,
+        border: i32,
+        format: u32,
+        ty: u32,
+        pixels: Option<&[u8]>,
+    ) {
+        const F: &str = "texImage3D";
+        if !matches!(target, gl::TEXTURE_3D | gl::TEXTURE_2D_ARRAY) {
+            return self.error(gl::INVALID_ENUM, F, format_args!("target 0x{target:04X}"));
+        }
+        self.tex_image(TexImage {
+            target,
+            level,
+            internalformat,
+            size: [width, height, depth],
+            border,
+            format,
+            ty,
+            pixels,
+            function: F,
+        });
+    }
+
+    /// Checks level and size against GL's limits for the target.
+    pub(super) fn check_level_size(
+        &mut self,
+        bind: u32,
+        level: i32,
+        w: i32,
+        h: i32,
+        d: i32,
+        function: &str,
+    ) -> bool {
+        let max = match bind {
+            gl::TEXTURE_3D => self.gpu.limits.max_texture_dimension_3d,
+            _ => self.gpu.limits.max_texture_dimension_2d,
+        };
+        let max_level = 31 - max.leading_zeros();
+        if level < 0 || level as u32 > max_level {
+            self.error(gl::INVALID_VALUE, function, format_args!("level {level}"));
+            return false;
+        }
+        let lmax = (max >> level) as i32;
+        let max_layers = self.gpu.limits.max_texture_array_layers as i32;
+        let depth_ok = match bind {
+            gl::TEXTURE_3D => d <= lmax,
+            gl::TEXTURE_2D_ARRAY => d <= max_layers,
+            _ => true,
+        };
+        if w < 0 || h < 0 || d < 0 || w > lmax || h > lmax || !depth_ok {
+            self.error(
+                gl::INVALID_VALUE,
+                function,
+                format_args!("size {w}x{h}x{d} out of range"),
+            );
+            return false;
+        }
+        if bind == gl::TEXTURE_CUBE_MAP && w != h {
+            self.error(gl::INVALID_VALUE, function, "cube map faces must be square");
+            return false;
+        }
+        true
+    }
+
+    /// Checks `(format, ty)` against an internal format.
+    pub(super) fn check_format(
+        &mut self,
+        f: &InternalFormat,
+        format: u32,
+        ty: u32,
+        function: &str,
+    ) -> bool {
+        if format_channels(format).is_none() || !is_pixel_type(ty) {
+            self.error(
+                gl::INVALID_ENUM,
+                function,
+                format_args!("format 0x{format:04X} / type 0x{ty:04X}"),
+            );
+            return false;
+        }
+        if !f.accepts(format, ty) {
+            self.error(
+                gl::INVALID_OPERATION,
+                function,
+                format_args!(
+                    "format 0x{format:04X} / type 0x{ty:04X} do not match the internal format"
+                ),
+            );
+            return false;
+        }
+        true
+    }
+
+    /// Reads `w × h × d` pixels of client data into the storage layout of `f`.
+    fn unpack_pixels(
+        &mut self,
+        pixels: ClientPixels,
+        f: &InternalFormat,
+        function: &str,
+    ) -> Option<Vec<u8>> {
+        let ClientPixels {
+            src,
+            size: [w, h, d],
+            format,
+            ty,
+            three_d,
+        } = pixels;
+        let store = self.pixel_store.clone();
+        let u = unpack_layout(&store, w, h, d, pixel_size(format, ty), three_d);
+        if src.len() < u.needed {
+            self.error(
+                gl::INVALID_OPERATION,
+                function,
+                format_args!("{} bytes of pixel data, {} needed", src.len(), u.needed),
+            );
+            return None;
+        }
+        let mut out = Vec::with_capacity(w as usize * h as usize * d as usize * f.texel_size());
+        for z in 0..d as usize {
+            for y in 0..h as usize {
+                let row = if store.unpack_flip_y {
+                    h as usize - 1 - y
+                } else {
+                    y
+                };
+                let at = u.start + z * u.image_stride + row * u.row_stride;
+                convert_pixels(
+                    &src[at..at + w as usize * u.pixel],
+                    w as usize,
+                    f,
+                    ty,
+                    &mut out,
+                );
+            }
+        }
+        if store.unpack_premultiply_alpha && f.comp == Comp::Unorm8 && f.gpu_channels() == 4 {
+            for px in out.chunks_exact_mut(4) {
+                let a = px[3] as u32;
+                for c in &mut px[..3] {
+                    *c = ((*c as u32 * a + 127) / 255) as u8;
+                }
+            }
+        }
+        Some(out)
+    }
+
+    /// `texImage2D` and `texImage3D` after their target checks.
+    fn tex_image(&mut self, image: TexImage) {
+        let TexImage {
+            target,
+            level,
+            internalformat,
+            size: [width, height, depth],
+            border,
+            format,
+            ty,
+            pixels,
+            function,
+        } = image;
+        let (bind, face) = image_target(target).expect("checked by the caller");
+        if !self.check_level_size(bind, level, width, height, depth, function) {
+            return;
+        }
+        if border != 0 {
+            return self.error(gl::INVALID_VALUE, function, "border must be 0");
+        }
+        let f = match internal_format(internalformat as u32) {
+            Ok(f) => f,
+            Err(true) => {
+                return self.error(
+                    gl::INVALID_ENUM,
+                    function,
+                    "internal format not supported by essl-gl",
+                )
+            }
+            Err(false) => {
+                return self.error(
+                    gl::INVALID_VALUE,
+                    function,
+                    format_args!("internal format 0x{internalformat:04X}"),
+                )
+            }
+        };
+        if !self.check_format(&f, format, ty, function) {
+            return;
+        }
+        let Some(id) = self.bound_texture(bind, function) else {
+            return;
+        };
+        if self
+            .textures
+            .get(id)
+            .is_some_and(|t| t.immutable_levels.is_some())
+        {
+            return self.error(gl::INVALID_OPERATION, function, "immutable texture");
+        }
+        let (w, h, d) = (width as u32, height as u32, depth as u32);
+        let data = match pixels {
+            Some(src) => {
+                let three_d = matches!(bind, gl::TEXTURE_3D | gl::TEXTURE_2D_ARRAY);
+                let pixels = ClientPixels {
+                    src,
+                    size: [w, h, d],
+                    format,
+                    ty,
+                    three_d,
+                };
+                match self.unpack_pixels(pixels, &f, function) {
+                    Some(d) => d,
+                    None => return,
+                }
+            }
+            None => vec![0; w as usize * h as usize * d as usize * f.texel_size()],
+        };
+        let t = self.textures.get_mut(id).expect("bound textures are live");
+        t.set_level(
+            face,
+            level as u32,
+            Level {
+                width: w,
+                height: h,
+                depth: d,
+                format: f,
+                data,
+            },
+        );
+    }
+
+    /// Replaces a region of a level of a 2D texture or cube map face (`texSubImage2D`).
+    /// The region must lie in the level (`INVALID_VALUE`) and `(format, ty)` must suit the
+    /// level's internal format (`INVALID_OPERATION`).
+    #[allow(clippy::too_many_arguments)]
+    pub fn tex_sub_image_2d(
+        &mut self,
+        target: u32,
+        level: i32,
+        xoffset: i32,
+        yoffset: i32,
+        width: i32,
+        height: i32,
+        format: u32,
+        ty: u32,
+        pixels: &[u8],
+    ) {
+        const F: &str = "texSubImage2D";
+        match image_target(target) {
+            Some((gl::TEXTURE_2D | gl::TEXTURE_CUBE_MAP, _)) => {}
+            _ => return self.error(gl::INVALID_ENUM, F, format_args!("target 0x{target:04X}")),
+        }
+        self.tex_sub_image(TexSubImage {
+            target,
+            level,
+            offset: [xoffset, yoffset, 0],
+            size: [width, height, 1],
+            format,
+            ty,
+            pixels,
+            function: F,
+        });
+    }
+
+    /// Replaces a box of a level of a 3D or 2D array texture (`texSubImage3D`).
+    #[allow(clippy::too_many_arguments)]
+    pub fn tex_sub_image_3d(
+        &mut self,
+        target: u32,
+        level: i32,
+        xoffset: i32,
+        yoffset: i32,
+        zoffset: i32,
+        width: i32,
+        height: i32,
+        depth: i32,
+        format: u32,
+        ty: u32,
+        pixels: &[u8],
+    ) {
+        const F: &str = "texSubImage3D";
+        if !matches!(target, gl::TEXTURE_3D | gl::TEXTURE_2D_ARRAY) {
+            return self.error(gl::INVALID_ENUM, F, format_args!("target 0x{target:04X}"));
+        }
+        self.tex_sub_image(TexSubImage {
+            target,
+            level,
+            offset: [xoffset, yoffset, zoffset],
+            size: [width, height, depth],
+            format,
+            ty,
+            pixels,
+            function: F,
+        });
+    }
+
+    /// `texSubImage2D` and `texSubImage3D` after their target checks.
+    fn tex_sub_image(&mut self, image: TexSubImage) {
+        let TexSubImage {
+            target,
+            level,
+            offset,
+            size,
+            format,
+            ty,
+            pixels,
+            function,
+        } = image;
+        let (bind, face) = image_target(target).expect("checked by the caller");
+        let Some(id) = self.bound_texture(bind, function) else {
+            return;
+        };
+        if level < 0 {
+            return self.error(gl::INVALID_VALUE, function, "negative level");
+        }
+        let Some(l) = self
+            .textures
+            .get(id)
+            .and_then(|t| t.level(face, level as u32))
+            .cloned()
+        else {
+            return self.error(gl::INVALID_OPERATION, function, "the level has no image");
+        };
+        if offset.iter().chain(&size).any(|&v| v < 0)
+            || offset[0] as u64 + size[0] as u64 > l.width as u64
+            || offset[1] as u64 + size[1] as u64 > l.height as u64
+            || offset[2] as u64 + size[2] as u64 > l.depth as u64
+        {
+            return self.error(gl::INVALID_VALUE, function, "region outside the level");
+        }
+        if !self.check_format(&l.format, format, ty, function) {
+            return;
+        }
+        let (w, h, d) = (size[0] as u32, size[1] as u32, size[2] as u32);
+        let three_d = matches!(bind, gl::TEXTURE_3D | gl::TEXTURE_2D_ARRAY);
+        let client = ClientPixels {
+            src: pixels,
+            size: [w, h, d],
+            format,
+            ty,
+            three_d,
+        };
+        let Some(src) = self.unpack_pixels(client, &l.format, function) else {
+            return;
+        };
+        if w == 0 || h == 0 || d == 0 {
+            return;
+        }
+        let t = self.textures.get_mut(id).expect("bound textures are live");
+        let dst = t.faces[face][level as usize].as_mut().expect("checked");
+        let texel = dst.format.texel_size();
+        let row = w as usize * texel;
+        for z in 0..d as usize {
+            for y in 0..h as usize {
+                let s = (z * h as usize + y) * row;
+                let dz = offset[2] as usize + z;
+                let dy = offset[1] as usize + y;
+                let at = ((dz * dst.height as usize + dy) * dst.width as usize
+                    + offset[0] as usize)
+                    * texel;
+                dst.data[at..at + row].copy_from_slice(&src[s..s + row]);
+            }
+        }
+        t.version += 1;
+    }
+}
