@@ -1,0 +1,142 @@
+//! Program objects: creation, attaching and detaching shaders, deletion (a program in use
+//! lives until it is replaced), link status and attribute bindings.
+
+use super::ProgramObject;
+use crate::context::Context;
+use crate::gl;
+use crate::objects::{Id, Program, Shader};
+
+impl Context {
+    /// Creates a program object (`createProgram`).
+    pub fn create_program(&mut self) -> Program {
+        Program {
+            ctx: self.id,
+            id: self.programs.insert(ProgramObject::default()),
+        }
+    }
+
+    pub(crate) fn program_id(&mut self, program: Program, function: &str) -> Option<Id> {
+        if !self.owns(program.ctx, function) {
+            return None;
+        }
+        // As for shaders: a program marked for deletion but still current stays usable; one
+        // that is gone → INVALID_VALUE.
+        if self.programs.get_any(program.id).is_none() {
+            self.error(
+                gl::INVALID_VALUE,
+                function,
+                "attempt to use a deleted program",
+            );
+            return None;
+        }
+        Some(program.id)
+    }
+
+    /// Whether `program` names a live program (`isProgram`).
+    pub fn is_program(&self, program: Program) -> bool {
+        program.ctx == self.id && self.programs.is_live(program.id)
+    }
+
+    /// Attaches a shader (`attachShader`); a second shader of the same type, or the same
+    /// shader twice → `INVALID_OPERATION`.
+    pub fn attach_shader(&mut self, program: Program, shader: Shader) {
+        const F: &str = "attachShader";
+        let (Some(p), Some(s)) = (self.program_id(program, F), self.shader_id(shader, F)) else {
+            return;
+        };
+        let ty = self.shaders.get_any(s).expect("live").ty;
+        let attached = &self.programs.get_any(p).expect("live").attached;
+        let clash = attached
+            .iter()
+            .any(|&a| a == s || self.shaders.get_any(a).is_some_and(|o| o.ty == ty));
+        if clash {
+            return self.error(
+                gl::INVALID_OPERATION,
+                F,
+                "a shader of that type is already attached",
+            );
+        }
+        self.shaders.add_ref(s);
+        self.programs.get_any_mut(p).expect("live").attached.push(s);
+    }
+
+    /// Detaches a shader (`detachShader`); one not attached → `INVALID_OPERATION`.
+    pub fn detach_shader(&mut self, program: Program, shader: Shader) {
+        const F: &str = "detachShader";
+        let (Some(p), Some(s)) = (self.program_id(program, F), self.shader_id(shader, F)) else {
+            return;
+        };
+        let attached = &mut self.programs.get_any_mut(p).expect("live").attached;
+        let Some(i) = attached.iter().position(|&a| a == s) else {
+            return self.error(gl::INVALID_OPERATION, F, "shader not attached");
+        };
+        attached.remove(i);
+        self.shaders.release(s);
+    }
+
+    /// The shaders attached to a program (`getAttachedShaders`).
+    pub fn get_attached_shaders(&mut self, program: Program) -> Vec<Shader> {
+        let Some(p) = self.program_id(program, "getAttachedShaders") else {
+            return Vec::new();
+        };
+        let ctx = self.id;
+        self.programs
+            .get(p)
+            .expect("live")
+            .attached
+            .iter()
+            .map(|&id| Shader { ctx, id })
+            .collect()
+    }
+
+    /// Deletes a program (`deleteProgram`). The current program is only marked for deletion
+    /// (`DELETE_STATUS` true): it stays usable, with its shaders attached, until another
+    /// program is made current, as in GL.
+    pub fn delete_program(&mut self, program: Program) {
+        if !self.owns(program.ctx, "deleteProgram") || !self.programs.is_live(program.id) {
+            return;
+        }
+        if let Some(freed) = self.programs.delete_freeing(program.id) {
+            self.detach_all(freed);
+        }
+    }
+
+    /// Drops the references a freed program held on its shaders.
+    pub(super) fn detach_all(&mut self, freed: ProgramObject) {
+        for s in freed.attached {
+            self.shaders.release(s);
+        }
+    }
+
+    /// Whether the last link succeeded (`getProgramParameter(LINK_STATUS)`).
+    pub fn get_program_link_status(&mut self, program: Program) -> bool {
+        self.program_id(program, "getProgramParameter")
+            .and_then(|p| self.programs.get_any(p))
+            .is_some_and(|p| p.link_status)
+    }
+
+    /// The log of the last link (`getProgramInfoLog`).
+    pub fn get_program_info_log(&mut self, program: Program) -> Option<String> {
+        let p = self.program_id(program, "getProgramInfoLog")?;
+        self.programs.get_any(p).map(|p| p.info_log.clone())
+    }
+
+    /// Binds an attribute name to a location for the next link (`bindAttribLocation`).
+    /// An index ≥ `MAX_VERTEX_ATTRIBS` → `INVALID_VALUE`; a reserved `gl_`/`webgl_` name →
+    /// `INVALID_OPERATION`.
+    pub fn bind_attrib_location(&mut self, program: Program, index: u32, name: &str) {
+        const F: &str = "bindAttribLocation";
+        let Some(p) = self.program_id(program, F) else {
+            return;
+        };
+        if index >= self.max_vertex_attribs {
+            return self.error(gl::INVALID_VALUE, F, "index ≥ MAX_VERTEX_ATTRIBS");
+        }
+        if name.starts_with("gl_") || name.starts_with("webgl_") || name.starts_with("_webgl_") {
+            return self.error(gl::INVALID_OPERATION, F, "reserved name");
+        }
+        let bindings = &mut self.programs.get_any_mut(p).expect("live").attrib_bindings;
+        bindings.retain(|(n, _)| n != name);
+        bindings.push((name.to_owned(), index));
+    }
+}

@@ -1,0 +1,249 @@
+//! Linking: the essl front end links and lowers the attached shaders to a [`ProgramLayout`],
+//! an optional filter rewrites it, and the layout is installed as the program's
+//! [`LinkedProgram`]; `use_program` makes it current.
+
+use essl::program::ProgramLayout;
+
+use super::interface::{output0, shader_inputs};
+use super::shader::compile;
+use super::LinkedProgram;
+use crate::context::{Context, MAX_TEXTURE_UNITS};
+use crate::gl;
+use crate::objects::Program;
+use crate::shader_patch::{output_needs_widening, wrap_entry_point};
+
+impl Context {
+    /// Links the attached shaders (`linkProgram`): the essl front end links them as WebGL2
+    /// does and lowers them to a [`ProgramLayout`], which
+    /// [`Context::link_program_from_layout`] installs. Failures set `LINK_STATUS` false with
+    /// the reason in [`Context::get_program_info_log`].
+    pub fn link_program(&mut self, program: Program) {
+        let Some(p) = self.program_id(program, "linkProgram") else {
+            return;
+        };
+        let obj = self.programs.get_any(p).expect("live");
+        let shader = |ty: u32| {
+            obj.attached
+                .iter()
+                .filter_map(|&s| self.shaders.get_any(s))
+                .find(|s| s.ty == ty)
+        };
+        let mut sources = None;
+        let result = match (shader(gl::VERTEX_SHADER), shader(gl::FRAGMENT_SHADER)) {
+            (None, _) | (_, None) => {
+                Err("a vertex and a fragment shader must be attached".to_owned())
+            }
+            (Some(vs), Some(fs)) => match (&vs.compiled, &fs.compiled) {
+                (Some((v, true)), Some((f, true))) => {
+                    sources = Some(Box::new(crate::validation::LinkedSources {
+                        vertex: (vs.name.clone(), v.clone()),
+                        fragment: (fs.name.clone(), f.clone()),
+                    }));
+                    let v = &compile(essl::Stage::Vertex, v);
+                    let f = &compile(essl::Stage::Fragment, f);
+                    let linked = essl::link::link_with_bindings(v, f, &obj.attrib_bindings);
+                    if linked.ok {
+                        essl::lower::lower_program(
+                            v,
+                            f,
+                            &linked,
+                            &essl::program::LowerOptions::default(),
+                        )
+                        .map_err(|e| e.to_string())
+                        .and_then(|layout| {
+                            match &mut self.program_filter {
+                                Some(filter) => filter(layout),
+                                None => Ok(layout),
+                            }
+                        })
+                    } else {
+                        Err(linked.log)
+                    }
+                }
+                _ => Err("an attached shader is not compiled".to_owned()),
+            },
+        };
+        match result {
+            Ok(layout) => {
+                self.link_program_from_layout(program, layout);
+                if let Some(linked) = self.programs.get_any_mut(p).and_then(|o| o.linked.as_mut()) {
+                    linked.sources = sources;
+                }
+            }
+            Err(log) => {
+                let obj = self.programs.get_any_mut(p).expect("live");
+                obj.link_status = false;
+                obj.validate_status = false;
+                obj.info_log = log;
+            }
+        }
+    }
+
+    /// Puts a step between lowering and installing every program [`Context::link_program`]
+    /// links from now on (`None` removes it): the step may change the lowered modules (the
+    /// translation tests write them as WGSL text and read them back) as long as they keep the
+    /// conventions of [`essl::program`]; an `Err` fails the link with that message in the info
+    /// log. Programs installed with [`Context::link_program_from_layout`] do not go through it.
+    pub fn set_program_filter(&mut self, filter: Option<crate::context::ProgramFilter>) {
+        self.program_filter = filter;
+    }
+
+    /// Creates a program and links it from a layout the front end produced: see
+    /// [`Context::link_program_from_layout`].
+    pub fn program_from_layout(&mut self, layout: ProgramLayout) -> Program {
+        let program = self.create_program();
+        self.link_program_from_layout(program, layout);
+        program
+    }
+
+    /// Completes `linkProgram`: installs a program linked and lowered by the front end.
+    ///
+    /// The layout must follow the conventions of [`essl::program`]. essl-gl creates the wgpu
+    /// shader modules (wgpu validates them); a module wgpu rejects, or a program needing more
+    /// than the device offers, makes the link fail (`LINK_STATUS` false, the reason in the
+    /// info log). Uniforms start at zero and samplers at unit 0; earlier uniform locations
+    /// become invalid.
+    pub fn link_program_from_layout(&mut self, program: Program, layout: ProgramLayout) {
+        let Some(p) = self.program_id(program, "linkProgram") else {
+            return;
+        };
+        let result = self.link(layout);
+        let obj = self.programs.get_any_mut(p).expect("live");
+        match result {
+            Ok(linked) => {
+                obj.linked = Some(linked);
+                obj.link_status = true;
+                obj.validate_status = false;
+                obj.info_log.clear();
+            }
+            Err(log) => {
+                obj.link_status = false;
+                obj.validate_status = false;
+                obj.info_log = log;
+            }
+        }
+    }
+
+    pub(super) fn link(&mut self, layout: ProgramLayout) -> Result<LinkedProgram, String> {
+        let limits = &self.gpu.limits;
+        if layout.samplers.len() as u32
+            > limits
+                .max_sampled_textures_per_shader_stage
+                .min(MAX_TEXTURE_UNITS)
+        {
+            return Err(format!(
+                "{} samplers: more than the device supports",
+                layout.samplers.len()
+            ));
+        }
+        let inputs = shader_inputs(&layout.vertex);
+        if let Some(i) = inputs
+            .iter()
+            .find(|i| i.location >= self.max_vertex_attribs)
+        {
+            return Err(format!(
+                "attribute location {} ≥ MAX_VERTEX_ATTRIBS",
+                i.location
+            ));
+        }
+        if layout.blocks.len() as u32 + 1 > limits.max_uniform_buffers_per_shader_stage {
+            return Err(format!(
+                "{} uniform blocks: more than the device supports",
+                layout.blocks.len()
+            ));
+        }
+        if let Some(b) = layout
+            .blocks
+            .iter()
+            .find(|b| b.size as u64 > limits.max_uniform_buffer_binding_size)
+        {
+            return Err(format!(
+                "uniform block {} of {} bytes is too large",
+                b.name, b.size
+            ));
+        }
+        if let Some(block) = &layout.uniform_block {
+            if block.size > limits.max_uniform_buffer_binding_size as u32 {
+                return Err(format!(
+                    "default uniform block of {} bytes is too large",
+                    block.size
+                ));
+            }
+        }
+        let device = &self.gpu.device;
+        let scope = device.push_error_scope(wgpu::ErrorFilter::Validation);
+        let vertex_module = device.create_shader_module(wgpu::ShaderModuleDescriptor {
+            label: Some("essl-gl vertex"),
+            source: wgpu::ShaderSource::Naga(std::borrow::Cow::Owned(layout.vertex.clone())),
+        });
+        // An RGBA target needs a vec4 output: widen a narrower one (alpha 1).
+        let fragment = if output_needs_widening(&layout.fragment) {
+            wrap_entry_point(&layout.fragment, &[], true)
+        } else {
+            layout.fragment.clone()
+        };
+        let fragment_module = device.create_shader_module(wgpu::ShaderModuleDescriptor {
+            label: Some("essl-gl fragment"),
+            source: wgpu::ShaderSource::Naga(std::borrow::Cow::Owned(fragment)),
+        });
+        if let Some(e) = pollster::block_on(scope.pop()) {
+            return Err(format!("the lowered shaders were rejected by wgpu: {e}"));
+        }
+        self.link_serial += 1;
+        let size = layout.uniform_block.as_ref().map_or(0, |b| b.size as usize);
+        Ok(LinkedProgram {
+            serial: self.link_serial,
+            output0: output0(&layout.fragment),
+            inputs,
+            uniform_data: vec![0; size],
+            uniform_version: 0,
+            sampler_units: vec![0; layout.samplers.len()],
+            block_bindings: vec![0; layout.blocks.len()],
+            uploaded: None,
+            sources: None,
+            checks: None,
+            vertex_module,
+            fragment_module,
+            layout,
+        })
+    }
+
+    /// The program in use (`getParameter(CURRENT_PROGRAM)`).
+    pub fn get_current_program(&self) -> Option<Program> {
+        self.current_program.map(|id| Program { ctx: self.id, id })
+    }
+
+    /// Makes a linked program current (`useProgram`); `None` for none. A program whose last
+    /// link failed → `INVALID_OPERATION`.
+    pub fn use_program(&mut self, program: Option<Program>) {
+        const F: &str = "useProgram";
+        let id = match program {
+            None => None,
+            Some(p) => {
+                if !self.owns(p.ctx, F) {
+                    return;
+                }
+                // Unlike most program functions, useProgram refuses a program marked for
+                // deletion (Chromium's ValidateNullableWebGLObject).
+                if !self.programs.is_live(p.id) {
+                    return self.error(gl::INVALID_OPERATION, F, "attempt to use a deleted object");
+                }
+                if !self.programs.get(p.id).is_some_and(|p| p.link_status) {
+                    return self.error(gl::INVALID_OPERATION, F, "program is not linked");
+                }
+                Some(p.id)
+            }
+        };
+        if self.current_program == id {
+            return;
+        }
+        if let Some(n) = id {
+            self.programs.add_ref(n);
+        }
+        if let Some(old) = std::mem::replace(&mut self.current_program, id) {
+            if let Some(freed) = self.programs.release_freeing(old) {
+                self.detach_all(freed);
+            }
+        }
+    }
+}

@@ -1,0 +1,93 @@
+//! Shader and program objects, linking a [`ProgramLayout`] from the front end, and the
+//! program's uniform storage (`get_uniform_location`, `uniform*`).
+//!
+//! A linked program keeps a CPU image of its default uniform block, laid out as the layout's
+//! [`UniformStorage::Buffer`] offsets say, and the texture unit of each sampler slot. Draws
+//! copy the image into a per-batch buffer.
+//!
+//! Split by concern: [`shader`] (shader objects, compiling), [`lifecycle`] (program objects,
+//! attaching, deleting), [`link`] (linking and `use_program`), [`interface`] (a module's
+//! inputs and outputs), [`uniform`] (the `uniform*` calls and low-level setters) and
+//! [`introspect`] (locations, blocks, active attributes and uniforms). All but `interface`
+//! add methods to [`Context`]: its `impl` is spread over these files on purpose, one file per
+//! group of GL calls.
+
+mod interface;
+mod introspect;
+mod lifecycle;
+mod link;
+mod shader;
+mod uniform;
+
+pub(crate) use interface::{main_entry, type_shape};
+pub(crate) use uniform::{find_uniform, uniform_shape};
+
+use essl::program::ProgramLayout;
+
+use crate::objects::Id;
+
+/// The scalar kind of a shader input or output.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub(crate) enum ValueKind {
+    Float,
+    Sint,
+    Uint,
+}
+
+/// A vertex shader input, read from the naga module's entry point.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub(crate) struct ShaderInput {
+    pub(crate) location: u32,
+    pub(crate) kind: ValueKind,
+    pub(crate) components: u8,
+}
+
+/// A shader object (`WebGLShader`).
+pub(crate) struct ShaderObject {
+    pub(crate) ty: u32,
+    pub(crate) source: String,
+    /// The source of the last `compile_shader` and whether it compiled. `link_program`
+    /// compiles it again (the front end's `Shader` is not `Send`; a `Context` is).
+    pub(crate) compiled: Option<(String, bool)>,
+    pub(crate) info_log: String,
+    /// The file name validation warnings give the shader ([`Context::set_shader_name`]).
+    pub(crate) name: Option<String>,
+}
+
+/// A program object (`WebGLProgram`).
+#[derive(Default)]
+pub(crate) struct ProgramObject {
+    pub(crate) attached: Vec<Id>,
+    /// `bind_attrib_location` requests, applied at the next link.
+    pub(crate) attrib_bindings: Vec<(String, u32)>,
+    pub(crate) linked: Option<LinkedProgram>,
+    pub(crate) link_status: bool,
+    /// The result of the last `validate_program`.
+    pub(crate) validate_status: bool,
+    pub(crate) info_log: String,
+}
+
+/// The result of a successful link.
+pub(crate) struct LinkedProgram {
+    /// Unique per link within the context: keys pipelines and uniform locations.
+    pub(crate) serial: u64,
+    pub(crate) layout: ProgramLayout,
+    pub(crate) vertex_module: wgpu::ShaderModule,
+    pub(crate) fragment_module: wgpu::ShaderModule,
+    pub(crate) inputs: Vec<ShaderInput>,
+    /// Kind and width of the fragment output at location 0, if any.
+    pub(crate) output0: Option<(ValueKind, u8)>,
+    pub(crate) uniform_data: Vec<u8>,
+    /// Bumped when `uniform_data` changes.
+    pub(crate) uniform_version: u64,
+    pub(crate) sampler_units: Vec<u32>,
+    /// The `UNIFORM_BUFFER` binding point of each uniform block (`uniformBlockBinding`).
+    pub(crate) block_bindings: Vec<u32>,
+    /// Where the current uniform image was last put: (batch, version, chunk, offset).
+    pub(crate) uploaded: Option<(u64, u64, u64, u32)>,
+    /// The shaders' names and texts as linked (`link_program`; `None` for a layout linked
+    /// directly), from which validation extracts the uniform preconditions when it is on.
+    pub(crate) sources: Option<Box<crate::validation::LinkedSources>>,
+    /// The runtime checks of uniform values, built at the first draw with validation on.
+    pub(crate) checks: Option<Box<crate::validation::ProgramChecks>>,
+}
