@@ -156,80 +156,132 @@ fn median(values: &[f64]) -> Option<f64> {
     })
 }
 
-impl SceneRenderer {
-    /// Creates a context of the scene's size and sets the scene up on it, as the tool's page
-    /// does before its first frame.
-    pub fn new(scene: &Scene) -> Result<SceneRenderer, SceneRenderError> {
-        let ctx = Context::new(scene.width(), scene.height())?;
-        SceneRenderer::with_context(ctx, scene)
+/// A linked program and the logs of its compile and link.
+struct Linked {
+    program: Program,
+    /// Each shader file's name and info log.
+    compile_log: Vec<(String, String)>,
+    link_log: String,
+}
+
+/// Compiles the scene's shaders, attaches them and links: the program and the logs, or the
+/// first compile error, or the link error.
+fn compile_and_link(gl: &mut Context, scene: &Scene) -> Result<Linked, SceneRenderError> {
+    let program = gl.create_program();
+    let mut compile_log = Vec::new();
+    let mut failed = None;
+    for (ty, shader) in [
+        (gl::VERTEX_SHADER, &scene.vertex_shader),
+        (gl::FRAGMENT_SHADER, &scene.fragment_shader),
+    ] {
+        let sh = gl.create_shader(ty).expect("a valid shader type");
+        // Validation warnings (if the context has them on) name the scene's files.
+        gl.set_shader_name(sh, &shader.name);
+        gl.shader_source(sh, &shader.source);
+        gl.compile_shader(sh);
+        let log = gl.get_shader_info_log(sh).unwrap_or_default();
+        compile_log.push((shader.name.clone(), log.clone()));
+        let ok = gl.get_shader_parameter(sh, gl::COMPILE_STATUS);
+        if ok.and_then(|p| p.as_bool()) != Some(true) {
+            failed = Some(SceneRenderError::Compile {
+                file: shader.name.clone(),
+                log,
+            });
+        }
+        gl.attach_shader(program, sh);
     }
+    if let Some(e) = failed {
+        return Err(e);
+    }
+    gl.link_program(program);
+    let link_log = gl.get_program_info_log(program).unwrap_or_default();
+    let linked = gl.get_program_parameter(program, gl::LINK_STATUS);
+    if linked.and_then(|p| p.as_bool()) != Some(true) {
+        return Err(SceneRenderError::Link { log: link_log });
+    }
+    Ok(Linked {
+        program,
+        compile_log,
+        link_log,
+    })
+}
 
-    /// Sets the scene up on a fresh context (of the scene's size: a context of another size
-    /// draws the scene's viewport in its lower-left corner).
-    pub fn with_context(
-        mut ctx: Context,
+/// An active uniform: name (an array's without its `[0]`), type, size, and whether the scene
+/// set it.
+type ActiveUniform = (String, u32, u32, bool);
+
+/// The program's active uniforms, in getActiveUniform's order.
+fn active_uniforms(gl: &mut Context, program: Program) -> Vec<ActiveUniform> {
+    let count = gl
+        .get_program_parameter(program, gl::ACTIVE_UNIFORMS)
+        .and_then(|p| p.as_int())
+        .unwrap_or(0);
+    (0..count as u32)
+        .filter_map(|i| gl.get_active_uniform(program, i))
+        .map(|(name, ty, size)| {
+            let key = name.strip_suffix("[0]").map_or(name.clone(), str::to_owned);
+            (key, ty, size, false)
+        })
+        .collect()
+}
+
+/// Sets a uniform's values with the `uniform*` call of its active type.
+fn upload_uniform(
+    gl: &mut Context,
+    loc: Option<crate::UniformLocation>,
+    uty: UniformType,
+    values: UploadValues,
+) {
+    match (uty, values) {
+        (UniformType::Mat2, UploadValues::F32(v)) => gl.uniform_matrix2fv(loc, false, &v),
+        (UniformType::Mat3, UploadValues::F32(v)) => gl.uniform_matrix3fv(loc, false, &v),
+        (UniformType::Mat4, UploadValues::F32(v)) => gl.uniform_matrix4fv(loc, false, &v),
+        (UniformType::Float(n), UploadValues::F32(v)) => match n {
+            1 => gl.uniform1fv(loc, &v),
+            2 => gl.uniform2fv(loc, &v),
+            3 => gl.uniform3fv(loc, &v),
+            _ => gl.uniform4fv(loc, &v),
+        },
+        (UniformType::Int(n) | UniformType::Bool(n), UploadValues::I32(v)) => match n {
+            1 => gl.uniform1iv(loc, &v),
+            2 => gl.uniform2iv(loc, &v),
+            3 => gl.uniform3iv(loc, &v),
+            _ => gl.uniform4iv(loc, &v),
+        },
+        (UniformType::Uint(n), UploadValues::U32(v)) => match n {
+            1 => gl.uniform1uiv(loc, &v),
+            2 => gl.uniform2uiv(loc, &v),
+            3 => gl.uniform3uiv(loc, &v),
+            _ => gl.uniform4uiv(loc, &v),
+        },
+        (t, v) => unreachable!("essl-scene fits {t:?} with {v:?}"),
+    }
+}
+
+/// The set-up's bookkeeping: which active uniforms the scene set, and the warnings.
+struct Setup {
+    active: Vec<ActiveUniform>,
+    warnings: Vec<String>,
+}
+
+impl Setup {
+    /// Sets the scene's uniforms by their active type; an inactive one is a warning.
+    fn set_uniforms(
+        &mut self,
+        gl: &mut Context,
+        program: Program,
         scene: &Scene,
-    ) -> Result<SceneRenderer, SceneRenderError> {
-        let gl = &mut ctx;
-
-        // Compile and link.
-        let program = gl.create_program();
-        let mut compile_log = Vec::new();
-        let mut failed = None;
-        for (ty, shader) in [
-            (gl::VERTEX_SHADER, &scene.vertex_shader),
-            (gl::FRAGMENT_SHADER, &scene.fragment_shader),
-        ] {
-            let sh = gl.create_shader(ty).expect("a valid shader type");
-            // Validation warnings (if the context has them on) name the scene's files.
-            gl.set_shader_name(sh, &shader.name);
-            gl.shader_source(sh, &shader.source);
-            gl.compile_shader(sh);
-            let log = gl.get_shader_info_log(sh).unwrap_or_default();
-            compile_log.push((shader.name.clone(), log.clone()));
-            let ok = gl.get_shader_parameter(sh, gl::COMPILE_STATUS);
-            if ok.and_then(|p| p.as_bool()) != Some(true) {
-                failed = Some(SceneRenderError::Compile {
-                    file: shader.name.clone(),
-                    log,
-                });
-            }
-            gl.attach_shader(program, sh);
-        }
-        if let Some(e) = failed {
-            return Err(e);
-        }
-        gl.link_program(program);
-        let link_log = gl.get_program_info_log(program).unwrap_or_default();
-        let linked = gl.get_program_parameter(program, gl::LINK_STATUS);
-        if linked.and_then(|p| p.as_bool()) != Some(true) {
-            return Err(SceneRenderError::Link { log: link_log });
-        }
-        gl.use_program(Some(program));
-
-        // Uniforms, set by their active type. `active` keeps getActiveUniform's order; an
-        // array's name is keyed without its `[0]`.
-        let mut warnings = Vec::new();
-        let count = gl
-            .get_program_parameter(program, gl::ACTIVE_UNIFORMS)
-            .and_then(|p| p.as_int())
-            .unwrap_or(0);
-        let mut active: Vec<(String, u32, u32, bool)> = (0..count as u32)
-            .filter_map(|i| gl.get_active_uniform(program, i))
-            .map(|(name, ty, size)| {
-                let key = name.strip_suffix("[0]").map_or(name.clone(), str::to_owned);
-                (key, ty, size, false)
-            })
-            .collect();
+    ) -> Result<(), SceneRenderError> {
         for uniform in &scene.uniforms {
             let name = &uniform.name;
             let loc = gl.get_uniform_location(program, name);
-            let Some(entry) = active
+            let Some(entry) = self
+                .active
                 .iter_mut()
                 .find(|a| &a.0 == name)
                 .filter(|_| loc.is_some())
             else {
-                warnings.push(format!(
+                self.warnings.push(format!(
                     "uniform {name} is not active (getUniformLocation is null): not set"
                 ));
                 continue;
@@ -249,33 +301,19 @@ impl SceneRenderer {
             let values = uniform
                 .upload(uty, size as usize)
                 .map_err(|e| err(e.to_string()))?;
-            match (uty, values) {
-                (UniformType::Mat2, UploadValues::F32(v)) => gl.uniform_matrix2fv(loc, false, &v),
-                (UniformType::Mat3, UploadValues::F32(v)) => gl.uniform_matrix3fv(loc, false, &v),
-                (UniformType::Mat4, UploadValues::F32(v)) => gl.uniform_matrix4fv(loc, false, &v),
-                (UniformType::Float(n), UploadValues::F32(v)) => match n {
-                    1 => gl.uniform1fv(loc, &v),
-                    2 => gl.uniform2fv(loc, &v),
-                    3 => gl.uniform3fv(loc, &v),
-                    _ => gl.uniform4fv(loc, &v),
-                },
-                (UniformType::Int(n) | UniformType::Bool(n), UploadValues::I32(v)) => match n {
-                    1 => gl.uniform1iv(loc, &v),
-                    2 => gl.uniform2iv(loc, &v),
-                    3 => gl.uniform3iv(loc, &v),
-                    _ => gl.uniform4iv(loc, &v),
-                },
-                (UniformType::Uint(n), UploadValues::U32(v)) => match n {
-                    1 => gl.uniform1uiv(loc, &v),
-                    2 => gl.uniform2uiv(loc, &v),
-                    3 => gl.uniform3uiv(loc, &v),
-                    _ => gl.uniform4uiv(loc, &v),
-                },
-                (t, v) => unreachable!("essl-scene fits {t:?} with {v:?}"),
-            }
+            upload_uniform(gl, loc, uty, values);
         }
+        Ok(())
+    }
 
-        // Textures: unit = index in the sorted list of names (essl-scene's order).
+    /// Makes the scene's textures, unit = index in the sorted list of names (essl-scene's
+    /// order), and points their samplers at them.
+    fn bind_textures(
+        &mut self,
+        gl: &mut Context,
+        program: Program,
+        scene: &Scene,
+    ) -> Result<(), SceneRenderError> {
         for t in &scene.textures {
             let tex = gl.create_texture();
             gl.active_texture(gl::TEXTURE0 + t.unit);
@@ -308,9 +346,9 @@ impl SceneRenderer {
             gl.tex_parameteri(gl::TEXTURE_2D, gl::TEXTURE_WRAP_S, wrap);
             gl.tex_parameteri(gl::TEXTURE_2D, gl::TEXTURE_WRAP_T, wrap);
             let loc = gl.get_uniform_location(program, &t.name);
-            let entry = active.iter_mut().find(|a| a.0 == t.name);
+            let entry = self.active.iter_mut().find(|a| a.0 == t.name);
             let Some(entry) = entry.filter(|_| loc.is_some()) else {
-                warnings.push(format!(
+                self.warnings.push(format!(
                     "sampler {} is not active: texture bound to unit {} but unused",
                     t.name, t.unit
                 ));
@@ -325,23 +363,32 @@ impl SceneRenderer {
             entry.3 = true;
             gl.uniform1i(loc, t.unit as i32);
         }
-        for (name, ty, _, used) in &active {
+        Ok(())
+    }
+
+    /// Warns of the active uniforms the scene did not set.
+    fn warn_unset_uniforms(&mut self) {
+        for (name, ty, _, used) in &self.active {
             if !used {
-                warnings.push(format!(
+                self.warnings.push(format!(
                     "active uniform {name} ({}) is not set by the scene: it stays 0",
                     type_name(*ty)
                 ));
             }
         }
+    }
 
-        // Attributes: one tightly packed FLOAT buffer per mapped attribute, in one VAO.
+    /// One tightly packed `FLOAT` buffer per mapped attribute, in one vertex array, and the
+    /// index buffer; active attributes without a stream are warnings.
+    fn bind_attributes(&mut self, gl: &mut Context, program: Program, scene: &Scene) {
         let vao = gl.create_vertex_array();
         gl.bind_vertex_array(Some(vao));
         let mut mapped = Vec::new();
         for (name, stream) in scene.attributes() {
             let loc = gl.get_attrib_location(program, name);
             if loc < 0 {
-                warnings.push(format!("attribute {name} is not active: not bound"));
+                self.warnings
+                    .push(format!("attribute {name} is not active: not bound"));
                 continue;
             }
             mapped.push(name.to_owned());
@@ -360,7 +407,7 @@ impl SceneRenderer {
         for i in 0..attributes as u32 {
             if let Some((name, ..)) = gl.get_active_attrib(program, i) {
                 if !mapped.contains(&name) {
-                    warnings.push(format!(
+                    self.warnings.push(format!(
                         "active attribute {name} has no stream: it reads the constant (0, 0, 0, 1)"
                     ));
                 }
@@ -371,37 +418,73 @@ impl SceneRenderer {
             gl.bind_buffer(gl::ELEMENT_ARRAY_BUFFER, Some(ib));
             gl.buffer_data(gl::ELEMENT_ARRAY_BUFFER, &indices, gl::STATIC_DRAW);
         }
+    }
+}
 
-        // Fixed state.
-        let (width, height) = (scene.width(), scene.height());
-        gl.viewport(0, 0, width as i32, height as i32);
-        gl.disable(gl::BLEND);
-        gl.disable(gl::SCISSOR_TEST);
-        gl.disable(gl::STENCIL_TEST);
-        if scene.depth_test() {
-            gl.enable(gl::DEPTH_TEST);
-        } else {
-            gl.disable(gl::DEPTH_TEST);
-        }
-        gl.depth_func(gl::LESS);
-        gl.depth_mask(true);
-        gl.clear_depth(1.0);
-        if scene.cull_face() {
-            gl.enable(gl::CULL_FACE);
-        } else {
-            gl.disable(gl::CULL_FACE);
-        }
-        gl.cull_face(gl::BACK);
-        gl.front_face(gl::CCW);
-        let c = scene.clear_color();
-        gl.clear_color(c[0] as f32, c[1] as f32, c[2] as f32, c[3] as f32);
+/// The fixed state the tool's page sets: viewport, depth test and culling as the scene asks,
+/// no blending, scissor or stencil, and the clear colour.
+fn set_fixed_state(gl: &mut Context, scene: &Scene) {
+    let (width, height) = (scene.width(), scene.height());
+    gl.viewport(0, 0, width as i32, height as i32);
+    gl.disable(gl::BLEND);
+    gl.disable(gl::SCISSOR_TEST);
+    gl.disable(gl::STENCIL_TEST);
+    if scene.depth_test() {
+        gl.enable(gl::DEPTH_TEST);
+    } else {
+        gl.disable(gl::DEPTH_TEST);
+    }
+    gl.depth_func(gl::LESS);
+    gl.depth_mask(true);
+    gl.clear_depth(1.0);
+    if scene.cull_face() {
+        gl.enable(gl::CULL_FACE);
+    } else {
+        gl.disable(gl::CULL_FACE);
+    }
+    gl.cull_face(gl::BACK);
+    gl.front_face(gl::CCW);
+    let c = scene.clear_color();
+    gl.clear_color(c[0] as f32, c[1] as f32, c[2] as f32, c[3] as f32);
+}
+
+impl SceneRenderer {
+    /// Creates a context of the scene's size and sets the scene up on it, as the tool's page
+    /// does before its first frame.
+    pub fn new(scene: &Scene) -> Result<SceneRenderer, SceneRenderError> {
+        let ctx = Context::new(scene.width(), scene.height())?;
+        SceneRenderer::with_context(ctx, scene)
+    }
+
+    /// Sets the scene up on a fresh context (of the scene's size: a context of another size
+    /// draws the scene's viewport in its lower-left corner).
+    pub fn with_context(
+        mut ctx: Context,
+        scene: &Scene,
+    ) -> Result<SceneRenderer, SceneRenderError> {
+        let gl = &mut ctx;
+        let Linked {
+            program,
+            compile_log,
+            link_log,
+        } = compile_and_link(gl, scene)?;
+        gl.use_program(Some(program));
+        let mut setup = Setup {
+            active: active_uniforms(gl, program),
+            warnings: Vec::new(),
+        };
+        setup.set_uniforms(gl, program, scene)?;
+        setup.bind_textures(gl, program, scene)?;
+        setup.warn_unset_uniforms();
+        setup.bind_attributes(gl, program, scene);
+        set_fixed_state(gl, scene);
 
         let mut renderer = SceneRenderer {
             program,
             draw: scene.mesh.draw(),
-            width,
-            height,
-            warnings,
+            width: scene.width(),
+            height: scene.height(),
+            warnings: setup.warnings,
             compile_log,
             link_log,
             ctx,
