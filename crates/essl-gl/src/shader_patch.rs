@@ -170,36 +170,21 @@ pub(crate) fn output_needs_widening(module: &Module) -> bool {
 
 /// A copy of `module` whose entry point `main` takes its inputs as `patches` say and, if
 /// `widen_output`, returns its location-0 output as `vec4`.
+///
+/// The steps: the original entry point's body becomes the function `essl_gl_main`
+/// ([`move_body_to_function`]); a new body converts each patched input
+/// ([`Builder::convert_input`]), calls it, and widens the output ([`widen_result`]).
 pub(crate) fn wrap_entry_point(
     module: &Module,
     patches: &[InputPatch],
     widen_output: bool,
 ) -> Module {
     let mut m = module.clone();
-    let Some(ep_index) =
-        m.entry_points
-            .iter()
-            .position(|e| e.name == "main")
-            .or(if m.entry_points.is_empty() {
-                None
-            } else {
-                Some(0)
-            })
-    else {
+    let Some(ep_index) = main_index(&m) else {
         return m;
     };
     let original = std::mem::take(&mut m.entry_points[ep_index].function);
-
-    // The original body, as an ordinary function without bindings.
-    let mut inner = original.clone();
-    inner.name = Some("essl_gl_main".into());
-    for arg in &mut inner.arguments {
-        arg.binding = None;
-    }
-    if let Some(r) = &mut inner.result {
-        r.binding = None;
-    }
-    let inner_handle = m.functions.append(inner, Span::UNDEFINED);
+    let inner_handle = move_body_to_function(&mut m, &original);
 
     let mut b = Builder {
         expressions: Arena::new(),
@@ -215,7 +200,7 @@ pub(crate) fn wrap_entry_point(
             _ => None,
         };
         let declared = type_shape(&m, arg.ty);
-        let (Some(p), Some((kind, n))) = (patch, declared) else {
+        let (Some(p), Some(shape)) = (patch, declared) else {
             arguments.push(arg.clone());
             call_args.push(b.plain(Expression::FunctionArgument(i as u32)));
             continue;
@@ -226,51 +211,7 @@ pub(crate) fn wrap_entry_point(
             ty: fed_ty,
             binding: arg.binding.clone(),
         });
-        let mut v = b.plain(Expression::FunctionArgument(i as u32));
-        let k = p.used.min(n).min(p.fed_count);
-        v = b.take(v, p.fed_count, k);
-        if p.fed_kind != kind {
-            let convert = if kind == ValueKind::Float || p.fed_kind == ValueKind::Float {
-                Some(4)
-            } else {
-                None
-            };
-            v = b.emit(Expression::As {
-                expr: v,
-                kind: scalar(kind).kind,
-                convert,
-            });
-        }
-        if let Some(norm) = p.norm {
-            let factor = match norm {
-                Norm32::Signed => 1.0 / 2_147_483_647.0,
-                Norm32::Unsigned => 1.0 / 4_294_967_295.0,
-            };
-            let f = b.plain(Expression::Literal(Literal::F32(factor)));
-            v = b.emit(Expression::Binary {
-                op: BinaryOperator::Multiply,
-                left: v,
-                right: f,
-            });
-            if norm == Norm32::Signed {
-                let mut lo = b.plain(Expression::Literal(Literal::F32(-1.0)));
-                if k > 1 {
-                    lo = b.emit(Expression::Splat {
-                        size: vector_size(k),
-                        value: lo,
-                    });
-                }
-                v = b.emit(Expression::Math {
-                    fun: MathFunction::Max,
-                    arg: v,
-                    arg1: Some(lo),
-                    arg2: None,
-                    arg3: None,
-                });
-            }
-        }
-        v = b.widen(v, k, n, kind, arg.ty);
-        call_args.push(v);
+        call_args.push(b.convert_input(i as u32, arg.ty, p, shape));
     }
 
     let result_expr = original
@@ -286,69 +227,10 @@ pub(crate) fn wrap_entry_point(
         Span::UNDEFINED,
     );
 
-    let mut result = original.result.clone();
-    let mut value = result_expr;
-    if let (true, Some(r), Some(res)) = (widen_output, &original.result, result_expr) {
-        let vec4 = shape_type(&mut m, ValueKind::Float, 4);
-        if let Some(Binding::Location { location: 0, .. }) = r.binding {
-            if let Some((ValueKind::Float, n)) = type_shape(&m, r.ty) {
-                value = Some(b.widen(res, n, 4, ValueKind::Float, vec4));
-                result = Some(FunctionResult {
-                    ty: vec4,
-                    binding: r.binding.clone(),
-                });
-            }
-        } else if let TypeInner::Struct { members, .. } = m.types[r.ty].inner.clone() {
-            let mut new_members = Vec::new();
-            let mut components = Vec::new();
-            let mut offset = 0u32;
-            let mut layouter = naga::proc::Layouter::default();
-            let _ = layouter.update(m.to_ctx());
-            for (j, member) in members.iter().enumerate() {
-                let mut v = b.emit(Expression::AccessIndex {
-                    base: res,
-                    index: j as u32,
-                });
-                let mut ty = member.ty;
-                if let (Some(Binding::Location { location: 0, .. }), Some((ValueKind::Float, n))) =
-                    (&member.binding, type_shape(&m, member.ty))
-                {
-                    v = b.widen(v, n, 4, ValueKind::Float, vec4);
-                    ty = vec4;
-                }
-                let _ = layouter.update(m.to_ctx());
-                offset = layouter[ty].alignment.round_up(offset);
-                let size = layouter[ty].size;
-                new_members.push(StructMember {
-                    name: member.name.clone(),
-                    ty,
-                    binding: member.binding.clone(),
-                    offset,
-                });
-                offset += size;
-                components.push(v);
-            }
-            let span = offset.div_ceil(16) * 16;
-            let struct_ty = m.types.insert(
-                Type {
-                    name: Some("EsslGlOutput".into()),
-                    inner: TypeInner::Struct {
-                        members: new_members,
-                        span,
-                    },
-                },
-                Span::UNDEFINED,
-            );
-            value = Some(b.emit(Expression::Compose {
-                ty: struct_ty,
-                components,
-            }));
-            result = Some(FunctionResult {
-                ty: struct_ty,
-                binding: None,
-            });
-        }
-    }
+    let (result, value) = match (widen_output, &original.result, result_expr) {
+        (true, Some(r), Some(res)) => widen_result(&mut b, &mut m, r, res),
+        _ => (original.result.clone(), result_expr),
+    };
     b.body.push(Statement::Return { value }, Span::UNDEFINED);
 
     m.entry_points[ep_index].function = Function {
@@ -362,6 +244,183 @@ pub(crate) fn wrap_entry_point(
         diagnostic_filter_leaf: None,
     };
     m
+}
+
+/// The index of the entry point named `main` (else the first one), `None` without any.
+fn main_index(m: &Module) -> Option<usize> {
+    m.entry_points
+        .iter()
+        .position(|e| e.name == "main")
+        .or(if m.entry_points.is_empty() {
+            None
+        } else {
+            Some(0)
+        })
+}
+
+/// Adds the entry point's body to the module as the ordinary function `essl_gl_main`,
+/// without bindings.
+fn move_body_to_function(m: &mut Module, original: &Function) -> Handle<Function> {
+    let mut inner = original.clone();
+    inner.name = Some("essl_gl_main".into());
+    for arg in &mut inner.arguments {
+        arg.binding = None;
+    }
+    if let Some(r) = &mut inner.result {
+        r.binding = None;
+    }
+    m.functions.append(inner, Span::UNDEFINED)
+}
+
+impl Builder {
+    /// Argument `index`, fed as `p` says, converted to the declared `(kind, n)` of type
+    /// `declared_ty`: extra components dropped, the kind converted, normalized 32-bit
+    /// integers scaled, missing components filled with GL's defaults.
+    fn convert_input(
+        &mut self,
+        index: u32,
+        declared_ty: Handle<Type>,
+        p: &InputPatch,
+        (kind, n): (ValueKind, u8),
+    ) -> Handle<Expression> {
+        let mut v = self.plain(Expression::FunctionArgument(index));
+        let k = p.used.min(n).min(p.fed_count);
+        v = self.take(v, p.fed_count, k);
+        if p.fed_kind != kind {
+            let convert = if kind == ValueKind::Float || p.fed_kind == ValueKind::Float {
+                Some(4)
+            } else {
+                None
+            };
+            v = self.emit(Expression::As {
+                expr: v,
+                kind: scalar(kind).kind,
+                convert,
+            });
+        }
+        if let Some(norm) = p.norm {
+            v = self.normalize(v, norm, k);
+        }
+        self.widen(v, k, n, kind, declared_ty)
+    }
+
+    /// `v` (of `k` components) scaled as a normalized 32-bit integer: `max(x / (2³¹ − 1), −1)`
+    /// or `x / (2³² − 1)`.
+    fn normalize(&mut self, v: Handle<Expression>, norm: Norm32, k: u8) -> Handle<Expression> {
+        let factor = match norm {
+            Norm32::Signed => 1.0 / 2_147_483_647.0,
+            Norm32::Unsigned => 1.0 / 4_294_967_295.0,
+        };
+        let f = self.plain(Expression::Literal(Literal::F32(factor)));
+        let mut v = self.emit(Expression::Binary {
+            op: BinaryOperator::Multiply,
+            left: v,
+            right: f,
+        });
+        if norm == Norm32::Signed {
+            let mut lo = self.plain(Expression::Literal(Literal::F32(-1.0)));
+            if k > 1 {
+                lo = self.emit(Expression::Splat {
+                    size: vector_size(k),
+                    value: lo,
+                });
+            }
+            v = self.emit(Expression::Math {
+                fun: MathFunction::Max,
+                arg: v,
+                arg1: Some(lo),
+                arg2: None,
+                arg3: None,
+            });
+        }
+        v
+    }
+}
+
+/// The wrapper's result and returned value when the location-0 output is widened to `vec4`:
+/// a bound `float`/`vec2`/`vec3` result directly, or the member of a result struct (the
+/// struct rebuilt as `EsslGlOutput`). Other results are returned as they are.
+fn widen_result(
+    b: &mut Builder,
+    m: &mut Module,
+    r: &FunctionResult,
+    res: Handle<Expression>,
+) -> (Option<FunctionResult>, Option<Handle<Expression>>) {
+    let vec4 = shape_type(m, ValueKind::Float, 4);
+    if let Some(Binding::Location { location: 0, .. }) = r.binding {
+        if let Some((ValueKind::Float, n)) = type_shape(m, r.ty) {
+            let value = b.widen(res, n, 4, ValueKind::Float, vec4);
+            let result = FunctionResult {
+                ty: vec4,
+                binding: r.binding.clone(),
+            };
+            return (Some(result), Some(value));
+        }
+    } else if let TypeInner::Struct { members, .. } = m.types[r.ty].inner.clone() {
+        let (value, struct_ty) = widen_struct(b, m, &members, res, vec4);
+        let result = FunctionResult {
+            ty: struct_ty,
+            binding: None,
+        };
+        return (Some(result), Some(value));
+    }
+    (Some(r.clone()), Some(res))
+}
+
+/// A copy of the output struct `res` (of `members`) whose location-0 member is widened to
+/// `vec4`: the composed value and its new struct type, laid out again.
+fn widen_struct(
+    b: &mut Builder,
+    m: &mut Module,
+    members: &[StructMember],
+    res: Handle<Expression>,
+    vec4: Handle<Type>,
+) -> (Handle<Expression>, Handle<Type>) {
+    let mut new_members = Vec::new();
+    let mut components = Vec::new();
+    let mut offset = 0u32;
+    let mut layouter = naga::proc::Layouter::default();
+    let _ = layouter.update(m.to_ctx());
+    for (j, member) in members.iter().enumerate() {
+        let mut v = b.emit(Expression::AccessIndex {
+            base: res,
+            index: j as u32,
+        });
+        let mut ty = member.ty;
+        if let (Some(Binding::Location { location: 0, .. }), Some((ValueKind::Float, n))) =
+            (&member.binding, type_shape(m, member.ty))
+        {
+            v = b.widen(v, n, 4, ValueKind::Float, vec4);
+            ty = vec4;
+        }
+        let _ = layouter.update(m.to_ctx());
+        offset = layouter[ty].alignment.round_up(offset);
+        let size = layouter[ty].size;
+        new_members.push(StructMember {
+            name: member.name.clone(),
+            ty,
+            binding: member.binding.clone(),
+            offset,
+        });
+        offset += size;
+        components.push(v);
+    }
+    let span = offset.div_ceil(16) * 16;
+    let struct_ty = m.types.insert(
+        Type {
+            name: Some("EsslGlOutput".into()),
+            inner: TypeInner::Struct {
+                members: new_members,
+                span,
+            },
+        },
+        Span::UNDEFINED,
+    );
+    let value = b.emit(Expression::Compose {
+        ty: struct_ty,
+        components,
+    });
+    (value, struct_ty)
 }
 
 #[cfg(test)]
