@@ -16,7 +16,6 @@ impl Context {
     /// `INVALID_ENUM`, a negative size → `INVALID_VALUE`, a `dst` too small →
     /// `INVALID_OPERATION`. Pixels outside the framebuffer are left untouched. Submits the
     /// recorded commands and waits for them.
-    #[allow(clippy::too_many_arguments)]
     pub fn read_pixels(
         &mut self,
         x: i32,

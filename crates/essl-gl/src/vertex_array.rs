@@ -101,6 +101,18 @@ pub(crate) fn type_size(ty: u32) -> Option<u32> {
     }
 }
 
+/// An attribute array as `vertexAttribPointer` / `vertexAttribIPointer` describe it.
+struct AttribPointer {
+    index: u32,
+    size: i32,
+    ty: u32,
+    normalized: bool,
+    /// Set by `vertexAttribIPointer`: the values stay integers.
+    integer: bool,
+    stride: i32,
+    offset: i64,
+}
+
 impl Context {
     /// Creates a vertex array object (`createVertexArray`).
     pub fn create_vertex_array(&mut self) -> VertexArray {
@@ -214,17 +226,16 @@ impl Context {
             gl::FLOAT,
             gl::HALF_FLOAT,
         ];
-        self.attrib_pointer(
+        let array = AttribPointer {
             index,
             size,
             ty,
             normalized,
-            false,
+            integer: false,
             stride,
             offset,
-            &float_types,
-            F,
-        );
+        };
+        self.attrib_pointer(array, &float_types, F);
     }
 
     /// Describes attribute `index`'s array of integers (`vertexAttribIPointer`) for an
@@ -247,22 +258,30 @@ impl Context {
             gl::INT,
             gl::UNSIGNED_INT,
         ];
-        self.attrib_pointer(index, size, ty, false, true, stride, offset, &int_types, F);
+        let array = AttribPointer {
+            index,
+            size,
+            ty,
+            normalized: false,
+            integer: true,
+            stride,
+            offset,
+        };
+        self.attrib_pointer(array, &int_types, F);
     }
 
-    #[allow(clippy::too_many_arguments)]
-    fn attrib_pointer(
-        &mut self,
-        index: u32,
-        size: i32,
-        ty: u32,
-        normalized: bool,
-        integer: bool,
-        stride: i32,
-        offset: i64,
-        types: &[u32],
-        function: &str,
-    ) {
+    /// `vertexAttribPointer` and `vertexAttribIPointer`: WebGL's checks (`ty` among
+    /// `types`), then the array's description.
+    fn attrib_pointer(&mut self, array: AttribPointer, types: &[u32], function: &str) {
+        let AttribPointer {
+            index,
+            size,
+            ty,
+            normalized,
+            integer,
+            stride,
+            offset,
+        } = array;
         let Some(i) = self.attrib_index(index, function) else {
             return;
         };
