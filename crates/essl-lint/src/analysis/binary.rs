@@ -1,0 +1,404 @@
+//! The binary operators: comparisons and logic, the arithmetic of scalars and vectors (with
+//! the facts each operation keeps: sign, non-zero, unit range, length), and the products and
+//! sums of matrices.
+
+use naga::{BinaryOperator as Bo, Expression as E, Function, Handle, MathFunction as Mf};
+use naga::{ScalarKind, TypeInner};
+
+use super::memory::shape;
+use super::{Analysis, Site, EPS};
+use crate::interval::Interval;
+use crate::value::{Facts, Num, Val};
+
+/// The operands of an arithmetic operator on scalars and vectors: the expressions and their
+/// numbers.
+struct Operands<'a> {
+    op: Bo,
+    /// The left and right expressions.
+    l: Handle<E>,
+    r: Handle<E>,
+    /// Their numbers.
+    a: &'a Num,
+    b: &'a Num,
+    /// Where the operands come from.
+    deps: Facts,
+    /// Whether the result is an integer.
+    is_int: bool,
+}
+
+impl Operands<'_> {
+    /// Whether the result is a vector.
+    fn vector_result(&self) -> bool {
+        self.a.n.max(self.b.n) > 1
+    }
+
+    /// Whether a scalar meets a vector.
+    fn mixed(&self) -> bool {
+        (self.a.n == 1) != (self.b.n == 1)
+    }
+}
+
+impl Analysis {
+    /// Whether `e` is `x - y * floor(x / y)`: GLSL's `mod` as essl lowers it.
+    fn is_mod(f: &Function, left: Handle<E>, right: Handle<E>) -> Option<Handle<E>> {
+        let E::Binary {
+            op: Bo::Multiply,
+            left: y,
+            right: fl,
+        } = f.expressions[right]
+        else {
+            return None;
+        };
+        let E::Math {
+            fun: Mf::Floor,
+            arg: q,
+            ..
+        } = f.expressions[fl]
+        else {
+            return None;
+        };
+        let E::Binary {
+            op: Bo::Divide,
+            left: x2,
+            right: y2,
+        } = f.expressions[q]
+        else {
+            return None;
+        };
+        (x2 == left && y2 == y).then_some(y)
+    }
+
+    /// `l OP r`.
+    pub(super) fn binary(
+        &self,
+        s: Site,
+        ty: &TypeInner,
+        op: Bo,
+        l: Handle<E>,
+        r: Handle<E>,
+    ) -> Val {
+        let (module, id) = (s.module, s.id);
+        let (lv, rv) = (self.v(id, l), self.v(id, r));
+        if lv.is_bot() || rv.is_bot() {
+            return Val::Bot;
+        }
+        let deps = lv.facts().with(rv.facts()).only(Facts::DEPS);
+        match op {
+            Bo::Equal
+            | Bo::NotEqual
+            | Bo::Less
+            | Bo::LessEqual
+            | Bo::Greater
+            | Bo::GreaterEqual
+            | Bo::LogicalAnd
+            | Bo::LogicalOr => {
+                return shape(module, ty, &|n, _| Num::splat(Interval::UNIT, n, deps));
+            }
+            Bo::And | Bo::InclusiveOr | Bo::ExclusiveOr | Bo::ShiftLeft | Bo::ShiftRight => {
+                return Self::unknown(module, ty, deps);
+            }
+            _ => {}
+        }
+        let unknown = || Self::unknown(module, ty, deps);
+        match (lv, rv) {
+            (Val::Num(a), Val::Num(b)) => {
+                let o = Operands {
+                    op,
+                    l,
+                    r,
+                    a,
+                    b,
+                    deps,
+                    is_int: matches!(ty.scalar_kind(), Some(ScalarKind::Sint | ScalarKind::Uint)),
+                };
+                Val::Num(self.num_binary(s, &o))
+            }
+            (Val::Agg(m), Val::Num(v)) if op == Bo::Multiply && v.n > 1 => {
+                matrix_times_vector(m, v, deps).unwrap_or_else(unknown)
+            }
+            (Val::Num(v), Val::Agg(m)) if op == Bo::Multiply && v.n > 1 => {
+                vector_times_matrix(v, m, deps).unwrap_or_else(unknown)
+            }
+            (Val::Agg(a), Val::Agg(b)) if op == Bo::Multiply => {
+                matrix_product(a, b, deps).unwrap_or_else(unknown)
+            }
+            (Val::Agg(a), Val::Agg(b))
+                if a.len() == b.len() && matches!(op, Bo::Add | Bo::Subtract) =>
+            {
+                matrix_sum(op, a, b, deps)
+            }
+            (Val::Agg(m), Val::Num(s)) | (Val::Num(s), Val::Agg(m)) if s.n == 1 => {
+                matrix_scale(op, matches!(lv, Val::Agg(_)), m, s, deps)
+            }
+            _ => unknown(),
+        }
+    }
+
+    /// An arithmetic operator on scalars and vectors.
+    fn num_binary(&self, s: Site, o: &Operands) -> Num {
+        match o.op {
+            Bo::Add => add(o),
+            Bo::Subtract => self.subtract(s, o),
+            Bo::Multiply => self.multiply(s, o),
+            Bo::Divide => divide(o),
+            Bo::Modulo => modulo(o),
+            _ => Num::from_components(&vec![Interval::FULL; o.a.n.max(o.b.n) as usize], o.deps),
+        }
+    }
+
+    /// `a - b`: 0 when they are the same, `mod(x, y)` as essl lowers it.
+    fn subtract(&self, s: Site, o: &Operands) -> Num {
+        let (a, b, deps) = (o.a, o.b, o.deps);
+        if self.same(s.f, s.id, o.l, o.r) {
+            return Num::from_components(&vec![Interval::point(0.0); a.n.max(b.n) as usize], deps);
+        }
+        if let Some(y) = Self::is_mod(s.f, o.l, o.r) {
+            if let Some(yv) = self.nm(s.id, y) {
+                let comps = a.zip(&yv, Interval::modulo);
+                return Num::from_components(&comps, deps.set(Facts::NN, yv.facts.has(Facts::NN)));
+            }
+        }
+        let comps = a.zip(b, Interval::sub);
+        let mut out = Num::from_components(&comps, deps.with(Facts::DIFF));
+        if !o.mixed() && o.vector_result() {
+            out.norm = out.norm.meet(triangle(a.norm, b.norm));
+        }
+        out.settle()
+    }
+
+    /// `a * b`: a square when they are the same.
+    fn multiply(&self, s: Site, o: &Operands) -> Num {
+        let (a, b, deps) = (o.a, o.b, o.deps);
+        let (fa, fb) = (a.facts, b.facts);
+        if self.same(s.f, s.id, o.l, o.r) && a.n == b.n {
+            let comps = a.map(Interval::sqr);
+            let facts = deps
+                .with(Facts::NN)
+                .set(
+                    Facts::POS,
+                    fa.has(Facts::POS) || (a.n == 1 && fa.has(Facts::NZ)),
+                )
+                .set(Facts::UNIT, fa.has(Facts::UNIT));
+            return Num::from_components(&comps, facts);
+        }
+        let mixed = o.mixed();
+        let comps = a.zip(b, Interval::mul);
+        let nn = fa.has(Facts::NN) && fb.has(Facts::NN);
+        let pos = fa.has(Facts::POS) && fb.has(Facts::POS);
+        let nz = fa.has(Facts::NZ) && fb.has(Facts::NZ) && (mixed || !o.vector_result());
+        let unit = fa.has(Facts::UNIT) && fb.has(Facts::UNIT);
+        let cross = mixed && (fa.any(Facts::CROSS) || fb.any(Facts::CROSS));
+        let facts = deps
+            .set(Facts::NN, nn)
+            .set(Facts::POS, pos)
+            .set(Facts::NZ, nz)
+            .set(Facts::UNIT, unit)
+            .set(Facts::CROSS, cross);
+        let mut out = Num::from_components(&comps, facts);
+        if mixed {
+            let (s, v) = if a.n == 1 { (a, b) } else { (b, a) };
+            out.norm = out.norm.meet(s.c[0].abs().mul(v.norm));
+        }
+        out.settle()
+    }
+}
+
+/// `a + b`.
+fn add(o: &Operands) -> Num {
+    let (a, b) = (o.a, o.b);
+    let (fa, fb) = (a.facts, b.facts);
+    let comps = a.zip(b, Interval::add);
+    let nn = fa.has(Facts::NN) && fb.has(Facts::NN);
+    let pos =
+        (fa.has(Facts::POS) && fb.has(Facts::NN)) || (fa.has(Facts::NN) && fb.has(Facts::POS));
+    let nz = if o.vector_result() {
+        nn && (fa.has(Facts::NZ) || fb.has(Facts::NZ))
+    } else {
+        pos
+    };
+    let facts = o
+        .deps
+        .set(Facts::NN, nn)
+        .set(Facts::POS, pos)
+        .set(Facts::NZ, nz);
+    let mut out = Num::from_components(&comps, facts);
+    if !o.mixed() && o.vector_result() {
+        out.norm = out.norm.meet(triangle(a.norm, b.norm));
+    }
+    out.settle()
+}
+
+/// `a / b` (truncated for integers).
+fn divide(o: &Operands) -> Num {
+    let (a, b, is_int) = (o.a, o.b, o.is_int);
+    let fa = a.facts;
+    let fb = b.facts;
+    let comps = a.zip(b, |x, y| if is_int { x.div(y).trunc() } else { x.div(y) });
+    let nn = fa.has(Facts::NN) && fb.has(Facts::NN);
+    let pos = fa.has(Facts::POS) && fb.has(Facts::POS) && !is_int;
+    let nz = fa.has(Facts::NZ) && !is_int && (b.n == 1 || !o.vector_result());
+    let cross = b.n == 1 && fa.any(Facts::CROSS);
+    let facts = o
+        .deps
+        .set(Facts::NN, nn)
+        .set(Facts::POS, pos)
+        .set(Facts::NZ, nz)
+        .set(Facts::CROSS, cross);
+    let mut out = Num::from_components(&comps, facts);
+    if b.n == 1 && a.n > 1 && !is_int {
+        out.norm = out.norm.meet(a.norm.div(b.c[0].abs()));
+    }
+    out.settle()
+}
+
+/// `a % b` (integers) or the remainder's range by magnitude (floats).
+fn modulo(o: &Operands) -> Num {
+    let is_int = o.is_int;
+    let comps = o.a.zip(o.b, |x, y| {
+        if is_int {
+            x.rem_int(y)
+        } else {
+            let m = y.mag();
+            Interval::new(
+                if x.lo >= 0.0 { 0.0 } else { x.lo.max(-m) },
+                if x.hi <= 0.0 { 0.0 } else { x.hi.min(m) },
+            )
+        }
+    });
+    Num::from_components(&comps, o.deps.set(Facts::NN, o.a.facts.has(Facts::NN)))
+}
+
+/// Matrix times column vector (`None`: a matrix whose columns are not numbers).
+fn matrix_times_vector(m: &[Val], v: &Num, deps: Facts) -> Option<Val> {
+    let cols: Vec<Num> = m.iter().filter_map(|c| c.num().copied()).collect();
+    if cols.len() != m.len() || cols.len() != v.n as usize {
+        return None;
+    }
+    let rows = cols[0].n as usize;
+    let comps: Vec<Interval> = (0..rows)
+        .map(|row| {
+            cols.iter()
+                .enumerate()
+                .fold(Interval::point(0.0), |s, (c, col)| {
+                    s.add(col.c[row].mul(v.c[c]))
+                })
+        })
+        .collect();
+    let invertible = cols.iter().all(|c| c.facts.has(Facts::NZ));
+    let nz = invertible && v.facts.has(Facts::NZ) && cols.len() == rows;
+    // A direction (w = 0) keeps a non-zero xyz through an invertible (affine or
+    // projective) transform.
+    let nz3 = invertible
+        && rows == 4
+        && v.n == 4
+        && v.c[3].as_point() == Some(0.0)
+        && v.facts.has(Facts::NZ3);
+    Some(Val::Num(Num::from_components(
+        &comps,
+        deps.set(Facts::NZ, nz).set(Facts::NZ3, nz3),
+    )))
+}
+
+/// Row vector times matrix (`None`: a matrix whose columns are not numbers).
+fn vector_times_matrix(v: &Num, m: &[Val], deps: Facts) -> Option<Val> {
+    let cols: Vec<Num> = m.iter().filter_map(|c| c.num().copied()).collect();
+    if cols.len() != m.len() {
+        return None;
+    }
+    let comps: Vec<Interval> = cols
+        .iter()
+        .map(|col| {
+            (0..col.n as usize).fold(Interval::point(0.0), |s, r| {
+                s.add(col.c[r].mul(v.c[r.min(v.n as usize - 1)]))
+            })
+        })
+        .collect();
+    let invertible = cols.iter().all(|c| c.facts.has(Facts::NZ));
+    Some(Val::Num(Num::from_components(
+        &comps,
+        deps.set(Facts::NZ, invertible && v.facts.has(Facts::NZ)),
+    )))
+}
+
+/// Matrix product: each column of the result is A times a column of B (`None`: an A whose
+/// columns are not numbers).
+fn matrix_product(a: &[Val], b: &[Val], deps: Facts) -> Option<Val> {
+    let acols: Vec<Num> = a.iter().filter_map(|c| c.num().copied()).collect();
+    if acols.len() != a.len() || acols.is_empty() {
+        return None;
+    }
+    let rows = acols[0].n as usize;
+    let inv =
+        acols.iter().all(|c| c.facts.has(Facts::NZ)) && b.iter().all(|c| c.facts().has(Facts::NZ));
+    let cols = b
+        .iter()
+        .map(|bc| match bc.num() {
+            Some(v) => {
+                let comps: Vec<Interval> = (0..rows)
+                    .map(|row| {
+                        acols
+                            .iter()
+                            .enumerate()
+                            .fold(Interval::point(0.0), |s, (c, col)| {
+                                s.add(col.c[row].mul(v.c[c.min(v.n as usize - 1)]))
+                            })
+                    })
+                    .collect();
+                Val::Num(Num::from_components(&comps, deps.set(Facts::NZ, inv)))
+            }
+            None => Val::Any,
+        })
+        .collect();
+    Some(Val::Agg(cols))
+}
+
+/// The sum or difference of two matrices, column by column.
+fn matrix_sum(op: Bo, a: &[Val], b: &[Val], deps: Facts) -> Val {
+    Val::Agg(
+        a.iter()
+            .zip(b)
+            .map(|(x, y)| match (x.num(), y.num()) {
+                (Some(x), Some(y)) => Val::Num(Num::from_components(
+                    &x.zip(y, |p, q| if op == Bo::Add { p.add(q) } else { p.sub(q) }),
+                    deps,
+                )),
+                _ => Val::Any,
+            })
+            .collect(),
+    )
+}
+
+/// A matrix times a scalar, or divided by one (`matrix_left`: the matrix is the left operand).
+fn matrix_scale(op: Bo, matrix_left: bool, m: &[Val], s: &Num, deps: Facts) -> Val {
+    let scale_nz = s.facts.has(Facts::NZ);
+    Val::Agg(
+        m.iter()
+            .map(|c| match c.num() {
+                Some(c) => {
+                    let comps = c.map(|x| match op {
+                        Bo::Multiply => x.mul(s.c[0]),
+                        Bo::Divide if matrix_left => x.div(s.c[0]),
+                        _ => Interval::FULL,
+                    });
+                    Val::Num(Num::from_components(
+                        &comps,
+                        deps.set(
+                            Facts::NZ,
+                            scale_nz && c.facts.has(Facts::NZ) && op == Bo::Multiply,
+                        ),
+                    ))
+                }
+                None => Val::Any,
+            })
+            .collect(),
+    )
+}
+
+/// The length of `a ± b` from the lengths of `a` and `b`.
+pub(super) fn triangle(a: Interval, b: Interval) -> Interval {
+    if a.is_empty() || b.is_empty() {
+        return Interval::NON_NEGATIVE;
+    }
+    let lo = (a.lo - b.hi).max(b.lo - a.hi).max(0.0);
+    Interval::new(lo, a.hi + b.hi).slack(EPS)
+}

@@ -1,0 +1,370 @@
+//! The value of each expression: constants, arguments, variables and their parts, loads
+//! (bounded by the enclosing conditions), vector construction, conversions and texels; the
+//! operators and built-in functions have modules of their own.
+
+use naga::{Expression as E, Handle, ScalarKind, TypeInner, UnaryOperator as Uo};
+
+use super::memory::{const_value, literal, pointee, read, shape};
+use super::{Analysis, Mode, Place, Root, Site, ANY, EPS};
+use crate::interval::Interval;
+use crate::value::{Facts, Num, Val};
+
+impl Analysis {
+    /// The value of expression `h` of function `id` (evaluated already).
+    pub(super) fn v(&self, id: usize, h: Handle<E>) -> &Val {
+        &self.functions[id].values[h.index()]
+    }
+
+    /// The number `h` of function `id` is, if it is a scalar or vector with a value.
+    pub(super) fn nm(&self, id: usize, h: Handle<E>) -> Option<Num> {
+        self.functions[id].values[h.index()]
+            .num()
+            .copied()
+            .filter(|n| !n.is_bottom())
+    }
+
+    /// Evaluates expression `h`: its value, and the place it points to when it is a pointer.
+    pub(super) fn eval(&mut self, s: Site, h: Handle<E>) {
+        let ty = s.ty(h);
+        let e = &s.f.expressions[h];
+        let (val, place) = match self.variable(s, e, ty) {
+            Some(vp) => vp,
+            None => (self.operation(s, e, ty), None),
+        };
+        let ff = &mut self.functions[s.id];
+        ff.values[h.index()] = val;
+        ff.places[h.index()] = place;
+    }
+
+    /// The facts about where the values of `hs` come from.
+    fn deps_of(&self, id: usize, hs: &[Handle<E>]) -> Facts {
+        hs.iter().fold(Facts::NONE, |acc, x| {
+            acc.with(self.v(id, *x).facts().only(Facts::DEPS))
+        })
+    }
+
+    /// The value (and place) of a constant, an argument, a variable, a call's result, a part of
+    /// a variable, or of anything the entry point computes; `None` for other operations.
+    fn variable(&self, s: Site, e: &E, ty: &TypeInner) -> Option<(Val, Option<Place>)> {
+        let (module, id) = (s.module, s.id);
+        let entry = self.functions[id].entry;
+        let at = |root: Root| {
+            Some((
+                Val::Any,
+                Some(Place {
+                    root,
+                    path: Vec::new(),
+                }),
+            ))
+        };
+        let val = match e {
+            E::Literal(l) => Val::Num(Num::constant(&[literal(l)])),
+            E::Constant(c) => const_value(module, module.constants[*c].init),
+            E::ZeroValue(_) => shape(module, ty, &|n, _| Num::constant(&vec![0.0; n as usize])),
+            E::Override(_) => self.external(module, ty, Facts::UNIFORM),
+            E::FunctionArgument(i) => {
+                if matches!(
+                    ty,
+                    TypeInner::Pointer { .. } | TypeInner::ValuePointer { .. }
+                ) {
+                    return at(Root::Arg(id, *i as usize));
+                } else if entry {
+                    self.external(module, ty, Facts::INPUT)
+                } else {
+                    self.args[id].get(*i as usize).cloned().unwrap_or(Val::Any)
+                }
+            }
+            E::GlobalVariable(g) => return at(Root::Global(g.index())),
+            E::LocalVariable(l) => return at(Root::Local(id, l.index())),
+            E::CallResult(fh) => self.results[fh.index()].clone(),
+            E::Access { base, .. } | E::AccessIndex { base, .. }
+                if self.functions[id].places[base.index()].is_some() =>
+            {
+                return Some((Val::Any, self.access_place(s, e)));
+            }
+            // The entry point only moves data between the pipeline and private variables.
+            _ if entry => self.external(module, ty, Facts::INPUT),
+            _ => return None,
+        };
+        Some((val, None))
+    }
+
+    /// The value of an operation on values.
+    fn operation(&self, s: Site, e: &E, ty: &TypeInner) -> Val {
+        let (module, id) = (s.module, s.id);
+        match e {
+            E::Access { base, .. } => match self.v(id, *base) {
+                Val::Arr(x) => (**x).clone(),
+                Val::Agg(xs) => xs.iter().fold(Val::Bot, |a, x| a.join(x)),
+                Val::Num(n) => read(&Val::Num(*n), &[ANY]),
+                other => other.clone(),
+            },
+            E::AccessIndex { base, index } => match self.v(id, *base) {
+                Val::Arr(x) => (**x).clone(),
+                Val::Agg(xs) => xs.get(*index as usize).cloned().unwrap_or(Val::Any),
+                Val::Num(n) => Val::Num(n.component(*index as usize)),
+                other => other.clone(),
+            },
+            E::Load { pointer } => match self.functions[id].places[pointer.index()].clone() {
+                Some(p) => {
+                    let v = self.load(module, &p, ty);
+                    if self.refine.is_empty() {
+                        v
+                    } else {
+                        self.refined(&p, v)
+                    }
+                }
+                None => Self::unknown(module, ty, Facts::NONE),
+            },
+            E::Splat { size, value } => self.splat(id, *size as u8, *value),
+            E::Swizzle {
+                size,
+                vector,
+                pattern,
+            } => self.swizzle(id, &pattern[..*size as usize], *vector),
+            E::Compose { components, .. } => self.compose(s, ty, components),
+            E::Unary { op, expr } => self.unary(s, ty, *op, *expr),
+            E::Binary { op, left, right } => self.binary(s, ty, *op, *left, *right),
+            E::Select { accept, reject, .. } => self.v(id, *accept).join(self.v(id, *reject)),
+            E::Derivative { axis, expr, .. } => self.derivative(id, *axis, *expr),
+            E::Relational { argument, .. } => {
+                let deps = self.deps_of(id, &[*argument]);
+                shape(module, ty, &|n, _| Num::splat(Interval::UNIT, n, deps))
+            }
+            E::As {
+                expr,
+                kind,
+                convert,
+            } => self.convert(module, ty, id, *expr, *kind, *convert),
+            E::Math { .. } => self.math(s, ty, e),
+            E::ImageSample {
+                coordinate,
+                depth_ref,
+                ..
+            } => {
+                let deps = self.deps_of(id, &[*coordinate]).with(Facts::TEXTURE);
+                if depth_ref.is_some() {
+                    Val::Num(Num::scalar(Interval::UNIT, deps.with(Facts::EXT)))
+                } else {
+                    self.texel(module, ty, deps)
+                }
+            }
+            E::ImageLoad { coordinate, .. } => {
+                let deps = self.deps_of(id, &[*coordinate]).with(Facts::TEXTURE);
+                self.texel(module, ty, deps)
+            }
+            E::ImageQuery { .. } => shape(module, ty, &|n, _| {
+                Num::splat(Interval::NON_NEGATIVE, n, Facts::NONE)
+            }),
+            _ => Self::unknown(module, ty, Facts::NONE),
+        }
+    }
+
+    /// A scalar repeated `n` times.
+    fn splat(&self, id: usize, n: u8, value: Handle<E>) -> Val {
+        match self.nm(id, value) {
+            Some(x) => {
+                let mut r = Num::splat(x.c[0], n, x.facts);
+                r.norm = r.norm.meet(
+                    x.c[0]
+                        .abs()
+                        .mul(Interval::point((n as f64).sqrt()))
+                        .slack(EPS),
+                );
+                Val::Num(r.settle())
+            }
+            None => Val::Bot,
+        }
+    }
+
+    /// The components `pattern` of `vector`: a permutation keeps the length and its facts.
+    fn swizzle(&self, id: usize, pattern: &[naga::SwizzleComponent], vector: Handle<E>) -> Val {
+        let Some(x) = self.nm(id, vector) else {
+            return Val::Bot;
+        };
+        let idx: Vec<usize> = pattern.iter().map(|c| *c as usize).collect();
+        let comps: Vec<Interval> = idx.iter().map(|&i| x.c[i.min(x.n as usize - 1)]).collect();
+        let mut sorted = idx.clone();
+        sorted.sort_unstable();
+        sorted.dedup();
+        let permutation = sorted.len() == x.n as usize && idx.len() == x.n as usize;
+        let xyz = idx.len() == 3 && sorted == [0, 1, 2];
+        let nz = x.facts.has(Facts::NZ) && (permutation || x.facts.has(Facts::EXT))
+            || xyz && x.facts.has(Facts::NZ3);
+        let facts = x
+            .facts
+            .set(Facts::NZ, nz)
+            .set(Facts::NZ3, permutation && x.facts.has(Facts::NZ3))
+            .set(Facts::CROSS, permutation && x.facts.any(Facts::CROSS));
+        let mut r = Num::from_components(&comps, facts);
+        if permutation {
+            r.norm = r.norm.meet(x.norm);
+        }
+        Val::Num(r.settle())
+    }
+
+    /// `-x`, `!x` and the bit operators.
+    fn unary(&self, s: Site, ty: &TypeInner, op: Uo, expr: Handle<E>) -> Val {
+        match (op, self.nm(s.id, expr)) {
+            (Uo::Negate, Some(x)) => {
+                let keep = x.facts.only(
+                    Facts::NZ
+                        .with(Facts::NZ3)
+                        .with(Facts::UNIT)
+                        .with(Facts::DIFF)
+                        .with(Facts::EXT)
+                        .with(Facts::ALL_OR),
+                );
+                let mut r = Num::from_components(&x.map(Interval::neg), keep);
+                r.norm = r.norm.meet(x.norm);
+                Val::Num(r.settle())
+            }
+            (Uo::LogicalNot, Some(x)) => {
+                Val::Num(Num::splat(Interval::UNIT, x.n, x.facts.only(Facts::DEPS)))
+            }
+            (_, Some(x)) => Self::unknown(s.module, ty, x.facts),
+            (_, None) => Val::Bot,
+        }
+    }
+
+    /// `dFdx`, `dFdy`, `fwidth`: 0 for a constant, non-negative for `fwidth`.
+    fn derivative(&self, id: usize, axis: naga::DerivativeAxis, expr: Handle<E>) -> Val {
+        match self.nm(id, expr) {
+            Some(x) => {
+                let deps = x.facts.only(Facts::DEPS);
+                if x.comps().iter().all(|c| c.as_point().is_some()) {
+                    Val::Num(Num::splat(Interval::point(0.0), x.n, deps))
+                } else if axis == naga::DerivativeAxis::Width {
+                    Val::Num(Num::splat(Interval::NON_NEGATIVE, x.n, deps))
+                } else {
+                    Val::Num(Num::splat(Interval::FULL, x.n, deps))
+                }
+            }
+            None => Val::Bot,
+        }
+    }
+
+    /// A texel: unknown in [`Mode::Sound`], in `[0, 1]` in [`Mode::Typical`].
+    fn texel(&self, module: &naga::Module, ty: &TypeInner, deps: Facts) -> Val {
+        match self.mode {
+            Mode::Sound => self.external(module, ty, deps),
+            Mode::Typical => shape(module, ty, &|n, _| {
+                Num::splat(Interval::UNIT, n, Facts::EXT.with(deps))
+            }),
+        }
+    }
+
+    /// The place a part of a variable is (an array element stands for every element).
+    fn access_place(&self, s: Site, e: &E) -> Option<Place> {
+        let (base, index) = match e {
+            E::Access { base, .. } => (*base, ANY),
+            E::AccessIndex { base, index } => (*base, *index),
+            _ => return None,
+        };
+        let mut p = self.functions[s.id].places[base.index()].clone()?;
+        let pointee = pointee(s.module, s.ty(base));
+        let step = match pointee {
+            TypeInner::Array { .. } => 0,
+            _ => index,
+        };
+        p.path.push(step);
+        Some(p)
+    }
+
+    /// A vector, matrix, array or struct built from its parts.
+    fn compose(&self, s: Site, ty: &TypeInner, components: &[Handle<E>]) -> Val {
+        let (module, f, id) = (s.module, s.f, s.id);
+        match ty {
+            TypeInner::Vector { .. } | TypeInner::Scalar(_) => {
+                let mut comps = Vec::new();
+                let mut facts = Facts::ALL_AND.without(Facts::NZ);
+                let mut nz = false;
+                let mut nz3 = false;
+                for c in components {
+                    let Some(x) = self.nm(id, *c) else {
+                        return Val::Bot;
+                    };
+                    let start = comps.len();
+                    comps.extend_from_slice(x.comps());
+                    nz |= x.facts.has(Facts::NZ);
+                    nz3 |= (start + x.n as usize <= 3 && x.facts.has(Facts::NZ))
+                        || (start == 0 && x.facts.has(Facts::NZ3));
+                    facts = facts.join(x.facts.without(Facts::NZ));
+                }
+                // `vec3(v)` of a vec4 `v` is lowered as a compose of `v[0]`, `v[1]`, `v[2]`.
+                if let [a, b, c] = components {
+                    if let (
+                        E::AccessIndex { base: b0, index: 0 },
+                        E::AccessIndex { base: b1, index: 1 },
+                        E::AccessIndex { base: b2, index: 2 },
+                    ) = (&f.expressions[*a], &f.expressions[*b], &f.expressions[*c])
+                    {
+                        if b0 == b1 && b1 == b2 && self.v(id, *b0).facts().has(Facts::NZ3) {
+                            nz = true;
+                        }
+                    }
+                }
+                Val::Num(Num::from_components(
+                    &comps,
+                    facts
+                        .set(Facts::NZ, nz)
+                        .set(Facts::NZ3, nz3)
+                        .without(Facts::DIFF)
+                        .without(Facts::CROSS),
+                ))
+            }
+            TypeInner::Array { .. } => Val::Arr(Box::new(
+                components
+                    .iter()
+                    .fold(Val::Bot, |a, c| a.join(self.v(id, *c))),
+            )),
+            TypeInner::Matrix { .. } | TypeInner::Struct { .. } => {
+                Val::Agg(components.iter().map(|c| self.v(id, *c).clone()).collect())
+            }
+            _ => Self::unknown(module, ty, Facts::NONE),
+        }
+    }
+
+    /// A conversion to another scalar kind (`convert`: `None` for a bit cast).
+    fn convert(
+        &self,
+        module: &naga::Module,
+        ty: &TypeInner,
+        id: usize,
+        expr: Handle<E>,
+        kind: ScalarKind,
+        convert: Option<u8>,
+    ) -> Val {
+        let Some(x) = self.nm(id, expr) else {
+            return Val::Bot;
+        };
+        let deps = x.facts.only(Facts::DEPS);
+        if convert.is_none() {
+            return Self::unknown(module, ty, deps);
+        }
+        if kind == ScalarKind::Bool {
+            return Val::Num(Num::splat(Interval::UNIT, x.n, deps));
+        }
+        let comps = match kind {
+            ScalarKind::Sint | ScalarKind::Uint => x.map(|c| {
+                let t = c.trunc();
+                if kind == ScalarKind::Uint {
+                    t.meet(Interval::NON_NEGATIVE).hull(if t.lo < 0.0 {
+                        Interval::NON_NEGATIVE
+                    } else {
+                        Interval::EMPTY
+                    })
+                } else {
+                    t
+                }
+            }),
+            _ => x.comps().to_vec(),
+        };
+        let keep = if kind == ScalarKind::Float {
+            x.facts
+        } else {
+            x.facts.without(Facts::POS).without(Facts::NZ)
+        };
+        Val::Num(Num::from_components(&comps, keep.without(Facts::DIFF)))
+    }
+}

@@ -1,0 +1,242 @@
+//! The value-range analysis: abstract interpretation of a validated naga module.
+//!
+//! Every expression of every function gets a [`Val`]: intervals per component and [`Facts`].
+//! Memory is flow-insensitive: each variable (a local, a private global, a pointer parameter)
+//! holds the join of every value ever stored into it, and a load reads that join. Calls are
+//! context-insensitive: a function's parameters hold the join of the arguments of every call,
+//! its result the join of every `return`, and a pointer parameter shares its cell with the
+//! variables callers pass. The whole module is iterated to a fixpoint, with widening after a
+//! few rounds so that loops terminate.
+//!
+//! External values are unknown: uniforms, the entry point's inputs and texels are `(−∞, ∞)`
+//! in [`Mode::Sound`]. [`Mode::Typical`] runs the same analysis with external values of
+//! ordinary magnitude and the signs formulas expect (`[0, 10]`, matrix entries and texels in
+//! `[0, 1]`): what the
+//! `mediump` rule needs to ask "does this overflow for ordinary parameter values?".
+//!
+//! [`Analysis`]'s `impl` is spread over the submodules by concern, which is why they use one
+//! another's methods:
+//! - `statements`: the walk over a function's statements (emits, stores, calls, returns, the
+//!   `if` conditions that refine what the branches load);
+//! - `memory`: the cells variables hold, and the shapes of external and unknown values;
+//! - `conditions`: what a comparison says about the values it compares;
+//! - `eval`: the value of each expression;
+//! - `same`: whether two expressions certainly have the same value;
+//! - `binary`: the arithmetic operators, on numbers and on matrices;
+//! - `math`: the built-in functions, by family.
+
+mod binary;
+mod conditions;
+mod eval;
+mod math;
+mod memory;
+mod same;
+mod statements;
+
+use rustc_hash::FxHashMap as HashMap;
+
+use naga::{Expression as E, Function, Handle};
+
+use crate::value::{Num, Val};
+
+pub(crate) use conditions::condition_atoms;
+pub use conditions::{refine_num, relation, Refinement};
+pub use memory::{const_value, literal};
+
+use memory::write;
+use statements::single_stores;
+
+/// The magnitude of an ordinary external value in [`Mode::Typical`]: modest, so that what
+/// overflows there overflows for values any scene uses (larger magnitudes are the runtime
+/// check's to judge, with the actual values).
+pub const TYPICAL: f64 = 10.0;
+/// The magnitude of an ordinary external matrix entry in [`Mode::Typical`] (rotations, scales
+/// and normal matrices; translations reach vectors through `M * vec4(p, 1.0)`).
+pub const TYPICAL_MATRIX: f64 = 1.0;
+
+/// Relative slack for GPU approximations of transcendental functions (a few ulps of `highp`).
+pub const EPS: f64 = 1.0 / (1u64 << 20) as f64;
+
+/// Rounds before joins become widenings.
+const WIDEN_AFTER: usize = 6;
+/// A bound on rounds (widening converges long before).
+const MAX_ROUNDS: usize = 40;
+
+/// What external values are assumed to be.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Mode {
+    /// Anything: the analysis is sound for every value.
+    Sound,
+    /// Ordinary magnitudes (`[0, TYPICAL]`, matrix entries and texels in `[0, 1]`).
+    Typical,
+}
+
+/// A variable the analysis tracks.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Root {
+    /// A local variable: (function, local index).
+    Local(usize, usize),
+    /// A global variable.
+    Global(usize),
+    /// The cell behind a pointer parameter: (function, argument index).
+    Arg(usize, usize),
+}
+
+/// A path step standing for any index (a dynamic index into a vector or matrix).
+pub const ANY: u32 = u32::MAX;
+
+/// A part of a variable: its root and the member / column / component indices to it (array
+/// elements are summarised: their index is always 0).
+#[derive(Clone, Debug, PartialEq, Eq, Hash)]
+pub struct Place {
+    /// The variable.
+    pub root: Root,
+    /// The indices.
+    pub path: Vec<u32>,
+}
+
+/// What the analysis knows about one function.
+#[derive(Clone, Debug, Default)]
+pub struct FnFacts {
+    /// The value of each expression (by handle index).
+    pub values: Vec<Val>,
+    /// The place each pointer expression points to.
+    pub places: Vec<Option<Place>>,
+    /// The `Emit` statement that evaluates each expression (0: none).
+    pub emit: Vec<u32>,
+    /// Locals stored exactly once, outside loops, never passed by pointer: the stored value.
+    pub single_store: HashMap<usize, Handle<E>>,
+    /// Every value stored whole into a local that is never stored in part or passed by pointer.
+    pub stores: HashMap<usize, Vec<Handle<E>>>,
+    /// Whether this is an entry point (the wrapper essl generates, not user code).
+    pub entry: bool,
+}
+
+/// The analysis of a whole module.
+#[derive(Debug)]
+pub struct Analysis {
+    /// The assumption about external values.
+    pub mode: Mode,
+    /// Per function (module functions by handle index, then entry points).
+    pub functions: Vec<FnFacts>,
+    memory: HashMap<Root, Val>,
+    args: Vec<Vec<Val>>,
+    results: Vec<Val>,
+    changed: bool,
+    widening: bool,
+    emit_counter: u32,
+    /// What the enclosing `if` conditions say about scalar places, where they hold.
+    refine: Vec<(Place, Refinement)>,
+}
+
+/// The function with index `id` (module functions first, then entry points).
+pub fn function(module: &naga::Module, id: usize) -> &Function {
+    match function_handle(module, id) {
+        Some(h) => &module.functions[h],
+        None => &module.entry_points[id - module.functions.len()].function,
+    }
+}
+
+/// The handle of function `id` when it is a module function (`None` for an entry point).
+fn function_handle(module: &naga::Module, id: usize) -> Option<naga::Handle<Function>> {
+    module.functions.iter().nth(id).map(|(h, _)| h)
+}
+
+/// The validator's information about function `id`.
+pub fn function_info<'a>(
+    module: &naga::Module,
+    info: &'a naga::valid::ModuleInfo,
+    id: usize,
+) -> &'a naga::valid::FunctionInfo {
+    match function_handle(module, id) {
+        Some(h) => &info[h],
+        None => info.get_entry_point(id - module.functions.len()),
+    }
+}
+
+/// The function being evaluated: what the statement walk, the expression evaluation and the
+/// operator rules all read.
+#[derive(Clone, Copy)]
+struct Site<'a> {
+    /// The module.
+    module: &'a naga::Module,
+    /// The validator's information about the function (expression types).
+    finfo: &'a naga::valid::FunctionInfo,
+    /// The function.
+    f: &'a Function,
+    /// Its index (module functions first, then entry points).
+    id: usize,
+}
+
+impl<'a> Site<'a> {
+    /// The type of expression `h`.
+    fn ty(&self, h: Handle<E>) -> &'a naga::TypeInner {
+        self.finfo[h].ty.inner_with(&self.module.types)
+    }
+}
+
+impl Analysis {
+    /// Analyses a validated module.
+    pub fn run(module: &naga::Module, info: &naga::valid::ModuleInfo, mode: Mode) -> Analysis {
+        let count = module.functions.len() + module.entry_points.len();
+        let mut a = Analysis {
+            mode,
+            functions: vec![FnFacts::default(); count],
+            memory: HashMap::default(),
+            args: (0..count)
+                .map(|id| vec![Val::Bot; function(module, id).arguments.len()])
+                .collect(),
+            results: vec![Val::Bot; count],
+            changed: false,
+            widening: false,
+            emit_counter: 0,
+            refine: Vec::new(),
+        };
+        for id in 0..count {
+            let f = function(module, id);
+            let (single, stores) = single_stores(f);
+            a.functions[id].single_store = single;
+            a.functions[id].stores = stores;
+            a.functions[id].entry = id >= module.functions.len();
+        }
+        // Private globals start with their initialiser.
+        for (h, g) in module.global_variables.iter() {
+            if let Some(init) = g.init {
+                let v = const_value(module, init);
+                let root = Root::Global(h.index());
+                let mut cell = a.cell(module, root);
+                write(&mut cell, &[], &v, false);
+                a.memory.insert(root, cell);
+            }
+        }
+        for round in 0..MAX_ROUNDS {
+            a.changed = false;
+            a.widening = round >= WIDEN_AFTER;
+            // Callers after callees is the order naga keeps; entry points last. Walking the
+            // entry points first gives the inputs their values before `main_` reads them.
+            let order: Vec<usize> = (module.functions.len()..count)
+                .chain(0..module.functions.len())
+                .collect();
+            for id in order {
+                a.run_function(module, info, id);
+            }
+            if !a.changed {
+                break;
+            }
+        }
+        a
+    }
+
+    /// The value of expression `h` of function `id`.
+    pub fn value(&self, id: usize, h: Handle<E>) -> &Val {
+        self.functions[id]
+            .values
+            .get(h.index())
+            .unwrap_or(&Val::Bot)
+    }
+
+    /// The scalar or vector value of expression `h` of function `id`, if it has one.
+    pub fn num(&self, id: usize, h: Handle<E>) -> Option<&Num> {
+        self.value(id, h).num().filter(|n| !n.is_bottom())
+    }
+}
