@@ -42,6 +42,7 @@ use crate::value::{Num, Val};
 pub(crate) use conditions::condition_atoms;
 pub use conditions::{refine_num, relation, Refinement};
 pub use memory::{const_value, literal};
+pub(crate) use statements::diverges;
 
 use memory::write;
 use statements::single_stores;

@@ -3,61 +3,59 @@
 use essl::diagnostic::Diagnostic;
 use naga::{Expression as E, Function, Handle, MathFunction as Mf};
 
-use super::{Cx, Rule};
+use super::rule::declare_rule;
+use super::Cx;
 use crate::symbolic::resolve;
 use crate::value::Facts;
 use crate::Level;
 
-/// `normalize-zero`.
-pub static ZERO: Rule = Rule {
-    id: "normalize-zero",
-    summary: "`normalize(v)` of a cross product or per-draw difference that can be the zero vector",
-    default_level: Level::Warn,
-    doc: DOC,
-    check,
-};
-
-const DOC: &str = r#"
-## What it does
-Reports `normalize(v)` where `v` can be the zero vector even though every uniform and input is
-a valid (non-zero) vector and every matrix invertible:
-
-- a cross product, which vanishes when its two vectors are parallel
-  (`normalize(cross(spotLightEx.up, spotLight.direction))` for a spot light pointing straight
-  up or down; `cross(normal, vec3(0.0, 1.0, 0.0))` on a floor);
-- a sum or difference computed from uniforms and constants only — the same for every pixel of
-  a draw, such as `normalize(u_target - u_eye)` or `normalize(u_a + u_b)`.
-
-Not reported: `normalize` of a uniform, an input or a texel itself (`normalize(v_normal)`; the
-runtime check validates uniform values), of a transformed vector (`normalize(mat3(u_world) *
-a_normal)`), and of per-pixel sums and differences such as `normalize(u_lightPos - v_position)`
-or a half vector `normalize(l + v)`: those vanish only at isolated points (the pixel that is at
-the light's position), not for a whole draw.
-
-## Why is this bad?
-`normalize(v)` is `v / length(v)`: for the zero vector it is `0 / 0`, NaN in every component.
-When the zero comes from the parameters — a spot light whose direction is parallel to its `up`
-vector — *every* pixel of the light is NaN: the projected texture's coordinates become NaN and
-the lookup returns garbage for the whole cone.
-
-## Example
-```glsl
-vec3 left = normalize(cross(spotLightEx.up, spotLight.direction));
-```
-
-## Use instead
-```glsl
-vec3 c = cross(spotLightEx.up, spotLight.direction);
-// Parallel vectors: fall back to any vector perpendicular to the direction.
-vec3 left = dot(c, c) > 1e-12 ? normalize(c) : normalize(cross(vec3(1.0, 0.0, 0.0), spotLight.direction));
-```
-There is no mechanical fix: the degenerate case needs a choice (a fallback axis, or no light).
-
-## References
-- GLSL ES 3.00 specification, §8.4 Geometric Functions (normalize: "a vector in the same
-  direction as x but with a length of 1", undefined for a zero vector).
-- Article 003 (A-Frame projected-texture spot lights): `left = normalize(cross(up, direction))`.
-"#;
+declare_rule! {
+    /// ## What it does
+    /// Reports `normalize(v)` where `v` can be the zero vector even though every uniform and input is
+    /// a valid (non-zero) vector and every matrix invertible:
+    ///
+    /// - a cross product, which vanishes when its two vectors are parallel
+    ///   (`normalize(cross(spotLightEx.up, spotLight.direction))` for a spot light pointing straight
+    ///   up or down; `cross(normal, vec3(0.0, 1.0, 0.0))` on a floor);
+    /// - a sum or difference computed from uniforms and constants only — the same for every pixel of
+    ///   a draw, such as `normalize(u_target - u_eye)` or `normalize(u_a + u_b)`.
+    ///
+    /// Not reported: `normalize` of a uniform, an input or a texel itself (`normalize(v_normal)`; the
+    /// runtime check validates uniform values), of a transformed vector (`normalize(mat3(u_world) *
+    /// a_normal)`), and of per-pixel sums and differences such as `normalize(u_lightPos - v_position)`
+    /// or a half vector `normalize(l + v)`: those vanish only at isolated points (the pixel that is at
+    /// the light's position), not for a whole draw.
+    ///
+    /// ## Why is this bad?
+    /// `normalize(v)` is `v / length(v)`: for the zero vector it is `0 / 0`, NaN in every component.
+    /// When the zero comes from the parameters — a spot light whose direction is parallel to its `up`
+    /// vector — *every* pixel of the light is NaN: the projected texture's coordinates become NaN and
+    /// the lookup returns garbage for the whole cone.
+    ///
+    /// ## Example
+    /// ```glsl
+    /// vec3 left = normalize(cross(spotLightEx.up, spotLight.direction));
+    /// ```
+    ///
+    /// ## Use instead
+    /// ```glsl
+    /// vec3 c = cross(spotLightEx.up, spotLight.direction);
+    /// // Parallel vectors: fall back to any vector perpendicular to the direction.
+    /// vec3 left = dot(c, c) > 1e-12 ? normalize(c) : normalize(cross(vec3(1.0, 0.0, 0.0), spotLight.direction));
+    /// ```
+    /// There is no mechanical fix: the degenerate case needs a choice (a fallback axis, or no light).
+    ///
+    /// ## References
+    /// - GLSL ES 3.00 specification, §8.4 Geometric Functions (normalize: "a vector in the same
+    ///   direction as x but with a length of 1", undefined for a zero vector).
+    /// - Article 003 (A-Frame projected-texture spot lights): `left = normalize(cross(up, direction))`.
+    pub(crate) struct NormalizeZero {
+        id: "normalize-zero",
+        summary: "`normalize(v)` of a cross product or per-draw difference that can be the zero vector",
+        default_level: Level::Warn,
+        check: check,
+    }
+}
 
 fn check(cx: &Cx, out: &mut Vec<Diagnostic>) {
     for (id, f) in cx.functions() {
@@ -106,7 +104,7 @@ fn check(cx: &Cx, out: &mut Vec<Diagnostic>) {
             };
             out.push(
                 Diagnostic::warning(
-                    ZERO.id,
+                    NormalizeZero::RULE.id,
                     "`normalize` of a vector that can be zero, which gives NaN",
                     span,
                 )

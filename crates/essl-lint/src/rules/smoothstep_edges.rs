@@ -3,52 +3,50 @@
 use essl::diagnostic::{Diagnostic, Fix};
 use naga::{Expression as E, MathFunction as Mf};
 
-use super::{fmt_num, Cx, Rule};
+use super::rule::declare_rule;
+use super::{fmt_num, Cx};
 use crate::value::Facts;
 use crate::Level;
 
-/// `smoothstep-edges`.
-pub static EDGES: Rule = Rule {
-    id: "smoothstep-edges",
-    summary: "`smoothstep(e0, e1, x)` whose edges come from uniforms and can be equal or swapped",
-    default_level: Level::Warn,
-    doc: DOC,
-    check,
-};
-
-const DOC: &str = r#"
-## What it does
-Reports `smoothstep(edge0, edge1, x)` where the edges depend on uniforms and nothing in the
-shader keeps `edge0 < edge1` — `smoothstep(u_outerLimit, u_innerLimit, d)` — and calls whose
-constant edges are equal or in the wrong order. Edges the shader orders itself
-(`smoothstep(u_r, u_r + 0.1, d)`, `max(e1, e0 + 1e-3)`) are not reported.
-
-## Why is this bad?
-GLSL ES 3.00 leaves `smoothstep` undefined if `edge0 ≥ edge1` (§8.3). GPUs evaluate
-`t = clamp((x - edge0) / (edge1 - edge0), 0, 1)`: equal edges divide by zero, and where
-`x == edge0` the result is NaN; the spot light of article 001 gets a hard, speckled edge the
-moment a user sets the inner limit equal to the outer one. The article notes it — "the
-`smoothstep` function has undefined results if the `lowerBound` is greater than or equal to
-`upperBound`" — and leaves it to JavaScript to avoid.
-
-## Example
-```glsl
-float inLight = smoothstep(u_outerLimit, u_innerLimit, dotFromDirection);
-```
-
-## Use instead
-```glsl
-float inLight = smoothstep(u_outerLimit, max(u_innerLimit, u_outerLimit + 1e-3), dotFromDirection);
-```
-The suggested fix keeps `edge1` above `edge0` by 1e-3 in `mediump`/`lowp` (more than a
-`mediump` ulp for edges in `[-2, 2]`) and 1e-4 in `highp`. Constant edges in the wrong order
-are fixed by mirroring: `smoothstep(1.0, 0.0, x)` is `1.0 - smoothstep(0.0, 1.0, x)`.
-
-## References
-- GLSL ES 3.00 specification, §8.3 Common Functions: smoothstep "Results are undefined if
-  edge0 >= edge1."
-- Article 001 (webgl2fundamentals, spot lights), its closing note on `smoothstep`.
-"#;
+declare_rule! {
+    /// ## What it does
+    /// Reports `smoothstep(edge0, edge1, x)` where the edges depend on uniforms and nothing in the
+    /// shader keeps `edge0 < edge1` — `smoothstep(u_outerLimit, u_innerLimit, d)` — and calls whose
+    /// constant edges are equal or in the wrong order. Edges the shader orders itself
+    /// (`smoothstep(u_r, u_r + 0.1, d)`, `max(e1, e0 + 1e-3)`) are not reported.
+    ///
+    /// ## Why is this bad?
+    /// GLSL ES 3.00 leaves `smoothstep` undefined if `edge0 ≥ edge1` (§8.3). GPUs evaluate
+    /// `t = clamp((x - edge0) / (edge1 - edge0), 0, 1)`: equal edges divide by zero, and where
+    /// `x == edge0` the result is NaN; the spot light of article 001 gets a hard, speckled edge the
+    /// moment a user sets the inner limit equal to the outer one. The article notes it — "the
+    /// `smoothstep` function has undefined results if the `lowerBound` is greater than or equal to
+    /// `upperBound`" — and leaves it to JavaScript to avoid.
+    ///
+    /// ## Example
+    /// ```glsl
+    /// float inLight = smoothstep(u_outerLimit, u_innerLimit, dotFromDirection);
+    /// ```
+    ///
+    /// ## Use instead
+    /// ```glsl
+    /// float inLight = smoothstep(u_outerLimit, max(u_innerLimit, u_outerLimit + 1e-3), dotFromDirection);
+    /// ```
+    /// The suggested fix keeps `edge1` above `edge0` by 1e-3 in `mediump`/`lowp` (more than a
+    /// `mediump` ulp for edges in `[-2, 2]`) and 1e-4 in `highp`. Constant edges in the wrong order
+    /// are fixed by mirroring: `smoothstep(1.0, 0.0, x)` is `1.0 - smoothstep(0.0, 1.0, x)`.
+    ///
+    /// ## References
+    /// - GLSL ES 3.00 specification, §8.3 Common Functions: smoothstep "Results are undefined if
+    ///   edge0 >= edge1."
+    /// - Article 001 (webgl2fundamentals, spot lights), its closing note on `smoothstep`.
+    pub(crate) struct SmoothstepEdges {
+        id: "smoothstep-edges",
+        summary: "`smoothstep(e0, e1, x)` whose edges come from uniforms and can be equal or swapped",
+        default_level: Level::Warn,
+        check: check,
+    }
+}
 
 fn check(cx: &Cx, out: &mut Vec<Diagnostic>) {
     for (id, f) in cx.functions() {
@@ -96,7 +94,7 @@ fn check(cx: &Cx, out: &mut Vec<Diagnostic>) {
                 } else {
                     "`smoothstep` edges are swapped (edge0 > edge1), where `smoothstep` is undefined"
                 };
-                let mut d = Diagnostic::warning(EDGES.id, msg, span)
+                let mut d = Diagnostic::warning(SmoothstepEdges::RULE.id, msg, span)
                     .with_label(if pairs.len() == 1 {
                         format!(
                             "edge0 = {}, edge1 = {}",
@@ -143,7 +141,7 @@ fn check(cx: &Cx, out: &mut Vec<Diagnostic>) {
             }
             let low = cx.prec.is_low(span) || cx.prec.is_low(s0) || cx.prec.is_low(s1);
             let eps = if low { "1e-3" } else { "1e-4" };
-            let mut d = Diagnostic::warning(EDGES.id, "`smoothstep` edges come from uniforms and can be equal or swapped, where `smoothstep` is undefined", span)
+            let mut d = Diagnostic::warning(SmoothstepEdges::RULE.id, "`smoothstep` edges come from uniforms and can be equal or swapped, where `smoothstep` is undefined", span)
                 .with_label("undefined when edge0 >= edge1")
                 .with_note("GLSL ES 3.00 §8.3: smoothstep is undefined if edge0 >= edge1")
                 .with_help(format!("keep edge1 above edge0, e.g. `max(edge1, edge0 + {eps})`"));

@@ -3,57 +3,55 @@
 use essl::diagnostic::{Diagnostic, Fix};
 use naga::{BinaryOperator as Bo, Expression as E, ScalarKind};
 
-use super::{Cx, Rule};
+use super::rule::declare_rule;
+use super::Cx;
 use crate::symbolic::resolve;
 use crate::value::Facts;
 use crate::Level;
 
-/// `division-by-difference`.
-pub static DIFFERENCE: Rule = Rule {
-    id: "division-by-difference",
-    summary: "division by a difference of uniform values that can be zero",
-    default_level: Level::Warn,
-    doc: DOC,
-    check,
-};
-
-const DOC: &str = r#"
-## What it does
-Reports a division whose divisor is a difference that depends on uniforms and that nothing in
-the shader keeps away from zero: `(d - u_outerLimit) / (u_innerLimit - u_outerLimit)`, or the
-same through a local (`float limitRange = u_innerLimit - u_outerLimit; … / limitRange`). A
-divisor the shader guards (`max(limitRange, 1e-4)`) or can order itself (`u_r + 0.1 - u_r`) is
-not reported.
-
-## Why is this bad?
-Two parameters a user sets independently are equal sooner or later — a spot light with the
-same inner and outer limit, a LearnOpenGL flashlight with `cutOff == outerCutOff`. Then the
-divisor is 0 and the quotient is ±∞, or NaN where the numerator is 0 too: the clamp after it
-turns ±∞ into a hard edge but lets NaN through as black or garbage pixels on the cone's
-boundary. Article 001 says it itself: "dividing by zero is bad/undefined … we just need to make
-sure in our JavaScript that `u_innerLimit` is never equal to `u_outerLimit` (note: the example
-code does not do this)".
-
-## Example
-```glsl
-float limitRange = u_innerLimit - u_outerLimit;
-float inLight = clamp((dotFromDirection - u_outerLimit) / limitRange, 0.0, 1.0);
-```
-
-## Use instead
-```glsl
-float limitRange = u_innerLimit - u_outerLimit;
-float inLight = clamp((dotFromDirection - u_outerLimit) / max(limitRange, 1e-4), 0.0, 1.0);
-```
-The suggested fix guards the divisor with `max(…, 1e-4)` (a floor above `mediump`'s smallest
-normal number, 6.1e-5), which also makes a swapped pair behave like a hard edge. Where the
-difference may legitimately be negative, guard its magnitude instead.
-
-## References
-- Article 001 (webgl2fundamentals, spot lights), the note after the `limitRange` diff.
-- Article 004 (LearnOpenGL spot light): `epsilon = light.cutOff - light.outerCutOff` and
-  `/ epsilon`.
-"#;
+declare_rule! {
+    /// ## What it does
+    /// Reports a division whose divisor is a difference that depends on uniforms and that nothing in
+    /// the shader keeps away from zero: `(d - u_outerLimit) / (u_innerLimit - u_outerLimit)`, or the
+    /// same through a local (`float limitRange = u_innerLimit - u_outerLimit; … / limitRange`). A
+    /// divisor the shader guards (`max(limitRange, 1e-4)`) or can order itself (`u_r + 0.1 - u_r`) is
+    /// not reported.
+    ///
+    /// ## Why is this bad?
+    /// Two parameters a user sets independently are equal sooner or later — a spot light with the
+    /// same inner and outer limit, a LearnOpenGL flashlight with `cutOff == outerCutOff`. Then the
+    /// divisor is 0 and the quotient is ±∞, or NaN where the numerator is 0 too: the clamp after it
+    /// turns ±∞ into a hard edge but lets NaN through as black or garbage pixels on the cone's
+    /// boundary. Article 001 says it itself: "dividing by zero is bad/undefined … we just need to make
+    /// sure in our JavaScript that `u_innerLimit` is never equal to `u_outerLimit` (note: the example
+    /// code does not do this)".
+    ///
+    /// ## Example
+    /// ```glsl
+    /// float limitRange = u_innerLimit - u_outerLimit;
+    /// float inLight = clamp((dotFromDirection - u_outerLimit) / limitRange, 0.0, 1.0);
+    /// ```
+    ///
+    /// ## Use instead
+    /// ```glsl
+    /// float limitRange = u_innerLimit - u_outerLimit;
+    /// float inLight = clamp((dotFromDirection - u_outerLimit) / max(limitRange, 1e-4), 0.0, 1.0);
+    /// ```
+    /// The suggested fix guards the divisor with `max(…, 1e-4)` (a floor above `mediump`'s smallest
+    /// normal number, 6.1e-5), which also makes a swapped pair behave like a hard edge. Where the
+    /// difference may legitimately be negative, guard its magnitude instead.
+    ///
+    /// ## References
+    /// - Article 001 (webgl2fundamentals, spot lights), the note after the `limitRange` diff.
+    /// - Article 004 (LearnOpenGL spot light): `epsilon = light.cutOff - light.outerCutOff` and
+    ///   `/ epsilon`.
+    pub(crate) struct DivisionByDifference {
+        id: "division-by-difference",
+        summary: "division by a difference of uniform values that can be zero",
+        default_level: Level::Warn,
+        check: check,
+    }
+}
 
 fn check(cx: &Cx, out: &mut Vec<Diagnostic>) {
     for (id, f) in cx.functions() {
@@ -97,7 +95,7 @@ fn check(cx: &Cx, out: &mut Vec<Diagnostic>) {
             }
             let what = cx.what(f, id, d);
             let mut diag = Diagnostic::warning(
-                DIFFERENCE.id,
+                DivisionByDifference::RULE.id,
                 "division by a difference of uniforms that can be zero",
                 span,
             )

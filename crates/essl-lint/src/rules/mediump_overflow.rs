@@ -8,70 +8,74 @@ use naga::{
     BinaryOperator as Bo, Expression as E, Function, Handle, MathFunction as Mf, ScalarKind,
 };
 
-use super::{fmt_num, operands, users, Cx, Rule, User};
+use super::rule::declare_rule;
+use super::{fmt_num, operands, users, Cx, User};
 use crate::analysis::TYPICAL;
 use crate::interval::Interval;
 use crate::Level;
 
-/// `mediump-overflow`.
-pub static OVERFLOW: Rule = Rule {
-    id: "mediump-overflow",
-    summary: "`mediump`/`lowp` arithmetic that overflows 65504 for ordinary values, or a divisor that underflows to 0",
-    default_level: Level::Warn,
-    doc: DOC,
-    check,
-};
+declare_rule! {
+    /// ## What it does
+    /// Reports operations computed in `mediump` or `lowp` that amplify a value past 65504 — the
+    /// largest 16-bit float — for ordinary, modest values of the shader's inputs: the square or power
+    /// of one value (`x * x`, `pow(x, 150.0)`, the sum of squares inside `length` and `normalize`), an
+    /// exponential (`exp(x)` beyond 11), a scaling by a constant, a division by a small value.
+    /// "Ordinary" means uniforms and inputs of magnitude up to 10 with the signs the formulas expect
+    /// (distances, densities, exponents positive), matrix entries and texels up to 1; the analysis
+    /// follows the shader's own arithmetic from there. What overflows only for larger parameters, or
+    /// through a product of *different* parameters, depends on values the runtime check sees. An
+    /// overflow whose only use saturates it (`clamp(x / eps, 0.0, 1.0)`, `min(x, 1.0)`, a
+    /// comparison) is not reported.
+    ///
+    /// It also reports a `mediump`/`lowp` divisor (or argument of `inversesqrt`/`log`) that the shader
+    /// keeps away from zero with a guard below 6.1e-5 (`max(d, 1e-6)`): in 16 bits the guard itself
+    /// flushes to zero.
+    ///
+    /// ## Why is this bad?
+    /// Desktop GPUs run `mediump` at 32 bits, so the shader looks fine where it is written; phones run
+    /// it at 16 bits, where anything above 65504 is infinity, and `inf - inf`, `0 * inf` and `inf / inf`
+    /// are NaN. GLSL ES 3.00 guarantees `mediump` only a range of 2^14 (§4.5.2).
+    ///
+    /// ## Example
+    /// ```glsl
+    /// precision mediump float;
+    /// uniform float u_distance;
+    /// …
+    /// float falloff = exp(u_distance * 2.0);   // e^20 = 4.9e8 for u_distance = 10
+    /// ```
+    ///
+    /// ## Use instead
+    /// ```glsl
+    /// highp float falloff = exp(u_distance * 2.0);
+    /// ```
+    /// Declare the operands (or the variable) `highp`, or rescale the computation (work in kilometres,
+    /// divide before multiplying). There is no mechanical fix.
+    ///
+    /// ## References
+    /// - GLSL ES 3.00 specification, §4.5.2 Precision Qualifiers (minimum ranges and precisions).
+    /// - IEEE 754 binary16: largest finite value 65504, smallest normal 2^-14.
+    pub(crate) struct MediumpOverflow {
+        id: "mediump-overflow",
+        summary: "`mediump`/`lowp` arithmetic that overflows 65504 for ordinary values, or a divisor that underflows to 0",
+        default_level: Level::Warn,
+        check: check,
+    }
+}
 
 /// The largest finite 16-bit float, what `mediump` and `lowp` hold on GPUs that use them.
 pub const LIMIT: f64 = 65504.0;
+
 /// The smallest normal 16-bit float (2^-14); smaller values may flush to zero.
 pub const MIN_NORMAL: f64 = 6.103515625e-5;
 
-const DOC: &str = r#"
-## What it does
-Reports operations computed in `mediump` or `lowp` that amplify a value past 65504 — the
-largest 16-bit float — for ordinary, modest values of the shader's inputs: the square or power
-of one value (`x * x`, `pow(x, 150.0)`, the sum of squares inside `length` and `normalize`), an
-exponential (`exp(x)` beyond 11), a scaling by a constant, a division by a small value.
-"Ordinary" means uniforms and inputs of magnitude up to 10 with the signs the formulas expect
-(distances, densities, exponents positive), matrix entries and texels up to 1; the analysis
-follows the shader's own arithmetic from there. What overflows only for larger parameters, or
-through a product of *different* parameters, depends on values the runtime check sees. An
-overflow whose only use saturates it (`clamp(x / eps, 0.0, 1.0)`, `min(x, 1.0)`, a
-comparison) is not reported.
-
-It also reports a `mediump`/`lowp` divisor (or argument of `inversesqrt`/`log`) that the shader
-keeps away from zero with a guard below 6.1e-5 (`max(d, 1e-6)`): in 16 bits the guard itself
-flushes to zero.
-
-## Why is this bad?
-Desktop GPUs run `mediump` at 32 bits, so the shader looks fine where it is written; phones run
-it at 16 bits, where anything above 65504 is infinity, and `inf - inf`, `0 * inf` and `inf / inf`
-are NaN. GLSL ES 3.00 guarantees `mediump` only a range of 2^14 (§4.5.2).
-
-## Example
-```glsl
-precision mediump float;
-uniform float u_distance;
-…
-float falloff = exp(u_distance * 2.0);   // e^20 = 4.9e8 for u_distance = 10
-```
-
-## Use instead
-```glsl
-highp float falloff = exp(u_distance * 2.0);
-```
-Declare the operands (or the variable) `highp`, or rescale the computation (work in kilometres,
-divide before multiplying). There is no mechanical fix.
-
-## References
-- GLSL ES 3.00 specification, §4.5.2 Precision Qualifiers (minimum ranges and precisions).
-- IEEE 754 binary16: largest finite value 65504, smallest normal 2^-14.
-"#;
-
 fn check(cx: &Cx, out: &mut Vec<Diagnostic>) {
     for (id, f) in cx.functions() {
-        let users = users(f);
+        let uses = Uses {
+            cx,
+            f,
+            id,
+            users: users(f),
+        };
         for (h, e) in f.expressions.iter() {
             let span = cx.span(f, h);
             if span.is_empty() || cx.kind(id, h) != Some(ScalarKind::Float) {
@@ -121,13 +125,13 @@ fn check(cx: &Cx, out: &mut Vec<Diagnostic>) {
             if !up && !down {
                 continue;
             }
-            if saturated(cx, f, id, h, up, down, &users, 0) {
+            if uses.saturated(h, up, down, 0) {
                 continue;
             }
             let peak = if up { r.hi } else { r.lo };
             let p = cx.prec.at(span).map(|p| p.name()).unwrap_or("mediump");
             out.push(
-                Diagnostic::warning(OVERFLOW.id, format!("`{p}` result can overflow 65504 for ordinary values"), span)
+                Diagnostic::warning(MediumpOverflow::RULE.id, format!("`{p}` result can overflow 65504 for ordinary values"), span)
                     .with_label(format!("computed in `{p}`: reaches {} with inputs of magnitude {}", fmt_num(peak), fmt_num(TYPICAL)))
                     .with_note("mediump and lowp are 16-bit floats on many mobile GPUs: the largest finite value is 65504")
                     .with_help("compute it in `highp`, or rescale the operands"),
@@ -215,35 +219,66 @@ fn amplified(cx: &Cx, f: &Function, id: usize, e: &E, typ: &[Interval]) -> Optio
     }
 }
 
-/// Whether every use of `h` clamps away its overflow (`up`: towards +∞, `down`: towards −∞).
-#[allow(clippy::too_many_arguments)]
-fn saturated(
-    cx: &Cx,
-    f: &Function,
+/// The expressions of a function and who reads each: what [`Uses::saturated`] follows.
+struct Uses<'a> {
+    cx: &'a Cx<'a>,
+    f: &'a Function,
     id: usize,
-    h: Handle<E>,
-    up: bool,
-    down: bool,
-    users: &HashMap<Handle<E>, Vec<User>>,
-    depth: u32,
-) -> bool {
-    let Some(us) = users.get(&h) else { return true };
-    let bounded = |x: Option<Handle<E>>| {
-        x.and_then(|x| cx.typical().num(id, x))
-            .is_some_and(|n| n.hull().mag() <= LIMIT)
-    };
-    us.iter().all(|u| {
-        let User::Expr(u) = *u else { return false };
-        match f.expressions[u] {
-            E::Math { fun: Mf::Clamp, arg, arg1, arg2, .. } => arg == h && bounded(arg1) && bounded(arg2),
-            E::Math { fun: Mf::Saturate | Mf::Step | Mf::SmoothStep, .. } => true,
-            E::Math { fun: Mf::Min, arg, arg1, .. } => !down && bounded(if arg == h { arg1 } else { Some(arg) }),
-            E::Math { fun: Mf::Max, arg, arg1, .. } => !up && bounded(if arg == h { arg1 } else { Some(arg) }),
-            E::Binary { op: Bo::Less | Bo::LessEqual | Bo::Greater | Bo::GreaterEqual | Bo::Equal | Bo::NotEqual, .. } => true,
-            E::Splat { .. } if depth < 3 => saturated(cx, f, id, u, up, down, users, depth + 1),
-            _ => false,
-        }
-    })
+    users: HashMap<Handle<E>, Vec<User>>,
+}
+
+impl Uses<'_> {
+    /// Whether every use of `h` clamps away its overflow (`up`: towards +∞, `down`: towards −∞).
+    fn saturated(&self, h: Handle<E>, up: bool, down: bool, depth: u32) -> bool {
+        let (cx, f, id) = (self.cx, self.f, self.id);
+        let Some(us) = self.users.get(&h) else {
+            return true;
+        };
+        let bounded = |x: Option<Handle<E>>| {
+            x.and_then(|x| cx.typical().num(id, x))
+                .is_some_and(|n| n.hull().mag() <= LIMIT)
+        };
+        us.iter().all(|u| {
+            let User::Expr(u) = *u else { return false };
+            match f.expressions[u] {
+                E::Math {
+                    fun: Mf::Clamp,
+                    arg,
+                    arg1,
+                    arg2,
+                    ..
+                } => arg == h && bounded(arg1) && bounded(arg2),
+                E::Math {
+                    fun: Mf::Saturate | Mf::Step | Mf::SmoothStep,
+                    ..
+                } => true,
+                E::Math {
+                    fun: Mf::Min,
+                    arg,
+                    arg1,
+                    ..
+                } => !down && bounded(if arg == h { arg1 } else { Some(arg) }),
+                E::Math {
+                    fun: Mf::Max,
+                    arg,
+                    arg1,
+                    ..
+                } => !up && bounded(if arg == h { arg1 } else { Some(arg) }),
+                E::Binary {
+                    op:
+                        Bo::Less
+                        | Bo::LessEqual
+                        | Bo::Greater
+                        | Bo::GreaterEqual
+                        | Bo::Equal
+                        | Bo::NotEqual,
+                    ..
+                } => true,
+                E::Splat { .. } if depth < 3 => self.saturated(u, up, down, depth + 1),
+                _ => false,
+            }
+        })
+    }
 }
 
 /// The operand of `e` that must stay away from zero: a divisor, the argument of `inversesqrt`
@@ -292,7 +327,7 @@ fn underflow(cx: &Cx, f: &Function, id: usize, h: Handle<E>, e: &E, out: &mut Ve
     let span = cx.span(f, x);
     let p = cx.prec.at(span).map(|p| p.name()).unwrap_or("mediump");
     out.push(
-        Diagnostic::warning(OVERFLOW.id, format!("`{p}` value kept above 0 by less than 6.1e-5 can underflow to 0"), span)
+        Diagnostic::warning(MediumpOverflow::RULE.id, format!("`{p}` value kept above 0 by less than 6.1e-5 can underflow to 0"), span)
             .with_label(format!("as small as {} in `{p}`, below the smallest normal 16-bit float", fmt_num(m)))
             .with_note("mediump and lowp are 16-bit floats on many mobile GPUs: values below 6.1e-5 may flush to 0")
             .with_help("use a guard of at least 1e-4, or compute it in `highp`"),

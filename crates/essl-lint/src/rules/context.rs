@@ -1,0 +1,348 @@
+//! What the rules share: the analysed shader ([`Cx`]), who reads each expression, and how
+//! numbers and intervals read in messages.
+
+use rustc_hash::{FxHashMap as HashMap, FxHashSet as HashSet};
+
+use essl::source::{SourceFile, Span};
+use essl::Shader;
+use naga::{Block, Expression as E, Function, Handle, MathFunction as Mf, Statement};
+
+use crate::analysis::{self, Analysis, Mode};
+use crate::interval::Interval;
+use crate::precision::Precisions;
+use crate::symbolic::{self, Sym};
+
+/// A shader analysed for the rules.
+pub struct Cx<'a> {
+    /// The shader's text.
+    pub file: &'a SourceFile,
+    /// Its naga IR.
+    pub module: &'a naga::Module,
+    /// naga's validation information (expression types).
+    pub info: &'a naga::valid::ModuleInfo,
+    /// The analysis with any external value.
+    pub sound: Analysis,
+    /// The analysis with ordinary external values: computed on first use ([`Cx::typical`]),
+    /// since only low-precision arithmetic asks for it.
+    typical: std::cell::OnceCell<Analysis>,
+    /// Precisions by span.
+    pub prec: Precisions,
+    /// Private globals that user functions write.
+    pub written: HashSet<usize>,
+}
+
+impl<'a> Cx<'a> {
+    /// Analyses a shader that compiled; `None` when it has no naga IR.
+    pub fn new(shader: &'a Shader) -> Option<Cx<'a>> {
+        let (module, info) = shader.naga.as_ref()?;
+        let sound = Analysis::run(module, info, Mode::Sound);
+        let mut written = HashSet::default();
+        for (_, f) in module.functions.iter() {
+            collect_written(f, &f.body, &mut written);
+        }
+        Some(Cx {
+            file: &shader.file,
+            module,
+            info,
+            sound,
+            typical: std::cell::OnceCell::new(),
+            prec: Precisions::of(&shader.module),
+            written,
+        })
+    }
+
+    /// The analysis with ordinary external values (`[0, TYPICAL]`, matrix entries and texels in
+    /// `[0, 1]`).
+    pub fn typical(&self) -> &Analysis {
+        self.typical
+            .get_or_init(|| Analysis::run(self.module, self.info, Mode::Typical))
+    }
+
+    /// The user's functions (not the entry-point wrapper): (index, function).
+    pub fn functions(&self) -> impl Iterator<Item = (usize, &'a Function)> + '_ {
+        let m = self.module;
+        (0..m.functions.len()).map(move |id| (id, analysis::function(m, id)))
+    }
+
+    /// The scalar kind of an expression of function `id`.
+    pub fn kind(&self, id: usize, h: Handle<E>) -> Option<naga::ScalarKind> {
+        analysis::function_info(self.module, self.info, id)[h]
+            .ty
+            .inner_with(&self.module.types)
+            .scalar_kind()
+    }
+
+    /// The source span of an expression.
+    pub fn span(&self, f: &Function, h: Handle<E>) -> Span {
+        Span::from(f.expressions.get_span(h))
+    }
+
+    /// The text of a span.
+    pub fn text(&self, span: Span) -> &'a str {
+        self.file.slice(span)
+    }
+
+    /// The operand `h` of `parent` as the user wrote it: through the splats the lowering adds
+    /// to widen a scalar argument (they carry the call's span).
+    pub fn operand(&self, f: &Function, parent: Handle<E>, mut h: Handle<E>) -> Handle<E> {
+        let ps = self.span(f, parent);
+        while let E::Splat { value, .. } = f.expressions[h] {
+            let s = self.span(f, h);
+            if s == ps || s.is_empty() {
+                h = value;
+            } else {
+                break;
+            }
+        }
+        h
+    }
+
+    /// The symbolic view of function `id`.
+    pub fn sym(&'a self, id: usize, f: &'a Function) -> Sym<'a> {
+        Sym::new(self.module, f, id, &self.sound, &self.written)
+    }
+
+    /// Whether an expression has no side effects and no calls (so that a fix may repeat it).
+    pub fn pure(&self, f: &Function, h: Handle<E>) -> bool {
+        let mut stack = vec![h];
+        let mut n = 0;
+        while let Some(x) = stack.pop() {
+            n += 1;
+            if n > 64 {
+                return false;
+            }
+            match &f.expressions[x] {
+                E::CallResult(_) => return false,
+                E::Binary { left, right, .. } => stack.extend([*left, *right]),
+                E::Unary { expr, .. }
+                | E::As { expr, .. }
+                | E::Splat { value: expr, .. }
+                | E::Swizzle { vector: expr, .. } => stack.push(*expr),
+                E::AccessIndex { base, .. } => stack.push(*base),
+                E::Access { base, index } => stack.extend([*base, *index]),
+                E::Load { pointer } => stack.push(*pointer),
+                E::Math {
+                    arg,
+                    arg1,
+                    arg2,
+                    arg3,
+                    ..
+                } => stack.extend([Some(*arg), *arg1, *arg2, *arg3].into_iter().flatten()),
+                E::Compose { components, .. } => stack.extend(components.iter().copied()),
+                E::Select {
+                    condition,
+                    accept,
+                    reject,
+                } => stack.extend([*condition, *accept, *reject]),
+                _ => {}
+            }
+        }
+        true
+    }
+
+    /// What kind of value `h` is, in a few words ("this dot product").
+    pub fn what(&self, f: &Function, id: usize, h: Handle<E>) -> String {
+        let named = match f.expressions[h] {
+            E::Load { pointer } => match f.expressions[pointer] {
+                E::LocalVariable(l) => f.local_variables[l]
+                    .name
+                    .clone()
+                    .filter(|n| !n.starts_with("_essl")),
+                _ => None,
+            },
+            _ => None,
+        };
+        let r = symbolic::resolve(f, &self.sound, id, h);
+        let kind = match f.expressions[r] {
+            E::Math { fun: Mf::Dot, .. } => Some("a dot product"),
+            E::Math { fun: Mf::Cross, .. } => Some("a cross product"),
+            E::Binary {
+                op: naga::BinaryOperator::Subtract,
+                ..
+            } => Some("a difference"),
+            _ => None,
+        };
+        match (named, kind) {
+            (Some(n), Some(k)) => format!("`{n}`, {k},"),
+            (Some(n), None) => format!("`{n}`"),
+            (None, Some(k)) => format!("this {}", &k[k.find(' ').map_or(0, |i| i + 1)..]),
+            (None, None) => "this".to_string(),
+        }
+    }
+}
+
+fn collect_written(f: &Function, b: &naga::Block, out: &mut HashSet<usize>) {
+    fn root_global(f: &Function, mut p: Handle<E>) -> Option<usize> {
+        loop {
+            match f.expressions[p] {
+                E::GlobalVariable(g) => return Some(g.index()),
+                E::Access { base, .. } | E::AccessIndex { base, .. } => p = base,
+                _ => return None,
+            }
+        }
+    }
+    for s in b.iter() {
+        match s {
+            naga::Statement::Store { pointer, .. } => {
+                if let Some(g) = root_global(f, *pointer) {
+                    out.insert(g);
+                }
+            }
+            naga::Statement::Call { arguments, .. } => {
+                for a in arguments {
+                    if let Some(g) = root_global(f, *a) {
+                        out.insert(g);
+                    }
+                }
+            }
+            naga::Statement::Block(b) => collect_written(f, b, out),
+            naga::Statement::If { accept, reject, .. } => {
+                collect_written(f, accept, out);
+                collect_written(f, reject, out);
+            }
+            naga::Statement::Switch { cases, .. } => {
+                for c in cases {
+                    collect_written(f, &c.body, out);
+                }
+            }
+            naga::Statement::Loop {
+                body, continuing, ..
+            } => {
+                collect_written(f, body, out);
+                collect_written(f, continuing, out);
+            }
+            _ => {}
+        }
+    }
+}
+
+/// A number as people read it: five significant digits (so that rounding slack does not
+/// show), no trailing zeros, `∞`.
+pub fn fmt_num(x: f64) -> String {
+    if x.is_infinite() {
+        return if x > 0.0 {
+            "+∞".into()
+        } else {
+            "-∞".into()
+        };
+    }
+    if x == 0.0 {
+        return "0".into();
+    }
+    let digits = 5 - 1 - x.abs().log10().floor() as i32;
+    let p = 10f64.powi(digits.clamp(-30, 30));
+    let r = (x * p).round() / p;
+    let s = format!("{r}");
+    if s.contains('e') {
+        format!("{x:e}")
+    } else {
+        s
+    }
+}
+
+/// An interval as people read it: `[-1, 1]`.
+pub fn describe(i: Interval) -> String {
+    if i.is_empty() {
+        return "nothing".into();
+    }
+    format!("[{}, {}]", fmt_num(i.lo), fmt_num(i.hi))
+}
+
+/// Who reads an expression's value.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum User {
+    /// An expression.
+    Expr(Handle<E>),
+    /// A statement.
+    Stmt,
+}
+
+/// The expressions an expression reads.
+pub fn operands(e: &E) -> Vec<Handle<E>> {
+    match e {
+        E::Compose { components, .. } => components.clone(),
+        E::Access { base, index } => vec![*base, *index],
+        E::AccessIndex { base, .. } => vec![*base],
+        E::Splat { value, .. } => vec![*value],
+        E::Swizzle { vector, .. } => vec![*vector],
+        E::Load { pointer } => vec![*pointer],
+        E::Unary { expr, .. } | E::Derivative { expr, .. } | E::As { expr, .. } => vec![*expr],
+        E::Binary { left, right, .. } => vec![*left, *right],
+        E::Select {
+            condition,
+            accept,
+            reject,
+        } => vec![*condition, *accept, *reject],
+        E::Relational { argument, .. } => vec![*argument],
+        E::Math {
+            arg,
+            arg1,
+            arg2,
+            arg3,
+            ..
+        } => [Some(*arg), *arg1, *arg2, *arg3]
+            .into_iter()
+            .flatten()
+            .collect(),
+        E::ImageSample {
+            coordinate,
+            depth_ref,
+            ..
+        } => [Some(*coordinate), *depth_ref]
+            .into_iter()
+            .flatten()
+            .collect(),
+        E::ImageLoad { coordinate, .. } => vec![*coordinate],
+        _ => Vec::new(),
+    }
+}
+
+/// Who reads each expression of a function.
+pub fn users(f: &Function) -> HashMap<Handle<E>, Vec<User>> {
+    let mut map: HashMap<Handle<E>, Vec<User>> = HashMap::default();
+    for (h, e) in f.expressions.iter() {
+        for o in operands(e) {
+            map.entry(o).or_default().push(User::Expr(h));
+        }
+    }
+    fn walk(b: &Block, map: &mut HashMap<Handle<E>, Vec<User>>) {
+        for s in b.iter() {
+            let mut read = |h: &Handle<E>| map.entry(*h).or_default().push(User::Stmt);
+            match s {
+                Statement::Store { value, .. } => read(value),
+                Statement::Return { value: Some(v) } => read(v),
+                Statement::Call { arguments, .. } => arguments.iter().for_each(read),
+                Statement::If {
+                    condition,
+                    accept,
+                    reject,
+                } => {
+                    read(condition);
+                    walk(accept, map);
+                    walk(reject, map);
+                }
+                Statement::Switch { selector, cases } => {
+                    read(selector);
+                    for c in cases {
+                        walk(&c.body, map);
+                    }
+                }
+                Statement::Loop {
+                    body,
+                    continuing,
+                    break_if,
+                } => {
+                    if let Some(b) = break_if {
+                        read(b);
+                    }
+                    walk(body, map);
+                    walk(continuing, map);
+                }
+                Statement::Block(b) => walk(b, map),
+                _ => {}
+            }
+        }
+    }
+    walk(&f.body, &mut map);
+    map
+}

@@ -1,0 +1,220 @@
+//! The guards of an expression: what the `if`s around it, the branches of `c ? a : b` it
+//! alone feeds and the `if (…) return;` before it say about the values it reads.
+
+use rustc_hash::FxHashMap as HashMap;
+
+use naga::{
+    BinaryOperator as Bo, Block, Expression as E, Function, Handle, MathFunction as Mf, Statement,
+};
+
+use super::context::{users, User};
+use super::Cx;
+use crate::analysis::{diverges, refine_num, relation, Refinement};
+use crate::symbolic;
+use crate::value::Num;
+
+/// What the conditions under which an expression runs say: the `if`s around it, the branches
+/// of `c ? a : b` it alone feeds, and the `if (…) return;` before it.
+#[derive(Debug, Default)]
+pub struct Guards {
+    /// Bounds on compared expressions (`x > 0.0`, `dot(v, v) > 1e-12`).
+    pub facts: Vec<(Handle<E>, Refinement)>,
+    /// `a OP b` between two expressions, normalised to hold (`Less`, `Greater`, `NotEqual`, …).
+    pub relations: Vec<(Bo, Handle<E>, Handle<E>)>,
+    /// Expressions known not to be 0 (`x != 0.0`, `abs(x) > c`).
+    pub nonzero: Vec<Handle<E>>,
+}
+
+/// The `if` conditions (with the branch taken) around each emitted expression, and after
+/// `if (c) { …; return; }` the negation for the rest of the block.
+fn enclosing(f: &Function) -> HashMap<Handle<E>, Vec<(Handle<E>, bool)>> {
+    fn walk(
+        b: &Block,
+        stack: &mut Vec<(Handle<E>, bool)>,
+        out: &mut HashMap<Handle<E>, Vec<(Handle<E>, bool)>>,
+    ) {
+        let depth = stack.len();
+        for s in b.iter() {
+            match s {
+                Statement::Emit(r) => {
+                    for h in r.clone() {
+                        out.insert(h, stack.clone());
+                    }
+                }
+                Statement::Block(b) => walk(b, stack, out),
+                Statement::If {
+                    condition,
+                    accept,
+                    reject,
+                } => {
+                    stack.push((*condition, true));
+                    walk(accept, stack, out);
+                    stack.pop();
+                    stack.push((*condition, false));
+                    walk(reject, stack, out);
+                    stack.pop();
+                    let (ad, rd) = (diverges(accept), diverges(reject));
+                    if ad != rd {
+                        stack.push((*condition, rd));
+                    }
+                }
+                Statement::Switch { cases, .. } => {
+                    for c in cases {
+                        walk(&c.body, stack, out);
+                    }
+                }
+                Statement::Loop {
+                    body, continuing, ..
+                } => {
+                    walk(body, stack, out);
+                    walk(continuing, stack, out);
+                }
+                _ => {}
+            }
+        }
+        stack.truncate(depth);
+    }
+    let mut out = HashMap::default();
+    walk(&f.body, &mut Vec::new(), &mut out);
+    out
+}
+
+impl Cx<'_> {
+    /// The conditions under which `h` is evaluated for its use.
+    pub fn guards(&self, f: &Function, id: usize, h: Handle<E>) -> Guards {
+        let mut conds: Vec<(Handle<E>, bool)> = Vec::new();
+        // `c ? …h… : …`: the branch `h` alone feeds (through pure expressions).
+        let us = users(f);
+        let mut cur = h;
+        for _ in 0..32 {
+            let Some([User::Expr(u)]) = us.get(&cur).map(|v| v.as_slice()) else {
+                break;
+            };
+            let u = *u;
+            if let E::Select {
+                condition,
+                accept,
+                reject,
+            } = f.expressions[u]
+            {
+                if accept == cur && reject != cur {
+                    conds.push((condition, true));
+                } else if reject == cur && accept != cur {
+                    conds.push((condition, false));
+                } else {
+                    break;
+                }
+            }
+            cur = u;
+        }
+        // The `if`s around the statement that evaluates `h` (or what uses it).
+        let enc = enclosing(f);
+        if let Some(c) = enc.get(&h).or_else(|| enc.get(&cur)) {
+            conds.extend(c.iter().copied());
+        }
+        let mut g = Guards::default();
+        for (c, pol) in conds {
+            g.facts.extend(self.sound.conditions(f, id, c, pol));
+            self.relations(f, id, c, pol, &mut g);
+        }
+        g
+    }
+
+    fn relations(&self, f: &Function, id: usize, c: Handle<E>, pol: bool, g: &mut Guards) {
+        crate::analysis::condition_atoms(f, c, pol, &mut |atom, pol| {
+            self.atom_relations(f, id, atom, pol, g)
+        });
+    }
+
+    /// What one comparison says when it holds (`pol`) or fails: an ordering, a non-zero value.
+    fn atom_relations(&self, f: &Function, id: usize, c: Handle<E>, pol: bool, g: &mut Guards) {
+        let E::Binary { op, left, right } = f.expressions[c] else {
+            return;
+        };
+        let op = if pol {
+            op
+        } else {
+            match op {
+                Bo::Less => Bo::GreaterEqual,
+                Bo::LessEqual => Bo::Greater,
+                Bo::Greater => Bo::LessEqual,
+                Bo::GreaterEqual => Bo::Less,
+                Bo::Equal => Bo::NotEqual,
+                Bo::NotEqual => Bo::Equal,
+                other => other,
+            }
+        };
+        if !matches!(
+            op,
+            Bo::Less | Bo::LessEqual | Bo::Greater | Bo::GreaterEqual | Bo::Equal | Bo::NotEqual
+        ) {
+            return;
+        }
+        g.relations.push((op, left, right));
+        // `x != 0.0`, `abs(x) > c ≥ 0`, `x > c ≥ 0`, `x < c ≤ 0`: x is not 0.
+        for (x, b, x_left) in [(left, right, true), (right, left, false)] {
+            let Some(bound) = self.sound.num(id, b).filter(|n| n.n == 1).map(|n| n.c[0]) else {
+                continue;
+            };
+            let Some(rel) = relation(op, true, x_left, bound) else {
+                if op == Bo::NotEqual && bound.as_point() == Some(0.0) {
+                    g.nonzero.push(x);
+                }
+                continue;
+            };
+            if !rel.contains(0.0) {
+                g.nonzero.push(x);
+                if let E::Math {
+                    fun: Mf::Abs, arg, ..
+                } = f.expressions[x]
+                {
+                    g.nonzero.push(arg);
+                }
+            }
+        }
+    }
+
+    /// `x`'s value under the guards (`None`: no value, or the guarded code cannot run).
+    pub fn refined(&self, f: &Function, id: usize, x: Handle<E>, g: &Guards) -> Option<Num> {
+        let n = *self.sound.num(id, x)?;
+        let rs: Vec<Refinement> = g
+            .facts
+            .iter()
+            .filter(|(s, _)| self.sound.same(f, id, *s, x))
+            .map(|(_, r)| *r)
+            .collect();
+        let r = refine_num(n, &rs);
+        (!r.is_bottom()).then_some(r)
+    }
+
+    /// Whether the guards say `a < b`.
+    pub fn ordered(&self, f: &Function, id: usize, a: Handle<E>, b: Handle<E>, g: &Guards) -> bool {
+        let same = |x: Handle<E>, y: Handle<E>| self.sound.same(f, id, x, y);
+        g.relations.iter().any(|&(op, l, r)| match op {
+            Bo::Less => same(l, a) && same(r, b),
+            Bo::Greater => same(l, b) && same(r, a),
+            _ => false,
+        })
+    }
+
+    /// Whether the guards say `x != 0`, or `a != b` for `x = a - b`.
+    pub fn nonzero(&self, f: &Function, id: usize, x: Handle<E>, g: &Guards) -> bool {
+        let same = |p: Handle<E>, q: Handle<E>| self.sound.same(f, id, p, q);
+        if g.nonzero.iter().any(|&y| same(y, x)) {
+            return true;
+        }
+        let r = symbolic::resolve(f, &self.sound, id, x);
+        let E::Binary {
+            op: Bo::Subtract,
+            left,
+            right,
+        } = f.expressions[r]
+        else {
+            return false;
+        };
+        g.relations.iter().any(|&(op, l, rr)| {
+            matches!(op, Bo::Less | Bo::Greater | Bo::NotEqual)
+                && ((same(l, left) && same(rr, right)) || (same(l, right) && same(rr, left)))
+        })
+    }
+}

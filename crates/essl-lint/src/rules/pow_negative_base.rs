@@ -1,0 +1,145 @@
+//! `pow-negative-base`: `pow(x, y)` whose base the shader's own arithmetic can make negative.
+
+use essl::diagnostic::{Diagnostic, Fix};
+use naga::{Expression as E, MathFunction as Mf};
+
+use super::rule::declare_rule;
+use super::Cx;
+use crate::value::Facts;
+use crate::Level;
+
+declare_rule! {
+    /// ## What it does
+    /// Reports `pow(x, y)` where the shader's own arithmetic can make the base `x` negative: a dot
+    /// product, a difference, a sine. A base that is only negative when a uniform or an input is
+    /// (`pow(u_base, 2.0)`) is not reported: checking uniform values is the runtime check's job.
+    ///
+    /// ## Why is this bad?
+    /// GLSL ES 3.00 leaves `pow(x, y)` undefined for `x < 0` (§8.2), whatever `y` is. Many GPUs
+    /// compute it as `exp2(y * log2(x))`, which is NaN for a negative base; optimisers may rewrite
+    /// `pow(a, 2.0)` as `a * a`, so a constant exponent can give the square on one device and NaN on
+    /// another. A NaN in a colour shows as black (or garbage after blending) exactly where the dot
+    /// product turns negative: the back of a specular highlight, the edge of a spot light. The
+    /// article's spot light computes `pow(dot(normal, halfVector), u_shininess)` after a test on a
+    /// *different* dot product (`dot(normal, surfaceToLight) > 0.0`), which does not keep
+    /// `dot(normal, halfVector)` positive.
+    ///
+    /// ## Example
+    /// ```glsl
+    /// float specular = pow(dot(normal, halfVector), u_shininess);
+    /// ```
+    ///
+    /// ## Use instead
+    /// ```glsl
+    /// float specular = pow(max(dot(normal, halfVector), 0.0), u_shininess);
+    /// ```
+    /// The fix (`max(…, 0.0)`) is suggested, not applied by `--fix`: it changes the value where the
+    /// base was negative (from undefined, NaN on many GPUs, to 0, which is what the lighting model
+    /// means). For a constant integer exponent the suggestion keeps the power's meaning instead:
+    /// `pow(abs(x), 2.0)` for an even power, `sign(x) * pow(abs(x), 3.0)` for an odd one (or write the
+    /// product, `x * x`).
+    ///
+    /// ## References
+    /// - GLSL ES 3.00 specification, §8.2 Exponential Functions: "Results are undefined if x < 0."
+    /// - Article 001 (webgl2fundamentals, spot lights): `pow(dot(normal, halfVector), u_shininess)`.
+    pub(crate) struct PowNegativeBase {
+        id: "pow-negative-base",
+        summary: "`pow(x, y)` whose base the shader's own arithmetic can make negative",
+        default_level: Level::Warn,
+        check: check_negative,
+    }
+}
+
+fn check_negative(cx: &Cx, out: &mut Vec<Diagnostic>) {
+    for (id, f) in cx.functions() {
+        for (h, e) in f.expressions.iter() {
+            let E::Math {
+                fun: Mf::Pow,
+                arg,
+                arg1: Some(y),
+                ..
+            } = *e
+            else {
+                continue;
+            };
+            let span = cx.span(f, h);
+            if span.is_empty() {
+                continue;
+            }
+            let base = cx.operand(f, h, arg);
+            let exp = cx.operand(f, h, y);
+            let Some(b) = cx.sound.num(id, base) else {
+                continue;
+            };
+            if b.hull().lo >= 0.0 || b.facts.has(Facts::NN) {
+                continue;
+            }
+            // Under the conditions the call runs in (`if (d > 0.0)`, `d > 0.0 ? pow(d, k) : 0.0`).
+            let Some(b) = cx.refined(f, id, base, &cx.guards(f, id, h)) else {
+                continue;
+            };
+            let bi = b.hull();
+            if bi.lo >= 0.0 || b.facts.has(Facts::NN) {
+                continue;
+            }
+            let bspan = cx.span(f, base);
+            let what = cx.what(f, id, base);
+            let label = if bi.lo.is_finite() {
+                format!("{what} can be as low as {}", super::fmt_num(bi.lo))
+            } else {
+                format!("{what} can be negative")
+            };
+            let d = Diagnostic::warning(
+                PowNegativeBase::RULE.id,
+                "`pow` base can be negative, where `pow` is undefined (NaN on many GPUs)",
+                bspan,
+            )
+            .with_label(label)
+            .with_note("GLSL ES 3.00 §8.2: pow(x, y) is undefined if x < 0");
+            out.push(fix_negative(cx, f, id, span, base, exp, d));
+        }
+    }
+}
+
+/// The fix for a base that can be negative, by exponent: an even integer power is the power of
+/// `abs(x)`; an odd one keeps the sign, `sign(x) * pow(abs(x), n)`; any other exponent means a
+/// base that should not go below 0, `max(x, 0.0)`.
+fn fix_negative(
+    cx: &Cx,
+    f: &naga::Function,
+    id: usize,
+    span: essl::source::Span,
+    base: naga::Handle<E>,
+    exp: naga::Handle<E>,
+    d: Diagnostic,
+) -> Diagnostic {
+    let bspan = cx.span(f, base);
+    if bspan.is_empty() {
+        return d.with_help("clamp the base to 0");
+    }
+    let b = cx.text(bspan);
+    let n = cx
+        .sound
+        .num(id, exp)
+        .and_then(|v| v.hull().as_point())
+        .filter(|n| n.fract() == 0.0 && n.abs() < 1e6);
+    match n {
+        Some(n) if n % 2.0 == 0.0 => d
+            .with_help(format!("an even power of a negative number is the power of its magnitude: `pow(abs(x), {})`", super::fmt_num(n)))
+            .with_fix(Fix::suggested("take the magnitude of the base", bspan, format!("abs({b})"))),
+        Some(n) => {
+            let espan = cx.span(f, exp);
+            let help = format!("an odd power keeps the sign: `sign(x) * pow(abs(x), {})`", super::fmt_num(n));
+            let d = d.with_help(help);
+            if cx.pure(f, base) && !espan.is_empty() {
+                let fixed = format!("(sign({b}) * pow(abs({b}), {}))", cx.text(espan));
+                d.with_fix(Fix::suggested("keep the sign outside the power", span, fixed))
+            } else {
+                d
+            }
+        }
+        None => d
+            .with_help("clamp the base to 0")
+            .with_fix(Fix::suggested("wrap the base in `max(…, 0.0)`", bspan, format!("max({b}, 0.0)"))),
+    }
+}
