@@ -10,6 +10,7 @@ pub mod ast;
 pub mod builtins;
 pub mod check;
 pub mod diagnostic;
+pub mod diagnostic_code;
 pub mod hir;
 pub mod lex;
 pub mod link;

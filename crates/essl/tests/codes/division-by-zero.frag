@@ -1,0 +1,6 @@
+#version 300 es
+precision mediump float;
+out vec4 o;
+#if 1 / 0
+#endif
+void main() { o = vec4(1.0); }

@@ -1,0 +1,8 @@
+#version 300 es
+precision mediump float;
+out vec4 o;
+#if 0
+#else
+#else
+#endif
+void main() { o = vec4(1.0); }

@@ -1,0 +1,3 @@
+#version 300 es
+attribute vec4 a_position;
+void main() { gl_Position = a_position; }

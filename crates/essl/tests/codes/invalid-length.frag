@@ -1,0 +1,8 @@
+#version 300 es
+precision mediump float;
+out vec4 o;
+void main() {
+  vec2 v = vec2(1.0);
+  float f = 1.0;
+  o = vec4(f.length());
+}

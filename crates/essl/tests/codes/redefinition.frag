@@ -1,0 +1,8 @@
+#version 300 es
+precision mediump float;
+out vec4 o;
+void main() {
+  float x = 1.0;
+  float x = 2.0;
+  o = vec4(x);
+}

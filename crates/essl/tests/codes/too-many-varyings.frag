@@ -1,0 +1,20 @@
+#version 300 es
+precision mediump float;
+out vec4 o;
+in vec4 v0;
+in vec4 v1;
+in vec4 v2;
+in vec4 v3;
+in vec4 v4;
+in vec4 v5;
+in vec4 v6;
+in vec4 v7;
+in vec4 v8;
+in vec4 v9;
+in vec4 v10;
+in vec4 v11;
+in vec4 v12;
+in vec4 v13;
+in vec4 v14;
+in vec4 v15;
+void main() { o = v0 + v1 + v2 + v3 + v4 + v5 + v6 + v7 + v8 + v9 + v10 + v11 + v12 + v13 + v14 + v15; }

@@ -1,0 +1,36 @@
+#version 300 es
+out vec4 v0;
+out vec4 v1;
+out vec4 v2;
+out vec4 v3;
+out vec4 v4;
+out vec4 v5;
+out vec4 v6;
+out vec4 v7;
+out vec4 v8;
+out vec4 v9;
+out vec4 v10;
+out vec4 v11;
+out vec4 v12;
+out vec4 v13;
+out vec4 v14;
+out vec4 v15;
+void main() {
+  v0 = vec4(0.0);
+  v1 = vec4(1.0);
+  v2 = vec4(2.0);
+  v3 = vec4(3.0);
+  v4 = vec4(4.0);
+  v5 = vec4(5.0);
+  v6 = vec4(6.0);
+  v7 = vec4(7.0);
+  v8 = vec4(8.0);
+  v9 = vec4(9.0);
+  v10 = vec4(10.0);
+  v11 = vec4(11.0);
+  v12 = vec4(12.0);
+  v13 = vec4(13.0);
+  v14 = vec4(14.0);
+  v15 = vec4(15.0);
+  gl_Position = vec4(0.0);
+}

@@ -1,0 +1,7 @@
+#version 300 es
+precision mediump float;
+out vec4 o;
+void main() {
+  float x = 1;
+  o = vec4(x);
+}

@@ -1,0 +1,5 @@
+#define ONE 1.0
+#version 300 es
+precision mediump float;
+out vec4 o;
+void main() { o = vec4(ONE); }

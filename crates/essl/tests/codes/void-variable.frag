@@ -1,0 +1,7 @@
+#version 300 es
+precision mediump float;
+out vec4 o;
+void main() {
+  void v;
+  o = vec4(1.0);
+}
