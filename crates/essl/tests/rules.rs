@@ -2,28 +2,77 @@
 //! are written under the line they point at, as rust-analyzer's tests do:
 //!
 //! ```text
-//! float x = 1;
-//!           //^ error type-mismatch  (the `//` starts under the `1`)
+//!   float x = 1;
+//!           //^ error type-mismatch: cannot initialize a `float` with a `int`
 //! ```
 //!
-//! A `//^` comment names the severity and code of a diagnostic whose primary span starts on
-//! the line above, at the column where the comment's first `/` is. Cases with no annotation must compile cleanly.
+//! The carets sit under the primary span (a `|` marks an empty span, an insertion point; a
+//! span that runs past its line is marked to the line's end), followed by the severity, the
+//! code and the message. Several annotations may follow one line, in the order of the
+//! diagnostics. A span that starts in the first two columns leaves no room for the `//`:
+//! indent the line. Cases with no annotation must compile cleanly.
+//!
+//! The check renders the annotations of the diagnostics the shader produces into its text
+//! and compares the result with the case, so that a failure shows the case as it would pass.
 
+use essl::diagnostic::Diagnostic;
 use essl::source::SourceFile;
 use essl::{compile, Stage};
 
-/// Parses expected diagnostics from the annotations: (line, column, severity, code).
-fn expectations(src: &str) -> Vec<(u32, u32, String, String)> {
-    let mut out = Vec::new();
-    for (i, line) in src.lines().enumerate() {
-        let trimmed = line.trim_start();
-        if let Some(rest) = trimmed.strip_prefix("//^") {
-            // The annotation's first `/` sits under the column it points at.
-            let col = line.find("//^").unwrap() as u32 + 1;
-            let mut parts = rest.split_whitespace();
-            let sev = parts.next().unwrap().to_string();
-            let code = parts.next().unwrap().to_string();
-            out.push((i as u32, col, sev, code));
+/// Whether a line of a case is an annotation.
+fn is_annotation(line: &str) -> bool {
+    let t = line.trim_start();
+    t.starts_with("//^") || t.starts_with("//|")
+}
+
+/// The annotation of `d`, whose span starts on `line` (without its line break), which starts
+/// at byte `line_start` of the case.
+fn annotation(line: &str, line_start: usize, d: &Diagnostic) -> String {
+    let start = (d.span.start as usize - line_start).min(line.len());
+    let end = (d.span.end as usize)
+        .saturating_sub(line_start)
+        .clamp(start, line.len());
+    let col = line[..start].chars().count();
+    let marks = if d.span.is_empty() {
+        "|".to_string()
+    } else {
+        "^".repeat(line[start..end].chars().count().max(1))
+    };
+    let what = format!("{} {}: {}", d.severity.as_str(), d.code, d.message);
+    match col.checked_sub(2) {
+        Some(indent) => format!("{}//{marks} {what}", " ".repeat(indent)),
+        None => format!("//{marks} {what} (at column {}: indent the line)", col + 1),
+    }
+}
+
+/// The case's text with its annotations replaced by those of `diagnostics`.
+fn annotate(src: &str, diagnostics: &[Diagnostic]) -> String {
+    let mut out = String::new();
+    let mut placed = vec![false; diagnostics.len()];
+    let mut line_start = 0;
+    for line in src.split_inclusive('\n') {
+        let here = line_start;
+        line_start += line.len();
+        if is_annotation(line) {
+            continue;
+        }
+        out.push_str(line);
+        let last = line_start == src.len();
+        for (d, placed) in diagnostics.iter().zip(&mut placed) {
+            let at = d.span.start as usize;
+            if (here..line_start).contains(&at) || (last && at == src.len()) {
+                if !out.ends_with('\n') {
+                    out.push('\n');
+                }
+                out.push_str(&annotation(line.trim_end_matches('\n'), here, d));
+                out.push('\n');
+                *placed = true;
+            }
+        }
+    }
+    for (d, placed) in diagnostics.iter().zip(placed) {
+        if !placed {
+            out.push_str(&format!("(outside the text) {} {}\n", d.code, d.message));
         }
     }
     out
@@ -32,36 +81,11 @@ fn expectations(src: &str) -> Vec<(u32, u32, String, String)> {
 #[track_caller]
 fn check(stage: Stage, src: &str) {
     let sh = compile(SourceFile::new("case", src), stage, &Default::default());
-    let want = expectations(src);
-    let got: Vec<(u32, u32, String, String)> = sh
-        .diagnostics
-        .iter()
-        .map(|d| {
-            let lc = sh.file.line_col(d.span.start);
-            (
-                lc.line,
-                lc.column,
-                d.severity.as_str().to_string(),
-                d.code.to_string(),
-            )
-        })
-        .collect();
-    let describe = |v: &[(u32, u32, String, String)]| {
-        v.iter()
-            .map(|(l, c, s, k)| format!("{l}:{c} {s} {k}"))
-            .collect::<Vec<_>>()
-            .join("\n  ")
-    };
-    let all: Vec<String> = sh
-        .diagnostics
-        .iter()
-        .map(|d| format!("{}: {}", d.code, d.message))
-        .collect();
-    assert_eq!(
-        describe(&got),
-        describe(&want),
-        "\nmessages:\n  {}",
-        all.join("\n  ")
+    let actual = annotate(src, &sh.diagnostics);
+    assert!(
+        actual == src,
+        "the diagnostics differ from the annotations\n--- the case:\n{src}\n--- the case as it \
+         would pass:\n{actual}--- end"
     );
 }
 
@@ -69,11 +93,35 @@ fn frag(body: &str) -> String {
     format!("#version 300 es\nprecision mediump float;\nout vec4 o;\n{body}")
 }
 
-// ----- what WebGL2 accepts -----
+#[test]
+fn annotations_mark_spans_and_empty_spans() {
+    let src = "  float x = 1\n";
+    let d = Diagnostic::error(
+        "missing-semicolon",
+        "expected `;`",
+        essl::source::Span::empty(13),
+    );
+    assert_eq!(
+        annotate(src, &[d]),
+        "  float x = 1\n           //| error missing-semicolon: expected `;`\n"
+    );
+    let d = Diagnostic::warning("w", "m", essl::source::Span::new(8, 9));
+    assert_eq!(
+        annotate(src, &[d]),
+        "  float x = 1\n      //^ warning w: m\n"
+    );
+}
 
 #[test]
 fn accepts_precision_qualifiers_everywhere_es_allows_them() {
-    check(Stage::Fragment, &frag("highp float f(mediump float x, lowp int n) { return x * float(n); }\nvoid main() { precision highp float; o = vec4(f(1.0, 2)); }\n"));
+    check(
+        Stage::Fragment,
+        &frag(
+            r#"highp float f(mediump float x, lowp int n) { return x * float(n); }
+void main() { precision highp float; o = vec4(f(1.0, 2)); }
+"#,
+        ),
+    );
 }
 
 #[test]
@@ -81,7 +129,11 @@ fn accepts_loose_uniforms_of_every_type() {
     check(
         Stage::Fragment,
         &frag(
-            "struct L { vec3 p; float k[2]; };\nuniform float a; uniform vec2 b; uniform ivec3 c; uniform uvec4 d; uniform bool e; uniform bvec2 g;\nuniform mat2 m2; uniform mat3x4 m34; uniform float arr[3]; uniform L l; uniform L ls[2];\nvoid main() { o = vec4(a + b.x + float(c.x) + float(d.x) + (e ? 1.0 : 0.0) + (g.x ? 1.0 : 0.0) + m2[0][0] + m34[0][0] + arr[1] + l.p.x + ls[1].k[1]); }\n",
+            r#"struct L { vec3 p; float k[2]; };
+uniform float a; uniform vec2 b; uniform ivec3 c; uniform uvec4 d; uniform bool e; uniform bvec2 g;
+uniform mat2 m2; uniform mat3x4 m34; uniform float arr[3]; uniform L l; uniform L ls[2];
+void main() { o = vec4(a + b.x + float(c.x) + float(d.x) + (e ? 1.0 : 0.0) + (g.x ? 1.0 : 0.0) + m2[0][0] + m34[0][0] + arr[1] + l.p.x + ls[1].k[1]); }
+"#,
         ),
     );
 }
@@ -90,7 +142,15 @@ fn accepts_loose_uniforms_of_every_type() {
 fn accepts_uniform_blocks_and_unlocated_inputs_and_outputs() {
     check(
         Stage::Vertex,
-        "#version 300 es\nlayout(std140) uniform Light { vec4 color; mat4 m; } light;\nuniform Other { float k; };\nin vec4 a_position;\nin vec3 a_normal;\nout vec3 v_normal;\nflat out int v_id;\nvoid main() { v_normal = a_normal * k; v_id = gl_VertexID + gl_InstanceID; gl_Position = light.m * a_position + light.color; }\n",
+        r#"#version 300 es
+layout(std140) uniform Light { vec4 color; mat4 m; } light;
+uniform Other { float k; };
+in vec4 a_position;
+in vec3 a_normal;
+out vec3 v_normal;
+flat out int v_id;
+void main() { v_normal = a_normal * k; v_id = gl_VertexID + gl_InstanceID; gl_Position = light.m * a_position + light.color; }
+"#,
     );
 }
 
@@ -99,20 +159,44 @@ fn accepts_every_sampler_type_including_as_parameters() {
     check(
         Stage::Fragment,
         &frag(
-            "uniform sampler2D s2; uniform samplerCube sc; uniform highp sampler3D s3; uniform highp sampler2DArray sa;\nuniform highp sampler2DShadow ss; uniform highp samplerCubeShadow scs; uniform highp sampler2DArrayShadow sas;\nuniform highp isampler2D i2; uniform highp usampler3D u3; uniform highp isamplerCube ic; uniform highp usampler2DArray ua;\nvec4 look(sampler2D t, vec2 uv) { return texture(t, uv); }\nvoid main() {\n  o = look(s2, vec2(0.5)) + texture(sc, vec3(1.0)) + texture(s3, vec3(0.5)) + texture(sa, vec3(0.5)) +\n      vec4(texture(ss, vec3(0.5)) + texture(scs, vec4(0.5)) + texture(sas, vec4(0.5))) +\n      vec4(texelFetch(i2, ivec2(0), 0)) + vec4(texelFetch(u3, ivec3(0), 0)) + vec4(textureSize(ic, 0).x) + vec4(texture(ua, vec3(0.5)));\n}\n",
+            r#"uniform sampler2D s2; uniform samplerCube sc; uniform highp sampler3D s3; uniform highp sampler2DArray sa;
+uniform highp sampler2DShadow ss; uniform highp samplerCubeShadow scs; uniform highp sampler2DArrayShadow sas;
+uniform highp isampler2D i2; uniform highp usampler3D u3; uniform highp isamplerCube ic; uniform highp usampler2DArray ua;
+vec4 look(sampler2D t, vec2 uv) { return texture(t, uv); }
+void main() {
+  o = look(s2, vec2(0.5)) + texture(sc, vec3(1.0)) + texture(s3, vec3(0.5)) + texture(sa, vec3(0.5)) +
+      vec4(texture(ss, vec3(0.5)) + texture(scs, vec4(0.5)) + texture(sas, vec4(0.5))) +
+      vec4(texelFetch(i2, ivec2(0), 0)) + vec4(texelFetch(u3, ivec3(0), 0)) + vec4(textureSize(ic, 0).x) + vec4(texture(ua, vec3(0.5)));
+}
+"#,
         ),
     );
 }
 
 #[test]
 fn accepts_defines_and_conditionals() {
-    check(Stage::Fragment, "#version 300 es\n#define SCALE 2.0\n#if defined(GL_ES) && __VERSION__ == 300\nprecision highp float;\n#else\n#error not ES 3.00\n#endif\nout vec4 o;\nvoid main() { o = vec4(SCALE); }\n");
+    check(
+        Stage::Fragment,
+        r#"#version 300 es
+#define SCALE 2.0
+#if defined(GL_ES) && __VERSION__ == 300
+precision highp float;
+#else
+#error not ES 3.00
+#endif
+out vec4 o;
+void main() { o = vec4(SCALE); }
+"#,
+    );
 }
 
 #[test]
 fn user_defines_come_from_the_api() {
-    let src =
-        "#version 300 es\nprecision highp float;\nout vec4 o;\nvoid main() { o = vec4(LIGHTS); }\n";
+    let src = r#"#version 300 es
+precision highp float;
+out vec4 o;
+void main() { o = vec4(LIGHTS); }
+"#;
     let opts = essl::CompileOptions {
         defines: vec![("LIGHTS".into(), "3.0".into())],
     };
@@ -130,24 +214,57 @@ fn user_defines_come_from_the_api() {
 
 #[test]
 fn implicit_conversions() {
-    check(Stage::Fragment, &frag("void main() {\n  float x = 1;\n            //^ error type-mismatch\n  uint u = 3;\n           //^ error type-mismatch\n  o = vec4(x) * float(u);\n}\n"));
+    check(
+        Stage::Fragment,
+        &frag(
+            r#"void main() {
+  float x = 1;
+          //^ error type-mismatch: cannot initialize a `float` with a `int`
+  uint u = 3;
+         //^ error type-mismatch: cannot initialize a `uint` with a `int`
+  o = vec4(x) * float(u);
+}
+"#,
+        ),
+    );
 }
 
 #[test]
 fn missing_default_float_precision_in_a_fragment_shader() {
-    check(Stage::Fragment, "#version 300 es\nout vec4 o;\n         //^ error missing-precision\nvoid main() { o = vec4(1.0); }\n");
+    check(
+        Stage::Fragment,
+        r#"#version 300 es
+out vec4 o;
+       //^ error missing-precision: no precision specified for `float`
+void main() { o = vec4(1.0); }
+"#,
+    );
 }
 
 #[test]
 fn samplers_without_default_precision() {
-    check(Stage::Vertex, "#version 300 es\nuniform sampler3D s;\n                  //^ error missing-precision\nvoid main() { gl_Position = texture(s, vec3(0.0)); }\n");
+    check(
+        Stage::Vertex,
+        r#"#version 300 es
+uniform sampler3D s;
+                //^ error missing-precision: no precision specified for `sampler3D`
+void main() { gl_Position = texture(s, vec3(0.0)); }
+"#,
+    );
 }
 
 #[test]
 fn recursion_even_in_functions_never_called() {
     check(
         Stage::Fragment,
-        &frag("float g(float x);\nfloat f(float x) { return g(x); }\nfloat g(float x) { return f(x); }\n      //^ error recursion\nvoid main() { o = vec4(1.0); }\n"),
+        &frag(
+            r#"float g(float x);
+float f(float x) { return g(x); }
+float g(float x) { return f(x); }
+    //^ error recursion: recursive call chain: g → f → g
+void main() { o = vec4(1.0); }
+"#,
+        ),
     );
 }
 
@@ -155,7 +272,18 @@ fn recursion_even_in_functions_never_called() {
 fn reserved_words_and_names() {
     check(
         Stage::Fragment,
-        &frag("void main() {\n  float class = 1.0;\n        //^ error reserved-word\n  float gl_x = 1.0;\n        //^ error reserved-name\n  float a__b = 1.0;\n        //^ error reserved-name\n  o = vec4(gl_x);\n}\n"),
+        &frag(
+            r#"void main() {
+  float class = 1.0;
+      //^^^^^ error reserved-word: `class` is a reserved word in GLSL ES 3.00
+  float gl_x = 1.0;
+      //^^^^ error reserved-name: `gl_x` starts with `gl_`, which is reserved for built-in names
+  float a__b = 1.0;
+      //^^^^ error reserved-name: `a__b` contains `__`, which is reserved in GLSL ES 3.00
+  o = vec4(gl_x);
+}
+"#,
+        ),
     );
 }
 
@@ -163,16 +291,42 @@ fn reserved_words_and_names() {
 fn es100_names() {
     check(
         Stage::Vertex,
-        "#version 300 es\nattribute vec4 a;\n//^ error es100-qualifier\nvarying vec4 v;\n//^ error es100-qualifier\nuniform sampler2D s;\nvoid main() { v = texture2D(s, a.xy); gl_Position = a; }\n                  //^ error undeclared-function\n",
+        r#"#version 300 es
+  attribute vec4 a;
+//^^^^^^^^^ error es100-qualifier: `attribute` is GLSL ES 1.00 and is reserved in GLSL ES 3.00
+  varying vec4 v;
+//^^^^^^^ error es100-qualifier: `varying` is GLSL ES 1.00 and is reserved in GLSL ES 3.00
+uniform sampler2D s;
+void main() { v = texture2D(s, a.xy); gl_Position = a; }
+                //^^^^^^^^^ error undeclared-function: no function named `texture2D` is declared
+"#,
     );
-    check(Stage::Fragment, &frag("void main() { gl_FragColor = vec4(1.0); }\n              //^ error undeclared-identifier\n"));
+    check(
+        Stage::Fragment,
+        &frag(
+            r#"void main() { gl_FragColor = vec4(1.0); }
+            //^^^^^^^^^^^^ error undeclared-identifier: `gl_FragColor` is not declared
+"#,
+        ),
+    );
 }
 
 #[test]
 fn writes_to_uniforms_and_inputs() {
     check(
         Stage::Fragment,
-        &frag("uniform float u;\nin float v;\nvoid main() {\n  u = 1.0;\n  //^ error not-assignable\n  v = 2.0;\n  //^ error not-assignable\n  o = vec4(u + v);\n}\n"),
+        &frag(
+            r#"uniform float u;
+in float v;
+void main() {
+  u = 1.0;
+//^ error not-assignable: cannot assign to uniform `u`
+  v = 2.0;
+//^ error not-assignable: cannot assign to input `v`
+  o = vec4(u + v);
+}
+"#,
+        ),
     );
 }
 
@@ -180,32 +334,94 @@ fn writes_to_uniforms_and_inputs() {
 fn dynamic_sampler_indexing() {
     check(
         Stage::Fragment,
-        &frag("uniform sampler2D t[3];\nuniform int k;\nvoid main() {\n  const int c = 1;\n  o = texture(t[c + 1], vec2(0.0));\n  for (int i = 0; i < 3; i++) { o += texture(t[i], vec2(0.0)); }\n                                               //^ error dynamic-sampler-index\n}\n"),
+        &frag(
+            r#"uniform sampler2D t[3];
+uniform int k;
+void main() {
+  const int c = 1;
+  o = texture(t[c + 1], vec2(0.0));
+  for (int i = 0; i < 3; i++) { o += texture(t[i], vec2(0.0)); }
+                                             //^ error dynamic-sampler-index: arrays of samplers can only be indexed with constant integral expressions
+}
+"#,
+        ),
     );
 }
 
 #[test]
 fn several_fragment_outputs_need_locations() {
-    check(Stage::Fragment, "#version 300 es\nprecision mediump float;\nout vec4 a;\n         //^ error output-location-required\nout vec4 b;\n         //^ error output-location-required\nvoid main() { a = vec4(1.0); b = a; }\n");
-    check(Stage::Fragment, "#version 300 es\nprecision mediump float;\nlayout(location = 0) out vec4 a;\nlayout(location = 1) out vec4 b;\nvoid main() { a = vec4(1.0); b = a; }\n");
+    check(
+        Stage::Fragment,
+        r#"#version 300 es
+precision mediump float;
+out vec4 a;
+       //^ error output-location-required: fragment output `a` needs a `layout(location = N)`
+out vec4 b;
+       //^ error output-location-required: fragment output `b` needs a `layout(location = N)`
+void main() { a = vec4(1.0); b = a; }
+"#,
+    );
+    check(
+        Stage::Fragment,
+        r#"#version 300 es
+precision mediump float;
+layout(location = 0) out vec4 a;
+layout(location = 1) out vec4 b;
+void main() { a = vec4(1.0); b = a; }
+"#,
+    );
 }
 
 #[test]
 fn integer_varyings_must_be_flat() {
-    check(Stage::Vertex, "#version 300 es\nout int v_i;\n        //^ error integer-varying-not-flat\nvoid main() { v_i = 1; gl_Position = vec4(0.0); }\n");
-    check(Stage::Fragment, &frag("in uvec2 v_u;\n         //^ error integer-varying-not-flat\nvoid main() { o = vec4(v_u.x); }\n"));
+    check(
+        Stage::Vertex,
+        r#"#version 300 es
+out int v_i;
+      //^^^ error integer-varying-not-flat: an integer vertex shader output must be `flat`
+void main() { v_i = 1; gl_Position = vec4(0.0); }
+"#,
+    );
+    check(
+        Stage::Fragment,
+        &frag(
+            r#"in uvec2 v_u;
+       //^^^ error integer-varying-not-flat: an integer fragment shader input must be `flat`
+void main() { o = vec4(v_u.x); }
+"#,
+        ),
+    );
 }
 
 #[test]
 fn version_must_be_on_the_first_line() {
-    check(Stage::Fragment, "\n#version 300 es\n//^ error version-not-first-line\nprecision mediump float;\nout vec4 o;\nvoid main() { o = vec4(1.0); }\n");
+    check(
+        Stage::Fragment,
+        r#"
+  #version 300 es
+//^^^^^^^^^^^^^^^ error version-not-first-line: `#version 300 es` must be on the first line of the shader
+precision mediump float;
+out vec4 o;
+void main() { o = vec4(1.0); }
+"#,
+    );
 }
 
 #[test]
 fn wrong_overloads_of_builtins() {
     check(
         Stage::Fragment,
-        &frag("void main() {\n  vec3 v = vec3(1.0);\n  o = vec4(pow(v, 2.0), 1.0);\n           //^ error no-matching-overload\n  o += vec4(smoothstep(v, v, 0.5), 1.0);\n            //^ error no-matching-overload\n  o += vec4(smoothstep(0.0, 1.0, v), 1.0);\n}\n"),
+        &frag(
+            r#"void main() {
+  vec3 v = vec3(1.0);
+  o = vec4(pow(v, 2.0), 1.0);
+         //^^^ error no-matching-overload: no overload of `pow` takes (`vec3`, `float`)
+  o += vec4(smoothstep(v, v, 0.5), 1.0);
+          //^^^^^^^^^^ error no-matching-overload: no overload of `smoothstep` takes (`vec3`, `vec3`, `float`)
+  o += vec4(smoothstep(0.0, 1.0, v), 1.0);
+}
+"#,
+        ),
     );
 }
 
@@ -213,7 +429,17 @@ fn wrong_overloads_of_builtins() {
 fn missing_semicolons_are_reported_at_the_end_of_the_line_that_lacks_them() {
     check(
         Stage::Fragment,
-        &frag("uniform float a\n               //^ error missing-semicolon\nuniform float b;\nvoid main() {\n  float x = a + b\n                 //^ error missing-semicolon\n  o = vec4(x);\n}\n"),
+        &frag(
+            r#"uniform float a
+             //| error missing-semicolon: expected `;` after the declaration
+uniform float b;
+void main() {
+  float x = a + b
+               //| error missing-semicolon: expected `;` after the declaration
+  o = vec4(x);
+}
+"#,
+        ),
     );
 }
 
@@ -221,20 +447,49 @@ fn missing_semicolons_are_reported_at_the_end_of_the_line_that_lacks_them() {
 fn every_syntax_error_in_one_run_without_cascades() {
     check(
         Stage::Fragment,
-        &frag("void main() {\n  float x = (1.0 + ;\n                   //^ error syntax-error\n  float y = 2.0 * * 3.0;\n                  //^ error syntax-error\n  o = vec4(x + y);\n}\n"),
+        &frag(
+            r#"void main() {
+  float x = (1.0 + ;
+                 //^ error syntax-error: expected an expression, found `;`
+  float y = 2.0 * * 3.0;
+                //^ error syntax-error: expected an expression, found `*`
+  o = vec4(x + y);
+}
+"#,
+        ),
     );
 }
 
 #[test]
 fn discard_only_in_fragment_shaders() {
-    check(Stage::Vertex, "#version 300 es\nvoid main() { discard; gl_Position = vec4(0.0); }\n              //^ error discard-in-vertex\n");
+    check(
+        Stage::Vertex,
+        r#"#version 300 es
+void main() { discard; gl_Position = vec4(0.0); }
+            //^^^^^^^^ error discard-in-vertex: `discard` is only allowed in fragment shaders
+"#,
+    );
 }
 
 #[test]
 fn constant_expressions() {
     check(
         Stage::Fragment,
-        &frag("uniform float u;\nconst float c = sin(1.0);\nfloat g = u * 2.0;\n          //^ error non-constant-initializer\nvoid main() {\n  float a[3];\n  a[3] = c;\n    //^ error index-out-of-range\n  int n = 1 / 0;\n          //^ warning division-by-zero\n  o = vec4(a[0] + g + float(n));\n}\n"),
+        &frag(
+            r#"uniform float u;
+const float c = sin(1.0);
+float g = u * 2.0;
+        //^^^^^^^ error non-constant-initializer: global variable initializers must be constant expressions
+void main() {
+  float a[3];
+  a[3] = c;
+  //^ error index-out-of-range: index 3 is out of range for a array of 3
+  int n = 1 / 0;
+        //^^^^^ warning division-by-zero: division by zero in a constant expression
+  o = vec4(a[0] + g + float(n));
+}
+"#,
+        ),
     );
 }
 
@@ -242,7 +497,21 @@ fn constant_expressions() {
 fn swizzles() {
     check(
         Stage::Fragment,
-        &frag("void main() {\n  float f = 1.0;\n  vec2 v = vec2(f);\n  o.x = f.x;\n          //^ error invalid-field\n  o.y = v.xyzw.x;\n          //^ error invalid-swizzle\n  o.z = v.xg.x;\n          //^ error invalid-swizzle\n  v.xx = vec2(1.0);\n  //^ error not-assignable\n}\n"),
+        &frag(
+            r#"void main() {
+  float f = 1.0;
+  vec2 v = vec2(f);
+  o.x = f.x;
+        //^ error invalid-field: `float` has no fields: `.x` needs a struct or a vector
+  o.y = v.xyzw.x;
+        //^^^^ error invalid-swizzle: swizzle `xyzw` reads past the end of a 2-component vector
+  o.z = v.xg.x;
+        //^^ error invalid-swizzle: swizzle `xg` mixes component sets
+  v.xx = vec2(1.0);
+//^^^^ error not-assignable: a swizzle with repeated components cannot be assigned
+}
+"#,
+        ),
     );
 }
 
@@ -250,13 +519,36 @@ fn swizzles() {
 fn switch_rules() {
     check(
         Stage::Fragment,
-        &frag("uniform int k;\nvoid main() {\n  switch (k) {\n    case 1: o = vec4(1.0); break;\n    case 1: break;\n    //^ error duplicate-case\n    default:\n  }\n  //^ error label-at-end-of-switch\n}\n"),
+        &frag(
+            r#"uniform int k;
+void main() {
+  switch (k) {
+    case 1: o = vec4(1.0); break;
+    case 1: break;
+  //^^^^^^^ error duplicate-case: duplicate `case 1`
+    default:
+  }
+//^ error label-at-end-of-switch: no statement between the last `case` label and the end of the `switch`
+}
+"#,
+        ),
     );
 }
 
 #[test]
 fn webgl_forbids_ternary_and_sequence_on_arrays() {
-    check(Stage::Fragment, &frag("void main() {\n  float a[2]; float b[2];\n  float c[2] = true ? a : b;\n               //^ error webgl-forbidden-operand\n  o = vec4(c[0]);\n}\n"));
+    check(
+        Stage::Fragment,
+        &frag(
+            r#"void main() {
+  float a[2]; float b[2];
+  float c[2] = true ? a : b;
+             //^^^^^^^^^^^^ error webgl-forbidden-operand: the ternary operator `?:` cannot select arrays in WebGL
+  o = vec4(c[0]);
+}
+"#,
+        ),
+    );
 }
 
 #[test]
