@@ -66,8 +66,8 @@ codes! {
     MissingVersion = "missing-version",
     /// `#version 100`: a GLSL ES 1.00 shader, which essl does not check.
     UnsupportedVersion = "unsupported-version",
-    /// A `#version` line that is not `#version 300 es`, such as one without the `es` profile
-    /// or with a version GLSL ES does not have.
+    /// A malformed `#version` line: no version number, or `#version 300` without the `es`
+    /// profile.
     InvalidVersion = "invalid-version",
     /// `#version` after code or other directives: it must come before anything but comments
     /// and white space.
@@ -75,7 +75,8 @@ codes! {
     /// `#version 300 es` on a line other than the first: WebGL2 requires it on the very first
     /// line, so the shader would be compiled as GLSL ES 1.00.
     VersionNotFirstLine = "version-not-first-line",
-    /// A `#` followed by a name that is not a directive (`#include`, `#import`).
+    /// A `#` followed by a name that is not a directive (`#include`), or by something that is
+    /// not a name.
     UnknownDirective = "unknown-directive",
     /// A `#` or `##` in code, outside the start of a directive line.
     StrayHash = "stray-hash",
@@ -285,8 +286,9 @@ codes! {
     MissingInitializer = "missing-initializer",
     /// A `const` variable, or a global, whose initializer is not a constant expression.
     NonConstantInitializer = "non-constant-initializer",
-    /// A shader input or output of a type it cannot have: a bool, a struct or a sampler, or
-    /// (for a vertex input) an array.
+    /// A shader input or output of a type it cannot have: a sampler or a `bool` anywhere; an
+    /// array or struct as a vertex input; a matrix or struct as a fragment output; an array of
+    /// structs, or a struct containing an array or a struct, as a varying.
     InvalidInterfaceType = "invalid-interface-type",
     /// An integer vertex output or fragment input without `flat`: integers cannot be
     /// interpolated.
@@ -390,8 +392,8 @@ codes! {
     NonConstantOffset = "non-constant-offset",
     /// A constant texel offset outside the range WebGL2 guarantees (-8 to 7).
     TexelOffsetRange = "texel-offset-range",
-    /// A built-in function available only in fragment shaders (`dFdx`, `texture` with a
-    /// bias) called in a vertex shader.
+    /// A built-in function available only in fragment shaders (`dFdx`, `dFdy`, `fwidth`, or
+    /// a texture lookup with a bias argument) called in a vertex shader.
     FragmentOnlyBuiltin = "fragment-only-builtin",
     /// `discard` in a vertex shader.
     DiscardInVertex = "discard-in-vertex",
