@@ -1,14 +1,36 @@
-//! Built-in functions: math, geometry, matrices, relations and texture lookups.
+//! Built-in functions: math, geometry, matrices, relations and derivatives, one method per
+//! group of the specification; texture lookups are in `texture`.
 
-use naga::{Expression, Handle, Literal, MathFunction as Mf, SampleLevel};
+mod texture;
+
+use naga::{Expression, Handle, Literal, MathFunction as Mf};
 
 use super::func::FnCx;
 use super::{unsupported, LowerError};
 use crate::builtins::BuiltinFn;
 use crate::hir::Expr;
 use crate::source::Span;
-use crate::types::{SamplerDim, SamplerType, ScalarKind, Type};
-use crate::Stage;
+use crate::types::{ScalarKind, Type};
+
+/// A call of a built-in function, its arguments lowered.
+#[derive(Clone, Copy)]
+struct Call<'e> {
+    op: BuiltinFn,
+    /// The arguments.
+    args: &'e [Expr],
+    /// Their lowered values.
+    vals: &'e [Handle<Expression>],
+    /// The call's type.
+    ret: &'e Type,
+    span: Span,
+}
+
+impl Call<'_> {
+    /// The error for a built-in essl does not lower.
+    fn unsupported(&self) -> LowerError {
+        unsupported(format!("built-in `{}`", self.op.name()), self.span)
+    }
+}
 
 impl FnCx<'_, '_> {
     /// Widens scalar arguments to the vector size of the result, as naga's math functions
@@ -26,6 +48,7 @@ impl FnCx<'_, '_> {
         }
     }
 
+    /// Lowers a call of a built-in function (`ret`: the call's type).
     pub(crate) fn builtin(
         &mut self,
         op: BuiltinFn,
@@ -41,7 +64,38 @@ impl FnCx<'_, '_> {
             .iter()
             .map(|a| self.expr(a))
             .collect::<Result<_, _>>()?;
-        let t0 = args[0].ty.clone();
+        let call = Call {
+            op,
+            args,
+            vals: &vals,
+            ret,
+            span,
+        };
+        match op {
+            Radians | Degrees | Sin | Cos | Tan | Asin | Acos | Atan | Sinh | Cosh | Tanh
+            | Asinh | Acosh | Atanh | Pow | Exp | Log | Exp2 | Log2 | Sqrt | InverseSqrt => {
+                self.exponential(call)
+            }
+            Abs | Sign | Floor | Trunc | Round | RoundEven | Ceil | Fract | Mod | Modf | Min
+            | Max | Clamp | Mix | Step | SmoothStep | IsNan | IsInf | FloatBitsToInt
+            | FloatBitsToUint | IntBitsToFloat | UintBitsToFloat => self.common(call),
+            PackSnorm2x16 | UnpackSnorm2x16 | PackUnorm2x16 | UnpackUnorm2x16 | PackHalf2x16
+            | UnpackHalf2x16 => self.packing(call),
+            Length | Distance | Dot | Cross | Normalize | FaceForward | Reflect | Refract => {
+                self.geometric(call)
+            }
+            MatrixCompMult | OuterProduct | Transpose | Determinant | Inverse => self.matrix(call),
+            LessThan | LessThanEqual | GreaterThan | GreaterThanEqual | Equal | NotEqual | Any
+            | All | Not => self.relational(call),
+            DFdx | DFdy | Fwidth => self.derivative(call),
+            _ => Err(call.unsupported()),
+        }
+    }
+
+    /// Angle, trigonometry and exponential functions: one naga math function each.
+    fn exponential(&mut self, call: Call) -> Result<Handle<Expression>, LowerError> {
+        use BuiltinFn::*;
+        let Call { op, vals, span, .. } = call;
         let unary = |fx: &mut Self, f: Mf| fx.math(f, &[vals[0]], span);
         Ok(match op {
             Radians => unary(self, Mf::Radians),
@@ -66,6 +120,24 @@ impl FnCx<'_, '_> {
             Log2 => unary(self, Mf::Log2),
             Sqrt => unary(self, Mf::Sqrt),
             InverseSqrt => unary(self, Mf::InverseSqrt),
+            _ => return Err(call.unsupported()),
+        })
+    }
+
+    /// Common functions (`abs` … `smoothstep`, `isnan`, `isinf`) and the bit casts between
+    /// floats and integers; scalar arguments widened where naga wants vectors.
+    fn common(&mut self, call: Call) -> Result<Handle<Expression>, LowerError> {
+        use BuiltinFn::*;
+        let Call {
+            op,
+            args,
+            vals,
+            span,
+            ..
+        } = call;
+        let t0 = args[0].ty.clone();
+        let unary = |fx: &mut Self, f: Mf| fx.math(f, &[vals[0]], span);
+        Ok(match op {
             Abs => unary(self, Mf::Abs),
             Sign => unary(self, Mf::Sign),
             Floor => unary(self, Mf::Floor),
@@ -180,12 +252,39 @@ impl FnCx<'_, '_> {
                 },
                 span,
             ),
+            _ => return Err(call.unsupported()),
+        })
+    }
+
+    /// Packing and unpacking of two 16-bit values in a 32-bit integer.
+    fn packing(&mut self, call: Call) -> Result<Handle<Expression>, LowerError> {
+        use BuiltinFn::*;
+        let Call { op, vals, span, .. } = call;
+        let unary = |fx: &mut Self, f: Mf| fx.math(f, &[vals[0]], span);
+        Ok(match op {
             PackSnorm2x16 => unary(self, Mf::Pack2x16snorm),
             UnpackSnorm2x16 => unary(self, Mf::Unpack2x16snorm),
             PackUnorm2x16 => unary(self, Mf::Pack2x16unorm),
             UnpackUnorm2x16 => unary(self, Mf::Unpack2x16unorm),
             PackHalf2x16 => self.pack_half(vals[0], span),
             UnpackHalf2x16 => self.unpack_half(vals[0], span),
+            _ => return Err(call.unsupported()),
+        })
+    }
+
+    /// Geometric functions; on scalars, those naga only takes on vectors are built by hand.
+    fn geometric(&mut self, call: Call) -> Result<Handle<Expression>, LowerError> {
+        use BuiltinFn::*;
+        let Call {
+            op,
+            args,
+            vals,
+            span,
+            ..
+        } = call;
+        let t0 = args[0].ty.clone();
+        let unary = |fx: &mut Self, f: Mf| fx.math(f, &[vals[0]], span);
+        Ok(match op {
             Length => unary(self, Mf::Length),
             Distance => self.math(Mf::Distance, &[vals[0], vals[1]], span),
             Dot if t0.is_scalar() => {
@@ -256,6 +355,24 @@ impl FnCx<'_, '_> {
                 )
             }
             Refract => self.math(Mf::Refract, &[vals[0], vals[1], vals[2]], span),
+            _ => return Err(call.unsupported()),
+        })
+    }
+
+    /// Matrix functions; `matrixCompMult` and `outerProduct` column by column.
+    fn matrix(&mut self, call: Call) -> Result<Handle<Expression>, LowerError> {
+        use BuiltinFn::*;
+        let Call {
+            op,
+            args,
+            vals,
+            ret,
+            span,
+            ..
+        } = call;
+        let t0 = args[0].ty.clone();
+        let unary = |fx: &mut Self, f: Mf| fx.math(f, &[vals[0]], span);
+        Ok(match op {
             MatrixCompMult => {
                 let Type::Matrix { cols, .. } = t0 else {
                     return Err(unsupported("matrixCompMult", span));
@@ -286,6 +403,15 @@ impl FnCx<'_, '_> {
             Transpose => unary(self, Mf::Transpose),
             Determinant => unary(self, Mf::Determinant),
             Inverse => unary(self, Mf::Inverse),
+            _ => return Err(call.unsupported()),
+        })
+    }
+
+    /// Component-wise comparisons and the vector relational functions.
+    fn relational(&mut self, call: Call) -> Result<Handle<Expression>, LowerError> {
+        use BuiltinFn::*;
+        let Call { op, vals, span, .. } = call;
+        Ok(match op {
             LessThan | LessThanEqual | GreaterThan | GreaterThanEqual | Equal | NotEqual => {
                 let o = match op {
                     LessThan => naga::BinaryOperator::Less,
@@ -318,6 +444,15 @@ impl FnCx<'_, '_> {
                 },
                 span,
             ),
+            _ => return Err(call.unsupported()),
+        })
+    }
+
+    /// Derivatives; `dFdy` negated when `gl_FragCoord` is flipped (GL's y grows upwards).
+    fn derivative(&mut self, call: Call) -> Result<Handle<Expression>, LowerError> {
+        use BuiltinFn::*;
+        let Call { op, vals, span, .. } = call;
+        Ok(match op {
             DFdx | DFdy | Fwidth => {
                 let axis = match op {
                     DFdx => naga::DerivativeAxis::X,
@@ -346,7 +481,7 @@ impl FnCx<'_, '_> {
                 }
                 d
             }
-            _ => return Err(unsupported(format!("built-in `{}`", op.name()), span)),
+            _ => return Err(call.unsupported()),
         })
     }
 
@@ -509,315 +644,5 @@ impl FnCx<'_, '_> {
             },
             span,
         )
-    }
-
-    // ----- textures -----
-
-    fn texture(
-        &mut self,
-        op: BuiltinFn,
-        args: &[Expr],
-        ret: &Type,
-        span: Span,
-    ) -> Result<Handle<Expression>, LowerError> {
-        use BuiltinFn::*;
-        let Type::Sampler(st) = args[0].ty else {
-            return Err(unsupported("a texture call without a sampler", span));
-        };
-        if !self.sampler_available(&args[0]) {
-            // An inactive sampler only appears in code the entry point never runs.
-            return Ok(self.zero(ret));
-        }
-        let (image, sampler) = self.sampler(&args[0])?;
-        let vals: Vec<Handle<Expression>> = args[1..]
-            .iter()
-            .map(|a| self.expr(a))
-            .collect::<Result<_, _>>()?;
-        let tys: Vec<Type> = args[1..].iter().map(|a| a.ty.clone()).collect();
-        if op == TextureSize {
-            return Ok(self.texture_size(image, st, vals[0], span));
-        }
-        if matches!(op, TexelFetch | TexelFetchOffset) {
-            let mut coord = vals[0];
-            if op == TexelFetchOffset {
-                coord = self.binop(naga::BinaryOperator::Add, coord, vals[2], span);
-            }
-            let (coordinate, array_index) = self.split_array_coord_int(coord, st, span);
-            return Ok(self.add(
-                Expression::ImageLoad {
-                    image,
-                    coordinate,
-                    array_index,
-                    sample: None,
-                    level: Some(vals[1]),
-                },
-                span,
-            ));
-        }
-        let proj = matches!(
-            op,
-            TextureProj
-                | TextureProjOffset
-                | TextureProjLod
-                | TextureProjLodOffset
-                | TextureProjGrad
-                | TextureProjGradOffset
-        );
-        let lod = matches!(
-            op,
-            TextureLod | TextureLodOffset | TextureProjLod | TextureProjLodOffset
-        );
-        let grad = matches!(
-            op,
-            TextureGrad | TextureGradOffset | TextureProjGrad | TextureProjGradOffset
-        );
-        let has_offset = op.has_offset();
-        // Arguments after the coordinates: [lod | dPdx, dPdy] [offset] [bias].
-        let mut i = 1;
-        let level_arg = if lod {
-            i += 1;
-            Some(vals[1])
-        } else {
-            None
-        };
-        let grads = if grad {
-            i += 2;
-            Some((vals[1], vals[2]))
-        } else {
-            None
-        };
-        let offset = if has_offset {
-            let o = vals[i];
-            i += 1;
-            Some(o)
-        } else {
-            None
-        };
-        let bias = vals.get(i).copied();
-        // Coordinates, depth reference and array layer.
-        let coord_ty = tys[0].clone();
-        let n = coord_ty.vector_size().unwrap_or(1);
-        let mut coords = vals[0];
-        let dims = st.dim.coord_dims();
-        let mut depth_ref = None;
-        let mut array_index = None;
-        if proj {
-            // Divide by the last component: textureProj(s2D, vec3) uses .xy/.z; with vec4,
-            // .xy/.w (and for shadow, .z/.w is the reference).
-            let q = self.access_index(coords, n as u32 - 1, span);
-            let keep = if st.shadow { 3 } else { dims };
-            let parts: Vec<u8> = (0..keep).collect();
-            let xyz = self.swizzle(coords, &parts, span);
-            let qv = if keep > 1 {
-                self.splat(q, keep, span)
-            } else {
-                q
-            };
-            coords = self.binop(naga::BinaryOperator::Divide, xyz, qv, span);
-            if st.shadow {
-                depth_ref = Some(self.access_index(coords, 2, span));
-                let xy: Vec<u8> = (0..2).collect();
-                coords = self.swizzle(coords, &xy, span);
-            }
-        } else {
-            let total = n;
-            let mut k = dims;
-            if st.dim == SamplerDim::D2Array {
-                let layer = self.access_index(coords, 2, span);
-                array_index = Some(self.layer_index(layer, span));
-                k = 2;
-            }
-            if st.shadow {
-                let ref_index = if st.dim == SamplerDim::D2Array {
-                    3
-                } else {
-                    total - 1
-                };
-                depth_ref = Some(self.access_index(coords, ref_index as u32, span));
-            }
-            if total != k {
-                let parts: Vec<u8> = (0..k).collect();
-                coords = self.swizzle(coords, &parts, span);
-            }
-        }
-        if st.kind != ScalarKind::Float {
-            return self.integer_texture(
-                image,
-                st,
-                coords,
-                array_index,
-                level_arg,
-                offset,
-                ret,
-                span,
-            );
-        }
-        let vertex = self.stage() == Stage::Vertex;
-        let level = if st.shadow {
-            // naga compares depth only at the implicit level or level 0.
-            if vertex || lod || grad {
-                SampleLevel::Zero
-            } else {
-                SampleLevel::Auto
-            }
-        } else if let Some(l) = level_arg {
-            SampleLevel::Exact(l)
-        } else if let Some((x, y)) = grads {
-            SampleLevel::Gradient { x, y }
-        } else if let Some(b) = bias {
-            SampleLevel::Bias(b)
-        } else if vertex {
-            SampleLevel::Zero
-        } else {
-            SampleLevel::Auto
-        };
-        let offset = match offset {
-            Some(_) => Some(self.const_offset(
-                &args[1 + if lod {
-                    2
-                } else if grad {
-                    3
-                } else {
-                    1
-                }],
-                span,
-            )?),
-            None => None,
-        };
-        let sampled = self.add(
-            Expression::ImageSample {
-                image,
-                sampler,
-                gather: None,
-                coordinate: coords,
-                array_index,
-                offset,
-                level,
-                depth_ref,
-                clamp_to_edge: false,
-            },
-            span,
-        );
-        Ok(sampled)
-    }
-
-    /// A texel offset as a constant expression.
-    fn const_offset(&mut self, e: &Expr, span: Span) -> Result<Handle<Expression>, LowerError> {
-        match e.as_const() {
-            Some(c) => Ok(self.constant(c, &e.ty, span)),
-            None => Err(unsupported("a texel offset that is not a constant", span)),
-        }
-    }
-
-    /// The array layer of a float coordinate: `floor(z + 0.5)` as an integer, as GLSL says.
-    fn layer_index(&mut self, layer: Handle<Expression>, span: Span) -> Handle<Expression> {
-        let half = self.lit(Literal::F32(0.5));
-        let l = self.binop(naga::BinaryOperator::Add, layer, half, span);
-        let l = self.math(Mf::Floor, &[l], span);
-        let zero = self.lit(Literal::F32(0.0));
-        let l = self.math(Mf::Max, &[l, zero], span);
-        self.cast(l, naga::ScalarKind::Sint, span)
-    }
-
-    fn split_array_coord_int(
-        &mut self,
-        coord: Handle<Expression>,
-        st: SamplerType,
-        span: Span,
-    ) -> (Handle<Expression>, Option<Handle<Expression>>) {
-        if st.dim == SamplerDim::D2Array {
-            let xy = self.swizzle(coord, &[0, 1], span);
-            let layer = self.access_index(coord, 2, span);
-            (xy, Some(layer))
-        } else {
-            (coord, None)
-        }
-    }
-
-    fn texture_size(
-        &mut self,
-        image: Handle<Expression>,
-        st: SamplerType,
-        lod: Handle<Expression>,
-        span: Span,
-    ) -> Handle<Expression> {
-        let size = self.add(
-            Expression::ImageQuery {
-                image,
-                query: naga::ImageQuery::Size { level: Some(lod) },
-            },
-            span,
-        );
-        let size = self.cast(size, naga::ScalarKind::Sint, span);
-        if st.dim == SamplerDim::D2Array {
-            let layers = self.add(
-                Expression::ImageQuery {
-                    image,
-                    query: naga::ImageQuery::NumLayers,
-                },
-                span,
-            );
-            let layers = self.cast(layers, naga::ScalarKind::Sint, span);
-            let x = self.access_index(size, 0, span);
-            let y = self.access_index(size, 1, span);
-            return self.compose(&Type::Vector(ScalarKind::Int, 3), vec![x, y, layers], span);
-        }
-        size
-    }
-
-    /// `texture()` on an integer sampler: naga cannot filter integer textures (neither can GL:
-    /// they are only complete with NEAREST filtering), so this loads the nearest texel of the
-    /// chosen level with the coordinates clamped to the edge.
-    #[allow(clippy::too_many_arguments)]
-    fn integer_texture(
-        &mut self,
-        image: Handle<Expression>,
-        st: SamplerType,
-        coords: Handle<Expression>,
-        array_index: Option<Handle<Expression>>,
-        lod: Option<Handle<Expression>>,
-        offset: Option<Handle<Expression>>,
-        _ret: &Type,
-        span: Span,
-    ) -> Result<Handle<Expression>, LowerError> {
-        if st.dim == SamplerDim::Cube {
-            return Err(unsupported("`texture` on an integer cube sampler", span));
-        }
-        let level = match lod {
-            Some(l) => self.cast(l, naga::ScalarKind::Sint, span),
-            None => self.lit(Literal::I32(0)),
-        };
-        let n = if st.dim == SamplerDim::D3 { 3 } else { 2 };
-        let size = self.add(
-            Expression::ImageQuery {
-                image,
-                query: naga::ImageQuery::Size { level: Some(level) },
-            },
-            span,
-        );
-        let size = self.cast(size, naga::ScalarKind::Sint, span);
-        let fsize = self.cast(size, naga::ScalarKind::Float, span);
-        let scaled = self.binop(naga::BinaryOperator::Multiply, coords, fsize, span);
-        let fl = self.math(Mf::Floor, &[scaled], span);
-        let mut texel = self.cast(fl, naga::ScalarKind::Sint, span);
-        if let Some(o) = offset {
-            texel = self.binop(naga::BinaryOperator::Add, texel, o, span);
-        }
-        let zero = self.lit(Literal::I32(0));
-        let zero = self.splat(zero, n, span);
-        let one = self.lit(Literal::I32(1));
-        let one = self.splat(one, n, span);
-        let max = self.binop(naga::BinaryOperator::Subtract, size, one, span);
-        let texel = self.math(Mf::Clamp, &[texel, zero, max], span);
-        Ok(self.add(
-            Expression::ImageLoad {
-                image,
-                coordinate: texel,
-                array_index,
-                sample: None,
-                level: Some(level),
-            },
-            span,
-        ))
     }
 }
