@@ -16,6 +16,7 @@ impl Context {
     /// `INVALID_ENUM`, a negative size → `INVALID_VALUE`, a `dst` too small →
     /// `INVALID_OPERATION`. Pixels outside the framebuffer are left untouched. Submits the
     /// recorded commands and waits for them.
+    #[allow(clippy::too_many_arguments)] // WebGL2's own argument list
     pub fn read_pixels(
         &mut self,
         x: i32,

@@ -58,6 +58,7 @@ impl Context {
     /// (unsigned bytes and the packed 16-bit types), and the sized colour formats of
     /// ES 3.0 except `R11F_G11F_B10F`, `RGB9_E5`, `RGB10_A2`, `RGB10_A2UI` (those and depth
     /// formats record `INVALID_ENUM`).
+    #[allow(clippy::too_many_arguments)] // WebGL2's own argument list
     pub fn tex_image_2d(
         &mut self,
         target: u32,
@@ -90,6 +91,7 @@ impl Context {
 
     /// Specifies a level of a 3D texture or 2D array texture (`texImage3D`); see
     /// [`Context::tex_image_2d`].
+    #[allow(clippy::too_many_arguments)] // WebGL2's own argument list
     pub fn tex_image_3d(
         &mut self,
         target: u32,
@@ -328,6 +330,7 @@ impl Context {
     /// Replaces a region of a level of a 2D texture or cube map face (`texSubImage2D`).
     /// The region must lie in the level (`INVALID_VALUE`) and `(format, ty)` must suit the
     /// level's internal format (`INVALID_OPERATION`).
+    #[allow(clippy::too_many_arguments)] // WebGL2's own argument list
     pub fn tex_sub_image_2d(
         &mut self,
         target: u32,
@@ -358,6 +361,7 @@ impl Context {
     }
 
     /// Replaces a box of a level of a 3D or 2D array texture (`texSubImage3D`).
+    #[allow(clippy::too_many_arguments)] // WebGL2's own argument list
     pub fn tex_sub_image_3d(
         &mut self,
         target: u32,
