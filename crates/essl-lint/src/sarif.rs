@@ -168,7 +168,7 @@ mod tests {
     fn a_log_of_two_files() {
         let a = SourceFile::new("shaders/a b.frag", "float x = acos(d);\n");
         let b = SourceFile::new("b.frag", "é = 1\n");
-        let da = vec![Diagnostic::warning(
+        let da = vec![Diagnostic::rule_warning(
             "acos-domain",
             "`acos` argument can be outside [-1, 1]",
             Span::new(15, 16),
@@ -181,7 +181,7 @@ mod tests {
             "clamp(d, -1.0, 1.0)",
         ))];
         let db = vec![Diagnostic::error(
-            "missing-semicolon",
+            essl::diagnostic_code::Code::MissingSemicolon,
             "expected `;`",
             Span::new(6, 6),
         )];

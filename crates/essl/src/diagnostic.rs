@@ -1,6 +1,7 @@
 //! One diagnostic type for every output: codespan for people, JSON and SARIF for tools, and
 //! WebGL's `ERROR: 0:LINE: 'token' : message` info log for the program API.
 
+use crate::diagnostic_code::Code;
 use crate::source::{SourceFile, Span};
 
 /// How serious a diagnostic is.
@@ -86,17 +87,24 @@ pub struct Diagnostic {
 }
 
 impl Diagnostic {
-    /// A new error.
-    pub fn error(code: &'static str, message: impl Into<String>, span: Span) -> Diagnostic {
-        Diagnostic::new(Severity::Error, code, message, span)
+    /// A new error of the front end.
+    pub fn error(code: Code, message: impl Into<String>, span: Span) -> Diagnostic {
+        Diagnostic::new(Severity::Error, code.as_str(), message, span)
     }
 
-    /// A new warning.
-    pub fn warning(code: &'static str, message: impl Into<String>, span: Span) -> Diagnostic {
-        Diagnostic::new(Severity::Warning, code, message, span)
+    /// A new warning of the front end.
+    pub fn warning(code: Code, message: impl Into<String>, span: Span) -> Diagnostic {
+        Diagnostic::new(Severity::Warning, code.as_str(), message, span)
     }
 
-    /// A new diagnostic.
+    /// A new warning of a rule another crate defines (essl-lint's numerical-hazard rules),
+    /// under the rule's id.
+    pub fn rule_warning(id: &'static str, message: impl Into<String>, span: Span) -> Diagnostic {
+        Diagnostic::new(Severity::Warning, id, message, span)
+    }
+
+    /// A new diagnostic with any code: a front-end [`Code`]'s name, or the id of a rule that
+    /// another crate defines (essl-lint's numerical-hazard rules).
     pub fn new(
         severity: Severity,
         code: &'static str,
@@ -322,11 +330,13 @@ pub fn sort(diagnostics: &mut [Diagnostic]) {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::diagnostic::Severity;
+    use crate::diagnostic_code::Code;
 
     #[test]
     fn help_shows_the_fixed_line() {
         let file = SourceFile::new("a.frag", "uniform float x\nfloat y;");
-        let d = Diagnostic::error("missing-semicolon", "expected `;`", Span::empty(15))
+        let d = Diagnostic::error(Code::MissingSemicolon, "expected `;`", Span::empty(15))
             .with_fix(Fix::certain("insert `;`", Span::empty(15), ";"));
         assert_eq!(
             d.help_text(&file).unwrap(),
@@ -337,23 +347,21 @@ mod tests {
     #[test]
     fn applies_non_overlapping_certain_fixes() {
         let text = "a b c";
-        let ds = vec![
-            Diagnostic::error("x", "", Span::new(0, 1)).with_fix(Fix::certain(
-                "",
-                Span::new(0, 1),
-                "A",
-            )),
-            Diagnostic::error("x", "", Span::new(0, 1)).with_fix(Fix::certain(
-                "",
-                Span::new(0, 1),
-                "Z",
-            )),
-            Diagnostic::error("x", "", Span::new(4, 5)).with_fix(Fix::suggested(
-                "",
-                Span::new(4, 5),
-                "C",
-            )),
-        ];
+        let ds =
+            vec![
+                Diagnostic::new(Severity::Error, "x", "", Span::new(0, 1)).with_fix(Fix::certain(
+                    "",
+                    Span::new(0, 1),
+                    "A",
+                )),
+                Diagnostic::new(Severity::Error, "x", "", Span::new(0, 1)).with_fix(Fix::certain(
+                    "",
+                    Span::new(0, 1),
+                    "Z",
+                )),
+                Diagnostic::new(Severity::Error, "x", "", Span::new(4, 5))
+                    .with_fix(Fix::suggested("", Span::new(4, 5), "C")),
+            ];
         assert_eq!(
             apply_fixes(text, &ds, Applicability::Certain),
             ("A b c".to_string(), 1)

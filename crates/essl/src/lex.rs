@@ -7,6 +7,7 @@
 //! one (harmless, but fixable). Other characters outside GLSL's character set become
 //! [`PpKind::Invalid`] tokens for the preprocessor to report where they are not skipped.
 
+use crate::diagnostic_code::Code;
 use std::sync::Arc;
 
 use crate::diagnostic::{Applicability, Diagnostic, Edit, Fix};
@@ -376,7 +377,7 @@ fn block_comment(
     if !closed {
         diagnostics.push(
             Diagnostic::error(
-                "unterminated-comment",
+                Code::UnterminatedComment,
                 "unterminated `/*` comment",
                 Span::new(start as u32, start as u32 + 2),
             )
@@ -637,7 +638,7 @@ fn report_nbsp(file: &SourceFile, nbsp: &[(Span, bool)], diagnostics: &mut Vec<D
         let (mut d, what) = if in_code.is_empty() {
             (
                 Diagnostic::warning(
-                    "no-break-space",
+                    Code::NoBreakSpace,
                     "no-break space (U+00A0) in a comment",
                     primary,
                 ),
@@ -646,7 +647,7 @@ fn report_nbsp(file: &SourceFile, nbsp: &[(Span, bool)], diagnostics: &mut Vec<D
         } else {
             (
                 Diagnostic::error(
-                    "no-break-space",
+                    Code::NoBreakSpace,
                     "no-break space (U+00A0) is not allowed in GLSL ES source",
                     primary,
                 ),

@@ -235,6 +235,8 @@ pub fn webgl_info_log(file: &SourceFile, diagnostics: &[Diagnostic]) -> String {
 mod tests {
     use super::*;
     use crate::diagnostic::Fix;
+    use crate::diagnostic::Severity;
+    use crate::diagnostic_code::Code;
 
     fn file() -> SourceFile {
         SourceFile::new(
@@ -248,14 +250,15 @@ mod tests {
         let y = file.text().find("y;").unwrap() as u32;
         vec![
             Diagnostic::error(
-                "missing-semicolon",
+                Code::MissingSemicolon,
                 "expected `;` after the declaration",
                 Span::empty(semi),
             )
             .with_label("`;` goes here")
             .with_fix(Fix::certain("insert `;`", Span::empty(semi), ";"))
             .with_token("uniform"),
-            Diagnostic::error(
+            Diagnostic::new(
+                Severity::Error,
                 "undeclared-identifier",
                 "undeclared identifier `y`",
                 Span::new(y, y + 1),
@@ -297,8 +300,13 @@ mod tests {
     #[test]
     fn empty_span_at_end_of_text_shows_a_caret() {
         let file = SourceFile::new("a.frag", "void main() {");
-        let d = Diagnostic::error("unexpected-eof", "unexpected end of file", Span::empty(13))
-            .with_label("expected `}`");
+        let d = Diagnostic::new(
+            Severity::Error,
+            "unexpected-eof",
+            "unexpected end of file",
+            Span::empty(13),
+        )
+        .with_label("expected `}`");
         let out = human_string(&file, &[d]);
         assert!(out.contains("a.frag:1:14"), "{out}");
         assert!(out.contains('^'), "{out}");
@@ -307,7 +315,7 @@ mod tests {
     #[test]
     fn out_of_range_spans_do_not_panic() {
         let file = SourceFile::new("a.frag", "é");
-        let d = Diagnostic::error("x", "m", Span::new(1, 99));
+        let d = Diagnostic::new(Severity::Error, "x", "m", Span::new(1, 99));
         let _ = human_string(&file, std::slice::from_ref(&d));
         let _ = to_json(&file, &d);
         assert_eq!(webgl_info_log(&file, &[d]), "ERROR: 0:1: '' : m\n");
@@ -359,7 +367,10 @@ mod tests {
     #[test]
     fn json_help_is_null_without_help() {
         let file = file();
-        let v = to_json(&file, &Diagnostic::warning("w", "m", Span::new(0, 1)));
+        let v = to_json(
+            &file,
+            &Diagnostic::new(Severity::Warning, "w", "m", Span::new(0, 1)),
+        );
         assert_eq!(v["help"], Value::Null);
         assert_eq!(v["severity"], "warning");
         assert!(v.get("fix").is_none());
@@ -370,7 +381,9 @@ mod tests {
         let file = file();
         let mut ds = diagnostics(&file);
         ds.reverse();
-        ds.push(Diagnostic::warning("w", "a warning", Span::new(0, 1)).with_token("#"));
+        ds.push(
+            Diagnostic::new(Severity::Warning, "w", "a warning", Span::new(0, 1)).with_token("#"),
+        );
         assert_eq!(
             webgl_info_log(&file, &ds),
             "WARNING: 0:1: '#' : a warning\n\

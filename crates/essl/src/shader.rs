@@ -1,6 +1,7 @@
 //! Compiling one shader: the whole front-end pipeline from text to a checked module.
 
 use crate::diagnostic::{self, Diagnostic, MAX_DIAGNOSTICS};
+use crate::diagnostic_code::Code;
 use crate::hir;
 use crate::preprocess::{self, PreprocessOptions, Version};
 use crate::source::SourceFile;
@@ -118,9 +119,9 @@ fn cap_diagnostics(diagnostics: &mut Vec<Diagnostic>) {
         dropped.len()
     );
     let d = if errors > 0 {
-        Diagnostic::error("too-many-diagnostics", message, at)
+        Diagnostic::error(Code::TooManyDiagnostics, message, at)
     } else {
-        Diagnostic::warning("too-many-diagnostics", message, at)
+        Diagnostic::warning(Code::TooManyDiagnostics, message, at)
     };
     diagnostics.push(
         d.with_label("the rest start here")
@@ -133,11 +134,11 @@ fn cap_diagnostics(diagnostics: &mut Vec<Diagnostic>) {
 pub(crate) fn lowering_diagnostic(e: &crate::lower::LowerError) -> Diagnostic {
     let (code, help) = match e {
         crate::lower::LowerError::Unsupported { .. } => (
-            "unsupported",
+            Code::Unsupported,
             "this is valid GLSL ES 3.00 that essl cannot translate yet",
         ),
         crate::lower::LowerError::Invalid { .. } => (
-            "internal-error",
+            Code::InternalError,
             "this is a bug in essl: please report it with the shader",
         ),
     };

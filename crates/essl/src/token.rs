@@ -1,6 +1,7 @@
 //! Parser tokens: preprocessing tokens classified into keywords, reserved words, identifiers and
 //! literals (with GLSL ES 3.00's rules for number syntax).
 
+use crate::diagnostic_code::Code;
 use std::sync::Arc;
 
 use crate::diagnostic::{Diagnostic, Fix};
@@ -222,9 +223,13 @@ pub fn number(text: &str, span: Span, diagnostics: &mut Vec<Diagnostic>) -> Tok 
     let bad = |diagnostics: &mut Vec<Diagnostic>, why: &str| {
         crate::diagnostic::push_capped(
             diagnostics,
-            Diagnostic::error("invalid-number", format!("invalid number `{text}`"), span)
-                .with_label(why.to_string())
-                .with_token(text),
+            Diagnostic::error(
+                Code::InvalidNumber,
+                format!("invalid number `{text}`"),
+                span,
+            )
+            .with_label(why.to_string())
+            .with_token(text),
         );
         Tok::Error
     };
@@ -257,7 +262,7 @@ pub fn number(text: &str, span: Span, diagnostics: &mut Vec<Diagnostic>) -> Tok 
             crate::diagnostic::push_capped(
                 diagnostics,
                 Diagnostic::warning(
-                    "float-literal-overflow",
+                    Code::FloatLiteralOverflow,
                     format!("`{text}` is too large for a 32-bit float and becomes infinity"),
                     span,
                 )
@@ -280,7 +285,7 @@ pub fn number(text: &str, span: Span, diagnostics: &mut Vec<Diagnostic>) -> Tok 
     if digits.len() > 1 && digits.starts_with('0') {
         if !digits.bytes().all(|b| (b'0'..=b'7').contains(&b)) {
             let d = Diagnostic::error(
-                "invalid-number",
+                Code::InvalidNumber,
                 format!("invalid digit in octal literal `{text}`"),
                 span,
             )
@@ -321,7 +326,7 @@ fn int_value(
             crate::diagnostic::push_capped(
                 diagnostics,
                 Diagnostic::error(
-                    "integer-overflow",
+                    Code::IntegerOverflow,
                     format!("integer literal `{text}` does not fit in 32 bits"),
                     span,
                 )

@@ -97,7 +97,7 @@ fn frag(body: &str) -> String {
 fn annotations_mark_spans_and_empty_spans() {
     let src = "  float x = 1\n";
     let d = Diagnostic::error(
-        "missing-semicolon",
+        essl::diagnostic_code::Code::MissingSemicolon,
         "expected `;`",
         essl::source::Span::empty(13),
     );
@@ -105,7 +105,7 @@ fn annotations_mark_spans_and_empty_spans() {
         annotate(src, &[d]),
         "  float x = 1\n           //| error missing-semicolon: expected `;`\n"
     );
-    let d = Diagnostic::warning("w", "m", essl::source::Span::new(8, 9));
+    let d = Diagnostic::rule_warning("w", "m", essl::source::Span::new(8, 9));
     assert_eq!(
         annotate(src, &[d]),
         "  float x = 1\n      //^ warning w: m\n"

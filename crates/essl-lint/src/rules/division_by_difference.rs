@@ -94,7 +94,7 @@ fn check(cx: &Cx, out: &mut Vec<Diagnostic>) {
                 continue;
             }
             let what = cx.what(f, id, d);
-            let mut diag = Diagnostic::warning(
+            let mut diag = Diagnostic::rule_warning(
                 DivisionByDifference::RULE.id,
                 "division by a difference of uniforms that can be zero",
                 span,

@@ -51,7 +51,7 @@ pub(super) fn check(cx: &Cx, out: &mut Vec<Diagnostic>, which: Mf, rule: &Rule) 
             } else {
                 format!("{what} can be outside [-1, 1]: {}", describe(i))
             };
-            let mut d = Diagnostic::warning(
+            let mut d = Diagnostic::rule_warning(
                 rule.id,
                 format!(
                     "`{name}` argument can be outside [-1, 1], where `{name}` is undefined (NaN)"

@@ -131,7 +131,7 @@ fn check(cx: &Cx, out: &mut Vec<Diagnostic>) {
             let peak = if up { r.hi } else { r.lo };
             let p = cx.prec.at(span).map(|p| p.name()).unwrap_or("mediump");
             out.push(
-                Diagnostic::warning(MediumpOverflow::RULE.id, format!("`{p}` result can overflow 65504 for ordinary values"), span)
+                Diagnostic::rule_warning(MediumpOverflow::RULE.id, format!("`{p}` result can overflow 65504 for ordinary values"), span)
                     .with_label(format!("computed in `{p}`: reaches {} with inputs of magnitude {}", fmt_num(peak), fmt_num(TYPICAL)))
                     .with_note("mediump and lowp are 16-bit floats on many mobile GPUs: the largest finite value is 65504")
                     .with_help("compute it in `highp`, or rescale the operands"),
@@ -327,7 +327,7 @@ fn underflow(cx: &Cx, f: &Function, id: usize, h: Handle<E>, e: &E, out: &mut Ve
     let span = cx.span(f, x);
     let p = cx.prec.at(span).map(|p| p.name()).unwrap_or("mediump");
     out.push(
-        Diagnostic::warning(MediumpOverflow::RULE.id, format!("`{p}` value kept above 0 by less than 6.1e-5 can underflow to 0"), span)
+        Diagnostic::rule_warning(MediumpOverflow::RULE.id, format!("`{p}` value kept above 0 by less than 6.1e-5 can underflow to 0"), span)
             .with_label(format!("as small as {} in `{p}`, below the smallest normal 16-bit float", fmt_num(m)))
             .with_note("mediump and lowp are 16-bit floats on many mobile GPUs: values below 6.1e-5 may flush to 0")
             .with_help("use a guard of at least 1e-4, or compute it in `highp`"),

@@ -103,7 +103,7 @@ fn check(cx: &Cx, out: &mut Vec<Diagnostic>) {
                 format!("{what} is the zero vector")
             };
             out.push(
-                Diagnostic::warning(
+                Diagnostic::rule_warning(
                     NormalizeZero::RULE.id,
                     "`normalize` of a vector that can be zero, which gives NaN",
                     span,

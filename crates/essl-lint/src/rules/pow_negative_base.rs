@@ -89,7 +89,7 @@ fn check_negative(cx: &Cx, out: &mut Vec<Diagnostic>) {
             } else {
                 format!("{what} can be negative")
             };
-            let d = Diagnostic::warning(
+            let d = Diagnostic::rule_warning(
                 PowNegativeBase::RULE.id,
                 "`pow` base can be negative, where `pow` is undefined (NaN on many GPUs)",
                 bspan,

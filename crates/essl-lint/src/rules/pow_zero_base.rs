@@ -86,7 +86,7 @@ fn check_zero(cx: &Cx, out: &mut Vec<Diagnostic>) {
             }
             let bspan = cx.span(f, base);
             let xspan = cx.span(f, exp);
-            let mut d = Diagnostic::warning(
+            let mut d = Diagnostic::rule_warning(
                 PowZeroBase::RULE.id,
                 "`pow` base can be 0 while the exponent can be ≤ 0, where `pow` is undefined",
                 bspan,

@@ -94,7 +94,7 @@ fn check(cx: &Cx, out: &mut Vec<Diagnostic>) {
                 } else {
                     "`smoothstep` edges are swapped (edge0 > edge1), where `smoothstep` is undefined"
                 };
-                let mut d = Diagnostic::warning(SmoothstepEdges::RULE.id, msg, span)
+                let mut d = Diagnostic::rule_warning(SmoothstepEdges::RULE.id, msg, span)
                     .with_label(if pairs.len() == 1 {
                         format!(
                             "edge0 = {}, edge1 = {}",
@@ -141,7 +141,7 @@ fn check(cx: &Cx, out: &mut Vec<Diagnostic>) {
             }
             let low = cx.prec.is_low(span) || cx.prec.is_low(s0) || cx.prec.is_low(s1);
             let eps = if low { "1e-3" } else { "1e-4" };
-            let mut d = Diagnostic::warning(SmoothstepEdges::RULE.id, "`smoothstep` edges come from uniforms and can be equal or swapped, where `smoothstep` is undefined", span)
+            let mut d = Diagnostic::rule_warning(SmoothstepEdges::RULE.id, "`smoothstep` edges come from uniforms and can be equal or swapped, where `smoothstep` is undefined", span)
                 .with_label("undefined when edge0 >= edge1")
                 .with_note("GLSL ES 3.00 §8.3: smoothstep is undefined if edge0 >= edge1")
                 .with_help(format!("keep edge1 above edge0, e.g. `max(edge1, edge0 + {eps})`"));

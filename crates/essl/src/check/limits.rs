@@ -11,6 +11,7 @@
 //!
 //! Vertex inputs, fragment outputs and uniforms are not private.
 
+use crate::diagnostic_code::Code;
 use crate::source::Span;
 use crate::types::{StructDef, Type};
 
@@ -99,7 +100,7 @@ impl Checker<'_> {
         let bytes = std140_bytes(ty, &self.structs);
         if bytes >= MAX_VARIABLE_BYTES {
             let d = self.error(
-                "variable-too-large",
+                Code::VariableTooLarge,
                 span,
                 format!(
                     "`{name}` takes {} laid out as a std140 block member, and WebGL \
@@ -122,7 +123,7 @@ impl Checker<'_> {
         let bytes = packed_bytes(ty, &self.structs);
         if bytes >= MAX_PRIVATE_BYTES {
             let d = self.error(
-                "private-variable-too-large",
+                Code::PrivateVariableTooLarge,
                 span,
                 format!(
                     "`{name}` takes {}, and WebGL implementations allow less than {} for a \
@@ -141,7 +142,7 @@ impl Checker<'_> {
         self.private_bytes = before.saturating_add(bytes);
         if before <= MAX_TOTAL_PRIVATE_BYTES && self.private_bytes > MAX_TOTAL_PRIVATE_BYTES {
             let d = self.error(
-                "private-variables-too-large",
+                Code::PrivateVariablesTooLarge,
                 span,
                 format!(
                     "with `{name}`, the shader's locals, globals, constants, parameters and \

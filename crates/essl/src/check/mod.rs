@@ -11,6 +11,7 @@ pub mod fold;
 mod limits;
 mod stmt;
 
+use crate::diagnostic_code::Code;
 use std::collections::HashMap;
 use std::sync::Arc;
 
@@ -165,28 +166,23 @@ impl<'a> Checker<'a> {
             truncated: false,
             ended: Vec::new(),
             private_bytes: 0,
-            dropped: Diagnostic::warning("dropped", "", Span::default()),
+            dropped: Diagnostic::new(
+                crate::diagnostic::Severity::Warning,
+                "dropped",
+                "",
+                Span::default(),
+            ),
         }
     }
 
     // ----- diagnostics -----
 
-    fn error(
-        &mut self,
-        code: &'static str,
-        span: Span,
-        message: impl Into<String>,
-    ) -> &mut Diagnostic {
+    fn error(&mut self, code: Code, span: Span, message: impl Into<String>) -> &mut Diagnostic {
         let token = self.file.slice(span).to_string();
         self.keep(Diagnostic::error(code, message, span).with_token(token))
     }
 
-    fn warning(
-        &mut self,
-        code: &'static str,
-        span: Span,
-        message: impl Into<String>,
-    ) -> &mut Diagnostic {
+    fn warning(&mut self, code: Code, span: Span, message: impl Into<String>) -> &mut Diagnostic {
         let token = self.file.slice(span).to_string();
         self.keep(Diagnostic::warning(code, message, span).with_token(token))
     }
@@ -244,7 +240,7 @@ impl<'a> Checker<'a> {
                 Sym::Var(_) => "a variable",
             };
             let d = self.error(
-                "redefinition",
+                Code::Redefinition,
                 name.span,
                 format!("`{}` is already declared in this scope", name.name),
             );
@@ -272,7 +268,7 @@ impl<'a> Checker<'a> {
                 "_webgl_"
             };
             let d = self.error(
-                "reserved-name",
+                Code::ReservedName,
                 name.span,
                 format!("`{n}` starts with `{prefix}`, which is reserved for built-in names"),
             );
@@ -280,7 +276,7 @@ impl<'a> Checker<'a> {
             d.help = Some(format!("rename it without the `{prefix}` prefix"));
         } else if n.contains("__") {
             let d = self.error(
-                "reserved-name",
+                Code::ReservedName,
                 name.span,
                 format!("`{n}` contains `__`, which is reserved in GLSL ES 3.00"),
             );
@@ -327,7 +323,7 @@ impl<'a> Checker<'a> {
     ) -> Option<Precision> {
         if declared.is_some() && is_bool(ty) {
             let d = self.error(
-                "invalid-precision",
+                Code::InvalidPrecision,
                 span,
                 "`bool` takes no precision qualifier",
             );
@@ -352,7 +348,7 @@ impl<'a> Checker<'a> {
         };
         let insert_at = self.precision_insert_point();
         let d = self.error(
-            "missing-precision",
+            Code::MissingPrecision,
             span,
             format!("no precision specified for `{what}`"),
         );
@@ -403,7 +399,7 @@ impl<'a> Checker<'a> {
                 Some(Sym::Struct(s)) => Type::Struct(*s),
                 _ => {
                     let d = self.error(
-                        "unknown-type",
+                        Code::UnknownType,
                         id.span,
                         format!("`{}` is not a type", id.name),
                     );
@@ -422,7 +418,7 @@ impl<'a> Checker<'a> {
     fn array_of(&mut self, base: Type, size: &ast::ArraySize, span: Span) -> Option<Type> {
         if base.is_array() {
             let d = self.error(
-                "array-of-arrays",
+                Code::ArrayOfArrays,
                 size.span,
                 "arrays of arrays are not allowed in GLSL ES 3.00",
             );
@@ -430,7 +426,7 @@ impl<'a> Checker<'a> {
             return None;
         }
         if base == Type::Void {
-            let d = self.error("void-array", span, "`void` cannot be an array element");
+            let d = self.error(Code::VoidArray, span, "`void` cannot be an array element");
             d.label = "an array of `void`".into();
             return None;
         }
@@ -449,7 +445,7 @@ impl<'a> Checker<'a> {
         }
         let Some(c) = checked.as_const() else {
             let d = self.error(
-                "non-constant-array-size",
+                Code::NonConstantArraySize,
                 e.span,
                 "array size must be a constant integral expression",
             );
@@ -464,7 +460,7 @@ impl<'a> Checker<'a> {
             _ => {
                 let ty = self.type_name(&checked.ty);
                 let d = self.error(
-                    "array-size-type",
+                    Code::ArraySizeType,
                     e.span,
                     format!("array size must be an `int` or `uint`, not {ty}"),
                 );
@@ -474,7 +470,7 @@ impl<'a> Checker<'a> {
         };
         if value <= 0 {
             let d = self.error(
-                "array-size",
+                Code::ArraySize,
                 e.span,
                 format!("array size must be greater than zero, not {value}"),
             );
@@ -495,7 +491,7 @@ impl<'a> Checker<'a> {
             for (q, s) in &fty.qualifiers {
                 if !matches!(q, ast::Qualifier::Precision(_)) {
                     let d = self.error(
-                        "struct-member-qualifier",
+                        Code::StructMemberQualifier,
                         *s,
                         "struct members may only have a precision qualifier",
                     );
@@ -504,7 +500,7 @@ impl<'a> Checker<'a> {
             }
             if let ast::TypeName::Struct(inner) = &fty.spec.name {
                 let d = self.error(
-                    "embedded-struct",
+                    Code::EmbeddedStruct,
                     inner.span,
                     "structs cannot be defined inside a struct in GLSL ES 3.00",
                 );
@@ -528,7 +524,7 @@ impl<'a> Checker<'a> {
                 };
                 if let Type::Array(_, 0) = ty {
                     let d = self.error(
-                        "unsized-array",
+                        Code::UnsizedArray,
                         name.span,
                         "struct members must have a size",
                     );
@@ -537,7 +533,7 @@ impl<'a> Checker<'a> {
                 }
                 if ty == Type::Void {
                     let d = self.error(
-                        "void-variable",
+                        Code::VoidVariable,
                         name.span,
                         "a struct member cannot be `void`",
                     );
@@ -548,7 +544,7 @@ impl<'a> Checker<'a> {
                 self.check_name(name);
                 if members.iter().any(|mm| *mm.name == *name.name) {
                     let d = self.error(
-                        "redefinition",
+                        Code::Redefinition,
                         name.span,
                         format!("struct member `{}` is declared twice", name.name),
                     );
@@ -565,7 +561,7 @@ impl<'a> Checker<'a> {
         }
         if members.is_empty() && ok {
             let d = self.error(
-                "empty-struct",
+                Code::EmptyStruct,
                 decl.span,
                 "a struct must have at least one member",
             );
@@ -629,14 +625,18 @@ impl<'a> Checker<'a> {
             None if self.truncated => {}
             None => {
                 let at = Span::empty(self.file.text().len() as u32);
-                let d = self.error("missing-main", at, "the shader has no `main` function");
+                let d = self.error(Code::MissingMain, at, "the shader has no `main` function");
                 d.label = "`void main() { … }` expected".into();
                 d.token = String::new();
                 d.help = Some("add `void main() { … }`".into());
             }
             Some(f) if !self.fn_defined[f] => {
                 let span = self.functions[f].span;
-                let d = self.error("missing-main", span, "`main` is declared but never defined");
+                let d = self.error(
+                    Code::MissingMain,
+                    span,
+                    "`main` is declared but never defined",
+                );
                 d.label = "declared here without a body".into();
             }
             _ => {}
@@ -678,7 +678,7 @@ impl<'a> Checker<'a> {
                             } else {
                                 format!("recursive call chain: {}", chain.join(" → "))
                             };
-                            let d = self.error("recursion", span, msg);
+                            let d = self.error(Code::Recursion, span, msg);
                             d.label = "part of a recursive call chain".into();
                             d.notes.push("GLSL ES 3.00 forbids recursion, even in functions that are never called".into());
                         }
@@ -701,7 +701,7 @@ impl<'a> Checker<'a> {
                 let span = self.globals[g].span;
                 let name = self.globals[g].name.clone();
                 let d = self.error(
-                    "output-location-required",
+                    Code::OutputLocationRequired,
                     span,
                     format!("fragment output `{name}` needs a `layout(location = N)`"),
                 );
@@ -724,7 +724,7 @@ impl<'a> Checker<'a> {
                     let other_name = self.globals[*other].name.clone();
                     let span = self.globals[g].span;
                     let d = self.error(
-                        "output-location-overlap",
+                        Code::OutputLocationOverlap,
                         span,
                         format!("fragment output location {l} is already used by `{other_name}`"),
                     );

@@ -3,6 +3,7 @@
 use super::{Checker, Sym, Var};
 use crate::ast;
 use crate::diagnostic::Fix;
+use crate::diagnostic_code::Code;
 use crate::hir::{self, Cond, StmtKind};
 use crate::types::{ScalarKind, Type};
 use crate::Stage;
@@ -43,7 +44,7 @@ impl Checker<'_> {
         if !super::expr::is_error(&c) && c.ty != Type::BOOL {
             let ty = self.type_name(&c.ty);
             let d = self.error(
-                "type-mismatch",
+                Code::TypeMismatch,
                 c.span,
                 format!("{what} must be a `bool`, not {ty}"),
             );
@@ -65,7 +66,7 @@ impl Checker<'_> {
                 if ty != Type::BOOL && ty != Type::Void {
                     let t = self.type_name(&ty);
                     let d = self.error(
-                        "type-mismatch",
+                        Code::TypeMismatch,
                         fty.spec.span,
                         format!("a loop condition must be a `bool`, not {t}"),
                     );
@@ -73,7 +74,7 @@ impl Checker<'_> {
                 } else if !super::expr::is_error(&init) && init.ty != ty {
                     let (want, got) = (self.type_name(&ty), self.type_name(&init.ty));
                     let d = self.error(
-                        "type-mismatch",
+                        Code::TypeMismatch,
                         init.span,
                         format!("cannot initialize a {want} with a {got}"),
                     );
@@ -167,7 +168,7 @@ impl Checker<'_> {
             ast::StmtKind::Switch(sel, body) => self.switch(sel, body, span),
             ast::StmtKind::Case(e) => {
                 let d = self.error(
-                    "case-outside-switch",
+                    Code::CaseOutsideSwitch,
                     span,
                     "`case` label outside a `switch`",
                 );
@@ -177,7 +178,7 @@ impl Checker<'_> {
             }
             ast::StmtKind::Default => {
                 let d = self.error(
-                    "case-outside-switch",
+                    Code::CaseOutsideSwitch,
                     span,
                     "`default` label outside a `switch`",
                 );
@@ -186,7 +187,8 @@ impl Checker<'_> {
             }
             ast::StmtKind::Continue => {
                 if self.fctx_mut().loops == 0 {
-                    let d = self.error("continue-outside-loop", span, "`continue` outside a loop");
+                    let d =
+                        self.error(Code::ContinueOutsideLoop, span, "`continue` outside a loop");
                     d.label = "no loop to continue".into();
                     return;
                 }
@@ -196,7 +198,7 @@ impl Checker<'_> {
                 let f = self.fctx_mut();
                 if f.loops == 0 && f.switches == 0 {
                     let d = self.error(
-                        "break-outside-loop",
+                        Code::BreakOutsideLoop,
                         span,
                         "`break` outside a loop or `switch`",
                     );
@@ -209,7 +211,7 @@ impl Checker<'_> {
             ast::StmtKind::Discard => {
                 if self.stage != Stage::Fragment {
                     let d = self.error(
-                        "discard-in-vertex",
+                        Code::DiscardInVertex,
                         span,
                         "`discard` is only allowed in fragment shaders",
                     );
@@ -237,7 +239,7 @@ impl Checker<'_> {
                 if ret != Type::Void {
                     let t = self.type_name(&ret);
                     let d = self.error(
-                        "missing-return-value",
+                        Code::MissingReturnValue,
                         span,
                         format!("this function must return a {t}"),
                     );
@@ -253,7 +255,7 @@ impl Checker<'_> {
                 }
                 if ret == Type::Void {
                     let d = self.error(
-                        "return-value-in-void",
+                        Code::ReturnValueInVoid,
                         v.span,
                         "a `void` function cannot return a value",
                     );
@@ -265,7 +267,7 @@ impl Checker<'_> {
                     let (want, got) = (self.type_name(&ret), self.type_name(&v.ty));
                     let fix = super::expr::conversion_fix(self.file, &v, &ret);
                     let d = self.error(
-                        "type-mismatch",
+                        Code::TypeMismatch,
                         v.span,
                         format!("this function returns {want}, not {got}"),
                     );
@@ -293,7 +295,7 @@ impl Checker<'_> {
         if !super::expr::is_error(&selector) && sel_ty != Type::INT && sel_ty != Type::UINT {
             let t = self.type_name(&sel_ty);
             let d = self.error(
-                "type-mismatch",
+                Code::TypeMismatch,
                 selector.span,
                 format!("a `switch` selector must be an `int` or `uint`, not {t}"),
             );
@@ -312,8 +314,11 @@ impl Checker<'_> {
                 }
                 ast::StmtKind::Default => {
                     if let Some(prev) = seen_default {
-                        let d =
-                            self.error("duplicate-case", s.span, "more than one `default` label");
+                        let d = self.error(
+                            Code::DuplicateCase,
+                            s.span,
+                            "more than one `default` label",
+                        );
                         d.label = "second `default`".into();
                         d.secondary.push(crate::diagnostic::Label {
                             span: prev,
@@ -331,7 +336,7 @@ impl Checker<'_> {
                         None => {
                             if !matches!(s.kind, ast::StmtKind::Empty | ast::StmtKind::Error) {
                                 let d = self.error(
-                                    "statement-before-case",
+                                    Code::StatementBeforeCase,
                                     s.span,
                                     "statements in a `switch` must come after a `case` or `default` label",
                                 );
@@ -373,7 +378,7 @@ impl Checker<'_> {
             if v.ty != *sel_ty && (*sel_ty == Type::INT || *sel_ty == Type::UINT) {
                 let (a, b) = (self.type_name(&v.ty), self.type_name(sel_ty));
                 let d = self.error(
-                    "type-mismatch",
+                    Code::TypeMismatch,
                     v.span,
                     format!("`case` label is {a} but the selector is {b}"),
                 );
@@ -382,7 +387,7 @@ impl Checker<'_> {
             Some(c)
         } else {
             let d = self.error(
-                "non-constant-case",
+                Code::NonConstantCase,
                 v.span,
                 "a `case` label must be a constant integer expression",
             );
@@ -392,7 +397,7 @@ impl Checker<'_> {
         if let Some(c) = value {
             if let Some((_, prev)) = seen.iter().find(|(x, _)| *x == c) {
                 let prev = *prev;
-                let d = self.error("duplicate-case", span, format!("duplicate `case {c}`"));
+                let d = self.error(Code::DuplicateCase, span, format!("duplicate `case {c}`"));
                 d.label = "already handled".into();
                 d.secondary.push(crate::diagnostic::Label {
                     span: prev,
@@ -414,7 +419,7 @@ impl Checker<'_> {
         if last_stmt_is_label {
             let end = body.span.end.saturating_sub(1);
             let d = self.error(
-                "label-at-end-of-switch",
+                Code::LabelAtEndOfSwitch,
                 crate::source::Span::new(end, end + 1),
                 "no statement between the last `case` label and the end of the `switch`",
             );

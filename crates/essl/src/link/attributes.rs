@@ -4,6 +4,7 @@
 use super::{location_count, ActiveAttribute, Linker, MAX_VERTEX_ATTRIBS};
 use crate::builtins::BuiltinVar;
 use crate::diagnostic::Label;
+use crate::diagnostic_code::Code;
 use crate::hir::{GlobalId, GlobalKind};
 use crate::types::GlType;
 use crate::Stage;
@@ -27,7 +28,7 @@ impl Linker<'_> {
                 let d = self.error(
                     Some(Stage::Vertex),
                     span,
-                    "attribute-location-alias",
+                    Code::AttributeLocationAlias,
                     format!("attribute `{name}` overlaps `{other_name}` at location {l}"),
                     format!("Attribute '{name}' aliases attribute '{other_name}' at location {l}"),
                 );
@@ -90,7 +91,7 @@ impl Linker<'_> {
                     self.error(
                         Some(Stage::Vertex),
                         span,
-                        "too-many-attributes",
+                        Code::TooManyAttributes,
                         "no free attribute location".into(),
                         format!("Too many attributes ({name})"),
                     );
@@ -106,7 +107,7 @@ impl Linker<'_> {
             let d = self.error(
                 Some(Stage::Vertex),
                 span,
-                "too-many-attributes",
+                Code::TooManyAttributes,
                 format!("attribute `{name}` needs a location beyond the {MAX_VERTEX_ATTRIBS} WebGL2 guarantees"),
                 format!("Too many attributes ({name})"),
             );

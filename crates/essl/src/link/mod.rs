@@ -10,6 +10,7 @@ mod uniforms;
 mod varyings;
 
 use crate::diagnostic::Diagnostic;
+use crate::diagnostic_code::Code;
 use crate::hir::{GlobalId, GlobalKind, Module};
 use crate::reflect::UniformSource;
 use crate::source::Span;
@@ -256,7 +257,7 @@ impl Linker<'_> {
         &mut self,
         stage: Option<Stage>,
         span: Span,
-        code: &'static str,
+        code: Code,
         message: String,
         log_line: String,
     ) -> &mut Diagnostic {
@@ -274,7 +275,7 @@ impl Linker<'_> {
         &mut self,
         stage: Option<Stage>,
         span: Span,
-        code: &'static str,
+        code: Code,
         message: String,
         log_line: String,
     ) -> &mut Diagnostic {

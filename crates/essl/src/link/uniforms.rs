@@ -1,6 +1,7 @@
 //! Uniforms: those declared in both stages must agree in type and precision (uniform blocks
 //! in members, layout and precision); the active list in ANGLE's order.
 
+use crate::diagnostic_code::Code;
 use std::collections::HashMap;
 
 use super::{field_names_differ, same_precision, same_type, static_uses, ActiveUniform, Linker};
@@ -54,7 +55,7 @@ impl Linker<'_> {
                 let d = self.error(
                     Some(Stage::Fragment),
                     fg.span,
-                    "uniform-type-mismatch",
+                    Code::UniformTypeMismatch,
                     format!("uniform `{name}` is `{vt}` in the vertex shader but `{ft}` here"),
                     line,
                 );
@@ -79,7 +80,7 @@ impl Linker<'_> {
                 let d = self.error(
                     Some(Stage::Fragment),
                     fg.span,
-                    "uniform-precision-mismatch",
+                    Code::UniformPrecisionMismatch,
                     format!("uniform `{name}` has different precisions in the two shaders"),
                     format!("Precisions of uniform '{name}' differ between VERTEX and FRAGMENT shaders."),
                 );
@@ -118,13 +119,13 @@ impl Linker<'_> {
                 .zip(&fb.members)
                 .any(|(a, b)| !same_precision(&a.1, a.2, &vm.structs, &b.1, b.2, &fm.structs));
             let (what, code) = if names_differ {
-                ("Field names", "block-member-mismatch")
+                ("Field names", Code::BlockMemberMismatch)
             } else if types_differ {
-                ("Types", "block-type-mismatch")
+                ("Types", Code::BlockTypeMismatch)
             } else if layout_differs {
-                ("Layout qualifiers", "block-layout-mismatch")
+                ("Layout qualifiers", Code::BlockLayoutMismatch)
             } else if precision_differs {
-                ("Precisions", "block-precision-mismatch")
+                ("Precisions", Code::BlockPrecisionMismatch)
             } else {
                 continue;
             };

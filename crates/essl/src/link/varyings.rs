@@ -1,6 +1,7 @@
 //! Varyings: each fragment input matched to a vertex output by name, type and interpolation,
 //! and the varyings packed into WebGL2's `MAX_VARYING_VECTORS`.
 
+use crate::diagnostic_code::Code;
 use std::collections::HashMap;
 
 use super::{location_count, same_type, static_uses, Linker, Varying, MAX_VARYING_VECTORS};
@@ -33,7 +34,7 @@ impl Linker<'_> {
                     let d = self.error(
                         Some(Stage::Fragment),
                         fg.span,
-                        "varying-not-written",
+                        Code::VaryingNotWritten,
                         format!("fragment input `{name}` has no matching vertex shader output"),
                         format!("FRAGMENT varying {name} does not match any VERTEX varying"),
                     );
@@ -63,7 +64,7 @@ impl Linker<'_> {
                     let d = self.error(
                         Some(Stage::Fragment),
                         fg.span,
-                        "varying-type-mismatch",
+                        Code::VaryingTypeMismatch,
                         msg,
                         line,
                     );
@@ -77,7 +78,7 @@ impl Linker<'_> {
                     let d = self.warning(
                         Some(Stage::Fragment),
                         fg.span,
-                        "varying-type-mismatch",
+                        Code::VaryingTypeMismatch,
                         msg,
                         line,
                     );
@@ -94,7 +95,7 @@ impl Linker<'_> {
                 let d = self.error(
                     Some(Stage::Fragment),
                     fg.span,
-                    "varying-interpolation-mismatch",
+                    Code::VaryingInterpolationMismatch,
                     msg,
                     line,
                 );
@@ -122,7 +123,7 @@ impl Linker<'_> {
             self.error(
                 None,
                 Span::default(),
-                "too-many-varyings",
+                Code::TooManyVaryings,
                 format!("the varyings need {next_location} vectors but WebGL2 guarantees {MAX_VARYING_VECTORS}"),
                 "Could not pack varying".into(),
             );

@@ -6,6 +6,7 @@ use super::types::{is_qualifier_kw, type_keyword};
 use super::{Failed, PResult, Parser};
 use crate::ast::*;
 use crate::diagnostic::{Diagnostic, Fix};
+use crate::diagnostic_code::Code;
 use crate::lex::Punct;
 use crate::source::Span;
 use crate::token::{Kw, Tok};
@@ -26,7 +27,7 @@ impl Parser<'_> {
                 let t = self.peek().clone();
                 self.report(
                     Diagnostic::error(
-                        "syntax-error",
+                        Code::SyntaxError,
                         format!("unexpected {}", Self::describe(&t)),
                         t.span,
                     )
@@ -44,7 +45,7 @@ impl Parser<'_> {
         if self.at(Punct::Semicolon) {
             let s = self.bump().span;
             self.report(
-                Diagnostic::error("syntax-error", "unexpected `;` at global scope", s)
+                Diagnostic::error(Code::SyntaxError, "unexpected `;` at global scope", s)
                     .with_label("an empty declaration")
                     .with_fix(Fix::certain("remove it", s, ""))
                     .with_token(";"),
@@ -55,7 +56,7 @@ impl Parser<'_> {
         if self.at(Punct::RightBrace) {
             let s = self.bump().span;
             self.report(
-                Diagnostic::error("syntax-error", "unmatched `}`", s)
+                Diagnostic::error(Code::SyntaxError, "unmatched `}`", s)
                     .with_label("no block to close here")
                     .with_token("}"),
             );
@@ -339,7 +340,7 @@ impl Parser<'_> {
         if let (Tok::Ident(_), Tok::P(Punct::LeftParen)) = (self.tok(), &self.peek_at(1).tok) {
             let name = self.ident("a function name")?;
             let d = Diagnostic::error(
-                "nested-function",
+                Code::NestedFunction,
                 format!(
                     "function `{}` is declared inside another function",
                     name.name

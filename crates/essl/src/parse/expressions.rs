@@ -6,6 +6,7 @@ use super::types::type_keyword;
 use super::{Failed, PResult, Parser};
 use crate::ast::*;
 use crate::diagnostic::Diagnostic;
+use crate::diagnostic_code::Code;
 use crate::lex::Punct;
 use crate::token::{Kw, Tok};
 
@@ -216,7 +217,7 @@ impl Parser<'_> {
                         };
                     } else if self.at(Punct::LeftParen) {
                         let d = Diagnostic::error(
-                            "method-call",
+                            Code::MethodCall,
                             format!(
                                 "`{}` is not a method: GLSL ES 3.00 has only `.length()`",
                                 name.name
@@ -328,7 +329,7 @@ impl Parser<'_> {
             }
             Tok::Kw(Kw::Struct) => {
                 let d = Diagnostic::error(
-                    "syntax-error",
+                    Code::SyntaxError,
                     "a struct cannot be defined inside an expression",
                     t.span,
                 )

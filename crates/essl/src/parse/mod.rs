@@ -9,6 +9,7 @@
 //! and recovery. The productions are methods on it, spread over the submodules by what they
 //! parse: `declarations`, `types`, `statements` and `expressions`.
 
+use crate::diagnostic_code::Code;
 use std::collections::HashSet;
 use std::sync::Arc;
 
@@ -194,7 +195,7 @@ impl<'a> Parser<'a> {
             return Failed;
         }
         let mut d = Diagnostic::error(
-            "syntax-error",
+            Code::SyntaxError,
             format!("expected {what}, found {}", Self::describe(&t)),
             t.span,
         )
@@ -244,7 +245,7 @@ impl<'a> Parser<'a> {
         if later_line {
             let at = prev.end_point();
             let d = Diagnostic::error(
-                "missing-semicolon",
+                Code::MissingSemicolon,
                 format!("expected `;` after {what}"),
                 at,
             )
@@ -266,7 +267,7 @@ impl<'a> Parser<'a> {
             return Ok(());
         }
         let d = Diagnostic::error(
-            "syntax-error",
+            Code::SyntaxError,
             format!("expected `;` after {what}, found {}", Self::describe(&next)),
             next.span,
         )
@@ -296,7 +297,7 @@ impl<'a> Parser<'a> {
         }
         let open_text = self.file.slice(open).to_string();
         let d = Diagnostic::error(
-            "syntax-error",
+            Code::SyntaxError,
             format!(
                 "expected `{}`, found {}",
                 close.as_str(),
@@ -331,7 +332,7 @@ impl<'a> Parser<'a> {
             }
             Tok::Kw(k) => {
                 let d = Diagnostic::error(
-                    "keyword-as-identifier",
+                    Code::KeywordAsIdentifier,
                     format!("`{}` is a keyword and cannot be used as {what}", k.as_str()),
                     t.span,
                 )
@@ -347,7 +348,7 @@ impl<'a> Parser<'a> {
 
     fn reserved_word(&mut self, name: &str, span: Span) {
         let mut d = Diagnostic::error(
-            "reserved-word",
+            Code::ReservedWord,
             format!("`{name}` is a reserved word in GLSL ES 3.00"),
             span,
         )
@@ -407,7 +408,7 @@ impl<'a> Parser<'a> {
                 let span = self.peek().span;
                 self.push_diag(
                     Diagnostic::error(
-                        "nesting-too-deep",
+                        Code::NestingTooDeep,
                         format!(
                             "expressions or statements nested more than {MAX_NESTING} levels deep"
                         ),

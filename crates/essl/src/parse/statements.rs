@@ -4,6 +4,7 @@
 use super::{Failed, PResult, Parser};
 use crate::ast::*;
 use crate::diagnostic::Diagnostic;
+use crate::diagnostic_code::Code;
 use crate::lex::Punct;
 use crate::token::{Kw, Tok};
 
@@ -28,7 +29,7 @@ impl Parser<'_> {
                 let t = self.bump();
                 self.report(
                     Diagnostic::error(
-                        "syntax-error",
+                        Code::SyntaxError,
                         format!("unexpected {}", Self::describe(&t)),
                         t.span,
                     )

@@ -1,6 +1,7 @@
 //! Types and qualifiers: the type keywords, type specifiers (with their array sizes),
 //! struct definitions and the qualifier list before a type.
 
+use crate::diagnostic_code::Code;
 use std::sync::Arc;
 
 use super::{Failed, PResult, Parser};
@@ -110,7 +111,7 @@ impl Parser<'_> {
                         _ => "out",
                     };
                     let d = Diagnostic::error(
-                        "es100-qualifier",
+                        Code::Es100Qualifier,
                         format!("`{name}` is GLSL ES 1.00 and is reserved in GLSL ES 3.00"),
                         t.span,
                     )
@@ -159,9 +160,10 @@ impl Parser<'_> {
                 })
             }
             Tok::Ident(name) => {
-                let d = Diagnostic::error("unknown-type", format!("unknown type `{name}`"), t.span)
-                    .with_label("not a type")
-                    .with_token(&**name);
+                let d =
+                    Diagnostic::error(Code::UnknownType, format!("unknown type `{name}`"), t.span)
+                        .with_label("not a type")
+                        .with_token(&**name);
                 let d = match &**name {
                     "sampler" | "texture2D" => d,
                     "half" | "double" => d.with_help("use `float`"),

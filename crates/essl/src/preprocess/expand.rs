@@ -8,6 +8,7 @@
 //! bounded ([`MAX_ARGUMENT_NESTING`]); the total number of tokens macros may produce is bounded
 //! too, so that no input expands without end.
 
+use crate::diagnostic_code::Code;
 use std::cell::Cell;
 use std::rc::Rc;
 use std::sync::Arc;
@@ -525,7 +526,7 @@ impl Pp<'_> {
         self.context_tokens_reported = true;
         self.push_diag(
             Diagnostic::error(
-                "macro-expansion-too-large",
+                Code::MacroExpansionTooLarge,
                 format!(
                     "expanding `{}` needs more than {MAX_CONTEXT_TOKENS} tokens at once",
                     m.name
@@ -551,7 +552,7 @@ impl Pp<'_> {
         self.budget_reported = true;
         self.push_diag(
             Diagnostic::error(
-                "macro-expansion-too-large",
+                Code::MacroExpansionTooLarge,
                 format!("macro expansion produces more than {} tokens", self.budget),
                 t.t.span,
             )
@@ -567,7 +568,7 @@ impl Pp<'_> {
     fn report_unterminated_call(&mut self, m: &Macro, name: &Tok, open: &Tok) {
         self.push_diag(
             Diagnostic::error(
-                "unterminated-macro-call",
+                Code::UnterminatedMacroCall,
                 format!("unterminated call of macro `{}`", m.name),
                 open.t.span,
             )
@@ -585,7 +586,7 @@ impl Pp<'_> {
         let n = params.len();
         let plural = |k: usize| if k == 1 { "argument" } else { "arguments" };
         let mut d = Diagnostic::error(
-            "macro-argument-count",
+            Code::MacroArgumentCount,
             format!(
                 "macro `{}` takes {n} {}, but {given} {} given",
                 m.name,
@@ -609,7 +610,7 @@ impl Pp<'_> {
         self.depth_reported = true;
         self.push_diag(
             Diagnostic::error(
-                "macro-nesting-too-deep",
+                Code::MacroNestingTooDeep,
                 format!(
                     "macro calls nested more than {MAX_ARGUMENT_NESTING} levels deep in arguments"
                 ),
@@ -627,7 +628,7 @@ impl Pp<'_> {
         if op.t.from_macro && !ex.failed {
             ex.failed = true;
             let mut d = Diagnostic::error(
-                "defined-from-macro",
+                Code::DefinedFromMacro,
                 "`defined` produced by a macro expansion",
                 op.t.span,
             )
@@ -658,7 +659,7 @@ impl Pp<'_> {
                 let found = super::describe(&t.t);
                 self.push_diag(
                     Diagnostic::error(
-                        "invalid-defined",
+                        Code::InvalidDefined,
                         format!("expected a macro name after `defined`, found {found}"),
                         if t.t.kind == PpKind::Eof {
                             op.t.span
@@ -685,7 +686,7 @@ impl Pp<'_> {
                     ex.failed = true;
                     self.push_diag(
                         Diagnostic::error(
-                            "invalid-defined",
+                            Code::InvalidDefined,
                             format!(
                                 "expected `)` after `defined({}`, found {}",
                                 t.t.text,

@@ -7,6 +7,7 @@
 //! one, may contain anything that parses.
 
 use crate::diagnostic::{Diagnostic, Fix};
+use crate::diagnostic_code::Code;
 use crate::lex::{PpKind, Punct};
 use crate::source::Span;
 
@@ -106,7 +107,7 @@ impl<'t> ExprParser<'t> {
             let t = self.peek();
             diags.push(
                 Diagnostic::error(
-                    "missing-expression",
+                    Code::MissingExpression,
                     format!("expected an expression after `{}`", self.directive),
                     t.t.span,
                 )
@@ -180,7 +181,7 @@ impl<'t> ExprParser<'t> {
                         self.invalid = true;
                         diags.push(
                             Diagnostic::error(
-                                "invalid-shift",
+                                Code::InvalidShift,
                                 format!(
                                     "shift by {b} in `{}`: the amount must be 0 to 31",
                                     self.directive
@@ -209,7 +210,7 @@ impl<'t> ExprParser<'t> {
                         self.invalid = true;
                         diags.push(
                             Diagnostic::error(
-                                "division-by-zero",
+                                Code::DivisionByZero,
                                 format!(
                                     "{} by zero in `{}`",
                                     if op == Slash { "division" } else { "remainder" },
@@ -257,7 +258,7 @@ impl<'t> ExprParser<'t> {
         let t = self.peek();
         diags.push(
             Diagnostic::error(
-                "expression-too-deep",
+                Code::ExpressionTooDeep,
                 format!(
                     "`{}` expression nested more than {MAX_DEPTH} levels deep",
                     self.directive
@@ -315,7 +316,7 @@ impl<'t> ExprParser<'t> {
         let name = &*t.t.text;
         let span = t.t.span;
         let mut d = Diagnostic::error(
-            "undefined-macro-in-if",
+            Code::UndefinedMacroInIf,
             format!("`{name}` is not a defined macro"),
             span,
         )
@@ -349,7 +350,7 @@ impl<'t> ExprParser<'t> {
     fn unclosed(&self, diags: &mut Vec<Diagnostic>, open: &Tok, close: &Tok) {
         diags.push(
             Diagnostic::error(
-                "invalid-expression",
+                Code::InvalidExpression,
                 format!(
                     "expected `)` in `{}` expression, found {}",
                     self.directive,
@@ -370,7 +371,7 @@ impl<'t> ExprParser<'t> {
         let span = t.t.span;
         let d = match t.t.kind {
             PpKind::Invalid(c) => Diagnostic::error(
-                "invalid-character",
+                Code::InvalidCharacter,
                 format!(
                     "invalid character {} in `{}` expression",
                     super::char_display(c),
@@ -381,7 +382,7 @@ impl<'t> ExprParser<'t> {
             .with_label("not part of GLSL ES's character set")
             .with_token(super::char_token(c)),
             PpKind::Eof => Diagnostic::error(
-                "invalid-expression",
+                Code::InvalidExpression,
                 format!("`{}` expression ends too early", self.directive),
                 span,
             )
@@ -391,7 +392,7 @@ impl<'t> ExprParser<'t> {
             PpKind::Punct(p @ (Punct::PlusPlus | Punct::MinusMinus)) => {
                 let one = &p.as_str()[..1];
                 Diagnostic::error(
-                    "invalid-expression",
+                    Code::InvalidExpression,
                     format!(
                         "`{}` is not an operator in `{}` expressions",
                         p.as_str(),
@@ -409,7 +410,7 @@ impl<'t> ExprParser<'t> {
                 .with_token(&*t.t.text)
             }
             _ => Diagnostic::error(
-                "invalid-expression",
+                Code::InvalidExpression,
                 format!(
                     "unexpected {} in `{}` expression",
                     describe(&t.t),
@@ -450,7 +451,7 @@ impl<'t> ExprParser<'t> {
             let float = text.contains(['.', 'e', 'E']) && !text.starts_with("0x");
             diags.push(
                 Diagnostic::error(
-                    "non-integer-in-expression",
+                    Code::NonIntegerInExpression,
                     if float {
                         format!(
                             "floating-point number `{text}` in `{}`: only integers are allowed",
@@ -478,7 +479,7 @@ impl<'t> ExprParser<'t> {
             self.invalid = true;
             diags.push(
                 Diagnostic::error(
-                    "integer-overflow",
+                    Code::IntegerOverflow,
                     format!("integer `{text}` is too large for `{}`", self.directive),
                     t.t.span,
                 )

@@ -40,6 +40,7 @@ mod directive;
 mod expand;
 mod expr;
 
+use crate::diagnostic_code::Code;
 use std::collections::HashMap;
 use std::rc::Rc;
 use std::sync::Arc;
@@ -452,7 +453,7 @@ impl<'a> Pp<'a> {
             let at = Span::empty(0);
             self.push_diag(
                 Diagnostic::error(
-                    "missing-version",
+                    Code::MissingVersion,
                     "missing `#version 300 es`: this is a GLSL ES 1.00 shader, and essl compiles GLSL ES 3.00",
                     at,
                 )
@@ -469,7 +470,7 @@ impl<'a> Pp<'a> {
                 .skipped_lines
                 .iter()
                 .any(|r| r.start <= d.span.start && d.span.end <= r.end);
-            if d.code == "no-break-space" && d.is_error() && skipped {
+            if d.code == Code::NoBreakSpace.as_str() && d.is_error() && skipped {
                 // WebGL ignores the text of skipped groups: harmless there, as in a comment.
                 d.severity = crate::diagnostic::Severity::Warning;
                 d.message = "no-break space (U+00A0) in a group skipped by the preprocessor".into();
@@ -501,7 +502,7 @@ impl<'a> Pp<'a> {
         let end = self.toks.last().map(|t| t.span).unwrap_or_default();
         for (i, c) in self.conds.iter().enumerate().take(MAX_REPORTED) {
             let mut d = Diagnostic::error(
-                "unterminated-conditional",
+                Code::UnterminatedConditional,
                 format!("unterminated `{}`", c.kind),
                 c.span,
             )
@@ -532,7 +533,7 @@ impl<'a> Pp<'a> {
     fn report_stray_hash(&mut self, t: &Tok) {
         let text = &*t.t.text;
         let mut d = Diagnostic::error(
-            "stray-hash",
+            Code::StrayHash,
             if text == "##" {
                 "`##` is not an operator in GLSL ES: there is no token pasting".to_string()
             } else {
@@ -555,7 +556,7 @@ impl<'a> Pp<'a> {
 
     fn report_invalid_char(&mut self, t: &Tok, c: char) {
         let mut d = Diagnostic::error(
-            "invalid-character",
+            Code::InvalidCharacter,
             format!("invalid character {} in GLSL ES source", char_display(c)),
             t.t.span,
         )
@@ -601,7 +602,7 @@ impl<'a> Pp<'a> {
     fn report_long_identifier(&mut self, t: &PpToken) {
         self.push_diag(
             Diagnostic::error(
-                "identifier-too-long",
+                Code::IdentifierTooLong,
                 format!(
                     "identifier of {} characters: WebGL 2 allows at most {MAX_IDENTIFIER_LEN}",
                     t.text.len()

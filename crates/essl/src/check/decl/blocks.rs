@@ -1,5 +1,6 @@
 //! Uniform blocks: `uniform Name { ... } instance;`, their members, layouts and limits.
 
+use crate::diagnostic_code::Code;
 use std::sync::Arc;
 
 use crate::ast::{self, Qualifier, Storage};
@@ -28,7 +29,7 @@ impl Checker<'_> {
         let hmembers = self.block_members(members, block_row_major);
         if self.blocks.iter().any(|b| *b.name == *name.name) {
             let d = self.error(
-                "redefinition",
+                Code::Redefinition,
                 name.span,
                 format!("uniform block `{}` is declared twice", name.name),
             );
@@ -65,7 +66,7 @@ impl Checker<'_> {
                             "shared" | "packed" => {
                                 let which = item.name.name.clone();
                                 let d = self.error(
-                                    "webgl-block-layout",
+                                    Code::WebglBlockLayout,
                                     item.name.span,
                                     format!("`{which}` uniform blocks are not allowed in WebGL2"),
                                 );
@@ -83,7 +84,7 @@ impl Checker<'_> {
                             "column_major" => block_row_major = false,
                             other => {
                                 let d = self.error(
-                                    "invalid-layout",
+                                    Code::InvalidLayout,
                                     item.name.span,
                                     format!("`{other}` is not a uniform block layout"),
                                 );
@@ -96,7 +97,7 @@ impl Checker<'_> {
                 }
                 Qualifier::Storage(st) => {
                     let d = self.error(
-                        "invalid-block",
+                        Code::InvalidBlock,
                         *s,
                         format!(
                             "`{}` blocks are not allowed in GLSL ES 3.00: only uniform blocks",
@@ -107,7 +108,7 @@ impl Checker<'_> {
                 }
                 _ => {
                     let d = self.error(
-                        "invalid-block",
+                        Code::InvalidBlock,
                         *s,
                         "this qualifier cannot apply to a uniform block",
                     );
@@ -131,7 +132,7 @@ impl Checker<'_> {
             let row_major = self.member_row_major(fty, block_row_major);
             if let ast::TypeName::Struct(inner) = &fty.spec.name {
                 let d = self.error(
-                    "embedded-struct",
+                    Code::EmbeddedStruct,
                     inner.span,
                     "structs cannot be defined inside a uniform block",
                 );
@@ -150,7 +151,7 @@ impl Checker<'_> {
                 };
                 if ty.contains_sampler(&self.structs) {
                     let d = self.error(
-                        "sampler-in-block",
+                        Code::SamplerInBlock,
                         n.span,
                         "a uniform block cannot contain a sampler",
                     );
@@ -158,7 +159,8 @@ impl Checker<'_> {
                     continue;
                 }
                 if matches!(ty, Type::Array(_, 0)) {
-                    let d = self.error("unsized-array", n.span, "block members must have a size");
+                    let d =
+                        self.error(Code::UnsizedArray, n.span, "block members must have a size");
                     d.label = "unsized".into();
                     continue;
                 }
@@ -168,7 +170,7 @@ impl Checker<'_> {
                     .any(|(mn, ..): &BlockMember| **mn == *n.name)
                 {
                     let d = self.error(
-                        "redefinition",
+                        Code::Redefinition,
                         n.span,
                         format!("block member `{}` is declared twice", n.name),
                     );
@@ -195,7 +197,7 @@ impl Checker<'_> {
                             "column_major" => row_major = false,
                             other => {
                                 let d = self.error(
-                                    "invalid-layout",
+                                    Code::InvalidLayout,
                                     item.name.span,
                                     format!("`{other}` cannot qualify a block member"),
                                 );
@@ -206,7 +208,7 @@ impl Checker<'_> {
                 }
                 _ => {
                     let d = self.error(
-                        "invalid-block",
+                        Code::InvalidBlock,
                         *s,
                         "block members may only have a precision or a matrix layout",
                     );
@@ -227,7 +229,7 @@ impl Checker<'_> {
                 Some(e) => self.array_size(e),
                 None => {
                     let d = self.error(
-                        "unsized-array",
+                        Code::UnsizedArray,
                         a.span,
                         "a uniform block array needs a size",
                     );
@@ -253,7 +255,7 @@ impl Checker<'_> {
                 self.check_name(inst);
                 if *inst.name == *name.name {
                     let d = self.error(
-                        "redefinition",
+                        Code::Redefinition,
                         inst.span,
                         "a block's instance name cannot be the block's name",
                     );

@@ -1,6 +1,7 @@
 //! Functions: prototypes and definitions, parameters, overload and redeclaration rules, and
 //! the check that a non-void function returns.
 
+use crate::diagnostic_code::Code;
 use std::sync::Arc;
 
 use crate::ast::{self, Qualifier, Storage};
@@ -18,7 +19,7 @@ impl Checker<'_> {
         let name = &proto.name;
         if crate::builtins::is_builtin_function(&name.name) {
             let d = self.error(
-                "builtin-redeclared",
+                Code::BuiltinRedeclared,
                 name.span,
                 format!(
                     "`{}` is a built-in function and cannot be declared or overloaded",
@@ -58,7 +59,7 @@ impl Checker<'_> {
                 .find(|&f| self.functions[f].signature == signature),
             Some(_) if self.scopes[0].names.contains_key(&name.name) => {
                 let d = self.error(
-                    "redefinition",
+                    Code::Redefinition,
                     name.span,
                     format!(
                         "`{}` is already declared as something other than a function",
@@ -76,7 +77,7 @@ impl Checker<'_> {
                     .iter()
                     .any(|&f| self.functions[f].signature != signature)
                 {
-                    let d = self.error("invalid-main", name.span, "`main` cannot be overloaded");
+                    let d = self.error(Code::InvalidMain, name.span, "`main` cannot be overloaded");
                     d.label = "a second `main`".into();
                     return None;
                 }
@@ -94,7 +95,7 @@ impl Checker<'_> {
         for (q, s) in &ret.qualifiers {
             if !matches!(q, Qualifier::Precision(_)) {
                 let d = self.error(
-                    "invalid-qualifier",
+                    Code::InvalidQualifier,
                     *s,
                     "a return type can only have a precision qualifier",
                 );
@@ -104,7 +105,7 @@ impl Checker<'_> {
         let ty = self.resolve_type(&ret.spec)?;
         if let Type::Array(_, 0) = ty {
             let d = self.error(
-                "unsized-array",
+                Code::UnsizedArray,
                 ret.spec.span,
                 "a returned array needs a size",
             );
@@ -112,7 +113,7 @@ impl Checker<'_> {
         }
         if ty.contains_sampler(&self.structs) {
             let d = self.error(
-                "sampler-return",
+                Code::SamplerReturn,
                 ret.spec.span,
                 "functions cannot return a sampler",
             );
@@ -136,12 +137,16 @@ impl Checker<'_> {
         let name = &proto.name;
         if &*name.name == "main" {
             if !params.is_empty() {
-                let d = self.error("invalid-main", name.span, "`main` cannot take parameters");
+                let d = self.error(
+                    Code::InvalidMain,
+                    name.span,
+                    "`main` cannot take parameters",
+                );
                 d.label = "`void main()` expected".into();
             }
             if *ret != Type::Void {
                 let d = self.error(
-                    "invalid-main",
+                    Code::InvalidMain,
                     proto.ret.spec.span,
                     "`main` must return `void`",
                 );
@@ -163,7 +168,7 @@ impl Checker<'_> {
         if self.functions[f].ret != *ret {
             let prev = self.functions[f].span;
             let d = self.error(
-                "function-redeclared",
+                Code::FunctionRedeclared,
                 name.span,
                 format!(
                     "`{}` is declared again with a different return type",
@@ -184,7 +189,7 @@ impl Checker<'_> {
             .any(|(a, b)| a.mode != b.mode || a.is_const != b.is_const);
         if modes_differ {
             let d = self.error(
-                "function-redeclared",
+                Code::FunctionRedeclared,
                 name.span,
                 format!(
                     "`{}` is declared again with different parameter qualifiers",
@@ -198,7 +203,7 @@ impl Checker<'_> {
             if self.fn_defined[f] {
                 let prev = self.functions[f].span;
                 let d = self.error(
-                    "function-redefined",
+                    Code::FunctionRedefined,
                     name.span,
                     format!("function `{}` is defined twice", name.name),
                 );
@@ -266,7 +271,7 @@ impl Checker<'_> {
                 Qualifier::Precision(_) => {}
                 _ => {
                     let d = self.error(
-                        "invalid-qualifier",
+                        Code::InvalidQualifier,
                         *s,
                         "this qualifier cannot apply to a parameter",
                     );
@@ -277,7 +282,7 @@ impl Checker<'_> {
         if is_const && mode != ParamMode::In {
             let span = p.ty.span;
             let d = self.error(
-                "invalid-qualifier",
+                Code::InvalidQualifier,
                 span,
                 "`const` parameters can only be `in`",
             );
@@ -290,7 +295,7 @@ impl Checker<'_> {
         };
         if ty == Type::Void {
             let d = self.error(
-                "void-parameter",
+                Code::VoidParameter,
                 p.ty.spec.span,
                 "a parameter cannot be `void`",
             );
@@ -298,13 +303,13 @@ impl Checker<'_> {
             return None;
         }
         if let Type::Array(_, 0) = ty {
-            let d = self.error("unsized-array", p.span, "array parameters need a size");
+            let d = self.error(Code::UnsizedArray, p.span, "array parameters need a size");
             d.label = "unsized".into();
             return None;
         }
         if ty.contains_sampler(&self.structs) && mode != ParamMode::In {
             let d = self.error(
-                "sampler-out-parameter",
+                Code::SamplerOutParameter,
                 p.span,
                 "samplers can only be `in` parameters",
             );
@@ -367,7 +372,7 @@ impl Checker<'_> {
             let name = f.proto.name.clone();
             let ret = ctx.ret.display(&self.structs).to_string();
             let d = self.error(
-                "missing-return",
+                Code::MissingReturn,
                 name.span,
                 format!("function `{}` never returns a value", name.name),
             );

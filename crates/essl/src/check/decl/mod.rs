@@ -12,6 +12,7 @@ use super::{Checker, PrecKey, Sym, Var};
 use crate::ast::{self, Interpolation, Qualifier, Storage};
 use crate::builtins::BuiltinVar;
 use crate::diagnostic::Fix;
+use crate::diagnostic_code::Code;
 use crate::hir::{self, GlobalKind};
 use crate::source::Span;
 use crate::types::{Precision, ScalarKind};
@@ -70,7 +71,7 @@ impl Checker<'_> {
             });
             if dup {
                 let d = self.error(
-                    "duplicate-qualifier",
+                    Code::DuplicateQualifier,
                     *s,
                     format!("`{}` qualifier given twice", qualifier_text(q)),
                 );
@@ -86,7 +87,7 @@ impl Checker<'_> {
                         qualifier_text(q),
                         qualifier_text(pq)
                     );
-                    let d = self.error("qualifier-order", *s, msg);
+                    let d = self.error(Code::QualifierOrder, *s, msg);
                     d.label = "out of order".into();
                     d.notes.push(
                         "GLSL ES 3.00 orders qualifiers: invariant, interpolation (or layout), centroid, storage, precision".into(),
@@ -120,7 +121,7 @@ impl Checker<'_> {
             } => {
                 if !global {
                     let d = self.error(
-                        "block-not-global",
+                        Code::BlockNotGlobal,
                         *span,
                         "uniform blocks can only be declared at global scope",
                     );
@@ -151,7 +152,7 @@ impl Checker<'_> {
                                     "std140" | "shared" | "packed" | "row_major" | "column_major"
                                 ) {
                                     let d = self.error(
-                                        "invalid-layout",
+                                        Code::InvalidLayout,
                                         item.name.span,
                                         format!("`{}` is not a layout for a default uniform block declaration", item.name.name),
                                     );
@@ -162,7 +163,7 @@ impl Checker<'_> {
                     }
                 } else {
                     let d = self.error(
-                        "invalid-declaration",
+                        Code::InvalidDeclaration,
                         *span,
                         "a declaration with qualifiers but no type",
                     );
@@ -194,7 +195,7 @@ impl Checker<'_> {
                 .push((k, precision)),
             None => {
                 let d = self.error(
-                    "invalid-precision-statement",
+                    Code::InvalidPrecisionStatement,
                     ty.span,
                     "a default precision can only be declared for `float`, `int` or a sampler type",
                 );
@@ -207,7 +208,7 @@ impl Checker<'_> {
     fn invariant_statement(&mut self, names: &[ast::Ident], span: Span) {
         if !self.at_global_scope() {
             let d = self.error(
-                "invariant-not-global",
+                Code::InvariantNotGlobal,
                 span,
                 "`invariant` declarations must be at global scope",
             );
@@ -220,7 +221,7 @@ impl Checker<'_> {
                     continue;
                 }
                 let d = self.error(
-                    "invalid-invariant",
+                    Code::InvalidInvariant,
                     n.span,
                     format!("`{}` cannot be declared invariant", n.name),
                 );
@@ -236,7 +237,7 @@ impl Checker<'_> {
                 }
                 Some(Sym::Var(_)) => {
                     let d = self.error(
-                        "invalid-invariant",
+                        Code::InvalidInvariant,
                         n.span,
                         format!("`{}` cannot be declared invariant", n.name),
                     );
@@ -244,7 +245,7 @@ impl Checker<'_> {
                 }
                 _ => {
                     let d = self.error(
-                        "undeclared-identifier",
+                        Code::UndeclaredIdentifier,
                         n.span,
                         format!("`{}` is not declared", n.name),
                     );

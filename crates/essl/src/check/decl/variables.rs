@@ -5,6 +5,7 @@ use super::DeclKind;
 use crate::ast::{self, Interpolation, Storage};
 use crate::check::{Checker, Sym, Var};
 use crate::diagnostic::Fix;
+use crate::diagnostic_code::Code;
 use crate::hir::{self, GlobalKind};
 use crate::source::Span;
 use crate::types::{Precision, ScalarKind, Type};
@@ -21,7 +22,7 @@ impl Checker<'_> {
                         || (kind == DeclKind::Output && self.stage == Stage::Fragment);
                     if !allowed {
                         let d = self.error(
-                            "invalid-layout",
+                            Code::InvalidLayout,
                             item.name.span,
                             "`location` can only be given to vertex shader inputs and fragment shader outputs in GLSL ES 3.00",
                         );
@@ -30,7 +31,7 @@ impl Checker<'_> {
                     }
                     let Some(v) = &item.value else {
                         let d = self.error(
-                            "invalid-layout",
+                            Code::InvalidLayout,
                             item.name.span,
                             "`location` needs a value: `location = N`",
                         );
@@ -45,7 +46,7 @@ impl Checker<'_> {
                         Some(n) if (0..=i32::MAX as i64).contains(&n) => location = Some(n as u32),
                         _ => {
                             let d = self.error(
-                                "invalid-layout",
+                                Code::InvalidLayout,
                                 v.span,
                                 "a location must be a non-negative integer literal",
                             );
@@ -55,7 +56,7 @@ impl Checker<'_> {
                 }
                 "std140" | "shared" | "packed" | "row_major" | "column_major" => {
                     let d = self.error(
-                        "invalid-layout",
+                        Code::InvalidLayout,
                         item.name.span,
                         format!("`{}` can only qualify a uniform block", item.name.name),
                     );
@@ -63,7 +64,7 @@ impl Checker<'_> {
                 }
                 other => {
                     let d = self.error(
-                        "invalid-layout",
+                        Code::InvalidLayout,
                         item.name.span,
                         format!("unknown layout qualifier `{other}`"),
                     );
@@ -93,7 +94,7 @@ impl Checker<'_> {
             (Some(s), _) => {
                 let (st, sspan) = storage.expect("storage");
                 let d = self.error(
-                    "invalid-storage",
+                    Code::InvalidStorage,
                     sspan,
                     if global {
                         format!("`{}` is only for function parameters", s.as_str())
@@ -129,7 +130,7 @@ impl Checker<'_> {
         if declarators.is_empty() {
             if let Type::Array(_, 0) = base {
                 let d = self.error(
-                    "unsized-array",
+                    Code::UnsizedArray,
                     ty.spec.span,
                     "an unsized array type needs a variable and an initializer",
                 );
@@ -139,7 +140,7 @@ impl Checker<'_> {
             if !matches!(ty.spec.name, ast::TypeName::Struct(_)) && ty.qualifiers.is_empty() {
                 // `float;` declares nothing: harmless, as C compilers warn.
                 let d = self.warning(
-                    "empty-declaration",
+                    Code::EmptyDeclaration,
                     span,
                     "this declaration declares nothing",
                 );
@@ -162,7 +163,7 @@ impl Checker<'_> {
         if let Some((_, s)) = ty.interpolation() {
             if !varying {
                 let d = self.error(
-                    "invalid-interpolation",
+                    Code::InvalidInterpolation,
                     s,
                     "interpolation qualifiers only apply to vertex outputs and fragment inputs",
                 );
@@ -172,7 +173,7 @@ impl Checker<'_> {
         if let Some(s) = ty.centroid() {
             if !varying {
                 let d = self.error(
-                    "invalid-centroid",
+                    Code::InvalidCentroid,
                     s,
                     "`centroid` only applies to vertex outputs and fragment inputs",
                 );
@@ -182,7 +183,7 @@ impl Checker<'_> {
         if let Some(s) = ty.invariant() {
             if !(kind == DeclKind::Output && self.stage == Stage::Vertex) {
                 let d = self.error(
-                    "invalid-invariant",
+                    Code::InvalidInvariant,
                     s,
                     "only vertex shader outputs can be declared `invariant`",
                 );
@@ -191,7 +192,7 @@ impl Checker<'_> {
         }
         if *base == Type::Void {
             let d = self.error(
-                "void-variable",
+                Code::VoidVariable,
                 ty.spec.span,
                 "variables cannot have type `void`",
             );
@@ -199,7 +200,7 @@ impl Checker<'_> {
         }
         if base.contains_sampler(&self.structs) && !matches!(kind, DeclKind::Uniform) {
             let d = self.error(
-                "sampler-not-uniform",
+                Code::SamplerNotUniform,
                 ty.spec.span,
                 "samplers can only be declared as uniforms or function parameters",
             );
@@ -235,7 +236,7 @@ impl Checker<'_> {
         }
         if let Type::Array(_, 0) = ty {
             let d = self.error(
-                "unsized-array",
+                Code::UnsizedArray,
                 decl.name.span,
                 format!("array `{}` needs a size", decl.name.name),
             );
@@ -324,7 +325,7 @@ impl Checker<'_> {
                     _ => "outputs",
                 };
                 let d = self.error(
-                    "invalid-initializer",
+                    Code::InvalidInitializer,
                     i.span,
                     format!("{what} cannot have an initializer"),
                 );
@@ -335,7 +336,7 @@ impl Checker<'_> {
                 let constant = i.as_const().is_some();
                 if kind == DeclKind::Const && !constant {
                     let d = self.error(
-                        "non-constant-initializer",
+                        Code::NonConstantInitializer,
                         i.span,
                         format!(
                             "`const` variable `{}` needs a constant initializer",
@@ -348,7 +349,7 @@ impl Checker<'_> {
                     );
                 } else if kind == DeclKind::GlobalPrivate && !constant {
                     let d = self.error(
-                        "non-constant-initializer",
+                        Code::NonConstantInitializer,
                         i.span,
                         "global variable initializers must be constant expressions",
                     );
@@ -358,7 +359,7 @@ impl Checker<'_> {
             }
         } else if kind == DeclKind::Const {
             let d = self.error(
-                "missing-initializer",
+                Code::MissingInitializer,
                 decl.name.span,
                 format!("`const` variable `{}` needs an initializer", decl.name.name),
             );
@@ -392,7 +393,7 @@ impl Checker<'_> {
         let span = init.span;
         let fix = crate::check::expr::conversion_fix(self.file, init, ty);
         let d = self.error(
-            "type-mismatch",
+            Code::TypeMismatch,
             span,
             format!("cannot initialize a {want} with a {got}"),
         );
@@ -480,7 +481,7 @@ impl Checker<'_> {
                 "fragment shader output"
             };
             let d = self.error(
-                "invalid-interface-type",
+                Code::InvalidInterfaceType,
                 span,
                 format!("a {role} cannot be {p}"),
             );
@@ -498,7 +499,7 @@ impl Checker<'_> {
                 "fragment shader input"
             };
             let d = self.error(
-                "integer-varying-not-flat",
+                Code::IntegerVaryingNotFlat,
                 span,
                 format!("an integer {role} must be `flat`"),
             );

@@ -4,6 +4,7 @@ use super::{constant, error_expr, is_error};
 use crate::ast;
 use crate::check::fold;
 use crate::check::{Checker, Sym};
+use crate::diagnostic_code::Code;
 use crate::hir::{ConstValue, Expr, ExprKind};
 use crate::source::Span;
 use crate::types::{ScalarKind, Type};
@@ -33,7 +34,7 @@ impl Checker<'_> {
         if let ast::ExprKind::Ident(id) = &base.kind {
             if let Some(Sym::Block(_)) = self.lookup(&id.name) {
                 let d = self.error(
-                    "not-a-value",
+                    Code::NotAValue,
                     span,
                     "an element of a uniform block array must be followed by `.member`",
                 );
@@ -52,7 +53,7 @@ impl Checker<'_> {
     fn index_checked(&mut self, b: Expr, i: Expr, span: Span) -> Expr {
         let Some(elem) = b.ty.index_result() else {
             let t = self.type_name(&b.ty);
-            let d = self.error("not-indexable", b.span, format!("{t} cannot be indexed"));
+            let d = self.error(Code::NotIndexable, b.span, format!("{t} cannot be indexed"));
             d.label = "not an array, matrix or vector".into();
             d.token = "[".into();
             return error_expr(span);
@@ -60,7 +61,7 @@ impl Checker<'_> {
         if i.ty != Type::INT && i.ty != Type::UINT {
             let t = self.type_name(&i.ty);
             let d = self.error(
-                "type-mismatch",
+                Code::TypeMismatch,
                 i.span,
                 format!("an index must be an `int` or `uint`, not {t}"),
             );
@@ -76,7 +77,7 @@ impl Checker<'_> {
         if let Some(v) = i.as_const().and_then(|c| c.as_int()) {
             if v < 0 {
                 let d = self.error(
-                    "index-out-of-range",
+                    Code::IndexOutOfRange,
                     i.span,
                     format!("index {v} is negative"),
                 );
@@ -93,7 +94,7 @@ impl Checker<'_> {
                     "vector"
                 };
                 let d = self.error(
-                    "index-out-of-range",
+                    Code::IndexOutOfRange,
                     i.span,
                     format!("index {v} is out of range for a {what} of {bound}"),
                 );
@@ -108,7 +109,7 @@ impl Checker<'_> {
             }
         } else if elem.contains_sampler(&self.structs) || matches!(elem, Type::Sampler(_)) {
             let d = self.error(
-                "dynamic-sampler-index",
+                Code::DynamicSamplerIndex,
                 i.span,
                 "arrays of samplers can only be indexed with constant integral expressions",
             );
@@ -173,7 +174,7 @@ impl Checker<'_> {
                             .collect();
                         let sname = def.name.clone().unwrap_or_else(|| "struct".into());
                         let d = self.error(
-                            "no-such-field",
+                            Code::NoSuchField,
                             name.span,
                             format!("`{sname}` has no member `{}`", name.name),
                         );
@@ -190,7 +191,7 @@ impl Checker<'_> {
             }
             Type::Array(..) => {
                 let d = self.error(
-                    "invalid-field",
+                    Code::InvalidField,
                     name.span,
                     format!("an array has no field `{}`", name.name),
                 );
@@ -203,7 +204,7 @@ impl Checker<'_> {
             t => {
                 let t = self.type_name(t);
                 let d = self.error(
-                    "invalid-field",
+                    Code::InvalidField,
                     name.span,
                     format!(
                         "{t} has no fields: `.{}` needs a struct or a vector",
@@ -227,7 +228,7 @@ impl Checker<'_> {
         for &c in text {
             let Some((s, i)) = swizzle_component(c) else {
                 let d = self.error(
-                    "invalid-swizzle",
+                    Code::InvalidSwizzle,
                     name.span,
                     format!(
                         "`{}` is not a swizzle: `{}` is not a component name",
@@ -239,7 +240,7 @@ impl Checker<'_> {
             };
             if set.is_some_and(|p| p != s) {
                 let d = self.error(
-                    "invalid-swizzle",
+                    Code::InvalidSwizzle,
                     name.span,
                     format!("swizzle `{}` mixes component sets", name.name),
                 );
@@ -249,7 +250,7 @@ impl Checker<'_> {
             set = Some(s);
             if i >= n {
                 let d = self.error(
-                    "invalid-swizzle",
+                    Code::InvalidSwizzle,
                     name.span,
                     format!(
                         "swizzle `{}` reads past the end of a {n}-component vector",
@@ -263,7 +264,7 @@ impl Checker<'_> {
         }
         if comps.len() > 4 {
             let d = self.error(
-                "invalid-swizzle",
+                Code::InvalidSwizzle,
                 name.span,
                 "a swizzle selects at most 4 components",
             );
@@ -298,7 +299,7 @@ impl Checker<'_> {
                 }
                 let Some(n) = self.blocks[block].array else {
                     let d = self.error(
-                        "not-indexable",
+                        Code::NotIndexable,
                         i.span,
                         "this uniform block is not an array",
                     );
@@ -309,7 +310,7 @@ impl Checker<'_> {
                     Some(v) if v >= 0 && v < n as i64 => Some(Box::new(i)),
                     Some(v) => {
                         let d = self.error(
-                            "index-out-of-range",
+                            Code::IndexOutOfRange,
                             i.span,
                             format!("index {v} is out of range for a block array of {n}"),
                         );
@@ -318,7 +319,7 @@ impl Checker<'_> {
                     }
                     None => {
                         let d = self.error(
-                            "dynamic-block-index",
+                            Code::DynamicBlockIndex,
                             i.span,
                             "uniform block arrays can only be indexed with constant expressions",
                         );
@@ -330,7 +331,7 @@ impl Checker<'_> {
             None => {
                 if self.blocks[block].array.is_some() {
                     let d = self.error(
-                        "not-a-value",
+                        Code::NotAValue,
                         span,
                         "a uniform block array needs an index before `.member`",
                     );
@@ -353,7 +354,7 @@ impl Checker<'_> {
             None => {
                 let bname = b.name.clone();
                 let d = self.error(
-                    "no-such-field",
+                    Code::NoSuchField,
                     name.span,
                     format!("uniform block `{bname}` has no member `{}`", name.name),
                 );

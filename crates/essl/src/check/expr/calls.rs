@@ -6,6 +6,7 @@ use crate::builtins::{self, BuiltinFn};
 use crate::check::fold;
 use crate::check::{Checker, Sym};
 use crate::diagnostic::{Applicability, Fix};
+use crate::diagnostic_code::Code;
 use crate::hir::{ConstValue, Expr, ExprKind, ParamMode, Scalar};
 use crate::source::Span;
 use crate::types::{ScalarKind, Type};
@@ -28,7 +29,7 @@ impl Checker<'_> {
                     _ => {
                         let t = self.type_name(&b.ty);
                         let d = self.error(
-                            "invalid-length",
+                            Code::InvalidLength,
                             span,
                             format!("`.length()` needs an array, not {t}"),
                         );
@@ -56,7 +57,7 @@ impl Checker<'_> {
                             .get(&id.name)
                             .is_some_and(|s| matches!(s, Sym::Funcs(_)));
                         let d = self.error(
-                            "not-a-function",
+                            Code::NotAFunction,
                             id.span,
                             format!("`{}` is a variable, not a function", id.name),
                         );
@@ -73,7 +74,7 @@ impl Checker<'_> {
                         Some(sigs) => self.builtin_call(id, sigs, args, span),
                         None => {
                             let d = self.error(
-                                "undeclared-function",
+                                Code::UndeclaredFunction,
                                 id.span,
                                 format!("no function named `{}` is declared", id.name),
                             );
@@ -146,7 +147,7 @@ impl Checker<'_> {
                 .collect();
             let at = self.arg_types(&args);
             let d = self.error(
-                "no-matching-overload",
+                Code::NoMatchingOverload,
                 id.span,
                 format!("no declaration of `{}` takes ({at})", id.name),
             );
@@ -206,7 +207,7 @@ impl Checker<'_> {
             cands.truncate(6);
             let fix = self.builtin_fix(id, sigs, &args);
             let d = self.error(
-                "no-matching-overload",
+                Code::NoMatchingOverload,
                 id.span,
                 format!("no overload of `{}` takes ({at})", id.name),
             );
@@ -230,7 +231,7 @@ impl Checker<'_> {
         };
         if sig.fragment_only && self.stage != Stage::Fragment {
             let d = self.error(
-                "fragment-only-builtin",
+                Code::FragmentOnlyBuiltin,
                 id.span,
                 if matches!(
                     sig.op,
@@ -271,7 +272,7 @@ impl Checker<'_> {
                             .any(|v| !matches!(v, Scalar::I(x) if (lo..=hi).contains(x)))
                         {
                             let d = self.error(
-                                "texel-offset-range",
+                                Code::TexelOffsetRange,
                                 off.span,
                                 format!("texel offsets must be between {lo} and {hi}"),
                             );
@@ -281,7 +282,7 @@ impl Checker<'_> {
                     }
                     None => {
                         let d = self.error(
-                            "non-constant-offset",
+                            Code::NonConstantOffset,
                             off.span,
                             "a texel offset must be a constant expression",
                         );

@@ -6,6 +6,7 @@
 use super::{constant, error_expr, is_error};
 use crate::check::fold;
 use crate::check::Checker;
+use crate::diagnostic_code::Code;
 use crate::hir::{ConstValue, Expr, ExprKind};
 use crate::source::Span;
 use crate::types::{StructId, Type};
@@ -37,7 +38,7 @@ impl Checker<'_> {
             Ok(ty) => ty,
             Err(Rejected::Here(msg, label)) => {
                 let token = self.file.slice(type_span).to_string();
-                let d = self.error("invalid-constructor", span, msg);
+                let d = self.error(Code::InvalidConstructor, span, msg);
                 d.label = label.into();
                 d.token = token;
                 return error_expr(span);
@@ -130,7 +131,7 @@ impl Checker<'_> {
             let (e, b) = (self.type_name(el), self.type_name(&bad.ty));
             let bspan = bad.span;
             let d = self.error(
-                "invalid-constructor",
+                Code::InvalidConstructor,
                 bspan,
                 format!("array elements must be {e}, not {b}"),
             );
@@ -163,7 +164,7 @@ impl Checker<'_> {
                 let (want, got) = (self.type_name(&m.ty), self.type_name(&a.ty));
                 let aspan = a.span;
                 let d = self.error(
-                    "invalid-constructor",
+                    Code::InvalidConstructor,
                     aspan,
                     format!("member `{}` is {want}, not {got}", m.name),
                 );

@@ -12,6 +12,7 @@ use super::{Checker, Sym, Var};
 use crate::ast;
 use crate::builtins::{self, BuiltinVar};
 use crate::diagnostic::{Applicability, Fix, Label};
+use crate::diagnostic_code::Code;
 use crate::hir::{self, ConstValue, Expr, ExprKind, GlobalKind, Scalar};
 use crate::source::{SourceFile, Span};
 use crate::types::{ScalarKind, Type};
@@ -129,7 +130,7 @@ impl Checker<'_> {
                     .find_map(|e| self.webgl_forbidden_operand(&e.ty))
                 {
                     let d = self.error(
-                        "webgl-forbidden-operand",
+                        Code::WebglForbiddenOperand,
                         span,
                         format!("the sequence operator `,` cannot be used with {what} in WebGL"),
                     );
@@ -204,7 +205,7 @@ impl Checker<'_> {
             }
             Some(Sym::Funcs(_)) => {
                 let d = self.error(
-                    "not-a-value",
+                    Code::NotAValue,
                     span,
                     format!("`{}` is a function, not a value", id.name),
                 );
@@ -214,7 +215,7 @@ impl Checker<'_> {
             }
             Some(Sym::Struct(_)) => {
                 let d = self.error(
-                    "not-a-value",
+                    Code::NotAValue,
                     span,
                     format!("`{}` is a type, not a value", id.name),
                 );
@@ -223,7 +224,7 @@ impl Checker<'_> {
             }
             Some(Sym::Block(_)) => {
                 let d = self.error(
-                    "not-a-value",
+                    Code::NotAValue,
                     span,
                     format!("`{}` is a uniform block; use one of its members", id.name),
                 );
@@ -272,7 +273,7 @@ impl Checker<'_> {
             .map(|(_, sp)| *sp);
         let ended_line = ended.map(|sp| self.file.line_of(sp.start));
         let d = self.error(
-            "undeclared-identifier",
+            Code::UndeclaredIdentifier,
             id.span,
             format!("`{name}` is not declared"),
         );

@@ -6,6 +6,7 @@ use crate::ast::{self, BinaryOp, UnaryOp};
 use crate::check::fold;
 use crate::check::Checker;
 use crate::diagnostic::Label;
+use crate::diagnostic_code::Code;
 use crate::hir::{self, Expr, ExprKind, GlobalKind, Scalar};
 use crate::source::Span;
 use crate::types::{ScalarKind, Type};
@@ -245,7 +246,7 @@ impl Checker<'_> {
                 _ => "a number, vector or matrix (not `bool`)",
             };
             let d = self.error(
-                "invalid-operand",
+                Code::InvalidOperand,
                 span,
                 format!("`{}` cannot be applied to {t}", op.as_str()),
             );
@@ -306,7 +307,7 @@ impl Checker<'_> {
                     None
                 };
                 let d = self.error(
-                    "invalid-operands",
+                    Code::InvalidOperands,
                     span,
                     format!("`{}` cannot be applied to {lt} and {rt}", op.as_str()),
                 );
@@ -333,7 +334,7 @@ impl Checker<'_> {
                 Ok(v) => return constant(v, ty, span),
                 Err(fold::FoldError::DivideByZero) => {
                     let d = self.warning(
-                        "division-by-zero",
+                        Code::DivisionByZero,
                         span,
                         "division by zero in a constant expression",
                     );
@@ -375,7 +376,7 @@ impl Checker<'_> {
             let (lt, rt) = (self.type_name(&lhs.ty), self.type_name(&rhs.ty));
             let fix = conversion_fix(self.file, &rhs, &lhs.ty);
             let d = self.error(
-                "type-mismatch",
+                Code::TypeMismatch,
                 rhs.span,
                 match op {
                     None => format!("cannot assign {rt} to {lt}"),
@@ -400,7 +401,7 @@ impl Checker<'_> {
         }
         let ty = lhs.ty.clone();
         if ty.contains_sampler(&self.structs) {
-            let d = self.error("sampler-assignment", span, "samplers cannot be assigned");
+            let d = self.error(Code::SamplerAssignment, span, "samplers cannot be assigned");
             d.label = "assigns a sampler".into();
             return error_expr(span);
         }
@@ -417,7 +418,7 @@ impl Checker<'_> {
         match why {
             None => true,
             Some((msg, span)) => {
-                let d = self.error("not-assignable", span, msg);
+                let d = self.error(Code::NotAssignable, span, msg);
                 d.label = "cannot be written".into();
                 d.token = if op.contains('=') {
                     "assign".into()
@@ -509,7 +510,7 @@ impl Checker<'_> {
         if c.ty != Type::BOOL {
             let t = self.type_name(&c.ty);
             let d = self.error(
-                "type-mismatch",
+                Code::TypeMismatch,
                 c.span,
                 format!("the condition of `?:` must be a `bool`, not {t}"),
             );
@@ -520,7 +521,7 @@ impl Checker<'_> {
         if a.ty != b.ty {
             let (at, bt) = (self.type_name(&a.ty), self.type_name(&b.ty));
             let d = self.error(
-                "type-mismatch",
+                Code::TypeMismatch,
                 span,
                 format!("the two sides of `?:` differ: {at} and {bt}"),
             );
@@ -538,7 +539,7 @@ impl Checker<'_> {
         }
         if let Some(what) = self.webgl_forbidden_operand(&a.ty) {
             let d = self.error(
-                "webgl-forbidden-operand",
+                Code::WebglForbiddenOperand,
                 span,
                 format!("the ternary operator `?:` cannot select {what} in WebGL"),
             );
@@ -547,7 +548,7 @@ impl Checker<'_> {
             return error_expr(span);
         }
         if a.ty.contains_sampler(&self.structs) {
-            let d = self.error("invalid-operands", span, "`?:` cannot select samplers");
+            let d = self.error(Code::InvalidOperands, span, "`?:` cannot select samplers");
             d.label = "samplers".into();
             return error_expr(span);
         }

@@ -2,6 +2,7 @@
 
 use super::Directive;
 use crate::diagnostic::{Diagnostic, Fix};
+use crate::diagnostic_code::Code;
 use crate::lex::Punct;
 use crate::preprocess::expr::ExprParser;
 use crate::preprocess::{describe, Pp};
@@ -40,7 +41,7 @@ impl Pp<'_> {
         if d.args().is_empty() {
             self.push_diag(
                 Diagnostic::error(
-                    "missing-expression",
+                    Code::MissingExpression,
                     format!("`{what}` needs an expression"),
                     d.name_span(),
                 )
@@ -62,7 +63,7 @@ impl Pp<'_> {
             let t = p.current();
             let last = &toks[toks.len() - 2];
             let mut e = Diagnostic::error(
-                "extra-tokens",
+                Code::ExtraTokens,
                 format!(
                     "unexpected {} after the `{what}` expression",
                     describe(&t.t)
@@ -98,7 +99,7 @@ impl Pp<'_> {
     pub(super) fn d_elif(&mut self, d: &Directive) {
         let Some(c) = self.conds.last() else {
             self.push_diag(
-                Diagnostic::error("elif-without-if", "`#elif` without `#if`", d.name_span())
+                Diagnostic::error(Code::ElifWithoutIf, "`#elif` without `#if`", d.name_span())
                     .with_label("no `#if` is open here")
                     .with_help("remove it, or add the `#if` it belongs to")
                     .with_token("elif"),
@@ -110,7 +111,7 @@ impl Pp<'_> {
         }
         if let Some(e) = c.else_span {
             self.push_diag(
-                Diagnostic::error("elif-after-else", "`#elif` after `#else`", d.name_span())
+                Diagnostic::error(Code::ElifAfterElse, "`#elif` after `#else`", d.name_span())
                     .with_label("the `#else` group must be the last one")
                     .with_secondary(e, "the `#else` is here")
                     .with_help("move this group before the `#else`, or start a new `#if`")
@@ -132,7 +133,7 @@ impl Pp<'_> {
     pub(super) fn d_else(&mut self, d: &Directive) {
         let Some(c) = self.conds.last_mut() else {
             self.push_diag(
-                Diagnostic::error("else-without-if", "`#else` without `#if`", d.name_span())
+                Diagnostic::error(Code::ElseWithoutIf, "`#else` without `#if`", d.name_span())
                     .with_label("no `#if` is open here")
                     .with_help("remove it, or add the `#if` it belongs to")
                     .with_token("else"),
@@ -144,7 +145,7 @@ impl Pp<'_> {
         }
         if let Some(e) = c.else_span {
             self.push_diag(
-                Diagnostic::error("else-after-else", "`#else` after `#else`", d.name_span())
+                Diagnostic::error(Code::ElseAfterElse, "`#else` after `#else`", d.name_span())
                     .with_label("a second `#else`")
                     .with_secondary(e, "the first `#else` is here")
                     .with_help("remove one of them, or close the conditional with `#endif` first")
@@ -163,10 +164,14 @@ impl Pp<'_> {
     pub(super) fn d_endif(&mut self, d: &Directive) {
         if self.conds.pop().is_none() {
             self.push_diag(
-                Diagnostic::error("endif-without-if", "`#endif` without `#if`", d.name_span())
-                    .with_label("no `#if` is open here")
-                    .with_fix(Fix::suggested("remove it", d.whole_line(), ""))
-                    .with_token("endif"),
+                Diagnostic::error(
+                    Code::EndifWithoutIf,
+                    "`#endif` without `#if`",
+                    d.name_span(),
+                )
+                .with_label("no `#if` is open here")
+                .with_fix(Fix::suggested("remove it", d.whole_line(), ""))
+                .with_token("endif"),
             );
             return;
         }

@@ -1,5 +1,6 @@
 //! Macro directives: `#define` (object-like and function-like, with the rules on which names
 //! may be defined), `#undef`, and macros defined from the options.
+use crate::diagnostic_code::Code;
 use std::cell::Cell;
 use std::rc::Rc;
 use std::sync::Arc;
@@ -18,7 +19,7 @@ impl Pp<'_> {
             None => {
                 self.push_diag(
                     Diagnostic::error(
-                        "missing-macro-name",
+                        Code::MissingMacroName,
                         format!("`{what}` needs a macro name"),
                         d.name_span(),
                     )
@@ -31,7 +32,7 @@ impl Pp<'_> {
             Some(t) if t.kind != PpKind::Ident => {
                 self.push_diag(
                     Diagnostic::error(
-                        "invalid-macro-name",
+                        Code::InvalidMacroName,
                         format!("expected a macro name after `{what}`, found {}", describe(t)),
                         t.span,
                     )
@@ -55,7 +56,7 @@ impl Pp<'_> {
         {
             self.push_diag(
                 Diagnostic::error(
-                    "predefined-macro-redefined",
+                    Code::PredefinedMacroRedefined,
                     format!("`{n}` is a predefined macro and cannot be redefined"),
                     name.span,
                 )
@@ -68,7 +69,7 @@ impl Pp<'_> {
         if n == "defined" || n.starts_with("GL_") {
             self.push_diag(
                 Diagnostic::error(
-                    "reserved-macro-name",
+                    Code::ReservedMacroName,
                     format!("macro name `{n}` is reserved"),
                     name.span,
                 )
@@ -85,7 +86,7 @@ impl Pp<'_> {
         if n.contains("__") {
             self.push_diag(
                 Diagnostic::warning(
-                    "double-underscore-macro-name",
+                    Code::DoubleUnderscoreMacroName,
                     format!("macro name `{n}` contains `__`, which is reserved"),
                     name.span,
                 )
@@ -107,7 +108,7 @@ impl Pp<'_> {
         let unterminated = |pp: &mut Self| {
             pp.diags.push(
                 Diagnostic::error(
-                    "unterminated-macro-parameters",
+                    Code::UnterminatedMacroParameters,
                     format!("missing `)` in the parameter list of macro `{}`", name.text),
                     d.end(),
                 )
@@ -136,7 +137,7 @@ impl Pp<'_> {
                             .unwrap_or(t.span);
                         self.push_diag(
                             Diagnostic::error(
-                                "duplicate-macro-parameter",
+                                Code::DuplicateMacroParameter,
                                 format!(
                                     "parameter `{}` appears twice in macro `{}`",
                                     t.text, name.text
@@ -156,7 +157,7 @@ impl Pp<'_> {
                 Some(t) => {
                     self.push_diag(
                         Diagnostic::error(
-                            "invalid-macro-parameters",
+                            Code::InvalidMacroParameters,
                             format!(
                                 "expected a parameter name in macro `{}`, found {}",
                                 name.text,
@@ -183,7 +184,7 @@ impl Pp<'_> {
                 Some(t) => {
                     self.push_diag(
                         Diagnostic::error(
-                            "invalid-macro-parameters",
+                            Code::InvalidMacroParameters,
                             format!(
                                 "expected `,` or `)` after parameter `{}`, found {}",
                                 args[i - 1].text,
@@ -244,7 +245,7 @@ impl Pp<'_> {
                 let pasting = t.is(Punct::HashHash);
                 self.push_diag(
                     Diagnostic::warning(
-                        "token-pasting",
+                        Code::TokenPasting,
                         if pasting {
                             "GLSL ES has no `##` operator: this macro cannot paste tokens"
                         } else {
@@ -286,7 +287,7 @@ impl Pp<'_> {
             if m.origin == Origin::Shader && !old.same_as(&m) {
                 self.push_diag(
                     Diagnostic::warning(
-                        "option-macro-redefined",
+                        Code::OptionMacroRedefined,
                         format!(
                             "`#define {}` replaces the value given in the options",
                             m.name
@@ -314,7 +315,7 @@ impl Pp<'_> {
             "with a different replacement list"
         };
         let mut e = Diagnostic::error(
-            "macro-redefinition",
+            Code::MacroRedefinition,
             format!("macro `{}` is redefined {what}", m.name),
             m.span,
         )
@@ -341,7 +342,7 @@ impl Pp<'_> {
             if m.origin == Origin::Predefined {
                 self.push_diag(
                     Diagnostic::error(
-                        "predefined-macro-undefined",
+                        Code::PredefinedMacroUndefined,
                         format!(
                             "`{}` is a predefined macro and cannot be undefined",
                             name.text
@@ -358,7 +359,7 @@ impl Pp<'_> {
             if m.disabled.get() || m.invoking.get() > 0 {
                 self.push_diag(
                     Diagnostic::error(
-                        "macro-undefined-while-expanding",
+                        Code::MacroUndefinedWhileExpanding,
                         format!("`#undef {}` inside a call of that macro", name.text),
                         name.span,
                     )

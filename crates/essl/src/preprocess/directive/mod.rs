@@ -8,6 +8,7 @@ mod conditionals;
 mod macros;
 mod version;
 
+use crate::diagnostic_code::Code;
 use std::sync::Arc;
 
 use crate::diagnostic::{Applicability, Diagnostic, Edit, Fix};
@@ -175,7 +176,7 @@ impl Pp<'_> {
             },
         };
         Diagnostic::error(
-            "extra-tokens",
+            Code::ExtraTokens,
             format!("unexpected {} after `{what}`", describe(t)),
             t.span.to(last.span),
         )
@@ -222,7 +223,7 @@ impl Pp<'_> {
         let text = join(d.args());
         self.push_diag(
             Diagnostic::error(
-                "error-directive",
+                Code::ErrorDirective,
                 if text.is_empty() {
                     "`#error` directive".to_string()
                 } else {
@@ -248,7 +249,7 @@ impl Pp<'_> {
                 .then(|| &rest[2]);
         let bad = |pp: &mut Self, msg: String| {
             pp.diags.push(
-                Diagnostic::warning("invalid-pragma", msg, d.span())
+                Diagnostic::warning(Code::InvalidPragma, msg, d.span())
                     .with_label("this pragma is ignored")
                     .with_help("check the pragma's spelling; unknown pragmas are ignored")
                     .with_token(&*name.text),
@@ -266,7 +267,7 @@ impl Pp<'_> {
                 if self.options.stage == Some(Stage::Fragment) && self.version == Version::Es300 {
                     self.push_diag(
                         Diagnostic::error(
-                            "invariant-all-in-fragment-shader",
+                            Code::InvariantAllInFragmentShader,
                             "`#pragma STDGL invariant(all)` is not allowed in a fragment shader",
                             d.span(),
                         )
@@ -295,7 +296,7 @@ impl Pp<'_> {
         if t.kind != PpKind::Ident {
             self.push_diag(
                 Diagnostic::error(
-                    "unknown-directive",
+                    Code::UnknownDirective,
                     format!("expected a directive name after `#`, found {}", describe(t)),
                     t.span,
                 )
@@ -306,7 +307,7 @@ impl Pp<'_> {
         }
         let name = &*t.text;
         let mut e = Diagnostic::error(
-            "unknown-directive",
+            Code::UnknownDirective,
             format!("unknown directive `#{name}`"),
             d.name_span(),
         )

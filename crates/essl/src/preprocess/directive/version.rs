@@ -3,6 +3,7 @@
 
 use super::{Directive, PROMOTED};
 use crate::diagnostic::{Applicability, Diagnostic, Edit, Fix, Severity};
+use crate::diagnostic_code::Code;
 use crate::lex::{PpKind, PpToken, Punct};
 use crate::preprocess::expr::ExprParser;
 use crate::preprocess::{describe, ExtensionBehavior, LineDirective, Pp, Version};
@@ -34,7 +35,7 @@ impl Pp<'_> {
             self.push_diag(
                 Diagnostic::new(
                     sev,
-                    "extension-after-code",
+                    Code::ExtensionAfterCode.as_str(),
                     "`#extension` must come before any code",
                     d.span(),
                 )
@@ -61,7 +62,7 @@ impl Pp<'_> {
         let name = match args.first() {
             None => {
                 self.push_diag(
-                    Diagnostic::error("invalid-extension-directive", shape, d.name_span())
+                    Diagnostic::error(Code::InvalidExtensionDirective, shape, d.name_span())
                         .with_label("expected an extension name")
                         .with_help("write `#extension NAME : behavior`")
                         .with_token("\n"),
@@ -71,7 +72,7 @@ impl Pp<'_> {
             Some(t) if t.kind != PpKind::Ident => {
                 self.push_diag(
                     Diagnostic::error(
-                        "invalid-extension-name",
+                        Code::InvalidExtensionName,
                         format!(
                             "expected an extension name after `#extension`, found {}",
                             describe(t)
@@ -99,7 +100,7 @@ impl Pp<'_> {
                 };
                 self.push_diag(
                     Diagnostic::error(
-                        "invalid-extension-directive",
+                        Code::InvalidExtensionDirective,
                         format!("expected `:` after the extension name, found {found}"),
                         span,
                     )
@@ -124,7 +125,7 @@ impl Pp<'_> {
         let Some(bt) = args.get(2) else {
             self.push_diag(
                 Diagnostic::error(
-                    "invalid-extension-behavior",
+                    Code::InvalidExtensionBehavior,
                     format!("expected {behaviors} after `:`"),
                     d.end(),
                 )
@@ -141,7 +142,7 @@ impl Pp<'_> {
         };
         let Some(behavior) = behavior else {
             let mut e = Diagnostic::error(
-                "invalid-extension-behavior",
+                Code::InvalidExtensionBehavior,
                 format!("unknown extension behavior {}", describe(bt)),
                 bt.span,
             )
@@ -175,7 +176,7 @@ impl Pp<'_> {
             ) {
                 self.push_diag(
                     Diagnostic::error(
-                        "extension-all-behavior",
+                        Code::ExtensionAllBehavior,
                         format!("`#extension all` cannot be `{}`", behavior.as_str()),
                         bt.span,
                     )
@@ -193,7 +194,7 @@ impl Pp<'_> {
                 } else {
                     Severity::Warning
                 },
-                "extension-not-supported",
+                Code::ExtensionNotSupported.as_str(),
                 format!("extension `{n}` is not supported"),
                 name.span,
             )
@@ -246,7 +247,7 @@ impl Pp<'_> {
                 } else if n >= 300 {
                     let found = args.get(1);
                     let mut e = Diagnostic::error(
-                        "invalid-version",
+                        Code::InvalidVersion,
                         format!("`#version {n}` needs the `es` profile"),
                         found.map(|f| f.span).unwrap_or(t.span.end_point()),
                     )
@@ -275,7 +276,7 @@ impl Pp<'_> {
                     None => (d.end(), "end of line".to_string(), "\n".to_string()),
                 };
                 let mut e = Diagnostic::error(
-                    "invalid-version",
+                    Code::InvalidVersion,
                     format!("expected a version number after `#version`, found {found}"),
                     span,
                 )
@@ -300,7 +301,7 @@ impl Pp<'_> {
         if self.past_first {
             self.push_diag(
                 Diagnostic::error(
-                    "version-not-first",
+                    Code::VersionNotFirst,
                     "`#version` must come before anything else in the shader",
                     d.span(),
                 )
@@ -321,7 +322,7 @@ impl Pp<'_> {
         if n >= 300 && line > 1 {
             self.push_diag(
                 Diagnostic::error(
-                    "version-not-first-line",
+                    Code::VersionNotFirstLine,
                     format!("`#version {n} es` must be on the first line of the shader"),
                     d.span(),
                 )
@@ -341,7 +342,7 @@ impl Pp<'_> {
             Version::Es300 => {}
             Version::Es100 => self.push_diag(
                 Diagnostic::error(
-                    "unsupported-version",
+                    Code::UnsupportedVersion,
                     "`#version 100` is GLSL ES 1.00: essl compiles GLSL ES 3.00",
                     d.span(),
                 )
@@ -352,7 +353,7 @@ impl Pp<'_> {
             ),
             Version::Other(..) => self.push_diag(
                 Diagnostic::error(
-                    "unsupported-version",
+                    Code::UnsupportedVersion,
                     format!(
                         "GLSL version `{n}{}` is not supported: WebGL2 compiles `#version 300 es`",
                         if es { " es" } else { "" }
@@ -371,7 +372,7 @@ impl Pp<'_> {
         if d.args().is_empty() {
             self.push_diag(
                 Diagnostic::error(
-                    "invalid-line-directive",
+                    Code::InvalidLineDirective,
                     "`#line` needs a line number",
                     d.name_span(),
                 )
@@ -401,7 +402,7 @@ impl Pp<'_> {
             let last = &toks[toks.len() - 2];
             self.push_diag(
                 Diagnostic::error(
-                    "extra-tokens",
+                    Code::ExtraTokens,
                     format!(
                         "unexpected {} after the source string number of `#line`",
                         describe(&t.t)
