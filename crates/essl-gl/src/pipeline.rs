@@ -65,7 +65,7 @@ pub(crate) struct CachedPipeline {
 /// Pipelines, layouts and bind groups.
 #[derive(Default)]
 pub(crate) struct PipelineCache {
-    pipelines: HashMap<PipelineKey, Result<CachedPipeline, String>>,
+    pipelines: HashMap<PipelineKey, Result<CachedPipeline, Rejected>>,
     next_id: u64,
     group0_layouts: HashMap<(bool, usize), wgpu::BindGroupLayout>,
     group1_layouts: HashMap<Vec<SlotBinding>, wgpu::BindGroupLayout>,
@@ -73,10 +73,22 @@ pub(crate) struct PipelineCache {
     #[allow(clippy::type_complexity)]
     group1_groups:
         HashMap<(Vec<SlotBinding>, Vec<(wgpu::TextureView, wgpu::Sampler)>), wgpu::BindGroup>,
-    modules: HashMap<(u64, Vec<InputPatch>), Result<wgpu::ShaderModule, String>>,
+    modules: HashMap<(u64, Vec<InputPatch>), Result<wgpu::ShaderModule, Rejected>>,
     clear: HashMap<(wgpu::ColorWrites, bool), wgpu::RenderPipeline>,
     /// Pipelines created (for statistics and tests).
     pub(crate) created: u64,
+}
+
+/// Why wgpu refused a shader module or a pipeline: its validation message, kept as text
+/// because the cache keeps results and wgpu's error is not `Clone`.
+#[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
+pub(crate) enum Rejected {
+    /// wgpu's validation refused a shader module.
+    #[error("{0}")]
+    Module(String),
+    /// wgpu's validation refused a pipeline layout or a render pipeline.
+    #[error("{0}")]
+    Pipeline(String),
 }
 
 /// A shader module from a naga module, or wgpu's complaint.
@@ -84,7 +96,7 @@ pub(crate) fn create_module(
     gpu: &Gpu,
     module: naga::Module,
     label: &str,
-) -> Result<wgpu::ShaderModule, String> {
+) -> Result<wgpu::ShaderModule, Rejected> {
     let scope = gpu.device.push_error_scope(wgpu::ErrorFilter::Validation);
     let m = gpu
         .device
@@ -93,7 +105,7 @@ pub(crate) fn create_module(
             source: wgpu::ShaderSource::Naga(Cow::Owned(module)),
         });
     match pollster::block_on(scope.pop()) {
-        Some(e) => Err(e.to_string()),
+        Some(e) => Err(Rejected::Module(e.to_string())),
         None => Ok(m),
     }
 }
@@ -271,7 +283,7 @@ impl PipelineCache {
         gpu: &Gpu,
         program: &LinkedProgram,
         patches: &[InputPatch],
-    ) -> Result<wgpu::ShaderModule, String> {
+    ) -> Result<wgpu::ShaderModule, Rejected> {
         if patches.is_empty() {
             return Ok(program.vertex_module.clone());
         }
@@ -290,7 +302,7 @@ impl PipelineCache {
         gpu: &Gpu,
         key: &PipelineKey,
         program: &LinkedProgram,
-    ) -> Result<CachedPipeline, String> {
+    ) -> Result<CachedPipeline, Rejected> {
         if let Some(p) = self.pipelines.get(key) {
             return p.clone();
         }
@@ -304,7 +316,7 @@ impl PipelineCache {
         gpu: &Gpu,
         key: &PipelineKey,
         program: &LinkedProgram,
-    ) -> Result<CachedPipeline, String> {
+    ) -> Result<CachedPipeline, Rejected> {
         let vertex_module = self.vertex_module(gpu, program, &key.patches)?;
         let (default, blocks) = (
             program.layout.uniform_block.is_some(),
@@ -393,7 +405,7 @@ impl PipelineCache {
                 cache: None,
             });
         if let Some(e) = pollster::block_on(scope.pop()) {
-            return Err(e.to_string());
+            return Err(Rejected::Pipeline(e.to_string()));
         }
         self.next_id += 1;
         self.created += 1;
