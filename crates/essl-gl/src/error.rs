@@ -4,6 +4,7 @@ use crate::gl;
 
 /// Why [`Context::new`](crate::Context::new) failed.
 #[derive(Debug, thiserror::Error)]
+#[non_exhaustive]
 pub enum ContextError {
     /// No Vulkan adapter was found, not even a software one.
     #[error(

@@ -12,6 +12,7 @@ use crate::objects::{Buffer, Id, Program, Shader, Texture, VertexArray};
 /// A value returned by [`Context::get_parameter`], [`Context::get_shader_parameter`] and
 /// [`Context::get_program_parameter`]: what WebGL's `any` holds for that `pname`.
 #[derive(Clone, Debug, PartialEq)]
+#[non_exhaustive]
 pub enum Parameter {
     /// `GLboolean`.
     Bool(bool),

@@ -30,6 +30,7 @@ use crate::objects::Program;
 
 /// Why a scene could not be rendered.
 #[derive(Debug, thiserror::Error)]
+#[non_exhaustive]
 pub enum SceneRenderError {
     /// No context could be created (no Vulkan adapter, or a size the device refuses).
     #[error(transparent)]

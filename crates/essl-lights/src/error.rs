@@ -5,6 +5,7 @@ use thiserror::Error;
 
 /// Why a lit scene, a view or a comparison was refused.
 #[derive(Clone, Debug, Error)]
+#[non_exhaustive]
 pub enum LightsError {
     /// A number that must be finite is NaN or infinite.
     #[error("{what} must be finite, got {value}")]

@@ -7,6 +7,7 @@ use std::path::PathBuf;
 /// Bad input never panics: it gives one of these, whose message names the offending key
 /// (`mesh.cells`, `uniforms.u_light`, …) the way `webgl2-render.py` does.
 #[derive(Debug, thiserror::Error)]
+#[non_exhaustive]
 pub enum SceneError {
     /// A file (the scene or a shader) could not be read.
     #[error("cannot read {}: {source}", path.display())]
@@ -75,6 +76,7 @@ impl SceneError {
 
 /// Errors of the PNG and image-comparison helpers.
 #[derive(Debug, thiserror::Error)]
+#[non_exhaustive]
 pub enum ImageError {
     /// A PNG file could not be read or written.
     #[error("{}: {source}", path.display())]

@@ -43,6 +43,7 @@ pub(crate) use stage::sampler_types;
 /// Why lowering failed: a construct essl cannot express in naga IR (a limitation of essl,
 /// not an error in the shader), or naga's validator rejecting what essl produced (a bug).
 #[derive(Debug, Error, Clone, PartialEq, Eq)]
+#[non_exhaustive]
 pub enum LowerError {
     /// A valid construct essl does not lower yet.
     #[error("not supported by essl's lowering yet: {message}")]

@@ -11,6 +11,7 @@ pub use functions::builtin;
 
 /// Why a constant could not be folded.
 #[derive(Debug, PartialEq, Eq)]
+#[non_exhaustive]
 pub enum FoldError {
     /// Integer division or remainder by zero (the result is undefined).
     DivideByZero,
