@@ -12,6 +12,22 @@ use crate::interval::Interval;
 use crate::precision::Precisions;
 use crate::symbolic::{self, Sym};
 
+/// A `pow(x, y)` call (see [`Cx::pow_calls`]).
+pub struct PowCall<'a> {
+    /// The function's id.
+    pub id: usize,
+    /// The function.
+    pub f: &'a Function,
+    /// The call.
+    pub call: Handle<E>,
+    /// Its span.
+    pub span: Span,
+    /// Its base.
+    pub base: Handle<E>,
+    /// Its exponent.
+    pub exp: Handle<E>,
+}
+
 /// A shader analysed for the rules.
 pub struct Cx<'a> {
     /// The shader's text.
@@ -70,6 +86,38 @@ impl<'a> Cx<'a> {
             .ty
             .inner_with(&self.module.types)
             .scalar_kind()
+    }
+
+    /// Every `pow(x, y)` call with a span in the source: (function id, function, the call,
+    /// its span, its base, its exponent), base and exponent through [`Cx::operand`].
+    pub fn pow_calls(&self) -> Vec<PowCall<'a>> {
+        let mut out = Vec::new();
+        for (id, f) in self.functions() {
+            for (h, e) in f.expressions.iter() {
+                let E::Math {
+                    fun: Mf::Pow,
+                    arg,
+                    arg1: Some(y),
+                    ..
+                } = *e
+                else {
+                    continue;
+                };
+                let span = self.span(f, h);
+                if span.is_empty() {
+                    continue;
+                }
+                out.push(PowCall {
+                    id,
+                    f,
+                    call: h,
+                    span,
+                    base: self.operand(f, h, arg),
+                    exp: self.operand(f, h, y),
+                });
+            }
+        }
+        out
     }
 
     /// The source span of an expression.

@@ -1,8 +1,9 @@
 //! `pow-negative-base`: `pow(x, y)` whose base the shader's own arithmetic can make negative.
 
 use essl::diagnostic::{Diagnostic, Fix};
-use naga::{Expression as E, MathFunction as Mf};
+use naga::Expression as E;
 
+use super::context::PowCall;
 use super::rule::declare_rule;
 use super::Cx;
 use crate::value::Facts;
@@ -51,53 +52,44 @@ declare_rule! {
 }
 
 fn check_negative(cx: &Cx, out: &mut Vec<Diagnostic>) {
-    for (id, f) in cx.functions() {
-        for (h, e) in f.expressions.iter() {
-            let E::Math {
-                fun: Mf::Pow,
-                arg,
-                arg1: Some(y),
-                ..
-            } = *e
-            else {
-                continue;
-            };
-            let span = cx.span(f, h);
-            if span.is_empty() {
-                continue;
-            }
-            let base = cx.operand(f, h, arg);
-            let exp = cx.operand(f, h, y);
-            let Some(b) = cx.sound.num(id, base) else {
-                continue;
-            };
-            if b.hull().lo >= 0.0 || b.facts.has(Facts::NN) {
-                continue;
-            }
-            // Under the conditions the call runs in (`if (d > 0.0)`, `d > 0.0 ? pow(d, k) : 0.0`).
-            let Some(b) = cx.refined(f, id, base, &cx.guards(f, id, h)) else {
-                continue;
-            };
-            let bi = b.hull();
-            if bi.lo >= 0.0 || b.facts.has(Facts::NN) {
-                continue;
-            }
-            let bspan = cx.span(f, base);
-            let what = cx.what(f, id, base);
-            let label = if bi.lo.is_finite() {
-                format!("{what} can be as low as {}", super::fmt_num(bi.lo))
-            } else {
-                format!("{what} can be negative")
-            };
-            let d = Diagnostic::rule_warning(
-                PowNegativeBase::RULE.id,
-                "`pow` base can be negative, where `pow` is undefined (NaN on many GPUs)",
-                bspan,
-            )
-            .with_label(label)
-            .with_note("GLSL ES 3.00 §8.2: pow(x, y) is undefined if x < 0");
-            out.push(fix_negative(cx, f, id, span, base, exp, d));
+    for PowCall {
+        id,
+        f,
+        call: h,
+        span,
+        base,
+        exp,
+    } in cx.pow_calls()
+    {
+        let Some(b) = cx.sound.num(id, base) else {
+            continue;
+        };
+        if b.hull().lo >= 0.0 || b.facts.has(Facts::NN) {
+            continue;
         }
+        // Under the conditions the call runs in (`if (d > 0.0)`, `d > 0.0 ? pow(d, k) : 0.0`).
+        let Some(b) = cx.refined(f, id, base, &cx.guards(f, id, h)) else {
+            continue;
+        };
+        let bi = b.hull();
+        if bi.lo >= 0.0 || b.facts.has(Facts::NN) {
+            continue;
+        }
+        let bspan = cx.span(f, base);
+        let what = cx.what(f, id, base);
+        let label = if bi.lo.is_finite() {
+            format!("{what} can be as low as {}", super::fmt_num(bi.lo))
+        } else {
+            format!("{what} can be negative")
+        };
+        let d = Diagnostic::rule_warning(
+            PowNegativeBase::RULE.id,
+            "`pow` base can be negative, where `pow` is undefined (NaN on many GPUs)",
+            bspan,
+        )
+        .with_label(label)
+        .with_note("GLSL ES 3.00 §8.2: pow(x, y) is undefined if x < 0");
+        out.push(fix_negative(cx, f, id, span, base, exp, d));
     }
 }
 

@@ -1,8 +1,8 @@
 //! `pow-zero-base`: `pow(x, y)` whose base can be 0 while its exponent can be ≤ 0.
 
 use essl::diagnostic::{Diagnostic, Fix};
-use naga::{Expression as E, MathFunction as Mf};
 
+use super::context::PowCall;
 use super::rule::declare_rule;
 use super::{describe, Cx};
 use crate::value::Facts;
@@ -43,68 +43,58 @@ declare_rule! {
 }
 
 fn check_zero(cx: &Cx, out: &mut Vec<Diagnostic>) {
-    for (id, f) in cx.functions() {
-        for (h, e) in f.expressions.iter() {
-            let E::Math {
-                fun: Mf::Pow,
-                arg,
-                arg1: Some(y),
-                ..
-            } = *e
-            else {
-                continue;
-            };
-            let span = cx.span(f, h);
-            if span.is_empty() {
-                continue;
-            }
-            let base = cx.operand(f, h, arg);
-            let exp = cx.operand(f, h, y);
-            let (Some(b), Some(x)) = (cx.sound.num(id, base), cx.sound.num(id, exp)) else {
-                continue;
-            };
-            let (bi, xi) = (b.hull(), x.hull());
-            if bi.lo < 0.0 && !b.facts.has(Facts::NN) {
-                continue; // pow-negative-base says it
-            }
-            let base_zero = bi.contains(0.0) && !b.facts.has(Facts::POS);
-            let exp_nonpositive = xi.lo <= 0.0 && !x.facts.has(Facts::POS);
-            if !base_zero || !exp_nonpositive {
-                continue;
-            }
-            let g = cx.guards(f, id, h);
-            let (Some(b), Some(x)) = (cx.refined(f, id, base, &g), cx.refined(f, id, exp, &g))
-            else {
-                continue;
-            };
-            let (bi, xi) = (b.hull(), x.hull());
-            let base_zero =
-                bi.contains(0.0) && !b.facts.has(Facts::POS) && !cx.nonzero(f, id, base, &g);
-            let exp_nonpositive = xi.lo <= 0.0 && !x.facts.has(Facts::POS);
-            if !base_zero || !exp_nonpositive {
-                continue;
-            }
-            let bspan = cx.span(f, base);
-            let xspan = cx.span(f, exp);
-            let mut d = Diagnostic::rule_warning(
-                PowZeroBase::RULE.id,
-                "`pow` base can be 0 while the exponent can be ≤ 0, where `pow` is undefined",
-                bspan,
-            )
-            .with_label(format!("{} can be 0", cx.what(f, id, base)))
-            .with_note("GLSL ES 3.00 §8.2: pow(x, y) is undefined if x = 0 and y <= 0")
-            .with_help("keep the base above 0");
-            if !xspan.is_empty() {
-                d = d.with_secondary(xspan, format!("the exponent can be ≤ 0: {}", describe(xi)));
-            }
-            if !bspan.is_empty() {
-                d = d.with_fix(Fix::suggested(
-                    "wrap the base in `max(…, 1e-4)`",
-                    bspan,
-                    format!("max({}, 1e-4)", cx.text(bspan)),
-                ));
-            }
-            out.push(d);
+    for PowCall {
+        id,
+        f,
+        call: h,
+        span: _,
+        base,
+        exp,
+    } in cx.pow_calls()
+    {
+        let (Some(b), Some(x)) = (cx.sound.num(id, base), cx.sound.num(id, exp)) else {
+            continue;
+        };
+        let (bi, xi) = (b.hull(), x.hull());
+        if bi.lo < 0.0 && !b.facts.has(Facts::NN) {
+            continue; // pow-negative-base says it
         }
+        let base_zero = bi.contains(0.0) && !b.facts.has(Facts::POS);
+        let exp_nonpositive = xi.lo <= 0.0 && !x.facts.has(Facts::POS);
+        if !base_zero || !exp_nonpositive {
+            continue;
+        }
+        let g = cx.guards(f, id, h);
+        let (Some(b), Some(x)) = (cx.refined(f, id, base, &g), cx.refined(f, id, exp, &g)) else {
+            continue;
+        };
+        let (bi, xi) = (b.hull(), x.hull());
+        let base_zero =
+            bi.contains(0.0) && !b.facts.has(Facts::POS) && !cx.nonzero(f, id, base, &g);
+        let exp_nonpositive = xi.lo <= 0.0 && !x.facts.has(Facts::POS);
+        if !base_zero || !exp_nonpositive {
+            continue;
+        }
+        let bspan = cx.span(f, base);
+        let xspan = cx.span(f, exp);
+        let mut d = Diagnostic::rule_warning(
+            PowZeroBase::RULE.id,
+            "`pow` base can be 0 while the exponent can be ≤ 0, where `pow` is undefined",
+            bspan,
+        )
+        .with_label(format!("{} can be 0", cx.what(f, id, base)))
+        .with_note("GLSL ES 3.00 §8.2: pow(x, y) is undefined if x = 0 and y <= 0")
+        .with_help("keep the base above 0");
+        if !xspan.is_empty() {
+            d = d.with_secondary(xspan, format!("the exponent can be ≤ 0: {}", describe(xi)));
+        }
+        if !bspan.is_empty() {
+            d = d.with_fix(Fix::suggested(
+                "wrap the base in `max(…, 1e-4)`",
+                bspan,
+                format!("max({}, 1e-4)", cx.text(bspan)),
+            ));
+        }
+        out.push(d);
     }
 }
