@@ -37,25 +37,37 @@ pub struct RefDiff {
     pub worst: Option<(u32, u32)>,
 }
 
+/// An error unless `gpu` is `width` × `height`.
+fn same_size(gpu: &RgbaImage, width: u32, height: u32) -> Result<(), LightsError> {
+    if gpu.width != width || gpu.height != height {
+        return Err(LightsError::SizeMismatch {
+            a_width: gpu.width,
+            a_height: gpu.height,
+            b_width: width,
+            b_height: height,
+        });
+    }
+    Ok(())
+}
+
+/// The pixels a comparison with `reference` leaves out: its silhouettes when `options` ask,
+/// none otherwise.
+fn left_out(reference: &RefImage, options: CompareOptions) -> Vec<bool> {
+    if options.ignore_silhouettes {
+        reference.silhouette_mask(1)
+    } else {
+        vec![false; reference.pixels.len()]
+    }
+}
+
 /// Compares a GPU image (rows top first, as [`RgbaImage`] stores them) with a reference.
 pub fn compare_rgba8(
     gpu: &RgbaImage,
     reference: &RefImage,
     options: CompareOptions,
 ) -> Result<RefDiff, LightsError> {
-    if gpu.width != reference.width || gpu.height != reference.height {
-        return Err(LightsError::SizeMismatch {
-            a_width: gpu.width,
-            a_height: gpu.height,
-            b_width: reference.width,
-            b_height: reference.height,
-        });
-    }
-    let mask = if options.ignore_silhouettes {
-        reference.silhouette_mask(1)
-    } else {
-        vec![false; reference.pixels.len()]
-    };
+    same_size(gpu, reference.width, reference.height)?;
+    let mask = left_out(reference, options);
     let mut stats = ErrorStats::new(reference.width, reference.pixels.len());
     for (i, r) in reference.pixels.iter().enumerate() {
         if mask[i] {
@@ -258,14 +270,7 @@ pub fn compare_band_excluding(
     options: CompareOptions,
     exclude: &[bool],
 ) -> Result<RefDiff, LightsError> {
-    if gpu.width != band.width || gpu.height != band.height {
-        return Err(LightsError::SizeMismatch {
-            a_width: gpu.width,
-            a_height: gpu.height,
-            b_width: band.width,
-            b_height: band.height,
-        });
-    }
+    same_size(gpu, band.width, band.height)?;
     let mut mask = if options.ignore_silhouettes {
         band.midpoint().silhouette_mask(1)
     } else {
@@ -302,19 +307,8 @@ pub fn error_image(
     reference: &RefImage,
     options: CompareOptions,
 ) -> Result<RgbaImage, LightsError> {
-    if gpu.width != reference.width || gpu.height != reference.height {
-        return Err(LightsError::SizeMismatch {
-            a_width: gpu.width,
-            a_height: gpu.height,
-            b_width: reference.width,
-            b_height: reference.height,
-        });
-    }
-    let mask = if options.ignore_silhouettes {
-        reference.silhouette_mask(1)
-    } else {
-        vec![false; reference.pixels.len()]
-    };
+    same_size(gpu, reference.width, reference.height)?;
+    let mask = left_out(reference, options);
     let mut data = Vec::with_capacity(gpu.data.len());
     for (i, r) in reference.pixels.iter().enumerate() {
         let e = (0..4)
