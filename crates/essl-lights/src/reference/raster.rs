@@ -58,6 +58,11 @@ impl Camera {
         (a, b - a)
     }
 
+    /// How many [`TILE`]-pixel tiles cover the canvas across and down.
+    fn tiles(&self) -> (u32, u32) {
+        (self.size.0.div_ceil(TILE), self.size.1.div_ceil(TILE))
+    }
+
     /// `gl_FragCoord.xy` of pixel (`x`, `row`): its centre, whatever the offset.
     fn frag_coord(&self, x: u32, row: u32) -> DVec2 {
         DVec2::new(f64::from(x) + 0.5, f64::from(self.size.1 - 1 - row) + 0.5)
@@ -107,7 +112,7 @@ fn vertices(scene: &Scene) -> Result<Vec<VertexIn>, LightsError> {
 /// them when a vertex is behind the eye, none when it is wholly behind or off screen.
 fn tiles_of(camera: &Camera, verts: &[VertexIn], t: &Tri) -> Option<(u32, u32, u32, u32)> {
     let (w, h) = camera.size;
-    let (tw, th) = (w.div_ceil(TILE), h.div_ceil(TILE));
+    let (tw, th) = camera.tiles();
     let mut lo = DVec2::splat(f64::INFINITY);
     let mut hi = DVec2::splat(f64::NEG_INFINITY);
     let mut behind = 0;
@@ -145,8 +150,7 @@ fn tiles_of(camera: &Camera, verts: &[VertexIn], t: &Tri) -> Option<(u32, u32, u
 
 /// The triangles binned into [`TILE`]-pixel tiles by their window bounding box.
 fn bin(camera: &Camera, verts: &[VertexIn], tris: &[Tri]) -> Vec<Vec<usize>> {
-    let (w, h) = camera.size;
-    let (tw, th) = (w.div_ceil(TILE), h.div_ceil(TILE));
+    let (tw, th) = camera.tiles();
     let mut bins: Vec<Vec<usize>> = vec![Vec::new(); (tw * th) as usize];
     for (ti, t) in tris.iter().enumerate() {
         if let Some((x0, x1, y0, y1)) = tiles_of(camera, verts, t) {
@@ -240,7 +244,7 @@ pub(super) fn render_mesh(
         .collect();
     let bins = bin(camera, &verts, &tris);
     let (w, h) = (image.width, image.height);
-    let tw = w.div_ceil(TILE);
+    let (tw, _) = camera.tiles();
     let tests = (scene.cull_face(), scene.depth_test(), camera.mirror);
     let mut interp = vec![0.0; nv];
     for row in 0..h {
