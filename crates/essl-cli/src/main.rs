@@ -297,7 +297,7 @@ fn main() -> ExitCode {
     // directly instead of switching to a fresh stack segment per shader. The stack is reserved,
     // not touched: only the pages a compile uses are ever mapped.
     let _ = rayon::ThreadPoolBuilder::new()
-        .stack_size(2 * essl::shader::COMPILE_STACK)
+        .stack_size(2 * essl::COMPILE_STACK)
         .thread_name(|i| format!("essl-{i}"))
         .build_global();
     let matches = Cli::command().get_matches();

@@ -13,7 +13,7 @@
 use std::path::Path;
 
 use criterion::{criterion_group, criterion_main, BatchSize, Criterion, Throughput};
-use essl::preprocess::{preprocess, PreprocessOptions};
+use essl::passes::{preprocess, PreprocessOptions};
 use essl::program::LowerOptions;
 use essl::source::SourceFile;
 use essl::{Shader, Stage};
@@ -67,9 +67,9 @@ fn shaders() -> Vec<(String, Stage, String)> {
 struct Parsed {
     file: SourceFile,
     stage: Stage,
-    unit: essl::ast::TranslationUnit,
+    unit: essl::passes::TranslationUnit,
     invariant_all: bool,
-    version: essl::preprocess::Version,
+    version: essl::Version,
 }
 
 fn pp_options(stage: Stage) -> PreprocessOptions {
@@ -83,10 +83,10 @@ fn parse_all(set: &[(String, Stage, String)]) -> Vec<Parsed> {
     set.iter()
         .map(|(name, stage, text)| {
             let file = SourceFile::new(name.as_str(), text.as_str());
-            let pp = preprocess(&file, essl::lex::lex(&file), &pp_options(*stage));
+            let pp = preprocess(&file, essl::passes::lex(&file), &pp_options(*stage));
             let mut diags = Vec::new();
-            let tokens = essl::token::classify(pp.tokens, &mut diags);
-            let (unit, _) = essl::parse::parse(&file, tokens, *stage);
+            let tokens = essl::passes::classify(pp.tokens, &mut diags);
+            let (unit, _) = essl::passes::parse(&file, tokens, *stage);
             Parsed {
                 file,
                 stage: *stage,
@@ -103,7 +103,7 @@ fn checked(parsed: &[Parsed]) -> Vec<Shader> {
         .iter()
         .map(|p| {
             let (module, diagnostics) =
-                essl::check::check(&p.file, &p.unit, p.stage, p.invariant_all);
+                essl::passes::check(&p.file, &p.unit, p.stage, p.invariant_all);
             Shader {
                 file: p.file.clone(),
                 stage: p.stage,
@@ -131,7 +131,7 @@ fn bench_stages(c: &mut Criterion) {
     group.bench_function("1 lex + preprocess", |b| {
         b.iter(|| {
             for (file, stage) in &files {
-                let pp = preprocess(file, essl::lex::lex(file), &pp_options(*stage));
+                let pp = preprocess(file, essl::passes::lex(file), &pp_options(*stage));
                 std::hint::black_box(pp.tokens.len());
             }
         })
@@ -139,7 +139,7 @@ fn bench_stages(c: &mut Criterion) {
 
     let pps: Vec<_> = files
         .iter()
-        .map(|(file, stage)| preprocess(file, essl::lex::lex(file), &pp_options(*stage)).tokens)
+        .map(|(file, stage)| preprocess(file, essl::passes::lex(file), &pp_options(*stage)).tokens)
         .collect();
     group.bench_function("2 classify + parse", |b| {
         b.iter_batched(
@@ -147,8 +147,8 @@ fn bench_stages(c: &mut Criterion) {
             |pps| {
                 for ((file, stage), tokens) in files.iter().zip(pps) {
                     let mut diags = Vec::new();
-                    let tokens = essl::token::classify(tokens, &mut diags);
-                    std::hint::black_box(essl::parse::parse(file, tokens, *stage));
+                    let tokens = essl::passes::classify(tokens, &mut diags);
+                    std::hint::black_box(essl::passes::parse(file, tokens, *stage));
                 }
             },
             BatchSize::LargeInput,
@@ -159,7 +159,7 @@ fn bench_stages(c: &mut Criterion) {
     group.bench_function("3 check", |b| {
         b.iter(|| {
             for p in &parsed {
-                std::hint::black_box(essl::check::check(
+                std::hint::black_box(essl::passes::check(
                     &p.file,
                     &p.unit,
                     p.stage,

@@ -13,9 +13,6 @@
 
 use std::f64::consts::{FRAC_PI_2, PI};
 
-/// The largest finite `f32` (and so `highp float`).
-pub const F32_MAX: f64 = f32::MAX as f64;
-
 /// A closed interval of the extended reals, with `f32`-representable bounds.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Interval {

@@ -5,7 +5,7 @@
 //!
 //! The rules run on the validated naga IR that [`essl::compile`] produces, where every
 //! expression's span points into the user's text. A small interval analysis
-//! ([`analysis::Analysis`]) gives every expression a range per component and facts such as
+//! (`analysis::Analysis`) gives every expression a range per component and facts such as
 //! "unit length" or "non-negative whenever the uniforms are", so that guarded code —
 //! `pow(max(dot(n, h), 0.0), s)`, `acos(clamp(c, -1.0, 1.0))` — is not reported.
 //!
@@ -30,15 +30,15 @@
 
 #![warn(missing_docs)]
 
-pub mod analysis;
-pub mod interval;
-pub mod precision;
+mod analysis;
+mod interval;
+mod precision;
 pub mod precondition;
 mod rules;
 pub mod sarif;
-pub mod suppress;
-pub mod symbolic;
-pub mod value;
+mod suppress;
+mod symbolic;
+mod value;
 
 use essl::diagnostic::{self, Diagnostic, Severity};
 use essl::Shader;

@@ -112,6 +112,8 @@ impl Walker<'_> {
                 self.expr(e);
             }
             StmtKind::Return(None) => {}
+            // A statement kind added to essl later carries no precision of its own.
+            _ => {}
         }
     }
 
@@ -138,7 +140,7 @@ impl Walker<'_> {
             ExprKind::Unary(_, a) => self.expr(a),
             ExprKind::Binary(op, a, b) => {
                 let (x, y) = (self.expr(a), self.expr(b));
-                use essl::ast::BinaryOp as B;
+                use essl::hir::BinaryOp as B;
                 if matches!(
                     op,
                     B::Less
@@ -210,6 +212,8 @@ impl Walker<'_> {
                     .and_then(|bl| bl.members.get(*m))
                     .and_then(|x| x.2)
             }
+            // An expression kind added to essl later: no precision known.
+            _ => None,
         };
         if let Some(p) = p {
             if e.ty.scalar_kind().is_some() {

@@ -349,19 +349,6 @@ impl Val {
             Val::Any => Facts::NONE,
         }
     }
-
-    /// The same shape with the facts changed by `f` on every scalar and vector.
-    pub fn map_facts(&self, f: &impl Fn(Facts) -> Facts) -> Val {
-        match self {
-            Val::Num(n) => Val::Num(Num {
-                facts: f(n.facts),
-                ..*n
-            }),
-            Val::Agg(v) => Val::Agg(v.iter().map(|x| x.map_facts(f)).collect()),
-            Val::Arr(x) => Val::Arr(Box::new(x.map_facts(f))),
-            other => other.clone(),
-        }
-    }
 }
 
 #[cfg(test)]

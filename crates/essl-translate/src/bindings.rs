@@ -219,7 +219,7 @@ impl BindingMap {
                 .iter()
                 .flat_map(|b| &b.internal)
                 .map(|(k, offset)| Internal {
-                    value: internal_name(*k).into(),
+                    value: k.name().into(),
                     offset: *offset,
                 })
                 .collect(),
@@ -350,7 +350,7 @@ impl BindingMap {
             .flat_map(|(_, members)| members)
             .filter(|(n, _)| *n == "_essl_framebuffer_height")
             .map(|(_, offset)| Internal {
-                value: internal_name(InternalUniform::FramebufferHeight).into(),
+                value: InternalUniform::FramebufferHeight.name().into(),
                 offset: *offset,
             })
             .collect();
@@ -396,13 +396,6 @@ impl BindingMap {
         self.uniforms
             .iter()
             .find(|u| u.name == name || u.name.strip_suffix("[0]").is_some_and(|n| n == name))
-    }
-}
-
-/// The name an internal value has in the map.
-fn internal_name(k: InternalUniform) -> &'static str {
-    match k {
-        InternalUniform::FramebufferHeight => "framebuffer_height",
     }
 }
 

@@ -5,6 +5,7 @@ use crate::diagnostic_code::Code;
 use crate::source::{SourceFile, Span};
 
 /// How serious a diagnostic is.
+#[non_exhaustive]
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
 pub enum Severity {
     /// A warning: the shader still compiles.

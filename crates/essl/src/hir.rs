@@ -5,8 +5,8 @@
 
 use std::sync::Arc;
 
-use crate::ast::{BinaryOp, Interpolation};
-use crate::builtins::{BuiltinFn, BuiltinVar};
+pub use crate::ast::{BinaryOp, Interpolation};
+pub use crate::builtins::{BuiltinFn, BuiltinVar};
 use crate::source::Span;
 use crate::types::{Precision, StructDef, Type};
 use crate::Stage;
@@ -201,6 +201,7 @@ pub struct Stmt {
 }
 
 /// The kinds of statement.
+#[non_exhaustive]
 #[derive(Clone, Debug)]
 pub enum StmtKind {
     /// An expression evaluated for its effects.
@@ -303,6 +304,7 @@ pub enum UnaryOp {
 }
 
 /// The kinds of expression.
+#[non_exhaustive]
 #[derive(Clone, Debug)]
 pub enum ExprKind {
     /// A constant (literals, folded constant expressions, `const` variables).

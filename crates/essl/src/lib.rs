@@ -3,30 +3,42 @@
 //! A shader travels one way, and the modules are named for where it is:
 //! `source` → `lex` → `preprocess` → `token` → `parse` → `check` → `lower` (naga IR) →
 //! `reflect` → `link`.
+//!
+//! The public surface is what a user of the front end needs: [`compile`] a shader into a
+//! [`Shader`] (its [`diagnostic`]s, its checked tree [`hir`], its naga module), [`link::link`]
+//! two of them into a [`link::Program`], [`lower::lower_program`] a program into a
+//! [`program::ProgramLayout`], and the data those carry ([`source`], [`types`], [`reflect`]).
+//! The passes themselves are private; [`passes`] runs them one at a time for tools that time or
+//! fuzz them separately.
 
 #![warn(missing_docs)]
 
-pub mod ast;
-pub mod builtins;
-pub mod check;
 pub mod diagnostic;
 pub mod diagnostic_code;
 pub mod hir;
-pub mod lex;
 pub mod link;
 pub mod lower;
-pub mod parse;
-pub mod preprocess;
+pub mod passes;
 pub mod program;
 pub mod reflect;
 pub mod render;
-pub mod shader;
 pub mod snapshot;
 pub mod source;
-mod stack;
-pub mod token;
 pub mod types;
-pub mod usage;
+
+mod ast;
+mod builtins;
+mod check;
+mod lex;
+mod parse;
+mod preprocess;
+mod shader;
+mod stack;
+mod token;
+mod usage;
+
+pub use preprocess::Version;
+pub use shader::{compile, CompileOptions, Shader, COMPILE_STACK};
 
 /// A shader stage.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
@@ -55,5 +67,3 @@ impl Stage {
         }
     }
 }
-
-pub use shader::{compile, CompileOptions, Shader};

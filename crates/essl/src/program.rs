@@ -79,10 +79,21 @@ pub struct UniformBlock {
 }
 
 /// A value of the default uniform block that the renderer, not the application, provides.
+/// Deliberately exhaustive: a renderer must supply every one, so a new value is a change a
+/// renderer has to see.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum InternalUniform {
     /// The height of the framebuffer in pixels, as an `f32` (for `gl_FragCoord.y` flipping).
     FramebufferHeight,
+}
+
+impl InternalUniform {
+    /// A stable snake_case name for the value (`framebuffer_height`), for binding maps.
+    pub fn name(self) -> &'static str {
+        match self {
+            InternalUniform::FramebufferHeight => "framebuffer_height",
+        }
+    }
 }
 
 /// How one active uniform is stored, as WebGL enumerates it (`u_spots[0].position`).

@@ -1,10 +1,11 @@
 //! The preprocessor against dEQP's and WebGL's conformance cases, and rule by rule.
 
 use essl::diagnostic::{Applicability, Diagnostic, Severity};
-use essl::lex::{lex, PpKind};
-use essl::preprocess::{preprocess, ExtensionBehavior, PreprocessOptions, Preprocessed, Version};
+use essl::passes::{lex, PpKind};
+use essl::passes::{preprocess, ExtensionBehavior, PreprocessOptions, Preprocessed};
 use essl::source::SourceFile;
 use essl::Stage;
+use essl::Version;
 
 // ---------------------------------------------------------------------------------------------
 // Helpers

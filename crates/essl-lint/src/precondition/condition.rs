@@ -8,6 +8,7 @@ use super::value::num;
 use super::{Func, Precision, Term, UniformRef, Value};
 
 /// A condition on uniform values under which an expression of the shader is defined.
+#[non_exhaustive]
 #[derive(Clone, Debug, PartialEq)]
 pub enum Condition {
     /// `a < b` in every component (`smoothstep`'s edges).

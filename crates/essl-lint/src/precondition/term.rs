@@ -9,6 +9,7 @@ use super::value::num;
 use super::{Precision, UniformRef, Value};
 
 /// A binary arithmetic operator.
+#[non_exhaustive]
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum BinOp {
     /// `+`
@@ -22,6 +23,7 @@ pub enum BinOp {
 }
 
 /// A built-in function a [`Term`] may call.
+#[non_exhaustive]
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 #[allow(missing_docs)]
 pub enum Func {
@@ -141,6 +143,7 @@ impl Func {
 
 /// A value computed from uniforms and constants only: the same for every vertex and pixel of
 /// a draw, so a renderer can compute it from the values it is about to draw with.
+#[non_exhaustive]
 #[derive(Clone, Debug, PartialEq)]
 pub enum Term {
     /// A constant.

@@ -14,6 +14,7 @@ use crate::types::{Precision, ScalarKind, Type};
 use crate::Stage;
 
 /// A built-in variable.
+#[non_exhaustive]
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
 pub enum BuiltinVar {
     /// `out highp vec4 gl_Position` (vertex)
@@ -132,6 +133,7 @@ pub fn constant(name: &str) -> Option<i32> {
 macro_rules! ops {
     ($($op:ident = $name:literal,)*) => {
         /// A built-in function.
+        #[non_exhaustive]
         #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
         #[allow(missing_docs)]
         pub enum BuiltinFn { $($op,)* }
