@@ -6,6 +6,7 @@
 
 use std::ops::Range;
 
+use crate::bindings::BufferRange;
 use crate::context::{Context, Gpu, MAX_UNIFORM_BUFFER_BINDINGS};
 use crate::gl;
 use crate::objects::{Buffer, Id};
@@ -209,7 +210,7 @@ impl Context {
     pub fn create_buffer(&mut self) -> Buffer {
         Buffer {
             ctx: self.id,
-            id: self.buffers.insert(BufferObject::new()),
+            id: self.objects.buffers.insert(BufferObject::new()),
         }
     }
 
@@ -217,6 +218,7 @@ impl Context {
     pub fn is_buffer(&self, buffer: Buffer) -> bool {
         buffer.ctx == self.id
             && self
+                .objects
                 .buffers
                 .get(buffer.id)
                 .is_some_and(|b| b.kind.is_some())
@@ -227,7 +229,7 @@ impl Context {
         if !self.owns(buffer.ctx, function) {
             return None;
         }
-        if !self.buffers.is_live(buffer.id) {
+        if !self.objects.buffers.is_live(buffer.id) {
             self.error(gl::INVALID_OPERATION, function, "deleted buffer");
             return None;
         }
@@ -238,11 +240,11 @@ impl Context {
     /// target, `INVALID_OPERATION` for none bound.
     pub(crate) fn bound_buffer(&mut self, target: u32, function: &str) -> Option<Id> {
         let bound = match target {
-            gl::ARRAY_BUFFER => self.array_buffer,
             gl::ELEMENT_ARRAY_BUFFER => self.vao().element_buffer,
-            gl::COPY_READ_BUFFER => self.copy_read_buffer,
-            gl::COPY_WRITE_BUFFER => self.copy_write_buffer,
-            gl::UNIFORM_BUFFER => self.uniform_buffer,
+            gl::ARRAY_BUFFER
+            | gl::COPY_READ_BUFFER
+            | gl::COPY_WRITE_BUFFER
+            | gl::UNIFORM_BUFFER => self.bindings.buffer(target),
             _ => {
                 self.error(
                     gl::INVALID_ENUM,
@@ -303,7 +305,7 @@ impl Context {
             None => None,
         };
         if let Some(id) = id {
-            let obj = self.buffers.get_mut(id).expect("live");
+            let obj = self.objects.buffers.get_mut(id).expect("live");
             match (obj.kind, kind) {
                 (None, k) => obj.kind = Some(k.unwrap_or(BufferKind::Other)),
                 (Some(have), Some(want)) if have != want => {
@@ -314,16 +316,11 @@ impl Context {
                 _ => {}
             }
         }
-        match target {
-            gl::ARRAY_BUFFER => self.array_buffer = id,
-            gl::ELEMENT_ARRAY_BUFFER => {
-                let mut slot = self.vao().element_buffer;
-                self.buffers.retarget(&mut slot, id);
-                self.vao_mut().element_buffer = slot;
-            }
-            gl::COPY_READ_BUFFER => self.copy_read_buffer = id,
-            gl::COPY_WRITE_BUFFER => self.copy_write_buffer = id,
-            _ => self.uniform_buffer = id,
+        if target == gl::ELEMENT_ARRAY_BUFFER {
+            let vao = self.bindings.vertex_array();
+            self.objects.set_element_buffer(vao, id);
+        } else {
+            self.bindings.bind_buffer(target, id);
         }
         true
     }
@@ -352,6 +349,7 @@ impl Context {
             return self.error(gl::INVALID_ENUM, F, format_args!("usage 0x{usage:04X}"));
         }
         let b = self
+            .objects
             .buffers
             .get_any_mut(id)
             .expect("bound buffers are alive");
@@ -378,6 +376,7 @@ impl Context {
             return;
         };
         let b = self
+            .objects
             .buffers
             .get_any_mut(id)
             .expect("bound buffers are alive");
@@ -401,7 +400,11 @@ impl Context {
         let Some(id) = self.bound_buffer(target, F) else {
             return;
         };
-        let b = self.buffers.get_any(id).expect("bound buffers are alive");
+        let b = self
+            .objects
+            .buffers
+            .get_any(id)
+            .expect("bound buffers are alive");
         let Some(range) = byte_range(src_byte_offset, dst.len(), b.data.len()) else {
             return self.error(gl::INVALID_VALUE, F, "range outside the buffer");
         };
@@ -430,11 +433,11 @@ impl Context {
             return self.error(gl::INVALID_VALUE, F, "negative size");
         }
         let (src_kind, src_len) = {
-            let b = self.buffers.get_any(src).expect("bound");
+            let b = self.objects.buffers.get_any(src).expect("bound");
             (b.kind, b.data.len())
         };
         let (dst_kind, dst_len) = {
-            let b = self.buffers.get_any(dst).expect("bound");
+            let b = self.objects.buffers.get_any(dst).expect("bound");
             (b.kind, b.data.len())
         };
         let (Some(r), Some(w)) = (
@@ -449,8 +452,8 @@ impl Context {
         if src_kind.is_some() && dst_kind.is_some() && src_kind != dst_kind {
             return self.error(gl::INVALID_OPERATION, F, "index and non-index buffers");
         }
-        let bytes = self.buffers.get_any(src).expect("bound").data[r].to_vec();
-        let b = self.buffers.get_any_mut(dst).expect("bound");
+        let bytes = self.objects.buffers.get_any(src).expect("bound").data[r].to_vec();
+        let b = self.objects.buffers.get_any_mut(dst).expect("bound");
         b.data[w.clone()].copy_from_slice(&bytes);
         b.mark_dirty(w);
     }
@@ -459,38 +462,12 @@ impl Context {
     /// the bound vertex array; other vertex arrays that use it keep it alive, as in GL.
     /// Deleting a deleted buffer does nothing.
     pub fn delete_buffer(&mut self, buffer: Buffer) {
-        if !self.owns(buffer.ctx, "deleteBuffer") || !self.buffers.is_live(buffer.id) {
+        if !self.owns(buffer.ctx, "deleteBuffer") || !self.objects.buffers.is_live(buffer.id) {
             return;
         }
-        let id = buffer.id;
-        for slot in [
-            &mut self.array_buffer,
-            &mut self.copy_read_buffer,
-            &mut self.copy_write_buffer,
-            &mut self.uniform_buffer,
-        ] {
-            if *slot == Some(id) {
-                *slot = None;
-            }
-        }
-        for binding in &mut self.uniform_bindings {
-            if binding.is_some_and(|(b, _, _)| b == id) {
-                *binding = None;
-            }
-        }
-        let mut element = self.vao().element_buffer;
-        if element == Some(id) {
-            self.buffers.retarget(&mut element, None);
-            self.vao_mut().element_buffer = None;
-        }
-        for i in 0..self.max_vertex_attribs as usize {
-            let mut slot = self.vao().attribs[i].buffer;
-            if slot == Some(id) {
-                self.buffers.retarget(&mut slot, None);
-                self.vao_mut().attribs[i].buffer = None;
-            }
-        }
-        self.buffers.delete(id);
+        self.bindings.forget_buffer(buffer.id);
+        let vao = self.bindings.vertex_array();
+        self.objects.delete_buffer(buffer.id, vao);
     }
 
     /// Binds a whole buffer to indexed binding point `index` of `UNIFORM_BUFFER` (and to the
@@ -574,14 +551,22 @@ impl Context {
         }
         // Also binds the generic binding point, with bind_buffer's checks.
         if self.bind_buffer_checked(gl::UNIFORM_BUFFER, buffer, function) {
-            self.uniform_bindings[index as usize] = buffer.map(|b| (b.id, offset, size));
+            let range = buffer.map(|b| BufferRange {
+                buffer: b.id,
+                offset,
+                size,
+            });
+            self.bindings.bind_uniform_range(index as usize, range);
         }
     }
 
     /// The size in bytes of the buffer bound to `target` (`getBufferParameter(BUFFER_SIZE)`).
     pub fn get_buffer_size(&mut self, target: u32) -> Option<u64> {
         let id = self.bound_buffer(target, "getBufferParameter")?;
-        self.buffers.get_any(id).map(|b| b.data.len() as u64)
+        self.objects
+            .buffers
+            .get_any(id)
+            .map(|b| b.data.len() as u64)
     }
 }
 

@@ -3,16 +3,15 @@
 
 use std::sync::{Arc, Mutex};
 
-use crate::buffer::BufferObject;
+use crate::bindings::Bindings;
+use crate::caches::Caches;
 use crate::error::{error_name, ContextError, ErrorState};
 use crate::frame::Frame;
 use crate::gl;
-use crate::objects::{next_context_id, Id, Table};
-use crate::pipeline::PipelineCache;
-use crate::program::{ProgramObject, ShaderObject};
+use crate::objects::{next_context_id, Objects};
+use crate::program::Linker;
 use crate::state::{PixelStore, RenderState};
-use crate::texture::{Dummies, SamplerCache, TextureObject, TextureUnit};
-use crate::vertex_array::{GenericAttrib, VertexArrayObject};
+use crate::vertex_array::VertexArrayObject;
 
 /// The colour format of the default framebuffer: 8-bit RGBA, linear (not sRGB), as WebGL's
 /// default drawing buffer.
@@ -54,6 +53,13 @@ pub(crate) struct DefaultFramebuffer {
     pub(crate) depth_view: wgpu::TextureView,
 }
 
+/// Limits of the context that depend on the device.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Limits {
+    /// `MAX_VERTEX_ATTRIBS`: 16, or fewer where the device has fewer vertex buffers.
+    pub(crate) max_vertex_attribs: u32,
+}
+
 /// A WebGL2 rendering context drawing into an offscreen framebuffer, on wgpu's Vulkan backend.
 ///
 /// Method names are WebGL2's in snake_case and enums are GL's `u32` constants from
@@ -62,45 +68,28 @@ pub(crate) struct DefaultFramebuffer {
 ///
 /// Commands are recorded into one command encoder and submitted when the context needs the
 /// GPU to have executed them ([`Context::read_pixels`], [`Context::finish`], [`Context::flush`]).
+///
+/// The context is a few owned parts, each in its module and each keeping its own invariants:
+/// the objects and the references between them ([`Objects`]), what is bound ([`Bindings`]),
+/// the fixed-function state ([`RenderState`], [`PixelStore`]), the batch being recorded
+/// ([`Frame`]), derived GPU objects ([`Caches`]), the linker's settings ([`Linker`]) and the
+/// uniform-value checks ([`Validation`](crate::validation::Validation)).
 pub struct Context {
     pub(crate) id: u32,
     pub(crate) gpu: Gpu,
+    pub(crate) limits: Limits,
     pub(crate) errors: ErrorState,
     pub(crate) backend_errors: Arc<Mutex<Vec<String>>>,
     pub(crate) fb: DefaultFramebuffer,
     pub(crate) frame: Frame,
-
-    pub(crate) buffers: Table<BufferObject>,
-    pub(crate) textures: Table<TextureObject>,
-    pub(crate) vertex_arrays: Table<VertexArrayObject>,
-    pub(crate) programs: Table<ProgramObject>,
-    pub(crate) shaders: Table<ShaderObject>,
-
-    pub(crate) array_buffer: Option<Id>,
-    pub(crate) copy_read_buffer: Option<Id>,
-    pub(crate) copy_write_buffer: Option<Id>,
-    pub(crate) uniform_buffer: Option<Id>,
-    /// Indexed `UNIFORM_BUFFER` bindings: buffer, offset, size (`None`: the whole buffer).
-    pub(crate) uniform_bindings: Vec<Option<(Id, u64, Option<u64>)>>,
-    pub(crate) default_vao: VertexArrayObject,
-    pub(crate) bound_vao: Option<Id>,
-    pub(crate) generic_attribs: Vec<GenericAttrib>,
-    pub(crate) active_texture: u32,
-    pub(crate) texture_units: Vec<TextureUnit>,
-    pub(crate) current_program: Option<Id>,
+    pub(crate) objects: Objects,
+    pub(crate) bindings: Bindings,
     pub(crate) state: RenderState,
     pub(crate) pixel_store: PixelStore,
-
-    pub(crate) pipelines: PipelineCache,
-    pub(crate) samplers: SamplerCache,
-    pub(crate) dummies: Dummies,
-    pub(crate) max_vertex_attribs: u32,
-    pub(crate) link_serial: u64,
-    pub(crate) readback: Option<wgpu::Buffer>,
+    pub(crate) caches: Caches,
+    pub(crate) linker: Linker,
     /// The uniform-value checks ([`Context::set_validation`]) and their warnings.
     pub(crate) validation: crate::validation::Validation,
-    /// What every program `link_program` lowers goes through ([`Context::set_program_filter`]).
-    pub(crate) program_filter: Option<ProgramFilter>,
 }
 
 /// A step between lowering and installing a program: see [`Context::set_program_filter`].
@@ -173,36 +162,18 @@ impl Context {
         let frame = Frame::new(&gpu);
         Ok(Context {
             id: next_context_id(),
+            limits: Limits { max_vertex_attribs },
             errors: ErrorState::default(),
             backend_errors,
             fb,
             frame,
-            buffers: Table::default(),
-            textures: Table::default(),
-            vertex_arrays: Table::default(),
-            programs: Table::default(),
-            shaders: Table::default(),
-            array_buffer: None,
-            copy_read_buffer: None,
-            copy_write_buffer: None,
-            uniform_buffer: None,
-            uniform_bindings: vec![None; MAX_UNIFORM_BUFFER_BINDINGS as usize],
-            default_vao: VertexArrayObject::new(max_vertex_attribs),
-            bound_vao: None,
-            generic_attribs: vec![GenericAttrib::default(); max_vertex_attribs as usize],
-            active_texture: 0,
-            texture_units: vec![TextureUnit::default(); MAX_TEXTURE_UNITS as usize],
-            current_program: None,
-            state: RenderState::new(width, height),
+            objects: Objects::new(max_vertex_attribs),
+            bindings: Bindings::new(MAX_UNIFORM_BUFFER_BINDINGS, MAX_TEXTURE_UNITS),
+            state: RenderState::new(width, height, max_vertex_attribs),
             pixel_store: PixelStore::default(),
-            pipelines: PipelineCache::default(),
-            samplers: SamplerCache::default(),
-            dummies: Dummies::default(),
-            max_vertex_attribs,
-            link_serial: 0,
-            readback: None,
+            caches: Caches::default(),
+            linker: Linker::default(),
             validation: Default::default(),
-            program_filter: None,
             gpu,
         })
     }
@@ -261,20 +232,12 @@ impl Context {
 
     /// The vertex array object that is bound (the default one for `None`).
     pub(crate) fn vao(&self) -> &VertexArrayObject {
-        match self.bound_vao.and_then(|id| self.vertex_arrays.get_any(id)) {
-            Some(v) => v,
-            None => &self.default_vao,
-        }
+        self.objects.vertex_array(self.bindings.vertex_array())
     }
 
-    /// Mutable [`Context::vao`].
+    /// Mutable [`Context::vao`] (for the state that holds no reference).
     pub(crate) fn vao_mut(&mut self) -> &mut VertexArrayObject {
-        match self.bound_vao {
-            Some(id) if self.vertex_arrays.get_any(id).is_some() => {
-                self.vertex_arrays.get_any_mut(id).expect("checked above")
-            }
-            _ => &mut self.default_vao,
-        }
+        self.objects.vertex_array_mut(self.bindings.vertex_array())
     }
 
     /// Checks that a handle belongs to this context, recording `INVALID_OPERATION` if not.

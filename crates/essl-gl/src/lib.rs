@@ -62,7 +62,9 @@
 
 pub mod gl;
 
+mod bindings;
 mod buffer;
+mod caches;
 mod context;
 mod draw;
 mod error;

@@ -138,15 +138,20 @@ impl Context {
     fn read_rgba8(&mut self, x: u32, y: u32, w: u32, h: u32) -> Vec<u8> {
         let padded = (w * 4).div_ceil(ROW_ALIGN) * ROW_ALIGN;
         let size = padded as u64 * h as u64;
-        if self.readback.as_ref().is_none_or(|b| b.size() < size) {
-            self.readback = Some(self.gpu.device.create_buffer(&wgpu::BufferDescriptor {
+        if self
+            .caches
+            .readback
+            .as_ref()
+            .is_none_or(|b| b.size() < size)
+        {
+            self.caches.readback = Some(self.gpu.device.create_buffer(&wgpu::BufferDescriptor {
                 label: Some("essl-gl readback"),
                 size: size.next_power_of_two(),
                 usage: wgpu::BufferUsages::COPY_DST | wgpu::BufferUsages::MAP_READ,
                 mapped_at_creation: false,
             }));
         }
-        let buffer = self.readback.clone().expect("made above");
+        let buffer = self.caches.readback.clone().expect("made above");
         let top = self.fb.height - (y + h);
         let color = &self.fb.color;
         self.frame.submit(&self.gpu, &self.fb, |encoder| {

@@ -3,6 +3,7 @@
 
 use crate::context::Context;
 use crate::gl;
+use crate::vertex_array::GenericAttrib;
 
 /// The fixed-function state of a context, with GL's initial values.
 #[derive(Clone, Debug)]
@@ -38,10 +39,15 @@ pub(crate) struct RenderState {
     pub(crate) sample_alpha_to_coverage: bool,
     pub(crate) sample_coverage: bool,
     pub(crate) line_width: f32,
+    /// The current value of each vertex attribute (`vertexAttrib4f`…), read by a draw where
+    /// the attribute's array is disabled.
+    pub(crate) generic_attribs: Vec<GenericAttrib>,
 }
 
 impl RenderState {
-    pub(crate) fn new(width: u32, height: u32) -> Self {
+    /// GL's initial state for a `width` × `height` framebuffer and `attribs` vertex
+    /// attributes.
+    pub(crate) fn new(width: u32, height: u32, attribs: u32) -> Self {
         RenderState {
             viewport: [0, 0, width as i32, height as i32],
             scissor: [0, 0, width as i32, height as i32],
@@ -74,6 +80,7 @@ impl RenderState {
             sample_alpha_to_coverage: false,
             sample_coverage: false,
             line_width: 1.0,
+            generic_attribs: vec![GenericAttrib::default(); attribs as usize],
         }
     }
 }

@@ -58,15 +58,19 @@ impl Context {
             }
         }
         let values = [r, g, b, a, s.clear_depth, 0.0, 0.0, 0.0];
-        let pipeline = self.pipelines.clear_pipeline(&self.gpu, write_mask, depth);
+        let pipeline = self
+            .caches
+            .pipelines
+            .clear_pipeline(&self.gpu, write_mask, depth);
         let align = self.gpu.limits.min_uniform_buffer_offset_alignment as u64;
         let alloc = self
             .frame
             .arena
             .push(&self.gpu, bytemuck::cast_slice(&values), align);
-        let group = self
-            .pipelines
-            .group0(&self.gpu, Some((alloc.chunk, &alloc.buffer, 32)), &[]);
+        let group =
+            self.caches
+                .pipelines
+                .group0(&self.gpu, Some((alloc.chunk, &alloc.buffer, 32)), &[]);
         let (w, h) = (self.fb.width as f32, self.fb.height as f32);
         self.frame.pass(&self.gpu, &self.fb);
         let frame = &mut self.frame;

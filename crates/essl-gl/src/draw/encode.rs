@@ -75,6 +75,7 @@ impl Context {
         let serial = self.frame.serial;
         let gpu = &self.gpu;
         let b = self
+            .objects
             .buffers
             .get_any_mut(buffer)
             .expect("attached buffers are alive");
@@ -206,6 +207,7 @@ impl Context {
             }
             (Indices::Elements { buffer, ty, offset }, Emulated::None) => {
                 let b = self
+                    .objects
                     .buffers
                     .get_any_mut(*buffer)
                     .expect("bound buffers are alive");
@@ -229,6 +231,7 @@ impl Context {
             }
             (Indices::Elements { buffer, ty, offset }, how) => {
                 let b = self
+                    .objects
                     .buffers
                     .get_any(*buffer)
                     .expect("bound buffers are alive");
@@ -266,12 +269,13 @@ impl Context {
             match plan.texture {
                 Some((id, c)) => {
                     let t = self
+                        .objects
                         .textures
                         .get_any_mut(id)
                         .expect("bound textures are alive");
                     let view = t.gpu_view(gpu, serial, &c);
                     let key = t.sampler_key(shadow);
-                    let sampler = self.samplers.get(&gpu.device, key);
+                    let sampler = self.caches.samplers.get(&gpu.device, key);
                     slot_bindings.push(SlotBinding {
                         dim: plan.dim,
                         kind: plan.kind,
@@ -280,8 +284,9 @@ impl Context {
                     resources.push((view, sampler));
                 }
                 None => {
-                    let view = self.dummies.get(gpu, plan.dim, plan.kind);
+                    let view = self.caches.dummies.get(gpu, plan.dim, plan.kind);
                     let sampler = self
+                        .caches
                         .samplers
                         .get(&gpu.device, SamplerKey::placeholder(shadow));
                     slot_bindings.push(SlotBinding {
@@ -304,9 +309,8 @@ impl Context {
         let gpu = &self.gpu;
         let height = self.fb.height as f32;
         let linked = self
-            .programs
-            .get_any_mut(pid)
-            .and_then(|p| p.linked.as_mut())
+            .objects
+            .linked_mut(pid)
             .expect("current programs are linked");
         let block = linked.layout.uniform_block.as_ref()?;
         for (what, offset) in &block.internal {
@@ -366,6 +370,7 @@ impl Context {
             .iter()
             .map(|&(id, offset, size)| {
                 let b = self
+                    .objects
                     .buffers
                     .get_any_mut(id)
                     .expect("bound buffers are alive");
@@ -377,11 +382,11 @@ impl Context {
             let arena = default
                 .as_ref()
                 .map(|(chunk, buffer, _, size)| (*chunk, buffer, *size));
-            let group = self.pipelines.group0(gpu, arena, &block_buffers);
+            let group = self.caches.pipelines.group0(gpu, arena, &block_buffers);
             group0 = Some((group, default.as_ref().map(|d| d.2)));
         }
         let group1 = (!slot_bindings.is_empty())
-            .then(|| self.pipelines.group1(gpu, &slot_bindings, resources));
+            .then(|| self.caches.pipelines.group1(gpu, &slot_bindings, resources));
         Groups {
             group0,
             group1,

@@ -6,6 +6,7 @@
 use essl::types::{SamplerDim, ScalarKind, Type};
 
 use super::{SlotPlan, Source};
+use crate::bindings::BufferRange;
 use crate::context::Context;
 use crate::gl;
 use crate::objects::Id;
@@ -116,15 +117,18 @@ impl Context {
     /// `pid`; a block without a buffer, or with too small a range → `INVALID_OPERATION`.
     pub(super) fn gather_blocks(&mut self, pid: Id, f: &str) -> Option<Vec<(Id, u64, u64)>> {
         let linked = self
-            .programs
-            .get_any(pid)
-            .and_then(|p| p.linked.as_ref())
+            .objects
+            .linked(pid)
             .expect("current programs are linked");
         // Uniform blocks read the buffer ranges bound to their binding points.
         let mut blocks = Vec::new();
         for (i, block) in linked.layout.blocks.iter().enumerate() {
             let point = linked.block_bindings[i] as usize;
-            let Some((buffer, offset, size)) = self.uniform_bindings.get(point).copied().flatten()
+            let Some(BufferRange {
+                buffer,
+                offset,
+                size,
+            }) = self.bindings.uniform_range(point)
             else {
                 let msg = format!(
                     "uniform block {} has no buffer at binding point {point}",
@@ -133,6 +137,7 @@ impl Context {
                 return self.fail(gl::INVALID_OPERATION, f, msg);
             };
             let len = self
+                .objects
                 .buffers
                 .get_any(buffer)
                 .map_or(0, |b| b.data.len() as u64);
@@ -157,9 +162,8 @@ impl Context {
         f: &str,
     ) -> Option<Vec<(ShaderInput, Source)>> {
         let linked = self
-            .programs
-            .get_any(pid)
-            .and_then(|p| p.linked.as_ref())
+            .objects
+            .linked(pid)
             .expect("current programs are linked");
         let mut sources = Vec::new();
         for input in &linked.inputs {
@@ -184,7 +188,7 @@ impl Context {
                     feed,
                 }
             } else {
-                let g = self.generic_attribs[input.location as usize];
+                let g = self.state.generic_attribs[input.location as usize];
                 let kind = match g {
                     GenericAttrib::Float(_) => ValueKind::Float,
                     GenericAttrib::Int(_) => ValueKind::Sint,
@@ -208,9 +212,8 @@ impl Context {
     /// types, and a complete texture must match its sampler's kind (`INVALID_OPERATION`).
     pub(super) fn gather_samplers(&mut self, pid: Id, f: &str) -> Option<Vec<SlotPlan>> {
         let linked = self
-            .programs
-            .get_any(pid)
-            .and_then(|p| p.linked.as_ref())
+            .objects
+            .linked(pid)
             .expect("current programs are linked");
         let mut slot_plans = Vec::new();
         let mut unit_targets: Vec<(u32, u32)> = Vec::new();
@@ -238,14 +241,13 @@ impl Context {
                 (false, ScalarKind::Uint) => SampleKind::Uint,
                 _ => SampleKind::Float,
             };
-            let texture = self.texture_units[unit as usize]
-                .get(target)
-                .and_then(|id| {
-                    self.textures
-                        .get_any(id)
-                        .and_then(|t| t.completeness())
-                        .map(|c| (id, c))
-                });
+            let texture = self.bindings.texture(unit, target).and_then(|id| {
+                self.objects
+                    .textures
+                    .get_any(id)
+                    .and_then(|t| t.completeness())
+                    .map(|c| (id, c))
+            });
             if let Some((_, c)) = &texture {
                 if c.format.kind() != kind {
                     let msg = format!("texture on unit {unit} does not match its sampler's type");
@@ -264,9 +266,8 @@ impl Context {
     /// Checks that program `pid` writes floats to the (normalized) default framebuffer.
     pub(super) fn check_output(&mut self, pid: Id, f: &str) -> Option<()> {
         let linked = self
-            .programs
-            .get_any(pid)
-            .and_then(|p| p.linked.as_ref())
+            .objects
+            .linked(pid)
             .expect("current programs are linked");
         if let Some((kind, _)) = linked.output0 {
             if kind != ValueKind::Float {

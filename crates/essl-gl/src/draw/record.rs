@@ -89,11 +89,10 @@ impl Context {
         let groups = self.bind_groups(&call);
         let (key, values) = self.pipeline_key(&call, vertex.slots, vertex.patches, &range, &groups);
         let linked = self
-            .programs
-            .get_any_mut(call.program)
-            .and_then(|p| p.linked.as_mut())
+            .objects
+            .linked_mut(call.program)
             .expect("current programs are linked");
-        let pipeline = match self.pipelines.pipeline(&self.gpu, &key, linked) {
+        let pipeline = match self.caches.pipelines.pipeline(&self.gpu, &key, linked) {
             Ok(p) => p,
             Err(e) => {
                 self.errors.record(gl::INVALID_OPERATION, || {
@@ -124,9 +123,8 @@ impl Context {
             None
         };
         let program = self
-            .programs
-            .get_any(call.program)
-            .and_then(|p| p.linked.as_ref())
+            .objects
+            .linked(call.program)
             .expect("current programs are linked")
             .serial;
         let s = &self.state;

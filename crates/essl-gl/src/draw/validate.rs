@@ -36,7 +36,7 @@ impl Context {
             Some((ty, offset)) => Some(self.check_index_args(ty, offset, f)?),
             None => None,
         };
-        let Some(pid) = self.current_program else {
+        let Some(pid) = self.bindings.program() else {
             return self.fail(gl::INVALID_OPERATION, f, "no program in use");
         };
         let indices = match index_info {
@@ -161,6 +161,7 @@ impl Context {
         };
         let size = index_size(ty).expect("checked");
         let b = self
+            .objects
             .buffers
             .get_any_mut(buffer)
             .expect("bound buffers are alive");
@@ -213,6 +214,7 @@ impl Context {
             };
             let Some(last) = last else { continue };
             let len = self
+                .objects
                 .buffers
                 .get_any(*buffer)
                 .expect("attached buffers are alive")

@@ -20,11 +20,14 @@ mod shader;
 mod uniform;
 
 pub(crate) use interface::{main_entry, type_shape};
+pub(crate) use link::Linker;
 pub(crate) use uniform::{find_uniform, uniform_shape};
 
 use essl::program::ProgramLayout;
 
-use crate::objects::Id;
+use crate::context::Context;
+use crate::gl;
+use crate::objects::{Id, Program};
 
 /// The scalar kind of a shader input or output.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
@@ -90,4 +93,21 @@ pub(crate) struct LinkedProgram {
     pub(crate) sources: Option<Box<crate::validation::LinkedSources>>,
     /// The runtime checks of uniform values, built at the first draw with validation on.
     pub(crate) checks: Option<Box<crate::validation::ProgramChecks>>,
+}
+
+impl Context {
+    /// The last successful link of `program`; `None` with WebGL's error otherwise (a foreign
+    /// or deleted program, or `INVALID_OPERATION` for one that is not linked).
+    pub(crate) fn linked_program(
+        &mut self,
+        program: Program,
+        function: &str,
+    ) -> Option<&mut LinkedProgram> {
+        let id = self.program_id(program, function)?;
+        if self.objects.linked(id).is_none() {
+            self.error(gl::INVALID_OPERATION, function, "program is not linked");
+            return None;
+        }
+        self.objects.linked_mut(id)
+    }
 }

@@ -20,7 +20,11 @@ impl Context {
         let Some(id) = self.bound_texture(target, F) else {
             return;
         };
-        let t = self.textures.get(id).expect("bound textures are live");
+        let t = self
+            .objects
+            .textures
+            .get(id)
+            .expect("bound textures are live");
         let (base, _) = t.level_range();
         let faces = if target == gl::TEXTURE_CUBE_MAP { 6 } else { 1 };
         let Some(first) = t.level(0, base).cloned() else {
@@ -51,7 +55,11 @@ impl Context {
         if let Some(n) = t.immutable_levels {
             last = last.min(n - 1);
         }
-        let t = self.textures.get_mut(id).expect("bound textures are live");
+        let t = self
+            .objects
+            .textures
+            .get_mut(id)
+            .expect("bound textures are live");
         for face in 0..faces {
             let mut src = t.level(face, base).cloned().expect("checked");
             for level in base + 1..=last {

@@ -56,7 +56,7 @@ impl Context {
     pub fn create_texture(&mut self) -> Texture {
         Texture {
             ctx: self.id,
-            id: self.textures.insert(TextureObject::new()),
+            id: self.objects.textures.insert(TextureObject::new()),
         }
     }
 
@@ -64,6 +64,7 @@ impl Context {
     pub fn is_texture(&self, texture: Texture) -> bool {
         texture.ctx == self.id
             && self
+                .objects
                 .textures
                 .get(texture.id)
                 .is_some_and(|t| t.target.is_some())
@@ -73,7 +74,7 @@ impl Context {
     /// (`activeTexture`): `TEXTURE0 + i` for `i` below 32, else `INVALID_ENUM`.
     pub fn active_texture(&mut self, texture: u32) {
         match texture.checked_sub(gl::TEXTURE0) {
-            Some(i) if i < MAX_TEXTURE_UNITS => self.active_texture = i,
+            Some(i) if i < MAX_TEXTURE_UNITS => self.bindings.set_active_unit(i),
             _ => self.error(
                 gl::INVALID_ENUM,
                 "activeTexture",
@@ -96,7 +97,7 @@ impl Context {
                 if !self.owns(t.ctx, F) {
                     return;
                 }
-                let Some(obj) = self.textures.get_mut(t.id) else {
+                let Some(obj) = self.objects.textures.get_mut(t.id) else {
                     return self.error(gl::INVALID_OPERATION, F, "deleted texture");
                 };
                 match obj.target {
@@ -113,32 +114,21 @@ impl Context {
                 Some(t.id)
             }
         };
-        *self.texture_units[self.active_texture as usize].slot(target) = id;
+        self.bindings.bind_texture(target, id);
     }
 
     /// Deletes a texture (`deleteTexture`), unbinding it from every unit.
     pub fn delete_texture(&mut self, texture: Texture) {
-        if !self.owns(texture.ctx, "deleteTexture") || !self.textures.is_live(texture.id) {
+        if !self.owns(texture.ctx, "deleteTexture") || !self.objects.textures.is_live(texture.id) {
             return;
         }
-        for unit in &mut self.texture_units {
-            for slot in [
-                &mut unit.d2,
-                &mut unit.cube,
-                &mut unit.d3,
-                &mut unit.d2_array,
-            ] {
-                if *slot == Some(texture.id) {
-                    *slot = None;
-                }
-            }
-        }
-        self.textures.delete(texture.id);
+        self.bindings.forget_texture(texture.id);
+        self.objects.delete_texture(texture.id);
     }
 
     /// The texture bound to `target` of the active unit, or `INVALID_OPERATION`.
     fn bound_texture(&mut self, target: u32, function: &str) -> Option<Id> {
-        let id = self.texture_units[self.active_texture as usize].get(target);
+        let id = self.bindings.texture(self.bindings.active_unit(), target);
         if id.is_none() {
             self.error(
                 gl::INVALID_OPERATION,

@@ -70,6 +70,7 @@ impl Context {
             );
         }
         let p = &mut self
+            .objects
             .textures
             .get_mut(id)
             .expect("bound textures are live")

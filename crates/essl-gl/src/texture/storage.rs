@@ -88,7 +88,11 @@ impl Context {
         let Some(id) = self.bound_texture(target, function) else {
             return;
         };
-        let t = self.textures.get_mut(id).expect("bound textures are live");
+        let t = self
+            .objects
+            .textures
+            .get_mut(id)
+            .expect("bound textures are live");
         if t.immutable_levels.is_some() {
             return self.error(
                 gl::INVALID_OPERATION,

@@ -289,6 +289,7 @@ impl Context {
             return;
         };
         if self
+            .objects
             .textures
             .get(id)
             .is_some_and(|t| t.immutable_levels.is_some())
@@ -313,7 +314,11 @@ impl Context {
             }
             None => vec![0; w as usize * h as usize * d as usize * f.texel_size()],
         };
-        let t = self.textures.get_mut(id).expect("bound textures are live");
+        let t = self
+            .objects
+            .textures
+            .get_mut(id)
+            .expect("bound textures are live");
         t.set_level(
             face,
             level as u32,
@@ -412,6 +417,7 @@ impl Context {
             return self.error(gl::INVALID_VALUE, function, "negative level");
         }
         let Some(l) = self
+            .objects
             .textures
             .get(id)
             .and_then(|t| t.level(face, level as u32))
@@ -444,7 +450,11 @@ impl Context {
         if w == 0 || h == 0 || d == 0 {
             return;
         }
-        let t = self.textures.get_mut(id).expect("bound textures are live");
+        let t = self
+            .objects
+            .textures
+            .get_mut(id)
+            .expect("bound textures are live");
         let dst = t.faces[face][level as usize].as_mut().expect("checked");
         let texel = dst.format.texel_size();
         let row = w as usize * texel;

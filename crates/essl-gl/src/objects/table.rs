@@ -1,77 +1,12 @@
-//! Typed handles (`Buffer`, `Texture`, …) and the tables that own the objects they name.
-//!
-//! A handle carries the id of the context that created it and a generation: a handle from
-//! another context, or one whose object was deleted, is detected (WebGL's
-//! `INVALID_OPERATION`) rather than aliasing a newer object.
+//! [`Table`]: the objects of one kind, addressed by [`Id`], with counted internal references.
 //!
 //! GL lets an object outlive `delete*` while something still uses it (a buffer attached to a
-//! vertex array that is not bound, the current program). Tables therefore count internal
+//! vertex array that is not bound, the current program). A table therefore counts internal
 //! references: a deleted object is unreachable through its handle at once, and freed when its
-//! last reference goes.
+//! last reference goes. A slot's generation changes when it is freed, so a stale [`Id`] never
+//! reaches the next object stored there.
 
-use std::sync::atomic::{AtomicU32, Ordering};
-
-/// Where an object lives in its table: an index and the generation of that slot.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
-pub(crate) struct Id {
-    pub(crate) index: u32,
-    pub(crate) generation: u32,
-}
-
-static NEXT_CONTEXT_ID: AtomicU32 = AtomicU32::new(1);
-
-/// A fresh context id, never reused within the process.
-pub(crate) fn next_context_id() -> u32 {
-    NEXT_CONTEXT_ID.fetch_add(1, Ordering::Relaxed)
-}
-
-macro_rules! handle {
-    ($(#[$doc:meta])* $name:ident) => {
-        $(#[$doc])*
-        ///
-        /// A small `Copy` value; it is only meaningful to the context that created it.
-        #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-        pub struct $name {
-            pub(crate) ctx: u32,
-            pub(crate) id: Id,
-        }
-    };
-}
-
-handle! {
-    /// A buffer object (`WebGLBuffer`).
-    Buffer
-}
-handle! {
-    /// A texture object (`WebGLTexture`).
-    Texture
-}
-handle! {
-    /// A vertex array object (`WebGLVertexArrayObject`).
-    VertexArray
-}
-handle! {
-    /// A program object (`WebGLProgram`).
-    Program
-}
-handle! {
-    /// A shader object (`WebGLShader`).
-    Shader
-}
-
-/// The location of a uniform (or of one element of a uniform array) in a linked program
-/// (`WebGLUniformLocation`). It is invalidated when the program is linked again.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-pub struct UniformLocation {
-    pub(crate) ctx: u32,
-    pub(crate) program: Id,
-    /// Which link of the program the location belongs to.
-    pub(crate) link: u64,
-    /// Index into the program's active uniforms.
-    pub(crate) uniform: u32,
-    /// The array element the location starts at.
-    pub(crate) element: u32,
-}
+use super::Id;
 
 struct Entry<T> {
     generation: u32,
@@ -80,7 +15,8 @@ struct Entry<T> {
     refs: u32,
 }
 
-/// The objects of one kind, addressed by [`Id`].
+/// The objects of one kind, addressed by [`Id`]. Reading is open to the crate; deleting and
+/// counting references only to [`Objects`](super::Objects), which keeps them in step.
 pub(crate) struct Table<T> {
     entries: Vec<Entry<T>>,
     free: Vec<u32>,
@@ -165,7 +101,7 @@ impl<T> Table<T> {
 
     /// Marks the object deleted; frees it now if nothing references it. Returns whether the
     /// object was live.
-    pub(crate) fn delete(&mut self, id: Id) -> bool {
+    pub(super) fn delete(&mut self, id: Id) -> bool {
         let Some(e) = self.entry_mut(id) else {
             return false;
         };
@@ -180,14 +116,14 @@ impl<T> Table<T> {
     }
 
     /// Counts one more internal reference to `id`.
-    pub(crate) fn add_ref(&mut self, id: Id) {
+    pub(super) fn add_ref(&mut self, id: Id) {
         if let Some(e) = self.entry_mut(id) {
             e.refs += 1;
         }
     }
 
     /// Drops one internal reference to `id`, freeing a deleted object with none left.
-    pub(crate) fn release(&mut self, id: Id) {
+    pub(super) fn release(&mut self, id: Id) {
         let Some(e) = self.entry_mut(id) else { return };
         e.refs = e.refs.saturating_sub(1);
         if e.refs == 0 && e.deleted {
@@ -196,7 +132,7 @@ impl<T> Table<T> {
     }
 
     /// Replaces the reference held in `slot` by `new`, keeping reference counts right.
-    pub(crate) fn retarget(&mut self, slot: &mut Option<Id>, new: Option<Id>) {
+    pub(super) fn retarget(&mut self, slot: &mut Option<Id>, new: Option<Id>) {
         if *slot == new {
             return;
         }
@@ -217,7 +153,7 @@ impl<T> Table<T> {
 
     /// [`Table::delete`], returning the object if it was freed now (so that the caller can
     /// drop the references it held).
-    pub(crate) fn delete_freeing(&mut self, id: Id) -> Option<T> {
+    pub(super) fn delete_freeing(&mut self, id: Id) -> Option<T> {
         let e = self.entry_mut(id)?;
         if e.deleted {
             return None;
@@ -231,7 +167,7 @@ impl<T> Table<T> {
     }
 
     /// [`Table::release`], returning the object if it was freed now.
-    pub(crate) fn release_freeing(&mut self, id: Id) -> Option<T> {
+    pub(super) fn release_freeing(&mut self, id: Id) -> Option<T> {
         let e = self.entry_mut(id)?;
         e.refs = e.refs.saturating_sub(1);
         if e.refs == 0 && e.deleted {

@@ -1,0 +1,177 @@
+//! The objects of a context and the references between them.
+//!
+//! [`Objects`] owns one [`Table`] per kind of object and the default vertex array. Objects
+//! refer to each other — a vertex array to its buffers, a program to its shaders, and the
+//! context to the program in use — and such a reference keeps a deleted object alive, as GL
+//! requires. The methods here are the only ones that set or drop such a reference (a table's
+//! counting methods are private to this module), so the counts always match the references
+//! held: an object is freed exactly when it is deleted and nothing refers to it any more.
+//!
+//! What is *bound* (buffer targets, texture units, the vertex array) is
+//! [`Bindings`](crate::bindings::Bindings)' business; a binding of the context holds no count
+//! because deleting an object unbinds it.
+
+mod handles;
+mod table;
+
+pub(crate) use handles::{next_context_id, Id};
+pub use handles::{Buffer, Program, Shader, Texture, UniformLocation, VertexArray};
+pub(crate) use table::Table;
+
+use crate::buffer::BufferObject;
+use crate::program::{LinkedProgram, ProgramObject, ShaderObject};
+use crate::texture::TextureObject;
+use crate::vertex_array::VertexArrayObject;
+
+/// Every object of a context.
+pub(crate) struct Objects {
+    pub(crate) buffers: Table<BufferObject>,
+    pub(crate) textures: Table<TextureObject>,
+    pub(crate) vertex_arrays: Table<VertexArrayObject>,
+    pub(crate) programs: Table<ProgramObject>,
+    pub(crate) shaders: Table<ShaderObject>,
+    /// The vertex array in use when none is bound (WebGL's default vertex array object).
+    default_vertex_array: VertexArrayObject,
+}
+
+impl Objects {
+    /// No objects yet; vertex arrays have `max_vertex_attribs` attributes.
+    pub(crate) fn new(max_vertex_attribs: u32) -> Self {
+        Objects {
+            buffers: Table::default(),
+            textures: Table::default(),
+            vertex_arrays: Table::default(),
+            programs: Table::default(),
+            shaders: Table::default(),
+            default_vertex_array: VertexArrayObject::new(max_vertex_attribs),
+        }
+    }
+
+    /// The vertex array `bound` names (the default one for `None`, or for a vertex array that
+    /// is gone).
+    pub(crate) fn vertex_array(&self, bound: Option<Id>) -> &VertexArrayObject {
+        match bound.and_then(|id| self.vertex_arrays.get_any(id)) {
+            Some(v) => v,
+            None => &self.default_vertex_array,
+        }
+    }
+
+    /// Mutable [`Objects::vertex_array`], for the attribute state that holds no reference
+    /// (use [`Objects::set_attrib_buffer`] and [`Objects::set_element_buffer`] for buffers).
+    pub(crate) fn vertex_array_mut(&mut self, bound: Option<Id>) -> &mut VertexArrayObject {
+        match bound {
+            Some(id) if self.vertex_arrays.get_any(id).is_some() => {
+                self.vertex_arrays.get_any_mut(id).expect("checked above")
+            }
+            _ => &mut self.default_vertex_array,
+        }
+    }
+
+    /// Points attribute `index` of vertex array `vao` at `buffer`, moving the reference.
+    pub(crate) fn set_attrib_buffer(&mut self, vao: Option<Id>, index: usize, buffer: Option<Id>) {
+        let mut slot = self.vertex_array(vao).attribs[index].buffer;
+        self.buffers.retarget(&mut slot, buffer);
+        self.vertex_array_mut(vao).attribs[index].buffer = slot;
+    }
+
+    /// Sets the element array buffer of vertex array `vao`, moving the reference.
+    pub(crate) fn set_element_buffer(&mut self, vao: Option<Id>, buffer: Option<Id>) {
+        let mut slot = self.vertex_array(vao).element_buffer;
+        self.buffers.retarget(&mut slot, buffer);
+        self.vertex_array_mut(vao).element_buffer = slot;
+    }
+
+    /// The last successful link of program `id` (deleted but in use included).
+    pub(crate) fn linked(&self, id: Id) -> Option<&LinkedProgram> {
+        self.programs.get_any(id).and_then(|p| p.linked.as_ref())
+    }
+
+    /// Mutable [`Objects::linked`].
+    pub(crate) fn linked_mut(&mut self, id: Id) -> Option<&mut LinkedProgram> {
+        self.programs
+            .get_any_mut(id)
+            .and_then(|p| p.linked.as_mut())
+    }
+
+    /// Deletes a buffer: detached from the vertex array `bound_vao` (GL detaches a deleted
+    /// buffer only from the bound one), freed when no other vertex array uses it.
+    pub(crate) fn delete_buffer(&mut self, id: Id, bound_vao: Option<Id>) {
+        if self.vertex_array(bound_vao).element_buffer == Some(id) {
+            self.set_element_buffer(bound_vao, None);
+        }
+        for i in 0..self.vertex_array(bound_vao).attribs.len() {
+            if self.vertex_array(bound_vao).attribs[i].buffer == Some(id) {
+                self.set_attrib_buffer(bound_vao, i, None);
+            }
+        }
+        self.buffers.delete(id);
+    }
+
+    /// Deletes a vertex array (the caller has unbound it), dropping its buffers' references.
+    pub(crate) fn delete_vertex_array(&mut self, id: Id) {
+        if let Some(freed) = self.vertex_arrays.delete_freeing(id) {
+            let held = freed.attribs.iter().filter_map(|a| a.buffer);
+            for buffer in held.chain(freed.element_buffer) {
+                self.buffers.release(buffer);
+            }
+        }
+    }
+
+    /// Deletes a texture (the caller has unbound it from the texture units).
+    pub(crate) fn delete_texture(&mut self, id: Id) {
+        self.textures.delete(id);
+    }
+
+    /// Attaches shader `s` to program `p`, which keeps it alive.
+    pub(crate) fn attach_shader(&mut self, p: Id, s: Id) {
+        if let Some(program) = self.programs.get_any_mut(p) {
+            program.attached.push(s);
+            self.shaders.add_ref(s);
+        }
+    }
+
+    /// Detaches shader `s` from program `p`; false when it was not attached.
+    pub(crate) fn detach_shader(&mut self, p: Id, s: Id) -> bool {
+        let Some(program) = self.programs.get_any_mut(p) else {
+            return false;
+        };
+        let Some(i) = program.attached.iter().position(|&a| a == s) else {
+            return false;
+        };
+        program.attached.remove(i);
+        self.shaders.release(s);
+        true
+    }
+
+    /// Deletes a shader: freed now, or when the last program it is attached to lets go.
+    pub(crate) fn delete_shader(&mut self, id: Id) {
+        self.shaders.delete(id);
+    }
+
+    /// Deletes a program: freed now unless it is in use ([`Objects::hold_program`]).
+    pub(crate) fn delete_program(&mut self, id: Id) {
+        if let Some(freed) = self.programs.delete_freeing(id) {
+            self.free_program(freed);
+        }
+    }
+
+    /// Counts a reference to program `id` (the context's program in use).
+    pub(crate) fn hold_program(&mut self, id: Id) {
+        self.programs.add_ref(id);
+    }
+
+    /// Drops a reference taken by [`Objects::hold_program`]; a program deleted meanwhile is
+    /// freed, and its shaders with it when nothing else holds them.
+    pub(crate) fn release_program(&mut self, id: Id) {
+        if let Some(freed) = self.programs.release_freeing(id) {
+            self.free_program(freed);
+        }
+    }
+
+    /// Drops the references a freed program held on its shaders.
+    fn free_program(&mut self, freed: ProgramObject) {
+        for s in freed.attached {
+            self.shaders.release(s);
+        }
+    }
+}
