@@ -152,14 +152,13 @@ impl Context {
             }));
         }
         let buffer = self.caches.readback.clone().expect("made above");
-        let top = self.fb.height - (y + h);
         let color = &self.fb.color;
         self.frame.submit(&self.gpu, &self.fb, |encoder| {
             encoder.copy_texture_to_buffer(
                 wgpu::TexelCopyTextureInfo {
                     texture: color,
                     mip_level: 0,
-                    origin: wgpu::Origin3d { x, y: top, z: 0 },
+                    origin: wgpu::Origin3d { x, y, z: 0 },
                     aspect: wgpu::TextureAspect::All,
                 },
                 wgpu::TexelCopyBufferInfo {
@@ -187,10 +186,9 @@ impl Context {
         if let (Ok(Ok(())), Ok(view)) = (rx.recv(), slice.get_mapped_range()) {
             let row = (w * 4) as usize;
             for r in 0..h as usize {
-                // wgpu row r is GL row h - 1 - r of the rectangle.
+                // Framebuffers store GL's row order: row r is GL row r of the rectangle.
                 let src = &view[r * padded as usize..r * padded as usize + row];
-                let d = (h as usize - 1 - r) * row;
-                out[d..d + row].copy_from_slice(src);
+                out[r * row..(r + 1) * row].copy_from_slice(src);
             }
             drop(view);
             buffer.unmap();

@@ -12,7 +12,8 @@
 //! - Varyings use `Binding::Location` numbers assigned by the linker (the same in both stages).
 //!   The vertex stage writes `BuiltIn::Position` in the GPU API's clip space: the lowering has
 //!   already remapped GL's depth range (z from −w..w to 0..w) when
-//!   [`LowerOptions::zero_to_one_depth`] is set.
+//!   [`LowerOptions::zero_to_one_depth`] is set, and negated y when [`LowerOptions::flip_clip_y`]
+//!   is.
 //! - Fragment outputs use `Binding::Location` equal to the GLSL output's location.
 //! - All loose (default-block) uniforms of both stages live in one uniform buffer at
 //!   `@group(0) @binding(0)`, laid out as [`UniformBlock`] says; both stages declare the same
@@ -32,6 +33,12 @@ pub struct LowerOptions {
     /// Flip `gl_FragCoord.y` so that it counts from the bottom of the framebuffer, as in GL,
     /// on an API whose framebuffer y points down. Reads [`InternalUniform::FramebufferHeight`].
     pub flip_frag_coord_y: bool,
+    /// Negate `gl_Position.y` and flip `gl_PointCoord.y`: the image is drawn upside down on an
+    /// API whose framebuffer y points down, so that a framebuffer's rows are stored bottom row
+    /// first, in GL's order — what sampling a rendered texture, `readPixels` and blits expect.
+    /// Use it with `flip_frag_coord_y` off: `gl_FragCoord` and `dFdy` then need no change. The
+    /// renderer must also swap the winding of front faces.
+    pub flip_clip_y: bool,
 }
 
 impl Default for LowerOptions {
@@ -39,6 +46,7 @@ impl Default for LowerOptions {
         Self {
             zero_to_one_depth: true,
             flip_frag_coord_y: true,
+            flip_clip_y: false,
         }
     }
 }

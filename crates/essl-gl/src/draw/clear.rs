@@ -86,8 +86,9 @@ impl Context {
         frame.pass_state.group0 = None;
     }
 
-    /// The scissor rectangle in wgpu's coordinates (origin top-left), clipped to the
-    /// framebuffer; the whole framebuffer without `SCISSOR_TEST`; `None` when empty.
+    /// The scissor rectangle in wgpu's coordinates (GL's: rows are stored bottom first),
+    /// clipped to the framebuffer; the whole framebuffer without `SCISSOR_TEST`; `None` when
+    /// empty.
     pub(super) fn scissor_rect(&self) -> Option<[u32; 4]> {
         let (fw, fh) = (self.fb.width as i64, self.fb.height as i64);
         if !self.state.scissor_test {
@@ -96,15 +97,8 @@ impl Context {
         let [x, y, w, h] = self.state.scissor.map(|v| v as i64);
         let x0 = x.clamp(0, fw);
         let x1 = (x + w).clamp(0, fw);
-        let top = (fh - (y + h)).clamp(0, fh);
-        let bottom = (fh - y).clamp(0, fh);
-        (x1 > x0 && bottom > top).then(|| {
-            [
-                x0 as u32,
-                top as u32,
-                (x1 - x0) as u32,
-                (bottom - top) as u32,
-            ]
-        })
+        let y0 = y.clamp(0, fh);
+        let y1 = (y + h).clamp(0, fh);
+        (x1 > x0 && y1 > y0).then(|| [x0 as u32, y0 as u32, (x1 - x0) as u32, (y1 - y0) as u32])
     }
 }

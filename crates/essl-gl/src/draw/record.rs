@@ -170,10 +170,11 @@ impl Context {
             topology: call.topology,
             strip_index_format,
             cull_mode,
+            // Draws are flipped vertically (`LOWER_OPTIONS`), which swaps the winding.
             front_face: if s.front_face == gl::CW {
-                wgpu::FrontFace::Cw
-            } else {
                 wgpu::FrontFace::Ccw
+            } else {
+                wgpu::FrontFace::Cw
             },
             depth_write,
             depth_compare,
@@ -205,18 +206,18 @@ impl Context {
         (key, values)
     }
 
-    /// The viewport in wgpu's coordinates (origin top-left), clamped to what wgpu accepts,
-    /// with the depth range.
+    /// The viewport in wgpu's coordinates, clamped to what wgpu accepts, with the depth
+    /// range. Framebuffers store GL's row 0 first and draws are flipped
+    /// ([`crate::LOWER_OPTIONS`]), so GL's window y is wgpu's y.
     fn draw_viewport(&self) -> [f32; 6] {
         let s = &self.state;
-        let fh = self.fb.height as i64;
         let [vx, vy, vw, vh] = s.viewport.map(|v| v as i64);
         let max = 2 * self.gpu.limits.max_texture_dimension_2d as i64 - 1;
-        let top = (fh - (vy + vh)).clamp(-max, max - vh);
+        let vy = vy.clamp(-max, max - vh);
         let vx = vx.clamp(-max, max - vw);
         [
             vx as f32,
-            top as f32,
+            vy as f32,
             vw as f32,
             vh as f32,
             s.depth_range[0],

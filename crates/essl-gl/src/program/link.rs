@@ -102,17 +102,12 @@ impl Context {
                     let f = &compile(essl::Stage::Fragment, f);
                     let linked = essl::link::link_with_bindings(v, f, &obj.attrib_bindings);
                     if linked.ok {
-                        essl::lower::lower_program(
-                            v,
-                            f,
-                            &linked,
-                            &essl::program::LowerOptions::default(),
-                        )
-                        .map_err(LinkError::from)
-                        .and_then(|layout| match &mut self.linker.filter {
-                            Some(filter) => filter(layout).map_err(LinkError::Filter),
-                            None => Ok(layout),
-                        })
+                        essl::lower::lower_program(v, f, &linked, &crate::LOWER_OPTIONS)
+                            .map_err(LinkError::from)
+                            .and_then(|layout| match &mut self.linker.filter {
+                                Some(filter) => filter(layout).map_err(LinkError::Filter),
+                                None => Ok(layout),
+                            })
                     } else {
                         Err(LinkError::Front(linked.log))
                     }

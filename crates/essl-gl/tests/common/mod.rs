@@ -46,10 +46,16 @@ pub struct Layout {
     samplers: Vec<SamplerSlot>,
 }
 
+/// A WGSL function every test vertex shader can call on its clip position: essl-gl draws with
+/// y negated (`essl_gl::LOWER_OPTIONS`), so that framebuffers store GL's row 0 first.
+const GL_CLIP: &str =
+    "\nfn gl_clip(p: vec4<f32>) -> vec4<f32> { return vec4(p.x, -p.y, p.z, p.w); }\n";
+
 impl Layout {
+    /// A layout from WGSL; the vertex shader may call `gl_clip` on its position.
     pub fn new(vs: &str, fs: &str) -> Self {
         Layout {
-            vs: vs.into(),
+            vs: format!("{vs}{GL_CLIP}"),
             fs: fs.into(),
             block_size: 0,
             internal: Vec::new(),
@@ -144,7 +150,7 @@ impl Layout {
 /// A program that draws `a_position` (vec4 at location 0) in a solid colour.
 pub fn solid(r: f32, g: f32, b: f32) -> ProgramLayout {
     Layout::new(
-        "@vertex fn main(@location(0) a_position: vec4<f32>) -> @builtin(position) vec4<f32> { return a_position; }",
+        "@vertex fn main(@location(0) a_position: vec4<f32>) -> @builtin(position) vec4<f32> { return gl_clip(a_position); }",
         &format!("@fragment fn main() -> @location(0) vec4<f32> {{ return vec4({r:?}, {g:?}, {b:?}, 1.0); }}"),
     )
     .attribute("a_position", GlType::FLOAT_VEC4, 0)
