@@ -1,5 +1,6 @@
 //! What is bound: the generic buffer targets, the indexed `UNIFORM_BUFFER` ranges, the vertex
-//! array, the texture units and the program in use.
+//! array, the texture units, the program in use, the draw and read framebuffers and the
+//! renderbuffer.
 //!
 //! [`Bindings`] keeps one invariant: nothing bound names a deleted object. Deleting an object
 //! unbinds it here (`forget_*`) — with one exception GL makes, the program in use, which stays
@@ -27,11 +28,17 @@ pub(crate) struct Bindings {
     copy_read_buffer: Option<Id>,
     copy_write_buffer: Option<Id>,
     uniform_buffer: Option<Id>,
+    pixel_pack_buffer: Option<Id>,
+    pixel_unpack_buffer: Option<Id>,
+    transform_feedback_buffer: Option<Id>,
     uniform_ranges: Vec<Option<BufferRange>>,
     vertex_array: Option<Id>,
     active_unit: u32,
     texture_units: Vec<TextureUnit>,
     program: Option<Id>,
+    draw_framebuffer: Option<Id>,
+    read_framebuffer: Option<Id>,
+    renderbuffer: Option<Id>,
 }
 
 impl Bindings {
@@ -43,11 +50,17 @@ impl Bindings {
             copy_read_buffer: None,
             copy_write_buffer: None,
             uniform_buffer: None,
+            pixel_pack_buffer: None,
+            pixel_unpack_buffer: None,
+            transform_feedback_buffer: None,
             uniform_ranges: vec![None; uniform_bindings as usize],
             vertex_array: None,
             active_unit: 0,
             texture_units: vec![TextureUnit::default(); units as usize],
             program: None,
+            draw_framebuffer: None,
+            read_framebuffer: None,
+            renderbuffer: None,
         }
     }
 
@@ -59,18 +72,25 @@ impl Bindings {
             gl::COPY_READ_BUFFER => Some(&mut self.copy_read_buffer),
             gl::COPY_WRITE_BUFFER => Some(&mut self.copy_write_buffer),
             gl::UNIFORM_BUFFER => Some(&mut self.uniform_buffer),
+            gl::PIXEL_PACK_BUFFER => Some(&mut self.pixel_pack_buffer),
+            gl::PIXEL_UNPACK_BUFFER => Some(&mut self.pixel_unpack_buffer),
+            gl::TRANSFORM_FEEDBACK_BUFFER => Some(&mut self.transform_feedback_buffer),
             _ => None,
         }
     }
 
     /// The buffer bound to a generic target (`ARRAY_BUFFER`, `COPY_READ_BUFFER`,
-    /// `COPY_WRITE_BUFFER`, `UNIFORM_BUFFER`); `None` when nothing is, or for another enum.
+    /// `COPY_WRITE_BUFFER`, `UNIFORM_BUFFER`, `PIXEL_PACK_BUFFER`, `PIXEL_UNPACK_BUFFER`,
+    /// `TRANSFORM_FEEDBACK_BUFFER`); `None` when nothing is, or for another enum.
     pub(crate) fn buffer(&self, target: u32) -> Option<Id> {
         match target {
             gl::ARRAY_BUFFER => self.array_buffer,
             gl::COPY_READ_BUFFER => self.copy_read_buffer,
             gl::COPY_WRITE_BUFFER => self.copy_write_buffer,
             gl::UNIFORM_BUFFER => self.uniform_buffer,
+            gl::PIXEL_PACK_BUFFER => self.pixel_pack_buffer,
+            gl::PIXEL_UNPACK_BUFFER => self.pixel_unpack_buffer,
+            gl::TRANSFORM_FEEDBACK_BUFFER => self.transform_feedback_buffer,
             _ => None,
         }
     }
@@ -103,6 +123,9 @@ impl Bindings {
             &mut self.copy_read_buffer,
             &mut self.copy_write_buffer,
             &mut self.uniform_buffer,
+            &mut self.pixel_pack_buffer,
+            &mut self.pixel_unpack_buffer,
+            &mut self.transform_feedback_buffer,
         ] {
             if *slot == Some(id) {
                 *slot = None;
@@ -179,6 +202,47 @@ impl Bindings {
         }
         if let Some(old) = std::mem::replace(&mut self.program, id) {
             objects.release_program(old);
+        }
+    }
+
+    /// The framebuffers bound for drawing and for reading (`None`: the default one).
+    pub(crate) fn framebuffers(&self) -> [Option<Id>; 2] {
+        [self.draw_framebuffer, self.read_framebuffer]
+    }
+
+    /// Binds a live framebuffer (or the default one) for drawing, reading or both.
+    pub(crate) fn bind_framebuffer(&mut self, draw: bool, read: bool, id: Option<Id>) {
+        if draw {
+            self.draw_framebuffer = id;
+        }
+        if read {
+            self.read_framebuffer = id;
+        }
+    }
+
+    /// Unbinds a framebuffer that is being deleted (the default one takes its place).
+    pub(crate) fn forget_framebuffer(&mut self, id: Id) {
+        for slot in [&mut self.draw_framebuffer, &mut self.read_framebuffer] {
+            if *slot == Some(id) {
+                *slot = None;
+            }
+        }
+    }
+
+    /// The bound renderbuffer.
+    pub(crate) fn renderbuffer(&self) -> Option<Id> {
+        self.renderbuffer
+    }
+
+    /// Binds a live renderbuffer (or none).
+    pub(crate) fn bind_renderbuffer(&mut self, id: Option<Id>) {
+        self.renderbuffer = id;
+    }
+
+    /// Unbinds a renderbuffer that is being deleted.
+    pub(crate) fn forget_renderbuffer(&mut self, id: Id) {
+        if self.renderbuffer == Some(id) {
+            self.renderbuffer = None;
         }
     }
 }

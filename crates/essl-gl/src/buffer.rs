@@ -94,7 +94,7 @@ impl BufferObject {
         }
     }
 
-    fn mark_dirty(&mut self, range: Range<usize>) {
+    pub(crate) fn mark_dirty(&mut self, range: Range<usize>) {
         self.version += 1;
         self.dirty = Some(match self.dirty.take() {
             Some(d) => d.start.min(range.start)..d.end.max(range.end),
@@ -266,7 +266,8 @@ impl Context {
 
     /// Binds a buffer to a target (`bindBuffer`): `ARRAY_BUFFER`, `ELEMENT_ARRAY_BUFFER` (state
     /// of the bound vertex array, as in GL), `COPY_READ_BUFFER`, `COPY_WRITE_BUFFER`,
-    /// `UNIFORM_BUFFER`. `None` unbinds.
+    /// `UNIFORM_BUFFER`, `PIXEL_PACK_BUFFER`, `PIXEL_UNPACK_BUFFER`,
+    /// `TRANSFORM_FEEDBACK_BUFFER`. `None` unbinds.
     ///
     /// As WebGL requires, a buffer first bound to `ELEMENT_ARRAY_BUFFER` cannot later be bound
     /// to a target for other data, and the reverse (`INVALID_OPERATION`).
@@ -278,16 +279,12 @@ impl Context {
     fn bind_buffer_checked(&mut self, target: u32, buffer: Option<Buffer>, function: &str) -> bool {
         let kind = match target {
             gl::ELEMENT_ARRAY_BUFFER => Some(BufferKind::Element),
-            gl::ARRAY_BUFFER | gl::UNIFORM_BUFFER => Some(BufferKind::Other),
+            gl::ARRAY_BUFFER
+            | gl::UNIFORM_BUFFER
+            | gl::PIXEL_PACK_BUFFER
+            | gl::PIXEL_UNPACK_BUFFER
+            | gl::TRANSFORM_FEEDBACK_BUFFER => Some(BufferKind::Other),
             gl::COPY_READ_BUFFER | gl::COPY_WRITE_BUFFER => None,
-            gl::PIXEL_PACK_BUFFER | gl::PIXEL_UNPACK_BUFFER | gl::TRANSFORM_FEEDBACK_BUFFER => {
-                self.error(
-                    gl::INVALID_ENUM,
-                    function,
-                    "target not supported by essl-gl",
-                );
-                return false;
-            }
             _ => {
                 self.error(
                     gl::INVALID_ENUM,

@@ -70,25 +70,32 @@ mod caches;
 mod context;
 mod draw;
 mod error;
+mod extensions;
 mod frame;
+mod framebuffer;
 mod objects;
 mod pipeline;
 mod program;
 mod query;
 mod readback;
+mod renderbuffer;
 pub mod scene;
 mod shader_patch;
 mod state;
+mod stencil;
 mod texture;
 mod validation;
 mod vertex_array;
 
 pub use bytemuck;
-pub use context::{
-    Context, ProgramFilter, COLOR_FORMAT, DEPTH_FORMAT, MAX_TEXTURE_UNITS, MAX_VERTEX_ATTRIBS,
-};
+pub use context::{Context, ProgramFilter, MAX_TEXTURE_UNITS, MAX_VERTEX_ATTRIBS};
 pub use error::{error_name, ContextError};
-pub use objects::{Buffer, Program, Shader, Texture, UniformLocation, VertexArray};
+pub use extensions::Extension;
+pub use framebuffer::{ContextAttributes, COLOR_FORMAT, MAX_COLOR_ATTACHMENTS};
+pub use objects::{
+    Buffer, Framebuffer, Program, Query, Renderbuffer, Sampler, Shader, Sync, Texture,
+    TransformFeedback, UniformLocation, VertexArray,
+};
 pub use query::{Parameter, SHADING_LANGUAGE_VERSION, SUBPIXEL_BITS, VENDOR, VERSION};
 pub use validation::{SourceLocation, ValidationWarning, MAX_VALIDATION_WARNINGS};
 pub use wgpu;

@@ -156,14 +156,14 @@ pub(crate) fn output_needs_widening(module: &Module) -> bool {
     let Some(result) = &ep.function.result else {
         return false;
     };
-    let narrow = |ty| matches!(type_shape(module, ty), Some((ValueKind::Float, n)) if n < 4);
-    if let Some(Binding::Location { location: 0, .. }) = result.binding {
+    let narrow = |ty| matches!(type_shape(module, ty), Some((_, n)) if n < 4);
+    if let Some(Binding::Location { .. }) = result.binding {
         return narrow(result.ty);
     }
     if let TypeInner::Struct { members, .. } = &module.types[result.ty].inner {
-        return members.iter().any(|m| {
-            matches!(m.binding, Some(Binding::Location { location: 0, .. })) && narrow(m.ty)
-        });
+        return members
+            .iter()
+            .any(|m| matches!(m.binding, Some(Binding::Location { .. })) && narrow(m.ty));
     }
     false
 }
@@ -346,10 +346,10 @@ fn widen_result(
     r: &FunctionResult,
     res: Handle<Expression>,
 ) -> (Option<FunctionResult>, Option<Handle<Expression>>) {
-    let vec4 = shape_type(m, ValueKind::Float, 4);
-    if let Some(Binding::Location { location: 0, .. }) = r.binding {
-        if let Some((ValueKind::Float, n)) = type_shape(m, r.ty) {
-            let value = b.widen(res, n, 4, ValueKind::Float, vec4);
+    if let Some(Binding::Location { .. }) = r.binding {
+        if let Some((kind, n)) = type_shape(m, r.ty).filter(|(_, n)| *n < 4) {
+            let vec4 = shape_type(m, kind, 4);
+            let value = b.widen(res, n, 4, kind, vec4);
             let result = FunctionResult {
                 ty: vec4,
                 binding: r.binding.clone(),
@@ -357,7 +357,7 @@ fn widen_result(
             return (Some(result), Some(value));
         }
     } else if let TypeInner::Struct { members, .. } = m.types[r.ty].inner.clone() {
-        let (value, struct_ty) = widen_struct(b, m, &members, res, vec4);
+        let (value, struct_ty) = widen_struct(b, m, &members, res);
         let result = FunctionResult {
             ty: struct_ty,
             binding: None,
@@ -367,14 +367,13 @@ fn widen_result(
     (Some(r.clone()), Some(res))
 }
 
-/// A copy of the output struct `res` (of `members`) whose location-0 member is widened to
-/// `vec4`: the composed value and its new struct type, laid out again.
+/// A copy of the output struct `res` (of `members`) whose location members are widened to
+/// four components: the composed value and its new struct type, laid out again.
 fn widen_struct(
     b: &mut Builder,
     m: &mut Module,
     members: &[StructMember],
     res: Handle<Expression>,
-    vec4: Handle<Type>,
 ) -> (Handle<Expression>, Handle<Type>) {
     let mut new_members = Vec::new();
     let mut components = Vec::new();
@@ -387,11 +386,14 @@ fn widen_struct(
             index: j as u32,
         });
         let mut ty = member.ty;
-        if let (Some(Binding::Location { location: 0, .. }), Some((ValueKind::Float, n))) =
+        if let (Some(Binding::Location { .. }), Some((kind, n))) =
             (&member.binding, type_shape(m, member.ty))
         {
-            v = b.widen(v, n, 4, ValueKind::Float, vec4);
-            ty = vec4;
+            if n < 4 {
+                let vec4 = shape_type(m, kind, 4);
+                v = b.widen(v, n, 4, kind, vec4);
+                ty = vec4;
+            }
         }
         let _ = layouter.update(m.to_ctx());
         offset = layouter[ty].alignment.round_up(offset);

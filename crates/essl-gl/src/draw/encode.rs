@@ -10,6 +10,7 @@ use super::topology::{emulate, index_size, read_indices, repack, Emulated};
 use super::{DrawCall, Indices, SlotPlan, Source};
 use crate::buffer::DerivedKey;
 use crate::context::Context;
+use crate::framebuffer::sample_view_key;
 use crate::gl;
 use crate::objects::Id;
 use crate::pipeline::{SlotBinding, VertexSlot};
@@ -260,30 +261,37 @@ impl Context {
         &mut self,
         slot_plans: &[SlotPlan],
     ) -> (Vec<SlotBinding>, Vec<(wgpu::TextureView, wgpu::Sampler)>) {
-        let serial = self.frame.serial;
-        let gpu = &self.gpu;
         let mut slot_bindings = Vec::new();
         let mut resources = Vec::new();
         for plan in slot_plans {
             let shadow = plan.kind == SampleKind::Depth;
             match plan.texture {
                 Some((id, c)) => {
+                    self.sync_texture(id, c.base..c.base + c.levels);
+                    let gpu = &self.gpu;
                     let t = self
                         .objects
                         .textures
                         .get_any_mut(id)
                         .expect("bound textures are alive");
-                    let view = t.gpu_view(gpu, serial, &c);
+                    let target = t.target.expect("complete textures have a target");
+                    let g = t.gpu.as_mut().expect("synced above");
+                    let view = g.view(sample_view_key(
+                        target, g.anchor, c.base, c.levels, &c.format,
+                    ));
                     let key = t.sampler_key(shadow);
                     let sampler = self.caches.samplers.get(&gpu.device, key);
                     slot_bindings.push(SlotBinding {
                         dim: plan.dim,
                         kind: plan.kind,
-                        filterable: c.format.filterable(),
+                        filterable: c.format.filterable()
+                            || (self.extensions.texture_float_linear
+                                && c.format.comp == crate::texture::Comp::F32),
                     });
                     resources.push((view, sampler));
                 }
                 None => {
+                    let gpu = &self.gpu;
                     let view = self.caches.dummies.get(gpu, plan.dim, plan.kind);
                     let sampler = self
                         .caches

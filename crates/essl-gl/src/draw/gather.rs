@@ -8,6 +8,7 @@ use essl::types::{SamplerDim, ScalarKind, Type};
 use super::{SlotPlan, Source};
 use crate::bindings::BufferRange;
 use crate::context::Context;
+use crate::framebuffer::DrawFormats;
 use crate::gl;
 use crate::objects::Id;
 use crate::program::{ShaderInput, ValueKind};
@@ -241,16 +242,26 @@ impl Context {
                 (false, ScalarKind::Uint) => SampleKind::Uint,
                 _ => SampleKind::Float,
             };
+            let float_linear = self.extensions.texture_float_linear;
             let texture = self.bindings.texture(unit, target).and_then(|id| {
                 self.objects
                     .textures
                     .get_any(id)
-                    .and_then(|t| t.completeness())
+                    .and_then(|t| t.completeness(float_linear))
                     .map(|c| (id, c))
             });
-            if let Some((_, c)) = &texture {
-                if c.format.kind() != kind {
+            if let Some((id, c)) = &texture {
+                let fits = match kind {
+                    SampleKind::Depth => c.format.has_depth(),
+                    k => c.format.kind() == k,
+                };
+                if !fits {
                     let msg = format!("texture on unit {unit} does not match its sampler's type");
+                    return self.fail(gl::INVALID_OPERATION, f, msg);
+                }
+                if self.draws_into(*id, c.base..c.base + c.levels) {
+                    let msg =
+                        format!("the texture on unit {unit} is also drawn into: a feedback loop");
                     return self.fail(gl::INVALID_OPERATION, f, msg);
                 }
             }
@@ -263,19 +274,27 @@ impl Context {
         Some(slot_plans)
     }
 
-    /// Checks that program `pid` writes floats to the (normalized) default framebuffer.
-    pub(super) fn check_output(&mut self, pid: Id, f: &str) -> Option<()> {
+    /// Checks that each fragment output that reaches a draw buffer has the buffer's kind:
+    /// floats for normalized and float formats, signed or unsigned integers for integer
+    /// formats (`INVALID_OPERATION`, WebGL2).
+    pub(super) fn check_outputs(&mut self, pid: Id, formats: &DrawFormats, f: &str) -> Option<()> {
         let linked = self
             .objects
             .linked(pid)
             .expect("current programs are linked");
-        if let Some((kind, _)) = linked.output0 {
-            if kind != ValueKind::Float {
-                return self.fail(
-                    gl::INVALID_OPERATION,
-                    f,
-                    "integer fragment output to a normalized framebuffer",
-                );
+        for &(location, kind) in &linked.outputs {
+            let Some(Some(format)) = formats.colors.get(location as usize) else {
+                continue;
+            };
+            let wants = match format.kind() {
+                SampleKind::Sint => ValueKind::Sint,
+                SampleKind::Uint => ValueKind::Uint,
+                _ => ValueKind::Float,
+            };
+            if kind != wants {
+                let msg =
+                    format!("fragment output {location} does not match its draw buffer's type");
+                return self.fail(gl::INVALID_OPERATION, f, msg);
             }
         }
         Some(())

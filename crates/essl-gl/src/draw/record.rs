@@ -5,6 +5,7 @@
 use super::encode::{DrawRange, Groups};
 use super::DrawCall;
 use crate::context::Context;
+use crate::frame::PassTarget;
 use crate::gl;
 use crate::pipeline::{CachedPipeline, PipelineKey, VertexSlot};
 use crate::shader_patch::InputPatch;
@@ -55,7 +56,7 @@ fn blend_component(src: u32, dst: u32, eq: u32) -> wgpu::BlendComponent {
 }
 
 /// The colour write mask for GL's `colorMask`.
-fn write_mask(color_mask: &[bool; 4]) -> wgpu::ColorWrites {
+pub(crate) fn write_mask(color_mask: &[bool; 4]) -> wgpu::ColorWrites {
     let mut write_mask = wgpu::ColorWrites::empty();
     for (m, bit) in color_mask.iter().zip([
         wgpu::ColorWrites::RED,
@@ -77,6 +78,16 @@ struct PassValues {
     /// The blend constant, and whether the blend state reads it.
     blend_constant: [f32; 4],
     uses_constant: bool,
+    stencil_reference: u32,
+}
+
+/// What a draw's pipeline key is made of besides the GL state.
+struct KeyParts<'a> {
+    slots: Vec<VertexSlot>,
+    patches: Vec<InputPatch>,
+    range: &'a DrawRange,
+    groups: &'a Groups,
+    target: &'a PassTarget,
 }
 
 impl Context {
@@ -87,7 +98,17 @@ impl Context {
             return;
         };
         let groups = self.bind_groups(&call);
-        let (key, values) = self.pipeline_key(&call, vertex.slots, vertex.patches, &range, &groups);
+        // Last: uploads for the textures sampled end the pass; the target's pass begins
+        // after them.
+        let target = self.draw_target();
+        let parts = KeyParts {
+            slots: vertex.slots,
+            patches: vertex.patches,
+            range: &range,
+            groups: &groups,
+            target: &target,
+        };
+        let (key, values) = self.pipeline_key(&call, parts);
         let linked = self
             .objects
             .linked_mut(call.program)
@@ -101,18 +122,26 @@ impl Context {
                 return;
             }
         };
-        self.record_draw(&call, &pipeline, &values, groups, vertex.bindings, range);
+        self.record_draw(
+            &call,
+            &target,
+            &pipeline,
+            &values,
+            groups,
+            vertex.bindings,
+            range,
+        );
     }
 
     /// The pipeline key of the draw from the GL state, and the pass values that go with it.
-    fn pipeline_key(
-        &self,
-        call: &DrawCall,
-        slots: Vec<VertexSlot>,
-        patches: Vec<InputPatch>,
-        range: &DrawRange,
-        groups: &Groups,
-    ) -> (PipelineKey, PassValues) {
+    fn pipeline_key(&self, call: &DrawCall, parts: KeyParts) -> (PipelineKey, PassValues) {
+        let KeyParts {
+            slots,
+            patches,
+            range,
+            groups,
+            target,
+        } = parts;
         let strip = matches!(
             call.topology,
             wgpu::PrimitiveTopology::LineStrip | wgpu::PrimitiveTopology::TriangleStrip
@@ -180,8 +209,18 @@ impl Context {
             depth_compare,
             depth_bias,
             blend,
-            write_mask: write_mask(&s.color_mask),
+            write_mask: self.draw_write_mask(),
             slots: groups.slot_bindings.clone(),
+            targets: target
+                .colors
+                .iter()
+                .map(|c| c.as_ref().map(|c| c.format))
+                .collect(),
+            depth_format: target.depth.as_ref().map(|d| d.format),
+            stencil: s.stencil.wgpu(s.stencil_test),
+            samples: target.samples,
+            alpha_to_coverage: s.sample_alpha_to_coverage,
+            float_blend: self.extensions.float_blend,
         };
         let uses_constant = blend.is_some_and(|b| {
             [
@@ -202,8 +241,19 @@ impl Context {
             viewport: self.draw_viewport(),
             blend_constant,
             uses_constant,
+            stencil_reference: s.stencil.reference(),
         };
         (key, values)
+    }
+
+    /// The channels draws write: the colour mask, without alpha on a default framebuffer
+    /// that has none (`alpha: false`), so that it stays 1.
+    pub(crate) fn draw_write_mask(&self) -> wgpu::ColorWrites {
+        let mut mask = write_mask(&self.state.color_mask);
+        if self.bindings.framebuffers()[0].is_none() && !self.fb.attributes.alpha {
+            mask -= wgpu::ColorWrites::ALPHA;
+        }
+        mask
     }
 
     /// The viewport in wgpu's coordinates, clamped to what wgpu accepts, with the depth
@@ -226,9 +276,11 @@ impl Context {
     }
 
     /// Records the draw into the open render pass, setting only the pass state that changed.
+    #[allow(clippy::too_many_arguments)] // the parts of one draw, made by the steps above
     fn record_draw(
         &mut self,
         call: &DrawCall,
+        target: &PassTarget,
         pipeline: &CachedPipeline,
         values: &PassValues,
         groups: Groups,
@@ -239,7 +291,7 @@ impl Context {
         let viewport_bits = viewport.map(f32::to_bits);
         let blend_bits = values.blend_constant.map(f32::to_bits);
         let scissor = call.scissor;
-        self.frame.pass(&self.gpu, &self.fb);
+        self.frame.pass(&self.gpu, target);
         let frame = &mut self.frame;
         let pass = frame.pass.as_mut().expect("opened above");
         let ps = &mut frame.pass_state;
@@ -261,6 +313,10 @@ impl Context {
         if ps.scissor != Some(scissor) {
             pass.set_scissor_rect(scissor[0], scissor[1], scissor[2], scissor[3]);
             ps.scissor = Some(scissor);
+        }
+        if ps.stencil_reference != Some(values.stencil_reference) {
+            pass.set_stencil_reference(values.stencil_reference);
+            ps.stencil_reference = Some(values.stencil_reference);
         }
         if values.uses_constant && ps.blend_constant != Some(blend_bits) {
             let [r, g, b, a] = values.blend_constant.map(|c| c as f64);

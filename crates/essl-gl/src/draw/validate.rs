@@ -36,6 +36,9 @@ impl Context {
             Some((ty, offset)) => Some(self.check_index_args(ty, offset, f)?),
             None => None,
         };
+        if !self.require_complete(true, f) {
+            return None;
+        }
         let Some(pid) = self.bindings.program() else {
             return self.fail(gl::INVALID_OPERATION, f, "no program in use");
         };
@@ -65,7 +68,15 @@ impl Context {
         let blocks = self.gather_blocks(pid, f)?;
         let sources = self.gather_sources(pid, f)?;
         let slot_plans = self.gather_samplers(pid, f)?;
-        self.check_output(pid, f)?;
+        let formats = self.draw_formats();
+        self.check_outputs(pid, &formats, f)?;
+        if formats.stencil && !self.state.stencil.faces_agree() {
+            return self.fail(
+                gl::INVALID_OPERATION,
+                f,
+                "front and back stencil references or masks differ (WebGL)",
+            );
+        }
         if args.count == 0 || args.instances == 0 {
             return None;
         }
@@ -94,7 +105,7 @@ impl Context {
         {
             return None;
         }
-        let scissor = self.scissor_rect()?;
+        let scissor = self.scissor_rect_for(formats.size)?;
         Some(DrawCall {
             program: pid,
             topology,

@@ -52,6 +52,30 @@ handle! {
     /// A shader object (`WebGLShader`).
     Shader
 }
+handle! {
+    /// A framebuffer object (`WebGLFramebuffer`).
+    Framebuffer
+}
+handle! {
+    /// A renderbuffer object (`WebGLRenderbuffer`).
+    Renderbuffer
+}
+handle! {
+    /// A sampler object (`WebGLSampler`).
+    Sampler
+}
+handle! {
+    /// A query object (`WebGLQuery`).
+    Query
+}
+handle! {
+    /// A sync object (`WebGLSync`), made by [`Context::fence_sync`](crate::Context::fence_sync).
+    Sync
+}
+handle! {
+    /// A transform feedback object (`WebGLTransformFeedback`).
+    TransformFeedback
+}
 
 /// The location of a uniform (or of one element of a uniform array) in a linked program
 /// (`WebGLUniformLocation`). It is invalidated when the program is linked again.

@@ -1,9 +1,9 @@
 //! The objects of a context and the references between them.
 //!
 //! [`Objects`] owns one [`Table`] per kind of object and the default vertex array. Objects
-//! refer to each other — a vertex array to its buffers, a program to its shaders, and the
-//! context to the program in use — and such a reference keeps a deleted object alive, as GL
-//! requires. The methods here are the only ones that set or drop such a reference (a table's
+//! refer to each other — a vertex array to its buffers, a program to its shaders, a
+//! framebuffer to its attached images, and the context to the program in use — and such a
+//! reference keeps a deleted object alive, as GL requires. The methods here are the only ones that set or drop such a reference (a table's
 //! counting methods are private to this module), so the counts always match the references
 //! held: an object is freed exactly when it is deleted and nothing refers to it any more.
 //!
@@ -15,11 +15,16 @@ mod handles;
 mod table;
 
 pub(crate) use handles::{next_context_id, Id};
-pub use handles::{Buffer, Program, Shader, Texture, UniformLocation, VertexArray};
+pub use handles::{
+    Buffer, Framebuffer, Program, Query, Renderbuffer, Sampler, Shader, Sync, Texture,
+    TransformFeedback, UniformLocation, VertexArray,
+};
 pub(crate) use table::Table;
 
 use crate::buffer::BufferObject;
+use crate::framebuffer::{Attachment, FramebufferObject};
 use crate::program::{LinkedProgram, ProgramObject, ShaderObject};
+use crate::renderbuffer::RenderbufferObject;
 use crate::texture::TextureObject;
 use crate::vertex_array::VertexArrayObject;
 
@@ -30,6 +35,8 @@ pub(crate) struct Objects {
     pub(crate) vertex_arrays: Table<VertexArrayObject>,
     pub(crate) programs: Table<ProgramObject>,
     pub(crate) shaders: Table<ShaderObject>,
+    pub(crate) framebuffers: Table<FramebufferObject>,
+    pub(crate) renderbuffers: Table<RenderbufferObject>,
     /// The vertex array in use when none is bound (WebGL's default vertex array object).
     default_vertex_array: VertexArrayObject,
 }
@@ -43,6 +50,8 @@ impl Objects {
             vertex_arrays: Table::default(),
             programs: Table::default(),
             shaders: Table::default(),
+            framebuffers: Table::default(),
+            renderbuffers: Table::default(),
             default_vertex_array: VertexArrayObject::new(max_vertex_attribs),
         }
     }
@@ -117,9 +126,97 @@ impl Objects {
         }
     }
 
-    /// Deletes a texture (the caller has unbound it from the texture units).
-    pub(crate) fn delete_texture(&mut self, id: Id) {
+    /// Deletes a texture (the caller has unbound it from the texture units): detached from
+    /// the bound framebuffers `bound` (GL detaches it only from those), freed when no other
+    /// framebuffer has it attached.
+    pub(crate) fn delete_texture(&mut self, id: Id, bound: [Option<Id>; 2]) {
+        self.detach_everywhere(
+            bound,
+            |a| matches!(a, Attachment::Texture { id: t, .. } if t == id),
+        );
         self.textures.delete(id);
+    }
+
+    /// Deletes a renderbuffer (the caller has unbound it): detached from the bound
+    /// framebuffers, freed when no other framebuffer has it attached.
+    pub(crate) fn delete_renderbuffer(&mut self, id: Id, bound: [Option<Id>; 2]) {
+        self.detach_everywhere(bound, |a| a == Attachment::Renderbuffer(id));
+        self.renderbuffers.delete(id);
+    }
+
+    /// Detaches the images `matches` picks from the framebuffers `bound`.
+    fn detach_everywhere(&mut self, bound: [Option<Id>; 2], matches: impl Fn(Attachment) -> bool) {
+        for fb in bound.into_iter().flatten() {
+            let Some(f) = self.framebuffers.get_any(fb) else {
+                continue;
+            };
+            let points: Vec<u32> = f
+                .attachments()
+                .filter(|(_, a)| matches(*a))
+                .map(|(p, _)| p)
+                .collect();
+            for p in points {
+                self.attach(fb, p, None);
+            }
+        }
+    }
+
+    /// Attaches `image` (or nothing) at attachment point `point` of framebuffer `fb`
+    /// (`DEPTH_STENCIL_ATTACHMENT` sets both depth and stencil, as WebGL2 has it), moving
+    /// the references the attachments hold.
+    pub(crate) fn attach(&mut self, fb: Id, point: u32, image: Option<Attachment>) {
+        let points: &[u32] = if point == crate::gl::DEPTH_STENCIL_ATTACHMENT {
+            &[crate::gl::DEPTH_ATTACHMENT, crate::gl::STENCIL_ATTACHMENT]
+        } else {
+            std::slice::from_ref(&point)
+        };
+        for &p in points {
+            let Some(f) = self.framebuffers.get_any_mut(fb) else {
+                return;
+            };
+            let slot = match p {
+                crate::gl::DEPTH_ATTACHMENT => &mut f.depth,
+                crate::gl::STENCIL_ATTACHMENT => &mut f.stencil,
+                _ => match f
+                    .colors
+                    .get_mut((p - crate::gl::COLOR_ATTACHMENT0) as usize)
+                {
+                    Some(s) => s,
+                    None => return,
+                },
+            };
+            let old = std::mem::replace(slot, image);
+            if let Some(new) = image {
+                self.hold_image(new);
+            }
+            if let Some(old) = old {
+                self.release_image(old);
+            }
+        }
+    }
+
+    fn hold_image(&mut self, a: Attachment) {
+        match a {
+            Attachment::Texture { id, .. } => self.textures.add_ref(id),
+            Attachment::Renderbuffer(id) => self.renderbuffers.add_ref(id),
+        }
+    }
+
+    fn release_image(&mut self, a: Attachment) {
+        match a {
+            Attachment::Texture { id, .. } => self.textures.release(id),
+            Attachment::Renderbuffer(id) => self.renderbuffers.release(id),
+        }
+    }
+
+    /// Deletes a framebuffer (the caller has unbound it), dropping its attachments'
+    /// references.
+    pub(crate) fn delete_framebuffer(&mut self, id: Id) {
+        if let Some(freed) = self.framebuffers.delete_freeing(id) {
+            for (_, a) in freed.attachments() {
+                self.release_image(a);
+            }
+        }
     }
 
     /// Attaches shader `s` to program `p`, which keeps it alive.

@@ -4,7 +4,7 @@
 
 use essl::program::ProgramLayout;
 
-use super::interface::{output0, shader_inputs};
+use super::interface::{outputs, shader_inputs};
 use super::shader::compile;
 use super::LinkedProgram;
 use crate::context::ProgramFilter;
@@ -233,7 +233,7 @@ impl Context {
         let size = layout.uniform_block.as_ref().map_or(0, |b| b.size as usize);
         Ok(LinkedProgram {
             serial,
-            output0: output0(&layout.fragment),
+            outputs: outputs(&layout.fragment),
             inputs,
             uniform_data: vec![0; size],
             uniform_version: 0,

@@ -78,8 +78,8 @@ pub(crate) struct LinkedProgram {
     pub(crate) vertex_module: wgpu::ShaderModule,
     pub(crate) fragment_module: wgpu::ShaderModule,
     pub(crate) inputs: Vec<ShaderInput>,
-    /// Kind and width of the fragment output at location 0, if any.
-    pub(crate) output0: Option<(ValueKind, u8)>,
+    /// The fragment outputs: location and kind.
+    pub(crate) outputs: Vec<(u32, ValueKind)>,
     pub(crate) uniform_data: Vec<u8>,
     /// Bumped when `uniform_data` changes.
     pub(crate) uniform_version: u64,

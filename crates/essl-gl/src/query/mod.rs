@@ -40,8 +40,20 @@ pub enum Parameter {
     Texture(Option<Texture>),
     /// `WebGLVertexArrayObject` or `null` for the default one (`VERTEX_ARRAY_BINDING`).
     VertexArray(Option<VertexArray>),
-    /// `null` for a binding of an object kind essl-gl does not have (`FRAMEBUFFER_BINDING`,
-    /// `RENDERBUFFER_BINDING`: always the default framebuffer, no renderbuffer).
+    /// `WebGLFramebuffer` or `null` for the default one (`DRAW_FRAMEBUFFER_BINDING`, …).
+    Framebuffer(Option<crate::Framebuffer>),
+    /// `WebGLRenderbuffer` or `null` (`RENDERBUFFER_BINDING`, an attachment's object).
+    Renderbuffer(Option<crate::Renderbuffer>),
+    /// `WebGLSampler` or `null` (`SAMPLER_BINDING`).
+    Sampler(Option<crate::Sampler>),
+    /// `WebGLTransformFeedback` or `null` (`TRANSFORM_FEEDBACK_BINDING`).
+    TransformFeedback(Option<crate::TransformFeedback>),
+    /// `WebGLQuery` or `null` (`getQuery(target, CURRENT_QUERY)`).
+    Query(Option<crate::Query>),
+    /// `Uint32Array` (`getActiveUniforms` of several uniforms, `getUniformIndices`).
+    Uints(Vec<u32>),
+    /// `null`: a query with no object to return (an attachment point with nothing
+    /// attached, a default framebuffer's object name).
     Null,
 }
 

@@ -28,6 +28,7 @@ impl Context {
             .state_parameter(pname)
             .or_else(|| self.binding_parameter(pname))
             .or_else(|| self.pixel_store_parameter(pname))
+            .or_else(|| self.framebuffer_parameter(pname))
             .or_else(|| self.limit_parameter(pname));
         if value.is_none() {
             self.error(
@@ -77,21 +78,24 @@ impl Context {
             gl::SAMPLE_COVERAGE => Bool(s.sample_coverage),
             gl::SCISSOR_TEST => Bool(s.scissor_test),
             gl::STENCIL_TEST => Bool(s.stencil_test),
-            gl::SAMPLE_COVERAGE_VALUE => Float(1.0),
-            gl::SAMPLE_COVERAGE_INVERT => Bool(false),
-            // Stencil state keeps GL's initial values: there is no stencil buffer to use it.
-            gl::STENCIL_FUNC | gl::STENCIL_BACK_FUNC => Enum(gl::ALWAYS),
-            gl::STENCIL_FAIL
-            | gl::STENCIL_PASS_DEPTH_FAIL
-            | gl::STENCIL_PASS_DEPTH_PASS
-            | gl::STENCIL_BACK_FAIL
-            | gl::STENCIL_BACK_PASS_DEPTH_FAIL
-            | gl::STENCIL_BACK_PASS_DEPTH_PASS => Enum(gl::KEEP),
-            gl::STENCIL_REF | gl::STENCIL_BACK_REF => Int(0),
-            gl::STENCIL_VALUE_MASK
-            | gl::STENCIL_WRITEMASK
-            | gl::STENCIL_BACK_VALUE_MASK
-            | gl::STENCIL_BACK_WRITEMASK => Int(u32::MAX as i64),
+            gl::SAMPLE_COVERAGE_VALUE => Float(s.sample_coverage_value.0),
+            gl::SAMPLE_COVERAGE_INVERT => Bool(s.sample_coverage_value.1),
+            gl::GENERATE_MIPMAP_HINT => Enum(s.hints[0]),
+            gl::FRAGMENT_SHADER_DERIVATIVE_HINT => Enum(s.hints[1]),
+            gl::STENCIL_FUNC => Enum(s.stencil.func[0]),
+            gl::STENCIL_BACK_FUNC => Enum(s.stencil.func[1]),
+            gl::STENCIL_FAIL => Enum(s.stencil.fail[0]),
+            gl::STENCIL_BACK_FAIL => Enum(s.stencil.fail[1]),
+            gl::STENCIL_PASS_DEPTH_FAIL => Enum(s.stencil.depth_fail[0]),
+            gl::STENCIL_BACK_PASS_DEPTH_FAIL => Enum(s.stencil.depth_fail[1]),
+            gl::STENCIL_PASS_DEPTH_PASS => Enum(s.stencil.pass[0]),
+            gl::STENCIL_BACK_PASS_DEPTH_PASS => Enum(s.stencil.pass[1]),
+            gl::STENCIL_REF => Int(s.stencil.reference[0] as i64),
+            gl::STENCIL_BACK_REF => Int(s.stencil.reference[1] as i64),
+            gl::STENCIL_VALUE_MASK => Int(s.stencil.value_mask[0] as i64),
+            gl::STENCIL_BACK_VALUE_MASK => Int(s.stencil.value_mask[1] as i64),
+            gl::STENCIL_WRITEMASK => Int(s.stencil.writemask[0] as i64),
+            gl::STENCIL_BACK_WRITEMASK => Int(s.stencil.writemask[1] as i64),
             _ => return None,
         })
     }
@@ -113,9 +117,15 @@ impl Context {
             gl::UNIFORM_BUFFER_BINDING => {
                 self.handle_buffer(self.bindings.buffer(gl::UNIFORM_BUFFER))
             }
-            gl::PIXEL_PACK_BUFFER_BINDING
-            | gl::PIXEL_UNPACK_BUFFER_BINDING
-            | gl::TRANSFORM_FEEDBACK_BUFFER_BINDING => Parameter::Buffer(None),
+            gl::PIXEL_PACK_BUFFER_BINDING => {
+                self.handle_buffer(self.bindings.buffer(gl::PIXEL_PACK_BUFFER))
+            }
+            gl::PIXEL_UNPACK_BUFFER_BINDING => {
+                self.handle_buffer(self.bindings.buffer(gl::PIXEL_UNPACK_BUFFER))
+            }
+            gl::TRANSFORM_FEEDBACK_BUFFER_BINDING => {
+                self.handle_buffer(self.bindings.buffer(gl::TRANSFORM_FEEDBACK_BUFFER))
+            }
             gl::VERTEX_ARRAY_BINDING => Parameter::VertexArray(
                 self.bindings
                     .vertex_array()
@@ -126,8 +136,90 @@ impl Context {
             gl::TEXTURE_BINDING_CUBE_MAP => self.handle_texture(gl::TEXTURE_CUBE_MAP),
             gl::TEXTURE_BINDING_3D => self.handle_texture(gl::TEXTURE_3D),
             gl::TEXTURE_BINDING_2D_ARRAY => self.handle_texture(gl::TEXTURE_2D_ARRAY),
-            gl::FRAMEBUFFER_BINDING | gl::READ_FRAMEBUFFER_BINDING | gl::RENDERBUFFER_BINDING => {
-                Parameter::Null
+            gl::FRAMEBUFFER_BINDING => Parameter::Framebuffer(
+                self.bindings.framebuffers()[0].map(|id| crate::Framebuffer { ctx: self.id, id }),
+            ),
+            gl::READ_FRAMEBUFFER_BINDING => Parameter::Framebuffer(
+                self.bindings.framebuffers()[1].map(|id| crate::Framebuffer { ctx: self.id, id }),
+            ),
+            gl::RENDERBUFFER_BINDING => Parameter::Renderbuffer(
+                self.bindings
+                    .renderbuffer()
+                    .map(|id| crate::Renderbuffer { ctx: self.id, id }),
+            ),
+            _ => return None,
+        })
+    }
+
+    /// What the bound framebuffers have: bit depths and samples of the draw framebuffer,
+    /// the read format of the read buffer, the draw and read buffers.
+    fn framebuffer_parameter(&self, pname: u32) -> Option<Parameter> {
+        use Parameter::{Enum, Int};
+        let [draw, read] = self.bindings.framebuffers();
+        let formats = self.draw_formats();
+        let color = formats.colors.first().copied().flatten();
+        let bits = color.map(|f| crate::texture::bit_sizes(&f)).unwrap_or_default();
+        let depth_stencil = match draw.and_then(|id| self.objects.framebuffers.get_any(id)) {
+            Some(f) => f.depth.or(f.stencil).and_then(|a| self.image_info(a)).map(|i| i.format),
+            None => None,
+        };
+        let ds = depth_stencil.map(|f| crate::texture::bit_sizes(&f)).unwrap_or_default();
+        let (depth_bits, stencil_bits, samples) = match draw {
+            Some(id) => {
+                let f = self.objects.framebuffers.get_any(id)?;
+                let samples = f
+                    .attachments()
+                    .find_map(|(_, a)| self.image_info(a))
+                    .map_or(0, |i| i.samples);
+                (ds.depth, ds.stencil, samples)
+            }
+            None => {
+                let a = &self.fb.attributes;
+                (
+                    if a.depth { 24 } else { 0 },
+                    if a.stencil { 8 } else { 0 },
+                    if a.antialias { 4 } else { 0 },
+                )
+            }
+        };
+        let alpha_bits = if draw.is_none() && !self.fb.attributes.alpha { 0 } else { bits.alpha };
+        Some(match pname {
+            gl::RED_BITS => Int(bits.red as i64),
+            gl::GREEN_BITS => Int(bits.green as i64),
+            gl::BLUE_BITS => Int(bits.blue as i64),
+            gl::ALPHA_BITS => Int(alpha_bits as i64),
+            gl::DEPTH_BITS => Int(depth_bits as i64),
+            gl::STENCIL_BITS => Int(stencil_bits as i64),
+            gl::SAMPLES => Int(samples as i64),
+            gl::SAMPLE_BUFFERS => Int((samples > 0) as i64),
+            gl::IMPLEMENTATION_COLOR_READ_FORMAT | gl::IMPLEMENTATION_COLOR_READ_TYPE => {
+                let read_format = match read.and_then(|id| self.objects.framebuffers.get_any(id)) {
+                    None => crate::texture::internal_format(gl::RGBA8).ok(),
+                    Some(f) => f
+                        .attachment(f.read_buffer)
+                        .and_then(|a| self.image_info(a))
+                        .map(|i| i.format),
+                }?;
+                let (format, ty) = crate::readback::native_pair(&read_format);
+                Enum(if pname == gl::IMPLEMENTATION_COLOR_READ_FORMAT {
+                    format
+                } else {
+                    ty
+                })
+            }
+            gl::READ_BUFFER => Enum(match read.and_then(|id| self.objects.framebuffers.get_any(id)) {
+                None => self.fb.read_buffer,
+                Some(f) => f.read_buffer,
+            }),
+            p if (gl::DRAW_BUFFER0..gl::DRAW_BUFFER0 + crate::MAX_COLOR_ATTACHMENTS)
+                .contains(&p) =>
+            {
+                let i = (p - gl::DRAW_BUFFER0) as usize;
+                Enum(match draw.and_then(|id| self.objects.framebuffers.get_any(id)) {
+                    None if i == 0 => self.fb.draw_buffer,
+                    None => gl::NONE,
+                    Some(f) => f.draw_buffers[i],
+                })
             }
             _ => return None,
         })
@@ -168,12 +260,7 @@ impl Context {
         let varyings = l.max_inter_stage_shader_variables as i64;
         Some(match pname {
             // The default framebuffer.
-            gl::RED_BITS | gl::GREEN_BITS | gl::BLUE_BITS | gl::ALPHA_BITS => Int(8),
-            gl::DEPTH_BITS => Int(24),
-            gl::STENCIL_BITS | gl::SAMPLES | gl::SAMPLE_BUFFERS => Int(0),
             gl::SUBPIXEL_BITS => Int(SUBPIXEL_BITS),
-            gl::IMPLEMENTATION_COLOR_READ_FORMAT => Enum(gl::RGBA),
-            gl::IMPLEMENTATION_COLOR_READ_TYPE => Enum(gl::UNSIGNED_BYTE),
             // Limits.
             gl::MAX_TEXTURE_SIZE | gl::MAX_CUBE_MAP_TEXTURE_SIZE | gl::MAX_RENDERBUFFER_SIZE => {
                 Int(l.max_texture_dimension_2d as i64)
@@ -202,7 +289,23 @@ impl Context {
                 Int(self.uniform_buffer_offset_alignment() as i64)
             }
             gl::MAX_ELEMENT_INDEX => Int(u32::MAX as i64),
-            gl::MAX_DRAW_BUFFERS | gl::MAX_COLOR_ATTACHMENTS => Int(1),
+            gl::MAX_DRAW_BUFFERS | gl::MAX_COLOR_ATTACHMENTS => {
+                Int(crate::MAX_COLOR_ATTACHMENTS as i64)
+            }
+            gl::MAX_SAMPLES => Int(4),
+            gl::MAX_ELEMENTS_VERTICES | gl::MAX_ELEMENTS_INDICES => Int(i32::MAX as i64),
+            gl::MIN_PROGRAM_TEXEL_OFFSET => Int(-8),
+            gl::MAX_PROGRAM_TEXEL_OFFSET => Int(7),
+            gl::MAX_TEXTURE_LOD_BIAS => Parameter::Float(2.0),
+            gl::MAX_SERVER_WAIT_TIMEOUT => Int(0),
+            gl::MAX_CLIENT_WAIT_TIMEOUT_WEBGL => Int(0),
+            gl::MAX_COMBINED_VERTEX_UNIFORM_COMPONENTS
+            | gl::MAX_COMBINED_FRAGMENT_UNIFORM_COMPONENTS => {
+                Int(uniform_vectors * 4 + blocks * l.max_uniform_buffer_binding_size as i64 / 4)
+            }
+            gl::MAX_TRANSFORM_FEEDBACK_INTERLEAVED_COMPONENTS => Int(64),
+            gl::MAX_TRANSFORM_FEEDBACK_SEPARATE_ATTRIBS => Int(4),
+            gl::MAX_TRANSFORM_FEEDBACK_SEPARATE_COMPONENTS => Int(4),
             gl::ALIASED_LINE_WIDTH_RANGE | gl::ALIASED_POINT_SIZE_RANGE => Floats(vec![1.0, 1.0]),
             // Strings.
             gl::VERSION => Parameter::String(VERSION.to_owned()),

@@ -14,6 +14,7 @@
 //! its `impl` is spread over these files on purpose, one file per group of GL calls.
 
 mod format;
+mod gpu;
 mod mipmap;
 mod object;
 mod params;
@@ -23,7 +24,9 @@ mod storage;
 mod upload;
 
 pub(crate) use format::*;
+pub(crate) use gpu::{upload_image, GpuTexture, ViewKey};
 pub(crate) use object::*;
+pub(crate) use pixels::f16_to_f32;
 pub(crate) use sampling::*;
 
 use crate::context::{Context, MAX_TEXTURE_UNITS};
@@ -123,7 +126,8 @@ impl Context {
             return;
         }
         self.bindings.forget_texture(texture.id);
-        self.objects.delete_texture(texture.id);
+        let bound = self.bindings.framebuffers();
+        self.objects.delete_texture(texture.id, bound);
     }
 
     /// The texture bound to `target` of the active unit, or `INVALID_OPERATION`.

@@ -319,17 +319,7 @@ impl Context {
             .textures
             .get_mut(id)
             .expect("bound textures are live");
-        t.set_level(
-            face,
-            level as u32,
-            Level {
-                width: w,
-                height: h,
-                depth: d,
-                format: f,
-                data,
-            },
-        );
+        t.set_level(face, level as u32, Level::new([w, h, d], f, data));
     }
 
     /// Replaces a region of a level of a 2D texture or cube map face (`texSubImage2D`).
@@ -455,8 +445,34 @@ impl Context {
             .textures
             .get_mut(id)
             .expect("bound textures are live");
+        let cube = t.face_count() == 6;
         let dst = t.faces[face][level as usize].as_mut().expect("checked");
         let texel = dst.format.texel_size();
+        let Some(dst_data) = dst.data.as_mut() else {
+            // The GPU holds the level's newest texels (it was drawn into): the box goes
+            // straight to the GPU copy, in the batch's order.
+            let g = t
+                .gpu
+                .as_ref()
+                .expect("a level held by the GPU is in its chain");
+            let texture = g.texture.clone();
+            let mip = level as u32 - g.anchor;
+            let z = if cube { face as u32 } else { offset[2] as u32 };
+            if dst.format.copyable() {
+                crate::texture::upload_image(
+                    &self.gpu,
+                    &mut self.frame,
+                    &texture,
+                    mip,
+                    [offset[0] as u32, offset[1] as u32, z],
+                    [w, h, d],
+                    texel as u32,
+                    &src,
+                );
+            }
+            return;
+        };
+        dst.uploaded = false;
         let row = w as usize * texel;
         for z in 0..d as usize {
             for y in 0..h as usize {
@@ -466,7 +482,7 @@ impl Context {
                 let at = ((dz * dst.height as usize + dy) * dst.width as usize
                     + offset[0] as usize)
                     * texel;
-                dst.data[at..at + row].copy_from_slice(&src[s..s + row]);
+                dst_data[at..at + row].copy_from_slice(&src[s..s + row]);
             }
         }
         t.version += 1;

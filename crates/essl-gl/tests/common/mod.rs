@@ -199,3 +199,27 @@ pub fn assert_clean(ctx: &Context) {
 pub const QUAD: [f32; 12] = [
     -1.0, -1.0, 1.0, -1.0, 1.0, 1.0, -1.0, -1.0, 1.0, 1.0, -1.0, 1.0,
 ];
+
+/// Compiles and links a GLSL ES program, panicking with the logs on failure.
+#[allow(dead_code)]
+pub fn program(ctx: &mut Context, vs: &str, fs: &str) -> essl_gl::Program {
+    let p = ctx.create_program();
+    for (ty, src) in [(gl::VERTEX_SHADER, vs), (gl::FRAGMENT_SHADER, fs)] {
+        let s = ctx.create_shader(ty).expect("a shader type");
+        ctx.shader_source(s, src);
+        ctx.compile_shader(s);
+        assert!(
+            ctx.get_shader_compile_status(s),
+            "{:?}",
+            ctx.get_shader_info_log(s)
+        );
+        ctx.attach_shader(p, s);
+    }
+    ctx.link_program(p);
+    assert!(
+        ctx.get_program_link_status(p),
+        "{:?}",
+        ctx.get_program_info_log(p)
+    );
+    p
+}

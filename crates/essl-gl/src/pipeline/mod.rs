@@ -1,11 +1,16 @@
 //! Render pipelines, built on demand and cached by everything they depend on: the program,
-//! the vertex layout (and the shader patches it needs), the primitive topology, and the
-//! fixed-function state. Bind group layouts and bind groups are cached here too.
+//! the vertex layout (and the shader patches it needs), the primitive topology, the
+//! fixed-function state and the formats of the pass's attachments. Bind group layouts and
+//! bind groups are cached here too; [`clear`] holds the pipelines of masked clears.
+
+mod clear;
+
+pub(crate) use clear::{ClearKey, ClearKind};
 
 use std::borrow::Cow;
 use std::collections::HashMap;
 
-use crate::context::{Gpu, COLOR_FORMAT, DEPTH_FORMAT};
+use crate::context::Gpu;
 use crate::program::LinkedProgram;
 use crate::shader_patch::{wrap_entry_point, InputPatch};
 use crate::texture::SampleKind;
@@ -49,6 +54,15 @@ pub(crate) struct PipelineKey {
     pub(crate) blend: Option<wgpu::BlendState>,
     pub(crate) write_mask: wgpu::ColorWrites,
     pub(crate) slots: Vec<SlotBinding>,
+    /// The format of each colour attachment, by draw buffer (`None`: nothing there).
+    pub(crate) targets: Vec<Option<wgpu::TextureFormat>>,
+    /// The depth/stencil attachment's format.
+    pub(crate) depth_format: Option<wgpu::TextureFormat>,
+    pub(crate) stencil: wgpu::StencilState,
+    pub(crate) samples: u32,
+    pub(crate) alpha_to_coverage: bool,
+    /// `EXT_float_blend`: 32-bit float attachments blend.
+    pub(crate) float_blend: bool,
 }
 
 /// What a group-0 bind group holds: the default block's arena chunk and size, and the
@@ -74,7 +88,7 @@ pub(crate) struct PipelineCache {
     group1_groups:
         HashMap<(Vec<SlotBinding>, Vec<(wgpu::TextureView, wgpu::Sampler)>), wgpu::BindGroup>,
     modules: HashMap<(u64, Vec<InputPatch>), Result<wgpu::ShaderModule, Rejected>>,
-    clear: HashMap<(wgpu::ColorWrites, bool), wgpu::RenderPipeline>,
+    clear: HashMap<ClearKey, wgpu::RenderPipeline>,
     /// Pipelines created (for statistics and tests).
     pub(crate) created: u64,
 }
@@ -379,27 +393,35 @@ impl PipelineCache {
                     polygon_mode: wgpu::PolygonMode::Fill,
                     conservative: false,
                 },
-                depth_stencil: Some(wgpu::DepthStencilState {
-                    format: DEPTH_FORMAT,
-                    depth_write_enabled: Some(key.depth_write),
-                    depth_compare: Some(key.depth_compare),
-                    stencil: Default::default(),
+                depth_stencil: key.depth_format.map(|format| wgpu::DepthStencilState {
+                    format,
+                    depth_write_enabled: Some(key.depth_write && format.has_depth_aspect()),
+                    depth_compare: Some(if format.has_depth_aspect() {
+                        key.depth_compare
+                    } else {
+                        wgpu::CompareFunction::Always
+                    }),
+                    stencil: if format.has_stencil_aspect() {
+                        key.stencil.clone()
+                    } else {
+                        Default::default()
+                    },
                     bias: wgpu::DepthBiasState {
                         constant: key.depth_bias.0,
                         slope_scale: f32::from_bits(key.depth_bias.1),
                         clamp: 0.0,
                     },
                 }),
-                multisample: Default::default(),
+                multisample: wgpu::MultisampleState {
+                    count: key.samples,
+                    mask: !0,
+                    alpha_to_coverage_enabled: key.alpha_to_coverage && key.samples > 1,
+                },
                 fragment: Some(wgpu::FragmentState {
                     module: &program.fragment_module,
                     entry_point: Some("main"),
                     compilation_options: Default::default(),
-                    targets: &[Some(wgpu::ColorTargetState {
-                        format: COLOR_FORMAT,
-                        blend: key.blend,
-                        write_mask: key.write_mask,
-                    })],
+                    targets: &color_targets(key),
                 }),
                 multiview_mask: None,
                 cache: None,
@@ -414,73 +436,32 @@ impl PipelineCache {
             pipeline,
         })
     }
+}
 
-    /// The pipeline that clears with a full-screen triangle (for clears that the colour mask,
-    /// depth mask or scissor restrict): colour from the uniform block, depth from its `w`.
-    pub(crate) fn clear_pipeline(
-        &mut self,
-        gpu: &Gpu,
-        write_mask: wgpu::ColorWrites,
-        depth: bool,
-    ) -> wgpu::RenderPipeline {
-        if let Some(p) = self.clear.get(&(write_mask, depth)) {
-            return p.clone();
-        }
-        const SOURCE: &str = "
-            struct Clear { color: vec4<f32>, depth: vec4<f32> }
-            @group(0) @binding(0) var<uniform> clear: Clear;
-            @vertex fn vs(@builtin(vertex_index) i: u32) -> @builtin(position) vec4<f32> {
-                let x = f32((i << 1u) & 2u) * 2.0 - 1.0;
-                let y = f32(i & 2u) * 2.0 - 1.0;
-                return vec4(x, y, clear.depth.x, 1.0);
-            }
-            @fragment fn fs() -> @location(0) vec4<f32> { return clear.color; }
-        ";
-        let module = naga::front::wgsl::parse_str(SOURCE).expect("the clear shader parses");
-        let module =
-            create_module(gpu, module, "essl-gl clear").expect("the clear shader is valid");
-        let group0 = self.group0_layout(gpu, true, 0);
-        let layout = gpu
-            .device
-            .create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
-                label: Some("essl-gl clear"),
-                bind_group_layouts: &[Some(&group0)],
-                immediate_size: 0,
-            });
-        let pipeline = gpu
-            .device
-            .create_render_pipeline(&wgpu::RenderPipelineDescriptor {
-                label: Some("essl-gl clear"),
-                layout: Some(&layout),
-                vertex: wgpu::VertexState {
-                    module: &module,
-                    entry_point: Some("vs"),
-                    compilation_options: Default::default(),
-                    buffers: &[],
-                },
-                primitive: Default::default(),
-                depth_stencil: Some(wgpu::DepthStencilState {
-                    format: DEPTH_FORMAT,
-                    depth_write_enabled: Some(depth),
-                    depth_compare: Some(wgpu::CompareFunction::Always),
-                    stencil: Default::default(),
-                    bias: Default::default(),
-                }),
-                multisample: Default::default(),
-                fragment: Some(wgpu::FragmentState {
-                    module: &module,
-                    entry_point: Some("fs"),
-                    compilation_options: Default::default(),
-                    targets: &[Some(wgpu::ColorTargetState {
-                        format: COLOR_FORMAT,
-                        blend: None,
-                        write_mask,
-                    })],
-                }),
-                multiview_mask: None,
-                cache: None,
-            });
-        self.clear.insert((write_mask, depth), pipeline.clone());
-        pipeline
-    }
+/// The colour targets of a draw pipeline: blending only where the format can blend (not
+/// integer formats, as GL ignores blending there, nor 32-bit floats without
+/// `EXT_float_blend`).
+fn color_targets(key: &PipelineKey) -> Vec<Option<wgpu::ColorTargetState>> {
+    key.targets
+        .iter()
+        .map(|t| {
+            t.map(|format| {
+                let blendable = format
+                    .sample_type(None, None)
+                    .is_some_and(|s| matches!(s, wgpu::TextureSampleType::Float { .. }))
+                    && (key.float_blend
+                        || !matches!(
+                            format,
+                            wgpu::TextureFormat::R32Float
+                                | wgpu::TextureFormat::Rg32Float
+                                | wgpu::TextureFormat::Rgba32Float
+                        ));
+                wgpu::ColorTargetState {
+                    format,
+                    blend: if blendable { key.blend } else { None },
+                    write_mask: key.write_mask,
+                }
+            })
+        })
+        .collect()
 }
