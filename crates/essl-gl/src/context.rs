@@ -4,9 +4,9 @@
 use std::sync::{Arc, Mutex};
 
 use crate::bindings::Bindings;
-use crate::extensions::Extensions;
 use crate::caches::Caches;
 use crate::error::{error_name, ContextError, ErrorState};
+use crate::extensions::Extensions;
 use crate::frame::Frame;
 use crate::framebuffer::{ContextAttributes, DefaultFramebuffer};
 use crate::gl;

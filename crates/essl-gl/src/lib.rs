@@ -65,6 +65,7 @@
 pub mod gl;
 
 mod bindings;
+mod blit;
 mod buffer;
 mod caches;
 mod context;

@@ -378,7 +378,7 @@ impl Context {
     /// The scissor rectangle in wgpu's coordinates (GL's: rows are stored bottom first),
     /// clipped to a target of `size`; the whole target without `SCISSOR_TEST`; `None` when
     /// empty.
-    pub(super) fn scissor_rect_for(&self, size: [u32; 2]) -> Option<[u32; 4]> {
+    pub(crate) fn scissor_rect_for(&self, size: [u32; 2]) -> Option<[u32; 4]> {
         let (fw, fh) = (size[0] as i64, size[1] as i64);
         if fw == 0 || fh == 0 {
             return None;

@@ -15,7 +15,7 @@ mod target;
 
 pub(crate) use default::DefaultFramebuffer;
 pub use default::{ContextAttributes, COLOR_FORMAT};
-pub(crate) use target::{sample_view_key, DrawFormats, ReadSurface, SurfaceImage};
+pub(crate) use target::{sample_view_key, DrawFormats, DrawImages, ReadSurface, SurfaceImage};
 
 use crate::context::Context;
 use crate::gl;
@@ -509,8 +509,8 @@ impl Context {
                 );
             }
             if bound.is_some()
-                && a >= gl::COLOR_ATTACHMENT0 + MAX_COLOR_ATTACHMENTS
-                && a <= gl::COLOR_ATTACHMENT15
+                && (gl::COLOR_ATTACHMENT0 + MAX_COLOR_ATTACHMENTS..=gl::COLOR_ATTACHMENT15)
+                    .contains(&a)
             {
                 return self.error(
                     gl::INVALID_OPERATION,

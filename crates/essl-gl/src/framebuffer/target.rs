@@ -38,6 +38,14 @@ pub(crate) struct DrawFormats {
     pub(crate) size: [u32; 2],
 }
 
+/// The images a draw or blit writes: by draw buffer, and depth and stencil (the same image
+/// when the format has both).
+pub(crate) struct DrawImages {
+    pub(crate) colors: Vec<Option<SurfaceImage>>,
+    pub(crate) depth: Option<SurfaceImage>,
+    pub(crate) stencil: Option<SurfaceImage>,
+}
+
 /// What a read (`read_pixels`, `copy_tex_image_2d`, a blit's source) reads from.
 #[derive(Clone, Debug)]
 pub(crate) struct ReadSurface {
@@ -45,8 +53,6 @@ pub(crate) struct ReadSurface {
     pub(crate) color: Option<SurfaceImage>,
     pub(crate) depth: Option<SurfaceImage>,
     pub(crate) stencil: Option<SurfaceImage>,
-    pub(crate) width: u32,
-    pub(crate) height: u32,
     /// Whether the read framebuffer is the default one.
     pub(crate) default: bool,
 }
@@ -120,19 +126,22 @@ impl Context {
         }
     }
 
-    /// The render pass target of the bound draw framebuffer: its draw buffers' images and
-    /// depth/stencil. The caller has checked completeness.
-    pub(crate) fn draw_target(&mut self) -> PassTarget {
+    /// The images of the bound draw framebuffer, marked as drawn into: its draw buffers'
+    /// and depth/stencil. The caller has checked completeness.
+    pub(crate) fn draw_images(&mut self) -> DrawImages {
         let [draw, _] = self.bindings.framebuffers();
         let Some(fb) = draw
             .and_then(|id| self.objects.framebuffers.get_any(id))
             .cloned()
         else {
-            return self.default_target();
+            let read = self.default_read_surface();
+            return DrawImages {
+                colors: vec![read.color.filter(|_| self.fb.draw_buffer == gl::BACK)],
+                depth: read.depth,
+                stencil: read.stencil,
+            };
         };
         let mut colors = Vec::new();
-        let mut size = [0, 0];
-        let mut samples = 1;
         for (i, &buffer) in fb.draw_buffers.iter().enumerate() {
             let image = fb
                 .colors
@@ -141,25 +150,46 @@ impl Context {
                 .flatten()
                 .filter(|_| buffer == gl::COLOR_ATTACHMENT0 + i as u32)
                 .and_then(|a| self.attachment_image(a, true));
-            colors.push(image.map(|img| {
-                size = [img.width, img.height];
-                samples = img.samples;
-                ColorTarget {
-                    view: img.view,
-                    depth_slice: img.depth_slice,
-                    resolve: None,
-                    format: img.format.gpu_format(),
-                }
-            }));
+            colors.push(image);
         }
         while colors.last().is_some_and(|c| c.is_none()) {
             colors.pop();
         }
-        let depth = fb
-            .depth
-            .or(fb.stencil)
-            .and_then(|a| self.attachment_image(a, true));
-        let depth = depth.map(|img| {
+        let depth = fb.depth.and_then(|a| self.attachment_image(a, true));
+        let stencil = fb.stencil.and_then(|a| self.attachment_image(a, true));
+        DrawImages {
+            colors,
+            depth,
+            stencil,
+        }
+    }
+
+    /// The render pass target of the bound draw framebuffer: its draw buffers' images and
+    /// depth/stencil. The caller has checked completeness.
+    pub(crate) fn draw_target(&mut self) -> PassTarget {
+        if self.bindings.framebuffers()[0].is_none() {
+            return self.default_target();
+        }
+        let images = self.draw_images();
+        let mut size = [0, 0];
+        let mut samples = 1;
+        let colors = images
+            .colors
+            .iter()
+            .map(|c| {
+                c.as_ref().map(|img| {
+                    size = [img.width, img.height];
+                    samples = img.samples;
+                    ColorTarget {
+                        view: img.view.clone(),
+                        depth_slice: img.depth_slice,
+                        resolve: None,
+                        format: img.format.gpu_format(),
+                    }
+                })
+            })
+            .collect();
+        let depth = images.depth.or(images.stencil).map(|img| {
             size = [img.width, img.height];
             samples = img.samples;
             DepthTarget {
@@ -219,23 +249,16 @@ impl Context {
             .and_then(|a| self.attachment_image(a, false));
         let depth = fb.depth.and_then(|a| self.attachment_image(a, false));
         let stencil = fb.stencil.and_then(|a| self.attachment_image(a, false));
-        let (width, height) = [&color, &depth, &stencil]
-            .into_iter()
-            .flatten()
-            .next()
-            .map_or((0, 0), |i| (i.width, i.height));
         ReadSurface {
             color,
             depth,
             stencil,
-            width,
-            height,
             default: false,
         }
     }
 
     /// The default framebuffer as a read source (its resolved colour image).
-    fn default_read_surface(&self) -> ReadSurface {
+    pub(crate) fn default_read_surface(&self) -> ReadSurface {
         let fb = &self.fb;
         let rgba8 = internal_format(gl::RGBA8).expect("a supported format");
         let image = |texture: &wgpu::Texture, view: &wgpu::TextureView, format| SurfaceImage {
@@ -267,8 +290,6 @@ impl Context {
             color,
             depth: depth_stencil.clone().filter(|i| i.format.has_depth()),
             stencil: depth_stencil.filter(|i| i.format.has_stencil()),
-            width: fb.width,
-            height: fb.height,
             default: true,
         }
     }

@@ -3,8 +3,10 @@
 //! fixed-function state and the formats of the pass's attachments. Bind group layouts and
 //! bind groups are cached here too; [`clear`] holds the pipelines of masked clears.
 
+mod blit;
 mod clear;
 
+pub(crate) use blit::{BlitKey, BlitSource, Channels};
 pub(crate) use clear::{ClearKey, ClearKind};
 
 use std::borrow::Cow;
@@ -89,6 +91,7 @@ pub(crate) struct PipelineCache {
         HashMap<(Vec<SlotBinding>, Vec<(wgpu::TextureView, wgpu::Sampler)>), wgpu::BindGroup>,
     modules: HashMap<(u64, Vec<InputPatch>), Result<wgpu::ShaderModule, Rejected>>,
     clear: HashMap<ClearKey, wgpu::RenderPipeline>,
+    blit: HashMap<BlitKey, (wgpu::RenderPipeline, wgpu::BindGroupLayout)>,
     /// Pipelines created (for statistics and tests).
     pub(crate) created: u64,
 }

@@ -158,12 +158,20 @@ impl Context {
         let [draw, read] = self.bindings.framebuffers();
         let formats = self.draw_formats();
         let color = formats.colors.first().copied().flatten();
-        let bits = color.map(|f| crate::texture::bit_sizes(&f)).unwrap_or_default();
+        let bits = color
+            .map(|f| crate::texture::bit_sizes(&f))
+            .unwrap_or_default();
         let depth_stencil = match draw.and_then(|id| self.objects.framebuffers.get_any(id)) {
-            Some(f) => f.depth.or(f.stencil).and_then(|a| self.image_info(a)).map(|i| i.format),
+            Some(f) => f
+                .depth
+                .or(f.stencil)
+                .and_then(|a| self.image_info(a))
+                .map(|i| i.format),
             None => None,
         };
-        let ds = depth_stencil.map(|f| crate::texture::bit_sizes(&f)).unwrap_or_default();
+        let ds = depth_stencil
+            .map(|f| crate::texture::bit_sizes(&f))
+            .unwrap_or_default();
         let (depth_bits, stencil_bits, samples) = match draw {
             Some(id) => {
                 let f = self.objects.framebuffers.get_any(id)?;
@@ -182,7 +190,11 @@ impl Context {
                 )
             }
         };
-        let alpha_bits = if draw.is_none() && !self.fb.attributes.alpha { 0 } else { bits.alpha };
+        let alpha_bits = if draw.is_none() && !self.fb.attributes.alpha {
+            0
+        } else {
+            bits.alpha
+        };
         Some(match pname {
             gl::RED_BITS => Int(bits.red as i64),
             gl::GREEN_BITS => Int(bits.green as i64),
@@ -207,19 +219,23 @@ impl Context {
                     ty
                 })
             }
-            gl::READ_BUFFER => Enum(match read.and_then(|id| self.objects.framebuffers.get_any(id)) {
-                None => self.fb.read_buffer,
-                Some(f) => f.read_buffer,
-            }),
+            gl::READ_BUFFER => Enum(
+                match read.and_then(|id| self.objects.framebuffers.get_any(id)) {
+                    None => self.fb.read_buffer,
+                    Some(f) => f.read_buffer,
+                },
+            ),
             p if (gl::DRAW_BUFFER0..gl::DRAW_BUFFER0 + crate::MAX_COLOR_ATTACHMENTS)
                 .contains(&p) =>
             {
                 let i = (p - gl::DRAW_BUFFER0) as usize;
-                Enum(match draw.and_then(|id| self.objects.framebuffers.get_any(id)) {
-                    None if i == 0 => self.fb.draw_buffer,
-                    None => gl::NONE,
-                    Some(f) => f.draw_buffers[i],
-                })
+                Enum(
+                    match draw.and_then(|id| self.objects.framebuffers.get_any(id)) {
+                        None if i == 0 => self.fb.draw_buffer,
+                        None => gl::NONE,
+                        Some(f) => f.draw_buffers[i],
+                    },
+                )
             }
             _ => return None,
         })
@@ -250,7 +266,7 @@ impl Context {
 
     /// The default framebuffer's formats, the limits and the strings.
     fn limit_parameter(&self, pname: u32) -> Option<Parameter> {
-        use Parameter::{Enum, Floats, Int, Ints};
+        use Parameter::{Floats, Int, Ints};
         let l = &self.gpu.limits;
         let uniform_vectors = (l.max_uniform_buffer_binding_size / 16).min(4096) as i64;
         let blocks = l.max_uniform_buffers_per_shader_stage.saturating_sub(1) as i64;

@@ -116,7 +116,7 @@ impl TextureObject {
                 break;
             }
         }
-        (levels > 0).then(|| Chain {
+        (levels > 0).then_some(Chain {
             anchor,
             levels,
             width: first.width,
@@ -175,18 +175,27 @@ fn usages(gpu: &Gpu, format: wgpu::TextureFormat) -> wgpu::TextureUsages {
     usage
 }
 
-/// Records a copy of `data` (one level image, tightly packed rows) into `mip` of `texture`,
-/// starting at array layer `layer`, through the arena.
-pub(crate) fn upload_image(
-    gpu: &Gpu,
-    frame: &mut Frame,
-    texture: &wgpu::Texture,
-    mip: u32,
-    origin: [u32; 3],
-    size: [u32; 3],
-    texel: u32,
-    data: &[u8],
-) {
+/// A box of one mip of a texture that texels are uploaded to.
+pub(crate) struct TexelBox<'a> {
+    pub(crate) texture: &'a wgpu::Texture,
+    pub(crate) mip: u32,
+    /// x, y and the first array layer (or 3D slice).
+    pub(crate) origin: [u32; 3],
+    pub(crate) size: [u32; 3],
+    /// Bytes per texel.
+    pub(crate) texel: u32,
+}
+
+/// Records a copy of `data` (texels of the box, tightly packed rows) into the box, through
+/// the arena, in the batch's order.
+pub(crate) fn upload_image(gpu: &Gpu, frame: &mut Frame, dst: &TexelBox, data: &[u8]) {
+    let TexelBox {
+        texture,
+        mip,
+        origin,
+        size,
+        texel,
+    } = *dst;
     let [w, h, d] = size;
     if w == 0 || h == 0 || d == 0 {
         return;
@@ -378,16 +387,14 @@ impl Context {
                 let z = if cube { face as u32 } else { 0 };
                 if l.format.copyable() {
                     let texel = l.format.texel_size() as u32;
-                    upload_image(
-                        &self.gpu,
-                        &mut self.frame,
-                        &texture,
-                        level - anchor,
-                        [0, 0, z],
-                        [l.width, l.height, l.depth],
+                    let dst = TexelBox {
+                        texture: &texture,
+                        mip: level - anchor,
+                        origin: [0, 0, z],
+                        size: [l.width, l.height, l.depth],
                         texel,
-                        data,
-                    );
+                    };
+                    upload_image(&self.gpu, &mut self.frame, &dst, data);
                 } else {
                     // Depth formats cannot be copied into: their images are cleared to the
                     // value their texels hold when those are all one value (`null` data).

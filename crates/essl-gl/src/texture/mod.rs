@@ -24,7 +24,7 @@ mod storage;
 mod upload;
 
 pub(crate) use format::*;
-pub(crate) use gpu::{upload_image, GpuTexture, ViewKey};
+pub(crate) use gpu::{upload_image, TexelBox, ViewKey};
 pub(crate) use object::*;
 pub(crate) use pixels::f16_to_f32;
 pub(crate) use sampling::*;
@@ -34,7 +34,7 @@ use crate::gl;
 use crate::objects::{Id, Texture};
 
 /// The texture binding target and cube face of an image target.
-pub(super) fn image_target(target: u32) -> Option<(u32, usize)> {
+pub(crate) fn image_target(target: u32) -> Option<(u32, usize)> {
     match target {
         gl::TEXTURE_2D => Some((gl::TEXTURE_2D, 0)),
         gl::TEXTURE_CUBE_MAP_POSITIVE_X..=gl::TEXTURE_CUBE_MAP_NEGATIVE_Z => Some((
@@ -131,7 +131,7 @@ impl Context {
     }
 
     /// The texture bound to `target` of the active unit, or `INVALID_OPERATION`.
-    fn bound_texture(&mut self, target: u32, function: &str) -> Option<Id> {
+    pub(crate) fn bound_texture(&mut self, target: u32, function: &str) -> Option<Id> {
         let id = self.bindings.texture(self.bindings.active_unit(), target);
         if id.is_none() {
             self.error(

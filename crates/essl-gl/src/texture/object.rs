@@ -32,12 +32,6 @@ impl Level {
             uploaded: false,
         }
     }
-
-    /// Whether the level has the same size and format as `other`.
-    pub(crate) fn same_shape(&self, other: &Level) -> bool {
-        (self.width, self.height, self.depth, self.format)
-            == (other.width, other.height, other.depth, other.format)
-    }
 }
 
 /// Sampling parameters (`tex_parameteri`/`tex_parameterf`).
@@ -136,7 +130,7 @@ impl TextureObject {
         }
     }
 
-    pub(super) fn set_level(&mut self, face: usize, level: u32, image: Level) {
+    pub(crate) fn set_level(&mut self, face: usize, level: u32, image: Level) {
         let faces = self.face_count();
         if self.faces.len() < faces {
             self.faces.resize_with(faces, Vec::new);
@@ -185,7 +179,9 @@ impl TextureObject {
         }
         let p = &self.params;
         let filterable = format.filterable()
-            || (float_linear && format.comp == super::format::Comp::F32 && format.packing == super::format::Packing::None);
+            || (float_linear
+                && format.comp == super::format::Comp::F32
+                && format.packing == super::format::Packing::None);
         if !filterable
             && (p.mag_filter != gl::NEAREST
                 || !matches!(p.min_filter, gl::NEAREST | gl::NEAREST_MIPMAP_NEAREST))

@@ -64,6 +64,24 @@ pub(crate) struct SamplerKey {
 }
 
 impl SamplerKey {
+    /// The sampler of a blit: clamping, nearest or linear, base level only.
+    pub(crate) fn blit(linear: bool) -> Self {
+        let filter = if linear {
+            wgpu::FilterMode::Linear
+        } else {
+            wgpu::FilterMode::Nearest
+        };
+        SamplerKey {
+            min: filter,
+            mag: filter,
+            mip: wgpu::MipmapFilterMode::Nearest,
+            wrap: [wgpu::AddressMode::ClampToEdge; 3],
+            lod_min: 0.0f32.to_bits(),
+            lod_max: 0.0f32.to_bits(),
+            compare: None,
+        }
+    }
+
     /// A nearest, clamping sampler (for placeholder textures).
     pub(crate) fn placeholder(comparison: bool) -> Self {
         SamplerKey {

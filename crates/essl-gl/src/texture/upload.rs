@@ -123,7 +123,7 @@ impl Context {
     }
 
     /// Checks level and size against GL's limits for the target.
-    pub(super) fn check_level_size(
+    pub(crate) fn check_level_size(
         &mut self,
         bind: u32,
         level: i32,
@@ -266,7 +266,14 @@ impl Context {
             return self.error(gl::INVALID_VALUE, function, "border must be 0");
         }
         let f = match internal_format(internalformat as u32) {
-            Ok(f) => f,
+            Ok(f) if f.texture_format() => f,
+            Ok(_) => {
+                return self.error(
+                    gl::INVALID_ENUM,
+                    function,
+                    "a renderbuffer-only internal format",
+                )
+            }
             Err(true) => {
                 return self.error(
                     gl::INVALID_ENUM,
@@ -459,16 +466,14 @@ impl Context {
             let mip = level as u32 - g.anchor;
             let z = if cube { face as u32 } else { offset[2] as u32 };
             if dst.format.copyable() {
-                crate::texture::upload_image(
-                    &self.gpu,
-                    &mut self.frame,
-                    &texture,
+                let dst = crate::texture::TexelBox {
+                    texture: &texture,
                     mip,
-                    [offset[0] as u32, offset[1] as u32, z],
-                    [w, h, d],
-                    texel as u32,
-                    &src,
-                );
+                    origin: [offset[0] as u32, offset[1] as u32, z],
+                    size: [w, h, d],
+                    texel: texel as u32,
+                };
+                crate::texture::upload_image(&self.gpu, &mut self.frame, &dst, &src);
             }
             return;
         };

@@ -13,11 +13,12 @@ use essl_gl::{gl, Context};
 /// A context of `w`×`h`, or `None` (with a message) when this machine has no Vulkan adapter.
 /// With `ESSL_REQUIRE_ADAPTER=1`, a missing adapter fails the test instead.
 pub fn context(w: u32, h: u32) -> Option<Context> {
-    if std::env::var_os("XDG_RUNTIME_DIR").is_none() {
-        // Silences a harmless complaint of the Vulkan loader.
-        std::env::set_var("XDG_RUNTIME_DIR", std::env::temp_dir());
-    }
-    match Context::new(w, h) {
+    context_with(w, h, essl_gl::ContextAttributes::default())
+}
+
+/// A context with the given attributes, or `None` (with the skip message) without an adapter.
+pub fn context_with(w: u32, h: u32, attributes: essl_gl::ContextAttributes) -> Option<Context> {
+    match Context::with_attributes(w, h, attributes) {
         Ok(ctx) => Some(ctx),
         Err(e) => {
             essl_testdata::adapter_missing(&e);
