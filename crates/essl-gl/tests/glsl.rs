@@ -4,7 +4,7 @@
 mod common;
 
 use common::*;
-use essl_gl::gl;
+use essl_gl::{gl, Context, Program};
 
 const W: u32 = 32;
 const H: u32 = 32;
