@@ -402,7 +402,10 @@ fn get_parameter_state_and_bindings() {
         q(&mut ctx, gl::TEXTURE_BINDING_2D),
         Parameter::Texture(None)
     );
-    assert_eq!(q(&mut ctx, gl::FRAMEBUFFER_BINDING), Parameter::Null);
+    assert_eq!(
+        q(&mut ctx, gl::FRAMEBUFFER_BINDING),
+        Parameter::Framebuffer(None)
+    );
 
     let (p, ..) = linked(&mut ctx);
     ctx.use_program(Some(p));
