@@ -35,10 +35,13 @@ pub(crate) struct Bindings {
     vertex_array: Option<Id>,
     active_unit: u32,
     texture_units: Vec<TextureUnit>,
+    sampler_units: Vec<Option<Id>>,
     program: Option<Id>,
     draw_framebuffer: Option<Id>,
     read_framebuffer: Option<Id>,
     renderbuffer: Option<Id>,
+    /// The active queries: occlusion, transform feedback primitives.
+    queries: [Option<Id>; 2],
 }
 
 impl Bindings {
@@ -57,10 +60,12 @@ impl Bindings {
             vertex_array: None,
             active_unit: 0,
             texture_units: vec![TextureUnit::default(); units as usize],
+            sampler_units: vec![None; units as usize],
             program: None,
             draw_framebuffer: None,
             read_framebuffer: None,
             renderbuffer: None,
+            queries: [None; 2],
         }
     }
 
@@ -244,5 +249,36 @@ impl Bindings {
         if self.renderbuffer == Some(id) {
             self.renderbuffer = None;
         }
+    }
+
+    /// The sampler bound to texture unit `unit`.
+    pub(crate) fn sampler(&self, unit: u32) -> Option<Id> {
+        self.sampler_units.get(unit as usize).copied().flatten()
+    }
+
+    /// Binds a live sampler (or none) to texture unit `unit` (the caller checked the unit).
+    pub(crate) fn bind_sampler(&mut self, unit: u32, sampler: Option<Id>) {
+        if let Some(slot) = self.sampler_units.get_mut(unit as usize) {
+            *slot = sampler;
+        }
+    }
+
+    /// Unbinds a sampler that is being deleted from every unit.
+    pub(crate) fn forget_sampler(&mut self, id: Id) {
+        for slot in &mut self.sampler_units {
+            if *slot == Some(id) {
+                *slot = None;
+            }
+        }
+    }
+
+    /// The active query of a kind (0: occlusion, 1: transform feedback primitives).
+    pub(crate) fn query(&self, kind: usize) -> Option<Id> {
+        self.queries[kind]
+    }
+
+    /// Makes a live query the active one of its kind (or ends it).
+    pub(crate) fn begin_query(&mut self, kind: usize, id: Option<Id>) {
+        self.queries[kind] = id;
     }
 }

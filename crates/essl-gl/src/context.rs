@@ -72,6 +72,9 @@ pub struct Context {
     pub(crate) linker: Linker,
     /// The uniform-value checks ([`Context::set_validation`]) and their warnings.
     pub(crate) validation: crate::validation::Validation,
+    /// How many times [`Context::present`] ran: queries and fences ended before one are
+    /// answered after it.
+    pub(crate) presents: u64,
 }
 
 /// A step between lowering and installing a program: see [`Context::set_program_filter`].
@@ -182,6 +185,7 @@ impl Context {
             caches: Caches::default(),
             linker: Linker::default(),
             validation: Default::default(),
+            presents: 0,
             gpu,
         })
     }

@@ -187,7 +187,15 @@ pub(crate) struct Frame {
     pub(crate) arena: Arena,
     /// Draws recorded in the batch (for statistics).
     pub(crate) draws: u64,
+    /// The occlusion query in progress: every pass counts the samples that pass into a
+    /// slot of its own of this set; the next slot.
+    pub(crate) occlusion: Option<(wgpu::QuerySet, u32)>,
+    /// Whether the open pass has begun an occlusion query.
+    pass_counts: bool,
 }
+
+/// Slots of one occlusion query's set: render passes counted while it is active.
+pub(crate) const OCCLUSION_SLOTS: u32 = 4096;
 
 impl Frame {
     pub(crate) fn new() -> Self {
@@ -199,6 +207,8 @@ impl Frame {
             pass_state: PassState::default(),
             arena: Arena::new(),
             draws: 0,
+            occlusion: None,
+            pass_counts: false,
         }
     }
 
@@ -213,6 +223,10 @@ impl Frame {
 
     /// Ends the open render pass, if any.
     pub(crate) fn end_pass(&mut self) {
+        if let (Some(pass), true) = (self.pass.as_mut(), self.pass_counts) {
+            pass.end_occlusion_query();
+        }
+        self.pass_counts = false;
         self.pass = None;
         self.target = None;
     }
@@ -279,16 +293,27 @@ impl Frame {
                 }),
             }
         });
+        let slot = match &mut self.occlusion {
+            Some((set, next)) if *next < OCCLUSION_SLOTS => {
+                *next += 1;
+                Some((set.clone(), *next - 1))
+            }
+            _ => None,
+        };
         let encoder = self.encoder(gpu);
-        let pass = encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
+        let mut pass = encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
             label: Some("essl-gl pass"),
             color_attachments: &colors,
             depth_stencil_attachment: depth,
             timestamp_writes: None,
-            occlusion_query_set: None,
+            occlusion_query_set: slot.as_ref().map(|(set, _)| set),
             multiview_mask: None,
         });
+        if let Some((_, index)) = &slot {
+            pass.begin_occlusion_query(*index);
+        }
         self.pass = Some(pass.forget_lifetime());
+        self.pass_counts = slot.is_some();
         self.target = Some(target.clone());
         self.pass_state = PassState::default();
     }

@@ -266,7 +266,7 @@ impl Context {
         for plan in slot_plans {
             let shadow = plan.kind == SampleKind::Depth;
             match plan.texture {
-                Some((id, c)) => {
+                Some((id, c, sampling)) => {
                     self.sync_texture(id, c.base..c.base + c.levels);
                     let gpu = &self.gpu;
                     let t = self
@@ -279,7 +279,7 @@ impl Context {
                     let view = g.view(sample_view_key(
                         target, g.anchor, c.base, c.levels, &c.format,
                     ));
-                    let key = t.sampler_key(shadow);
+                    let key = crate::texture::TextureObject::sampler_key(&sampling, shadow);
                     let sampler = self.caches.samplers.get(&gpu.device, key);
                     slot_bindings.push(SlotBinding {
                         dim: plan.dim,

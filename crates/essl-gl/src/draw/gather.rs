@@ -244,13 +244,14 @@ impl Context {
             };
             let float_linear = self.extensions.texture_float_linear;
             let texture = self.bindings.texture(unit, target).and_then(|id| {
+                let sampling = self.sampling_for(unit, id)?;
                 self.objects
                     .textures
                     .get_any(id)
-                    .and_then(|t| t.completeness(float_linear))
-                    .map(|c| (id, c))
+                    .and_then(|t| t.completeness(float_linear, &sampling))
+                    .map(|c| (id, c, sampling))
             });
-            if let Some((id, c)) = &texture {
+            if let Some((id, c, _)) = &texture {
                 let fits = match kind {
                     SampleKind::Depth => c.format.has_depth(),
                     k => c.format.kind() == k,

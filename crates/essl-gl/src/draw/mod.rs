@@ -47,7 +47,9 @@ enum Source {
 
 /// What a sampler slot reads.
 struct SlotPlan {
-    texture: Option<(Id, Complete)>,
+    /// The complete texture read, and the sampling parameters that apply (its own or the
+    /// unit's sampler object's).
+    texture: Option<(Id, Complete, crate::sampler::SamplerParams)>,
     dim: wgpu::TextureViewDimension,
     kind: SampleKind,
 }

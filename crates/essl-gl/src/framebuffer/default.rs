@@ -3,7 +3,8 @@
 //! render pass), premultiplied alpha and whether the image is preserved across
 //! [`Context::present`](crate::Context::present).
 
-use crate::context::Gpu;
+use crate::context::{Context, Gpu};
+use crate::frame::PassClears;
 use crate::gl;
 
 /// WebGL's `WebGLContextAttributes`: what the default framebuffer has, as given to
@@ -148,5 +149,28 @@ impl DefaultFramebuffer {
             draw_buffer: gl::BACK,
             read_buffer: gl::BACK,
         }
+    }
+}
+
+impl Context {
+    /// What returning control to the browser does for a WebGL canvas: the drawing buffer is
+    /// presented — here, only finished: the GPU executes everything recorded — and then
+    /// cleared (colour 0, depth 1, stencil 0) unless `preserveDrawingBuffer`; the results of
+    /// queries and the status of fences ended before it become available. An application
+    /// calls it once a frame, where a browser would composite.
+    pub fn present(&mut self) {
+        self.finish();
+        self.presents += 1;
+        if self.fb.attributes.preserve_drawing_buffer {
+            return;
+        }
+        let target = self.default_target();
+        let clears = PassClears {
+            colors: vec![Some(wgpu::Color::TRANSPARENT); target.colors.len()],
+            depth: Some(1.0),
+            stencil: Some(0),
+        };
+        self.frame.clear_pass(&self.gpu, &target, &clears);
+        self.frame.end_pass();
     }
 }

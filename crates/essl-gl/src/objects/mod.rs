@@ -24,7 +24,10 @@ pub(crate) use table::Table;
 use crate::buffer::BufferObject;
 use crate::framebuffer::{Attachment, FramebufferObject};
 use crate::program::{LinkedProgram, ProgramObject, ShaderObject};
+use crate::query_object::QueryObject;
 use crate::renderbuffer::RenderbufferObject;
+use crate::sampler::SamplerObject;
+use crate::sync::SyncObject;
 use crate::texture::TextureObject;
 use crate::vertex_array::VertexArrayObject;
 
@@ -37,6 +40,9 @@ pub(crate) struct Objects {
     pub(crate) shaders: Table<ShaderObject>,
     pub(crate) framebuffers: Table<FramebufferObject>,
     pub(crate) renderbuffers: Table<RenderbufferObject>,
+    pub(crate) samplers: Table<SamplerObject>,
+    pub(crate) queries: Table<QueryObject>,
+    pub(crate) syncs: Table<SyncObject>,
     /// The vertex array in use when none is bound (WebGL's default vertex array object).
     default_vertex_array: VertexArrayObject,
 }
@@ -52,6 +58,9 @@ impl Objects {
             shaders: Table::default(),
             framebuffers: Table::default(),
             renderbuffers: Table::default(),
+            samplers: Table::default(),
+            queries: Table::default(),
+            syncs: Table::default(),
             default_vertex_array: VertexArrayObject::new(max_vertex_attribs),
         }
     }
@@ -207,6 +216,21 @@ impl Objects {
             Attachment::Texture { id, .. } => self.textures.release(id),
             Attachment::Renderbuffer(id) => self.renderbuffers.release(id),
         }
+    }
+
+    /// Deletes a query (the caller has ended it).
+    pub(crate) fn delete_query(&mut self, id: Id) {
+        self.queries.delete(id);
+    }
+
+    /// Deletes a sync object.
+    pub(crate) fn delete_sync(&mut self, id: Id) {
+        self.syncs.delete(id);
+    }
+
+    /// Deletes a sampler (the caller has unbound it).
+    pub(crate) fn delete_sampler(&mut self, id: Id) {
+        self.samplers.delete(id);
     }
 
     /// Deletes a framebuffer (the caller has unbound it), dropping its attachments'

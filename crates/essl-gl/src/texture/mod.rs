@@ -21,6 +21,7 @@ mod params;
 mod pixels;
 mod sampling;
 mod storage;
+mod unpack_buffer;
 mod upload;
 
 pub(crate) use format::*;

@@ -4,6 +4,7 @@
 use super::format::InternalFormat;
 use super::sampling::SamplerKey;
 use crate::gl;
+use crate::sampler::SamplerParams;
 
 /// One level image (of one cube face).
 #[derive(Clone, Debug)]
@@ -34,43 +35,22 @@ impl Level {
     }
 }
 
-/// Sampling parameters (`tex_parameteri`/`tex_parameterf`).
+/// A texture's parameters (`tex_parameteri`/`tex_parameterf`): how it is sampled, and the
+/// range of levels used.
 #[derive(Clone, Debug, PartialEq)]
 pub(crate) struct TexParams {
-    pub(crate) min_filter: u32,
-    pub(crate) mag_filter: u32,
-    pub(crate) wrap_s: u32,
-    pub(crate) wrap_t: u32,
-    pub(crate) wrap_r: u32,
-    pub(crate) min_lod: f32,
-    pub(crate) max_lod: f32,
+    pub(crate) sampling: SamplerParams,
     pub(crate) base_level: u32,
     pub(crate) max_level: u32,
-    pub(crate) compare_mode: u32,
-    pub(crate) compare_func: u32,
 }
 
 impl Default for TexParams {
     fn default() -> Self {
         TexParams {
-            min_filter: gl::NEAREST_MIPMAP_LINEAR,
-            mag_filter: gl::LINEAR,
-            wrap_s: gl::REPEAT,
-            wrap_t: gl::REPEAT,
-            wrap_r: gl::REPEAT,
-            min_lod: -1000.0,
-            max_lod: 1000.0,
+            sampling: SamplerParams::default(),
             base_level: 0,
             max_level: 1000,
-            compare_mode: gl::NONE,
-            compare_func: gl::LEQUAL,
         }
-    }
-}
-
-impl TexParams {
-    pub(super) fn mipmapped(&self) -> bool {
-        !matches!(self.min_filter, gl::NEAREST | gl::LINEAR)
     }
 }
 
@@ -157,7 +137,7 @@ impl TextureObject {
 
     /// GL ES 3.0's texture completeness (§3.8.13): `None` when incomplete, in which case
     /// sampling returns (0, 0, 0, 1).
-    pub(crate) fn completeness(&self, float_linear: bool) -> Option<Complete> {
+    pub(crate) fn completeness(&self, float_linear: bool, p: &SamplerParams) -> Option<Complete> {
         let target = self.target?;
         let (base, max) = self.level_range();
         let faces = if target == gl::TEXTURE_CUBE_MAP { 6 } else { 1 };
@@ -177,8 +157,10 @@ impl TextureObject {
         if target == gl::TEXTURE_CUBE_MAP && first.width != first.height {
             return None;
         }
-        let p = &self.params;
+        // Depth formats filter only when compared (ES 3.0 §3.8.13).
+        let compared = format.has_depth() && p.compare_mode == gl::COMPARE_REF_TO_TEXTURE;
         let filterable = format.filterable()
+            || compared
             || (float_linear
                 && format.comp == super::format::Comp::F32
                 && format.packing == super::format::Packing::None);
@@ -230,9 +212,9 @@ impl TextureObject {
         })
     }
 
-    /// The sampler a complete texture is sampled with.
-    pub(crate) fn sampler_key(&self, comparison: bool) -> SamplerKey {
-        let p = &self.params;
+    /// The sampler a texture is sampled with, with sampling parameters `p` (its own or a
+    /// bound sampler object's).
+    pub(crate) fn sampler_key(p: &SamplerParams, comparison: bool) -> SamplerKey {
         let filter = |f: u32| match f {
             gl::NEAREST | gl::NEAREST_MIPMAP_NEAREST | gl::NEAREST_MIPMAP_LINEAR => {
                 wgpu::FilterMode::Nearest

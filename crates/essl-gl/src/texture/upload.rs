@@ -12,31 +12,31 @@ use crate::gl;
 
 /// What `texImage2D` and `texImage3D` specify: a level of the texture bound to `target` (or
 /// of a cube map face), its internal format and size, and the client data (zeros for `None`).
-struct TexImage<'a> {
-    target: u32,
-    level: i32,
-    internalformat: i32,
+pub(super) struct TexImage<'a> {
+    pub(super) target: u32,
+    pub(super) level: i32,
+    pub(super) internalformat: i32,
     /// Width, height, depth (1 in 2D).
-    size: [i32; 3],
-    border: i32,
-    format: u32,
-    ty: u32,
-    pixels: Option<&'a [u8]>,
-    function: &'static str,
+    pub(super) size: [i32; 3],
+    pub(super) border: i32,
+    pub(super) format: u32,
+    pub(super) ty: u32,
+    pub(super) pixels: Option<&'a [u8]>,
+    pub(super) function: &'static str,
 }
 
 /// What `texSubImage2D` and `texSubImage3D` replace: a box of a level, and the client data.
-struct TexSubImage<'a> {
-    target: u32,
-    level: i32,
+pub(super) struct TexSubImage<'a> {
+    pub(super) target: u32,
+    pub(super) level: i32,
     /// x, y, z of the box's first texel (z is 0 in 2D).
-    offset: [i32; 3],
+    pub(super) offset: [i32; 3],
     /// Width, height, depth of the box (depth is 1 in 2D).
-    size: [i32; 3],
-    format: u32,
-    ty: u32,
-    pixels: &'a [u8],
-    function: &'static str,
+    pub(super) size: [i32; 3],
+    pub(super) format: u32,
+    pub(super) ty: u32,
+    pub(super) pixels: &'a [u8],
+    pub(super) function: &'static str,
 }
 
 /// A block of client pixel data to read: its bytes, size in pixels, `(format, type)`, and
@@ -72,6 +72,9 @@ impl Context {
         pixels: Option<&[u8]>,
     ) {
         const F: &str = "texImage2D";
+        if self.client_data_refused(F) {
+            return;
+        }
         match image_target(target) {
             Some((gl::TEXTURE_2D | gl::TEXTURE_CUBE_MAP, _)) => {}
             _ => return self.error(gl::INVALID_ENUM, F, format_args!("target 0x{target:04X}")),
@@ -106,6 +109,9 @@ impl Context {
         pixels: Option<&[u8]>,
     ) {
         const F: &str = "texImage3D";
+        if self.client_data_refused(F) {
+            return;
+        }
         if !matches!(target, gl::TEXTURE_3D | gl::TEXTURE_2D_ARRAY) {
             return self.error(gl::INVALID_ENUM, F, format_args!("target 0x{target:04X}"));
         }
@@ -120,6 +126,20 @@ impl Context {
             pixels,
             function: F,
         });
+    }
+
+    /// WebGL2: the calls that take client data are refused (`INVALID_OPERATION`) while a
+    /// `PIXEL_UNPACK_BUFFER` is bound; the `_from_buffer` forms read it.
+    fn client_data_refused(&mut self, function: &str) -> bool {
+        if self.bindings.buffer(gl::PIXEL_UNPACK_BUFFER).is_some() {
+            self.error(
+                gl::INVALID_OPERATION,
+                function,
+                "a PIXEL_UNPACK_BUFFER is bound: give an offset into it",
+            );
+            return true;
+        }
+        false
     }
 
     /// Checks level and size against GL's limits for the target.
@@ -246,7 +266,7 @@ impl Context {
     }
 
     /// `texImage2D` and `texImage3D` after their target checks.
-    fn tex_image(&mut self, image: TexImage) {
+    pub(super) fn tex_image(&mut self, image: TexImage) {
         let TexImage {
             target,
             level,
@@ -346,6 +366,9 @@ impl Context {
         pixels: &[u8],
     ) {
         const F: &str = "texSubImage2D";
+        if self.client_data_refused(F) {
+            return;
+        }
         match image_target(target) {
             Some((gl::TEXTURE_2D | gl::TEXTURE_CUBE_MAP, _)) => {}
             _ => return self.error(gl::INVALID_ENUM, F, format_args!("target 0x{target:04X}")),
@@ -379,6 +402,9 @@ impl Context {
         pixels: &[u8],
     ) {
         const F: &str = "texSubImage3D";
+        if self.client_data_refused(F) {
+            return;
+        }
         if !matches!(target, gl::TEXTURE_3D | gl::TEXTURE_2D_ARRAY) {
             return self.error(gl::INVALID_ENUM, F, format_args!("target 0x{target:04X}"));
         }
@@ -395,7 +421,7 @@ impl Context {
     }
 
     /// `texSubImage2D` and `texSubImage3D` after their target checks.
-    fn tex_sub_image(&mut self, image: TexSubImage) {
+    pub(super) fn tex_sub_image(&mut self, image: TexSubImage) {
         let TexSubImage {
             target,
             level,
