@@ -51,6 +51,7 @@ fn layout() -> ProgramLayout {
         samplers: Vec::new(),
         blocks: Vec::new(),
         fragment_outputs: vec![(0, GlType::FLOAT_VEC4)],
+        captured: Vec::new(),
     }
 }
 

@@ -42,6 +42,7 @@ pub(crate) struct Bindings {
     renderbuffer: Option<Id>,
     /// The active queries: occlusion, transform feedback primitives.
     queries: [Option<Id>; 2],
+    transform_feedback: Option<Id>,
 }
 
 impl Bindings {
@@ -66,6 +67,7 @@ impl Bindings {
             read_framebuffer: None,
             renderbuffer: None,
             queries: [None; 2],
+            transform_feedback: None,
         }
     }
 
@@ -280,5 +282,22 @@ impl Bindings {
     /// Makes a live query the active one of its kind (or ends it).
     pub(crate) fn begin_query(&mut self, kind: usize, id: Option<Id>) {
         self.queries[kind] = id;
+    }
+
+    /// The bound transform feedback object (`None`: the default one).
+    pub(crate) fn transform_feedback(&self) -> Option<Id> {
+        self.transform_feedback
+    }
+
+    /// Binds a live transform feedback object (`None`: the default one).
+    pub(crate) fn bind_transform_feedback(&mut self, id: Option<Id>) {
+        self.transform_feedback = id;
+    }
+
+    /// Unbinds a transform feedback object that is being deleted.
+    pub(crate) fn forget_transform_feedback(&mut self, id: Id) {
+        if self.transform_feedback == Some(id) {
+            self.transform_feedback = None;
+        }
     }
 }

@@ -78,6 +78,9 @@ pub(crate) struct BufferObject {
     /// The last index range scanned, its largest index (restart excluded), and whether it
     /// holds the restart index.
     pub(crate) max_index_cache: Option<(IndexRange, Option<u32>, bool)>,
+    /// Whether the GPU copy holds newer bytes than `data` (transform feedback wrote it):
+    /// [`Context::buffer_to_cpu`] brings them back before the CPU copy is read or written.
+    pub(crate) gpu_newer: bool,
 }
 
 impl BufferObject {
@@ -91,6 +94,7 @@ impl BufferObject {
             dirty: None,
             derived: Vec::new(),
             max_index_cache: None,
+            gpu_newer: false,
         }
     }
 
@@ -106,6 +110,11 @@ impl BufferObject {
     /// already uses the old contents, in which case a new GPU buffer replaces it (the pending
     /// commands keep the old one alive), so draws keep GL's order without a submit.
     pub(crate) fn gpu_buffer(&mut self, gpu: &Gpu, serial: u64) -> wgpu::Buffer {
+        // Written by the GPU: the GPU copy is the buffer, in the batch's order.
+        if let (true, Some(g)) = (self.gpu_newer, &mut self.gpu) {
+            g.last_batch = serial;
+            return g.buffer.clone();
+        }
         let padded = padded_size(self.data.len() as u64);
         let reusable =
             matches!(&self.gpu, Some(g) if g.buffer.size() == padded && g.last_batch != serial);
@@ -178,6 +187,8 @@ pub(crate) fn create_buffer_init(gpu: &Gpu, data: &[u8], size: u64, label: &str)
         usage: wgpu::BufferUsages::VERTEX
             | wgpu::BufferUsages::INDEX
             | wgpu::BufferUsages::UNIFORM
+            | wgpu::BufferUsages::STORAGE
+            | wgpu::BufferUsages::COPY_SRC
             | wgpu::BufferUsages::COPY_DST,
         mapped_at_creation: true,
     });
@@ -244,7 +255,10 @@ impl Context {
             gl::ARRAY_BUFFER
             | gl::COPY_READ_BUFFER
             | gl::COPY_WRITE_BUFFER
-            | gl::UNIFORM_BUFFER => self.bindings.buffer(target),
+            | gl::UNIFORM_BUFFER
+            | gl::PIXEL_PACK_BUFFER
+            | gl::PIXEL_UNPACK_BUFFER
+            | gl::TRANSFORM_FEEDBACK_BUFFER => self.bindings.buffer(target),
             _ => {
                 self.error(
                     gl::INVALID_ENUM,
@@ -354,6 +368,7 @@ impl Context {
             Some(n) => vec![0; n],
             None => data.to_vec(),
         };
+        b.gpu_newer = false;
         b.usage = usage;
         let len = b.data.len();
         b.mark_dirty(0..len);
@@ -372,6 +387,7 @@ impl Context {
         let Some(id) = self.bound_buffer(target, F) else {
             return;
         };
+        self.buffer_to_cpu(id);
         let b = self
             .objects
             .buffers
@@ -397,6 +413,7 @@ impl Context {
         let Some(id) = self.bound_buffer(target, F) else {
             return;
         };
+        self.buffer_to_cpu(id);
         let b = self
             .objects
             .buffers
@@ -429,6 +446,8 @@ impl Context {
         if size < 0 {
             return self.error(gl::INVALID_VALUE, F, "negative size");
         }
+        self.buffer_to_cpu(src);
+        self.buffer_to_cpu(dst);
         let (src_kind, src_len) = {
             let b = self.objects.buffers.get_any(src).expect("bound");
             (b.kind, b.data.len())
@@ -464,12 +483,14 @@ impl Context {
         }
         self.bindings.forget_buffer(buffer.id);
         let vao = self.bindings.vertex_array();
-        self.objects.delete_buffer(buffer.id, vao);
+        let tf = self.bindings.transform_feedback();
+        self.objects.delete_buffer(buffer.id, vao, tf);
     }
 
-    /// Binds a whole buffer to indexed binding point `index` of `UNIFORM_BUFFER` (and to the
-    /// generic binding) (`bindBufferBase`). An index ≥ `MAX_UNIFORM_BUFFER_BINDINGS` →
-    /// `INVALID_VALUE`; `TRANSFORM_FEEDBACK_BUFFER` is not supported (`INVALID_ENUM`).
+    /// Binds a whole buffer to indexed binding point `index` of `UNIFORM_BUFFER` or
+    /// `TRANSFORM_FEEDBACK_BUFFER` (and to the generic binding) (`bindBufferBase`). An index
+    /// ≥ `MAX_UNIFORM_BUFFER_BINDINGS` (or `MAX_TRANSFORM_FEEDBACK_SEPARATE_ATTRIBS`) →
+    /// `INVALID_VALUE`.
     pub fn bind_buffer_base(&mut self, target: u32, index: u32, buffer: Option<Buffer>) {
         self.bind_buffer_indexed(target, index, buffer, 0, None, "bindBufferBase");
     }
@@ -522,14 +543,20 @@ impl Context {
         size: Option<u64>,
         function: &str,
     ) {
+        let range = buffer.map(|b| BufferRange {
+            buffer: b.id,
+            offset,
+            size,
+        });
         match target {
             gl::UNIFORM_BUFFER => {}
             gl::TRANSFORM_FEEDBACK_BUFFER => {
-                return self.error(
-                    gl::INVALID_ENUM,
-                    function,
-                    "transform feedback is not supported by essl-gl",
-                );
+                if buffer.is_none()
+                    || self.bind_buffer_checked(gl::TRANSFORM_FEEDBACK_BUFFER, buffer, function)
+                {
+                    self.bind_feedback_buffer(index, range, function);
+                }
+                return;
             }
             _ => {
                 return self.error(
@@ -548,11 +575,6 @@ impl Context {
         }
         // Also binds the generic binding point, with bind_buffer's checks.
         if self.bind_buffer_checked(gl::UNIFORM_BUFFER, buffer, function) {
-            let range = buffer.map(|b| BufferRange {
-                buffer: b.id,
-                offset,
-                size,
-            });
             self.bindings.bind_uniform_range(index as usize, range);
         }
     }
@@ -572,4 +594,46 @@ pub(crate) fn byte_range(offset: i64, len: usize, size: usize) -> Option<Range<u
     let start = usize::try_from(offset).ok()?;
     let end = start.checked_add(len)?;
     (end <= size).then_some(start..end)
+}
+
+impl Context {
+    /// Brings a buffer's GPU-written bytes back into its CPU copy (submitting the batch and
+    /// waiting), so that the CPU copy can be read or changed.
+    pub(crate) fn buffer_to_cpu(&mut self, id: Id) {
+        let Some(b) = self.objects.buffers.get_any(id) else {
+            return;
+        };
+        let (true, Some(g)) = (b.gpu_newer, &b.gpu) else {
+            return;
+        };
+        let gpu_buffer = g.buffer.clone();
+        let len = b.data.len() as u64;
+        let size = len.div_ceil(4) * 4;
+        if size > 0 {
+            let staging = self.gpu.device.create_buffer(&wgpu::BufferDescriptor {
+                label: Some("essl-gl buffer readback"),
+                size,
+                usage: wgpu::BufferUsages::COPY_DST | wgpu::BufferUsages::MAP_READ,
+                mapped_at_creation: false,
+            });
+            self.frame.submit(&self.gpu, |encoder| {
+                encoder.copy_buffer_to_buffer(&gpu_buffer, 0, &staging, 0, size);
+            });
+            let slice = staging.slice(..);
+            let (tx, rx) = std::sync::mpsc::channel();
+            slice.map_async(wgpu::MapMode::Read, move |r| {
+                let _ = tx.send(r);
+            });
+            let _ = self.gpu.device.poll(wgpu::PollType::wait_indefinitely());
+            if let (Ok(Ok(())), Ok(view)) = (rx.recv(), slice.get_mapped_range()) {
+                let b = self.objects.buffers.get_any_mut(id).expect("checked");
+                b.data.copy_from_slice(&view[..len as usize]);
+            }
+        }
+        let b = self.objects.buffers.get_any_mut(id).expect("checked");
+        b.gpu_newer = false;
+        b.dirty = None;
+        b.version += 1;
+        b.derived.clear();
+    }
 }

@@ -16,4 +16,7 @@ pub(crate) struct Caches {
     pub(crate) dummies: Dummies,
     /// The buffer `read_pixels` copies into, grown as needed.
     pub(crate) readback: Option<wgpu::Buffer>,
+    /// The 1×1 depth image a draw that makes no fragments (transform feedback with
+    /// `RASTERIZER_DISCARD`) renders into.
+    pub(crate) discard: Option<wgpu::TextureView>,
 }

@@ -88,6 +88,7 @@ mod state;
 mod stencil;
 mod sync;
 mod texture;
+mod transform_feedback;
 mod validation;
 mod vertex_array;
 
@@ -100,6 +101,7 @@ pub use objects::{
     Buffer, Framebuffer, Program, Query, Renderbuffer, Sampler, Shader, Sync, Texture,
     TransformFeedback, UniformLocation, VertexArray,
 };
+pub use program::ActiveInfo;
 pub use query::{Parameter, SHADING_LANGUAGE_VERSION, SUBPIXEL_BITS, VENDOR, VERSION};
 pub use validation::{SourceLocation, ValidationWarning, MAX_VALIDATION_WARNINGS};
 pub use wgpu;
@@ -113,4 +115,5 @@ pub const LOWER_OPTIONS: essl::program::LowerOptions = essl::program::LowerOptio
     zero_to_one_depth: true,
     flip_frag_coord_y: false,
     flip_clip_y: true,
+    transform_feedback: Vec::new(),
 };

@@ -161,7 +161,8 @@ fn program_parameters() {
     );
     assert_eq!(
         q(&mut ctx, gl::TRANSFORM_FEEDBACK_BUFFER_MODE),
-        Some(Parameter::Enum(gl::SEPARATE_ATTRIBS))
+        Some(Parameter::Enum(gl::INTERLEAVED_ATTRIBS)),
+        "ES 3.0's initial value"
     );
     assert_eq!(
         q(&mut ctx, gl::TRANSFORM_FEEDBACK_VARYINGS),

@@ -39,6 +39,11 @@ pub struct LowerOptions {
     /// Use it with `flip_frag_coord_y` off: `gl_FragCoord` and `dFdy` then need no change. The
     /// renderer must also swap the winding of front faces.
     pub flip_clip_y: bool,
+    /// Vertex outputs transform feedback captures (`transformFeedbackVaryings`): each is
+    /// written by the lowered vertex shader even when the fragment shader does not read it,
+    /// and [`ProgramLayout::captured`] says where. Names are GLSL's: a variable, an element
+    /// of an array output (`v[2]`), `gl_Position` or `gl_PointSize`.
+    pub transform_feedback: Vec<String>,
 }
 
 impl Default for LowerOptions {
@@ -47,6 +52,7 @@ impl Default for LowerOptions {
             zero_to_one_depth: true,
             flip_frag_coord_y: true,
             flip_clip_y: false,
+            transform_feedback: Vec::new(),
         }
     }
 }
@@ -75,6 +81,40 @@ pub struct ProgramLayout {
     pub blocks: Vec<UniformBlockBinding>,
     /// Fragment outputs: (location, type). A renderer with one colour target uses location 0.
     pub fragment_outputs: Vec<(u32, GlType)>,
+    /// The outputs [`LowerOptions::transform_feedback`] asked for that the vertex shader
+    /// has, in the order asked.
+    pub captured: Vec<CapturedOutput>,
+}
+
+/// A vertex output kept for transform feedback, and where the lowered vertex shader writes
+/// it.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct CapturedOutput {
+    /// The name as asked (`v_velocity`, `v_pos[1]`, `gl_Position`).
+    pub name: String,
+    /// Its type (of one element for an array).
+    pub ty: GlType,
+    /// Array elements captured (1 for a non-array or an element).
+    pub size: u32,
+    /// Where the value is.
+    pub source: CaptureSource,
+}
+
+/// Where a captured output is in the lowered vertex shader's outputs.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum CaptureSource {
+    /// `count` consecutive locations from `first` (one per column, per array element).
+    Location {
+        /// The first location.
+        first: u32,
+        /// How many.
+        count: u32,
+    },
+    /// `gl_Position` (the lowered value is the API's clip position: the renderer undoes the
+    /// [`LowerOptions`] remapping to capture GL's).
+    Position,
+    /// `gl_PointSize`.
+    PointSize,
 }
 
 /// The layout of the default uniform block (all loose uniforms of a program).

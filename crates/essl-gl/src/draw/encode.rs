@@ -42,6 +42,8 @@ pub(super) struct DrawRange {
 pub(super) struct Groups {
     pub(super) group0: Option<(wgpu::BindGroup, Option<u32>)>,
     pub(super) group1: Option<wgpu::BindGroup>,
+    /// Transform feedback's storage buffers and parameters.
+    pub(super) group2: Option<wgpu::BindGroup>,
     pub(super) slot_bindings: Vec<SlotBinding>,
 }
 
@@ -73,13 +75,6 @@ impl Context {
         feed: &Feed,
         instances: u32,
     ) {
-        let serial = self.frame.serial;
-        let gpu = &self.gpu;
-        let b = self
-            .objects
-            .buffers
-            .get_any_mut(buffer)
-            .expect("attached buffers are alive");
         let stride = a.effective_stride();
         let fmt_size = feed.format.size();
         let rel = a.offset & 3;
@@ -87,6 +82,17 @@ impl Context {
             && rel % fmt_size.min(4) == 0
             && rel + fmt_size <= stride
             && a.divisor <= 1;
+        if !direct {
+            // Re-packing reads the CPU copy.
+            self.buffer_to_cpu(buffer);
+        }
+        let serial = self.frame.serial;
+        let gpu = &self.gpu;
+        let b = self
+            .objects
+            .buffers
+            .get_any_mut(buffer)
+            .expect("attached buffers are alive");
         let step = if a.divisor == 0 {
             wgpu::VertexStepMode::Vertex
         } else {
@@ -395,10 +401,65 @@ impl Context {
         }
         let group1 = (!slot_bindings.is_empty())
             .then(|| self.caches.pipelines.group1(gpu, &slot_bindings, resources));
+        let group2 = call.capture.as_ref().map(|c| self.capture_group(c));
         Groups {
             group0,
             group1,
+            group2,
             slot_bindings,
         }
+    }
+
+    /// The bind group of a capturing draw: its buffers' GPU copies (which the draw makes the
+    /// newer ones) and the parameters (first vertex, vertices per instance, each buffer's
+    /// first word).
+    fn capture_group(&mut self, c: &super::feedback::CaptureDraw) -> wgpu::BindGroup {
+        let serial = self.frame.serial;
+        let mut buffers = Vec::new();
+        for &id in &c.buffers {
+            let b = self
+                .objects
+                .buffers
+                .get_any_mut(id)
+                .expect("bound buffers are alive");
+            buffers.push(b.gpu_buffer(&self.gpu, serial));
+            b.gpu_newer = true;
+        }
+        let mut params = [0u32; 8];
+        params[0] = c.first;
+        params[1] = c.count;
+        params[4..8].copy_from_slice(&c.base);
+        let align = self.gpu.limits.min_uniform_buffer_offset_alignment as u64;
+        let alloc = self
+            .frame
+            .arena
+            .push(&self.gpu, bytemuck::cast_slice(&params), align);
+        let layout = self
+            .caches
+            .pipelines
+            .capture_layout(&self.gpu, c.spec.buffers);
+        let mut entries: Vec<wgpu::BindGroupEntry> = buffers
+            .iter()
+            .enumerate()
+            .map(|(b, buffer)| wgpu::BindGroupEntry {
+                binding: b as u32,
+                resource: buffer.as_entire_binding(),
+            })
+            .collect();
+        entries.push(wgpu::BindGroupEntry {
+            binding: crate::shader_patch::CAPTURE_PARAMS_BINDING,
+            resource: wgpu::BindingResource::Buffer(wgpu::BufferBinding {
+                buffer: &alloc.buffer,
+                offset: alloc.offset,
+                size: wgpu::BufferSize::new(32),
+            }),
+        });
+        self.gpu
+            .device
+            .create_bind_group(&wgpu::BindGroupDescriptor {
+                label: Some("essl-gl transform feedback"),
+                layout: &layout,
+                entries: &entries,
+            })
     }
 }

@@ -100,7 +100,11 @@ impl Context {
         let groups = self.bind_groups(&call);
         // Last: uploads for the textures sampled end the pass; the target's pass begins
         // after them.
-        let target = self.draw_target();
+        let target = if call.rasterize {
+            self.draw_target()
+        } else {
+            self.discard_target()
+        };
         let parts = KeyParts {
             slots: vertex.slots,
             patches: vertex.patches,
@@ -221,6 +225,8 @@ impl Context {
             samples: target.samples,
             alpha_to_coverage: s.sample_alpha_to_coverage,
             float_blend: self.extensions.float_blend,
+            capture: call.capture.as_ref().map(|c| c.spec.clone()),
+            rasterize: call.rasterize,
         };
         let uses_constant = blend.is_some_and(|b| {
             [
@@ -238,7 +244,11 @@ impl Context {
             })
         });
         let values = PassValues {
-            viewport: self.draw_viewport(),
+            viewport: if call.rasterize {
+                self.draw_viewport()
+            } else {
+                [0.0, 0.0, 1.0, 1.0, 0.0, 1.0]
+            },
             blend_constant,
             uses_constant,
             stencil_reference: s.stencil.reference(),
@@ -290,7 +300,11 @@ impl Context {
         let viewport = values.viewport;
         let viewport_bits = viewport.map(f32::to_bits);
         let blend_bits = values.blend_constant.map(f32::to_bits);
-        let scissor = call.scissor;
+        let scissor = if call.rasterize {
+            call.scissor
+        } else {
+            [0, 0, 1, 1]
+        };
         self.frame.pass(&self.gpu, target);
         let frame = &mut self.frame;
         let pass = frame.pass.as_mut().expect("opened above");
@@ -329,6 +343,9 @@ impl Context {
                 pass.set_bind_group(0, group, offset.as_slice());
                 ps.group0 = groups.group0.clone();
             }
+        }
+        if let Some(group) = &groups.group2 {
+            pass.set_bind_group(2, group, &[]);
         }
         if let Some(group) = &groups.group1 {
             if ps.group1.as_ref() != Some(group) {

@@ -42,6 +42,10 @@ impl Context {
         let Some(pid) = self.bindings.program() else {
             return self.fail(gl::INVALID_OPERATION, f, "no program in use");
         };
+        let session = self.capturing();
+        if let Some(session) = session {
+            self.check_capture_mode(&args, session.mode)?;
+        }
         let indices = match index_info {
             None => Indices::None {
                 first: args.first as u32,
@@ -80,7 +84,22 @@ impl Context {
         if args.count == 0 || args.instances == 0 {
             return None;
         }
-        let (count, instances) = (args.count as u32, args.instances as u32);
+        let (mut count, instances) = (args.count as u32, args.instances as u32);
+        let capture = match session {
+            Some(session) => {
+                // Only whole primitives are captured (and drawn).
+                count -= count % super::feedback::per_primitive(session.mode);
+                Some(self.plan_capture(
+                    session,
+                    &sources,
+                    args.first as u32,
+                    count,
+                    instances,
+                    f,
+                )?)
+            }
+            None => None,
+        };
         let (max_vertex, restarts) = self.index_range(&indices, count, f)?;
         if restarts && emulated == Emulated::None {
             match args.mode {
@@ -92,20 +111,21 @@ impl Context {
         }
         self.check_attribute_ranges(&sources, max_vertex, instances, f)?;
 
-        // Draws that GL would rasterize to nothing.
+        // Draws that GL would rasterize to nothing: still made when they capture vertices.
         let s = &self.state;
         let triangles = matches!(
             args.mode,
             gl::TRIANGLES | gl::TRIANGLE_STRIP | gl::TRIANGLE_FAN
         );
-        if s.rasterizer_discard
+        let scissor = self.scissor_rect_for(formats.size);
+        let rasterize = !(s.rasterizer_discard
             || (s.cull_face && s.cull_face_mode == gl::FRONT_AND_BACK && triangles)
             || s.viewport[2] == 0
             || s.viewport[3] == 0
-        {
+            || scissor.is_none());
+        if !rasterize && capture.is_none() || count == 0 {
             return None;
         }
-        let scissor = self.scissor_rect_for(formats.size)?;
         Some(DrawCall {
             program: pid,
             topology,
@@ -117,7 +137,9 @@ impl Context {
             sources,
             slot_plans,
             blocks,
-            scissor,
+            scissor: scissor.unwrap_or([0, 0, 1, 1]),
+            capture,
+            rasterize,
         })
     }
 

@@ -205,6 +205,42 @@ impl Context {
         }
     }
 
+    /// The target of a draw that makes no fragments: a 1×1 depth image nothing reads.
+    pub(crate) fn discard_target(&mut self) -> PassTarget {
+        let gpu = &self.gpu;
+        let view = self
+            .caches
+            .discard
+            .get_or_insert_with(|| {
+                gpu.device
+                    .create_texture(&wgpu::TextureDescriptor {
+                        label: Some("essl-gl no fragments"),
+                        size: wgpu::Extent3d {
+                            width: 1,
+                            height: 1,
+                            depth_or_array_layers: 1,
+                        },
+                        mip_level_count: 1,
+                        sample_count: 1,
+                        dimension: wgpu::TextureDimension::D2,
+                        format: wgpu::TextureFormat::Depth16Unorm,
+                        usage: wgpu::TextureUsages::RENDER_ATTACHMENT,
+                        view_formats: &[],
+                    })
+                    .create_view(&Default::default())
+            })
+            .clone();
+        PassTarget {
+            colors: Vec::new(),
+            depth: Some(DepthTarget {
+                view,
+                format: wgpu::TextureFormat::Depth16Unorm,
+            }),
+            samples: 1,
+            size: [1, 1],
+        }
+    }
+
     /// The default framebuffer as a render pass target.
     pub(crate) fn default_target(&self) -> PassTarget {
         let fb = &self.fb;

@@ -29,6 +29,7 @@ use crate::renderbuffer::RenderbufferObject;
 use crate::sampler::SamplerObject;
 use crate::sync::SyncObject;
 use crate::texture::TextureObject;
+use crate::transform_feedback::TransformFeedbackObject;
 use crate::vertex_array::VertexArrayObject;
 
 /// Every object of a context.
@@ -43,6 +44,9 @@ pub(crate) struct Objects {
     pub(crate) samplers: Table<SamplerObject>,
     pub(crate) queries: Table<QueryObject>,
     pub(crate) syncs: Table<SyncObject>,
+    pub(crate) transform_feedbacks: Table<TransformFeedbackObject>,
+    /// The transform feedback object in use when none is bound.
+    default_transform_feedback: TransformFeedbackObject,
     /// The vertex array in use when none is bound (WebGL's default vertex array object).
     default_vertex_array: VertexArrayObject,
 }
@@ -61,6 +65,8 @@ impl Objects {
             samplers: Table::default(),
             queries: Table::default(),
             syncs: Table::default(),
+            transform_feedbacks: Table::default(),
+            default_transform_feedback: TransformFeedbackObject::default(),
             default_vertex_array: VertexArrayObject::new(max_vertex_attribs),
         }
     }
@@ -111,9 +117,56 @@ impl Objects {
             .and_then(|p| p.linked.as_mut())
     }
 
-    /// Deletes a buffer: detached from the vertex array `bound_vao` (GL detaches a deleted
-    /// buffer only from the bound one), freed when no other vertex array uses it.
-    pub(crate) fn delete_buffer(&mut self, id: Id, bound_vao: Option<Id>) {
+    /// The transform feedback object `bound` names (the default one for `None`).
+    pub(crate) fn feedback(&self, bound: Option<Id>) -> &TransformFeedbackObject {
+        match bound.and_then(|id| self.transform_feedbacks.get_any(id)) {
+            Some(t) => t,
+            None => &self.default_transform_feedback,
+        }
+    }
+
+    /// Mutable [`Objects::feedback`] (for the state that holds no reference).
+    pub(crate) fn feedback_mut(&mut self, bound: Option<Id>) -> &mut TransformFeedbackObject {
+        match bound {
+            Some(id) if self.transform_feedbacks.get_any(id).is_some() => self
+                .transform_feedbacks
+                .get_any_mut(id)
+                .expect("checked above"),
+            _ => &mut self.default_transform_feedback,
+        }
+    }
+
+    /// Sets indexed binding `index` of transform feedback object `tf`, moving the reference.
+    pub(crate) fn set_feedback_buffer(
+        &mut self,
+        tf: Option<Id>,
+        index: usize,
+        range: Option<crate::bindings::BufferRange>,
+    ) {
+        let mut slot = self.feedback(tf).buffers[index].map(|r| r.buffer);
+        self.buffers.retarget(&mut slot, range.map(|r| r.buffer));
+        self.feedback_mut(tf).buffers[index] = range;
+    }
+
+    /// Deletes a transform feedback object (the caller has unbound it), dropping its
+    /// buffers' references.
+    pub(crate) fn delete_transform_feedback(&mut self, id: Id) {
+        if let Some(freed) = self.transform_feedbacks.delete_freeing(id) {
+            for r in freed.buffers.iter().flatten() {
+                self.buffers.release(r.buffer);
+            }
+        }
+    }
+
+    /// Deletes a buffer: detached from the vertex array `bound_vao` and the transform
+    /// feedback object `bound_tf` (GL detaches a deleted buffer only from the bound ones),
+    /// freed when nothing else uses it.
+    pub(crate) fn delete_buffer(&mut self, id: Id, bound_vao: Option<Id>, bound_tf: Option<Id>) {
+        for i in 0..4 {
+            if self.feedback(bound_tf).buffers[i].is_some_and(|r| r.buffer == id) {
+                self.set_feedback_buffer(bound_tf, i, None);
+            }
+        }
         if self.vertex_array(bound_vao).element_buffer == Some(id) {
             self.set_element_buffer(bound_vao, None);
         }

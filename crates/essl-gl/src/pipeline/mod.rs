@@ -14,7 +14,7 @@ use std::collections::HashMap;
 
 use crate::context::Gpu;
 use crate::program::LinkedProgram;
-use crate::shader_patch::{wrap_entry_point, InputPatch};
+use crate::shader_patch::{capture_outputs, wrap_entry_point, CaptureSpec, InputPatch};
 use crate::texture::SampleKind;
 
 /// Bind groups kept at most before the caches are emptied.
@@ -65,6 +65,11 @@ pub(crate) struct PipelineKey {
     pub(crate) alpha_to_coverage: bool,
     /// `EXT_float_blend`: 32-bit float attachments blend.
     pub(crate) float_blend: bool,
+    /// What transform feedback captures (the vertex stage writes storage buffers).
+    pub(crate) capture: Option<CaptureSpec>,
+    /// Whether fragments are made (false: `RASTERIZER_DISCARD` while capturing; the pass
+    /// has a placeholder depth target and the pipeline no fragment stage).
+    pub(crate) rasterize: bool,
 }
 
 /// What a group-0 bind group holds: the default block's arena chunk and size, and the
@@ -89,7 +94,10 @@ pub(crate) struct PipelineCache {
     #[allow(clippy::type_complexity)]
     group1_groups:
         HashMap<(Vec<SlotBinding>, Vec<(wgpu::TextureView, wgpu::Sampler)>), wgpu::BindGroup>,
-    modules: HashMap<(u64, Vec<InputPatch>), Result<wgpu::ShaderModule, Rejected>>,
+    #[allow(clippy::type_complexity)]
+    modules:
+        HashMap<(u64, Vec<InputPatch>, Option<CaptureSpec>), Result<wgpu::ShaderModule, Rejected>>,
+    capture_layouts: HashMap<u32, wgpu::BindGroupLayout>,
     clear: HashMap<ClearKey, wgpu::RenderPipeline>,
     blit: HashMap<BlitKey, (wgpu::RenderPipeline, wgpu::BindGroupLayout)>,
     /// Pipelines created (for statistics and tests).
@@ -294,21 +302,65 @@ impl PipelineCache {
         group
     }
 
-    /// The vertex module for a set of input patches.
+    /// The vertex module for a set of input patches, capturing what `capture` says.
     fn vertex_module(
         &mut self,
         gpu: &Gpu,
         program: &LinkedProgram,
         patches: &[InputPatch],
+        capture: &Option<CaptureSpec>,
     ) -> Result<wgpu::ShaderModule, Rejected> {
-        if patches.is_empty() {
+        if patches.is_empty() && capture.is_none() {
             return Ok(program.vertex_module.clone());
         }
         self.modules
-            .entry((program.serial, patches.to_vec()))
+            .entry((program.serial, patches.to_vec(), capture.clone()))
             .or_insert_with(|| {
-                let module = wrap_entry_point(&program.layout.vertex, patches, false);
-                create_module(gpu, module, "essl-gl vertex (patched inputs)")
+                let mut module = program.layout.vertex.clone();
+                if !patches.is_empty() {
+                    module = wrap_entry_point(&module, patches, false);
+                }
+                if let Some(spec) = capture {
+                    module = capture_outputs(&module, spec);
+                }
+                create_module(gpu, module, "essl-gl vertex (patched)")
+            })
+            .clone()
+    }
+
+    /// The layout of group 2 for transform feedback: `buffers` storage buffers at bindings
+    /// `0..`, the capture parameters at binding 4.
+    pub(crate) fn capture_layout(&mut self, gpu: &Gpu, buffers: u32) -> wgpu::BindGroupLayout {
+        self.capture_layouts
+            .entry(buffers)
+            .or_insert_with(|| {
+                let mut entries: Vec<wgpu::BindGroupLayoutEntry> = (0..buffers)
+                    .map(|b| wgpu::BindGroupLayoutEntry {
+                        binding: b,
+                        visibility: wgpu::ShaderStages::VERTEX,
+                        ty: wgpu::BindingType::Buffer {
+                            ty: wgpu::BufferBindingType::Storage { read_only: false },
+                            has_dynamic_offset: false,
+                            min_binding_size: None,
+                        },
+                        count: None,
+                    })
+                    .collect();
+                entries.push(wgpu::BindGroupLayoutEntry {
+                    binding: crate::shader_patch::CAPTURE_PARAMS_BINDING,
+                    visibility: wgpu::ShaderStages::VERTEX,
+                    ty: wgpu::BindingType::Buffer {
+                        ty: wgpu::BufferBindingType::Uniform,
+                        has_dynamic_offset: false,
+                        min_binding_size: None,
+                    },
+                    count: None,
+                });
+                gpu.device
+                    .create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
+                        label: Some("essl-gl transform feedback"),
+                        entries: &entries,
+                    })
             })
             .clone()
     }
@@ -334,17 +386,25 @@ impl PipelineCache {
         key: &PipelineKey,
         program: &LinkedProgram,
     ) -> Result<CachedPipeline, Rejected> {
-        let vertex_module = self.vertex_module(gpu, program, &key.patches)?;
+        let vertex_module = self.vertex_module(gpu, program, &key.patches, &key.capture)?;
         let (default, blocks) = (
             program.layout.uniform_block.is_some(),
             program.layout.blocks.len(),
         );
         let group0 = (default || blocks > 0).then(|| self.group0_layout(gpu, default, blocks));
         let group1 = (!key.slots.is_empty()).then(|| self.group1_layout(gpu, &key.slots));
+        let group2 = key
+            .capture
+            .as_ref()
+            .map(|c| self.capture_layout(gpu, c.buffers));
         let mut groups: Vec<Option<&wgpu::BindGroupLayout>> = vec![group0.as_ref()];
-        if group1.is_some() {
+        if group1.is_some() || group2.is_some() {
             groups.push(group1.as_ref());
         }
+        if group2.is_some() {
+            groups.push(group2.as_ref());
+        }
+        let targets = color_targets(key);
         let scope = gpu.device.push_error_scope(wgpu::ErrorFilter::Validation);
         let layout = gpu
             .device
@@ -420,11 +480,11 @@ impl PipelineCache {
                     mask: !0,
                     alpha_to_coverage_enabled: key.alpha_to_coverage && key.samples > 1,
                 },
-                fragment: Some(wgpu::FragmentState {
+                fragment: key.rasterize.then(|| wgpu::FragmentState {
                     module: &program.fragment_module,
                     entry_point: Some("main"),
                     compilation_options: Default::default(),
-                    targets: &color_targets(key),
+                    targets: &targets,
                 }),
                 multiview_mask: None,
                 cache: None,

@@ -2,6 +2,7 @@
 //! binding points, active attributes and uniforms.
 
 use super::uniform::find_uniform;
+use super::ActiveInfo;
 use crate::context::Context;
 use crate::gl;
 use crate::objects::{Program, UniformLocation};
@@ -56,16 +57,17 @@ impl Context {
         }
     }
 
-    /// The index-th active attribute's name, type and size (`getActiveAttrib`).
-    pub fn get_active_attrib(
-        &mut self,
-        program: Program,
-        index: u32,
-    ) -> Option<(String, u32, u32)> {
+    /// The index-th active attribute's name, type and size (`getActiveAttrib`); an index
+    /// out of range → `INVALID_VALUE`.
+    pub fn get_active_attrib(&mut self, program: Program, index: u32) -> Option<ActiveInfo> {
         let id = self.program_id(program, "getActiveAttrib")?;
         let linked = self.objects.linked(id)?;
         match linked.layout.attributes.get(index as usize) {
-            Some(a) => Some((a.name.clone(), a.ty as u32, a.size)),
+            Some(a) => Some(ActiveInfo {
+                name: a.name.clone(),
+                size: a.size,
+                ty: a.ty as u32,
+            }),
             None => {
                 self.error(gl::INVALID_VALUE, "getActiveAttrib", "index out of range");
                 None
@@ -73,16 +75,17 @@ impl Context {
         }
     }
 
-    /// The index-th active uniform's name, type and size (`getActiveUniform`).
-    pub fn get_active_uniform(
-        &mut self,
-        program: Program,
-        index: u32,
-    ) -> Option<(String, u32, u32)> {
+    /// The index-th active uniform's name, type and size (`getActiveUniform`); an index
+    /// out of range → `INVALID_VALUE`.
+    pub fn get_active_uniform(&mut self, program: Program, index: u32) -> Option<ActiveInfo> {
         let id = self.program_id(program, "getActiveUniform")?;
         let linked = self.objects.linked(id)?;
         match linked.layout.uniforms.get(index as usize) {
-            Some(u) => Some((u.name.clone(), u.ty as u32, u.size)),
+            Some(u) => Some(ActiveInfo {
+                name: u.name.clone(),
+                size: u.size,
+                ty: u.ty as u32,
+            }),
             None => {
                 self.error(gl::INVALID_VALUE, "getActiveUniform", "index out of range");
                 None

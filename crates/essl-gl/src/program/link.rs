@@ -51,6 +51,9 @@ pub(crate) enum LinkError {
     /// A default uniform block larger than the device's largest uniform binding.
     #[error("default uniform block of {0} bytes is too large")]
     DefaultBlockTooLarge(u32),
+    /// The transform feedback varyings do not fit (ES 3.0's link errors for them).
+    #[error("{0}")]
+    Feedback(String),
     /// wgpu's validation refused the lowered modules.
     #[error("the lowered shaders were rejected by wgpu: {0}")]
     Rejected(String),
@@ -82,6 +85,17 @@ impl Context {
         let Some(p) = self.program_id(program, "linkProgram") else {
             return;
         };
+        if self
+            .feedback_object()
+            .session
+            .is_some_and(|s| s.program == p)
+        {
+            return self.error(
+                gl::INVALID_OPERATION,
+                "linkProgram",
+                "the program is in use by active transform feedback",
+            );
+        }
         let obj = self.objects.programs.get_any(p).expect("live");
         let shader = |ty: u32| {
             obj.attached
@@ -101,8 +115,10 @@ impl Context {
                     let v = &compile(essl::Stage::Vertex, v);
                     let f = &compile(essl::Stage::Fragment, f);
                     let linked = essl::link::link_with_bindings(v, f, &obj.attrib_bindings);
+                    let mut options = crate::LOWER_OPTIONS;
+                    options.transform_feedback = obj.feedback_varyings.0.clone();
                     if linked.ok {
-                        essl::lower::lower_program(v, f, &linked, &crate::LOWER_OPTIONS)
+                        essl::lower::lower_program(v, f, &linked, &options)
                             .map_err(LinkError::from)
                             .and_then(|layout| match &mut self.linker.filter {
                                 Some(filter) => filter(layout).map_err(LinkError::Filter),
@@ -159,7 +175,13 @@ impl Context {
         let Some(p) = self.program_id(program, "linkProgram") else {
             return;
         };
-        let result = self.link(layout);
+        let feedback = self
+            .objects
+            .programs
+            .get_any(p)
+            .map(|o| o.feedback_varyings.clone())
+            .unwrap_or_default();
+        let result = self.link(layout, &feedback);
         let obj = self.objects.programs.get_any_mut(p).expect("live");
         match result {
             Ok(linked) => {
@@ -176,7 +198,12 @@ impl Context {
         }
     }
 
-    pub(super) fn link(&mut self, layout: ProgramLayout) -> Result<LinkedProgram, LinkError> {
+    pub(super) fn link(
+        &mut self,
+        layout: ProgramLayout,
+        (names, mode): &(Vec<String>, u32),
+    ) -> Result<LinkedProgram, LinkError> {
+        let feedback = super::feedback::feedback_layout(&layout, names, *mode)?;
         let limits = &self.gpu.limits;
         if layout.samplers.len() as u32
             > limits
@@ -242,6 +269,7 @@ impl Context {
             uploaded: None,
             sources: None,
             checks: None,
+            feedback,
             vertex_module,
             fragment_module,
             layout,
@@ -259,6 +287,9 @@ impl Context {
     /// link failed → `INVALID_OPERATION`.
     pub fn use_program(&mut self, program: Option<Program>) {
         const F: &str = "useProgram";
+        if self.capturing().is_some() {
+            return self.error(gl::INVALID_OPERATION, F, "transform feedback is active");
+        }
         let id = match program {
             None => None,
             Some(p) => {

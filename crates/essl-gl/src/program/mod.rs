@@ -12,6 +12,7 @@
 //! add methods to [`Context`]: its `impl` is spread over these files on purpose, one file per
 //! group of GL calls.
 
+mod feedback;
 mod interface;
 mod introspect;
 mod lifecycle;
@@ -19,8 +20,14 @@ mod link;
 mod shader;
 mod uniform;
 
+pub(crate) use feedback::MAX_SEPARATE_ATTRIBS;
 pub(crate) use interface::{main_entry, type_shape};
-pub(crate) use link::Linker;
+
+/// `MAX_TRANSFORM_FEEDBACK_SEPARATE_ATTRIBS`: the indexed transform feedback bindings.
+pub(crate) fn feedback_max_buffers() -> u32 {
+    MAX_SEPARATE_ATTRIBS
+}
+pub(crate) use link::{LinkError, Linker};
 pub(crate) use uniform::{find_uniform, uniform_shape};
 
 use essl::program::ProgramLayout;
@@ -45,6 +52,19 @@ pub(crate) struct ShaderInput {
     pub(crate) components: u8,
 }
 
+/// What `get_active_attrib`, `get_active_uniform` and `get_transform_feedback_varying`
+/// return (`WebGLActiveInfo`): the name as WebGL enumerates it, the array size (1 for a
+/// non-array) and the type enum (`FLOAT_VEC3`, `SAMPLER_2D`, …).
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct ActiveInfo {
+    /// The name (`u_lights[0].color`, `u_weights[0]`).
+    pub name: String,
+    /// Elements of an array, else 1.
+    pub size: u32,
+    /// The type, as a GL enum.
+    pub ty: u32,
+}
+
 /// A shader object (`WebGLShader`).
 pub(crate) struct ShaderObject {
     pub(crate) ty: u32,
@@ -58,7 +78,6 @@ pub(crate) struct ShaderObject {
 }
 
 /// A program object (`WebGLProgram`).
-#[derive(Default)]
 pub(crate) struct ProgramObject {
     pub(crate) attached: Vec<Id>,
     /// `bind_attrib_location` requests, applied at the next link.
@@ -68,6 +87,22 @@ pub(crate) struct ProgramObject {
     /// The result of the last `validate_program`.
     pub(crate) validate_status: bool,
     pub(crate) info_log: String,
+    /// `transformFeedbackVaryings`: the names and the buffer mode the next link uses.
+    pub(crate) feedback_varyings: (Vec<String>, u32),
+}
+
+impl Default for ProgramObject {
+    fn default() -> Self {
+        ProgramObject {
+            attached: Vec::new(),
+            attrib_bindings: Vec::new(),
+            linked: None,
+            link_status: false,
+            validate_status: false,
+            info_log: String::new(),
+            feedback_varyings: (Vec::new(), gl::INTERLEAVED_ATTRIBS),
+        }
+    }
 }
 
 /// The result of a successful link.
@@ -93,6 +128,8 @@ pub(crate) struct LinkedProgram {
     pub(crate) sources: Option<Box<crate::validation::LinkedSources>>,
     /// The runtime checks of uniform values, built at the first draw with validation on.
     pub(crate) checks: Option<Box<crate::validation::ProgramChecks>>,
+    /// What transform feedback captures, when the link asked for varyings.
+    pub(crate) feedback: Option<feedback::Feedback>,
 }
 
 impl Context {

@@ -154,7 +154,7 @@ impl Context {
     /// `VALIDATE_STATUS` ([`Parameter::Bool`]); `ATTACHED_SHADERS`, `ACTIVE_UNIFORMS`,
     /// `ACTIVE_ATTRIBUTES`, `ACTIVE_UNIFORM_BLOCKS`, `TRANSFORM_FEEDBACK_VARYINGS`
     /// ([`Parameter::Int`]; the active counts are 0 unless the last link succeeded);
-    /// `TRANSFORM_FEEDBACK_BUFFER_MODE` ([`Parameter::Enum`], always `SEPARATE_ATTRIBS`).
+    /// `TRANSFORM_FEEDBACK_BUFFER_MODE` ([`Parameter::Enum`]).
     ///
     /// Another `pname` → `INVALID_ENUM`; a program that no longer exists → `INVALID_VALUE`;
     /// one of another context → `INVALID_OPERATION`; all return `None`. A deleted program
@@ -174,8 +174,18 @@ impl Context {
             gl::ACTIVE_UNIFORMS => Some(active(|l| l.uniforms.len())),
             gl::ACTIVE_ATTRIBUTES => Some(active(|l| l.attributes.len())),
             gl::ACTIVE_UNIFORM_BLOCKS => Some(active(|l| l.blocks.len())),
-            gl::TRANSFORM_FEEDBACK_VARYINGS => Some(Parameter::Int(0)),
-            gl::TRANSFORM_FEEDBACK_BUFFER_MODE => Some(Parameter::Enum(gl::SEPARATE_ATTRIBS)),
+            gl::TRANSFORM_FEEDBACK_VARYINGS => Some(Parameter::Int(
+                p.linked
+                    .as_ref()
+                    .and_then(|l| l.feedback.as_ref())
+                    .map_or(0, |f| f.varyings.len()) as i64,
+            )),
+            gl::TRANSFORM_FEEDBACK_BUFFER_MODE => Some(Parameter::Enum(
+                p.linked
+                    .as_ref()
+                    .and_then(|l| l.feedback.as_ref())
+                    .map_or(p.feedback_varyings.1, |f| f.mode),
+            )),
             _ => {
                 self.error(gl::INVALID_ENUM, F, format_args!("pname 0x{pname:04X}"));
                 None

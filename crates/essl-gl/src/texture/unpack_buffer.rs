@@ -23,6 +23,7 @@ impl Context {
             self.error(gl::INVALID_VALUE, function, "negative offset");
             return None;
         }
+        self.buffer_to_cpu(id);
         let data = &self.objects.buffers.get_any(id)?.data;
         Some(data.get(offset as usize..).unwrap_or_default().to_vec())
     }

@@ -144,6 +144,7 @@ impl Layout {
             samplers: self.samplers,
             blocks: Vec::new(),
             fragment_outputs: vec![(0, GlType::FLOAT_VEC4)],
+            captured: Vec::new(),
         }
     }
 }

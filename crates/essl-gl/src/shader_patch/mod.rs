@@ -1,5 +1,6 @@
 //! Rewrites a lowered module's entry point so that wgpu accepts the vertex data WebGL feeds
-//! it, and the fragment output fits the RGBA framebuffer.
+//! it and the fragment outputs fit the draw buffers, and ([`capture`]) so that the vertex
+//! stage writes what transform feedback captures.
 //!
 //! wgpu accepts a vertex format *narrower* than the shader input of the same scalar kind
 //! (Vulkan fills the missing components with 0, 0, 1 — GL's defaults), but rejects one that
@@ -14,6 +15,13 @@ use naga::{
     Arena, BinaryOperator, Binding, Block, Expression, Function, FunctionArgument, FunctionResult,
     Handle, Literal, MathFunction, Module, Scalar, Span, Statement, StructMember, SwizzleComponent,
     Type, TypeInner, VectorSize,
+};
+
+mod capture;
+
+pub(crate) use capture::{
+    capture_outputs, CaptureSource, CaptureSpec, CaptureValue,
+    PARAMS_BINDING as CAPTURE_PARAMS_BINDING,
 };
 
 use crate::program::{type_shape, ValueKind};
@@ -40,7 +48,7 @@ pub(crate) struct InputPatch {
     pub(crate) norm: Option<Norm32>,
 }
 
-fn scalar(kind: ValueKind) -> Scalar {
+pub(super) fn scalar(kind: ValueKind) -> Scalar {
     match kind {
         ValueKind::Float => Scalar::F32,
         ValueKind::Sint => Scalar::I32,
@@ -82,14 +90,14 @@ fn literal(kind: ValueKind, one: bool) -> Literal {
 }
 
 /// Appends expressions to a function, emitting those that need it.
-struct Builder {
-    expressions: Arena<Expression>,
-    body: Block,
+pub(super) struct Builder {
+    pub(super) expressions: Arena<Expression>,
+    pub(super) body: Block,
 }
 
 impl Builder {
     /// An expression that is evaluated where it is emitted.
-    fn emit(&mut self, e: Expression) -> Handle<Expression> {
+    pub(super) fn emit(&mut self, e: Expression) -> Handle<Expression> {
         let len = self.expressions.len();
         let h = self.expressions.append(e, Span::UNDEFINED);
         self.body.push(
@@ -100,7 +108,7 @@ impl Builder {
     }
 
     /// An expression that needs no emitting (literals, arguments, call results).
-    fn plain(&mut self, e: Expression) -> Handle<Expression> {
+    pub(super) fn plain(&mut self, e: Expression) -> Handle<Expression> {
         self.expressions.append(e, Span::UNDEFINED)
     }
 
@@ -247,7 +255,7 @@ pub(crate) fn wrap_entry_point(
 }
 
 /// The index of the entry point named `main` (else the first one), `None` without any.
-fn main_index(m: &Module) -> Option<usize> {
+pub(super) fn main_index(m: &Module) -> Option<usize> {
     m.entry_points
         .iter()
         .position(|e| e.name == "main")
@@ -260,7 +268,7 @@ fn main_index(m: &Module) -> Option<usize> {
 
 /// Adds the entry point's body to the module as the ordinary function `essl_gl_main`,
 /// without bindings.
-fn move_body_to_function(m: &mut Module, original: &Function) -> Handle<Function> {
+pub(super) fn move_body_to_function(m: &mut Module, original: &Function) -> Handle<Function> {
     let mut inner = original.clone();
     inner.name = Some("essl_gl_main".into());
     for arg in &mut inner.arguments {
