@@ -69,10 +69,14 @@ class Loader:
             raise ScriptError(f"{what}: expected a number, boolean, null, string, list or one-key object")
         key = next(iter(a))
         if key == "out":
-            if set(a) != {"out", "length"} or a["out"] not in TYPED or not is_int(a["length"]) \
-                    or not 0 <= a["length"] <= MAX_OUT:
-                raise ScriptError(f"{what}: expected {{\"out\": TYPE, \"length\": N}} with TYPE one of "
-                                  f"{', '.join(TYPED)} and 0 <= N <= {MAX_OUT}")
+            if not {"out", "length"} <= set(a) <= {"out", "length", "fill"} or a["out"] not in TYPED \
+                    or not is_int(a["length"]) or not 0 <= a["length"] <= MAX_OUT:
+                raise ScriptError(f"{what}: expected {{\"out\": TYPE, \"length\": N}} (and optionally \"fill\") "
+                                  f"with TYPE one of {', '.join(TYPED)} and 0 <= N <= {MAX_OUT}")
+            fill = a.get("fill", 0)
+            lo, hi = INT_RANGE.get(a["out"], (-math.inf, math.inf))
+            if not is_num(fill) or not lo <= fill <= hi or (a["out"] in INT_RANGE and not is_int(fill)):
+                raise ScriptError(f"{what}: fill must be a value of the {a['out']} array")
             return a
         if len(a) != 1:
             raise ScriptError(f"{what}: an object argument has exactly one key (or out + length), not {sorted(a)}")
@@ -212,7 +216,7 @@ function arg(a, outs) {
   if ('str' in a) return a.str;
   if ('or' in a) return a.or.reduce((v, n) => v | enumValue(n), 0) >>> 0;
   if ('ref' in a) { if (!(a.ref in objs)) throw new ScriptError('ref ' + a.ref + ': no such object yet'); return objs[a.ref]; }
-  if ('out' in a) { const v = new TYPED[a.out](a.length); outs.push(v); return v; }
+  if ('out' in a) { const v = new TYPED[a.out](a.length).fill(a.fill || 0); outs.push(v); return v; }
   for (const k in TYPED) if (k in a) return new TYPED[k](a[k]);
   throw new ScriptError('bad argument ' + JSON.stringify(a));
 }
