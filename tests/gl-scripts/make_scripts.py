@@ -3,7 +3,8 @@
 
 usage: make_scripts.py [--out DIR] [--jitter PX]
 
-Writes NAME.json for each multi-pass program beside this file. Shaders are hand-written files beside the scripts; this generator writes the
+Writes NAME.json for each multi-pass program beside this file, and probes/NAME.json for each
+probe (probes.py). Shaders are hand-written files beside the scripts; this generator writes the
 calls and the data they upload: meshes, matrices, particle seeds, computed in float64 and written
 with 7 significant digits (the number in the JSON is the number uploaded; Float32Array rounds it).
 
@@ -924,6 +925,9 @@ def main():
         s = make()
         with open(os.path.join(folder, s.name + ".json"), "w", encoding="utf-8") as fh:
             fh.write(s.json(folder))
+    if not args.out:
+        import probes
+        probes.write_all(os.path.join(HERE, "probes"))
 
 
 if __name__ == "__main__":
