@@ -833,14 +833,14 @@ CUBE_FACES = [("POSITIVE_X", [1, 0, 0], [0, -1, 0]), ("NEGATIVE_X", [-1, 0, 0], 
 
 
 def cubemap_render():
-    size = 64
+    size = 256
     s = Script("cubemap-render", f"Rendering to a cube map: each face of a {size}x{size} RGBA8 cube map "
                "(framebufferTexture2D with TEXTURE_CUBE_MAP_POSITIVE_X ... NEGATIVE_Z) gets a sky and six "
                "coloured boxes seen from the centre with a 90-degree camera; then the canvas shows the cube map "
                "as the background and on a mirror sphere and box (samplerCube, reflect).")
     w, h = s.width, s.height
-    boxes = [([3, 0, 0], [0.9, 0.25, 0.2]), ([-3, 0, 0], [0.2, 0.8, 0.8]), ([0, 3, 0], [0.9, 0.9, 0.9]),
-             ([0, -3, 0], [0.3, 0.3, 0.3]), ([0, 0, 3], [0.25, 0.35, 0.95]), ([0, 0, -3], [0.95, 0.85, 0.2])]
+    boxes = [([5, 0, 0], [0.9, 0.25, 0.2]), ([-5, 0, 0], [0.2, 0.8, 0.8]), ([0, 5, 0], [0.9, 0.9, 0.9]),
+             ([0, -5, 0], [0.3, 0.3, 0.3]), ([0, 0, 5], [0.25, 0.35, 0.95]), ([0, 0, -5], [0.95, 0.85, 0.2])]
     to_light = unit([0.5, 0.6, -0.6])
     eye = [2.6, 1.2, 4.4]
     view_proj = mul(perspective(45, w / h, 0.3, 30.0, w), look_at(eye, [0, 0, 0], [0, 1, 0]))
@@ -899,8 +899,8 @@ def cubemap_render():
     fullscreen(s, "sky")
     s("enable", "DEPTH_TEST")
     s("useProgram", R("mirror"))
-    for mesh, model, color in (("ball", translate(-0.2, 0, 0.2), [1.0, 1.0, 1.0]),
-                               ("box", mul_all(translate(1.5, -0.3, -1.0), rotate_y(35), rotate_x(20), scale(0.7)),
+    for mesh, model, color in (("ball", translate(-0.5, 0.1, 0.0), [1.0, 1.0, 1.0]),
+                               ("box", mul_all(translate(1.2, -0.3, 0.9), rotate_y(35), rotate_x(20), scale(0.6)),
                                 [1.0, 0.85, 0.6])):
         s.matrix("mirror.u_model", model)
         s("uniform3fv", R("mirror.u_color"), F32(color))
