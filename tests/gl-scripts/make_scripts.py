@@ -275,6 +275,15 @@ class Script:
     def matrix(self, loc, m):
         self("uniformMatrix4fv", R(loc), False, F32(m))
 
+    def draw_objects(self, program, objects):
+        """Each (mesh, model, uniforms): PROGRAM.u_model, then each uniform name -> (setter, value) in order,
+        then the mesh's draw. The program is already in use."""
+        for mesh, model, uniforms in objects:
+            self.matrix(f"{program}.u_model", model)
+            for name, (setter, value) in uniforms.items():
+                self(setter, R(f"{program}.{name}"), value)
+            self.draw_mesh(mesh)
+
     def texture(self, name, target, internal, width, height, filt="NEAREST", levels=1):
         """An immutable texture (texStorage2D), CLAMP_TO_EDGE, one filter for min and mag."""
         self("createTexture", as_=name)
@@ -379,10 +388,7 @@ def shadow_map():
     s("activeTexture", "TEXTURE1")
     s("bindTexture", "TEXTURE_2D", R("shadowMap"))
     s("bindSampler", 1, R("compare"))
-    for name, _, model, color in scene:
-        s.matrix("lit.u_model", model)
-        s("uniform3fv", R("lit.u_color"), F32(color))
-        s.draw_mesh(name)
+    s.draw_objects("lit", [(name, model, {"u_color": ("uniform3fv", F32(color))}) for name, _, model, color in scene])
     s("bindSampler", 1, None)
     s("bindVertexArray", None)
     return s
@@ -482,11 +488,9 @@ def deferred():
         s("clearBufferfv", "COLOR", i, F32([0, 0, 0, 0]))
     s("clearBufferfv", "DEPTH", 0, F32([1]))
     s("useProgram", R("gbuffer"))
-    for name, _, model, albedo, specular in scene:
-        s.matrix("gbuffer.u_model", model)
-        s("uniform3fv", R("gbuffer.u_albedo"), F32(albedo))
-        s("uniform1f", R("gbuffer.u_specular"), specular)
-        s.draw_mesh(name)
+    s.draw_objects("gbuffer", [(name, model, {"u_albedo": ("uniform3fv", F32(albedo)),
+                                              "u_specular": ("uniform1f", specular)})
+                               for name, _, model, albedo, specular in scene])
     s("bindFramebuffer", "FRAMEBUFFER", None)
     s("disable", "DEPTH_TEST")
     bind_textures(s, [("TEXTURE_2D", "albedo"), ("TEXTURE_2D", "normal"), ("TEXTURE_2D", "position")])
@@ -676,8 +680,8 @@ def stencil_outline():
 
 def picking():
     s = Script("picking", "Object ids: one pass writes a lit colour to an RGBA8 target and each object's id to an "
-               "R32UI target; readPixels(RGBA_INTEGER, UNSIGNED_INT) from the id target at the centres of the "
-               "objects and at the background is recorded; a full-screen pass reads both targets (sampler2D, "
+               "R32UI target; readPixels(RGBA_INTEGER, UNSIGNED_INT) from the id target at the top centre of each "
+               "object and on the floor is recorded; a full-screen pass reads both targets (sampler2D, "
                "usampler2D) and outlines the object picked.")
     w, h = s.width, s.height
     scene = [("floor", plane(9.0), translate(0, 0, 0), [0.6, 0.6, 0.65], 1)]
@@ -724,11 +728,8 @@ def picking():
     s("clearBufferuiv", "COLOR", 1, U32([0, 0, 0, 0]))
     s("clearBufferfv", "DEPTH", 0, F32([1]))
     s("useProgram", R("idPass"))
-    for name, _, model, color, ident in scene:
-        s.matrix("idPass.u_model", model)
-        s("uniform3fv", R("idPass.u_color"), F32(color))
-        s("uniform1ui", R("idPass.u_id"), ident)
-        s.draw_mesh(name)
+    s.draw_objects("idPass", [(name, model, {"u_color": ("uniform3fv", F32(color)), "u_id": ("uniform1ui", ident)})
+                              for name, _, model, color, ident in scene])
     points = [("floor", (3, h - 3))]
     for name, _, model, _, ident in scene[1:]:
         top = 0.5 if name == "ball" else 0.42

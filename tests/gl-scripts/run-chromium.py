@@ -138,20 +138,15 @@ class Loader:
             if c["f"] not in ("compileShader", "linkProgram") or not isinstance(c["status"], bool):
                 raise ScriptError(f"{what}: status (true or false) belongs to compileShader and linkProgram")
             out["status"] = c["status"]
-        if "record" in c:
-            if not isinstance(c["record"], str) or not c["record"]:
-                raise ScriptError(f"{what}: record must be a non-empty string")
-            if c["record"] in self.records:
-                raise ScriptError(f"{what}: record key {c['record']!r} is used twice")
-            self.records.add(c["record"])
-            out["record"] = c["record"]
-        if "as" in c:
-            if not isinstance(c["as"], str) or not c["as"]:
-                raise ScriptError(f"{what}: as must be a non-empty string")
-            if c["as"] in self.names:
-                raise ScriptError(f"{what}: as {c['as']!r} names an object another call already made")
-            self.names.add(c["as"])
-            out["as"] = c["as"]
+        for key, used, clash in (("record", self.records, "is a key another call already records"),
+                                 ("as", self.names, "names an object another call already made")):
+            if key in c:
+                if not isinstance(c[key], str) or not c[key]:
+                    raise ScriptError(f"{what}: {key} must be a non-empty string")
+                if c[key] in used:
+                    raise ScriptError(f"{what}: {key} {c[key]!r} {clash}")
+                used.add(c[key])
+                out[key] = c[key]
         return out
 
 
