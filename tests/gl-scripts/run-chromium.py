@@ -8,15 +8,16 @@ runs `setup`, then `frame` once, checking getError() after every call, and reads
 framebuffer with readPixels(0, 0, width, height, RGBA, UNSIGNED_BYTE). This script writes that as
 an 8-bit RGBA PNG whose first row is the top of the image, and the results as JSON: renderer,
 version, records, failures, ms_per_frame. With --times N the frame runs N more times, each
-followed by a 1-pixel readPixels, and ms_per_frame is the median of those N.
+followed by a 1-pixel readPixels, and ms_per_frame is the median of those N (not for a script
+with `until` waits, which runs under virtual time).
 
 Exit 0 when everything ran as the script expects; exit 1, with the reasons on stderr, when the
 script is malformed, a call raised an exception, getError() answered other than expected, a
-shader did not compile or a program did not link (info logs printed) or Chromium gave no answer
-in --timeout seconds. The results JSON is still written when Chromium answered.
+shader did not compile or a program did not link (info logs printed), an `until` wait ran out,
+or Chromium gave no answer in --timeout seconds (it is then killed). The results JSON is still written when Chromium answered.
 Needs Debian's chromium (`apt-get install chromium`); uses only the standard library.
 """
-import argparse, base64, html, json, math, os, re, statistics, struct, subprocess, sys, tempfile, zlib
+import argparse, base64, html, json, math, os, re, struct, subprocess, sys, tempfile, zlib
 
 FLAGS = ["--headless", "--no-sandbox", "--use-angle=swiftshader", "--enable-unsafe-swiftshader",
          "--disable-quic", "--no-first-run", "--disable-background-networking",
