@@ -151,7 +151,6 @@ pub struct Output {
 impl BindingMap {
     /// The map of a linked, lowered program.
     pub fn from_program(layout: &ProgramLayout, options: &Options) -> BindingMap {
-        let block_name = |i: usize| layout.blocks.get(i).map(|b| b.name.clone());
         let uniforms = layout
             .uniforms
             .iter()
@@ -179,14 +178,11 @@ impl BindingMap {
                             .get(*first_slot as usize)
                             .is_some_and(|s| s.comparison),
                     ),
-                    UniformStorage::Block => Place::Block {
-                        block: u
-                            .name
-                            .split(['.', '['])
-                            .next()
-                            .and_then(|b| layout.blocks.iter().find(|x| x.name == b))
+                    UniformStorage::Block { block, .. } => Place::Block {
+                        block: layout
+                            .blocks
+                            .get(*block as usize)
                             .map(|b| b.name.clone())
-                            .or_else(|| block_name(0))
                             .unwrap_or_default(),
                     },
                 },

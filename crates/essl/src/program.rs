@@ -81,6 +81,9 @@ pub struct ProgramLayout {
     pub blocks: Vec<UniformBlockBinding>,
     /// Fragment outputs: (location, type). A renderer with one colour target uses location 0.
     pub fragment_outputs: Vec<(u32, GlType)>,
+    /// The fragment outputs by name: (name, first location, array length or 1), for
+    /// `getFragDataLocation`.
+    pub fragment_output_names: Vec<(String, u32, u32)>,
     /// The outputs [`LowerOptions::transform_feedback`] asked for that the vertex shader
     /// has, in the order asked.
     pub captured: Vec<CapturedOutput>,
@@ -176,8 +179,20 @@ pub enum UniformStorage {
         first_slot: u32,
     },
     /// A member of a uniform block: its value comes from the buffer bound to the block, not
-    /// from `uniform*` calls.
-    Block,
+    /// from `uniform*` calls. Offsets and strides are std140's, within the block.
+    Block {
+        /// The block's index in [`ProgramLayout::blocks`].
+        block: u32,
+        /// Byte offset of element 0 in the block.
+        offset: u32,
+        /// Byte distance between array elements (0 for a non-array).
+        array_stride: u32,
+        /// Byte distance between matrix columns (or rows when row-major); 0 for
+        /// non-matrices.
+        matrix_stride: u32,
+        /// Whether a matrix is stored row by row (`layout(row_major)`).
+        row_major: bool,
+    },
 }
 
 /// How booleans and integers are stored in the default uniform block.
@@ -217,4 +232,8 @@ pub struct UniformBlockBinding {
     pub name: String,
     /// Minimum buffer size in bytes (std140).
     pub size: u32,
+    /// Whether the vertex shader uses the block.
+    pub vertex: bool,
+    /// Whether the fragment shader uses the block.
+    pub fragment: bool,
 }

@@ -240,6 +240,18 @@ fn lower_program_here(
             .iter()
             .filter_map(|(g, loc)| Some((*loc, fm.globals[*g].ty.gl_type()?)))
             .collect(),
+        fragment_output_names: program
+            .fragment_outputs
+            .iter()
+            .map(|(g, loc)| {
+                let glob = &fm.globals[*g];
+                let size = match &glob.ty {
+                    crate::types::Type::Array(_, n) => *n,
+                    _ => 1,
+                };
+                (glob.name.to_string(), *loc, size)
+            })
+            .collect(),
         captured: pplan.captured.clone(),
     })
 }

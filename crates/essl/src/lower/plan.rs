@@ -182,12 +182,12 @@ impl<'m> ProgramPlanner<'m> {
         let offset = p.default_block(program);
         let frag_coord = fm.used_builtins.contains(&BuiltinVar::FragCoord);
         p.pplan.finish_block(offset, frag_coord, options);
+        p.uniform_blocks();
         p.active_uniforms(program);
         // Samplers of a used uniform that a stage uses but whose leaf is inactive cannot
         // happen: activity is per variable.
         p.inputs_and_outputs(program);
         p.captured_outputs(&options.transform_feedback);
-        p.uniform_blocks();
         p
     }
 
@@ -323,12 +323,21 @@ impl<'m> ProgramPlanner<'m> {
                 .map(|s| (s, vm))
                 .or(u.fragment.as_ref().map(|s| (s, fm)));
             let Some((UniformSource::Default { global, path }, module)) = src else {
-                if let Some((UniformSource::Block { .. }, _)) = src {
+                if let Some((
+                    UniformSource::Block {
+                        block,
+                        member,
+                        path,
+                    },
+                    module,
+                )) = src
+                {
+                    let storage = self.block_member_storage(module, *block, *member, path);
                     self.uniforms.push(program::ActiveUniform {
                         name: u.name.clone(),
                         ty: u.ty,
                         size: u.size,
-                        storage: program::UniformStorage::Block,
+                        storage,
                     });
                 }
                 continue;
@@ -419,6 +428,41 @@ impl<'m> ProgramPlanner<'m> {
         self.fplan.outputs = program.fragment_outputs.clone();
     }
 
+    /// Where a leaf of member `member` of block `block` of `module` lies in the block
+    /// (std140).
+    fn block_member_storage(
+        &self,
+        module: &hir::Module,
+        block: usize,
+        member: usize,
+        path: &[PathStep],
+    ) -> program::UniformStorage {
+        let b = &module.blocks[block];
+        let mut offset = 0u32;
+        for (i, (_, ty, _, _)) in b.members.iter().enumerate() {
+            let (size, align) = layout::std140(ty, &module.structs);
+            offset = offset.div_ceil(align) * align;
+            if i == member {
+                break;
+            }
+            offset += size;
+        }
+        let (_, ty, _, row_major) = &b.members[member];
+        let (leaf, array_stride, matrix_stride) = layout::leaf_layout(ty, path, &module.structs);
+        let index = self
+            .blocks
+            .iter()
+            .position(|x| *x.name == *b.name)
+            .unwrap_or(0);
+        program::UniformStorage::Block {
+            block: index as u32,
+            offset: offset + leaf,
+            array_stride,
+            matrix_stride,
+            row_major: *row_major,
+        }
+    }
+
     /// Uniform blocks: vertex ones first, then fragment-only ones, by name.
     fn uniform_blocks(&mut self) {
         let mut block_names: Vec<String> = Vec::new();
@@ -435,12 +479,19 @@ impl<'m> ProgramPlanner<'m> {
                         self.blocks.push(program::UniformBlockBinding {
                             name: b.name.to_string(),
                             size: size.div_ceil(16) * 16,
+                            vertex: false,
+                            fragment: false,
                         });
                         block_names.len() - 1
                     }
                 };
                 if b.used {
                     plan.blocks.push((bi, 1 + pos as u32));
+                    if module.stage == Stage::Vertex {
+                        self.blocks[pos].vertex = true;
+                    } else {
+                        self.blocks[pos].fragment = true;
+                    }
                 }
             }
         }
