@@ -52,6 +52,7 @@ fn layout() -> ProgramLayout {
         blocks: Vec::new(),
         fragment_outputs: vec![(0, GlType::FLOAT_VEC4)],
         captured: Vec::new(),
+        fragment_output_names: Vec::new(),
     }
 }
 

@@ -102,7 +102,9 @@ pub use objects::{
     TransformFeedback, UniformLocation, VertexArray,
 };
 pub use program::ActiveInfo;
-pub use query::{Parameter, SHADING_LANGUAGE_VERSION, SUBPIXEL_BITS, VENDOR, VERSION};
+pub use query::{
+    Parameter, ShaderPrecisionFormat, SHADING_LANGUAGE_VERSION, SUBPIXEL_BITS, VENDOR, VERSION,
+};
 pub use validation::{SourceLocation, ValidationWarning, MAX_VALIDATION_WARNINGS};
 pub use wgpu;
 

@@ -383,6 +383,58 @@ impl Context {
         self.set_generic(index, GenericAttrib::Float(v), "vertexAttribfv");
     }
 
+    /// `vertexAttrib1fv`: the first value of `values` (`INVALID_VALUE` when empty).
+    pub fn vertex_attrib1fv(&mut self, index: u32, values: &[f32]) {
+        self.vertex_attrib_nfv(index, values, 1, "vertexAttrib1fv");
+    }
+
+    /// `vertexAttrib2fv`: the first two values (`INVALID_VALUE` when fewer).
+    pub fn vertex_attrib2fv(&mut self, index: u32, values: &[f32]) {
+        self.vertex_attrib_nfv(index, values, 2, "vertexAttrib2fv");
+    }
+
+    /// `vertexAttrib3fv`: the first three values (`INVALID_VALUE` when fewer).
+    pub fn vertex_attrib3fv(&mut self, index: u32, values: &[f32]) {
+        self.vertex_attrib_nfv(index, values, 3, "vertexAttrib3fv");
+    }
+
+    fn vertex_attrib_nfv(&mut self, index: u32, values: &[f32], n: usize, function: &str) {
+        if values.len() < n {
+            return self.error(
+                gl::INVALID_VALUE,
+                function,
+                format_args!("{n} values needed"),
+            );
+        }
+        let mut v = [0.0, 0.0, 0.0, 1.0];
+        v[..n].copy_from_slice(&values[..n]);
+        self.set_generic(index, GenericAttrib::Float(v), function);
+    }
+
+    /// `vertexAttribI4iv`: four signed integers (`INVALID_VALUE` when fewer).
+    pub fn vertex_attrib_i4iv(&mut self, index: u32, values: &[i32]) {
+        match values.get(..4) {
+            Some(v) => self.set_generic(
+                index,
+                GenericAttrib::Int([v[0], v[1], v[2], v[3]]),
+                "vertexAttribI4iv",
+            ),
+            None => self.error(gl::INVALID_VALUE, "vertexAttribI4iv", "4 values needed"),
+        }
+    }
+
+    /// `vertexAttribI4uiv`: four unsigned integers (`INVALID_VALUE` when fewer).
+    pub fn vertex_attrib_i4uiv(&mut self, index: u32, values: &[u32]) {
+        match values.get(..4) {
+            Some(v) => self.set_generic(
+                index,
+                GenericAttrib::Uint([v[0], v[1], v[2], v[3]]),
+                "vertexAttribI4uiv",
+            ),
+            None => self.error(gl::INVALID_VALUE, "vertexAttribI4uiv", "4 values needed"),
+        }
+    }
+
     /// Sets the generic value of attribute `index` to four floats (`vertexAttrib4fv`).
     pub fn vertex_attrib4fv(&mut self, index: u32, values: [f32; 4]) {
         self.set_generic(index, GenericAttrib::Float(values), "vertexAttrib4fv");

@@ -50,14 +50,16 @@ impl Default for ContextAttributes {
     }
 }
 
-/// The colour format of the default framebuffer: 8-bit RGBA, linear, as WebGL's drawing
-/// buffer.
+/// The colour format of the default framebuffer unless `drawing_buffer_storage` changes it:
+/// 8-bit RGBA, linear, as WebGL's drawing buffer.
 pub const COLOR_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Rgba8Unorm;
 
 /// The offscreen default framebuffer.
 pub(crate) struct DefaultFramebuffer {
     pub(crate) width: u32,
     pub(crate) height: u32,
+    /// The colour format (`RGBA8`, or what `drawing_buffer_storage` chose).
+    pub(crate) format: crate::texture::InternalFormat,
     pub(crate) attributes: ContextAttributes,
     /// The single-sample colour image: what reads see (the resolve target with antialias).
     pub(crate) color: wgpu::Texture,
@@ -93,6 +95,18 @@ impl DefaultFramebuffer {
     }
 
     pub(crate) fn new(gpu: &Gpu, width: u32, height: u32, attributes: ContextAttributes) -> Self {
+        let rgba8 = crate::texture::internal_format(gl::RGBA8).expect("a supported format");
+        Self::with_format(gpu, [width, height], attributes, rgba8)
+    }
+
+    /// A default framebuffer of `size` whose colour has `format`.
+    pub(crate) fn with_format(
+        gpu: &Gpu,
+        [width, height]: [u32; 2],
+        attributes: ContextAttributes,
+        format: crate::texture::InternalFormat,
+    ) -> Self {
+        let color_format = format.gpu_format();
         let samples = if attributes.antialias { 4 } else { 1 };
         let size = wgpu::Extent3d {
             width,
@@ -115,7 +129,7 @@ impl DefaultFramebuffer {
         };
         let (color, color_view) = texture(
             "essl-gl default colour",
-            COLOR_FORMAT,
+            color_format,
             1,
             wgpu::TextureUsages::RENDER_ATTACHMENT
                 | wgpu::TextureUsages::COPY_SRC
@@ -125,7 +139,7 @@ impl DefaultFramebuffer {
         let msaa = attributes.antialias.then(|| {
             texture(
                 "essl-gl default colour (multisampled)",
-                COLOR_FORMAT,
+                color_format,
                 samples,
                 wgpu::TextureUsages::RENDER_ATTACHMENT | wgpu::TextureUsages::TEXTURE_BINDING,
             )
@@ -141,6 +155,7 @@ impl DefaultFramebuffer {
         DefaultFramebuffer {
             width,
             height,
+            format,
             attributes,
             color,
             color_view,
@@ -172,5 +187,32 @@ impl Context {
         };
         self.frame.clear_pass(&self.gpu, &target, &clears);
         self.frame.end_pass();
+    }
+}
+
+impl Context {
+    /// Gives the drawing buffer new storage (`drawingBufferStorage`): `RGBA8`,
+    /// `SRGB8_ALPHA8` or `RGBA16F` (`INVALID_ENUM` otherwise), `width` × `height` within
+    /// `MAX_RENDERBUFFER_SIZE` (`INVALID_VALUE`). Its contents start cleared; the viewport is
+    /// not changed.
+    pub fn drawing_buffer_storage(&mut self, sized_format: u32, width: u32, height: u32) {
+        const F: &str = "drawingBufferStorage";
+        if !matches!(sized_format, gl::RGBA8 | gl::SRGB8_ALPHA8 | gl::RGBA16F) {
+            return self.error(
+                gl::INVALID_ENUM,
+                F,
+                format_args!("format 0x{sized_format:04X}"),
+            );
+        }
+        let max = self.gpu.limits.max_texture_dimension_2d;
+        if width == 0 || height == 0 || width > max || height > max {
+            return self.error(gl::INVALID_VALUE, F, "size out of range");
+        }
+        let format = crate::texture::internal_format(sized_format).expect("a supported format");
+        self.frame.end_pass();
+        let (attributes, draw, read) =
+            (self.fb.attributes, self.fb.draw_buffer, self.fb.read_buffer);
+        self.fb = DefaultFramebuffer::with_format(&self.gpu, [width, height], attributes, format);
+        (self.fb.draw_buffer, self.fb.read_buffer) = (draw, read);
     }
 }

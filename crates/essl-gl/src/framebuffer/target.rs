@@ -296,7 +296,7 @@ impl Context {
     /// The default framebuffer as a read source (its resolved colour image).
     pub(crate) fn default_read_surface(&self) -> ReadSurface {
         let fb = &self.fb;
-        let rgba8 = internal_format(gl::RGBA8).expect("a supported format");
+        let rgba8 = fb.format;
         let image = |texture: &wgpu::Texture, view: &wgpu::TextureView, format| SurfaceImage {
             texture: texture.clone(),
             mip: 0,
@@ -336,9 +336,8 @@ impl Context {
         let [draw, _] = self.bindings.framebuffers();
         let Some(fb) = draw.and_then(|id| self.objects.framebuffers.get_any(id)) else {
             let fb = &self.fb;
-            let rgba8 = internal_format(gl::RGBA8).expect("a supported format");
             return DrawFormats {
-                colors: vec![(fb.draw_buffer == gl::BACK).then_some(rgba8)],
+                colors: vec![(fb.draw_buffer == gl::BACK).then_some(fb.format)],
                 stencil: fb.attributes.stencil,
                 size: [fb.width, fb.height],
             };

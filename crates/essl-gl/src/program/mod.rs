@@ -12,6 +12,7 @@
 //! add methods to [`Context`]: its `impl` is spread over these files on purpose, one file per
 //! group of GL calls.
 
+mod blocks;
 mod feedback;
 mod interface;
 mod introspect;

@@ -119,6 +119,11 @@ impl Context {
         self.objects.shaders.get_any(id).map(|s| s.ty)
     }
 
+    /// Whether `shader` names a live shader (`isShader`).
+    pub fn is_shader(&self, shader: Shader) -> bool {
+        shader.ctx == self.id && self.objects.shaders.is_live(shader.id)
+    }
+
     /// Deletes a shader (`deleteShader`); a shader attached to a program lives on until
     /// detached.
     pub fn delete_shader(&mut self, shader: Shader) {

@@ -102,7 +102,7 @@ pub(super) fn call_matches(call: Call, ty: GlType) -> bool {
 pub(crate) fn find_uniform(layout: &ProgramLayout, name: &str) -> Option<(usize, u32)> {
     for (i, u) in layout.uniforms.iter().enumerate() {
         // Members of uniform blocks have no location in WebGL.
-        if u.storage == UniformStorage::Block {
+        if matches!(u.storage, UniformStorage::Block { .. }) {
             continue;
         }
         let element = if u.name == name {
@@ -245,7 +245,7 @@ impl Context {
         }
         let linked = self.objects.linked_mut(current).expect("checked");
         match storage {
-            UniformStorage::Block => {}
+            UniformStorage::Block { .. } => {}
             UniformStorage::Sampler { first_slot } => {
                 let Values::I(v) = values else { return };
                 for (k, e) in (loc.element as usize..last).enumerate() {

@@ -5,7 +5,10 @@
 //! [`Parameter`] is that value in Rust. An unknown `pname` records `INVALID_ENUM` and returns
 //! `None`, as WebGL returns `null`.
 
+mod objects;
 mod parameter;
+
+pub use objects::ShaderPrecisionFormat;
 
 use crate::context::Context;
 use crate::gl;

@@ -206,7 +206,7 @@ impl Context {
             gl::SAMPLE_BUFFERS => Int((samples > 0) as i64),
             gl::IMPLEMENTATION_COLOR_READ_FORMAT | gl::IMPLEMENTATION_COLOR_READ_TYPE => {
                 let read_format = match read.and_then(|id| self.objects.framebuffers.get_any(id)) {
-                    None => crate::texture::internal_format(gl::RGBA8).ok(),
+                    None => Some(self.fb.format),
                     Some(f) => f
                         .attachment(f.read_buffer)
                         .and_then(|a| self.image_info(a))

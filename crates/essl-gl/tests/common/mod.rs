@@ -145,6 +145,7 @@ impl Layout {
             blocks: Vec::new(),
             fragment_outputs: vec![(0, GlType::FLOAT_VEC4)],
             captured: Vec::new(),
+            fragment_output_names: Vec::new(),
         }
     }
 }
