@@ -64,6 +64,7 @@
 
 pub mod gl;
 
+mod array;
 mod bindings;
 mod blit;
 mod buffer;
@@ -92,6 +93,7 @@ mod transform_feedback;
 mod validation;
 mod vertex_array;
 
+pub use array::{ArrayElement, ArrayType};
 pub use bytemuck;
 pub use context::{Context, ProgramFilter, MAX_TEXTURE_UNITS, MAX_VERTEX_ATTRIBS};
 pub use error::{error_name, ContextError};

@@ -371,18 +371,6 @@ impl Context {
         self.set_generic(index, GenericAttrib::Float([x, y, z, w]), "vertexAttrib4f");
     }
 
-    /// Sets the generic value of attribute `index` from 1 to 4 floats, filling the rest with
-    /// `(0, 0, 0, 1)` (`vertexAttrib[1234]fv`); an empty slice → `INVALID_VALUE`.
-    pub fn vertex_attrib_fv(&mut self, index: u32, values: &[f32]) {
-        if values.is_empty() {
-            return self.error(gl::INVALID_VALUE, "vertexAttribfv", "no values");
-        }
-        let mut v = [0.0, 0.0, 0.0, 1.0];
-        let n = values.len().min(4);
-        v[..n].copy_from_slice(&values[..n]);
-        self.set_generic(index, GenericAttrib::Float(v), "vertexAttribfv");
-    }
-
     /// `vertexAttrib1fv`: the first value of `values` (`INVALID_VALUE` when empty).
     pub fn vertex_attrib1fv(&mut self, index: u32, values: &[f32]) {
         self.vertex_attrib_nfv(index, values, 1, "vertexAttrib1fv");
@@ -435,9 +423,9 @@ impl Context {
         }
     }
 
-    /// Sets the generic value of attribute `index` to four floats (`vertexAttrib4fv`).
-    pub fn vertex_attrib4fv(&mut self, index: u32, values: [f32; 4]) {
-        self.set_generic(index, GenericAttrib::Float(values), "vertexAttrib4fv");
+    /// `vertexAttrib4fv`: the first four values (`INVALID_VALUE` when fewer).
+    pub fn vertex_attrib4fv(&mut self, index: u32, values: &[f32]) {
+        self.vertex_attrib_nfv(index, values, 4, "vertexAttrib4fv");
     }
 
     /// Sets the generic value of an `ivec4` attribute (`vertexAttribI4i`).

@@ -554,7 +554,7 @@ fn texture_errors_change_nothing() {
         0,
         gl::RGBA,
         gl::UNSIGNED_BYTE,
-        None,
+        None::<&[u8]>,
     );
     assert_eq!(ctx.get_error(), gl::INVALID_VALUE);
     ctx.bind_texture(gl::TEXTURE_2D, None);
@@ -567,7 +567,7 @@ fn texture_errors_change_nothing() {
         0,
         gl::RGBA,
         gl::UNSIGNED_BYTE,
-        None,
+        None::<&[u8]>,
     );
     assert_eq!(ctx.get_error(), gl::INVALID_OPERATION);
     ctx.generate_mipmap(gl::TEXTURE_2D);

@@ -29,7 +29,7 @@ fn rgba8_texture(ctx: &mut Context, w: i32, h: i32) -> Texture {
         0,
         gl::RGBA,
         gl::UNSIGNED_BYTE,
-        None,
+        None::<&[u8]>,
     );
     ctx.tex_parameteri(gl::TEXTURE_2D, gl::TEXTURE_MIN_FILTER, gl::NEAREST as i32);
     ctx.tex_parameteri(gl::TEXTURE_2D, gl::TEXTURE_MAG_FILTER, gl::NEAREST as i32);
@@ -592,7 +592,7 @@ fn a_depth_texture_drawn_from_the_light_is_compared_by_a_shadow_sampler() {
         0,
         gl::DEPTH_COMPONENT,
         gl::UNSIGNED_INT,
-        None,
+        None::<&[u8]>,
     );
     ctx.tex_parameteri(gl::TEXTURE_2D, gl::TEXTURE_MIN_FILTER, gl::NEAREST as i32);
     ctx.tex_parameteri(gl::TEXTURE_2D, gl::TEXTURE_MAG_FILTER, gl::NEAREST as i32);

@@ -7,6 +7,7 @@ mod convert;
 
 pub(crate) use convert::native_pair;
 
+use crate::array::{array_mismatch, ArrayElement, ArrayType};
 use crate::context::Context;
 use crate::framebuffer::SurfaceImage;
 use crate::gl;
@@ -33,10 +34,14 @@ struct ReadRequest {
     height: i32,
     format: u32,
     ty: u32,
+    /// The typed array read into (`None`: a `PIXEL_PACK_BUFFER`).
+    array: Option<ArrayType>,
 }
 
 impl Context {
-    /// Reads a rectangle of the read framebuffer's read buffer into `dst` (`readPixels`):
+    /// Reads a rectangle of the read framebuffer's read buffer into `dst` (`readPixels`), a
+    /// typed array whose element type must suit `ty` (`u8` for `UNSIGNED_BYTE`, `f32` for
+    /// `FLOAT`, `u16` for the packed 16-bit types, …; another → `INVALID_OPERATION`):
     /// `x`, `y` from the bottom-left corner, rows written bottom first, laid out by
     /// `PACK_ALIGNMENT`, `PACK_ROW_LENGTH`, `PACK_SKIP_ROWS` and `PACK_SKIP_PIXELS`.
     ///
@@ -50,7 +55,7 @@ impl Context {
     /// `INVALID_FRAMEBUFFER_OPERATION`. Pixels outside the framebuffer are left untouched.
     /// Submits the recorded commands and waits for them.
     #[allow(clippy::too_many_arguments)] // WebGL2's own argument list
-    pub fn read_pixels(
+    pub fn read_pixels<T: ArrayElement>(
         &mut self,
         x: i32,
         y: i32,
@@ -58,7 +63,7 @@ impl Context {
         height: i32,
         format: u32,
         ty: u32,
-        dst: &mut [u8],
+        dst: &mut [T],
     ) {
         const F: &str = "readPixels";
         if self.bindings.buffer(gl::PIXEL_PACK_BUFFER).is_some() {
@@ -75,8 +80,9 @@ impl Context {
             height,
             format,
             ty,
+            array: Some(T::TYPE),
         };
-        self.read_into(&request, dst, F);
+        self.read_into(&request, bytemuck::cast_slice_mut(dst), F);
     }
 
     /// `readPixels` into the bound `PIXEL_PACK_BUFFER` at byte `offset` (WebGL2's overload
@@ -110,6 +116,7 @@ impl Context {
             height,
             format,
             ty,
+            array: None,
         };
         let written = self.read_into(&request, &mut data[start..], F);
         let b = self.objects.buffers.get_any_mut(id).expect("bound");
@@ -132,6 +139,10 @@ impl Context {
                 f,
                 format_args!("format 0x{:04X} / type 0x{:04X}", r.format, r.ty),
             );
+            return None;
+        }
+        if let Some(why) = r.array.and_then(|a| array_mismatch(r.ty, a)) {
+            self.error(gl::INVALID_OPERATION, f, why);
             return None;
         }
         if !self.require_complete(false, f) {
@@ -237,6 +248,7 @@ impl Context {
             height: height as i32,
             format: gl::RGBA,
             ty: gl::UNSIGNED_BYTE,
+            array: Some(ArrayType::Uint8),
         };
         if self.bindings.buffer(gl::PIXEL_PACK_BUFFER).is_none() {
             self.read_into(&request, &mut out, "readPixels");

@@ -62,6 +62,7 @@ impl Context {
             format,
             ty,
             pixels: Some(&src),
+            array: None,
             function: F,
         });
     }
@@ -97,6 +98,7 @@ impl Context {
             format,
             ty,
             pixels: Some(&src),
+            array: None,
             function: F,
         });
     }
@@ -133,6 +135,7 @@ impl Context {
             format,
             ty,
             pixels: &src,
+            array: None,
             function: F,
         });
     }
@@ -168,6 +171,7 @@ impl Context {
             format,
             ty,
             pixels: &src,
+            array: None,
             function: F,
         });
     }

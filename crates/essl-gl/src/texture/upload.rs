@@ -7,6 +7,7 @@ use super::format::{
 use super::image_target;
 use super::object::Level;
 use super::pixels::{convert_pixels, unpack_layout};
+use crate::array::{array_mismatch, ArrayElement, ArrayType};
 use crate::context::Context;
 use crate::gl;
 
@@ -22,6 +23,8 @@ pub(super) struct TexImage<'a> {
     pub(super) format: u32,
     pub(super) ty: u32,
     pub(super) pixels: Option<&'a [u8]>,
+    /// The typed array the pixels came in (`None`: from a `PIXEL_UNPACK_BUFFER`).
+    pub(super) array: Option<ArrayType>,
     pub(super) function: &'static str,
 }
 
@@ -36,6 +39,8 @@ pub(super) struct TexSubImage<'a> {
     pub(super) format: u32,
     pub(super) ty: u32,
     pub(super) pixels: &'a [u8],
+    /// The typed array the pixels came in (`None`: from a `PIXEL_UNPACK_BUFFER`).
+    pub(super) array: Option<ArrayType>,
     pub(super) function: &'static str,
 }
 
@@ -59,7 +64,7 @@ impl Context {
     /// ES 3.0 except `R11F_G11F_B10F`, `RGB9_E5`, `RGB10_A2`, `RGB10_A2UI` (those and depth
     /// formats record `INVALID_ENUM`).
     #[allow(clippy::too_many_arguments)] // WebGL2's own argument list
-    pub fn tex_image_2d(
+    pub fn tex_image_2d<T: ArrayElement>(
         &mut self,
         target: u32,
         level: i32,
@@ -69,7 +74,7 @@ impl Context {
         border: i32,
         format: u32,
         ty: u32,
-        pixels: Option<&[u8]>,
+        pixels: Option<&[T]>,
     ) {
         const F: &str = "texImage2D";
         if self.client_data_refused(F) {
@@ -87,7 +92,8 @@ impl Context {
             border,
             format,
             ty,
-            pixels,
+            pixels: pixels.map(bytemuck::cast_slice),
+            array: Some(T::TYPE),
             function: F,
         });
     }
@@ -95,7 +101,7 @@ impl Context {
     /// Specifies a level of a 3D texture or 2D array texture (`texImage3D`); see
     /// [`Context::tex_image_2d`].
     #[allow(clippy::too_many_arguments)] // WebGL2's own argument list
-    pub fn tex_image_3d(
+    pub fn tex_image_3d<T: ArrayElement>(
         &mut self,
         target: u32,
         level: i32,
@@ -106,7 +112,7 @@ impl Context {
         border: i32,
         format: u32,
         ty: u32,
-        pixels: Option<&[u8]>,
+        pixels: Option<&[T]>,
     ) {
         const F: &str = "texImage3D";
         if self.client_data_refused(F) {
@@ -123,7 +129,8 @@ impl Context {
             border,
             format,
             ty,
-            pixels,
+            pixels: pixels.map(bytemuck::cast_slice),
+            array: Some(T::TYPE),
             function: F,
         });
     }
@@ -276,6 +283,7 @@ impl Context {
             format,
             ty,
             pixels,
+            array,
             function,
         } = image;
         let (bind, face) = image_target(target).expect("checked by the caller");
@@ -311,6 +319,9 @@ impl Context {
         };
         if !self.check_format(&f, format, ty, function) {
             return;
+        }
+        if let Some(why) = pixels.and(array).and_then(|a| array_mismatch(ty, a)) {
+            return self.error(gl::INVALID_OPERATION, function, why);
         }
         let Some(id) = self.bound_texture(bind, function) else {
             return;
@@ -353,7 +364,7 @@ impl Context {
     /// The region must lie in the level (`INVALID_VALUE`) and `(format, ty)` must suit the
     /// level's internal format (`INVALID_OPERATION`).
     #[allow(clippy::too_many_arguments)] // WebGL2's own argument list
-    pub fn tex_sub_image_2d(
+    pub fn tex_sub_image_2d<T: ArrayElement>(
         &mut self,
         target: u32,
         level: i32,
@@ -363,7 +374,7 @@ impl Context {
         height: i32,
         format: u32,
         ty: u32,
-        pixels: &[u8],
+        pixels: &[T],
     ) {
         const F: &str = "texSubImage2D";
         if self.client_data_refused(F) {
@@ -380,14 +391,15 @@ impl Context {
             size: [width, height, 1],
             format,
             ty,
-            pixels,
+            pixels: bytemuck::cast_slice(pixels),
+            array: Some(T::TYPE),
             function: F,
         });
     }
 
     /// Replaces a box of a level of a 3D or 2D array texture (`texSubImage3D`).
     #[allow(clippy::too_many_arguments)] // WebGL2's own argument list
-    pub fn tex_sub_image_3d(
+    pub fn tex_sub_image_3d<T: ArrayElement>(
         &mut self,
         target: u32,
         level: i32,
@@ -399,7 +411,7 @@ impl Context {
         depth: i32,
         format: u32,
         ty: u32,
-        pixels: &[u8],
+        pixels: &[T],
     ) {
         const F: &str = "texSubImage3D";
         if self.client_data_refused(F) {
@@ -415,7 +427,8 @@ impl Context {
             size: [width, height, depth],
             format,
             ty,
-            pixels,
+            pixels: bytemuck::cast_slice(pixels),
+            array: Some(T::TYPE),
             function: F,
         });
     }
@@ -430,6 +443,7 @@ impl Context {
             format,
             ty,
             pixels,
+            array,
             function,
         } = image;
         let (bind, face) = image_target(target).expect("checked by the caller");
@@ -457,6 +471,9 @@ impl Context {
         }
         if !self.check_format(&l.format, format, ty, function) {
             return;
+        }
+        if let Some(why) = array.and_then(|a| array_mismatch(ty, a)) {
+            return self.error(gl::INVALID_OPERATION, function, why);
         }
         let (w, h, d) = (size[0] as u32, size[1] as u32, size[2] as u32);
         let three_d = matches!(bind, gl::TEXTURE_3D | gl::TEXTURE_2D_ARRAY);
