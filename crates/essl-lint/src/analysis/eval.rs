@@ -107,7 +107,9 @@ impl Analysis {
             },
             E::Load { pointer } => match self.functions[id].places[pointer.index()].clone() {
                 Some(p) => {
-                    let v = self.load(module, &p, ty);
+                    let v = self
+                        .current_value(&p)
+                        .unwrap_or_else(|| self.load(module, &p, ty));
                     if self.refine.is_empty() {
                         v
                     } else {

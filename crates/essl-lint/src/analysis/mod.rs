@@ -19,6 +19,7 @@
 //! - `statements`: the walk over a function's statements (emits, stores, calls, returns, the
 //!   `if` conditions that refine what the branches load);
 //! - `memory`: the cells variables hold, and the shapes of external and unknown values;
+//! - `flow`: what a variable holds at each point of the walk (strong updates);
 //! - `conditions`: what a comparison says about the values it compares;
 //! - `eval`: the value of each expression;
 //! - `same`: whether two expressions certainly have the same value;
@@ -28,6 +29,7 @@
 mod binary;
 mod conditions;
 mod eval;
+mod flow;
 mod math;
 mod memory;
 mod same;
@@ -128,6 +130,10 @@ pub struct Analysis {
     emit_counter: u32,
     /// What the enclosing `if` conditions say about scalar places, where they hold.
     refine: Vec<(Place, Refinement)>,
+    /// What the walk knows variables hold at the current statement ([`flow`]).
+    current: flow::Current,
+    /// The private globals each function may write.
+    global_writes: Vec<rustc_hash::FxHashSet<usize>>,
 }
 
 /// The function with index `id` (module functions first, then entry points).
@@ -192,6 +198,8 @@ impl Analysis {
             widening: false,
             emit_counter: 0,
             refine: Vec::new(),
+            current: flow::Current::default(),
+            global_writes: flow::global_writes(module),
         };
         for id in 0..count {
             let f = function(module, id);

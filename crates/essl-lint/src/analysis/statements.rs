@@ -7,6 +7,7 @@ use rustc_hash::FxHashMap as HashMap;
 
 use naga::{Block, Expression as E, Function, Handle, Statement};
 
+use super::flow;
 use super::memory::pointee;
 use super::{function, function_info, Analysis, Place, Root, Site};
 use crate::value::Val;
@@ -39,17 +40,16 @@ impl Analysis {
                 self.eval(s, h);
             }
         }
+        self.current.clear();
         for (lh, l) in f.local_variables.iter() {
             if let Some(init) = l.init {
                 let v = self.functions[id].values[init.index()].clone();
-                self.store(
-                    module,
-                    &Place {
-                        root: Root::Local(id, lh.index()),
-                        path: Vec::new(),
-                    },
-                    &v,
-                );
+                let place = Place {
+                    root: Root::Local(id, lh.index()),
+                    path: Vec::new(),
+                };
+                self.store(module, &place, &v);
+                self.assign(module, &place, &v);
             }
         }
         self.block(s, &f.body);
@@ -75,33 +75,51 @@ impl Analysis {
                 }
                 Statement::Block(b) => self.block(s, b),
                 Statement::Switch { cases, .. } => {
+                    let bodies: Vec<&Block> = cases.iter().map(|c| &c.body).collect();
+                    self.forget_written(s.f, s.id, &bodies);
+                    let entry = self.current.clone();
                     for c in cases {
+                        self.current = entry.clone();
                         self.block(s, &c.body);
                     }
+                    self.current = entry;
                 }
                 Statement::Loop {
                     body, continuing, ..
                 } => {
+                    self.forget_written(s.f, s.id, &[body, continuing]);
+                    let entry = self.current.clone();
                     self.block(s, body);
+                    self.current = entry.clone();
                     self.block(s, continuing);
+                    self.current = entry;
                 }
                 Statement::Return { value: Some(v) } => {
                     let val = self.functions[s.id].values[v.index()].clone();
                     let mut changed = false;
                     Self::join_into(&mut self.results[s.id], &val, self.widening, &mut changed);
                     self.changed |= changed;
+                    break;
                 }
                 Statement::Store { pointer, value } => {
                     if let Some(p) = self.functions[s.id].places[pointer.index()].clone() {
                         let v = self.functions[s.id].values[value.index()].clone();
                         self.store(s.module, &p, &v);
+                        self.assign(s.module, &p, &v);
                     }
                 }
                 Statement::Call {
                     function: callee,
                     arguments,
                     result,
-                } => self.call(s, callee.index(), arguments, *result),
+                } => {
+                    self.call(s, callee.index(), arguments, *result);
+                    self.forget_call(s.f, s.id, callee.index(), arguments);
+                }
+                Statement::Return { .. }
+                | Statement::Kill
+                | Statement::Break
+                | Statement::Continue => break,
                 _ => {}
             }
         }
@@ -122,12 +140,23 @@ impl Analysis {
         fn inside(blk: &Block) -> Vec<&Statement> {
             blk.iter().collect()
         }
+        let before = self.current.clone();
+        let mut after: Option<flow::Current> = None;
         for (blk, polarity) in [(accept, true), (reject, false)] {
+            self.current = before.clone();
             let rs = self.refinements(s, condition, polarity, &[&inside(blk)]);
             self.refine.extend(rs);
             self.block(s, blk);
             self.refine.truncate(d);
+            if !diverges(blk) {
+                let end = std::mem::take(&mut self.current);
+                after = Some(match after {
+                    None => end,
+                    Some(a) => flow::merge(a, &end),
+                });
+            }
         }
+        self.current = after.unwrap_or(before);
         let (ad, rd) = (diverges(accept), diverges(reject));
         if ad != rd {
             let other = if ad { reject } else { accept };
