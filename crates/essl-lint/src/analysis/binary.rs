@@ -159,7 +159,15 @@ impl Analysis {
             }
         }
         let comps = a.zip(b, Interval::sub);
-        let mut out = Num::from_components(&comps, deps.with(Facts::DIFF));
+        // `1.0 - x` of an `x` in [-1, 1] whenever the external values are (a weight, a
+        // colour channel, `metalness`): not negative for valid external values either, and
+        // in [0, 1] when `x` is also not negative.
+        let from_one = a.comps().iter().all(|c| c.lo >= 1.0) && b.facts.has(Facts::UNIT);
+        let facts = deps.with(Facts::DIFF).set(Facts::NN, from_one).set(
+            Facts::UNIT,
+            from_one && b.facts.has(Facts::NN) && a.comps().iter().all(|c| c.hi <= 1.0),
+        );
+        let mut out = Num::from_components(&comps, facts);
         if !o.mixed() && o.vector_result() {
             out.norm = out.norm.meet(triangle(a.norm, b.norm));
         }
@@ -286,6 +294,7 @@ fn matrix_times_vector(m: &[Val], v: &Num, deps: Facts) -> Option<Val> {
         .collect();
     let invertible = cols.iter().all(|c| c.facts.has(Facts::NZ));
     let nz = invertible && v.facts.has(Facts::NZ) && cols.len() == rows;
+    let nn = non_negative_entries(&cols) && v.facts.has(Facts::NN);
     // A direction (w = 0) keeps a non-zero xyz through an invertible (affine or
     // projective) transform.
     let nz3 = invertible
@@ -295,8 +304,16 @@ fn matrix_times_vector(m: &[Val], v: &Num, deps: Facts) -> Option<Val> {
         && v.facts.has(Facts::NZ3);
     Some(Val::Num(Num::from_components(
         &comps,
-        deps.set(Facts::NZ, nz).set(Facts::NZ3, nz3),
+        deps.set(Facts::NZ, nz)
+            .set(Facts::NZ3, nz3)
+            .set(Facts::NN, nn),
     )))
+}
+
+/// Whether every entry of a matrix is known to be non-negative by its interval (a colour
+/// matrix, a constant): the product with a non-negative vector is then non-negative.
+fn non_negative_entries(cols: &[Num]) -> bool {
+    cols.iter().all(|c| c.comps().iter().all(|x| x.lo >= 0.0))
 }
 
 /// Row vector times matrix (`None`: a matrix whose columns are not numbers).
@@ -314,9 +331,11 @@ fn vector_times_matrix(v: &Num, m: &[Val], deps: Facts) -> Option<Val> {
         })
         .collect();
     let invertible = cols.iter().all(|c| c.facts.has(Facts::NZ));
+    let nn = non_negative_entries(&cols) && v.facts.has(Facts::NN);
     Some(Val::Num(Num::from_components(
         &comps,
-        deps.set(Facts::NZ, invertible && v.facts.has(Facts::NZ)),
+        deps.set(Facts::NZ, invertible && v.facts.has(Facts::NZ))
+            .set(Facts::NN, nn),
     )))
 }
 

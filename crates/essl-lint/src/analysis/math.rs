@@ -298,15 +298,28 @@ impl Call<'_> {
         let (x, fx, deps) = (self.x, self.x.facts, self.deps);
         let nums = &self.nums;
         match self.fun {
-            Mf::Exp | Mf::Exp2 => self.unary(
-                if self.fun == Mf::Exp {
+            Mf::Exp | Mf::Exp2 => {
+                let g = if self.fun == Mf::Exp {
                     Interval::exp
                 } else {
                     Interval::exp2
-                },
-                true,
-                Facts::NN.with(Facts::POS).with(Facts::NZ),
-            ),
+                };
+                // The slack is for the GPU's approximation; every GPU's exponential is exact
+                // at 0 and increasing, so that of a value ≤ 0 stays ≤ 1 (`1.0 - exp(-k * d)`
+                // is not negative).
+                let comps = x.map(|c| {
+                    let r = g(c).slack(EPS);
+                    if c.hi <= 0.0 {
+                        Interval::new(r.lo, r.hi.min(1.0))
+                    } else {
+                        r
+                    }
+                });
+                Val::Num(Num::from_components(
+                    &comps,
+                    Facts::NN.with(Facts::POS).with(Facts::NZ).with(deps),
+                ))
+            }
             Mf::Log | Mf::Log2 => self.unary(
                 if self.fun == Mf::Log {
                     Interval::log
@@ -391,7 +404,11 @@ impl Call<'_> {
                         Interval::mix(pick(&x), pick(&b), pick(&t))
                     })
                     .collect();
-                let convex = t.comps().iter().all(|c| c.within(Interval::UNIT));
+                // A weight in [0, 1] but for rounding (`0.5 * dot(n, l) + 0.5`) still mixes.
+                let convex = t.facts.has(Facts::NN.with(Facts::UNIT))
+                    || t.comps()
+                        .iter()
+                        .all(|c| c.within(Interval::new(-16.0 * EPS, 1.0 + 16.0 * EPS)));
                 let fb = b.facts;
                 let facts = Facts::NONE
                     .set(Facts::NN, convex && fx.has(Facts::NN) && fb.has(Facts::NN))
@@ -437,7 +454,19 @@ impl Call<'_> {
                 let by_comps = (0..x.n as usize).fold(Interval::point(0.0), |s, i| {
                     s.add(x.c[i].mul(y.c[i.min(y.n as usize - 1)]))
                 });
-                let m = x.norm.hi * y.norm.hi;
+                // A uniform or input vector dotted with a unit vector is taken to be a
+                // direction, as valid as the unit vector (`dot(normal, u_lightDirection)`):
+                // one of another length is the runtime check's business.
+                let unit = |n: &Num| {
+                    n.norm
+                        .within(Interval::new(1.0 - 4.0 * EPS, 1.0 + 4.0 * EPS))
+                };
+                let direction = |n: &Num| n.n > 1 && n.facts.has(Facts::EXT);
+                let m = if (unit(&x) && direction(&y)) || (unit(&y) && direction(&x)) {
+                    1.0
+                } else {
+                    x.norm.hi * y.norm.hi
+                };
                 let by_norm = Interval::new(-m, m).slack(slack);
                 let r = by_comps.meet(by_norm);
                 Val::Num(Num::scalar(if r.is_empty() { by_comps } else { r }, deps))
