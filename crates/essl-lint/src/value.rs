@@ -35,8 +35,11 @@ impl Facts {
     /// The first three components are not all zero (as [`Facts::NZ`]): what `.xyz` of a
     /// transformed direction `M * vec4(d, 0.0)` keeps.
     pub const NZ3: Facts = Facts(64);
+    /// Not positive (every component) whenever every external value is non-negative:
+    /// `-x`, `-k * d` (what `exp` turns into a value in (0, 1]).
+    pub const NP: Facts = Facts(2048);
     /// The facts that are intersected on joins.
-    pub const ALL_AND: Facts = Facts(127);
+    pub const ALL_AND: Facts = Facts(127 | 2048);
 
     /// May be zero because it is a cross product (of vectors that may be parallel).
     pub const CROSS: Facts = Facts(128);
@@ -224,6 +227,9 @@ impl Num {
         }
         if comps.iter().all(|c| c.lo > 0.0) {
             self.facts = self.facts.with(Facts::POS).with(Facts::NN);
+        }
+        if comps.iter().all(|c| c.hi <= 0.0) {
+            self.facts = self.facts.with(Facts::NP);
         }
         if self.norm.lo > 0.0 || comps.iter().any(|c| !c.contains(0.0)) {
             self.facts = self.facts.with(Facts::NZ).without(Facts::CROSS);

@@ -137,7 +137,7 @@ impl Analysis {
     /// An arithmetic operator on scalars and vectors.
     fn num_binary(&self, s: Site, o: &Operands) -> Num {
         match o.op {
-            Bo::Add => add(o),
+            Bo::Add => self.interpolation(s, o).unwrap_or_else(|| add(o)),
             Bo::Subtract => self.subtract(s, o),
             Bo::Multiply => self.multiply(s, o),
             Bo::Divide => divide(o),
@@ -174,6 +174,54 @@ impl Analysis {
         out.settle()
     }
 
+    /// `a + (b - a) * t` with `t` in [0, 1]: `mix(a, b, t)` written out (Schlick's
+    /// `F0 + (1.0 - F0) * pow(1.0 - VdotH, 5.0)`), between `a` and `b`.
+    fn interpolation(&self, s: Site, o: &Operands) -> Option<Num> {
+        let f = s.f;
+        for (a, prod) in [(o.l, o.r), (o.r, o.l)] {
+            let E::Binary {
+                op: Bo::Multiply,
+                left,
+                right,
+            } = f.expressions[prod]
+            else {
+                continue;
+            };
+            for (d, t) in [(left, right), (right, left)] {
+                let E::Binary {
+                    op: Bo::Subtract,
+                    left: b,
+                    right: a2,
+                } = f.expressions[d]
+                else {
+                    continue;
+                };
+                let Some(tv) = self.nm(s.id, t) else { continue };
+                let weight = tv.facts.has(Facts::NN.with(Facts::UNIT))
+                    || tv.comps().iter().all(|c| c.within(Interval::UNIT));
+                if !weight || !self.same(f, s.id, a, a2) {
+                    continue;
+                }
+                let (Some(av), Some(bv)) = (self.nm(s.id, a), self.nm(s.id, b)) else {
+                    continue;
+                };
+                let both = |x: Facts| av.facts.has(x) && bv.facts.has(x);
+                let facts = o
+                    .deps
+                    .set(Facts::NN, both(Facts::NN))
+                    .set(Facts::POS, both(Facts::POS))
+                    .set(Facts::UNIT, both(Facts::UNIT));
+                let n = av.n.max(bv.n).max(o.a.n).max(o.b.n);
+                let pick = |v: &Num, i: usize| v.c[i.min(v.n as usize - 1)];
+                let comps: Vec<Interval> = (0..n as usize)
+                    .map(|i| pick(&av, i).hull(pick(&bv, i)))
+                    .collect();
+                return Some(Num::from_components(&comps, facts));
+            }
+        }
+        None
+    }
+
     /// `a * b`: a square when they are the same.
     fn multiply(&self, s: Site, o: &Operands) -> Num {
         let (a, b, deps) = (o.a, o.b, o.deps);
@@ -191,13 +239,15 @@ impl Analysis {
         }
         let mixed = o.mixed();
         let comps = a.zip(b, Interval::mul);
-        let nn = fa.has(Facts::NN) && fb.has(Facts::NN);
+        let nn = fa.has(Facts::NN) && fb.has(Facts::NN) || fa.has(Facts::NP) && fb.has(Facts::NP);
+        let np = fa.has(Facts::NN) && fb.has(Facts::NP) || fa.has(Facts::NP) && fb.has(Facts::NN);
         let pos = fa.has(Facts::POS) && fb.has(Facts::POS);
         let nz = fa.has(Facts::NZ) && fb.has(Facts::NZ) && (mixed || !o.vector_result());
         let unit = fa.has(Facts::UNIT) && fb.has(Facts::UNIT);
         let cross = mixed && (fa.any(Facts::CROSS) || fb.any(Facts::CROSS));
         let facts = deps
             .set(Facts::NN, nn)
+            .set(Facts::NP, np)
             .set(Facts::POS, pos)
             .set(Facts::NZ, nz)
             .set(Facts::UNIT, unit)

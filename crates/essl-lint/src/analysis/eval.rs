@@ -209,14 +209,18 @@ impl Analysis {
     fn unary(&self, s: Site, ty: &TypeInner, op: Uo, expr: Handle<E>) -> Val {
         match (op, self.nm(s.id, expr)) {
             (Uo::Negate, Some(x)) => {
-                let keep = x.facts.only(
-                    Facts::NZ
-                        .with(Facts::NZ3)
-                        .with(Facts::UNIT)
-                        .with(Facts::DIFF)
-                        .with(Facts::EXT)
-                        .with(Facts::ALL_OR),
-                );
+                let keep = x
+                    .facts
+                    .only(
+                        Facts::NZ
+                            .with(Facts::NZ3)
+                            .with(Facts::UNIT)
+                            .with(Facts::DIFF)
+                            .with(Facts::EXT)
+                            .with(Facts::ALL_OR),
+                    )
+                    .set(Facts::NP, x.facts.has(Facts::NN))
+                    .set(Facts::NN, x.facts.has(Facts::NP));
                 let mut r = Num::from_components(&x.map(Interval::neg), keep);
                 r.norm = r.norm.meet(x.norm);
                 Val::Num(r.settle())

@@ -71,6 +71,7 @@ fn root_of(f: &Function, id: usize, mut p: Handle<E>) -> Option<Root> {
         match f.expressions[p] {
             E::LocalVariable(l) => return Some(Root::Local(id, l.index())),
             E::GlobalVariable(g) => return Some(Root::Global(g.index())),
+            E::FunctionArgument(i) => return Some(Root::Arg(id, i as usize)),
             E::Access { base, .. } | E::AccessIndex { base, .. } => p = base,
             _ => return None,
         }
@@ -139,6 +140,24 @@ fn collect_global_writes(
     }
 }
 
+/// Whether a `switch` case can be walked on its own from the state before the `switch`: it
+/// does not fall through into the next case, and its only `break` is its last statement (a
+/// `break` inside an `if` leaves the `switch` with a state the walk does not keep).
+pub(super) fn self_contained(case: &naga::SwitchCase) -> bool {
+    fn inner_break(b: &Block, top: bool) -> bool {
+        let n = b.len();
+        b.iter().enumerate().any(|(i, s)| match s {
+            Statement::Break => !(top && i + 1 == n),
+            Statement::Block(b) => inner_break(b, false),
+            Statement::If { accept, reject, .. } => {
+                inner_break(accept, false) || inner_break(reject, false)
+            }
+            _ => false,
+        })
+    }
+    !case.fall_through && !inner_break(&case.body, true)
+}
+
 /// The two states after an `if`: a variable keeps a value where both branches know one.
 pub(super) fn merge(a: Current, b: &Current) -> Current {
     a.into_iter()
@@ -162,7 +181,7 @@ impl Analysis {
                 .iter()
                 .nth(g)
                 .is_some_and(|(_, gv)| gv.space == naga::AddressSpace::Private),
-            Root::Arg(..) => false,
+            Root::Arg(..) => true,
         };
         if !tracked {
             return;

@@ -315,9 +315,15 @@ impl Call<'_> {
                         r
                     }
                 });
+                // Of a value not positive whenever the external values are not negative
+                // (`exp(-k * d)`): in (0, 1] for those values too.
                 Val::Num(Num::from_components(
                     &comps,
-                    Facts::NN.with(Facts::POS).with(Facts::NZ).with(deps),
+                    Facts::NN
+                        .with(Facts::POS)
+                        .with(Facts::NZ)
+                        .set(Facts::UNIT, fx.has(Facts::NP))
+                        .with(deps),
                 ))
             }
             Mf::Log | Mf::Log2 => self.unary(
@@ -469,7 +475,16 @@ impl Call<'_> {
                 };
                 let by_norm = Interval::new(-m, m).slack(slack);
                 let r = by_comps.meet(by_norm);
-                Val::Num(Num::scalar(if r.is_empty() { by_comps } else { r }, deps))
+                // A weighted sum of non-negative terms (`dot(u_attenuation, vec3(1.0, d, d * d))`,
+                // a luminance): one side not negative by its values, the other by its facts.
+                // Two directions (`dot(normalize(n), normalize(h))`) stay signed.
+                let by_values = |n: &Num| n.comps().iter().all(|c| c.lo >= 0.0);
+                let nn = (by_values(&x) && y.facts.has(Facts::NN))
+                    || (by_values(&y) && fx.has(Facts::NN));
+                Val::Num(Num::scalar(
+                    if r.is_empty() { by_comps } else { r },
+                    deps.set(Facts::NN, nn),
+                ))
             }
             Mf::Cross => {
                 let y = nums[1];

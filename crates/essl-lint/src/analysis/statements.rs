@@ -74,16 +74,7 @@ impl Analysis {
                     }
                 }
                 Statement::Block(b) => self.block(s, b),
-                Statement::Switch { cases, .. } => {
-                    let bodies: Vec<&Block> = cases.iter().map(|c| &c.body).collect();
-                    self.forget_written(s.f, s.id, &bodies);
-                    let entry = self.current.clone();
-                    for c in cases {
-                        self.current = entry.clone();
-                        self.block(s, &c.body);
-                    }
-                    self.current = entry;
-                }
+                Statement::Switch { cases, .. } => self.switch(s, cases),
                 Statement::Loop {
                     body, continuing, ..
                 } => {
@@ -124,6 +115,33 @@ impl Analysis {
             }
         }
         self.refine.truncate(depth);
+    }
+
+    /// Walks the cases of a `switch`, each from the state before it when it is
+    /// self-contained, and joins the states they leave it with.
+    fn switch(&mut self, s: Site, cases: &[naga::SwitchCase]) {
+        if !cases.iter().all(flow::self_contained) {
+            let bodies: Vec<&Block> = cases.iter().map(|c| &c.body).collect();
+            self.forget_written(s.f, s.id, &bodies);
+        }
+        let entry = self.current.clone();
+        let mut after: Option<flow::Current> = None;
+        for c in cases {
+            self.current = entry.clone();
+            self.block(s, &c.body);
+            let leaves = !matches!(
+                c.body.last(),
+                Some(Statement::Return { .. } | Statement::Kill | Statement::Continue)
+            );
+            if leaves {
+                let end = std::mem::take(&mut self.current);
+                after = Some(match after {
+                    None => end,
+                    Some(a) => flow::merge(a, &end),
+                });
+            }
+        }
+        self.current = after.unwrap_or(entry);
     }
 
     /// Walks both branches of an `if`, each under its condition; after `if (c) { …; return; }`
@@ -178,7 +196,9 @@ impl Analysis {
                     path: Vec::new(),
                 };
                 let ty = pointee(module, s.ty(*a));
-                let mine = self.load(module, &p, &ty);
+                let mine = self
+                    .current_value(&p)
+                    .unwrap_or_else(|| self.load(module, &p, &ty));
                 self.store(module, &arg_root, &mine);
                 let theirs = self.cell(module, Root::Arg(c, i));
                 self.store(module, &p, &theirs);
