@@ -27,10 +27,16 @@ impl Analysis {
     pub(super) fn eval(&mut self, s: Site, h: Handle<E>) {
         let ty = s.ty(h);
         let e = &s.f.expressions[h];
-        let (val, place) = match self.variable(s, e, ty) {
+        let (val, place) = match self.variable(s, h, e, ty) {
             Some(vp) => vp,
             None => (self.operation(s, e, ty), None),
         };
+        if let E::Load { pointer } = *e {
+            if let Some(p) = self.functions[s.id].places[pointer.index()].clone() {
+                let v = self.load_version(&p);
+                self.functions[s.id].load_version[h.index()] = v;
+            }
+        }
         let ff = &mut self.functions[s.id];
         ff.values[h.index()] = val;
         ff.places[h.index()] = place;
@@ -45,7 +51,13 @@ impl Analysis {
 
     /// The value (and place) of a constant, an argument, a variable, a call's result, a part of
     /// a variable, or of anything the entry point computes; `None` for other operations.
-    fn variable(&self, s: Site, e: &E, ty: &TypeInner) -> Option<(Val, Option<Place>)> {
+    fn variable(
+        &self,
+        s: Site,
+        h: Handle<E>,
+        e: &E,
+        ty: &TypeInner,
+    ) -> Option<(Val, Option<Place>)> {
         let (module, id) = (s.module, s.id);
         let entry = self.functions[id].entry;
         let at = |root: Root| {
@@ -60,6 +72,10 @@ impl Analysis {
         let val = match e {
             E::Literal(l) => Val::Num(Num::constant(&[literal(l)])),
             E::Constant(c) => const_value(module, module.constants[*c].init),
+            // essl reads a variable it does not lower (one only dead code uses: an inactive
+            // input, uniform or sampler) as a zero with no span: a value the shader never
+            // computes, not a zero vector to report.
+            E::ZeroValue(_) if not_computed(s, h, ty) => Val::Bot,
             E::ZeroValue(_) => shape(module, ty, &|n, _| Num::constant(&vec![0.0; n as usize])),
             E::Override(_) => self.external(module, ty, Facts::UNIFORM),
             E::FunctionArgument(i) => {
@@ -373,4 +389,11 @@ impl Analysis {
         };
         Val::Num(Num::from_components(&comps, keep.without(Facts::DIFF)))
     }
+}
+
+/// Whether expression `h` (a `ZeroValue`) stands for a variable essl did not lower: no span,
+/// and not an integer (essl's own integer zeros, `0u - x`, have no span either).
+fn not_computed(s: Site, h: Handle<E>, ty: &TypeInner) -> bool {
+    let integer = matches!(ty.scalar_kind(), Some(ScalarKind::Sint | ScalarKind::Uint));
+    !integer && s.f.expressions.get_span(h) == naga::Span::default()
 }

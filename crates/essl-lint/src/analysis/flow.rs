@@ -19,8 +19,27 @@ use super::memory::write;
 use super::{function, Analysis, Place, Root, ANY};
 use crate::value::{norm_of, Facts, Val};
 
-/// The values variables hold at a point of the walk.
-pub(super) type Current = HashMap<Root, Val>;
+/// What the walk knows at a point: the values variables hold, and a version per variable
+/// that two loads share when no store came between them (so that the `x` that `x < 0.0`
+/// compares is the `x` of `-pow(-x, p)` under it).
+#[derive(Clone, Debug, Default)]
+pub(super) struct Current {
+    values: HashMap<Root, Val>,
+    versions: HashMap<Root, u32>,
+}
+
+impl Current {
+    /// Knows nothing.
+    pub(super) fn clear(&mut self) {
+        self.values.clear();
+        self.versions.clear();
+    }
+
+    fn forget(&mut self, root: &Root) {
+        self.values.remove(root);
+        self.versions.remove(root);
+    }
+}
 
 /// Writes `new` into the part of `v` at `path`, replacing what was there (an array element,
 /// standing for every element, and a dynamic index only join); `false` when the path does not
@@ -158,18 +177,47 @@ pub(super) fn self_contained(case: &naga::SwitchCase) -> bool {
     !case.fall_through && !inner_break(&case.body, true)
 }
 
-/// The two states after an `if`: a variable keeps a value where both branches know one.
+/// The two states after an `if`: a variable keeps a value where both branches know one, and
+/// its version where both branches left it unchanged.
 pub(super) fn merge(a: Current, b: &Current) -> Current {
-    a.into_iter()
-        .filter_map(|(root, v)| b.get(&root).map(|w| (root, v.join(w))))
-        .collect()
+    Current {
+        values: a
+            .values
+            .into_iter()
+            .filter_map(|(root, v)| b.values.get(&root).map(|w| (root, v.join(w))))
+            .collect(),
+        versions: a
+            .versions
+            .into_iter()
+            .filter(|(root, v)| b.versions.get(root) == Some(v))
+            .collect(),
+    }
 }
 
 impl Analysis {
     /// What the walk knows `place` holds here, if it knows.
     pub(super) fn current_value(&self, place: &Place) -> Option<Val> {
-        let v = self.current.get(&place.root)?;
+        let v = self.current.values.get(&place.root)?;
         Some(super::memory::read(v, &place.path))
+    }
+
+    /// The version of the variable a load of `place` reads here (0: not followed): loads with
+    /// the same version read the same value.
+    pub(super) fn load_version(&mut self, place: &Place) -> u32 {
+        if place.path.contains(&ANY) {
+            return 0;
+        }
+        if let Some(v) = self.current.versions.get(&place.root) {
+            return *v;
+        }
+        let v = self.fresh_version();
+        self.current.versions.insert(place.root, v);
+        v
+    }
+
+    fn fresh_version(&mut self) -> u32 {
+        self.version_counter += 1;
+        self.version_counter
     }
 
     /// A store of `v` into `place`: the value the walk knows the variable holds from here on.
@@ -186,18 +234,20 @@ impl Analysis {
         if !tracked {
             return;
         }
+        let version = self.fresh_version();
+        self.current.versions.insert(place.root, version);
         if place.path.is_empty() {
-            self.current.insert(place.root, v.clone());
+            self.current.values.insert(place.root, v.clone());
             return;
         }
-        let mut whole = match self.current.get(&place.root) {
+        let mut whole = match self.current.values.get(&place.root) {
             Some(c) => c.clone(),
             None => self.cell(module, place.root),
         };
         if write_strong(&mut whole, &place.path, v) {
-            self.current.insert(place.root, whole);
+            self.current.values.insert(place.root, whole);
         } else {
-            self.current.remove(&place.root);
+            self.current.values.remove(&place.root);
         }
     }
 
@@ -212,12 +262,13 @@ impl Analysis {
     ) {
         for a in args {
             if let Some(root) = root_of(f, id, *a) {
-                self.current.remove(&root);
+                self.current.forget(&root);
             }
         }
         if let Some(w) = self.global_writes.get(callee) {
-            self.current
-                .retain(|root, _| !matches!(root, Root::Global(g) if w.contains(g)));
+            let written = |root: &Root| matches!(root, Root::Global(g) if w.contains(g));
+            self.current.values.retain(|root, _| !written(root));
+            self.current.versions.retain(|root, _| !written(root));
         }
     }
 
@@ -229,7 +280,7 @@ impl Analysis {
             self.collect_written(f, id, b, &mut roots);
         }
         for r in roots {
-            self.current.remove(&r);
+            self.current.forget(&r);
         }
     }
 

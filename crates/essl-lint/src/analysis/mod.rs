@@ -113,6 +113,9 @@ pub struct FnFacts {
     pub stores: HashMap<usize, Vec<Handle<E>>>,
     /// Whether this is an entry point (the wrapper essl generates, not user code).
     pub entry: bool,
+    /// For each load, the version of the variable it reads (0: not followed); two loads with
+    /// the same version read the same value.
+    pub load_version: Vec<u32>,
 }
 
 /// The analysis of a whole module.
@@ -134,6 +137,8 @@ pub struct Analysis {
     current: flow::Current,
     /// The private globals each function may write.
     global_writes: Vec<rustc_hash::FxHashSet<usize>>,
+    /// The last version [`flow`] gave a variable.
+    version_counter: u32,
 }
 
 /// The function with index `id` (module functions first, then entry points).
@@ -200,6 +205,7 @@ impl Analysis {
             refine: Vec::new(),
             current: flow::Current::default(),
             global_writes: flow::global_writes(module),
+            version_counter: 0,
         };
         for id in 0..count {
             let f = function(module, id);

@@ -28,6 +28,7 @@ impl Analysis {
             ff.values = vec![Val::Bot; n];
             ff.places = vec![None; n];
             ff.emit = vec![0; n];
+            ff.load_version = vec![0; n];
         }
         let s = Site {
             module,
