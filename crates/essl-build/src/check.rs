@@ -389,7 +389,8 @@ impl Tally {
         d: &Diagnostic,
         deny_warnings: bool,
     ) -> std::io::Result<()> {
-        let error = d.severity == Severity::Error || deny_warnings;
+        let error =
+            d.severity == Severity::Error || (deny_warnings && d.severity == Severity::Warning);
         if error {
             self.errors += 1;
         } else {
@@ -406,6 +407,7 @@ impl Tally {
             (Severity::Error, _) => "error",
             (Severity::Warning, true) => "error (denied warning)",
             (Severity::Warning, false) => "warning",
+            (Severity::Note, _) => "note",
         };
         // One line each: Cargo's warning lines end at a newline.
         let message = d.message.replace(['\n', '\r'], " ");

@@ -65,6 +65,7 @@ fn location(file: &SourceFile, index: usize, span: Span, message: Option<&str>) 
 fn level(l: Level) -> &'static str {
     match l {
         Level::Allow => "none",
+        Level::Note => "note",
         Level::Warn => "warning",
         Level::Deny => "error",
     }
@@ -106,7 +107,11 @@ pub fn log(files: &[FileDiagnostics]) -> Value {
             let mut r = json!({
                 "ruleId": d.code,
                 "ruleIndex": rule_index,
-                "level": if d.severity == Severity::Error { "error" } else { "warning" },
+                "level": match d.severity {
+                    Severity::Error => "error",
+                    Severity::Warning => "warning",
+                    Severity::Note => "note",
+                },
                 "message": { "text": text },
                 "locations": [location(fd.file, index, d.span, Some(&d.label))],
             });
