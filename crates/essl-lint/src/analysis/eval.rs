@@ -129,7 +129,9 @@ impl Analysis {
                     if self.refine.is_empty() {
                         v
                     } else {
-                        self.refined(&p, v)
+                        let integer =
+                            matches!(ty.scalar_kind(), Some(ScalarKind::Sint | ScalarKind::Uint));
+                        self.refined(&p, v, integer)
                     }
                 }
                 None => Self::unknown(module, ty, Facts::NONE),

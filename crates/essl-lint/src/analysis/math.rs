@@ -526,6 +526,18 @@ impl Call<'_> {
             }
             Mf::Normalize => {
                 let one = Interval::new(1.0 - EPS, 1.0 + EPS);
+                let points: Vec<f64> = x.comps().iter().filter_map(|c| c.as_point()).collect();
+                let len = points.iter().map(|p| p * p).sum::<f64>().sqrt();
+                if points.len() == x.n as usize && len > 0.0 {
+                    // A constant direction: its components, up to rounding.
+                    let comps: Vec<Interval> = points
+                        .iter()
+                        .map(|p| Interval::point(p / len).slack(EPS))
+                        .collect();
+                    let mut r = Num::from_components(&comps, Facts::NZ.with(deps));
+                    r.norm = one;
+                    return Val::Num(r.settle());
+                }
                 let comps = x.map(|c| {
                     let lo = if c.lo >= 0.0 { 0.0 } else { -one.hi };
                     let hi = if c.hi <= 0.0 { 0.0 } else { one.hi };

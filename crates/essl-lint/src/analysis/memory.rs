@@ -179,6 +179,9 @@ impl Analysis {
     }
 
     pub(super) fn store(&mut self, module: &naga::Module, place: &Place, v: &Val) {
+        if self.calls.walking() {
+            return; // a walk for one call changes no cell
+        }
         if let Root::Global(g) = place.root {
             let h = module
                 .global_variables

@@ -16,6 +16,7 @@
 //!
 //! [`Analysis`]'s `impl` is spread over the submodules by concern, which is why they use one
 //! another's methods:
+//! - `calls`: the result of a call from that call's own arguments (the last round);
 //! - `statements`: the walk over a function's statements (emits, stores, calls, returns, the
 //!   `if` conditions that refine what the branches load);
 //! - `memory`: the cells variables hold, and the shapes of external and unknown values;
@@ -27,6 +28,7 @@
 //! - `math`: the built-in functions, by family.
 
 mod binary;
+mod calls;
 mod conditions;
 mod eval;
 mod flow;
@@ -42,7 +44,7 @@ use naga::{Expression as E, Function, Handle};
 use crate::value::{Num, Val};
 
 pub(crate) use conditions::condition_atoms;
-pub use conditions::{refine_num, relation, Refinement};
+pub use conditions::{integral, refine_num, relation, Refinement};
 pub use memory::{const_value, literal};
 pub(crate) use statements::diverges;
 
@@ -139,6 +141,8 @@ pub struct Analysis {
     global_writes: Vec<rustc_hash::FxHashSet<usize>>,
     /// The last version [`flow`] gave a variable.
     version_counter: u32,
+    /// The results of calls from their own arguments ([`calls`]).
+    calls: calls::Calls,
 }
 
 /// The function with index `id` (module functions first, then entry points).
@@ -172,6 +176,8 @@ pub fn function_info<'a>(
 struct Site<'a> {
     /// The module.
     module: &'a naga::Module,
+    /// The validator's information about the module.
+    info: &'a naga::valid::ModuleInfo,
     /// The validator's information about the function (expression types).
     finfo: &'a naga::valid::FunctionInfo,
     /// The function.
@@ -206,6 +212,7 @@ impl Analysis {
             current: flow::Current::default(),
             global_writes: flow::global_writes(module),
             version_counter: 0,
+            calls: calls::Calls::default(),
         };
         for id in 0..count {
             let f = function(module, id);
@@ -238,6 +245,15 @@ impl Analysis {
             if !a.changed {
                 break;
             }
+        }
+        // At the fixpoint, one more round gives each call the result of its own arguments.
+        a.calls.precise = true;
+        a.widening = false;
+        let order: Vec<usize> = (module.functions.len()..count)
+            .chain(0..module.functions.len())
+            .collect();
+        for id in order {
+            a.run_function(module, info, id);
         }
         a
     }

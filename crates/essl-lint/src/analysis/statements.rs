@@ -32,6 +32,7 @@ impl Analysis {
         }
         let s = Site {
             module,
+            info,
             finfo: function_info(module, info, id),
             f,
             id,
@@ -89,8 +90,14 @@ impl Analysis {
                 Statement::Return { value: Some(v) } => {
                     let val = self.functions[s.id].values[v.index()].clone();
                     let mut changed = false;
-                    Self::join_into(&mut self.results[s.id], &val, self.widening, &mut changed);
-                    self.changed |= changed;
+                    let slot = match self.calls.results.last_mut() {
+                        Some(r) => r,
+                        None => &mut self.results[s.id],
+                    };
+                    Self::join_into(slot, &val, self.widening, &mut changed);
+                    if !self.calls.walking() {
+                        self.changed |= changed;
+                    }
                     break;
                 }
                 Statement::Store { pointer, value } => {
@@ -203,7 +210,7 @@ impl Analysis {
                 self.store(module, &arg_root, &mine);
                 let theirs = self.cell(module, Root::Arg(c, i));
                 self.store(module, &p, &theirs);
-            } else {
+            } else if !self.calls.walking() {
                 let v = self.functions[id].values[a.index()].clone();
                 let mut changed = false;
                 if let Some(slot) = self.args[c].get_mut(i) {
@@ -213,7 +220,10 @@ impl Analysis {
             }
         }
         if let Some(r) = result {
-            self.functions[id].values[r.index()] = self.results[c].clone();
+            let v = self
+                .call_result(s, c, arguments)
+                .unwrap_or_else(|| self.results[c].clone());
+            self.functions[id].values[r.index()] = v;
         }
     }
 }
