@@ -45,6 +45,8 @@ pub struct Cx<'a> {
     pub prec: Precisions,
     /// Private globals that user functions write.
     pub written: HashSet<usize>,
+    /// Calls, returns and stores, for [`Cx::origin`]: computed on first use.
+    pub(crate) flows: std::cell::OnceCell<super::origin::Flows>,
 }
 
 impl<'a> Cx<'a> {
@@ -64,6 +66,7 @@ impl<'a> Cx<'a> {
             typical: std::cell::OnceCell::new(),
             prec: Precisions::of(&shader.module),
             written,
+            flows: std::cell::OnceCell::new(),
         })
     }
 

@@ -41,6 +41,17 @@ declare_rule! {
     /// normal number, 6.1e-5), which also makes a swapped pair behave like a hard edge. Where the
     /// difference may legitimately be negative, guard its magnitude instead.
     ///
+    /// ## What it does not flag
+    /// - A divisor the shader keeps away from 0: `max(d, 1e-4)`, `d + 0.1` of a non-negative `d`, a
+    ///   difference it orders itself (`u_r + 0.1 - u_r`), or one an enclosing condition says is not 0
+    ///   (`if (u_a != u_b)`, `abs(d) > 1e-6 ? x / d : 0.0`).
+    /// - A divisor that does not depend on uniforms (a per-pixel difference), and integer divisions.
+    ///
+    /// Severity: a warning when values the shader itself produces reach the hazard; a note, naming
+    /// the uniform, when one uniform alone (with constants) does — the hazard then needs that value out
+    /// of the range the shader was written for, and essl-gl's validation mode checks it at draw time. (`x / (u_resolution - 1.0)` needs `u_resolution == 1`). A difference of two uniforms
+    /// a user sets independently (`cutOff - outerCutOff`, `far - near`) gives a warning.
+    ///
     /// ## References
     /// - Article 001 (webgl2fundamentals, spot lights), the note after the `limitRange` diff.
     /// - Article 004 (LearnOpenGL spot light): `epsilon = light.cutOff - light.outerCutOff` and
@@ -120,7 +131,7 @@ fn check(cx: &Cx, out: &mut Vec<Diagnostic>) {
                 span,
                 format!("max({}, 1e-4)", cx.text(span)),
             ));
-            out.push(diag);
+            out.push(cx.grade(diag, &[(id, d)]));
         }
     }
 }

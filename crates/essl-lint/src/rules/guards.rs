@@ -187,6 +187,12 @@ impl Cx<'_> {
             .map(|(_, r)| *r)
             .collect();
         let mut r = refine_num(n, &rs);
+        if matches!(
+            self.kind(id, x),
+            Some(naga::ScalarKind::Sint | naga::ScalarKind::Uint)
+        ) {
+            r = crate::analysis::integral(r);
+        }
         if r.is_bottom() {
             return None;
         }

@@ -51,6 +51,16 @@ declare_rule! {
     /// Declare the operands (or the variable) `highp`, or rescale the computation (work in kilometres,
     /// divide before multiplying). There is no mechanical fix.
     ///
+    /// ## What it does not flag
+    /// - Operations in `highp`, and products of different parameters (their scale is the parameters',
+    ///   which the runtime check sees).
+    /// - An overflow every use of which saturates it (`clamp(x / eps, 0.0, 1.0)`, `min(x, 1.0)`, a
+    ///   comparison, `step`, `smoothstep`).
+    /// - Powers and exponentials of values the shader keeps at most 1 (`pow(clamp(x, 0.0, 1.0), 1.7)`,
+    ///   `pow(max(dot(n, h), 0.0), 32.0)` of unit vectors).
+    ///
+    /// The values it computes with are ordinary ones (magnitude 10): its findings are warnings.
+    ///
     /// ## References
     /// - GLSL ES 3.00 specification, §4.5.2 Precision Qualifiers (minimum ranges and precisions).
     /// - IEEE 754 binary16: largest finite value 65504, smallest normal 2^-14.
@@ -130,12 +140,12 @@ fn check(cx: &Cx, out: &mut Vec<Diagnostic>) {
             }
             let peak = if up { r.hi } else { r.lo };
             let p = cx.prec.at(span).map(|p| p.name()).unwrap_or("mediump");
-            out.push(
-                Diagnostic::rule_warning(MediumpOverflow::RULE.id, format!("`{p}` result can overflow 65504 for ordinary values"), span)
-                    .with_label(format!("computed in `{p}`: reaches {} with inputs of magnitude {}", fmt_num(peak), fmt_num(TYPICAL)))
-                    .with_note("mediump and lowp are 16-bit floats on many mobile GPUs: the largest finite value is 65504")
-                    .with_help("compute it in `highp`, or rescale the operands"),
-            );
+            let d = Diagnostic::rule_warning(MediumpOverflow::RULE.id, format!("`{p}` result can overflow 65504 for ordinary values"), span)
+                .with_label(format!("computed in `{p}`: reaches {} with inputs of magnitude {}", fmt_num(peak), fmt_num(TYPICAL)))
+                .with_note("mediump and lowp are 16-bit floats on many mobile GPUs: the largest finite value is 65504")
+                .with_help("compute it in `highp`, or rescale the operands");
+            // Ordinary values reach it: the rule computes with them (no note for one uniform).
+            out.push(d);
         }
     }
 }

@@ -5,6 +5,7 @@
 
 mod context;
 mod guards;
+pub(crate) mod origin;
 pub(crate) mod rule;
 
 mod acos_domain;
@@ -16,6 +17,7 @@ mod normalize_zero;
 mod pow_negative_base;
 mod pow_zero_base;
 mod smoothstep_edges;
+mod smoothstep_reversed_constant;
 
 pub(crate) use context::{describe, fmt_num, operands, users, Cx, User};
 pub(crate) use normalize_zero::orthogonal_cross;
@@ -28,6 +30,7 @@ pub static RULES: &[&Rule] = &[
     &acos_domain::AcosDomain::RULE,
     &asin_domain::AsinDomain::RULE,
     &smoothstep_edges::SmoothstepEdges::RULE,
+    &smoothstep_reversed_constant::SmoothstepReversedConstant::RULE,
     &division_by_difference::DivisionByDifference::RULE,
     &normalize_zero::NormalizeZero::RULE,
     &mediump_overflow::MediumpOverflow::RULE,
