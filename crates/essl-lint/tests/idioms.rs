@@ -515,3 +515,57 @@ void main() {
 "#,
     );
 }
+
+#[test]
+fn per_pixel_divisors_and_edges_are_not_per_draw_hazards() {
+    check(
+        r#"#version 300 es
+precision highp float;
+uniform sampler2D u_depth;
+uniform float u_near;
+uniform float u_far;
+in vec2 v_uv;
+in vec3 v_n;
+out vec4 o;
+float linearDepth(float depth, float near, float far) {
+  float z = depth * 2.0 - 1.0;
+  return (2.0 * near * far) / (far + near - z * (far - near));
+}
+void main() {
+  float d = linearDepth(texture(u_depth, v_uv).r, u_near, u_far);
+  vec2 coord = vec2(dot(normalize(v_n), vec3(0.0, 0.0, 1.0)) * 0.5 + 0.5, 0.0);
+  vec2 fw = fwidth(coord) * 0.5;
+  float band = smoothstep(0.7 - fw.x, 0.7 + fw.x, coord.x);
+  o = vec4(d, band, 0.0, 1.0);
+}
+"#,
+    );
+}
+
+#[test]
+fn mediump_transforms_compose_and_correlated_quotients() {
+    check(
+        r#"#version 300 es
+precision mediump float;
+uniform mat4 u_view;
+uniform mat4 u_model;
+uniform vec4 u_direction;
+uniform sampler2D u_color;
+uniform float u_threshold;
+uniform float u_knee;
+in vec2 v_uv;
+out vec4 o;
+void main() {
+  mat4 modelView = u_view * u_model;
+  vec4 light = modelView * -u_direction;
+  light = normalize(light);
+  vec4 color = texture(u_color, v_uv);
+  float brightness = dot(color.rgb, vec3(0.2126, 0.7152, 0.0722));
+  float knee = u_threshold * u_knee;
+  float source = clamp(brightness - u_threshold + knee, 0.0, 2.0 * knee);
+  source = source * source / (4.0 * knee + 1e-4);
+  o = vec4(light.xyz, source);
+}
+"#,
+    );
+}

@@ -6,7 +6,7 @@ use naga::{BinaryOperator as Bo, Expression as E, Function, Handle, MathFunction
 use naga::{ScalarKind, TypeInner};
 
 use super::memory::shape;
-use super::{Analysis, Site, EPS};
+use super::{Analysis, Mode, Site, EPS};
 use crate::interval::Interval;
 use crate::value::{Facts, Num, Val};
 
@@ -120,7 +120,14 @@ impl Analysis {
                 vector_times_matrix(v, m, deps).unwrap_or_else(unknown)
             }
             (Val::Agg(a), Val::Agg(b)) if op == Bo::Multiply => {
-                matrix_product(a, b, deps).unwrap_or_else(unknown)
+                let ext = |m: &[Val]| m.iter().all(|c| c.facts().has(Facts::EXT));
+                if self.mode == Mode::Typical && ext(a) && ext(b) {
+                    // Ordinary transforms compose to an ordinary transform (a view matrix
+                    // times a model matrix), not to one with entries the sum of products.
+                    Val::Agg(a.to_vec())
+                } else {
+                    matrix_product(a, b, deps).unwrap_or_else(unknown)
+                }
             }
             (Val::Agg(a), Val::Agg(b))
                 if a.len() == b.len() && matches!(op, Bo::Add | Bo::Subtract) =>

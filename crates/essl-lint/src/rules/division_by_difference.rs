@@ -11,8 +11,8 @@ use crate::Level;
 
 declare_rule! {
     /// ## What it does
-    /// Reports a division whose divisor is a difference that depends on uniforms and that nothing in
-    /// the shader keeps away from zero: `(d - u_outerLimit) / (u_innerLimit - u_outerLimit)`, or the
+    /// Reports a division whose divisor is a difference of per-draw values (uniforms and constants)
+    /// that nothing in the shader keeps away from zero: `(d - u_outerLimit) / (u_innerLimit - u_outerLimit)`, or the
     /// same through a local (`float limitRange = u_innerLimit - u_outerLimit; … / limitRange`). A
     /// divisor the shader guards (`max(limitRange, 1e-4)`) or can order itself (`u_r + 0.1 - u_r`) is
     /// not reported.
@@ -45,7 +45,9 @@ declare_rule! {
     /// - A divisor the shader keeps away from 0: `max(d, 1e-4)`, `d + 0.1` of a non-negative `d`, a
     ///   difference it orders itself (`u_r + 0.1 - u_r`), or one an enclosing condition says is not 0
     ///   (`if (u_a != u_b)`, `abs(d) > 1e-6 ? x / d : 0.0`).
-    /// - A divisor that does not depend on uniforms (a per-pixel difference), and integer divisions.
+    /// - A divisor with a per-pixel part, zero at isolated pixels at most: the depth linearisation
+    ///   `far + near - z * (far - near)` (positive for `z` in [-1, 1]), a Fresnel term
+    ///   `1.0 - Ems * Favg`; and integer divisions.
     ///
     /// Severity: a warning when values the shader itself produces reach the hazard; a note, naming
     /// the uniform, when one uniform alone (with constants) does — the hazard then needs that value out
@@ -83,9 +85,12 @@ fn check(cx: &Cx, out: &mut Vec<Diagnostic>) {
             let Some(v) = cx.sound.num(id, d) else {
                 continue;
             };
+            // A difference of per-draw values: one with a per-pixel part (a depth, a ray) is
+            // zero at isolated pixels at most, not for the whole draw.
             if cx.kind(id, d) != Some(ScalarKind::Float)
                 || !v.facts.has(Facts::DIFF)
                 || !v.facts.any(Facts::UNIFORM)
+                || v.facts.any(Facts::INPUT.with(Facts::TEXTURE))
             {
                 continue;
             }

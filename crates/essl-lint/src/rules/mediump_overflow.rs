@@ -175,7 +175,13 @@ fn amplified(cx: &Cx, f: &Function, id: usize, e: &E, typ: &[Interval]) -> Optio
             right,
         } => (cx.sound.same(f, id, left, right) || constant(left) || constant(right))
             .then(|| typ[0].mul(typ[1])),
-        E::Binary { op: Bo::Divide, .. } => (!typ[1].contains(0.0)).then(|| typ[0].div(typ[1])),
+        E::Binary {
+            op: Bo::Divide,
+            left,
+            right,
+        } => {
+            (!typ[1].contains(0.0) && !correlated(cx, id, left, right)).then(|| typ[0].div(typ[1]))
+        }
         E::Math { fun: Mf::Pow, .. } => {
             // Growth: a base above 1 to a positive power. A base near 0 with a negative
             // exponent is pow-zero-base's business.
@@ -227,6 +233,14 @@ fn amplified(cx: &Cx, f: &Function, id: usize, e: &E, typ: &[Interval]) -> Optio
             .then(|| typ[0].mul(typ[1]).add(typ[2])),
         _ => None,
     }
+}
+
+/// Whether a numerator and a divisor read a uniform in common: `x * x / (4.0 * knee + eps)`
+/// with `x` clamped to `[0, 2 * knee]` is small where the divisor is, which the ranges of the
+/// two alone do not show.
+fn correlated(cx: &Cx, id: usize, num: Handle<E>, den: Handle<E>) -> bool {
+    let (a, b) = (cx.origin(&[(id, num)]), cx.origin(&[(id, den)]));
+    a.uniforms.iter().any(|u| b.uniforms.contains(u))
 }
 
 /// The expressions of a function and who reads each: what [`Uses::saturated`] follows.

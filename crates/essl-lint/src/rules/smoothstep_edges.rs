@@ -11,10 +11,11 @@ use crate::Level;
 
 declare_rule! {
     /// ## What it does
-    /// Reports `smoothstep(edge0, edge1, x)` where the edges depend on uniforms and nothing in the
-    /// shader keeps `edge0 < edge1` — `smoothstep(u_outerLimit, u_innerLimit, d)` — and calls whose
-    /// constant edges are equal or in the wrong order. Edges the shader orders itself
-    /// (`smoothstep(u_r, u_r + 0.1, d)`, `max(e1, e0 + 1e-3)`) are not reported.
+    /// Reports `smoothstep(edge0, edge1, x)` where the edges are per-draw values computed from
+    /// uniforms and nothing in the shader keeps `edge0 < edge1` —
+    /// `smoothstep(u_outerLimit, u_innerLimit, d)` — and calls whose constant edges are equal.
+    /// Edges the shader orders itself (`smoothstep(u_r, u_r + 0.1, d)`, `max(e1, e0 + 1e-3)`) are
+    /// not reported; constant edges in reversed order are `smoothstep-reversed-constant`'s.
     ///
     /// ## Why is this bad?
     /// GLSL ES 3.00 leaves `smoothstep` undefined if `edge0 ≥ edge1` (§8.3). GPUs evaluate
@@ -40,7 +41,8 @@ declare_rule! {
     /// ## What it does not flag
     /// - Edges the shader orders itself: `smoothstep(u_r, u_r + 0.1, d)`, `max(e1, e0 + 1e-3)`, a
     ///   clamp of one edge above the other, or an enclosing `if (u_a < u_b)`.
-    /// - Edges that depend on no uniform (computed per pixel).
+    /// - Edges with a per-pixel part (`0.7 - fwidth(c), 0.7 + fwidth(c)`): equal at isolated
+    ///   pixels at most, where `x` is exactly the edge.
     /// - Constant edges in reversed order: a deliberate mirror, `smoothstep-reversed-constant`'s (a
     ///   note). Equal constant edges are reported here: they divide by zero.
     ///
@@ -165,7 +167,10 @@ fn check(cx: &Cx, out: &mut Vec<Diagnostic>) {
             continue;
         }
         let uniform = v0.facts.any(Facts::UNIFORM) || v1.facts.any(Facts::UNIFORM);
+        let per_pixel = Facts::INPUT.with(Facts::TEXTURE);
         if !uniform
+            || v0.facts.any(per_pixel)
+            || v1.facts.any(per_pixel)
             || cx.sym(id, f).diff_lower(Some(c.e1), Some(c.e0)) > 0.0
             || cx.ordered(f, id, c.e0, c.e1, &cx.guards(f, id, c.call))
         {
