@@ -569,3 +569,24 @@ void main() {
 "#,
     );
 }
+
+#[test]
+fn a_fraction_written_out_blends_two_levels() {
+    check(
+        r#"#version 300 es
+precision highp float;
+uniform sampler2D u_env;
+uniform float u_roughness;
+in vec2 v_uv;
+out vec4 o;
+void main() {
+  float blend = clamp(u_roughness, 0.04, 1.0) * 6.0;
+  float level0 = floor(blend);
+  blend -= level0;
+  vec3 a = textureLod(u_env, v_uv, level0).rgb;
+  vec3 b = textureLod(u_env, v_uv, level0 + 1.0).rgb;
+  o = vec4(pow(mix(a, b, blend), vec3(1.0 / 2.2)), 1.0);
+}
+"#,
+    );
+}

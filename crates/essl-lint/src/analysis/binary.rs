@@ -165,6 +165,18 @@ impl Analysis {
                 return Num::from_components(&comps, deps.set(Facts::NN, yv.facts.has(Facts::NN)));
             }
         }
+        // `x - floor(x)`, written out (`level0 = floor(blend); blend -= level0;`): `fract(x)`.
+        if let E::Math {
+            fun: Mf::Floor,
+            arg,
+            ..
+        } = s.f.expressions[crate::symbolic::resolve(s.f, self, s.id, o.r)]
+        {
+            if self.same(s.f, s.id, o.l, arg) {
+                let comps = a.map(Interval::fract);
+                return Num::from_components(&comps, deps.with(Facts::NN).with(Facts::UNIT));
+            }
+        }
         let comps = a.zip(b, Interval::sub);
         // `1.0 - x` of an `x` in [-1, 1] whenever the external values are (a weight, a
         // colour channel, `metalness`): not negative for valid external values either, and
