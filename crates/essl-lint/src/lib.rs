@@ -190,10 +190,18 @@ pub fn lint(shader: &Shader, options: &LintOptions) -> Vec<Diagnostic> {
     if !RULES.iter().any(|r| reported(r)) {
         return Vec::new();
     }
-    let Some(cx) = rules::Cx::new(shader) else {
+    let Some((module, _)) = shader.naga.as_ref() else {
         return Vec::new();
     };
-    let allowed = suppress::Allowed::scan(&shader.file);
+    let (worth_it, signs, prec) = rules::candidates(shader, module);
+    if !worth_it {
+        return Vec::new();
+    }
+    let prec = prec.unwrap_or_else(|| precision::Precisions::of(&shader.module));
+    let Some(cx) = rules::Cx::with_precisions(shader, prec, signs) else {
+        return Vec::new();
+    };
+    let allowed = std::cell::OnceCell::new();
     let mut out = Vec::new();
     for r in RULES {
         if !reported(r) {
@@ -203,6 +211,7 @@ pub fn lint(shader: &Shader, options: &LintOptions) -> Vec<Diagnostic> {
         let mut found = Vec::new();
         (r.check)(&cx, &mut found);
         for mut d in found {
+            let allowed = allowed.get_or_init(|| suppress::Allowed::scan(&shader.file));
             if allowed.silences(&shader.file, d.span, r.id) {
                 continue;
             }
@@ -236,7 +245,7 @@ pub fn dump(shader: &Shader) -> String {
         let _ = writeln!(s, "fn {}", f.name.as_deref().unwrap_or("?"));
         for (h, e) in f.expressions.iter() {
             let span = cx.span(f, h);
-            let v = cx.sound.value(id, h);
+            let v = cx.sound().value(id, h);
             let _ = writeln!(
                 s,
                 "  {:?} {:?} `{}` = {:?}",

@@ -40,6 +40,14 @@ impl Calls {
     }
 }
 
+/// Whether some function of the module takes arguments (so that a call passes some).
+pub(super) fn with_arguments(module: &naga::Module) -> bool {
+    module
+        .functions
+        .iter()
+        .any(|(_, f)| !f.arguments.is_empty())
+}
+
 impl Analysis {
     /// The result of calling function `c` with `arguments` (of the caller at `s`), walked with
     /// those arguments; `None` where the join of every call's result stands.
@@ -84,9 +92,11 @@ impl Analysis {
         let saved_facts = self.functions[c].clone();
         let saved_current = std::mem::take(&mut self.current);
         let saved_refine = std::mem::take(&mut self.refine);
+        let saved_entry = self.walking_entry;
         self.calls.results.push(Val::Bot);
         self.run_function(s.module, s.info, c);
         let result = self.calls.results.pop().unwrap_or(Val::Bot);
+        self.walking_entry = saved_entry;
         self.args[c] = saved_args;
         self.functions[c] = saved_facts;
         self.current = saved_current;

@@ -87,6 +87,7 @@ impl Analysis {
                 } else if entry {
                     self.external(module, ty, Facts::INPUT)
                 } else {
+                    self.reads.borrow_mut().args.insert(id);
                     self.args[id].get(*i as usize).cloned().unwrap_or(Val::Any)
                 }
             }
@@ -382,7 +383,7 @@ impl Analysis {
                     t
                 }
             }),
-            _ => x.comps().to_vec(),
+            _ => x.map(|c| c),
         };
         let keep = if kind == ScalarKind::Float {
             x.facts

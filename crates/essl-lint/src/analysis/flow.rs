@@ -242,7 +242,10 @@ impl Analysis {
         }
         let mut whole = match self.current.values.get(&place.root) {
             Some(c) => c.clone(),
-            None => self.cell(module, place.root),
+            None => {
+                self.note_read(place.root);
+                self.cell(module, place.root)
+            }
         };
         if write_strong(&mut whole, &place.path, v) {
             self.current.values.insert(place.root, whole);

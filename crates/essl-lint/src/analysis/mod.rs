@@ -143,6 +143,21 @@ pub struct Analysis {
     version_counter: u32,
     /// The results of calls from their own arguments ([`calls`]).
     calls: calls::Calls,
+    /// What user functions read this round (cells, parameters, call results): a later change
+    /// to one of them in the same round makes the round `stale`.
+    reads: std::cell::RefCell<Reads>,
+    /// Whether something read this round changed after it was read (another round is needed).
+    stale: bool,
+    /// Whether the walk is in an entry point (whose reads only copy outputs).
+    walking_entry: bool,
+}
+
+/// What user functions read in one round of the walk.
+#[derive(Debug, Default)]
+struct Reads {
+    roots: rustc_hash::FxHashSet<Root>,
+    args: rustc_hash::FxHashSet<usize>,
+    results: rustc_hash::FxHashSet<usize>,
 }
 
 /// The function with index `id` (module functions first, then entry points).
@@ -194,8 +209,20 @@ impl<'a> Site<'a> {
 }
 
 impl Analysis {
-    /// Analyses a validated module.
+    /// Analyses a validated module, each call with its own result ([`calls`]).
     pub fn run(module: &naga::Module, info: &naga::valid::ModuleInfo, mode: Mode) -> Analysis {
+        Analysis::run_for(module, info, mode, true)
+    }
+
+    /// Analyses a validated module; `per_call`: with the last round that gives each call the
+    /// result of its own arguments (what signs and ranges of results need; magnitudes of
+    /// ordinary values do not).
+    pub fn run_for(
+        module: &naga::Module,
+        info: &naga::valid::ModuleInfo,
+        mode: Mode,
+        per_call: bool,
+    ) -> Analysis {
         let count = module.functions.len() + module.entry_points.len();
         let mut a = Analysis {
             mode,
@@ -213,6 +240,9 @@ impl Analysis {
             global_writes: flow::global_writes(module),
             version_counter: 0,
             calls: calls::Calls::default(),
+            reads: Default::default(),
+            stale: false,
+            walking_entry: false,
         };
         for id in 0..count {
             let f = function(module, id);
@@ -233,6 +263,8 @@ impl Analysis {
         }
         for round in 0..MAX_ROUNDS {
             a.changed = false;
+            a.stale = false;
+            a.reads.replace(Reads::default());
             a.widening = round >= WIDEN_AFTER;
             // Callers after callees is the order naga keeps; entry points last. Walking the
             // entry points first gives the inputs their values before `main_` reads them.
@@ -242,11 +274,17 @@ impl Analysis {
             for id in order {
                 a.run_function(module, info, id);
             }
-            if !a.changed {
+            // Nothing changed, or nothing that was read changed after it was read: the next
+            // round would read and compute the same (one round for straight-line code).
+            if !a.changed || !a.stale {
                 break;
             }
         }
-        // At the fixpoint, one more round gives each call the result of its own arguments.
+        // At the fixpoint, one more round gives each call the result of its own arguments
+        // (when some call passes any).
+        if !per_call || !calls::with_arguments(module) {
+            return a;
+        }
         a.calls.precise = true;
         a.widening = false;
         let order: Vec<usize> = (module.functions.len()..count)

@@ -23,6 +23,7 @@ impl Analysis {
     ) {
         let f = function(module, id);
         let n = f.expressions.len();
+        self.walking_entry = id >= module.functions.len();
         {
             let ff = &mut self.functions[id];
             ff.values = vec![Val::Bot; n];
@@ -97,6 +98,7 @@ impl Analysis {
                     Self::join_into(slot, &val, self.widening, &mut changed);
                     if !self.calls.walking() {
                         self.changed |= changed;
+                        self.stale |= changed && self.reads.borrow().results.contains(&s.id);
                     }
                     break;
                 }
@@ -208,6 +210,7 @@ impl Analysis {
                     .current_value(&p)
                     .unwrap_or_else(|| self.load(module, &p, &ty));
                 self.store(module, &arg_root, &mine);
+                self.note_read(Root::Arg(c, i));
                 let theirs = self.cell(module, Root::Arg(c, i));
                 self.store(module, &p, &theirs);
             } else if !self.calls.walking() {
@@ -217,12 +220,16 @@ impl Analysis {
                     Self::join_into(slot, &v, self.widening, &mut changed);
                 }
                 self.changed |= changed;
+                self.stale |= changed && self.reads.borrow().args.contains(&c);
             }
         }
         if let Some(r) = result {
-            let v = self
-                .call_result(s, c, arguments)
-                .unwrap_or_else(|| self.results[c].clone());
+            let v = self.call_result(s, c, arguments).unwrap_or_else(|| {
+                if !self.walking_entry {
+                    self.reads.borrow_mut().results.insert(c);
+                }
+                self.results[c].clone()
+            });
             self.functions[id].values[r.index()] = v;
         }
     }

@@ -82,7 +82,7 @@ fn check(cx: &Cx, out: &mut Vec<Diagnostic>) {
                 continue;
             }
             let d = cx.operand(f, h, right);
-            let Some(v) = cx.sound.num(id, d) else {
+            let Some(v) = cx.sound().num(id, d) else {
                 continue;
             };
             // A difference of per-draw values: one with a per-pixel part (a depth, a ray) is
@@ -117,7 +117,7 @@ fn check(cx: &Cx, out: &mut Vec<Diagnostic>) {
             )
             .with_label(format!("{what} is 0 when the uniforms are equal"))
             .with_help("guard the divisor");
-            let def = resolve(f, &cx.sound, id, d);
+            let def = resolve(f, cx.sound(), id, d);
             let def_span = cx.span(f, def);
             if def != d
                 && !def_span.is_empty()

@@ -115,7 +115,7 @@ impl Cx<'_> {
         }
         let mut g = Guards::default();
         for (c, pol) in conds {
-            g.facts.extend(self.sound.conditions(f, id, c, pol));
+            g.facts.extend(self.sound().conditions(f, id, c, pol));
             self.relations(f, id, c, pol, &mut g);
         }
         g
@@ -154,7 +154,7 @@ impl Cx<'_> {
         g.relations.push((op, left, right));
         // `x != 0.0`, `abs(x) > c ≥ 0`, `x > c ≥ 0`, `x < c ≤ 0`: x is not 0.
         for (x, b, x_left) in [(left, right, true), (right, left, false)] {
-            let Some(bound) = self.sound.num(id, b).filter(|n| n.n == 1).map(|n| n.c[0]) else {
+            let Some(bound) = self.sound().num(id, b).filter(|n| n.n == 1).map(|n| n.c[0]) else {
                 continue;
             };
             let Some(rel) = relation(op, true, x_left, bound) else {
@@ -179,11 +179,11 @@ impl Cx<'_> {
     /// guards bound `x` itself, or a value `x` is computed from (`x < 0.0 ? -pow(-x, p) :
     /// pow(x, p)`: under `x < 0.0`, `-x` is positive).
     pub fn refined(&self, f: &Function, id: usize, x: Handle<E>, g: &Guards) -> Option<Num> {
-        let n = *self.sound.num(id, x)?;
+        let n = *self.sound().num(id, x)?;
         let rs: Vec<Refinement> = g
             .facts
             .iter()
-            .filter(|(s, _)| self.sound.same(f, id, *s, x))
+            .filter(|(s, _)| self.sound().same(f, id, *s, x))
             .map(|(_, r)| *r)
             .collect();
         let mut r = refine_num(n, &rs);
@@ -219,12 +219,12 @@ impl Cx<'_> {
         g: &Guards,
         depth: u32,
     ) -> Option<Interval> {
-        let hull = |h: Handle<E>| self.sound.num(id, h).filter(|n| n.n == 1).map(|n| n.c[0]);
+        let hull = |h: Handle<E>| self.sound().num(id, h).filter(|n| n.n == 1).map(|n| n.c[0]);
         let own = hull(x)?;
         let direct: Vec<Interval> = g
             .facts
             .iter()
-            .filter(|(s, _)| self.sound.same(f, id, *s, x))
+            .filter(|(s, _)| self.sound().same(f, id, *s, x))
             .filter_map(|(_, r)| match r {
                 Refinement::Value(i) => Some(*i),
                 Refinement::Norm(_) => None,
@@ -237,7 +237,7 @@ impl Cx<'_> {
             return None;
         }
         let sub = |h: Handle<E>| self.refined_scalar(f, id, h, g, depth + 1);
-        match f.expressions[symbolic::resolve(f, &self.sound, id, x)] {
+        match f.expressions[symbolic::resolve(f, self.sound(), id, x)] {
             E::Unary {
                 op: naga::UnaryOperator::Negate,
                 expr,
@@ -262,7 +262,7 @@ impl Cx<'_> {
 
     /// Whether the guards say `a < b`.
     pub fn ordered(&self, f: &Function, id: usize, a: Handle<E>, b: Handle<E>, g: &Guards) -> bool {
-        let same = |x: Handle<E>, y: Handle<E>| self.sound.same(f, id, x, y);
+        let same = |x: Handle<E>, y: Handle<E>| self.sound().same(f, id, x, y);
         g.relations.iter().any(|&(op, l, r)| match op {
             Bo::Less => same(l, a) && same(r, b),
             Bo::Greater => same(l, b) && same(r, a),
@@ -272,11 +272,11 @@ impl Cx<'_> {
 
     /// Whether the guards say `x != 0`, or `a != b` for `x = a - b`.
     pub fn nonzero(&self, f: &Function, id: usize, x: Handle<E>, g: &Guards) -> bool {
-        let same = |p: Handle<E>, q: Handle<E>| self.sound.same(f, id, p, q);
+        let same = |p: Handle<E>, q: Handle<E>| self.sound().same(f, id, p, q);
         if g.nonzero.iter().any(|&y| same(y, x)) {
             return true;
         }
-        let r = symbolic::resolve(f, &self.sound, id, x);
+        let r = symbolic::resolve(f, self.sound(), id, x);
         let E::Binary {
             op: Bo::Subtract,
             left,

@@ -21,7 +21,7 @@ pub(super) fn check(cx: &Cx, out: &mut Vec<Diagnostic>, which: Mf, rule: &Rule) 
                 continue;
             }
             let x = cx.operand(f, h, arg);
-            let Some(v) = cx.sound.num(id, x) else {
+            let Some(v) = cx.sound().num(id, x) else {
                 continue;
             };
             let i = v.hull();
@@ -39,7 +39,7 @@ pub(super) fn check(cx: &Cx, out: &mut Vec<Diagnostic>, which: Mf, rule: &Rule) 
             let what = cx.what(f, id, x);
             let rounding = i.within(Interval::new(-1.0001, 1.0001));
             let dot = matches!(
-                f.expressions[resolve(f, &cx.sound, id, x)],
+                f.expressions[resolve(f, cx.sound(), id, x)],
                 E::Math { fun: Mf::Dot, .. }
             );
             let label = if rounding {

@@ -84,7 +84,7 @@ fn check(cx: &Cx, out: &mut Vec<Diagnostic>) {
             cx,
             f,
             id,
-            users: users(f),
+            users: std::cell::OnceCell::new(),
         };
         for (h, e) in f.expressions.iter() {
             let span = cx.span(f, h);
@@ -118,6 +118,10 @@ fn check(cx: &Cx, out: &mut Vec<Diagnostic>) {
                 } => operands(e),
                 _ => continue,
             };
+            // Before the ordinary-values analysis, which only this asks for.
+            if !could_amplify(cx, f, id, e) || bounded_cheaply(cx, id, e, &ops) {
+                continue;
+            }
             let typ: Vec<Interval> = ops
                 .iter()
                 .filter_map(|o| cx.typical().num(id, *o).map(|n| n.hull()))
@@ -150,6 +154,97 @@ fn check(cx: &Cx, out: &mut Vec<Diagnostic>) {
     }
 }
 
+/// Whether `e` has the shape of an amplification [`amplified`] measures: a product of a value
+/// with itself or with a constant (also inside `fma`), a dot product of a vector with itself, or
+/// a quotient, power, exponential or length.
+fn could_amplify(cx: &Cx, f: &Function, id: usize, e: &E) -> bool {
+    let constant = |h: Handle<E>| {
+        cx.sound()
+            .num(id, h)
+            .is_some_and(|n| n.comps().iter().all(|c| c.as_point().is_some()))
+    };
+    match *e {
+        E::Binary {
+            op: Bo::Multiply,
+            left,
+            right,
+        }
+        | E::Math {
+            fun: Mf::Fma,
+            arg: left,
+            arg1: Some(right),
+            ..
+        } => cx.sound().same(f, id, left, right) || constant(left) || constant(right),
+        E::Math {
+            fun: Mf::Dot,
+            arg,
+            arg1: Some(b),
+            ..
+        } => cx.sound().same(f, id, arg, b),
+        _ => true,
+    }
+}
+
+/// Whether a generous bound on the ordinary values of `e`'s operands already keeps it within
+/// 65504: each operand a constant or an external value as such (a uniform, input or texel, of
+/// magnitude at most [`TYPICAL`], more than the ordinary-values analysis gives any of them).
+/// Then the ordinary-values analysis cannot find an overflow there, and need not run.
+fn bounded_cheaply(cx: &Cx, id: usize, e: &E, ops: &[Handle<E>]) -> bool {
+    let bound = |h: Handle<E>| {
+        let n = cx.sound().num(id, h)?;
+        if n.comps().iter().all(|c| c.as_point().is_some()) {
+            Some((n.hull(), n.n))
+        } else if n.facts.has(crate::value::Facts::EXT) {
+            Some((Interval::new(-TYPICAL, TYPICAL), n.n))
+        } else {
+            None
+        }
+    };
+    let Some(b) = ops.iter().map(|o| bound(*o)).collect::<Option<Vec<_>>>() else {
+        return false;
+    };
+    let squares = |(i, n): (Interval, u8)| i.sqr().mul(Interval::point(f64::from(n)));
+    let r = match (e, &b[..]) {
+        (
+            E::Binary {
+                op: Bo::Multiply, ..
+            },
+            [x, y],
+        ) => x.0.mul(y.0),
+        (E::Binary { op: Bo::Divide, .. }, [x, y]) => {
+            if y.0.contains(0.0) {
+                return true; // the divisor's ordinary values contain 0 too: no amplification
+            }
+            x.0.div(y.0)
+        }
+        (E::Math { fun: Mf::Pow, .. }, [x, y]) => {
+            x.0.meet(Interval::new(1.0, f64::INFINITY))
+                .pow(y.0.meet(Interval::NON_NEGATIVE))
+        }
+        (E::Math { fun: Mf::Exp, .. }, [x]) => x.0.exp(),
+        (E::Math { fun: Mf::Exp2, .. }, [x]) => x.0.exp2(),
+        (E::Math { fun: Mf::Sinh, .. }, [x]) => x.0.sinh(),
+        (E::Math { fun: Mf::Cosh, .. }, [x]) => x.0.cosh(),
+        (E::Math { fun: Mf::Dot, .. }, [x, _]) => squares(*x),
+        (
+            E::Math {
+                fun: Mf::Length | Mf::Normalize,
+                ..
+            },
+            [x],
+        ) => squares(*x),
+        (
+            E::Math {
+                fun: Mf::Distance, ..
+            },
+            [x, y],
+        ) => squares((x.0.sub(y.0), x.1.max(y.1))),
+        (E::Math { fun: Mf::Fma, .. }, [x, y, z]) => x.0.mul(y.0).add(z.0),
+        _ => return false,
+    };
+    r.is_empty() || r.mag() <= LIMIT
+}
+
 /// The range the shader's own amplification gives `e` for ordinary values, when it amplifies:
 /// a square or power of one value, an exponential, a scaling by a constant, a division by a
 /// value bounded away from 0, the sum of squares inside `length`/`normalize`. A product of
@@ -157,7 +252,7 @@ fn check(cx: &Cx, out: &mut Vec<Diagnostic>) {
 /// check sees their values).
 fn amplified(cx: &Cx, f: &Function, id: usize, e: &E, typ: &[Interval]) -> Option<Interval> {
     let constant = |h: Handle<E>| {
-        cx.sound
+        cx.sound()
             .num(id, h)
             .is_some_and(|n| n.comps().iter().all(|c| c.as_point().is_some()))
     };
@@ -173,7 +268,7 @@ fn amplified(cx: &Cx, f: &Function, id: usize, e: &E, typ: &[Interval]) -> Optio
             op: Bo::Multiply,
             left,
             right,
-        } => (cx.sound.same(f, id, left, right) || constant(left) || constant(right))
+        } => (cx.sound().same(f, id, left, right) || constant(left) || constant(right))
             .then(|| typ[0].mul(typ[1])),
         E::Binary {
             op: Bo::Divide,
@@ -200,7 +295,7 @@ fn amplified(cx: &Cx, f: &Function, id: usize, e: &E, typ: &[Interval]) -> Optio
             arg1: Some(b),
             ..
         } => {
-            if cx.sound.same(f, id, arg, b) {
+            if cx.sound().same(f, id, arg, b) {
                 squares(arg)
             } else {
                 None
@@ -229,7 +324,7 @@ fn amplified(cx: &Cx, f: &Function, id: usize, e: &E, typ: &[Interval]) -> Optio
             arg,
             arg1: Some(b),
             ..
-        } => (cx.sound.same(f, id, arg, b) || constant(arg) || constant(b))
+        } => (cx.sound().same(f, id, arg, b) || constant(arg) || constant(b))
             .then(|| typ[0].mul(typ[1]).add(typ[2])),
         _ => None,
     }
@@ -248,14 +343,15 @@ struct Uses<'a> {
     cx: &'a Cx<'a>,
     f: &'a Function,
     id: usize,
-    users: HashMap<Handle<E>, Vec<User>>,
+    /// Who reads each expression: computed when an overflow asks whether its uses saturate it.
+    users: std::cell::OnceCell<HashMap<Handle<E>, Vec<User>>>,
 }
 
 impl Uses<'_> {
     /// Whether every use of `h` clamps away its overflow (`up`: towards +∞, `down`: towards −∞).
     fn saturated(&self, h: Handle<E>, up: bool, down: bool, depth: u32) -> bool {
         let (cx, f, id) = (self.cx, self.f, self.id);
-        let Some(us) = self.users.get(&h) else {
+        let Some(us) = self.users.get_or_init(|| users(f)).get(&h) else {
             return true;
         };
         let bounded = |x: Option<Handle<E>>| {
@@ -330,7 +426,7 @@ fn underflows(cx: &Cx, id: usize, f: &Function, x: Handle<E>) -> Option<f64> {
     if span.is_empty() || !cx.prec.is_low(span) {
         return None;
     }
-    let v = cx.sound.num(id, x)?;
+    let v = cx.sound().num(id, x)?;
     let m = v
         .comps()
         .iter()

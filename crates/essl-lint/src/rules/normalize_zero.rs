@@ -89,7 +89,7 @@ fn check(cx: &Cx, out: &mut Vec<Diagnostic>) {
                 continue;
             }
             let x = cx.operand(f, h, arg);
-            let Some(v) = cx.sound.num(id, x) else {
+            let Some(v) = cx.sound().num(id, x) else {
                 continue;
             };
             if v.n < 2 || !v.may_be_zero() || v.facts.has(Facts::NZ) {
@@ -142,7 +142,7 @@ fn check(cx: &Cx, out: &mut Vec<Diagnostic>) {
 /// itself a cross product with the other: perpendicular vectors, whose cross product is not
 /// zero (`up = normalize(cross(right, forward)); right = normalize(cross(up, forward))`).
 pub(crate) fn orthogonal_cross(cx: &Cx, f: &Function, id: usize, h: Handle<E>) -> bool {
-    let r = resolve(f, &cx.sound, id, h);
+    let r = resolve(f, cx.sound(), id, h);
     let E::Math {
         fun: Mf::Cross,
         arg: a,
@@ -152,20 +152,24 @@ pub(crate) fn orthogonal_cross(cx: &Cx, f: &Function, id: usize, h: Handle<E>) -
     else {
         return false;
     };
-    let nz = |x: Handle<E>| cx.sound.num(id, x).is_some_and(|n| n.facts.has(Facts::NZ));
+    let nz = |x: Handle<E>| {
+        cx.sound()
+            .num(id, x)
+            .is_some_and(|n| n.facts.has(Facts::NZ))
+    };
     if !nz(a) || !nz(b) {
         return false;
     }
     let perpendicular = |x: Handle<E>, y: Handle<E>| {
         values(cx, f, id, x).iter().all(|v| {
-            let mut v = resolve(f, &cx.sound, id, *v);
+            let mut v = resolve(f, cx.sound(), id, *v);
             if let E::Math {
                 fun: Mf::Normalize,
                 arg,
                 ..
             } = f.expressions[v]
             {
-                v = resolve(f, &cx.sound, id, arg);
+                v = resolve(f, cx.sound(), id, arg);
             }
             match f.expressions[v] {
                 E::Math {
@@ -173,7 +177,7 @@ pub(crate) fn orthogonal_cross(cx: &Cx, f: &Function, id: usize, h: Handle<E>) -
                     arg: p,
                     arg1: Some(q),
                     ..
-                } => cx.sound.same(f, id, p, y) || cx.sound.same(f, id, q, y),
+                } => cx.sound().same(f, id, p, y) || cx.sound().same(f, id, q, y),
                 _ => false,
             }
         })
@@ -185,7 +189,7 @@ pub(crate) fn orthogonal_cross(cx: &Cx, f: &Function, id: usize, h: Handle<E>) -
 fn values(cx: &Cx, f: &Function, id: usize, h: Handle<E>) -> Vec<Handle<E>> {
     if let E::Load { pointer } = f.expressions[h] {
         if let E::LocalVariable(l) = f.expressions[pointer] {
-            if let Some(vs) = cx.sound.functions[id]
+            if let Some(vs) = cx.sound().functions[id]
                 .stores
                 .get(&l.index())
                 .filter(|vs| !vs.is_empty())
@@ -202,7 +206,7 @@ fn values(cx: &Cx, f: &Function, id: usize, h: Handle<E>) -> Vec<Handle<E>> {
 /// 0.999 ? vec3(0.0, 0.0, 1.0) : vec3(1.0, 0.0, 0.0)`. `n` is taken to be a direction (the
 /// test of one component against a bound below 1 means nothing otherwise).
 fn axis_chosen_away(cx: &Cx, f: &Function, id: usize, h: Handle<E>) -> bool {
-    let r = resolve(f, &cx.sound, id, h);
+    let r = resolve(f, cx.sound(), id, h);
     let E::Math {
         fun: Mf::Cross,
         arg: a,
@@ -217,7 +221,7 @@ fn axis_chosen_away(cx: &Cx, f: &Function, id: usize, h: Handle<E>) -> bool {
             condition,
             accept,
             reject,
-        } = f.expressions[resolve(f, &cx.sound, id, u)]
+        } = f.expressions[resolve(f, cx.sound(), id, u)]
         else {
             return false;
         };
@@ -239,7 +243,7 @@ fn away(
     condition: Handle<E>,
     polarity: bool,
 ) -> bool {
-    let Some(av) = cx.sound.num(id, axis) else {
+    let Some(av) = cx.sound().num(id, axis) else {
         return false;
     };
     let a: Vec<f64> = av.comps().iter().filter_map(|c| c.as_point()).collect();
@@ -253,7 +257,7 @@ fn away(
             return;
         };
         for (x, bound, x_left) in [(left, right, true), (right, left, false)] {
-            let Some(b) = cx.sound.num(id, bound).and_then(|v| v.hull().as_point()) else {
+            let Some(b) = cx.sound().num(id, bound).and_then(|v| v.hull().as_point()) else {
                 continue;
             };
             let Some(range) = crate::analysis::relation(op, pol, x_left, Interval::point(b)) else {
@@ -268,7 +272,7 @@ fn away(
             let E::AccessIndex { base, index } = f.expressions[inner] else {
                 continue;
             };
-            if (index as usize) >= a.len() || !cx.sound.same(f, id, base, n) {
+            if (index as usize) >= a.len() || !cx.sound().same(f, id, base, n) {
                 continue;
             }
             // Along the axis, the unit vector's component is ±a[k] / |a|.
@@ -290,7 +294,7 @@ fn away(
 /// the coordinate axes (`normalize(vec3(0.001, 1.0, 0.001))`): the tilt is the guard, since
 /// mesh normals lie along the axes (a floor), not along an arbitrary constant direction.
 fn tilted_axis(cx: &Cx, f: &Function, id: usize, h: Handle<E>) -> bool {
-    let r = resolve(f, &cx.sound, id, h);
+    let r = resolve(f, cx.sound(), id, h);
     let E::Math {
         fun: Mf::Cross,
         arg: a,
@@ -301,12 +305,12 @@ fn tilted_axis(cx: &Cx, f: &Function, id: usize, h: Handle<E>) -> bool {
         return false;
     };
     let per_pixel = |x: Handle<E>| {
-        cx.sound
+        cx.sound()
             .num(id, x)
             .is_some_and(|v| v.facts.any(Facts::INPUT.with(Facts::TEXTURE)))
     };
     let tilted = |x: Handle<E>| {
-        cx.sound.num(id, x).is_some_and(|v| {
+        cx.sound().num(id, x).is_some_and(|v| {
             let off_zero = v.comps().iter().filter(|c| !c.contains(0.0)).count();
             v.comps()
                 .iter()

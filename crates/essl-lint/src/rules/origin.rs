@@ -59,7 +59,7 @@ pub struct Flows {
     /// Per function: the values it returns.
     returns: Vec<Vec<Handle<E>>>,
     /// Per function: the values stored into each local, with the part stored (empty: whole).
-    locals: Vec<HashMap<usize, Vec<(Vec<u32>, Handle<E>)>>>,
+    locals: Vec<HashMap<usize, Vec<PartStore>>>,
     /// Per private global: (function, value) of every store into it, whole or in part.
     globals: HashMap<usize, Vec<(usize, Handle<E>)>>,
 }
@@ -125,6 +125,10 @@ impl Flows {
         }
     }
 }
+
+/// A store into a local: the part written (the constant indices from the variable; empty for
+/// the whole variable) and the value.
+type PartStore = (Vec<u32>, Handle<E>);
 
 enum Root {
     Local(usize),

@@ -88,7 +88,7 @@ fn check_negative(cx: &Cx, out: &mut Vec<Diagnostic>) {
         exp,
     } in cx.pow_calls()
     {
-        let Some(b) = cx.sound.num(id, base) else {
+        let Some(b) = cx.sound().num(id, base) else {
             continue;
         };
         if b.hull().lo >= 0.0 || b.facts.has(Facts::NN) {
@@ -173,7 +173,7 @@ fn fix_negative(
     }
     let b = cx.text(bspan);
     let n = cx
-        .sound
+        .sound()
         .num(id, exp)
         .and_then(|v| v.hull().as_point())
         .filter(|n| n.fract() == 0.0 && n.abs() < 1e6);

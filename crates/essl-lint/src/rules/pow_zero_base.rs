@@ -62,7 +62,7 @@ fn check_zero(cx: &Cx, out: &mut Vec<Diagnostic>) {
         exp,
     } in cx.pow_calls()
     {
-        let (Some(b), Some(x)) = (cx.sound.num(id, base), cx.sound.num(id, exp)) else {
+        let (Some(b), Some(x)) = (cx.sound().num(id, base), cx.sound().num(id, exp)) else {
             continue;
         };
         let (bi, xi) = (b.hull(), x.hull());

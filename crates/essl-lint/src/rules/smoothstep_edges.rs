@@ -109,7 +109,7 @@ pub(super) fn calls<'a>(cx: &Cx<'a>) -> Vec<Call<'a>> {
 
 /// The (edge0, edge1) pairs of each component when both edges are constants.
 pub(super) fn constant_edges(cx: &Cx, c: &Call) -> Option<Vec<(f64, f64)>> {
-    let (v0, v1) = (cx.sound.num(c.id, c.e0)?, cx.sound.num(c.id, c.e1)?);
+    let (v0, v1) = (cx.sound().num(c.id, c.e0)?, cx.sound().num(c.id, c.e1)?);
     let constant = |v: &Num| v.comps().iter().all(|c| c.as_point().is_some());
     if !constant(v0) || !constant(v1) {
         return None;
@@ -138,7 +138,7 @@ fn check(cx: &Cx, out: &mut Vec<Diagnostic>) {
             continue;
         }
         let (id, f, span) = (c.id, c.f, c.span);
-        let (Some(v0), Some(v1)) = (cx.sound.num(id, c.e0), cx.sound.num(id, c.e1)) else {
+        let (Some(v0), Some(v1)) = (cx.sound().num(id, c.e0), cx.sound().num(id, c.e1)) else {
             continue;
         };
         let (s0, s1) = (cx.span(f, c.e0), cx.span(f, c.e1));
