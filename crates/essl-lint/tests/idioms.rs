@@ -590,3 +590,38 @@ void main() {
 "#,
     );
 }
+
+#[test]
+fn a_neutral_tone_mapper_keeps_colours_non_negative() {
+    check(
+        r#"#version 300 es
+precision highp float;
+uniform sampler2D u_hdr;
+uniform float u_exposure;
+uniform float u_ior;
+in vec2 v_uv;
+out vec4 o;
+vec3 neutral(vec3 color) {
+  const float start = 0.76;
+  const float desaturation = 0.15;
+  color *= u_exposure;
+  float x = min(color.r, min(color.g, color.b));
+  float offset = x < 0.08 ? x - 6.25 * x * x : 0.04;
+  color -= offset;
+  float peak = max(color.r, max(color.g, color.b));
+  if (peak < start) return color;
+  float d = 1.0 - start;
+  float newPeak = 1.0 - d * d / (peak + d - start);
+  color *= newPeak / peak;
+  float g = 1.0 - 1.0 / (desaturation * (peak - newPeak) + 1.0);
+  return mix(color, vec3(newPeak), g);
+}
+void main() {
+  vec3 c = neutral(texture(u_hdr, v_uv).rgb);
+  float r = (u_ior - 1.0) / (u_ior + 1.0);
+  float f0 = min(r * r, 1.0);
+  o = vec4(pow(c, vec3(0.41666)) * (1.0 - f0), 1.0);
+}
+"#,
+    );
+}

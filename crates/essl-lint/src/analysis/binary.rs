@@ -181,7 +181,8 @@ impl Analysis {
         // `1.0 - x` of an `x` in [-1, 1] whenever the external values are (a weight, a
         // colour channel, `metalness`): not negative for valid external values either, and
         // in [0, 1] when `x` is also not negative.
-        let from_one = a.comps().iter().all(|c| c.lo >= 1.0) && b.facts.has(Facts::UNIT);
+        let from_one = a.comps().iter().all(|c| c.lo >= 1.0) && b.facts.has(Facts::UNIT)
+            || a.n > 1 && self.at_most_smallest(s, o.r, o.l);
         let facts = deps.with(Facts::DIFF).set(Facts::NN, from_one).set(
             Facts::UNIT,
             from_one && b.facts.has(Facts::NN) && a.comps().iter().all(|c| c.hi <= 1.0),

@@ -95,7 +95,7 @@ impl Analysis {
             Mf::Exp | Mf::Exp2 | Mf::Log | Mf::Log2 | Mf::Sqrt | Mf::InverseSqrt | Mf::Pow => {
                 call.exponential()
             }
-            Mf::Step | Mf::SmoothStep | Mf::Mix | Mf::Fma => call.interpolation(),
+            Mf::Step | Mf::SmoothStep | Mf::Mix | Mf::Fma => call.interpolation(self),
             Mf::Dot
             | Mf::Cross
             | Mf::Length
@@ -173,7 +173,15 @@ impl Call<'_> {
                         fx.has(Facts::POS) || fy.has(Facts::POS),
                     )
                 };
-                let unit = fx.has(Facts::UNIT) && fy.has(Facts::UNIT);
+                // `min(x, 1.0)` of a non-negative x is in [0, 1] too.
+                let at_most_one = |n: &Num| n.comps().iter().all(|c| c.hi <= 1.0);
+                let unit = fx.has(Facts::UNIT) && fy.has(Facts::UNIT)
+                    || self.fun == Mf::Min
+                        && nn
+                        && (fx.has(Facts::UNIT)
+                            || fy.has(Facts::UNIT)
+                            || at_most_one(&x)
+                            || at_most_one(&y));
                 let facts = deps
                     .set(Facts::NN, nn)
                     .set(Facts::POS, pos)
@@ -365,7 +373,7 @@ impl Call<'_> {
     }
 
     /// `step`, `smoothstep`, `mix`, `fma`.
-    fn interpolation(&self) -> Val {
+    fn interpolation(&self, a: &Analysis) -> Val {
         let (x, fx, deps) = (self.x, self.x.facts, self.deps);
         let nums = &self.nums;
         match self.fun {
@@ -411,10 +419,11 @@ impl Call<'_> {
                     })
                     .collect();
                 // A weight in [0, 1] but for rounding (`0.5 * dot(n, l) + 0.5`) still mixes.
+                let weight = Interval::new(-16.0 * EPS, 1.0 + 16.0 * EPS);
                 let convex = t.facts.has(Facts::NN.with(Facts::UNIT))
-                    || t.comps()
-                        .iter()
-                        .all(|c| c.within(Interval::new(-16.0 * EPS, 1.0 + 16.0 * EPS)));
+                    || t.comps().iter().all(|c| c.within(weight))
+                    || a.monotone_range(self.s, self.args[2])
+                        .is_some_and(|r| r.within(weight));
                 let fb = b.facts;
                 let facts = Facts::NONE
                     .set(Facts::NN, convex && fx.has(Facts::NN) && fb.has(Facts::NN))

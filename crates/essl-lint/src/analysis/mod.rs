@@ -24,6 +24,8 @@
 //! - `conditions`: what a comparison says about the values it compares;
 //! - `eval`: the value of each expression;
 //! - `same`: whether two expressions certainly have the same value;
+//! - `relational`: relations intervals lose (an offset at most a vector's smallest component, a
+//!   monotone function of one variable);
 //! - `binary`: the arithmetic operators, on numbers and on matrices;
 //! - `math`: the built-in functions, by family.
 
@@ -34,6 +36,7 @@ mod eval;
 mod flow;
 mod math;
 mod memory;
+mod relational;
 mod same;
 mod statements;
 
