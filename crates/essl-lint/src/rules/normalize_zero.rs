@@ -142,14 +142,7 @@ fn check(cx: &Cx, out: &mut Vec<Diagnostic>) {
 /// itself a cross product with the other: perpendicular vectors, whose cross product is not
 /// zero (`up = normalize(cross(right, forward)); right = normalize(cross(up, forward))`).
 pub(crate) fn orthogonal_cross(cx: &Cx, f: &Function, id: usize, h: Handle<E>) -> bool {
-    let r = resolve(f, cx.sound(), id, h);
-    let E::Math {
-        fun: Mf::Cross,
-        arg: a,
-        arg1: Some(b),
-        ..
-    } = f.expressions[r]
-    else {
+    let Some((a, b)) = cross_operands(cx, f, id, h) else {
         return false;
     };
     let nz = |x: Handle<E>| {
@@ -206,14 +199,7 @@ fn values(cx: &Cx, f: &Function, id: usize, h: Handle<E>) -> Vec<Handle<E>> {
 /// 0.999 ? vec3(0.0, 0.0, 1.0) : vec3(1.0, 0.0, 0.0)`. `n` is taken to be a direction (the
 /// test of one component against a bound below 1 means nothing otherwise).
 fn axis_chosen_away(cx: &Cx, f: &Function, id: usize, h: Handle<E>) -> bool {
-    let r = resolve(f, cx.sound(), id, h);
-    let E::Math {
-        fun: Mf::Cross,
-        arg: a,
-        arg1: Some(b),
-        ..
-    } = f.expressions[r]
-    else {
+    let Some((a, b)) = cross_operands(cx, f, id, h) else {
         return false;
     };
     [(a, b), (b, a)].into_iter().any(|(u, n)| {
@@ -294,14 +280,7 @@ fn away(
 /// the coordinate axes (`normalize(vec3(0.001, 1.0, 0.001))`): the tilt is the guard, since
 /// mesh normals lie along the axes (a floor), not along an arbitrary constant direction.
 fn tilted_axis(cx: &Cx, f: &Function, id: usize, h: Handle<E>) -> bool {
-    let r = resolve(f, cx.sound(), id, h);
-    let E::Math {
-        fun: Mf::Cross,
-        arg: a,
-        arg1: Some(b),
-        ..
-    } = f.expressions[r]
-    else {
+    let Some((a, b)) = cross_operands(cx, f, id, h) else {
         return false;
     };
     let per_pixel = |x: Handle<E>| {
@@ -319,4 +298,22 @@ fn tilted_axis(cx: &Cx, f: &Function, id: usize, h: Handle<E>) -> bool {
         })
     };
     (per_pixel(a) && tilted(b)) || (per_pixel(b) && tilted(a))
+}
+
+/// The two vectors of `cross(a, b)` when `h` is (or a local holds) a cross product.
+fn cross_operands(
+    cx: &Cx,
+    f: &Function,
+    id: usize,
+    h: Handle<E>,
+) -> Option<(Handle<E>, Handle<E>)> {
+    match f.expressions[resolve(f, cx.sound(), id, h)] {
+        E::Math {
+            fun: Mf::Cross,
+            arg,
+            arg1: Some(b),
+            ..
+        } => Some((arg, b)),
+        _ => None,
+    }
 }
