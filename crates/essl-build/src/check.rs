@@ -406,8 +406,7 @@ impl Tally {
         let severity = match (d.severity, error) {
             (Severity::Error, _) => "error",
             (Severity::Warning, true) => "error (denied warning)",
-            (Severity::Warning, false) => "warning",
-            (Severity::Note, _) => "note",
+            (other, _) => other.as_str(),
         };
         // One line each: Cargo's warning lines end at a newline.
         let message = d.message.replace(['\n', '\r'], " ");
