@@ -212,11 +212,6 @@ impl<'a> Site<'a> {
 }
 
 impl Analysis {
-    /// Analyses a validated module, each call with its own result ([`calls`]).
-    pub fn run(module: &naga::Module, info: &naga::valid::ModuleInfo, mode: Mode) -> Analysis {
-        Analysis::run_for(module, info, mode, true)
-    }
-
     /// Analyses a validated module; `per_call`: with the last round that gives each call the
     /// result of its own arguments (what signs and ranges of results need; magnitudes of
     /// ordinary values do not).
