@@ -389,7 +389,8 @@ impl Tally {
         d: &Diagnostic,
         deny_warnings: bool,
     ) -> std::io::Result<()> {
-        let error = d.severity == Severity::Error || deny_warnings;
+        let error =
+            d.severity == Severity::Error || (deny_warnings && d.severity == Severity::Warning);
         if error {
             self.errors += 1;
         } else {

@@ -181,9 +181,20 @@ struct LintArgs {
     #[arg(long, value_name = "RULE")]
     deny: Vec<String>,
 
-    /// Report a lint rule as a warning (its default).
+    /// Report a lint rule's findings as warnings (the default of most rules; a note-level
+    /// rule's findings become warnings).
     #[arg(long, value_name = "RULE")]
     warn: Vec<String>,
+
+    /// Report every finding of a lint rule as a note (shown with `--show-notes`).
+    #[arg(long, value_name = "RULE")]
+    note: Vec<String>,
+
+    /// Show notes: hazards only a uniform out of its plausible range reaches, and the findings
+    /// of note-level rules (`smoothstep-reversed-constant`). Hidden by default; the summary
+    /// counts them.
+    #[arg(long)]
+    show_notes: bool,
 
     /// Do not run a lint rule (`all`: none). A `// essl-allow: RULE` comment on a line (or the
     /// line before) silences one finding.
@@ -265,6 +276,7 @@ fn rule_levels(
     let mut given: Vec<(usize, &str, essl_lint::Level)> = Vec::new();
     for (flag, level) in [
         ("allow", essl_lint::Level::Allow),
+        ("note", essl_lint::Level::Note),
         ("warn", essl_lint::Level::Warn),
         ("deny", essl_lint::Level::Deny),
     ] {
@@ -334,6 +346,7 @@ fn main() -> ExitCode {
             },
             fix: args.fix,
             deny_warnings,
+            show_notes: args.show_notes,
             defines: args.define,
             link: !args.no_link,
             rules,

@@ -553,3 +553,54 @@ fn render_writes_the_png_and_a_json_line() {
         "{diff:?}"
     );
 }
+
+/// A fragment shader whose only lint finding is a note: reversed constant `smoothstep` edges.
+const NOTE_FRAG: &str = "#version 300 es\nprecision highp float;\nin float v_d;\nout vec4 color;\nvoid main() {\n    color = vec4(smoothstep(0.25, 0.24, v_d));\n}\n";
+
+#[test]
+fn notes_are_counted_hidden_and_shown_with_show_notes() {
+    let dir = tempfile::tempdir().unwrap();
+    std::fs::write(dir.path().join("n.frag"), NOTE_FRAG).unwrap();
+    let o = essl(&["lint", "--color", "never", "n.frag"], dir.path());
+    assert_eq!(o.status.code(), Some(0));
+    assert_eq!(
+        stdout(&o),
+        "1 file, 0 errors, 0 warnings, 1 note hidden (--show-notes)\n"
+    );
+    let o = essl(
+        &["lint", "--color", "never", "--show-notes", "n.frag"],
+        dir.path(),
+    );
+    assert_eq!(o.status.code(), Some(0), "notes never fail a run");
+    let out = stdout(&o);
+    assert!(out.contains("note[smoothstep-reversed-constant]"), "{out}");
+    assert!(
+        out.ends_with("1 file, 0 errors, 0 warnings, 1 note\n"),
+        "{out}"
+    );
+    // `--deny warnings` does not count notes; `--warn RULE` makes them warnings.
+    let o = essl(&["lint", "--deny", "warnings", "n.frag"], dir.path());
+    assert_eq!(o.status.code(), Some(0));
+    let o = essl(
+        &["lint", "--warn", "smoothstep-reversed-constant", "n.frag"],
+        dir.path(),
+    );
+    assert!(stdout(&o).contains("1 warning"), "{}", stdout(&o));
+    // JSON and SARIF carry the severity.
+    let o = essl(
+        &["lint", "--format", "json", "--show-notes", "n.frag"],
+        dir.path(),
+    );
+    let first: serde_json::Value =
+        serde_json::from_str(stdout(&o).lines().next().unwrap()).unwrap();
+    assert_eq!(first["diagnostics"][0]["severity"], "note");
+    let o = essl(&["lint", "--format", "json", "n.frag"], dir.path());
+    let last: serde_json::Value = serde_json::from_str(stdout(&o).lines().last().unwrap()).unwrap();
+    assert_eq!(last["notes_hidden"], 1);
+    let o = essl(
+        &["lint", "--format", "sarif", "--show-notes", "n.frag"],
+        dir.path(),
+    );
+    let log: serde_json::Value = serde_json::from_str(&stdout(&o)).unwrap();
+    assert_eq!(log["runs"][0]["results"][0]["level"], "note");
+}

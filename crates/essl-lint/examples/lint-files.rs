@@ -20,9 +20,15 @@ fn main() {
             println!("{path}: does not compile");
             continue;
         }
-        for d in essl_lint::lint(&shader, &essl_lint::LintOptions::default()) {
+        for d in essl_lint::lint(&shader, &essl_lint::LintOptions::default().notes(true)) {
             let lc = shader.file.line_col(d.span.start);
-            println!("{path}:{lc}: {} [{}] {}", d.message, d.code, d.label);
+            println!(
+                "{path}:{lc}: {}: {} [{}] {}",
+                d.severity.as_str(),
+                d.message,
+                d.code,
+                d.label
+            );
             for s in &d.secondary {
                 println!("    {}: {}", shader.file.line_col(s.span.start), s.message);
             }

@@ -47,23 +47,42 @@ pub use precondition::{preconditions, Condition, Precondition, Term, UniformRef}
 pub use rules::{rule, Rule, RULES};
 
 /// What to do with a rule's findings.
+///
+/// A rule reports each finding as a warning (a hazard the shader's own values reach: a signed
+/// dot product, a difference of two varyings or of two parameters set independently) or as a
+/// note (a hazard only one uniform out of its plausible range reaches, named in the message: the
+/// runtime check's business). The level decides what becomes of them.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum Level {
     /// Not reported.
     Allow,
-    /// Reported as a warning (the default): `essl lint` still succeeds.
+    /// Every finding reported as a note ([`LintOptions::notes`] shows them).
+    Note,
+    /// Warnings reported as warnings, notes as notes (the default): `essl lint` still succeeds.
     Warn,
-    /// Reported as an error: `essl lint` fails.
+    /// Warnings reported as errors (`essl lint` fails), notes as notes.
     Deny,
 }
 
 impl Level {
-    /// `"allow"`, `"warn"` or `"deny"`.
+    /// `"allow"`, `"note"`, `"warn"` or `"deny"`.
     pub fn as_str(self) -> &'static str {
         match self {
             Level::Allow => "allow",
+            Level::Note => "note",
             Level::Warn => "warn",
             Level::Deny => "deny",
+        }
+    }
+
+    /// The severity a finding the rule reports with `severity` gets at this level (`None`:
+    /// not reported).
+    pub fn severity(self, severity: Severity) -> Option<Severity> {
+        match (self, severity) {
+            (Level::Allow, _) => None,
+            (Level::Note, _) | (_, Severity::Note) => Some(Severity::Note),
+            (Level::Deny, _) => Some(Severity::Error),
+            (Level::Warn, s) => Some(s),
         }
     }
 }
@@ -86,10 +105,12 @@ impl std::fmt::Display for UnknownRule {
 impl std::error::Error for UnknownRule {}
 
 /// Which rules run, and how loud they are: `--allow RULE` / `--deny RULE`, in order (a later
-/// setting of the same rule wins; `all` names every rule).
+/// setting of the same rule wins; `all` names every rule); and whether notes are reported
+/// (off by default: an editor shows them, `essl lint --show-notes` prints them).
 #[derive(Clone, Debug, Default, PartialEq, Eq)]
 pub struct LintOptions {
     overrides: Vec<(String, Level)>,
+    notes: bool,
 }
 
 impl LintOptions {
@@ -112,6 +133,23 @@ impl LintOptions {
     pub fn allow(mut self, rule_id: &str) -> LintOptions {
         self.overrides.push((rule_id.to_string(), Level::Allow));
         self
+    }
+
+    /// Reports every finding of a rule as a note.
+    pub fn note(mut self, rule_id: &str) -> LintOptions {
+        self.overrides.push((rule_id.to_string(), Level::Note));
+        self
+    }
+
+    /// Reports notes (`true`) or leaves them out (`false`, the default).
+    pub fn notes(mut self, on: bool) -> LintOptions {
+        self.notes = on;
+        self
+    }
+
+    /// Whether notes are reported.
+    pub fn shows_notes(&self) -> bool {
+        self.notes
     }
 
     /// Reports a rule as a warning.
@@ -137,36 +175,54 @@ impl LintOptions {
     }
 }
 
-/// Lints a compiled shader: every finding of every rule that is not allowed, in source order.
+/// Lints a compiled shader: every finding of every rule that is not allowed, in source order,
+/// with the severity its rule's level gives it ([`Level::severity`]); notes only when
+/// [`LintOptions::notes`] asks for them.
 ///
 /// A shader that did not compile (no naga IR) has no findings: its errors come first.
 pub fn lint(shader: &Shader, options: &LintOptions) -> Vec<Diagnostic> {
     // The analysis is most of the cost: skip it when no rule would look at it.
-    if RULES.iter().all(|r| options.level(r) == Level::Allow) {
+    let reported = |r: &Rule| match options.level(r) {
+        Level::Allow => false,
+        Level::Note => options.notes,
+        _ => true,
+    };
+    if !RULES.iter().any(|r| reported(r)) {
         return Vec::new();
     }
-    let Some(cx) = rules::Cx::new(shader) else {
+    let Some((module, _)) = shader.naga.as_ref() else {
         return Vec::new();
     };
-    let allowed = suppress::Allowed::scan(&shader.file);
+    let (worth_it, signs, prec) = rules::candidates(shader, module);
+    if !worth_it {
+        return Vec::new();
+    }
+    let prec = prec.unwrap_or_else(|| precision::Precisions::of(&shader.module));
+    let Some(cx) = rules::Cx::with_precisions(shader, prec, signs) else {
+        return Vec::new();
+    };
+    let allowed = std::cell::OnceCell::new();
     let mut out = Vec::new();
     for r in RULES {
-        let level = options.level(r);
-        if level == Level::Allow {
+        if !reported(r) {
             continue;
         }
+        let level = options.level(r);
         let mut found = Vec::new();
         (r.check)(&cx, &mut found);
         for mut d in found {
+            let allowed = allowed.get_or_init(|| suppress::Allowed::scan(&shader.file));
             if allowed.silences(&shader.file, d.span, r.id) {
                 continue;
             }
-            d.severity = if level == Level::Deny {
-                Severity::Error
-            } else {
-                Severity::Warning
-            };
-            out.push(d);
+            match level.severity(d.severity) {
+                Some(Severity::Note) if !options.notes => {}
+                Some(s) => {
+                    d.severity = s;
+                    out.push(d);
+                }
+                None => {}
+            }
         }
     }
     out.dedup_by(|a, b| a.code == b.code && a.span == b.span);
@@ -189,7 +245,7 @@ pub fn dump(shader: &Shader) -> String {
         let _ = writeln!(s, "fn {}", f.name.as_deref().unwrap_or("?"));
         for (h, e) in f.expressions.iter() {
             let span = cx.span(f, h);
-            let v = cx.sound.value(id, h);
+            let v = cx.sound().value(id, h);
             let _ = writeln!(
                 s,
                 "  {:?} {:?} `{}` = {:?}",

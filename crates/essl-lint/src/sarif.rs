@@ -7,7 +7,7 @@
 //! essl's do (`columnKind: unicodeCodePoints`). Fixes become SARIF `fixes` with their edits as
 //! replacements.
 
-use essl::diagnostic::{Applicability, Diagnostic, Severity};
+use essl::diagnostic::{Applicability, Diagnostic};
 use essl::source::{SourceFile, Span};
 use serde_json::{json, Value};
 
@@ -65,6 +65,7 @@ fn location(file: &SourceFile, index: usize, span: Span, message: Option<&str>) 
 fn level(l: Level) -> &'static str {
     match l {
         Level::Allow => "none",
+        Level::Note => "note",
         Level::Warn => "warning",
         Level::Deny => "error",
     }
@@ -106,7 +107,8 @@ pub fn log(files: &[FileDiagnostics]) -> Value {
             let mut r = json!({
                 "ruleId": d.code,
                 "ruleIndex": rule_index,
-                "level": if d.severity == Severity::Error { "error" } else { "warning" },
+                // SARIF's levels share the names: "error", "warning", "note".
+                "level": d.severity.as_str(),
                 "message": { "text": text },
                 "locations": [location(fd.file, index, d.span, Some(&d.label))],
             });

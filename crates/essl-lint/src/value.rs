@@ -35,8 +35,11 @@ impl Facts {
     /// The first three components are not all zero (as [`Facts::NZ`]): what `.xyz` of a
     /// transformed direction `M * vec4(d, 0.0)` keeps.
     pub const NZ3: Facts = Facts(64);
+    /// Not positive (every component) whenever every external value is non-negative:
+    /// `-x`, `-k * d` (what `exp` turns into a value in (0, 1]).
+    pub const NP: Facts = Facts(2048);
     /// The facts that are intersected on joins.
-    pub const ALL_AND: Facts = Facts(127);
+    pub const ALL_AND: Facts = Facts(127 | 2048);
 
     /// May be zero because it is a cross product (of vectors that may be parallel).
     pub const CROSS: Facts = Facts(128);
@@ -148,7 +151,12 @@ impl Num {
         for (i, x) in c.iter().take(4).enumerate() {
             out.c[i] = *x;
         }
-        out.norm = if c.len() == 1 { c[0].abs() } else { norm_of(c) };
+        // `settle` sets the length from the components (of a value with some).
+        out.norm = if out.is_bottom() {
+            norm_of(c)
+        } else {
+            Interval::NON_NEGATIVE
+        };
         out.facts = facts;
         out.settle()
     }
@@ -225,6 +233,9 @@ impl Num {
         if comps.iter().all(|c| c.lo > 0.0) {
             self.facts = self.facts.with(Facts::POS).with(Facts::NN);
         }
+        if comps.iter().all(|c| c.hi <= 0.0) {
+            self.facts = self.facts.with(Facts::NP);
+        }
         if self.norm.lo > 0.0 || comps.iter().any(|c| !c.contains(0.0)) {
             self.facts = self.facts.with(Facts::NZ).without(Facts::CROSS);
         }
@@ -269,28 +280,46 @@ impl Num {
     }
 
     /// Applies `f` to each component (pairs with `o`'s, a scalar `o` applying to each).
-    pub fn zip(&self, o: &Num, f: impl Fn(Interval, Interval) -> Interval) -> Vec<Interval> {
-        let n = self.n.max(o.n) as usize;
-        (0..n)
-            .map(|i| {
-                let a = if self.n == 1 {
-                    self.c[0]
-                } else {
-                    self.c[i.min(self.n as usize - 1)]
-                };
-                let b = if o.n == 1 {
-                    o.c[0]
-                } else {
-                    o.c[i.min(o.n as usize - 1)]
-                };
-                f(a, b)
-            })
-            .collect()
+    pub fn zip(&self, o: &Num, f: impl Fn(Interval, Interval) -> Interval) -> Comps {
+        let n = self.n.max(o.n).clamp(1, 4);
+        let mut out = Comps {
+            n,
+            c: [Interval::EMPTY; 4],
+        };
+        for i in 0..n as usize {
+            let a = self.c[i.min(self.n as usize - 1)];
+            let b = o.c[i.min(o.n as usize - 1)];
+            out.c[i] = f(a, b);
+        }
+        out
     }
 
     /// Applies `f` to each component.
-    pub fn map(&self, f: impl Fn(Interval) -> Interval) -> Vec<Interval> {
-        self.comps().iter().map(|c| f(*c)).collect()
+    pub fn map(&self, f: impl Fn(Interval) -> Interval) -> Comps {
+        let mut out = Comps {
+            n: self.n.clamp(1, 4),
+            c: [Interval::EMPTY; 4],
+        };
+        for i in 0..out.n as usize {
+            out.c[i] = f(self.c[i]);
+        }
+        out
+    }
+}
+
+/// Up to four components, without an allocation (what [`Num::map`] and [`Num::zip`] give):
+/// a slice of intervals.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Comps {
+    n: u8,
+    c: [Interval; 4],
+}
+
+impl std::ops::Deref for Comps {
+    type Target = [Interval];
+
+    fn deref(&self) -> &[Interval] {
+        &self.c[..self.n as usize]
     }
 }
 

@@ -56,6 +56,24 @@ fn reports(rule: &str, precision: &str, decls: &str, body: &str, expected: &[&st
     assert_eq!(codes_of(&text, rule), expected, "{rule} in:\n{text}");
 }
 
+/// `body` gets exactly the notes `expected` (span texts) of `rule`, when notes are asked for;
+/// they are not reported otherwise.
+#[track_caller]
+fn notes(rule: &str, precision: &str, decls: &str, body: &str, expected: &[&str]) {
+    let text = frag(precision, decls, body);
+    let s = compiled(&text);
+    let found: Vec<String> = lint(&s, &LintOptions::default().notes(true))
+        .iter()
+        .filter(|d| d.code == rule && d.severity == Severity::Note)
+        .map(|d| s.file.slice(d.span).to_string())
+        .collect();
+    assert_eq!(found, expected, "{rule} notes in:\n{text}");
+    assert!(
+        codes_of(&text, rule).is_empty(),
+        "notes are not reported by default:\n{text}"
+    );
+}
+
 /// `body` has no finding of `rule`.
 #[track_caller]
 fn clean(rule: &str, precision: &str, decls: &str, body: &str) {
@@ -175,6 +193,14 @@ fn pow_of_zero_to_a_non_positive_power() {
         rule,
         "highp",
         "",
+        "  r = pow(max(v_x - 1.0, 0.0), v_x - 1.0);",
+        &["max(v_x - 1.0, 0.0)"],
+    );
+    // An exponent only one uniform makes non-positive: a note naming it.
+    notes(
+        rule,
+        "highp",
+        "",
         "  r = pow(max(v_x - 1.0, 0.0), u_k - 1.0);",
         &["max(v_x - 1.0, 0.0)"],
     );
@@ -182,7 +208,7 @@ fn pow_of_zero_to_a_non_positive_power() {
         rule,
         "highp",
         "",
-        "  r = pow(max(v_x - 1.0, 0.0), u_k - 1.0);",
+        "  r = pow(max(v_x - 1.0, 0.0), v_x - 1.0);",
     );
 }
 
@@ -293,7 +319,8 @@ fn smoothstep_with_uniform_edges() {
         "  r = smoothstep(u_a, u_b, v_x);",
         &["smoothstep(u_a, u_b, v_x)"],
     );
-    reports(
+    // Edges only one uniform can make equal or swapped: a note naming it.
+    notes(
         rule,
         "highp",
         "",
@@ -313,15 +340,8 @@ fn smoothstep_with_uniform_edges() {
 }
 
 #[test]
-fn smoothstep_with_constant_edges_out_of_order() {
+fn smoothstep_with_equal_constant_edges() {
     let rule = "smoothstep-edges";
-    reports(
-        rule,
-        "highp",
-        "",
-        "  r = smoothstep(1.0, 0.0, v_x);",
-        &["smoothstep(1.0, 0.0, v_x)"],
-    );
     reports(
         rule,
         "highp",
@@ -329,7 +349,15 @@ fn smoothstep_with_constant_edges_out_of_order() {
         "  r = smoothstep(0.5, 0.5, v_x);",
         &["smoothstep(0.5, 0.5, v_x)"],
     );
-    fixes_clear(rule, "highp", "", "  r = smoothstep(1.0, 0.0, v_x);");
+    // Reversed constant edges are the quieter rule's.
+    clean(rule, "highp", "", "  r = smoothstep(1.0, 0.0, v_x);");
+    notes(
+        "smoothstep-reversed-constant",
+        "highp",
+        "",
+        "  r = smoothstep(1.0, 0.0, v_x);",
+        &["smoothstep(1.0, 0.0, v_x)"],
+    );
 }
 
 #[test]
@@ -671,6 +699,38 @@ fn findings_are_warnings_unless_denied() {
 }
 
 #[test]
+fn notes_are_off_by_default_and_levels_move_them() {
+    let reversed = "  r = smoothstep(1.0, 0.0, v_x);";
+    let one_uniform = "  r = v_x / (u_a - 1.0);";
+    let s = compiled(&frag("highp", "", reversed));
+    assert!(lint(&s, &LintOptions::default()).is_empty());
+    let notes = lint(&s, &LintOptions::default().notes(true));
+    assert_eq!(notes.len(), 1);
+    assert_eq!(notes[0].severity, Severity::Note);
+    // `--warn RULE` makes a quiet rule's findings warnings.
+    let warned = lint(
+        &s,
+        &LintOptions::default().warn("smoothstep-reversed-constant"),
+    );
+    assert_eq!(warned[0].severity, Severity::Warning);
+    // A note a rule grades as such stays a note under `--deny`, and names the uniform.
+    let s = compiled(&frag("highp", "", one_uniform));
+    let denied = lint(&s, &LintOptions::default().deny("all").notes(true));
+    assert_eq!(denied.len(), 1);
+    assert_eq!(denied[0].severity, Severity::Note);
+    assert!(denied[0].message.contains("`u_a`"), "{}", denied[0].message);
+    assert!(lint(&s, &LintOptions::default().deny("all")).is_empty());
+    // `--note RULE` makes every finding of a rule a note.
+    let s = compiled(&frag("highp", "", HAZARD));
+    let quiet = lint(
+        &s,
+        &LintOptions::default().note("pow-negative-base").notes(true),
+    );
+    assert_eq!(quiet[0].severity, Severity::Note);
+    assert!(lint(&s, &LintOptions::default().note("pow-negative-base")).is_empty());
+}
+
+#[test]
 fn unknown_rules_are_rejected_by_set() {
     let mut o = LintOptions::new();
     assert!(o.set("pow-negative-base", Level::Deny).is_ok());
@@ -711,13 +771,18 @@ fn every_rule_is_registered_once_with_a_page() {
     assert_eq!(ids.len(), essl_lint::RULES.len());
     for r in essl_lint::RULES {
         assert!(essl_lint::rule(r.id).is_some());
-        assert_eq!(r.default_level, Level::Warn);
+        let quiet = r.id == "smoothstep-reversed-constant";
+        assert_eq!(
+            r.default_level,
+            if quiet { Level::Note } else { Level::Warn }
+        );
         let page = r.page();
         for section in [
             "## What it does",
             "## Why is this bad?",
             "## Example",
             "## Use instead",
+            "## What it does not flag",
             "## References",
         ] {
             assert!(page.contains(section), "{}: no {section}", r.id);

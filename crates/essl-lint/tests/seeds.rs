@@ -38,12 +38,13 @@ fn compiled(path: &Path) -> Shader {
 fn findings(shader: &Shader) -> Value {
     let file = &shader.file;
     Value::Array(
-        lint(shader, &LintOptions::default())
+        lint(shader, &LintOptions::default().notes(true))
             .iter()
             .map(|d| {
                 let (s, e) = (file.line_col(d.span.start), file.line_col(d.span.end));
                 json!({
                     "code": d.code,
+                    "severity": d.severity.as_str(),
                     "message": d.message,
                     "line": s.line,
                     "column": s.column,

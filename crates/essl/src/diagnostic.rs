@@ -8,6 +8,9 @@ use crate::source::{SourceFile, Span};
 #[non_exhaustive]
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
 pub enum Severity {
+    /// A note: a hazard that only a value out of its plausible range reaches (a lint rule's
+    /// quieter level); hidden unless asked for.
+    Note,
     /// A warning: the shader still compiles.
     Warning,
     /// An error: WebGL2 rejects the shader.
@@ -15,11 +18,12 @@ pub enum Severity {
 }
 
 impl Severity {
-    /// `"error"` or `"warning"`.
+    /// `"error"`, `"warning"` or `"note"`.
     pub fn as_str(self) -> &'static str {
         match self {
             Severity::Error => "error",
             Severity::Warning => "warning",
+            Severity::Note => "note",
         }
     }
 }
@@ -102,6 +106,12 @@ impl Diagnostic {
     /// under the rule's id.
     pub fn rule_warning(id: &'static str, message: impl Into<String>, span: Span) -> Diagnostic {
         Diagnostic::new(Severity::Warning, id, message, span)
+    }
+
+    /// A new note of a rule another crate defines: a hazard only a value out of its plausible
+    /// range reaches.
+    pub fn rule_note(id: &'static str, message: impl Into<String>, span: Span) -> Diagnostic {
+        Diagnostic::new(Severity::Note, id, message, span)
     }
 
     /// A new diagnostic with any code: a front-end [`Code`]'s name, or the id of a rule that

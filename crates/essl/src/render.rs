@@ -85,6 +85,7 @@ pub fn to_codespan(file: Option<&SourceFile>, d: &Diagnostic) -> cs::Diagnostic<
     let severity = match d.severity {
         Severity::Error => cs::Severity::Error,
         Severity::Warning => cs::Severity::Warning,
+        Severity::Note => cs::Severity::Note,
     };
     let mut out = cs::Diagnostic::new(severity)
         .with_code(d.code)
@@ -220,7 +221,7 @@ pub fn webgl_info_log(file: &SourceFile, diagnostics: &[Diagnostic]) -> String {
     for d in ordered {
         let kind = match d.severity {
             Severity::Error => "ERROR",
-            Severity::Warning => "WARNING",
+            Severity::Warning | Severity::Note => "WARNING",
         };
         let line = file.line_of(clamp_span(file, d.span).start as u32);
         log.push_str(&format!(

@@ -44,7 +44,18 @@ impl Shader {
 
     /// Number of warnings.
     pub fn warning_count(&self) -> usize {
-        self.diagnostics.len() - self.error_count()
+        self.diagnostics
+            .iter()
+            .filter(|d| d.severity == crate::diagnostic::Severity::Warning)
+            .count()
+    }
+
+    /// Number of notes (lint findings that only a value out of its plausible range reaches).
+    pub fn note_count(&self) -> usize {
+        self.diagnostics
+            .iter()
+            .filter(|d| d.severity == crate::diagnostic::Severity::Note)
+            .count()
     }
 }
 

@@ -12,13 +12,23 @@ use super::output;
 use super::results::{program_counts, Checked, FileResult, Linked, LintResults, ProgramResult};
 use crate::files::{self, Input, ReadError};
 
-/// Adds the numerical-hazard lints to a compiled shader's diagnostics.
-fn add_lints(shader: &mut Shader, options: &LintOptions) {
-    let found = essl_lint::lint(shader, &options.rules);
+/// Adds the numerical-hazard lints to a compiled shader's diagnostics (notes only under
+/// `--show-notes`); returns how many notes were left out.
+fn add_lints(shader: &mut Shader, options: &LintOptions) -> usize {
+    let rules = options.rules.clone().notes(true);
+    let (notes, rest): (Vec<_>, Vec<_>) = essl_lint::lint(shader, &rules)
+        .into_iter()
+        .partition(|d| d.severity == essl::diagnostic::Severity::Note);
+    let hidden = if options.show_notes { 0 } else { notes.len() };
+    let mut found = rest;
+    if options.show_notes {
+        found.extend(notes);
+    }
     if !found.is_empty() {
         shader.diagnostics.extend(found);
         essl::diagnostic::sort(&mut shader.diagnostics);
     }
+    hidden
 }
 
 /// Reads, (fixes,) compiles and lints one file.
@@ -41,6 +51,7 @@ fn check_file(input: &Input, options: &LintOptions) -> Result<Checked, ReadError
                 shader: fixed.shader,
                 fixes_applied: fixed.applied,
                 write_error,
+                notes_hidden: 0,
             }
         } else {
             let shader = compile(SourceFile::new(name, text), input.stage, &compile_options);
@@ -48,10 +59,11 @@ fn check_file(input: &Input, options: &LintOptions) -> Result<Checked, ReadError
                 shader,
                 fixes_applied: 0,
                 write_error: None,
+                notes_hidden: 0,
             }
         }
     })?;
-    add_lints(&mut checked.shader, options);
+    checked.notes_hidden = add_lints(&mut checked.shader, options);
     Ok(checked)
 }
 
@@ -65,6 +77,8 @@ fn file_result(input: &Input, checked: &Result<Checked, ReadError>, look: Look) 
             write_error: None,
             errors: 0,
             warnings: 0,
+            notes: 0,
+            notes_hidden: 0,
             fixes_applied: 0,
             rendered,
             diagnostics: None,
@@ -75,6 +89,8 @@ fn file_result(input: &Input, checked: &Result<Checked, ReadError>, look: Look) 
             write_error: c.write_error.clone(),
             errors: c.shader.error_count(),
             warnings: c.shader.warning_count(),
+            notes: c.shader.note_count(),
+            notes_hidden: c.notes_hidden,
             fixes_applied: c.fixes_applied,
             rendered,
             diagnostics: (look.format == Format::Sarif)

@@ -66,6 +66,8 @@ pub struct LintOptions {
     pub fix: bool,
     /// `--deny warnings`: warnings fail the run.
     pub deny_warnings: bool,
+    /// `--show-notes`: print the lints' notes (counted in the summary either way).
+    pub show_notes: bool,
     /// `-D NAME[=VALUE]` macros.
     pub defines: Vec<(String, String)>,
     /// Link `NAME.vert` + `NAME.frag` pairs (on unless `--no-link`).

@@ -27,8 +27,9 @@ fn plural(n: usize, word: &str) -> String {
 }
 
 /// `N files, E errors, W warnings`, plus `, P programs linked` when any were,
-/// `, U pairs not linked` when a pair was not linked because a shader has errors, and
-/// `, F fixes applied` when any were.
+/// `, U pairs not linked` when a pair was not linked because a shader has errors,
+/// `, F fixes applied` when any were, `, K notes` when notes were shown and
+/// `, H notes hidden (--show-notes)` when some were left out.
 fn summary_line(t: &Totals) -> String {
     let mut s = format!(
         "{}, {}, {}",
@@ -44,6 +45,15 @@ fn summary_line(t: &Totals) -> String {
     }
     if t.fixes > 0 {
         s.push_str(&format!(", {} applied", plural(t.fixes, "fix")));
+    }
+    if t.notes > 0 {
+        s.push_str(&format!(", {}", plural(t.notes, "note")));
+    }
+    if t.notes_hidden > 0 {
+        s.push_str(&format!(
+            ", {} hidden (--show-notes)",
+            plural(t.notes_hidden, "note")
+        ));
     }
     s
 }
@@ -97,6 +107,8 @@ pub(crate) fn write(out: &mut dyn Write, results: &LintResults, look: Look) -> s
                 "programs": t.programs,
                 "unlinked": t.unlinked,
                 "fixes": t.fixes,
+                "notes": t.notes,
+                "notes_hidden": t.notes_hidden,
             });
             writeln!(out, "{summary}")?;
         }

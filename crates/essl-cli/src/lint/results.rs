@@ -19,6 +19,8 @@ pub(crate) struct Checked {
     pub fixes_applied: usize,
     /// Why the fixed text could not be written back, if it could not.
     pub write_error: Option<String>,
+    /// Lint notes left out (no `--show-notes`).
+    pub notes_hidden: usize,
 }
 
 /// The two shaders of a linked pair and their program.
@@ -49,6 +51,10 @@ pub(crate) struct FileResult {
     pub errors: usize,
     /// Its warnings.
     pub warnings: usize,
+    /// Its notes shown (`--show-notes`).
+    pub notes: usize,
+    /// Its notes left out.
+    pub notes_hidden: usize,
     /// Fixes applied by `--fix`.
     pub fixes_applied: usize,
     /// Its output (human text or one JSON line).
@@ -95,6 +101,10 @@ pub(crate) struct Totals {
     pub errors: usize,
     /// Warnings in shaders and programs.
     pub warnings: usize,
+    /// Lint notes shown.
+    pub notes: usize,
+    /// Lint notes left out (no `--show-notes`).
+    pub notes_hidden: usize,
     /// Pairs linked (both shaders compiled).
     pub programs: usize,
     /// Pairs not linked because a shader has errors.
@@ -113,6 +123,8 @@ impl LintResults {
         for f in &self.files {
             t.errors += f.errors;
             t.warnings += f.warnings;
+            t.notes += f.notes;
+            t.notes_hidden += f.notes_hidden;
             t.fixes += f.fixes_applied;
         }
         for p in &self.programs {

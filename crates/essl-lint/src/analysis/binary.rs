@@ -6,7 +6,7 @@ use naga::{BinaryOperator as Bo, Expression as E, Function, Handle, MathFunction
 use naga::{ScalarKind, TypeInner};
 
 use super::memory::shape;
-use super::{Analysis, Site, EPS};
+use super::{Analysis, Mode, Site, EPS};
 use crate::interval::Interval;
 use crate::value::{Facts, Num, Val};
 
@@ -120,7 +120,14 @@ impl Analysis {
                 vector_times_matrix(v, m, deps).unwrap_or_else(unknown)
             }
             (Val::Agg(a), Val::Agg(b)) if op == Bo::Multiply => {
-                matrix_product(a, b, deps).unwrap_or_else(unknown)
+                let ext = |m: &[Val]| m.iter().all(|c| c.facts().has(Facts::EXT));
+                if self.mode == Mode::Typical && ext(a) && ext(b) {
+                    // Ordinary transforms compose to an ordinary transform (a view matrix
+                    // times a model matrix), not to one with entries the sum of products.
+                    Val::Agg(a.to_vec())
+                } else {
+                    matrix_product(a, b, deps).unwrap_or_else(unknown)
+                }
             }
             (Val::Agg(a), Val::Agg(b))
                 if a.len() == b.len() && matches!(op, Bo::Add | Bo::Subtract) =>
@@ -137,7 +144,7 @@ impl Analysis {
     /// An arithmetic operator on scalars and vectors.
     fn num_binary(&self, s: Site, o: &Operands) -> Num {
         match o.op {
-            Bo::Add => add(o),
+            Bo::Add => self.interpolation(s, o).unwrap_or_else(|| add(o)),
             Bo::Subtract => self.subtract(s, o),
             Bo::Multiply => self.multiply(s, o),
             Bo::Divide => divide(o),
@@ -158,12 +165,81 @@ impl Analysis {
                 return Num::from_components(&comps, deps.set(Facts::NN, yv.facts.has(Facts::NN)));
             }
         }
+        // `x - floor(x)`, written out (`level0 = floor(blend); blend -= level0;`): `fract(x)`.
+        if let E::Math {
+            fun: Mf::Floor,
+            arg,
+            ..
+        } = s.f.expressions[crate::symbolic::resolve(s.f, self, s.id, o.r)]
+        {
+            if self.same(s.f, s.id, o.l, arg) {
+                let comps = a.map(Interval::fract);
+                return Num::from_components(&comps, deps.with(Facts::NN).with(Facts::UNIT));
+            }
+        }
         let comps = a.zip(b, Interval::sub);
-        let mut out = Num::from_components(&comps, deps.with(Facts::DIFF));
+        // `1.0 - x` of an `x` in [-1, 1] whenever the external values are (a weight, a
+        // colour channel, `metalness`): not negative for valid external values either, and
+        // in [0, 1] when `x` is also not negative.
+        let from_one = a.comps().iter().all(|c| c.lo >= 1.0) && b.facts.has(Facts::UNIT)
+            || a.n > 1 && self.at_most_smallest(s, o.r, o.l);
+        let facts = deps.with(Facts::DIFF).set(Facts::NN, from_one).set(
+            Facts::UNIT,
+            from_one && b.facts.has(Facts::NN) && a.comps().iter().all(|c| c.hi <= 1.0),
+        );
+        let mut out = Num::from_components(&comps, facts);
         if !o.mixed() && o.vector_result() {
             out.norm = out.norm.meet(triangle(a.norm, b.norm));
         }
         out.settle()
+    }
+
+    /// `a + (b - a) * t` with `t` in [0, 1]: `mix(a, b, t)` written out (Schlick's
+    /// `F0 + (1.0 - F0) * pow(1.0 - VdotH, 5.0)`), between `a` and `b`.
+    fn interpolation(&self, s: Site, o: &Operands) -> Option<Num> {
+        let f = s.f;
+        for (a, prod) in [(o.l, o.r), (o.r, o.l)] {
+            let E::Binary {
+                op: Bo::Multiply,
+                left,
+                right,
+            } = f.expressions[prod]
+            else {
+                continue;
+            };
+            for (d, t) in [(left, right), (right, left)] {
+                let E::Binary {
+                    op: Bo::Subtract,
+                    left: b,
+                    right: a2,
+                } = f.expressions[d]
+                else {
+                    continue;
+                };
+                let Some(tv) = self.nm(s.id, t) else { continue };
+                let weight = tv.facts.has(Facts::NN.with(Facts::UNIT))
+                    || tv.comps().iter().all(|c| c.within(Interval::UNIT));
+                if !weight || !self.same(f, s.id, a, a2) {
+                    continue;
+                }
+                let (Some(av), Some(bv)) = (self.nm(s.id, a), self.nm(s.id, b)) else {
+                    continue;
+                };
+                let both = |x: Facts| av.facts.has(x) && bv.facts.has(x);
+                let facts = o
+                    .deps
+                    .set(Facts::NN, both(Facts::NN))
+                    .set(Facts::POS, both(Facts::POS))
+                    .set(Facts::UNIT, both(Facts::UNIT));
+                let n = av.n.max(bv.n).max(o.a.n).max(o.b.n);
+                let pick = |v: &Num, i: usize| v.c[i.min(v.n as usize - 1)];
+                let comps: Vec<Interval> = (0..n as usize)
+                    .map(|i| pick(&av, i).hull(pick(&bv, i)))
+                    .collect();
+                return Some(Num::from_components(&comps, facts));
+            }
+        }
+        None
     }
 
     /// `a * b`: a square when they are the same.
@@ -183,13 +259,15 @@ impl Analysis {
         }
         let mixed = o.mixed();
         let comps = a.zip(b, Interval::mul);
-        let nn = fa.has(Facts::NN) && fb.has(Facts::NN);
+        let nn = fa.has(Facts::NN) && fb.has(Facts::NN) || fa.has(Facts::NP) && fb.has(Facts::NP);
+        let np = fa.has(Facts::NN) && fb.has(Facts::NP) || fa.has(Facts::NP) && fb.has(Facts::NN);
         let pos = fa.has(Facts::POS) && fb.has(Facts::POS);
         let nz = fa.has(Facts::NZ) && fb.has(Facts::NZ) && (mixed || !o.vector_result());
         let unit = fa.has(Facts::UNIT) && fb.has(Facts::UNIT);
         let cross = mixed && (fa.any(Facts::CROSS) || fb.any(Facts::CROSS));
         let facts = deps
             .set(Facts::NN, nn)
+            .set(Facts::NP, np)
             .set(Facts::POS, pos)
             .set(Facts::NZ, nz)
             .set(Facts::UNIT, unit)
@@ -286,6 +364,7 @@ fn matrix_times_vector(m: &[Val], v: &Num, deps: Facts) -> Option<Val> {
         .collect();
     let invertible = cols.iter().all(|c| c.facts.has(Facts::NZ));
     let nz = invertible && v.facts.has(Facts::NZ) && cols.len() == rows;
+    let nn = non_negative_entries(&cols) && v.facts.has(Facts::NN);
     // A direction (w = 0) keeps a non-zero xyz through an invertible (affine or
     // projective) transform.
     let nz3 = invertible
@@ -295,8 +374,16 @@ fn matrix_times_vector(m: &[Val], v: &Num, deps: Facts) -> Option<Val> {
         && v.facts.has(Facts::NZ3);
     Some(Val::Num(Num::from_components(
         &comps,
-        deps.set(Facts::NZ, nz).set(Facts::NZ3, nz3),
+        deps.set(Facts::NZ, nz)
+            .set(Facts::NZ3, nz3)
+            .set(Facts::NN, nn),
     )))
+}
+
+/// Whether every entry of a matrix is known to be non-negative by its interval (a colour
+/// matrix, a constant): the product with a non-negative vector is then non-negative.
+fn non_negative_entries(cols: &[Num]) -> bool {
+    cols.iter().all(|c| c.comps().iter().all(|x| x.lo >= 0.0))
 }
 
 /// Row vector times matrix (`None`: a matrix whose columns are not numbers).
@@ -314,9 +401,11 @@ fn vector_times_matrix(v: &Num, m: &[Val], deps: Facts) -> Option<Val> {
         })
         .collect();
     let invertible = cols.iter().all(|c| c.facts.has(Facts::NZ));
+    let nn = non_negative_entries(&cols) && v.facts.has(Facts::NN);
     Some(Val::Num(Num::from_components(
         &comps,
-        deps.set(Facts::NZ, invertible && v.facts.has(Facts::NZ)),
+        deps.set(Facts::NZ, invertible && v.facts.has(Facts::NZ))
+            .set(Facts::NN, nn),
     )))
 }
 

@@ -133,7 +133,8 @@ impl Analysis {
     }
 
     /// The refinement of a load of `place`, if an enclosing condition bounds it.
-    pub(super) fn refined(&self, place: &Place, v: Val) -> Val {
+    /// (An `integer` value bounded by `count > 0` is at least 1.)
+    pub(super) fn refined(&self, place: &Place, v: Val, integer: bool) -> Val {
         let Val::Num(n) = v else { return v };
         let rs: Vec<Refinement> = self
             .refine
@@ -141,7 +142,8 @@ impl Analysis {
             .filter(|(p, _)| p == place)
             .map(|(_, r)| *r)
             .collect();
-        Val::Num(refine_num(n, &rs))
+        let r = refine_num(n, &rs);
+        Val::Num(if integer { integral(r) } else { r })
     }
 }
 
@@ -244,6 +246,29 @@ pub enum Refinement {
     Value(Interval),
     /// A vector's length is in this interval.
     Norm(Interval),
+}
+
+/// An integer value's bounds rounded inwards to integers: a strict bound (`count > 0`, kept as
+/// the next float above 0) becomes the next integer.
+pub fn integral(mut n: Num) -> Num {
+    if n.is_bottom() {
+        return n;
+    }
+    for c in &mut n.c[..n.n as usize] {
+        *c = Interval {
+            lo: c.lo.ceil(),
+            hi: c.hi.floor(),
+        };
+    }
+    if n.comps().iter().any(|c| c.lo > c.hi) {
+        return Num::bottom(n.n);
+    }
+    n.norm = if n.n == 1 {
+        n.c[0].abs()
+    } else {
+        crate::value::norm_of(n.comps())
+    };
+    n.settle()
 }
 
 /// `n` where the refinements hold (no value when they cannot: the guarded code does not run).

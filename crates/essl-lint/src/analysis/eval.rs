@@ -27,10 +27,16 @@ impl Analysis {
     pub(super) fn eval(&mut self, s: Site, h: Handle<E>) {
         let ty = s.ty(h);
         let e = &s.f.expressions[h];
-        let (val, place) = match self.variable(s, e, ty) {
+        let (val, place) = match self.variable(s, h, e, ty) {
             Some(vp) => vp,
             None => (self.operation(s, e, ty), None),
         };
+        if let E::Load { pointer } = *e {
+            if let Some(p) = self.functions[s.id].places[pointer.index()].clone() {
+                let v = self.load_version(&p);
+                self.functions[s.id].load_version[h.index()] = v;
+            }
+        }
         let ff = &mut self.functions[s.id];
         ff.values[h.index()] = val;
         ff.places[h.index()] = place;
@@ -45,7 +51,13 @@ impl Analysis {
 
     /// The value (and place) of a constant, an argument, a variable, a call's result, a part of
     /// a variable, or of anything the entry point computes; `None` for other operations.
-    fn variable(&self, s: Site, e: &E, ty: &TypeInner) -> Option<(Val, Option<Place>)> {
+    fn variable(
+        &self,
+        s: Site,
+        h: Handle<E>,
+        e: &E,
+        ty: &TypeInner,
+    ) -> Option<(Val, Option<Place>)> {
         let (module, id) = (s.module, s.id);
         let entry = self.functions[id].entry;
         let at = |root: Root| {
@@ -60,6 +72,10 @@ impl Analysis {
         let val = match e {
             E::Literal(l) => Val::Num(Num::constant(&[literal(l)])),
             E::Constant(c) => const_value(module, module.constants[*c].init),
+            // essl reads a variable it does not lower (one only dead code uses: an inactive
+            // input, uniform or sampler) as a zero with no span: a value the shader never
+            // computes, not a zero vector to report.
+            E::ZeroValue(_) if not_computed(s, h, ty) => Val::Bot,
             E::ZeroValue(_) => shape(module, ty, &|n, _| Num::constant(&vec![0.0; n as usize])),
             E::Override(_) => self.external(module, ty, Facts::UNIFORM),
             E::FunctionArgument(i) => {
@@ -71,6 +87,7 @@ impl Analysis {
                 } else if entry {
                     self.external(module, ty, Facts::INPUT)
                 } else {
+                    self.reads.borrow_mut().args.insert(id);
                     self.args[id].get(*i as usize).cloned().unwrap_or(Val::Any)
                 }
             }
@@ -107,11 +124,15 @@ impl Analysis {
             },
             E::Load { pointer } => match self.functions[id].places[pointer.index()].clone() {
                 Some(p) => {
-                    let v = self.load(module, &p, ty);
+                    let v = self
+                        .current_value(&p)
+                        .unwrap_or_else(|| self.load(module, &p, ty));
                     if self.refine.is_empty() {
                         v
                     } else {
-                        self.refined(&p, v)
+                        let integer =
+                            matches!(ty.scalar_kind(), Some(ScalarKind::Sint | ScalarKind::Uint));
+                        self.refined(&p, v, integer)
                     }
                 }
                 None => Self::unknown(module, ty, Facts::NONE),
@@ -207,14 +228,18 @@ impl Analysis {
     fn unary(&self, s: Site, ty: &TypeInner, op: Uo, expr: Handle<E>) -> Val {
         match (op, self.nm(s.id, expr)) {
             (Uo::Negate, Some(x)) => {
-                let keep = x.facts.only(
-                    Facts::NZ
-                        .with(Facts::NZ3)
-                        .with(Facts::UNIT)
-                        .with(Facts::DIFF)
-                        .with(Facts::EXT)
-                        .with(Facts::ALL_OR),
-                );
+                let keep = x
+                    .facts
+                    .only(
+                        Facts::NZ
+                            .with(Facts::NZ3)
+                            .with(Facts::UNIT)
+                            .with(Facts::DIFF)
+                            .with(Facts::EXT)
+                            .with(Facts::ALL_OR),
+                    )
+                    .set(Facts::NP, x.facts.has(Facts::NN))
+                    .set(Facts::NN, x.facts.has(Facts::NP));
                 let mut r = Num::from_components(&x.map(Interval::neg), keep);
                 r.norm = r.norm.meet(x.norm);
                 Val::Num(r.settle())
@@ -358,7 +383,7 @@ impl Analysis {
                     t
                 }
             }),
-            _ => x.comps().to_vec(),
+            _ => x.map(|c| c),
         };
         let keep = if kind == ScalarKind::Float {
             x.facts
@@ -367,4 +392,11 @@ impl Analysis {
         };
         Val::Num(Num::from_components(&comps, keep.without(Facts::DIFF)))
     }
+}
+
+/// Whether expression `h` (a `ZeroValue`) stands for a variable essl did not lower: no span,
+/// and not an integer (essl's own integer zeros, `0u - x`, have no span either).
+fn not_computed(s: Site, h: Handle<E>, ty: &TypeInner) -> bool {
+    let integer = matches!(ty.scalar_kind(), Some(ScalarKind::Sint | ScalarKind::Uint));
+    !integer && s.f.expressions.get_span(h) == naga::Span::default()
 }

@@ -95,7 +95,7 @@ impl Analysis {
             Mf::Exp | Mf::Exp2 | Mf::Log | Mf::Log2 | Mf::Sqrt | Mf::InverseSqrt | Mf::Pow => {
                 call.exponential()
             }
-            Mf::Step | Mf::SmoothStep | Mf::Mix | Mf::Fma => call.interpolation(),
+            Mf::Step | Mf::SmoothStep | Mf::Mix | Mf::Fma => call.interpolation(self),
             Mf::Dot
             | Mf::Cross
             | Mf::Length
@@ -173,7 +173,15 @@ impl Call<'_> {
                         fx.has(Facts::POS) || fy.has(Facts::POS),
                     )
                 };
-                let unit = fx.has(Facts::UNIT) && fy.has(Facts::UNIT);
+                // `min(x, 1.0)` of a non-negative x is in [0, 1] too.
+                let at_most_one = |n: &Num| n.comps().iter().all(|c| c.hi <= 1.0);
+                let unit = fx.has(Facts::UNIT) && fy.has(Facts::UNIT)
+                    || self.fun == Mf::Min
+                        && nn
+                        && (fx.has(Facts::UNIT)
+                            || fy.has(Facts::UNIT)
+                            || at_most_one(&x)
+                            || at_most_one(&y));
                 let facts = deps
                     .set(Facts::NN, nn)
                     .set(Facts::POS, pos)
@@ -298,15 +306,34 @@ impl Call<'_> {
         let (x, fx, deps) = (self.x, self.x.facts, self.deps);
         let nums = &self.nums;
         match self.fun {
-            Mf::Exp | Mf::Exp2 => self.unary(
-                if self.fun == Mf::Exp {
+            Mf::Exp | Mf::Exp2 => {
+                let g = if self.fun == Mf::Exp {
                     Interval::exp
                 } else {
                     Interval::exp2
-                },
-                true,
-                Facts::NN.with(Facts::POS).with(Facts::NZ),
-            ),
+                };
+                // The slack is for the GPU's approximation; every GPU's exponential is exact
+                // at 0 and increasing, so that of a value ≤ 0 stays ≤ 1 (`1.0 - exp(-k * d)`
+                // is not negative).
+                let comps = x.map(|c| {
+                    let r = g(c).slack(EPS);
+                    if c.hi <= 0.0 {
+                        Interval::new(r.lo, r.hi.min(1.0))
+                    } else {
+                        r
+                    }
+                });
+                // Of a value not positive whenever the external values are not negative
+                // (`exp(-k * d)`): in (0, 1] for those values too.
+                Val::Num(Num::from_components(
+                    &comps,
+                    Facts::NN
+                        .with(Facts::POS)
+                        .with(Facts::NZ)
+                        .set(Facts::UNIT, fx.has(Facts::NP))
+                        .with(deps),
+                ))
+            }
             Mf::Log | Mf::Log2 => self.unary(
                 if self.fun == Mf::Log {
                     Interval::log
@@ -346,7 +373,7 @@ impl Call<'_> {
     }
 
     /// `step`, `smoothstep`, `mix`, `fma`.
-    fn interpolation(&self) -> Val {
+    fn interpolation(&self, a: &Analysis) -> Val {
         let (x, fx, deps) = (self.x, self.x.facts, self.deps);
         let nums = &self.nums;
         match self.fun {
@@ -391,7 +418,12 @@ impl Call<'_> {
                         Interval::mix(pick(&x), pick(&b), pick(&t))
                     })
                     .collect();
-                let convex = t.comps().iter().all(|c| c.within(Interval::UNIT));
+                // A weight in [0, 1] but for rounding (`0.5 * dot(n, l) + 0.5`) still mixes.
+                let weight = Interval::new(-16.0 * EPS, 1.0 + 16.0 * EPS);
+                let convex = t.facts.has(Facts::NN.with(Facts::UNIT))
+                    || t.comps().iter().all(|c| c.within(weight))
+                    || a.monotone_range(self.s, self.args[2])
+                        .is_some_and(|r| r.within(weight));
                 let fb = b.facts;
                 let facts = Facts::NONE
                     .set(Facts::NN, convex && fx.has(Facts::NN) && fb.has(Facts::NN))
@@ -437,10 +469,31 @@ impl Call<'_> {
                 let by_comps = (0..x.n as usize).fold(Interval::point(0.0), |s, i| {
                     s.add(x.c[i].mul(y.c[i.min(y.n as usize - 1)]))
                 });
-                let m = x.norm.hi * y.norm.hi;
+                // A uniform or input vector dotted with a unit vector is taken to be a
+                // direction, as valid as the unit vector (`dot(normal, u_lightDirection)`):
+                // one of another length is the runtime check's business.
+                let unit = |n: &Num| {
+                    n.norm
+                        .within(Interval::new(1.0 - 4.0 * EPS, 1.0 + 4.0 * EPS))
+                };
+                let direction = |n: &Num| n.n > 1 && n.facts.has(Facts::EXT);
+                let m = if (unit(&x) && direction(&y)) || (unit(&y) && direction(&x)) {
+                    1.0
+                } else {
+                    x.norm.hi * y.norm.hi
+                };
                 let by_norm = Interval::new(-m, m).slack(slack);
                 let r = by_comps.meet(by_norm);
-                Val::Num(Num::scalar(if r.is_empty() { by_comps } else { r }, deps))
+                // A weighted sum of non-negative terms (`dot(u_attenuation, vec3(1.0, d, d * d))`,
+                // a luminance): one side not negative by its values, the other by its facts.
+                // Two directions (`dot(normalize(n), normalize(h))`) stay signed.
+                let by_values = |n: &Num| n.comps().iter().all(|c| c.lo >= 0.0);
+                let nn = (by_values(&x) && y.facts.has(Facts::NN))
+                    || (by_values(&y) && fx.has(Facts::NN));
+                Val::Num(Num::scalar(
+                    if r.is_empty() { by_comps } else { r },
+                    deps.set(Facts::NN, nn),
+                ))
             }
             Mf::Cross => {
                 let y = nums[1];
@@ -482,6 +535,18 @@ impl Call<'_> {
             }
             Mf::Normalize => {
                 let one = Interval::new(1.0 - EPS, 1.0 + EPS);
+                let points: Vec<f64> = x.comps().iter().filter_map(|c| c.as_point()).collect();
+                let len = points.iter().map(|p| p * p).sum::<f64>().sqrt();
+                if points.len() == x.n as usize && len > 0.0 {
+                    // A constant direction: its components, up to rounding.
+                    let comps: Vec<Interval> = points
+                        .iter()
+                        .map(|p| Interval::point(p / len).slack(EPS))
+                        .collect();
+                    let mut r = Num::from_components(&comps, Facts::NZ.with(deps));
+                    r.norm = one;
+                    return Val::Num(r.settle());
+                }
                 let comps = x.map(|c| {
                     let lo = if c.lo >= 0.0 { 0.0 } else { -one.hi };
                     let hi = if c.hi <= 0.0 { 0.0 } else { one.hi };

@@ -179,6 +179,9 @@ impl Analysis {
     }
 
     pub(super) fn store(&mut self, module: &naga::Module, place: &Place, v: &Val) {
+        if self.calls.walking() {
+            return; // a walk for one call changes no cell
+        }
         if let Root::Global(g) = place.root {
             let h = module
                 .global_variables
@@ -193,6 +196,7 @@ impl Analysis {
         let mut cell = self.cell(module, place.root);
         if write(&mut cell, &place.path, v, self.widening) {
             self.changed = true;
+            self.stale |= self.reads.borrow().roots.contains(&place.root);
         }
         self.memory.insert(place.root, cell);
     }
@@ -209,7 +213,15 @@ impl Analysis {
                 return self.external(module, ty, Facts::UNIFORM);
             }
         }
+        self.note_read(place.root);
         read(&self.cell(module, place.root), &place.path)
+    }
+
+    /// Records that a user function read the cell of `root` this round.
+    pub(super) fn note_read(&self, root: Root) {
+        if !self.walking_entry {
+            self.reads.borrow_mut().roots.insert(root);
+        }
     }
 
     /// An external value of type `ty` (a uniform, an input), depending on `deps`.

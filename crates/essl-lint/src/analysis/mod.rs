@@ -16,20 +16,27 @@
 //!
 //! [`Analysis`]'s `impl` is spread over the submodules by concern, which is why they use one
 //! another's methods:
+//! - `calls`: the result of a call from that call's own arguments (the last round);
 //! - `statements`: the walk over a function's statements (emits, stores, calls, returns, the
 //!   `if` conditions that refine what the branches load);
 //! - `memory`: the cells variables hold, and the shapes of external and unknown values;
+//! - `flow`: what a variable holds at each point of the walk (strong updates);
 //! - `conditions`: what a comparison says about the values it compares;
 //! - `eval`: the value of each expression;
 //! - `same`: whether two expressions certainly have the same value;
+//! - `relational`: relations intervals lose (an offset at most a vector's smallest component, a
+//!   monotone function of one variable);
 //! - `binary`: the arithmetic operators, on numbers and on matrices;
 //! - `math`: the built-in functions, by family.
 
 mod binary;
+mod calls;
 mod conditions;
 mod eval;
+mod flow;
 mod math;
 mod memory;
+mod relational;
 mod same;
 mod statements;
 
@@ -40,7 +47,7 @@ use naga::{Expression as E, Function, Handle};
 use crate::value::{Num, Val};
 
 pub(crate) use conditions::condition_atoms;
-pub use conditions::{refine_num, relation, Refinement};
+pub use conditions::{integral, refine_num, relation, Refinement};
 pub use memory::{const_value, literal};
 pub(crate) use statements::diverges;
 
@@ -111,6 +118,9 @@ pub struct FnFacts {
     pub stores: HashMap<usize, Vec<Handle<E>>>,
     /// Whether this is an entry point (the wrapper essl generates, not user code).
     pub entry: bool,
+    /// For each load, the version of the variable it reads (0: not followed); two loads with
+    /// the same version read the same value.
+    pub load_version: Vec<u32>,
 }
 
 /// The analysis of a whole module.
@@ -128,6 +138,29 @@ pub struct Analysis {
     emit_counter: u32,
     /// What the enclosing `if` conditions say about scalar places, where they hold.
     refine: Vec<(Place, Refinement)>,
+    /// What the walk knows variables hold at the current statement ([`flow`]).
+    current: flow::Current,
+    /// The private globals each function may write.
+    global_writes: Vec<rustc_hash::FxHashSet<usize>>,
+    /// The last version [`flow`] gave a variable.
+    version_counter: u32,
+    /// The results of calls from their own arguments ([`calls`]).
+    calls: calls::Calls,
+    /// What user functions read this round (cells, parameters, call results): a later change
+    /// to one of them in the same round makes the round `stale`.
+    reads: std::cell::RefCell<Reads>,
+    /// Whether something read this round changed after it was read (another round is needed).
+    stale: bool,
+    /// Whether the walk is in an entry point (whose reads only copy outputs).
+    walking_entry: bool,
+}
+
+/// What user functions read in one round of the walk.
+#[derive(Debug, Default)]
+struct Reads {
+    roots: rustc_hash::FxHashSet<Root>,
+    args: rustc_hash::FxHashSet<usize>,
+    results: rustc_hash::FxHashSet<usize>,
 }
 
 /// The function with index `id` (module functions first, then entry points).
@@ -161,6 +194,8 @@ pub fn function_info<'a>(
 struct Site<'a> {
     /// The module.
     module: &'a naga::Module,
+    /// The validator's information about the module.
+    info: &'a naga::valid::ModuleInfo,
     /// The validator's information about the function (expression types).
     finfo: &'a naga::valid::FunctionInfo,
     /// The function.
@@ -177,8 +212,15 @@ impl<'a> Site<'a> {
 }
 
 impl Analysis {
-    /// Analyses a validated module.
-    pub fn run(module: &naga::Module, info: &naga::valid::ModuleInfo, mode: Mode) -> Analysis {
+    /// Analyses a validated module; `per_call`: with the last round that gives each call the
+    /// result of its own arguments (what signs and ranges of results need; magnitudes of
+    /// ordinary values do not).
+    pub fn run_for(
+        module: &naga::Module,
+        info: &naga::valid::ModuleInfo,
+        mode: Mode,
+        per_call: bool,
+    ) -> Analysis {
         let count = module.functions.len() + module.entry_points.len();
         let mut a = Analysis {
             mode,
@@ -192,6 +234,13 @@ impl Analysis {
             widening: false,
             emit_counter: 0,
             refine: Vec::new(),
+            current: flow::Current::default(),
+            global_writes: flow::global_writes(module),
+            version_counter: 0,
+            calls: calls::Calls::default(),
+            reads: Default::default(),
+            stale: false,
+            walking_entry: false,
         };
         for id in 0..count {
             let f = function(module, id);
@@ -212,6 +261,8 @@ impl Analysis {
         }
         for round in 0..MAX_ROUNDS {
             a.changed = false;
+            a.stale = false;
+            a.reads.replace(Reads::default());
             a.widening = round >= WIDEN_AFTER;
             // Callers after callees is the order naga keeps; entry points last. Walking the
             // entry points first gives the inputs their values before `main_` reads them.
@@ -221,9 +272,24 @@ impl Analysis {
             for id in order {
                 a.run_function(module, info, id);
             }
-            if !a.changed {
+            // Nothing changed, or nothing that was read changed after it was read: the next
+            // round would read and compute the same (one round for straight-line code).
+            if !a.changed || !a.stale {
                 break;
             }
+        }
+        // At the fixpoint, one more round gives each call the result of its own arguments
+        // (when some call passes any).
+        if !per_call || !calls::with_arguments(module) {
+            return a;
+        }
+        a.calls.precise = true;
+        a.widening = false;
+        let order: Vec<usize> = (module.functions.len()..count)
+            .chain(0..module.functions.len())
+            .collect();
+        for id in order {
+            a.run_function(module, info, id);
         }
         a
     }

@@ -36,7 +36,9 @@ impl Analysis {
                     }
                 }
                 let same_emit = ff.emit[a.index()] != 0 && ff.emit[a.index()] == ff.emit[b.index()];
+                let version = ff.load_version[a.index()];
                 same_emit
+                    || version != 0 && version == ff.load_version[b.index()]
                     || self.functions[id].values[a.index()].facts().has(Facts::EXT)
                         && matches!(x.root, Root::Global(_))
             }

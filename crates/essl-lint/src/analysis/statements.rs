@@ -7,6 +7,7 @@ use rustc_hash::FxHashMap as HashMap;
 
 use naga::{Block, Expression as E, Function, Handle, Statement};
 
+use super::flow;
 use super::memory::pointee;
 use super::{function, function_info, Analysis, Place, Root, Site};
 use crate::value::Val;
@@ -22,14 +23,17 @@ impl Analysis {
     ) {
         let f = function(module, id);
         let n = f.expressions.len();
+        self.walking_entry = id >= module.functions.len();
         {
             let ff = &mut self.functions[id];
             ff.values = vec![Val::Bot; n];
             ff.places = vec![None; n];
             ff.emit = vec![0; n];
+            ff.load_version = vec![0; n];
         }
         let s = Site {
             module,
+            info,
             finfo: function_info(module, info, id),
             f,
             id,
@@ -39,17 +43,16 @@ impl Analysis {
                 self.eval(s, h);
             }
         }
+        self.current.clear();
         for (lh, l) in f.local_variables.iter() {
             if let Some(init) = l.init {
                 let v = self.functions[id].values[init.index()].clone();
-                self.store(
-                    module,
-                    &Place {
-                        root: Root::Local(id, lh.index()),
-                        path: Vec::new(),
-                    },
-                    &v,
-                );
+                let place = Place {
+                    root: Root::Local(id, lh.index()),
+                    path: Vec::new(),
+                };
+                self.store(module, &place, &v);
+                self.assign(module, &place, &v);
             }
         }
         self.block(s, &f.body);
@@ -74,38 +77,81 @@ impl Analysis {
                     }
                 }
                 Statement::Block(b) => self.block(s, b),
-                Statement::Switch { cases, .. } => {
-                    for c in cases {
-                        self.block(s, &c.body);
-                    }
-                }
+                Statement::Switch { cases, .. } => self.switch(s, cases),
                 Statement::Loop {
                     body, continuing, ..
                 } => {
+                    self.forget_written(s.f, s.id, &[body, continuing]);
+                    let entry = self.current.clone();
                     self.block(s, body);
+                    self.current = entry.clone();
                     self.block(s, continuing);
+                    self.current = entry;
                 }
                 Statement::Return { value: Some(v) } => {
                     let val = self.functions[s.id].values[v.index()].clone();
                     let mut changed = false;
-                    Self::join_into(&mut self.results[s.id], &val, self.widening, &mut changed);
-                    self.changed |= changed;
+                    let slot = match self.calls.results.last_mut() {
+                        Some(r) => r,
+                        None => &mut self.results[s.id],
+                    };
+                    Self::join_into(slot, &val, self.widening, &mut changed);
+                    if !self.calls.walking() {
+                        self.changed |= changed;
+                        self.stale |= changed && self.reads.borrow().results.contains(&s.id);
+                    }
+                    break;
                 }
                 Statement::Store { pointer, value } => {
                     if let Some(p) = self.functions[s.id].places[pointer.index()].clone() {
                         let v = self.functions[s.id].values[value.index()].clone();
                         self.store(s.module, &p, &v);
+                        self.assign(s.module, &p, &v);
                     }
                 }
                 Statement::Call {
                     function: callee,
                     arguments,
                     result,
-                } => self.call(s, callee.index(), arguments, *result),
+                } => {
+                    self.call(s, callee.index(), arguments, *result);
+                    self.forget_call(s.f, s.id, callee.index(), arguments);
+                }
+                Statement::Return { .. }
+                | Statement::Kill
+                | Statement::Break
+                | Statement::Continue => break,
                 _ => {}
             }
         }
         self.refine.truncate(depth);
+    }
+
+    /// Walks the cases of a `switch`, each from the state before it when it is
+    /// self-contained, and joins the states they leave it with.
+    fn switch(&mut self, s: Site, cases: &[naga::SwitchCase]) {
+        if !cases.iter().all(flow::self_contained) {
+            let bodies: Vec<&Block> = cases.iter().map(|c| &c.body).collect();
+            self.forget_written(s.f, s.id, &bodies);
+        }
+        let entry = self.current.clone();
+        let mut after: Option<flow::Current> = None;
+        for c in cases {
+            self.current = entry.clone();
+            self.block(s, &c.body);
+            let leaves = !matches!(
+                c.body.last(),
+                Some(Statement::Return { .. } | Statement::Kill | Statement::Continue)
+            );
+            if leaves {
+                let end = std::mem::take(&mut self.current);
+                after = Some(match after {
+                    None => end,
+                    Some(a) => flow::merge(a, &end),
+                });
+            }
+        }
+        self.current = after.unwrap_or(entry);
     }
 
     /// Walks both branches of an `if`, each under its condition; after `if (c) { …; return; }`
@@ -122,12 +168,23 @@ impl Analysis {
         fn inside(blk: &Block) -> Vec<&Statement> {
             blk.iter().collect()
         }
+        let before = self.current.clone();
+        let mut after: Option<flow::Current> = None;
         for (blk, polarity) in [(accept, true), (reject, false)] {
+            self.current = before.clone();
             let rs = self.refinements(s, condition, polarity, &[&inside(blk)]);
             self.refine.extend(rs);
             self.block(s, blk);
             self.refine.truncate(d);
+            if !diverges(blk) {
+                let end = std::mem::take(&mut self.current);
+                after = Some(match after {
+                    None => end,
+                    Some(a) => flow::merge(a, &end),
+                });
+            }
         }
+        self.current = after.unwrap_or(before);
         let (ad, rd) = (diverges(accept), diverges(reject));
         if ad != rd {
             let other = if ad { reject } else { accept };
@@ -149,21 +206,31 @@ impl Analysis {
                     path: Vec::new(),
                 };
                 let ty = pointee(module, s.ty(*a));
-                let mine = self.load(module, &p, &ty);
+                let mine = self
+                    .current_value(&p)
+                    .unwrap_or_else(|| self.load(module, &p, &ty));
                 self.store(module, &arg_root, &mine);
+                self.note_read(Root::Arg(c, i));
                 let theirs = self.cell(module, Root::Arg(c, i));
                 self.store(module, &p, &theirs);
-            } else {
+            } else if !self.calls.walking() {
                 let v = self.functions[id].values[a.index()].clone();
                 let mut changed = false;
                 if let Some(slot) = self.args[c].get_mut(i) {
                     Self::join_into(slot, &v, self.widening, &mut changed);
                 }
                 self.changed |= changed;
+                self.stale |= changed && self.reads.borrow().args.contains(&c);
             }
         }
         if let Some(r) = result {
-            self.functions[id].values[r.index()] = self.results[c].clone();
+            let v = self.call_result(s, c, arguments).unwrap_or_else(|| {
+                if !self.walking_entry {
+                    self.reads.borrow_mut().results.insert(c);
+                }
+                self.results[c].clone()
+            });
+            self.functions[id].values[r.index()] = v;
         }
     }
 }

@@ -127,7 +127,7 @@ impl Extractor<'_> {
         let cx = self.cx;
         let (e0, e1) = (cx.operand(f, h, arg), cx.operand(f, h, a1));
         let constant = |x: Handle<E>| {
-            cx.sound
+            cx.sound()
                 .num(id, x)
                 .is_some_and(|v| v.comps().iter().all(|c| c.as_point().is_some()))
         };
@@ -187,7 +187,7 @@ impl Extractor<'_> {
         if dspan.is_empty() {
             return;
         }
-        let def = resolve(f, &cx.sound, id, d);
+        let def = resolve(f, cx.sound(), id, d);
         for ctx in self.contexts(id, 0) {
             let Some(t) = self.term(id, &ctx, d) else {
                 continue;
@@ -252,7 +252,7 @@ impl Extractor<'_> {
         if xspan.is_empty() {
             return;
         }
-        let def = resolve(f, &cx.sound, id, x);
+        let def = resolve(f, cx.sound(), id, x);
         let cross = match f.expressions[def] {
             E::Math {
                 fun: Mf::Cross,

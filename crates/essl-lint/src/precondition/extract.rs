@@ -139,7 +139,7 @@ impl<'a> Extractor<'a> {
             E::Literal(Literal::Bool(_)) => return None,
             E::Literal(l) => X::Num(Term::Const(Value::scalar(literal(l)))),
             E::Constant(_) | E::ZeroValue(_) => {
-                let n = self.cx.sound.num(id, h)?;
+                let n = self.cx.sound().num(id, h)?;
                 let c: Option<Vec<f64>> = n.comps().iter().map(|i| i.as_point()).collect();
                 X::Num(Term::Const(Value::new(&c?)))
             }
@@ -239,7 +239,7 @@ impl<'a> Extractor<'a> {
     fn index_step(&self, id: usize, index: Handle<E>) -> Step {
         match self
             .cx
-            .sound
+            .sound()
             .num(id, index)
             .and_then(|n| n.hull().as_point())
         {
@@ -272,7 +272,7 @@ impl<'a> Extractor<'a> {
                     break X::Place(UniformRef::new(""), gv.ty);
                 }
                 E::LocalVariable(l) => {
-                    let v = *self.cx.sound.functions[id].single_store.get(&l.index())?;
+                    let v = *self.cx.sound().functions[id].single_store.get(&l.index())?;
                     break self.value(id, ctx, v, d)?;
                 }
                 _ => return None,

@@ -32,6 +32,18 @@ declare_rule! {
     /// ```
     /// The fix is suggested (`clamp(…, -1.0, 1.0)`); it changes nothing where the argument was in range.
     ///
+    /// ## What it does not flag
+    /// - An argument the shader clamps (`clamp(c, -1.0, 1.0)`, `min(max(c, -1.0), 1.0)`, `sin`/`cos` of
+    ///   anything) or a guard keeps in range (`abs(c) <= 1.0 ? acos(c) : 0.0`).
+    /// - A uniform or input as such (`acos(u_coneCos)`): the runtime check validates uniform values.
+    ///
+    /// A dot product of unit vectors is in [-1, 1] in exact arithmetic only: it is reported, with a
+    /// message that says rounding is the cause and the clamp as the fix.
+    ///
+    /// Severity: a warning when values the shader itself produces reach the hazard; a note, naming
+    /// the uniform, when one uniform alone (with constants) does — the hazard then needs that value out
+    /// of the range the shader was written for, and essl-gl's validation mode checks it at draw time.
+    ///
     /// ## References
     /// - GLSL ES 3.00 specification, §8.1 Angle and Trigonometry Functions: acos "Results are undefined
     ///   if |x| > 1."

@@ -27,6 +27,19 @@ declare_rule! {
     /// float lat = asin(clamp(normalize(p).y, -1.0, 1.0));
     /// ```
     ///
+    /// ## What it does not flag
+    /// - An argument the shader clamps (`clamp(c, -1.0, 1.0)`), `sin`/`cos` of anything, or one a guard
+    ///   keeps in range.
+    /// - A uniform or input as such: the runtime check validates uniform values.
+    ///
+    /// A component of a normalised vector or a dot product of unit vectors is in [-1, 1] in exact
+    /// arithmetic only: it is reported, with a message that says rounding is the cause and the clamp as
+    /// the fix.
+    ///
+    /// Severity: a warning when values the shader itself produces reach the hazard; a note, naming
+    /// the uniform, when one uniform alone (with constants) does — the hazard then needs that value out
+    /// of the range the shader was written for, and essl-gl's validation mode checks it at draw time.
+    ///
     /// ## References
     /// - GLSL ES 3.00 specification, §8.1 Angle and Trigonometry Functions: asin "Results are undefined
     ///   if |x| > 1."

@@ -36,8 +36,8 @@ pub struct Cx<'a> {
     pub module: &'a naga::Module,
     /// naga's validation information (expression types).
     pub info: &'a naga::valid::ModuleInfo,
-    /// The analysis with any external value.
-    pub sound: Analysis,
+    /// The analysis with any external value: computed on first use ([`Cx::sound`]).
+    sound: std::cell::OnceCell<Analysis>,
     /// The analysis with ordinary external values: computed on first use ([`Cx::typical`]),
     /// since only low-precision arithmetic asks for it.
     typical: std::cell::OnceCell<Analysis>,
@@ -45,13 +45,22 @@ pub struct Cx<'a> {
     pub prec: Precisions,
     /// Private globals that user functions write.
     pub written: HashSet<usize>,
+    /// Calls, returns and stores, for [`Cx::origin`]: computed on first use.
+    pub(crate) flows: std::cell::OnceCell<super::origin::Flows>,
+    /// Whether the sound analysis gives each call its own result.
+    per_call: bool,
 }
 
 impl<'a> Cx<'a> {
     /// Analyses a shader that compiled; `None` when it has no naga IR.
     pub fn new(shader: &'a Shader) -> Option<Cx<'a>> {
+        Cx::with_precisions(shader, Precisions::of(&shader.module), true)
+    }
+
+    /// [`Cx::new`] with the precisions already looked up; `per_call`: whether the sound
+    /// analysis gives each call its own result.
+    pub fn with_precisions(shader: &'a Shader, prec: Precisions, per_call: bool) -> Option<Cx<'a>> {
         let (module, info) = shader.naga.as_ref()?;
-        let sound = Analysis::run(module, info, Mode::Sound);
         let mut written = HashSet::default();
         for (_, f) in module.functions.iter() {
             collect_written(f, &f.body, &mut written);
@@ -60,18 +69,28 @@ impl<'a> Cx<'a> {
             file: &shader.file,
             module,
             info,
-            sound,
+            sound: std::cell::OnceCell::new(),
             typical: std::cell::OnceCell::new(),
-            prec: Precisions::of(&shader.module),
+            prec,
             written,
+            flows: std::cell::OnceCell::new(),
+            per_call,
         })
+    }
+
+    /// The analysis with any external value, which every rule reads (`mediump-overflow` for
+    /// the shape of an expression only: there each call's own result is left out unless a rule
+    /// that reads signs and ranges has something to look at).
+    pub fn sound(&self) -> &Analysis {
+        self.sound
+            .get_or_init(|| Analysis::run_for(self.module, self.info, Mode::Sound, self.per_call))
     }
 
     /// The analysis with ordinary external values (`[0, TYPICAL]`, matrix entries and texels in
     /// `[0, 1]`).
     pub fn typical(&self) -> &Analysis {
         self.typical
-            .get_or_init(|| Analysis::run(self.module, self.info, Mode::Typical))
+            .get_or_init(|| Analysis::run_for(self.module, self.info, Mode::Typical, false))
     }
 
     /// The user's functions (not the entry-point wrapper): (index, function).
@@ -147,7 +166,7 @@ impl<'a> Cx<'a> {
 
     /// The symbolic view of function `id`.
     pub fn sym(&'a self, id: usize, f: &'a Function) -> Sym<'a> {
-        Sym::new(self.module, f, id, &self.sound, &self.written)
+        Sym::new(self.module, f, id, self.sound(), &self.written)
     }
 
     /// Whether an expression has no side effects and no calls (so that a fix may repeat it).
@@ -200,7 +219,7 @@ impl<'a> Cx<'a> {
             },
             _ => None,
         };
-        let r = symbolic::resolve(f, &self.sound, id, h);
+        let r = symbolic::resolve(f, self.sound(), id, h);
         let kind = match f.expressions[r] {
             E::Math { fun: Mf::Dot, .. } => Some("a dot product"),
             E::Math { fun: Mf::Cross, .. } => Some("a cross product"),

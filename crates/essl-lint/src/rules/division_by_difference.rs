@@ -11,8 +11,8 @@ use crate::Level;
 
 declare_rule! {
     /// ## What it does
-    /// Reports a division whose divisor is a difference that depends on uniforms and that nothing in
-    /// the shader keeps away from zero: `(d - u_outerLimit) / (u_innerLimit - u_outerLimit)`, or the
+    /// Reports a division whose divisor is a difference of per-draw values (uniforms and constants)
+    /// that nothing in the shader keeps away from zero: `(d - u_outerLimit) / (u_innerLimit - u_outerLimit)`, or the
     /// same through a local (`float limitRange = u_innerLimit - u_outerLimit; … / limitRange`). A
     /// divisor the shader guards (`max(limitRange, 1e-4)`) or can order itself (`u_r + 0.1 - u_r`) is
     /// not reported.
@@ -40,6 +40,19 @@ declare_rule! {
     /// The suggested fix guards the divisor with `max(…, 1e-4)` (a floor above `mediump`'s smallest
     /// normal number, 6.1e-5), which also makes a swapped pair behave like a hard edge. Where the
     /// difference may legitimately be negative, guard its magnitude instead.
+    ///
+    /// ## What it does not flag
+    /// - A divisor the shader keeps away from 0: `max(d, 1e-4)`, `d + 0.1` of a non-negative `d`, a
+    ///   difference it orders itself (`u_r + 0.1 - u_r`), or one an enclosing condition says is not 0
+    ///   (`if (u_a != u_b)`, `abs(d) > 1e-6 ? x / d : 0.0`).
+    /// - A divisor with a per-pixel part, zero at isolated pixels at most: the depth linearisation
+    ///   `far + near - z * (far - near)` (positive for `z` in [-1, 1]), a Fresnel term
+    ///   `1.0 - Ems * Favg`; and integer divisions.
+    ///
+    /// Severity: a warning when values the shader itself produces reach the hazard; a note, naming
+    /// the uniform, when one uniform alone (with constants) does — the hazard then needs that value out
+    /// of the range the shader was written for, and essl-gl's validation mode checks it at draw time. (`x / (u_resolution - 1.0)` needs `u_resolution == 1`). A difference of two uniforms
+    /// a user sets independently (`cutOff - outerCutOff`, `far - near`) gives a warning.
     ///
     /// ## References
     /// - Article 001 (webgl2fundamentals, spot lights), the note after the `limitRange` diff.
@@ -69,12 +82,15 @@ fn check(cx: &Cx, out: &mut Vec<Diagnostic>) {
                 continue;
             }
             let d = cx.operand(f, h, right);
-            let Some(v) = cx.sound.num(id, d) else {
+            let Some(v) = cx.sound().num(id, d) else {
                 continue;
             };
+            // A difference of per-draw values: one with a per-pixel part (a depth, a ray) is
+            // zero at isolated pixels at most, not for the whole draw.
             if cx.kind(id, d) != Some(ScalarKind::Float)
                 || !v.facts.has(Facts::DIFF)
                 || !v.facts.any(Facts::UNIFORM)
+                || v.facts.any(Facts::INPUT.with(Facts::TEXTURE))
             {
                 continue;
             }
@@ -101,7 +117,7 @@ fn check(cx: &Cx, out: &mut Vec<Diagnostic>) {
             )
             .with_label(format!("{what} is 0 when the uniforms are equal"))
             .with_help("guard the divisor");
-            let def = resolve(f, &cx.sound, id, d);
+            let def = resolve(f, cx.sound(), id, d);
             let def_span = cx.span(f, def);
             if def != d
                 && !def_span.is_empty()
@@ -120,7 +136,7 @@ fn check(cx: &Cx, out: &mut Vec<Diagnostic>) {
                 span,
                 format!("max({}, 1e-4)", cx.text(span)),
             ));
-            out.push(diag);
+            out.push(cx.grade(diag, &[(id, d)]));
         }
     }
 }

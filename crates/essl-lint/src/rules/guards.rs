@@ -10,6 +10,7 @@ use naga::{
 use super::context::{users, User};
 use super::Cx;
 use crate::analysis::{diverges, refine_num, relation, Refinement};
+use crate::interval::Interval;
 use crate::symbolic;
 use crate::value::Num;
 
@@ -114,7 +115,7 @@ impl Cx<'_> {
         }
         let mut g = Guards::default();
         for (c, pol) in conds {
-            g.facts.extend(self.sound.conditions(f, id, c, pol));
+            g.facts.extend(self.sound().conditions(f, id, c, pol));
             self.relations(f, id, c, pol, &mut g);
         }
         g
@@ -153,7 +154,7 @@ impl Cx<'_> {
         g.relations.push((op, left, right));
         // `x != 0.0`, `abs(x) > c ≥ 0`, `x > c ≥ 0`, `x < c ≤ 0`: x is not 0.
         for (x, b, x_left) in [(left, right, true), (right, left, false)] {
-            let Some(bound) = self.sound.num(id, b).filter(|n| n.n == 1).map(|n| n.c[0]) else {
+            let Some(bound) = self.sound().num(id, b).filter(|n| n.n == 1).map(|n| n.c[0]) else {
                 continue;
             };
             let Some(rel) = relation(op, true, x_left, bound) else {
@@ -174,22 +175,94 @@ impl Cx<'_> {
         }
     }
 
-    /// `x`'s value under the guards (`None`: no value, or the guarded code cannot run).
+    /// `x`'s value under the guards (`None`: no value, or the guarded code cannot run): the
+    /// guards bound `x` itself, or a value `x` is computed from (`x < 0.0 ? -pow(-x, p) :
+    /// pow(x, p)`: under `x < 0.0`, `-x` is positive).
     pub fn refined(&self, f: &Function, id: usize, x: Handle<E>, g: &Guards) -> Option<Num> {
-        let n = *self.sound.num(id, x)?;
+        let n = *self.sound().num(id, x)?;
         let rs: Vec<Refinement> = g
             .facts
             .iter()
-            .filter(|(s, _)| self.sound.same(f, id, *s, x))
+            .filter(|(s, _)| self.sound().same(f, id, *s, x))
             .map(|(_, r)| *r)
             .collect();
-        let r = refine_num(n, &rs);
-        (!r.is_bottom()).then_some(r)
+        let mut r = refine_num(n, &rs);
+        if matches!(
+            self.kind(id, x),
+            Some(naga::ScalarKind::Sint | naga::ScalarKind::Uint)
+        ) {
+            r = crate::analysis::integral(r);
+        }
+        if r.is_bottom() {
+            return None;
+        }
+        if r.n == 1 && rs.is_empty() && !g.facts.is_empty() {
+            if let Some(i) = self.refined_scalar(f, id, x, g, 0) {
+                r.c[0] = r.c[0].meet(i);
+                if r.c[0].is_empty() {
+                    return None;
+                }
+                r.norm = r.c[0].abs();
+                r = r.settle();
+            }
+        }
+        Some(r)
+    }
+
+    /// The range of scalar `x` when the guards bound a value it is computed from through
+    /// negation and arithmetic (`None`: they bound none).
+    fn refined_scalar(
+        &self,
+        f: &Function,
+        id: usize,
+        x: Handle<E>,
+        g: &Guards,
+        depth: u32,
+    ) -> Option<Interval> {
+        let hull = |h: Handle<E>| self.sound().num(id, h).filter(|n| n.n == 1).map(|n| n.c[0]);
+        let own = hull(x)?;
+        let direct: Vec<Interval> = g
+            .facts
+            .iter()
+            .filter(|(s, _)| self.sound().same(f, id, *s, x))
+            .filter_map(|(_, r)| match r {
+                Refinement::Value(i) => Some(*i),
+                Refinement::Norm(_) => None,
+            })
+            .collect();
+        if !direct.is_empty() {
+            return Some(direct.iter().fold(own, |a, i| a.meet(*i)));
+        }
+        if depth >= 4 {
+            return None;
+        }
+        let sub = |h: Handle<E>| self.refined_scalar(f, id, h, g, depth + 1);
+        match f.expressions[symbolic::resolve(f, self.sound(), id, x)] {
+            E::Unary {
+                op: naga::UnaryOperator::Negate,
+                expr,
+            } => sub(expr).map(Interval::neg),
+            E::Binary { op, left, right } => {
+                let (a, b) = (sub(left), sub(right));
+                if a.is_none() && b.is_none() {
+                    return None;
+                }
+                let (a, b) = (a.or_else(|| hull(left))?, b.or_else(|| hull(right))?);
+                match op {
+                    Bo::Add => Some(a.add(b)),
+                    Bo::Subtract => Some(a.sub(b)),
+                    Bo::Multiply => Some(a.mul(b)),
+                    Bo::Divide => Some(a.div(b)),
+                    _ => None,
+                }
+            }
+            _ => None,
+        }
     }
 
     /// Whether the guards say `a < b`.
     pub fn ordered(&self, f: &Function, id: usize, a: Handle<E>, b: Handle<E>, g: &Guards) -> bool {
-        let same = |x: Handle<E>, y: Handle<E>| self.sound.same(f, id, x, y);
+        let same = |x: Handle<E>, y: Handle<E>| self.sound().same(f, id, x, y);
         g.relations.iter().any(|&(op, l, r)| match op {
             Bo::Less => same(l, a) && same(r, b),
             Bo::Greater => same(l, b) && same(r, a),
@@ -199,11 +272,11 @@ impl Cx<'_> {
 
     /// Whether the guards say `x != 0`, or `a != b` for `x = a - b`.
     pub fn nonzero(&self, f: &Function, id: usize, x: Handle<E>, g: &Guards) -> bool {
-        let same = |p: Handle<E>, q: Handle<E>| self.sound.same(f, id, p, q);
+        let same = |p: Handle<E>, q: Handle<E>| self.sound().same(f, id, p, q);
         if g.nonzero.iter().any(|&y| same(y, x)) {
             return true;
         }
-        let r = symbolic::resolve(f, &self.sound, id, x);
+        let r = symbolic::resolve(f, self.sound(), id, x);
         let E::Binary {
             op: Bo::Subtract,
             left,

@@ -21,7 +21,7 @@ pub(super) fn check(cx: &Cx, out: &mut Vec<Diagnostic>, which: Mf, rule: &Rule) 
                 continue;
             }
             let x = cx.operand(f, h, arg);
-            let Some(v) = cx.sound.num(id, x) else {
+            let Some(v) = cx.sound().num(id, x) else {
                 continue;
             };
             let i = v.hull();
@@ -39,7 +39,7 @@ pub(super) fn check(cx: &Cx, out: &mut Vec<Diagnostic>, which: Mf, rule: &Rule) 
             let what = cx.what(f, id, x);
             let rounding = i.within(Interval::new(-1.0001, 1.0001));
             let dot = matches!(
-                f.expressions[resolve(f, &cx.sound, id, x)],
+                f.expressions[resolve(f, cx.sound(), id, x)],
                 E::Math { fun: Mf::Dot, .. }
             );
             let label = if rounding {
@@ -51,18 +51,19 @@ pub(super) fn check(cx: &Cx, out: &mut Vec<Diagnostic>, which: Mf, rule: &Rule) 
             } else {
                 format!("{what} can be outside [-1, 1]: {}", describe(i))
             };
-            let mut d = Diagnostic::rule_warning(
-                rule.id,
+            let message = if rounding || dot {
+                format!("`{name}` argument is in [-1, 1] only in exact arithmetic: rounding can push it past ±1, where `{name}` is undefined (NaN)")
+            } else {
                 format!(
                     "`{name}` argument can be outside [-1, 1], where `{name}` is undefined (NaN)"
-                ),
-                span,
-            )
-            .with_label(label)
-            .with_note(format!(
-                "GLSL ES 3.00 §8.1: {name}(x) is undefined if |x| > 1"
-            ))
-            .with_help("clamp the argument to [-1, 1]");
+                )
+            };
+            let mut d = Diagnostic::rule_warning(rule.id, message, span)
+                .with_label(label)
+                .with_note(format!(
+                    "GLSL ES 3.00 §8.1: {name}(x) is undefined if |x| > 1"
+                ))
+                .with_help("clamp the argument to [-1, 1]");
             if !span.is_empty() {
                 d = d.with_fix(Fix::suggested(
                     "wrap the argument in `clamp(…, -1.0, 1.0)`",
@@ -70,7 +71,7 @@ pub(super) fn check(cx: &Cx, out: &mut Vec<Diagnostic>, which: Mf, rule: &Rule) 
                     format!("clamp({}, -1.0, 1.0)", cx.text(span)),
                 ));
             }
-            out.push(d);
+            out.push(cx.grade(d, &[(id, x)]));
         }
     }
 }

@@ -51,6 +51,16 @@ declare_rule! {
     /// Declare the operands (or the variable) `highp`, or rescale the computation (work in kilometres,
     /// divide before multiplying). There is no mechanical fix.
     ///
+    /// ## What it does not flag
+    /// - Operations in `highp`, and products of different parameters (their scale is the parameters',
+    ///   which the runtime check sees).
+    /// - An overflow every use of which saturates it (`clamp(x / eps, 0.0, 1.0)`, `min(x, 1.0)`, a
+    ///   comparison, `step`, `smoothstep`).
+    /// - Powers and exponentials of values the shader keeps at most 1 (`pow(clamp(x, 0.0, 1.0), 1.7)`,
+    ///   `pow(max(dot(n, h), 0.0), 32.0)` of unit vectors).
+    ///
+    /// The values it computes with are ordinary ones (magnitude 10): its findings are warnings.
+    ///
     /// ## References
     /// - GLSL ES 3.00 specification, §4.5.2 Precision Qualifiers (minimum ranges and precisions).
     /// - IEEE 754 binary16: largest finite value 65504, smallest normal 2^-14.
@@ -74,7 +84,7 @@ fn check(cx: &Cx, out: &mut Vec<Diagnostic>) {
             cx,
             f,
             id,
-            users: users(f),
+            users: std::cell::OnceCell::new(),
         };
         for (h, e) in f.expressions.iter() {
             let span = cx.span(f, h);
@@ -108,6 +118,10 @@ fn check(cx: &Cx, out: &mut Vec<Diagnostic>) {
                 } => operands(e),
                 _ => continue,
             };
+            // Before the ordinary-values analysis, which only this asks for.
+            if !could_amplify(cx, f, id, e) || bounded_cheaply(cx, id, e, &ops) {
+                continue;
+            }
             let typ: Vec<Interval> = ops
                 .iter()
                 .filter_map(|o| cx.typical().num(id, *o).map(|n| n.hull()))
@@ -130,14 +144,105 @@ fn check(cx: &Cx, out: &mut Vec<Diagnostic>) {
             }
             let peak = if up { r.hi } else { r.lo };
             let p = cx.prec.at(span).map(|p| p.name()).unwrap_or("mediump");
-            out.push(
-                Diagnostic::rule_warning(MediumpOverflow::RULE.id, format!("`{p}` result can overflow 65504 for ordinary values"), span)
-                    .with_label(format!("computed in `{p}`: reaches {} with inputs of magnitude {}", fmt_num(peak), fmt_num(TYPICAL)))
-                    .with_note("mediump and lowp are 16-bit floats on many mobile GPUs: the largest finite value is 65504")
-                    .with_help("compute it in `highp`, or rescale the operands"),
-            );
+            let d = Diagnostic::rule_warning(MediumpOverflow::RULE.id, format!("`{p}` result can overflow 65504 for ordinary values"), span)
+                .with_label(format!("computed in `{p}`: reaches {} with inputs of magnitude {}", fmt_num(peak), fmt_num(TYPICAL)))
+                .with_note("mediump and lowp are 16-bit floats on many mobile GPUs: the largest finite value is 65504")
+                .with_help("compute it in `highp`, or rescale the operands");
+            // Ordinary values reach it: the rule computes with them (no note for one uniform).
+            out.push(d);
         }
     }
+}
+
+/// Whether `e` has the shape of an amplification [`amplified`] measures: a product of a value
+/// with itself or with a constant (also inside `fma`), a dot product of a vector with itself, or
+/// a quotient, power, exponential or length.
+fn could_amplify(cx: &Cx, f: &Function, id: usize, e: &E) -> bool {
+    let constant = |h: Handle<E>| {
+        cx.sound()
+            .num(id, h)
+            .is_some_and(|n| n.comps().iter().all(|c| c.as_point().is_some()))
+    };
+    match *e {
+        E::Binary {
+            op: Bo::Multiply,
+            left,
+            right,
+        }
+        | E::Math {
+            fun: Mf::Fma,
+            arg: left,
+            arg1: Some(right),
+            ..
+        } => cx.sound().same(f, id, left, right) || constant(left) || constant(right),
+        E::Math {
+            fun: Mf::Dot,
+            arg,
+            arg1: Some(b),
+            ..
+        } => cx.sound().same(f, id, arg, b),
+        _ => true,
+    }
+}
+
+/// Whether a generous bound on the ordinary values of `e`'s operands already keeps it within
+/// 65504: each operand a constant or an external value as such (a uniform, input or texel, of
+/// magnitude at most [`TYPICAL`], more than the ordinary-values analysis gives any of them).
+/// Then the ordinary-values analysis cannot find an overflow there, and need not run.
+fn bounded_cheaply(cx: &Cx, id: usize, e: &E, ops: &[Handle<E>]) -> bool {
+    let bound = |h: Handle<E>| {
+        let n = cx.sound().num(id, h)?;
+        if n.comps().iter().all(|c| c.as_point().is_some()) {
+            Some((n.hull(), n.n))
+        } else if n.facts.has(crate::value::Facts::EXT) {
+            Some((Interval::new(-TYPICAL, TYPICAL), n.n))
+        } else {
+            None
+        }
+    };
+    let Some(b) = ops.iter().map(|o| bound(*o)).collect::<Option<Vec<_>>>() else {
+        return false;
+    };
+    let squares = |(i, n): (Interval, u8)| i.sqr().mul(Interval::point(f64::from(n)));
+    let r = match (e, &b[..]) {
+        (
+            E::Binary {
+                op: Bo::Multiply, ..
+            },
+            [x, y],
+        ) => x.0.mul(y.0),
+        (E::Binary { op: Bo::Divide, .. }, [x, y]) => {
+            if y.0.contains(0.0) {
+                return true; // the divisor's ordinary values contain 0 too: no amplification
+            }
+            x.0.div(y.0)
+        }
+        (E::Math { fun: Mf::Pow, .. }, [x, y]) => {
+            x.0.meet(Interval::new(1.0, f64::INFINITY))
+                .pow(y.0.meet(Interval::NON_NEGATIVE))
+        }
+        (E::Math { fun: Mf::Exp, .. }, [x]) => x.0.exp(),
+        (E::Math { fun: Mf::Exp2, .. }, [x]) => x.0.exp2(),
+        (E::Math { fun: Mf::Sinh, .. }, [x]) => x.0.sinh(),
+        (E::Math { fun: Mf::Cosh, .. }, [x]) => x.0.cosh(),
+        (E::Math { fun: Mf::Dot, .. }, [x, _]) => squares(*x),
+        (
+            E::Math {
+                fun: Mf::Length | Mf::Normalize,
+                ..
+            },
+            [x],
+        ) => squares(*x),
+        (
+            E::Math {
+                fun: Mf::Distance, ..
+            },
+            [x, y],
+        ) => squares((x.0.sub(y.0), x.1.max(y.1))),
+        (E::Math { fun: Mf::Fma, .. }, [x, y, z]) => x.0.mul(y.0).add(z.0),
+        _ => return false,
+    };
+    r.is_empty() || r.mag() <= LIMIT
 }
 
 /// The range the shader's own amplification gives `e` for ordinary values, when it amplifies:
@@ -147,7 +252,7 @@ fn check(cx: &Cx, out: &mut Vec<Diagnostic>) {
 /// check sees their values).
 fn amplified(cx: &Cx, f: &Function, id: usize, e: &E, typ: &[Interval]) -> Option<Interval> {
     let constant = |h: Handle<E>| {
-        cx.sound
+        cx.sound()
             .num(id, h)
             .is_some_and(|n| n.comps().iter().all(|c| c.as_point().is_some()))
     };
@@ -163,9 +268,15 @@ fn amplified(cx: &Cx, f: &Function, id: usize, e: &E, typ: &[Interval]) -> Optio
             op: Bo::Multiply,
             left,
             right,
-        } => (cx.sound.same(f, id, left, right) || constant(left) || constant(right))
+        } => (cx.sound().same(f, id, left, right) || constant(left) || constant(right))
             .then(|| typ[0].mul(typ[1])),
-        E::Binary { op: Bo::Divide, .. } => (!typ[1].contains(0.0)).then(|| typ[0].div(typ[1])),
+        E::Binary {
+            op: Bo::Divide,
+            left,
+            right,
+        } => {
+            (!typ[1].contains(0.0) && !correlated(cx, id, left, right)).then(|| typ[0].div(typ[1]))
+        }
         E::Math { fun: Mf::Pow, .. } => {
             // Growth: a base above 1 to a positive power. A base near 0 with a negative
             // exponent is pow-zero-base's business.
@@ -184,7 +295,7 @@ fn amplified(cx: &Cx, f: &Function, id: usize, e: &E, typ: &[Interval]) -> Optio
             arg1: Some(b),
             ..
         } => {
-            if cx.sound.same(f, id, arg, b) {
+            if cx.sound().same(f, id, arg, b) {
                 squares(arg)
             } else {
                 None
@@ -213,10 +324,18 @@ fn amplified(cx: &Cx, f: &Function, id: usize, e: &E, typ: &[Interval]) -> Optio
             arg,
             arg1: Some(b),
             ..
-        } => (cx.sound.same(f, id, arg, b) || constant(arg) || constant(b))
+        } => (cx.sound().same(f, id, arg, b) || constant(arg) || constant(b))
             .then(|| typ[0].mul(typ[1]).add(typ[2])),
         _ => None,
     }
+}
+
+/// Whether a numerator and a divisor read a uniform in common: `x * x / (4.0 * knee + eps)`
+/// with `x` clamped to `[0, 2 * knee]` is small where the divisor is, which the ranges of the
+/// two alone do not show.
+fn correlated(cx: &Cx, id: usize, num: Handle<E>, den: Handle<E>) -> bool {
+    let (a, b) = (cx.origin(&[(id, num)]), cx.origin(&[(id, den)]));
+    a.uniforms.iter().any(|u| b.uniforms.contains(u))
 }
 
 /// The expressions of a function and who reads each: what [`Uses::saturated`] follows.
@@ -224,14 +343,15 @@ struct Uses<'a> {
     cx: &'a Cx<'a>,
     f: &'a Function,
     id: usize,
-    users: HashMap<Handle<E>, Vec<User>>,
+    /// Who reads each expression: computed when an overflow asks whether its uses saturate it.
+    users: std::cell::OnceCell<HashMap<Handle<E>, Vec<User>>>,
 }
 
 impl Uses<'_> {
     /// Whether every use of `h` clamps away its overflow (`up`: towards +∞, `down`: towards −∞).
     fn saturated(&self, h: Handle<E>, up: bool, down: bool, depth: u32) -> bool {
         let (cx, f, id) = (self.cx, self.f, self.id);
-        let Some(us) = self.users.get(&h) else {
+        let Some(us) = self.users.get_or_init(|| users(f)).get(&h) else {
             return true;
         };
         let bounded = |x: Option<Handle<E>>| {
@@ -306,7 +426,7 @@ fn underflows(cx: &Cx, id: usize, f: &Function, x: Handle<E>) -> Option<f64> {
     if span.is_empty() || !cx.prec.is_low(span) {
         return None;
     }
-    let v = cx.sound.num(id, x)?;
+    let v = cx.sound().num(id, x)?;
     let m = v
         .comps()
         .iter()

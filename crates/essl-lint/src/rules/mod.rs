@@ -5,6 +5,7 @@
 
 mod context;
 mod guards;
+pub(crate) mod origin;
 pub(crate) mod rule;
 
 mod acos_domain;
@@ -16,6 +17,7 @@ mod normalize_zero;
 mod pow_negative_base;
 mod pow_zero_base;
 mod smoothstep_edges;
+mod smoothstep_reversed_constant;
 
 pub(crate) use context::{describe, fmt_num, operands, users, Cx, User};
 pub(crate) use normalize_zero::orthogonal_cross;
@@ -28,10 +30,60 @@ pub static RULES: &[&Rule] = &[
     &acos_domain::AcosDomain::RULE,
     &asin_domain::AsinDomain::RULE,
     &smoothstep_edges::SmoothstepEdges::RULE,
+    &smoothstep_reversed_constant::SmoothstepReversedConstant::RULE,
     &division_by_difference::DivisionByDifference::RULE,
     &normalize_zero::NormalizeZero::RULE,
     &mediump_overflow::MediumpOverflow::RULE,
 ];
+
+/// Whether any rule has something to look at in a shader: a `pow`, `acos`, `asin`,
+/// `smoothstep` or `normalize` call, a division, or low-precision arithmetic
+/// (`mediump-overflow`; only looked up when the text names `mediump`, `lowp` or
+/// `gl_PointCoord`). Most
+/// conformance shaders have none, and then the analysis, which is most of the cost of linting,
+/// is not run. Also says whether something besides low-precision arithmetic is there (the rules
+/// that read signs and ranges), and gives the precisions back when it looked them up.
+pub(crate) fn candidates(
+    shader: &essl::Shader,
+    module: &naga::Module,
+) -> (bool, bool, Option<crate::precision::Precisions>) {
+    use naga::{BinaryOperator as Bo, Expression as E, MathFunction as Mf};
+    let hard = module.functions.iter().any(|(_, f)| {
+        f.expressions.iter().any(|(_, e)| {
+            matches!(
+                e,
+                E::Math {
+                    fun: Mf::Pow | Mf::Acos | Mf::Asin | Mf::SmoothStep | Mf::Normalize,
+                    ..
+                } | E::Binary { op: Bo::Divide, .. }
+            )
+        })
+    });
+    if hard {
+        return (true, true, None);
+    }
+    // Without these words (or `gl_PointCoord`, mediump itself), every float is highp.
+    let text = shader.file.text();
+    if !["mediump", "lowp", "gl_PointCoord"]
+        .iter()
+        .any(|w| text.contains(w))
+    {
+        return (false, false, None);
+    }
+    let prec = crate::precision::Precisions::of(&shader.module);
+    let low = module.functions.iter().any(|(_, f)| {
+        f.expressions.iter().any(|(h, e)| {
+            matches!(
+                e,
+                E::Binary {
+                    op: Bo::Multiply,
+                    ..
+                } | E::Math { .. }
+            ) && prec.is_low(essl::source::Span::from(f.expressions.get_span(h)))
+        })
+    });
+    (low, false, Some(prec))
+}
 
 /// The rule with this id.
 pub fn rule(id: &str) -> Option<&'static Rule> {

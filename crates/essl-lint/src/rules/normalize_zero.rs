@@ -5,6 +5,7 @@ use naga::{Expression as E, Function, Handle, MathFunction as Mf};
 
 use super::rule::declare_rule;
 use super::Cx;
+use crate::interval::Interval;
 use crate::symbolic::resolve;
 use crate::value::Facts;
 use crate::Level;
@@ -45,6 +46,22 @@ declare_rule! {
     /// ```
     /// There is no mechanical fix: the degenerate case needs a choice (a fallback axis, or no light).
     ///
+    /// ## What it does not flag
+    /// - `normalize` of a uniform, input or texel as such, of a transformed vector (`mat3(u_world) *
+    ///   a_normal`), of a constant non-zero vector, and of per-pixel sums and differences.
+    /// - A cross product of vectors built perpendicular to each other (a camera frame), and of a vector
+    ///   with an up axis chosen away from it: `up = abs(n.z) < 0.999 ? vec3(0.0, 0.0, 1.0) :
+    ///   vec3(1.0, 0.0, 0.0)` (each axis is used only where `n` is not along it).
+    /// - A cross product of a per-pixel normal with a constant tilted off the coordinate axes
+    ///   (`normalize(vec3(0.001, 1.0, 0.001))`): the tilt keeps it away from axis-aligned normals.
+    /// - A vector a guard says is not zero (`dot(c, c) > 1e-12 ? normalize(c) : …`, `if (length(c) >
+    ///   0.0)`).
+    /// - Code essl does not lower: an inactive input read by dead code is no zero vector.
+    ///
+    /// Severity: a cross product with a vector fixed for the draw is a warning (a light pointing
+    /// straight down is ordinary); `normalize` of a per-draw difference is a note when one uniform alone
+    /// reaches it.
+    ///
     /// ## References
     /// - GLSL ES 3.00 specification, §8.4 Geometric Functions (normalize: "a vector in the same
     ///   direction as x but with a length of 1", undefined for a zero vector).
@@ -72,7 +89,7 @@ fn check(cx: &Cx, out: &mut Vec<Diagnostic>) {
                 continue;
             }
             let x = cx.operand(f, h, arg);
-            let Some(v) = cx.sound.num(id, x) else {
+            let Some(v) = cx.sound().num(id, x) else {
                 continue;
             };
             if v.n < 2 || !v.may_be_zero() || v.facts.has(Facts::NZ) {
@@ -86,7 +103,11 @@ fn check(cx: &Cx, out: &mut Vec<Diagnostic>) {
                 continue;
             }
             let cross = v.facts.any(Facts::CROSS);
-            if cross && orthogonal_cross(cx, f, id, x) {
+            if cross
+                && (orthogonal_cross(cx, f, id, x)
+                    || axis_chosen_away(cx, f, id, x)
+                    || tilted_axis(cx, f, id, x))
+            {
                 continue;
             }
             let per_draw = !v.facts.any(Facts::INPUT.with(Facts::TEXTURE));
@@ -102,18 +123,17 @@ fn check(cx: &Cx, out: &mut Vec<Diagnostic>) {
             } else {
                 format!("{what} is the zero vector")
             };
-            out.push(
-                Diagnostic::rule_warning(
-                    NormalizeZero::RULE.id,
-                    "`normalize` of a vector that can be zero, which gives NaN",
-                    span,
-                )
-                .with_label(label)
-                .with_note("normalize(v) divides by length(v): 0 / 0 for the zero vector")
-                .with_help(
-                    "test the length first (`dot(v, v) > 1e-12`) and choose a fallback direction",
-                ),
+            let d = Diagnostic::rule_warning(
+                NormalizeZero::RULE.id,
+                "`normalize` of a vector that can be zero, which gives NaN",
+                span,
+            )
+            .with_label(label)
+            .with_note("normalize(v) divides by length(v): 0 / 0 for the zero vector")
+            .with_help(
+                "test the length first (`dot(v, v) > 1e-12`) and choose a fallback direction",
             );
+            out.push(if cross { d } else { cx.grade(d, &[(id, x)]) });
         }
     }
 }
@@ -122,30 +142,27 @@ fn check(cx: &Cx, out: &mut Vec<Diagnostic>) {
 /// itself a cross product with the other: perpendicular vectors, whose cross product is not
 /// zero (`up = normalize(cross(right, forward)); right = normalize(cross(up, forward))`).
 pub(crate) fn orthogonal_cross(cx: &Cx, f: &Function, id: usize, h: Handle<E>) -> bool {
-    let r = resolve(f, &cx.sound, id, h);
-    let E::Math {
-        fun: Mf::Cross,
-        arg: a,
-        arg1: Some(b),
-        ..
-    } = f.expressions[r]
-    else {
+    let Some((a, b)) = cross_operands(cx, f, id, h) else {
         return false;
     };
-    let nz = |x: Handle<E>| cx.sound.num(id, x).is_some_and(|n| n.facts.has(Facts::NZ));
+    let nz = |x: Handle<E>| {
+        cx.sound()
+            .num(id, x)
+            .is_some_and(|n| n.facts.has(Facts::NZ))
+    };
     if !nz(a) || !nz(b) {
         return false;
     }
     let perpendicular = |x: Handle<E>, y: Handle<E>| {
         values(cx, f, id, x).iter().all(|v| {
-            let mut v = resolve(f, &cx.sound, id, *v);
+            let mut v = resolve(f, cx.sound(), id, *v);
             if let E::Math {
                 fun: Mf::Normalize,
                 arg,
                 ..
             } = f.expressions[v]
             {
-                v = resolve(f, &cx.sound, id, arg);
+                v = resolve(f, cx.sound(), id, arg);
             }
             match f.expressions[v] {
                 E::Math {
@@ -153,7 +170,7 @@ pub(crate) fn orthogonal_cross(cx: &Cx, f: &Function, id: usize, h: Handle<E>) -
                     arg: p,
                     arg1: Some(q),
                     ..
-                } => cx.sound.same(f, id, p, y) || cx.sound.same(f, id, q, y),
+                } => cx.sound().same(f, id, p, y) || cx.sound().same(f, id, q, y),
                 _ => false,
             }
         })
@@ -165,7 +182,7 @@ pub(crate) fn orthogonal_cross(cx: &Cx, f: &Function, id: usize, h: Handle<E>) -
 fn values(cx: &Cx, f: &Function, id: usize, h: Handle<E>) -> Vec<Handle<E>> {
     if let E::Load { pointer } = f.expressions[h] {
         if let E::LocalVariable(l) = f.expressions[pointer] {
-            if let Some(vs) = cx.sound.functions[id]
+            if let Some(vs) = cx.sound().functions[id]
                 .stores
                 .get(&l.index())
                 .filter(|vs| !vs.is_empty())
@@ -175,4 +192,128 @@ fn values(cx: &Cx, f: &Function, id: usize, h: Handle<E>) -> Vec<Handle<E>> {
         }
     }
     vec![h]
+}
+
+/// Whether `h` is `cross(u, n)` (either order) where `u` is one of two constant axes chosen by
+/// a test of a component of `n`, each away from `n` where it is chosen: `up = abs(N.z) <
+/// 0.999 ? vec3(0.0, 0.0, 1.0) : vec3(1.0, 0.0, 0.0)`. `n` is taken to be a direction (the
+/// test of one component against a bound below 1 means nothing otherwise).
+fn axis_chosen_away(cx: &Cx, f: &Function, id: usize, h: Handle<E>) -> bool {
+    let Some((a, b)) = cross_operands(cx, f, id, h) else {
+        return false;
+    };
+    [(a, b), (b, a)].into_iter().any(|(u, n)| {
+        let E::Select {
+            condition,
+            accept,
+            reject,
+        } = f.expressions[resolve(f, cx.sound(), id, u)]
+        else {
+            return false;
+        };
+        [(accept, true), (reject, false)]
+            .into_iter()
+            .all(|(axis, polarity)| away(cx, f, id, n, axis, condition, polarity))
+    })
+}
+
+/// Whether constant vector `axis` is not parallel to direction `n` wherever `condition` is
+/// `polarity`: a comparison it implies bounds a component of `n` (or its magnitude) away from
+/// what that component would be if `n` were along `axis`.
+fn away(
+    cx: &Cx,
+    f: &Function,
+    id: usize,
+    n: Handle<E>,
+    axis: Handle<E>,
+    condition: Handle<E>,
+    polarity: bool,
+) -> bool {
+    let Some(av) = cx.sound().num(id, axis) else {
+        return false;
+    };
+    let a: Vec<f64> = av.comps().iter().filter_map(|c| c.as_point()).collect();
+    let len = a.iter().map(|x| x * x).sum::<f64>().sqrt();
+    if a.len() != av.n as usize || len == 0.0 {
+        return false;
+    }
+    let mut proved = false;
+    crate::analysis::condition_atoms(f, condition, polarity, &mut |atom, pol| {
+        let E::Binary { op, left, right } = f.expressions[atom] else {
+            return;
+        };
+        for (x, bound, x_left) in [(left, right, true), (right, left, false)] {
+            let Some(b) = cx.sound().num(id, bound).and_then(|v| v.hull().as_point()) else {
+                continue;
+            };
+            let Some(range) = crate::analysis::relation(op, pol, x_left, Interval::point(b)) else {
+                continue;
+            };
+            let (inner, magnitude) = match f.expressions[x] {
+                E::Math {
+                    fun: Mf::Abs, arg, ..
+                } => (arg, true),
+                _ => (x, false),
+            };
+            let E::AccessIndex { base, index } = f.expressions[inner] else {
+                continue;
+            };
+            if (index as usize) >= a.len() || !cx.sound().same(f, id, base, n) {
+                continue;
+            }
+            // Along the axis, the unit vector's component is ±a[k] / |a|.
+            let along = a[index as usize] / len;
+            let values = if magnitude {
+                vec![along.abs()]
+            } else {
+                vec![along, -along]
+            };
+            if values.iter().all(|v| !range.contains(*v)) {
+                proved = true;
+            }
+        }
+    });
+    proved
+}
+
+/// Whether `h` is `cross(n, up)` (either order) of a per-pixel vector and a constant tilted off
+/// the coordinate axes (`normalize(vec3(0.001, 1.0, 0.001))`): the tilt is the guard, since
+/// mesh normals lie along the axes (a floor), not along an arbitrary constant direction.
+fn tilted_axis(cx: &Cx, f: &Function, id: usize, h: Handle<E>) -> bool {
+    let Some((a, b)) = cross_operands(cx, f, id, h) else {
+        return false;
+    };
+    let per_pixel = |x: Handle<E>| {
+        cx.sound()
+            .num(id, x)
+            .is_some_and(|v| v.facts.any(Facts::INPUT.with(Facts::TEXTURE)))
+    };
+    let tilted = |x: Handle<E>| {
+        cx.sound().num(id, x).is_some_and(|v| {
+            let off_zero = v.comps().iter().filter(|c| !c.contains(0.0)).count();
+            v.comps()
+                .iter()
+                .all(|c| c.hi - c.lo <= 1e-6 * c.mag().max(1.0))
+                && off_zero >= 2
+        })
+    };
+    (per_pixel(a) && tilted(b)) || (per_pixel(b) && tilted(a))
+}
+
+/// The two vectors of `cross(a, b)` when `h` is (or a local holds) a cross product.
+fn cross_operands(
+    cx: &Cx,
+    f: &Function,
+    id: usize,
+    h: Handle<E>,
+) -> Option<(Handle<E>, Handle<E>)> {
+    match f.expressions[resolve(f, cx.sound(), id, h)] {
+        E::Math {
+            fun: Mf::Cross,
+            arg,
+            arg1: Some(b),
+            ..
+        } => Some((arg, b)),
+        _ => None,
+    }
 }

@@ -40,6 +40,33 @@ declare_rule! {
     /// `pow(abs(x), 2.0)` for an even power, `sign(x) * pow(abs(x), 3.0)` for an odd one (or write the
     /// product, `x * x`).
     ///
+    /// ## What it does not flag
+    /// - A base the shader clamps, in the same expression or on an earlier line: `max(x, 0.0)`,
+    ///   `clamp(x, 0.0, 1.0)`, `saturate(x)`, `abs(x)`, `x * x`, `length(v)`, `exp(x)`
+    ///   (`x = max(x, 0.0); … pow(x, k)`: the analysis follows what a variable holds from statement
+    ///   to statement, through `inout` parameters and the cases of a `switch`).
+    /// - A base under a guard: `if (d > 0.0) … pow(d, k)`, `d > 0.0 ? pow(d, k) : 0.0`,
+    ///   `if (d <= 0.0) return;`, and the sign-split idiom `x < 0.0 ? -pow(-x, p) : pow(x, p)` (a
+    ///   guard on `x` bounds `-x` and other arithmetic on `x`).
+    /// - A uniform, input or texel as such, and `1.0 - x` of one in [0, 1] (`1.0 - metalness`,
+    ///   `1.0 - gl_FragCoord.z * 0.9`): valid values are the runtime check's business.
+    /// - Sums and products of such values, and what keeps them non-negative by construction: a weighted
+    ///   sum (`dot(u_attenuation, vec3(1.0, d, d * d))`), `mix(a, b, t)` with `t` in [0, 1] (a uniform
+    ///   weight, or `0.5 * dot(n, l) + 0.5`), Schlick's `F0 + (1.0 - F0) * pow(1.0 - c, 5.0)`,
+    ///   `1.0 - exp(-k * x)` with `k * x ≥ 0`, a colour matrix with non-negative entries times a colour,
+    ///   `dot(n, u_dir)` of a unit vector and a uniform direction taken in [-1, 1].
+    /// - What a user function returns for the arguments of each call: `float lum(vec3 c)` returning
+    ///   `dot(c, W)` is non-negative where it is called with a colour, even if another call passes a
+    ///   signed vector.
+    /// - Code essl does not lower (reads of inactive inputs in dead code).
+    ///
+    /// A base negative only through rounding (`1.0 - dot(v, h)` of unit vectors) is reported with a
+    /// message that says so, and `max(…, 0.0)` as the fix.
+    ///
+    /// Severity: a warning when values the shader itself produces reach the hazard; a note, naming
+    /// the uniform, when one uniform alone (with constants) does — the hazard then needs that value out
+    /// of the range the shader was written for, and essl-gl's validation mode checks it at draw time.
+    ///
     /// ## References
     /// - GLSL ES 3.00 specification, §8.2 Exponential Functions: "Results are undefined if x < 0."
     /// - Article 001 (webgl2fundamentals, spot lights): `pow(dot(normal, halfVector), u_shininess)`.
@@ -61,7 +88,7 @@ fn check_negative(cx: &Cx, out: &mut Vec<Diagnostic>) {
         exp,
     } in cx.pow_calls()
     {
-        let Some(b) = cx.sound.num(id, base) else {
+        let Some(b) = cx.sound().num(id, base) else {
             continue;
         };
         if b.hull().lo >= 0.0 || b.facts.has(Facts::NN) {
@@ -77,20 +104,55 @@ fn check_negative(cx: &Cx, out: &mut Vec<Diagnostic>) {
         }
         let bspan = cx.span(f, base);
         let what = cx.what(f, id, base);
-        let label = if bi.lo.is_finite() {
-            format!("{what} can be as low as {}", super::fmt_num(bi.lo))
+        // Negative only by the slack of a dot product or a square root of unit vectors:
+        // `1.0 - dot(v, h)` with `v == h`.
+        let rounding = bi.lo >= -ROUNDING;
+        let (message, label) = if rounding {
+            (
+                "`pow` base can be slightly negative through rounding, where `pow` is undefined (NaN on many GPUs)",
+                format!(
+                    "{what} is not negative in exact arithmetic, but rounding can take it to {}",
+                    super::fmt_num(bi.lo)
+                ),
+            )
+        } else if bi.lo.is_finite() {
+            (
+                "`pow` base can be negative, where `pow` is undefined (NaN on many GPUs)",
+                format!("{what} can be as low as {}", super::fmt_num(bi.lo)),
+            )
         } else {
-            format!("{what} can be negative")
+            (
+                "`pow` base can be negative, where `pow` is undefined (NaN on many GPUs)",
+                format!("{what} can be negative"),
+            )
         };
-        let d = Diagnostic::rule_warning(
-            PowNegativeBase::RULE.id,
-            "`pow` base can be negative, where `pow` is undefined (NaN on many GPUs)",
-            bspan,
-        )
-        .with_label(label)
-        .with_note("GLSL ES 3.00 §8.2: pow(x, y) is undefined if x < 0");
-        out.push(fix_negative(cx, f, id, span, base, exp, d));
+        let d = Diagnostic::rule_warning(PowNegativeBase::RULE.id, message, bspan)
+            .with_label(label)
+            .with_note("GLSL ES 3.00 §8.2: pow(x, y) is undefined if x < 0");
+        let d = if rounding {
+            clamp_fix(cx, bspan, d)
+        } else {
+            fix_negative(cx, f, id, span, base, exp, d)
+        };
+        out.push(cx.grade(d, &[(id, base)]));
     }
+}
+
+/// How far below 0 rounding alone takes a base that is not negative in exact arithmetic (the
+/// analysis's slack on dot products and lengths of unit vectors is a few ulps).
+const ROUNDING: f64 = 1e-4;
+
+/// The fix for a base negative only through rounding: `max(x, 0.0)`, whatever the exponent.
+fn clamp_fix(cx: &Cx, bspan: essl::source::Span, d: Diagnostic) -> Diagnostic {
+    if bspan.is_empty() {
+        return d.with_help("clamp the base to 0");
+    }
+    d.with_help("clamp the base to 0: rounding is all that takes it below")
+        .with_fix(Fix::suggested(
+            "wrap the base in `max(…, 0.0)`",
+            bspan,
+            format!("max({}, 0.0)", cx.text(bspan)),
+        ))
 }
 
 /// The fix for a base that can be negative, by exponent: an even integer power is the power of
@@ -111,7 +173,7 @@ fn fix_negative(
     }
     let b = cx.text(bspan);
     let n = cx
-        .sound
+        .sound()
         .num(id, exp)
         .and_then(|v| v.hull().as_point())
         .filter(|n| n.fract() == 0.0 && n.abs() < 1e6);

@@ -31,6 +31,16 @@ declare_rule! {
     /// (or make the exponent positive, `max(k - 1.0, 1e-4)`). 1e-4 is above `mediump`'s smallest
     /// normal number (6.1e-5), so the guard survives in `mediump` too.
     ///
+    /// ## What it does not flag
+    /// - An exponent that is a uniform as such (`u_shininess`), or positive by construction.
+    /// - A base the shader keeps above 0 (`max(x, 1e-4)`, `exp(x)`, `x * x + 1.0`) or a guard says is
+    ///   not 0 (`if (x > 0.0)`, `x != 0.0 ? pow(x, y) : 0.0`).
+    /// - A base that can be negative: `pow-negative-base` reports it.
+    ///
+    /// Severity: a warning when values the shader itself produces reach the hazard; a note, naming
+    /// the uniform, when one uniform alone (with constants) does — the hazard then needs that value out
+    /// of the range the shader was written for, and essl-gl's validation mode checks it at draw time. (`pow(r, u_power - 1.0)` needs `u_power ≤ 1`).
+    ///
     /// ## References
     /// - GLSL ES 3.00 specification, §8.2 Exponential Functions: "Results are undefined if x = 0 and
     ///   y ≤ 0."
@@ -52,7 +62,7 @@ fn check_zero(cx: &Cx, out: &mut Vec<Diagnostic>) {
         exp,
     } in cx.pow_calls()
     {
-        let (Some(b), Some(x)) = (cx.sound.num(id, base), cx.sound.num(id, exp)) else {
+        let (Some(b), Some(x)) = (cx.sound().num(id, base), cx.sound().num(id, exp)) else {
             continue;
         };
         let (bi, xi) = (b.hull(), x.hull());
@@ -95,6 +105,6 @@ fn check_zero(cx: &Cx, out: &mut Vec<Diagnostic>) {
                 format!("max({}, 1e-4)", cx.text(bspan)),
             ));
         }
-        out.push(d);
+        out.push(cx.grade(d, &[(id, exp)]));
     }
 }

@@ -33,15 +33,23 @@ impl std::fmt::Debug for Rule {
 impl Rule {
     /// The rule's documentation page, as `docs/lints/<id>.md` holds it.
     pub fn page(&self) -> String {
+        let id = self.id;
+        let levels = if self.default_level == Level::Note {
+            format!(
+                "its findings are notes, which `essl lint --show-notes` prints; `--warn {id}` \
+                 makes them warnings, `--deny {id}` errors, `--allow {id}` silences it"
+            )
+        } else {
+            format!(
+                "`--deny {id}` makes its warnings errors, `--note {id}` notes, `--allow {id}` \
+                 silences it; its notes (one uniform out of range) show with `--show-notes`"
+            )
+        };
         format!(
-            "# {}\n\n{}\n\nDefault level: **{}** (`--deny {}` makes it an error, `--allow {}` silences it; \
-             `// essl-allow: {}` on a line, or on the line before, silences one finding).\n\n{}",
-            self.id,
+            "# {id}\n\n{}\n\nDefault level: **{}** ({levels}; `// essl-allow: {id}` on a line, \
+             or on the line before, silences one finding).\n\n{}",
             self.summary,
             self.default_level.as_str(),
-            self.id,
-            self.id,
-            self.id,
             self.doc.trim_start()
         )
     }

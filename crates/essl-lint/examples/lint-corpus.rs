@@ -1,0 +1,82 @@
+//! Lints the real-world corpus that `scripts/lint-corpus/fetch.sh` builds and prints one JSON
+//! line per finding (`file`, `repo`, `path`, `rule`, `severity`, `line`, `text`: the source
+//! line, trimmed), then a summary line (`"kind": "summary"`: shaders, compiled, findings per rule
+//! and severity). Notes are included: the corpus counts every level.
+//!
+//! `cargo run --release -p essl-lint --example lint-corpus -- CORPUS_DIR`
+//! (`CORPUS_DIR/manifest.jsonl`, as `scripts/lint-corpus/extract.py` writes it).
+
+use std::collections::BTreeMap;
+
+use essl::source::SourceFile;
+use essl::{compile, CompileOptions, Stage};
+use serde_json::{json, Value};
+
+fn main() {
+    let dir = std::env::args()
+        .nth(1)
+        .unwrap_or_else(|| "../lint-corpus".to_string());
+    let manifest = std::fs::read_to_string(format!("{dir}/manifest.jsonl"))
+        .unwrap_or_else(|e| panic!("{dir}/manifest.jsonl: {e}"));
+    let options = essl_lint::LintOptions::new().notes(true);
+    let (mut shaders, mut compiled) = (0, 0);
+    let mut per_rule: BTreeMap<String, usize> = BTreeMap::new();
+    let mut repos_compiled: BTreeMap<String, usize> = BTreeMap::new();
+    for line in manifest.lines().filter(|l| !l.trim().is_empty()) {
+        let entry: Value = serde_json::from_str(line).expect("a JSON line");
+        let file = entry["file"].as_str().unwrap_or_default();
+        let stage = match entry["stage"].as_str() {
+            Some("vertex") => Stage::Vertex,
+            _ => Stage::Fragment,
+        };
+        let Ok(text) = std::fs::read_to_string(format!("{dir}/{file}")) else {
+            continue;
+        };
+        shaders += 1;
+        let shader = compile(
+            SourceFile::new(file, text.as_str()),
+            stage,
+            &CompileOptions::default(),
+        );
+        if !shader.ok() || shader.naga.is_none() {
+            continue;
+        }
+        compiled += 1;
+        let repo = entry["repo"].as_str().unwrap_or_default().to_string();
+        *repos_compiled.entry(repo.clone()).or_default() += 1;
+        for d in essl_lint::lint(&shader, &options) {
+            let lc = shader.file.line_col(d.span.start);
+            let source_line = text.lines().nth(lc.line as usize - 1).unwrap_or("").trim();
+            *per_rule
+                .entry(format!("{} {}", d.code, d.severity.as_str()))
+                .or_default() += 1;
+            println!(
+                "{}",
+                json!({
+                    "file": file,
+                    "repo": repo,
+                    "path": entry["path"],
+                    "rule": d.code,
+                    "severity": d.severity.as_str(),
+                    "line": lc.line,
+                    "column": lc.column,
+                    "span": shader.file.slice(d.span),
+                    "message": d.message,
+                    "label": d.label,
+                    "text": source_line,
+                })
+            );
+        }
+    }
+    println!(
+        "{}",
+        json!({
+            "kind": "summary",
+            "shaders": shaders,
+            "compiled": compiled,
+            "repositories": repos_compiled.len(),
+            "per_repository": repos_compiled,
+            "findings": per_rule,
+        })
+    );
+}

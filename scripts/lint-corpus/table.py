@@ -1,0 +1,121 @@
+#!/usr/bin/env python3
+"""Joins the lint findings on the real-world corpus with their hand classification and prints the
+tables of docs/lints/corpus.md.
+
+findings.jsonl: what `cargo run --release -p essl-lint --example lint-corpus -- CORPUS` prints
+(one finding a line, then a summary line). triage.tsv: `rule<TAB>repository<TAB>line<TAB>source
+line<TAB>class<TAB>why`, one line per distinct finding: the source line trimmed (white space
+collapsed), and the line number where one text has findings of different classes (`*`
+otherwise). The class is `real` (a hazard for inputs the program ordinarily passes),
+`rounding` (only rounding reaches it), `input` (only some values the host passes reach it),
+`spec` (undefined by the specification, computed the same by every driver: what
+`smoothstep-reversed-constant` reports) or `fp` (no valid input reaches it). A finding with no
+classification is listed and the script exits 1.
+
+With --before BEFORE.jsonl (the findings of an earlier version on the same corpus), also lists
+the findings classified `real` or `rounding` there that FINDINGS no longer reports (at the same
+file, line and rule) and exits 1 if there is any.
+
+Usage: table.py FINDINGS.jsonl TRIAGE.tsv [--before BEFORE.jsonl]
+"""
+
+import collections
+import json
+import sys
+
+CLASSES = ["real", "rounding", "input", "spec", "fp"]
+
+
+def key(rule, repo, text):
+    return (rule, repo, " ".join(text.split()))
+
+
+def read(path):
+    findings, summary = [], {}
+    for line in open(path, encoding="utf-8"):
+        row = json.loads(line)
+        if row.get("kind") == "summary":
+            summary = row
+        else:
+            findings.append(row)
+    return findings, summary
+
+
+def main():
+    argv = sys.argv[1:]
+    before = None
+    if "--before" in argv:
+        i = argv.index("--before")
+        before = argv[i + 1]
+        del argv[i : i + 2]
+    args = [a for a in argv if not a.startswith("--")]
+    if len(args) != 2:
+        print(__doc__, file=sys.stderr)
+        return 2
+    findings, summary = read(args[0])
+    triage = {}
+    for line in open(args[1], encoding="utf-8"):
+        if not line.strip() or line.startswith("#"):
+            continue
+        rule, repo, at, text, cls, *_ = line.rstrip("\n").split("\t")
+        if cls not in CLASSES:
+            print(f"unknown class {cls!r} in: {line}", file=sys.stderr)
+            return 2
+        triage[key(rule, repo, text) + (at,)] = cls
+    table = collections.defaultdict(collections.Counter)
+    missing = set()
+    lines = collections.defaultdict(set)
+    for f in findings:
+        k = key(f["rule"], f["repo"], f["text"])
+        cls = triage.get(k + (str(f["line"]),), triage.get(k + ("*",)))
+        if cls is None:
+            missing.add(k)
+            continue
+        t = table[f["rule"]]
+        t["findings"] += 1
+        t[f["severity"]] += 1
+        t[cls] += 1
+        lines[f["rule"]].add(k)
+    if missing:
+        for m in sorted(missing):
+            print("unclassified: " + "\t".join(m), file=sys.stderr)
+        return 1
+    print(f"{summary.get('shaders', 0)} shaders, {summary.get('compiled', 0)} compiled by essl, "
+          f"from {summary.get('repositories', 0)} repositories")
+    print()
+    print("| rule | findings | warnings | notes | distinct lines | real | rounding-only | input-dependent | spec-only | false positives |")
+    print("|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|")
+    total = collections.Counter()
+    distinct = 0
+    for rule in sorted(table):
+        t = table[rule]
+        total.update(t)
+        distinct += len(lines[rule])
+        print(f"| {rule} | {t['findings']} | {t['warning']} | {t['note']} | {len(lines[rule])} | "
+              f"{t['real']} | {t['rounding']} | {t['input']} | {t['spec']} | {t['fp']} |")
+    print(f"| **total** | **{total['findings']}** | **{total['warning']}** | **{total['note']}** | "
+          f"**{distinct}** | **{total['real']}** | **{total['rounding']}** | **{total['input']}** | "
+          f"**{total['spec']}** | **{total['fp']}** |")
+    n = total["findings"]
+    if n:
+        print()
+        print(f"False positives: {total['fp']} of {n} findings ({100.0 * total['fp'] / n:.1f} %).")
+    if before:
+        now = {(f["file"], f["line"], f["rule"]) for f in findings}
+        lost = []
+        for f in read(before)[0]:
+            k = key(f["rule"], f["repo"], f["text"])
+            cls = triage.get(k + (str(f["line"]),), triage.get(k + ("*",)))
+            if cls in ("real", "rounding") and (f["file"], f["line"], f["rule"]) not in now:
+                lost.append(f)
+        print()
+        print(f"Real and rounding-only findings of {before} no longer reported: {len(lost)}.")
+        for f in lost:
+            print(f"  {f['file']}:{f['line']} [{f['rule']}] {f['text']}")
+        if lost:
+            return 1
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
