@@ -220,7 +220,7 @@ fn an_integer_texture_on_a_float_sampler_is_invalid_operation() {
         0,
         gl::RGBA_INTEGER,
         gl::UNSIGNED_BYTE,
-        Some(&[1, 2, 3, 4]),
+        Some(&[1u8, 2, 3, 4]),
     );
     ctx.tex_parameteri(gl::TEXTURE_2D, gl::TEXTURE_MIN_FILTER, gl::NEAREST as i32);
     ctx.tex_parameteri(gl::TEXTURE_2D, gl::TEXTURE_MAG_FILTER, gl::NEAREST as i32);
@@ -359,7 +359,7 @@ fn texture_errors_change_nothing() {
         0,
         gl::RGBA,
         gl::UNSIGNED_BYTE,
-        Some(&[255, 255, 255, 255]),
+        Some(&[255u8, 255, 255, 255]),
     );
     ctx.tex_parameteri(gl::TEXTURE_2D, gl::TEXTURE_MIN_FILTER, gl::NEAREST as i32);
     assert_eq!(ctx.get_error(), gl::NO_ERROR);

@@ -554,7 +554,7 @@ fn an_integer_attachment_holds_ids_read_back_as_integers() {
         1,
         gl::RGBA_INTEGER,
         gl::UNSIGNED_INT,
-        bytemuck_slice(&mut out),
+        &mut out,
     );
     assert_eq!(out, [3_000_000_000, 0, 0, 1]);
     ctx.read_pixels(
@@ -564,7 +564,7 @@ fn an_integer_attachment_holds_ids_read_back_as_integers() {
         1,
         gl::RGBA_INTEGER,
         gl::UNSIGNED_INT,
-        bytemuck_slice(&mut out),
+        &mut out,
     );
     assert_eq!(out, [7, 0, 0, 1]);
     // RGBA/UNSIGNED_BYTE cannot read an integer buffer.
@@ -572,10 +572,6 @@ fn an_integer_attachment_holds_ids_read_back_as_integers() {
     ctx.read_pixels(0, 0, 1, 1, gl::RGBA, gl::UNSIGNED_BYTE, &mut px);
     assert_eq!(ctx.get_error(), gl::INVALID_OPERATION);
     assert_clean(&ctx);
-}
-
-fn bytemuck_slice(v: &mut [u32]) -> &mut [u8] {
-    essl_gl::bytemuck::cast_slice_mut(v)
 }
 
 #[test]

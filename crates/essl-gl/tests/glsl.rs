@@ -93,7 +93,7 @@ fn a_glsl_texture_on_unit_one() {
     ctx.bind_texture(gl::TEXTURE_2D, Some(tex));
     // Row 0 (t = 0, the bottom) red, row 1 blue.
     let texels = [
-        255, 0, 0, 255, 255, 0, 0, 255, 0, 0, 255, 255, 0, 0, 255, 255,
+        255u8, 0, 0, 255, 255, 0, 0, 255, 0, 0, 255, 255, 0, 0, 255, 255,
     ];
     ctx.tex_image_2d(
         gl::TEXTURE_2D,
@@ -300,7 +300,7 @@ fn narrow_outputs_integer_and_matrix_attributes_sampler_arrays_and_structs() {
         0,
         gl::RGBA,
         gl::UNSIGNED_BYTE,
-        Some(&[255, 0, 0, 255]),
+        Some(&[255u8, 0, 0, 255]),
     );
     ctx.tex_parameteri(gl::TEXTURE_2D, gl::TEXTURE_MIN_FILTER, gl::NEAREST as i32);
     ctx.clear_color(0.0, 0.0, 0.0, 0.0);
@@ -489,7 +489,7 @@ fn array_and_3d_textures() {
         1,
         gl::RGBA,
         gl::UNSIGNED_BYTE,
-        &[255, 0, 0, 255],
+        &[255u8, 0, 0, 255],
     );
     let v = ctx.create_texture();
     ctx.active_texture(gl::TEXTURE1);
@@ -504,7 +504,7 @@ fn array_and_3d_textures() {
         0,
         gl::RGBA,
         gl::UNSIGNED_BYTE,
-        Some(&[0, 0, 255, 255, 0, 255, 0, 255]),
+        Some(&[0u8, 0, 255, 255, 0, 255, 0, 255]),
     );
     ctx.tex_parameteri(gl::TEXTURE_3D, gl::TEXTURE_MIN_FILTER, gl::NEAREST as i32);
     ctx.tex_parameteri(gl::TEXTURE_3D, gl::TEXTURE_MAG_FILTER, gl::NEAREST as i32);

@@ -741,7 +741,7 @@ fn updates_between_draws_keep_gl_order() {
         0,
         gl::RGBA,
         gl::UNSIGNED_BYTE,
-        Some(&[255, 0, 0, 255]),
+        Some(&[255u8, 0, 0, 255]),
     );
     ctx.tex_parameteri(gl::TEXTURE_2D, gl::TEXTURE_MIN_FILTER, gl::NEAREST as i32);
     clear_black(&mut ctx);
@@ -757,7 +757,7 @@ fn updates_between_draws_keep_gl_order() {
         1,
         gl::RGBA,
         gl::UNSIGNED_BYTE,
-        &[0, 255, 0, 255],
+        &[0u8, 255, 0, 255],
     );
     ctx.scissor(W as i32 / 2, 0, W as i32 / 2, H as i32);
     ctx.draw_arrays(gl::TRIANGLES, 0, 6);
