@@ -38,6 +38,9 @@ pub(crate) struct Gpu {
 pub(crate) struct Limits {
     /// `MAX_VERTEX_ATTRIBS`: 16, or fewer where the device has fewer vertex buffers.
     pub(crate) max_vertex_attribs: u32,
+    /// `MAX_COLOR_ATTACHMENTS` and `MAX_DRAW_BUFFERS`: 8, or fewer where the device cannot
+    /// write 8 targets of 16 bytes a sample (WebGL2's minimum is 4).
+    pub(crate) max_color_attachments: u32,
 }
 
 /// A WebGL2 rendering context drawing into an offscreen framebuffer, on wgpu's Vulkan backend.
@@ -163,6 +166,10 @@ impl Context {
         let max_vertex_attribs = MAX_VERTEX_ATTRIBS
             .min(limits.max_vertex_attributes)
             .min(limits.max_vertex_buffers);
+        let max_color_attachments = crate::MAX_COLOR_ATTACHMENTS
+            .min(limits.max_color_attachments)
+            .min(limits.max_color_attachment_bytes_per_sample / 16)
+            .max(4);
         let gpu = Gpu {
             device,
             queue,
@@ -170,9 +177,12 @@ impl Context {
             limits,
         };
         let fb = DefaultFramebuffer::new(&gpu, width, height, attributes);
-        Ok(Context {
+        let mut ctx = Context {
             id: next_context_id(),
-            limits: Limits { max_vertex_attribs },
+            limits: Limits {
+                max_vertex_attribs,
+                max_color_attachments,
+            },
             errors: ErrorState::default(),
             backend_errors,
             fb,
@@ -187,7 +197,11 @@ impl Context {
             validation: Default::default(),
             presents: 0,
             gpu,
-        })
+        };
+        if !attributes.alpha {
+            ctx.clear_drawing_buffer();
+        }
+        Ok(ctx)
     }
 
     /// The attributes the default framebuffer was made with (`getContextAttributes`).

@@ -190,6 +190,15 @@ impl Context {
                 "a varying has no TRANSFORM_FEEDBACK_BUFFER bound",
             );
         }
+        let used: Vec<_> = bound[..buffers as usize].iter().flatten().collect();
+        if (1..used.len()).any(|i| used[..i].iter().any(|b| b.buffer == used[i].buffer)) {
+            // WebGL 2 §5.21: one buffer at two bindings written by a session.
+            return self.error(
+                gl::INVALID_OPERATION,
+                F,
+                "one buffer is bound at two TRANSFORM_FEEDBACK_BUFFER indices",
+            );
+        }
         let tf = self.bindings.transform_feedback();
         self.objects.feedback_mut(tf).session = Some(Session {
             mode: primitive_mode,
@@ -225,6 +234,16 @@ impl Context {
 
     fn set_paused(&mut self, paused: bool, function: &str) {
         let tf = self.bindings.transform_feedback();
+        let program = self.bindings.program();
+        let session = self.objects.feedback(tf).session;
+        if !paused && session.is_some_and(|s| s.paused && Some(s.program) != program) {
+            // ES 3.0 §2.15.2: resuming needs the program that began the session in use.
+            return self.error(
+                gl::INVALID_OPERATION,
+                function,
+                "the program in use is not the one that began transform feedback",
+            );
+        }
         match &mut self.objects.feedback_mut(tf).session {
             Some(s) if s.paused != paused => s.paused = paused,
             _ => self.error(

@@ -7,7 +7,7 @@ use crate::context::Context;
 use crate::framebuffer::Attachment;
 use crate::gl;
 use crate::pipeline::{BlitSource, Channels, ClearKind};
-use crate::texture::{image_target, internal_format, Expand, InternalFormat, Level};
+use crate::texture::{bit_sizes, image_target, internal_format, Expand, InternalFormat, Level};
 
 /// Where a copy goes: a texture level (a cube face or a layer) and the box's corner in it.
 struct CopyDest {
@@ -45,7 +45,26 @@ fn copyable(src: &InternalFormat, dst: &InternalFormat) -> bool {
         Expand::None => dst.channels.min(3),
         _ => 1,
     };
-    (!needs_alpha || src_has_alpha) && src.channels.min(3) >= needs
+    if !((!needs_alpha || src_has_alpha) && src.channels.min(3) >= needs) {
+        return false;
+    }
+    // ES 3.0 §3.8.5: a sized internal format's components must have the read buffer's
+    // sizes (RGB565 from RGBA8 is INVALID_OPERATION); the unsized ones take any.
+    let unsized_format = matches!(
+        dst.gl,
+        gl::RGBA | gl::RGB | gl::LUMINANCE_ALPHA | gl::LUMINANCE | gl::ALPHA
+    );
+    let (s, d) = (bit_sizes(src), bit_sizes(dst));
+    unsized_format
+        || [(s.red, d.red), (s.green, d.green), (s.blue, d.blue), (s.alpha, d.alpha)]
+            .iter()
+            .all(|&(s, d)| d == 0 || s == d)
+}
+
+/// Whether a format holds floats (`R16F` … `RGBA32F`, `R11F_G11F_B10F`).
+fn is_float(f: &InternalFormat) -> bool {
+    use crate::texture::Comp;
+    matches!(f.comp, Comp::F16 | Comp::F32) || f.packing == crate::texture::Packing::Rg11B10F
 }
 
 impl Context {
@@ -71,7 +90,12 @@ impl Context {
         else {
             return self.error(gl::INVALID_ENUM, F, format_args!("target 0x{target:04X}"));
         };
-        let Ok(format) = internal_format(internalformat) else {
+        // Chromium takes float formats only where they can be rendered
+        // (`EXT_color_buffer_float`): otherwise they are unknown enums here.
+        let format = internal_format(internalformat)
+            .ok()
+            .filter(|f| !is_float(f) || self.extensions.color_buffer_float);
+        let Some(format) = format else {
             return self.error(
                 gl::INVALID_ENUM,
                 F,

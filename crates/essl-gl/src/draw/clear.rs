@@ -181,7 +181,7 @@ impl Context {
     /// `clearBuffer*(COLOR, i, value)`: the value's kind must be the draw buffer's
     /// (`INVALID_OPERATION`); a draw buffer that is `NONE` is left alone.
     fn clear_color_buffer(&mut self, drawbuffer: i32, value: ClearValue, f: &str) {
-        if drawbuffer < 0 || drawbuffer >= crate::MAX_COLOR_ATTACHMENTS as i32 {
+        if drawbuffer < 0 || drawbuffer >= self.limits.max_color_attachments as i32 {
             return self.error(
                 gl::INVALID_VALUE,
                 f,

@@ -77,11 +77,13 @@ impl Context {
             let read = sources
                 .iter()
                 .any(|(_, s)| matches!(s, Source::Array { buffer, .. } if *buffer == range.buffer));
-            if read {
+            if read || self.bound_elsewhere(range.buffer) {
+                // WebGL 2 §5.1: a buffer bound for transform feedback and at any other point
+                // (generic ARRAY_BUFFER included, as Chromium checks it) cannot be written.
                 return self.fail(
                     gl::INVALID_OPERATION,
                     f,
-                    "a buffer is both captured into and read by the draw",
+                    "a transform feedback buffer is also bound elsewhere or read by the draw",
                 );
             }
             let len = self
@@ -109,6 +111,25 @@ impl Context {
             count,
             vertices,
         })
+    }
+
+    /// Whether `buffer` is bound at a point other than the transform feedback ones: a generic
+    /// binding, an indexed uniform buffer binding, or the vertex array's element buffer.
+    fn bound_elsewhere(&self, buffer: crate::objects::Id) -> bool {
+        const GENERIC: [u32; 6] = [
+            gl::ARRAY_BUFFER,
+            gl::COPY_READ_BUFFER,
+            gl::COPY_WRITE_BUFFER,
+            gl::PIXEL_PACK_BUFFER,
+            gl::PIXEL_UNPACK_BUFFER,
+            gl::UNIFORM_BUFFER,
+        ];
+        GENERIC
+            .iter()
+            .any(|&t| self.bindings.buffer(t) == Some(buffer))
+            || (0..crate::context::MAX_UNIFORM_BUFFER_BINDINGS as usize)
+                .any(|i| self.bindings.uniform_range(i).is_some_and(|r| r.buffer == buffer))
+            || self.vao().element_buffer == Some(buffer)
     }
 
     /// After a capturing draw: the session has written `vertices` more, and the

@@ -251,13 +251,25 @@ impl Context {
                     .and_then(|t| t.completeness(float_linear, &sampling))
                     .map(|c| (id, c, sampling))
             });
-            if let Some((id, c, _)) = &texture {
+            if let Some((id, c, sampling)) = &texture {
                 let fits = match kind {
                     SampleKind::Depth => c.format.has_depth(),
                     k => c.format.kind() == k,
                 };
                 if !fits {
                     let msg = format!("texture on unit {unit} does not match its sampler's type");
+                    return self.fail(gl::INVALID_OPERATION, f, msg);
+                }
+                // Chromium checks shadow samplers against the compare mode at the draw: a
+                // shadow sampler needs COMPARE_REF_TO_TEXTURE, another sampler of a depth
+                // texture needs NONE (ES 3.0 leaves both undefined).
+                let compares = sampling.compare_mode == gl::COMPARE_REF_TO_TEXTURE;
+                if c.format.has_depth() && compares != (kind == SampleKind::Depth) {
+                    let msg = format!(
+                        "the depth texture on unit {unit} has TEXTURE_COMPARE_MODE {}, its sampler is {}a shadow sampler",
+                        if compares { "COMPARE_REF_TO_TEXTURE" } else { "NONE" },
+                        if compares { "not " } else { "" }
+                    );
                     return self.fail(gl::INVALID_OPERATION, f, msg);
                 }
                 if self.draws_into(*id, c.base..c.base + c.levels) {
@@ -295,6 +307,16 @@ impl Context {
             if kind != wants {
                 let msg =
                     format!("fragment output {location} does not match its draw buffer's type");
+                return self.fail(gl::INVALID_OPERATION, f, msg);
+            }
+        }
+        // WebGL 2 §5.24: a draw buffer that would be written needs an output of the shader.
+        if self.state.color_mask.iter().any(|&m| m) {
+            let missing = formats.colors.iter().enumerate().find(|(i, c)| {
+                c.is_some() && !linked.outputs.iter().any(|&(l, _)| l as usize == *i)
+            });
+            if let Some((i, _)) = missing {
+                let msg = format!("draw buffer {i} has no fragment output to write it");
                 return self.fail(gl::INVALID_OPERATION, f, msg);
             }
         }

@@ -74,7 +74,9 @@ impl Context {
         let slot_plans = self.gather_samplers(pid, f)?;
         let formats = self.draw_formats();
         self.check_outputs(pid, &formats, f)?;
-        if formats.stencil && !self.state.stencil.faces_agree() {
+        // WebGL 1 §6.11, as Chromium applies it: only while the stencil test runs on a
+        // framebuffer with stencil bits.
+        if formats.stencil && self.state.stencil_test && !self.state.stencil.faces_agree() {
             return self.fail(
                 gl::INVALID_OPERATION,
                 f,

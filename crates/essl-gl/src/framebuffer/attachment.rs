@@ -8,9 +8,14 @@ use crate::objects::{Renderbuffer, Texture};
 use crate::query::Parameter;
 use crate::texture::{bit_sizes, internal_format, InternalFormat, SampleKind};
 
-/// GL's `FRAMEBUFFER_ATTACHMENT_COMPONENT_TYPE` of a format.
+/// GL's `FRAMEBUFFER_ATTACHMENT_COMPONENT_TYPE` of a format, whichever point it is attached
+/// at: a combined depth-stencil format answers its depth's type at `STENCIL_ATTACHMENT` too
+/// (Chromium's answer, and ANGLE's format table), `STENCIL_INDEX8` answers `UNSIGNED_INT`.
 fn component_type(f: &InternalFormat) -> u32 {
     use crate::texture::Comp;
+    if f.packing == crate::texture::Packing::Stencil8 {
+        return gl::UNSIGNED_INT;
+    }
     match f.kind() {
         SampleKind::Sint => gl::INT,
         SampleKind::Uint => gl::UNSIGNED_INT,
@@ -59,7 +64,7 @@ impl Context {
             attachment,
             gl::DEPTH_ATTACHMENT | gl::STENCIL_ATTACHMENT | gl::DEPTH_STENCIL_ATTACHMENT
         ) || (gl::COLOR_ATTACHMENT0
-            ..gl::COLOR_ATTACHMENT0 + super::MAX_COLOR_ATTACHMENTS)
+            ..gl::COLOR_ATTACHMENT0 + self.limits.max_color_attachments)
             .contains(&attachment);
         if !point_ok {
             self.error(
@@ -143,7 +148,7 @@ impl Context {
                 );
                 return None;
             }
-            _ => format.and_then(|f| format_parameter(&f, pname, attachment)),
+            _ => format.and_then(|f| format_parameter(&f, pname)),
         };
         if value.is_none() {
             self.error(gl::INVALID_ENUM, F, format_args!("pname 0x{pname:04X}"));
@@ -175,13 +180,17 @@ impl Context {
             }
             (gl::FRAMEBUFFER_ATTACHMENT_OBJECT_TYPE, None) => Some(Parameter::Enum(gl::NONE)),
             (gl::FRAMEBUFFER_ATTACHMENT_OBJECT_NAME, _) => Some(Parameter::Null),
+            // Chromium: the default stencil buffer is part of a normalized depth-stencil one.
+            (gl::FRAMEBUFFER_ATTACHMENT_COMPONENT_TYPE, Some(gl::STENCIL_INDEX8)) => {
+                Some(Parameter::Enum(gl::UNSIGNED_NORMALIZED))
+            }
             (_, None) if is_attachment_pname(pname) => {
                 self.error(gl::INVALID_OPERATION, F, "the default framebuffer has none");
                 return None;
             }
             (_, Some(f)) => {
                 let f = internal_format(f).expect("a supported format");
-                format_parameter(&f, pname, attachment)
+                format_parameter(&f, pname)
             }
             _ => None,
         };
@@ -210,25 +219,20 @@ fn is_attachment_pname(pname: u32) -> bool {
     )
 }
 
-/// The format-derived parameters: bit sizes (of the attachment point's aspect), component
-/// type, colour encoding.
-fn format_parameter(f: &InternalFormat, pname: u32, attachment: u32) -> Option<Parameter> {
+/// The format-derived parameters: bit sizes, component type, colour encoding — of the
+/// attached image's format, whichever aspect the point uses (`DEPTH_ATTACHMENT` of a
+/// `DEPTH24_STENCIL8` image answers `STENCIL_SIZE` 8, as Chromium does).
+fn format_parameter(f: &InternalFormat, pname: u32) -> Option<Parameter> {
     let b = bit_sizes(f);
-    let depth_point = matches!(attachment, gl::DEPTH_ATTACHMENT | gl::DEPTH);
-    let stencil_point = matches!(attachment, gl::STENCIL_ATTACHMENT | gl::STENCIL);
     let int = |v: u32| Some(Parameter::Int(v as i64));
     match pname {
         gl::FRAMEBUFFER_ATTACHMENT_RED_SIZE => int(b.red),
         gl::FRAMEBUFFER_ATTACHMENT_GREEN_SIZE => int(b.green),
         gl::FRAMEBUFFER_ATTACHMENT_BLUE_SIZE => int(b.blue),
         gl::FRAMEBUFFER_ATTACHMENT_ALPHA_SIZE => int(b.alpha),
-        gl::FRAMEBUFFER_ATTACHMENT_DEPTH_SIZE => int(if stencil_point { 0 } else { b.depth }),
-        gl::FRAMEBUFFER_ATTACHMENT_STENCIL_SIZE => int(if depth_point { 0 } else { b.stencil }),
-        gl::FRAMEBUFFER_ATTACHMENT_COMPONENT_TYPE => Some(Parameter::Enum(if stencil_point {
-            gl::UNSIGNED_INT
-        } else {
-            component_type(f)
-        })),
+        gl::FRAMEBUFFER_ATTACHMENT_DEPTH_SIZE => int(b.depth),
+        gl::FRAMEBUFFER_ATTACHMENT_STENCIL_SIZE => int(b.stencil),
+        gl::FRAMEBUFFER_ATTACHMENT_COMPONENT_TYPE => Some(Parameter::Enum(component_type(f))),
         gl::FRAMEBUFFER_ATTACHMENT_COLOR_ENCODING => {
             Some(Parameter::Enum(if f.srgb { gl::SRGB } else { gl::LINEAR }))
         }

@@ -179,9 +179,20 @@ impl Context {
         if self.fb.attributes.preserve_drawing_buffer {
             return;
         }
+        self.clear_drawing_buffer();
+    }
+
+    /// Clears the drawing buffer to its initial contents: colour 0 (alpha 1 without an alpha
+    /// channel, which then reads back as 1), depth 1, stencil 0.
+    pub(crate) fn clear_drawing_buffer(&mut self) {
         let target = self.default_target();
+        let alpha = if self.fb.attributes.alpha { 0.0 } else { 1.0 };
+        let color = wgpu::Color {
+            a: alpha,
+            ..wgpu::Color::TRANSPARENT
+        };
         let clears = PassClears {
-            colors: vec![Some(wgpu::Color::TRANSPARENT); target.colors.len()],
+            colors: vec![Some(color); target.colors.len()],
             depth: Some(1.0),
             stencil: Some(0),
         };
@@ -214,5 +225,8 @@ impl Context {
             (self.fb.attributes, self.fb.draw_buffer, self.fb.read_buffer);
         self.fb = DefaultFramebuffer::with_format(&self.gpu, [width, height], attributes, format);
         (self.fb.draw_buffer, self.fb.read_buffer) = (draw, read);
+        if !attributes.alpha {
+            self.clear_drawing_buffer();
+        }
     }
 }

@@ -21,9 +21,10 @@ use crate::context::Context;
 use crate::gl;
 use crate::objects::{Framebuffer, Id};
 
-/// `MAX_COLOR_ATTACHMENTS` and `MAX_DRAW_BUFFERS`: WebGL2's minimum, and what wgpu
-/// guarantees (8 colour targets, but 32 bytes of them per sample).
-pub const MAX_COLOR_ATTACHMENTS: u32 = 4;
+/// The most colour attachments and draw buffers essl-gl has: wgpu's 8 colour targets. A
+/// context reports fewer (`MAX_COLOR_ATTACHMENTS`, `MAX_DRAW_BUFFERS`; at least WebGL2's 4)
+/// where its device cannot write 8 targets of 16 bytes a sample.
+pub const MAX_COLOR_ATTACHMENTS: u32 = 8;
 
 /// An image attached to a framebuffer attachment point.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -186,25 +187,15 @@ impl Context {
         id
     }
 
-    /// Checks an attachment point: `COLOR_ATTACHMENT0..3`, `DEPTH_ATTACHMENT`,
-    /// `STENCIL_ATTACHMENT`, `DEPTH_STENCIL_ATTACHMENT`. A colour attachment past
-    /// `MAX_COLOR_ATTACHMENTS` → `INVALID_OPERATION`, anything else → `INVALID_ENUM`.
+    /// Checks an attachment point: `COLOR_ATTACHMENT0..`, `DEPTH_ATTACHMENT`,
+    /// `STENCIL_ATTACHMENT`, `DEPTH_STENCIL_ATTACHMENT`. Anything else, a colour attachment
+    /// past `MAX_COLOR_ATTACHMENTS` included, → `INVALID_ENUM`, as Chromium answers (ES 3.0
+    /// would give `INVALID_OPERATION` for the latter).
     fn check_attachment_point(&mut self, point: u32, function: &str) -> bool {
+        let colors = self.limits.max_color_attachments;
         match point {
             gl::DEPTH_ATTACHMENT | gl::STENCIL_ATTACHMENT | gl::DEPTH_STENCIL_ATTACHMENT => true,
-            p if (gl::COLOR_ATTACHMENT0..gl::COLOR_ATTACHMENT0 + MAX_COLOR_ATTACHMENTS)
-                .contains(&p) =>
-            {
-                true
-            }
-            p if (gl::COLOR_ATTACHMENT0..=gl::COLOR_ATTACHMENT15).contains(&p) => {
-                self.error(
-                    gl::INVALID_OPERATION,
-                    function,
-                    "attachment ≥ MAX_COLOR_ATTACHMENTS",
-                );
-                false
-            }
+            p if (gl::COLOR_ATTACHMENT0..gl::COLOR_ATTACHMENT0 + colors).contains(&p) => true,
             _ => {
                 self.error(
                     gl::INVALID_ENUM,
@@ -383,7 +374,7 @@ impl Context {
     /// or `NONE` for a framebuffer object, `BACK` or `NONE` (one entry) for the default one.
     pub fn draw_buffers(&mut self, buffers: &[u32]) {
         const F: &str = "drawBuffers";
-        if buffers.len() > MAX_COLOR_ATTACHMENTS as usize {
+        if buffers.len() > self.limits.max_color_attachments as usize {
             return self.error(gl::INVALID_VALUE, F, "more than MAX_DRAW_BUFFERS buffers");
         }
         let [draw, _] = self.bindings.framebuffers();
@@ -438,7 +429,7 @@ impl Context {
             Some(_) if src == gl::BACK => {
                 self.error(gl::INVALID_OPERATION, F, "a framebuffer object has no BACK")
             }
-            Some(_) if src >= gl::COLOR_ATTACHMENT0 + MAX_COLOR_ATTACHMENTS => self.error(
+            Some(_) if src >= gl::COLOR_ATTACHMENT0 + self.limits.max_color_attachments => self.error(
                 gl::INVALID_OPERATION,
                 F,
                 "attachment ≥ MAX_COLOR_ATTACHMENTS",
@@ -509,7 +500,8 @@ impl Context {
                 );
             }
             if bound.is_some()
-                && (gl::COLOR_ATTACHMENT0 + MAX_COLOR_ATTACHMENTS..=gl::COLOR_ATTACHMENT15)
+                && (gl::COLOR_ATTACHMENT0 + self.limits.max_color_attachments
+                    ..=gl::COLOR_ATTACHMENT15)
                     .contains(&a)
             {
                 return self.error(

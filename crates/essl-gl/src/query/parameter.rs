@@ -142,6 +142,22 @@ impl Context {
             gl::READ_FRAMEBUFFER_BINDING => Parameter::Framebuffer(
                 self.bindings.framebuffers()[1].map(|id| crate::Framebuffer { ctx: self.id, id }),
             ),
+            gl::SAMPLER_BINDING => Parameter::Sampler(
+                self.bindings
+                    .sampler(self.bindings.active_unit())
+                    .map(|id| crate::Sampler { ctx: self.id, id }),
+            ),
+            gl::TRANSFORM_FEEDBACK_BINDING => Parameter::TransformFeedback(
+                self.bindings
+                    .transform_feedback()
+                    .map(|id| crate::TransformFeedback { ctx: self.id, id }),
+            ),
+            gl::TRANSFORM_FEEDBACK_ACTIVE => {
+                Parameter::Bool(self.feedback_object().session.is_some())
+            }
+            gl::TRANSFORM_FEEDBACK_PAUSED => {
+                Parameter::Bool(self.feedback_object().session.is_some_and(|s| s.paused))
+            }
             gl::RENDERBUFFER_BINDING => Parameter::Renderbuffer(
                 self.bindings
                     .renderbuffer()
@@ -225,7 +241,7 @@ impl Context {
                     Some(f) => f.read_buffer,
                 },
             ),
-            p if (gl::DRAW_BUFFER0..gl::DRAW_BUFFER0 + crate::MAX_COLOR_ATTACHMENTS)
+            p if (gl::DRAW_BUFFER0..gl::DRAW_BUFFER0 + self.limits.max_color_attachments)
                 .contains(&p) =>
             {
                 let i = (p - gl::DRAW_BUFFER0) as usize;
@@ -306,7 +322,7 @@ impl Context {
             }
             gl::MAX_ELEMENT_INDEX => Int(u32::MAX as i64),
             gl::MAX_DRAW_BUFFERS | gl::MAX_COLOR_ATTACHMENTS => {
-                Int(crate::MAX_COLOR_ATTACHMENTS as i64)
+                Int(self.limits.max_color_attachments as i64)
             }
             gl::MAX_SAMPLES => Int(4),
             gl::MAX_ELEMENTS_VERTICES | gl::MAX_ELEMENTS_INDICES => Int(i32::MAX as i64),
