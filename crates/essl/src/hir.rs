@@ -307,6 +307,10 @@ pub enum UnaryOp {
 #[non_exhaustive]
 #[derive(Clone, Debug)]
 pub enum ExprKind {
+    /// An expression that failed to check; its type is [`Type::Void`] and the error has been
+    /// reported. Rules that meet one stay silent, so one mistake gives one diagnostic. Only a
+    /// shader with errors contains one, and such a shader is never lowered.
+    Error,
     /// A constant (literals, folded constant expressions, `const` variables).
     Const(ConstValue),
     /// A local variable.

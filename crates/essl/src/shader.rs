@@ -137,7 +137,7 @@ pub(crate) fn lowering_diagnostic(e: &crate::lower::LowerError) -> Diagnostic {
             Code::Unsupported,
             "this is valid GLSL ES 3.00 that essl cannot translate yet",
         ),
-        crate::lower::LowerError::Invalid { .. } => (
+        crate::lower::LowerError::Invalid { .. } | crate::lower::LowerError::Internal { .. } => (
             Code::InternalError,
             "this is a bug in essl: please report it with the shader",
         ),

@@ -254,7 +254,7 @@ fn target_reads(e: &Expr, u: &mut Uses) {
 /// Collects everything an expression reads or calls.
 fn expr(e: &Expr, u: &mut Uses) {
     match &e.kind {
-        ExprKind::Const(_) => {}
+        ExprKind::Error | ExprKind::Const(_) => {}
         ExprKind::Local(l) => {
             u.locals.insert(*l);
         }

@@ -2,8 +2,8 @@
 //! GLSL ES 3.00 (and WebGL2) impose, producing a [`hir::Module`].
 //!
 //! Each rule reports a diagnostic and checking goes on, so that every error is reported in one
-//! run; an expression that failed to check gets the type [`Type::Void`] and later rules stay
-//! quiet about it (no cascades).
+//! run; an expression that failed to check becomes [`hir::ExprKind::Error`] (of type
+//! [`Type::Void`]) and later rules stay quiet about it (no cascades).
 
 mod decl;
 mod expr;

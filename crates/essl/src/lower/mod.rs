@@ -63,13 +63,24 @@ pub enum LowerError {
         /// Where in the source, if naga said.
         span: Span,
     },
+    /// The lowering met what the checker rejects (an [`crate::hir::ExprKind::Error`]): a
+    /// shader with errors was handed to it, which is a bug in the caller or in essl.
+    #[error("internal error: {message}")]
+    Internal {
+        /// What.
+        message: String,
+        /// Where in the source.
+        span: Span,
+    },
 }
 
 impl LowerError {
     /// Where in the source the problem is.
     pub fn span(&self) -> Span {
         match self {
-            LowerError::Unsupported { span, .. } | LowerError::Invalid { span, .. } => *span,
+            LowerError::Unsupported { span, .. }
+            | LowerError::Invalid { span, .. }
+            | LowerError::Internal { span, .. } => *span,
         }
     }
 }

@@ -18,10 +18,10 @@ use crate::source::{SourceFile, Span};
 use crate::types::{ScalarKind, Type};
 use crate::Stage;
 
-/// An expression that failed to check: type `void`, already reported.
+/// An expression that failed to check ([`ExprKind::Error`], type `void`), already reported.
 pub(crate) fn error_expr(span: Span) -> Expr {
     Expr {
-        kind: ExprKind::Const(ConstValue::Composite(Vec::new())),
+        kind: ExprKind::Error,
         ty: Type::Void,
         span,
     }
@@ -29,7 +29,7 @@ pub(crate) fn error_expr(span: Span) -> Expr {
 
 /// Whether an expression failed to check (errors are silent from then on).
 pub(crate) fn is_error(e: &Expr) -> bool {
-    e.ty == Type::Void && matches!(e.kind, ExprKind::Const(_))
+    matches!(e.kind, ExprKind::Error)
 }
 
 /// A constant expression of type `ty`.

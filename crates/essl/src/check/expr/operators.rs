@@ -480,6 +480,8 @@ impl Checker<'_> {
                 }
                 self.lvalue_problem(b)
             }
+            // Already reported.
+            ExprKind::Error => None,
             ExprKind::Const(_) => Some(match self.file.slice(e.span).chars().next() {
                 Some(c) if c.is_ascii_alphabetic() || c == '_' => (
                     format!("cannot assign to constant `{}`", self.file.slice(e.span)),

@@ -20,6 +20,12 @@ impl<'c, 'a> FnCx<'c, 'a> {
     pub(crate) fn expr(&mut self, e: &Expr) -> Result<Handle<Expression>, LowerError> {
         let span = e.span;
         Ok(match &e.kind {
+            ExprKind::Error => {
+                return Err(LowerError::Internal {
+                    message: "an expression that failed to check reached the lowering".into(),
+                    span,
+                })
+            }
             ExprKind::Const(c) => self.constant(c, &e.ty, span),
             ExprKind::Local(_)
             | ExprKind::Param(_)
