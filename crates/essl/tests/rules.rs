@@ -199,6 +199,7 @@ void main() { o = vec4(LIGHTS); }
 "#;
     let opts = essl::CompileOptions {
         defines: vec![("LIGHTS".into(), "3.0".into())],
+        ..essl::CompileOptions::default()
     };
     let sh = compile(SourceFile::new("t", src), Stage::Fragment, &opts);
     assert!(sh.ok(), "{:?}", sh.diagnostics);

@@ -85,6 +85,10 @@ impl LowerError {
     }
 }
 
+/// A uniform block's lowering: one global per element (one for a block that is no array) and
+/// the stored form of each member.
+pub(crate) type BlockLower = (Vec<Handle<naga::GlobalVariable>>, Vec<Repr>);
+
 pub(crate) fn unsupported(message: impl Into<String>, span: Span) -> LowerError {
     LowerError::Unsupported {
         message: message.into(),
@@ -125,7 +129,7 @@ pub(crate) struct ModuleCx<'a> {
     pub builtins: HashMap<BuiltinVar, Handle<naga::GlobalVariable>>,
     pub functions: Vec<Option<Handle<naga::Function>>>,
     /// Uniform blocks with instance names: (global, per-member reprs).
-    pub blocks: Vec<Option<(Handle<naga::GlobalVariable>, Vec<Repr>)>>,
+    pub blocks: Vec<Option<BlockLower>>,
     /// Sampler slots: (global, path) → (texture, sampler).
     pub samplers: HashMap<(GlobalId, Vec<PathStep>), TextureAndSampler>,
     pub stage: Stage,

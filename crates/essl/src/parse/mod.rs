@@ -1,4 +1,5 @@
-//! A recursive-descent parser for GLSL ES 3.00 that reports every syntax error in one run.
+//! A recursive-descent parser for GLSL ES (1.00 and 3.00) that reports every syntax error in one
+//! run.
 //!
 //! Recovery, as rustc does it: a missing `;` whose next token is on a later line is reported at
 //! the end of the line that lacks it (with a certain fix) and parsing goes on as if it were
@@ -10,13 +11,14 @@
 //! parse: `declarations`, `types`, `statements` and `expressions`.
 
 use crate::diagnostic_code::Code;
-use std::collections::HashSet;
+use std::collections::HashMap;
 use std::sync::Arc;
 
 use crate::ast::*;
 use crate::diagnostic::{Diagnostic, Fix};
 use crate::lex::Punct;
 use crate::source::{SourceFile, Span};
+use crate::target::Language;
 use crate::token::{Kw, Tok, Token};
 use crate::Stage;
 
@@ -29,19 +31,31 @@ mod types;
 /// bounds the recursion of every later pass too).
 pub const MAX_NESTING: u32 = 256;
 
-/// Parses a shader's tokens (ending with `Eof`) into a syntax tree, collecting diagnostics.
+/// Parses a GLSL ES 3.00 shader's tokens (ending with `Eof`) into a syntax tree, collecting
+/// diagnostics ([`parse_as`] for another language).
 pub fn parse(
     file: &SourceFile,
     tokens: Vec<Token>,
     stage: Stage,
 ) -> (TranslationUnit, Vec<Diagnostic>) {
+    parse_as(file, tokens, stage, &Language::es300())
+}
+
+/// Parses a shader's tokens (ending with `Eof`) into a syntax tree, collecting diagnostics.
+pub fn parse_as(
+    file: &SourceFile,
+    tokens: Vec<Token>,
+    stage: Stage,
+    lang: &Language,
+) -> (TranslationUnit, Vec<Diagnostic>) {
+    let _ = lang;
     let mut p = Parser {
         file,
         toks: tokens,
         pos: 0,
         diags: Vec::new(),
         suppress: false,
-        type_names: vec![HashSet::new()],
+        type_names: vec![HashMap::new()],
         depth: 0,
         too_deep_reported: false,
         stage,
@@ -72,8 +86,10 @@ struct Parser<'a> {
     diags: Vec<Diagnostic>,
     /// After an error, until the next synchronisation point: don't report more.
     suppress: bool,
-    /// Struct names visible in each open scope.
-    type_names: Vec<HashSet<Arc<str>>>,
+    /// Per open scope, the names declared in it: `true` for a struct, `false` for a variable or
+    /// parameter, which hides a struct of the same name in the scopes around it (GLSL ES
+    /// §4.2.2). Whether an identifier starts a declaration or an expression depends on it.
+    type_names: Vec<HashMap<Arc<str>, bool>>,
     depth: u32,
     too_deep_reported: bool,
     stage: Stage,
@@ -159,11 +175,23 @@ impl<'a> Parser<'a> {
     }
 
     fn is_type_name(&self, name: &str) -> bool {
-        self.type_names.iter().any(|s| s.contains(name))
+        self.type_names
+            .iter()
+            .rev()
+            .find_map(|s| s.get(name).copied())
+            .unwrap_or(false)
+    }
+
+    /// Records a struct's name (`is_type`) or a variable's or parameter's in the innermost
+    /// scope.
+    fn declare_name(&mut self, name: &Arc<str>, is_type: bool) {
+        if let Some(scope) = self.type_names.last_mut() {
+            scope.insert(name.clone(), is_type);
+        }
     }
 
     fn push_scope(&mut self) {
-        self.type_names.push(HashSet::new());
+        self.type_names.push(HashMap::new());
     }
 
     fn pop_scope(&mut self) {

@@ -62,6 +62,8 @@ pub(super) fn is_qualifier_kw(kw: Kw) -> bool {
             | Kw::Mediump
             | Kw::Highp
             | Kw::Layout
+            | Kw::Attribute
+            | Kw::Varying
     )
 }
 
@@ -77,6 +79,8 @@ impl Parser<'_> {
                 Tok::Kw(Kw::Out) => Qualifier::Storage(Storage::Out),
                 Tok::Kw(Kw::Inout) => Qualifier::Storage(Storage::Inout),
                 Tok::Kw(Kw::Uniform) => Qualifier::Storage(Storage::Uniform),
+                Tok::Kw(Kw::Attribute) => Qualifier::Storage(Storage::Attribute),
+                Tok::Kw(Kw::Varying) => Qualifier::Storage(Storage::Varying),
                 Tok::Kw(Kw::Centroid) => Qualifier::Centroid,
                 Tok::Kw(Kw::Flat) => Qualifier::Interpolation(Interpolation::Flat),
                 Tok::Kw(Kw::Smooth) => Qualifier::Interpolation(Interpolation::Smooth),
@@ -215,10 +219,7 @@ impl Parser<'_> {
         let open = self.expect(Punct::LeftBrace)?;
         let members = self.member_list(open)?;
         if let Some(n) = &name {
-            self.type_names
-                .last_mut()
-                .expect("scope")
-                .insert(n.name.clone());
+            self.declare_name(&n.name, true);
         }
         Ok(StructDecl {
             name,

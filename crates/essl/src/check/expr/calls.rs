@@ -20,6 +20,12 @@ impl Checker<'_> {
                 if is_error(&b) {
                     return error_expr(span);
                 }
+                if self.lang.es100 {
+                    let d = self.not_in_es100(span, "the `.length()` method");
+                    d.token = "length".into();
+                    d.help = Some("write the array's size".into());
+                    return error_expr(span);
+                }
                 match b.ty {
                     Type::Array(_, n) => constant(
                         ConstValue::Basic(vec![Scalar::I(n as i32)]),
@@ -41,6 +47,12 @@ impl Checker<'_> {
             }
             Callee::Type(spec) => {
                 let args: Vec<Expr> = args.iter().map(|a| self.expr(a)).collect();
+                if self.lang.es100 && spec.array.is_some() {
+                    let d = self.not_in_es100(spec.span, "an array constructor");
+                    d.token = "[]".into();
+                    d.help = Some("declare the array, then assign its elements".into());
+                    return error_expr(span);
+                }
                 let Some(ty) = self.resolve_type(spec) else {
                     return error_expr(span);
                 };
@@ -48,8 +60,18 @@ impl Checker<'_> {
             }
             Callee::Name(id) => {
                 let args: Vec<Expr> = args.iter().map(|a| self.expr(a)).collect();
+                let builtins = builtins::overloads_in(&id.name, self.lang.es100);
                 match self.lookup(&id.name).cloned() {
                     Some(Sym::Struct(s)) => self.construct(Type::Struct(s), args, span, id.span),
+                    // GLSL ES 1.00 lets a shader overload a built-in function: both sets count.
+                    Some(Sym::Funcs(ids)) if self.lang.es100 && builtins.is_some() => {
+                        let sigs = builtins.expect("checked");
+                        if self.user_overload_matches(&ids, &args) {
+                            self.user_call(id, &ids, args, span)
+                        } else {
+                            self.builtin_call(id, sigs, args, span)
+                        }
+                    }
                     Some(Sym::Funcs(ids)) => self.user_call(id, &ids, args, span),
                     Some(Sym::Var(_)) | Some(Sym::Block(_)) => {
                         let hides = self.scopes[0]
@@ -70,7 +92,7 @@ impl Checker<'_> {
                         }
                         error_expr(span)
                     }
-                    None => match builtins::overloads(&id.name) {
+                    None => match builtins {
                         Some(sigs) => self.builtin_call(id, sigs, args, span),
                         None => {
                             let d = self.error(
@@ -118,6 +140,14 @@ impl Checker<'_> {
             .map(|a| format!("`{}`", a.ty.display(&self.structs)))
             .collect::<Vec<_>>()
             .join(", ")
+    }
+
+    /// Whether one of the user functions `ids` takes exactly these arguments.
+    fn user_overload_matches(&self, ids: &[usize], args: &[Expr]) -> bool {
+        ids.iter().any(|&f| {
+            let ps = &self.functions[f].params;
+            ps.len() == args.len() && ps.iter().zip(args).all(|(p, a)| p.ty == a.ty)
+        })
     }
 
     fn user_call(&mut self, id: &ast::Ident, ids: &[usize], args: Vec<Expr>, span: Span) -> Expr {
@@ -229,6 +259,9 @@ impl Checker<'_> {
             }
             return error_expr(span);
         };
+        if self.builtin_unavailable(&id.name, sig, id.span) {
+            return error_expr(span);
+        }
         if sig.fragment_only && self.stage != Stage::Fragment {
             let d = self.error(
                 Code::FragmentOnlyBuiltin,

@@ -12,6 +12,7 @@ mod entry;
 mod expr;
 mod operators;
 mod place;
+mod sampler;
 mod stmt;
 
 pub(crate) use entry::entry_point;
@@ -20,9 +21,9 @@ use naga::proc::Emitter;
 use naga::{Expression, Handle, Literal, Span as NSpan, Statement};
 
 use super::layout::{vsize, Repr};
-use super::{nspan, unsupported, LowerError, ModuleCx};
+use super::{nspan, LowerError, ModuleCx};
 use crate::ast::BinaryOp;
-use crate::hir::{self, ConstValue, Expr, ExprKind, FuncId, ParamMode, Scalar, Stmt};
+use crate::hir::{self, ConstValue, Expr, FuncId, ParamMode, Scalar, Stmt};
 use crate::source::Span;
 use crate::types::{ScalarKind, Type};
 use crate::Stage;
@@ -62,6 +63,8 @@ pub(crate) struct FnCx<'c, 'a> {
     blocks: Vec<naga::Block>,
     locals: Vec<Option<Handle<naga::LocalVariable>>>,
     params: Vec<ParamLower>,
+    /// The texture and sampler arguments of samplers inside struct and array parameters.
+    param_samplers: sampler::ParamSamplers,
     hir_fn: Option<&'a hir::Function>,
 }
 
@@ -150,6 +153,7 @@ pub(crate) fn lower_function(cx: &mut ModuleCx, id: FuncId) -> Result<naga::Func
     };
     let mut params = Vec::new();
     let mut copies = Vec::new();
+    let mut sampler_args = Vec::new();
     for p in &hir_fn.params {
         match &p.ty {
             Type::Sampler(st) => {
@@ -167,13 +171,16 @@ pub(crate) fn lower_function(cx: &mut ModuleCx, id: FuncId) -> Result<naga::Func
                 });
                 params.push(ParamLower::Sampler(i, i + 1));
             }
-            t if t.contains_sampler(&cx.hir.structs) => {
-                return Err(unsupported(
-                    "a struct or array of samplers as a function parameter",
-                    p.span,
-                ));
-            }
             t => {
+                // A struct or array holding samplers: its value (samplers as placeholders), then
+                // a texture and a sampler argument per sampler in it.
+                for path in crate::lower::plan::sampler_paths(t, &cx.hir.structs) {
+                    let Some(st) = crate::lower::plan::sampler_type_at(t, &path, &cx.hir.structs)
+                    else {
+                        continue;
+                    };
+                    sampler_args.push((params.len(), path, st));
+                }
                 let ty = cx.types.logical(&mut cx.module, t);
                 let i = f.arguments.len() as u32;
                 match p.mode {
@@ -216,6 +223,23 @@ pub(crate) fn lower_function(cx: &mut ModuleCx, id: FuncId) -> Result<naga::Func
             }
         }
     }
+    let mut param_samplers = sampler::ParamSamplers::new();
+    for (param, path, st) in sampler_args {
+        let (img, smp) = super::sampler_types(&mut cx.module, st);
+        let i = f.arguments.len() as u32;
+        let name = format!("{}_{}", hir_fn.params[param].name, i);
+        f.arguments.push(naga::FunctionArgument {
+            name: Some(name.clone()),
+            ty: img,
+            binding: None,
+        });
+        f.arguments.push(naga::FunctionArgument {
+            name: Some(format!("{name}_sampler")),
+            ty: smp,
+            binding: None,
+        });
+        param_samplers.insert((param, path), (i, i + 1));
+    }
     if hir_fn.ret != Type::Void {
         let ty = cx.types.logical(&mut cx.module, &hir_fn.ret);
         f.result = Some(naga::FunctionResult { ty, binding: None });
@@ -227,6 +251,7 @@ pub(crate) fn lower_function(cx: &mut ModuleCx, id: FuncId) -> Result<naga::Func
         blocks: vec![naga::Block::new()],
         locals: vec![None; hir_fn.locals.len()],
         params,
+        param_samplers,
         hir_fn: Some(hir_fn),
     };
     fx.emitter.start(&fx.f.expressions);
@@ -411,20 +436,7 @@ impl<'c, 'a> FnCx<'c, 'a> {
 
 /// Whether evaluating an expression has side effects (writes or user calls).
 pub(crate) fn has_effects(e: &Expr) -> bool {
-    match &e.kind {
-        ExprKind::Assign(..) | ExprKind::IncDec(..) | ExprKind::Call(..) => true,
-        ExprKind::Builtin(op, args) => {
-            *op == crate::builtins::BuiltinFn::Modf || args.iter().any(has_effects)
-        }
-        ExprKind::Unary(_, a) | ExprKind::Member(a, _) | ExprKind::Swizzle(a, _) => has_effects(a),
-        ExprKind::Binary(_, a, b) | ExprKind::Comma(a, b) | ExprKind::Index(a, b) => {
-            has_effects(a) || has_effects(b)
-        }
-        ExprKind::Select(c, a, b) => has_effects(c) || has_effects(a) || has_effects(b),
-        ExprKind::Construct(args) => args.iter().any(has_effects),
-        ExprKind::BlockMember(_, Some(i), _) => has_effects(i),
-        _ => false,
-    }
+    e.has_effects()
 }
 
 /// Whether `op` is an integer division or remainder by a constant with a zero component.
