@@ -197,6 +197,29 @@ struct LintArgs {
     /// Do not link NAME.vert + NAME.frag pairs.
     #[arg(long)]
     no_link: bool,
+
+    /// The WebGL version of the context the shaders are for: webgl2 compiles GLSL ES 3.00 and
+    /// 1.00, webgl1 GLSL ES 1.00 only (with the WebGL 1 extensions a shader enables).
+    #[arg(long, value_enum, default_value_t = WebglArg::Webgl2, value_name = "WEBGL")]
+    target: WebglArg,
+}
+
+/// A WebGL version.
+#[derive(Clone, Copy, Debug, ValueEnum)]
+enum WebglArg {
+    /// WebGL 1: GLSL ES 1.00.
+    Webgl1,
+    /// WebGL 2: GLSL ES 3.00 and 1.00.
+    Webgl2,
+}
+
+impl From<WebglArg> for essl::Target {
+    fn from(t: WebglArg) -> essl::Target {
+        match t {
+            WebglArg::Webgl1 => essl::Target::WebGl1,
+            WebglArg::Webgl2 => essl::Target::WebGl2,
+        }
+    }
 }
 
 #[derive(Args, Debug)]
@@ -336,6 +359,7 @@ fn main() -> ExitCode {
             deny_warnings,
             defines: args.define,
             link: !args.no_link,
+            target: args.target.into(),
             rules,
         }),
         Command::Report { out, quick, scenes } => essl_cli::report::run(&out, quick, &scenes),

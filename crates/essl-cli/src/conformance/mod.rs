@@ -4,15 +4,19 @@
 //! The scoring is compile + link: a case "passes" when essl accepts or rejects it as the
 //! harness expects (no rendering, no value checks).
 
-use std::collections::BTreeMap;
-use std::fmt::Write as _;
+mod es100;
+mod es300;
+mod markdown;
+mod peer;
+
 use std::path::{Path, PathBuf};
 
 use essl::link::link;
 use essl::source::SourceFile;
 use essl::{compile, CompileOptions, Shader, Stage};
-use rayon::prelude::*;
 use serde::Deserialize;
+
+pub use es100::{ContextScore, Es100Report};
 
 /// The WebGL corpus file.
 pub const WEBGL: &str = "webgl_conformance_es300.jsonl";
@@ -113,6 +117,8 @@ pub struct Report {
     pub fundamentals: Tally,
     /// webgl2fundamentals shaders skipped (templated or with no stage).
     pub fundamentals_skipped: usize,
+    /// The GLSL ES 1.00 WebGL cases, against Chromium in each context.
+    pub es100: Option<Es100Report>,
     /// Every disagreement.
     pub failures: Vec<Failure>,
 }
@@ -127,6 +133,9 @@ pub mod bars {
     pub const DEQP_PASS_PERCENT: f64 = 97.0;
     /// dEQP fail cases, percent.
     pub const DEQP_FAIL_PERCENT: f64 = 95.0;
+    /// GLSL ES 1.00 WebGL cases, per context: Chromium-accepted cases accepted and
+    /// Chromium-rejected cases rejected, percent each.
+    pub const ES100_PERCENT: f64 = 99.5;
 }
 
 impl Report {
@@ -161,6 +170,21 @@ impl Report {
                 bars::DEQP_FAIL_PERCENT
             ));
         }
+        if let Some(es100) = &self.es100 {
+            for target in [essl::Target::WebGl1, essl::Target::WebGl2] {
+                let c = es100.context(target);
+                for (what, t) in [("accepted", &c.accepted), ("rejected", &c.rejected)] {
+                    if t.percent() < bars::ES100_PERCENT {
+                        out.push(format!(
+                            "GLSL ES 1.00 {} {what} {:.1}% < {}%",
+                            target.as_str(),
+                            t.percent(),
+                            bars::ES100_PERCENT
+                        ));
+                    }
+                }
+            }
+        }
         if self.fundamentals.ok < self.fundamentals.total {
             out.push(format!(
                 "webgl2fundamentals {}/{} compile",
@@ -169,195 +193,6 @@ impl Report {
         }
         out
     }
-
-    /// The score as Markdown tables (a summary, then dEQP per file).
-    pub fn tables(&self) -> String {
-        let mut s = String::new();
-        let _ = writeln!(
-            s,
-            "| corpus | expected to build: ok/total | expected to fail: ok/total |"
-        );
-        let _ = writeln!(s, "|---|---|---|");
-        let _ = writeln!(
-            s,
-            "| WebGL conformance (must_pass / must_fail) | {} | {} |",
-            self.webgl.pass.cell(),
-            self.webgl.fail.cell()
-        );
-        let _ = writeln!(s, "| dEQP GLES3, `300 es` (pass + build_successful / compile_fail, link_fail, compile_link_fail) | {} | {} |", self.deqp.pass.cell(), self.deqp.fail.cell());
-        let _ = writeln!(
-            s,
-            "| glslang tests (compile status agrees with `expect_compile`) | {} | {} |",
-            self.glslang.clean.cell(),
-            self.glslang.errors.cell()
-        );
-        let _ = writeln!(
-            s,
-            "| webgl2fundamentals (all must compile; {} skipped: templated or no stage) | {} | – |",
-            self.fundamentals_skipped,
-            self.fundamentals.cell()
-        );
-        let _ = writeln!(s);
-        let _ = writeln!(
-            s,
-            "glslang: essl reports an error on {} of the expected error lines.",
-            self.glslang.error_lines.cell()
-        );
-        let _ = writeln!(s);
-        let _ = writeln!(s, "dEQP per file:");
-        let _ = writeln!(s);
-        let _ = writeln!(s, "| file | pass cases ok/total | fail cases ok/total |");
-        let _ = writeln!(s, "|---|---|---|");
-        for row in &self.deqp_files {
-            let _ = writeln!(
-                s,
-                "| `{}` | {} | {} |",
-                row.name,
-                row.pass.cell(),
-                row.fail.cell()
-            );
-        }
-        s
-    }
-
-    /// The score as a Markdown page: what the corpora are, the bars, the peers, the tables.
-    pub fn markdown(&self) -> String {
-        let mut s = String::from(MARKDOWN_INTRO);
-        s.push_str("\n## Score\n\n");
-        s.push_str(&self.tables());
-        s.push_str("\n## Where essl disagrees\n\n");
-        if self.failures.is_empty() {
-            s.push_str("Nowhere.\n");
-        } else if self.failures.len() > 100 {
-            let _ = writeln!(
-                s,
-                "{} cases (list them with `essl conformance --failures`).",
-                self.failures.len()
-            );
-        } else {
-            for f in &self.failures {
-                let _ = writeln!(
-                    s,
-                    "- {} `{}`: expected {}, essl: {}",
-                    f.corpus, f.case, f.expected, f.got
-                );
-            }
-        }
-        s.push('\n');
-        s.push_str(KNOWN_GAPS);
-        s.push_str("\n## Bars\n\n");
-        let unmet = self.unmet_bars();
-        if unmet.is_empty() {
-            s.push_str("All bars are met.\n");
-        } else {
-            s.push_str("Not met yet:\n\n");
-            for u in unmet {
-                let _ = writeln!(s, "- {u}");
-            }
-        }
-        s
-    }
-}
-
-/// Where essl answers differently from a WebGL2 browser beyond the scored cases.
-const KNOWN_GAPS: &str = "\
-## Known gaps
-
-Where essl still answers differently from a WebGL2 browser, beyond the cases above:
-
-- **GLSL ES 1.00 shaders are not compiled yet.** WebGL2 compiles a shader that does not start
-  with `#version 300 es` (or that says `#version 100`) as GLSL ES 1.00; essl reports it as an
-  error (`missing-version`, with a help on what to change for ES 3.00) and checks the rest as
-  ES 3.00, so `attribute`, `varying` and `gl_FragColor` add their own errors. The scores above count `300 es` cases only; the ES 1.00 WebGL conformance cases
-  (`webgl_conformance_es100.jsonl`) are not scored.
-- **Valid shaders not lowered yet:** arrays of uniform blocks, a struct or array of samplers as
-  a function parameter, and `texture()` on an integer cube sampler are accepted by WebGL2; essl
-  checks them and then reports an `unsupported` error.
-- **Extensions:** `essl::compile` supports no shader extension. `#extension NAME : require`
-  is an error (`GL_EXT_conservative_depth` above) and `enable` or `warn` a warning, the
-  extension's features staying unavailable, where a browser accepts the extensions its WebGL2
-  implementation exposes.
-
-Rendering has its own list: [what essl-gl does not do](rendering.md#what-differs-from-webgl2).
-";
-
-const MARKDOWN_INTRO: &str = "\
-# Conformance
-
-How often essl's front end accepts and rejects shaders as the upstream conformance suites
-expect. Generated by `cargo run --release -p essl-cli -- conformance --markdown docs/conformance.md`
-from the corpora in `../shared/corpora/` (see its README); scored with each harness's own rules.
-The score is **compile + link** (`essl::compile`, with whatever checking and lowering it does, then
-`essl::link::link`); rendering and the dEQP value checks are not scored.
-
-## The corpora
-
-- **WebGL conformance** (`webgl_conformance_es300.jsonl`): the Khronos WebGL2 conformance tests
-  whose shader is `#version 300 es` — 159 must_pass cases (both shaders compile and the program
-  links) and 67 must_fail cases (pass if compiling *or* linking fails).
-- **dEQP GLES3** (`deqp_gles3.jsonl`): dEQP's shader tests as the WebGL2 suite runs them, only
-  the `300 es` cases. `pass`/`build_successful` need compile and link to succeed; `compile_fail`
-  needs a shader to fail to compile; `link_fail` needs both shaders to compile and the link to
-  fail; `compile_link_fail` accepts either failure.
-- **glslang tests** (`glslang_es300.jsonl`): glslang's own `300 es` test files; essl's compile
-  status should agree with `expect_compile`, and the table counts how many of glslang's expected error
-  lines essl reports an error on (a measure of where errors are reported, not a bar). glslang
-  is more permissive than WebGL2 in places (its clean files include a shader with no `main`,
-  which WebGL2 rejects at compile time), so this row informs and is not a bar.
-- **webgl2fundamentals** (`webgl2fundamentals_shaders.jsonl`): the lessons' shaders; every one
-  with a stage and no `${...}` template must compile.
-
-Cases whose vertex or fragment source is empty use a trivial valid shader of that stage.
-
-## The bar and the peers
-
-| | WebGL must_pass | WebGL must_fail | dEQP pass | dEQP fail | webgl2fundamentals |
-|---|---|---|---|---|---|
-| **bar** | ≥ 155/159 | ≥ 60/67 | ≥ 97% | ≥ 95% | all |
-| glslangValidator 12.0.0 (compile + `-l` link) | 155/159 | 52/67 | 4,285/4,287 | 1,332/1,348 | |
-| naga 30.0.1 GLSL front end | 0 (rejects `#version 300 es`) | | 0 | | |
-
-(The peers' dEQP figures are the corpora README's, counted over all 35 files with its own case
-split; with `#version 450 core` substituted naga accepts 68/159 WebGL and 10/4,287 dEQP
-must-pass cases.)
-";
-
-#[derive(Deserialize)]
-struct WebglCase {
-    file: String,
-    index: serde_json::Value,
-    vertex_source: Option<String>,
-    fragment_source: Option<String>,
-    outcome: String,
-}
-
-#[derive(Deserialize)]
-struct DeqpCase {
-    file: String,
-    name: String,
-    expect: String,
-    version: Option<String>,
-    vertex_source: Option<String>,
-    fragment_source: Option<String>,
-}
-
-#[derive(Deserialize)]
-struct GlslangCase {
-    file: String,
-    stage: String,
-    source: String,
-    expect_compile: bool,
-    #[serde(default)]
-    error_lines: Option<Vec<u32>>,
-}
-
-#[derive(Deserialize)]
-struct FundamentalsCase {
-    file: String,
-    stage: Option<String>,
-    source: String,
-    #[serde(default)]
-    templated: bool,
 }
 
 /// Why the corpora could not be scored.
@@ -401,19 +236,21 @@ fn stage_of(name: &str) -> Option<Stage> {
     }
 }
 
-fn compile_or_trivial(name: &str, source: Option<&str>, stage: Stage) -> Shader {
+fn compile_or_trivial(
+    name: &str,
+    source: Option<&str>,
+    stage: Stage,
+    options: &CompileOptions,
+    trivial: [&str; 2],
+) -> Shader {
     let text = match source {
         Some(s) if !s.trim().is_empty() => s,
         _ => match stage {
-            Stage::Vertex => TRIVIAL_VERTEX,
-            Stage::Fragment => TRIVIAL_FRAGMENT,
+            Stage::Vertex => trivial[0],
+            Stage::Fragment => trivial[1],
         },
     };
-    compile(
-        SourceFile::new(name, text),
-        stage,
-        &CompileOptions::default(),
-    )
+    compile(SourceFile::new(name, text), stage, options)
 }
 
 /// What compiling and linking a pair gave.
@@ -425,8 +262,32 @@ struct Built {
 }
 
 fn build(name: &str, vertex: Option<&str>, fragment: Option<&str>) -> Built {
-    let vs = compile_or_trivial(&format!("{name}.vert"), vertex, Stage::Vertex);
-    let fs = compile_or_trivial(&format!("{name}.frag"), fragment, Stage::Fragment);
+    let trivial = [TRIVIAL_VERTEX, TRIVIAL_FRAGMENT];
+    build_with(name, vertex, fragment, &CompileOptions::default(), trivial)
+}
+
+/// Compiles and links a pair with `options`, a missing shader replaced by `trivial`'s.
+fn build_with(
+    name: &str,
+    vertex: Option<&str>,
+    fragment: Option<&str>,
+    options: &CompileOptions,
+    trivial: [&str; 2],
+) -> Built {
+    let vs = compile_or_trivial(
+        &format!("{name}.vert"),
+        vertex,
+        Stage::Vertex,
+        options,
+        trivial,
+    );
+    let fs = compile_or_trivial(
+        &format!("{name}.frag"),
+        fragment,
+        Stage::Fragment,
+        options,
+        trivial,
+    );
     let program = link(&vs, &fs);
     let first_error = [&vs, &fs]
         .iter()
@@ -460,199 +321,28 @@ impl Built {
     }
 }
 
-/// Scores every corpus in `dir` (the folder holding the four `.jsonl` files).
+/// Scores every corpus in `dir` (the folder holding the `.jsonl` files).
 pub fn score(dir: &Path) -> Result<Report, CorpusError> {
+    score_with(dir, false)
+}
+
+/// Scores every corpus in `dir`; with `peers`, also runs glslangValidator (when it is on
+/// `PATH`) on the GLSL ES 1.00 cases in the same run.
+pub fn score_with(dir: &Path, peers: bool) -> Result<Report, CorpusError> {
     let mut report = Report::default();
-    score_webgl(dir, &mut report)?;
-    score_deqp(dir, &mut report)?;
-    score_glslang(dir, &mut report)?;
-    score_fundamentals(dir, &mut report)?;
+    es300::score_webgl(dir, &mut report)?;
+    es300::score_deqp(dir, &mut report)?;
+    es300::score_glslang(dir, &mut report)?;
+    es300::score_fundamentals(dir, &mut report)?;
+    report.es100 = Some(es100::score(dir, peers, &mut report.failures)?);
     Ok(report)
-}
-
-fn score_webgl(dir: &Path, report: &mut Report) -> Result<(), CorpusError> {
-    let cases: Vec<WebglCase> = read_jsonl(dir, WEBGL)?;
-    let results: Vec<(bool, bool, Option<Failure>)> = cases
-        .par_iter()
-        .filter(|c| c.outcome == "must_pass" || c.outcome == "must_fail")
-        .map(|c| {
-            let case = format!("{}#{}", c.file, c.index);
-            let built = build(
-                &case,
-                c.vertex_source.as_deref(),
-                c.fragment_source.as_deref(),
-            );
-            let must_pass = c.outcome == "must_pass";
-            let ok = built.all_ok() == must_pass;
-            let failure = (!ok).then(|| Failure {
-                corpus: "webgl",
-                case,
-                expected: c.outcome.clone(),
-                got: built.got(),
-            });
-            (must_pass, ok, failure)
-        })
-        .collect();
-    report.webgl.name = "WebGL conformance".into();
-    for (must_pass, ok, failure) in results {
-        if must_pass {
-            &mut report.webgl.pass
-        } else {
-            &mut report.webgl.fail
-        }
-        .add(ok);
-        report.failures.extend(failure);
-    }
-    Ok(())
-}
-
-fn score_deqp(dir: &Path, report: &mut Report) -> Result<(), CorpusError> {
-    let cases: Vec<DeqpCase> = read_jsonl(dir, DEQP)?;
-    let results: Vec<(&str, bool, bool, Option<Failure>)> = cases
-        .par_iter()
-        .filter(|c| c.version.as_deref() == Some("300 es"))
-        .map(|c| {
-            let built = build(
-                &c.name,
-                c.vertex_source.as_deref(),
-                c.fragment_source.as_deref(),
-            );
-            let compiled = built.vertex_ok && built.fragment_ok;
-            let (pass_case, ok) = match c.expect.as_str() {
-                "pass" | "build_successful" => (true, built.all_ok()),
-                "compile_fail" => (false, !compiled),
-                "link_fail" => (false, compiled && !built.link_ok),
-                "compile_link_fail" => (false, !built.all_ok()),
-                _ => (false, false),
-            };
-            let failure = (!ok).then(|| Failure {
-                corpus: "deqp",
-                case: format!("{} {}", c.file, c.name),
-                expected: c.expect.clone(),
-                got: built.got(),
-            });
-            (c.file.as_str(), pass_case, ok, failure)
-        })
-        .collect();
-    let mut files: BTreeMap<&str, Row> = BTreeMap::new();
-    report.deqp.name = "dEQP GLES3".into();
-    for (file, pass_case, ok, failure) in results {
-        let name = file.rsplit('/').next().unwrap_or(file);
-        let row = files.entry(name).or_insert_with(|| Row {
-            name: name.to_string(),
-            ..Row::default()
-        });
-        if pass_case {
-            row.pass.add(ok);
-            report.deqp.pass.add(ok);
-        } else {
-            row.fail.add(ok);
-            report.deqp.fail.add(ok);
-        }
-        report.failures.extend(failure);
-    }
-    report.deqp_files = files.into_values().collect();
-    Ok(())
-}
-
-fn score_glslang(dir: &Path, report: &mut Report) -> Result<(), CorpusError> {
-    let cases: Vec<GlslangCase> = read_jsonl(dir, GLSLANG)?;
-    for c in &cases {
-        let Some(stage) = stage_of(&c.stage) else {
-            continue;
-        };
-        let shader = compile(
-            SourceFile::new(c.file.as_str(), c.source.as_str()),
-            stage,
-            &CompileOptions::default(),
-        );
-        let ok = shader.ok() == c.expect_compile;
-        if c.expect_compile {
-            &mut report.glslang.clean
-        } else {
-            &mut report.glslang.errors
-        }
-        .add(ok);
-        let error_lines: std::collections::BTreeSet<u32> = shader
-            .diagnostics
-            .iter()
-            .filter(|d| d.is_error())
-            .map(|d| shader.file.line_of(d.span.start))
-            .collect();
-        let mut expected: Vec<u32> = c.error_lines.clone().unwrap_or_default();
-        expected.sort_unstable();
-        expected.dedup();
-        for line in expected {
-            report.glslang.error_lines.add(error_lines.contains(&line));
-        }
-        if !ok {
-            report.failures.push(Failure {
-                corpus: "glslang",
-                case: c.file.clone(),
-                expected: if c.expect_compile {
-                    "compiles"
-                } else {
-                    "compile error"
-                }
-                .into(),
-                got: shader
-                    .diagnostics
-                    .iter()
-                    .find(|d| d.is_error())
-                    .map(|d| format!("line {}: {}", shader.file.line_of(d.span.start), d.message))
-                    .unwrap_or_else(|| "compiled".into()),
-            });
-        }
-    }
-    Ok(())
-}
-
-fn score_fundamentals(dir: &Path, report: &mut Report) -> Result<(), CorpusError> {
-    let cases: Vec<FundamentalsCase> = read_jsonl(dir, FUNDAMENTALS)?;
-    let results: Vec<Option<(bool, Option<Failure>)>> = cases
-        .par_iter()
-        .map(|c| {
-            let stage = c
-                .stage
-                .as_deref()
-                .and_then(stage_of)
-                .filter(|_| !c.templated)?;
-            let shader = compile(
-                SourceFile::new(c.file.as_str(), c.source.as_str()),
-                stage,
-                &CompileOptions::default(),
-            );
-            let failure = (!shader.ok()).then(|| Failure {
-                corpus: "webgl2fundamentals",
-                case: c.file.clone(),
-                expected: "compiles".into(),
-                got: shader
-                    .diagnostics
-                    .iter()
-                    .find(|d| d.is_error())
-                    .map(|d| format!("line {}: {}", shader.file.line_of(d.span.start), d.message))
-                    .unwrap_or_default(),
-            });
-            Some((shader.ok(), failure))
-        })
-        .collect();
-    for r in results {
-        match r {
-            None => report.fundamentals_skipped += 1,
-            Some((ok, failure)) => {
-                report.fundamentals.add(ok);
-                report.failures.extend(failure);
-            }
-        }
-    }
-    Ok(())
 }
 
 /// Runs `essl conformance`: prints the tables (and the failures with `list_failures`), writes
 /// the Markdown page when asked, and returns the exit status (0, or 2 when the corpora cannot
 /// be read or the page cannot be written).
 pub fn run(corpora: &Path, markdown: Option<&Path>, list_failures: bool) -> i32 {
-    let report = match score(corpora) {
+    let report = match score_with(corpora, true) {
         Ok(r) => r,
         Err(e) => {
             eprintln!("error: cannot read the corpora: {e}");
