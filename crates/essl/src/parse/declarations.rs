@@ -298,6 +298,9 @@ impl Parser<'_> {
             Tok::Reserved(r) if &**r == "attribute" || &**r == "varying" => true,
             Tok::Kw(k) if type_keyword(*k).is_some() => self.type_then_name(),
             Tok::Ident(n) if self.is_type_name(n) => self.type_then_name(),
+            // Two names in a row can only be a declaration with an unknown type (`uint x`
+            // in GLSL ES 1.00, a misspelt struct): read it as one, to say so.
+            Tok::Ident(_) => matches!(self.peek_at(1).tok, Tok::Ident(_)),
             _ => false,
         }
     }

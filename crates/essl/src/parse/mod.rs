@@ -48,8 +48,8 @@ pub fn parse_as(
     stage: Stage,
     lang: &Language,
 ) -> (TranslationUnit, Vec<Diagnostic>) {
-    let _ = lang;
     let mut p = Parser {
+        es100: lang.es100,
         file,
         toks: tokens,
         pos: 0,
@@ -80,6 +80,8 @@ struct Failed;
 type PResult<T> = Result<T, Failed>;
 
 struct Parser<'a> {
+    /// GLSL ES 1.00 (for the words of messages: which version reserves what).
+    es100: bool,
     file: &'a SourceFile,
     toks: Vec<Token>,
     pos: usize,
@@ -180,6 +182,12 @@ impl<'a> Parser<'a> {
             .rev()
             .find_map(|s| s.get(name).copied())
             .unwrap_or(false)
+    }
+
+    /// Whether `name` is a struct's name hidden by a variable or parameter in an inner scope.
+    fn hides_type(&self, name: &str) -> bool {
+        let mut hits = self.type_names.iter().rev().filter_map(|s| s.get(name));
+        hits.next() == Some(&false) && hits.any(|t| *t)
     }
 
     /// Records a struct's name (`is_type`) or a variable's or parameter's in the innermost
@@ -375,9 +383,10 @@ impl<'a> Parser<'a> {
     }
 
     fn reserved_word(&mut self, name: &str, span: Span) {
+        let version = if self.es100 { "1.00" } else { "3.00" };
         let mut d = Diagnostic::error(
             Code::ReservedWord,
-            format!("`{name}` is a reserved word in GLSL ES 3.00"),
+            format!("`{name}` is a reserved word in GLSL ES {version}"),
             span,
         )
         .with_label("reserved for future use")
@@ -387,6 +396,10 @@ impl<'a> Parser<'a> {
             "varying" => d.with_help(
                 "`varying` is GLSL ES 1.00; in 3.00 use `out` in the vertex shader and `in` in the fragment shader",
             ),
+            "switch" | "default" | "flat" | "sampler3D" | "sampler2DShadow" if self.es100 => d
+                .with_help(format!(
+                    "`{name}` is GLSL ES 3.00: start the shader with `#version 300 es` (WebGL 2) to use it"
+                )),
             _ => d.with_help("choose another name"),
         };
         if !self.suppress {

@@ -104,7 +104,10 @@ impl Checker<'_> {
             let d = self.error(
                 Code::InvalidInterfaceType,
                 fty.spec.span,
-                format!("an `{role}` cannot be {p}"),
+                format!(
+                    "{} `{role}` cannot be {p}",
+                    if role == "attribute" { "an" } else { "a" }
+                ),
             );
             d.label = format!("`{role}` of this type is not allowed");
             d.token = role.into();

@@ -452,14 +452,26 @@ impl Checker<'_> {
         func.calls = calls;
     }
 
-    /// Checks a function body whose signature failed, so its own errors are still reported.
+    /// Checks a function body whose signature failed, so its own errors are still reported:
+    /// with the parameters and return type it declares (resolved again, quietly: their errors
+    /// are already reported), so that their uses do not cascade.
     fn check_body_detached(&mut self, f: &ast::FunctionDef) {
+        let before = self.diags.len();
+        self.push_scope();
+        let ret = self.resolve_type(&f.proto.ret.spec).unwrap_or(Type::Void);
+        let params: Vec<(Option<ast::Ident>, hir::Param)> = f
+            .proto
+            .params
+            .iter()
+            .filter_map(|p| self.param(p).map(|hp| (p.name.clone(), hp)))
+            .collect();
+        self.diags.truncate(before);
         let id = self.functions.len();
         self.functions.push(hir::Function {
             name: Arc::from("_essl_invalid"),
             signature: String::new(),
-            params: Vec::new(),
-            ret: Type::Void,
+            params: params.iter().map(|(_, p)| p.clone()).collect(),
+            ret: ret.clone(),
             ret_precision: None,
             locals: Vec::new(),
             body: Vec::new(),
@@ -476,11 +488,13 @@ impl Checker<'_> {
             loops: 0,
             switches: 0,
             calls: Vec::new(),
-            ret: Type::Void,
+            ret,
         });
-        self.push_scope();
-        // Parameters are unknown: declare nothing; uses of them report undeclared names, which
-        // is acceptable after a signature error.
+        for (i, (name, _)) in params.iter().enumerate() {
+            if let Some(n) = name {
+                self.declare(n, Sym::Var(Var::Param(i)));
+            }
+        }
         let _ = self.block_stmts_same_scope(&f.body.stmts);
         self.pop_scope();
         self.fctx = None;

@@ -95,6 +95,9 @@ impl Checker<'_> {
                     None => match builtins {
                         Some(sigs) => self.builtin_call(id, sigs, args, span),
                         None => {
+                            let es100 = self.lang.es100;
+                            let es300_builtin =
+                                es100 && builtins::overloads_in(&id.name, false).is_some();
                             let d = self.error(
                                 Code::UndeclaredFunction,
                                 id.span,
@@ -102,6 +105,8 @@ impl Checker<'_> {
                             );
                             d.label = "not declared before this call".into();
                             let help = match &*id.name {
+                                "texture" | "textureLod" | "textureProj" if es100 => Some("GLSL ES 1.00 samples with `texture2D` (a `sampler2D`) or `textureCube` (a `samplerCube`), `texture2DProj`, and `texture2DLod`/`textureCubeLod` in vertex shaders".to_string()),
+                                _ if es300_builtin => Some(format!("`{}` is a GLSL ES 3.00 built-in function: start the shader with `#version 300 es` (WebGL 2), or write it out", id.name)),
                                 "texture2D" | "textureCube" | "texture3D" => Some("`texture2D`/`textureCube` are GLSL ES 1.00; in GLSL ES 3.00 use `texture`".to_string()),
                                 "texture2DLod" | "textureCubeLod" => Some("in GLSL ES 3.00 use `textureLod`".to_string()),
                                 "texture2DProj" => Some("in GLSL ES 3.00 use `textureProj`".to_string()),
@@ -113,7 +118,7 @@ impl Checker<'_> {
                                 _ => Some("functions must be declared (or prototyped) before they are called".to_string()),
                             };
                             if let Some(h) = help {
-                                if h.starts_with('`') && h.contains("texture") {
+                                if !es100 && h.starts_with('`') && h.contains("texture") {
                                     let replacement = match &*id.name {
                                         "texture2D" | "textureCube" | "texture3D" => "texture",
                                         "texture2DLod" | "textureCubeLod" => "textureLod",
