@@ -13,7 +13,8 @@ fn layout() -> ProgramLayout {
     let vs = "struct U { u_offset: vec2<f32> }
         @group(0) @binding(0) var<uniform> u: U;
         @vertex fn main(@location(0) a_position: vec2<f32>) -> @builtin(position) vec4<f32> {
-            return vec4(a_position * 0.05 + u.u_offset, 0.0, 1.0);
+            let p = a_position * 0.05 + u.u_offset;
+            return vec4(p.x, -p.y, 0.0, 1.0);
         }";
     let fs = "@fragment fn main() -> @location(0) vec4<f32> { return vec4(1.0, 0.5, 0.0, 1.0); }";
     let vertex = naga::front::wgsl::parse_str(vs).expect("valid WGSL");
@@ -50,6 +51,7 @@ fn layout() -> ProgramLayout {
         samplers: Vec::new(),
         blocks: Vec::new(),
         fragment_outputs: vec![(0, GlType::FLOAT_VEC4)],
+        captured: Vec::new(),
     }
 }
 

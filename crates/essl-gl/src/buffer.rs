@@ -6,6 +6,7 @@
 
 use std::ops::Range;
 
+use crate::bindings::BufferRange;
 use crate::context::{Context, Gpu, MAX_UNIFORM_BUFFER_BINDINGS};
 use crate::gl;
 use crate::objects::{Buffer, Id};
@@ -77,6 +78,9 @@ pub(crate) struct BufferObject {
     /// The last index range scanned, its largest index (restart excluded), and whether it
     /// holds the restart index.
     pub(crate) max_index_cache: Option<(IndexRange, Option<u32>, bool)>,
+    /// Whether the GPU copy holds newer bytes than `data` (transform feedback wrote it):
+    /// [`Context::buffer_to_cpu`] brings them back before the CPU copy is read or written.
+    pub(crate) gpu_newer: bool,
 }
 
 impl BufferObject {
@@ -90,10 +94,11 @@ impl BufferObject {
             dirty: None,
             derived: Vec::new(),
             max_index_cache: None,
+            gpu_newer: false,
         }
     }
 
-    fn mark_dirty(&mut self, range: Range<usize>) {
+    pub(crate) fn mark_dirty(&mut self, range: Range<usize>) {
         self.version += 1;
         self.dirty = Some(match self.dirty.take() {
             Some(d) => d.start.min(range.start)..d.end.max(range.end),
@@ -105,6 +110,11 @@ impl BufferObject {
     /// already uses the old contents, in which case a new GPU buffer replaces it (the pending
     /// commands keep the old one alive), so draws keep GL's order without a submit.
     pub(crate) fn gpu_buffer(&mut self, gpu: &Gpu, serial: u64) -> wgpu::Buffer {
+        // Written by the GPU: the GPU copy is the buffer, in the batch's order.
+        if let (true, Some(g)) = (self.gpu_newer, &mut self.gpu) {
+            g.last_batch = serial;
+            return g.buffer.clone();
+        }
         let padded = padded_size(self.data.len() as u64);
         let reusable =
             matches!(&self.gpu, Some(g) if g.buffer.size() == padded && g.last_batch != serial);
@@ -177,6 +187,8 @@ pub(crate) fn create_buffer_init(gpu: &Gpu, data: &[u8], size: u64, label: &str)
         usage: wgpu::BufferUsages::VERTEX
             | wgpu::BufferUsages::INDEX
             | wgpu::BufferUsages::UNIFORM
+            | wgpu::BufferUsages::STORAGE
+            | wgpu::BufferUsages::COPY_SRC
             | wgpu::BufferUsages::COPY_DST,
         mapped_at_creation: true,
     });
@@ -209,7 +221,7 @@ impl Context {
     pub fn create_buffer(&mut self) -> Buffer {
         Buffer {
             ctx: self.id,
-            id: self.buffers.insert(BufferObject::new()),
+            id: self.objects.buffers.insert(BufferObject::new()),
         }
     }
 
@@ -217,6 +229,7 @@ impl Context {
     pub fn is_buffer(&self, buffer: Buffer) -> bool {
         buffer.ctx == self.id
             && self
+                .objects
                 .buffers
                 .get(buffer.id)
                 .is_some_and(|b| b.kind.is_some())
@@ -227,7 +240,7 @@ impl Context {
         if !self.owns(buffer.ctx, function) {
             return None;
         }
-        if !self.buffers.is_live(buffer.id) {
+        if !self.objects.buffers.is_live(buffer.id) {
             self.error(gl::INVALID_OPERATION, function, "deleted buffer");
             return None;
         }
@@ -238,11 +251,14 @@ impl Context {
     /// target, `INVALID_OPERATION` for none bound.
     pub(crate) fn bound_buffer(&mut self, target: u32, function: &str) -> Option<Id> {
         let bound = match target {
-            gl::ARRAY_BUFFER => self.array_buffer,
             gl::ELEMENT_ARRAY_BUFFER => self.vao().element_buffer,
-            gl::COPY_READ_BUFFER => self.copy_read_buffer,
-            gl::COPY_WRITE_BUFFER => self.copy_write_buffer,
-            gl::UNIFORM_BUFFER => self.uniform_buffer,
+            gl::ARRAY_BUFFER
+            | gl::COPY_READ_BUFFER
+            | gl::COPY_WRITE_BUFFER
+            | gl::UNIFORM_BUFFER
+            | gl::PIXEL_PACK_BUFFER
+            | gl::PIXEL_UNPACK_BUFFER
+            | gl::TRANSFORM_FEEDBACK_BUFFER => self.bindings.buffer(target),
             _ => {
                 self.error(
                     gl::INVALID_ENUM,
@@ -264,7 +280,8 @@ impl Context {
 
     /// Binds a buffer to a target (`bindBuffer`): `ARRAY_BUFFER`, `ELEMENT_ARRAY_BUFFER` (state
     /// of the bound vertex array, as in GL), `COPY_READ_BUFFER`, `COPY_WRITE_BUFFER`,
-    /// `UNIFORM_BUFFER`. `None` unbinds.
+    /// `UNIFORM_BUFFER`, `PIXEL_PACK_BUFFER`, `PIXEL_UNPACK_BUFFER`,
+    /// `TRANSFORM_FEEDBACK_BUFFER`. `None` unbinds.
     ///
     /// As WebGL requires, a buffer first bound to `ELEMENT_ARRAY_BUFFER` cannot later be bound
     /// to a target for other data, and the reverse (`INVALID_OPERATION`).
@@ -276,16 +293,12 @@ impl Context {
     fn bind_buffer_checked(&mut self, target: u32, buffer: Option<Buffer>, function: &str) -> bool {
         let kind = match target {
             gl::ELEMENT_ARRAY_BUFFER => Some(BufferKind::Element),
-            gl::ARRAY_BUFFER | gl::UNIFORM_BUFFER => Some(BufferKind::Other),
+            gl::ARRAY_BUFFER
+            | gl::UNIFORM_BUFFER
+            | gl::PIXEL_PACK_BUFFER
+            | gl::PIXEL_UNPACK_BUFFER
+            | gl::TRANSFORM_FEEDBACK_BUFFER => Some(BufferKind::Other),
             gl::COPY_READ_BUFFER | gl::COPY_WRITE_BUFFER => None,
-            gl::PIXEL_PACK_BUFFER | gl::PIXEL_UNPACK_BUFFER | gl::TRANSFORM_FEEDBACK_BUFFER => {
-                self.error(
-                    gl::INVALID_ENUM,
-                    function,
-                    "target not supported by essl-gl",
-                );
-                return false;
-            }
             _ => {
                 self.error(
                     gl::INVALID_ENUM,
@@ -303,7 +316,7 @@ impl Context {
             None => None,
         };
         if let Some(id) = id {
-            let obj = self.buffers.get_mut(id).expect("live");
+            let obj = self.objects.buffers.get_mut(id).expect("live");
             match (obj.kind, kind) {
                 (None, k) => obj.kind = Some(k.unwrap_or(BufferKind::Other)),
                 (Some(have), Some(want)) if have != want => {
@@ -314,16 +327,11 @@ impl Context {
                 _ => {}
             }
         }
-        match target {
-            gl::ARRAY_BUFFER => self.array_buffer = id,
-            gl::ELEMENT_ARRAY_BUFFER => {
-                let mut slot = self.vao().element_buffer;
-                self.buffers.retarget(&mut slot, id);
-                self.vao_mut().element_buffer = slot;
-            }
-            gl::COPY_READ_BUFFER => self.copy_read_buffer = id,
-            gl::COPY_WRITE_BUFFER => self.copy_write_buffer = id,
-            _ => self.uniform_buffer = id,
+        if target == gl::ELEMENT_ARRAY_BUFFER {
+            let vao = self.bindings.vertex_array();
+            self.objects.set_element_buffer(vao, id);
+        } else {
+            self.bindings.bind_buffer(target, id);
         }
         true
     }
@@ -352,6 +360,7 @@ impl Context {
             return self.error(gl::INVALID_ENUM, F, format_args!("usage 0x{usage:04X}"));
         }
         let b = self
+            .objects
             .buffers
             .get_any_mut(id)
             .expect("bound buffers are alive");
@@ -359,6 +368,7 @@ impl Context {
             Some(n) => vec![0; n],
             None => data.to_vec(),
         };
+        b.gpu_newer = false;
         b.usage = usage;
         let len = b.data.len();
         b.mark_dirty(0..len);
@@ -377,7 +387,9 @@ impl Context {
         let Some(id) = self.bound_buffer(target, F) else {
             return;
         };
+        self.buffer_to_cpu(id);
         let b = self
+            .objects
             .buffers
             .get_any_mut(id)
             .expect("bound buffers are alive");
@@ -401,7 +413,12 @@ impl Context {
         let Some(id) = self.bound_buffer(target, F) else {
             return;
         };
-        let b = self.buffers.get_any(id).expect("bound buffers are alive");
+        self.buffer_to_cpu(id);
+        let b = self
+            .objects
+            .buffers
+            .get_any(id)
+            .expect("bound buffers are alive");
         let Some(range) = byte_range(src_byte_offset, dst.len(), b.data.len()) else {
             return self.error(gl::INVALID_VALUE, F, "range outside the buffer");
         };
@@ -429,12 +446,14 @@ impl Context {
         if size < 0 {
             return self.error(gl::INVALID_VALUE, F, "negative size");
         }
+        self.buffer_to_cpu(src);
+        self.buffer_to_cpu(dst);
         let (src_kind, src_len) = {
-            let b = self.buffers.get_any(src).expect("bound");
+            let b = self.objects.buffers.get_any(src).expect("bound");
             (b.kind, b.data.len())
         };
         let (dst_kind, dst_len) = {
-            let b = self.buffers.get_any(dst).expect("bound");
+            let b = self.objects.buffers.get_any(dst).expect("bound");
             (b.kind, b.data.len())
         };
         let (Some(r), Some(w)) = (
@@ -449,8 +468,8 @@ impl Context {
         if src_kind.is_some() && dst_kind.is_some() && src_kind != dst_kind {
             return self.error(gl::INVALID_OPERATION, F, "index and non-index buffers");
         }
-        let bytes = self.buffers.get_any(src).expect("bound").data[r].to_vec();
-        let b = self.buffers.get_any_mut(dst).expect("bound");
+        let bytes = self.objects.buffers.get_any(src).expect("bound").data[r].to_vec();
+        let b = self.objects.buffers.get_any_mut(dst).expect("bound");
         b.data[w.clone()].copy_from_slice(&bytes);
         b.mark_dirty(w);
     }
@@ -459,43 +478,19 @@ impl Context {
     /// the bound vertex array; other vertex arrays that use it keep it alive, as in GL.
     /// Deleting a deleted buffer does nothing.
     pub fn delete_buffer(&mut self, buffer: Buffer) {
-        if !self.owns(buffer.ctx, "deleteBuffer") || !self.buffers.is_live(buffer.id) {
+        if !self.owns(buffer.ctx, "deleteBuffer") || !self.objects.buffers.is_live(buffer.id) {
             return;
         }
-        let id = buffer.id;
-        for slot in [
-            &mut self.array_buffer,
-            &mut self.copy_read_buffer,
-            &mut self.copy_write_buffer,
-            &mut self.uniform_buffer,
-        ] {
-            if *slot == Some(id) {
-                *slot = None;
-            }
-        }
-        for binding in &mut self.uniform_bindings {
-            if binding.is_some_and(|(b, _, _)| b == id) {
-                *binding = None;
-            }
-        }
-        let mut element = self.vao().element_buffer;
-        if element == Some(id) {
-            self.buffers.retarget(&mut element, None);
-            self.vao_mut().element_buffer = None;
-        }
-        for i in 0..self.max_vertex_attribs as usize {
-            let mut slot = self.vao().attribs[i].buffer;
-            if slot == Some(id) {
-                self.buffers.retarget(&mut slot, None);
-                self.vao_mut().attribs[i].buffer = None;
-            }
-        }
-        self.buffers.delete(id);
+        self.bindings.forget_buffer(buffer.id);
+        let vao = self.bindings.vertex_array();
+        let tf = self.bindings.transform_feedback();
+        self.objects.delete_buffer(buffer.id, vao, tf);
     }
 
-    /// Binds a whole buffer to indexed binding point `index` of `UNIFORM_BUFFER` (and to the
-    /// generic binding) (`bindBufferBase`). An index ≥ `MAX_UNIFORM_BUFFER_BINDINGS` →
-    /// `INVALID_VALUE`; `TRANSFORM_FEEDBACK_BUFFER` is not supported (`INVALID_ENUM`).
+    /// Binds a whole buffer to indexed binding point `index` of `UNIFORM_BUFFER` or
+    /// `TRANSFORM_FEEDBACK_BUFFER` (and to the generic binding) (`bindBufferBase`). An index
+    /// ≥ `MAX_UNIFORM_BUFFER_BINDINGS` (or `MAX_TRANSFORM_FEEDBACK_SEPARATE_ATTRIBS`) →
+    /// `INVALID_VALUE`.
     pub fn bind_buffer_base(&mut self, target: u32, index: u32, buffer: Option<Buffer>) {
         self.bind_buffer_indexed(target, index, buffer, 0, None, "bindBufferBase");
     }
@@ -548,14 +543,20 @@ impl Context {
         size: Option<u64>,
         function: &str,
     ) {
+        let range = buffer.map(|b| BufferRange {
+            buffer: b.id,
+            offset,
+            size,
+        });
         match target {
             gl::UNIFORM_BUFFER => {}
             gl::TRANSFORM_FEEDBACK_BUFFER => {
-                return self.error(
-                    gl::INVALID_ENUM,
-                    function,
-                    "transform feedback is not supported by essl-gl",
-                );
+                if buffer.is_none()
+                    || self.bind_buffer_checked(gl::TRANSFORM_FEEDBACK_BUFFER, buffer, function)
+                {
+                    self.bind_feedback_buffer(index, range, function);
+                }
+                return;
             }
             _ => {
                 return self.error(
@@ -574,14 +575,17 @@ impl Context {
         }
         // Also binds the generic binding point, with bind_buffer's checks.
         if self.bind_buffer_checked(gl::UNIFORM_BUFFER, buffer, function) {
-            self.uniform_bindings[index as usize] = buffer.map(|b| (b.id, offset, size));
+            self.bindings.bind_uniform_range(index as usize, range);
         }
     }
 
     /// The size in bytes of the buffer bound to `target` (`getBufferParameter(BUFFER_SIZE)`).
     pub fn get_buffer_size(&mut self, target: u32) -> Option<u64> {
         let id = self.bound_buffer(target, "getBufferParameter")?;
-        self.buffers.get_any(id).map(|b| b.data.len() as u64)
+        self.objects
+            .buffers
+            .get_any(id)
+            .map(|b| b.data.len() as u64)
     }
 }
 
@@ -590,4 +594,46 @@ pub(crate) fn byte_range(offset: i64, len: usize, size: usize) -> Option<Range<u
     let start = usize::try_from(offset).ok()?;
     let end = start.checked_add(len)?;
     (end <= size).then_some(start..end)
+}
+
+impl Context {
+    /// Brings a buffer's GPU-written bytes back into its CPU copy (submitting the batch and
+    /// waiting), so that the CPU copy can be read or changed.
+    pub(crate) fn buffer_to_cpu(&mut self, id: Id) {
+        let Some(b) = self.objects.buffers.get_any(id) else {
+            return;
+        };
+        let (true, Some(g)) = (b.gpu_newer, &b.gpu) else {
+            return;
+        };
+        let gpu_buffer = g.buffer.clone();
+        let len = b.data.len() as u64;
+        let size = len.div_ceil(4) * 4;
+        if size > 0 {
+            let staging = self.gpu.device.create_buffer(&wgpu::BufferDescriptor {
+                label: Some("essl-gl buffer readback"),
+                size,
+                usage: wgpu::BufferUsages::COPY_DST | wgpu::BufferUsages::MAP_READ,
+                mapped_at_creation: false,
+            });
+            self.frame.submit(&self.gpu, |encoder| {
+                encoder.copy_buffer_to_buffer(&gpu_buffer, 0, &staging, 0, size);
+            });
+            let slice = staging.slice(..);
+            let (tx, rx) = std::sync::mpsc::channel();
+            slice.map_async(wgpu::MapMode::Read, move |r| {
+                let _ = tx.send(r);
+            });
+            let _ = self.gpu.device.poll(wgpu::PollType::wait_indefinitely());
+            if let (Ok(Ok(())), Ok(view)) = (rx.recv(), slice.get_mapped_range()) {
+                let b = self.objects.buffers.get_any_mut(id).expect("checked");
+                b.data.copy_from_slice(&view[..len as usize]);
+            }
+        }
+        let b = self.objects.buffers.get_any_mut(id).expect("checked");
+        b.gpu_newer = false;
+        b.dirty = None;
+        b.version += 1;
+        b.derived.clear();
+    }
 }

@@ -3,25 +3,17 @@
 
 use std::sync::{Arc, Mutex};
 
-use crate::buffer::BufferObject;
+use crate::bindings::Bindings;
+use crate::caches::Caches;
 use crate::error::{error_name, ContextError, ErrorState};
+use crate::extensions::Extensions;
 use crate::frame::Frame;
+use crate::framebuffer::{ContextAttributes, DefaultFramebuffer};
 use crate::gl;
-use crate::objects::{next_context_id, Id, Table};
-use crate::pipeline::PipelineCache;
-use crate::program::{ProgramObject, ShaderObject};
+use crate::objects::{next_context_id, Objects};
+use crate::program::Linker;
 use crate::state::{PixelStore, RenderState};
-use crate::texture::{Dummies, SamplerCache, TextureObject, TextureUnit};
-use crate::vertex_array::{GenericAttrib, VertexArrayObject};
-
-/// The colour format of the default framebuffer: 8-bit RGBA, linear (not sRGB), as WebGL's
-/// default drawing buffer.
-pub const COLOR_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Rgba8Unorm;
-
-/// The depth format of the default framebuffer: wgpu's `Depth24Plus`, at least 24 bits of
-/// depth (Vulkan picks `X8_D24_UNORM_PACK32` or `D32_SFLOAT`); no stencil, as WebGL's default
-/// `{ stencil: false }`.
-pub const DEPTH_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Depth24Plus;
+use crate::vertex_array::VertexArrayObject;
 
 /// The most vertex attributes a program may use (`MAX_VERTEX_ATTRIBS`).
 pub const MAX_VERTEX_ATTRIBS: u32 = 16;
@@ -39,19 +31,13 @@ pub(crate) struct Gpu {
     pub(crate) queue: wgpu::Queue,
     pub(crate) info: wgpu::AdapterInfo,
     pub(crate) limits: wgpu::Limits,
-    /// Whether 32-bit float textures may be filtered (`FLOAT32_FILTERABLE`); WebGL2 without
-    /// `OES_texture_float_linear` treats them as unfilterable either way.
-    pub(crate) _float32_filterable: bool,
 }
 
-/// The offscreen default framebuffer.
-pub(crate) struct DefaultFramebuffer {
-    pub(crate) width: u32,
-    pub(crate) height: u32,
-    pub(crate) color: wgpu::Texture,
-    pub(crate) color_view: wgpu::TextureView,
-    pub(crate) _depth: wgpu::Texture,
-    pub(crate) depth_view: wgpu::TextureView,
+/// Limits of the context that depend on the device.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Limits {
+    /// `MAX_VERTEX_ATTRIBS`: 16, or fewer where the device has fewer vertex buffers.
+    pub(crate) max_vertex_attribs: u32,
 }
 
 /// A WebGL2 rendering context drawing into an offscreen framebuffer, on wgpu's Vulkan backend.
@@ -62,45 +48,33 @@ pub(crate) struct DefaultFramebuffer {
 ///
 /// Commands are recorded into one command encoder and submitted when the context needs the
 /// GPU to have executed them ([`Context::read_pixels`], [`Context::finish`], [`Context::flush`]).
+///
+/// The context is a few owned parts, each in its module and each keeping its own invariants:
+/// the objects and the references between them ([`Objects`]), what is bound ([`Bindings`]),
+/// the fixed-function state ([`RenderState`], [`PixelStore`]), the batch being recorded
+/// ([`Frame`]), derived GPU objects ([`Caches`]), the linker's settings ([`Linker`]) and the
+/// uniform-value checks ([`Validation`](crate::validation::Validation)).
 pub struct Context {
     pub(crate) id: u32,
     pub(crate) gpu: Gpu,
+    pub(crate) limits: Limits,
     pub(crate) errors: ErrorState,
     pub(crate) backend_errors: Arc<Mutex<Vec<String>>>,
     pub(crate) fb: DefaultFramebuffer,
+    /// The extensions `get_extension` has turned on.
+    pub(crate) extensions: Extensions,
     pub(crate) frame: Frame,
-
-    pub(crate) buffers: Table<BufferObject>,
-    pub(crate) textures: Table<TextureObject>,
-    pub(crate) vertex_arrays: Table<VertexArrayObject>,
-    pub(crate) programs: Table<ProgramObject>,
-    pub(crate) shaders: Table<ShaderObject>,
-
-    pub(crate) array_buffer: Option<Id>,
-    pub(crate) copy_read_buffer: Option<Id>,
-    pub(crate) copy_write_buffer: Option<Id>,
-    pub(crate) uniform_buffer: Option<Id>,
-    /// Indexed `UNIFORM_BUFFER` bindings: buffer, offset, size (`None`: the whole buffer).
-    pub(crate) uniform_bindings: Vec<Option<(Id, u64, Option<u64>)>>,
-    pub(crate) default_vao: VertexArrayObject,
-    pub(crate) bound_vao: Option<Id>,
-    pub(crate) generic_attribs: Vec<GenericAttrib>,
-    pub(crate) active_texture: u32,
-    pub(crate) texture_units: Vec<TextureUnit>,
-    pub(crate) current_program: Option<Id>,
+    pub(crate) objects: Objects,
+    pub(crate) bindings: Bindings,
     pub(crate) state: RenderState,
     pub(crate) pixel_store: PixelStore,
-
-    pub(crate) pipelines: PipelineCache,
-    pub(crate) samplers: SamplerCache,
-    pub(crate) dummies: Dummies,
-    pub(crate) max_vertex_attribs: u32,
-    pub(crate) link_serial: u64,
-    pub(crate) readback: Option<wgpu::Buffer>,
+    pub(crate) caches: Caches,
+    pub(crate) linker: Linker,
     /// The uniform-value checks ([`Context::set_validation`]) and their warnings.
     pub(crate) validation: crate::validation::Validation,
-    /// What every program `link_program` lowers goes through ([`Context::set_program_filter`]).
-    pub(crate) program_filter: Option<ProgramFilter>,
+    /// How many times [`Context::present`] ran: queries and fences ended before one are
+    /// answered after it.
+    pub(crate) presents: u64,
 }
 
 /// A step between lowering and installing a program: see [`Context::set_program_filter`].
@@ -108,13 +82,31 @@ pub type ProgramFilter = Box<
     dyn FnMut(essl::program::ProgramLayout) -> Result<essl::program::ProgramLayout, String> + Send,
 >;
 
+/// The wgpu features essl-gl asks for when the adapter has them: vertex shaders that write
+/// storage buffers (transform feedback), `DEPTH32F_STENCIL8`, filterable 32-bit floats.
+const WANTED_FEATURES: wgpu::Features = wgpu::Features::VERTEX_WRITABLE_STORAGE
+    .union(wgpu::Features::DEPTH32FLOAT_STENCIL8)
+    .union(wgpu::Features::FLOAT32_FILTERABLE);
+
 impl Context {
-    /// Creates a context with an offscreen default framebuffer of `width` × `height` pixels:
-    /// [`COLOR_FORMAT`] colour and [`DEPTH_FORMAT`] depth.
+    /// Creates a context with an offscreen default framebuffer of `width` × `height` pixels
+    /// and the default [`ContextAttributes`] (8-bit RGBA, 24-bit depth, no stencil, no
+    /// multisampling).
     ///
     /// It uses wgpu's Vulkan backend and takes the adapter Vulkan offers, a software one
     /// (Mesa's lavapipe) included. With none, the error says what to install.
     pub fn new(width: u32, height: u32) -> Result<Context, ContextError> {
+        Context::with_attributes(width, height, ContextAttributes::default())
+    }
+
+    /// Creates a context whose default framebuffer has the given attributes
+    /// (`canvas.getContext("webgl2", attributes)`).
+    pub fn with_attributes(
+        width: u32,
+        height: u32,
+        attributes: ContextAttributes,
+    ) -> Result<Context, ContextError> {
+        quiet_vulkan_loader();
         let mut desc = wgpu::InstanceDescriptor::new_without_display_handle();
         desc.backends = wgpu::Backends::VULKAN;
         desc.flags = wgpu::InstanceFlags::empty();
@@ -127,18 +119,10 @@ impl Context {
         }))
         .map_err(|e| ContextError::NoAdapter(e.to_string()))?;
         let info = adapter.get_info();
-        let adapter_limits = adapter.limits();
-        let max = adapter_limits.max_texture_dimension_2d;
-        if width == 0 || height == 0 || width > max || height > max {
-            return Err(ContextError::InvalidSize { width, height, max });
-        }
-        let float32_filterable = adapter
-            .features()
-            .contains(wgpu::Features::FLOAT32_FILTERABLE);
         let (device, queue) = pollster::block_on(adapter.request_device(&wgpu::DeviceDescriptor {
             label: Some("essl-gl"),
-            required_features: wgpu::Features::empty(),
-            required_limits: adapter_limits.clone(),
+            required_features: adapter.features() & WANTED_FEATURES,
+            required_limits: adapter.limits(),
             experimental_features: wgpu::ExperimentalFeatures::disabled(),
             memory_hints: wgpu::MemoryHints::Performance,
             trace: wgpu::Trace::Off,
@@ -147,7 +131,26 @@ impl Context {
             adapter: info.name.clone(),
             source,
         })?;
+        Context::from_device(device, queue, width, height, attributes)
+    }
 
+    /// Creates a context on a caller's wgpu device and queue (an application that already
+    /// renders with wgpu). essl-gl uses the device's features where they help (transform
+    /// feedback needs `VERTEX_WRITABLE_STORAGE`) and records wgpu's validation errors in
+    /// [`Context::backend_errors`] instead of panicking.
+    pub fn from_device(
+        device: wgpu::Device,
+        queue: wgpu::Queue,
+        width: u32,
+        height: u32,
+        attributes: ContextAttributes,
+    ) -> Result<Context, ContextError> {
+        let info = device.adapter_info();
+        let limits = device.limits();
+        let max = limits.max_texture_dimension_2d;
+        if width == 0 || height == 0 || width > max || height > max {
+            return Err(ContextError::InvalidSize { width, height, max });
+        }
         // wgpu's default handler panics on a validation error; essl-gl validates everything
         // itself, so an error here is a bug in essl-gl: keep it for `backend_errors`.
         let backend_errors = Arc::new(Mutex::new(Vec::new()));
@@ -157,9 +160,6 @@ impl Context {
                 v.push(e.to_string());
             }
         }));
-
-        let limits = device.limits();
-        let fb = DefaultFramebuffer::new(&device, width, height);
         let max_vertex_attribs = MAX_VERTEX_ATTRIBS
             .min(limits.max_vertex_attributes)
             .min(limits.max_vertex_buffers);
@@ -168,43 +168,37 @@ impl Context {
             queue,
             info,
             limits,
-            _float32_filterable: float32_filterable,
         };
-        let frame = Frame::new(&gpu);
+        let fb = DefaultFramebuffer::new(&gpu, width, height, attributes);
         Ok(Context {
             id: next_context_id(),
+            limits: Limits { max_vertex_attribs },
             errors: ErrorState::default(),
             backend_errors,
             fb,
-            frame,
-            buffers: Table::default(),
-            textures: Table::default(),
-            vertex_arrays: Table::default(),
-            programs: Table::default(),
-            shaders: Table::default(),
-            array_buffer: None,
-            copy_read_buffer: None,
-            copy_write_buffer: None,
-            uniform_buffer: None,
-            uniform_bindings: vec![None; MAX_UNIFORM_BUFFER_BINDINGS as usize],
-            default_vao: VertexArrayObject::new(max_vertex_attribs),
-            bound_vao: None,
-            generic_attribs: vec![GenericAttrib::default(); max_vertex_attribs as usize],
-            active_texture: 0,
-            texture_units: vec![TextureUnit::default(); MAX_TEXTURE_UNITS as usize],
-            current_program: None,
-            state: RenderState::new(width, height),
+            extensions: Extensions::default(),
+            frame: Frame::new(),
+            objects: Objects::new(max_vertex_attribs),
+            bindings: Bindings::new(MAX_UNIFORM_BUFFER_BINDINGS, MAX_TEXTURE_UNITS),
+            state: RenderState::new(width, height, max_vertex_attribs),
             pixel_store: PixelStore::default(),
-            pipelines: PipelineCache::default(),
-            samplers: SamplerCache::default(),
-            dummies: Dummies::default(),
-            max_vertex_attribs,
-            link_serial: 0,
-            readback: None,
+            caches: Caches::default(),
+            linker: Linker::default(),
             validation: Default::default(),
-            program_filter: None,
+            presents: 0,
             gpu,
         })
+    }
+
+    /// The attributes the default framebuffer was made with (`getContextAttributes`).
+    pub fn get_context_attributes(&self) -> ContextAttributes {
+        self.fb.attributes
+    }
+
+    /// Whether the context is lost (`isContextLost`): never, as an offscreen wgpu device is
+    /// not taken away; a device lost to a driver fault shows as [`Context::backend_errors`].
+    pub fn is_context_lost(&self) -> bool {
+        false
     }
 
     /// The adapter the context renders with (name, driver, device type).
@@ -261,20 +255,12 @@ impl Context {
 
     /// The vertex array object that is bound (the default one for `None`).
     pub(crate) fn vao(&self) -> &VertexArrayObject {
-        match self.bound_vao.and_then(|id| self.vertex_arrays.get_any(id)) {
-            Some(v) => v,
-            None => &self.default_vao,
-        }
+        self.objects.vertex_array(self.bindings.vertex_array())
     }
 
-    /// Mutable [`Context::vao`].
+    /// Mutable [`Context::vao`] (for the state that holds no reference).
     pub(crate) fn vao_mut(&mut self) -> &mut VertexArrayObject {
-        match self.bound_vao {
-            Some(id) if self.vertex_arrays.get_any(id).is_some() => {
-                self.vertex_arrays.get_any_mut(id).expect("checked above")
-            }
-            _ => &mut self.default_vao,
-        }
+        self.objects.vertex_array_mut(self.bindings.vertex_array())
     }
 
     /// Checks that a handle belongs to this context, recording `INVALID_OPERATION` if not.
@@ -292,42 +278,23 @@ impl Context {
     }
 }
 
-impl DefaultFramebuffer {
-    fn new(device: &wgpu::Device, width: u32, height: u32) -> Self {
-        let size = wgpu::Extent3d {
-            width,
-            height,
-            depth_or_array_layers: 1,
-        };
-        let color = device.create_texture(&wgpu::TextureDescriptor {
-            label: Some("essl-gl default colour"),
-            size,
-            mip_level_count: 1,
-            sample_count: 1,
-            dimension: wgpu::TextureDimension::D2,
-            format: COLOR_FORMAT,
-            usage: wgpu::TextureUsages::RENDER_ATTACHMENT
-                | wgpu::TextureUsages::COPY_SRC
-                | wgpu::TextureUsages::TEXTURE_BINDING,
-            view_formats: &[],
-        });
-        let depth = device.create_texture(&wgpu::TextureDescriptor {
-            label: Some("essl-gl default depth"),
-            size,
-            mip_level_count: 1,
-            sample_count: 1,
-            dimension: wgpu::TextureDimension::D2,
-            format: DEPTH_FORMAT,
-            usage: wgpu::TextureUsages::RENDER_ATTACHMENT,
-            view_formats: &[],
-        });
-        DefaultFramebuffer {
-            width,
-            height,
-            color_view: color.create_view(&Default::default()),
-            color,
-            depth_view: depth.create_view(&Default::default()),
-            _depth: depth,
+/// The Vulkan loader prints "XDG_RUNTIME_DIR is invalid or not set in the environment" on
+/// stderr when that variable is unset (for every instance); give it a private directory
+/// first, once per process, unless the environment already has one.
+fn quiet_vulkan_loader() {
+    static ONCE: std::sync::Once = std::sync::Once::new();
+    ONCE.call_once(|| {
+        if std::env::var_os("XDG_RUNTIME_DIR").is_some() {
+            return;
         }
-    }
+        let dir = std::env::temp_dir().join(format!("essl-gl-runtime-{}", std::process::id()));
+        if std::fs::create_dir_all(&dir).is_ok() {
+            #[cfg(unix)]
+            {
+                use std::os::unix::fs::PermissionsExt;
+                let _ = std::fs::set_permissions(&dir, std::fs::Permissions::from_mode(0o700));
+            }
+            std::env::set_var("XDG_RUNTIME_DIR", &dir);
+        }
+    });
 }

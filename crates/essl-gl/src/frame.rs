@@ -1,13 +1,19 @@
-//! Batching: the command encoder and render pass that draws are recorded into, the pending
-//! clears, and the per-batch arena for uniforms, constant attributes and generated indices.
+//! Batching: the command encoder that draws, clears and copies are recorded into, the render
+//! pass open on the current draw target, and the per-batch arena for uniforms, constant
+//! attributes, generated indices and texel uploads.
 //!
 //! GL executes commands in order; wgpu executes a command buffer after the queue writes made
-//! before its submission. Draws are therefore recorded into one open render pass and
-//! submitted together ("a batch") only when the results are needed: resources a batch uses
-//! are never written in place while it is open (buffers and textures are replaced instead,
-//! and per-draw data goes to the arena, which is written just before the submit).
+//! before its submission. Commands are therefore recorded into one encoder and submitted
+//! together ("a batch") only when the results are needed. Nothing the batch uses is written
+//! in place by a queue write: buffers are replaced, and per-draw data and texel uploads go to
+//! the arena, which is written just before the submit and read by commands recorded in GL's
+//! order (a texel upload is a buffer-to-texture copy in the encoder).
+//!
+//! Draws go into a render pass on a [`PassTarget`]; a draw on another target, a copy, or a
+//! clear of whole attachments ends the pass, and the next draw begins one (loading what the
+//! attachments hold).
 
-use crate::context::{Context, DefaultFramebuffer, Gpu};
+use crate::context::{Context, Gpu};
 
 /// Bytes of one arena chunk (larger allocations get a chunk of their own size).
 const CHUNK_SIZE: u64 = 1 << 18;
@@ -73,6 +79,7 @@ impl Arena {
                 usage: wgpu::BufferUsages::UNIFORM
                     | wgpu::BufferUsages::VERTEX
                     | wgpu::BufferUsages::INDEX
+                    | wgpu::BufferUsages::COPY_SRC
                     | wgpu::BufferUsages::COPY_DST,
                 mapped_at_creation: false,
             });
@@ -109,10 +116,63 @@ pub(crate) struct PassState {
     pub(crate) viewport: Option<[u32; 6]>,
     pub(crate) scissor: Option<[u32; 4]>,
     pub(crate) blend_constant: Option<[u32; 4]>,
+    pub(crate) stencil_reference: Option<u32>,
     pub(crate) group0: Option<(wgpu::BindGroup, Option<u32>)>,
     pub(crate) group1: Option<wgpu::BindGroup>,
     pub(crate) vertex_buffers: Vec<Option<(wgpu::Buffer, u64)>>,
     pub(crate) index_buffer: Option<(wgpu::Buffer, u64, wgpu::IndexFormat)>,
+}
+
+/// A colour attachment of a render pass.
+#[derive(Clone, Debug, PartialEq, Eq, Hash)]
+pub(crate) struct ColorTarget {
+    /// A view of one level and layer (a 3D texture's view is the whole level, with
+    /// `depth_slice`).
+    pub(crate) view: wgpu::TextureView,
+    pub(crate) depth_slice: Option<u32>,
+    /// The single-sample view a multisampled attachment is resolved into at the end of
+    /// every pass (the default framebuffer with `antialias`).
+    pub(crate) resolve: Option<wgpu::TextureView>,
+    pub(crate) format: wgpu::TextureFormat,
+}
+
+/// The depth and stencil attachment of a render pass.
+#[derive(Clone, Debug, PartialEq, Eq, Hash)]
+pub(crate) struct DepthTarget {
+    pub(crate) view: wgpu::TextureView,
+    pub(crate) format: wgpu::TextureFormat,
+}
+
+impl DepthTarget {
+    /// Whether the format has depth.
+    pub(crate) fn has_depth(&self) -> bool {
+        self.format.has_depth_aspect()
+    }
+
+    /// Whether the format has stencil.
+    pub(crate) fn has_stencil(&self) -> bool {
+        self.format.has_stencil_aspect()
+    }
+}
+
+/// What a render pass draws into: colour attachments by draw buffer (GL's
+/// `drawBuffers[i]` is location `i`), and depth/stencil.
+#[derive(Clone, Debug, PartialEq, Eq, Hash)]
+pub(crate) struct PassTarget {
+    pub(crate) colors: Vec<Option<ColorTarget>>,
+    pub(crate) depth: Option<DepthTarget>,
+    /// Samples per pixel of every attachment.
+    pub(crate) samples: u32,
+    /// Width and height of the area every attachment covers.
+    pub(crate) size: [u32; 2],
+}
+
+/// What a pass begins by clearing, per attachment (`None`: load what is there).
+#[derive(Clone, Debug, Default)]
+pub(crate) struct PassClears {
+    pub(crate) colors: Vec<Option<wgpu::Color>>,
+    pub(crate) depth: Option<f32>,
+    pub(crate) stencil: Option<u32>,
 }
 
 /// The batch being recorded.
@@ -121,25 +181,34 @@ pub(crate) struct Frame {
     pub(crate) serial: u64,
     encoder: Option<wgpu::CommandEncoder>,
     pub(crate) pass: Option<wgpu::RenderPass<'static>>,
+    /// The target of the open pass.
+    target: Option<PassTarget>,
     pub(crate) pass_state: PassState,
-    pending_color: Option<wgpu::Color>,
-    pending_depth: Option<f32>,
     pub(crate) arena: Arena,
     /// Draws recorded in the batch (for statistics).
     pub(crate) draws: u64,
+    /// The occlusion query in progress: every pass counts the samples that pass into a
+    /// slot of its own of this set; the next slot.
+    pub(crate) occlusion: Option<(wgpu::QuerySet, u32)>,
+    /// Whether the open pass has begun an occlusion query.
+    pass_counts: bool,
 }
 
+/// Slots of one occlusion query's set: render passes counted while it is active.
+pub(crate) const OCCLUSION_SLOTS: u32 = 4096;
+
 impl Frame {
-    pub(crate) fn new(_gpu: &Gpu) -> Self {
+    pub(crate) fn new() -> Self {
         Frame {
             serial: 1,
             encoder: None,
             pass: None,
+            target: None,
             pass_state: PassState::default(),
-            pending_color: None,
-            pending_depth: None,
             arena: Arena::new(),
             draws: 0,
+            occlusion: None,
+            pass_counts: false,
         }
     }
 
@@ -154,71 +223,108 @@ impl Frame {
 
     /// Ends the open render pass, if any.
     pub(crate) fn end_pass(&mut self) {
+        if let (Some(pass), true) = (self.pass.as_mut(), self.pass_counts) {
+            pass.end_occlusion_query();
+        }
+        self.pass_counts = false;
         self.pass = None;
+        self.target = None;
     }
 
-    /// The open render pass on the default framebuffer, beginning one (with the pending
-    /// clears as load operations) if needed.
+    /// The encoder, for commands outside a render pass (copies): ends the open pass.
+    pub(crate) fn commands(&mut self, gpu: &Gpu) -> &mut wgpu::CommandEncoder {
+        self.end_pass();
+        self.encoder(gpu)
+    }
+
+    /// The render pass open on `target`, beginning one that loads the attachments if the
+    /// open pass (if any) has another target.
     pub(crate) fn pass(
         &mut self,
         gpu: &Gpu,
-        fb: &DefaultFramebuffer,
+        target: &PassTarget,
     ) -> &mut wgpu::RenderPass<'static> {
-        if self.pass.is_none() {
-            let color = self.pending_color.take();
-            let depth = self.pending_depth.take();
-            let encoder = self.encoder(gpu);
-            let pass = encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
-                label: Some("essl-gl pass"),
-                color_attachments: &[Some(wgpu::RenderPassColorAttachment {
-                    view: &fb.color_view,
-                    depth_slice: None,
-                    resolve_target: None,
-                    ops: wgpu::Operations {
-                        load: color.map_or(wgpu::LoadOp::Load, wgpu::LoadOp::Clear),
-                        store: wgpu::StoreOp::Store,
-                    },
-                })],
-                depth_stencil_attachment: Some(wgpu::RenderPassDepthStencilAttachment {
-                    view: &fb.depth_view,
-                    depth_ops: Some(wgpu::Operations {
-                        load: depth.map_or(wgpu::LoadOp::Load, wgpu::LoadOp::Clear),
-                        store: wgpu::StoreOp::Store,
-                    }),
-                    stencil_ops: None,
-                }),
-                timestamp_writes: None,
-                occlusion_query_set: None,
-                multiview_mask: None,
-            });
-            self.pass = Some(pass.forget_lifetime());
-            self.pass_state = PassState::default();
+        if self.target.as_ref() != Some(target) {
+            self.begin(gpu, target, &PassClears::default());
         }
         self.pass.as_mut().expect("just opened")
     }
 
-    /// Records a clear of whole attachments: it becomes the load operation of the next pass.
-    pub(crate) fn clear(&mut self, color: Option<wgpu::Color>, depth: Option<f32>) {
-        self.end_pass();
-        if color.is_some() {
-            self.pending_color = color;
-        }
-        if depth.is_some() {
-            self.pending_depth = depth;
-        }
+    /// Ends the open pass and begins one on `target` that clears what `clears` says (whole
+    /// attachments) and loads the rest.
+    pub(crate) fn clear_pass(&mut self, gpu: &Gpu, target: &PassTarget, clears: &PassClears) {
+        self.begin(gpu, target, clears);
     }
 
-    /// Submits the batch: pending clears are applied, the arena is uploaded, `extra` records
-    /// commands after the batch's (a readback's copy).
+    fn begin(&mut self, gpu: &Gpu, target: &PassTarget, clears: &PassClears) {
+        self.end_pass();
+        let colors: Vec<Option<wgpu::RenderPassColorAttachment>> = target
+            .colors
+            .iter()
+            .enumerate()
+            .map(|(i, c)| {
+                c.as_ref().map(|c| {
+                    let clear = clears.colors.get(i).copied().flatten();
+                    wgpu::RenderPassColorAttachment {
+                        view: &c.view,
+                        depth_slice: c.depth_slice,
+                        resolve_target: c.resolve.as_ref(),
+                        ops: wgpu::Operations {
+                            load: clear.map_or(wgpu::LoadOp::Load, wgpu::LoadOp::Clear),
+                            store: wgpu::StoreOp::Store,
+                        },
+                    }
+                })
+            })
+            .collect();
+        let depth = target.depth.as_ref().map(|d| {
+            let ops = |clear: Option<f32>| wgpu::Operations {
+                load: clear.map_or(wgpu::LoadOp::Load, wgpu::LoadOp::Clear),
+                store: wgpu::StoreOp::Store,
+            };
+            wgpu::RenderPassDepthStencilAttachment {
+                view: &d.view,
+                depth_ops: d.has_depth().then(|| ops(clears.depth)),
+                stencil_ops: d.has_stencil().then(|| wgpu::Operations {
+                    load: clears
+                        .stencil
+                        .map_or(wgpu::LoadOp::Load, wgpu::LoadOp::Clear),
+                    store: wgpu::StoreOp::Store,
+                }),
+            }
+        });
+        let slot = match &mut self.occlusion {
+            Some((set, next)) if *next < OCCLUSION_SLOTS => {
+                *next += 1;
+                Some((set.clone(), *next - 1))
+            }
+            _ => None,
+        };
+        let encoder = self.encoder(gpu);
+        let mut pass = encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
+            label: Some("essl-gl pass"),
+            color_attachments: &colors,
+            depth_stencil_attachment: depth,
+            timestamp_writes: None,
+            occlusion_query_set: slot.as_ref().map(|(set, _)| set),
+            multiview_mask: None,
+        });
+        if let Some((_, index)) = &slot {
+            pass.begin_occlusion_query(*index);
+        }
+        self.pass = Some(pass.forget_lifetime());
+        self.pass_counts = slot.is_some();
+        self.target = Some(target.clone());
+        self.pass_state = PassState::default();
+    }
+
+    /// Submits the batch: the arena is uploaded, `extra` records commands after the batch's
+    /// (a readback's copy).
     pub(crate) fn submit(
         &mut self,
         gpu: &Gpu,
-        fb: &DefaultFramebuffer,
         extra: impl FnOnce(&mut wgpu::CommandEncoder),
     ) -> wgpu::SubmissionIndex {
-        if self.pending_color.is_some() || self.pending_depth.is_some() {
-            self.pass(gpu, fb);
-        }
         self.end_pass();
         extra(self.encoder(gpu));
         self.arena.upload(&gpu.queue);
@@ -230,7 +336,7 @@ impl Frame {
 
     /// Whether anything is waiting to be submitted.
     pub(crate) fn is_empty(&self) -> bool {
-        self.encoder.is_none() && self.pending_color.is_none() && self.pending_depth.is_none()
+        self.encoder.is_none()
     }
 }
 
@@ -238,7 +344,7 @@ impl Context {
     /// Submits the recorded commands to the GPU without waiting (`flush`).
     pub fn flush(&mut self) {
         if !self.frame.is_empty() {
-            self.frame.submit(&self.gpu, &self.fb, |_| {});
+            self.frame.submit(&self.gpu, |_| {});
         }
     }
 

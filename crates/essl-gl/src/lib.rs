@@ -16,7 +16,9 @@
 //!
 //! GL's conventions are kept: `read_pixels` returns the bottom row first, texture data row 0
 //! is `t = 0`, front faces are counter-clockwise in normalized device coordinates, and a vertex
-//! input wider than its array gets GL's (0, 0, 0, 1) defaults.
+//! input wider than its array gets GL's (0, 0, 0, 1) defaults. Every framebuffer stores GL's
+//! row 0 first in memory: programs are lowered with [`LOWER_OPTIONS`], which draw upside down
+//! on wgpu, so that a rendered texture is sampled, read and blitted the way GL has it.
 //!
 //! # How WebGL maps onto wgpu
 //!
@@ -62,29 +64,56 @@
 
 pub mod gl;
 
+mod bindings;
+mod blit;
 mod buffer;
+mod caches;
 mod context;
 mod draw;
 mod error;
+mod extensions;
 mod frame;
+mod framebuffer;
 mod objects;
 mod pipeline;
 mod program;
 mod query;
+mod query_object;
 mod readback;
+mod renderbuffer;
+mod sampler;
 pub mod scene;
 mod shader_patch;
 mod state;
+mod stencil;
+mod sync;
 mod texture;
+mod transform_feedback;
 mod validation;
 mod vertex_array;
 
 pub use bytemuck;
-pub use context::{
-    Context, ProgramFilter, COLOR_FORMAT, DEPTH_FORMAT, MAX_TEXTURE_UNITS, MAX_VERTEX_ATTRIBS,
-};
+pub use context::{Context, ProgramFilter, MAX_TEXTURE_UNITS, MAX_VERTEX_ATTRIBS};
 pub use error::{error_name, ContextError};
-pub use objects::{Buffer, Program, Shader, Texture, UniformLocation, VertexArray};
+pub use extensions::Extension;
+pub use framebuffer::{ContextAttributes, COLOR_FORMAT, MAX_COLOR_ATTACHMENTS};
+pub use objects::{
+    Buffer, Framebuffer, Program, Query, Renderbuffer, Sampler, Shader, Sync, Texture,
+    TransformFeedback, UniformLocation, VertexArray,
+};
+pub use program::ActiveInfo;
 pub use query::{Parameter, SHADING_LANGUAGE_VERSION, SUBPIXEL_BITS, VENDOR, VERSION};
 pub use validation::{SourceLocation, ValidationWarning, MAX_VALIDATION_WARNINGS};
 pub use wgpu;
+
+/// How essl-gl has the front end lower programs ([`Context::link_program`]), and what a layout
+/// handed to [`Context::link_program_from_layout`] must follow: clip z in 0..w, and clip y
+/// negated so that every framebuffer (the default one, textures, renderbuffers) stores GL's
+/// row 0 first — sampling a rendered texture, `read_pixels`, blits and copies then need no
+/// flip — with `gl_FragCoord` and `dFdy` as the API gives them.
+pub const LOWER_OPTIONS: essl::program::LowerOptions = essl::program::LowerOptions {
+    zero_to_one_depth: true,
+    flip_frag_coord_y: false,
+    flip_clip_y: true,
+    transform_feedback: Vec::new(),
+};

@@ -219,9 +219,10 @@ fn active_uniforms(gl: &mut Context, program: Program) -> Vec<ActiveUniform> {
         .unwrap_or(0);
     (0..count as u32)
         .filter_map(|i| gl.get_active_uniform(program, i))
-        .map(|(name, ty, size)| {
+        .map(|info| {
+            let name = info.name;
             let key = name.strip_suffix("[0]").map_or(name.clone(), str::to_owned);
-            (key, ty, size, false)
+            (key, info.ty, info.size, false)
         })
         .collect()
 }
@@ -406,7 +407,7 @@ impl Setup {
             .and_then(|p| p.as_int())
             .unwrap_or(0);
         for i in 0..attributes as u32 {
-            if let Some((name, ..)) = gl.get_active_attrib(program, i) {
+            if let Some(crate::ActiveInfo { name, .. }) = gl.get_active_attrib(program, i) {
                 if !mapped.contains(&name) {
                     self.warnings.push(format!(
                         "active attribute {name} has no stream: it reads the constant (0, 0, 0, 1)"

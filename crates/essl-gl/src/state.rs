@@ -3,6 +3,7 @@
 
 use crate::context::Context;
 use crate::gl;
+use crate::vertex_array::GenericAttrib;
 
 /// The fixed-function state of a context, with GL's initial values.
 #[derive(Clone, Debug)]
@@ -35,13 +36,23 @@ pub(crate) struct RenderState {
     pub(crate) rasterizer_discard: bool,
     pub(crate) dither: bool,
     pub(crate) stencil_test: bool,
+    pub(crate) stencil: crate::stencil::StencilState,
     pub(crate) sample_alpha_to_coverage: bool,
     pub(crate) sample_coverage: bool,
+    /// `sampleCoverage`'s value and invert flag.
+    pub(crate) sample_coverage_value: (f32, bool),
+    /// `hint(GENERATE_MIPMAP_HINT)` and `hint(FRAGMENT_SHADER_DERIVATIVE_HINT)`.
+    pub(crate) hints: [u32; 2],
     pub(crate) line_width: f32,
+    /// The current value of each vertex attribute (`vertexAttrib4f`…), read by a draw where
+    /// the attribute's array is disabled.
+    pub(crate) generic_attribs: Vec<GenericAttrib>,
 }
 
 impl RenderState {
-    pub(crate) fn new(width: u32, height: u32) -> Self {
+    /// GL's initial state for a `width` × `height` framebuffer and `attribs` vertex
+    /// attributes.
+    pub(crate) fn new(width: u32, height: u32, attribs: u32) -> Self {
         RenderState {
             viewport: [0, 0, width as i32, height as i32],
             scissor: [0, 0, width as i32, height as i32],
@@ -71,9 +82,13 @@ impl RenderState {
             rasterizer_discard: false,
             dither: true,
             stencil_test: false,
+            stencil: Default::default(),
             sample_alpha_to_coverage: false,
             sample_coverage: false,
+            sample_coverage_value: (1.0, false),
+            hints: [gl::DONT_CARE; 2],
             line_width: 1.0,
+            generic_attribs: vec![GenericAttrib::default(); attribs as usize],
         }
     }
 }
@@ -186,8 +201,7 @@ impl Context {
         self.state.clear_depth = depth.clamp(0.0, 1.0);
     }
 
-    /// Sets the stencil value [`Context::clear`] writes (`clearStencil`). The default
-    /// framebuffer has no stencil buffer, so this is only state.
+    /// Sets the stencil value [`Context::clear`] writes (`clearStencil`).
     pub fn clear_stencil(&mut self, s: i32) {
         self.state.clear_stencil = s;
     }
@@ -351,6 +365,33 @@ impl Context {
     pub fn polygon_offset(&mut self, factor: f32, units: f32) {
         self.state.polygon_offset_factor = factor;
         self.state.polygon_offset_units = units;
+    }
+
+    /// Sets how many samples `SAMPLE_COVERAGE` keeps (`sampleCoverage`). essl-gl keeps the
+    /// value and reports it; the coverage mask it would make is not applied.
+    pub fn sample_coverage(&mut self, value: f32, invert: bool) {
+        self.state.sample_coverage_value = (value.clamp(0.0, 1.0), invert);
+    }
+
+    /// A hint about quality against speed (`hint`): `GENERATE_MIPMAP_HINT` or
+    /// `FRAGMENT_SHADER_DERIVATIVE_HINT` to `FASTEST`, `NICEST` or `DONT_CARE`. Kept and
+    /// reported; essl-gl does one thing either way, as GL allows.
+    pub fn hint(&mut self, target: u32, mode: u32) {
+        let slot = match target {
+            gl::GENERATE_MIPMAP_HINT => 0,
+            gl::FRAGMENT_SHADER_DERIVATIVE_HINT => 1,
+            _ => {
+                return self.error(
+                    gl::INVALID_ENUM,
+                    "hint",
+                    format_args!("target 0x{target:04X}"),
+                )
+            }
+        };
+        if !matches!(mode, gl::FASTEST | gl::NICEST | gl::DONT_CARE) {
+            return self.error(gl::INVALID_ENUM, "hint", format_args!("mode 0x{mode:04X}"));
+        }
+        self.state.hints[slot] = mode;
     }
 
     /// Sets the line width (`lineWidth`); only 1 is drawn, as on most WebGL implementations.

@@ -575,7 +575,7 @@ impl Context {
     /// changes nothing else. Takes effect at the next `link_program`.
     pub fn set_shader_name(&mut self, shader: Shader, name: &str) {
         if let Some(id) = self.shader_id(shader, "setShaderName") {
-            if let Some(s) = self.shaders.get_any_mut(id) {
+            if let Some(s) = self.objects.shaders.get_any_mut(id) {
                 s.name = Some(name.to_owned());
             }
         }
@@ -588,7 +588,7 @@ impl Context {
         let Some(p) = self.program_id(program, "programPreconditions") else {
             return Vec::new();
         };
-        let Some(linked) = self.programs.get_any_mut(p).and_then(|o| o.linked.as_mut()) else {
+        let Some(linked) = self.objects.linked_mut(p) else {
             return Vec::new();
         };
         if linked.checks.is_none() {
@@ -607,11 +607,7 @@ impl Context {
             ctx: self.id,
             id: pid,
         };
-        let Some(linked) = self
-            .programs
-            .get_any_mut(pid)
-            .and_then(|o| o.linked.as_mut())
-        else {
+        let Some(linked) = self.objects.linked_mut(pid) else {
             return;
         };
         if linked.checks.is_none() {

@@ -116,10 +116,10 @@ struct AttribPointer {
 impl Context {
     /// Creates a vertex array object (`createVertexArray`).
     pub fn create_vertex_array(&mut self) -> VertexArray {
-        let vao = VertexArrayObject::new(self.max_vertex_attribs);
+        let vao = VertexArrayObject::new(self.limits.max_vertex_attribs);
         VertexArray {
             ctx: self.id,
-            id: self.vertex_arrays.insert(vao),
+            id: self.objects.vertex_arrays.insert(vao),
         }
     }
 
@@ -127,16 +127,16 @@ impl Context {
     pub fn bind_vertex_array(&mut self, vertex_array: Option<VertexArray>) {
         const F: &str = "bindVertexArray";
         match vertex_array {
-            None => self.bound_vao = None,
+            None => self.bindings.bind_vertex_array(None),
             Some(v) => {
                 if !self.owns(v.ctx, F) {
                     return;
                 }
-                let Some(obj) = self.vertex_arrays.get_mut(v.id) else {
+                let Some(obj) = self.objects.vertex_arrays.get_mut(v.id) else {
                     return self.error(gl::INVALID_OPERATION, F, "deleted vertex array");
                 };
                 obj.bound_once = true;
-                self.bound_vao = Some(v.id);
+                self.bindings.bind_vertex_array(Some(v.id));
             }
         }
     }
@@ -145,6 +145,7 @@ impl Context {
     pub fn is_vertex_array(&self, vertex_array: VertexArray) -> bool {
         vertex_array.ctx == self.id
             && self
+                .objects
                 .vertex_arrays
                 .get(vertex_array.id)
                 .is_some_and(|v| v.bound_once)
@@ -155,29 +156,18 @@ impl Context {
         if !self.owns(vertex_array.ctx, "deleteVertexArray") {
             return;
         }
-        let Some(obj) = self.vertex_arrays.get(vertex_array.id) else {
+        if !self.objects.vertex_arrays.is_live(vertex_array.id) {
             return;
-        };
-        let held: Vec<Id> = obj
-            .attribs
-            .iter()
-            .filter_map(|a| a.buffer)
-            .chain(obj.element_buffer)
-            .collect();
-        if self.bound_vao == Some(vertex_array.id) {
-            self.bound_vao = None;
         }
-        self.vertex_arrays.delete(vertex_array.id);
-        for id in held {
-            self.buffers.release(id);
-        }
+        self.bindings.forget_vertex_array(vertex_array.id);
+        self.objects.delete_vertex_array(vertex_array.id);
     }
 
     fn attrib_index(&mut self, index: u32, function: &str) -> Option<usize> {
-        if index >= self.max_vertex_attribs {
+        if index >= self.limits.max_vertex_attribs {
             let msg = format!(
                 "index {index} ≥ MAX_VERTEX_ATTRIBS ({})",
-                self.max_vertex_attribs
+                self.limits.max_vertex_attribs
             );
             self.error(gl::INVALID_VALUE, function, msg);
             return None;
@@ -316,17 +306,17 @@ impl Context {
                 "offset and stride must be multiples of the type's size",
             );
         }
-        if self.array_buffer.is_none() && offset != 0 {
+        let array_buffer = self.bindings.buffer(gl::ARRAY_BUFFER);
+        if array_buffer.is_none() && offset != 0 {
             return self.error(
                 gl::INVALID_OPERATION,
                 function,
                 "no ARRAY_BUFFER bound and offset ≠ 0",
             );
         }
-        let mut slot = self.vao().attribs[i].buffer;
-        self.buffers.retarget(&mut slot, self.array_buffer);
+        let vao = self.bindings.vertex_array();
+        self.objects.set_attrib_buffer(vao, i, array_buffer);
         let a = &mut self.vao_mut().attribs[i];
-        a.buffer = slot;
         a.size = size as u8;
         a.ty = ty;
         a.normalized = normalized;
@@ -345,7 +335,7 @@ impl Context {
 
     fn set_generic(&mut self, index: u32, value: GenericAttrib, function: &str) {
         if let Some(i) = self.attrib_index(index, function) {
-            self.generic_attribs[i] = value;
+            self.state.generic_attribs[i] = value;
         }
     }
 

@@ -57,13 +57,14 @@ fn through_the_api(ctx: &mut Context, vs: &str, fs: &str) -> (bool, Vec<String>,
     };
     let uniforms = (0..count(ctx, gl::ACTIVE_UNIFORMS))
         .map(|i| {
-            let (name, ty, size) = ctx.get_active_uniform(program, i).unwrap();
+            let essl_gl::ActiveInfo { name, ty, size } =
+                ctx.get_active_uniform(program, i).unwrap();
             format!("{name} {} {size}", gl_type_name(ty))
         })
         .collect();
     let attributes = (0..count(ctx, gl::ACTIVE_ATTRIBUTES))
         .map(|i| {
-            let (name, ty, size) = ctx.get_active_attrib(program, i).unwrap();
+            let essl_gl::ActiveInfo { name, ty, size } = ctx.get_active_attrib(program, i).unwrap();
             let location = ctx.get_attrib_location(program, &name);
             format!("{name} {} {size} @{location}", gl_type_name(ty))
         })

@@ -168,7 +168,7 @@ fn attribute_types_must_match_the_shader() {
 
 fn two_samplers() -> essl::program::ProgramLayout {
     Layout::new(
-        "@vertex fn main(@location(0) a_position: vec2<f32>) -> @builtin(position) vec4<f32> { return vec4(a_position, 0.0, 1.0); }",
+        "@vertex fn main(@location(0) a_position: vec2<f32>) -> @builtin(position) vec4<f32> { return gl_clip(vec4(a_position, 0.0, 1.0)); }",
         "@group(1) @binding(0) var t0: texture_2d<f32>;
          @group(1) @binding(1) var s0: sampler;
          @group(1) @binding(2) var t1: texture_cube<f32>;
@@ -338,7 +338,7 @@ fn texture_errors_change_nothing() {
     let Some(mut ctx) = context(W, H) else { return };
     let program = ctx.program_from_layout(Layout::new(
         "struct Out { @builtin(position) pos: vec4<f32>, @location(0) uv: vec2<f32> }
-         @vertex fn main(@location(0) p: vec2<f32>) -> Out { return Out(vec4(p, 0.0, 1.0), p * 0.5 + 0.5); }",
+         @vertex fn main(@location(0) p: vec2<f32>) -> Out { return Out(gl_clip(vec4(p, 0.0, 1.0)), p * 0.5 + 0.5); }",
         "@group(1) @binding(0) var t: texture_2d<f32>;
          @group(1) @binding(1) var s: sampler;
          @fragment fn main(@location(0) uv: vec2<f32>) -> @location(0) vec4<f32> { return textureSample(t, s, uv); }",
@@ -623,7 +623,7 @@ fn uniform_errors_change_nothing() {
     let Some(mut ctx) = context(W, H) else { return };
     let layout = || {
         Layout::new(
-            "@vertex fn main(@location(0) p: vec2<f32>) -> @builtin(position) vec4<f32> { return vec4(p, 0.0, 1.0); }",
+            "@vertex fn main(@location(0) p: vec2<f32>) -> @builtin(position) vec4<f32> { return gl_clip(vec4(p, 0.0, 1.0)); }",
             "struct U { u_color: vec4<f32>, u_unit: i32 }
              @group(0) @binding(0) var<uniform> u: U;
              @fragment fn main() -> @location(0) vec4<f32> { return u.u_color; }",

@@ -9,29 +9,6 @@ use essl_gl::{gl, Context, Program};
 const W: u32 = 32;
 const H: u32 = 32;
 
-/// Compiles and links a program, panicking with the logs on failure.
-fn program(ctx: &mut Context, vs: &str, fs: &str) -> Program {
-    let p = ctx.create_program();
-    for (ty, src) in [(gl::VERTEX_SHADER, vs), (gl::FRAGMENT_SHADER, fs)] {
-        let s = ctx.create_shader(ty).expect("a shader type");
-        ctx.shader_source(s, src);
-        ctx.compile_shader(s);
-        assert!(
-            ctx.get_shader_compile_status(s),
-            "{:?}",
-            ctx.get_shader_info_log(s)
-        );
-        ctx.attach_shader(p, s);
-    }
-    ctx.link_program(p);
-    assert!(
-        ctx.get_program_link_status(p),
-        "{:?}",
-        ctx.get_program_info_log(p)
-    );
-    p
-}
-
 const PASS_VS: &str = "#version 300 es
 in vec4 a_position;
 void main() { gl_Position = a_position; }";

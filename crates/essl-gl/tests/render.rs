@@ -151,7 +151,7 @@ fn textured() -> essl::program::ProgramLayout {
     Layout::new(
         "struct Out { @builtin(position) pos: vec4<f32>, @location(0) uv: vec2<f32> }
          @vertex fn main(@location(0) a_position: vec2<f32>, @location(1) a_uv: vec2<f32>) -> Out {
-             return Out(vec4(a_position, 0.0, 1.0), a_uv);
+             return Out(gl_clip(vec4(a_position, 0.0, 1.0)), a_uv);
          }",
         "@group(1) @binding(0) var u_tex: texture_2d<f32>;
          @group(1) @binding(1) var u_tex_sampler: sampler;
@@ -308,7 +308,7 @@ fn attribute_colour() -> essl::program::ProgramLayout {
     Layout::new(
         "struct Out { @builtin(position) pos: vec4<f32>, @location(0) c: vec4<f32> }
          @vertex fn main(@location(0) a_position: vec2<f32>, @location(1) a_color: vec4<f32>) -> Out {
-             return Out(vec4(a_position, 0.0, 1.0), a_color);
+             return Out(gl_clip(vec4(a_position, 0.0, 1.0)), a_color);
          }",
         "@fragment fn main(@location(0) c: vec4<f32>) -> @location(0) vec4<f32> { return c; }",
     )
@@ -447,14 +447,15 @@ fn uniforms_and_framebuffer_height() {
         "struct U { u_color: vec4<f32>, u_offset: vec2<f32>, height: f32 }
          @group(0) @binding(0) var<uniform> u: U;
          @vertex fn main(@location(0) a_position: vec2<f32>) -> @builtin(position) vec4<f32> {
-             return vec4(a_position + u.u_offset, 0.0, 1.0);
+             return gl_clip(vec4(a_position + u.u_offset, 0.0, 1.0));
          }",
         "struct U { u_color: vec4<f32>, u_offset: vec2<f32>, height: f32 }
          @group(0) @binding(0) var<uniform> u: U;
          @fragment fn main(@builtin(position) p: vec4<f32>) -> @location(0) vec4<f32> {
-             // GL's gl_FragCoord.y counts from the bottom: the lowering flips with the height.
-             let gl_y = u.height - p.y;
-             return vec4(u.u_color.rgb, select(0.0, 1.0, gl_y < 16.0));
+             // Framebuffers store GL's row 0 first, so the API's y is gl_FragCoord.y; the
+             // framebuffer height a layout asks for still arrives.
+             let gl_y = p.y;
+             return vec4(u.u_color.rgb, select(0.0, 1.0, gl_y < 16.0 && u.height == 64.0));
          }",
     )
     .attribute("a_position", GlType::FLOAT_VEC2, 0)
@@ -497,7 +498,7 @@ fn instancing_with_divisors() {
     let Some(mut ctx) = context(W, H) else { return };
     let layout = Layout::new(
         "@vertex fn main(@location(0) a_position: vec2<f32>, @location(1) a_offset: vec2<f32>) -> @builtin(position) vec4<f32> {
-             return vec4(a_position + a_offset, 0.0, 1.0);
+             return gl_clip(vec4(a_position + a_offset, 0.0, 1.0));
          }",
         "@fragment fn main() -> @location(0) vec4<f32> { return vec4(1.0); }",
     )
@@ -547,7 +548,7 @@ fn instancing_with_divisors() {
 fn blending_scissor_and_masked_clears() {
     let Some(mut ctx) = context(W, H) else { return };
     let layout = Layout::new(
-        "@vertex fn main(@location(0) a_position: vec2<f32>) -> @builtin(position) vec4<f32> { return vec4(a_position, 0.0, 1.0); }",
+        "@vertex fn main(@location(0) a_position: vec2<f32>) -> @builtin(position) vec4<f32> { return gl_clip(vec4(a_position, 0.0, 1.0)); }",
         "@fragment fn main() -> @location(0) vec4<f32> { return vec4(1.0, 0.0, 0.0, 0.5); }",
     )
     .attribute("a_position", GlType::FLOAT_VEC2, 0)
@@ -660,7 +661,7 @@ fn frame_time_256() {
             "struct U { u_offset: vec2<f32> }
              @group(0) @binding(0) var<uniform> u: U;
              @vertex fn main(@location(0) a_position: vec2<f32>) -> @builtin(position) vec4<f32> {
-                 return vec4(a_position * 0.05 + u.u_offset, 0.0, 1.0);
+                 return gl_clip(vec4(a_position * 0.05 + u.u_offset, 0.0, 1.0));
              }",
             "@fragment fn main() -> @location(0) vec4<f32> { return vec4(1.0, 0.5, 0.0, 1.0); }",
         )

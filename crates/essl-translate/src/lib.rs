@@ -135,6 +135,8 @@ impl Options {
         LowerOptions {
             zero_to_one_depth: self.depth_remap,
             flip_frag_coord_y: self.flip_y,
+            flip_clip_y: false,
+            transform_feedback: Vec::new(),
         }
     }
 }

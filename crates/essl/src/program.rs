@@ -12,7 +12,8 @@
 //! - Varyings use `Binding::Location` numbers assigned by the linker (the same in both stages).
 //!   The vertex stage writes `BuiltIn::Position` in the GPU API's clip space: the lowering has
 //!   already remapped GL's depth range (z from −w..w to 0..w) when
-//!   [`LowerOptions::zero_to_one_depth`] is set.
+//!   [`LowerOptions::zero_to_one_depth`] is set, and negated y when [`LowerOptions::flip_clip_y`]
+//!   is.
 //! - Fragment outputs use `Binding::Location` equal to the GLSL output's location.
 //! - All loose (default-block) uniforms of both stages live in one uniform buffer at
 //!   `@group(0) @binding(0)`, laid out as [`UniformBlock`] says; both stages declare the same
@@ -32,6 +33,17 @@ pub struct LowerOptions {
     /// Flip `gl_FragCoord.y` so that it counts from the bottom of the framebuffer, as in GL,
     /// on an API whose framebuffer y points down. Reads [`InternalUniform::FramebufferHeight`].
     pub flip_frag_coord_y: bool,
+    /// Negate `gl_Position.y` and flip `gl_PointCoord.y`: the image is drawn upside down on an
+    /// API whose framebuffer y points down, so that a framebuffer's rows are stored bottom row
+    /// first, in GL's order — what sampling a rendered texture, `readPixels` and blits expect.
+    /// Use it with `flip_frag_coord_y` off: `gl_FragCoord` and `dFdy` then need no change. The
+    /// renderer must also swap the winding of front faces.
+    pub flip_clip_y: bool,
+    /// Vertex outputs transform feedback captures (`transformFeedbackVaryings`): each is
+    /// written by the lowered vertex shader even when the fragment shader does not read it,
+    /// and [`ProgramLayout::captured`] says where. Names are GLSL's: a variable, an element
+    /// of an array output (`v[2]`), `gl_Position` or `gl_PointSize`.
+    pub transform_feedback: Vec<String>,
 }
 
 impl Default for LowerOptions {
@@ -39,6 +51,8 @@ impl Default for LowerOptions {
         Self {
             zero_to_one_depth: true,
             flip_frag_coord_y: true,
+            flip_clip_y: false,
+            transform_feedback: Vec::new(),
         }
     }
 }
@@ -67,6 +81,40 @@ pub struct ProgramLayout {
     pub blocks: Vec<UniformBlockBinding>,
     /// Fragment outputs: (location, type). A renderer with one colour target uses location 0.
     pub fragment_outputs: Vec<(u32, GlType)>,
+    /// The outputs [`LowerOptions::transform_feedback`] asked for that the vertex shader
+    /// has, in the order asked.
+    pub captured: Vec<CapturedOutput>,
+}
+
+/// A vertex output kept for transform feedback, and where the lowered vertex shader writes
+/// it.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct CapturedOutput {
+    /// The name as asked (`v_velocity`, `v_pos[1]`, `gl_Position`).
+    pub name: String,
+    /// Its type (of one element for an array).
+    pub ty: GlType,
+    /// Array elements captured (1 for a non-array or an element).
+    pub size: u32,
+    /// Where the value is.
+    pub source: CaptureSource,
+}
+
+/// Where a captured output is in the lowered vertex shader's outputs.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum CaptureSource {
+    /// `count` consecutive locations from `first` (one per column, per array element).
+    Location {
+        /// The first location.
+        first: u32,
+        /// How many.
+        count: u32,
+    },
+    /// `gl_Position` (the lowered value is the API's clip position: the renderer undoes the
+    /// [`LowerOptions`] remapping to capture GL's).
+    Position,
+    /// `gl_PointSize`.
+    PointSize,
 }
 
 /// The layout of the default uniform block (all loose uniforms of a program).

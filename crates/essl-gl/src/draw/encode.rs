@@ -10,6 +10,7 @@ use super::topology::{emulate, index_size, read_indices, repack, Emulated};
 use super::{DrawCall, Indices, SlotPlan, Source};
 use crate::buffer::DerivedKey;
 use crate::context::Context;
+use crate::framebuffer::sample_view_key;
 use crate::gl;
 use crate::objects::Id;
 use crate::pipeline::{SlotBinding, VertexSlot};
@@ -41,6 +42,8 @@ pub(super) struct DrawRange {
 pub(super) struct Groups {
     pub(super) group0: Option<(wgpu::BindGroup, Option<u32>)>,
     pub(super) group1: Option<wgpu::BindGroup>,
+    /// Transform feedback's storage buffers and parameters.
+    pub(super) group2: Option<wgpu::BindGroup>,
     pub(super) slot_bindings: Vec<SlotBinding>,
 }
 
@@ -72,12 +75,6 @@ impl Context {
         feed: &Feed,
         instances: u32,
     ) {
-        let serial = self.frame.serial;
-        let gpu = &self.gpu;
-        let b = self
-            .buffers
-            .get_any_mut(buffer)
-            .expect("attached buffers are alive");
         let stride = a.effective_stride();
         let fmt_size = feed.format.size();
         let rel = a.offset & 3;
@@ -85,6 +82,17 @@ impl Context {
             && rel % fmt_size.min(4) == 0
             && rel + fmt_size <= stride
             && a.divisor <= 1;
+        if !direct {
+            // Re-packing reads the CPU copy.
+            self.buffer_to_cpu(buffer);
+        }
+        let serial = self.frame.serial;
+        let gpu = &self.gpu;
+        let b = self
+            .objects
+            .buffers
+            .get_any_mut(buffer)
+            .expect("attached buffers are alive");
         let step = if a.divisor == 0 {
             wgpu::VertexStepMode::Vertex
         } else {
@@ -206,6 +214,7 @@ impl Context {
             }
             (Indices::Elements { buffer, ty, offset }, Emulated::None) => {
                 let b = self
+                    .objects
                     .buffers
                     .get_any_mut(*buffer)
                     .expect("bound buffers are alive");
@@ -229,6 +238,7 @@ impl Context {
             }
             (Indices::Elements { buffer, ty, offset }, how) => {
                 let b = self
+                    .objects
                     .buffers
                     .get_any(*buffer)
                     .expect("bound buffers are alive");
@@ -257,31 +267,40 @@ impl Context {
         &mut self,
         slot_plans: &[SlotPlan],
     ) -> (Vec<SlotBinding>, Vec<(wgpu::TextureView, wgpu::Sampler)>) {
-        let serial = self.frame.serial;
-        let gpu = &self.gpu;
         let mut slot_bindings = Vec::new();
         let mut resources = Vec::new();
         for plan in slot_plans {
             let shadow = plan.kind == SampleKind::Depth;
             match plan.texture {
-                Some((id, c)) => {
+                Some((id, c, sampling)) => {
+                    self.sync_texture(id, c.base..c.base + c.levels);
+                    let gpu = &self.gpu;
                     let t = self
+                        .objects
                         .textures
                         .get_any_mut(id)
                         .expect("bound textures are alive");
-                    let view = t.gpu_view(gpu, serial, &c);
-                    let key = t.sampler_key(shadow);
-                    let sampler = self.samplers.get(&gpu.device, key);
+                    let target = t.target.expect("complete textures have a target");
+                    let g = t.gpu.as_mut().expect("synced above");
+                    let view = g.view(sample_view_key(
+                        target, g.anchor, c.base, c.levels, &c.format,
+                    ));
+                    let key = crate::texture::TextureObject::sampler_key(&sampling, shadow);
+                    let sampler = self.caches.samplers.get(&gpu.device, key);
                     slot_bindings.push(SlotBinding {
                         dim: plan.dim,
                         kind: plan.kind,
-                        filterable: c.format.filterable(),
+                        filterable: c.format.filterable()
+                            || (self.extensions.texture_float_linear
+                                && c.format.comp == crate::texture::Comp::F32),
                     });
                     resources.push((view, sampler));
                 }
                 None => {
-                    let view = self.dummies.get(gpu, plan.dim, plan.kind);
+                    let gpu = &self.gpu;
+                    let view = self.caches.dummies.get(gpu, plan.dim, plan.kind);
                     let sampler = self
+                        .caches
                         .samplers
                         .get(&gpu.device, SamplerKey::placeholder(shadow));
                     slot_bindings.push(SlotBinding {
@@ -304,9 +323,8 @@ impl Context {
         let gpu = &self.gpu;
         let height = self.fb.height as f32;
         let linked = self
-            .programs
-            .get_any_mut(pid)
-            .and_then(|p| p.linked.as_mut())
+            .objects
+            .linked_mut(pid)
             .expect("current programs are linked");
         let block = linked.layout.uniform_block.as_ref()?;
         for (what, offset) in &block.internal {
@@ -366,6 +384,7 @@ impl Context {
             .iter()
             .map(|&(id, offset, size)| {
                 let b = self
+                    .objects
                     .buffers
                     .get_any_mut(id)
                     .expect("bound buffers are alive");
@@ -377,15 +396,70 @@ impl Context {
             let arena = default
                 .as_ref()
                 .map(|(chunk, buffer, _, size)| (*chunk, buffer, *size));
-            let group = self.pipelines.group0(gpu, arena, &block_buffers);
+            let group = self.caches.pipelines.group0(gpu, arena, &block_buffers);
             group0 = Some((group, default.as_ref().map(|d| d.2)));
         }
         let group1 = (!slot_bindings.is_empty())
-            .then(|| self.pipelines.group1(gpu, &slot_bindings, resources));
+            .then(|| self.caches.pipelines.group1(gpu, &slot_bindings, resources));
+        let group2 = call.capture.as_ref().map(|c| self.capture_group(c));
         Groups {
             group0,
             group1,
+            group2,
             slot_bindings,
         }
+    }
+
+    /// The bind group of a capturing draw: its buffers' GPU copies (which the draw makes the
+    /// newer ones) and the parameters (first vertex, vertices per instance, each buffer's
+    /// first word).
+    fn capture_group(&mut self, c: &super::feedback::CaptureDraw) -> wgpu::BindGroup {
+        let serial = self.frame.serial;
+        let mut buffers = Vec::new();
+        for &id in &c.buffers {
+            let b = self
+                .objects
+                .buffers
+                .get_any_mut(id)
+                .expect("bound buffers are alive");
+            buffers.push(b.gpu_buffer(&self.gpu, serial));
+            b.gpu_newer = true;
+        }
+        let mut params = [0u32; 8];
+        params[0] = c.first;
+        params[1] = c.count;
+        params[4..8].copy_from_slice(&c.base);
+        let align = self.gpu.limits.min_uniform_buffer_offset_alignment as u64;
+        let alloc = self
+            .frame
+            .arena
+            .push(&self.gpu, bytemuck::cast_slice(&params), align);
+        let layout = self
+            .caches
+            .pipelines
+            .capture_layout(&self.gpu, c.spec.buffers);
+        let mut entries: Vec<wgpu::BindGroupEntry> = buffers
+            .iter()
+            .enumerate()
+            .map(|(b, buffer)| wgpu::BindGroupEntry {
+                binding: b as u32,
+                resource: buffer.as_entire_binding(),
+            })
+            .collect();
+        entries.push(wgpu::BindGroupEntry {
+            binding: crate::shader_patch::CAPTURE_PARAMS_BINDING,
+            resource: wgpu::BindingResource::Buffer(wgpu::BufferBinding {
+                buffer: &alloc.buffer,
+                offset: alloc.offset,
+                size: wgpu::BufferSize::new(32),
+            }),
+        });
+        self.gpu
+            .device
+            .create_bind_group(&wgpu::BindGroupDescriptor {
+                label: Some("essl-gl transform feedback"),
+                layout: &layout,
+                entries: &entries,
+            })
     }
 }

@@ -6,7 +6,9 @@
 use essl::types::{SamplerDim, ScalarKind, Type};
 
 use super::{SlotPlan, Source};
+use crate::bindings::BufferRange;
 use crate::context::Context;
+use crate::framebuffer::DrawFormats;
 use crate::gl;
 use crate::objects::Id;
 use crate::program::{ShaderInput, ValueKind};
@@ -116,15 +118,18 @@ impl Context {
     /// `pid`; a block without a buffer, or with too small a range → `INVALID_OPERATION`.
     pub(super) fn gather_blocks(&mut self, pid: Id, f: &str) -> Option<Vec<(Id, u64, u64)>> {
         let linked = self
-            .programs
-            .get_any(pid)
-            .and_then(|p| p.linked.as_ref())
+            .objects
+            .linked(pid)
             .expect("current programs are linked");
         // Uniform blocks read the buffer ranges bound to their binding points.
         let mut blocks = Vec::new();
         for (i, block) in linked.layout.blocks.iter().enumerate() {
             let point = linked.block_bindings[i] as usize;
-            let Some((buffer, offset, size)) = self.uniform_bindings.get(point).copied().flatten()
+            let Some(BufferRange {
+                buffer,
+                offset,
+                size,
+            }) = self.bindings.uniform_range(point)
             else {
                 let msg = format!(
                     "uniform block {} has no buffer at binding point {point}",
@@ -133,6 +138,7 @@ impl Context {
                 return self.fail(gl::INVALID_OPERATION, f, msg);
             };
             let len = self
+                .objects
                 .buffers
                 .get_any(buffer)
                 .map_or(0, |b| b.data.len() as u64);
@@ -157,9 +163,8 @@ impl Context {
         f: &str,
     ) -> Option<Vec<(ShaderInput, Source)>> {
         let linked = self
-            .programs
-            .get_any(pid)
-            .and_then(|p| p.linked.as_ref())
+            .objects
+            .linked(pid)
             .expect("current programs are linked");
         let mut sources = Vec::new();
         for input in &linked.inputs {
@@ -184,7 +189,7 @@ impl Context {
                     feed,
                 }
             } else {
-                let g = self.generic_attribs[input.location as usize];
+                let g = self.state.generic_attribs[input.location as usize];
                 let kind = match g {
                     GenericAttrib::Float(_) => ValueKind::Float,
                     GenericAttrib::Int(_) => ValueKind::Sint,
@@ -208,9 +213,8 @@ impl Context {
     /// types, and a complete texture must match its sampler's kind (`INVALID_OPERATION`).
     pub(super) fn gather_samplers(&mut self, pid: Id, f: &str) -> Option<Vec<SlotPlan>> {
         let linked = self
-            .programs
-            .get_any(pid)
-            .and_then(|p| p.linked.as_ref())
+            .objects
+            .linked(pid)
             .expect("current programs are linked");
         let mut slot_plans = Vec::new();
         let mut unit_targets: Vec<(u32, u32)> = Vec::new();
@@ -238,17 +242,27 @@ impl Context {
                 (false, ScalarKind::Uint) => SampleKind::Uint,
                 _ => SampleKind::Float,
             };
-            let texture = self.texture_units[unit as usize]
-                .get(target)
-                .and_then(|id| {
-                    self.textures
-                        .get_any(id)
-                        .and_then(|t| t.completeness())
-                        .map(|c| (id, c))
-                });
-            if let Some((_, c)) = &texture {
-                if c.format.kind() != kind {
+            let float_linear = self.extensions.texture_float_linear;
+            let texture = self.bindings.texture(unit, target).and_then(|id| {
+                let sampling = self.sampling_for(unit, id)?;
+                self.objects
+                    .textures
+                    .get_any(id)
+                    .and_then(|t| t.completeness(float_linear, &sampling))
+                    .map(|c| (id, c, sampling))
+            });
+            if let Some((id, c, _)) = &texture {
+                let fits = match kind {
+                    SampleKind::Depth => c.format.has_depth(),
+                    k => c.format.kind() == k,
+                };
+                if !fits {
                     let msg = format!("texture on unit {unit} does not match its sampler's type");
+                    return self.fail(gl::INVALID_OPERATION, f, msg);
+                }
+                if self.draws_into(*id, c.base..c.base + c.levels) {
+                    let msg =
+                        format!("the texture on unit {unit} is also drawn into: a feedback loop");
                     return self.fail(gl::INVALID_OPERATION, f, msg);
                 }
             }
@@ -261,20 +275,27 @@ impl Context {
         Some(slot_plans)
     }
 
-    /// Checks that program `pid` writes floats to the (normalized) default framebuffer.
-    pub(super) fn check_output(&mut self, pid: Id, f: &str) -> Option<()> {
+    /// Checks that each fragment output that reaches a draw buffer has the buffer's kind:
+    /// floats for normalized and float formats, signed or unsigned integers for integer
+    /// formats (`INVALID_OPERATION`, WebGL2).
+    pub(super) fn check_outputs(&mut self, pid: Id, formats: &DrawFormats, f: &str) -> Option<()> {
         let linked = self
-            .programs
-            .get_any(pid)
-            .and_then(|p| p.linked.as_ref())
+            .objects
+            .linked(pid)
             .expect("current programs are linked");
-        if let Some((kind, _)) = linked.output0 {
-            if kind != ValueKind::Float {
-                return self.fail(
-                    gl::INVALID_OPERATION,
-                    f,
-                    "integer fragment output to a normalized framebuffer",
-                );
+        for &(location, kind) in &linked.outputs {
+            let Some(Some(format)) = formats.colors.get(location as usize) else {
+                continue;
+            };
+            let wants = match format.kind() {
+                SampleKind::Sint => ValueKind::Sint,
+                SampleKind::Uint => ValueKind::Uint,
+                _ => ValueKind::Float,
+            };
+            if kind != wants {
+                let msg =
+                    format!("fragment output {location} does not match its draw buffer's type");
+                return self.fail(gl::INVALID_OPERATION, f, msg);
             }
         }
         Some(())

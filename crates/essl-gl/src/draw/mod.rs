@@ -18,6 +18,7 @@
 
 mod clear;
 mod encode;
+mod feedback;
 mod gather;
 mod record;
 mod topology;
@@ -47,7 +48,9 @@ enum Source {
 
 /// What a sampler slot reads.
 struct SlotPlan {
-    texture: Option<(Id, Complete)>,
+    /// The complete texture read, and the sampling parameters that apply (its own or the
+    /// unit's sampler object's).
+    texture: Option<(Id, Complete, crate::sampler::SamplerParams)>,
     dim: wgpu::TextureViewDimension,
     kind: SampleKind,
 }
@@ -92,6 +95,10 @@ struct DrawCall {
     blocks: Vec<(Id, u64, u64)>,
     /// The scissor rectangle in wgpu's coordinates.
     scissor: [u32; 4],
+    /// What transform feedback captures, when a session is active.
+    capture: Option<feedback::CaptureDraw>,
+    /// Whether the draw makes fragments (false while capturing with `RASTERIZER_DISCARD`).
+    rasterize: bool,
 }
 
 impl Context {
@@ -194,6 +201,10 @@ impl Context {
         if self.validation.enabled {
             self.validate_uniforms(call.program, args.function);
         }
+        let captured = call.capture.as_ref().map(|c| c.vertices);
         self.encode_draw(call);
+        if let Some(vertices) = captured {
+            self.count_captured(vertices);
+        }
     }
 }

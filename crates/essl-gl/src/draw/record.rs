@@ -5,6 +5,7 @@
 use super::encode::{DrawRange, Groups};
 use super::DrawCall;
 use crate::context::Context;
+use crate::frame::PassTarget;
 use crate::gl;
 use crate::pipeline::{CachedPipeline, PipelineKey, VertexSlot};
 use crate::shader_patch::InputPatch;
@@ -55,7 +56,7 @@ fn blend_component(src: u32, dst: u32, eq: u32) -> wgpu::BlendComponent {
 }
 
 /// The colour write mask for GL's `colorMask`.
-fn write_mask(color_mask: &[bool; 4]) -> wgpu::ColorWrites {
+pub(crate) fn write_mask(color_mask: &[bool; 4]) -> wgpu::ColorWrites {
     let mut write_mask = wgpu::ColorWrites::empty();
     for (m, bit) in color_mask.iter().zip([
         wgpu::ColorWrites::RED,
@@ -77,6 +78,16 @@ struct PassValues {
     /// The blend constant, and whether the blend state reads it.
     blend_constant: [f32; 4],
     uses_constant: bool,
+    stencil_reference: u32,
+}
+
+/// What a draw's pipeline key is made of besides the GL state.
+struct KeyParts<'a> {
+    slots: Vec<VertexSlot>,
+    patches: Vec<InputPatch>,
+    range: &'a DrawRange,
+    groups: &'a Groups,
+    target: &'a PassTarget,
 }
 
 impl Context {
@@ -87,13 +98,26 @@ impl Context {
             return;
         };
         let groups = self.bind_groups(&call);
-        let (key, values) = self.pipeline_key(&call, vertex.slots, vertex.patches, &range, &groups);
+        // Last: uploads for the textures sampled end the pass; the target's pass begins
+        // after them.
+        let target = if call.rasterize {
+            self.draw_target()
+        } else {
+            self.discard_target()
+        };
+        let parts = KeyParts {
+            slots: vertex.slots,
+            patches: vertex.patches,
+            range: &range,
+            groups: &groups,
+            target: &target,
+        };
+        let (key, values) = self.pipeline_key(&call, parts);
         let linked = self
-            .programs
-            .get_any_mut(call.program)
-            .and_then(|p| p.linked.as_mut())
+            .objects
+            .linked_mut(call.program)
             .expect("current programs are linked");
-        let pipeline = match self.pipelines.pipeline(&self.gpu, &key, linked) {
+        let pipeline = match self.caches.pipelines.pipeline(&self.gpu, &key, linked) {
             Ok(p) => p,
             Err(e) => {
                 self.errors.record(gl::INVALID_OPERATION, || {
@@ -102,18 +126,26 @@ impl Context {
                 return;
             }
         };
-        self.record_draw(&call, &pipeline, &values, groups, vertex.bindings, range);
+        self.record_draw(
+            &call,
+            &target,
+            &pipeline,
+            &values,
+            groups,
+            vertex.bindings,
+            range,
+        );
     }
 
     /// The pipeline key of the draw from the GL state, and the pass values that go with it.
-    fn pipeline_key(
-        &self,
-        call: &DrawCall,
-        slots: Vec<VertexSlot>,
-        patches: Vec<InputPatch>,
-        range: &DrawRange,
-        groups: &Groups,
-    ) -> (PipelineKey, PassValues) {
+    fn pipeline_key(&self, call: &DrawCall, parts: KeyParts) -> (PipelineKey, PassValues) {
+        let KeyParts {
+            slots,
+            patches,
+            range,
+            groups,
+            target,
+        } = parts;
         let strip = matches!(
             call.topology,
             wgpu::PrimitiveTopology::LineStrip | wgpu::PrimitiveTopology::TriangleStrip
@@ -124,9 +156,8 @@ impl Context {
             None
         };
         let program = self
-            .programs
-            .get_any(call.program)
-            .and_then(|p| p.linked.as_ref())
+            .objects
+            .linked(call.program)
             .expect("current programs are linked")
             .serial;
         let s = &self.state;
@@ -172,17 +203,30 @@ impl Context {
             topology: call.topology,
             strip_index_format,
             cull_mode,
+            // Draws are flipped vertically (`LOWER_OPTIONS`), which swaps the winding.
             front_face: if s.front_face == gl::CW {
-                wgpu::FrontFace::Cw
-            } else {
                 wgpu::FrontFace::Ccw
+            } else {
+                wgpu::FrontFace::Cw
             },
             depth_write,
             depth_compare,
             depth_bias,
             blend,
-            write_mask: write_mask(&s.color_mask),
+            write_mask: self.draw_write_mask(),
             slots: groups.slot_bindings.clone(),
+            targets: target
+                .colors
+                .iter()
+                .map(|c| c.as_ref().map(|c| c.format))
+                .collect(),
+            depth_format: target.depth.as_ref().map(|d| d.format),
+            stencil: s.stencil.wgpu(s.stencil_test),
+            samples: target.samples,
+            alpha_to_coverage: s.sample_alpha_to_coverage,
+            float_blend: self.extensions.float_blend,
+            capture: call.capture.as_ref().map(|c| c.spec.clone()),
+            rasterize: call.rasterize,
         };
         let uses_constant = blend.is_some_and(|b| {
             [
@@ -200,25 +244,40 @@ impl Context {
             })
         });
         let values = PassValues {
-            viewport: self.draw_viewport(),
+            viewport: if call.rasterize {
+                self.draw_viewport()
+            } else {
+                [0.0, 0.0, 1.0, 1.0, 0.0, 1.0]
+            },
             blend_constant,
             uses_constant,
+            stencil_reference: s.stencil.reference(),
         };
         (key, values)
     }
 
-    /// The viewport in wgpu's coordinates (origin top-left), clamped to what wgpu accepts,
-    /// with the depth range.
+    /// The channels draws write: the colour mask, without alpha on a default framebuffer
+    /// that has none (`alpha: false`), so that it stays 1.
+    pub(crate) fn draw_write_mask(&self) -> wgpu::ColorWrites {
+        let mut mask = write_mask(&self.state.color_mask);
+        if self.bindings.framebuffers()[0].is_none() && !self.fb.attributes.alpha {
+            mask -= wgpu::ColorWrites::ALPHA;
+        }
+        mask
+    }
+
+    /// The viewport in wgpu's coordinates, clamped to what wgpu accepts, with the depth
+    /// range. Framebuffers store GL's row 0 first and draws are flipped
+    /// ([`crate::LOWER_OPTIONS`]), so GL's window y is wgpu's y.
     fn draw_viewport(&self) -> [f32; 6] {
         let s = &self.state;
-        let fh = self.fb.height as i64;
         let [vx, vy, vw, vh] = s.viewport.map(|v| v as i64);
         let max = 2 * self.gpu.limits.max_texture_dimension_2d as i64 - 1;
-        let top = (fh - (vy + vh)).clamp(-max, max - vh);
+        let vy = vy.clamp(-max, max - vh);
         let vx = vx.clamp(-max, max - vw);
         [
             vx as f32,
-            top as f32,
+            vy as f32,
             vw as f32,
             vh as f32,
             s.depth_range[0],
@@ -227,9 +286,11 @@ impl Context {
     }
 
     /// Records the draw into the open render pass, setting only the pass state that changed.
+    #[allow(clippy::too_many_arguments)] // the parts of one draw, made by the steps above
     fn record_draw(
         &mut self,
         call: &DrawCall,
+        target: &PassTarget,
         pipeline: &CachedPipeline,
         values: &PassValues,
         groups: Groups,
@@ -239,8 +300,12 @@ impl Context {
         let viewport = values.viewport;
         let viewport_bits = viewport.map(f32::to_bits);
         let blend_bits = values.blend_constant.map(f32::to_bits);
-        let scissor = call.scissor;
-        self.frame.pass(&self.gpu, &self.fb);
+        let scissor = if call.rasterize {
+            call.scissor
+        } else {
+            [0, 0, 1, 1]
+        };
+        self.frame.pass(&self.gpu, target);
         let frame = &mut self.frame;
         let pass = frame.pass.as_mut().expect("opened above");
         let ps = &mut frame.pass_state;
@@ -263,6 +328,10 @@ impl Context {
             pass.set_scissor_rect(scissor[0], scissor[1], scissor[2], scissor[3]);
             ps.scissor = Some(scissor);
         }
+        if ps.stencil_reference != Some(values.stencil_reference) {
+            pass.set_stencil_reference(values.stencil_reference);
+            ps.stencil_reference = Some(values.stencil_reference);
+        }
         if values.uses_constant && ps.blend_constant != Some(blend_bits) {
             let [r, g, b, a] = values.blend_constant.map(|c| c as f64);
             pass.set_blend_constant(wgpu::Color { r, g, b, a });
@@ -274,6 +343,9 @@ impl Context {
                 pass.set_bind_group(0, group, offset.as_slice());
                 ps.group0 = groups.group0.clone();
             }
+        }
+        if let Some(group) = &groups.group2 {
+            pass.set_bind_group(2, group, &[]);
         }
         if let Some(group) = &groups.group1 {
             if ps.group1.as_ref() != Some(group) {

@@ -36,9 +36,16 @@ impl Context {
             Some((ty, offset)) => Some(self.check_index_args(ty, offset, f)?),
             None => None,
         };
-        let Some(pid) = self.current_program else {
+        if !self.require_complete(true, f) {
+            return None;
+        }
+        let Some(pid) = self.bindings.program() else {
             return self.fail(gl::INVALID_OPERATION, f, "no program in use");
         };
+        let session = self.capturing();
+        if let Some(session) = session {
+            self.check_capture_mode(&args, session.mode)?;
+        }
         let indices = match index_info {
             None => Indices::None {
                 first: args.first as u32,
@@ -65,11 +72,34 @@ impl Context {
         let blocks = self.gather_blocks(pid, f)?;
         let sources = self.gather_sources(pid, f)?;
         let slot_plans = self.gather_samplers(pid, f)?;
-        self.check_output(pid, f)?;
+        let formats = self.draw_formats();
+        self.check_outputs(pid, &formats, f)?;
+        if formats.stencil && !self.state.stencil.faces_agree() {
+            return self.fail(
+                gl::INVALID_OPERATION,
+                f,
+                "front and back stencil references or masks differ (WebGL)",
+            );
+        }
         if args.count == 0 || args.instances == 0 {
             return None;
         }
-        let (count, instances) = (args.count as u32, args.instances as u32);
+        let (mut count, instances) = (args.count as u32, args.instances as u32);
+        let capture = match session {
+            Some(session) => {
+                // Only whole primitives are captured (and drawn).
+                count -= count % super::feedback::per_primitive(session.mode);
+                Some(self.plan_capture(
+                    session,
+                    &sources,
+                    args.first as u32,
+                    count,
+                    instances,
+                    f,
+                )?)
+            }
+            None => None,
+        };
         let (max_vertex, restarts) = self.index_range(&indices, count, f)?;
         if restarts && emulated == Emulated::None {
             match args.mode {
@@ -81,20 +111,21 @@ impl Context {
         }
         self.check_attribute_ranges(&sources, max_vertex, instances, f)?;
 
-        // Draws that GL would rasterize to nothing.
+        // Draws that GL would rasterize to nothing: still made when they capture vertices.
         let s = &self.state;
         let triangles = matches!(
             args.mode,
             gl::TRIANGLES | gl::TRIANGLE_STRIP | gl::TRIANGLE_FAN
         );
-        if s.rasterizer_discard
+        let scissor = self.scissor_rect_for(formats.size);
+        let rasterize = !(s.rasterizer_discard
             || (s.cull_face && s.cull_face_mode == gl::FRONT_AND_BACK && triangles)
             || s.viewport[2] == 0
             || s.viewport[3] == 0
-        {
+            || scissor.is_none());
+        if !rasterize && capture.is_none() || count == 0 {
             return None;
         }
-        let scissor = self.scissor_rect()?;
         Some(DrawCall {
             program: pid,
             topology,
@@ -106,7 +137,9 @@ impl Context {
             sources,
             slot_plans,
             blocks,
-            scissor,
+            scissor: scissor.unwrap_or([0, 0, 1, 1]),
+            capture,
+            rasterize,
         })
     }
 
@@ -161,6 +194,7 @@ impl Context {
         };
         let size = index_size(ty).expect("checked");
         let b = self
+            .objects
             .buffers
             .get_any_mut(buffer)
             .expect("bound buffers are alive");
@@ -213,6 +247,7 @@ impl Context {
             };
             let Some(last) = last else { continue };
             let len = self
+                .objects
                 .buffers
                 .get_any(*buffer)
                 .expect("attached buffers are alive")

@@ -54,17 +54,21 @@ pub(super) fn shader_inputs(module: &naga::Module) -> Vec<ShaderInput> {
         .collect()
 }
 
-pub(super) fn output0(module: &naga::Module) -> Option<(ValueKind, u8)> {
-    let result = main_entry(module)?.function.result.as_ref()?;
-    if let Some(naga::Binding::Location { location: 0, .. }) = result.binding {
-        return type_shape(module, result.ty);
+/// The fragment outputs of a module: each location and the kind of its value.
+pub(super) fn outputs(module: &naga::Module) -> Vec<(u32, ValueKind)> {
+    let Some(result) = main_entry(module).and_then(|e| e.function.result.as_ref()) else {
+        return Vec::new();
+    };
+    let mut out = Vec::new();
+    if let Some(naga::Binding::Location { location, .. }) = result.binding {
+        out.extend(type_shape(module, result.ty).map(|(k, _)| (location, k)));
     }
     if let naga::TypeInner::Struct { members, .. } = &module.types[result.ty].inner {
         for m in members {
-            if let Some(naga::Binding::Location { location: 0, .. }) = m.binding {
-                return type_shape(module, m.ty);
+            if let Some(naga::Binding::Location { location, .. }) = m.binding {
+                out.extend(type_shape(module, m.ty).map(|(k, _)| (location, k)));
             }
         }
     }
-    None
+    out
 }

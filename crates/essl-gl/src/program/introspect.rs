@@ -2,6 +2,7 @@
 //! binding points, active attributes and uniforms.
 
 use super::uniform::find_uniform;
+use super::ActiveInfo;
 use crate::context::Context;
 use crate::gl;
 use crate::objects::{Program, UniformLocation};
@@ -15,19 +16,15 @@ impl Context {
         program: Program,
         name: &str,
     ) -> Option<UniformLocation> {
-        const F: &str = "getUniformLocation";
-        let id = self.program_id(program, F)?;
-        let Some(linked) = self.programs.get_any(id).and_then(|p| p.linked.as_ref()) else {
-            self.error(gl::INVALID_OPERATION, F, "program is not linked");
-            return None;
-        };
+        let ctx = self.id;
+        let linked = self.linked_program(program, "getUniformLocation")?;
         if name.starts_with("gl_") || name.starts_with("webgl_") || name.starts_with("_webgl_") {
             return None;
         }
         let (i, element) = find_uniform(&linked.layout, name)?;
         Some(UniformLocation {
-            ctx: self.id,
-            program: id,
+            ctx,
+            program: program.id,
             link: linked.serial,
             uniform: i as u32,
             element,
@@ -36,12 +33,7 @@ impl Context {
 
     /// The index of a uniform block by name, or `INVALID_INDEX` (`getUniformBlockIndex`).
     pub fn get_uniform_block_index(&mut self, program: Program, name: &str) -> u32 {
-        const F: &str = "getUniformBlockIndex";
-        let Some(id) = self.program_id(program, F) else {
-            return gl::INVALID_INDEX;
-        };
-        let Some(linked) = self.programs.get_any(id).and_then(|p| p.linked.as_ref()) else {
-            self.error(gl::INVALID_OPERATION, F, "program is not linked");
+        let Some(linked) = self.linked_program(program, "getUniformBlockIndex") else {
             return gl::INVALID_INDEX;
         };
         linked
@@ -56,15 +48,8 @@ impl Context {
     /// (`uniformBlockBinding`). An index or binding out of range → `INVALID_VALUE`.
     pub fn uniform_block_binding(&mut self, program: Program, block_index: u32, binding: u32) {
         const F: &str = "uniformBlockBinding";
-        let Some(id) = self.program_id(program, F) else {
+        let Some(linked) = self.linked_program(program, F) else {
             return;
-        };
-        let Some(linked) = self
-            .programs
-            .get_any_mut(id)
-            .and_then(|p| p.linked.as_mut())
-        else {
-            return self.error(gl::INVALID_OPERATION, F, "program is not linked");
         };
         match linked.block_bindings.get_mut(block_index as usize) {
             Some(b) if binding < crate::context::MAX_UNIFORM_BUFFER_BINDINGS => *b = binding,
@@ -72,16 +57,17 @@ impl Context {
         }
     }
 
-    /// The index-th active attribute's name, type and size (`getActiveAttrib`).
-    pub fn get_active_attrib(
-        &mut self,
-        program: Program,
-        index: u32,
-    ) -> Option<(String, u32, u32)> {
+    /// The index-th active attribute's name, type and size (`getActiveAttrib`); an index
+    /// out of range → `INVALID_VALUE`.
+    pub fn get_active_attrib(&mut self, program: Program, index: u32) -> Option<ActiveInfo> {
         let id = self.program_id(program, "getActiveAttrib")?;
-        let linked = self.programs.get_any(id)?.linked.as_ref()?;
+        let linked = self.objects.linked(id)?;
         match linked.layout.attributes.get(index as usize) {
-            Some(a) => Some((a.name.clone(), a.ty as u32, a.size)),
+            Some(a) => Some(ActiveInfo {
+                name: a.name.clone(),
+                size: a.size,
+                ty: a.ty as u32,
+            }),
             None => {
                 self.error(gl::INVALID_VALUE, "getActiveAttrib", "index out of range");
                 None
@@ -89,16 +75,17 @@ impl Context {
         }
     }
 
-    /// The index-th active uniform's name, type and size (`getActiveUniform`).
-    pub fn get_active_uniform(
-        &mut self,
-        program: Program,
-        index: u32,
-    ) -> Option<(String, u32, u32)> {
+    /// The index-th active uniform's name, type and size (`getActiveUniform`); an index
+    /// out of range → `INVALID_VALUE`.
+    pub fn get_active_uniform(&mut self, program: Program, index: u32) -> Option<ActiveInfo> {
         let id = self.program_id(program, "getActiveUniform")?;
-        let linked = self.programs.get_any(id)?.linked.as_ref()?;
+        let linked = self.objects.linked(id)?;
         match linked.layout.uniforms.get(index as usize) {
-            Some(u) => Some((u.name.clone(), u.ty as u32, u.size)),
+            Some(u) => Some(ActiveInfo {
+                name: u.name.clone(),
+                size: u.size,
+                ty: u.ty as u32,
+            }),
             None => {
                 self.error(gl::INVALID_VALUE, "getActiveUniform", "index out of range");
                 None
@@ -111,14 +98,13 @@ impl Context {
     /// `gl_`/`webgl_` name have none: −1, as in WebGL.
     pub fn get_attrib_location(&mut self, program: Program, name: &str) -> i32 {
         const F: &str = "getAttribLocation";
-        let Some(id) = self.program_id(program, F) else {
+        if self.program_id(program, F).is_none() {
             return -1;
-        };
+        }
         if name.starts_with("gl_") || name.starts_with("webgl_") || name.starts_with("_webgl_") {
             return -1;
         }
-        let Some(linked) = self.programs.get_any(id).and_then(|p| p.linked.as_ref()) else {
-            self.error(gl::INVALID_OPERATION, F, "program is not linked");
+        let Some(linked) = self.linked_program(program, F) else {
             return -1;
         };
         linked

@@ -11,7 +11,7 @@ impl Context {
     pub fn create_program(&mut self) -> Program {
         Program {
             ctx: self.id,
-            id: self.programs.insert(ProgramObject::default()),
+            id: self.objects.programs.insert(ProgramObject::default()),
         }
     }
 
@@ -21,7 +21,7 @@ impl Context {
         }
         // As for shaders: a program marked for deletion but still current stays usable; one
         // that is gone → INVALID_VALUE.
-        if self.programs.get_any(program.id).is_none() {
+        if self.objects.programs.get_any(program.id).is_none() {
             self.error(
                 gl::INVALID_VALUE,
                 function,
@@ -34,7 +34,7 @@ impl Context {
 
     /// Whether `program` names a live program (`isProgram`).
     pub fn is_program(&self, program: Program) -> bool {
-        program.ctx == self.id && self.programs.is_live(program.id)
+        program.ctx == self.id && self.objects.programs.is_live(program.id)
     }
 
     /// Attaches a shader (`attachShader`); a second shader of the same type, or the same
@@ -44,11 +44,11 @@ impl Context {
         let (Some(p), Some(s)) = (self.program_id(program, F), self.shader_id(shader, F)) else {
             return;
         };
-        let ty = self.shaders.get_any(s).expect("live").ty;
-        let attached = &self.programs.get_any(p).expect("live").attached;
+        let ty = self.objects.shaders.get_any(s).expect("live").ty;
+        let attached = &self.objects.programs.get_any(p).expect("live").attached;
         let clash = attached
             .iter()
-            .any(|&a| a == s || self.shaders.get_any(a).is_some_and(|o| o.ty == ty));
+            .any(|&a| a == s || self.objects.shaders.get_any(a).is_some_and(|o| o.ty == ty));
         if clash {
             return self.error(
                 gl::INVALID_OPERATION,
@@ -56,8 +56,7 @@ impl Context {
                 "a shader of that type is already attached",
             );
         }
-        self.shaders.add_ref(s);
-        self.programs.get_any_mut(p).expect("live").attached.push(s);
+        self.objects.attach_shader(p, s);
     }
 
     /// Detaches a shader (`detachShader`); one not attached → `INVALID_OPERATION`.
@@ -66,12 +65,9 @@ impl Context {
         let (Some(p), Some(s)) = (self.program_id(program, F), self.shader_id(shader, F)) else {
             return;
         };
-        let attached = &mut self.programs.get_any_mut(p).expect("live").attached;
-        let Some(i) = attached.iter().position(|&a| a == s) else {
-            return self.error(gl::INVALID_OPERATION, F, "shader not attached");
-        };
-        attached.remove(i);
-        self.shaders.release(s);
+        if !self.objects.detach_shader(p, s) {
+            self.error(gl::INVALID_OPERATION, F, "shader not attached");
+        }
     }
 
     /// The shaders attached to a program (`getAttachedShaders`).
@@ -80,7 +76,8 @@ impl Context {
             return Vec::new();
         };
         let ctx = self.id;
-        self.programs
+        self.objects
+            .programs
             .get(p)
             .expect("live")
             .attached
@@ -93,32 +90,23 @@ impl Context {
     /// (`DELETE_STATUS` true): it stays usable, with its shaders attached, until another
     /// program is made current, as in GL.
     pub fn delete_program(&mut self, program: Program) {
-        if !self.owns(program.ctx, "deleteProgram") || !self.programs.is_live(program.id) {
+        if !self.owns(program.ctx, "deleteProgram") || !self.objects.programs.is_live(program.id) {
             return;
         }
-        if let Some(freed) = self.programs.delete_freeing(program.id) {
-            self.detach_all(freed);
-        }
-    }
-
-    /// Drops the references a freed program held on its shaders.
-    pub(super) fn detach_all(&mut self, freed: ProgramObject) {
-        for s in freed.attached {
-            self.shaders.release(s);
-        }
+        self.objects.delete_program(program.id);
     }
 
     /// Whether the last link succeeded (`getProgramParameter(LINK_STATUS)`).
     pub fn get_program_link_status(&mut self, program: Program) -> bool {
         self.program_id(program, "getProgramParameter")
-            .and_then(|p| self.programs.get_any(p))
+            .and_then(|p| self.objects.programs.get_any(p))
             .is_some_and(|p| p.link_status)
     }
 
     /// The log of the last link (`getProgramInfoLog`).
     pub fn get_program_info_log(&mut self, program: Program) -> Option<String> {
         let p = self.program_id(program, "getProgramInfoLog")?;
-        self.programs.get_any(p).map(|p| p.info_log.clone())
+        self.objects.programs.get_any(p).map(|p| p.info_log.clone())
     }
 
     /// Binds an attribute name to a location for the next link (`bindAttribLocation`).
@@ -129,13 +117,18 @@ impl Context {
         let Some(p) = self.program_id(program, F) else {
             return;
         };
-        if index >= self.max_vertex_attribs {
+        if index >= self.limits.max_vertex_attribs {
             return self.error(gl::INVALID_VALUE, F, "index ≥ MAX_VERTEX_ATTRIBS");
         }
         if name.starts_with("gl_") || name.starts_with("webgl_") || name.starts_with("_webgl_") {
             return self.error(gl::INVALID_OPERATION, F, "reserved name");
         }
-        let bindings = &mut self.programs.get_any_mut(p).expect("live").attrib_bindings;
+        let bindings = &mut self
+            .objects
+            .programs
+            .get_any_mut(p)
+            .expect("live")
+            .attrib_bindings;
         bindings.retain(|(n, _)| n != name);
         bindings.push((name.to_owned(), index));
     }

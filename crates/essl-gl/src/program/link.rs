@@ -4,13 +4,77 @@
 
 use essl::program::ProgramLayout;
 
-use super::interface::{output0, shader_inputs};
+use super::interface::{outputs, shader_inputs};
 use super::shader::compile;
 use super::LinkedProgram;
+use crate::context::ProgramFilter;
 use crate::context::{Context, MAX_TEXTURE_UNITS};
 use crate::gl;
 use crate::objects::Program;
 use crate::shader_patch::{output_needs_widening, wrap_entry_point};
+
+/// Why a link failed; its text is the program's info log.
+#[derive(Debug, thiserror::Error)]
+pub(crate) enum LinkError {
+    /// `linkProgram` without both shaders.
+    #[error("a vertex and a fragment shader must be attached")]
+    MissingShader,
+    /// `linkProgram` with a shader whose last compile failed (or that was never compiled).
+    #[error("an attached shader is not compiled")]
+    NotCompiled,
+    /// The front end refused to link the shaders: its WebGL-style log.
+    #[error("{0}")]
+    Front(String),
+    /// The front end could not lower the linked program.
+    #[error(transparent)]
+    Lower(#[from] essl::lower::LowerError),
+    /// The program filter ([`Context::set_program_filter`]) refused the layout.
+    #[error("{0}")]
+    Filter(String),
+    /// More sampler slots than the device binds.
+    #[error("{0} samplers: more than the device supports")]
+    TooManySamplers(usize),
+    /// An attribute at a location past `MAX_VERTEX_ATTRIBS`.
+    #[error("attribute location {0} ≥ MAX_VERTEX_ATTRIBS")]
+    AttributeLocation(u32),
+    /// More uniform blocks than the device binds.
+    #[error("{0} uniform blocks: more than the device supports")]
+    TooManyBlocks(usize),
+    /// A uniform block larger than the device's largest uniform binding.
+    #[error("uniform block {name} of {size} bytes is too large")]
+    BlockTooLarge {
+        /// The block's name.
+        name: String,
+        /// Its size in bytes.
+        size: u32,
+    },
+    /// A default uniform block larger than the device's largest uniform binding.
+    #[error("default uniform block of {0} bytes is too large")]
+    DefaultBlockTooLarge(u32),
+    /// The transform feedback varyings do not fit (ES 3.0's link errors for them).
+    #[error("{0}")]
+    Feedback(String),
+    /// wgpu's validation refused the lowered modules.
+    #[error("the lowered shaders were rejected by wgpu: {0}")]
+    Rejected(String),
+}
+
+/// The linker's settings and counter: the serial that tells links apart (it keys pipelines
+/// and uniform locations) and the step between lowering and installing
+/// ([`Context::set_program_filter`]).
+#[derive(Default)]
+pub(crate) struct Linker {
+    serial: u64,
+    filter: Option<ProgramFilter>,
+}
+
+impl Linker {
+    /// A serial no earlier link of the context had.
+    fn next_serial(&mut self) -> u64 {
+        self.serial += 1;
+        self.serial
+    }
+}
 
 impl Context {
     /// Links the attached shaders (`linkProgram`): the essl front end links them as WebGL2
@@ -21,18 +85,27 @@ impl Context {
         let Some(p) = self.program_id(program, "linkProgram") else {
             return;
         };
-        let obj = self.programs.get_any(p).expect("live");
+        if self
+            .feedback_object()
+            .session
+            .is_some_and(|s| s.program == p)
+        {
+            return self.error(
+                gl::INVALID_OPERATION,
+                "linkProgram",
+                "the program is in use by active transform feedback",
+            );
+        }
+        let obj = self.objects.programs.get_any(p).expect("live");
         let shader = |ty: u32| {
             obj.attached
                 .iter()
-                .filter_map(|&s| self.shaders.get_any(s))
+                .filter_map(|&s| self.objects.shaders.get_any(s))
                 .find(|s| s.ty == ty)
         };
         let mut sources = None;
         let result = match (shader(gl::VERTEX_SHADER), shader(gl::FRAGMENT_SHADER)) {
-            (None, _) | (_, None) => {
-                Err("a vertex and a fragment shader must be attached".to_owned())
-            }
+            (None, _) | (_, None) => Err(LinkError::MissingShader),
             (Some(vs), Some(fs)) => match (&vs.compiled, &fs.compiled) {
                 (Some((v, true)), Some((f, true))) => {
                     sources = Some(Box::new(crate::validation::LinkedSources {
@@ -42,39 +115,34 @@ impl Context {
                     let v = &compile(essl::Stage::Vertex, v);
                     let f = &compile(essl::Stage::Fragment, f);
                     let linked = essl::link::link_with_bindings(v, f, &obj.attrib_bindings);
+                    let mut options = crate::LOWER_OPTIONS;
+                    options.transform_feedback = obj.feedback_varyings.0.clone();
                     if linked.ok {
-                        essl::lower::lower_program(
-                            v,
-                            f,
-                            &linked,
-                            &essl::program::LowerOptions::default(),
-                        )
-                        .map_err(|e| e.to_string())
-                        .and_then(|layout| {
-                            match &mut self.program_filter {
-                                Some(filter) => filter(layout),
+                        essl::lower::lower_program(v, f, &linked, &options)
+                            .map_err(LinkError::from)
+                            .and_then(|layout| match &mut self.linker.filter {
+                                Some(filter) => filter(layout).map_err(LinkError::Filter),
                                 None => Ok(layout),
-                            }
-                        })
+                            })
                     } else {
-                        Err(linked.log)
+                        Err(LinkError::Front(linked.log))
                     }
                 }
-                _ => Err("an attached shader is not compiled".to_owned()),
+                _ => Err(LinkError::NotCompiled),
             },
         };
         match result {
             Ok(layout) => {
                 self.link_program_from_layout(program, layout);
-                if let Some(linked) = self.programs.get_any_mut(p).and_then(|o| o.linked.as_mut()) {
+                if let Some(linked) = self.objects.linked_mut(p) {
                     linked.sources = sources;
                 }
             }
-            Err(log) => {
-                let obj = self.programs.get_any_mut(p).expect("live");
+            Err(e) => {
+                let obj = self.objects.programs.get_any_mut(p).expect("live");
                 obj.link_status = false;
                 obj.validate_status = false;
-                obj.info_log = log;
+                obj.info_log = e.to_string();
             }
         }
     }
@@ -84,8 +152,8 @@ impl Context {
     /// translation tests write them as WGSL text and read them back) as long as they keep the
     /// conventions of [`essl::program`]; an `Err` fails the link with that message in the info
     /// log. Programs installed with [`Context::link_program_from_layout`] do not go through it.
-    pub fn set_program_filter(&mut self, filter: Option<crate::context::ProgramFilter>) {
-        self.program_filter = filter;
+    pub fn set_program_filter(&mut self, filter: Option<ProgramFilter>) {
+        self.linker.filter = filter;
     }
 
     /// Creates a program and links it from a layout the front end produced: see
@@ -107,8 +175,14 @@ impl Context {
         let Some(p) = self.program_id(program, "linkProgram") else {
             return;
         };
-        let result = self.link(layout);
-        let obj = self.programs.get_any_mut(p).expect("live");
+        let feedback = self
+            .objects
+            .programs
+            .get_any(p)
+            .map(|o| o.feedback_varyings.clone())
+            .unwrap_or_default();
+        let result = self.link(layout, &feedback);
+        let obj = self.objects.programs.get_any_mut(p).expect("live");
         match result {
             Ok(linked) => {
                 obj.linked = Some(linked);
@@ -116,58 +190,51 @@ impl Context {
                 obj.validate_status = false;
                 obj.info_log.clear();
             }
-            Err(log) => {
+            Err(e) => {
                 obj.link_status = false;
                 obj.validate_status = false;
-                obj.info_log = log;
+                obj.info_log = e.to_string();
             }
         }
     }
 
-    pub(super) fn link(&mut self, layout: ProgramLayout) -> Result<LinkedProgram, String> {
+    pub(super) fn link(
+        &mut self,
+        layout: ProgramLayout,
+        (names, mode): &(Vec<String>, u32),
+    ) -> Result<LinkedProgram, LinkError> {
+        let feedback = super::feedback::feedback_layout(&layout, names, *mode)?;
         let limits = &self.gpu.limits;
         if layout.samplers.len() as u32
             > limits
                 .max_sampled_textures_per_shader_stage
                 .min(MAX_TEXTURE_UNITS)
         {
-            return Err(format!(
-                "{} samplers: more than the device supports",
-                layout.samplers.len()
-            ));
+            return Err(LinkError::TooManySamplers(layout.samplers.len()));
         }
         let inputs = shader_inputs(&layout.vertex);
         if let Some(i) = inputs
             .iter()
-            .find(|i| i.location >= self.max_vertex_attribs)
+            .find(|i| i.location >= self.limits.max_vertex_attribs)
         {
-            return Err(format!(
-                "attribute location {} ≥ MAX_VERTEX_ATTRIBS",
-                i.location
-            ));
+            return Err(LinkError::AttributeLocation(i.location));
         }
         if layout.blocks.len() as u32 + 1 > limits.max_uniform_buffers_per_shader_stage {
-            return Err(format!(
-                "{} uniform blocks: more than the device supports",
-                layout.blocks.len()
-            ));
+            return Err(LinkError::TooManyBlocks(layout.blocks.len()));
         }
         if let Some(b) = layout
             .blocks
             .iter()
             .find(|b| b.size as u64 > limits.max_uniform_buffer_binding_size)
         {
-            return Err(format!(
-                "uniform block {} of {} bytes is too large",
-                b.name, b.size
-            ));
+            return Err(LinkError::BlockTooLarge {
+                name: b.name.clone(),
+                size: b.size,
+            });
         }
         if let Some(block) = &layout.uniform_block {
             if block.size > limits.max_uniform_buffer_binding_size as u32 {
-                return Err(format!(
-                    "default uniform block of {} bytes is too large",
-                    block.size
-                ));
+                return Err(LinkError::DefaultBlockTooLarge(block.size));
             }
         }
         let device = &self.gpu.device;
@@ -187,13 +254,13 @@ impl Context {
             source: wgpu::ShaderSource::Naga(std::borrow::Cow::Owned(fragment)),
         });
         if let Some(e) = pollster::block_on(scope.pop()) {
-            return Err(format!("the lowered shaders were rejected by wgpu: {e}"));
+            return Err(LinkError::Rejected(e.to_string()));
         }
-        self.link_serial += 1;
+        let serial = self.linker.next_serial();
         let size = layout.uniform_block.as_ref().map_or(0, |b| b.size as usize);
         Ok(LinkedProgram {
-            serial: self.link_serial,
-            output0: output0(&layout.fragment),
+            serial,
+            outputs: outputs(&layout.fragment),
             inputs,
             uniform_data: vec![0; size],
             uniform_version: 0,
@@ -202,6 +269,7 @@ impl Context {
             uploaded: None,
             sources: None,
             checks: None,
+            feedback,
             vertex_module,
             fragment_module,
             layout,
@@ -210,13 +278,18 @@ impl Context {
 
     /// The program in use (`getParameter(CURRENT_PROGRAM)`).
     pub fn get_current_program(&self) -> Option<Program> {
-        self.current_program.map(|id| Program { ctx: self.id, id })
+        self.bindings
+            .program()
+            .map(|id| Program { ctx: self.id, id })
     }
 
     /// Makes a linked program current (`useProgram`); `None` for none. A program whose last
     /// link failed → `INVALID_OPERATION`.
     pub fn use_program(&mut self, program: Option<Program>) {
         const F: &str = "useProgram";
+        if self.capturing().is_some() {
+            return self.error(gl::INVALID_OPERATION, F, "transform feedback is active");
+        }
         let id = match program {
             None => None,
             Some(p) => {
@@ -225,25 +298,20 @@ impl Context {
                 }
                 // Unlike most program functions, useProgram refuses a program marked for
                 // deletion (Chromium's ValidateNullableWebGLObject).
-                if !self.programs.is_live(p.id) {
+                if !self.objects.programs.is_live(p.id) {
                     return self.error(gl::INVALID_OPERATION, F, "attempt to use a deleted object");
                 }
-                if !self.programs.get(p.id).is_some_and(|p| p.link_status) {
+                if !self
+                    .objects
+                    .programs
+                    .get(p.id)
+                    .is_some_and(|p| p.link_status)
+                {
                     return self.error(gl::INVALID_OPERATION, F, "program is not linked");
                 }
                 Some(p.id)
             }
         };
-        if self.current_program == id {
-            return;
-        }
-        if let Some(n) = id {
-            self.programs.add_ref(n);
-        }
-        if let Some(old) = std::mem::replace(&mut self.current_program, id) {
-            if let Some(freed) = self.programs.release_freeing(old) {
-                self.detach_all(freed);
-            }
-        }
+        self.bindings.use_program(id, &mut self.objects);
     }
 }

@@ -12,6 +12,7 @@
 //! add methods to [`Context`]: its `impl` is spread over these files on purpose, one file per
 //! group of GL calls.
 
+mod feedback;
 mod interface;
 mod introspect;
 mod lifecycle;
@@ -19,12 +20,21 @@ mod link;
 mod shader;
 mod uniform;
 
+pub(crate) use feedback::MAX_SEPARATE_ATTRIBS;
 pub(crate) use interface::{main_entry, type_shape};
+
+/// `MAX_TRANSFORM_FEEDBACK_SEPARATE_ATTRIBS`: the indexed transform feedback bindings.
+pub(crate) fn feedback_max_buffers() -> u32 {
+    MAX_SEPARATE_ATTRIBS
+}
+pub(crate) use link::{LinkError, Linker};
 pub(crate) use uniform::{find_uniform, uniform_shape};
 
 use essl::program::ProgramLayout;
 
-use crate::objects::Id;
+use crate::context::Context;
+use crate::gl;
+use crate::objects::{Id, Program};
 
 /// The scalar kind of a shader input or output.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
@@ -42,6 +52,19 @@ pub(crate) struct ShaderInput {
     pub(crate) components: u8,
 }
 
+/// What `get_active_attrib`, `get_active_uniform` and `get_transform_feedback_varying`
+/// return (`WebGLActiveInfo`): the name as WebGL enumerates it, the array size (1 for a
+/// non-array) and the type enum (`FLOAT_VEC3`, `SAMPLER_2D`, …).
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct ActiveInfo {
+    /// The name (`u_lights[0].color`, `u_weights[0]`).
+    pub name: String,
+    /// Elements of an array, else 1.
+    pub size: u32,
+    /// The type, as a GL enum.
+    pub ty: u32,
+}
+
 /// A shader object (`WebGLShader`).
 pub(crate) struct ShaderObject {
     pub(crate) ty: u32,
@@ -55,7 +78,6 @@ pub(crate) struct ShaderObject {
 }
 
 /// A program object (`WebGLProgram`).
-#[derive(Default)]
 pub(crate) struct ProgramObject {
     pub(crate) attached: Vec<Id>,
     /// `bind_attrib_location` requests, applied at the next link.
@@ -65,6 +87,22 @@ pub(crate) struct ProgramObject {
     /// The result of the last `validate_program`.
     pub(crate) validate_status: bool,
     pub(crate) info_log: String,
+    /// `transformFeedbackVaryings`: the names and the buffer mode the next link uses.
+    pub(crate) feedback_varyings: (Vec<String>, u32),
+}
+
+impl Default for ProgramObject {
+    fn default() -> Self {
+        ProgramObject {
+            attached: Vec::new(),
+            attrib_bindings: Vec::new(),
+            linked: None,
+            link_status: false,
+            validate_status: false,
+            info_log: String::new(),
+            feedback_varyings: (Vec::new(), gl::INTERLEAVED_ATTRIBS),
+        }
+    }
 }
 
 /// The result of a successful link.
@@ -75,8 +113,8 @@ pub(crate) struct LinkedProgram {
     pub(crate) vertex_module: wgpu::ShaderModule,
     pub(crate) fragment_module: wgpu::ShaderModule,
     pub(crate) inputs: Vec<ShaderInput>,
-    /// Kind and width of the fragment output at location 0, if any.
-    pub(crate) output0: Option<(ValueKind, u8)>,
+    /// The fragment outputs: location and kind.
+    pub(crate) outputs: Vec<(u32, ValueKind)>,
     pub(crate) uniform_data: Vec<u8>,
     /// Bumped when `uniform_data` changes.
     pub(crate) uniform_version: u64,
@@ -90,4 +128,23 @@ pub(crate) struct LinkedProgram {
     pub(crate) sources: Option<Box<crate::validation::LinkedSources>>,
     /// The runtime checks of uniform values, built at the first draw with validation on.
     pub(crate) checks: Option<Box<crate::validation::ProgramChecks>>,
+    /// What transform feedback captures, when the link asked for varyings.
+    pub(crate) feedback: Option<feedback::Feedback>,
+}
+
+impl Context {
+    /// The last successful link of `program`; `None` with WebGL's error otherwise (a foreign
+    /// or deleted program, or `INVALID_OPERATION` for one that is not linked).
+    pub(crate) fn linked_program(
+        &mut self,
+        program: Program,
+        function: &str,
+    ) -> Option<&mut LinkedProgram> {
+        let id = self.program_id(program, function)?;
+        if self.objects.linked(id).is_none() {
+            self.error(gl::INVALID_OPERATION, function, "program is not linked");
+            return None;
+        }
+        self.objects.linked_mut(id)
+    }
 }

@@ -40,7 +40,7 @@ impl Context {
             );
             return None;
         }
-        let id = self.shaders.insert(ShaderObject {
+        let id = self.objects.shaders.insert(ShaderObject {
             ty,
             source: String::new(),
             compiled: None,
@@ -57,7 +57,7 @@ impl Context {
         // Chromium's ValidateWebGLProgramOrShader: a shader marked for deletion but still
         // attached stays usable; one that is gone → INVALID_VALUE (not INVALID_OPERATION as
         // for other objects).
-        if self.shaders.get_any(shader.id).is_none() {
+        if self.objects.shaders.get_any(shader.id).is_none() {
             self.error(
                 gl::INVALID_VALUE,
                 function,
@@ -71,14 +71,14 @@ impl Context {
     /// Sets a shader's source (`shaderSource`).
     pub fn shader_source(&mut self, shader: Shader, source: &str) {
         if let Some(id) = self.shader_id(shader, "shaderSource") {
-            self.shaders.get_any_mut(id).expect("live").source = source.to_owned();
+            self.objects.shaders.get_any_mut(id).expect("live").source = source.to_owned();
         }
     }
 
     /// A shader's source (`getShaderSource`).
     pub fn get_shader_source(&mut self, shader: Shader) -> Option<String> {
         let id = self.shader_id(shader, "getShaderSource")?;
-        self.shaders.get_any(id).map(|s| s.source.clone())
+        self.objects.shaders.get_any(id).map(|s| s.source.clone())
     }
 
     /// Compiles a shader's source with the essl front end (`compileShader`); read the result
@@ -87,7 +87,7 @@ impl Context {
         let Some(id) = self.shader_id(shader, "compileShader") else {
             return;
         };
-        let s = self.shaders.get_any_mut(id).expect("live");
+        let s = self.objects.shaders.get_any_mut(id).expect("live");
         let stage = if s.ty == gl::VERTEX_SHADER {
             essl::Stage::Vertex
         } else {
@@ -101,7 +101,7 @@ impl Context {
     /// Whether the last compile succeeded (`getShaderParameter(COMPILE_STATUS)`).
     pub fn get_shader_compile_status(&mut self, shader: Shader) -> bool {
         self.shader_id(shader, "getShaderParameter")
-            .and_then(|id| self.shaders.get_any(id))
+            .and_then(|id| self.objects.shaders.get_any(id))
             .and_then(|s| s.compiled.as_ref())
             .is_some_and(|c| c.1)
     }
@@ -110,20 +110,20 @@ impl Context {
     /// (`getShaderInfoLog`).
     pub fn get_shader_info_log(&mut self, shader: Shader) -> Option<String> {
         let id = self.shader_id(shader, "getShaderInfoLog")?;
-        self.shaders.get_any(id).map(|s| s.info_log.clone())
+        self.objects.shaders.get_any(id).map(|s| s.info_log.clone())
     }
 
     /// A shader's type (`getShaderParameter(SHADER_TYPE)`).
     pub fn get_shader_type(&mut self, shader: Shader) -> Option<u32> {
         let id = self.shader_id(shader, "getShaderParameter")?;
-        self.shaders.get_any(id).map(|s| s.ty)
+        self.objects.shaders.get_any(id).map(|s| s.ty)
     }
 
     /// Deletes a shader (`deleteShader`); a shader attached to a program lives on until
     /// detached.
     pub fn delete_shader(&mut self, shader: Shader) {
         if self.owns(shader.ctx, "deleteShader") {
-            self.shaders.delete(shader.id);
+            self.objects.delete_shader(shader.id);
         }
     }
 }

@@ -4,7 +4,6 @@
 use essl::program::{ProgramLayout, UniformStorage};
 use essl::types::GlType;
 
-use super::LinkedProgram;
 use crate::context::{Context, MAX_TEXTURE_UNITS};
 use crate::gl;
 use crate::objects::{Program, UniformLocation};
@@ -130,28 +129,12 @@ pub(crate) fn find_uniform(layout: &ProgramLayout, name: &str) -> Option<(usize,
 }
 
 impl Context {
-    /// The linked state of a program, for the low-level setters.
-    pub(super) fn linked_mut(
-        &mut self,
-        program: Program,
-        function: &str,
-    ) -> Option<&mut LinkedProgram> {
-        let id = self.program_id(program, function)?;
-        if self.programs.get_any(id).is_none_or(|p| p.linked.is_none()) {
-            self.error(gl::INVALID_OPERATION, function, "program is not linked");
-            return None;
-        }
-        self.programs
-            .get_any_mut(id)
-            .and_then(|p| p.linked.as_mut())
-    }
-
     /// Low-level: stores 32-bit words at `byte_offset` of a program's default uniform block
     /// image. Out-of-range writes → `INVALID_VALUE`. The `uniform*` functions call this with
     /// offsets from [`UniformStorage::Buffer`].
     pub fn set_uniform_words(&mut self, program: Program, byte_offset: u32, words: &[u32]) {
         const F: &str = "setUniformWords";
-        let Some(linked) = self.linked_mut(program, F) else {
+        let Some(linked) = self.linked_program(program, F) else {
             return;
         };
         let start = byte_offset as usize;
@@ -182,7 +165,7 @@ impl Context {
     /// sampler does). A slot or unit out of range → `INVALID_VALUE`.
     pub fn set_sampler_unit(&mut self, program: Program, slot: u32, unit: u32) {
         const F: &str = "setSamplerUnit";
-        let Some(linked) = self.linked_mut(program, F) else {
+        let Some(linked) = self.linked_program(program, F) else {
             return;
         };
         if slot as usize >= linked.sampler_units.len() || unit >= MAX_TEXTURE_UNITS {
@@ -207,14 +190,10 @@ impl Context {
         if !self.owns(loc.ctx, function) {
             return;
         }
-        let Some(current) = self.current_program else {
+        let Some(current) = self.bindings.program() else {
             return self.error(gl::INVALID_OPERATION, function, "no current program");
         };
-        let linked = match self
-            .programs
-            .get_any(current)
-            .and_then(|p| p.linked.as_ref())
-        {
+        let linked = match self.objects.linked(current) {
             Some(l) if loc.program == current && l.serial == loc.link => l,
             _ => {
                 return self.error(
@@ -264,11 +243,7 @@ impl Context {
                 return self.error(gl::INVALID_VALUE, function, "texture unit out of range");
             }
         }
-        let linked = self
-            .programs
-            .get_any_mut(current)
-            .and_then(|p| p.linked.as_mut())
-            .expect("checked");
+        let linked = self.objects.linked_mut(current).expect("checked");
         match storage {
             UniformStorage::Block => {}
             UniformStorage::Sampler { first_slot } => {

@@ -20,7 +20,7 @@ pub(crate) enum Comp {
 }
 
 impl Comp {
-    pub(super) fn size(self) -> usize {
+    pub(crate) fn size(self) -> usize {
         match self {
             Comp::Unorm8 | Comp::Snorm8 | Comp::U8 | Comp::I8 => 1,
             Comp::U16 | Comp::I16 | Comp::F16 => 2,
@@ -29,7 +29,7 @@ impl Comp {
     }
 
     /// The GL type whose components are stored as they are.
-    pub(super) fn native_type(self) -> u32 {
+    pub(crate) fn native_type(self) -> u32 {
         match self {
             Comp::Unorm8 | Comp::U8 => gl::UNSIGNED_BYTE,
             Comp::Snorm8 | Comp::I8 => gl::BYTE,
@@ -88,6 +88,55 @@ pub(crate) enum Expand {
     LuminanceAlpha,
 }
 
+/// Formats whose texels are not one value per channel: packed colours and depth/stencil.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub(crate) enum Packing {
+    /// One value of [`InternalFormat::comp`] per channel.
+    None,
+    /// `RGB10_A2`: 10-bit normalized RGB and 2-bit alpha in one 32-bit word.
+    Rgb10A2,
+    /// `RGB10_A2UI`: the same bits as unsigned integers.
+    Rgb10A2Ui,
+    /// `R11F_G11F_B10F`: unsigned 11-, 11- and 10-bit floats.
+    Rg11B10F,
+    /// `RGB9_E5`: three 9-bit mantissas sharing a 5-bit exponent (not renderable).
+    Rgb9E5,
+    /// `DEPTH_COMPONENT16`.
+    Depth16,
+    /// `DEPTH_COMPONENT24` (stored as a 32-bit word on the CPU).
+    Depth24,
+    /// `DEPTH_COMPONENT32F`.
+    Depth32F,
+    /// `DEPTH24_STENCIL8`.
+    Depth24Stencil8,
+    /// `DEPTH32F_STENCIL8`.
+    Depth32FStencil8,
+    /// `STENCIL_INDEX8` (renderbuffers only).
+    Stencil8,
+}
+
+impl Packing {
+    /// Whether the format has a depth component.
+    pub(crate) fn has_depth(self) -> bool {
+        matches!(
+            self,
+            Packing::Depth16
+                | Packing::Depth24
+                | Packing::Depth32F
+                | Packing::Depth24Stencil8
+                | Packing::Depth32FStencil8
+        )
+    }
+
+    /// Whether the format has a stencil component.
+    pub(crate) fn has_stencil(self) -> bool {
+        matches!(
+            self,
+            Packing::Depth24Stencil8 | Packing::Depth32FStencil8 | Packing::Stencil8
+        )
+    }
+}
+
 /// An internal format that essl-gl supports, and how it is stored.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub(crate) struct InternalFormat {
@@ -100,12 +149,14 @@ pub(crate) struct InternalFormat {
     pub(crate) comp: Comp,
     pub(crate) srgb: bool,
     pub(crate) expand: Expand,
+    pub(crate) packing: Packing,
 }
 
 impl InternalFormat {
     /// Channels of the GPU texture (RGB and the legacy formats are stored as RGBA).
-    pub(super) fn gpu_channels(&self) -> u8 {
+    pub(crate) fn gpu_channels(&self) -> u8 {
         match (self.expand, self.channels) {
+            _ if self.packing != Packing::None => self.channels,
             (Expand::None, 3) => 4,
             (Expand::None, n) => n,
             _ => 4,
@@ -114,12 +165,41 @@ impl InternalFormat {
 
     /// Bytes per texel on the GPU (and in the CPU copy).
     pub(crate) fn texel_size(&self) -> usize {
-        self.gpu_channels() as usize * self.comp.size()
+        match self.packing {
+            Packing::None => self.gpu_channels() as usize * self.comp.size(),
+            Packing::Depth16 => 2,
+            Packing::Stencil8 => 1,
+            Packing::Depth32FStencil8 => 8,
+            _ => 4,
+        }
+    }
+
+    /// Whether the format has a depth component.
+    pub(crate) fn has_depth(&self) -> bool {
+        self.packing.has_depth()
+    }
+
+    /// Whether the format has a stencil component.
+    pub(crate) fn has_stencil(&self) -> bool {
+        self.packing.has_stencil()
     }
 
     /// The wgpu format of the GPU texture.
     pub(crate) fn gpu_format(&self) -> wgpu::TextureFormat {
         use wgpu::TextureFormat as F;
+        match self.packing {
+            Packing::None => {}
+            Packing::Rgb10A2 => return F::Rgb10a2Unorm,
+            Packing::Rgb10A2Ui => return F::Rgb10a2Uint,
+            Packing::Rg11B10F => return F::Rg11b10Ufloat,
+            Packing::Rgb9E5 => return F::Rgb9e5Ufloat,
+            Packing::Depth16 => return F::Depth16Unorm,
+            Packing::Depth24 => return F::Depth24Plus,
+            Packing::Depth32F => return F::Depth32Float,
+            Packing::Depth24Stencil8 => return F::Depth24PlusStencil8,
+            Packing::Depth32FStencil8 => return F::Depth32FloatStencil8,
+            Packing::Stencil8 => return F::Stencil8,
+        }
         match (self.comp, self.gpu_channels(), self.srgb) {
             (Comp::Unorm8, 4, true) => F::Rgba8UnormSrgb,
             (Comp::Unorm8, 1, _) => F::R8Unorm,
@@ -155,19 +235,92 @@ impl InternalFormat {
         }
     }
 
-    /// Whether GL ES 3.0 lets the format be filtered linearly (32-bit floats and integers not).
+    /// Whether GL ES 3.0 lets the format be filtered linearly (32-bit floats, integers and
+    /// depth not).
     pub(crate) fn filterable(&self) -> bool {
-        matches!(self.comp, Comp::Unorm8 | Comp::Snorm8 | Comp::F16)
+        match self.packing {
+            Packing::None => matches!(self.comp, Comp::Unorm8 | Comp::Snorm8 | Comp::F16),
+            Packing::Rgb10A2 | Packing::Rg11B10F | Packing::Rgb9E5 => true,
+            _ => false,
+        }
     }
 
+    /// What sampling the format returns (a depth format sampled without comparison returns
+    /// floats).
     pub(crate) fn kind(&self) -> SampleKind {
-        self.comp.kind()
+        match self.packing {
+            Packing::Rgb10A2Ui => SampleKind::Uint,
+            Packing::None => self.comp.kind(),
+            _ => SampleKind::Float,
+        }
+    }
+
+    /// Whether ES 3.0 makes the format colour-renderable (table 3.13); the float formats with
+    /// `EXT_color_buffer_float` (`float_ok`). Unsized and legacy formats: only `RGBA`/`RGB`.
+    pub(crate) fn color_renderable(&self, float_ok: bool) -> bool {
+        match self.packing {
+            Packing::Rgb10A2 | Packing::Rgb10A2Ui => true,
+            Packing::Rg11B10F => float_ok,
+            Packing::None => {
+                if self.expand != Expand::None {
+                    return false;
+                }
+                match self.comp {
+                    Comp::Snorm8 => false,
+                    Comp::F16 | Comp::F32 => float_ok && self.channels != 3,
+                    Comp::Unorm8 => {
+                        self.channels != 3 || matches!(self.gl, gl::RGB | gl::RGB8 | gl::RGB565)
+                    }
+                    _ => self.channels != 3,
+                }
+            }
+            _ => false,
+        }
+    }
+
+    /// Whether the format can be a depth or stencil attachment.
+    pub(crate) fn depth_stencil_renderable(&self) -> bool {
+        self.has_depth() || self.has_stencil()
+    }
+
+    /// Whether textures may have the format (`STENCIL_INDEX8` is for renderbuffers only).
+    pub(crate) fn texture_format(&self) -> bool {
+        self.packing != Packing::Stencil8
+    }
+
+    /// Whether the texel bytes are the GPU's own encoding of client data of the format's
+    /// native type (so uploads copy bytes); false for depth formats, which wgpu cannot copy
+    /// into (they are written by drawing).
+    pub(crate) fn copyable(&self) -> bool {
+        !self.has_depth()
     }
 
     /// Whether `(format, ty)` data may be uploaded to this internal format (ES 3.0 table 3.2).
     pub(super) fn accepts(&self, format: u32, ty: u32) -> bool {
         if format != self.base {
             return false;
+        }
+        match self.packing {
+            Packing::None => {}
+            Packing::Rgb10A2 | Packing::Rgb10A2Ui => return ty == gl::UNSIGNED_INT_2_10_10_10_REV,
+            Packing::Rg11B10F => {
+                return matches!(
+                    ty,
+                    gl::UNSIGNED_INT_10F_11F_11F_REV | gl::HALF_FLOAT | gl::FLOAT
+                )
+            }
+            Packing::Rgb9E5 => {
+                return matches!(
+                    ty,
+                    gl::UNSIGNED_INT_5_9_9_9_REV | gl::HALF_FLOAT | gl::FLOAT
+                )
+            }
+            Packing::Depth16 => return matches!(ty, gl::UNSIGNED_SHORT | gl::UNSIGNED_INT),
+            Packing::Depth24 => return ty == gl::UNSIGNED_INT,
+            Packing::Depth32F => return ty == gl::FLOAT,
+            Packing::Depth24Stencil8 => return ty == gl::UNSIGNED_INT_24_8,
+            Packing::Depth32FStencil8 => return ty == gl::FLOAT_32_UNSIGNED_INT_24_8_REV,
+            Packing::Stencil8 => return false,
         }
         if ty == self.comp.native_type() {
             return true;
@@ -182,6 +335,89 @@ impl InternalFormat {
     }
 }
 
+/// Bits per component of a format, as `getRenderbufferParameter` and
+/// `getFramebufferAttachmentParameter` report them.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub(crate) struct BitSizes {
+    pub(crate) red: u32,
+    pub(crate) green: u32,
+    pub(crate) blue: u32,
+    pub(crate) alpha: u32,
+    pub(crate) depth: u32,
+    pub(crate) stencil: u32,
+}
+
+/// The bit sizes of a format's components (GL's sizes, not the GPU's: `RGBA4` has 4 bits
+/// per channel though it is stored in 8).
+pub(crate) fn bit_sizes(f: &InternalFormat) -> BitSizes {
+    let rgba = |r, g, b, a| BitSizes {
+        red: r,
+        green: g,
+        blue: b,
+        alpha: a,
+        ..Default::default()
+    };
+    match f.packing {
+        Packing::Rgb10A2 | Packing::Rgb10A2Ui => return rgba(10, 10, 10, 2),
+        Packing::Rg11B10F => return rgba(11, 11, 10, 0),
+        Packing::Rgb9E5 => return rgba(9, 9, 9, 0),
+        Packing::Depth16 => {
+            return BitSizes {
+                depth: 16,
+                ..Default::default()
+            }
+        }
+        Packing::Depth24 => {
+            return BitSizes {
+                depth: 24,
+                ..Default::default()
+            }
+        }
+        Packing::Depth32F => {
+            return BitSizes {
+                depth: 32,
+                ..Default::default()
+            }
+        }
+        Packing::Depth24Stencil8 => {
+            return BitSizes {
+                depth: 24,
+                stencil: 8,
+                ..Default::default()
+            }
+        }
+        Packing::Depth32FStencil8 => {
+            return BitSizes {
+                depth: 32,
+                stencil: 8,
+                ..Default::default()
+            }
+        }
+        Packing::Stencil8 => {
+            return BitSizes {
+                stencil: 8,
+                ..Default::default()
+            }
+        }
+        Packing::None => {}
+    }
+    match f.gl {
+        gl::RGBA4 => return rgba(4, 4, 4, 4),
+        gl::RGB5_A1 => return rgba(5, 5, 5, 1),
+        gl::RGB565 => return rgba(5, 6, 5, 0),
+        _ => {}
+    }
+    let bits = 8 * f.comp.size() as u32;
+    let n = f.channels;
+    let on = |c: u8| if n > c { bits } else { 0 };
+    match f.expand {
+        Expand::Luminance => rgba(bits, bits, bits, 0),
+        Expand::Alpha => rgba(0, 0, 0, bits),
+        Expand::LuminanceAlpha => rgba(bits, bits, bits, bits),
+        Expand::None => rgba(on(0), on(1), on(2), on(3)),
+    }
+}
+
 /// The internal formats essl-gl supports; `Err(true)` for a GL format it does not support,
 /// `Err(false)` for a value that is no internal format.
 pub(crate) fn internal_format(internal: u32) -> Result<InternalFormat, bool> {
@@ -193,8 +429,13 @@ pub(crate) fn internal_format(internal: u32) -> Result<InternalFormat, bool> {
         comp,
         srgb,
         expand,
+        packing: Packing::None,
     };
     let plain = |base, channels, comp| f(base, channels, comp, false, Expand::None);
+    let packed = |base, channels, comp, packing| InternalFormat {
+        packing,
+        ..f(base, channels, comp, false, Expand::None)
+    };
     Ok(match internal {
         gl::RGBA | gl::RGBA8 | gl::RGBA4 | gl::RGB5_A1 => plain(gl::RGBA, 4, Unorm8),
         gl::RGB | gl::RGB8 | gl::RGB565 => plain(gl::RGB, 3, Unorm8),
@@ -247,25 +488,25 @@ pub(crate) fn internal_format(internal: u32) -> Result<InternalFormat, bool> {
         gl::RG32I => plain(gl::RG_INTEGER, 2, I32),
         gl::RGB32I => plain(gl::RGB_INTEGER, 3, I32),
         gl::RGBA32I => plain(gl::RGBA_INTEGER, 4, I32),
-        gl::R11F_G11F_B10F
-        | gl::RGB9_E5
-        | gl::RGB10_A2
-        | gl::RGB10_A2UI
-        | gl::DEPTH_COMPONENT16
-        | gl::DEPTH_COMPONENT24
-        | gl::DEPTH_COMPONENT32F
-        | gl::DEPTH24_STENCIL8
-        | gl::DEPTH32F_STENCIL8
-        | gl::DEPTH_COMPONENT
-        | gl::DEPTH_STENCIL => return Err(true),
+        gl::RGB10_A2 => packed(gl::RGBA, 4, U32, Packing::Rgb10A2),
+        gl::RGB10_A2UI => packed(gl::RGBA_INTEGER, 4, U32, Packing::Rgb10A2Ui),
+        gl::R11F_G11F_B10F => packed(gl::RGB, 3, F32, Packing::Rg11B10F),
+        gl::RGB9_E5 => packed(gl::RGB, 3, F32, Packing::Rgb9E5),
+        gl::DEPTH_COMPONENT16 => packed(gl::DEPTH_COMPONENT, 1, U16, Packing::Depth16),
+        gl::DEPTH_COMPONENT24 => packed(gl::DEPTH_COMPONENT, 1, U32, Packing::Depth24),
+        gl::DEPTH_COMPONENT32F => packed(gl::DEPTH_COMPONENT, 1, F32, Packing::Depth32F),
+        gl::DEPTH24_STENCIL8 => packed(gl::DEPTH_STENCIL, 2, U32, Packing::Depth24Stencil8),
+        gl::DEPTH32F_STENCIL8 => packed(gl::DEPTH_STENCIL, 2, F32, Packing::Depth32FStencil8),
+        gl::STENCIL_INDEX8 => packed(gl::STENCIL_INDEX8, 1, U8, Packing::Stencil8),
+        gl::DEPTH_COMPONENT | gl::DEPTH_STENCIL => return Err(true),
         _ => return Err(false),
     })
 }
 
 pub(super) fn format_channels(format: u32) -> Option<usize> {
     match format {
-        gl::RED | gl::RED_INTEGER | gl::LUMINANCE | gl::ALPHA => Some(1),
-        gl::RG | gl::RG_INTEGER | gl::LUMINANCE_ALPHA => Some(2),
+        gl::RED | gl::RED_INTEGER | gl::LUMINANCE | gl::ALPHA | gl::DEPTH_COMPONENT => Some(1),
+        gl::RG | gl::RG_INTEGER | gl::LUMINANCE_ALPHA | gl::DEPTH_STENCIL => Some(2),
         gl::RGB | gl::RGB_INTEGER => Some(3),
         gl::RGBA | gl::RGBA_INTEGER => Some(4),
         _ => None,
@@ -286,6 +527,11 @@ pub(super) fn is_pixel_type(ty: u32) -> bool {
             | gl::UNSIGNED_SHORT_5_6_5
             | gl::UNSIGNED_SHORT_4_4_4_4
             | gl::UNSIGNED_SHORT_5_5_5_1
+            | gl::UNSIGNED_INT_2_10_10_10_REV
+            | gl::UNSIGNED_INT_10F_11F_11F_REV
+            | gl::UNSIGNED_INT_5_9_9_9_REV
+            | gl::UNSIGNED_INT_24_8
+            | gl::FLOAT_32_UNSIGNED_INT_24_8_REV
     )
 }
 
@@ -293,6 +539,15 @@ pub(super) fn is_pixel_type(ty: u32) -> bool {
 pub(super) fn pixel_size(format: u32, ty: u32) -> usize {
     match ty {
         gl::UNSIGNED_SHORT_5_6_5 | gl::UNSIGNED_SHORT_4_4_4_4 | gl::UNSIGNED_SHORT_5_5_5_1 => 2,
+        gl::UNSIGNED_INT_2_10_10_10_REV
+        | gl::UNSIGNED_INT_10F_11F_11F_REV
+        | gl::UNSIGNED_INT_5_9_9_9_REV
+        | gl::UNSIGNED_INT_24_8 => 4,
+        gl::FLOAT_32_UNSIGNED_INT_24_8_REV => 8,
+        _ if format == gl::DEPTH_COMPONENT => match ty {
+            gl::UNSIGNED_SHORT => 2,
+            _ => 4,
+        },
         _ => {
             let comp = match ty {
                 gl::UNSIGNED_BYTE | gl::BYTE => 1,

@@ -20,7 +20,11 @@ impl Context {
         let Some(id) = self.bound_texture(target, F) else {
             return;
         };
-        let t = self.textures.get(id).expect("bound textures are live");
+        let t = self
+            .objects
+            .textures
+            .get(id)
+            .expect("bound textures are live");
         let (base, _) = t.level_range();
         let faces = if target == gl::TEXTURE_CUBE_MAP { 6 } else { 1 };
         let Some(first) = t.level(0, base).cloned() else {
@@ -51,7 +55,30 @@ impl Context {
         if let Some(n) = t.immutable_levels {
             last = last.min(n - 1);
         }
-        let t = self.textures.get_mut(id).expect("bound textures are live");
+        // A base level drawn into on the GPU comes back to the CPU first.
+        for face in 0..faces {
+            let on_gpu = self
+                .objects
+                .textures
+                .get(id)
+                .and_then(|t| t.level(face, base))
+                .is_some_and(|l| l.data.is_none());
+            if on_gpu {
+                let data = self.read_texture_level(id, face, base);
+                let t = self
+                    .objects
+                    .textures
+                    .get_mut(id)
+                    .expect("bound textures are live");
+                let l = t.level_mut(face, base).expect("checked");
+                l.data = Some(data);
+            }
+        }
+        let t = self
+            .objects
+            .textures
+            .get_mut(id)
+            .expect("bound textures are live");
         for face in 0..faces {
             let mut src = t.level(face, base).cloned().expect("checked");
             for level in base + 1..=last {
@@ -91,6 +118,8 @@ pub(super) fn downsample(src: &Level, three_d: bool) -> Level {
     };
     let n = src.format.texel_size();
     let srgb = src.format.srgb;
+    let empty = Vec::new();
+    let src_data = src.data.as_ref().unwrap_or(&empty);
     let mut data = vec![0u8; w as usize * h as usize * d as usize * n];
     let at = |x: u32, y: u32, z: u32| ((z * src.height + y) * src.width + x) as usize * n;
     for z in 0..d {
@@ -109,7 +138,7 @@ pub(super) fn downsample(src: &Level, three_d: bool) -> Level {
                     for &sz in &zs {
                         for sy in ys {
                             for sx in xs {
-                                let v = src.data[at(sx, sy, sz) + c];
+                                let v = src_data.get(at(sx, sy, sz) + c).copied().unwrap_or(0);
                                 sum += if srgb && c % 4 != 3 {
                                     srgb_to_linear(v)
                                 } else {
@@ -129,11 +158,5 @@ pub(super) fn downsample(src: &Level, three_d: bool) -> Level {
             }
         }
     }
-    Level {
-        width: w,
-        height: h,
-        depth: d,
-        format: src.format,
-        data,
-    }
+    Level::new([w, h, d], src.format, data)
 }

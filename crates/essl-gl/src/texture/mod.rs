@@ -14,16 +14,20 @@
 //! its `impl` is spread over these files on purpose, one file per group of GL calls.
 
 mod format;
+mod gpu;
 mod mipmap;
 mod object;
 mod params;
 mod pixels;
 mod sampling;
 mod storage;
+mod unpack_buffer;
 mod upload;
 
 pub(crate) use format::*;
+pub(crate) use gpu::{upload_image, TexelBox, ViewKey};
 pub(crate) use object::*;
+pub(crate) use pixels::f16_to_f32;
 pub(crate) use sampling::*;
 
 use crate::context::{Context, MAX_TEXTURE_UNITS};
@@ -31,7 +35,7 @@ use crate::gl;
 use crate::objects::{Id, Texture};
 
 /// The texture binding target and cube face of an image target.
-pub(super) fn image_target(target: u32) -> Option<(u32, usize)> {
+pub(crate) fn image_target(target: u32) -> Option<(u32, usize)> {
     match target {
         gl::TEXTURE_2D => Some((gl::TEXTURE_2D, 0)),
         gl::TEXTURE_CUBE_MAP_POSITIVE_X..=gl::TEXTURE_CUBE_MAP_NEGATIVE_Z => Some((
@@ -56,7 +60,7 @@ impl Context {
     pub fn create_texture(&mut self) -> Texture {
         Texture {
             ctx: self.id,
-            id: self.textures.insert(TextureObject::new()),
+            id: self.objects.textures.insert(TextureObject::new()),
         }
     }
 
@@ -64,6 +68,7 @@ impl Context {
     pub fn is_texture(&self, texture: Texture) -> bool {
         texture.ctx == self.id
             && self
+                .objects
                 .textures
                 .get(texture.id)
                 .is_some_and(|t| t.target.is_some())
@@ -73,7 +78,7 @@ impl Context {
     /// (`activeTexture`): `TEXTURE0 + i` for `i` below 32, else `INVALID_ENUM`.
     pub fn active_texture(&mut self, texture: u32) {
         match texture.checked_sub(gl::TEXTURE0) {
-            Some(i) if i < MAX_TEXTURE_UNITS => self.active_texture = i,
+            Some(i) if i < MAX_TEXTURE_UNITS => self.bindings.set_active_unit(i),
             _ => self.error(
                 gl::INVALID_ENUM,
                 "activeTexture",
@@ -96,7 +101,7 @@ impl Context {
                 if !self.owns(t.ctx, F) {
                     return;
                 }
-                let Some(obj) = self.textures.get_mut(t.id) else {
+                let Some(obj) = self.objects.textures.get_mut(t.id) else {
                     return self.error(gl::INVALID_OPERATION, F, "deleted texture");
                 };
                 match obj.target {
@@ -113,32 +118,22 @@ impl Context {
                 Some(t.id)
             }
         };
-        *self.texture_units[self.active_texture as usize].slot(target) = id;
+        self.bindings.bind_texture(target, id);
     }
 
     /// Deletes a texture (`deleteTexture`), unbinding it from every unit.
     pub fn delete_texture(&mut self, texture: Texture) {
-        if !self.owns(texture.ctx, "deleteTexture") || !self.textures.is_live(texture.id) {
+        if !self.owns(texture.ctx, "deleteTexture") || !self.objects.textures.is_live(texture.id) {
             return;
         }
-        for unit in &mut self.texture_units {
-            for slot in [
-                &mut unit.d2,
-                &mut unit.cube,
-                &mut unit.d3,
-                &mut unit.d2_array,
-            ] {
-                if *slot == Some(texture.id) {
-                    *slot = None;
-                }
-            }
-        }
-        self.textures.delete(texture.id);
+        self.bindings.forget_texture(texture.id);
+        let bound = self.bindings.framebuffers();
+        self.objects.delete_texture(texture.id, bound);
     }
 
     /// The texture bound to `target` of the active unit, or `INVALID_OPERATION`.
-    fn bound_texture(&mut self, target: u32, function: &str) -> Option<Id> {
-        let id = self.texture_units[self.active_texture as usize].get(target);
+    pub(crate) fn bound_texture(&mut self, target: u32, function: &str) -> Option<Id> {
+        let id = self.bindings.texture(self.bindings.active_unit(), target);
         if id.is_none() {
             self.error(
                 gl::INVALID_OPERATION,

@@ -1,10 +1,10 @@
-//! A texture object: its level images on the CPU, its parameters, GL ES 3.0 completeness,
-//! and the GPU texture made from the complete levels when a draw samples it.
+//! A texture object: its level images, its parameters, and GL ES 3.0 completeness. The GPU
+//! copy of the images is [`super::gpu`]'s business.
 
 use super::format::InternalFormat;
 use super::sampling::SamplerKey;
-use crate::context::Gpu;
 use crate::gl;
+use crate::sampler::SamplerParams;
 
 /// One level image (of one cube face).
 #[derive(Clone, Debug)]
@@ -14,58 +14,44 @@ pub(crate) struct Level {
     /// Depth of a 3D texture, layers of a 2D array, 1 otherwise.
     pub(crate) depth: u32,
     pub(crate) format: InternalFormat,
-    /// Texels in the GPU format, tightly packed, row 0 first.
-    pub(crate) data: Vec<u8>,
+    /// Texels in the GPU format, tightly packed, row 0 first; `None` when the GPU copy holds
+    /// newer texels (the level was drawn into or copied into on the GPU).
+    pub(crate) data: Option<Vec<u8>>,
+    /// Whether `data` is what the GPU copy holds (set when it is uploaded).
+    pub(crate) uploaded: bool,
 }
 
-/// Sampling parameters (`tex_parameteri`/`tex_parameterf`).
+impl Level {
+    /// A level image from texels in the GPU format (not yet on the GPU).
+    pub(crate) fn new(size: [u32; 3], format: InternalFormat, data: Vec<u8>) -> Self {
+        Level {
+            width: size[0],
+            height: size[1],
+            depth: size[2],
+            format,
+            data: Some(data),
+            uploaded: false,
+        }
+    }
+}
+
+/// A texture's parameters (`tex_parameteri`/`tex_parameterf`): how it is sampled, and the
+/// range of levels used.
 #[derive(Clone, Debug, PartialEq)]
 pub(crate) struct TexParams {
-    pub(crate) min_filter: u32,
-    pub(crate) mag_filter: u32,
-    pub(crate) wrap_s: u32,
-    pub(crate) wrap_t: u32,
-    pub(crate) wrap_r: u32,
-    pub(crate) min_lod: f32,
-    pub(crate) max_lod: f32,
+    pub(crate) sampling: SamplerParams,
     pub(crate) base_level: u32,
     pub(crate) max_level: u32,
-    pub(crate) compare_mode: u32,
-    pub(crate) compare_func: u32,
 }
 
 impl Default for TexParams {
     fn default() -> Self {
         TexParams {
-            min_filter: gl::NEAREST_MIPMAP_LINEAR,
-            mag_filter: gl::LINEAR,
-            wrap_s: gl::REPEAT,
-            wrap_t: gl::REPEAT,
-            wrap_r: gl::REPEAT,
-            min_lod: -1000.0,
-            max_lod: 1000.0,
+            sampling: SamplerParams::default(),
             base_level: 0,
             max_level: 1000,
-            compare_mode: gl::NONE,
-            compare_func: gl::LEQUAL,
         }
     }
-}
-
-impl TexParams {
-    pub(super) fn mipmapped(&self) -> bool {
-        !matches!(self.min_filter, gl::NEAREST | gl::LINEAR)
-    }
-}
-
-/// The GPU copy of a texture: levels `base..base + levels` of the GL texture.
-pub(crate) struct GpuTexture {
-    pub(crate) view: wgpu::TextureView,
-    texture: wgpu::Texture,
-    base: u32,
-    levels: u32,
-    version: u64,
-    pub(crate) last_batch: u64,
 }
 
 /// A texture object.
@@ -77,9 +63,9 @@ pub(crate) struct TextureObject {
     pub(crate) params: TexParams,
     /// Levels of an immutable texture (`tex_storage_*`).
     pub(crate) immutable_levels: Option<u32>,
-    /// Bumped on every change of an image.
+    /// Bumped on every change of an image or of the GPU copy's shape.
     pub(crate) version: u64,
-    pub(crate) gpu: Option<GpuTexture>,
+    pub(crate) gpu: Option<super::gpu::GpuTexture>,
 }
 
 /// What a complete texture uses: levels `base..base + levels`.
@@ -106,16 +92,26 @@ impl TextureObject {
         }
     }
 
-    pub(super) fn level(&self, face: usize, level: u32) -> Option<&Level> {
+    pub(crate) fn level(&self, face: usize, level: u32) -> Option<&Level> {
         self.faces.get(face)?.get(level as usize)?.as_ref()
     }
 
-    pub(super) fn set_level(&mut self, face: usize, level: u32, image: Level) {
-        let faces = if self.target == Some(gl::TEXTURE_CUBE_MAP) {
+    /// Mutable [`TextureObject::level`].
+    pub(crate) fn level_mut(&mut self, face: usize, level: u32) -> Option<&mut Level> {
+        self.faces.get_mut(face)?.get_mut(level as usize)?.as_mut()
+    }
+
+    /// The number of faces: 6 for a cube map, else 1.
+    pub(crate) fn face_count(&self) -> usize {
+        if self.target == Some(gl::TEXTURE_CUBE_MAP) {
             6
         } else {
             1
-        };
+        }
+    }
+
+    pub(crate) fn set_level(&mut self, face: usize, level: u32, image: Level) {
+        let faces = self.face_count();
         if self.faces.len() < faces {
             self.faces.resize_with(faces, Vec::new);
         }
@@ -128,7 +124,7 @@ impl TextureObject {
     }
 
     /// The effective base and max levels (clamped for immutable textures, ES 3.0 §3.8.10).
-    pub(super) fn level_range(&self) -> (u32, u32) {
+    pub(crate) fn level_range(&self) -> (u32, u32) {
         let p = &self.params;
         match self.immutable_levels {
             Some(n) => {
@@ -141,7 +137,7 @@ impl TextureObject {
 
     /// GL ES 3.0's texture completeness (§3.8.13): `None` when incomplete, in which case
     /// sampling returns (0, 0, 0, 1).
-    pub(crate) fn completeness(&self) -> Option<Complete> {
+    pub(crate) fn completeness(&self, float_linear: bool, p: &SamplerParams) -> Option<Complete> {
         let target = self.target?;
         let (base, max) = self.level_range();
         let faces = if target == gl::TEXTURE_CUBE_MAP { 6 } else { 1 };
@@ -161,8 +157,14 @@ impl TextureObject {
         if target == gl::TEXTURE_CUBE_MAP && first.width != first.height {
             return None;
         }
-        let p = &self.params;
-        if !format.filterable()
+        // Depth formats filter only when compared (ES 3.0 §3.8.13).
+        let compared = format.has_depth() && p.compare_mode == gl::COMPARE_REF_TO_TEXTURE;
+        let filterable = format.filterable()
+            || compared
+            || (float_linear
+                && format.comp == super::format::Comp::F32
+                && format.packing == super::format::Packing::None);
+        if !filterable
             && (p.mag_filter != gl::NEAREST
                 || !matches!(p.min_filter, gl::NEAREST | gl::NEAREST_MIPMAP_NEAREST))
         {
@@ -210,107 +212,9 @@ impl TextureObject {
         })
     }
 
-    /// The GPU texture view for a complete texture, made or updated as needed.
-    pub(crate) fn gpu_view(&mut self, gpu: &Gpu, serial: u64, c: &Complete) -> wgpu::TextureView {
-        if let Some(g) = &mut self.gpu {
-            if g.version == self.version && g.base == c.base && g.levels == c.levels {
-                g.last_batch = serial;
-                return g.view.clone();
-            }
-        }
-        let target = self.target.expect("complete textures have a target");
-        let first = self.level(0, c.base).expect("complete");
-        let (width, height, depth) = (first.width, first.height, first.depth);
-        let layers = if target == gl::TEXTURE_CUBE_MAP {
-            6
-        } else {
-            depth
-        };
-        let same_shape = self.gpu.as_ref().is_some_and(|g| {
-            g.base == c.base
-                && g.levels == c.levels
-                && g.last_batch != serial
-                && g.texture.format() == c.format.gpu_format()
-                && g.texture.width() == width
-                && g.texture.height() == height
-                && g.texture.depth_or_array_layers() == layers
-        });
-        if !same_shape {
-            let dimension = if target == gl::TEXTURE_3D {
-                wgpu::TextureDimension::D3
-            } else {
-                wgpu::TextureDimension::D2
-            };
-            let texture = gpu.device.create_texture(&wgpu::TextureDescriptor {
-                label: Some("essl-gl texture"),
-                size: wgpu::Extent3d {
-                    width,
-                    height,
-                    depth_or_array_layers: layers,
-                },
-                mip_level_count: c.levels,
-                sample_count: 1,
-                dimension,
-                format: c.format.gpu_format(),
-                usage: wgpu::TextureUsages::TEXTURE_BINDING | wgpu::TextureUsages::COPY_DST,
-                view_formats: &[],
-            });
-            let view = texture.create_view(&wgpu::TextureViewDescriptor {
-                dimension: Some(view_dimension(target)),
-                ..Default::default()
-            });
-            self.gpu = Some(GpuTexture {
-                view,
-                texture,
-                base: c.base,
-                levels: c.levels,
-                version: 0,
-                last_batch: 0,
-            });
-        }
-        let faces = if target == gl::TEXTURE_CUBE_MAP { 6 } else { 1 };
-        let g = self.gpu.as_ref().expect("made above");
-        for i in 0..c.levels {
-            for face in 0..faces {
-                let l = self.faces[face][(c.base + i) as usize]
-                    .as_ref()
-                    .expect("complete");
-                let texel = l.format.texel_size() as u32;
-                gpu.queue.write_texture(
-                    wgpu::TexelCopyTextureInfo {
-                        texture: &g.texture,
-                        mip_level: i,
-                        origin: wgpu::Origin3d {
-                            x: 0,
-                            y: 0,
-                            z: face as u32,
-                        },
-                        aspect: wgpu::TextureAspect::All,
-                    },
-                    &l.data,
-                    wgpu::TexelCopyBufferLayout {
-                        offset: 0,
-                        bytes_per_row: Some(l.width * texel),
-                        rows_per_image: Some(l.height),
-                    },
-                    wgpu::Extent3d {
-                        width: l.width,
-                        height: l.height,
-                        depth_or_array_layers: l.depth,
-                    },
-                );
-            }
-        }
-        let version = self.version;
-        let g = self.gpu.as_mut().expect("made above");
-        g.version = version;
-        g.last_batch = serial;
-        g.view.clone()
-    }
-
-    /// The sampler a complete texture is sampled with.
-    pub(crate) fn sampler_key(&self, comparison: bool) -> SamplerKey {
-        let p = &self.params;
+    /// The sampler a texture is sampled with, with sampling parameters `p` (its own or a
+    /// bound sampler object's).
+    pub(crate) fn sampler_key(p: &SamplerParams, comparison: bool) -> SamplerKey {
         let filter = |f: u32| match f {
             gl::NEAREST | gl::NEAREST_MIPMAP_NEAREST | gl::NEAREST_MIPMAP_LINEAR => {
                 wgpu::FilterMode::Nearest

@@ -1,9 +1,10 @@
-//! Texture parameters: `tex_parameteri`, `tex_parameterf`.
+//! Texture parameters: `tex_parameteri`, `tex_parameterf`, `get_tex_parameter`.
 
 use super::is_texture_target;
 use crate::context::Context;
 use crate::gl;
-use crate::state::is_compare_func;
+use crate::query::Parameter;
+use crate::sampler::ParamError;
 
 impl Context {
     /// Sets an integer texture parameter of the texture bound to `target` (`texParameteri`):
@@ -30,62 +31,66 @@ impl Context {
         let Some(id) = self.bound_texture(target, function) else {
             return;
         };
-        let e = value as i64 as u32;
-        let ok_enum = match pname {
-            gl::TEXTURE_MIN_FILTER => matches!(
-                e,
-                gl::NEAREST
-                    | gl::LINEAR
-                    | gl::NEAREST_MIPMAP_NEAREST
-                    | gl::LINEAR_MIPMAP_NEAREST
-                    | gl::NEAREST_MIPMAP_LINEAR
-                    | gl::LINEAR_MIPMAP_LINEAR
-            ),
-            gl::TEXTURE_MAG_FILTER => matches!(e, gl::NEAREST | gl::LINEAR),
-            gl::TEXTURE_WRAP_S | gl::TEXTURE_WRAP_T | gl::TEXTURE_WRAP_R => {
-                matches!(e, gl::REPEAT | gl::CLAMP_TO_EDGE | gl::MIRRORED_REPEAT)
-            }
-            gl::TEXTURE_COMPARE_MODE => matches!(e, gl::NONE | gl::COMPARE_REF_TO_TEXTURE),
-            gl::TEXTURE_COMPARE_FUNC => is_compare_func(e),
-            gl::TEXTURE_BASE_LEVEL | gl::TEXTURE_MAX_LEVEL => {
-                if value < 0.0 {
-                    return self.error(gl::INVALID_VALUE, function, "negative level");
-                }
-                true
-            }
-            gl::TEXTURE_MIN_LOD | gl::TEXTURE_MAX_LOD => true,
-            _ => {
-                return self.error(
-                    gl::INVALID_ENUM,
-                    function,
-                    format_args!("pname 0x{pname:04X}"),
-                )
-            }
-        };
-        if !ok_enum {
-            return self.error(
-                gl::INVALID_ENUM,
-                function,
-                format_args!("value {value} for pname 0x{pname:04X}"),
-            );
-        }
         let p = &mut self
+            .objects
             .textures
             .get_mut(id)
             .expect("bound textures are live")
             .params;
-        match pname {
-            gl::TEXTURE_MIN_FILTER => p.min_filter = e,
-            gl::TEXTURE_MAG_FILTER => p.mag_filter = e,
-            gl::TEXTURE_WRAP_S => p.wrap_s = e,
-            gl::TEXTURE_WRAP_T => p.wrap_t = e,
-            gl::TEXTURE_WRAP_R => p.wrap_r = e,
-            gl::TEXTURE_COMPARE_MODE => p.compare_mode = e,
-            gl::TEXTURE_COMPARE_FUNC => p.compare_func = e,
-            gl::TEXTURE_BASE_LEVEL => p.base_level = value as u32,
-            gl::TEXTURE_MAX_LEVEL => p.max_level = value as u32,
-            gl::TEXTURE_MIN_LOD => p.min_lod = value,
-            _ => p.max_lod = value,
+        let result = match pname {
+            gl::TEXTURE_BASE_LEVEL | gl::TEXTURE_MAX_LEVEL if value < 0.0 => {
+                return self.error(gl::INVALID_VALUE, function, "negative level");
+            }
+            gl::TEXTURE_BASE_LEVEL => {
+                p.base_level = value as u32;
+                Ok(())
+            }
+            gl::TEXTURE_MAX_LEVEL => {
+                p.max_level = value as u32;
+                Ok(())
+            }
+            _ => p.sampling.set(pname, value),
+        };
+        match result {
+            Ok(()) => {}
+            Err(ParamError::Pname) => self.error(
+                gl::INVALID_ENUM,
+                function,
+                format_args!("pname 0x{pname:04X}"),
+            ),
+            Err(ParamError::Value) => self.error(
+                gl::INVALID_ENUM,
+                function,
+                format_args!("value {value} for pname 0x{pname:04X}"),
+            ),
         }
+    }
+
+    /// A parameter of the texture bound to `target` (`getTexParameter`): the sampling
+    /// parameters, `TEXTURE_BASE_LEVEL`, `TEXTURE_MAX_LEVEL`, `TEXTURE_IMMUTABLE_FORMAT`,
+    /// `TEXTURE_IMMUTABLE_LEVELS`. No texture bound → `INVALID_OPERATION`; another `pname` →
+    /// `INVALID_ENUM`.
+    pub fn get_tex_parameter(&mut self, target: u32, pname: u32) -> Option<Parameter> {
+        const F: &str = "getTexParameter";
+        if !is_texture_target(target) {
+            self.error(gl::INVALID_ENUM, F, format_args!("target 0x{target:04X}"));
+            return None;
+        }
+        let id = self.bound_texture(target, F)?;
+        let t = self.objects.textures.get(id)?;
+        let p = &t.params;
+        let value = match pname {
+            gl::TEXTURE_BASE_LEVEL => Some(Parameter::Int(p.base_level as i64)),
+            gl::TEXTURE_MAX_LEVEL => Some(Parameter::Int(p.max_level as i64)),
+            gl::TEXTURE_IMMUTABLE_FORMAT => Some(Parameter::Bool(t.immutable_levels.is_some())),
+            gl::TEXTURE_IMMUTABLE_LEVELS => {
+                Some(Parameter::Int(t.immutable_levels.unwrap_or(0) as i64))
+            }
+            _ => p.sampling.get(pname),
+        };
+        if value.is_none() {
+            self.error(gl::INVALID_ENUM, F, format_args!("pname 0x{pname:04X}"));
+        }
+        value
     }
 }

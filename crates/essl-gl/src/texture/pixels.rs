@@ -1,7 +1,7 @@
 //! Client pixel data: where a region lies by GL's `UNPACK_*` rules, and the conversion of
 //! pixels of a `(format, type)` into an internal format's storage layout.
 
-use super::format::{f32_to_f16, Expand, InternalFormat};
+use super::format::{f32_to_f16, Expand, InternalFormat, Packing};
 use crate::gl;
 use crate::state::PixelStore;
 
@@ -32,6 +32,94 @@ pub(super) fn unpack_16(v: u16, ty: u32) -> [u8; 4] {
     }
 }
 
+/// An unsigned float of `mantissa` bits and a 5-bit exponent (the channels of
+/// `R11F_G11F_B10F`), from an `f32`: negative and NaN become 0, too large the largest value.
+fn unsigned_small_float(x: f32, mantissa: u32) -> u32 {
+    if x.is_nan() || x <= 0.0 {
+        return 0;
+    }
+    let bits = x.to_bits();
+    let exp = ((bits >> 23) & 0xFF) as i32 - 127 + 15;
+    let max = (0x1E << mantissa) | ((1 << mantissa) - 1);
+    if exp >= 0x1F {
+        return max;
+    }
+    let m = (bits & 0x7F_FFFF) | 0x80_0000;
+    if exp <= 0 {
+        // Denormal: shift the implicit 1 in.
+        let shift = 24 - mantissa as i32 - exp;
+        return if shift > 24 { 0 } else { m >> shift };
+    }
+    ((exp as u32) << mantissa) | ((bits & 0x7F_FFFF) >> (23 - mantissa))
+}
+
+/// `RGB9_E5`'s shared-exponent encoding of three floats (ES 3.0 §3.8.3.2).
+fn rgb9e5(rgb: [f32; 3]) -> u32 {
+    const MAX: f32 = (511.0 / 512.0) * 65536.0;
+    let c = rgb.map(|x| if x.is_nan() { 0.0 } else { x.clamp(0.0, MAX) });
+    let max = c[0].max(c[1]).max(c[2]);
+    let mut exp = (max.max(f32::MIN_POSITIVE).log2().floor() as i32).max(-16) + 1 + 15;
+    let mut scale = 2f32.powi(exp - 15 - 9);
+    if (max / scale + 0.5).floor() as u32 == 512 {
+        exp += 1;
+        scale *= 2.0;
+    }
+    let [r, g, b] = c.map(|x| (x / scale + 0.5).floor() as u32 & 0x1FF);
+    r | (g << 9) | (b << 18) | ((exp as u32) << 27)
+}
+
+/// Converts pixels for the packed and depth formats ([`Packing`]).
+fn convert_packed(src: &[u8], count: usize, f: &InternalFormat, ty: u32, out: &mut Vec<u8>) {
+    let word = |px: &[u8], i: usize| u32::from_ne_bytes([px[i], px[i + 1], px[i + 2], px[i + 3]]);
+    let float = |px: &[u8], i: usize, half: bool| {
+        if half {
+            f16_to_f32(u16::from_ne_bytes([px[2 * i], px[2 * i + 1]]))
+        } else {
+            f32::from_bits(word(px, 4 * i))
+        }
+    };
+    match (f.packing, ty) {
+        (Packing::Rg11B10F | Packing::Rgb9E5, gl::HALF_FLOAT | gl::FLOAT) => {
+            let half = ty == gl::HALF_FLOAT;
+            let size = if half { 6 } else { 12 };
+            for px in src.chunks_exact(size).take(count) {
+                let c = [float(px, 0, half), float(px, 1, half), float(px, 2, half)];
+                let v = if f.packing == Packing::Rgb9E5 {
+                    rgb9e5(c)
+                } else {
+                    unsigned_small_float(c[0], 6)
+                        | (unsigned_small_float(c[1], 6) << 11)
+                        | (unsigned_small_float(c[2], 5) << 22)
+                };
+                out.extend_from_slice(&v.to_ne_bytes());
+            }
+        }
+        (Packing::Depth16, gl::UNSIGNED_INT) => {
+            for px in src.chunks_exact(4).take(count) {
+                out.extend_from_slice(&((word(px, 0) >> 16) as u16).to_ne_bytes());
+            }
+        }
+        // Every other pair is stored as the client gives it.
+        _ => {
+            let size = f.texel_size();
+            out.extend_from_slice(&src[..(count * size).min(src.len())]);
+        }
+    }
+}
+
+/// An IEEE half-precision value as an `f32`.
+pub(crate) fn f16_to_f32(h: u16) -> f32 {
+    let sign = if h & 0x8000 != 0 { -1.0 } else { 1.0 };
+    let exp = ((h >> 10) & 0x1F) as i32;
+    let mant = (h & 0x3FF) as f32;
+    match exp {
+        0 => sign * mant * 2f32.powi(-24),
+        0x1F if mant == 0.0 => sign * f32::INFINITY,
+        0x1F => f32::NAN,
+        _ => sign * (1.0 + mant / 1024.0) * 2f32.powi(exp - 15),
+    }
+}
+
 /// Converts `count` pixels of `(format, ty)` client data to the storage of `f`.
 pub(super) fn convert_pixels(
     src: &[u8],
@@ -40,6 +128,9 @@ pub(super) fn convert_pixels(
     ty: u32,
     out: &mut Vec<u8>,
 ) {
+    if f.packing != Packing::None {
+        return convert_packed(src, count, f, ty, out);
+    }
     if matches!(
         ty,
         gl::UNSIGNED_SHORT_5_6_5 | gl::UNSIGNED_SHORT_4_4_4_4 | gl::UNSIGNED_SHORT_5_5_5_1
@@ -166,6 +257,20 @@ mod tests {
         out.clear();
         convert_pixels(&[0xFF, 0xFF], 1, &f, gl::UNSIGNED_SHORT_5_6_5, &mut out);
         assert_eq!(out, [255, 255, 255, 255]);
+    }
+
+    #[test]
+    fn packed_floats_encode_as_gl_specifies() {
+        // 1.0 in an 11-bit float: exponent 15, mantissa 0; in 10 bits likewise.
+        assert_eq!(unsigned_small_float(1.0, 6), 15 << 6);
+        assert_eq!(unsigned_small_float(1.0, 5), 15 << 5);
+        assert_eq!(unsigned_small_float(-1.0, 6), 0);
+        assert_eq!(unsigned_small_float(1e9, 6), (0x1E << 6) | 0x3F);
+        // RGB9_E5 of (1, 0.5, 0): exponent 16 (bias 15), mantissas 256, 128, 0.
+        let v = rgb9e5([1.0, 0.5, 0.0]);
+        assert_eq!((v & 0x1FF, (v >> 9) & 0x1FF, v >> 27), (256, 128, 16));
+        assert_eq!(f16_to_f32(0x3C00), 1.0);
+        assert_eq!(f16_to_f32(f32_to_f16(-0.333)), f16_to_f32(0xB554));
     }
 
     #[test]

@@ -27,12 +27,26 @@ impl TextureUnit {
         }
     }
 
-    pub(super) fn slot(&mut self, target: u32) -> &mut Option<Id> {
+    pub(crate) fn slot(&mut self, target: u32) -> &mut Option<Id> {
         match target {
             gl::TEXTURE_2D => &mut self.d2,
             gl::TEXTURE_CUBE_MAP => &mut self.cube,
             gl::TEXTURE_3D => &mut self.d3,
             _ => &mut self.d2_array,
+        }
+    }
+
+    /// Unbinds `id` from every target of the unit.
+    pub(crate) fn forget(&mut self, id: Id) {
+        for slot in [
+            &mut self.d2,
+            &mut self.cube,
+            &mut self.d3,
+            &mut self.d2_array,
+        ] {
+            if *slot == Some(id) {
+                *slot = None;
+            }
         }
     }
 }
@@ -50,6 +64,24 @@ pub(crate) struct SamplerKey {
 }
 
 impl SamplerKey {
+    /// The sampler of a blit: clamping, nearest or linear, base level only.
+    pub(crate) fn blit(linear: bool) -> Self {
+        let filter = if linear {
+            wgpu::FilterMode::Linear
+        } else {
+            wgpu::FilterMode::Nearest
+        };
+        SamplerKey {
+            min: filter,
+            mag: filter,
+            mip: wgpu::MipmapFilterMode::Nearest,
+            wrap: [wgpu::AddressMode::ClampToEdge; 3],
+            lod_min: 0.0f32.to_bits(),
+            lod_max: 0.0f32.to_bits(),
+            compare: None,
+        }
+    }
+
     /// A nearest, clamping sampler (for placeholder textures).
     pub(crate) fn placeholder(comparison: bool) -> Self {
         SamplerKey {

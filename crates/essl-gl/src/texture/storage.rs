@@ -88,7 +88,11 @@ impl Context {
         let Some(id) = self.bound_texture(target, function) else {
             return;
         };
-        let t = self.textures.get_mut(id).expect("bound textures are live");
+        let t = self
+            .objects
+            .textures
+            .get_mut(id)
+            .expect("bound textures are live");
         if t.immutable_levels.is_some() {
             return self.error(
                 gl::INVALID_OPERATION,
@@ -106,17 +110,7 @@ impl Context {
             };
             for face in 0..faces {
                 let data = vec![0; lw as usize * lh as usize * ld as usize * f.texel_size()];
-                t.set_level(
-                    face,
-                    level,
-                    Level {
-                        width: lw,
-                        height: lh,
-                        depth: ld,
-                        format: f,
-                        data,
-                    },
-                );
+                t.set_level(face, level, Level::new([lw, lh, ld], f, data));
             }
         }
         t.immutable_levels = Some(levels as u32);

@@ -12,31 +12,31 @@ use crate::gl;
 
 /// What `texImage2D` and `texImage3D` specify: a level of the texture bound to `target` (or
 /// of a cube map face), its internal format and size, and the client data (zeros for `None`).
-struct TexImage<'a> {
-    target: u32,
-    level: i32,
-    internalformat: i32,
+pub(super) struct TexImage<'a> {
+    pub(super) target: u32,
+    pub(super) level: i32,
+    pub(super) internalformat: i32,
     /// Width, height, depth (1 in 2D).
-    size: [i32; 3],
-    border: i32,
-    format: u32,
-    ty: u32,
-    pixels: Option<&'a [u8]>,
-    function: &'static str,
+    pub(super) size: [i32; 3],
+    pub(super) border: i32,
+    pub(super) format: u32,
+    pub(super) ty: u32,
+    pub(super) pixels: Option<&'a [u8]>,
+    pub(super) function: &'static str,
 }
 
 /// What `texSubImage2D` and `texSubImage3D` replace: a box of a level, and the client data.
-struct TexSubImage<'a> {
-    target: u32,
-    level: i32,
+pub(super) struct TexSubImage<'a> {
+    pub(super) target: u32,
+    pub(super) level: i32,
     /// x, y, z of the box's first texel (z is 0 in 2D).
-    offset: [i32; 3],
+    pub(super) offset: [i32; 3],
     /// Width, height, depth of the box (depth is 1 in 2D).
-    size: [i32; 3],
-    format: u32,
-    ty: u32,
-    pixels: &'a [u8],
-    function: &'static str,
+    pub(super) size: [i32; 3],
+    pub(super) format: u32,
+    pub(super) ty: u32,
+    pub(super) pixels: &'a [u8],
+    pub(super) function: &'static str,
 }
 
 /// A block of client pixel data to read: its bytes, size in pixels, `(format, type)`, and
@@ -72,6 +72,9 @@ impl Context {
         pixels: Option<&[u8]>,
     ) {
         const F: &str = "texImage2D";
+        if self.client_data_refused(F) {
+            return;
+        }
         match image_target(target) {
             Some((gl::TEXTURE_2D | gl::TEXTURE_CUBE_MAP, _)) => {}
             _ => return self.error(gl::INVALID_ENUM, F, format_args!("target 0x{target:04X}")),
@@ -106,6 +109,9 @@ impl Context {
         pixels: Option<&[u8]>,
     ) {
         const F: &str = "texImage3D";
+        if self.client_data_refused(F) {
+            return;
+        }
         if !matches!(target, gl::TEXTURE_3D | gl::TEXTURE_2D_ARRAY) {
             return self.error(gl::INVALID_ENUM, F, format_args!("target 0x{target:04X}"));
         }
@@ -122,8 +128,22 @@ impl Context {
         });
     }
 
+    /// WebGL2: the calls that take client data are refused (`INVALID_OPERATION`) while a
+    /// `PIXEL_UNPACK_BUFFER` is bound; the `_from_buffer` forms read it.
+    fn client_data_refused(&mut self, function: &str) -> bool {
+        if self.bindings.buffer(gl::PIXEL_UNPACK_BUFFER).is_some() {
+            self.error(
+                gl::INVALID_OPERATION,
+                function,
+                "a PIXEL_UNPACK_BUFFER is bound: give an offset into it",
+            );
+            return true;
+        }
+        false
+    }
+
     /// Checks level and size against GL's limits for the target.
-    pub(super) fn check_level_size(
+    pub(crate) fn check_level_size(
         &mut self,
         bind: u32,
         level: i32,
@@ -246,7 +266,7 @@ impl Context {
     }
 
     /// `texImage2D` and `texImage3D` after their target checks.
-    fn tex_image(&mut self, image: TexImage) {
+    pub(super) fn tex_image(&mut self, image: TexImage) {
         let TexImage {
             target,
             level,
@@ -266,7 +286,14 @@ impl Context {
             return self.error(gl::INVALID_VALUE, function, "border must be 0");
         }
         let f = match internal_format(internalformat as u32) {
-            Ok(f) => f,
+            Ok(f) if f.texture_format() => f,
+            Ok(_) => {
+                return self.error(
+                    gl::INVALID_ENUM,
+                    function,
+                    "a renderbuffer-only internal format",
+                )
+            }
             Err(true) => {
                 return self.error(
                     gl::INVALID_ENUM,
@@ -289,6 +316,7 @@ impl Context {
             return;
         };
         if self
+            .objects
             .textures
             .get(id)
             .is_some_and(|t| t.immutable_levels.is_some())
@@ -313,18 +341,12 @@ impl Context {
             }
             None => vec![0; w as usize * h as usize * d as usize * f.texel_size()],
         };
-        let t = self.textures.get_mut(id).expect("bound textures are live");
-        t.set_level(
-            face,
-            level as u32,
-            Level {
-                width: w,
-                height: h,
-                depth: d,
-                format: f,
-                data,
-            },
-        );
+        let t = self
+            .objects
+            .textures
+            .get_mut(id)
+            .expect("bound textures are live");
+        t.set_level(face, level as u32, Level::new([w, h, d], f, data));
     }
 
     /// Replaces a region of a level of a 2D texture or cube map face (`texSubImage2D`).
@@ -344,6 +366,9 @@ impl Context {
         pixels: &[u8],
     ) {
         const F: &str = "texSubImage2D";
+        if self.client_data_refused(F) {
+            return;
+        }
         match image_target(target) {
             Some((gl::TEXTURE_2D | gl::TEXTURE_CUBE_MAP, _)) => {}
             _ => return self.error(gl::INVALID_ENUM, F, format_args!("target 0x{target:04X}")),
@@ -377,6 +402,9 @@ impl Context {
         pixels: &[u8],
     ) {
         const F: &str = "texSubImage3D";
+        if self.client_data_refused(F) {
+            return;
+        }
         if !matches!(target, gl::TEXTURE_3D | gl::TEXTURE_2D_ARRAY) {
             return self.error(gl::INVALID_ENUM, F, format_args!("target 0x{target:04X}"));
         }
@@ -393,7 +421,7 @@ impl Context {
     }
 
     /// `texSubImage2D` and `texSubImage3D` after their target checks.
-    fn tex_sub_image(&mut self, image: TexSubImage) {
+    pub(super) fn tex_sub_image(&mut self, image: TexSubImage) {
         let TexSubImage {
             target,
             level,
@@ -412,6 +440,7 @@ impl Context {
             return self.error(gl::INVALID_VALUE, function, "negative level");
         }
         let Some(l) = self
+            .objects
             .textures
             .get(id)
             .and_then(|t| t.level(face, level as u32))
@@ -444,9 +473,37 @@ impl Context {
         if w == 0 || h == 0 || d == 0 {
             return;
         }
-        let t = self.textures.get_mut(id).expect("bound textures are live");
+        let t = self
+            .objects
+            .textures
+            .get_mut(id)
+            .expect("bound textures are live");
+        let cube = t.face_count() == 6;
         let dst = t.faces[face][level as usize].as_mut().expect("checked");
         let texel = dst.format.texel_size();
+        let Some(dst_data) = dst.data.as_mut() else {
+            // The GPU holds the level's newest texels (it was drawn into): the box goes
+            // straight to the GPU copy, in the batch's order.
+            let g = t
+                .gpu
+                .as_ref()
+                .expect("a level held by the GPU is in its chain");
+            let texture = g.texture.clone();
+            let mip = level as u32 - g.anchor;
+            let z = if cube { face as u32 } else { offset[2] as u32 };
+            if dst.format.copyable() {
+                let dst = crate::texture::TexelBox {
+                    texture: &texture,
+                    mip,
+                    origin: [offset[0] as u32, offset[1] as u32, z],
+                    size: [w, h, d],
+                    texel: texel as u32,
+                };
+                crate::texture::upload_image(&self.gpu, &mut self.frame, &dst, &src);
+            }
+            return;
+        };
+        dst.uploaded = false;
         let row = w as usize * texel;
         for z in 0..d as usize {
             for y in 0..h as usize {
@@ -456,7 +513,7 @@ impl Context {
                 let at = ((dz * dst.height as usize + dy) * dst.width as usize
                     + offset[0] as usize)
                     * texel;
-                dst.data[at..at + row].copy_from_slice(&src[s..s + row]);
+                dst_data[at..at + row].copy_from_slice(&src[s..s + row]);
             }
         }
         t.version += 1;

@@ -13,11 +13,12 @@ use essl_gl::{gl, Context};
 /// A context of `w`×`h`, or `None` (with a message) when this machine has no Vulkan adapter.
 /// With `ESSL_REQUIRE_ADAPTER=1`, a missing adapter fails the test instead.
 pub fn context(w: u32, h: u32) -> Option<Context> {
-    if std::env::var_os("XDG_RUNTIME_DIR").is_none() {
-        // Silences a harmless complaint of the Vulkan loader.
-        std::env::set_var("XDG_RUNTIME_DIR", std::env::temp_dir());
-    }
-    match Context::new(w, h) {
+    context_with(w, h, essl_gl::ContextAttributes::default())
+}
+
+/// A context with the given attributes, or `None` (with the skip message) without an adapter.
+pub fn context_with(w: u32, h: u32, attributes: essl_gl::ContextAttributes) -> Option<Context> {
+    match Context::with_attributes(w, h, attributes) {
         Ok(ctx) => Some(ctx),
         Err(e) => {
             essl_testdata::adapter_missing(&e);
@@ -46,10 +47,16 @@ pub struct Layout {
     samplers: Vec<SamplerSlot>,
 }
 
+/// A WGSL function every test vertex shader can call on its clip position: essl-gl draws with
+/// y negated (`essl_gl::LOWER_OPTIONS`), so that framebuffers store GL's row 0 first.
+const GL_CLIP: &str =
+    "\nfn gl_clip(p: vec4<f32>) -> vec4<f32> { return vec4(p.x, -p.y, p.z, p.w); }\n";
+
 impl Layout {
+    /// A layout from WGSL; the vertex shader may call `gl_clip` on its position.
     pub fn new(vs: &str, fs: &str) -> Self {
         Layout {
-            vs: vs.into(),
+            vs: format!("{vs}{GL_CLIP}"),
             fs: fs.into(),
             block_size: 0,
             internal: Vec::new(),
@@ -137,6 +144,7 @@ impl Layout {
             samplers: self.samplers,
             blocks: Vec::new(),
             fragment_outputs: vec![(0, GlType::FLOAT_VEC4)],
+            captured: Vec::new(),
         }
     }
 }
@@ -144,7 +152,7 @@ impl Layout {
 /// A program that draws `a_position` (vec4 at location 0) in a solid colour.
 pub fn solid(r: f32, g: f32, b: f32) -> ProgramLayout {
     Layout::new(
-        "@vertex fn main(@location(0) a_position: vec4<f32>) -> @builtin(position) vec4<f32> { return a_position; }",
+        "@vertex fn main(@location(0) a_position: vec4<f32>) -> @builtin(position) vec4<f32> { return gl_clip(a_position); }",
         &format!("@fragment fn main() -> @location(0) vec4<f32> {{ return vec4({r:?}, {g:?}, {b:?}, 1.0); }}"),
     )
     .attribute("a_position", GlType::FLOAT_VEC4, 0)
@@ -193,3 +201,27 @@ pub fn assert_clean(ctx: &Context) {
 pub const QUAD: [f32; 12] = [
     -1.0, -1.0, 1.0, -1.0, 1.0, 1.0, -1.0, -1.0, 1.0, 1.0, -1.0, 1.0,
 ];
+
+/// Compiles and links a GLSL ES program, panicking with the logs on failure.
+#[allow(dead_code)]
+pub fn program(ctx: &mut Context, vs: &str, fs: &str) -> essl_gl::Program {
+    let p = ctx.create_program();
+    for (ty, src) in [(gl::VERTEX_SHADER, vs), (gl::FRAGMENT_SHADER, fs)] {
+        let s = ctx.create_shader(ty).expect("a shader type");
+        ctx.shader_source(s, src);
+        ctx.compile_shader(s);
+        assert!(
+            ctx.get_shader_compile_status(s),
+            "{:?}",
+            ctx.get_shader_info_log(s)
+        );
+        ctx.attach_shader(p, s);
+    }
+    ctx.link_program(p);
+    assert!(
+        ctx.get_program_link_status(p),
+        "{:?}",
+        ctx.get_program_info_log(p)
+    );
+    p
+}

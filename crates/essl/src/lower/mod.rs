@@ -255,5 +255,6 @@ fn lower_program_here(
             .iter()
             .filter_map(|(g, loc)| Some((*loc, fm.globals[*g].ty.gl_type()?)))
             .collect(),
+        captured: pplan.captured.clone(),
     })
 }

@@ -8,8 +8,9 @@ use std::collections::HashMap;
 use crate::builtins::BuiltinVar;
 use crate::hir::{self, GlobalId, GlobalKind};
 use crate::link;
+use crate::link::location_count;
 use crate::lower::layout;
-use crate::program::{self, InternalUniform, LowerOptions};
+use crate::program::{self, CaptureSource, CapturedOutput, InternalUniform, LowerOptions};
 use crate::reflect::{PathStep, UniformSource};
 use crate::types::{SamplerType, StructDef, Type};
 use crate::Stage;
@@ -45,6 +46,8 @@ pub(crate) struct StagePlan {
 /// The program-wide part of the plan.
 #[derive(Clone, Debug, Default)]
 pub(super) struct ProgramPlan {
+    /// The outputs kept for transform feedback, and where they are.
+    pub(super) captured: Vec<CapturedOutput>,
     pub(super) block_members: Vec<BlockMember>,
     pub(super) block_size: u32,
     pub(super) internal: Vec<(InternalUniform, u32)>,
@@ -185,8 +188,89 @@ impl<'m> ProgramPlanner<'m> {
         // Samplers of a used uniform that a stage uses but whose leaf is inactive cannot
         // happen: activity is per variable.
         p.inputs_and_outputs(program);
+        p.captured_outputs(&options.transform_feedback);
         p.uniform_blocks();
         p
+    }
+
+    /// Keeps the outputs transform feedback captures, at locations after the linked
+    /// varyings when the fragment shader does not read them, and records where each is.
+    fn captured_outputs(&mut self, names: &[String]) {
+        let vm = self.vm;
+        let mut next = self
+            .vplan
+            .outputs
+            .iter()
+            .map(|&(g, loc)| loc + location_count(&vm.globals[g].ty, &vm.structs))
+            .max()
+            .unwrap_or(0);
+        for name in names {
+            let (base, element) = match name.strip_suffix(']').and_then(|n| n.split_once('[')) {
+                Some((b, i)) => match i.parse::<u32>() {
+                    Ok(i) => (b, Some(i)),
+                    Err(_) => continue,
+                },
+                None => (name.as_str(), None),
+            };
+            let builtin = match (base, element) {
+                ("gl_Position", None) => Some((
+                    CaptureSource::Position,
+                    Type::Vector(crate::types::ScalarKind::Float, 4),
+                )),
+                ("gl_PointSize", None) if vm.used_builtins.contains(&BuiltinVar::PointSize) => {
+                    Some((CaptureSource::PointSize, Type::FLOAT))
+                }
+                _ => None,
+            };
+            if let Some((source, ty)) = builtin {
+                if let Some(ty) = ty.gl_type() {
+                    self.pplan.captured.push(CapturedOutput {
+                        name: name.clone(),
+                        ty,
+                        size: 1,
+                        source,
+                    });
+                }
+                continue;
+            }
+            let Some(gi) = vm
+                .globals
+                .iter()
+                .position(|g| g.kind == GlobalKind::Output && *g.name == *base)
+            else {
+                continue;
+            };
+            let g = &vm.globals[gi];
+            let first = match self.vplan.outputs.iter().find(|(o, _)| *o == gi) {
+                Some(&(_, loc)) => loc,
+                None => {
+                    let loc = next;
+                    next += location_count(&g.ty, &vm.structs);
+                    self.vplan.outputs.push((gi, loc));
+                    loc
+                }
+            };
+            let (elem, size) = match &g.ty {
+                Type::Array(el, n) => ((**el).clone(), *n),
+                t => (t.clone(), 1),
+            };
+            let per = location_count(&elem, &vm.structs);
+            let (first, size) = match element {
+                Some(i) if i < size => (first + i * per, 1),
+                Some(_) => continue,
+                None => (first, size),
+            };
+            let Some(ty) = elem.gl_type() else { continue };
+            self.pplan.captured.push(CapturedOutput {
+                name: name.clone(),
+                ty,
+                size,
+                source: CaptureSource::Location {
+                    first,
+                    count: per * size,
+                },
+            });
+        }
     }
 
     /// The default block: the data of active uniforms, in active-list order of their

@@ -274,6 +274,9 @@ impl FnCx<'_, '_> {
                     frag_coord_arg = Some(value);
                     value = self.flip_frag_coord(value);
                 }
+                BuiltinVar::PointCoord if self.cx.options.flip_clip_y => {
+                    value = self.flip_point_coord(value);
+                }
                 _ => {}
             }
             self.store_private(var, value);
@@ -305,6 +308,17 @@ impl FnCx<'_, '_> {
         value
     }
 
+    /// `gl_PointCoord` with t counted from the other side: (s, 1 − t), for an image drawn
+    /// upside down ([`LowerOptions::flip_clip_y`](crate::program::LowerOptions::flip_clip_y)).
+    fn flip_point_coord(&mut self, value: Handle<Expression>) -> Handle<Expression> {
+        let sp = Span::default();
+        let s = self.access_index(value, 0, sp);
+        let t = self.access_index(value, 1, sp);
+        let one = self.lit(Literal::F32(1.0));
+        let ft = self.binop(naga::BinaryOperator::Subtract, one, t, sp);
+        self.compose(&Type::Vector(ScalarKind::Float, 2), vec![s, ft], sp)
+    }
+
     /// gl_FragDepth defaults to the fragment's depth (`gl_FragCoord.z`, an argument of its own
     /// when the shader does not read `gl_FragCoord`).
     fn default_frag_depth(&mut self, frag_coord_arg: Option<Handle<Expression>>) {
@@ -326,8 +340,8 @@ impl FnCx<'_, '_> {
         self.store_private(var, z);
     }
 
-    /// A vertex shader's `gl_Position` (its depth mapped to 0..w when asked) and
-    /// `gl_PointSize`.
+    /// A vertex shader's `gl_Position` (its depth mapped to 0..w and its y negated when
+    /// asked) and `gl_PointSize`.
     fn vertex_builtin_outputs(&mut self, out: &mut Outputs) {
         let sp = Span::default();
         let var = self.cx.builtins[&BuiltinVar::Position];
@@ -345,6 +359,23 @@ impl FnCx<'_, '_> {
             self.f
                 .named_expressions
                 .insert(pos, "clip_position_depth_0_to_w".into());
+        }
+        if self.cx.options.flip_clip_y {
+            let x = self.access_index(pos, 0, sp);
+            let y = self.access_index(pos, 1, sp);
+            let z = self.access_index(pos, 2, sp);
+            let w = self.access_index(pos, 3, sp);
+            let ny = self.add(
+                Expression::Unary {
+                    op: naga::UnaryOperator::Negate,
+                    expr: y,
+                },
+                sp,
+            );
+            pos = self.compose(&Type::Vector(ScalarKind::Float, 4), vec![x, ny, z, w], sp);
+            self.f
+                .named_expressions
+                .insert(pos, "clip_position_y_flipped".into());
         }
         let invariant = self.cx.hir.invariant_all;
         let vec4 = self.ty(&Type::Vector(ScalarKind::Float, 4));

@@ -1,0 +1,285 @@
+//! Query objects: `create_query`, `begin_query`, `end_query`, `get_query`,
+//! `get_query_parameter`, `delete_query`, `is_query`.
+//!
+//! `ANY_SAMPLES_PASSED` and `ANY_SAMPLES_PASSED_CONSERVATIVE` count samples with wgpu's
+//! occlusion queries: each render pass recorded while the query is active counts into a slot
+//! of its own, and the result is whether any slot counted a sample.
+//! `TRANSFORM_FEEDBACK_PRIMITIVES_WRITTEN` counts the primitives transform feedback wrote.
+//!
+//! As WebGL requires, a result becomes available only after control returns to the caller's
+//! event loop, which [`Context::present`] stands for: asking before it answers `false`
+//! (`QUERY_RESULT_AVAILABLE`) and 0 (`QUERY_RESULT`).
+
+use crate::context::Context;
+use crate::frame::OCCLUSION_SLOTS;
+use crate::gl;
+use crate::objects::{Id, Query};
+use crate::query::Parameter;
+
+/// What a query measured at its last `end_query`.
+pub(crate) enum Measure {
+    /// Occlusion slots: the resolved counts are copied into `buffer` (`slots` of them).
+    Samples { buffer: wgpu::Buffer, slots: u32 },
+    /// Transform feedback primitives.
+    Primitives(u64),
+}
+
+/// A query object.
+#[derive(Default)]
+pub(crate) struct QueryObject {
+    /// The target of its first `begin_query`; fixed from then on.
+    pub(crate) target: Option<u32>,
+    /// What the last begin/end pair measured, and the [`Context::present`] count at its end.
+    pub(crate) ended: Option<(Measure, u64)>,
+    /// The result, once read.
+    pub(crate) result: Option<u64>,
+    /// Primitives written while active (transform feedback).
+    pub(crate) primitives: u64,
+}
+
+/// The binding slot of a query target: occlusion (both kinds share one) or primitives.
+fn slot(target: u32) -> Option<usize> {
+    match target {
+        gl::ANY_SAMPLES_PASSED | gl::ANY_SAMPLES_PASSED_CONSERVATIVE => Some(0),
+        gl::TRANSFORM_FEEDBACK_PRIMITIVES_WRITTEN => Some(1),
+        _ => None,
+    }
+}
+
+impl Context {
+    /// Creates a query object (`createQuery`).
+    pub fn create_query(&mut self) -> Query {
+        Query {
+            ctx: self.id,
+            id: self.objects.queries.insert(QueryObject::default()),
+        }
+    }
+
+    /// Whether `query` names a live query that was begun once (`isQuery`).
+    pub fn is_query(&self, query: Query) -> bool {
+        query.ctx == self.id
+            && self
+                .objects
+                .queries
+                .get(query.id)
+                .is_some_and(|q| q.target.is_some())
+    }
+
+    /// Deletes a query (`deleteQuery`); an active one is ended first.
+    pub fn delete_query(&mut self, query: Query) {
+        if !self.owns(query.ctx, "deleteQuery") || !self.objects.queries.is_live(query.id) {
+            return;
+        }
+        for target in [
+            gl::ANY_SAMPLES_PASSED,
+            gl::TRANSFORM_FEEDBACK_PRIMITIVES_WRITTEN,
+        ] {
+            if self.bindings.query(slot(target).expect("a query target")) == Some(query.id) {
+                self.finish_query(target);
+            }
+        }
+        self.objects.delete_query(query.id);
+    }
+
+    /// Starts measuring (`beginQuery`): `ANY_SAMPLES_PASSED`,
+    /// `ANY_SAMPLES_PASSED_CONSERVATIVE` or `TRANSFORM_FEEDBACK_PRIMITIVES_WRITTEN`. A
+    /// query of the same kind already active, a query already active, or one begun before
+    /// with another target → `INVALID_OPERATION`.
+    pub fn begin_query(&mut self, target: u32, query: Query) {
+        const F: &str = "beginQuery";
+        let Some(s) = slot(target) else {
+            return self.error(gl::INVALID_ENUM, F, format_args!("target 0x{target:04X}"));
+        };
+        if !self.owns(query.ctx, F) {
+            return;
+        }
+        let Some(q) = self.objects.queries.get(query.id) else {
+            return self.error(gl::INVALID_OPERATION, F, "deleted query");
+        };
+        if q.target.is_some_and(|t| slot(t) != Some(s) || t != target) {
+            return self.error(
+                gl::INVALID_OPERATION,
+                F,
+                "the query was begun with another target",
+            );
+        }
+        if self.bindings.query(s).is_some() {
+            return self.error(gl::INVALID_OPERATION, F, "a query of that kind is active");
+        }
+        if self.bindings.query(1 - s) == Some(query.id) {
+            return self.error(gl::INVALID_OPERATION, F, "the query is active");
+        }
+        let q = self.objects.queries.get_mut(query.id).expect("checked");
+        q.target = Some(target);
+        q.ended = None;
+        q.result = None;
+        q.primitives = 0;
+        self.bindings.begin_query(s, Some(query.id));
+        if s == 0 {
+            self.frame.end_pass();
+            let set = self.gpu.device.create_query_set(&wgpu::QuerySetDescriptor {
+                label: Some("essl-gl occlusion query"),
+                ty: wgpu::QueryType::Occlusion,
+                count: OCCLUSION_SLOTS,
+            });
+            self.frame.occlusion = Some((set, 0));
+        }
+    }
+
+    /// Stops measuring (`endQuery`); no active query of `target`'s kind →
+    /// `INVALID_OPERATION`.
+    pub fn end_query(&mut self, target: u32) {
+        const F: &str = "endQuery";
+        let Some(s) = slot(target) else {
+            return self.error(gl::INVALID_ENUM, F, format_args!("target 0x{target:04X}"));
+        };
+        match self.bindings.query(s) {
+            Some(id) if self.objects.queries.get_any(id).and_then(|q| q.target) == Some(target) => {
+                self.finish_query(target)
+            }
+            _ => self.error(gl::INVALID_OPERATION, F, "no active query of that target"),
+        }
+    }
+
+    /// Ends the active query of `target`'s kind.
+    fn finish_query(&mut self, target: u32) {
+        let s = slot(target).expect("a query target");
+        let Some(id) = self.bindings.query(s) else {
+            return;
+        };
+        self.bindings.begin_query(s, None);
+        let measure = if s == 0 {
+            self.frame.end_pass();
+            let (set, slots) = self
+                .frame
+                .occlusion
+                .take()
+                .expect("an occlusion query is active");
+            self.resolve_occlusion(&set, slots)
+        } else {
+            Measure::Primitives(self.objects.queries.get_any(id).map_or(0, |q| q.primitives))
+        };
+        let frames = self.presents;
+        if let Some(q) = self.objects.queries.get_any_mut(id) {
+            q.ended = Some((measure, frames));
+        }
+    }
+
+    /// Records the copy of an occlusion set's `slots` counts into a readable buffer.
+    fn resolve_occlusion(&mut self, set: &wgpu::QuerySet, slots: u32) -> Measure {
+        let size = 8 * slots.max(1) as u64;
+        let resolve = self.gpu.device.create_buffer(&wgpu::BufferDescriptor {
+            label: Some("essl-gl occlusion counts"),
+            size,
+            usage: wgpu::BufferUsages::QUERY_RESOLVE | wgpu::BufferUsages::COPY_SRC,
+            mapped_at_creation: false,
+        });
+        let buffer = self.gpu.device.create_buffer(&wgpu::BufferDescriptor {
+            label: Some("essl-gl occlusion result"),
+            size,
+            usage: wgpu::BufferUsages::MAP_READ | wgpu::BufferUsages::COPY_DST,
+            mapped_at_creation: false,
+        });
+        if slots > 0 {
+            let encoder = self.frame.commands(&self.gpu);
+            encoder.resolve_query_set(set, 0..slots, &resolve, 0);
+            encoder.copy_buffer_to_buffer(&resolve, 0, &buffer, 0, size);
+        }
+        Measure::Samples { buffer, slots }
+    }
+
+    /// The active query of a target (`getQuery(target, CURRENT_QUERY)`).
+    pub fn get_query(&mut self, target: u32, pname: u32) -> Option<Query> {
+        const F: &str = "getQuery";
+        let Some(s) = slot(target) else {
+            self.error(gl::INVALID_ENUM, F, format_args!("target 0x{target:04X}"));
+            return None;
+        };
+        if pname != gl::CURRENT_QUERY {
+            self.error(gl::INVALID_ENUM, F, format_args!("pname 0x{pname:04X}"));
+            return None;
+        }
+        let id = self.bindings.query(s)?;
+        (self.objects.queries.get_any(id)?.target == Some(target))
+            .then_some(Query { ctx: self.id, id })
+    }
+
+    /// A query's result (`getQueryParameter`): `QUERY_RESULT_AVAILABLE`
+    /// ([`Parameter::Bool`]) and `QUERY_RESULT` ([`Parameter::Int`]; a boolean 0/1 for the
+    /// sample queries). Both wait for a [`Context::present`] after `end_query`; an active
+    /// query, or one never ended → `INVALID_OPERATION`.
+    pub fn get_query_parameter(&mut self, query: Query, pname: u32) -> Option<Parameter> {
+        const F: &str = "getQueryParameter";
+        if !self.owns(query.ctx, F) {
+            return None;
+        }
+        if !matches!(pname, gl::QUERY_RESULT | gl::QUERY_RESULT_AVAILABLE) {
+            self.error(gl::INVALID_ENUM, F, format_args!("pname 0x{pname:04X}"));
+            return None;
+        }
+        if self.bindings.query(0) == Some(query.id) || self.bindings.query(1) == Some(query.id) {
+            self.error(gl::INVALID_OPERATION, F, "the query is active");
+            return None;
+        }
+        let Some(q) = self.objects.queries.get(query.id) else {
+            self.error(gl::INVALID_OPERATION, F, "deleted query");
+            return None;
+        };
+        let Some((_, ended_at)) = &q.ended else {
+            self.error(gl::INVALID_OPERATION, F, "the query was never ended");
+            return None;
+        };
+        let available = self.presents > *ended_at;
+        if pname == gl::QUERY_RESULT_AVAILABLE {
+            return Some(Parameter::Bool(available));
+        }
+        if !available {
+            return Some(Parameter::Int(0));
+        }
+        Some(Parameter::Int(self.query_result(query.id) as i64))
+    }
+
+    /// Reads (once) what an ended query measured.
+    fn query_result(&mut self, id: Id) -> u64 {
+        let Some(q) = self.objects.queries.get_any(id) else {
+            return 0;
+        };
+        if let Some(r) = q.result {
+            return r;
+        }
+        let result = match &q.ended {
+            Some((Measure::Primitives(n), _)) => *n,
+            Some((Measure::Samples { buffer, slots }, _)) => {
+                let (buffer, slots) = (buffer.clone(), *slots);
+                self.flush();
+                read_counts(&self.gpu.device, &buffer, slots)
+                    .iter()
+                    .any(|&c| c > 0) as u64
+            }
+            None => 0,
+        };
+        if let Some(q) = self.objects.queries.get_any_mut(id) {
+            q.result = Some(result);
+        }
+        result
+    }
+}
+
+/// The `slots` 64-bit counts in a mappable buffer (waits for the GPU).
+fn read_counts(device: &wgpu::Device, buffer: &wgpu::Buffer, slots: u32) -> Vec<u64> {
+    if slots == 0 {
+        return Vec::new();
+    }
+    let slice = buffer.slice(..8 * slots as u64);
+    let (tx, rx) = std::sync::mpsc::channel();
+    slice.map_async(wgpu::MapMode::Read, move |r| {
+        let _ = tx.send(r);
+    });
+    let _ = device.poll(wgpu::PollType::wait_indefinitely());
+    let counts = match (rx.recv(), slice.get_mapped_range()) {
+        (Ok(Ok(())), Ok(view)) => bytemuck::pod_collect_to_vec(&view[..]),
+        _ => Vec::new(),
+    };
+    buffer.unmap();
+    counts
+}

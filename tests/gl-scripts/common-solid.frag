@@ -1,0 +1,8 @@
+#version 300 es
+// One colour, unlit.
+precision mediump float;
+uniform vec4 u_color;
+out vec4 o_color;
+void main() {
+  o_color = u_color;
+}
