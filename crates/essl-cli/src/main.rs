@@ -1,4 +1,4 @@
-//! `essl`: check GLSL ES 3.00 (WebGL2) shaders.
+//! `essl`: check WebGL shaders (GLSL ES 3.00 and 1.00, for WebGL 2 and WebGL 1).
 
 use std::path::PathBuf;
 use std::process::ExitCode;
@@ -8,7 +8,7 @@ use essl::Stage;
 use essl_cli::lint::Format;
 use essl_cli::lint::{ColorMode, LintOptions};
 
-/// GLSL ES 3.00 (WebGL2) shader toolkit.
+/// WebGL shader toolkit: GLSL ES 3.00 and 1.00, for WebGL 2 and WebGL 1.
 #[derive(Parser, Debug)]
 #[command(name = "essl", version, about, long_about = None)]
 struct Cli {

@@ -21,7 +21,7 @@ use naga::proc::Emitter;
 use naga::{Expression, Handle, Literal, Span as NSpan, Statement};
 
 use super::layout::{vsize, Repr};
-use super::{nspan, LowerError, ModuleCx};
+use super::{nspan, GlobalLower, LowerError, ModuleCx};
 use crate::ast::BinaryOp;
 use crate::hir::{self, ConstValue, Expr, FuncId, ParamMode, Scalar, Stmt};
 use crate::source::Span;
@@ -266,6 +266,9 @@ pub(crate) fn lower_function(cx: &mut ModuleCx, id: FuncId) -> Result<naga::Func
             Span::default(),
         );
     }
+    if fx.cx.hir.entry == Some(id) {
+        fx.global_initializers()?;
+    }
     fx.stmts(&hir_fn.body)?;
     fx.flush();
     let body = fx.blocks.pop().expect("body");
@@ -275,6 +278,27 @@ pub(crate) fn lower_function(cx: &mut ModuleCx, id: FuncId) -> Result<naga::Func
 }
 
 impl<'c, 'a> FnCx<'c, 'a> {
+    /// The initializers that the private variables could not hold, stored at the start of
+    /// `main` in declaration order: those that are not constant expressions (GLSL ES 1.00 as
+    /// WebGL takes it: `float f = u_zero < 0.1 ? green : 0.0;`) and constants holding an
+    /// infinity or NaN.
+    fn global_initializers(&mut self) -> Result<(), LowerError> {
+        let m = self.cx.hir;
+        for (gi, g) in m.globals.iter().enumerate() {
+            let GlobalLower::Private(var) = self.cx.globals[gi] else {
+                continue;
+            };
+            let value = match &g.init {
+                Some(hir::Init::Expr(e)) => self.expr(e)?,
+                Some(hir::Init::Const(c)) if !all_finite(c) => self.constant(c, &g.ty, g.span),
+                _ => continue,
+            };
+            let pointer = self.add(Expression::GlobalVariable(var), g.span);
+            self.push(Statement::Store { pointer, value }, g.span);
+        }
+        Ok(())
+    }
+
     pub(crate) fn add(&mut self, e: Expression, span: Span) -> Handle<Expression> {
         if e.needs_pre_emit() {
             self.flush_only();
