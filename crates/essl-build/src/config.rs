@@ -208,6 +208,7 @@ impl Config {
     pub fn compile_options(&self) -> essl::CompileOptions {
         essl::CompileOptions {
             defines: self.defines.clone(),
+            ..essl::CompileOptions::default()
         }
     }
 }

@@ -1,4 +1,4 @@
-//! `essl`: check GLSL ES 3.00 (WebGL2) shaders.
+//! `essl`: check WebGL shaders (GLSL ES 3.00 and 1.00, for WebGL 2 and WebGL 1).
 
 use std::path::PathBuf;
 use std::process::ExitCode;
@@ -8,7 +8,7 @@ use essl::Stage;
 use essl_cli::lint::Format;
 use essl_cli::lint::{ColorMode, LintOptions};
 
-/// GLSL ES 3.00 (WebGL2) shader toolkit.
+/// WebGL shader toolkit: GLSL ES 3.00 and 1.00, for WebGL 2 and WebGL 1.
 #[derive(Parser, Debug)]
 #[command(name = "essl", version, about, long_about = None)]
 struct Cli {
@@ -208,6 +208,29 @@ struct LintArgs {
     /// Do not link NAME.vert + NAME.frag pairs.
     #[arg(long)]
     no_link: bool,
+
+    /// The WebGL version of the context the shaders are for: webgl2 compiles GLSL ES 3.00 and
+    /// 1.00, webgl1 GLSL ES 1.00 only (with the WebGL 1 extensions a shader enables).
+    #[arg(long, value_enum, default_value_t = WebglArg::Webgl2, value_name = "WEBGL")]
+    target: WebglArg,
+}
+
+/// A WebGL version.
+#[derive(Clone, Copy, Debug, ValueEnum)]
+enum WebglArg {
+    /// WebGL 1: GLSL ES 1.00.
+    Webgl1,
+    /// WebGL 2: GLSL ES 3.00 and 1.00.
+    Webgl2,
+}
+
+impl From<WebglArg> for essl::Target {
+    fn from(t: WebglArg) -> essl::Target {
+        match t {
+            WebglArg::Webgl1 => essl::Target::WebGl1,
+            WebglArg::Webgl2 => essl::Target::WebGl2,
+        }
+    }
 }
 
 #[derive(Args, Debug)]
@@ -349,6 +372,7 @@ fn main() -> ExitCode {
             show_notes: args.show_notes,
             defines: args.define,
             link: !args.no_link,
+            target: args.target.into(),
             rules,
         }),
         Command::Report { out, quick, scenes } => essl_cli::report::run(&out, quick, &scenes),

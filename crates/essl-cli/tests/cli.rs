@@ -189,6 +189,61 @@ fn warnings_pass_unless_denied() {
     assert!(stdout(&o).contains("(warnings denied)"), "{}", stdout(&o));
 }
 
+/// A WebGL 1 program as tutorials write it: GLSL ES 1.00, the derivatives extension.
+const ES100_VERT: &str = "attribute vec4 a_position;\nvarying vec2 v_uv;\nvoid main() {\n    v_uv = a_position.xy;\n    gl_Position = a_position;\n}\n";
+const ES100_FRAG: &str = "#extension GL_OES_standard_derivatives : enable\nprecision mediump float;\nvarying vec2 v_uv;\nvoid main() {\n    float edge = fwidth(v_uv.x);\n    gl_FragColor = vec4(pow(v_uv.x - 0.5, 2.2), edge, 0.0, 1.0);\n}\n";
+
+#[test]
+fn targets_decide_the_language_and_the_extensions() {
+    let dir = tempfile::tempdir().unwrap();
+    std::fs::write(dir.path().join("p.vert"), ES100_VERT).unwrap();
+    std::fs::write(dir.path().join("p.frag"), ES100_FRAG).unwrap();
+    std::fs::write(dir.path().join("g.vert"), GOOD_VERT).unwrap();
+    // WebGL 1: the program links, and the numerical lints run on GLSL ES 1.00.
+    let o = essl(
+        &[
+            "lint", "--target", "webgl1", "--format", "json", "p.vert", "p.frag",
+        ],
+        dir.path(),
+    );
+    assert_eq!(o.status.code(), Some(0), "{}", stdout(&o));
+    let lines: Vec<serde_json::Value> = stdout(&o)
+        .lines()
+        .map(|l| serde_json::from_str(l).unwrap())
+        .collect();
+    assert!(lines.iter().all(|l| l["target"] == "webgl1"), "{lines:?}");
+    let frag = lines.iter().find(|l| l["file"] == "p.frag").unwrap();
+    assert_eq!(frag["version"], "100");
+    let codes: Vec<&str> = frag["diagnostics"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|d| d["code"].as_str().unwrap())
+        .collect();
+    assert_eq!(codes, ["pow-negative-base"]);
+    assert_eq!(lines[2]["kind"], "program");
+    assert_eq!(lines[2]["ok"], true);
+    // WebGL 2 offers the extension to no GLSL ES 1.00 shader.
+    let o = essl(&["lint", "--color", "never", "p.frag"], dir.path());
+    assert_eq!(o.status.code(), Some(1), "{}", stdout(&o));
+    assert!(
+        stdout(&o).contains("error[extension-required]"),
+        "{}",
+        stdout(&o)
+    );
+    // WebGL 1 compiles no `#version 300 es`.
+    let o = essl(
+        &["lint", "--color", "never", "--target", "webgl1", "g.vert"],
+        dir.path(),
+    );
+    assert_eq!(o.status.code(), Some(1), "{}", stdout(&o));
+    assert!(
+        stdout(&o).contains("error[unsupported-version]"),
+        "{}",
+        stdout(&o)
+    );
+}
+
 #[test]
 fn defines_reach_the_preprocessor() {
     let dir = tempfile::tempdir().unwrap();

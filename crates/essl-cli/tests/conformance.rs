@@ -39,5 +39,21 @@ fn conformance_bars_are_met() {
         "webgl2fundamentals {}",
         report.fundamentals.cell()
     );
+    let es100 = report
+        .es100
+        .as_ref()
+        .expect("the GLSL ES 1.00 corpus is scored");
+    for target in [essl::Target::WebGl1, essl::Target::WebGl2] {
+        let c = es100.context(target);
+        assert_eq!(c.accepted.total + c.rejected.total, 2021);
+        for (what, t) in [("accepted", &c.accepted), ("rejected", &c.rejected)] {
+            assert!(
+                t.percent() >= bars::ES100_PERCENT,
+                "GLSL ES 1.00, {}: Chromium-{what} cases agreed {}",
+                target.as_str(),
+                t.cell()
+            );
+        }
+    }
     assert!(report.unmet_bars().is_empty(), "{:?}", report.unmet_bars());
 }

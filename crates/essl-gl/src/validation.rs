@@ -148,6 +148,8 @@ pub(crate) struct Validation {
 pub(crate) struct LinkedSources {
     pub(crate) vertex: (Option<String>, String),
     pub(crate) fragment: (Option<String>, String),
+    /// The options they were compiled with.
+    pub(crate) options: essl::CompileOptions,
 }
 
 /// How a uniform's value is stored in the default block image.
@@ -268,7 +270,7 @@ impl ProgramChecks {
                 let shader = essl::compile(
                     SourceFile::new(name, text.as_str()),
                     stage,
-                    &essl::CompileOptions::default(),
+                    &src.options,
                 );
                 preconditions.extend(essl_lint::preconditions(&shader));
                 files.push((stage, shader.file));

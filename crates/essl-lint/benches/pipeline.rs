@@ -108,6 +108,7 @@ fn checked(parsed: &[Parsed]) -> Vec<Shader> {
                 file: p.file.clone(),
                 stage: p.stage,
                 version: p.version,
+                target: essl::Target::WebGl2,
                 diagnostics,
                 module,
                 naga: None,

@@ -15,7 +15,7 @@ use crate::{Options, Target};
 pub fn annotate(
     text: &str,
     module: &Module,
-    stage: Stage,
+    (stage, language): (Stage, &str),
     options: &Options,
     header: &[String],
 ) -> String {
@@ -75,7 +75,7 @@ pub fn annotate(
     ));
     let mut out = String::with_capacity(text.len() + 1024);
     out.push_str(&format!(
-        "// The {} shader, translated from WebGL's GLSL ES 3.00 by essl.\n",
+        "// The {} shader, translated from WebGL's {language} by essl.\n",
         stage.as_str()
     ));
     for note in header {

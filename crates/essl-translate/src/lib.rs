@@ -1,5 +1,5 @@
-//! essl-translate: WebGL shaders (GLSL ES 3.00) to WGSL, SPIR-V, MSL, HLSL and desktop GLSL,
-//! for people moving a WebGL2 app to WebGPU, wgpu or a native API.
+//! essl-translate: WebGL shaders (GLSL ES 3.00 and 1.00) to WGSL, SPIR-V, MSL, HLSL and
+//! desktop GLSL, for people moving a WebGL app to WebGPU, wgpu or a native API.
 //!
 //! essl already lowers every shader WebGL2 accepts to validated naga IR that follows the
 //! conventions of [`essl::program`]; naga's backends do the writing. What this crate adds is
@@ -247,11 +247,18 @@ pub fn translate_program(
 ) -> Result<Translation, TranslateError> {
     let layout = lower_program(vs, fs, options)?;
     let bindings = BindingMap::from_program(&layout, options);
-    let vertex = write::stage(&layout.vertex, &layout.vertex_info, Stage::Vertex, options)?;
+    let vertex = write::stage(
+        &layout.vertex,
+        &layout.vertex_info,
+        Stage::Vertex,
+        language(vs),
+        options,
+    )?;
     let fragment = write::stage(
         &layout.fragment,
         &layout.fragment_info,
         Stage::Fragment,
+        language(fs),
         options,
     )?;
     Ok(Translation {
@@ -270,12 +277,20 @@ pub fn translate_shader(
     compiled(shader)?;
     let (module, info) = essl::lower::lower_shader(shader, &options.lower_options())?;
     let bindings = BindingMap::from_shader(shader, &module, options);
-    let code = write::stage(&module, &info, shader.stage, options)?;
+    let code = write::stage(&module, &info, shader.stage, language(shader), options)?;
     Ok(ShaderTranslation {
         stage: shader.stage,
         code,
         bindings,
     })
+}
+
+/// The language a shader was written in, as the translation's header names it.
+fn language(shader: &Shader) -> &'static str {
+    match shader.version {
+        essl::Version::Es100 => "GLSL ES 1.00",
+        _ => "GLSL ES 3.00",
+    }
 }
 
 /// Links and lowers a program with the options' conventions.

@@ -18,6 +18,7 @@ pub(crate) fn stage(
     module: &Module,
     info: &ModuleInfo,
     stage: Stage,
+    language: &str,
     options: &Options,
 ) -> Result<Code, TranslateError> {
     let fail = |message: String| TranslateError::Write {
@@ -137,7 +138,7 @@ pub(crate) fn stage(
         }
     };
     Ok(Code::Text(if options.comments {
-        comments::annotate(&text, original, stage, options, &notes)
+        comments::annotate(&text, original, (stage, language), options, &notes)
     } else {
         text
     }))

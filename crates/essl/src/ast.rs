@@ -1,4 +1,4 @@
-//! The syntax tree of a GLSL ES 3.00 shader, as written (before name resolution and types).
+//! The syntax tree of a GLSL ES shader, as written (before name resolution and types).
 
 use std::sync::Arc;
 
@@ -83,6 +83,10 @@ pub enum Storage {
     Inout,
     /// `uniform`
     Uniform,
+    /// `attribute` (GLSL ES 1.00: a vertex shader input)
+    Attribute,
+    /// `varying` (GLSL ES 1.00: a vertex shader output or a fragment shader input)
+    Varying,
 }
 
 impl Storage {
@@ -94,6 +98,8 @@ impl Storage {
             Storage::Out => "out",
             Storage::Inout => "inout",
             Storage::Uniform => "uniform",
+            Storage::Attribute => "attribute",
+            Storage::Varying => "varying",
         }
     }
 }

@@ -192,7 +192,9 @@ impl Diagnostic {
             e.replacement.chars().all(char::is_whitespace)
                 && file.slice(e.span).chars().all(char::is_whitespace)
         });
-        if only_space {
+        // A fix that adds a line would show two lines as one.
+        let adds_line = fix.edits.iter().any(|e| e.replacement.contains('\n'));
+        if only_space || adds_line {
             return Some(base);
         }
         match fixed_line(file, fix) {

@@ -61,10 +61,8 @@ codes! {
 
     // ----- the preprocessor (`preprocess`) -----
 
-    /// The shader does not start with `#version 300 es`: WebGL2 compiles it as GLSL ES 1.00,
-    /// which essl does not check.
-    MissingVersion = "missing-version",
-    /// `#version 100`: a GLSL ES 1.00 shader, which essl does not check.
+    /// A `#version` the target does not compile: a number other than `100` and `300 es`, or
+    /// `300 es` for a WebGL 1 context, which compiles GLSL ES 1.00 only.
     UnsupportedVersion = "unsupported-version",
     /// A malformed `#version` line: no version number, or `#version 300` without the `es`
     /// profile.
@@ -85,7 +83,9 @@ codes! {
     /// A character GLSL ES source may not contain (GLSL ES 3.00 §3.1 allows a subset of
     /// ASCII), outside a comment.
     InvalidCharacter = "invalid-character",
-    /// An identifier longer than the 1024 characters WebGL2 allows.
+    /// An identifier or number longer than the target allows anywhere in the text (a skipped
+    /// group included): 256 characters in WebGL 1 (WebGL 1.0 "Maximum GLSL Token Size"), 1024 in
+    /// WebGL 2 for both language versions.
     IdentifierTooLong = "identifier-too-long",
     /// `#define` or `#undef` with no macro name.
     MissingMacroName = "missing-macro-name",
@@ -181,6 +181,10 @@ codes! {
     /// An extension essl does not support: an error when it is required, a warning when it is
     /// only enabled.
     ExtensionNotSupported = "extension-not-supported",
+    /// A built-in function or variable of a WebGL 1 extension (`dFdx`, `texture2DLodEXT`,
+    /// `gl_FragDepthEXT`, `gl_FragData[1]`) in a shader that has not enabled the extension with
+    /// `#extension NAME : enable` (or whose context has not enabled it).
+    ExtensionRequired = "extension-required",
     /// `#extension` after the first declaration: GLSL ES 3.00 puts extension directives before
     /// any code.
     ExtensionAfterCode = "extension-after-code",
@@ -203,6 +207,10 @@ codes! {
     /// `attribute` or `varying`: GLSL ES 1.00 qualifiers, reserved in 3.00, where they are `in`
     /// and `out`.
     Es100Qualifier = "es100-qualifier",
+    /// A GLSL ES 3.00 feature in a GLSL ES 1.00 shader: `in`/`out` variables, the `%`, bitwise
+    /// and shift operators, uniform blocks, array constructors, initializers and `.length()`,
+    /// `float[2]` array types, unsized arrays, `const` arrays.
+    NotInEs100 = "not-in-es100",
     /// A name used as a type that is neither a built-in type nor a declared struct.
     UnknownType = "unknown-type",
     /// A function declared inside another function; GLSL ES declares functions at global
@@ -376,6 +384,30 @@ codes! {
     /// An array of samplers indexed with an expression that is not constant: GLSL ES 3.00
     /// does not allow selecting a sampler at run time.
     DynamicSamplerIndex = "dynamic-sampler-index",
+    /// In a GLSL ES 1.00 shader for WebGL, an index that is not a constant-index-expression
+    /// (constants and loop indices, Appendix A §5): only a vertex shader's uniforms may be
+    /// indexed with anything else.
+    NonConstantIndex = "non-constant-index",
+    /// In a GLSL ES 1.00 shader for WebGL, a `while` or `do`-`while` loop, or a `for` loop whose
+    /// header is not of the form Appendix A §4 requires: `for (int i = CONST; i OP CONST;
+    /// i++)` (`i--`, `i += CONST`, `i -= CONST`, `++i`, `--i`), with an `int` or `float` index.
+    UnsupportedLoop = "unsupported-loop",
+    /// In a GLSL ES 1.00 shader for WebGL, a `for` loop's index assigned (or passed as an
+    /// `out`/`inout` argument) inside the loop's body (Appendix A §4).
+    LoopIndexAssigned = "loop-index-assigned",
+    /// A GLSL ES 1.00 fragment shader that uses both `gl_FragColor` and `gl_FragData`
+    /// (GLSL ES 1.00 §7.2).
+    FragColorAndFragData = "frag-color-and-frag-data",
+    /// A struct nested more than 4 levels deep, which WebGL forbids (WebGL 1.0 "Maximum Nesting
+    /// of Structures in GLSL Shaders").
+    StructNestingTooDeep = "struct-nesting-too-deep",
+    /// A chain of function calls more than 256 deep from one function, which ANGLE refuses
+    /// ("Call stack too deep").
+    CallStackTooDeep = "call-stack-too-deep",
+    /// A shader's uniforms, packed as GLSL ES 1.00 Appendix A §7 packs them, need more rows than
+    /// the implementation's `MAX_VERTEX_UNIFORM_VECTORS` or `MAX_FRAGMENT_UNIFORM_VECTORS` (an
+    /// error), or than WebGL guarantees (a warning).
+    TooManyUniforms = "too-many-uniforms",
     /// An array of uniform blocks indexed with an expression that is not constant.
     DynamicBlockIndex = "dynamic-block-index",
     /// A field selection on a type that has no fields, such as an array (whose only member is
@@ -427,8 +459,16 @@ codes! {
     VaryingTypeMismatch = "varying-type-mismatch",
     /// A vertex output and fragment input of one name, `flat` in one shader but not the other.
     VaryingInterpolationMismatch = "varying-interpolation-mismatch",
-    /// The varyings need more than the 15 vectors WebGL2 guarantees once packed.
+    /// The varyings, packed as GLSL ES 1.00 Appendix A §7 packs them (ANGLE does so for both
+    /// versions), need more rows than the implementation's `MAX_VARYING_VECTORS` (an error) or
+    /// than WebGL guarantees (a warning: 8 in WebGL 1, 15 in WebGL 2).
     TooManyVaryings = "too-many-varyings",
+    /// A GLSL ES 1.00 shader linked with a GLSL ES 3.00 one: both shaders of a program must be
+    /// of the same version.
+    VersionMismatch = "version-mismatch",
+    /// In GLSL ES 1.00, a varying (or `gl_Position` and `gl_FragCoord`, `gl_PointSize` and
+    /// `gl_PointCoord`) `invariant` in one shader but not the other.
+    InvariantMismatch = "invariant-mismatch",
     /// A uniform declared in both shaders with different types.
     UniformTypeMismatch = "uniform-type-mismatch",
     /// A uniform declared in both shaders with different precisions.

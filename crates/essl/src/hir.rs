@@ -23,6 +23,9 @@ pub type LocalId = usize;
 pub struct Module {
     /// The stage.
     pub stage: Stage,
+    /// The language version it was checked as: [`crate::Version::Es100`] or
+    /// [`crate::Version::Es300`].
+    pub version: crate::Version,
     /// Struct types; [`Type::Struct`] indexes this table.
     pub structs: Vec<StructDef>,
     /// Global variables in declaration order (uniforms, inputs, outputs, plain globals,
@@ -38,6 +41,10 @@ pub struct Module {
     pub used_builtins: Vec<BuiltinVar>,
     /// `#pragma STDGL invariant(all)`.
     pub invariant_all: bool,
+    /// Built-in variables declared `invariant` (`invariant gl_Position;`).
+    pub invariant_builtins: Vec<BuiltinVar>,
+    /// The length of `gl_FragData` (`gl_MaxDrawBuffers`) in a GLSL ES 1.00 fragment shader.
+    pub frag_data_len: u32,
 }
 
 /// Where a global variable lives.
@@ -307,6 +314,10 @@ pub enum UnaryOp {
 #[non_exhaustive]
 #[derive(Clone, Debug)]
 pub enum ExprKind {
+    /// An expression that failed to check; its type is [`Type::Void`] and the error has been
+    /// reported. Rules that meet one stay silent, so one mistake gives one diagnostic. Only a
+    /// shader with errors contains one, and such a shader is never lowered.
+    Error,
     /// A constant (literals, folded constant expressions, `const` variables).
     Const(ConstValue),
     /// A local variable.
@@ -346,6 +357,27 @@ pub enum ExprKind {
 }
 
 impl Expr {
+    /// Whether evaluating it has a side effect: it writes a variable, or calls a user function
+    /// (or `modf`, which writes its `out` argument).
+    pub fn has_effects(&self) -> bool {
+        match &self.kind {
+            ExprKind::Assign(..) | ExprKind::IncDec(..) | ExprKind::Call(..) => true,
+            ExprKind::Builtin(op, args) => {
+                *op == BuiltinFn::Modf || args.iter().any(Expr::has_effects)
+            }
+            ExprKind::Unary(_, a) | ExprKind::Member(a, _) | ExprKind::Swizzle(a, _) => {
+                a.has_effects()
+            }
+            ExprKind::Binary(_, a, b) | ExprKind::Comma(a, b) | ExprKind::Index(a, b) => {
+                a.has_effects() || b.has_effects()
+            }
+            ExprKind::Select(c, a, b) => c.has_effects() || a.has_effects() || b.has_effects(),
+            ExprKind::Construct(args) => args.iter().any(Expr::has_effects),
+            ExprKind::BlockMember(_, Some(i), _) => i.has_effects(),
+            _ => false,
+        }
+    }
+
     /// The folded value, when the expression is a constant.
     pub fn as_const(&self) -> Option<&ConstValue> {
         match &self.kind {

@@ -1,4 +1,4 @@
-//! essl: a front end for GLSL ES 3.00 as WebGL2 accepts it.
+//! essl: a front end for GLSL ES 3.00 and 1.00 as WebGL 2 and WebGL 1 accept them.
 //!
 //! A shader travels one way, and the modules are named for where it is:
 //! `source` → `lex` → `preprocess` → `token` → `parse` → `check` → `lower` (naga IR) →
@@ -24,6 +24,7 @@ pub mod reflect;
 pub mod render;
 pub mod snapshot;
 pub mod source;
+pub mod target;
 pub mod types;
 
 mod ast;
@@ -39,6 +40,7 @@ mod usage;
 
 pub use preprocess::Version;
 pub use shader::{compile, CompileOptions, Shader, COMPILE_STACK};
+pub use target::{Extension, Target};
 
 /// A shader stage.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]

@@ -18,11 +18,12 @@
 //! ```
 
 pub use crate::ast::TranslationUnit;
-pub use crate::check::check;
+pub use crate::check::{check, check_as};
 pub use crate::lex::{lex, Lexed, PpKind, PpToken, Punct};
-pub use crate::parse::{parse, MAX_NESTING};
+pub use crate::parse::{parse, parse_as, MAX_NESTING};
 pub use crate::preprocess::{
     preprocess, ExtensionBehavior, LineDirective, PreprocessOptions, Preprocessed,
     MAX_EXPANDED_TOKENS,
 };
-pub use crate::token::{classify, Tok, Token};
+pub use crate::target::Language;
+pub use crate::token::{classify, classify_as, Tok, Token};

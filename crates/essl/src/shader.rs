@@ -5,13 +5,40 @@ use crate::diagnostic_code::Code;
 use crate::hir;
 use crate::preprocess::{self, PreprocessOptions, Version};
 use crate::source::SourceFile;
+use crate::target::{Extension, Language, Target};
 use crate::Stage;
 
 /// Options for compiling a shader.
-#[derive(Clone, Debug, Default)]
+#[derive(Clone, Debug)]
 pub struct CompileOptions {
     /// Macros defined before the first line, as `(name, value)`.
     pub defines: Vec<(String, String)>,
+    /// The WebGL version of the context (WebGL 2 by default).
+    pub target: Target,
+    /// The WebGL 1 extensions the context has enabled (`getExtension`), which a GLSL ES 1.00
+    /// shader may then enable with `#extension`; WebGL 2 ignores them. By default all of
+    /// [`Extension::ALL`], as for an application that enables what its shaders ask for.
+    pub extensions: Vec<Extension>,
+}
+
+impl Default for CompileOptions {
+    fn default() -> CompileOptions {
+        CompileOptions {
+            defines: Vec::new(),
+            target: Target::WebGl2,
+            extensions: Extension::ALL.to_vec(),
+        }
+    }
+}
+
+impl CompileOptions {
+    /// The default options for `target`.
+    pub fn for_target(target: Target) -> CompileOptions {
+        CompileOptions {
+            target,
+            ..CompileOptions::default()
+        }
+    }
 }
 
 /// A compiled shader: its source, diagnostics and (when parsing succeeded) checked module.
@@ -23,6 +50,8 @@ pub struct Shader {
     pub stage: Stage,
     /// The declared version.
     pub version: Version,
+    /// The WebGL version it was compiled for.
+    pub target: Target,
     /// All diagnostics, in source order.
     pub diagnostics: Vec<Diagnostic>,
     /// The checked module (present even when there are errors, for reflection of what parsed).
@@ -76,20 +105,24 @@ pub fn compile(file: SourceFile, stage: Stage, options: &CompileOptions) -> Shad
 
 fn compile_here(file: SourceFile, stage: Stage, options: &CompileOptions) -> Shader {
     let lexed = crate::lex::lex(&file);
-    let pp = preprocess::preprocess(
+    let target = options.target;
+    let mut pp = preprocess::preprocess(
         &file,
         lexed,
         &PreprocessOptions {
             defines: options.defines.clone(),
-            extensions: Vec::new(),
+            extensions: PreprocessOptions::extension_macros(target, &options.extensions),
             stage: Some(stage),
+            target,
         },
     );
-    let mut diagnostics = pp.diagnostics;
-    let tokens = crate::token::classify(pp.tokens, &mut diagnostics);
-    let (unit, parse_diags) = crate::parse::parse(&file, tokens, stage);
+    let lang = Language::of(&pp, target, &options.extensions);
+    let mut diagnostics = std::mem::take(&mut pp.diagnostics);
+    let tokens = crate::token::classify_as(pp.tokens, &lang, &mut diagnostics);
+    let (unit, parse_diags) = crate::parse::parse_as(&file, tokens, stage, &lang);
     diagnostics.extend(parse_diags);
-    let (module, check_diags) = crate::check::check(&file, &unit, stage, pp.invariant_all);
+    let (module, check_diags) =
+        crate::check::check_as(&file, &unit, stage, pp.invariant_all, &lang);
     // The syntax tree is not needed past this point: free it before lowering.
     drop(unit);
     diagnostics.extend(check_diags);
@@ -97,6 +130,7 @@ fn compile_here(file: SourceFile, stage: Stage, options: &CompileOptions) -> Sha
         file,
         stage,
         version: pp.version,
+        target,
         diagnostics,
         module,
         naga: None,
@@ -146,9 +180,9 @@ pub(crate) fn lowering_diagnostic(e: &crate::lower::LowerError) -> Diagnostic {
     let (code, help) = match e {
         crate::lower::LowerError::Unsupported { .. } => (
             Code::Unsupported,
-            "this is valid GLSL ES 3.00 that essl cannot translate yet",
+            "this is valid GLSL ES that essl cannot translate yet",
         ),
-        crate::lower::LowerError::Invalid { .. } => (
+        crate::lower::LowerError::Invalid { .. } | crate::lower::LowerError::Internal { .. } => (
             Code::InternalError,
             "this is a bug in essl: please report it with the shader",
         ),

@@ -7,6 +7,7 @@ use std::sync::Arc;
 use crate::diagnostic::{Diagnostic, Fix};
 use crate::lex::{PpKind, PpToken, Punct};
 use crate::source::Span;
+use crate::target::Language;
 
 macro_rules! keywords {
     ($($kw:ident = $text:literal,)*) => {
@@ -49,12 +50,108 @@ keywords! {
     Isampler2D = "isampler2D", Isampler3D = "isampler3D", IsamplerCube = "isamplerCube",
     Isampler2DArray = "isampler2DArray", Usampler2D = "usampler2D", Usampler3D = "usampler3D",
     UsamplerCube = "usamplerCube", Usampler2DArray = "usampler2DArray", Struct = "struct",
+    Attribute = "attribute", Varying = "varying",
 }
+
+/// Keywords of GLSL ES 3.00 that GLSL ES 1.00 leaves free for identifiers (ANGLE's
+/// `ES3_keyword`).
+const ES300_ONLY: &[Kw] = &[
+    Kw::Case,
+    Kw::Centroid,
+    Kw::Smooth,
+    Kw::Uint,
+    Kw::Mat2x2,
+    Kw::Mat2x3,
+    Kw::Mat2x4,
+    Kw::Mat3x2,
+    Kw::Mat3x3,
+    Kw::Mat3x4,
+    Kw::Mat4x2,
+    Kw::Mat4x3,
+    Kw::Mat4x4,
+    Kw::Uvec2,
+    Kw::Uvec3,
+    Kw::Uvec4,
+    Kw::Sampler2DArray,
+    Kw::Isampler2D,
+    Kw::Isampler3D,
+    Kw::IsamplerCube,
+    Kw::Isampler2DArray,
+    Kw::Usampler2D,
+    Kw::Usampler3D,
+    Kw::UsamplerCube,
+    Kw::Usampler2DArray,
+    Kw::SamplerCubeShadow,
+    Kw::Sampler2DArrayShadow,
+    Kw::Layout,
+];
+
+/// Keywords of GLSL ES 3.00 that GLSL ES 1.00 reserves (ANGLE's `ES2_reserved_ES3_keyword`;
+/// `sampler3D` and `sampler2DShadow` need extensions WebGL 1 does not have).
+const ES300_RESERVED_IN_ES100: &[Kw] = &[
+    Kw::Switch,
+    Kw::Default,
+    Kw::Flat,
+    Kw::Sampler3D,
+    Kw::Sampler2DShadow,
+];
+
+/// Words GLSL ES 1.00 reserves as WebGL implements it (ANGLE's lexer): the future-use words of
+/// the specification, WebGL's own (`image2DShadow`, …), and the extension types WebGL 1 lacks.
+pub const RESERVED_ES100: &[&str] = &[
+    "asm",
+    "class",
+    "union",
+    "enum",
+    "typedef",
+    "template",
+    "this",
+    "packed",
+    "goto",
+    "inline",
+    "noinline",
+    "volatile",
+    "public",
+    "static",
+    "extern",
+    "external",
+    "interface",
+    "long",
+    "short",
+    "double",
+    "half",
+    "fixed",
+    "unsigned",
+    "superp",
+    "input",
+    "output",
+    "hvec2",
+    "hvec3",
+    "hvec4",
+    "dvec2",
+    "dvec3",
+    "dvec4",
+    "fvec2",
+    "fvec3",
+    "fvec4",
+    "sampler1D",
+    "sampler1DShadow",
+    "sampler2DRect",
+    "sampler3DRect",
+    "sampler2DRectShadow",
+    "samplerExternalOES",
+    "sizeof",
+    "cast",
+    "namespace",
+    "using",
+    "image1DShadow",
+    "image2DShadow",
+    "image1DArrayShadow",
+    "image2DArrayShadow",
+];
 
 /// Words GLSL ES 3.00 reserves for future use: using one is an error.
 pub const RESERVED: &[&str] = &[
-    "attribute",
-    "varying",
     "coherent",
     "volatile",
     "restrict",
@@ -190,18 +287,40 @@ pub struct Token {
     pub from_macro: bool,
 }
 
-/// Classifies preprocessed tokens. Malformed numbers are reported and become [`Tok::Error`].
+/// Classifies the preprocessed tokens of a GLSL ES 3.00 shader ([`classify_as`] for another
+/// language). Malformed numbers are reported and become [`Tok::Error`].
 pub fn classify(tokens: Vec<PpToken>, diagnostics: &mut Vec<Diagnostic>) -> Vec<Token> {
+    classify_as(tokens, &Language::es300(), diagnostics)
+}
+
+/// A word of the language: a keyword, a reserved word or an identifier.
+fn word(text: &Arc<str>, es100: bool) -> Tok {
+    match Kw::lookup(text) {
+        Some(Kw::Attribute | Kw::Varying) if !es100 => Tok::Reserved(text.clone()),
+        Some(kw) if es100 && ES300_ONLY.contains(&kw) => Tok::Ident(text.clone()),
+        Some(kw) if es100 && ES300_RESERVED_IN_ES100.contains(&kw) => Tok::Reserved(text.clone()),
+        Some(kw) => Tok::Kw(kw),
+        None if es100 && RESERVED_ES100.contains(&&**text) => Tok::Reserved(text.clone()),
+        None if !es100 && RESERVED.contains(&&**text) => Tok::Reserved(text.clone()),
+        None => Tok::Ident(text.clone()),
+    }
+}
+
+/// Classifies preprocessed tokens as the language's keywords, reserved words, identifiers and
+/// literals. Malformed numbers, and in GLSL ES 1.00 the `u` and `f` suffixes, are reported and
+/// become [`Tok::Error`].
+pub fn classify_as(
+    tokens: Vec<PpToken>,
+    lang: &Language,
+    diagnostics: &mut Vec<Diagnostic>,
+) -> Vec<Token> {
     tokens
         .into_iter()
         .filter(|t| t.kind != PpKind::Newline)
         .map(|t| {
             let tok = match t.kind {
-                PpKind::Ident => match Kw::lookup(&t.text) {
-                    Some(kw) => Tok::Kw(kw),
-                    None if RESERVED.contains(&&*t.text) => Tok::Reserved(t.text.clone()),
-                    None => Tok::Ident(t.text.clone()),
-                },
+                PpKind::Ident => word(&t.text, lang.es100),
+                PpKind::Number if lang.es100 => number_es100(&t.text, t.span, diagnostics),
                 PpKind::Number => number(&t.text, t.span, diagnostics),
                 PpKind::Punct(p) => Tok::P(p),
                 PpKind::Invalid(_) => Tok::Error,
@@ -307,6 +426,65 @@ pub fn number(text: &str, span: Span, diagnostics: &mut Vec<Diagnostic>) -> Tok 
         return int_value(&digits[1..], 8, unsigned, text, span, diagnostics);
     }
     int_value(digits, 10, unsigned, text, span, diagnostics)
+}
+
+/// Parses a preprocessing number as GLSL ES 1.00 does: no `u` or `f` suffix, and an integer past
+/// 32 bits is a warning (ANGLE's `int_constant`) that leaves the largest value.
+fn number_es100(text: &str, span: Span, diagnostics: &mut Vec<Diagnostic>) -> Tok {
+    let lower = text.to_ascii_lowercase();
+    let hex = lower.starts_with("0x");
+    let suffix = if !hex && lower.ends_with('u') {
+        Some(("u", "unsigned integers"))
+    } else if !hex && lower.ends_with('f') && lower.len() > 1 {
+        Some(("f", "the `f` suffix of floating-point literals"))
+    } else {
+        None
+    };
+    if let Some((suffix, what)) = suffix {
+        let without = &text[..text.len() - 1];
+        crate::diagnostic::push_capped(
+            diagnostics,
+            Diagnostic::error(
+                Code::InvalidNumber,
+                format!("`{text}`: GLSL ES 1.00 has no {what}"),
+                span,
+            )
+            .with_label(format!("the `{suffix}` suffix is GLSL ES 3.00"))
+            .with_fix(Fix::suggested(
+                format!("remove the suffix: `{without}`"),
+                span,
+                without,
+            ))
+            .with_token(text),
+        );
+        return Tok::Error;
+    }
+    let mut found = Vec::new();
+    let tok = number(text, span, &mut found);
+    match tok {
+        Tok::Error
+            if found
+                .iter()
+                .any(|d| d.code == Code::IntegerOverflow.as_str()) =>
+        {
+            crate::diagnostic::push_capped(
+                diagnostics,
+                Diagnostic::warning(
+                    Code::IntegerOverflow,
+                    format!("integer literal `{text}` does not fit in 32 bits"),
+                    span,
+                )
+                .with_label("becomes 4294967295 (0xFFFFFFFF), that is -1")
+                .with_note("GLSL ES 3.00 makes this an error")
+                .with_token(text),
+            );
+            Tok::Int(u64::from(u32::MAX), false)
+        }
+        _ => {
+            diagnostics.extend(found);
+            tok
+        }
+    }
 }
 
 fn int_value(

@@ -1,7 +1,11 @@
 //! Which functions, globals, blocks and built-ins the entry point actually uses — WebGL's
 //! notion of "active", which is more than static use: ANGLE folds constant `if`/`?:`
-//! conditions, drops code after `return`, and drops stores to locals that are never read
-//! (measured: `tests/oracle/PROBES.md` §1). Loops are not evaluated and `x * 0.0` is not folded.
+//! conditions, drops code after `return`, drops stores to locals that are never read
+//! (measured: `tests/oracle/PROBES.md` §1), and drops values that are computed and discarded
+//! without a side effect — an expression statement such as `1.0 + u;`, the left operand of
+//! `,` (`tests/oracle/ES100.md`, "Active uniforms"). Loops are not evaluated and `x * 0.0` is
+//! not folded. A global's non-constant initializer (GLSL ES 1.00 in WebGL) runs at the start of
+//! `main`: what it reads is used when the global is.
 
 use std::collections::BTreeSet;
 
@@ -49,6 +53,7 @@ pub fn mark(m: &mut Module) {
     for (f, used) in m.functions.iter_mut().zip(fn_used) {
         f.used = used;
     }
+    initializer_uses(m, &mut all);
     for &g in &all.globals {
         m.globals[g].used = true;
         if let crate::hir::GlobalKind::BlockMember(b, _) = m.globals[g].kind {
@@ -59,6 +64,25 @@ pub fn mark(m: &mut Module) {
         m.blocks[b].used = true;
     }
     m.used_builtins = all.builtins.into_iter().collect();
+}
+
+/// Adds what the non-constant initializers of the used globals read, until nothing changes.
+fn initializer_uses(m: &Module, all: &mut Uses) {
+    let mut pending: Vec<GlobalId> = all.globals.iter().copied().collect();
+    let mut seen: BTreeSet<GlobalId> = all.globals.clone();
+    while let Some(g) = pending.pop() {
+        let Some(crate::hir::Init::Expr(e)) = &m.globals[g].init else {
+            continue;
+        };
+        let mut u = Uses::default();
+        expr(e, &mut u);
+        for &ng in &u.globals {
+            if seen.insert(ng) {
+                pending.push(ng);
+            }
+        }
+        all.merge(&u);
+    }
 }
 
 /// A store to a local: its uses count only if the local is read.
@@ -234,6 +258,8 @@ impl Walker {
                 self.effect(a);
                 self.effect(b);
             }
+            // A value computed and discarded without a side effect: ANGLE drops it.
+            _ if !e.has_effects() => {}
             _ => expr(e, &mut self.live),
         }
     }
@@ -254,7 +280,7 @@ fn target_reads(e: &Expr, u: &mut Uses) {
 /// Collects everything an expression reads or calls.
 fn expr(e: &Expr, u: &mut Uses) {
     match &e.kind {
-        ExprKind::Const(_) => {}
+        ExprKind::Error | ExprKind::Const(_) => {}
         ExprKind::Local(l) => {
             u.locals.insert(*l);
         }
@@ -269,11 +295,15 @@ fn expr(e: &Expr, u: &mut Uses) {
         | ExprKind::IncDec(_, _, a)
         | ExprKind::Member(a, _)
         | ExprKind::Swizzle(a, _) => expr(a, u),
-        ExprKind::Binary(_, a, b)
-        | ExprKind::Assign(_, a, b)
-        | ExprKind::Comma(a, b)
-        | ExprKind::Index(a, b) => {
+        ExprKind::Binary(_, a, b) | ExprKind::Assign(_, a, b) | ExprKind::Index(a, b) => {
             expr(a, u);
+            expr(b, u);
+        }
+        // The left operand's value is discarded: only its side effects count.
+        ExprKind::Comma(a, b) => {
+            if a.has_effects() {
+                expr(a, u);
+            }
             expr(b, u);
         }
         ExprKind::Select(c, a, b) => {

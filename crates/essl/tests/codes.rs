@@ -6,7 +6,9 @@
 //!
 //! Every fixture is compiled with one macro defined through the API, [`OPTION_DEFINE`], as a
 //! program that passes `CompileOptions::defines` does: the fixture of
-//! `option-macro-redefined` redefines it.
+//! `option-macro-redefined` redefines it. Fixtures are compiled for WebGL 2, or for a WebGL 1
+//! context (which enabled every WebGL 1 extension) when their text says `essl-target: webgl1`
+//! (in a comment).
 //!
 //! The tests check that every [`Code`] has a fixture (but those in [`UNREACHABLE`]), that each
 //! fixture produces its code, and that every code named in `src` is a [`Code`].
@@ -21,11 +23,18 @@ use essl::source::SourceFile;
 use essl::{compile, render, CompileOptions, Shader, Stage};
 
 /// Codes that no shader text produces, each with the reason.
-const UNREACHABLE: &[(Code, &str)] = &[(
-    Code::InternalError,
-    "reports a naga module that naga rejects, which is a bug in essl: a shader that \
-     produces it is fixed, not kept as a fixture",
-)];
+const UNREACHABLE: &[(Code, &str)] = &[
+    (
+        Code::InternalError,
+        "reports a naga module that naga rejects, which is a bug in essl: a shader that \
+         produces it is fixed, not kept as a fixture",
+    ),
+    (
+        Code::Unsupported,
+        "reports valid GLSL the lowering cannot express; every construct WebGL accepts is \
+         lowered, so a shader that produces it is a gap to close, not a fixture",
+    ),
+];
 
 /// The macro every fixture is compiled with, as a program defines it through
 /// `CompileOptions::defines`.
@@ -48,12 +57,19 @@ struct Outcome {
 /// fixture.
 fn run(code: Code) -> Option<Outcome> {
     let name = code.as_str();
-    let options = CompileOptions {
-        defines: vec![(OPTION_DEFINE.0.into(), OPTION_DEFINE.1.into())],
-    };
     let load = |stage: Stage, ext: &str| {
         let path = fixture_dir().join(format!("{name}.{ext}"));
         let text = std::fs::read_to_string(&path).ok()?;
+        let target = if text.contains("essl-target: webgl1") {
+            essl::Target::WebGl1
+        } else {
+            essl::Target::WebGl2
+        };
+        let options = CompileOptions {
+            defines: vec![(OPTION_DEFINE.0.into(), OPTION_DEFINE.1.into())],
+            target,
+            ..CompileOptions::default()
+        };
         let file = SourceFile::new(format!("codes/{name}.{ext}"), text);
         Some(compile(file, stage, &options))
     };

@@ -6,7 +6,7 @@ use std::path::{Path, PathBuf};
 
 use essl::link::{link, Program};
 use essl::source::SourceFile;
-use essl::{compile, Shader, Stage};
+use essl::{compile, CompileOptions, Extension, Shader, Stage, Target};
 use serde_json::Value;
 
 fn repo() -> PathBuf {
@@ -18,7 +18,11 @@ fn corpora() -> Option<PathBuf> {
 }
 
 fn compile_str(name: &str, src: &str, stage: Stage) -> Shader {
-    compile(SourceFile::new(name, src), stage, &Default::default())
+    compile_with(name, src, stage, &Default::default())
+}
+
+fn compile_with(name: &str, src: &str, stage: Stage, options: &CompileOptions) -> Shader {
+    compile(SourceFile::new(name, src), stage, options)
 }
 
 fn stage_of(name: &str) -> Stage {
@@ -103,13 +107,18 @@ fn compare_program(p: &Program, expected: &Value) -> Vec<String> {
 
 /// Checks an oracle file produced by `webgl2-oracle.py` over a folder of NAME.vert/NAME.frag.
 fn check_oracle_folder(json: &str) -> Vec<String> {
+    check_oracle_folder_with(json, &CompileOptions::default())
+}
+
+/// Checks an oracle file, compiling with `options` (the context the oracle asked).
+fn check_oracle_folder_with(json: &str, options: &CompileOptions) -> Vec<String> {
     let data: Value =
         serde_json::from_str(&std::fs::read_to_string(repo().join(json)).unwrap()).unwrap();
     let mut failures = Vec::new();
     let mut shaders = std::collections::HashMap::new();
     for (file, expect) in data["compile"].as_object().unwrap() {
         let src = std::fs::read_to_string(repo().join(file)).unwrap();
-        let sh = compile_str(file, &src, stage_of(file));
+        let sh = compile_with(file, &src, stage_of(file), options);
         let ok = expect["ok"].as_bool().unwrap();
         if sh.ok() != ok {
             let first = sh
@@ -152,16 +161,9 @@ fn shaders_glsl_agree_with_webgl2() {
     );
 }
 
-/// Probes where essl knowingly differs from WebGL2: shaders without `#version 300 es` are
-/// GLSL ES 1.00, which WebGL2 also compiles but essl does not (it reports a clear error
-/// instead); and a program whose uniforms need more vectors than Chromium's
-/// `MAX_FRAGMENT_UNIFORM_VECTORS`, a limit essl does not count yet. Each entry must still
+/// Probes where essl knowingly differs from WebGL2 (none at present). Each entry must still
 /// disagree, so fixing one fails this test until it is removed from the list.
-const KNOWN_GAPS: &[&str] = &[
-    "probes/c-no-version",
-    "probes/l-version-mismatch-100-",
-    "probes/s-uniform-float-134217727",
-];
+const KNOWN_GAPS: &[&str] = &[];
 
 #[test]
 fn probes_agree_with_webgl2() {
@@ -185,6 +187,42 @@ fn probes_agree_with_webgl2() {
             "known gap `{gap}` no longer differs: remove it from KNOWN_GAPS"
         );
     }
+}
+
+/// The GLSL ES 1.00 and WebGL-limit probes (`tests/oracle/ES100.md`), each answer file with the
+/// options of the context that gave it: WebGL 1 with no extension, WebGL 1 with the four
+/// extensions enabled, WebGL 2.
+#[test]
+fn es100_probes_agree_with_chromium() {
+    let webgl1 = |extensions: Vec<Extension>| CompileOptions {
+        target: Target::WebGl1,
+        extensions,
+        ..CompileOptions::default()
+    };
+    let mut failures = Vec::new();
+    for (json, options) in [
+        ("tests/oracle/es100-webgl1.json", webgl1(Vec::new())),
+        (
+            "tests/oracle/es100-webgl1-ext.json",
+            webgl1(Extension::ALL.to_vec()),
+        ),
+        (
+            "tests/oracle/es100-webgl2.json",
+            CompileOptions::for_target(Target::WebGl2),
+        ),
+    ] {
+        failures.extend(
+            check_oracle_folder_with(json, &options)
+                .into_iter()
+                .map(|f| format!("{json}: {f}")),
+        );
+    }
+    assert!(
+        failures.is_empty(),
+        "{} disagreements:\n{}",
+        failures.len(),
+        failures.join("\n")
+    );
 }
 
 #[test]

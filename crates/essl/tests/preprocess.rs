@@ -978,14 +978,23 @@ fn version_not_on_the_first_line() {
 
 #[test]
 fn version_errors() {
+    // No `#version`, or `#version 100`: GLSL ES 1.00, no error.
     let (_, p) = run("void main() {}");
-    assert_eq!(errors(&p), ["missing-version"]);
+    assert!(errors(&p).is_empty());
     assert_eq!(p.version, Version::Es100);
     assert_eq!(texts(&run("__VERSION__").1), ["100"]);
-    let (f, p) = run("#version 100\nx");
-    assert_eq!(errors(&p), ["unsupported-version"]);
+    let (_, p) = run("#version 100\nx");
+    assert!(errors(&p).is_empty());
     assert_eq!(p.version, Version::Es100);
-    assert_eq!(f.slice(p.diagnostics[0].span), "#version 100");
+    // WebGL 1 compiles GLSL ES 1.00 only.
+    let options = PreprocessOptions {
+        target: essl::Target::WebGl1,
+        ..Default::default()
+    };
+    let (f, p) = run_with("#version 300 es\nx", &options);
+    assert_eq!(errors(&p), ["unsupported-version"]);
+    assert_eq!(p.version, Version::Es300);
+    assert_eq!(f.slice(p.diagnostics[0].span), "300 es");
     let (f, p) = run("#version 300\nx");
     assert_eq!(errors(&p), ["invalid-version"]);
     assert_eq!(p.version, Version::Es100);

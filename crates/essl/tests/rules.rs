@@ -15,79 +15,12 @@
 //! The check renders the annotations of the diagnostics the shader produces into its text
 //! and compares the result with the case, so that a failure shows the case as it would pass.
 
+mod annotated;
+
+use annotated::{annotate, check};
 use essl::diagnostic::Diagnostic;
 use essl::source::SourceFile;
 use essl::{compile, Stage};
-
-/// Whether a line of a case is an annotation.
-fn is_annotation(line: &str) -> bool {
-    let t = line.trim_start();
-    t.starts_with("//^") || t.starts_with("//|")
-}
-
-/// The annotation of `d`, whose span starts on `line` (without its line break), which starts
-/// at byte `line_start` of the case.
-fn annotation(line: &str, line_start: usize, d: &Diagnostic) -> String {
-    let start = (d.span.start as usize - line_start).min(line.len());
-    let end = (d.span.end as usize)
-        .saturating_sub(line_start)
-        .clamp(start, line.len());
-    let col = line[..start].chars().count();
-    let marks = if d.span.is_empty() {
-        "|".to_string()
-    } else {
-        "^".repeat(line[start..end].chars().count().max(1))
-    };
-    let what = format!("{} {}: {}", d.severity.as_str(), d.code, d.message);
-    match col.checked_sub(2) {
-        Some(indent) => format!("{}//{marks} {what}", " ".repeat(indent)),
-        None => format!("//{marks} {what} (at column {}: indent the line)", col + 1),
-    }
-}
-
-/// The case's text with its annotations replaced by those of `diagnostics`.
-fn annotate(src: &str, diagnostics: &[Diagnostic]) -> String {
-    let mut out = String::new();
-    let mut placed = vec![false; diagnostics.len()];
-    let mut line_start = 0;
-    for line in src.split_inclusive('\n') {
-        let here = line_start;
-        line_start += line.len();
-        if is_annotation(line) {
-            continue;
-        }
-        out.push_str(line);
-        let last = line_start == src.len();
-        for (d, placed) in diagnostics.iter().zip(&mut placed) {
-            let at = d.span.start as usize;
-            if (here..line_start).contains(&at) || (last && at == src.len()) {
-                if !out.ends_with('\n') {
-                    out.push('\n');
-                }
-                out.push_str(&annotation(line.trim_end_matches('\n'), here, d));
-                out.push('\n');
-                *placed = true;
-            }
-        }
-    }
-    for (d, placed) in diagnostics.iter().zip(placed) {
-        if !placed {
-            out.push_str(&format!("(outside the text) {} {}\n", d.code, d.message));
-        }
-    }
-    out
-}
-
-#[track_caller]
-fn check(stage: Stage, src: &str) {
-    let sh = compile(SourceFile::new("case", src), stage, &Default::default());
-    let actual = annotate(src, &sh.diagnostics);
-    assert!(
-        actual == src,
-        "the diagnostics differ from the annotations\n--- the case:\n{src}\n--- the case as it \
-         would pass:\n{actual}--- end"
-    );
-}
 
 fn frag(body: &str) -> String {
     format!("#version 300 es\nprecision mediump float;\nout vec4 o;\n{body}")
@@ -199,6 +132,7 @@ void main() { o = vec4(LIGHTS); }
 "#;
     let opts = essl::CompileOptions {
         defines: vec![("LIGHTS".into(), "3.0".into())],
+        ..essl::CompileOptions::default()
     };
     let sh = compile(SourceFile::new("t", src), Stage::Fragment, &opts);
     assert!(sh.ok(), "{:?}", sh.diagnostics);

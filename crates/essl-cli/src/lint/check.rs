@@ -35,6 +35,7 @@ fn add_lints(shader: &mut Shader, options: &LintOptions) -> usize {
 fn check_file(input: &Input, options: &LintOptions) -> Result<Checked, ReadError> {
     let compile_options = CompileOptions {
         defines: options.defines.clone(),
+        ..CompileOptions::for_target(options.target)
     };
     let name = input.path.display().to_string();
     let mut checked = files::read_source(&input.path).map(|text| {

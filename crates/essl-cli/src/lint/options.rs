@@ -72,6 +72,8 @@ pub struct LintOptions {
     pub defines: Vec<(String, String)>,
     /// Link `NAME.vert` + `NAME.frag` pairs (on unless `--no-link`).
     pub link: bool,
+    /// `--target`: the WebGL version of the context (WebGL 2 unless asked).
+    pub target: essl::Target,
     /// Which numerical-hazard lints run and how loud (`--allow/--warn/--deny RULE`).
     pub rules: essl_lint::LintOptions,
 }
@@ -88,6 +90,8 @@ pub(crate) struct Look {
     pub fix: bool,
     /// Whether warnings fail the run (the summary then says so).
     pub deny_warnings: bool,
+    /// The WebGL version checked for (named in the JSON output).
+    pub target: essl::Target,
 }
 
 impl Look {
@@ -98,6 +102,7 @@ impl Look {
             color: options.format == Format::Human && options.color.enabled(),
             fix: options.fix,
             deny_warnings: options.deny_warnings,
+            target: options.target,
         }
     }
 }

@@ -101,6 +101,7 @@ pub(crate) fn write(out: &mut dyn Write, results: &LintResults, look: Look) -> s
         Format::Json => {
             let summary = json!({
                 "kind": "summary",
+                "target": look.target.as_str(),
                 "files": t.files,
                 "errors": t.errors,
                 "warnings": t.warnings,
@@ -133,7 +134,7 @@ pub(crate) fn render_file(
     match look.format {
         Format::Human => human_file(input, checked, look),
         Format::Json => {
-            let mut line = json_file(input, checked, look.fix).to_string().into_bytes();
+            let mut line = json_file(input, checked, look).to_string().into_bytes();
             line.push(b'\n');
             line
         }
@@ -146,7 +147,7 @@ pub(crate) fn render_program(linked: &Linked, look: Look) -> Vec<u8> {
     match look.format {
         Format::Human => human_program(linked, look.color),
         Format::Json => {
-            let mut line = json_program(linked).to_string().into_bytes();
+            let mut line = json_program(linked, look).to_string().into_bytes();
             line.push(b'\n');
             line
         }
@@ -290,15 +291,19 @@ fn file_of<'a>(vs: &'a Shader, fs: &'a Shader, d: &LinkDiagnostic) -> Option<&'a
 }
 
 /// A shader's JSON object:
-/// `{"kind":"shader","file","stage","ok","diagnostics":[…]}`, with `"fixes_applied"` under
-/// `--fix`, and `"error"` when the file could not be read (or the fix written back).
-fn json_file(input: &Input, checked: &Result<Checked, ReadError>, fix: bool) -> Value {
+/// `{"kind":"shader","file","stage","target","version","ok","diagnostics":[…]}` (`target`:
+/// `webgl1` or `webgl2`; `version`: `100` or `300 es`, absent when the file could not be
+/// read), with `"fixes_applied"` under `--fix`, and `"error"` when the file could not be read
+/// (or the fix written back).
+fn json_file(input: &Input, checked: &Result<Checked, ReadError>, look: Look) -> Value {
     let file = input.path.display().to_string();
+    let fix = look.fix;
     match checked {
         Err(e) => json!({
             "kind": "shader",
             "file": file,
             "stage": input.stage.as_str(),
+            "target": look.target.as_str(),
             "ok": false,
             "error": e.to_string(),
             "diagnostics": [],
@@ -310,10 +315,17 @@ fn json_file(input: &Input, checked: &Result<Checked, ReadError>, fix: bool) -> 
                 .iter()
                 .map(|d| render::to_json(&c.shader.file, d))
                 .collect();
+            let version = if c.shader.module.version == essl::Version::Es100 {
+                "100"
+            } else {
+                "300 es"
+            };
             let mut v = json!({
                 "kind": "shader",
                 "file": file,
                 "stage": input.stage.as_str(),
+                "target": look.target.as_str(),
+                "version": version,
                 "ok": c.shader.ok(),
                 "diagnostics": diagnostics,
             });
@@ -328,11 +340,11 @@ fn json_file(input: &Input, checked: &Result<Checked, ReadError>, fix: bool) -> 
     }
 }
 
-/// A program's JSON object: `{"kind":"program","vertex","fragment","ok","log","uniforms":[{"name",
+/// A program's JSON object: `{"kind":"program","vertex","fragment","target","ok","log","uniforms":[{"name",
 /// "type","size"}],"attributes":[{"name","type","size","location"}],"diagnostics":[…]}`; each
 /// diagnostic also carries `"file"` (null, with null positions, when it points into neither
 /// shader).
-fn json_program(linked: &Linked) -> Value {
+fn json_program(linked: &Linked, look: Look) -> Value {
     let Linked {
         vertex,
         fragment,
@@ -366,6 +378,7 @@ fn json_program(linked: &Linked) -> Value {
         "kind": "program",
         "vertex": vertex.path.display().to_string(),
         "fragment": fragment.path.display().to_string(),
+        "target": look.target.as_str(),
         "ok": program.ok,
         "log": program.log,
         "uniforms": uniforms,

@@ -60,12 +60,15 @@ pub(crate) enum LinkError {
 }
 
 /// The linker's settings and counter: the serial that tells links apart (it keys pipelines
-/// and uniform locations) and the step between lowering and installing
-/// ([`Context::set_program_filter`]).
+/// and uniform locations), the step between lowering and installing
+/// ([`Context::set_program_filter`]) and the WebGL version shaders are compiled for
+/// ([`Context::set_shader_target`]).
 #[derive(Default)]
 pub(crate) struct Linker {
     serial: u64,
     filter: Option<ProgramFilter>,
+    /// How shaders are compiled: the WebGL version and the WebGL 1 extensions turned on.
+    pub(crate) shaders: essl::CompileOptions,
 }
 
 impl Linker {
@@ -111,9 +114,10 @@ impl Context {
                     sources = Some(Box::new(crate::validation::LinkedSources {
                         vertex: (vs.name.clone(), v.clone()),
                         fragment: (fs.name.clone(), f.clone()),
+                        options: self.linker.shaders.clone(),
                     }));
-                    let v = &compile(essl::Stage::Vertex, v);
-                    let f = &compile(essl::Stage::Fragment, f);
+                    let v = &compile(&self.linker.shaders, essl::Stage::Vertex, v);
+                    let f = &compile(&self.linker.shaders, essl::Stage::Fragment, f);
                     let linked = essl::link::link_with_bindings(v, f, &obj.attrib_bindings);
                     let mut options = crate::LOWER_OPTIONS;
                     options.transform_feedback = obj.feedback_varyings.0.clone();

@@ -6,10 +6,15 @@ use crate::context::Context;
 use crate::gl;
 use crate::objects::{Id, Shader};
 
-/// Runs the essl front end on a shader's text.
-pub(super) fn compile(stage: essl::Stage, source: &str) -> essl::Shader {
+/// Runs the essl front end on a shader's text, with the context's WebGL version and
+/// extensions.
+pub(super) fn compile(
+    options: &essl::CompileOptions,
+    stage: essl::Stage,
+    source: &str,
+) -> essl::Shader {
     let file = essl::source::SourceFile::new(stage.as_str(), source);
-    essl::compile(file, stage, &essl::CompileOptions::default())
+    essl::compile(file, stage, options)
 }
 
 /// WebGL's shader info log: `ERROR: 0:LINE: 'token' : message`, one line per diagnostic, in
@@ -29,6 +34,27 @@ pub(super) fn info_log(shader: &essl::Shader) -> String {
 }
 
 impl Context {
+    /// The WebGL version whose shading languages `compile_shader` and `link_program` accept:
+    /// [`essl::Target::WebGl2`] unless [`Context::set_shader_target`] changed it.
+    pub fn shader_target(&self) -> essl::Target {
+        self.linker.shaders.target
+    }
+
+    /// Compiles and links shaders as a WebGL 1 or a WebGL 2 context does from now on. A
+    /// WebGL 1 context compiles GLSL ES 1.00 only (`#version 300 es` is refused), and a
+    /// shader may enable with `#extension` (and sees the macro of) only the `extensions` the
+    /// application turned on with `getExtension` (`OES_standard_derivatives`, …); a WebGL 2
+    /// context compiles both languages and ignores `extensions`. Only the shading language
+    /// changes: the rest of the API stays WebGL2's. Shaders compiled before keep their status
+    /// until compiled again.
+    pub fn set_shader_target(&mut self, target: essl::Target, extensions: &[essl::Extension]) {
+        self.linker.shaders = essl::CompileOptions {
+            target,
+            extensions: extensions.to_vec(),
+            ..essl::CompileOptions::default()
+        };
+    }
+
     /// Creates a shader object of type `VERTEX_SHADER` or `FRAGMENT_SHADER` (`createShader`);
     /// another type → `INVALID_ENUM` and `None`.
     pub fn create_shader(&mut self, ty: u32) -> Option<Shader> {
@@ -87,13 +113,14 @@ impl Context {
         let Some(id) = self.shader_id(shader, "compileShader") else {
             return;
         };
+        let options = &self.linker.shaders;
         let s = self.objects.shaders.get_any_mut(id).expect("live");
         let stage = if s.ty == gl::VERTEX_SHADER {
             essl::Stage::Vertex
         } else {
             essl::Stage::Fragment
         };
-        let compiled = compile(stage, &s.source);
+        let compiled = compile(options, stage, &s.source);
         s.info_log = info_log(&compiled);
         s.compiled = Some((s.source.clone(), compiled.ok()));
     }

@@ -1,4 +1,5 @@
-//! GLSL ES 3.00's built-in functions (chapter 8), variables and constants (chapter 7).
+//! The built-in functions (chapter 8), variables and constants (chapter 7) of GLSL ES 3.00 and
+//! 1.00.
 
 // The overload table reads best with owned `t.clone()` arguments throughout.
 #![allow(clippy::cloned_ref_to_slice_refs)]
@@ -6,10 +7,12 @@
 use std::collections::HashMap;
 use std::sync::OnceLock;
 
+mod es100;
 mod signatures;
 mod texture;
 
 use crate::hir::ParamMode;
+use crate::target::Extension;
 use crate::types::{Precision, ScalarKind, Type};
 use crate::Stage;
 
@@ -35,6 +38,10 @@ pub enum BuiltinVar {
     PointCoord,
     /// `uniform gl_DepthRangeParameters gl_DepthRange` (both): near, far, diff.
     DepthRange,
+    /// `mediump vec4 gl_FragColor` (GLSL ES 1.00 fragment): the color output.
+    FragColor,
+    /// `mediump vec4 gl_FragData[gl_MaxDrawBuffers]` (GLSL ES 1.00 fragment): the color outputs.
+    FragData,
 }
 
 impl BuiltinVar {
@@ -50,7 +57,32 @@ impl BuiltinVar {
             BuiltinVar::FragDepth => "gl_FragDepth",
             BuiltinVar::PointCoord => "gl_PointCoord",
             BuiltinVar::DepthRange => "gl_DepthRange",
+            BuiltinVar::FragColor => "gl_FragColor",
+            BuiltinVar::FragData => "gl_FragData",
         }
+    }
+
+    /// The variable called `name` in a shader of `stage` in `lang`: GLSL ES 1.00 has
+    /// `gl_FragColor` and `gl_FragData` (and `gl_FragDepthEXT`, which is `gl_FragDepth`, with
+    /// `EXT_frag_depth`) but not `gl_VertexID`, `gl_InstanceID` or `gl_FragDepth`.
+    pub fn lookup_in(
+        name: &str,
+        stage: Stage,
+        lang: &crate::target::Language,
+        at: u32,
+    ) -> Option<BuiltinVar> {
+        if !lang.es100 {
+            return BuiltinVar::lookup(name, stage);
+        }
+        use BuiltinVar::*;
+        let v = match name {
+            "gl_FragColor" => FragColor,
+            "gl_FragData" => FragData,
+            "gl_FragDepthEXT" if lang.has_at(Extension::ExtFragDepth, at) => FragDepth,
+            "gl_VertexID" | "gl_InstanceID" | "gl_FragDepth" => return None,
+            _ => return BuiltinVar::lookup(name, stage),
+        };
+        (stage == Stage::Fragment).then_some(v)
     }
 
     /// The variable called `name` in `stage`.
@@ -76,7 +108,9 @@ impl BuiltinVar {
         use BuiltinVar::*;
         match self {
             Position | PointSize | VertexId | InstanceId => Some(Stage::Vertex),
-            FragCoord | FrontFacing | FragDepth | PointCoord => Some(Stage::Fragment),
+            FragCoord | FrontFacing | FragDepth | PointCoord | FragColor | FragData => {
+                Some(Stage::Fragment)
+            }
             DepthRange => None,
         }
     }
@@ -91,6 +125,8 @@ impl BuiltinVar {
             FrontFacing => Type::BOOL,
             PointCoord => Type::Vector(ScalarKind::Float, 2),
             DepthRange => Type::Void,
+            FragColor => Type::Vector(ScalarKind::Float, 4),
+            FragData => Type::Array(Box::new(Type::Vector(ScalarKind::Float, 4)), 1),
         }
     }
 
@@ -98,7 +134,9 @@ impl BuiltinVar {
     pub fn precision(self) -> Option<Precision> {
         match self {
             BuiltinVar::FrontFacing => None,
-            BuiltinVar::PointCoord => Some(Precision::Medium),
+            BuiltinVar::PointCoord | BuiltinVar::FragColor | BuiltinVar::FragData => {
+                Some(Precision::Medium)
+            }
             _ => Some(Precision::High),
         }
     }
@@ -107,27 +145,55 @@ impl BuiltinVar {
     pub fn writable(self) -> bool {
         matches!(
             self,
-            BuiltinVar::Position | BuiltinVar::PointSize | BuiltinVar::FragDepth
+            BuiltinVar::Position
+                | BuiltinVar::PointSize
+                | BuiltinVar::FragDepth
+                | BuiltinVar::FragColor
+                | BuiltinVar::FragData
         )
     }
 }
 
-/// Built-in constants (WebGL2's minimums, which ANGLE reports on SwiftShader too).
+/// Built-in constants of GLSL ES 3.00, with the values Chromium 156 (ANGLE on SwiftShader)
+/// gives them in a WebGL 2 context (`tests/oracle/ES100.md`, "Built-in constants").
 pub fn constant(name: &str) -> Option<i32> {
     Some(match name {
         "gl_MaxVertexAttribs" => 16,
-        "gl_MaxVertexUniformVectors" => 256,
-        "gl_MaxVertexOutputVectors" => 16,
-        "gl_MaxFragmentInputVectors" => 15,
-        "gl_MaxVertexTextureImageUnits" => 16,
-        "gl_MaxCombinedTextureImageUnits" => 32,
-        "gl_MaxTextureImageUnits" => 16,
-        "gl_MaxFragmentUniformVectors" => 224,
-        "gl_MaxDrawBuffers" => 4,
+        "gl_MaxVertexUniformVectors" => 4096,
+        "gl_MaxVertexOutputVectors" => 32,
+        "gl_MaxFragmentInputVectors" => 32,
+        "gl_MaxVertexTextureImageUnits" => 32,
+        "gl_MaxCombinedTextureImageUnits" => 64,
+        "gl_MaxTextureImageUnits" => 32,
+        "gl_MaxFragmentUniformVectors" => 4096,
+        "gl_MaxDrawBuffers" => 8,
         "gl_MinProgramTexelOffset" => -8,
         "gl_MaxProgramTexelOffset" => 7,
         _ => return None,
     })
+}
+
+/// Built-in constants of the language: GLSL ES 1.00 has `gl_MaxVaryingVectors` instead of
+/// the vertex output and fragment input counts, no texel offsets, and `gl_MaxDrawBuffers` 1 in
+/// a WebGL 1 context without `WEBGL_draw_buffers`.
+pub fn constant_in(name: &str, lang: &crate::target::Language) -> Option<i32> {
+    if !lang.es100 {
+        return constant(name);
+    }
+    match name {
+        "gl_MaxVaryingVectors" => Some(31),
+        "gl_MaxDrawBuffers"
+            if lang.target == crate::target::Target::WebGl1
+                && !lang.context_has(Extension::WebglDrawBuffers) =>
+        {
+            Some(1)
+        }
+        "gl_MaxVertexOutputVectors"
+        | "gl_MaxFragmentInputVectors"
+        | "gl_MinProgramTexelOffset"
+        | "gl_MaxProgramTexelOffset" => None,
+        _ => constant(name),
+    }
 }
 
 macro_rules! ops {
@@ -232,14 +298,28 @@ pub struct Signature {
     pub ret: Type,
     /// Only available in fragment shaders (bias variants, derivatives).
     pub fragment_only: bool,
+    /// Only available in vertex shaders (GLSL ES 1.00's `texture2DLod`, …).
+    pub vertex_only: bool,
+    /// The WebGL 1 extension it needs (GLSL ES 1.00).
+    pub extension: Option<Extension>,
 }
 
-/// All overloads of the built-in function `name`.
+/// All overloads of the GLSL ES 3.00 built-in function `name`.
 pub fn overloads(name: &str) -> Option<&'static [Signature]> {
     table().get(name).map(|v| v.as_slice())
 }
 
-/// Whether `name` is a built-in function.
+/// All overloads of the built-in function `name` in GLSL ES 1.00 (`es100`) or 3.00, whatever
+/// extension they need.
+pub fn overloads_in(name: &str, es100: bool) -> Option<&'static [Signature]> {
+    if es100 {
+        table_es100().get(name).map(|v| v.as_slice())
+    } else {
+        overloads(name)
+    }
+}
+
+/// Whether `name` is a built-in function of GLSL ES 3.00.
 pub fn is_builtin_function(name: &str) -> bool {
     table().contains_key(name)
 }
@@ -247,6 +327,11 @@ pub fn is_builtin_function(name: &str) -> bool {
 fn table() -> &'static HashMap<&'static str, Vec<Signature>> {
     static TABLE: OnceLock<HashMap<&'static str, Vec<Signature>>> = OnceLock::new();
     TABLE.get_or_init(signatures::build)
+}
+
+fn table_es100() -> &'static HashMap<&'static str, Vec<Signature>> {
+    static TABLE: OnceLock<HashMap<&'static str, Vec<Signature>>> = OnceLock::new();
+    TABLE.get_or_init(es100::build)
 }
 
 #[cfg(test)]

@@ -31,12 +31,35 @@ impl Builder {
         ret: Type,
         fragment_only: bool,
     ) {
-        self.map.entry(op.name()).or_default().push(Signature {
-            op,
-            params,
-            ret,
-            fragment_only,
-        });
+        self.add_named(
+            op.name(),
+            Signature {
+                op,
+                params,
+                ret,
+                fragment_only,
+                vertex_only: false,
+                extension: None,
+            },
+        );
+    }
+
+    /// Adds an overload under a name other than its operation's (GLSL ES 1.00's `texture2D`
+    /// is `texture` on a `sampler2D`).
+    pub(super) fn add_named(&mut self, name: &'static str, sig: Signature) {
+        self.map.entry(name).or_default().push(sig);
+    }
+
+    /// The overloads collected, by name.
+    pub(super) fn finish(self) -> HashMap<&'static str, Vec<Signature>> {
+        self.map
+    }
+}
+
+/// An empty table.
+pub(super) fn builder() -> Builder {
+    Builder {
+        map: HashMap::new(),
     }
 }
 
@@ -48,9 +71,7 @@ pub(super) fn v(kind: ScalarKind, n: u8) -> Type {
 /// All overloads of all built-in functions, by name. The overloads of one name stay in the
 /// order the families add them.
 pub(super) fn build() -> HashMap<&'static str, Vec<Signature>> {
-    let mut b = Builder {
-        map: HashMap::new(),
-    };
+    let mut b = builder();
     component_wise(&mut b);
     angle_exponential(&mut b);
     common(&mut b);

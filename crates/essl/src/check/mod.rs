@@ -2,14 +2,18 @@
 //! GLSL ES 3.00 (and WebGL2) impose, producing a [`hir::Module`].
 //!
 //! Each rule reports a diagnostic and checking goes on, so that every error is reported in one
-//! run; an expression that failed to check gets the type [`Type::Void`] and later rules stay
-//! quiet about it (no cascades).
+//! run; an expression that failed to check becomes [`hir::ExprKind::Error`] (of type
+//! [`Type::Void`]) and later rules stay quiet about it (no cascades).
 
+mod appendix_a;
 mod decl;
+mod es100;
 mod expr;
 pub mod fold;
 mod limits;
 mod stmt;
+mod types;
+mod webgl;
 
 use crate::diagnostic_code::Code;
 use std::collections::HashMap;
@@ -20,17 +24,29 @@ use crate::builtins::BuiltinVar;
 use crate::diagnostic::Diagnostic;
 use crate::hir::{self, FuncId, GlobalId, LocalId};
 use crate::source::{SourceFile, Span};
-use crate::types::{Precision, SamplerType, StructDef, StructMember, Type};
+use crate::target::Language;
+use crate::types::{Precision, SamplerType, StructDef, Type};
 use crate::Stage;
 
-/// Checks a parsed shader.
+/// Checks a parsed GLSL ES 3.00 shader for WebGL 2 ([`check_as`] for another language).
 pub fn check(
     file: &SourceFile,
     unit: &ast::TranslationUnit,
     stage: Stage,
     invariant_all: bool,
 ) -> (hir::Module, Vec<Diagnostic>) {
-    let mut c = Checker::new(file, stage);
+    check_as(file, unit, stage, invariant_all, &Language::es300())
+}
+
+/// Checks a parsed shader.
+pub fn check_as(
+    file: &SourceFile,
+    unit: &ast::TranslationUnit,
+    stage: Stage,
+    invariant_all: bool,
+    lang: &Language,
+) -> (hir::Module, Vec<Diagnostic>) {
+    let mut c = Checker::new(file, stage, lang);
     c.invariant_all = invariant_all;
     c.truncated = unit.truncated;
     for item in &unit.items {
@@ -39,6 +55,11 @@ pub fn check(
     c.finish();
     let mut module = hir::Module {
         stage,
+        version: if lang.es100 {
+            crate::Version::Es100
+        } else {
+            crate::Version::Es300
+        },
         structs: c.structs,
         globals: c.globals,
         functions: c.functions,
@@ -46,6 +67,8 @@ pub fn check(
         blocks: c.blocks,
         used_builtins: Vec::new(),
         invariant_all,
+        invariant_builtins: c.invariant_builtins,
+        frag_data_len: crate::builtins::constant_in("gl_MaxDrawBuffers", lang).unwrap_or(1) as u32,
     };
     crate::usage::mark(&mut module);
     (module, c.diags)
@@ -95,6 +118,9 @@ struct Scope {
 struct FnCtx {
     func: FuncId,
     locals: Vec<hir::Local>,
+    /// GLSL ES 1.00 (Appendix A): the indices of the `for` loops whose bodies enclose the
+    /// current statement, which may not be written and may index arrays.
+    loop_indices: Vec<LocalId>,
     loops: u32,
     switches: u32,
     calls: Vec<FuncId>,
@@ -104,12 +130,16 @@ struct FnCtx {
 pub(crate) struct Checker<'a> {
     file: &'a SourceFile,
     stage: Stage,
+    /// The language version, target and usable extensions.
+    lang: Language,
     diags: Vec<Diagnostic>,
     structs: Vec<StructDef>,
     globals: Vec<hir::Global>,
     functions: Vec<hir::Function>,
     /// Per function: defined (has a body), and where it was first declared.
     fn_defined: Vec<bool>,
+    /// Per function: declared by a prototype (GLSL ES 1.00 allows one).
+    fn_prototyped: Vec<bool>,
     blocks: Vec<hir::UniformBlock>,
     scopes: Vec<Scope>,
     fctx: Option<FnCtx>,
@@ -124,14 +154,21 @@ pub(crate) struct Checker<'a> {
     truncated: bool,
     /// Locals of the current function whose block has ended: (name, declaration).
     ended: Vec<(Arc<str>, Span)>,
+    /// How deeply each struct of `structs` nests structs ([`webgl`]).
+    struct_depths: Vec<u32>,
     /// Bytes of private variables declared so far ([`limits`]).
     private_bytes: u64,
+    /// Built-in variables declared `invariant` (`invariant gl_Position;`).
+    invariant_builtins: Vec<BuiltinVar>,
+    /// The first use of `gl_FragColor` and of `gl_FragData` (GLSL ES 1.00).
+    frag_color_use: Option<Span>,
+    frag_data_use: Option<Span>,
     /// Where diagnostics past the limit are completed and dropped.
     dropped: Diagnostic,
 }
 
 impl<'a> Checker<'a> {
-    fn new(file: &'a SourceFile, stage: Stage) -> Checker<'a> {
+    fn new(file: &'a SourceFile, stage: Stage, lang: &Language) -> Checker<'a> {
         let mut global = Scope::default();
         // Predeclared default precisions (ES 3.00 §4.5.4).
         match stage {
@@ -150,11 +187,13 @@ impl<'a> Checker<'a> {
         Checker {
             file,
             stage,
+            lang: lang.clone(),
             diags: Vec::new(),
             structs: Vec::new(),
             globals: Vec::new(),
             functions: Vec::new(),
             fn_defined: Vec::new(),
+            fn_prototyped: Vec::new(),
             blocks: Vec::new(),
             scopes: vec![global],
             fctx: None,
@@ -165,7 +204,11 @@ impl<'a> Checker<'a> {
             unnamed_param_counter: 0,
             truncated: false,
             ended: Vec::new(),
+            struct_depths: Vec::new(),
             private_bytes: 0,
+            invariant_builtins: Vec::new(),
+            frag_color_use: None,
+            frag_data_use: None,
             dropped: Diagnostic::new(
                 crate::diagnostic::Severity::Warning,
                 "dropped",
@@ -381,230 +424,6 @@ impl<'a> Checker<'a> {
         }
     }
 
-    // ----- types -----
-
-    /// Resolves a type specifier, declaring an inline struct. `None` after an error.
-    fn resolve_type(&mut self, spec: &ast::TypeSpec) -> Option<Type> {
-        let base = match &spec.name {
-            ast::TypeName::Void => Type::Void,
-            ast::TypeName::Scalar(k) => Type::Scalar(*k),
-            ast::TypeName::Vector(k, n) => Type::Vector(*k, *n),
-            ast::TypeName::Matrix { cols, rows } => Type::Matrix {
-                cols: *cols,
-                rows: *rows,
-            },
-            ast::TypeName::Sampler(s) => Type::Sampler(*s),
-            ast::TypeName::Struct(decl) => Type::Struct(self.declare_struct(decl)?),
-            ast::TypeName::Named(id) => match self.lookup(&id.name) {
-                Some(Sym::Struct(s)) => Type::Struct(*s),
-                _ => {
-                    let d = self.error(
-                        Code::UnknownType,
-                        id.span,
-                        format!("`{}` is not a type", id.name),
-                    );
-                    d.label = "not a type".into();
-                    return None;
-                }
-            },
-        };
-        match &spec.array {
-            None => Some(base),
-            Some(a) => self.array_of(base, a, spec.span),
-        }
-    }
-
-    /// Applies an array size to a type; `[]` gives size 0, to be fixed by an initializer.
-    fn array_of(&mut self, base: Type, size: &ast::ArraySize, span: Span) -> Option<Type> {
-        if base.is_array() {
-            let d = self.error(
-                Code::ArrayOfArrays,
-                size.span,
-                "arrays of arrays are not allowed in GLSL ES 3.00",
-            );
-            d.label = "a second array dimension".into();
-            return None;
-        }
-        if base == Type::Void {
-            let d = self.error(Code::VoidArray, span, "`void` cannot be an array element");
-            d.label = "an array of `void`".into();
-            return None;
-        }
-        let Some(e) = &size.size else {
-            return Some(Type::Array(Box::new(base), 0));
-        };
-        let n = self.array_size(e)?;
-        Some(Type::Array(Box::new(base), n))
-    }
-
-    /// Evaluates an array size: a constant integral expression greater than zero.
-    fn array_size(&mut self, e: &ast::Expr) -> Option<u32> {
-        let checked = self.expr(e);
-        if checked.ty == Type::Void {
-            return None;
-        }
-        let Some(c) = checked.as_const() else {
-            let d = self.error(
-                Code::NonConstantArraySize,
-                e.span,
-                "array size must be a constant integral expression",
-            );
-            d.label = "not a constant expression".into();
-            return None;
-        };
-        let value = match (&checked.ty, c.as_int()) {
-            (
-                Type::Scalar(crate::types::ScalarKind::Int | crate::types::ScalarKind::Uint),
-                Some(v),
-            ) => v,
-            _ => {
-                let ty = self.type_name(&checked.ty);
-                let d = self.error(
-                    Code::ArraySizeType,
-                    e.span,
-                    format!("array size must be an `int` or `uint`, not {ty}"),
-                );
-                d.label = "not an integer".into();
-                return None;
-            }
-        };
-        if value <= 0 {
-            let d = self.error(
-                Code::ArraySize,
-                e.span,
-                format!("array size must be greater than zero, not {value}"),
-            );
-            d.label = "not a positive size".into();
-            return None;
-        }
-        Some(value as u32)
-    }
-
-    fn declare_struct(&mut self, decl: &ast::StructDecl) -> Option<crate::types::StructId> {
-        if let Some(name) = &decl.name {
-            self.check_name(name);
-        }
-        let mut members: Vec<StructMember> = Vec::new();
-        let mut ok = true;
-        for m in &decl.members {
-            let fty = &m.ty.0;
-            for (q, s) in &fty.qualifiers {
-                if !matches!(q, ast::Qualifier::Precision(_)) {
-                    let d = self.error(
-                        Code::StructMemberQualifier,
-                        *s,
-                        "struct members may only have a precision qualifier",
-                    );
-                    d.label = "not allowed on a struct member".into();
-                }
-            }
-            if let ast::TypeName::Struct(inner) = &fty.spec.name {
-                let d = self.error(
-                    Code::EmbeddedStruct,
-                    inner.span,
-                    "structs cannot be defined inside a struct in GLSL ES 3.00",
-                );
-                d.label = "an embedded struct definition".into();
-                d.help = Some("define it before the outer struct and use its name".into());
-            }
-            let Some(base) = self.resolve_type(&fty.spec) else {
-                ok = false;
-                continue;
-            };
-            for (name, arr) in &m.names {
-                let ty = match arr {
-                    Some(a) => match self.array_of(base.clone(), a, name.span) {
-                        Some(t) => t,
-                        None => {
-                            ok = false;
-                            continue;
-                        }
-                    },
-                    None => base.clone(),
-                };
-                if let Type::Array(_, 0) = ty {
-                    let d = self.error(
-                        Code::UnsizedArray,
-                        name.span,
-                        "struct members must have a size",
-                    );
-                    d.label = "an unsized array".into();
-                    ok = false;
-                }
-                if ty == Type::Void {
-                    let d = self.error(
-                        Code::VoidVariable,
-                        name.span,
-                        "a struct member cannot be `void`",
-                    );
-                    d.label = "`void` member".into();
-                    ok = false;
-                    continue;
-                }
-                self.check_name(name);
-                if members.iter().any(|mm| *mm.name == *name.name) {
-                    let d = self.error(
-                        Code::Redefinition,
-                        name.span,
-                        format!("struct member `{}` is declared twice", name.name),
-                    );
-                    d.label = "a second member with this name".into();
-                    continue;
-                }
-                let precision = self.precision_for(&ty, fty.precision().map(|p| p.0), name.span);
-                members.push(StructMember {
-                    name: name.name.to_string(),
-                    ty,
-                    precision,
-                });
-            }
-        }
-        if members.is_empty() && ok {
-            let d = self.error(
-                Code::EmptyStruct,
-                decl.span,
-                "a struct must have at least one member",
-            );
-            d.label = "no members".into();
-        }
-        let id = crate::types::StructId(self.structs.len() as u32);
-        self.structs.push(StructDef {
-            name: decl.name.as_ref().map(|n| n.name.to_string()),
-            members,
-        });
-        if let Some(name) = &decl.name {
-            self.declare(name, Sym::Struct(id));
-        }
-        Some(id)
-    }
-
-    /// The struct type of `gl_DepthRange`.
-    fn depth_range_type(&mut self) -> Type {
-        if let Some(id) = self.depth_range_struct {
-            return Type::Struct(id);
-        }
-        let id = crate::types::StructId(self.structs.len() as u32);
-        let member = |n: &str| StructMember {
-            name: n.into(),
-            ty: Type::FLOAT,
-            precision: Some(Precision::High),
-        };
-        self.structs.push(StructDef {
-            name: Some("gl_DepthRangeParameters".into()),
-            members: vec![member("near"), member("far"), member("diff")],
-        });
-        self.depth_range_struct = Some(id);
-        Type::Struct(id)
-    }
-
-    /// The type of a built-in variable.
-    fn builtin_var_type(&mut self, v: BuiltinVar) -> Type {
-        match v {
-            BuiltinVar::DepthRange => self.depth_range_type(),
-            _ => v.ty(),
-        }
-    }
-
     // ----- top level -----
 
     fn external(&mut self, item: &ast::ExternalDecl) {
@@ -642,7 +461,9 @@ impl<'a> Checker<'a> {
             _ => {}
         }
         self.check_recursion();
+        self.check_call_depth();
         self.check_fragment_outputs();
+        self.check_frag_color_and_data();
     }
 
     fn check_recursion(&mut self) {

@@ -115,6 +115,7 @@ impl Checker<'_> {
                 StmtKind::If(c, t, e)
             }
             ast::StmtKind::While(c, body) => {
+                self.es100_unsupported_loop("while", span);
                 self.push_scope();
                 let cond = self.loop_condition(c);
                 self.fctx_mut().loops += 1;
@@ -130,6 +131,7 @@ impl Checker<'_> {
                 }
             }
             ast::StmtKind::DoWhile(body, c) => {
+                self.es100_unsupported_loop("do", span);
                 self.fctx_mut().loops += 1;
                 let body = self.scoped(body);
                 self.fctx_mut().loops -= 1;
@@ -153,8 +155,9 @@ impl Checker<'_> {
                 self.stmt_into(init, &mut init_out);
                 let cond = cond.as_ref().map(|c| Box::new(self.loop_condition(c)));
                 let step = step.as_ref().map(|e| self.expr(e));
+                let index = self.es100_for_header(&init_out, cond.as_deref(), step.as_ref(), span);
                 self.fctx_mut().loops += 1;
-                let body = self.loop_body(body);
+                let body = self.with_loop_index(index, |c| c.loop_body(body));
                 self.fctx_mut().loops -= 1;
                 self.pop_scope();
                 StmtKind::Loop {

@@ -99,19 +99,38 @@ impl Linker<'_> {
             }
         }
         let vm = &self.vs.module;
-        if let Some((gi, _)) = locations.iter().find(|(gi, loc)| {
-            loc + location_count(&vm.globals[*gi].ty, &vm.structs) > MAX_VERTEX_ATTRIBS
-        }) {
+        let end = |gi: usize, loc: u32| loc + location_count(&vm.globals[gi].ty, &vm.structs);
+        let guaranteed = self.vs.target.profile().guaranteed.vertex_attribs;
+        if let Some((gi, _)) = locations
+            .iter()
+            .find(|(gi, loc)| end(*gi, *loc) > MAX_VERTEX_ATTRIBS)
+        {
             let g = &vm.globals[*gi];
             let (name, span) = (g.name.clone(), g.span);
             let d = self.error(
                 Some(Stage::Vertex),
                 span,
                 Code::TooManyAttributes,
-                format!("attribute `{name}` needs a location beyond the {MAX_VERTEX_ATTRIBS} WebGL2 guarantees"),
+                format!("attribute `{name}` needs a location beyond the {MAX_VERTEX_ATTRIBS} of `MAX_VERTEX_ATTRIBS`"),
                 format!("Too many attributes ({name})"),
             );
             d.label = "out of attribute locations".into();
+        } else if let Some((gi, _)) = locations
+            .iter()
+            .find(|(gi, loc)| vm.globals[*gi].used && end(*gi, *loc) > guaranteed)
+        {
+            let g = &vm.globals[*gi];
+            let (name, span) = (g.name.clone(), g.span);
+            let target = self.vs.target.display();
+            let d = self.warning(
+                Some(Stage::Vertex),
+                span,
+                Code::TooManyAttributes,
+                format!("attribute `{name}` needs a location beyond the {guaranteed} {target} guarantees"),
+                String::new(),
+            );
+            d.label = "past the guaranteed attribute locations".into();
+            d.notes.push(format!("this implementation has {MAX_VERTEX_ATTRIBS}, so the program links here, but a device with the minimum `MAX_VERTEX_ATTRIBS` would refuse it"));
         }
         let mut attributes: Vec<ActiveAttribute> = inputs
             .iter()

@@ -6,6 +6,8 @@
 //! uniform blocks), attributes; this file holds the program's types and the driver.
 
 mod attributes;
+mod limits;
+pub(crate) mod packing;
 mod uniforms;
 mod varyings;
 
@@ -17,10 +19,8 @@ use crate::source::Span;
 use crate::types::{GlType, Precision, StructDef, Type};
 use crate::{Shader, Stage};
 
-/// WebGL2's `MAX_VERTEX_ATTRIBS` on the reference implementation.
+/// `MAX_VERTEX_ATTRIBS` of the reference implementation, and WebGL 2's minimum.
 pub const MAX_VERTEX_ATTRIBS: u32 = 16;
-/// `MAX_VARYING_VECTORS` (the fragment side's limit, the smaller one).
-pub const MAX_VARYING_VECTORS: u32 = 15;
 
 /// A link diagnostic, pointing into one of the two shaders (or none).
 #[derive(Clone, Debug)]
@@ -279,8 +279,10 @@ impl Linker<'_> {
         message: String,
         log_line: String,
     ) -> &mut Diagnostic {
-        self.log.push_str(&log_line);
-        self.log.push('\n');
+        if !log_line.is_empty() {
+            self.log.push_str(&log_line);
+            self.log.push('\n');
+        }
         self.diagnostics.push(LinkDiagnostic {
             stage,
             diagnostic: Diagnostic::warning(code, message, span),
@@ -325,8 +327,36 @@ pub fn link_with_bindings(vs: &Shader, fs: &Shader, bindings: &[(String, u32)]) 
         return Program { log, ..empty };
     }
     let (vm, fm) = (&vs.module, &fs.module);
+    if vm.version != fm.version {
+        let name = |v: crate::Version| {
+            if v == crate::Version::Es100 {
+                "GLSL ES 1.00"
+            } else {
+                "GLSL ES 3.00"
+            }
+        };
+        let d = l.error(
+            Some(Stage::Fragment),
+            Span::default(),
+            Code::VersionMismatch,
+            format!(
+                "the vertex shader is {} but the fragment shader is {}",
+                name(vm.version),
+                name(fm.version)
+            ),
+            "Fragment shader version does not match other shader versions.".into(),
+        );
+        d.label = format!("the fragment shader is {}", name(fm.version));
+        d.help = Some("write both shaders in the same version: both with `#version 300 es` on their first line, or neither".into());
+        return Program {
+            log: l.log,
+            diagnostics: l.diagnostics,
+            ..empty
+        };
+    }
     let varyings = l.link_varyings();
     let uniforms = l.link_uniforms();
+    l.check_uniform_limits();
     l.link_blocks();
     let (attributes, attribute_locations) = l.link_attributes(bindings);
     let fragment_outputs = fm

@@ -63,16 +63,31 @@ pub enum LowerError {
         /// Where in the source, if naga said.
         span: Span,
     },
+    /// The lowering met what the checker rejects (an [`crate::hir::ExprKind::Error`]): a
+    /// shader with errors was handed to it, which is a bug in the caller or in essl.
+    #[error("internal error: {message}")]
+    Internal {
+        /// What.
+        message: String,
+        /// Where in the source.
+        span: Span,
+    },
 }
 
 impl LowerError {
     /// Where in the source the problem is.
     pub fn span(&self) -> Span {
         match self {
-            LowerError::Unsupported { span, .. } | LowerError::Invalid { span, .. } => *span,
+            LowerError::Unsupported { span, .. }
+            | LowerError::Invalid { span, .. }
+            | LowerError::Internal { span, .. } => *span,
         }
     }
 }
+
+/// A uniform block's lowering: one global per element (one for a block that is no array) and
+/// the stored form of each member.
+pub(crate) type BlockLower = (Vec<Handle<naga::GlobalVariable>>, Vec<Repr>);
 
 pub(crate) fn unsupported(message: impl Into<String>, span: Span) -> LowerError {
     LowerError::Unsupported {
@@ -114,7 +129,7 @@ pub(crate) struct ModuleCx<'a> {
     pub builtins: HashMap<BuiltinVar, Handle<naga::GlobalVariable>>,
     pub functions: Vec<Option<Handle<naga::Function>>>,
     /// Uniform blocks with instance names: (global, per-member reprs).
-    pub blocks: Vec<Option<(Handle<naga::GlobalVariable>, Vec<Repr>)>>,
+    pub blocks: Vec<Option<BlockLower>>,
     /// Sampler slots: (global, path) → (texture, sampler).
     pub samplers: HashMap<(GlobalId, Vec<PathStep>), TextureAndSampler>,
     pub stage: Stage,

@@ -102,10 +102,12 @@ pub(super) fn shader_plan(m: &hir::Module, options: &LowerOptions) -> (StagePlan
     }
     let frag_coord = m.stage == Stage::Fragment && m.used_builtins.contains(&BuiltinVar::FragCoord);
     pplan.finish_block(offset, frag_coord, options);
+    let mut binding = 1;
     for (bi, b) in m.blocks.iter().enumerate() {
         if b.used {
-            plan.blocks.push((bi, 1 + bi as u32));
+            plan.blocks.push((bi, binding));
         }
+        binding += b.array.unwrap_or(1);
     }
     (plan, pplan)
 }
@@ -452,7 +454,11 @@ impl<'m> ProgramPlanner<'m> {
         let index = self
             .blocks
             .iter()
-            .position(|x| *x.name == *b.name)
+            .position(|x| {
+                x.name == *b.name
+                    || (b.array.is_some()
+                        && x.name.strip_prefix(&*b.name).is_some_and(|r| r.starts_with('[')))
+            })
             .unwrap_or(0);
         program::UniformStorage::Block {
             block: index as u32,
@@ -463,7 +469,8 @@ impl<'m> ProgramPlanner<'m> {
         }
     }
 
-    /// Uniform blocks: vertex ones first, then fragment-only ones, by name.
+    /// Uniform blocks: vertex ones first, then fragment-only ones, by name; an array of blocks
+    /// takes one binding per element (`Lights[0]`, `Lights[1]`, as WebGL names them).
     fn uniform_blocks(&mut self) {
         let mut block_names: Vec<String> = Vec::new();
         for (module, plan) in [(self.vm, &mut self.vplan), (self.fm, &mut self.fplan)] {
@@ -471,26 +478,35 @@ impl<'m> ProgramPlanner<'m> {
                 let pos = match block_names.iter().position(|n| *n == *b.name) {
                     Some(p) => p,
                     None => {
-                        block_names.push(b.name.to_string());
                         let size = b.members.iter().fold(0u32, |off, (_, ty, _, _)| {
                             let (s, a) = layout::std140(ty, &module.structs);
                             off.div_ceil(a) * a + s
                         });
-                        self.blocks.push(program::UniformBlockBinding {
-                            name: b.name.to_string(),
-                            size: size.div_ceil(16) * 16,
-                            vertex: false,
-                            fragment: false,
-                        });
-                        block_names.len() - 1
+                        let first = self.blocks.len();
+                        let names: Vec<String> = match b.array {
+                            Some(n) => (0..n).map(|k| format!("{}[{k}]", b.name)).collect(),
+                            None => vec![b.name.to_string()],
+                        };
+                        for name in names {
+                            block_names.push(b.name.to_string());
+                            self.blocks.push(program::UniformBlockBinding {
+                                name,
+                                size: size.div_ceil(16) * 16,
+                                vertex: false,
+                                fragment: false,
+                            });
+                        }
+                        first
                     }
                 };
                 if b.used {
                     plan.blocks.push((bi, 1 + pos as u32));
-                    if module.stage == Stage::Vertex {
-                        self.blocks[pos].vertex = true;
-                    } else {
-                        self.blocks[pos].fragment = true;
+                    for binding in &mut self.blocks[pos..pos + b.array.unwrap_or(1) as usize] {
+                        if module.stage == Stage::Vertex {
+                            binding.vertex = true;
+                        } else {
+                            binding.fragment = true;
+                        }
                     }
                 }
             }
@@ -531,7 +547,7 @@ pub fn sampler_paths(ty: &Type, structs: &[StructDef]) -> Vec<Vec<PathStep>> {
 }
 
 /// The sampler type at `path` inside a value of type `ty`, if a sampler is there.
-pub(super) fn sampler_type_at(
+pub(crate) fn sampler_type_at(
     ty: &Type,
     path: &[PathStep],
     structs: &[StructDef],

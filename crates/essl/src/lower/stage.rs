@@ -167,9 +167,6 @@ impl ModuleCx<'_> {
                 off += s;
             }
             let span = off.div_ceil(16).max(1) * 16;
-            if b.array.is_some() {
-                return Err(unsupported("arrays of uniform blocks", b.span));
-            }
             let ty = self.module.types.insert(
                 naga::Type {
                     name: Some(b.name.to_string()),
@@ -177,19 +174,33 @@ impl ModuleCx<'_> {
                 },
                 NSpan::UNDEFINED,
             );
-            let gv = self.module.global_variables.append(
-                naga::GlobalVariable {
-                    name: Some(b.name.to_string()),
-                    space: naga::AddressSpace::Uniform,
-                    binding: Some(naga::ResourceBinding { group: 0, binding }),
-                    ty,
-                    init: None,
-                    memory_decorations: Default::default(),
-                },
-                NSpan::UNDEFINED,
-            );
+            // An array of blocks is one block, and one binding, per element.
+            let elements = b.array.unwrap_or(1);
+            let gvs: Vec<_> = (0..elements)
+                .map(|k| {
+                    let name = match b.array {
+                        Some(_) => format!("{}_{k}", b.name),
+                        None => b.name.to_string(),
+                    };
+                    self.module.global_variables.append(
+                        naga::GlobalVariable {
+                            name: Some(name),
+                            space: naga::AddressSpace::Uniform,
+                            binding: Some(naga::ResourceBinding {
+                                group: 0,
+                                binding: binding + k,
+                            }),
+                            ty,
+                            init: None,
+                            memory_decorations: Default::default(),
+                        },
+                        NSpan::UNDEFINED,
+                    )
+                })
+                .collect();
+            let gv = gvs[0];
             if b.instance.is_some() {
-                self.blocks[bi] = Some((gv, reprs));
+                self.blocks[bi] = Some((gvs, reprs));
             } else {
                 for (gi, g) in m.globals.iter().enumerate() {
                     if let GlobalKind::BlockMember(b2, mi) = g.kind {
@@ -283,7 +294,14 @@ impl ModuleCx<'_> {
             if b == BuiltinVar::DepthRange {
                 continue;
             }
-            let ty = self.types.logical(&mut self.module, &b.ty());
+            let ty = match b {
+                BuiltinVar::FragData => Type::Array(
+                    Box::new(Type::Vector(ScalarKind::Float, 4)),
+                    m.frag_data_len.max(1),
+                ),
+                _ => b.ty(),
+            };
+            let ty = self.types.logical(&mut self.module, &ty);
             let h = self.private(b.name(), ty, None);
             self.builtins.insert(b, h);
         }

@@ -161,9 +161,13 @@ impl Parser<'_> {
         })
     }
 
-    /// `name [array] [= init], …;` after a type; an empty list declares only a struct.
+    /// `name [array] [= init], …;` after a type; an empty list declares only a struct. The
+    /// grammar lets the list start with an empty declarator: `float, a;` declares `a`.
     fn declarators(&mut self, ty: FullType, start: Span) -> PResult<Declaration> {
         let mut declarators = Vec::new();
+        if self.at(Punct::Comma) && matches!(self.peek_at(1).tok, Tok::Ident(_)) {
+            self.bump();
+        }
         if !self.at(Punct::Semicolon) {
             loop {
                 let name = self.ident("a variable name")?;
@@ -199,6 +203,8 @@ impl Parser<'_> {
                 } else {
                     None
                 };
+                // The variable's scope starts after its initializer (`S S = S(1.0);`).
+                self.declare_name(&name.name, false);
                 declarators.push(Declarator {
                     span: self.span_from(name.span),
                     name,
@@ -219,13 +225,25 @@ impl Parser<'_> {
     }
 
     fn function(&mut self, ret: FullType, name: Ident, start: Span) -> PResult<ExternalDecl> {
+        // The parameters (and a struct one defines) are scoped to the function.
+        self.push_scope();
+        let result = self.function_rest(ret, name, start);
+        self.pop_scope();
+        result
+    }
+
+    fn function_rest(&mut self, ret: FullType, name: Ident, start: Span) -> PResult<ExternalDecl> {
         let open = self.expect(Punct::LeftParen)?;
         let mut params = Vec::new();
         if self.at_kw(Kw::Void) && self.peek_at(1).tok == Tok::P(Punct::RightParen) {
             self.bump();
         } else if !self.at(Punct::RightParen) {
             loop {
-                params.push(self.param()?);
+                let p = self.param()?;
+                if let Some(n) = &p.name {
+                    self.declare_name(&n.name, false);
+                }
+                params.push(p);
                 if !self.eat(Punct::Comma) {
                     break;
                 }
@@ -239,10 +257,7 @@ impl Parser<'_> {
             span: self.span_from(start),
         };
         if self.at(Punct::LeftBrace) {
-            self.push_scope();
-            let body = self.block_stmts();
-            self.pop_scope();
-            let body = body?;
+            let body = self.block_stmts()?;
             Ok(ExternalDecl::Function(FunctionDef { proto, body }))
         } else {
             self.expect_semicolon("the function prototype")?;
@@ -283,6 +298,9 @@ impl Parser<'_> {
             Tok::Reserved(r) if &**r == "attribute" || &**r == "varying" => true,
             Tok::Kw(k) if type_keyword(*k).is_some() => self.type_then_name(),
             Tok::Ident(n) if self.is_type_name(n) => self.type_then_name(),
+            // Two names in a row can only be a declaration with an unknown type (`uint x`
+            // in GLSL ES 1.00, a misspelt struct): read it as one, to say so.
+            Tok::Ident(_) => matches!(self.peek_at(1).tok, Tok::Ident(_)),
             _ => false,
         }
     }

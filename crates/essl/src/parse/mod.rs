@@ -1,4 +1,5 @@
-//! A recursive-descent parser for GLSL ES 3.00 that reports every syntax error in one run.
+//! A recursive-descent parser for GLSL ES (1.00 and 3.00) that reports every syntax error in one
+//! run.
 //!
 //! Recovery, as rustc does it: a missing `;` whose next token is on a later line is reported at
 //! the end of the line that lacks it (with a certain fix) and parsing goes on as if it were
@@ -10,13 +11,14 @@
 //! parse: `declarations`, `types`, `statements` and `expressions`.
 
 use crate::diagnostic_code::Code;
-use std::collections::HashSet;
+use std::collections::HashMap;
 use std::sync::Arc;
 
 use crate::ast::*;
 use crate::diagnostic::{Diagnostic, Fix};
 use crate::lex::Punct;
 use crate::source::{SourceFile, Span};
+use crate::target::Language;
 use crate::token::{Kw, Tok, Token};
 use crate::Stage;
 
@@ -29,19 +31,31 @@ mod types;
 /// bounds the recursion of every later pass too).
 pub const MAX_NESTING: u32 = 256;
 
-/// Parses a shader's tokens (ending with `Eof`) into a syntax tree, collecting diagnostics.
+/// Parses a GLSL ES 3.00 shader's tokens (ending with `Eof`) into a syntax tree, collecting
+/// diagnostics ([`parse_as`] for another language).
 pub fn parse(
     file: &SourceFile,
     tokens: Vec<Token>,
     stage: Stage,
 ) -> (TranslationUnit, Vec<Diagnostic>) {
+    parse_as(file, tokens, stage, &Language::es300())
+}
+
+/// Parses a shader's tokens (ending with `Eof`) into a syntax tree, collecting diagnostics.
+pub fn parse_as(
+    file: &SourceFile,
+    tokens: Vec<Token>,
+    stage: Stage,
+    lang: &Language,
+) -> (TranslationUnit, Vec<Diagnostic>) {
     let mut p = Parser {
+        es100: lang.es100,
         file,
         toks: tokens,
         pos: 0,
         diags: Vec::new(),
         suppress: false,
-        type_names: vec![HashSet::new()],
+        type_names: vec![HashMap::new()],
         depth: 0,
         too_deep_reported: false,
         stage,
@@ -66,14 +80,18 @@ struct Failed;
 type PResult<T> = Result<T, Failed>;
 
 struct Parser<'a> {
+    /// GLSL ES 1.00 (for the words of messages: which version reserves what).
+    es100: bool,
     file: &'a SourceFile,
     toks: Vec<Token>,
     pos: usize,
     diags: Vec<Diagnostic>,
     /// After an error, until the next synchronisation point: don't report more.
     suppress: bool,
-    /// Struct names visible in each open scope.
-    type_names: Vec<HashSet<Arc<str>>>,
+    /// Per open scope, the names declared in it: `true` for a struct, `false` for a variable or
+    /// parameter, which hides a struct of the same name in the scopes around it (GLSL ES
+    /// §4.2.2). Whether an identifier starts a declaration or an expression depends on it.
+    type_names: Vec<HashMap<Arc<str>, bool>>,
     depth: u32,
     too_deep_reported: bool,
     stage: Stage,
@@ -159,11 +177,29 @@ impl<'a> Parser<'a> {
     }
 
     fn is_type_name(&self, name: &str) -> bool {
-        self.type_names.iter().any(|s| s.contains(name))
+        self.type_names
+            .iter()
+            .rev()
+            .find_map(|s| s.get(name).copied())
+            .unwrap_or(false)
+    }
+
+    /// Whether `name` is a struct's name hidden by a variable or parameter in an inner scope.
+    fn hides_type(&self, name: &str) -> bool {
+        let mut hits = self.type_names.iter().rev().filter_map(|s| s.get(name));
+        hits.next() == Some(&false) && hits.any(|t| *t)
+    }
+
+    /// Records a struct's name (`is_type`) or a variable's or parameter's in the innermost
+    /// scope.
+    fn declare_name(&mut self, name: &Arc<str>, is_type: bool) {
+        if let Some(scope) = self.type_names.last_mut() {
+            scope.insert(name.clone(), is_type);
+        }
     }
 
     fn push_scope(&mut self) {
-        self.type_names.push(HashSet::new());
+        self.type_names.push(HashMap::new());
     }
 
     fn pop_scope(&mut self) {
@@ -347,9 +383,10 @@ impl<'a> Parser<'a> {
     }
 
     fn reserved_word(&mut self, name: &str, span: Span) {
+        let version = if self.es100 { "1.00" } else { "3.00" };
         let mut d = Diagnostic::error(
             Code::ReservedWord,
-            format!("`{name}` is a reserved word in GLSL ES 3.00"),
+            format!("`{name}` is a reserved word in GLSL ES {version}"),
             span,
         )
         .with_label("reserved for future use")
@@ -359,6 +396,10 @@ impl<'a> Parser<'a> {
             "varying" => d.with_help(
                 "`varying` is GLSL ES 1.00; in 3.00 use `out` in the vertex shader and `in` in the fragment shader",
             ),
+            "switch" | "default" | "flat" | "sampler3D" | "sampler2DShadow" if self.es100 => d
+                .with_help(format!(
+                    "`{name}` is GLSL ES 3.00: start the shader with `#version 300 es` (WebGL 2) to use it"
+                )),
             _ => d.with_help("choose another name"),
         };
         if !self.suppress {

@@ -264,6 +264,7 @@ impl Parser<'_> {
             let name = self.ident("a variable name")?;
             self.expect(Punct::Equal)?;
             let init = self.assignment()?;
+            self.declare_name(&name.name, false);
             Ok(Condition::Decl(ty, name, init))
         } else {
             Ok(Condition::Expr(self.expr()?))

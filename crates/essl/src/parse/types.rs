@@ -62,6 +62,8 @@ pub(super) fn is_qualifier_kw(kw: Kw) -> bool {
             | Kw::Mediump
             | Kw::Highp
             | Kw::Layout
+            | Kw::Attribute
+            | Kw::Varying
     )
 }
 
@@ -77,6 +79,8 @@ impl Parser<'_> {
                 Tok::Kw(Kw::Out) => Qualifier::Storage(Storage::Out),
                 Tok::Kw(Kw::Inout) => Qualifier::Storage(Storage::Inout),
                 Tok::Kw(Kw::Uniform) => Qualifier::Storage(Storage::Uniform),
+                Tok::Kw(Kw::Attribute) => Qualifier::Storage(Storage::Attribute),
+                Tok::Kw(Kw::Varying) => Qualifier::Storage(Storage::Varying),
                 Tok::Kw(Kw::Centroid) => Qualifier::Centroid,
                 Tok::Kw(Kw::Flat) => Qualifier::Interpolation(Interpolation::Flat),
                 Tok::Kw(Kw::Smooth) => Qualifier::Interpolation(Interpolation::Smooth),
@@ -159,12 +163,55 @@ impl Parser<'_> {
                     span: t.span,
                 })
             }
+            Tok::Ident(name) if self.hides_type(name) => {
+                let d = Diagnostic::error(
+                    Code::UnknownType,
+                    format!("`{name}` is a variable here, not a type"),
+                    t.span,
+                )
+                .with_label("a variable hides the struct of this name")
+                .with_note("a variable or parameter hides a type of the same name in its scope (GLSL ES §4.2.2)")
+                .with_help("rename the variable, or use the type outside the variable's scope")
+                .with_token(&**name);
+                self.report(d);
+                return Err(Failed);
+            }
             Tok::Ident(name) => {
                 let d =
                     Diagnostic::error(Code::UnknownType, format!("unknown type `{name}`"), t.span)
                         .with_label("not a type")
                         .with_token(&**name);
+                let es300_type = matches!(
+                    &**name,
+                    "uint"
+                        | "uvec2"
+                        | "uvec3"
+                        | "uvec4"
+                        | "mat2x2"
+                        | "mat2x3"
+                        | "mat2x4"
+                        | "mat3x2"
+                        | "mat3x3"
+                        | "mat3x4"
+                        | "mat4x2"
+                        | "mat4x3"
+                        | "mat4x4"
+                        | "sampler2DArray"
+                        | "isampler2D"
+                        | "isampler3D"
+                        | "isamplerCube"
+                        | "isampler2DArray"
+                        | "usampler2D"
+                        | "usampler3D"
+                        | "usamplerCube"
+                        | "usampler2DArray"
+                        | "samplerCubeShadow"
+                        | "sampler2DArrayShadow"
+                );
                 let d = match &**name {
+                    _ if self.es100 && es300_type => d.with_help(format!(
+                        "`{name}` is a GLSL ES 3.00 type: start the shader with `#version 300 es` (WebGL 2) to use it"
+                    )),
                     "sampler" | "texture2D" => d,
                     "half" | "double" => d.with_help("use `float`"),
                     _ => d.with_help("declare the struct before this line, or use a built-in type"),
@@ -215,10 +262,7 @@ impl Parser<'_> {
         let open = self.expect(Punct::LeftBrace)?;
         let members = self.member_list(open)?;
         if let Some(n) = &name {
-            self.type_names
-                .last_mut()
-                .expect("scope")
-                .insert(n.name.clone());
+            self.declare_name(&n.name, true);
         }
         Ok(StructDecl {
             name,

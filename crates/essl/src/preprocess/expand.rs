@@ -264,7 +264,18 @@ impl Pp<'_> {
             }
         }
         if let Some(c) = ex.contexts.last_mut() {
-            if let Some(t) = c.toks.pop() {
+            if let Some(mut t) = c.toks.pop() {
+                // A name of a macro being expanded, read from an expansion, stays unexpanded
+                // even when it is read as an argument after that expansion has ended
+                // (`#define a m((a)` then `a)`: the argument's `a` is not expanded again).
+                if t.t.kind == PpKind::Ident
+                    && self
+                        .macros
+                        .get(&*t.t.text)
+                        .is_some_and(|m| m.disabled.get())
+                {
+                    t.no_expand = true;
+                }
                 return t;
             }
         }

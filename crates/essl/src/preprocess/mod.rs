@@ -1,4 +1,4 @@
-//! The GLSL ES 3.00 preprocessor: directives, conditionals and macro expansion.
+//! The GLSL ES preprocessor (1.00 and 3.00): directives, conditionals and macro expansion.
 //!
 //! Input: the lexer's tokens. Output: the tokens the parser sees (no newlines, ending with one
 //! `Eof`), each with a span into the original text; a token produced by a macro expansion
@@ -10,8 +10,12 @@
 //! (ANGLE) apply them and as the dEQP and WebGL conformance tests check them:
 //!
 //! - `#version 300 es` must be the first thing in the shader and on its first line (comments and
-//!   white space may precede it on that line). Without it a WebGL shader is GLSL ES 1.00, which
-//!   essl does not compile: that is an error here, and so is any other version.
+//!   white space may precede it on that line). Without it (or with `#version 100`) a WebGL
+//!   shader is GLSL ES 1.00. Any other version is an error, and so is `#version 300 es` for a
+//!   WebGL 1 context.
+//! - Every identifier and number, wherever it is (a directive, a skipped group), may be at most
+//!   as long as the target allows ([`Target::max_token_len`]: 256 characters in WebGL 1, 1024 in
+//!   WebGL 2), as ANGLE's tokenizer checks it.
 //! - Directives in skipped groups are ignored, except the conditional ones, which only track
 //!   nesting. Invalid characters, stray `#` and everything else in skipped groups are ignored.
 //! - `#if` expressions: 32-bit integers, C precedence, short-circuit `&&` and `||`; an
@@ -48,6 +52,7 @@ use std::sync::Arc;
 use crate::diagnostic::{self, Diagnostic, Fix};
 use crate::lex::{Lexed, PpKind, PpToken, Punct};
 use crate::source::{SourceFile, Span};
+use crate::target::{Extension, Target};
 use crate::Stage;
 
 use expand::{Dynamic, Expander, Macro, Tok};
@@ -67,6 +72,22 @@ pub struct PreprocessOptions {
     /// The shader's stage, where known: `#pragma STDGL invariant(all)` is an error in a GLSL ES
     /// 3.00 fragment shader.
     pub stage: Option<Stage>,
+    /// The WebGL version: the versions it accepts and the longest token.
+    pub target: Target,
+}
+
+impl PreprocessOptions {
+    /// The extension macros a target's context defines: the directive names of the WebGL 1
+    /// extensions it enabled (WebGL 2 defines none of them).
+    pub fn extension_macros(target: Target, enabled: &[Extension]) -> Vec<String> {
+        match target {
+            Target::WebGl1 => enabled
+                .iter()
+                .map(|e| e.directive_name().to_string())
+                .collect(),
+            Target::WebGl2 => Vec::new(),
+        }
+    }
 }
 
 /// The language version a shader declares.
@@ -218,13 +239,11 @@ fn preprocess_here(file: &SourceFile, lexed: Lexed, options: &PreprocessOptions)
         });
     }
     let mut pp = Pp::new(file, tokens, options);
+    pp.check_token_lengths();
     pp.predefine();
     pp.run();
     pp.finish(diagnostics)
 }
-
-/// Identifiers longer than this are an error in WebGL 2.
-const MAX_IDENTIFIER_LEN: usize = 1024;
 
 /// A conditional block (`#if` … `#endif`) being read.
 #[derive(Debug)]
@@ -431,10 +450,6 @@ impl<'a> Pp<'a> {
                     self.report_invalid_char(&t, c);
                     self.out.push(t.t);
                 }
-                PpKind::Ident if t.t.text.len() > MAX_IDENTIFIER_LEN => {
-                    self.report_long_identifier(&t.t);
-                    self.out.push(t.t);
-                }
                 PpKind::Newline => {}
                 _ => self.out.push(t.t),
             }
@@ -449,21 +464,6 @@ impl<'a> Pp<'a> {
     }
 
     fn finish(mut self, lexer_diags: Vec<Diagnostic>) -> Preprocessed {
-        if self.version_span.is_none() {
-            let at = Span::empty(0);
-            self.push_diag(
-                Diagnostic::error(
-                    Code::MissingVersion,
-                    "missing `#version 300 es`: this is a GLSL ES 1.00 shader, and essl compiles GLSL ES 3.00",
-                    at,
-                )
-                .with_label("`#version 300 es` must be the first line")
-                .with_note("WebGL2 compiles a shader without `#version 300 es` on its first line as GLSL ES 1.00")
-                .with_help("start the shader with `#version 300 es` (an ES 1.00 shader also needs `in`/`out` instead of `attribute`/`varying`, `texture` instead of `texture2D`, and an `out vec4` instead of `gl_FragColor`)")
-                .with_fix(Fix::suggested("insert `#version 300 es`", at, "#version 300 es\n"))
-                .with_token(""),
-            );
-        }
         let mut diagnostics = lexer_diags;
         for d in &mut diagnostics {
             let skipped = self
@@ -599,20 +599,40 @@ impl<'a> Pp<'a> {
         self.push_diag(d);
     }
 
-    fn report_long_identifier(&mut self, t: &PpToken) {
-        self.push_diag(
-            Diagnostic::error(
+    /// Reports every identifier and number longer than the target allows, wherever it is (in
+    /// a directive, in a skipped group), as ANGLE's tokenizer does.
+    fn check_token_lengths(&mut self) {
+        let max = self.options.target.max_token_len();
+        let target = self.options.target.display();
+        for i in 0..self.toks.len() {
+            let t = &self.toks[i];
+            let len = t.text.chars().count();
+            if len <= max || !matches!(t.kind, PpKind::Ident | PpKind::Number) {
+                continue;
+            }
+            let what = if t.kind == PpKind::Ident {
+                "identifier"
+            } else {
+                "number"
+            };
+            let d = Diagnostic::error(
                 Code::IdentifierTooLong,
-                format!(
-                    "identifier of {} characters: WebGL 2 allows at most {MAX_IDENTIFIER_LEN}",
-                    t.text.len()
-                ),
+                format!("{what} of {len} characters: {target} allows at most {max}"),
                 t.span,
             )
             .with_label("too long")
-            .with_help("use a shorter name")
-            .with_token(&*t.text),
-        );
+            .with_note(format!(
+                "{target} limits every token to {max} characters, even in a group the \
+                 preprocessor skips"
+            ))
+            .with_help(if t.kind == PpKind::Ident {
+                "use a shorter name"
+            } else {
+                "write the number with fewer digits"
+            })
+            .with_token(&*t.text);
+            self.push_diag(d);
+        }
     }
 }
 

@@ -1,6 +1,5 @@
 #version 300 es
 precision mediump float;
-out vec4 o;
 in vec4 v0;
 in vec4 v1;
 in vec4 v2;
@@ -17,4 +16,23 @@ in vec4 v12;
 in vec4 v13;
 in vec4 v14;
 in vec4 v15;
-void main() { o = v0 + v1 + v2 + v3 + v4 + v5 + v6 + v7 + v8 + v9 + v10 + v11 + v12 + v13 + v14 + v15; }
+in vec4 v16;
+in vec4 v17;
+in vec4 v18;
+in vec4 v19;
+in vec4 v20;
+in vec4 v21;
+in vec4 v22;
+in vec4 v23;
+in vec4 v24;
+in vec4 v25;
+in vec4 v26;
+in vec4 v27;
+in vec4 v28;
+in vec4 v29;
+in vec4 v30;
+in vec4 v31;
+out vec4 color;
+void main() {
+    color = v0 + v1 + v2 + v3 + v4 + v5 + v6 + v7 + v8 + v9 + v10 + v11 + v12 + v13 + v14 + v15 + v16 + v17 + v18 + v19 + v20 + v21 + v22 + v23 + v24 + v25 + v26 + v27 + v28 + v29 + v30 + v31;
+}

@@ -1,3 +1,4 @@
-#version 100
+#version 300 es // essl-target: webgl1
 precision mediump float;
-void main() { gl_FragColor = vec4(1.0); }
+out vec4 color;
+void main() { color = vec4(1.0); }

@@ -17,7 +17,7 @@ impl Checker<'_> {
         defining: bool,
     ) -> Option<usize> {
         let name = &proto.name;
-        if crate::builtins::is_builtin_function(&name.name) {
+        if !self.lang.es100 && crate::builtins::is_builtin_function(&name.name) {
             let d = self.error(
                 Code::BuiltinRedeclared,
                 name.span,
@@ -32,13 +32,19 @@ impl Checker<'_> {
         }
         self.check_name(name);
         let (ret, ret_precision) = self.return_type(&proto.ret)?;
+        // A struct defined in a parameter's type is scoped to the function.
+        self.push_scope();
         let mut params = Vec::new();
         for p in &proto.params {
             if let Some(hp) = self.param(p) {
                 params.push(hp);
             }
         }
+        self.pop_scope();
         if params.len() != proto.params.len() {
+            return None;
+        }
+        if self.lang.es100 && self.redefines_builtin(name, &params) {
             return None;
         }
         let signature = format!(
@@ -83,10 +89,55 @@ impl Checker<'_> {
                 }
             }
         }
-        if let Some(f) = existing {
-            return self.redeclare_function(f, name, params, &ret, defining);
+        let f = match existing {
+            Some(f) => self.redeclare_function(f, name, params, &ret, defining)?,
+            None => self.add_function(name, signature, params, ret, ret_precision),
+        };
+        if !defining {
+            if self.lang.es100 && self.fn_prototyped[f] {
+                let d = self.error(
+                    Code::FunctionRedeclared,
+                    name.span,
+                    format!("`{}` is declared twice", name.name),
+                );
+                d.label = "a second prototype".into();
+                d.notes
+                    .push("GLSL ES 1.00 allows one prototype per function".into());
+                d.fix = Some(crate::diagnostic::Fix::suggested(
+                    "remove this prototype",
+                    proto.span,
+                    "",
+                ));
+                return None;
+            }
+            self.fn_prototyped[f] = true;
         }
-        Some(self.add_function(name, signature, params, ret, ret_precision))
+        Some(f)
+    }
+
+    /// GLSL ES 1.00 lets a shader overload a built-in function but not redefine one (the same
+    /// parameter types): whether `params` redefine one (reported).
+    fn redefines_builtin(&mut self, name: &ast::Ident, params: &[hir::Param]) -> bool {
+        let Some(sigs) = crate::builtins::overloads_in(&name.name, true) else {
+            return false;
+        };
+        let same = sigs.iter().any(|s| {
+            s.params.len() == params.len() && s.params.iter().zip(params).all(|(a, b)| a.0 == b.ty)
+        });
+        if same {
+            let d = self.error(
+                Code::BuiltinRedeclared,
+                name.span,
+                format!("`{}` redefines a built-in function", name.name),
+            );
+            d.label = "a built-in function with these parameter types".into();
+            d.notes.push(
+                "GLSL ES 1.00 allows overloading a built-in function with other parameter types,                  not redefining it"
+                    .into(),
+            );
+            d.help = Some("choose another name".into());
+        }
+        same
     }
 
     /// The return type and its precision: only a precision qualifier, a sized array, no
@@ -110,6 +161,15 @@ impl Checker<'_> {
                 "a returned array needs a size",
             );
             d.label = "unsized".into();
+        }
+        if self.lang.es100 && matches!(ty, Type::Struct(_)) && ty.contains_array(&self.structs) {
+            let d = self.error(
+                Code::NotInEs100,
+                ret.spec.span,
+                "a function cannot return a struct containing an array in GLSL ES 1.00",
+            );
+            d.label = "a struct with an array member".into();
+            d.help = Some("return the struct through an `out` parameter".into());
         }
         if ty.contains_sampler(&self.structs) {
             let d = self.error(
@@ -244,6 +304,7 @@ impl Checker<'_> {
             used: false,
         });
         self.fn_defined.push(false);
+        self.fn_prototyped.push(false);
         match self.scopes[0].names.get_mut(&name.name) {
             Some(Sym::Funcs(ids)) => ids.push(id),
             _ => {
@@ -347,6 +408,7 @@ impl Checker<'_> {
         self.fctx = Some(FnCtx {
             func: id,
             locals: Vec::new(),
+            loop_indices: Vec::new(),
             loops: 0,
             switches: 0,
             calls: Vec::new(),
@@ -390,14 +452,26 @@ impl Checker<'_> {
         func.calls = calls;
     }
 
-    /// Checks a function body whose signature failed, so its own errors are still reported.
+    /// Checks a function body whose signature failed, so its own errors are still reported:
+    /// with the parameters and return type it declares (resolved again, quietly: their errors
+    /// are already reported), so that their uses do not cascade.
     fn check_body_detached(&mut self, f: &ast::FunctionDef) {
+        let before = self.diags.len();
+        self.push_scope();
+        let ret = self.resolve_type(&f.proto.ret.spec).unwrap_or(Type::Void);
+        let params: Vec<(Option<ast::Ident>, hir::Param)> = f
+            .proto
+            .params
+            .iter()
+            .filter_map(|p| self.param(p).map(|hp| (p.name.clone(), hp)))
+            .collect();
+        self.diags.truncate(before);
         let id = self.functions.len();
         self.functions.push(hir::Function {
             name: Arc::from("_essl_invalid"),
             signature: String::new(),
-            params: Vec::new(),
-            ret: Type::Void,
+            params: params.iter().map(|(_, p)| p.clone()).collect(),
+            ret: ret.clone(),
             ret_precision: None,
             locals: Vec::new(),
             body: Vec::new(),
@@ -406,17 +480,21 @@ impl Checker<'_> {
             used: false,
         });
         self.fn_defined.push(true);
+        self.fn_prototyped.push(false);
         self.fctx = Some(FnCtx {
             func: id,
             locals: Vec::new(),
+            loop_indices: Vec::new(),
             loops: 0,
             switches: 0,
             calls: Vec::new(),
-            ret: Type::Void,
+            ret,
         });
-        self.push_scope();
-        // Parameters are unknown: declare nothing; uses of them report undeclared names, which
-        // is acceptable after a signature error.
+        for (i, (name, _)) in params.iter().enumerate() {
+            if let Some(n) = name {
+                self.declare(n, Sym::Var(Var::Param(i)));
+            }
+        }
         let _ = self.block_stmts_same_scope(&f.body.stmts);
         self.pop_scope();
         self.fctx = None;

@@ -5,6 +5,7 @@
 //! uniform blocks and functions.
 
 mod blocks;
+mod es100;
 mod functions;
 mod variables;
 
@@ -119,7 +120,11 @@ impl Checker<'_> {
                 instance,
                 span,
             } => {
-                if !global {
+                if self.lang.es100 {
+                    let d = self.not_in_es100(name.span, "a uniform block");
+                    d.token = name.name.to_string();
+                    d.help = Some("declare the members as separate uniforms".into());
+                } else if !global {
                     let d = self.error(
                         Code::BlockNotGlobal,
                         *span,
@@ -216,22 +221,45 @@ impl Checker<'_> {
             return;
         }
         for n in names {
-            if let Some(bv) = BuiltinVar::lookup(&n.name, self.stage) {
-                if bv == BuiltinVar::Position || bv == BuiltinVar::PointSize {
+            if let Some(bv) = BuiltinVar::lookup_in(&n.name, self.stage, &self.lang, n.span.start) {
+                // GLSL ES 1.00 also lets a fragment shader make its built-in inputs and outputs
+                // invariant, except `gl_FrontFacing`.
+                let allowed = matches!(bv, BuiltinVar::Position | BuiltinVar::PointSize)
+                    || (self.lang.es100
+                        && matches!(
+                            bv,
+                            BuiltinVar::FragCoord
+                                | BuiltinVar::PointCoord
+                                | BuiltinVar::FragColor
+                                | BuiltinVar::FragData
+                        ));
+                if allowed {
+                    if !self.invariant_builtins.contains(&bv) {
+                        self.invariant_builtins.push(bv);
+                    }
                     continue;
                 }
+                let es100 = self.lang.es100;
                 let d = self.error(
                     Code::InvalidInvariant,
                     n.span,
                     format!("`{}` cannot be declared invariant", n.name),
                 );
-                d.label = "not an output of the vertex shader".into();
+                d.label = if es100 {
+                    "not a varying or a built-in output"
+                } else {
+                    "not an output of the vertex shader"
+                }
+                .into();
                 continue;
             }
             match self.lookup(&n.name).cloned() {
                 Some(Sym::Var(Var::Global(g)))
-                    if self.globals[g].kind == GlobalKind::Output
-                        && self.stage == Stage::Vertex =>
+                    if (self.globals[g].kind == GlobalKind::Output
+                        && self.stage == Stage::Vertex)
+                        || (self.lang.es100
+                            && self.globals[g].kind == GlobalKind::Input
+                            && self.stage == Stage::Fragment) =>
                 {
                     self.globals[g].invariant = true;
                 }

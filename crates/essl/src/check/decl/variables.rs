@@ -89,6 +89,13 @@ impl Checker<'_> {
             (None, false) => DeclKind::Local,
             (Some(Storage::Const), _) => DeclKind::Const,
             (Some(Storage::Uniform), true) => DeclKind::Uniform,
+            (
+                Some(s @ (Storage::In | Storage::Out | Storage::Attribute | Storage::Varying)),
+                true,
+            ) if self.lang.es100 => match self.es100_storage(s, storage.expect("storage").1) {
+                Some(k) => k,
+                None => return Vec::new(),
+            },
             (Some(Storage::In), true) => DeclKind::Input,
             (Some(Storage::Out), true) => DeclKind::Output,
             (Some(s), _) => {
@@ -118,6 +125,9 @@ impl Checker<'_> {
         };
         if !declarators.is_empty() {
             self.check_declaration_qualifiers(ty, kind, &base);
+        }
+        if self.lang.es100 {
+            self.es100_declaration_type(ty, kind, &base);
         }
         let location = if matches!(kind, DeclKind::Input | DeclKind::Output) {
             self.layout_location(ty, kind)
@@ -181,7 +191,10 @@ impl Checker<'_> {
             }
         }
         if let Some(s) = ty.invariant() {
-            if !(kind == DeclKind::Output && self.stage == Stage::Vertex) {
+            // GLSL ES 1.00 also lets a fragment shader declare its varyings invariant.
+            let allowed = (kind == DeclKind::Output && self.stage == Stage::Vertex)
+                || (self.lang.es100 && varying);
+            if !allowed {
                 let d = self.error(
                     Code::InvalidInvariant,
                     s,
@@ -217,6 +230,9 @@ impl Checker<'_> {
         decl: &ast::Declarator,
     ) -> Option<hir::Stmt> {
         self.check_name(&decl.name);
+        if self.lang.es100 && !self.es100_declarator(kind, decl, base) {
+            return None;
+        }
         let mut ty = match &decl.array {
             Some(a) => self.array_of(base.clone(), a, decl.name.span)?,
             None => base.clone(),
@@ -251,7 +267,9 @@ impl Checker<'_> {
         };
         self.check_variable_size(&decl.name.name, decl.name.span, &ty, private);
         let precision = self.precision_for(&ty, fty.precision().map(|p| p.0), decl.name.span);
-        self.check_interface_type(fty, &ty, kind, decl.name.span);
+        if !self.lang.es100 {
+            self.check_interface_type(fty, &ty, kind, decl.name.span);
+        }
         self.check_initializer(kind, decl, &ty, init.as_ref());
         let init_ok = init.as_ref().filter(|i| i.ty == ty);
         match kind {
@@ -347,6 +365,8 @@ impl Checker<'_> {
                     d.help = Some(
                         "remove `const`, or initialize it from literals and other constants".into(),
                     );
+                } else if kind == DeclKind::GlobalPrivate && !constant && self.lang.es100 {
+                    self.es100_global_initializer(i);
                 } else if kind == DeclKind::GlobalPrivate && !constant {
                     let d = self.error(
                         Code::NonConstantInitializer,

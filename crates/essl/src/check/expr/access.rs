@@ -69,6 +69,9 @@ impl Checker<'_> {
             d.token = "[".into();
             return error_expr(span);
         }
+        if self.es100_check_index(&b, &i) || self.check_frag_data_index(&b, &i) {
+            return error_expr(span);
+        }
         let bound = b.ty.index_bound().unwrap_or(0);
         if bound == 0 {
             // An array whose size is missing (a struct member `float b[]`), already reported.
@@ -107,7 +110,9 @@ impl Checker<'_> {
                     return constant(v, elem, span);
                 }
             }
-        } else if elem.contains_sampler(&self.structs) || matches!(elem, Type::Sampler(_)) {
+        } else if !self.lang.es100
+            && (elem.contains_sampler(&self.structs) || matches!(elem, Type::Sampler(_)))
+        {
             let d = self.error(
                 Code::DynamicSamplerIndex,
                 i.span,

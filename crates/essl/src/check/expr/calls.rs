@@ -20,6 +20,12 @@ impl Checker<'_> {
                 if is_error(&b) {
                     return error_expr(span);
                 }
+                if self.lang.es100 {
+                    let d = self.not_in_es100(span, "the `.length()` method");
+                    d.token = "length".into();
+                    d.help = Some("write the array's size".into());
+                    return error_expr(span);
+                }
                 match b.ty {
                     Type::Array(_, n) => constant(
                         ConstValue::Basic(vec![Scalar::I(n as i32)]),
@@ -41,6 +47,12 @@ impl Checker<'_> {
             }
             Callee::Type(spec) => {
                 let args: Vec<Expr> = args.iter().map(|a| self.expr(a)).collect();
+                if self.lang.es100 && spec.array.is_some() {
+                    let d = self.not_in_es100(spec.span, "an array constructor");
+                    d.token = "[]".into();
+                    d.help = Some("declare the array, then assign its elements".into());
+                    return error_expr(span);
+                }
                 let Some(ty) = self.resolve_type(spec) else {
                     return error_expr(span);
                 };
@@ -48,8 +60,18 @@ impl Checker<'_> {
             }
             Callee::Name(id) => {
                 let args: Vec<Expr> = args.iter().map(|a| self.expr(a)).collect();
+                let builtins = builtins::overloads_in(&id.name, self.lang.es100);
                 match self.lookup(&id.name).cloned() {
                     Some(Sym::Struct(s)) => self.construct(Type::Struct(s), args, span, id.span),
+                    // GLSL ES 1.00 lets a shader overload a built-in function: both sets count.
+                    Some(Sym::Funcs(ids)) if self.lang.es100 && builtins.is_some() => {
+                        let sigs = builtins.expect("checked");
+                        if self.user_overload_matches(&ids, &args) {
+                            self.user_call(id, &ids, args, span)
+                        } else {
+                            self.builtin_call(id, sigs, args, span)
+                        }
+                    }
                     Some(Sym::Funcs(ids)) => self.user_call(id, &ids, args, span),
                     Some(Sym::Var(_)) | Some(Sym::Block(_)) => {
                         let hides = self.scopes[0]
@@ -70,9 +92,12 @@ impl Checker<'_> {
                         }
                         error_expr(span)
                     }
-                    None => match builtins::overloads(&id.name) {
+                    None => match builtins {
                         Some(sigs) => self.builtin_call(id, sigs, args, span),
                         None => {
+                            let es100 = self.lang.es100;
+                            let es300_builtin =
+                                es100 && builtins::overloads_in(&id.name, false).is_some();
                             let d = self.error(
                                 Code::UndeclaredFunction,
                                 id.span,
@@ -80,6 +105,8 @@ impl Checker<'_> {
                             );
                             d.label = "not declared before this call".into();
                             let help = match &*id.name {
+                                "texture" | "textureLod" | "textureProj" if es100 => Some("GLSL ES 1.00 samples with `texture2D` (a `sampler2D`) or `textureCube` (a `samplerCube`), `texture2DProj`, and `texture2DLod`/`textureCubeLod` in vertex shaders".to_string()),
+                                _ if es300_builtin => Some(format!("`{}` is a GLSL ES 3.00 built-in function: start the shader with `#version 300 es` (WebGL 2), or write it out", id.name)),
                                 "texture2D" | "textureCube" | "texture3D" => Some("`texture2D`/`textureCube` are GLSL ES 1.00; in GLSL ES 3.00 use `texture`".to_string()),
                                 "texture2DLod" | "textureCubeLod" => Some("in GLSL ES 3.00 use `textureLod`".to_string()),
                                 "texture2DProj" => Some("in GLSL ES 3.00 use `textureProj`".to_string()),
@@ -91,7 +118,7 @@ impl Checker<'_> {
                                 _ => Some("functions must be declared (or prototyped) before they are called".to_string()),
                             };
                             if let Some(h) = help {
-                                if h.starts_with('`') && h.contains("texture") {
+                                if !es100 && h.starts_with('`') && h.contains("texture") {
                                     let replacement = match &*id.name {
                                         "texture2D" | "textureCube" | "texture3D" => "texture",
                                         "texture2DLod" | "textureCubeLod" => "textureLod",
@@ -118,6 +145,14 @@ impl Checker<'_> {
             .map(|a| format!("`{}`", a.ty.display(&self.structs)))
             .collect::<Vec<_>>()
             .join(", ")
+    }
+
+    /// Whether one of the user functions `ids` takes exactly these arguments.
+    fn user_overload_matches(&self, ids: &[usize], args: &[Expr]) -> bool {
+        ids.iter().any(|&f| {
+            let ps = &self.functions[f].params;
+            ps.len() == args.len() && ps.iter().zip(args).all(|(p, a)| p.ty == a.ty)
+        })
     }
 
     fn user_call(&mut self, id: &ast::Ident, ids: &[usize], args: Vec<Expr>, span: Span) -> Expr {
@@ -229,6 +264,9 @@ impl Checker<'_> {
             }
             return error_expr(span);
         };
+        if self.builtin_unavailable(&id.name, sig, id.span) {
+            return error_expr(span);
+        }
         if sig.fragment_only && self.stage != Stage::Fragment {
             let d = self.error(
                 Code::FragmentOnlyBuiltin,

@@ -18,10 +18,10 @@ use crate::source::{SourceFile, Span};
 use crate::types::{ScalarKind, Type};
 use crate::Stage;
 
-/// An expression that failed to check: type `void`, already reported.
+/// An expression that failed to check ([`ExprKind::Error`], type `void`), already reported.
 pub(crate) fn error_expr(span: Span) -> Expr {
     Expr {
-        kind: ExprKind::Const(ConstValue::Composite(Vec::new())),
+        kind: ExprKind::Error,
         ty: Type::Void,
         span,
     }
@@ -29,7 +29,7 @@ pub(crate) fn error_expr(span: Span) -> Expr {
 
 /// Whether an expression failed to check (errors are silent from then on).
 pub(crate) fn is_error(e: &Expr) -> bool {
-    e.ty == Type::Void && matches!(e.kind, ExprKind::Const(_))
+    matches!(e.kind, ExprKind::Error)
 }
 
 /// A constant expression of type `ty`.
@@ -115,6 +115,9 @@ impl Checker<'_> {
             ast::ExprKind::Binary(op, a, b) => {
                 let a = self.expr(a);
                 let b = self.expr(b);
+                if Self::is_es300_operator(*op) && self.es100_operator(op.as_str(), span) {
+                    return error_expr(span);
+                }
                 self.binary(*op, a, b, span)
             }
             ast::ExprKind::Assign(op, l, r) => self.assign(*op, l, r, span),
@@ -139,6 +142,12 @@ impl Checker<'_> {
                     return error_expr(span);
                 }
                 let ty = b.ty.clone();
+                // GLSL ES 1.00 (not 3.00) counts a sequence of constants as a constant.
+                if self.lang.es100 && a.as_const().is_some() {
+                    if let Some(c) = b.as_const() {
+                        return constant(c.clone(), ty, span);
+                    }
+                }
                 Expr {
                     kind: ExprKind::Comma(Box::new(a), Box::new(b)),
                     ty,
@@ -232,15 +241,18 @@ impl Checker<'_> {
                 error_expr(span)
             }
             None => {
-                if let Some(v) = BuiltinVar::lookup(&id.name, self.stage) {
+                if let Some(v) =
+                    BuiltinVar::lookup_in(&id.name, self.stage, &self.lang, id.span.start)
+                {
                     let ty = self.builtin_var_type(v);
+                    self.note_fragment_output(v, span);
                     return Expr {
                         kind: ExprKind::BuiltinVar(v),
                         ty,
                         span,
                     };
                 }
-                if let Some(c) = builtins::constant(&id.name) {
+                if let Some(c) = builtins::constant_in(&id.name, &self.lang) {
                     return constant(ConstValue::Basic(vec![Scalar::I(c)]), Type::INT, span);
                 }
                 self.undeclared(id);
@@ -251,13 +263,15 @@ impl Checker<'_> {
 
     fn undeclared(&mut self, id: &ast::Ident) {
         let name = &*id.name;
-        let other_stage = BuiltinVar::lookup(
+        let other_stage = BuiltinVar::lookup_in(
             name,
             if self.stage == Stage::Vertex {
                 Stage::Fragment
             } else {
                 Stage::Vertex
             },
+            &self.lang,
+            id.span.start,
         );
         let stage_name = if self.stage == Stage::Vertex {
             "fragment"
@@ -265,6 +279,8 @@ impl Checker<'_> {
             "vertex"
         };
         let similar = self.similar_name(name);
+        let lang_help = self.other_language_builtin(name);
+        let es100 = self.lang.es100;
         let ended = self
             .ended
             .iter()
@@ -278,8 +294,12 @@ impl Checker<'_> {
             format!("`{name}` is not declared"),
         );
         d.label = "not declared in this scope".into();
+        if let Some(help) = lang_help {
+            d.help = Some(help);
+            return;
+        }
         match name {
-            "gl_FragColor" | "gl_FragData" => {
+            "gl_FragColor" | "gl_FragData" if !es100 => {
                 d.label = "a GLSL ES 1.00 built-in".into();
                 d.help = Some(format!(
                     "`{name}` does not exist in GLSL ES 3.00: declare an output such as `out vec4 fragColor;` and write to it"

@@ -223,6 +223,9 @@ impl Checker<'_> {
         if is_error(&a) {
             return error_expr(span);
         }
+        if op == UnaryOp::BitNot && self.es100_operator("~", span) {
+            return error_expr(span);
+        }
         let kind = a.ty.scalar_kind();
         let numeric = a.ty.is_numeric_basic() && kind != Some(ScalarKind::Bool);
         let ok = match op {
@@ -291,6 +294,11 @@ impl Checker<'_> {
 
     pub(in crate::check) fn binary(&mut self, op: BinaryOp, a: Expr, b: Expr, span: Span) -> Expr {
         if is_error(&a) || is_error(&b) {
+            return error_expr(span);
+        }
+        if matches!(op, BinaryOp::Eq | BinaryOp::NotEq)
+            && self.es100_array_operand(&a, op.as_str(), span)
+        {
             return error_expr(span);
         }
         let ty = match binary_result(op, &a.ty, &b.ty, &self.structs) {
@@ -365,6 +373,12 @@ impl Checker<'_> {
             return error_expr(span);
         }
         let op_text = op.map_or("=".to_string(), |o| format!("{}=", o.as_str()));
+        if op.is_some_and(Self::is_es300_operator) && self.es100_operator(&op_text, span) {
+            return error_expr(span);
+        }
+        if self.lang.es100 && op.is_none() && self.es100_array_operand(&lhs, "=", span) {
+            return error_expr(span);
+        }
         if !self.check_lvalue(&lhs, span, &op_text) {
             return error_expr(span);
         }
@@ -414,6 +428,9 @@ impl Checker<'_> {
 
     /// Whether an expression can be written; reports why not.
     pub(in crate::check) fn check_lvalue(&mut self, e: &Expr, at: Span, op: &str) -> bool {
+        if self.es100_writes_loop_index(e) {
+            return false;
+        }
         let why: Option<(String, Span)> = self.lvalue_problem(e);
         match why {
             None => true,
@@ -480,6 +497,8 @@ impl Checker<'_> {
                 }
                 self.lvalue_problem(b)
             }
+            // Already reported.
+            ExprKind::Error => None,
             ExprKind::Const(_) => Some(match self.file.slice(e.span).chars().next() {
                 Some(c) if c.is_ascii_alphabetic() || c == '_' => (
                     format!("cannot assign to constant `{}`", self.file.slice(e.span)),
@@ -537,12 +556,19 @@ impl Checker<'_> {
             });
             return error_expr(span);
         }
-        if let Some(what) = self.webgl_forbidden_operand(&a.ty) {
+        let what = match &a.ty {
+            Type::Struct(_) => Some("structs"),
+            t => self.webgl_forbidden_operand(t),
+        };
+        if let Some(what) = what {
             let d = self.error(
                 Code::WebglForbiddenOperand,
                 span,
                 format!("the ternary operator `?:` cannot select {what} in WebGL"),
             );
+            if what == "structs" {
+                d.help = Some("select the members one by one, or use `if`".into());
+            }
             d.label = format!("both sides are {what}");
             d.token = "?:".into();
             return error_expr(span);

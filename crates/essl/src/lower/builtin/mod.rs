@@ -1,6 +1,7 @@
 //! Built-in functions: math, geometry, matrices, relations and derivatives, one method per
 //! group of the specification; texture lookups are in `texture`.
 
+mod cube_int;
 mod texture;
 
 use naga::{Expression, Handle, Literal, MathFunction as Mf};

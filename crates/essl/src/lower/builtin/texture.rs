@@ -1,6 +1,6 @@
 //! Texture lookups: `texture*` with projection, explicit level, gradients, offsets and bias;
 //! `texelFetch*`, `textureSize`, shadow comparisons, and integer samplers (loaded texel by
-//! texel, as naga cannot filter them).
+//! texel, as naga cannot filter them; integer cube maps gathered, in [`super::cube_int`]).
 
 use naga::{Expression, Handle, Literal, MathFunction as Mf, SampleLevel};
 
@@ -53,6 +53,11 @@ impl FnCx<'_, '_> {
         span: Span,
     ) -> Result<Handle<Expression>, LowerError> {
         use BuiltinFn::*;
+        if let Some(r) =
+            self.per_sampler_element(args, ret, span, &|fx, a| fx.texture(op, a, ret, span))
+        {
+            return r;
+        }
         let Type::Sampler(st) = args[0].ty else {
             return Err(unsupported("a texture call without a sampler", span));
         };
@@ -81,6 +86,9 @@ impl FnCx<'_, '_> {
         );
         let extra = lookup_args(&vals, lod, grad, op.has_offset());
         let addr = self.texel_address(st, is_projective(op), vals[0], &args[1].ty, span);
+        if st.kind != ScalarKind::Float && st.dim == SamplerDim::Cube {
+            return Ok(self.integer_cube(image, sampler, st.kind, addr.coords, span));
+        }
         if st.kind != ScalarKind::Float {
             return self.integer_texture(image, st, addr, extra, span);
         }
@@ -300,9 +308,6 @@ impl FnCx<'_, '_> {
             array_index,
             ..
         } = addr;
-        if st.dim == SamplerDim::Cube {
-            return Err(unsupported("`texture` on an integer cube sampler", span));
-        }
         let level = match extra.level {
             Some(l) => self.cast(l, naga::ScalarKind::Sint, span),
             None => self.lit(Literal::I32(0)),

@@ -139,6 +139,7 @@ pub(crate) fn entry_point(
         blocks: vec![naga::Block::new()],
         locals: Vec::new(),
         params: Vec::new(),
+        param_samplers: Default::default(),
         hir_fn: None,
     };
     fx.emitter.start(&fx.f.expressions);
@@ -161,6 +162,7 @@ pub(crate) fn entry_point(
     }
     fx.user_outputs(plan, &mut outputs);
     if stage == Stage::Fragment {
+        fx.frag_color_outputs(&mut outputs);
         fx.frag_depth_output(&mut outputs);
     }
     if !outputs.members.is_empty() {
@@ -413,6 +415,32 @@ impl FnCx<'_, '_> {
                 let (name, binding) =
                     io_binding(g, centroid, leaves.len(), i, leaf_ty, loc, varying);
                 out.push(name, ty, binding, v);
+            }
+        }
+    }
+
+    /// A GLSL ES 1.00 fragment shader's `gl_FragColor` (location 0) or `gl_FragData[i]`
+    /// (location `i`), when it writes them.
+    fn frag_color_outputs(&mut self, out: &mut Outputs) {
+        let vec4 = Type::Vector(ScalarKind::Float, 4);
+        let interp = |location| naga::Binding::Location {
+            location,
+            interpolation: None,
+            sampling: None,
+            blend_src: None,
+            per_primitive: false,
+        };
+        if let Some(&var) = self.cx.builtins.get(&BuiltinVar::FragColor) {
+            let v = self.load_private(var);
+            let ty = self.ty(&vec4);
+            out.push("gl_FragColor".into(), ty, interp(0), v);
+        }
+        if let Some(&var) = self.cx.builtins.get(&BuiltinVar::FragData) {
+            for i in 0..self.cx.hir.frag_data_len.max(1) {
+                let p = self.leaf_pointer(var, &[i]);
+                let v = self.add(Expression::Load { pointer: p }, Span::default());
+                let ty = self.ty(&vec4);
+                out.push(format!("gl_FragData_{i}"), ty, interp(i), v);
             }
         }
     }

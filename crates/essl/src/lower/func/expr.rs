@@ -5,13 +5,12 @@
 use naga::{Expression, Handle, Literal, Span as NSpan, Statement};
 
 use super::operators::Operand;
+use super::FnCx;
 use super::{all_finite, global_constant, has_effects, int_zero_divisor, literal};
-use super::{FnCx, ParamLower};
 use crate::ast::BinaryOp;
 use crate::builtins::BuiltinVar;
 use crate::hir::{self, ConstValue, Expr, ExprKind, FuncId, ParamMode, Scalar};
 use crate::lower::{nspan, unsupported, GlobalLower, LowerError};
-use crate::reflect::PathStep;
 use crate::source::Span;
 use crate::types::{ScalarKind, Type};
 
@@ -20,6 +19,12 @@ impl<'c, 'a> FnCx<'c, 'a> {
     pub(crate) fn expr(&mut self, e: &Expr) -> Result<Handle<Expression>, LowerError> {
         let span = e.span;
         Ok(match &e.kind {
+            ExprKind::Error => {
+                return Err(LowerError::Internal {
+                    message: "an expression that failed to check reached the lowering".into(),
+                    span,
+                })
+            }
             ExprKind::Const(c) => self.constant(c, &e.ty, span),
             ExprKind::Local(_)
             | ExprKind::Param(_)
@@ -343,6 +348,11 @@ impl<'c, 'a> FnCx<'c, 'a> {
         ret: &Type,
         span: Span,
     ) -> Result<Handle<Expression>, LowerError> {
+        if let Some(r) =
+            self.per_sampler_element(args, ret, span, &|fx, a| fx.call(f, a, ret, span))
+        {
+            return r;
+        }
         let callee = &self.cx.hir.functions[f];
         let Some(function) = self.cx.functions[f] else {
             return Err(unsupported(
@@ -352,12 +362,18 @@ impl<'c, 'a> FnCx<'c, 'a> {
         };
         let mut arguments = Vec::new();
         let mut writebacks = Vec::new();
+        let mut sampler_arguments = Vec::new();
         for (arg, p) in args.iter().zip(callee.params.clone()) {
             if let Type::Sampler(_) = p.ty {
                 let (img, smp) = self.sampler(arg)?;
                 arguments.push(img);
                 arguments.push(smp);
                 continue;
+            }
+            for path in crate::lower::plan::sampler_paths(&p.ty, &self.cx.hir.structs) {
+                let (img, smp) = self.sampler_at(arg, &path)?;
+                sampler_arguments.push(img);
+                sampler_arguments.push(smp);
             }
             match p.mode {
                 ParamMode::In => arguments.push(self.expr(arg)?),
@@ -381,6 +397,7 @@ impl<'c, 'a> FnCx<'c, 'a> {
                 }
             }
         }
+        arguments.extend(sampler_arguments);
         self.flush_only();
         let result = if *ret != Type::Void {
             Some(
@@ -409,77 +426,5 @@ impl<'c, 'a> FnCx<'c, 'a> {
             Some(r) => r,
             None => self.lit(Literal::Bool(false)),
         })
-    }
-
-    /// The texture and sampler a sampler-typed expression denotes (resolved statically).
-    pub(crate) fn sampler(
-        &mut self,
-        e: &Expr,
-    ) -> Result<(Handle<Expression>, Handle<Expression>), LowerError> {
-        let mut path = Vec::new();
-        let mut cur = e;
-        loop {
-            match &cur.kind {
-                ExprKind::Index(b, i) => {
-                    let Some(k) = i.as_const().and_then(|c| c.as_int()) else {
-                        return Err(unsupported("a sampler selected at run time", e.span));
-                    };
-                    path.push(PathStep::Index(k as u32));
-                    cur = b;
-                }
-                ExprKind::Member(b, m) => {
-                    path.push(PathStep::Member(*m as u32));
-                    cur = b;
-                }
-                ExprKind::Global(g) => {
-                    path.reverse();
-                    return Ok(match self.cx.samplers.get(&(*g, path)).copied() {
-                        Some((t, s)) => (
-                            self.add(Expression::GlobalVariable(t), e.span),
-                            self.add(Expression::GlobalVariable(s), e.span),
-                        ),
-                        None => return Err(unsupported("an inactive sampler", e.span)),
-                    });
-                }
-                ExprKind::Param(i) => {
-                    if let ParamLower::Sampler(t, s) = self.params[*i] {
-                        if path.is_empty() {
-                            return Ok((
-                                self.add(Expression::FunctionArgument(t), e.span),
-                                self.add(Expression::FunctionArgument(s), e.span),
-                            ));
-                        }
-                    }
-                    return Err(unsupported("a sampler inside a parameter", e.span));
-                }
-                _ => return Err(unsupported("this sampler expression", e.span)),
-            }
-        }
-    }
-
-    /// Whether every sampler an expression names is bound (not an inactive one in dead code).
-    pub(crate) fn sampler_available(&self, e: &Expr) -> bool {
-        let mut path = Vec::new();
-        let mut cur = e;
-        loop {
-            match &cur.kind {
-                ExprKind::Index(b, i) => {
-                    let Some(k) = i.as_const().and_then(|c| c.as_int()) else {
-                        return true;
-                    };
-                    path.push(PathStep::Index(k as u32));
-                    cur = b;
-                }
-                ExprKind::Member(b, m) => {
-                    path.push(PathStep::Member(*m as u32));
-                    cur = b;
-                }
-                ExprKind::Global(g) => {
-                    path.reverse();
-                    return self.cx.samplers.contains_key(&(*g, path));
-                }
-                _ => return true,
-            }
-        }
     }
 }

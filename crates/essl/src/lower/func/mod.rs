@@ -12,6 +12,7 @@ mod entry;
 mod expr;
 mod operators;
 mod place;
+mod sampler;
 mod stmt;
 
 pub(crate) use entry::entry_point;
@@ -20,9 +21,9 @@ use naga::proc::Emitter;
 use naga::{Expression, Handle, Literal, Span as NSpan, Statement};
 
 use super::layout::{vsize, Repr};
-use super::{nspan, unsupported, LowerError, ModuleCx};
+use super::{nspan, GlobalLower, LowerError, ModuleCx};
 use crate::ast::BinaryOp;
-use crate::hir::{self, ConstValue, Expr, ExprKind, FuncId, ParamMode, Scalar, Stmt};
+use crate::hir::{self, ConstValue, Expr, FuncId, ParamMode, Scalar, Stmt};
 use crate::source::Span;
 use crate::types::{ScalarKind, Type};
 use crate::Stage;
@@ -62,6 +63,8 @@ pub(crate) struct FnCx<'c, 'a> {
     blocks: Vec<naga::Block>,
     locals: Vec<Option<Handle<naga::LocalVariable>>>,
     params: Vec<ParamLower>,
+    /// The texture and sampler arguments of samplers inside struct and array parameters.
+    param_samplers: sampler::ParamSamplers,
     hir_fn: Option<&'a hir::Function>,
 }
 
@@ -150,6 +153,7 @@ pub(crate) fn lower_function(cx: &mut ModuleCx, id: FuncId) -> Result<naga::Func
     };
     let mut params = Vec::new();
     let mut copies = Vec::new();
+    let mut sampler_args = Vec::new();
     for p in &hir_fn.params {
         match &p.ty {
             Type::Sampler(st) => {
@@ -167,13 +171,16 @@ pub(crate) fn lower_function(cx: &mut ModuleCx, id: FuncId) -> Result<naga::Func
                 });
                 params.push(ParamLower::Sampler(i, i + 1));
             }
-            t if t.contains_sampler(&cx.hir.structs) => {
-                return Err(unsupported(
-                    "a struct or array of samplers as a function parameter",
-                    p.span,
-                ));
-            }
             t => {
+                // A struct or array holding samplers: its value (samplers as placeholders), then
+                // a texture and a sampler argument per sampler in it.
+                for path in crate::lower::plan::sampler_paths(t, &cx.hir.structs) {
+                    let Some(st) = crate::lower::plan::sampler_type_at(t, &path, &cx.hir.structs)
+                    else {
+                        continue;
+                    };
+                    sampler_args.push((params.len(), path, st));
+                }
                 let ty = cx.types.logical(&mut cx.module, t);
                 let i = f.arguments.len() as u32;
                 match p.mode {
@@ -216,6 +223,23 @@ pub(crate) fn lower_function(cx: &mut ModuleCx, id: FuncId) -> Result<naga::Func
             }
         }
     }
+    let mut param_samplers = sampler::ParamSamplers::new();
+    for (param, path, st) in sampler_args {
+        let (img, smp) = super::sampler_types(&mut cx.module, st);
+        let i = f.arguments.len() as u32;
+        let name = format!("{}_{}", hir_fn.params[param].name, i);
+        f.arguments.push(naga::FunctionArgument {
+            name: Some(name.clone()),
+            ty: img,
+            binding: None,
+        });
+        f.arguments.push(naga::FunctionArgument {
+            name: Some(format!("{name}_sampler")),
+            ty: smp,
+            binding: None,
+        });
+        param_samplers.insert((param, path), (i, i + 1));
+    }
     if hir_fn.ret != Type::Void {
         let ty = cx.types.logical(&mut cx.module, &hir_fn.ret);
         f.result = Some(naga::FunctionResult { ty, binding: None });
@@ -227,6 +251,7 @@ pub(crate) fn lower_function(cx: &mut ModuleCx, id: FuncId) -> Result<naga::Func
         blocks: vec![naga::Block::new()],
         locals: vec![None; hir_fn.locals.len()],
         params,
+        param_samplers,
         hir_fn: Some(hir_fn),
     };
     fx.emitter.start(&fx.f.expressions);
@@ -241,6 +266,9 @@ pub(crate) fn lower_function(cx: &mut ModuleCx, id: FuncId) -> Result<naga::Func
             Span::default(),
         );
     }
+    if fx.cx.hir.entry == Some(id) {
+        fx.global_initializers()?;
+    }
     fx.stmts(&hir_fn.body)?;
     fx.flush();
     let body = fx.blocks.pop().expect("body");
@@ -250,6 +278,27 @@ pub(crate) fn lower_function(cx: &mut ModuleCx, id: FuncId) -> Result<naga::Func
 }
 
 impl<'c, 'a> FnCx<'c, 'a> {
+    /// The initializers that the private variables could not hold, stored at the start of
+    /// `main` in declaration order: those that are not constant expressions (GLSL ES 1.00 as
+    /// WebGL takes it: `float f = u_zero < 0.1 ? green : 0.0;`) and constants holding an
+    /// infinity or NaN.
+    fn global_initializers(&mut self) -> Result<(), LowerError> {
+        let m = self.cx.hir;
+        for (gi, g) in m.globals.iter().enumerate() {
+            let GlobalLower::Private(var) = self.cx.globals[gi] else {
+                continue;
+            };
+            let value = match &g.init {
+                Some(hir::Init::Expr(e)) => self.expr(e)?,
+                Some(hir::Init::Const(c)) if !all_finite(c) => self.constant(c, &g.ty, g.span),
+                _ => continue,
+            };
+            let pointer = self.add(Expression::GlobalVariable(var), g.span);
+            self.push(Statement::Store { pointer, value }, g.span);
+        }
+        Ok(())
+    }
+
     pub(crate) fn add(&mut self, e: Expression, span: Span) -> Handle<Expression> {
         if e.needs_pre_emit() {
             self.flush_only();
@@ -411,20 +460,7 @@ impl<'c, 'a> FnCx<'c, 'a> {
 
 /// Whether evaluating an expression has side effects (writes or user calls).
 pub(crate) fn has_effects(e: &Expr) -> bool {
-    match &e.kind {
-        ExprKind::Assign(..) | ExprKind::IncDec(..) | ExprKind::Call(..) => true,
-        ExprKind::Builtin(op, args) => {
-            *op == crate::builtins::BuiltinFn::Modf || args.iter().any(has_effects)
-        }
-        ExprKind::Unary(_, a) | ExprKind::Member(a, _) | ExprKind::Swizzle(a, _) => has_effects(a),
-        ExprKind::Binary(_, a, b) | ExprKind::Comma(a, b) | ExprKind::Index(a, b) => {
-            has_effects(a) || has_effects(b)
-        }
-        ExprKind::Select(c, a, b) => has_effects(c) || has_effects(a) || has_effects(b),
-        ExprKind::Construct(args) => args.iter().any(has_effects),
-        ExprKind::BlockMember(_, Some(i), _) => has_effects(i),
-        _ => false,
-    }
+    e.has_effects()
 }
 
 /// Whether `op` is an integer division or remainder by a constant with a zero component.

@@ -83,14 +83,17 @@ impl<'c, 'a> FnCx<'c, 'a> {
                 }
             }
             ExprKind::BlockMember(b, idx, m) => {
-                let Some((gv, reprs)) = self.cx.blocks[*b].clone() else {
+                let Some((gvs, reprs)) = self.cx.blocks[*b].clone() else {
                     return Ok(None);
                 };
-                let mut base = self.add(Expression::GlobalVariable(gv), span);
-                if let Some(i) = idx {
-                    let iv = self.expr(i)?;
-                    base = self.add(Expression::Access { base, index: iv }, span);
-                }
+                // The checker allows only constant indices into an array of blocks.
+                let k = idx
+                    .as_ref()
+                    .and_then(|i| i.as_const())
+                    .and_then(|c| c.as_int())
+                    .unwrap_or(0);
+                let gv = gvs[(k.max(0) as usize).min(gvs.len() - 1)];
+                let base = self.add(Expression::GlobalVariable(gv), span);
                 Place {
                     ptr: self.access_index(base, *m as u32, span),
                     repr: reprs[*m].clone(),

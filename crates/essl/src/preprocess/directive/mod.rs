@@ -36,14 +36,6 @@ const DIRECTIVES: &[&str] = &[
     "line",
 ];
 
-/// Extensions of WebGL 1 whose features GLSL ES 3.00 has built in.
-const PROMOTED: &[&str] = &[
-    "GL_EXT_draw_buffers",
-    "GL_EXT_frag_depth",
-    "GL_EXT_shader_texture_lod",
-    "GL_OES_standard_derivatives",
-];
-
 /// A directive line.
 pub(super) struct Directive {
     /// The `#`.

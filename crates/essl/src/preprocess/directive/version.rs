@@ -1,13 +1,14 @@
 //! Directives about the shader's language and position: `#version` (first, and which
 //! version), `#extension` (name, behavior, before any code) and `#line`.
 
-use super::{Directive, PROMOTED};
+use super::Directive;
 use crate::diagnostic::{Applicability, Diagnostic, Edit, Fix, Severity};
 use crate::diagnostic_code::Code;
 use crate::lex::{PpKind, PpToken, Punct};
 use crate::preprocess::expr::ExprParser;
 use crate::preprocess::{describe, ExtensionBehavior, LineDirective, Pp, Version};
 use crate::source::Span;
+use crate::target::Target;
 
 impl Pp<'_> {
     pub(super) fn d_extension(&mut self, d: &Directive) {
@@ -199,13 +200,32 @@ impl Pp<'_> {
                 name.span,
             )
             .with_label(if require { "required here" } else { "ignored" })
-            .with_help("remove the directive, or use an extension WebGL2 and essl support")
             .with_token(n);
-            if PROMOTED.contains(&n) {
-                e = e
+            e = match (crate::target::Extension::from_name(n), self.options.target) {
+                (Some(ext), Target::WebGl1) => e
+                    .with_note(format!(
+                        "the WebGL 1 context has not enabled `{}`",
+                        ext.webgl_name()
+                    ))
+                    .with_help(format!(
+                        "enable it in the context first: `gl.getExtension('{}')`",
+                        ext.webgl_name()
+                    )),
+                (Some(_), Target::WebGl2) if self.version == Version::Es300 => e
                     .with_note("its features are part of GLSL ES 3.00, under their core names")
-                    .with_fix(Fix::suggested("remove the directive", d.whole_line(), ""));
-            }
+                    .with_help("remove the directive")
+                    .with_fix(Fix::suggested("remove the directive", d.whole_line(), "")),
+                (Some(_), Target::WebGl2) => e
+                    .with_note(
+                        "WebGL 2 made this WebGL 1 extension part of GLSL ES 3.00 and offers it \
+                         to no GLSL ES 1.00 shader",
+                    )
+                    .with_help("write the shader in GLSL ES 3.00 (`#version 300 es`), which has its features built in"),
+                (None, _) => e.with_help(format!(
+                    "remove the directive, or use an extension {} and essl support",
+                    self.options.target.display()
+                )),
+            };
             self.push_diag(e);
         }
         true
@@ -339,30 +359,40 @@ impl Pp<'_> {
         self.set_version_macro(n);
         let number_span = args[0].span.to(args[if es { 1 } else { 0 }].span);
         match v {
-            Version::Es300 => {}
-            Version::Es100 => self.push_diag(
+            Version::Es100 => {}
+            Version::Es300 if self.options.target == Target::WebGl2 => {}
+            Version::Es300 => self.push_diag(
                 Diagnostic::error(
                     Code::UnsupportedVersion,
-                    "`#version 100` is GLSL ES 1.00: essl compiles GLSL ES 3.00",
-                    d.span(),
+                    "`#version 300 es` is GLSL ES 3.00, which WebGL 1 does not compile",
+                    number_span,
                 )
-                .with_label("GLSL ES 1.00")
-                .with_help("port the shader to `#version 300 es`: `in`/`out` instead of `attribute`/`varying`, `texture` instead of `texture2D`, an `out vec4` instead of `gl_FragColor`")
-                .with_fix(Fix::suggested("write `300 es`", number_span, "300 es"))
-                .with_token("100"),
+                .with_label("GLSL ES 3.00")
+                .with_note("a WebGL 1 context compiles GLSL ES 1.00 only; WebGL 2 compiles both")
+                .with_help("compile it for WebGL 2, or write it in GLSL ES 1.00 (remove the `#version` line, and use `attribute`/`varying`, `texture2D` and `gl_FragColor`)")
+                .with_token("300"),
             ),
             Version::Other(..) => self.push_diag(
                 Diagnostic::error(
                     Code::UnsupportedVersion,
                     format!(
-                        "GLSL version `{n}{}` is not supported: WebGL2 compiles `#version 300 es`",
-                        if es { " es" } else { "" }
+                        "GLSL version `{n}{}` is not supported by {}",
+                        if es { " es" } else { "" },
+                        self.options.target.display()
                     ),
                     number_span,
                 )
                 .with_label("not supported")
-                .with_help("WebGL2 shaders are GLSL ES 3.00: write `#version 300 es`")
-                .with_fix(Fix::suggested("write `300 es`", number_span, "300 es"))
+                .with_help(if self.options.target == Target::WebGl2 {
+                    "WebGL 2 compiles `#version 300 es` and `#version 100` (GLSL ES 1.00)"
+                } else {
+                    "WebGL 1 compiles `#version 100` (GLSL ES 1.00)"
+                })
+                .with_fix(if self.options.target == Target::WebGl2 {
+                    Fix::suggested("write `300 es`", number_span, "300 es")
+                } else {
+                    Fix::suggested("write `100`", number_span, "100")
+                })
                 .with_token(&*args[0].text),
             ),
         }

@@ -1,0 +1,133 @@
+//! `texture()` on an integer cube sampler (`isamplerCube`, `usamplerCube`). GL filters integer
+//! textures with NEAREST only, but naga (like WGSL and SPIR-V's sampled integer cubes) cannot
+//! sample or load an integer cube map; it can gather. So the lookup gathers each of the four
+//! components of the 2×2 texels around the sample point on the face the direction selects,
+//! works out which of them is nearest the point, as the hardware would for a 2D texture,
+//! and keeps that one. Level 0; a point on a face's edge may take its neighbour on the same
+//! face where GL would take the adjacent face's.
+
+use naga::{BinaryOperator as Op, Expression, Handle, Literal, MathFunction as Mf};
+
+use crate::lower::func::FnCx;
+use crate::source::Span;
+use crate::types::{ScalarKind, Type};
+
+impl FnCx<'_, '_> {
+    /// The texel of the integer cube `image` (through `sampler`) nearest the direction `dir`.
+    pub(super) fn integer_cube(
+        &mut self,
+        image: Handle<Expression>,
+        sampler: Handle<Expression>,
+        kind: ScalarKind,
+        dir: Handle<Expression>,
+        span: Span,
+    ) -> Handle<Expression> {
+        let uv = self.cube_face_uv(dir, span);
+        let level = self.lit(Literal::I32(0));
+        let size = self.add(
+            Expression::ImageQuery {
+                image,
+                query: naga::ImageQuery::Size { level: Some(level) },
+            },
+            span,
+        );
+        let size = self.cast(size, naga::ScalarKind::Float, span);
+        let scaled = self.binop(Op::Multiply, uv, size, span);
+        let half = self.lit(Literal::F32(0.5));
+        let half2 = self.splat(half, 2, span);
+        let corner = self.binop(Op::Subtract, scaled, half2, span);
+        let f = self.math(Mf::Fract, &[corner], span);
+        let hi = self.binop(Op::GreaterEqual, f, half2, span);
+        let (hi_x, hi_y) = (
+            self.access_index(hi, 0, span),
+            self.access_index(hi, 1, span),
+        );
+        let mut channels = Vec::new();
+        for component in [
+            naga::SwizzleComponent::X,
+            naga::SwizzleComponent::Y,
+            naga::SwizzleComponent::Z,
+            naga::SwizzleComponent::W,
+        ] {
+            let g = self.add(
+                Expression::ImageSample {
+                    image,
+                    sampler,
+                    gather: Some(component),
+                    coordinate: dir,
+                    array_index: None,
+                    offset: None,
+                    level: naga::SampleLevel::Zero,
+                    depth_ref: None,
+                    clamp_to_edge: false,
+                },
+                span,
+            );
+            // Gathered in the order (i0, j1), (i1, j1), (i1, j0), (i0, j0).
+            let [x, y, z, w] = [0, 1, 2, 3].map(|k| self.access_index(g, k, span));
+            let low_row = self.select(hi_x, z, w, span);
+            let high_row = self.select(hi_x, y, x, span);
+            channels.push(self.select(hi_y, high_row, low_row, span));
+        }
+        self.compose(&Type::Vector(kind, 4), channels, span)
+    }
+
+    /// `accept` where `condition` holds, else `reject`.
+    fn select(
+        &mut self,
+        condition: Handle<Expression>,
+        accept: Handle<Expression>,
+        reject: Handle<Expression>,
+        span: Span,
+    ) -> Handle<Expression> {
+        self.add(
+            Expression::Select {
+                condition,
+                accept,
+                reject,
+            },
+            span,
+        )
+    }
+
+    /// The 0..1 coordinates on the face a cube direction selects (GLSL ES 3.00 §3.8.10's
+    /// table of major axes: `sc`, `tc` over `|ma|`).
+    fn cube_face_uv(&mut self, dir: Handle<Expression>, span: Span) -> Handle<Expression> {
+        let [x, y, z] = [0, 1, 2].map(|k| self.access_index(dir, k, span));
+        let [ax, ay, az] = [x, y, z].map(|c| self.math(Mf::Abs, &[c], span));
+        let x_ge_y = self.binop(Op::GreaterEqual, ax, ay, span);
+        let x_ge_z = self.binop(Op::GreaterEqual, ax, az, span);
+        let x_major = self.binop(Op::LogicalAnd, x_ge_y, x_ge_z, span);
+        let y_major = self.binop(Op::GreaterEqual, ay, az, span);
+        let zero = self.lit(Literal::F32(0.0));
+        let [x_pos, y_pos, z_pos] = [x, y, z].map(|c| self.binop(Op::Greater, c, zero, span));
+        let [nx, ny, nz] = [x, y, z].map(|c| {
+            self.add(
+                Expression::Unary {
+                    op: naga::UnaryOperator::Negate,
+                    expr: c,
+                },
+                span,
+            )
+        });
+        // +X: (-z, -y); -X: (z, -y); +Y: (x, z); -Y: (x, -z); +Z: (x, -y); -Z: (-x, -y).
+        let sc_x = self.select(x_pos, nz, z, span);
+        let sc_z = self.select(z_pos, x, nx, span);
+        let tc_y = self.select(y_pos, z, nz, span);
+        let sc_yz = self.select(y_major, x, sc_z, span);
+        let sc = self.select(x_major, sc_x, sc_yz, span);
+        let tc_yz = self.select(y_major, tc_y, ny, span);
+        let tc = self.select(x_major, ny, tc_yz, span);
+        let ma_yz = self.select(y_major, ay, az, span);
+        let ma = self.select(x_major, ax, ma_yz, span);
+        let st = self.compose(&Type::Vector(ScalarKind::Float, 2), vec![sc, tc], span);
+        let ma2 = self.splat(ma, 2, span);
+        let ratio = self.binop(Op::Divide, st, ma2, span);
+        let one = self.lit(Literal::F32(1.0));
+        let one2 = self.splat(one, 2, span);
+        let shifted = self.binop(Op::Add, ratio, one2, span);
+        let half = self.lit(Literal::F32(0.5));
+        let half2 = self.splat(half, 2, span);
+        self.binop(Op::Multiply, shifted, half2, span)
+    }
+}

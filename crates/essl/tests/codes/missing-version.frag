@@ -1,2 +1,0 @@
-precision mediump float;
-void main() { gl_FragColor = vec4(1.0); }

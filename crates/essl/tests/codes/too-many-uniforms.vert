@@ -1,0 +1,3 @@
+// essl-target: webgl1
+attribute vec4 a_position;
+void main() { gl_Position = a_position; }

@@ -1,0 +1,5 @@
+attribute bool a_b;
+attribute vec4 a_position;
+void main() {
+  gl_Position = a_position;
+}

@@ -1,0 +1,5 @@
+attribute vec4 a;
+precision mediump float;
+void main() {
+  gl_FragColor = vec4(1.0);
+}

@@ -1,0 +1,5 @@
+attribute int a_i;
+attribute vec4 a_position;
+void main() {
+  gl_Position = a_position;
+}

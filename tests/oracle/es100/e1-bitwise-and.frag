@@ -1,0 +1,5 @@
+precision mediump float;
+void main() {
+  int a = 1 & 2;
+  gl_FragColor = vec4(float(a));
+}

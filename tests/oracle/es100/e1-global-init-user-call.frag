@@ -1,0 +1,6 @@
+precision mediump float;
+float f() { return 1.0; }
+float g = f();
+void main() {
+  gl_FragColor = vec4(g);
+}

@@ -1,0 +1,5 @@
+in vec4 a;
+attribute vec4 a_position;
+void main() {
+  gl_Position = a_position;
+}

@@ -1,0 +1,5 @@
+invariant gl_Position;
+attribute vec4 a_position;
+void main() {
+  gl_Position = a_position;
+}

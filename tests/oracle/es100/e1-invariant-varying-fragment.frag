@@ -1,0 +1,5 @@
+precision mediump float;
+invariant varying float v;
+void main() {
+  gl_FragColor = vec4(v);
+}

@@ -1,0 +1,5 @@
+precision mediump float;
+out vec4 o;
+void main() {
+  o = vec4(1.0);
+}

@@ -1,0 +1,7 @@
+precision mediump float;
+uniform B {
+  vec4 c;
+};
+void main() {
+  gl_FragColor = c;
+}

@@ -1,0 +1,5 @@
+attribute vec4 a_position;
+varying bool v;
+void main() {
+  gl_Position = a_position;
+}

@@ -1,0 +1,6 @@
+attribute vec4 a_position;
+varying float v;
+void main() {
+  v = 1.0;
+  gl_Position = a_position;
+}

@@ -1,0 +1,9 @@
+precision mediump float;
+uniform int n;
+void main() {
+  float a[3];
+  a[0] = 1.0;
+  a[1] = 1.0;
+  a[2] = 1.0;
+  gl_FragColor = vec4(a[n]);
+}

@@ -1,0 +1,10 @@
+precision mediump float;
+uniform float a[8];
+uniform int n;
+void main() {
+  float s = 0.0;
+  for (int i = 0; i < 3; i++) {
+    s += a[i * 2 + 1] + a[i - (i / 2)];
+  }
+  gl_FragColor = vec4(s);
+}

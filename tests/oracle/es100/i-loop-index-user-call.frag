@@ -1,0 +1,11 @@
+precision mediump float;
+uniform float a[8];
+int g(int x) { return x; }
+uniform int n;
+void main() {
+  float s = 0.0;
+  for (int i = 0; i < 3; i++) {
+    s += a[g(i)];
+  }
+  gl_FragColor = vec4(s);
+}

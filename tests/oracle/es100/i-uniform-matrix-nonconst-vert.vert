@@ -1,0 +1,6 @@
+attribute vec4 a_position;
+uniform int n;
+uniform mat4 m;
+void main() {
+  gl_Position = m[n];
+}

@@ -1,0 +1,6 @@
+#version 300 es
+in vec4 a_position;
+uniform float u_k[gl_MaxDrawBuffers];
+void main() {
+  gl_Position = a_position * u_k[0];
+}

@@ -1,0 +1,11 @@
+precision mediump float;
+uniform float u;
+uniform int n;
+void main() {
+  float s = 0.0;
+  for (;;) {
+    s += 1.0;
+    break;
+  }
+  gl_FragColor = vec4(s);
+}

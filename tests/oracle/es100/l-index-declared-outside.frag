@@ -1,0 +1,11 @@
+precision mediump float;
+uniform float u;
+uniform int n;
+void main() {
+  int i;
+  float s = 0.0;
+  for (i = 0; i < 5; i++) {
+    s += 1.0;
+  }
+  gl_FragColor = vec4(s);
+}

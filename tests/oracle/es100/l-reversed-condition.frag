@@ -1,0 +1,10 @@
+precision mediump float;
+uniform float u;
+uniform int n;
+void main() {
+  float s = 0.0;
+  for (int i = 0; 5 > i; i++) {
+    s += 1.0;
+  }
+  gl_FragColor = vec4(s);
+}

@@ -1,0 +1,24 @@
+attribute vec4 a_position;
+varying mat3 v0;
+varying mat3 v1;
+varying mat3 v2;
+varying mat3 v3;
+varying mat3 v4;
+varying mat3 v5;
+varying mat3 v6;
+varying mat3 v7;
+varying mat3 v8;
+varying mat3 v9;
+void main() {
+  v0 = mat3(0.0);
+  v1 = mat3(0.0);
+  v2 = mat3(0.0);
+  v3 = mat3(0.0);
+  v4 = mat3(0.0);
+  v5 = mat3(0.0);
+  v6 = mat3(0.0);
+  v7 = mat3(0.0);
+  v8 = mat3(0.0);
+  v9 = mat3(0.0);
+  gl_Position = a_position;
+}

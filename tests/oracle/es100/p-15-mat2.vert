@@ -1,0 +1,34 @@
+attribute vec4 a_position;
+varying mat2 v0;
+varying mat2 v1;
+varying mat2 v2;
+varying mat2 v3;
+varying mat2 v4;
+varying mat2 v5;
+varying mat2 v6;
+varying mat2 v7;
+varying mat2 v8;
+varying mat2 v9;
+varying mat2 v10;
+varying mat2 v11;
+varying mat2 v12;
+varying mat2 v13;
+varying mat2 v14;
+void main() {
+  v0 = mat2(0.0);
+  v1 = mat2(0.0);
+  v2 = mat2(0.0);
+  v3 = mat2(0.0);
+  v4 = mat2(0.0);
+  v5 = mat2(0.0);
+  v6 = mat2(0.0);
+  v7 = mat2(0.0);
+  v8 = mat2(0.0);
+  v9 = mat2(0.0);
+  v10 = mat2(0.0);
+  v11 = mat2(0.0);
+  v12 = mat2(0.0);
+  v13 = mat2(0.0);
+  v14 = mat2(0.0);
+  gl_Position = a_position;
+}

@@ -1,0 +1,37 @@
+precision mediump float;
+varying mat2 v0;
+varying mat2 v1;
+varying mat2 v2;
+varying mat2 v3;
+varying mat2 v4;
+varying mat2 v5;
+varying mat2 v6;
+varying mat2 v7;
+varying mat2 v8;
+varying mat2 v9;
+varying mat2 v10;
+varying mat2 v11;
+varying mat2 v12;
+varying mat2 v13;
+varying mat2 v14;
+varying mat2 v15;
+void main() {
+  vec4 s = vec4(0.0);
+  s.x += v0[0][0];
+  s.x += v1[0][0];
+  s.x += v2[0][0];
+  s.x += v3[0][0];
+  s.x += v4[0][0];
+  s.x += v5[0][0];
+  s.x += v6[0][0];
+  s.x += v7[0][0];
+  s.x += v8[0][0];
+  s.x += v9[0][0];
+  s.x += v10[0][0];
+  s.x += v11[0][0];
+  s.x += v12[0][0];
+  s.x += v13[0][0];
+  s.x += v14[0][0];
+  s.x += v15[0][0];
+  gl_FragColor = s;
+}

@@ -1,0 +1,37 @@
+precision mediump float;
+varying vec2 v0;
+varying vec2 v1;
+varying vec2 v2;
+varying vec2 v3;
+varying vec2 v4;
+varying vec2 v5;
+varying vec2 v6;
+varying vec2 v7;
+varying vec2 v8;
+varying vec2 v9;
+varying vec2 v10;
+varying vec2 v11;
+varying vec2 v12;
+varying vec2 v13;
+varying vec2 v14;
+varying vec2 v15;
+void main() {
+  vec4 s = vec4(0.0);
+  s.x += v0.x;
+  s.x += v1.x;
+  s.x += v2.x;
+  s.x += v3.x;
+  s.x += v4.x;
+  s.x += v5.x;
+  s.x += v6.x;
+  s.x += v7.x;
+  s.x += v8.x;
+  s.x += v9.x;
+  s.x += v10.x;
+  s.x += v11.x;
+  s.x += v12.x;
+  s.x += v13.x;
+  s.x += v14.x;
+  s.x += v15.x;
+  gl_FragColor = s;
+}

@@ -1,0 +1,36 @@
+attribute vec4 a_position;
+varying vec2 v0;
+varying vec2 v1;
+varying vec2 v2;
+varying vec2 v3;
+varying vec2 v4;
+varying vec2 v5;
+varying vec2 v6;
+varying vec2 v7;
+varying vec2 v8;
+varying vec2 v9;
+varying vec2 v10;
+varying vec2 v11;
+varying vec2 v12;
+varying vec2 v13;
+varying vec2 v14;
+varying vec2 v15;
+void main() {
+  v0 = vec2(0.0);
+  v1 = vec2(0.0);
+  v2 = vec2(0.0);
+  v3 = vec2(0.0);
+  v4 = vec2(0.0);
+  v5 = vec2(0.0);
+  v6 = vec2(0.0);
+  v7 = vec2(0.0);
+  v8 = vec2(0.0);
+  v9 = vec2(0.0);
+  v10 = vec2(0.0);
+  v11 = vec2(0.0);
+  v12 = vec2(0.0);
+  v13 = vec2(0.0);
+  v14 = vec2(0.0);
+  v15 = vec2(0.0);
+  gl_Position = a_position;
+}

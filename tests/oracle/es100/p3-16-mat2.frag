@@ -1,0 +1,39 @@
+#version 300 es
+precision mediump float;
+out vec4 o;
+in mat2 v0;
+in mat2 v1;
+in mat2 v2;
+in mat2 v3;
+in mat2 v4;
+in mat2 v5;
+in mat2 v6;
+in mat2 v7;
+in mat2 v8;
+in mat2 v9;
+in mat2 v10;
+in mat2 v11;
+in mat2 v12;
+in mat2 v13;
+in mat2 v14;
+in mat2 v15;
+void main() {
+  vec4 s = vec4(0.0);
+  s.x += v0[0][0];
+  s.x += v1[0][0];
+  s.x += v2[0][0];
+  s.x += v3[0][0];
+  s.x += v4[0][0];
+  s.x += v5[0][0];
+  s.x += v6[0][0];
+  s.x += v7[0][0];
+  s.x += v8[0][0];
+  s.x += v9[0][0];
+  s.x += v10[0][0];
+  s.x += v11[0][0];
+  s.x += v12[0][0];
+  s.x += v13[0][0];
+  s.x += v14[0][0];
+  s.x += v15[0][0];
+  o = s;
+}

@@ -1,0 +1,37 @@
+#version 300 es
+in vec4 a_position;
+out mat2 v0;
+out mat2 v1;
+out mat2 v2;
+out mat2 v3;
+out mat2 v4;
+out mat2 v5;
+out mat2 v6;
+out mat2 v7;
+out mat2 v8;
+out mat2 v9;
+out mat2 v10;
+out mat2 v11;
+out mat2 v12;
+out mat2 v13;
+out mat2 v14;
+out mat2 v15;
+void main() {
+  v0 = mat2(0.0);
+  v1 = mat2(0.0);
+  v2 = mat2(0.0);
+  v3 = mat2(0.0);
+  v4 = mat2(0.0);
+  v5 = mat2(0.0);
+  v6 = mat2(0.0);
+  v7 = mat2(0.0);
+  v8 = mat2(0.0);
+  v9 = mat2(0.0);
+  v10 = mat2(0.0);
+  v11 = mat2(0.0);
+  v12 = mat2(0.0);
+  v13 = mat2(0.0);
+  v14 = mat2(0.0);
+  v15 = mat2(0.0);
+  gl_Position = a_position;
+}

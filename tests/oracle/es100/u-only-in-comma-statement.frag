@@ -1,0 +1,8 @@
+precision mediump float;
+uniform float u_dead;
+uniform float u_used;
+void main() {
+  float a;
+  a = 1.0, u_dead;
+  gl_FragColor = vec4(a + u_used);
+}

@@ -1,0 +1,5 @@
+attribute vec4 a_position;
+attribute float x;
+void main() {
+  gl_Position = a_position;
+}

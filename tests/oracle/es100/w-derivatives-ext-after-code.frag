@@ -1,0 +1,5 @@
+precision mediump float;
+void main() {
+  gl_FragColor = vec4(dFdx(1.0));
+}
+#extension GL_OES_standard_derivatives : enable

@@ -1,0 +1,5 @@
+#extension GL_OES_standard_derivatives : warn
+precision mediump float;
+void main() {
+  gl_FragColor = vec4(dFdx(1.0));
+}

@@ -1,0 +1,5 @@
+#extension GL_EXT_draw_buffers : require
+precision mediump float;
+void main() {
+  gl_FragData[1] = vec4(1.0);
+}

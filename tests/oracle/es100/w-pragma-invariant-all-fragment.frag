@@ -1,0 +1,5 @@
+#pragma STDGL invariant(all)
+precision mediump float;
+void main() {
+  gl_FragColor = vec4(1.0);
+}

@@ -1,0 +1,17 @@
+precision mediump float;
+struct S0 {
+  float x;
+};
+struct S1 {
+  S0 s;
+};
+struct S2 {
+  S1 s;
+};
+struct S3 {
+  S2 s;
+};
+uniform S3 u;
+void main() {
+  gl_FragColor = vec4(u.s.s.s.x);
+}

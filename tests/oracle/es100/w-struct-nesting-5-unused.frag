@@ -1,0 +1,19 @@
+precision mediump float;
+struct S0 {
+  float x;
+};
+struct S1 {
+  S0 s;
+};
+struct S2 {
+  S1 s;
+};
+struct S3 {
+  S2 s;
+};
+struct S4 {
+  S3 s;
+};
+void main() {
+  gl_FragColor = vec4(1.0);
+}

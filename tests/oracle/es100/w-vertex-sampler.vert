@@ -1,0 +1,5 @@
+attribute vec4 a_position;
+uniform sampler2D s;
+void main() {
+  gl_Position = a_position + texture2DLod(s, vec2(0.5), 0.0);
+}
