@@ -127,8 +127,11 @@ impl Context {
         GENERIC
             .iter()
             .any(|&t| self.bindings.buffer(t) == Some(buffer))
-            || (0..crate::context::MAX_UNIFORM_BUFFER_BINDINGS as usize)
-                .any(|i| self.bindings.uniform_range(i).is_some_and(|r| r.buffer == buffer))
+            || (0..crate::context::MAX_UNIFORM_BUFFER_BINDINGS as usize).any(|i| {
+                self.bindings
+                    .uniform_range(i)
+                    .is_some_and(|r| r.buffer == buffer)
+            })
             || self.vao().element_buffer == Some(buffer)
     }
 

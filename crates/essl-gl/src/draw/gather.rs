@@ -310,8 +310,9 @@ impl Context {
                 return self.fail(gl::INVALID_OPERATION, f, msg);
             }
         }
-        // WebGL 2 §5.24: a draw buffer that would be written needs an output of the shader.
-        if self.state.color_mask.iter().any(|&m| m) {
+        // WebGL 2 §5.24: a draw buffer that would be written needs an output of the shader
+        // (nothing is written while the rasterizer discards).
+        if !self.state.rasterizer_discard && self.state.color_mask.iter().any(|&m| m) {
             let missing = formats.colors.iter().enumerate().find(|(i, c)| {
                 c.is_some() && !linked.outputs.iter().any(|&(l, _)| l as usize == *i)
             });

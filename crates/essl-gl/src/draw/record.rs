@@ -126,6 +126,12 @@ impl Context {
                 return;
             }
         };
+        // A capturing draw writes its buffers as storage, which wgpu does not allow in a pass
+        // that also reads them as vertices, indices or uniforms: it gets a pass of its own.
+        let captures = call.capture.is_some();
+        if captures {
+            self.frame.end_pass();
+        }
         self.record_draw(
             &call,
             &target,
@@ -135,6 +141,9 @@ impl Context {
             vertex.bindings,
             range,
         );
+        if captures {
+            self.frame.end_pass();
+        }
     }
 
     /// The pipeline key of the draw from the GL state, and the pass values that go with it.
