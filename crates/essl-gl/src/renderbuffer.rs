@@ -14,6 +14,9 @@ use crate::texture::{internal_format, InternalFormat};
 /// A renderbuffer's storage.
 pub(crate) struct RenderbufferStorage {
     pub(crate) format: InternalFormat,
+    /// The internal format as asked (`RENDERBUFFER_INTERNAL_FORMAT`: WebGL's
+    /// `DEPTH_STENCIL` stays `DEPTH_STENCIL`, as Chromium answers).
+    pub(crate) asked: u32,
     pub(crate) width: u32,
     pub(crate) height: u32,
     /// `RENDERBUFFER_SAMPLES`: 0 for single-sampled storage.
@@ -205,6 +208,7 @@ impl Context {
             .expect("bound renderbuffers are live");
         r.storage = Some(RenderbufferStorage {
             format,
+            asked: internal,
             width: w as u32,
             height: h as u32,
             samples,
@@ -249,7 +253,7 @@ impl Context {
             gl::RENDERBUFFER_WIDTH => int(s.map_or(0, |s| s.width)),
             gl::RENDERBUFFER_HEIGHT => int(s.map_or(0, |s| s.height)),
             gl::RENDERBUFFER_INTERNAL_FORMAT => {
-                Some(Parameter::Enum(s.map_or(gl::RGBA4, |s| s.format.gl)))
+                Some(Parameter::Enum(s.map_or(gl::RGBA4, |s| s.asked)))
             }
             gl::RENDERBUFFER_SAMPLES => int(s.map_or(0, |s| s.samples)),
             gl::RENDERBUFFER_RED_SIZE => int(bits.red),

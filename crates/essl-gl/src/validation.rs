@@ -267,11 +267,8 @@ impl ProgramChecks {
                 (Stage::Fragment, &src.fragment),
             ] {
                 let name = name.clone().unwrap_or_else(|| stage.as_str().to_string());
-                let shader = essl::compile(
-                    SourceFile::new(name, text.as_str()),
-                    stage,
-                    &src.options,
-                );
+                let shader =
+                    essl::compile(SourceFile::new(name, text.as_str()), stage, &src.options);
                 preconditions.extend(essl_lint::preconditions(&shader));
                 files.push((stage, shader.file));
             }

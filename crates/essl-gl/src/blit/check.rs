@@ -5,6 +5,7 @@ use crate::context::Context;
 use crate::framebuffer::{DrawImages, ReadSurface, SurfaceImage};
 use crate::gl;
 use crate::pipeline::ClearKind;
+use crate::texture::{bit_sizes, InternalFormat};
 
 /// Whether two images are the same subresource.
 fn same_image(a: &SurfaceImage, b: &SurfaceImage) -> bool {
@@ -53,11 +54,10 @@ impl Context {
         };
         let [sx0, sy0, sx1, sy1] = src.0;
         let [dx0, dy0, dx1, dy1] = dst.0;
-        let same_rect = (sx1 - sx0, sy1 - sy0) == (dx1 - dx0, dy1 - dy0);
-        if read_samples > 1 && !same_rect {
+        if read_samples > 1 && [sx0, sy0, sx1, sy1] != [dx0, dy0, dx1, dy1] {
             return fail(
                 self,
-                "a multisampled read framebuffer needs rectangles of one size",
+                "a multisampled read framebuffer needs the same rectangle in both",
             );
         }
         let mut plan = BlitPlan {
@@ -79,7 +79,7 @@ impl Context {
                             "the read and draw buffers' formats are of other kinds",
                         );
                     }
-                    if read_samples > 1 && to.format.gpu_format() != from.format.gpu_format() {
+                    if read_samples > 1 && !same_format(&from.format, &to.format) {
                         return fail(self, "a resolve needs the same format");
                     }
                     if same_image(from, to) {
@@ -115,4 +115,13 @@ impl Context {
         }
         Some(plan)
     }
+}
+
+/// Whether two formats are the same for a resolve (ES 3.0 §4.3.3: "identical"): the same
+/// base format, bit sizes, component type and encoding, whatever the GPU stores them in.
+fn same_format(a: &InternalFormat, b: &InternalFormat) -> bool {
+    a.gpu_format() == b.gpu_format()
+        && a.base == b.base
+        && a.srgb == b.srgb
+        && bit_sizes(a) == bit_sizes(b)
 }

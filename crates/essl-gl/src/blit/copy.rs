@@ -56,9 +56,14 @@ fn copyable(src: &InternalFormat, dst: &InternalFormat) -> bool {
     );
     let (s, d) = (bit_sizes(src), bit_sizes(dst));
     unsized_format
-        || [(s.red, d.red), (s.green, d.green), (s.blue, d.blue), (s.alpha, d.alpha)]
-            .iter()
-            .all(|&(s, d)| d == 0 || s == d)
+        || [
+            (s.red, d.red),
+            (s.green, d.green),
+            (s.blue, d.blue),
+            (s.alpha, d.alpha),
+        ]
+        .iter()
+        .all(|&(s, d)| d == 0 || s == d)
 }
 
 /// Whether a format holds floats (`R16F` … `RGBA32F`, `R11F_G11F_B10F`).
@@ -121,6 +126,13 @@ impl Context {
         }
         if !self.check_copy_source(&format, F) {
             return;
+        }
+        if self.reads_image(id, level as u32, face as u32) {
+            return self.error(
+                gl::INVALID_OPERATION,
+                F,
+                "the read buffer is the destination image: a feedback loop",
+            );
         }
         let (w, h) = (width as u32, height as u32);
         let data = vec![0; w as usize * h as usize * format.texel_size()];
@@ -226,7 +238,33 @@ impl Context {
         if !self.check_copy_source(&l.format, f) {
             return;
         }
+        let layer = if l.depth > 1 || matches!(bind, gl::TEXTURE_3D | gl::TEXTURE_2D_ARRAY) {
+            oz as u32
+        } else {
+            face as u32
+        };
+        if self.reads_image(id, dest.level as u32, layer) {
+            return self.error(
+                gl::INVALID_OPERATION,
+                f,
+                "the read buffer is the destination image: a feedback loop",
+            );
+        }
         self.copy_rect(id, &dest, rect);
+    }
+
+    /// Whether the read framebuffer's read buffer is `layer` (cube face or layer) of `level`
+    /// of texture `id`.
+    fn reads_image(&self, id: crate::objects::Id, level: u32, layer: u32) -> bool {
+        let [_, read] = self.bindings.framebuffers();
+        let Some(fb) = read.and_then(|fb| self.objects.framebuffers.get_any(fb)) else {
+            return false;
+        };
+        let attached = fb
+            .read_buffer
+            .checked_sub(gl::COLOR_ATTACHMENT0)
+            .and_then(|i| fb.colors.get(i as usize).copied().flatten());
+        attached == Some(Attachment::Texture { id, level, layer })
     }
 
     /// Checks the read framebuffer for a copy into a texture of format `dst`.

@@ -429,11 +429,12 @@ impl Context {
             Some(_) if src == gl::BACK => {
                 self.error(gl::INVALID_OPERATION, F, "a framebuffer object has no BACK")
             }
-            Some(_) if src >= gl::COLOR_ATTACHMENT0 + self.limits.max_color_attachments => self.error(
-                gl::INVALID_OPERATION,
-                F,
-                "attachment ≥ MAX_COLOR_ATTACHMENTS",
-            ),
+            Some(_) if src >= gl::COLOR_ATTACHMENT0 + self.limits.max_color_attachments => self
+                .error(
+                    gl::INVALID_OPERATION,
+                    F,
+                    "attachment ≥ MAX_COLOR_ATTACHMENTS",
+                ),
             Some(id) => {
                 self.objects
                     .framebuffers

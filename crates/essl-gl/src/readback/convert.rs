@@ -73,6 +73,17 @@ pub(super) fn decode(f: &InternalFormat, bytes: &[u8]) -> Texel {
             Comp::I32 => ints[c] = i32::from_ne_bytes([b[0], b[1], b[2], b[3]]) as i64,
         }
     }
+    // Formats with fewer bits than the GPU stores them in (RGB565, RGBA4, RGB5_A1) read as
+    // their own bits hold the value: rounded to the nearest of their steps.
+    if f.comp == Comp::Unorm8 {
+        let b = crate::texture::bit_sizes(f);
+        for (c, bits) in [b.red, b.green, b.blue, b.alpha].into_iter().enumerate() {
+            if (1..8).contains(&bits) {
+                let steps = ((1u32 << bits) - 1) as f32;
+                floats[c] = (floats[c] * steps).round() / steps;
+            }
+        }
+    }
     // Legacy formats read as their GL components (luminance in R, G, B).
     if f.expand == Expand::Alpha {
         floats = [0.0, 0.0, 0.0, floats[3]];
@@ -109,6 +120,8 @@ pub(crate) fn native_pair(f: &InternalFormat) -> (u32, u32) {
         (_, _, Expand::Luminance | Expand::Alpha | Expand::LuminanceAlpha) => gl::RGBA,
         (1, false, _) => gl::RED,
         (2, false, _) => gl::RG,
+        // 8-bit RGB reads as RGBA (Chromium's answer; ES 3.0 leaves the choice open).
+        (3, false, _) if f.comp == Comp::Unorm8 && f.gl != gl::RGB565 => gl::RGBA,
         (3, false, _) => gl::RGB,
         (1, true, _) => gl::RED_INTEGER,
         (2, true, _) => gl::RG_INTEGER,

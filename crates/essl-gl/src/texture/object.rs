@@ -33,6 +33,29 @@ impl Level {
             uploaded: false,
         }
     }
+
+    /// A level image with no data given (`null` pixels, `texStorage*`): zeros, but depth 1.0
+    /// in depth formats, as Chromium initializes them (a shadow lookup of a depth texture
+    /// nothing was drawn into passes).
+    pub(crate) fn blank(size: [u32; 3], format: InternalFormat) -> Self {
+        use super::format::Packing;
+        let texels = size[0] as usize * size[1] as usize * size[2] as usize;
+        let one: &[u8] = match format.packing {
+            Packing::Depth16 => &[0xFF; 2],
+            Packing::Depth24 => &[0xFF; 4],
+            Packing::Depth32F => &const { 1.0f32.to_ne_bytes() },
+            Packing::Depth24Stencil8 => &const { 0xFFFF_FF00u32.to_ne_bytes() },
+            Packing::Depth32FStencil8 => {
+                &const {
+                    let d = 1.0f32.to_ne_bytes();
+                    [d[0], d[1], d[2], d[3], 0, 0, 0, 0]
+                }
+            }
+            _ => return Level::new(size, format, vec![0; texels * format.texel_size()]),
+        };
+        debug_assert_eq!(one.len(), format.texel_size());
+        Level::new(size, format, one.repeat(texels))
+    }
 }
 
 /// A texture's parameters (`tex_parameteri`/`tex_parameterf`): how it is sampled, and the

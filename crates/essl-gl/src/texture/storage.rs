@@ -109,8 +109,7 @@ impl Context {
                 d as u32
             };
             for face in 0..faces {
-                let data = vec![0; lw as usize * lh as usize * ld as usize * f.texel_size()];
-                t.set_level(face, level, Level::new([lw, lh, ld], f, data));
+                t.set_level(face, level, Level::blank([lw, lh, ld], f));
             }
         }
         t.immutable_levels = Some(levels as u32);

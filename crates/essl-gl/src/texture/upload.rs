@@ -335,7 +335,7 @@ impl Context {
             return self.error(gl::INVALID_OPERATION, function, "immutable texture");
         }
         let (w, h, d) = (width as u32, height as u32, depth as u32);
-        let data = match pixels {
+        let level_image = match pixels {
             Some(src) => {
                 let three_d = matches!(bind, gl::TEXTURE_3D | gl::TEXTURE_2D_ARRAY);
                 let pixels = ClientPixels {
@@ -346,18 +346,18 @@ impl Context {
                     three_d,
                 };
                 match self.unpack_pixels(pixels, &f, function) {
-                    Some(d) => d,
+                    Some(data) => Level::new([w, h, d], f, data),
                     None => return,
                 }
             }
-            None => vec![0; w as usize * h as usize * d as usize * f.texel_size()],
+            None => Level::blank([w, h, d], f),
         };
         let t = self
             .objects
             .textures
             .get_mut(id)
             .expect("bound textures are live");
-        t.set_level(face, level as u32, Level::new([w, h, d], f, data));
+        t.set_level(face, level as u32, level_image);
     }
 
     /// Replaces a region of a level of a 2D texture or cube map face (`texSubImage2D`).
