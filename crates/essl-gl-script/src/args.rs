@@ -17,9 +17,13 @@ pub enum CallError {
     /// An argument of the wrong kind, or too few (`TypeError`).
     #[error("TypeError: {0}")]
     Type(String),
-    /// A method this replay does not have, or an overload it cannot express.
+    /// An overload the replay cannot express (a `TexImageSource`), or `null` where only a
+    /// browser's bindings answer.
     #[error("{0}")]
     Unsupported(String),
+    /// A name that is not a method of `WebGL2RenderingContext`.
+    #[error("`{0}` is not a method of WebGL2RenderingContext")]
+    UnknownMethod(String),
 }
 
 /// The arguments of one call, taken in order.

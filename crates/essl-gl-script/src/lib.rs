@@ -30,6 +30,7 @@ pub mod value;
 use std::path::PathBuf;
 
 pub use args::CallError;
+pub use calls::call;
 pub use compare::{compare, Comparison, Mismatch};
 pub use results::{Failure, Phase, Results};
 pub use run::{replay, Replay, ReplayOptions};

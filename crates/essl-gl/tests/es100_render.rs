@@ -14,8 +14,7 @@ const SIZE: u32 = 32;
 
 /// The harness's quad: two triangles, vec3 positions.
 const POSITIONS: [f32; 18] = [
-    1.0, 1.0, 0.0, -1.0, 1.0, 0.0, -1.0, -1.0, 0.0, 1.0, 1.0, 0.0, -1.0, -1.0, 0.0, 1.0, -1.0,
-    0.0,
+    1.0, 1.0, 0.0, -1.0, 1.0, 0.0, -1.0, -1.0, 0.0, 1.0, 1.0, 0.0, -1.0, -1.0, 0.0, 1.0, -1.0, 0.0,
 ];
 /// The harness's texture coordinates, one vec2 per vertex.
 const TEX_COORDS: [f32; 12] = [1.0, 1.0, 0.0, 1.0, 0.0, 0.0, 1.0, 1.0, 0.0, 0.0, 1.0, 0.0];

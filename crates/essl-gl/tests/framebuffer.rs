@@ -547,25 +547,9 @@ fn an_integer_attachment_holds_ids_read_back_as_integers() {
     ctx.draw_arrays(gl::TRIANGLES, 0, 3);
     assert_eq!(ctx.get_error(), gl::NO_ERROR, "{:?}", ctx.error_message());
     let mut out = [0u32; 4];
-    ctx.read_pixels(
-        0,
-        0,
-        1,
-        1,
-        gl::RGBA_INTEGER,
-        gl::UNSIGNED_INT,
-        &mut out,
-    );
+    ctx.read_pixels(0, 0, 1, 1, gl::RGBA_INTEGER, gl::UNSIGNED_INT, &mut out);
     assert_eq!(out, [3_000_000_000, 0, 0, 1]);
-    ctx.read_pixels(
-        3,
-        3,
-        1,
-        1,
-        gl::RGBA_INTEGER,
-        gl::UNSIGNED_INT,
-        &mut out,
-    );
+    ctx.read_pixels(3, 3, 1, 1, gl::RGBA_INTEGER, gl::UNSIGNED_INT, &mut out);
     assert_eq!(out, [7, 0, 0, 1]);
     // RGBA/UNSIGNED_BYTE cannot read an integer buffer.
     let mut px = [0u8; 4];

@@ -91,6 +91,15 @@ pub fn seeds() -> Option<PathBuf> {
     find("ESSL_SEEDS", "seeds", "the seed articles")
 }
 
+/// The WebGL 1 and 2 specifications and IDL (`ESSL_SPECS`, or `../shared/specs`), or `None`
+/// after a skip message.
+///
+/// # Panics
+/// When the folder is missing and `ESSL_REQUIRE_CORPORA=1`.
+pub fn specs() -> Option<PathBuf> {
+    find("ESSL_SPECS", "specs", "the WebGL specifications")
+}
+
 /// One corpus file (`corpora()/NAME`), or `None` after a skip message.
 ///
 /// # Panics

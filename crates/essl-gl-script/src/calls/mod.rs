@@ -19,8 +19,10 @@ use essl_gl::Context;
 use crate::args::{Args, CallError};
 use crate::value::Value;
 
-/// Calls WebGL2's method `f` with `args`; its return value (`Undefined` for `void`).
-pub(crate) fn call(ctx: &mut Context, f: &str, args: &mut [Value]) -> Result<Value, CallError> {
+/// Calls WebGL2's method `f` (its IDL name, `texImage2D`) with `args`, converted as the IDL
+/// converts a script's values; its return value (`Undefined` for `void`), or the exception a
+/// browser would throw.
+pub fn call(ctx: &mut Context, f: &str, args: &mut [Value]) -> Result<Value, CallError> {
     let a = &mut Args::new(args);
     if let Some(v) = state::call(ctx, f, a)? {
         return Ok(v);
@@ -34,9 +36,7 @@ pub(crate) fn call(ctx: &mut Context, f: &str, args: &mut [Value]) -> Result<Val
     if let Some(v) = programs::call(ctx, f, a)? {
         return Ok(v);
     }
-    Err(CallError::Unsupported(format!(
-        "`{f}` is not a WebGL2 method this replay knows"
-    )))
+    Err(CallError::UnknownMethod(f.to_string()))
 }
 
 /// `Value::Undefined` after evaluating a `void` call.

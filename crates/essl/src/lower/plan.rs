@@ -457,7 +457,9 @@ impl<'m> ProgramPlanner<'m> {
             .position(|x| {
                 x.name == *b.name
                     || (b.array.is_some()
-                        && x.name.strip_prefix(&*b.name).is_some_and(|r| r.starts_with('[')))
+                        && x.name
+                            .strip_prefix(&*b.name)
+                            .is_some_and(|r| r.starts_with('[')))
             })
             .unwrap_or(0);
         program::UniformStorage::Block {
