@@ -80,6 +80,11 @@ pub fn replay(script: &Script, options: &ReplayOptions) -> Result<Replay, Script
     if ran.is_ok() && options.times > 0 && !script.waits() {
         r.time(options.times);
     }
+    // essl-gl validates every call itself: an error wgpu reported is a bug of essl-gl's,
+    // and the work it rejected is missing from the results.
+    for e in r.ctx.backend_errors() {
+        r.fail(Phase::Runner, 0, "wgpu", e);
+    }
     Ok(Replay {
         results: r.results,
         picture,

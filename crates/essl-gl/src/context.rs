@@ -159,8 +159,15 @@ impl Context {
         let backend_errors = Arc::new(Mutex::new(Vec::new()));
         let sink = backend_errors.clone();
         device.on_uncaptured_error(Arc::new(move |e: wgpu::Error| {
+            // wgpu's own text is "Validation Error"; the causes say what was wrong.
+            let mut text = e.to_string();
+            let mut cause = std::error::Error::source(&e);
+            while let Some(c) = cause {
+                text.push_str(&format!(": {c}"));
+                cause = c.source();
+            }
             if let Ok(mut v) = sink.lock() {
-                v.push(e.to_string());
+                v.push(text);
             }
         }));
         let max_vertex_attribs = MAX_VERTEX_ATTRIBS
