@@ -178,7 +178,7 @@ impl Runner<'_> {
     /// `getError` until `NO_ERROR` (at most 8 times): the first must be the call's `error`,
     /// and there must be no second.
     fn check_errors(&mut self, phase: Phase, index: usize, call: &Call) {
-        let message = self.ctx.error_message().map(str::to_string);
+        let message = self.ctx.error_message();
         let mut errors = Vec::new();
         for _ in 0..8 {
             match self.ctx.get_error() {

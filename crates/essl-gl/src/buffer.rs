@@ -249,7 +249,7 @@ impl Context {
 
     /// The buffer bound to `target`, or the error WebGL records: `INVALID_ENUM` for an unknown
     /// target, `INVALID_OPERATION` for none bound.
-    pub(crate) fn bound_buffer(&mut self, target: u32, function: &str) -> Option<Id> {
+    pub(crate) fn bound_buffer(&self, target: u32, function: &str) -> Option<Id> {
         let bound = match target {
             gl::ELEMENT_ARRAY_BUFFER => self.vao().element_buffer,
             gl::ARRAY_BUFFER
@@ -580,7 +580,7 @@ impl Context {
     }
 
     /// The size in bytes of the buffer bound to `target` (`getBufferParameter(BUFFER_SIZE)`).
-    pub fn get_buffer_size(&mut self, target: u32) -> Option<u64> {
+    pub fn get_buffer_size(&self, target: u32) -> Option<u64> {
         let id = self.bound_buffer(target, "getBufferParameter")?;
         self.objects
             .buffers

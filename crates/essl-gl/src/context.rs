@@ -248,13 +248,13 @@ impl Context {
     }
 
     /// Returns the first error recorded since the last call (or `NO_ERROR`) and clears it.
-    pub fn get_error(&mut self) -> u32 {
+    pub fn get_error(&self) -> u32 {
         self.errors.take()
     }
 
     /// A description of the error [`Context::get_error`] would return, as a browser's console
     /// would print it (`"drawArrays: no program in use"`).
-    pub fn error_message(&self) -> Option<&str> {
+    pub fn error_message(&self) -> Option<String> {
         self.errors.message()
     }
 
@@ -268,7 +268,7 @@ impl Context {
     }
 
     /// Records a GL error (the first one sticks) with a message naming the function.
-    pub(crate) fn error(&mut self, code: u32, function: &str, what: impl std::fmt::Display) {
+    pub(crate) fn error(&self, code: u32, function: &str, what: impl std::fmt::Display) {
         self.errors.record(code, || {
             format!("{}: {}: {}", function, error_name(code), what)
         });
@@ -285,7 +285,7 @@ impl Context {
     }
 
     /// Checks that a handle belongs to this context, recording `INVALID_OPERATION` if not.
-    pub(crate) fn owns(&mut self, ctx: u32, function: &str) -> bool {
+    pub(crate) fn owns(&self, ctx: u32, function: &str) -> bool {
         if ctx != self.id {
             self.error(
                 gl::INVALID_OPERATION,

@@ -1,5 +1,7 @@
 //! Errors: why a [`Context`](crate::Context) could not be created, and GL's error flag.
 
+use std::cell::{Cell, RefCell};
+
 use crate::gl;
 
 /// Why [`Context::new`](crate::Context::new) failed.
@@ -34,30 +36,31 @@ pub enum ContextError {
 }
 
 /// GL's error flag: the first error recorded sticks until [`ErrorState::take`] reads it.
+/// Interior-mutable, so that queries which change nothing else take `&Context`.
 #[derive(Debug, Default)]
 pub(crate) struct ErrorState {
-    code: u32,
-    message: Option<String>,
+    code: Cell<u32>,
+    message: RefCell<Option<String>>,
 }
 
 impl ErrorState {
     /// Records `code` unless an earlier error has not been read yet.
-    pub(crate) fn record(&mut self, code: u32, message: impl FnOnce() -> String) {
-        if self.code == gl::NO_ERROR {
-            self.code = code;
-            self.message = Some(message());
+    pub(crate) fn record(&self, code: u32, message: impl FnOnce() -> String) {
+        if self.code.get() == gl::NO_ERROR {
+            self.code.set(code);
+            *self.message.borrow_mut() = Some(message());
         }
     }
 
     /// Returns the recorded error (or `NO_ERROR`) and clears it.
-    pub(crate) fn take(&mut self) -> u32 {
-        self.message = None;
-        std::mem::replace(&mut self.code, gl::NO_ERROR)
+    pub(crate) fn take(&self) -> u32 {
+        *self.message.borrow_mut() = None;
+        self.code.replace(gl::NO_ERROR)
     }
 
     /// Describes the recorded error, if any.
-    pub(crate) fn message(&self) -> Option<&str> {
-        self.message.as_deref()
+    pub(crate) fn message(&self) -> Option<String> {
+        self.message.borrow().clone()
     }
 }
 

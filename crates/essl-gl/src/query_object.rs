@@ -189,7 +189,7 @@ impl Context {
     }
 
     /// The active query of a target (`getQuery(target, CURRENT_QUERY)`).
-    pub fn get_query(&mut self, target: u32, pname: u32) -> Option<Query> {
+    pub fn get_query(&self, target: u32, pname: u32) -> Option<Query> {
         const F: &str = "getQuery";
         let Some(s) = slot(target) else {
             self.error(gl::INVALID_ENUM, F, format_args!("target 0x{target:04X}"));

@@ -233,7 +233,7 @@ impl Context {
     /// A parameter of the bound renderbuffer (`getRenderbufferParameter`): `RENDERBUFFER_WIDTH`,
     /// `_HEIGHT`, `_INTERNAL_FORMAT`, `_SAMPLES`, and the bit sizes `_RED_SIZE` …
     /// `_STENCIL_SIZE`.
-    pub fn get_renderbuffer_parameter(&mut self, target: u32, pname: u32) -> Option<Parameter> {
+    pub fn get_renderbuffer_parameter(&self, target: u32, pname: u32) -> Option<Parameter> {
         const F: &str = "getRenderbufferParameter";
         if target != gl::RENDERBUFFER {
             self.error(gl::INVALID_ENUM, F, format_args!("target 0x{target:04X}"));

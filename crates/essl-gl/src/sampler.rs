@@ -162,7 +162,7 @@ impl Context {
         self.bindings.bind_sampler(unit, id);
     }
 
-    fn sampler_id(&mut self, s: Sampler, function: &str) -> Option<Id> {
+    fn sampler_id(&self, s: Sampler, function: &str) -> Option<Id> {
         if !self.owns(s.ctx, function) {
             return None;
         }
@@ -203,7 +203,7 @@ impl Context {
     }
 
     /// A parameter of a sampler (`getSamplerParameter`); another `pname` → `INVALID_ENUM`.
-    pub fn get_sampler_parameter(&mut self, sampler: Sampler, pname: u32) -> Option<Parameter> {
+    pub fn get_sampler_parameter(&self, sampler: Sampler, pname: u32) -> Option<Parameter> {
         const F: &str = "getSamplerParameter";
         let id = self.sampler_id(sampler, F)?;
         let value = self.objects.samplers.get(id)?.params.get(pname);

@@ -498,7 +498,7 @@ impl SceneRenderer {
     fn check(&mut self, during: &'static str) -> Result<(), SceneRenderError> {
         let code = self.ctx.get_error();
         if code != gl::NO_ERROR {
-            let message = self.ctx.error_message().map(str::to_owned);
+            let message = self.ctx.error_message();
             return Err(SceneRenderError::Gl {
                 code,
                 during,

@@ -172,6 +172,26 @@ fn uses_constant_alpha(f: u32) -> bool {
     matches!(f, gl::CONSTANT_ALPHA | gl::ONE_MINUS_CONSTANT_ALPHA)
 }
 
+/// The flag of capability `cap` in a `State` (`&mut` with a trailing `mut`), or `None` for a
+/// name that is not a capability.
+macro_rules! capability_flag {
+    ($s:expr, $cap:expr $(, $m:ident)?) => {
+        match $cap {
+            gl::BLEND => Some(&$($m)? $s.blend),
+            gl::CULL_FACE => Some(&$($m)? $s.cull_face),
+            gl::DEPTH_TEST => Some(&$($m)? $s.depth_test),
+            gl::DITHER => Some(&$($m)? $s.dither),
+            gl::POLYGON_OFFSET_FILL => Some(&$($m)? $s.polygon_offset_fill),
+            gl::RASTERIZER_DISCARD => Some(&$($m)? $s.rasterizer_discard),
+            gl::SAMPLE_ALPHA_TO_COVERAGE => Some(&$($m)? $s.sample_alpha_to_coverage),
+            gl::SAMPLE_COVERAGE => Some(&$($m)? $s.sample_coverage),
+            gl::SCISSOR_TEST => Some(&$($m)? $s.scissor_test),
+            gl::STENCIL_TEST => Some(&$($m)? $s.stencil_test),
+            _ => None,
+        }
+    };
+}
+
 impl Context {
     /// Sets the viewport (`viewport`): `x`, `y` from the bottom-left corner, in pixels.
     /// Negative `width` or `height` → `INVALID_VALUE`.
@@ -206,52 +226,43 @@ impl Context {
         self.state.clear_stencil = s;
     }
 
-    fn capability(&mut self, cap: u32, value: Option<bool>, function: &str) -> Option<bool> {
-        let s = &mut self.state;
-        let slot = match cap {
-            gl::BLEND => &mut s.blend,
-            gl::CULL_FACE => &mut s.cull_face,
-            gl::DEPTH_TEST => &mut s.depth_test,
-            gl::DITHER => &mut s.dither,
-            gl::POLYGON_OFFSET_FILL => &mut s.polygon_offset_fill,
-            gl::RASTERIZER_DISCARD => &mut s.rasterizer_discard,
-            gl::SAMPLE_ALPHA_TO_COVERAGE => &mut s.sample_alpha_to_coverage,
-            gl::SAMPLE_COVERAGE => &mut s.sample_coverage,
-            gl::SCISSOR_TEST => &mut s.scissor_test,
-            gl::STENCIL_TEST => &mut s.stencil_test,
-            _ => {
-                self.error(
-                    gl::INVALID_ENUM,
-                    function,
-                    format_args!("capability 0x{cap:04X}"),
-                );
-                return None;
-            }
-        };
-        if let Some(v) = value {
-            *slot = v;
+    /// Sets capability `cap`; an unknown one → `INVALID_ENUM`.
+    fn capability(&mut self, cap: u32, value: bool, function: &str) {
+        match capability_flag!(self.state, cap, mut) {
+            Some(flag) => *flag = value,
+            None => self.error(
+                gl::INVALID_ENUM,
+                function,
+                format_args!("capability 0x{cap:04X}"),
+            ),
         }
-        Some(*slot)
     }
 
     /// Enables a capability (`DEPTH_TEST`, `CULL_FACE`, `BLEND`, `SCISSOR_TEST`,
-    /// `POLYGON_OFFSET_FILL`, `RASTERIZER_DISCARD`, …); an unknown one → `INVALID_ENUM`.
-    ///
-    /// `STENCIL_TEST` is accepted but has no effect (the default framebuffer has no stencil
-    /// buffer, so GL's stencil test always passes); `DITHER` and the sample-coverage
-    /// capabilities are state only (the framebuffer is single-sampled).
+    /// `STENCIL_TEST`, `POLYGON_OFFSET_FILL`, `RASTERIZER_DISCARD`, `SAMPLE_ALPHA_TO_COVERAGE`,
+    /// …); an unknown one → `INVALID_ENUM`. `DITHER` and `SAMPLE_COVERAGE` are state only.
     pub fn enable(&mut self, cap: u32) {
-        self.capability(cap, Some(true), "enable");
+        self.capability(cap, true, "enable");
     }
 
     /// Disables a capability; see [`Context::enable`].
     pub fn disable(&mut self, cap: u32) {
-        self.capability(cap, Some(false), "disable");
+        self.capability(cap, false, "disable");
     }
 
     /// Whether a capability is enabled (`isEnabled`); an unknown one → `INVALID_ENUM`, false.
-    pub fn is_enabled(&mut self, cap: u32) -> bool {
-        self.capability(cap, None, "isEnabled").unwrap_or(false)
+    pub fn is_enabled(&self, cap: u32) -> bool {
+        match capability_flag!(self.state, cap) {
+            Some(flag) => *flag,
+            None => {
+                self.error(
+                    gl::INVALID_ENUM,
+                    "isEnabled",
+                    format_args!("capability 0x{cap:04X}"),
+                );
+                false
+            }
+        }
     }
 
     /// Sets the depth comparison (`depthFunc`): `NEVER`, `LESS`, … `ALWAYS`.

@@ -81,7 +81,7 @@ fn interleaved_varyings_are_captured_vertex_by_vertex() {
     ctx.end_transform_feedback();
     ctx.end_query(gl::TRANSFORM_FEEDBACK_PRIMITIVES_WRITTEN);
     ctx.disable(gl::RASTERIZER_DISCARD);
-    let message = ctx.error_message().map(str::to_owned);
+    let message = ctx.error_message();
     assert_eq!(ctx.get_error(), gl::NO_ERROR, "{message:?}");
     ctx.bind_buffer(gl::TRANSFORM_FEEDBACK_BUFFER, None);
     let got = floats(&mut ctx, out, 12);
@@ -140,7 +140,7 @@ fn separate_varyings_go_to_their_own_buffers_and_sessions_append() {
         "program change while active"
     );
     ctx.end_transform_feedback();
-    let message = ctx.error_message().map(str::to_owned);
+    let message = ctx.error_message();
     assert_eq!(ctx.get_error(), gl::NO_ERROR, "{message:?}");
     ctx.bind_buffer(gl::TRANSFORM_FEEDBACK_BUFFER, None);
     let v = floats(&mut ctx, vel, 6);

@@ -42,7 +42,7 @@ impl Context {
     /// `_STENCIL_SIZE`, `_COMPONENT_TYPE` and `_COLOR_ENCODING`. With nothing attached only
     /// the object type and name may be asked (`INVALID_OPERATION` otherwise), as in ES 3.0.
     pub fn get_framebuffer_attachment_parameter(
-        &mut self,
+        &self,
         target: u32,
         attachment: u32,
         pname: u32,
@@ -158,7 +158,7 @@ impl Context {
 
     /// `getFramebufferAttachmentParameter` on the default framebuffer: `BACK`, `DEPTH`,
     /// `STENCIL`.
-    fn default_attachment_parameter(&mut self, attachment: u32, pname: u32) -> Option<Parameter> {
+    fn default_attachment_parameter(&self, attachment: u32, pname: u32) -> Option<Parameter> {
         const F: &str = "getFramebufferAttachmentParameter";
         let a = self.fb.attributes;
         let format = match attachment {

@@ -126,7 +126,7 @@ impl Context {
     /// The completeness of the framebuffer bound to `target` (`checkFramebufferStatus`):
     /// `FRAMEBUFFER_COMPLETE` for the default framebuffer; an unknown target →
     /// `INVALID_ENUM` and 0.
-    pub fn check_framebuffer_status(&mut self, target: u32) -> u32 {
+    pub fn check_framebuffer_status(&self, target: u32) -> u32 {
         let [d, r] = self.bindings.framebuffers();
         let id = match target {
             gl::FRAMEBUFFER | gl::DRAW_FRAMEBUFFER => d,

@@ -14,7 +14,7 @@ use crate::query::Parameter;
 impl Context {
     /// The index of each named uniform among the active ones, `INVALID_INDEX` for a name that
     /// is not (`getUniformIndices`). An array is named with or without its `[0]`.
-    pub fn get_uniform_indices(&mut self, program: Program, names: &[&str]) -> Option<Vec<u32>> {
+    pub fn get_uniform_indices(&self, program: Program, names: &[&str]) -> Option<Vec<u32>> {
         let id = self.program_id(program, "getUniformIndices")?;
         let Some(linked) = self.objects.linked(id) else {
             return Some(vec![gl::INVALID_INDEX; names.len()]);
@@ -41,7 +41,7 @@ impl Context {
     /// blocks); `UNIFORM_IS_ROW_MAJOR` ([`Parameter::Bools`]). An index out of range →
     /// `INVALID_VALUE`; another `pname` → `INVALID_ENUM`.
     pub fn get_active_uniforms(
-        &mut self,
+        &self,
         program: Program,
         indices: &[u32],
         pname: u32,
@@ -119,11 +119,7 @@ impl Context {
 
     /// The name of uniform block `index` (`getActiveUniformBlockName`); an index out of
     /// range → `INVALID_VALUE`.
-    pub fn get_active_uniform_block_name(
-        &mut self,
-        program: Program,
-        index: u32,
-    ) -> Option<String> {
+    pub fn get_active_uniform_block_name(&self, program: Program, index: u32) -> Option<String> {
         const F: &str = "getActiveUniformBlockName";
         let id = self.program_id(program, F)?;
         let name = self
@@ -143,7 +139,7 @@ impl Context {
     /// `UNIFORM_BLOCK_REFERENCED_BY_VERTEX_SHADER`, `…_FRAGMENT_SHADER`
     /// ([`Parameter::Bool`]).
     pub fn get_active_uniform_block_parameter(
-        &mut self,
+        &self,
         program: Program,
         index: u32,
         pname: u32,
@@ -187,7 +183,7 @@ impl Context {
 
     /// The location of a fragment output, or −1 (`getFragDataLocation`): `"color"`,
     /// `"colors[2]"`. A program that is not linked → `INVALID_OPERATION`.
-    pub fn get_frag_data_location(&mut self, program: Program, name: &str) -> i32 {
+    pub fn get_frag_data_location(&self, program: Program, name: &str) -> i32 {
         let Some(linked) = self.linked_program(program, "getFragDataLocation") else {
             return -1;
         };
@@ -211,11 +207,7 @@ impl Context {
     /// scalars, a typed array for vectors and matrices (column by column), the texture unit
     /// for samplers. A location of another program, or of an earlier link →
     /// `INVALID_OPERATION`.
-    pub fn get_uniform(
-        &mut self,
-        program: Program,
-        location: UniformLocation,
-    ) -> Option<Parameter> {
+    pub fn get_uniform(&self, program: Program, location: UniformLocation) -> Option<Parameter> {
         const F: &str = "getUniform";
         let id = self.program_id(program, F)?;
         if location.ctx != self.id || location.program != id {

@@ -175,7 +175,7 @@ impl Context {
     /// The `index`-th varying the last link captures (`getTransformFeedbackVarying`); an
     /// index out of range → `INVALID_VALUE`.
     pub fn get_transform_feedback_varying(
-        &mut self,
+        &self,
         program: Program,
         index: u32,
     ) -> Option<ActiveInfo> {

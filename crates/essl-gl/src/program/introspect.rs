@@ -11,11 +11,7 @@ impl Context {
     /// The location of an active uniform or of an element of an active uniform array
     /// (`getUniformLocation`): `"u_color"`, `"u_lights[2].position"`, `"u_weights[3]"`.
     /// `None` for a name that is not active; an unlinked program → `INVALID_OPERATION`.
-    pub fn get_uniform_location(
-        &mut self,
-        program: Program,
-        name: &str,
-    ) -> Option<UniformLocation> {
+    pub fn get_uniform_location(&self, program: Program, name: &str) -> Option<UniformLocation> {
         let ctx = self.id;
         let linked = self.linked_program(program, "getUniformLocation")?;
         if name.starts_with("gl_") || name.starts_with("webgl_") || name.starts_with("_webgl_") {
@@ -32,7 +28,7 @@ impl Context {
     }
 
     /// The index of a uniform block by name, or `INVALID_INDEX` (`getUniformBlockIndex`).
-    pub fn get_uniform_block_index(&mut self, program: Program, name: &str) -> u32 {
+    pub fn get_uniform_block_index(&self, program: Program, name: &str) -> u32 {
         let Some(linked) = self.linked_program(program, "getUniformBlockIndex") else {
             return gl::INVALID_INDEX;
         };
@@ -48,7 +44,7 @@ impl Context {
     /// (`uniformBlockBinding`). An index or binding out of range → `INVALID_VALUE`.
     pub fn uniform_block_binding(&mut self, program: Program, block_index: u32, binding: u32) {
         const F: &str = "uniformBlockBinding";
-        let Some(linked) = self.linked_program(program, F) else {
+        let Some(linked) = self.linked_program_mut(program, F) else {
             return;
         };
         match linked.block_bindings.get_mut(block_index as usize) {
@@ -59,7 +55,7 @@ impl Context {
 
     /// The index-th active attribute's name, type and size (`getActiveAttrib`); an index
     /// out of range → `INVALID_VALUE`.
-    pub fn get_active_attrib(&mut self, program: Program, index: u32) -> Option<ActiveInfo> {
+    pub fn get_active_attrib(&self, program: Program, index: u32) -> Option<ActiveInfo> {
         let id = self.program_id(program, "getActiveAttrib")?;
         let linked = self.objects.linked(id)?;
         match linked.layout.attributes.get(index as usize) {
@@ -77,7 +73,7 @@ impl Context {
 
     /// The index-th active uniform's name, type and size (`getActiveUniform`); an index
     /// out of range → `INVALID_VALUE`.
-    pub fn get_active_uniform(&mut self, program: Program, index: u32) -> Option<ActiveInfo> {
+    pub fn get_active_uniform(&self, program: Program, index: u32) -> Option<ActiveInfo> {
         let id = self.program_id(program, "getActiveUniform")?;
         let linked = self.objects.linked(id)?;
         match linked.layout.uniforms.get(index as usize) {
@@ -96,7 +92,7 @@ impl Context {
     /// The location of an active attribute, or −1 (`getAttribLocation`). Built-in inputs
     /// (`gl_VertexID`, `gl_InstanceID`), which `get_active_attrib` lists, and every reserved
     /// `gl_`/`webgl_` name have none: −1, as in WebGL.
-    pub fn get_attrib_location(&mut self, program: Program, name: &str) -> i32 {
+    pub fn get_attrib_location(&self, program: Program, name: &str) -> i32 {
         const F: &str = "getAttribLocation";
         if self.program_id(program, F).is_none() {
             return -1;

@@ -15,7 +15,7 @@ impl Context {
         }
     }
 
-    pub(crate) fn program_id(&mut self, program: Program, function: &str) -> Option<Id> {
+    pub(crate) fn program_id(&self, program: Program, function: &str) -> Option<Id> {
         if !self.owns(program.ctx, function) {
             return None;
         }
@@ -71,7 +71,7 @@ impl Context {
     }
 
     /// The shaders attached to a program (`getAttachedShaders`).
-    pub fn get_attached_shaders(&mut self, program: Program) -> Vec<Shader> {
+    pub fn get_attached_shaders(&self, program: Program) -> Vec<Shader> {
         let Some(p) = self.program_id(program, "getAttachedShaders") else {
             return Vec::new();
         };
@@ -97,14 +97,14 @@ impl Context {
     }
 
     /// Whether the last link succeeded (`getProgramParameter(LINK_STATUS)`).
-    pub fn get_program_link_status(&mut self, program: Program) -> bool {
+    pub fn get_program_link_status(&self, program: Program) -> bool {
         self.program_id(program, "getProgramParameter")
             .and_then(|p| self.objects.programs.get_any(p))
             .is_some_and(|p| p.link_status)
     }
 
     /// The log of the last link (`getProgramInfoLog`).
-    pub fn get_program_info_log(&mut self, program: Program) -> Option<String> {
+    pub fn get_program_info_log(&self, program: Program) -> Option<String> {
         let p = self.program_id(program, "getProgramInfoLog")?;
         self.objects.programs.get_any(p).map(|p| p.info_log.clone())
     }

@@ -66,7 +66,7 @@ pub(crate) enum LinkError {
 #[derive(Default)]
 pub(crate) struct Linker {
     serial: u64,
-    filter: Option<ProgramFilter>,
+    pub(crate) filter: Option<ProgramFilter>,
     /// How shaders are compiled: the WebGL version and the WebGL 1 extensions turned on.
     pub(crate) shaders: essl::CompileOptions,
 }
@@ -151,58 +151,7 @@ impl Context {
         }
     }
 
-    /// Puts a step between lowering and installing every program [`Context::link_program`]
-    /// links from now on (`None` removes it): the step may change the lowered modules (the
-    /// translation tests write them as WGSL text and read them back) as long as they keep the
-    /// conventions of [`essl::program`]; an `Err` fails the link with that message in the info
-    /// log. Programs installed with [`Context::link_program_from_layout`] do not go through it.
-    pub fn set_program_filter(&mut self, filter: Option<ProgramFilter>) {
-        self.linker.filter = filter;
-    }
-
-    /// Creates a program and links it from a layout the front end produced: see
-    /// [`Context::link_program_from_layout`].
-    pub fn program_from_layout(&mut self, layout: ProgramLayout) -> Program {
-        let program = self.create_program();
-        self.link_program_from_layout(program, layout);
-        program
-    }
-
-    /// Completes `linkProgram`: installs a program linked and lowered by the front end.
-    ///
-    /// The layout must follow the conventions of [`essl::program`]. essl-gl creates the wgpu
-    /// shader modules (wgpu validates them); a module wgpu rejects, or a program needing more
-    /// than the device offers, makes the link fail (`LINK_STATUS` false, the reason in the
-    /// info log). Uniforms start at zero and samplers at unit 0; earlier uniform locations
-    /// become invalid.
-    pub fn link_program_from_layout(&mut self, program: Program, layout: ProgramLayout) {
-        let Some(p) = self.program_id(program, "linkProgram") else {
-            return;
-        };
-        let feedback = self
-            .objects
-            .programs
-            .get_any(p)
-            .map(|o| o.feedback_varyings.clone())
-            .unwrap_or_default();
-        let result = self.link(layout, &feedback);
-        let obj = self.objects.programs.get_any_mut(p).expect("live");
-        match result {
-            Ok(linked) => {
-                obj.linked = Some(linked);
-                obj.link_status = true;
-                obj.validate_status = false;
-                obj.info_log.clear();
-            }
-            Err(e) => {
-                obj.link_status = false;
-                obj.validate_status = false;
-                obj.info_log = e.to_string();
-            }
-        }
-    }
-
-    pub(super) fn link(
+    pub(crate) fn link(
         &mut self,
         layout: ProgramLayout,
         (names, mode): &(Vec<String>, u32),

@@ -137,15 +137,26 @@ impl Context {
     /// The last successful link of `program`; `None` with WebGL's error otherwise (a foreign
     /// or deleted program, or `INVALID_OPERATION` for one that is not linked).
     pub(crate) fn linked_program(
+        &self,
+        program: Program,
+        function: &str,
+    ) -> Option<&LinkedProgram> {
+        let id = self.program_id(program, function)?;
+        let linked = self.objects.linked(id);
+        if linked.is_none() {
+            self.error(gl::INVALID_OPERATION, function, "program is not linked");
+        }
+        linked
+    }
+
+    /// [`Context::linked_program`], to change its uniform values.
+    pub(crate) fn linked_program_mut(
         &mut self,
         program: Program,
         function: &str,
     ) -> Option<&mut LinkedProgram> {
+        self.linked_program(program, function)?;
         let id = self.program_id(program, function)?;
-        if self.objects.linked(id).is_none() {
-            self.error(gl::INVALID_OPERATION, function, "program is not linked");
-            return None;
-        }
         self.objects.linked_mut(id)
     }
 }

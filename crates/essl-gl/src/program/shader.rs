@@ -34,27 +34,6 @@ pub(super) fn info_log(shader: &essl::Shader) -> String {
 }
 
 impl Context {
-    /// The WebGL version whose shading languages `compile_shader` and `link_program` accept:
-    /// [`essl::Target::WebGl2`] unless [`Context::set_shader_target`] changed it.
-    pub fn shader_target(&self) -> essl::Target {
-        self.linker.shaders.target
-    }
-
-    /// Compiles and links shaders as a WebGL 1 or a WebGL 2 context does from now on. A
-    /// WebGL 1 context compiles GLSL ES 1.00 only (`#version 300 es` is refused), and a
-    /// shader may enable with `#extension` (and sees the macro of) only the `extensions` the
-    /// application turned on with `getExtension` (`OES_standard_derivatives`, …); a WebGL 2
-    /// context compiles both languages and ignores `extensions`. Only the shading language
-    /// changes: the rest of the API stays WebGL2's. Shaders compiled before keep their status
-    /// until compiled again.
-    pub fn set_shader_target(&mut self, target: essl::Target, extensions: &[essl::Extension]) {
-        self.linker.shaders = essl::CompileOptions {
-            target,
-            extensions: extensions.to_vec(),
-            ..essl::CompileOptions::default()
-        };
-    }
-
     /// Creates a shader object of type `VERTEX_SHADER` or `FRAGMENT_SHADER` (`createShader`);
     /// another type → `INVALID_ENUM` and `None`.
     pub fn create_shader(&mut self, ty: u32) -> Option<Shader> {
@@ -76,7 +55,7 @@ impl Context {
         Some(Shader { ctx: self.id, id })
     }
 
-    pub(crate) fn shader_id(&mut self, shader: Shader, function: &str) -> Option<Id> {
+    pub(crate) fn shader_id(&self, shader: Shader, function: &str) -> Option<Id> {
         if !self.owns(shader.ctx, function) {
             return None;
         }
@@ -102,7 +81,7 @@ impl Context {
     }
 
     /// A shader's source (`getShaderSource`).
-    pub fn get_shader_source(&mut self, shader: Shader) -> Option<String> {
+    pub fn get_shader_source(&self, shader: Shader) -> Option<String> {
         let id = self.shader_id(shader, "getShaderSource")?;
         self.objects.shaders.get_any(id).map(|s| s.source.clone())
     }
@@ -126,7 +105,7 @@ impl Context {
     }
 
     /// Whether the last compile succeeded (`getShaderParameter(COMPILE_STATUS)`).
-    pub fn get_shader_compile_status(&mut self, shader: Shader) -> bool {
+    pub fn get_shader_compile_status(&self, shader: Shader) -> bool {
         self.shader_id(shader, "getShaderParameter")
             .and_then(|id| self.objects.shaders.get_any(id))
             .and_then(|s| s.compiled.as_ref())
@@ -135,13 +114,13 @@ impl Context {
 
     /// The log of the last compile, in WebGL's `ERROR: 0:LINE: 'token' : message` form
     /// (`getShaderInfoLog`).
-    pub fn get_shader_info_log(&mut self, shader: Shader) -> Option<String> {
+    pub fn get_shader_info_log(&self, shader: Shader) -> Option<String> {
         let id = self.shader_id(shader, "getShaderInfoLog")?;
         self.objects.shaders.get_any(id).map(|s| s.info_log.clone())
     }
 
     /// A shader's type (`getShaderParameter(SHADER_TYPE)`).
-    pub fn get_shader_type(&mut self, shader: Shader) -> Option<u32> {
+    pub fn get_shader_type(&self, shader: Shader) -> Option<u32> {
         let id = self.shader_id(shader, "getShaderParameter")?;
         self.objects.shaders.get_any(id).map(|s| s.ty)
     }

@@ -6,7 +6,7 @@ use essl::types::GlType;
 
 use crate::context::{Context, MAX_TEXTURE_UNITS};
 use crate::gl;
-use crate::objects::{Program, UniformLocation};
+use crate::objects::UniformLocation;
 
 /// What a `uniform*` call provides.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -128,52 +128,7 @@ pub(crate) fn find_uniform(layout: &ProgramLayout, name: &str) -> Option<(usize,
     None
 }
 
-impl Context {
-    /// Low-level: stores 32-bit words at `byte_offset` of a program's default uniform block
-    /// image. Out-of-range writes → `INVALID_VALUE`. The `uniform*` functions call this with
-    /// offsets from [`UniformStorage::Buffer`].
-    pub fn set_uniform_words(&mut self, program: Program, byte_offset: u32, words: &[u32]) {
-        const F: &str = "setUniformWords";
-        let Some(linked) = self.linked_program(program, F) else {
-            return;
-        };
-        let start = byte_offset as usize;
-        let end = start + words.len() * 4;
-        if byte_offset % 4 != 0 || end > linked.uniform_data.len() {
-            return self.error(gl::INVALID_VALUE, F, "outside the uniform block");
-        }
-        linked.uniform_data[start..end].copy_from_slice(bytemuck::cast_slice(words));
-        linked.uniform_version += 1;
-    }
-
-    /// Low-level: stores floats at `byte_offset` of a program's uniform block image.
-    pub fn set_uniform_f32s(&mut self, program: Program, byte_offset: u32, values: &[f32]) {
-        self.set_uniform_words(program, byte_offset, bytemuck::cast_slice(values));
-    }
-
-    /// Low-level: stores signed integers at `byte_offset` of a program's uniform block image.
-    pub fn set_uniform_i32s(&mut self, program: Program, byte_offset: u32, values: &[i32]) {
-        self.set_uniform_words(program, byte_offset, bytemuck::cast_slice(values));
-    }
-
-    /// Low-level: stores unsigned integers at `byte_offset` of a program's uniform block image.
-    pub fn set_uniform_u32s(&mut self, program: Program, byte_offset: u32, values: &[u32]) {
-        self.set_uniform_words(program, byte_offset, values);
-    }
-
-    /// Low-level: sets the texture unit sampler slot `slot` reads (what `uniform1i` on a
-    /// sampler does). A slot or unit out of range → `INVALID_VALUE`.
-    pub fn set_sampler_unit(&mut self, program: Program, slot: u32, unit: u32) {
-        const F: &str = "setSamplerUnit";
-        let Some(linked) = self.linked_program(program, F) else {
-            return;
-        };
-        if slot as usize >= linked.sampler_units.len() || unit >= MAX_TEXTURE_UNITS {
-            return self.error(gl::INVALID_VALUE, F, "slot or unit out of range");
-        }
-        linked.sampler_units[slot as usize] = unit;
-    }
-}
+impl Context {}
 
 impl Context {
     /// Stores the values of a `uniform*` call, with WebGL's checks.

@@ -136,7 +136,7 @@ impl Context {
     /// `SHADER_SOURCE_LENGTH`); a shader that no longer exists → `INVALID_VALUE`; one of another
     /// context → `INVALID_OPERATION`; all return `None`. A shader marked for deletion but
     /// still attached to a program can be queried (`DELETE_STATUS` is then true).
-    pub fn get_shader_parameter(&mut self, shader: Shader, pname: u32) -> Option<Parameter> {
+    pub fn get_shader_parameter(&self, shader: Shader, pname: u32) -> Option<Parameter> {
         const F: &str = "getShaderParameter";
         let id = self.shader_id(shader, F)?;
         let s = self.objects.shaders.get_any(id)?;
@@ -162,7 +162,7 @@ impl Context {
     /// Another `pname` → `INVALID_ENUM`; a program that no longer exists → `INVALID_VALUE`;
     /// one of another context → `INVALID_OPERATION`; all return `None`. A deleted program
     /// that is still current can be queried (`DELETE_STATUS` is then true).
-    pub fn get_program_parameter(&mut self, program: Program, pname: u32) -> Option<Parameter> {
+    pub fn get_program_parameter(&self, program: Program, pname: u32) -> Option<Parameter> {
         const F: &str = "getProgramParameter";
         let id = self.program_id(program, F)?;
         let p = self.objects.programs.get_any(id)?;

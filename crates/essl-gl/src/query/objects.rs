@@ -23,7 +23,7 @@ pub struct ShaderPrecisionFormat {
 impl Context {
     /// A parameter of the buffer bound to `target` (`getBufferParameter`): `BUFFER_SIZE`
     /// ([`Parameter::Int`]) or `BUFFER_USAGE` ([`Parameter::Enum`]).
-    pub fn get_buffer_parameter(&mut self, target: u32, pname: u32) -> Option<Parameter> {
+    pub fn get_buffer_parameter(&self, target: u32, pname: u32) -> Option<Parameter> {
         const F: &str = "getBufferParameter";
         if !matches!(pname, gl::BUFFER_SIZE | gl::BUFFER_USAGE) {
             self.error(gl::INVALID_ENUM, F, format_args!("pname 0x{pname:04X}"));
@@ -41,7 +41,7 @@ impl Context {
     /// `UNIFORM_BUFFER_START`, `UNIFORM_BUFFER_SIZE`, and the same of
     /// `TRANSFORM_FEEDBACK_BUFFER_…` (of the bound transform feedback object). An index out
     /// of range → `INVALID_VALUE`.
-    pub fn get_indexed_parameter(&mut self, target: u32, index: u32) -> Option<Parameter> {
+    pub fn get_indexed_parameter(&self, target: u32, index: u32) -> Option<Parameter> {
         const F: &str = "getIndexedParameter";
         let range = match target {
             gl::UNIFORM_BUFFER_BINDING | gl::UNIFORM_BUFFER_START | gl::UNIFORM_BUFFER_SIZE => {
@@ -84,7 +84,7 @@ impl Context {
     /// integer formats). Another target or pname, or a format that cannot be rendered →
     /// `INVALID_ENUM`.
     pub fn get_internalformat_parameter(
-        &mut self,
+        &self,
         target: u32,
         internalformat: u32,
         pname: u32,
@@ -123,7 +123,7 @@ impl Context {
     /// (`getShaderPrecisionFormat`). essl-gl computes every float at 32 bits and every int
     /// at 32 bits, whatever the qualifier, and says so.
     pub fn get_shader_precision_format(
-        &mut self,
+        &self,
         shader_type: u32,
         precision_type: u32,
     ) -> Option<ShaderPrecisionFormat> {
@@ -163,7 +163,7 @@ impl Context {
     /// `…_ENABLED`, `…_NORMALIZED`, `…_INTEGER` ([`Parameter::Bool`]), `…_SIZE`, `…_STRIDE`,
     /// `…_DIVISOR` ([`Parameter::Int`]), `…_TYPE` ([`Parameter::Enum`]) and
     /// `CURRENT_VERTEX_ATTRIB` (the generic value: floats, ints or uints).
-    pub fn get_vertex_attrib(&mut self, index: u32, pname: u32) -> Option<Parameter> {
+    pub fn get_vertex_attrib(&self, index: u32, pname: u32) -> Option<Parameter> {
         const F: &str = "getVertexAttrib";
         if index >= self.limits.max_vertex_attribs {
             self.error(gl::INVALID_VALUE, F, "index ≥ MAX_VERTEX_ATTRIBS");
@@ -195,7 +195,7 @@ impl Context {
 
     /// The byte offset of vertex attribute `index`'s array (`getVertexAttribOffset`); `pname`
     /// must be `VERTEX_ATTRIB_ARRAY_POINTER`.
-    pub fn get_vertex_attrib_offset(&mut self, index: u32, pname: u32) -> i64 {
+    pub fn get_vertex_attrib_offset(&self, index: u32, pname: u32) -> i64 {
         const F: &str = "getVertexAttribOffset";
         if pname != gl::VERTEX_ATTRIB_ARRAY_POINTER {
             self.error(gl::INVALID_ENUM, F, format_args!("pname 0x{pname:04X}"));

@@ -23,7 +23,7 @@ impl Context {
     /// `VENDOR`, `RENDERER`.
     ///
     /// Another `pname` → `INVALID_ENUM` and `None`.
-    pub fn get_parameter(&mut self, pname: u32) -> Option<Parameter> {
+    pub fn get_parameter(&self, pname: u32) -> Option<Parameter> {
         let value = self
             .state_parameter(pname)
             .or_else(|| self.binding_parameter(pname))

@@ -27,15 +27,15 @@ pub(crate) struct ImageRegion<'a> {
 }
 
 /// What a `read_pixels` call asked for.
-struct ReadRequest {
-    x: i32,
-    y: i32,
-    width: i32,
-    height: i32,
-    format: u32,
-    ty: u32,
+pub(crate) struct ReadRequest {
+    pub(crate) x: i32,
+    pub(crate) y: i32,
+    pub(crate) width: i32,
+    pub(crate) height: i32,
+    pub(crate) format: u32,
+    pub(crate) ty: u32,
     /// The typed array read into (`None`: a `PIXEL_PACK_BUFFER`).
-    array: Option<ArrayType>,
+    pub(crate) array: Option<ArrayType>,
 }
 
 impl Context {
@@ -127,7 +127,7 @@ impl Context {
     }
 
     /// Checks a read and copies it into `dst`; the byte range of `dst` written, if any.
-    fn read_into(
+    pub(crate) fn read_into(
         &mut self,
         r: &ReadRequest,
         dst: &mut [u8],
@@ -221,46 +221,6 @@ impl Context {
             }
         }
         Some(start..needed)
-    }
-
-    /// Reads a rectangle that lies inside the framebuffer as tightly packed RGBA8 rows,
-    /// bottom row first (GL's order). A convenience over [`Context::read_pixels`] for
-    /// normalized colour buffers.
-    pub fn read_pixels_rgba8(&mut self, x: u32, y: u32, width: u32, height: u32) -> Vec<u8> {
-        let mut out = vec![0u8; width as usize * height as usize * 4];
-        let before = self.pixel_store.pack_alignment;
-        let (rl, sr, sp) = (
-            self.pixel_store.pack_row_length,
-            self.pixel_store.pack_skip_rows,
-            self.pixel_store.pack_skip_pixels,
-        );
-        let p = &mut self.pixel_store;
-        (
-            p.pack_alignment,
-            p.pack_row_length,
-            p.pack_skip_rows,
-            p.pack_skip_pixels,
-        ) = (1, 0, 0, 0);
-        let request = ReadRequest {
-            x: x as i32,
-            y: y as i32,
-            width: width as i32,
-            height: height as i32,
-            format: gl::RGBA,
-            ty: gl::UNSIGNED_BYTE,
-            array: Some(ArrayType::Uint8),
-        };
-        if self.bindings.buffer(gl::PIXEL_PACK_BUFFER).is_none() {
-            self.read_into(&request, &mut out, "readPixels");
-        }
-        let p = &mut self.pixel_store;
-        (
-            p.pack_alignment,
-            p.pack_row_length,
-            p.pack_skip_rows,
-            p.pack_skip_pixels,
-        ) = (before, rl, sr, sp);
-        out
     }
 
     /// The texels of a rectangle of a framebuffer image, tightly packed, row 0 first.

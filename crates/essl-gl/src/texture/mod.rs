@@ -132,7 +132,7 @@ impl Context {
     }
 
     /// The texture bound to `target` of the active unit, or `INVALID_OPERATION`.
-    pub(crate) fn bound_texture(&mut self, target: u32, function: &str) -> Option<Id> {
+    pub(crate) fn bound_texture(&self, target: u32, function: &str) -> Option<Id> {
         let id = self.bindings.texture(self.bindings.active_unit(), target);
         if id.is_none() {
             self.error(

@@ -70,7 +70,7 @@ impl Context {
     /// parameters, `TEXTURE_BASE_LEVEL`, `TEXTURE_MAX_LEVEL`, `TEXTURE_IMMUTABLE_FORMAT`,
     /// `TEXTURE_IMMUTABLE_LEVELS`. No texture bound → `INVALID_OPERATION`; another `pname` →
     /// `INVALID_ENUM`.
-    pub fn get_tex_parameter(&mut self, target: u32, pname: u32) -> Option<Parameter> {
+    pub fn get_tex_parameter(&self, target: u32, pname: u32) -> Option<Parameter> {
         const F: &str = "getTexParameter";
         if !is_texture_target(target) {
             self.error(gl::INVALID_ENUM, F, format_args!("target 0x{target:04X}"));
