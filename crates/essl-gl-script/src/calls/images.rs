@@ -7,6 +7,14 @@ use crate::args::{Args, CallError};
 use crate::value::{with_elements, Object, TypedArray, Value};
 
 pub(super) fn call(ctx: &mut Context, f: &str, a: &mut Args) -> Result<Option<Value>, CallError> {
+    if let Some(v) = textures(ctx, f, a)? {
+        return Ok(Some(v));
+    }
+    framebuffers(ctx, f, a)
+}
+
+/// Textures and samplers.
+fn textures(ctx: &mut Context, f: &str, a: &mut Args) -> Result<Option<Value>, CallError> {
     let v = match f {
         // Textures.
         "createTexture" => Value::Object(Object::Texture(ctx.create_texture())),
@@ -73,7 +81,14 @@ pub(super) fn call(ctx: &mut Context, f: &str, a: &mut Args) -> Result<Option<Va
             void!(ctx.sampler_parameterf(a.required()?, a.u32()?, a.f32()?))
         }
         "getSamplerParameter" => Value::from(ctx.get_sampler_parameter(a.required()?, a.u32()?)),
+        _ => return Ok(None),
+    };
+    Ok(Some(v))
+}
 
+/// Renderbuffers, framebuffers, blits and reads.
+fn framebuffers(ctx: &mut Context, f: &str, a: &mut Args) -> Result<Option<Value>, CallError> {
+    let v = match f {
         // Renderbuffers.
         "createRenderbuffer" => Value::Object(Object::Renderbuffer(ctx.create_renderbuffer())),
         "isRenderbuffer" => boolean(
