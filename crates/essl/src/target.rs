@@ -150,19 +150,23 @@ pub struct Profile {
     pub guaranteed: Limits,
 }
 
+/// What Chromium's WebGL 1 and WebGL 2 contexts both answer on this machine (ANGLE on
+/// SwiftShader; `tests/oracle/limits-webgl{1,2}.json`).
+const CHROMIUM: Limits = Limits {
+    vertex_attribs: 16,
+    vertex_uniform_vectors: 4096,
+    fragment_uniform_vectors: 4096,
+    varying_vectors: 31,
+    vertex_texture_units: 32,
+    fragment_texture_units: 32,
+    combined_texture_units: 64,
+    draw_buffers: 8,
+};
+
 /// WebGL 1: `tests/oracle/limits-webgl1.json`; the minimums of OpenGL ES 2.0 §6.2 table 6.19
 /// (WebGL 1.0 defers to them), `MAX_DRAW_BUFFERS_WEBGL` ≥ 4 from `WEBGL_draw_buffers`.
 const WEBGL1: Profile = Profile {
-    implementation: Limits {
-        vertex_attribs: 16,
-        vertex_uniform_vectors: 4096,
-        fragment_uniform_vectors: 4096,
-        varying_vectors: 31,
-        vertex_texture_units: 32,
-        fragment_texture_units: 32,
-        combined_texture_units: 64,
-        draw_buffers: 8,
-    },
+    implementation: CHROMIUM,
     guaranteed: Limits {
         vertex_attribs: 8,
         vertex_uniform_vectors: 128,
@@ -178,16 +182,7 @@ const WEBGL1: Profile = Profile {
 /// WebGL 2: `tests/oracle/limits-webgl2.json`; the minimums of OpenGL ES 3.0 §6.2 tables
 /// 6.31–6.33, which WebGL 2.0 defers to.
 const WEBGL2: Profile = Profile {
-    implementation: Limits {
-        vertex_attribs: 16,
-        vertex_uniform_vectors: 4096,
-        fragment_uniform_vectors: 4096,
-        varying_vectors: 31,
-        vertex_texture_units: 32,
-        fragment_texture_units: 32,
-        combined_texture_units: 64,
-        draw_buffers: 8,
-    },
+    implementation: CHROMIUM,
     guaranteed: Limits {
         vertex_attribs: 16,
         vertex_uniform_vectors: 256,

@@ -119,26 +119,12 @@ impl<'c, 'a> FnCx<'c, 'a> {
                     let cv = self.expr(c)?;
                     let accept = self.capture(|fx| {
                         let v = fx.expr(a)?;
-                        let p = fx.add(Expression::LocalVariable(tmp), span);
-                        fx.push(
-                            Statement::Store {
-                                pointer: p,
-                                value: v,
-                            },
-                            span,
-                        );
+                        fx.store_local(tmp, v, span);
                         Ok(())
                     })?;
                     let reject = self.capture(|fx| {
                         let v = fx.expr(b)?;
-                        let p = fx.add(Expression::LocalVariable(tmp), span);
-                        fx.push(
-                            Statement::Store {
-                                pointer: p,
-                                value: v,
-                            },
-                            span,
-                        );
+                        fx.store_local(tmp, v, span);
                         Ok(())
                     })?;
                     self.push(
@@ -181,14 +167,7 @@ impl<'c, 'a> FnCx<'c, 'a> {
                 if matches!(b.ty, Type::Matrix { .. } | Type::Array(..)) {
                     // A dynamic index into a matrix (or array) value goes through a variable.
                     let tmp = self.new_local("_essl_index", &b.ty);
-                    let p = self.add(Expression::LocalVariable(tmp), span);
-                    self.push(
-                        Statement::Store {
-                            pointer: p,
-                            value: bv,
-                        },
-                        span,
-                    );
+                    let p = self.store_local(tmp, bv, span);
                     let ep = self.add(Expression::Access { base: p, index: iv }, span);
                     return Ok(self.add(Expression::Load { pointer: ep }, span));
                 }
@@ -382,14 +361,7 @@ impl<'c, 'a> FnCx<'c, 'a> {
                     let lv = self.lvalue(arg)?;
                     if mode == ParamMode::InOut {
                         let v = self.load_lvalue(&lv, &arg.ty, span);
-                        let tp = self.add(Expression::LocalVariable(tmp), span);
-                        self.push(
-                            Statement::Store {
-                                pointer: tp,
-                                value: v,
-                            },
-                            span,
-                        );
+                        self.store_local(tmp, v, span);
                     }
                     let tp = self.add(Expression::LocalVariable(tmp), span);
                     arguments.push(tp);

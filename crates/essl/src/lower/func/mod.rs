@@ -257,14 +257,7 @@ pub(crate) fn lower_function(cx: &mut ModuleCx, id: FuncId) -> Result<naga::Func
     fx.emitter.start(&fx.f.expressions);
     for (arg, local) in copies {
         let a = fx.add(Expression::FunctionArgument(arg), Span::default());
-        let l = fx.add(Expression::LocalVariable(local), Span::default());
-        fx.push(
-            Statement::Store {
-                pointer: l,
-                value: a,
-            },
-            Span::default(),
-        );
+        fx.store_local(local, a, Span::default());
     }
     if fx.cx.hir.entry == Some(id) {
         fx.global_initializers()?;
@@ -278,6 +271,18 @@ pub(crate) fn lower_function(cx: &mut ModuleCx, id: FuncId) -> Result<naga::Func
 }
 
 impl<'c, 'a> FnCx<'c, 'a> {
+    /// Stores `value` into local variable `local`; the variable's pointer.
+    pub(super) fn store_local(
+        &mut self,
+        local: Handle<naga::LocalVariable>,
+        value: Handle<Expression>,
+        span: Span,
+    ) -> Handle<Expression> {
+        let pointer = self.add(Expression::LocalVariable(local), span);
+        self.push(Statement::Store { pointer, value }, span);
+        pointer
+    }
+
     /// The initializers that the private variables could not hold, stored at the start of
     /// `main` in declaration order: those that are not constant expressions (GLSL ES 1.00 as
     /// WebGL takes it: `float f = u_zero < 0.1 ? green : 0.0;`) and constants holding an

@@ -73,24 +73,10 @@ impl<'c, 'a> FnCx<'c, 'a> {
                 // Short-circuit: evaluate `b` only when needed.
                 let tmp = self.new_local("_essl_logic", &Type::BOOL);
                 let av = self.expr(a)?;
-                let p = self.add(Expression::LocalVariable(tmp), span);
-                self.push(
-                    Statement::Store {
-                        pointer: p,
-                        value: av,
-                    },
-                    span,
-                );
+                self.store_local(tmp, av, span);
                 let eval_b = self.capture(|fx| {
                     let bv = fx.expr(b)?;
-                    let p = fx.add(Expression::LocalVariable(tmp), span);
-                    fx.push(
-                        Statement::Store {
-                            pointer: p,
-                            value: bv,
-                        },
-                        span,
-                    );
+                    fx.store_local(tmp, bv, span);
                     Ok(())
                 })?;
                 let (accept, reject) = if op == BinaryOp::And {

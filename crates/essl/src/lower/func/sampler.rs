@@ -191,14 +191,7 @@ impl<'c, 'a> FnCx<'c, 'a> {
                 let body = self.capture(|fx| {
                     let v = lower(fx, &with_k)?;
                     if let Some(t) = tmp {
-                        let p = fx.add(Expression::LocalVariable(t), span);
-                        fx.push(
-                            Statement::Store {
-                                pointer: p,
-                                value: v,
-                            },
-                            span,
-                        );
+                        fx.store_local(t, v, span);
                     }
                     Ok(())
                 })?;

@@ -93,14 +93,7 @@ impl<'c, 'a> FnCx<'c, 'a> {
     fn local_init(&mut self, l: usize, init: &Expr, span: Span) -> Result<(), LowerError> {
         let local = self.local_handle(l);
         let v = self.expr(init)?;
-        let p = self.add(Expression::LocalVariable(local), span);
-        self.push(
-            Statement::Store {
-                pointer: p,
-                value: v,
-            },
-            span,
-        );
+        self.store_local(local, v, span);
         Ok(())
     }
 
