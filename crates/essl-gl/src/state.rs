@@ -240,7 +240,7 @@ impl Context {
 
     /// Enables a capability (`DEPTH_TEST`, `CULL_FACE`, `BLEND`, `SCISSOR_TEST`,
     /// `STENCIL_TEST`, `POLYGON_OFFSET_FILL`, `RASTERIZER_DISCARD`, `SAMPLE_ALPHA_TO_COVERAGE`,
-    /// …); an unknown one → `INVALID_ENUM`. `DITHER` and `SAMPLE_COVERAGE` are state only.
+    /// `SAMPLE_COVERAGE`, …); an unknown one → `INVALID_ENUM`. `DITHER` is state only.
     pub fn enable(&mut self, cap: u32) {
         self.capability(cap, true, "enable");
     }
@@ -378,8 +378,9 @@ impl Context {
         self.state.polygon_offset_units = units;
     }
 
-    /// Sets how many samples `SAMPLE_COVERAGE` keeps (`sampleCoverage`). essl-gl keeps the
-    /// value and reports it; the coverage mask it would make is not applied.
+    /// Sets how many samples `SAMPLE_COVERAGE` keeps (`sampleCoverage`): with the capability
+    /// enabled, draws into a multisampled framebuffer write the first `round(value · samples)`
+    /// samples of each pixel, or the others with `invert`. Clears are not masked.
     pub fn sample_coverage(&mut self, value: f32, invert: bool) {
         self.state.sample_coverage_value = (value.clamp(0.0, 1.0), invert);
     }

@@ -667,3 +667,55 @@ fn the_stencil_buffer_masks_later_draws() {
     assert_eq!(ctx.get_error(), gl::INVALID_OPERATION);
     assert_clean(&ctx);
 }
+
+/// Draws a full-screen white quad into a fresh 4-sample framebuffer with `SAMPLE_COVERAGE`
+/// (`value`, `invert`) and returns the resolved pixel.
+fn covered_pixel(ctx: &mut Context, value: f32, invert: bool) -> [u8; 4] {
+    let fb = renderbuffer_framebuffer(ctx, gl::RGBA8, 4, 4, 4);
+    ctx.clear_color(0.0, 0.0, 0.0, 1.0);
+    ctx.clear(gl::COLOR_BUFFER_BIT);
+    ctx.enable(gl::SAMPLE_COVERAGE);
+    ctx.sample_coverage(value, invert);
+    let p = program(ctx, PASS_VS, SOLID_FS);
+    ctx.use_program(Some(p));
+    let color = ctx.get_uniform_location(p, "u_color");
+    ctx.uniform4f(color, 1.0, 1.0, 1.0, 1.0);
+    float_attribute(
+        ctx,
+        0,
+        2,
+        &[
+            -1.0, -1.0, 1.0, -1.0, -1.0, 1.0, -1.0, 1.0, 1.0, -1.0, 1.0, 1.0,
+        ],
+    );
+    ctx.draw_arrays(gl::TRIANGLES, 0, 6);
+    ctx.disable(gl::SAMPLE_COVERAGE);
+    ctx.bind_framebuffer(gl::READ_FRAMEBUFFER, Some(fb));
+    ctx.bind_framebuffer(gl::DRAW_FRAMEBUFFER, None);
+    ctx.blit_framebuffer(0, 0, 4, 4, 0, 0, 4, 4, gl::COLOR_BUFFER_BIT, gl::NEAREST);
+    assert_eq!(ctx.get_error(), gl::NO_ERROR, "{:?}", ctx.error_message());
+    ctx.bind_framebuffer(gl::FRAMEBUFFER, None);
+    pixel(ctx, 1, 1)
+}
+
+#[test]
+fn sample_coverage_masks_the_samples_a_draw_writes() {
+    let Some(mut ctx) = context(4, 4) else { return };
+    let full = covered_pixel(&mut ctx, 1.0, false)[0];
+    let half = covered_pixel(&mut ctx, 0.5, false)[0];
+    let other_half = covered_pixel(&mut ctx, 0.5, true)[0];
+    let none = covered_pixel(&mut ctx, 0.0, false)[0];
+    let quarter = covered_pixel(&mut ctx, 0.25, false)[0];
+    assert_eq!((full, none), (255, 0));
+    // Two of four samples white: the resolve averages to half, however it rounds.
+    assert!(
+        (127..=128).contains(&half),
+        "half coverage resolved to {half}"
+    );
+    assert!(
+        (127..=128).contains(&other_half),
+        "inverted half: {other_half}"
+    );
+    assert!((63..=64).contains(&quarter), "a quarter: {quarter}");
+    assert_clean(&ctx);
+}

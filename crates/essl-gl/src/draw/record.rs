@@ -233,6 +233,7 @@ impl Context {
             stencil: s.stencil.wgpu(s.stencil_test),
             samples: target.samples,
             alpha_to_coverage: s.sample_alpha_to_coverage,
+            sample_mask: sample_mask(s, target.samples),
             float_blend: self.extensions.float_blend,
             capture: call.capture.as_ref().map(|c| c.spec.clone()),
             rasterize: call.rasterize,
@@ -384,5 +385,22 @@ impl Context {
             None => pass.draw(range.vertices, 0..instances),
         }
         frame.draws += 1;
+    }
+}
+
+/// The samples a draw writes: all, or with `SAMPLE_COVERAGE` enabled on a multisampled target
+/// the first `round(value · samples)` of them (the others with `invert`). GL leaves which
+/// samples to the implementation; a fixed choice keeps the result deterministic.
+fn sample_mask(s: &crate::state::RenderState, samples: u32) -> u64 {
+    if !s.sample_coverage || samples <= 1 {
+        return !0;
+    }
+    let (value, invert) = s.sample_coverage_value;
+    let all = (1u64 << samples) - 1;
+    let kept = (1u64 << (value * samples as f32).round() as u32) - 1;
+    if invert {
+        all & !kept
+    } else {
+        kept
     }
 }

@@ -63,6 +63,8 @@ pub(crate) struct PipelineKey {
     pub(crate) stencil: wgpu::StencilState,
     pub(crate) samples: u32,
     pub(crate) alpha_to_coverage: bool,
+    /// The samples a draw may write (`SAMPLE_COVERAGE`), bit `i` for sample `i`.
+    pub(crate) sample_mask: u64,
     /// `EXT_float_blend`: 32-bit float attachments blend.
     pub(crate) float_blend: bool,
     /// What transform feedback captures (the vertex stage writes storage buffers).
@@ -477,7 +479,7 @@ impl PipelineCache {
                 }),
                 multisample: wgpu::MultisampleState {
                     count: key.samples,
-                    mask: !0,
+                    mask: key.sample_mask,
                     alpha_to_coverage_enabled: key.alpha_to_coverage && key.samples > 1,
                 },
                 fragment: key.rasterize.then(|| wgpu::FragmentState {
