@@ -64,7 +64,7 @@ declare -A commit=(
 )
 # The paths each extractor reads (git pathspecs).
 declare -A paths=(
-    [webgl]="sdk/tests"
+    [webgl]="sdk/tests specs/latest/1.0/webgl.idl specs/latest/2.0/webgl2.idl"
     [glslang]="Test gtests"
     [fundamentals]="LICENSE :(glob)webgl/*.html :(glob)webgl/resources/*.js"
 )
@@ -120,8 +120,14 @@ python3 "$here/testdata/extract.py" --out "$out" \
     --webgl "${src[webgl]}" --glslang "${src[glslang]}" --fundamentals "${src[fundamentals]}" \
     --fundamentals-commit "${commit[fundamentals]}" "${extra[@]+"${extra[@]}"}"
 
+# The WebGL IDL, as ../shared/specs names it (crates/essl-gl-script/tests/idl.rs reads it).
+specs="$(cd "$out/.." && pwd)/specs"
+mkdir -p "$specs"
+cp "${src[webgl]}/specs/latest/1.0/webgl.idl" "$specs/webgl1.idl"
+cp "${src[webgl]}/specs/latest/2.0/webgl2.idl" "$specs/webgl2.idl"
+
 cat <<NOTE
-Wrote $out
+Wrote $out and $specs (ESSL_SPECS=$specs)
 Not written: the chromium_webgl1/chromium_webgl2 fields of webgl_conformance_es100.jsonl
 (they come from running the cases in Chromium), and the scenes and seeds of ../shared
 (not from a public upstream repository).
