@@ -1,8 +1,9 @@
-//! Printing `essl lint`'s results: human (codespan, optionally coloured) or JSON Lines.
+//! Printing `essl lint`'s results: human (codespan, optionally coloured), JSON Lines, or one
+//! line per diagnostic (concise, GitHub annotations: [`super::lines`]).
 //!
 //! Each format is a pair of functions, one for a shader and one for a program, so that a new
-//! format (GitHub annotations, say) is one more pair and one more [`Format`] variant. SARIF
-//! needs every file at once, so it is written by [`write`] from the kept diagnostics.
+//! format is one more pair and one more [`Format`] variant. SARIF needs every file at once, so
+//! it is written by [`write`] from the kept diagnostics.
 
 use std::io::Write;
 
@@ -14,9 +15,11 @@ use essl::source::SourceFile;
 use essl::{Shader, Stage};
 use serde_json::{json, Value};
 
+use super::lines;
 use super::options::{Format, Look};
 use super::results::{Checked, Linked, LintResults, Totals};
-use crate::files::{Input, ReadError};
+use crate::discover::{Input, Source};
+use crate::files::ReadError;
 
 fn plural(n: usize, word: &str) -> String {
     match (n, word) {
@@ -55,7 +58,40 @@ fn summary_line(t: &Totals) -> String {
             plural(t.notes_hidden, "note")
         ));
     }
+    if t.skipped > 0 {
+        s.push_str(&format!(", {} skipped", plural(t.skipped, "shader")));
+    }
     s
+}
+
+/// Writes what `--fix` changed as unified diffs (`--diff`), or, for standard input, the fixed
+/// text itself.
+pub(crate) fn write_fixed(
+    out: &mut dyn Write,
+    results: &LintResults,
+    diff: bool,
+) -> std::io::Result<()> {
+    for f in &results.files {
+        let Some((old, new)) = &f.fixed else { continue };
+        let stdin = match &f.input.source {
+            Source::Text(_) => true,
+            Source::Embedded(host, _) => host.stdin,
+            Source::File => false,
+        };
+        if diff {
+            let name = f.input.path.display().to_string();
+            let text = similar::TextDiff::from_lines(old.as_str(), new.as_str());
+            write!(
+                out,
+                "{}",
+                text.unified_diff()
+                    .header(&format!("a/{name}"), &format!("b/{name}"))
+            )?;
+        } else if stdin {
+            out.write_all(new.as_bytes())?;
+        }
+    }
+    Ok(())
 }
 
 /// Writes every result in order (files sorted by path, then programs) and the summary (a line
@@ -63,7 +99,10 @@ fn summary_line(t: &Totals) -> String {
 /// are also reported on stderr.
 pub(crate) fn write(out: &mut dyn Write, results: &LintResults, look: Look) -> std::io::Result<()> {
     for e in &results.collect_errors {
-        eprintln!("error: cannot read {e}");
+        eprintln!("error: {e}");
+    }
+    for s in &results.skipped {
+        eprintln!("skipped {}: {}", s.at, s.reason);
     }
     for f in &results.files {
         if let Some(e) = &f.read_error {
@@ -84,7 +123,9 @@ pub(crate) fn write(out: &mut dyn Write, results: &LintResults, look: Look) -> s
     }
     let t = results.totals();
     match look.format {
-        Format::Human => {
+        Format::Human | Format::Concise | Format::Github if look.quiet => {}
+        Format::Github => {}
+        Format::Human | Format::Concise => {
             let mut summary = buffer(look.color);
             summary.set_color(ColorSpec::new().set_bold(true))?;
             write!(summary, "{}", summary_line(&t))?;
@@ -139,19 +180,42 @@ pub(crate) fn render_file(
             line
         }
         Format::Sarif => Vec::new(),
+        Format::Concise | Format::Github => match checked {
+            Ok(c) => c
+                .shader
+                .diagnostics
+                .iter()
+                .map(|d| lines::line(look.format, Some(&c.shader.file), "", d))
+                .collect::<String>()
+                .into_bytes(),
+            Err(_) => Vec::new(),
+        },
     }
 }
 
 /// A program's output in `look.format`.
 pub(crate) fn render_program(linked: &Linked, look: Look) -> Vec<u8> {
     match look.format {
-        Format::Human => human_program(linked, look.color),
+        Format::Human => human_program(linked, look),
         Format::Json => {
             let mut line = json_program(linked, look).to_string().into_bytes();
             line.push(b'\n');
             line
         }
         Format::Sarif => Vec::new(),
+        Format::Concise | Format::Github => {
+            let fallback = linked.vertex.path.display().to_string();
+            linked
+                .program
+                .diagnostics
+                .iter()
+                .map(|d| {
+                    let file = file_of(linked.vs, linked.fs, d);
+                    lines::line(look.format, file, &fallback, &d.diagnostic)
+                })
+                .collect::<String>()
+                .into_bytes()
+        }
     }
 }
 
@@ -201,7 +265,7 @@ fn write_human_file(
         writeln!(
             buf,
             " `{}`: {} applied",
-            input.path.display(),
+            input.label(),
             plural(c.fixes_applied, "fix")
         )?;
     }
@@ -214,22 +278,18 @@ fn write_human_file(
 }
 
 fn program_name(vertex: &Input, fragment: &Input) -> String {
-    format!(
-        "`{}` + `{}`",
-        vertex.path.display(),
-        fragment.path.display()
-    )
+    format!("`{}` + `{}`", vertex.label(), fragment.label())
 }
 
 /// A program's human output: one line when it links cleanly or was not linked; otherwise its
 /// diagnostics, each shown in the shader it points into, and the info log when linking failed.
-fn human_program(linked: &Linked, color: bool) -> Vec<u8> {
-    let mut buf = buffer(color);
-    let _ = write_human_program(&mut buf, linked);
+fn human_program(linked: &Linked, look: Look) -> Vec<u8> {
+    let mut buf = buffer(look.color);
+    let _ = write_human_program(&mut buf, linked, look.quiet);
     buf.into_inner()
 }
 
-fn write_human_program(buf: &mut Buffer, linked: &Linked) -> std::io::Result<()> {
+fn write_human_program(buf: &mut Buffer, linked: &Linked, quiet: bool) -> std::io::Result<()> {
     let Linked {
         vertex,
         fragment,
@@ -238,6 +298,9 @@ fn write_human_program(buf: &mut Buffer, linked: &Linked) -> std::io::Result<()>
         program,
     } = *linked;
     let name = program_name(vertex, fragment);
+    if quiet && (program.ok || !vs.ok() || !fs.ok()) && program.diagnostics.is_empty() {
+        return Ok(());
+    }
     if !vs.ok() || !fs.ok() {
         let broken = match (vs.ok(), fs.ok()) {
             (false, false) => "the vertex and fragment shaders have errors",
@@ -293,7 +356,8 @@ fn file_of<'a>(vs: &'a Shader, fs: &'a Shader, d: &LinkDiagnostic) -> Option<&'a
 /// A shader's JSON object:
 /// `{"kind":"shader","file","stage","target","version","ok","diagnostics":[…]}` (`target`:
 /// `webgl1` or `webgl2`; `version`: `100` or `300 es`, absent when the file could not be
-/// read), with `"fixes_applied"` under `--fix`, and `"error"` when the file could not be read
+/// read), with `"embedded_at"` (`FILE:LINE`) for a shader inside an HTML or JS file,
+/// `"fixes_applied"` under `--fix`, and `"error"` when the file could not be read
 /// (or the fix written back).
 fn json_file(input: &Input, checked: &Result<Checked, ReadError>, look: Look) -> Value {
     let file = input.path.display().to_string();
@@ -329,6 +393,9 @@ fn json_file(input: &Input, checked: &Result<Checked, ReadError>, look: Look) ->
                 "ok": c.shader.ok(),
                 "diagnostics": diagnostics,
             });
+            if let Source::Embedded(..) = input.source {
+                v["embedded_at"] = json!(input.label());
+            }
             if fix {
                 v["fixes_applied"] = json!(c.fixes_applied);
                 if let Some(e) = &c.write_error {
@@ -376,8 +443,8 @@ fn json_program(linked: &Linked, look: Look) -> Value {
         .collect();
     json!({
         "kind": "program",
-        "vertex": vertex.path.display().to_string(),
-        "fragment": fragment.path.display().to_string(),
+        "vertex": vertex.label(),
+        "fragment": fragment.label(),
         "target": look.target.as_str(),
         "ok": program.ok,
         "log": program.log,
