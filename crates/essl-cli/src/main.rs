@@ -27,6 +27,8 @@ enum Command {
         /// A code (`missing-semicolon`, `pow-negative-base`…).
         code: Option<String>,
     },
+    /// Run the Language Server over standard input and output, for editors (docs/editors.md).
+    Server,
     /// Show the settings that apply to a folder: its nearest essl.toml, every key filled in.
     Config {
         /// The folder (or file) whose settings to show (default: the current folder).
@@ -490,6 +492,13 @@ fn main() -> ExitCode {
     let status = match cli.command {
         Command::Rules { rule } => essl_cli::rules::run(rule.as_deref()),
         Command::Explain { code } => essl_cli::explain::run(code.as_deref()),
+        Command::Server => match essl_server::run_stdio() {
+            Ok(()) => 0,
+            Err(e) => {
+                eprintln!("error: {e}");
+                1
+            }
+        },
         Command::Config { path, config } => {
             essl_cli::settings::run(config.as_deref(), path.as_deref())
         }
