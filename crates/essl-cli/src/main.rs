@@ -21,7 +21,7 @@ enum Command {
     /// Check shaders as WebGL2 would, and link each NAME.vert + NAME.frag pair.
     ///
     /// Exit status: 0 clean (warnings allowed), 1 errors, 2 usage or I/O errors.
-    Lint(LintArgs),
+    Lint(Box<LintArgs>),
     /// Show the documentation of a diagnostic code or lint rule (all codes without one).
     Explain {
         /// A code (`missing-semicolon`, `pow-negative-base`…).
@@ -262,6 +262,12 @@ struct LintArgs {
     #[arg(short = 'D', value_name = "NAME[=VALUE]", value_parser = parse_define)]
     define: Vec<(String, String)>,
 
+    /// Allow `#include "FILE"`, searched in the including file's folder, then in DIR (repeat
+    /// for more; essl.toml's `include` adds its folders after these). GLSL ES has no
+    /// `#include`: without an include folder it stays an error.
+    #[arg(short = 'I', value_name = "DIR")]
+    include: Vec<PathBuf>,
+
     /// Do not link NAME.vert + NAME.frag pairs.
     #[arg(long)]
     no_link: bool,
@@ -433,6 +439,8 @@ fn lint(args: LintArgs, matches: &clap::ArgMatches) -> i32 {
     };
     let mut defines = config.defines.clone();
     defines.extend(args.define);
+    let mut include_dirs = args.include.clone();
+    include_dirs.extend(config.include_dirs());
     let target = args
         .target
         .map(essl::Target::from)
@@ -469,6 +477,7 @@ fn lint(args: LintArgs, matches: &clap::ArgMatches) -> i32 {
         deny_warnings: deny_warnings || config.deny_warnings,
         show_notes: args.show_notes,
         defines,
+        include_dirs,
         link: !args.no_link,
         target,
         rules,
@@ -508,7 +517,7 @@ fn main() -> ExitCode {
             output,
             times,
         } => essl_cli::render::run(&scene, &output, times),
-        Command::Lint(args) => lint(args, &matches),
+        Command::Lint(args) => lint(*args, &matches),
         #[cfg(feature = "report")]
         Command::Report { out, quick, scenes } => essl_cli::report::run(&out, quick, &scenes),
         #[cfg(feature = "render")]

@@ -190,3 +190,54 @@ fn explain_prints_every_codes_page() {
     let o = essl(&["explain", "no-such-code"], dir.path());
     assert_eq!(o.status.code(), Some(2));
 }
+
+#[test]
+fn includes_are_opt_in_and_report_into_the_included_file() {
+    let dir = tempfile::tempdir().unwrap();
+    std::fs::create_dir_all(dir.path().join("common")).unwrap();
+    std::fs::write(
+        dir.path().join("common/light.glsl"),
+        "float light(float d) {\n    return d * 0.5\n}\n",
+    )
+    .unwrap();
+    let main = "#version 300 es\nprecision highp float;\n#include \"light.glsl\"\nout vec4 c;\nvoid main() { c = vec4(light(1.0)); }\n";
+    std::fs::write(dir.path().join("a.frag"), main).unwrap();
+    // Without an include folder, `#include` is the error GLSL ES makes it.
+    let o = essl(&["lint", "--format", "concise", "a.frag"], dir.path());
+    assert!(
+        out(&o).starts_with("a.frag:3:1: error[unknown-directive]"),
+        "{}",
+        out(&o)
+    );
+    // With one, the error inside the included file is reported at its own line.
+    let o = essl(
+        &["lint", "-I", "common", "--format", "concise", "a.frag"],
+        dir.path(),
+    );
+    assert_eq!(o.status.code(), Some(1), "{}{}", out(&o), err(&o));
+    assert!(
+        out(&o).starts_with("common/light.glsl:2:19: error[missing-semicolon]"),
+        "{}",
+        out(&o)
+    );
+    std::fs::write(
+        dir.path().join("common/light.glsl"),
+        "float light(float d) {\n    return d * 0.5;\n}\n",
+    )
+    .unwrap();
+    let o = essl(&["lint", "-I", "common", "a.frag"], dir.path());
+    assert_eq!(o.status.code(), Some(0), "{}{}", out(&o), err(&o));
+    // An include that cannot be found names the line.
+    std::fs::write(
+        dir.path().join("b.frag"),
+        main.replace("light.glsl", "none.glsl"),
+    )
+    .unwrap();
+    let o = essl(&["lint", "-I", "common", "b.frag"], dir.path());
+    assert_eq!(o.status.code(), Some(2));
+    assert!(
+        err(&o).contains("line 3: `#include \"none.glsl\"`: no such file"),
+        "{}",
+        err(&o)
+    );
+}

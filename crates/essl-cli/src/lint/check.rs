@@ -11,12 +11,13 @@ use essl::{compile, CompileOptions, Shader, Stage};
 use rayon::prelude::*;
 
 use super::fix;
+use super::include;
 use super::options::{Format, LintOptions, Look};
 use super::output;
 use super::relocate::relocate;
 use super::results::{program_counts, Checked, FileResult, Linked, LintResults, ProgramResult};
 use crate::discover::{Host, Input, Source};
-use crate::files::{self, ReadError};
+use crate::files;
 
 /// Adds the numerical-hazard lints to a compiled shader's diagnostics (notes only under
 /// `--show-notes`); returns how many notes were left out.
@@ -37,13 +38,13 @@ fn add_lints(shader: &mut Shader, options: &LintOptions) -> usize {
     hidden
 }
 
-/// (Fixes,) compiles and lints one shader's text; nothing is written.
-fn check_text(name: &str, text: String, stage: Stage, options: &LintOptions) -> Checked {
+/// (Fixes, when `fix`,) compiles and lints one shader's text; nothing is written.
+fn check_text(name: &str, text: String, stage: Stage, options: &LintOptions, fix: bool) -> Checked {
     let compile_options = CompileOptions {
         defines: options.defines.clone(),
         ..CompileOptions::for_target(options.target)
     };
-    let mut checked = if options.fix {
+    let mut checked = if fix {
         let original = text.clone();
         let fixed = fix::fix_text(name, text, stage, &compile_options, options.unsafe_fixes);
         let changed = fixed.applied > 0 && fixed.text != original;
@@ -53,6 +54,7 @@ fn check_text(name: &str, text: String, stage: Stage, options: &LintOptions) -> 
             fixed: changed.then_some((original, fixed.text)),
             write_error: None,
             notes_hidden: 0,
+            included: Vec::new(),
         }
     } else {
         Checked {
@@ -61,25 +63,42 @@ fn check_text(name: &str, text: String, stage: Stage, options: &LintOptions) -> 
             fixed: None,
             write_error: None,
             notes_hidden: 0,
+            included: Vec::new(),
         }
     };
     checked.notes_hidden = add_lints(&mut checked.shader, options);
     checked
 }
 
+/// Compiles and lints a shader with its `#include`s put in place (`-I`), each diagnostic moved
+/// onto the file it points into. `--fix` leaves such a shader alone.
+fn check_expanded(input: &Input, text: String, options: &LintOptions) -> Result<Checked, String> {
+    let name = input.path.display().to_string();
+    let expanded = include::expand(
+        SourceFile::new(name.as_str(), text),
+        &input.path,
+        &options.include_dirs,
+    )?;
+    let mut checked = check_text(&name, expanded.text.clone(), input.stage, options, false);
+    let (mine, theirs) = expanded.split(std::mem::take(&mut checked.shader.diagnostics));
+    checked.shader.diagnostics = mine;
+    checked.shader.file = expanded.files[0].clone();
+    checked.included = theirs;
+    Ok(checked)
+}
+
 /// Reads, (fixes,) compiles and lints a shader file or standard input, and writes a fix back
 /// to the file (not under `--diff`; standard input's fixed text is printed instead).
-fn check_file(input: &Input, options: &LintOptions) -> Result<Checked, ReadError> {
+fn check_file(input: &Input, options: &LintOptions) -> Result<Checked, String> {
     let text = match &input.source {
         Source::Text(t) => t.to_string(),
-        _ => files::read_source(&input.path)?,
+        _ => files::read_source(&input.path).map_err(|e| e.to_string())?,
     };
-    let mut checked = check_text(
-        &input.path.display().to_string(),
-        text,
-        input.stage,
-        options,
-    );
+    if !options.include_dirs.is_empty() && include::has_include(&text) {
+        return check_expanded(input, text, options);
+    }
+    let name = input.path.display().to_string();
+    let mut checked = check_text(&name, text, input.stage, options, options.fix);
     if let (Some((_, new)), Source::File, false) = (&checked.fixed, &input.source, options.diff) {
         checked.write_error = fix::write_atomically(&input.path, new)
             .err()
@@ -89,16 +108,20 @@ fn check_file(input: &Input, options: &LintOptions) -> Result<Checked, ReadError
 }
 
 /// A checked shader's result, rendered with `look`.
-fn file_result(input: &Input, checked: &Result<Checked, ReadError>, look: Look) -> FileResult {
+fn file_result(input: &Input, checked: &Result<Checked, String>, look: Look) -> FileResult {
     let rendered = output::render_file(input, checked, look);
     let mut result = FileResult::new(input.clone(), rendered);
     match checked {
-        Err(e) => result.read_error = Some(e.to_string()),
+        Err(e) => result.read_error = Some(e.clone()),
         Ok(c) => {
+            let included = c.included.iter().flat_map(|(_, ds)| ds);
+            let count = |s: essl::diagnostic::Severity| {
+                included.clone().filter(|d| d.severity == s).count()
+            };
             result.write_error = c.write_error.clone();
-            result.errors = c.shader.error_count();
-            result.warnings = c.shader.warning_count();
-            result.notes = c.shader.note_count();
+            result.errors = c.shader.error_count() + count(essl::diagnostic::Severity::Error);
+            result.warnings = c.shader.warning_count() + count(essl::diagnostic::Severity::Warning);
+            result.notes = c.shader.note_count() + count(essl::diagnostic::Severity::Note);
             result.notes_hidden = c.notes_hidden;
             result.fixes_applied = c.fixes_applied;
             result.codes = c
@@ -108,8 +131,13 @@ fn file_result(input: &Input, checked: &Result<Checked, ReadError>, look: Look) 
                 .map(|d| (d.code, d.severity))
                 .collect();
             result.fixed = c.fixed.clone();
-            result.diagnostics = (look.format == Format::Sarif)
-                .then(|| (c.shader.file.clone(), c.shader.diagnostics.clone()));
+            result
+                .codes
+                .extend(included.clone().map(|d| (d.code, d.severity)));
+            if look.format == Format::Sarif {
+                result.diagnostics = Some((c.shader.file.clone(), c.shader.diagnostics.clone()));
+                result.included = c.included.clone();
+            }
         }
     }
     result
@@ -281,8 +309,11 @@ fn check_unit(
             progress();
             let fs = check_file(&inputs[f], options);
             progress();
+            // A pair whose includes have errors is not linked: its shaders are incomplete.
             let program = match (&vs, &fs) {
-                (Ok(a), Ok(b)) => vec![(v, link_pair(inputs, v, f, &a.shader, &b.shader, look))],
+                (Ok(a), Ok(b)) if a.included_ok() && b.included_ok() => {
+                    vec![(v, link_pair(inputs, v, f, &a.shader, &b.shader, look))]
+                }
                 _ => Vec::new(),
             };
             let files = vec![
@@ -318,7 +349,7 @@ fn check_host(
         .iter()
         .map(|&m| {
             let text = host.text[range(m)].to_string();
-            let c = check_text(&name, text, inputs[m].stage, options);
+            let c = check_text(&name, text, inputs[m].stage, options, options.fix);
             progress();
             c
         })

@@ -14,6 +14,7 @@
 
 mod check;
 mod fix;
+mod include;
 mod lines;
 mod options;
 mod output;

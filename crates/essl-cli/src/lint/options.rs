@@ -83,6 +83,9 @@ pub struct LintOptions {
     pub show_notes: bool,
     /// `-D NAME[=VALUE]` macros.
     pub defines: Vec<(String, String)>,
+    /// `-I DIR` (and essl.toml's `include`): folders `#include "FILE"` searches after the
+    /// including file's own; empty, `#include` stays an error as GLSL ES has it.
+    pub include_dirs: Vec<PathBuf>,
     /// Link `NAME.vert` + `NAME.frag` pairs (on unless `--no-link`).
     pub link: bool,
     /// `--target`: the WebGL version of the context (WebGL 2 unless asked).

@@ -19,7 +19,6 @@ use super::lines;
 use super::options::{Format, Look};
 use super::results::{Checked, Linked, LintResults, Totals};
 use crate::discover::{Input, Source};
-use crate::files::ReadError;
 
 fn plural(n: usize, word: &str) -> String {
     match (n, word) {
@@ -167,11 +166,7 @@ fn buffer(color: bool) -> Buffer {
 }
 
 /// A file's output in `look.format`.
-pub(crate) fn render_file(
-    input: &Input,
-    checked: &Result<Checked, ReadError>,
-    look: Look,
-) -> Vec<u8> {
+pub(crate) fn render_file(input: &Input, checked: &Result<Checked, String>, look: Look) -> Vec<u8> {
     match look.format {
         Format::Human => human_file(input, checked, look),
         Format::Json => {
@@ -181,11 +176,12 @@ pub(crate) fn render_file(
         }
         Format::Sarif => Vec::new(),
         Format::Concise | Format::Github => match checked {
-            Ok(c) => c
-                .shader
-                .diagnostics
-                .iter()
-                .map(|d| lines::line(look.format, Some(&c.shader.file), "", d))
+            Ok(c) => std::iter::once((&c.shader.file, &c.shader.diagnostics))
+                .chain(c.included.iter().map(|(f, ds)| (f, ds)))
+                .flat_map(|(f, ds)| {
+                    ds.iter()
+                        .map(move |d| lines::line(look.format, Some(f), "", d))
+                })
                 .collect::<String>()
                 .into_bytes(),
             Err(_) => Vec::new(),
@@ -225,7 +221,7 @@ fn sarif(results: &LintResults) -> String {
     let mut files: Vec<(SourceFile, Vec<Diagnostic>)> = results
         .files
         .iter()
-        .filter_map(|f| f.diagnostics.clone())
+        .flat_map(|f| f.diagnostics.clone().into_iter().chain(f.included.clone()))
         .collect();
     for p in &results.programs {
         for (path, d) in &p.diagnostics {
@@ -244,7 +240,7 @@ fn sarif(results: &LintResults) -> String {
 }
 
 /// A file's human output: how many fixes were applied, then its diagnostics.
-fn human_file(input: &Input, checked: &Result<Checked, ReadError>, look: Look) -> Vec<u8> {
+fn human_file(input: &Input, checked: &Result<Checked, String>, look: Look) -> Vec<u8> {
     let mut buf = buffer(look.color);
     if let Ok(c) = checked {
         let _ = write_human_file(&mut buf, input, c, look.fix);
@@ -269,12 +265,12 @@ fn write_human_file(
             plural(c.fixes_applied, "fix")
         )?;
     }
-    render::emit_human(
-        buf,
-        &c.shader.file,
-        &c.shader.diagnostics,
-        &render::default_config(),
-    )
+    let config = render::default_config();
+    render::emit_human(buf, &c.shader.file, &c.shader.diagnostics, &config)?;
+    for (file, diagnostics) in &c.included {
+        render::emit_human(buf, file, diagnostics, &config)?;
+    }
+    Ok(())
 }
 
 fn program_name(vertex: &Input, fragment: &Input) -> String {
@@ -359,7 +355,7 @@ fn file_of<'a>(vs: &'a Shader, fs: &'a Shader, d: &LinkDiagnostic) -> Option<&'a
 /// read), with `"embedded_at"` (`FILE:LINE`) for a shader inside an HTML or JS file,
 /// `"fixes_applied"` under `--fix`, and `"error"` when the file could not be read
 /// (or the fix written back).
-fn json_file(input: &Input, checked: &Result<Checked, ReadError>, look: Look) -> Value {
+fn json_file(input: &Input, checked: &Result<Checked, String>, look: Look) -> Value {
     let file = input.path.display().to_string();
     let fix = look.fix;
     match checked {
@@ -373,12 +369,19 @@ fn json_file(input: &Input, checked: &Result<Checked, ReadError>, look: Look) ->
             "diagnostics": [],
         }),
         Ok(c) => {
-            let diagnostics: Vec<Value> = c
+            let mut diagnostics: Vec<Value> = c
                 .shader
                 .diagnostics
                 .iter()
                 .map(|d| render::to_json(&c.shader.file, d))
                 .collect();
+            for (file, ds) in &c.included {
+                diagnostics.extend(ds.iter().map(|d| {
+                    let mut v = render::to_json(file, d);
+                    v["file"] = json!(file.name());
+                    v
+                }));
+            }
             let version = if c.shader.module.version == essl::Version::Es100 {
                 "100"
             } else {

@@ -25,6 +25,17 @@ pub(crate) struct Checked {
     pub write_error: Option<String>,
     /// Lint notes left out (no `--show-notes`).
     pub notes_hidden: usize,
+    /// Diagnostics inside `#include`d files (`-I`), with each file.
+    pub included: Vec<(SourceFile, Vec<essl::diagnostic::Diagnostic>)>,
+}
+
+impl Checked {
+    /// Whether its included files have no errors.
+    pub fn included_ok(&self) -> bool {
+        self.included
+            .iter()
+            .all(|(_, ds)| !ds.iter().any(|d| d.is_error()))
+    }
 }
 
 /// The two shaders of a linked pair and their program.
@@ -70,6 +81,8 @@ pub(crate) struct FileResult {
     pub rendered: Vec<u8>,
     /// Its text and diagnostics, kept for formats that need every file at once (SARIF).
     pub diagnostics: Option<(SourceFile, Vec<essl::diagnostic::Diagnostic>)>,
+    /// Diagnostics inside its `#include`d files, kept likewise.
+    pub included: Vec<(SourceFile, Vec<essl::diagnostic::Diagnostic>)>,
 }
 
 impl FileResult {
@@ -88,6 +101,7 @@ impl FileResult {
             codes: Vec::new(),
             rendered,
             diagnostics: None,
+            included: Vec::new(),
         }
     }
 }
