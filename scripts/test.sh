@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# The whole test suite on a fresh machine: system packages, formatting, clippy, every test.
+# The whole test suite on a fresh machine: system packages, formatting, clippy, every test, and
+# a real editor (headless Neovim) driving `essl server`.
 # GPU tests render on lavapipe (software Vulkan). Tests that need data outside the repository
 # (corpora, scenes, seeds: ESSL_CORPORA / ESSL_SCENES / ESSL_SEEDS, else ../shared/...) skip
 # with a message where it is absent; ESSL_REQUIRE_CORPORA=1 turns that skip into a failure, and
@@ -11,3 +12,4 @@ export XDG_RUNTIME_DIR="${XDG_RUNTIME_DIR:-$(mktemp -d)}"
 cargo fmt --all -- --check
 cargo clippy --workspace --all-targets --quiet -- -D warnings
 cargo test --workspace --quiet
+ESSL="$PWD/target/debug/essl" ./scripts/editor-neovim.sh

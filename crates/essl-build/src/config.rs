@@ -3,10 +3,18 @@
 //! silently turn a setting off).
 //!
 //! ```toml
-//! # The WebGL version the shaders are for (only "webgl2" today).
+//! # The WebGL version the shaders are for: "webgl2" (the default) or "webgl1".
 //! target = "webgl2"
 //! # Files and folders to leave out, as globs relative to this file's folder.
 //! exclude = ["vendor/**", "*.verbatim.frag"]
+//! # Folders `#include "FILE"` searches (relative to this file's folder), for `essl lint`.
+//! include = ["shaders/common"]
+//!
+//! # The stage of files whose extension does not tell it (`.glsl`), as globs relative to this
+//! # file's folder or matching a file name.
+//! [stages]
+//! vertex = ["*.vs.glsl", "vertex/**"]
+//! fragment = ["*.fs.glsl"]
 //!
 //! # Macros defined before each shader's first line, as `#define NAME VALUE`.
 //! [defines]
@@ -50,7 +58,7 @@ pub enum ConfigError {
         message: String,
     },
     /// `target` names a WebGL version essl does not check.
-    #[error("{}: target `{target}` is not supported (supported: webgl2)", .path.display())]
+    #[error("{}: target `{target}` is not supported (supported: webgl2, webgl1)", .path.display())]
     Target {
         /// The file.
         path: PathBuf,
@@ -65,8 +73,8 @@ pub enum ConfigError {
         /// What is wrong.
         message: String,
     },
-    /// An `exclude` pattern that is not a glob.
-    #[error("{}: exclude pattern `{pattern}`: {message}", .path.display())]
+    /// An `exclude` or `[stages]` pattern that is not a glob.
+    #[error("{}: pattern `{pattern}`: {message}", .path.display())]
     Glob {
         /// The file.
         path: PathBuf,
@@ -88,6 +96,20 @@ struct ConfigFile {
     defines: BTreeMap<String, String>,
     #[serde(default)]
     rules: BTreeMap<String, String>,
+    #[serde(default)]
+    include: Vec<PathBuf>,
+    #[serde(default)]
+    stages: StagesFile,
+}
+
+/// The `[stages]` table as written.
+#[derive(Debug, Default, Deserialize)]
+#[serde(deny_unknown_fields)]
+struct StagesFile {
+    #[serde(default)]
+    vertex: Vec<String>,
+    #[serde(default)]
+    fragment: Vec<String>,
 }
 
 /// The settings for the shaders under one folder: an `essl.toml` read and checked, or the
@@ -102,7 +124,16 @@ pub struct Config {
     pub rules: LintOptions,
     /// `warnings = "deny"`: every warning counts as an error.
     pub deny_warnings: bool,
+    /// The WebGL version named by `target` (`None`: not set, WebGL 2).
+    pub target: Option<essl::Target>,
+    /// `include`: folders `#include` searches, relative to the file's folder as written.
+    pub include: Vec<PathBuf>,
+    /// The `exclude` patterns as written.
+    pub exclude_patterns: Vec<String>,
+    /// The `[stages]` patterns as written: vertex, then fragment.
+    pub stage_patterns: [Vec<String>; 2],
     exclude: Option<GlobSet>,
+    stages: [Option<GlobSet>; 2],
 }
 
 impl Config {
@@ -121,12 +152,17 @@ impl Config {
             path: path.to_path_buf(),
             message: e.to_string().trim_end().to_string(),
         })?;
-        if let Some(target) = file.target.filter(|t| t != "webgl2") {
-            return Err(ConfigError::Target {
-                path: path.to_path_buf(),
-                target,
-            });
-        }
+        let target = match file.target.as_deref() {
+            None => None,
+            Some("webgl2") => Some(essl::Target::WebGl2),
+            Some("webgl1") => Some(essl::Target::WebGl1),
+            Some(other) => {
+                return Err(ConfigError::Target {
+                    path: path.to_path_buf(),
+                    target: other.to_string(),
+                })
+            }
+        };
         let mut rules = LintOptions::new();
         let mut deny_warnings = false;
         // `all` first, so that a rule named beside it wins whatever the key order.
@@ -153,30 +189,22 @@ impl Config {
                 message: e.to_string(),
             })?;
         }
-        let exclude = if file.exclude.is_empty() {
-            None
-        } else {
-            let mut set = GlobSetBuilder::new();
-            for pattern in &file.exclude {
-                let glob = Glob::new(pattern).map_err(|e| ConfigError::Glob {
-                    path: path.to_path_buf(),
-                    pattern: pattern.clone(),
-                    message: e.kind().to_string(),
-                })?;
-                set.add(glob);
-            }
-            Some(set.build().map_err(|e| ConfigError::Glob {
-                path: path.to_path_buf(),
-                pattern: file.exclude.join(", "),
-                message: e.to_string(),
-            })?)
-        };
+        let exclude = glob_set(&file.exclude, path)?;
+        let stages = [
+            glob_set(&file.stages.vertex, path)?,
+            glob_set(&file.stages.fragment, path)?,
+        ];
         Ok(Config {
             path: Some(path.to_path_buf()),
             defines: file.defines.into_iter().collect(),
             rules,
             deny_warnings,
+            target,
+            include: file.include,
+            exclude_patterns: file.exclude,
+            stage_patterns: [file.stages.vertex, file.stages.fragment],
             exclude,
+            stages,
         })
     }
 
@@ -195,7 +223,23 @@ impl Config {
     /// Whether `path` matches an `exclude` pattern (patterns are relative to the folder of the
     /// `essl.toml`; a pattern without `/` also matches a file name in any folder).
     pub fn excludes(&self, path: &Path) -> bool {
-        let (Some(set), Some(file)) = (&self.exclude, &self.path) else {
+        self.matches(self.exclude.as_ref(), path)
+    }
+
+    /// The stage `[stages]` gives `path` (vertex patterns first), if a pattern matches.
+    pub fn stage_of(&self, path: &Path) -> Option<essl::Stage> {
+        if self.matches(self.stages[0].as_ref(), path) {
+            Some(essl::Stage::Vertex)
+        } else if self.matches(self.stages[1].as_ref(), path) {
+            Some(essl::Stage::Fragment)
+        } else {
+            None
+        }
+    }
+
+    /// Whether `path`, relative to this file's folder, or its file name matches `set`.
+    fn matches(&self, set: Option<&GlobSet>, path: &Path) -> bool {
+        let (Some(set), Some(file)) = (set, &self.path) else {
             return false;
         };
         let base = file.parent().unwrap_or(Path::new(""));
@@ -204,13 +248,44 @@ impl Config {
         set.is_match(relative) || path.file_name().is_some_and(|name| set.is_match(name))
     }
 
+    /// The `include` folders, resolved against this file's folder.
+    pub fn include_dirs(&self) -> Vec<PathBuf> {
+        let base = self
+            .path
+            .as_deref()
+            .and_then(Path::parent)
+            .unwrap_or(Path::new(""));
+        self.include.iter().map(|d| base.join(d)).collect()
+    }
+
     /// The compile options these settings give.
     pub fn compile_options(&self) -> essl::CompileOptions {
         essl::CompileOptions {
             defines: self.defines.clone(),
-            ..essl::CompileOptions::default()
+            ..essl::CompileOptions::for_target(self.target.unwrap_or(essl::Target::WebGl2))
         }
     }
+}
+
+/// The glob set of `patterns` (`None` when there are none); an error names the pattern.
+fn glob_set(patterns: &[String], path: &Path) -> Result<Option<GlobSet>, ConfigError> {
+    if patterns.is_empty() {
+        return Ok(None);
+    }
+    let mut set = GlobSetBuilder::new();
+    for pattern in patterns {
+        let glob = Glob::new(pattern).map_err(|e| ConfigError::Glob {
+            path: path.to_path_buf(),
+            pattern: pattern.clone(),
+            message: e.kind().to_string(),
+        })?;
+        set.add(glob);
+    }
+    set.build().map(Some).map_err(|e| ConfigError::Glob {
+        path: path.to_path_buf(),
+        pattern: patterns.join(", "),
+        message: e.to_string(),
+    })
 }
 
 #[cfg(test)]
@@ -245,8 +320,8 @@ mod tests {
         assert!(e("targt = \"webgl2\"\n").starts_with("/p/essl.toml: "));
         assert!(e("targt = \"webgl2\"\n").contains("unknown field `targt`"));
         assert_eq!(
-            e("target = \"webgl1\"\n"),
-            "/p/essl.toml: target `webgl1` is not supported (supported: webgl2)"
+            e("target = \"webgl3\"\n"),
+            "/p/essl.toml: target `webgl3` is not supported (supported: webgl2, webgl1)"
         );
         assert!(
             e("[rules]\nno-such-rule = \"deny\"\n").contains("unknown lint rule `no-such-rule`")
@@ -255,7 +330,8 @@ mod tests {
             e("[rules]\nall = \"error\"\n"),
             "/p/essl.toml: [rules] all = \"error\": the level is allow, warn or deny"
         );
-        assert!(e("exclude = [\"a[\"]\n").contains("exclude pattern `a[`"));
+        assert!(e("exclude = [\"a[\"]\n").contains("pattern `a[`"));
+        assert!(e("[stages]\ngeometry = []\n").contains("unknown field `geometry`"));
     }
 
     #[test]
@@ -275,5 +351,25 @@ mod tests {
         assert!(c.excludes(&root.join("shaders/a.old.frag")));
         assert!(!c.excludes(&root.join("shaders/a.frag")));
         assert!(Config::discover(Path::new("/")).unwrap().is_none());
+    }
+
+    #[test]
+    fn stages_and_target() {
+        let c = parse(
+            "target = \"webgl1\"\ninclude = [\"common\"]\n[stages]\nvertex = [\"*.vs.glsl\"]\n\
+             fragment = [\"frag/**\"]\n",
+        )
+        .unwrap();
+        assert_eq!(c.target, Some(essl::Target::WebGl1));
+        assert_eq!(c.include_dirs(), [PathBuf::from("/p/common")]);
+        assert_eq!(
+            c.stage_of(Path::new("/p/a.vs.glsl")),
+            Some(essl::Stage::Vertex)
+        );
+        assert_eq!(
+            c.stage_of(Path::new("/p/frag/b.glsl")),
+            Some(essl::Stage::Fragment)
+        );
+        assert_eq!(c.stage_of(Path::new("/p/c.glsl")), None);
     }
 }

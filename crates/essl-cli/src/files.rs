@@ -7,7 +7,7 @@ use std::path::{Path, PathBuf};
 
 use essl::Stage;
 
-pub use essl_build::files::{io_message, pairs, read_source, ReadError};
+pub use essl_build::files::{io_message, pairs, read_source};
 
 /// A shader file to check: its path (as given or as found under a folder given) and its stage
 /// (from the extension or `--stage`).

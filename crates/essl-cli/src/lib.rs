@@ -2,8 +2,14 @@
 //! the exit status, so that the binary (`main.rs`, the clap definitions) stays thin and tests can
 //! call the same code.
 //!
-//! - [`lint`]: `essl lint` — check shaders and programs: collect the inputs (`files`), check
-//!   them, render the results as text, JSON Lines or SARIF (its module doc shows the pipeline).
+//! - [`lint`]: `essl lint` — check shaders and programs: find the inputs ([`discover`], with
+//!   the shaders inside HTML and JS files from [`extract`]), check them, render the results as
+//!   text, JSON Lines, SARIF, GitHub annotations or one line each (its module doc shows the
+//!   pipeline); [`settings`] reads `essl.toml` and prints it (`essl config`).
+//! - [`explain`]: `essl explain CODE` — a diagnostic code's documentation.
+//!
+//! `render`, `deqp_exec` (Cargo feature `render`) and `report` (feature `report`) use the
+//! WebGL2 API on wgpu; without those features the command builds no GPU stack.
 //! - [`conformance`]: `essl conformance` — score the front end on the conformance corpora.
 //! - [`deqp_exec`]: `essl deqp-exec` — execute the dEQP value cases through essl-gl.
 //! - [`report`]: `essl report` — the light shaders' error against run time on essl-gl.
@@ -12,10 +18,17 @@
 #![warn(missing_docs)]
 
 pub mod conformance;
+#[cfg(feature = "render")]
 pub mod deqp_exec;
+pub mod discover;
+pub mod explain;
+pub mod extract;
 mod files;
 pub mod lint;
+#[cfg(feature = "render")]
 pub mod render;
+#[cfg(feature = "report")]
 pub mod report;
 pub mod rules;
+pub mod settings;
 pub mod translate;

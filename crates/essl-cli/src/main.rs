@@ -5,8 +5,8 @@ use std::process::ExitCode;
 
 use clap::{Args, Parser, Subcommand, ValueEnum};
 use essl::Stage;
-use essl_cli::lint::Format;
-use essl_cli::lint::{ColorMode, LintOptions};
+use essl_cli::discover::Finder;
+use essl_cli::lint::{ColorMode, Format, LintOptions, EXIT_USAGE};
 
 /// WebGL shader toolkit: GLSL ES 3.00 and 1.00, for WebGL 2 and WebGL 1.
 #[derive(Parser, Debug)]
@@ -21,7 +21,22 @@ enum Command {
     /// Check shaders as WebGL2 would, and link each NAME.vert + NAME.frag pair.
     ///
     /// Exit status: 0 clean (warnings allowed), 1 errors, 2 usage or I/O errors.
-    Lint(LintArgs),
+    Lint(Box<LintArgs>),
+    /// Show the documentation of a diagnostic code or lint rule (all codes without one).
+    Explain {
+        /// A code (`missing-semicolon`, `pow-negative-base`…).
+        code: Option<String>,
+    },
+    /// Run the Language Server over standard input and output, for editors (docs/editors.md).
+    Server,
+    /// Show the settings that apply to a folder: its nearest essl.toml, every key filled in.
+    Config {
+        /// The folder (or file) whose settings to show (default: the current folder).
+        path: Option<PathBuf>,
+        /// Read this essl.toml instead of looking upward for one.
+        #[arg(long, value_name = "FILE")]
+        config: Option<PathBuf>,
+    },
     /// Score the front end on the conformance corpora (WebGL, dEQP, glslang, webgl2fundamentals).
     Conformance(ConformanceArgs),
     /// Translate shaders to WGSL, SPIR-V, MSL, HLSL or desktop GLSL (NAME.vert + NAME.frag
@@ -34,6 +49,7 @@ enum Command {
     /// ../shared/tools/deqp-exec-oracle.py does in Chromium, with the same JSON Lines output.
     ///
     /// Exit status: 0 all pass, 1 some fail, 2 the corpus cannot be read or no context.
+    #[cfg(feature = "render")]
     DeqpExec {
         /// The dEQP corpus.
         #[arg(
@@ -54,6 +70,7 @@ enum Command {
     },
     /// Render a scene (docs/scene-format.md) through essl's WebGL2 API to a PNG, and print
     /// one JSON line as webgl2-render.py does.
+    #[cfg(feature = "render")]
     Render {
         /// The scene file.
         scene: PathBuf,
@@ -67,6 +84,7 @@ enum Command {
     /// Measure the light shaders (essl-lights) through essl's WebGL2 API: error against the
     /// float64 reference and time per frame for each variant; write report.md, report.svg, the
     /// pictures and (full run) the GPU stiff section of numerical-stability.md.
+    #[cfg(feature = "report")]
     Report {
         /// The folder to write into.
         #[arg(long, default_value = "docs", value_name = "DIR")]
@@ -156,13 +174,19 @@ enum BindingsArg {
 
 #[derive(Args, Debug)]
 struct LintArgs {
-    /// Shader files and folders (searched recursively for .vert/.frag/.vs/.fs/.vsh/.fsh).
+    /// Shader files and folders (searched for .vert/.frag/.vs/.fs/.vsh/.fsh, .glsl, and
+    /// shaders inside .html/.js/.ts files), `-` for standard input.
     #[arg(required = true, value_name = "PATH")]
     paths: Vec<PathBuf>,
 
-    /// The stage of named files whose extension does not tell it.
+    /// The stage of named files (and standard input) that nothing else places.
     #[arg(long, value_enum, value_name = "STAGE")]
     stage: Option<StageArg>,
+
+    /// The name standard input (`-`) is checked under: its extension gives the stage or says
+    /// it is HTML or JS, and diagnostics name it.
+    #[arg(long, value_name = "PATH")]
+    stdin_filename: Option<PathBuf>,
 
     /// Output format.
     #[arg(long, value_enum, default_value_t = FormatArg::Human)]
@@ -175,6 +199,39 @@ struct LintArgs {
     /// Apply the fixes that are certain, in place, then report what remains.
     #[arg(long)]
     fix: bool,
+
+    /// With `--fix`: apply the suggested fixes too (they may change what the shader does).
+    #[arg(long)]
+    unsafe_fixes: bool,
+
+    /// With `--fix`: print what would change as a unified diff, and write nothing (exit 1 when
+    /// something would change).
+    #[arg(long, requires = "fix")]
+    diff: bool,
+
+    /// Print the diagnostics and nothing else (no summary, no linked programs).
+    #[arg(short, long)]
+    quiet: bool,
+
+    /// Print how often each code occurs instead of the diagnostics.
+    #[arg(long, conflicts_with = "diff")]
+    statistics: bool,
+
+    /// Exit 0 even when errors are found (2 still reports usage or I/O errors).
+    #[arg(long)]
+    exit_zero: bool,
+
+    /// Leave out files and folders matching these globs, instead of essl.toml's `exclude`.
+    #[arg(long, value_name = "GLOB", value_delimiter = ',')]
+    exclude: Option<Vec<String>>,
+
+    /// Leave out files and folders matching these globs, besides essl.toml's `exclude`.
+    #[arg(long, value_name = "GLOB", value_delimiter = ',')]
+    extend_exclude: Vec<String>,
+
+    /// Read this essl.toml instead of looking for one upward from the first path.
+    #[arg(long, value_name = "FILE")]
+    config: Option<PathBuf>,
 
     /// Report a lint rule as an error (`warnings`: make every warning fail the run; `all`:
     /// every rule). See `essl rules`.
@@ -205,14 +262,21 @@ struct LintArgs {
     #[arg(short = 'D', value_name = "NAME[=VALUE]", value_parser = parse_define)]
     define: Vec<(String, String)>,
 
+    /// Allow `#include "FILE"`, searched in the including file's folder, then in DIR (repeat
+    /// for more; essl.toml's `include` adds its folders after these). GLSL ES has no
+    /// `#include`: without an include folder it stays an error.
+    #[arg(short = 'I', value_name = "DIR")]
+    include: Vec<PathBuf>,
+
     /// Do not link NAME.vert + NAME.frag pairs.
     #[arg(long)]
     no_link: bool,
 
-    /// The WebGL version of the context the shaders are for: webgl2 compiles GLSL ES 3.00 and
-    /// 1.00, webgl1 GLSL ES 1.00 only (with the WebGL 1 extensions a shader enables).
-    #[arg(long, value_enum, default_value_t = WebglArg::Webgl2, value_name = "WEBGL")]
-    target: WebglArg,
+    /// The WebGL version of the context the shaders are for: webgl2 (the default) compiles
+    /// GLSL ES 3.00 and 1.00, webgl1 GLSL ES 1.00 only (with the WebGL 1 extensions a shader
+    /// enables). Overrides essl.toml's `target`.
+    #[arg(long, value_enum, value_name = "WEBGL")]
+    target: Option<WebglArg>,
 }
 
 /// A WebGL version.
@@ -262,6 +326,10 @@ enum FormatArg {
     Json,
     /// A SARIF 2.1.0 log, for code-scanning services.
     Sarif,
+    /// GitHub Actions annotations (`::error file=…,line=…::…`).
+    Github,
+    /// One line per diagnostic: `FILE:LINE:COL: severity[code]: message`.
+    Concise,
 }
 
 #[derive(Clone, Copy, Debug, ValueEnum)]
@@ -289,12 +357,14 @@ fn parse_define(s: &str) -> Result<(String, String), String> {
     Ok((name.to_string(), value.to_string()))
 }
 
-/// The lint levels given on the command line, in the order given (a later one wins).
+/// The lint levels given on the command line, in the order given (a later one wins), on top
+/// of `base` (essl.toml's).
 fn rule_levels(
     matches: &clap::ArgMatches,
+    base: essl_lint::LintOptions,
 ) -> Result<(essl_lint::LintOptions, bool), essl_lint::UnknownRule> {
     let Some(("lint", m)) = matches.subcommand() else {
-        return Ok((essl_lint::LintOptions::new(), false));
+        return Ok((base, false));
     };
     let mut given: Vec<(usize, &str, essl_lint::Level)> = Vec::new();
     for (flag, level) in [
@@ -310,7 +380,7 @@ fn rule_levels(
         }
     }
     given.sort_by_key(|(i, _, _)| *i);
-    let mut options = essl_lint::LintOptions::new();
+    let mut options = base;
     let mut deny_warnings = false;
     for (_, rule, level) in given {
         if rule == "warnings" && level == essl_lint::Level::Deny {
@@ -326,6 +396,94 @@ fn rule_levels(
 #[global_allocator]
 static ALLOCATOR: mimalloc::MiMalloc = mimalloc::MiMalloc;
 
+/// A glob set of `patterns`, or the pattern that is not a glob.
+fn glob_set(patterns: &[String]) -> Result<Option<globset::GlobSet>, String> {
+    if patterns.is_empty() {
+        return Ok(None);
+    }
+    let mut set = globset::GlobSetBuilder::new();
+    for p in patterns {
+        set.add(globset::Glob::new(p).map_err(|e| format!("--exclude `{p}`: {}", e.kind()))?);
+    }
+    set.build().map(Some).map_err(|e| e.to_string())
+}
+
+/// `essl lint`: essl.toml's settings with the flags on top, then the run.
+fn lint(args: LintArgs, matches: &clap::ArgMatches) -> i32 {
+    let config = match essl_cli::settings::load(
+        args.config.as_deref(),
+        &args.paths,
+        args.stdin_filename.as_deref(),
+    ) {
+        Ok(c) => c,
+        Err(e) => {
+            eprintln!("error: {e}");
+            return EXIT_USAGE;
+        }
+    };
+    let (rules, deny_warnings) = match rule_levels(matches, config.rules.clone()) {
+        Ok(r) => r,
+        Err(e) => {
+            eprintln!("error: {e}");
+            return EXIT_USAGE;
+        }
+    };
+    let mut exclude = args.exclude.clone().unwrap_or_default();
+    exclude.extend(args.extend_exclude.iter().cloned());
+    let exclude = match glob_set(&exclude) {
+        Ok(set) => set,
+        Err(e) => {
+            eprintln!("error: {e}");
+            return EXIT_USAGE;
+        }
+    };
+    let mut defines = config.defines.clone();
+    defines.extend(args.define);
+    let mut include_dirs = args.include.clone();
+    include_dirs.extend(config.include_dirs());
+    let target = args
+        .target
+        .map(essl::Target::from)
+        .or(config.target)
+        .unwrap_or(essl::Target::WebGl2);
+    let finder = Finder {
+        forced: args.stage.map(Stage::from),
+        exclude,
+        config_exclude: args.exclude.is_none(),
+        stdin_name: args.stdin_filename,
+        config: config.clone(),
+    };
+    essl_cli::lint::run(&LintOptions {
+        paths: args.paths,
+        finder,
+        format: match args.format {
+            FormatArg::Human => Format::Human,
+            FormatArg::Json => Format::Json,
+            FormatArg::Sarif => Format::Sarif,
+            FormatArg::Github => Format::Github,
+            FormatArg::Concise => Format::Concise,
+        },
+        color: match args.color {
+            ColorArg::Auto => ColorMode::Auto,
+            ColorArg::Always => ColorMode::Always,
+            ColorArg::Never => ColorMode::Never,
+        },
+        fix: args.fix,
+        unsafe_fixes: args.unsafe_fixes,
+        diff: args.diff,
+        quiet: args.quiet,
+        statistics: args.statistics,
+        exit_zero: args.exit_zero,
+        deny_warnings: deny_warnings || config.deny_warnings,
+        show_notes: args.show_notes,
+        defines,
+        include_dirs,
+        link: !args.no_link,
+        target,
+        rules,
+    })
+}
+
 fn main() -> ExitCode {
     use clap::{CommandFactory, FromArgMatches};
     // Worker threads with room for a whole compile, so that `essl::compile` runs on them
@@ -336,46 +494,33 @@ fn main() -> ExitCode {
         .thread_name(|i| format!("essl-{i}"))
         .build_global();
     let matches = Cli::command().get_matches();
-    let (rules, deny_warnings) = match rule_levels(&matches) {
-        Ok(r) => r,
-        Err(e) => {
-            eprintln!("error: {e}");
-            return ExitCode::from(2);
-        }
-    };
     let cli = match Cli::from_arg_matches(&matches) {
         Ok(c) => c,
         Err(e) => e.exit(),
     };
     let status = match cli.command {
         Command::Rules { rule } => essl_cli::rules::run(rule.as_deref()),
+        Command::Explain { code } => essl_cli::explain::run(code.as_deref()),
+        Command::Server => match essl_server::run_stdio() {
+            Ok(()) => 0,
+            Err(e) => {
+                eprintln!("error: {e}");
+                1
+            }
+        },
+        Command::Config { path, config } => {
+            essl_cli::settings::run(config.as_deref(), path.as_deref())
+        }
+        #[cfg(feature = "render")]
         Command::Render {
             scene,
             output,
             times,
         } => essl_cli::render::run(&scene, &output, times),
-        Command::Lint(args) => essl_cli::lint::run(&LintOptions {
-            paths: args.paths,
-            stage: args.stage.map(Stage::from),
-            format: match args.format {
-                FormatArg::Human => Format::Human,
-                FormatArg::Json => Format::Json,
-                FormatArg::Sarif => Format::Sarif,
-            },
-            color: match args.color {
-                ColorArg::Auto => ColorMode::Auto,
-                ColorArg::Always => ColorMode::Always,
-                ColorArg::Never => ColorMode::Never,
-            },
-            fix: args.fix,
-            deny_warnings,
-            show_notes: args.show_notes,
-            defines: args.define,
-            link: !args.no_link,
-            target: args.target.into(),
-            rules,
-        }),
+        Command::Lint(args) => lint(*args, &matches),
+        #[cfg(feature = "report")]
         Command::Report { out, quick, scenes } => essl_cli::report::run(&out, quick, &scenes),
+        #[cfg(feature = "render")]
         Command::DeqpExec {
             corpus,
             only,

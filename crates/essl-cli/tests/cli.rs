@@ -91,7 +91,7 @@ fn missing_file_exits_2_and_checks_the_rest() {
     );
     assert_eq!(o.status.code(), Some(2));
     assert!(
-        stderr(&o).contains("no/such/file.frag: no such file or directory"),
+        stderr(&o).contains("cannot read `no/such/file.frag`: no such file or directory"),
         "{}",
         stderr(&o)
     );
@@ -112,10 +112,66 @@ fn unknown_extension_is_a_usage_error_unless_stage_is_given() {
     assert!(stderr(&o).contains("--stage"), "{}", stderr(&o));
     let o = essl(&["lint", "--stage", "fragment", "shader.glsl"], dir.path());
     assert_eq!(o.status.code(), Some(0), "{}", stdout(&o));
-    // In a folder, files of other extensions are skipped.
+    // In a folder, a `.glsl` file nothing places is an error naming it, not skipped…
     let o = essl(&["lint", "."], dir.path());
-    assert_eq!(o.status.code(), Some(0));
-    assert!(stdout(&o).contains("0 files"), "{}", stdout(&o));
+    assert_eq!(o.status.code(), Some(2));
+    assert!(
+        stderr(&o).contains("cannot tell the stage of `shader.glsl`: name it"),
+        "{}",
+        stderr(&o)
+    );
+    // …until a pragma (or `NAME.frag.glsl`, or essl.toml's `[stages]`) says it.
+    let pragma = GOOD_FRAG.replace("precision", "#pragma essl stage(fragment)\nprecision");
+    std::fs::write(dir.path().join("shader.glsl"), pragma).unwrap();
+    std::fs::write(dir.path().join("b.vert.glsl"), GOOD_VERT).unwrap();
+    std::fs::write(dir.path().join("notes.txt"), "not a shader").unwrap();
+    let o = essl(&["lint", "--color", "never", "."], dir.path());
+    assert_eq!(o.status.code(), Some(0), "{}{}", stdout(&o), stderr(&o));
+    assert!(stdout(&o).contains("2 files, 0 errors"), "{}", stdout(&o));
+}
+
+#[test]
+fn a_run_that_finds_no_shader_says_so() {
+    let dir = tempfile::tempdir().unwrap();
+    std::fs::write(dir.path().join("notes.txt"), "not a shader").unwrap();
+    std::fs::write(dir.path().join("page.html"), "<p>no script</p>").unwrap();
+    let o = essl(&["lint", "."], dir.path());
+    assert_eq!(o.status.code(), Some(2));
+    assert_eq!(
+        stderr(&o),
+        "error: no shaders found in `.` (looked for .vert, .frag, .vs, .fs, .vsh, .fsh, .glsl \
+         files, and shaders inside .html, .js and .ts files)\n"
+    );
+}
+
+#[test]
+fn gitignore_and_excludes_leave_files_out() {
+    let dir = tempfile::tempdir().unwrap();
+    for name in ["a.frag", "build/b.frag", "vendor/c.frag", "d.old.frag"] {
+        let path = dir.path().join(name);
+        std::fs::create_dir_all(path.parent().unwrap()).unwrap();
+        std::fs::write(path, GOOD_FRAG).unwrap();
+    }
+    std::fs::write(dir.path().join(".gitignore"), "build/\n").unwrap();
+    std::fs::write(dir.path().join("essl.toml"), "exclude = [\"vendor/**\"]\n").unwrap();
+    let files = |args: &[&str]| -> Vec<String> {
+        let mut all = vec!["lint", "--format", "json"];
+        all.extend_from_slice(args);
+        all.push(".");
+        let o = essl(&all, dir.path());
+        stdout(&o)
+            .lines()
+            .map(|l| serde_json::from_str::<serde_json::Value>(l).unwrap())
+            .filter_map(|v| v["file"].as_str().map(str::to_string))
+            .collect()
+    };
+    assert_eq!(files(&[]), ["a.frag", "d.old.frag"]);
+    assert_eq!(files(&["--extend-exclude", "*.old.frag"]), ["a.frag"]);
+    // `--exclude` replaces essl.toml's list.
+    assert_eq!(
+        files(&["--exclude", "*.old.frag"]),
+        ["a.frag", "vendor/c.frag"]
+    );
 }
 
 #[test]
@@ -564,6 +620,7 @@ fn rules_subcommand_lists_and_documents_rules() {
     assert_eq!(essl(&["rules", "nope"], dir.path()).status.code(), Some(2));
 }
 
+#[cfg(feature = "render")]
 #[test]
 fn render_writes_the_png_and_a_json_line() {
     let dir = tempfile::tempdir().unwrap();

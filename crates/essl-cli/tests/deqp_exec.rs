@@ -4,6 +4,8 @@
 //! translation read back by naga's WGSL front end. Skips, with a message, without the corpus
 //! or a Vulkan adapter, unless `ESSL_REQUIRE_CORPORA=1` / `ESSL_REQUIRE_ADAPTER=1`.
 
+#![cfg(feature = "render")]
+
 use essl_cli::deqp_exec::{read_cases, Runner};
 
 #[test]

@@ -193,43 +193,81 @@ pub fn lint(shader: &Shader, options: &LintOptions) -> Vec<Diagnostic> {
     let Some((module, _)) = shader.naga.as_ref() else {
         return Vec::new();
     };
-    let (worth_it, signs, prec) = rules::candidates(shader, module);
-    if !worth_it {
-        return Vec::new();
-    }
-    let prec = prec.unwrap_or_else(|| precision::Precisions::of(&shader.module));
-    let Some(cx) = rules::Cx::with_precisions(shader, prec, signs) else {
-        return Vec::new();
-    };
-    let allowed = std::cell::OnceCell::new();
+    let allowed = suppress::Allowed::scan(&shader.file);
     let mut out = Vec::new();
-    for r in RULES {
-        if !reported(r) {
-            continue;
-        }
-        let level = options.level(r);
-        let mut found = Vec::new();
-        (r.check)(&cx, &mut found);
-        for mut d in found {
-            let allowed = allowed.get_or_init(|| suppress::Allowed::scan(&shader.file));
-            if allowed.silences(&shader.file, d.span, r.id) {
+    let (worth_it, signs, prec) = rules::candidates(shader, module);
+    let cx = worth_it
+        .then(|| {
+            let prec = prec.unwrap_or_else(|| precision::Precisions::of(&shader.module));
+            rules::Cx::with_precisions(shader, prec, signs)
+        })
+        .flatten();
+    if let Some(cx) = &cx {
+        for r in RULES {
+            if !reported(r) {
                 continue;
             }
-            match level.severity(d.severity) {
-                Some(Severity::Note) if !options.notes => {}
-                Some(s) => {
-                    d.severity = s;
-                    out.push(d);
+            let level = options.level(r);
+            let mut found = Vec::new();
+            (r.check)(cx, &mut found);
+            for mut d in found {
+                if allowed.silences(&shader.file, d.span, r.id) {
+                    continue;
                 }
-                None => {}
+                match level.severity(d.severity) {
+                    Some(Severity::Note) if !options.notes => {}
+                    Some(s) => {
+                        d.severity = s;
+                        out.push(d);
+                    }
+                    None => {}
+                }
             }
         }
+    } else if worth_it {
+        // The analysis could not be set up: nothing was looked at, so nothing is unused.
+        return Vec::new();
     }
+    out.extend(unused_allows(&allowed, options, &reported));
     out.dedup_by(|a, b| a.code == b.code && a.span == b.span);
     diagnostic::sort(&mut out);
     let mut seen = std::collections::HashSet::new();
     out.retain(|d| seen.insert((d.code, d.span)));
     out
+}
+
+/// The suppressions that silenced nothing, as `unused-essl-allow` findings (when that rule is
+/// reported). A suppression of a rule that is not run is left alone.
+fn unused_allows(
+    allowed: &suppress::Allowed,
+    options: &LintOptions,
+    reported: &dyn Fn(&Rule) -> bool,
+) -> Vec<Diagnostic> {
+    let Some(unused) = rule(rules::UNUSED_ALLOW).filter(|r| reported(r)) else {
+        return Vec::new();
+    };
+    let severity = match options.level(unused).severity(Severity::Warning) {
+        Some(Severity::Note) if !options.notes => return Vec::new(),
+        Some(s) => s,
+        None => return Vec::new(),
+    };
+    allowed
+        .entries
+        .iter()
+        .filter(|e| !e.used.get() && e.rule != rules::UNUSED_ALLOW)
+        .filter(|e| e.rule == "all" || rule(&e.rule).is_some_and(reported))
+        .map(|e| {
+            let mut d = Diagnostic::rule_warning(
+                rules::UNUSED_ALLOW,
+                format!("`essl-allow: {}` silences nothing here", e.rule),
+                e.span,
+            )
+            .with_label("no finding of this rule on this line or the next")
+            .with_help("remove it: the hazard it was written for is gone");
+            d.severity = severity;
+            d
+        })
+        .collect()
 }
 
 /// The analysis of every expression of the user's functions, one line each (span text, value):

@@ -744,13 +744,47 @@ fn essl_allow_comments_silence_a_rule_on_their_line_and_the_next() {
     let same_line =
         "  r = pow(dot(normalize(v_n), normalize(v_h)), u_k); // essl-allow: pow-negative-base";
     assert!(findings(&frag("highp", "", same_line)).is_empty());
+    let codes = |body: &str| -> Vec<&'static str> {
+        findings(&frag("highp", "", body))
+            .iter()
+            .map(|d| d.0)
+            .collect()
+    };
+    // `acos-domain` silences nothing here: it is reported as unused.
     let line_before = "  // essl-allow: pow-negative-base, acos-domain\n  r = pow(dot(normalize(v_n), normalize(v_h)), u_k);";
-    assert!(findings(&frag("highp", "", line_before)).is_empty());
+    assert_eq!(codes(line_before), ["unused-essl-allow"]);
     let other_rule =
         "  // essl-allow: acos-domain\n  r = pow(dot(normalize(v_n), normalize(v_h)), u_k);";
-    assert_eq!(findings(&frag("highp", "", other_rule)).len(), 1);
+    assert_eq!(
+        codes(other_rule),
+        ["unused-essl-allow", "pow-negative-base"]
+    );
     let too_far = "  // essl-allow: pow-negative-base\n\n  r = pow(dot(normalize(v_n), normalize(v_h)), u_k);";
-    assert_eq!(findings(&frag("highp", "", too_far)).len(), 1);
+    assert_eq!(codes(too_far), ["unused-essl-allow", "pow-negative-base"]);
+}
+
+#[test]
+fn file_level_allows_and_unused_allows() {
+    let body = "  r = pow(dot(normalize(v_n), normalize(v_h)), u_k);";
+    let whole = format!(
+        "{}// essl-allow-file: pow-negative-base\n",
+        frag("highp", "", body)
+    );
+    assert!(findings(&whole).is_empty());
+    let unused = findings(&frag(
+        "highp",
+        "",
+        "  // essl-allow: acos-domain\n  r = 1.0;",
+    ));
+    assert_eq!(unused, [("unused-essl-allow", "acos-domain".to_string())]);
+    // A rule that is not run is not reported as unused, and the check itself can be allowed.
+    let s = compiled(&frag(
+        "highp",
+        "",
+        "  // essl-allow: acos-domain\n  r = 1.0;",
+    ));
+    assert!(lint(&s, &LintOptions::default().allow("acos-domain")).is_empty());
+    assert!(lint(&s, &LintOptions::default().allow("unused-essl-allow")).is_empty());
 }
 
 #[test]

@@ -4,19 +4,20 @@
 //! documentation.
 //!
 //! Each variant is declared once, with its name and its documentation, by the `codes!` macro,
-//! which derives [`Code::as_str`], [`Code::from_name`] and [`Code::ALL`] from the same list.
+//! which derives [`Code::as_str`], [`Code::from_name`], [`Code::doc`] and [`Code::ALL`] from the
+//! same list.
 
 use std::fmt;
 use std::str::FromStr;
 
 /// Declares [`Code`] from `Variant = "name"` lines with their doc comments.
 macro_rules! codes {
-    ($($(#[$doc:meta])* $variant:ident = $name:literal,)*) => {
+    ($($(#[doc = $doc:literal])* $variant:ident = $name:literal,)*) => {
         /// The code of a diagnostic: what kind of problem it reports.
         #[non_exhaustive]
         #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
         pub enum Code {
-            $($(#[$doc])* $variant,)*
+            $($(#[doc = $doc])* $variant,)*
         }
 
         impl Code {
@@ -27,6 +28,14 @@ macro_rules! codes {
             pub fn as_str(self) -> &'static str {
                 match self {
                     $(Code::$variant => $name,)*
+                }
+            }
+
+            /// The code's documentation: its doc comment, one source line per line, with the
+            /// leading space of each line removed (`essl explain` prints it).
+            fn doc_lines(self) -> &'static [&'static str] {
+                match self {
+                    $(Code::$variant => &[$($doc,)*],)*
                 }
             }
 
@@ -498,6 +507,19 @@ codes! {
     TooManyDiagnostics = "too-many-diagnostics",
 }
 
+impl Code {
+    /// The code's documentation as one paragraph per blank-line-separated block of its doc
+    /// comment (the text `cargo doc` shows for the variant).
+    pub fn doc(self) -> String {
+        let mut out = String::new();
+        for line in self.doc_lines() {
+            out.push_str(line.strip_prefix(' ').unwrap_or(line));
+            out.push('\n');
+        }
+        out
+    }
+}
+
 impl fmt::Display for Code {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         f.write_str(self.as_str())
@@ -537,6 +559,15 @@ mod tests {
             assert_eq!(code.to_string(), code.as_str());
         }
         assert_eq!(Code::from_name("no-such-code"), None);
+        for &code in Code::ALL {
+            assert!(
+                !code.doc().trim().is_empty(),
+                "`{code}` has no documentation"
+            );
+        }
+        assert!(Code::UnterminatedComment
+            .doc()
+            .starts_with("A `/*` comment is never closed"));
         assert!("".parse::<Code>().is_err());
     }
 

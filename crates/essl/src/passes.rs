@@ -1,5 +1,6 @@
 //! The passes of [`compile`](crate::compile), one at a time: for tools that time, fuzz or test
-//! a single pass (the per-pass benchmark, the preprocessor's rule-by-rule tests). A shader
+//! a single pass (the per-pass benchmark, the preprocessor's rule-by-rule tests), and the
+//! built-in functions' overloads (`overloads_in`, for an editor's hover). A shader
 //! compiled through these is the same as one from `compile`, which also runs lowering and
 //! bounds the stack (`COMPILE_STACK`); most users want `compile`.
 //!
@@ -18,6 +19,7 @@
 //! ```
 
 pub use crate::ast::TranslationUnit;
+pub use crate::builtins::{overloads_in, Signature};
 pub use crate::check::{check, check_as};
 pub use crate::lex::{lex, Lexed, PpKind, PpToken, Punct};
 pub use crate::parse::{parse, parse_as, MAX_NESTING};

@@ -22,14 +22,24 @@ pub struct Fixed {
     pub shader: Shader,
 }
 
-/// Compiles `text`, applies its certain fixes ([`Applicability::Certain`]) and recompiles,
-/// until no certain fix applies or the text stops changing (at most [`MAX_ROUNDS`] rounds).
-pub fn fix_text(name: &str, text: String, stage: Stage, options: &CompileOptions) -> Fixed {
+/// Compiles `text`, applies its certain fixes ([`Applicability::Certain`]; with
+/// `unsafe_fixes` also the suggested ones, after them) and recompiles, until no fix applies or
+/// the text stops changing (at most [`MAX_ROUNDS`] rounds).
+pub fn fix_text(
+    name: &str,
+    text: String,
+    stage: Stage,
+    options: &CompileOptions,
+    unsafe_fixes: bool,
+) -> Fixed {
     let mut text = text;
     let mut applied = 0;
     let mut shader = compile(SourceFile::new(name, text.as_str()), stage, options);
     for _ in 0..MAX_ROUNDS {
-        let (new_text, n) = apply_fixes(&text, &shader.diagnostics, Applicability::Certain);
+        let (mut new_text, mut n) = apply_fixes(&text, &shader.diagnostics, Applicability::Certain);
+        if n == 0 && unsafe_fixes {
+            (new_text, n) = apply_fixes(&text, &shader.diagnostics, Applicability::Suggested);
+        }
         if n == 0 || new_text == text {
             break;
         }
@@ -100,6 +110,7 @@ mod tests {
             text.to_string(),
             Stage::Fragment,
             &Default::default(),
+            false,
         );
         assert!(fixed.shader.ok(), "{:?}", fixed.shader.diagnostics);
         assert!(fixed.applied >= 2);

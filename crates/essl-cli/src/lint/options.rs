@@ -3,8 +3,6 @@
 use std::io::IsTerminal;
 use std::path::PathBuf;
 
-use essl::Stage;
-
 /// Exit status: nothing to report, or only warnings.
 pub const EXIT_OK: i32 = 0;
 /// Exit status: some shader or program has an error (or a denied warning).
@@ -49,27 +47,45 @@ pub enum Format {
     Json,
     /// One SARIF 2.1.0 log of every file's diagnostics, for code-scanning services.
     Sarif,
+    /// GitHub Actions workflow commands: `::error file=…,line=…,col=…::message`, which a run
+    /// shows as annotations on the pull request's lines.
+    Github,
+    /// One line per diagnostic: `FILE:LINE:COL: severity[code]: message`.
+    Concise,
 }
 
 /// What `essl lint` was asked to do.
 #[derive(Clone, Debug, Default)]
 pub struct LintOptions {
-    /// Files and folders to check.
+    /// Files and folders to check (`-`: standard input).
     pub paths: Vec<PathBuf>,
-    /// `--stage`: the stage of named files whose extension does not tell.
-    pub stage: Option<Stage>,
+    /// How to find the shaders in them.
+    pub finder: crate::discover::Finder,
     /// Output format.
     pub format: Format,
     /// Colours of the human output.
     pub color: ColorMode,
     /// `--fix`: apply the certain fixes in place.
     pub fix: bool,
+    /// `--unsafe-fixes`: under `--fix`, apply the suggested fixes too.
+    pub unsafe_fixes: bool,
+    /// `--diff`: under `--fix`, print what the fixes would change instead of writing it.
+    pub diff: bool,
+    /// `--quiet`: print the diagnostics and nothing else (no summary, no linked programs).
+    pub quiet: bool,
+    /// `--statistics`: print how often each code occurs instead of the diagnostics.
+    pub statistics: bool,
+    /// `--exit-zero`: exit 0 even where errors were found (still 2 for usage or I/O errors).
+    pub exit_zero: bool,
     /// `--deny warnings`: warnings fail the run.
     pub deny_warnings: bool,
     /// `--show-notes`: print the lints' notes (counted in the summary either way).
     pub show_notes: bool,
     /// `-D NAME[=VALUE]` macros.
     pub defines: Vec<(String, String)>,
+    /// `-I DIR` (and essl.toml's `include`): folders `#include "FILE"` searches after the
+    /// including file's own; empty, `#include` stays an error as GLSL ES has it.
+    pub include_dirs: Vec<PathBuf>,
     /// Link `NAME.vert` + `NAME.frag` pairs (on unless `--no-link`).
     pub link: bool,
     /// `--target`: the WebGL version of the context (WebGL 2 unless asked).
@@ -88,6 +104,8 @@ pub(crate) struct Look {
     pub color: bool,
     /// Whether `--fix` ran (the output then says how many fixes were applied).
     pub fix: bool,
+    /// `--quiet`: only the diagnostics.
+    pub quiet: bool,
     /// Whether warnings fail the run (the summary then says so).
     pub deny_warnings: bool,
     /// The WebGL version checked for (named in the JSON output).
@@ -101,6 +119,7 @@ impl Look {
             format: options.format,
             color: options.format == Format::Human && options.color.enabled(),
             fix: options.fix,
+            quiet: options.quiet,
             deny_warnings: options.deny_warnings,
             target: options.target,
         }

@@ -1,8 +1,9 @@
-//! Printing `essl lint`'s results: human (codespan, optionally coloured) or JSON Lines.
+//! Printing `essl lint`'s results: human (codespan, optionally coloured), JSON Lines, or one
+//! line per diagnostic (concise, GitHub annotations: [`super::lines`]).
 //!
 //! Each format is a pair of functions, one for a shader and one for a program, so that a new
-//! format (GitHub annotations, say) is one more pair and one more [`Format`] variant. SARIF
-//! needs every file at once, so it is written by [`write`] from the kept diagnostics.
+//! format is one more pair and one more [`Format`] variant. SARIF needs every file at once, so
+//! it is written by [`write`] from the kept diagnostics.
 
 use std::io::Write;
 
@@ -14,9 +15,10 @@ use essl::source::SourceFile;
 use essl::{Shader, Stage};
 use serde_json::{json, Value};
 
+use super::lines;
 use super::options::{Format, Look};
 use super::results::{Checked, Linked, LintResults, Totals};
-use crate::files::{Input, ReadError};
+use crate::discover::{Input, Source};
 
 fn plural(n: usize, word: &str) -> String {
     match (n, word) {
@@ -55,7 +57,40 @@ fn summary_line(t: &Totals) -> String {
             plural(t.notes_hidden, "note")
         ));
     }
+    if t.skipped > 0 {
+        s.push_str(&format!(", {} skipped", plural(t.skipped, "shader")));
+    }
     s
+}
+
+/// Writes what `--fix` changed as unified diffs (`--diff`), or, for standard input, the fixed
+/// text itself.
+pub(crate) fn write_fixed(
+    out: &mut dyn Write,
+    results: &LintResults,
+    diff: bool,
+) -> std::io::Result<()> {
+    for f in &results.files {
+        let Some((old, new)) = &f.fixed else { continue };
+        let stdin = match &f.input.source {
+            Source::Text(_) => true,
+            Source::Embedded(host, _) => host.stdin,
+            Source::File => false,
+        };
+        if diff {
+            let name = f.input.path.display().to_string();
+            let text = similar::TextDiff::from_lines(old.as_str(), new.as_str());
+            write!(
+                out,
+                "{}",
+                text.unified_diff()
+                    .header(&format!("a/{name}"), &format!("b/{name}"))
+            )?;
+        } else if stdin {
+            out.write_all(new.as_bytes())?;
+        }
+    }
+    Ok(())
 }
 
 /// Writes every result in order (files sorted by path, then programs) and the summary (a line
@@ -63,7 +98,10 @@ fn summary_line(t: &Totals) -> String {
 /// are also reported on stderr.
 pub(crate) fn write(out: &mut dyn Write, results: &LintResults, look: Look) -> std::io::Result<()> {
     for e in &results.collect_errors {
-        eprintln!("error: cannot read {e}");
+        eprintln!("error: {e}");
+    }
+    for s in &results.skipped {
+        eprintln!("skipped {}: {}", s.at, s.reason);
     }
     for f in &results.files {
         if let Some(e) = &f.read_error {
@@ -84,7 +122,9 @@ pub(crate) fn write(out: &mut dyn Write, results: &LintResults, look: Look) -> s
     }
     let t = results.totals();
     match look.format {
-        Format::Human => {
+        Format::Human | Format::Concise | Format::Github if look.quiet => {}
+        Format::Github => {}
+        Format::Human | Format::Concise => {
             let mut summary = buffer(look.color);
             summary.set_color(ColorSpec::new().set_bold(true))?;
             write!(summary, "{}", summary_line(&t))?;
@@ -126,11 +166,7 @@ fn buffer(color: bool) -> Buffer {
 }
 
 /// A file's output in `look.format`.
-pub(crate) fn render_file(
-    input: &Input,
-    checked: &Result<Checked, ReadError>,
-    look: Look,
-) -> Vec<u8> {
+pub(crate) fn render_file(input: &Input, checked: &Result<Checked, String>, look: Look) -> Vec<u8> {
     match look.format {
         Format::Human => human_file(input, checked, look),
         Format::Json => {
@@ -139,19 +175,43 @@ pub(crate) fn render_file(
             line
         }
         Format::Sarif => Vec::new(),
+        Format::Concise | Format::Github => match checked {
+            Ok(c) => std::iter::once((&c.shader.file, &c.shader.diagnostics))
+                .chain(c.included.iter().map(|(f, ds)| (f, ds)))
+                .flat_map(|(f, ds)| {
+                    ds.iter()
+                        .map(move |d| lines::line(look.format, Some(f), "", d))
+                })
+                .collect::<String>()
+                .into_bytes(),
+            Err(_) => Vec::new(),
+        },
     }
 }
 
 /// A program's output in `look.format`.
 pub(crate) fn render_program(linked: &Linked, look: Look) -> Vec<u8> {
     match look.format {
-        Format::Human => human_program(linked, look.color),
+        Format::Human => human_program(linked, look),
         Format::Json => {
             let mut line = json_program(linked, look).to_string().into_bytes();
             line.push(b'\n');
             line
         }
         Format::Sarif => Vec::new(),
+        Format::Concise | Format::Github => {
+            let fallback = linked.vertex.path.display().to_string();
+            linked
+                .program
+                .diagnostics
+                .iter()
+                .map(|d| {
+                    let file = file_of(linked.vs, linked.fs, d);
+                    lines::line(look.format, file, &fallback, &d.diagnostic)
+                })
+                .collect::<String>()
+                .into_bytes()
+        }
     }
 }
 
@@ -161,7 +221,7 @@ fn sarif(results: &LintResults) -> String {
     let mut files: Vec<(SourceFile, Vec<Diagnostic>)> = results
         .files
         .iter()
-        .filter_map(|f| f.diagnostics.clone())
+        .flat_map(|f| f.diagnostics.clone().into_iter().chain(f.included.clone()))
         .collect();
     for p in &results.programs {
         for (path, d) in &p.diagnostics {
@@ -180,7 +240,7 @@ fn sarif(results: &LintResults) -> String {
 }
 
 /// A file's human output: how many fixes were applied, then its diagnostics.
-fn human_file(input: &Input, checked: &Result<Checked, ReadError>, look: Look) -> Vec<u8> {
+fn human_file(input: &Input, checked: &Result<Checked, String>, look: Look) -> Vec<u8> {
     let mut buf = buffer(look.color);
     if let Ok(c) = checked {
         let _ = write_human_file(&mut buf, input, c, look.fix);
@@ -201,35 +261,31 @@ fn write_human_file(
         writeln!(
             buf,
             " `{}`: {} applied",
-            input.path.display(),
+            input.label(),
             plural(c.fixes_applied, "fix")
         )?;
     }
-    render::emit_human(
-        buf,
-        &c.shader.file,
-        &c.shader.diagnostics,
-        &render::default_config(),
-    )
+    let config = render::default_config();
+    render::emit_human(buf, &c.shader.file, &c.shader.diagnostics, &config)?;
+    for (file, diagnostics) in &c.included {
+        render::emit_human(buf, file, diagnostics, &config)?;
+    }
+    Ok(())
 }
 
 fn program_name(vertex: &Input, fragment: &Input) -> String {
-    format!(
-        "`{}` + `{}`",
-        vertex.path.display(),
-        fragment.path.display()
-    )
+    format!("`{}` + `{}`", vertex.label(), fragment.label())
 }
 
 /// A program's human output: one line when it links cleanly or was not linked; otherwise its
 /// diagnostics, each shown in the shader it points into, and the info log when linking failed.
-fn human_program(linked: &Linked, color: bool) -> Vec<u8> {
-    let mut buf = buffer(color);
-    let _ = write_human_program(&mut buf, linked);
+fn human_program(linked: &Linked, look: Look) -> Vec<u8> {
+    let mut buf = buffer(look.color);
+    let _ = write_human_program(&mut buf, linked, look.quiet);
     buf.into_inner()
 }
 
-fn write_human_program(buf: &mut Buffer, linked: &Linked) -> std::io::Result<()> {
+fn write_human_program(buf: &mut Buffer, linked: &Linked, quiet: bool) -> std::io::Result<()> {
     let Linked {
         vertex,
         fragment,
@@ -238,6 +294,9 @@ fn write_human_program(buf: &mut Buffer, linked: &Linked) -> std::io::Result<()>
         program,
     } = *linked;
     let name = program_name(vertex, fragment);
+    if quiet && (program.ok || !vs.ok() || !fs.ok()) && program.diagnostics.is_empty() {
+        return Ok(());
+    }
     if !vs.ok() || !fs.ok() {
         let broken = match (vs.ok(), fs.ok()) {
             (false, false) => "the vertex and fragment shaders have errors",
@@ -293,9 +352,10 @@ fn file_of<'a>(vs: &'a Shader, fs: &'a Shader, d: &LinkDiagnostic) -> Option<&'a
 /// A shader's JSON object:
 /// `{"kind":"shader","file","stage","target","version","ok","diagnostics":[…]}` (`target`:
 /// `webgl1` or `webgl2`; `version`: `100` or `300 es`, absent when the file could not be
-/// read), with `"fixes_applied"` under `--fix`, and `"error"` when the file could not be read
+/// read), with `"embedded_at"` (`FILE:LINE`) for a shader inside an HTML or JS file,
+/// `"fixes_applied"` under `--fix`, and `"error"` when the file could not be read
 /// (or the fix written back).
-fn json_file(input: &Input, checked: &Result<Checked, ReadError>, look: Look) -> Value {
+fn json_file(input: &Input, checked: &Result<Checked, String>, look: Look) -> Value {
     let file = input.path.display().to_string();
     let fix = look.fix;
     match checked {
@@ -309,12 +369,19 @@ fn json_file(input: &Input, checked: &Result<Checked, ReadError>, look: Look) ->
             "diagnostics": [],
         }),
         Ok(c) => {
-            let diagnostics: Vec<Value> = c
+            let mut diagnostics: Vec<Value> = c
                 .shader
                 .diagnostics
                 .iter()
                 .map(|d| render::to_json(&c.shader.file, d))
                 .collect();
+            for (file, ds) in &c.included {
+                diagnostics.extend(ds.iter().map(|d| {
+                    let mut v = render::to_json(file, d);
+                    v["file"] = json!(file.name());
+                    v
+                }));
+            }
             let version = if c.shader.module.version == essl::Version::Es100 {
                 "100"
             } else {
@@ -329,6 +396,9 @@ fn json_file(input: &Input, checked: &Result<Checked, ReadError>, look: Look) ->
                 "ok": c.shader.ok(),
                 "diagnostics": diagnostics,
             });
+            if let Source::Embedded(..) = input.source {
+                v["embedded_at"] = json!(input.label());
+            }
             if fix {
                 v["fixes_applied"] = json!(c.fixes_applied);
                 if let Some(e) = &c.write_error {
@@ -376,8 +446,8 @@ fn json_program(linked: &Linked, look: Look) -> Value {
         .collect();
     json!({
         "kind": "program",
-        "vertex": vertex.path.display().to_string(),
-        "fragment": fragment.path.display().to_string(),
+        "vertex": vertex.label(),
+        "fragment": fragment.label(),
         "target": look.target.as_str(),
         "ok": program.ok,
         "log": program.log,

@@ -7,8 +7,10 @@ use essl::link::Program;
 use essl::source::SourceFile;
 use essl::Shader;
 
+use essl::diagnostic::Severity;
+
 use super::options::{EXIT_ERRORS, EXIT_OK, EXIT_USAGE};
-use crate::files::{CollectError, Input};
+use crate::discover::{FindError, Input, Skipped};
 
 /// A shader that was read and compiled.
 #[derive(Debug)]
@@ -17,10 +19,23 @@ pub(crate) struct Checked {
     pub shader: Shader,
     /// How many fixes `--fix` applied.
     pub fixes_applied: usize,
+    /// The text before and after `--fix`, when the fixes changed it.
+    pub fixed: Option<(String, String)>,
     /// Why the fixed text could not be written back, if it could not.
     pub write_error: Option<String>,
     /// Lint notes left out (no `--show-notes`).
     pub notes_hidden: usize,
+    /// Diagnostics inside `#include`d files (`-I`), with each file.
+    pub included: Vec<(SourceFile, Vec<essl::diagnostic::Diagnostic>)>,
+}
+
+impl Checked {
+    /// Whether its included files have no errors.
+    pub fn included_ok(&self) -> bool {
+        self.included
+            .iter()
+            .all(|(_, ds)| !ds.iter().any(|d| d.is_error()))
+    }
 }
 
 /// The two shaders of a linked pair and their program.
@@ -57,10 +72,38 @@ pub(crate) struct FileResult {
     pub notes_hidden: usize,
     /// Fixes applied by `--fix`.
     pub fixes_applied: usize,
+    /// The text before and after `--fix`, when the fixes changed it (for `--diff`, and for
+    /// standard input, whose fixed text is printed).
+    pub fixed: Option<(String, String)>,
+    /// The code and severity of each diagnostic (for `--statistics`).
+    pub codes: Vec<(&'static str, Severity)>,
     /// Its output (human text or one JSON line).
     pub rendered: Vec<u8>,
     /// Its text and diagnostics, kept for formats that need every file at once (SARIF).
     pub diagnostics: Option<(SourceFile, Vec<essl::diagnostic::Diagnostic>)>,
+    /// Diagnostics inside its `#include`d files, kept likewise.
+    pub included: Vec<(SourceFile, Vec<essl::diagnostic::Diagnostic>)>,
+}
+
+impl FileResult {
+    /// A result with nothing counted yet.
+    pub fn new(input: Input, rendered: Vec<u8>) -> FileResult {
+        FileResult {
+            input,
+            read_error: None,
+            write_error: None,
+            errors: 0,
+            warnings: 0,
+            notes: 0,
+            notes_hidden: 0,
+            fixes_applied: 0,
+            fixed: None,
+            codes: Vec::new(),
+            rendered,
+            diagnostics: None,
+            included: Vec::new(),
+        }
+    }
 }
 
 /// One linked pair's result, rendered.
@@ -74,6 +117,8 @@ pub(crate) struct ProgramResult {
     pub errors: usize,
     /// Warnings it adds to the totals.
     pub warnings: usize,
+    /// The code and severity of each link diagnostic (for `--statistics`).
+    pub codes: Vec<(&'static str, Severity)>,
     /// Its output (human text or one JSON line).
     pub rendered: Vec<u8>,
     /// Its link diagnostics with the file each points into, for formats that need every file
@@ -84,8 +129,10 @@ pub(crate) struct ProgramResult {
 /// Everything `essl lint` found, rendered, before printing.
 #[derive(Debug, Default)]
 pub(crate) struct LintResults {
-    /// Paths that could not be listed.
-    pub collect_errors: Vec<CollectError>,
+    /// Paths that could not be searched, or files whose stage nothing tells.
+    pub collect_errors: Vec<FindError>,
+    /// Shaders found and not checked.
+    pub skipped: Vec<Skipped>,
     /// One result per file, sorted by path.
     pub files: Vec<FileResult>,
     /// One result per linked pair, sorted by the vertex shader's path.
@@ -111,6 +158,8 @@ pub(crate) struct Totals {
     pub unlinked: usize,
     /// Fixes applied by `--fix`.
     pub fixes: usize,
+    /// Shaders found and not checked.
+    pub skipped: usize,
 }
 
 impl LintResults {
@@ -118,6 +167,7 @@ impl LintResults {
     pub fn totals(&self) -> Totals {
         let mut t = Totals {
             files: self.files.len(),
+            skipped: self.skipped.len(),
             ..Totals::default()
         };
         for f in &self.files {
@@ -148,12 +198,21 @@ impl LintResults {
                 .any(|f| f.read_error.is_some() || f.write_error.is_some())
     }
 
-    /// The exit status: 2 for I/O errors, 1 for errors (or warnings under `--deny warnings`),
-    /// 0 otherwise.
-    pub fn exit_status(&self, deny_warnings: bool) -> i32 {
+    /// The exit status: 2 for I/O errors, 1 for errors (or warnings under `--deny warnings`;
+    /// under `--diff`, for a fix that would change a file), 0 otherwise or under
+    /// `--exit-zero`.
+    pub fn exit_status(&self, deny_warnings: bool, exit_zero: bool, diff: bool) -> i32 {
         let t = self.totals();
         if self.has_io_errors() {
             EXIT_USAGE
+        } else if exit_zero {
+            EXIT_OK
+        } else if diff {
+            if self.files.iter().any(|f| f.fixed.is_some()) {
+                EXIT_ERRORS
+            } else {
+                EXIT_OK
+            }
         } else if t.errors > 0 || (deny_warnings && t.warnings > 0) {
             EXIT_ERRORS
         } else {

@@ -18,6 +18,7 @@ mod pow_negative_base;
 mod pow_zero_base;
 mod smoothstep_edges;
 mod smoothstep_reversed_constant;
+mod unused_allow;
 
 pub(crate) use context::{describe, fmt_num, operands, users, Cx, User};
 pub(crate) use normalize_zero::orthogonal_cross;
@@ -34,7 +35,11 @@ pub static RULES: &[&Rule] = &[
     &division_by_difference::DivisionByDifference::RULE,
     &normalize_zero::NormalizeZero::RULE,
     &mediump_overflow::MediumpOverflow::RULE,
+    &unused_allow::UnusedAllow::RULE,
 ];
+
+/// The id of the rule that reports suppressions silencing nothing.
+pub(crate) const UNUSED_ALLOW: &str = "unused-essl-allow";
 
 /// Whether any rule has something to look at in a shader: a `pow`, `acos`, `asin`,
 /// `smoothstep` or `normalize` call, a division, or low-precision arithmetic

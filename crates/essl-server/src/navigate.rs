@@ -1,0 +1,146 @@
+//! Go to definition, find references, and the document's outline (functions, globals,
+//! uniform blocks, structs).
+
+use essl::hir::GlobalKind;
+use lsp_types::{DocumentSymbol, Location, Position, SymbolKind, Uri};
+
+use crate::analysis::Analysis;
+use crate::convert;
+use crate::index::{self, Sym};
+
+/// Where the name at `pos` is declared (nothing for built-ins).
+pub fn definition(a: &Analysis, uri: &Uri, pos: Position) -> Option<Location> {
+    let file = &a.shader.file;
+    let (_, sym) = a
+        .index
+        .symbol_at(&a.shader.module, convert::offset(file, pos))?;
+    let span = index::definition(&a.shader.module, sym)?;
+    Some(Location::new(uri.clone(), convert::range(file, span)))
+}
+
+/// Every use of the name at `pos` (and its declaration, when asked).
+pub fn references(a: &Analysis, uri: &Uri, pos: Position, declaration: bool) -> Vec<Location> {
+    let file = &a.shader.file;
+    let module = &a.shader.module;
+    let Some((_, sym)) = a.index.symbol_at(module, convert::offset(file, pos)) else {
+        return Vec::new();
+    };
+    let mut spans: Vec<essl::source::Span> = Vec::new();
+    if declaration {
+        spans.extend(index::definition(module, sym));
+    }
+    spans.extend(
+        a.index
+            .uses
+            .iter()
+            .filter(|(_, s)| *s == sym)
+            .map(|(span, _)| *span),
+    );
+    spans.sort_by_key(|s| (s.start, s.end));
+    spans.dedup();
+    spans
+        .into_iter()
+        .map(|s| Location::new(uri.clone(), convert::range(file, s)))
+        .collect()
+}
+
+#[allow(deprecated)] // `DocumentSymbol::deprecated` must be given; it is `None`.
+fn symbol(
+    name: String,
+    detail: Option<String>,
+    kind: SymbolKind,
+    range: lsp_types::Range,
+) -> DocumentSymbol {
+    DocumentSymbol {
+        name,
+        detail,
+        kind,
+        tags: None,
+        deprecated: None,
+        range,
+        selection_range: range,
+        children: None,
+    }
+}
+
+/// The outline: functions (with their parameters and locals), global variables, uniform
+/// blocks, in source order.
+pub fn symbols(a: &Analysis) -> Vec<DocumentSymbol> {
+    let file = &a.shader.file;
+    let module = &a.shader.module;
+    let mut out: Vec<(u32, DocumentSymbol)> = Vec::new();
+    for (i, g) in module.globals.iter().enumerate() {
+        if matches!(g.kind, GlobalKind::BlockMember(..)) {
+            continue;
+        }
+        let kind = match g.kind {
+            GlobalKind::Const => SymbolKind::CONSTANT,
+            _ => SymbolKind::VARIABLE,
+        };
+        let detail = crate::hover::declaration(module, Sym::Global(i));
+        out.push((
+            g.span.start,
+            symbol(
+                g.name.to_string(),
+                detail,
+                kind,
+                convert::range(file, g.span),
+            ),
+        ));
+    }
+    for b in &module.blocks {
+        let members: Vec<DocumentSymbol> = b
+            .members
+            .iter()
+            .map(|(name, ty, _, _)| {
+                let detail = Some(ty.display(&module.structs).to_string());
+                symbol(
+                    name.to_string(),
+                    detail,
+                    SymbolKind::FIELD,
+                    convert::range(file, b.span),
+                )
+            })
+            .collect();
+        let mut s = symbol(
+            b.name.to_string(),
+            Some("uniform block".into()),
+            SymbolKind::STRUCT,
+            convert::range(file, b.span),
+        );
+        s.children = Some(members);
+        out.push((b.span.start, s));
+    }
+    for (f, function) in module.functions.iter().enumerate() {
+        let detail = crate::hover::declaration(module, Sym::Func(f));
+        let mut s = symbol(
+            function.name.to_string(),
+            detail,
+            SymbolKind::FUNCTION,
+            convert::range(file, function.span),
+        );
+        let mut children: Vec<DocumentSymbol> = Vec::new();
+        for (p, param) in function.params.iter().enumerate() {
+            let detail = crate::hover::declaration(module, Sym::Param(f, p));
+            children.push(symbol(
+                param.name.to_string(),
+                detail,
+                SymbolKind::VARIABLE,
+                convert::range(file, param.span),
+            ));
+        }
+        for (l, local) in function.locals.iter().enumerate() {
+            let detail = crate::hover::declaration(module, Sym::Local(f, l));
+            children.push(symbol(
+                local.name.to_string(),
+                detail,
+                SymbolKind::VARIABLE,
+                convert::range(file, local.span),
+            ));
+        }
+        s.children = Some(children);
+        out.push((function.span.start, s));
+    }
+    out.sort_by_key(|(start, _)| *start);
+    out.into_iter().map(|(_, s)| s).collect()
+}

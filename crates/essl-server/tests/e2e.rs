@@ -1,0 +1,293 @@
+//! The server end to end: the `essl-server` binary spoken to in JSON-RPC over its standard
+//! input and output, as an editor speaks to it — initialize, open and change documents, the
+//! diagnostics it publishes, and each request it answers.
+
+use std::io::{BufRead, BufReader, Read, Write};
+use std::path::Path;
+use std::process::{Child, ChildStdin, ChildStdout, Command, Stdio};
+
+use serde_json::{json, Value};
+
+struct Client {
+    child: Child,
+    stdin: ChildStdin,
+    stdout: BufReader<ChildStdout>,
+    next_id: i64,
+    /// Notifications read while waiting for something else.
+    pending: Vec<Value>,
+}
+
+impl Client {
+    fn start() -> Client {
+        let mut child = Command::new(env!("CARGO_BIN_EXE_essl-server"))
+            .stdin(Stdio::piped())
+            .stdout(Stdio::piped())
+            .stderr(Stdio::inherit())
+            .spawn()
+            .expect("the server starts");
+        let stdin = child.stdin.take().unwrap();
+        let stdout = BufReader::new(child.stdout.take().unwrap());
+        let mut c = Client {
+            child,
+            stdin,
+            stdout,
+            next_id: 1,
+            pending: Vec::new(),
+        };
+        let caps = c.request(
+            "initialize",
+            json!({"capabilities": {}, "processId": null, "rootUri": null}),
+        );
+        assert_eq!(caps["capabilities"]["hoverProvider"], true, "{caps}");
+        c.notify("initialized", json!({}));
+        c
+    }
+
+    fn send(&mut self, msg: Value) {
+        let body = msg.to_string();
+        write!(self.stdin, "Content-Length: {}\r\n\r\n{body}", body.len()).unwrap();
+        self.stdin.flush().unwrap();
+    }
+
+    fn read(&mut self) -> Value {
+        let mut length = 0;
+        loop {
+            let mut line = String::new();
+            assert!(
+                self.stdout.read_line(&mut line).unwrap() > 0,
+                "the server closed its output"
+            );
+            let line = line.trim_end();
+            if line.is_empty() {
+                break;
+            }
+            if let Some(n) = line.strip_prefix("Content-Length: ") {
+                length = n.parse().unwrap();
+            }
+        }
+        let mut body = vec![0; length];
+        self.stdout.read_exact(&mut body).unwrap();
+        serde_json::from_slice(&body).unwrap()
+    }
+
+    fn request(&mut self, method: &str, params: Value) -> Value {
+        let id = self.next_id;
+        self.next_id += 1;
+        self.send(json!({"jsonrpc": "2.0", "id": id, "method": method, "params": params}));
+        loop {
+            let msg = self.read();
+            if msg["id"] == id {
+                assert!(msg.get("error").is_none(), "{msg}");
+                return msg["result"].clone();
+            }
+            self.pending.push(msg);
+        }
+    }
+
+    fn notify(&mut self, method: &str, params: Value) {
+        self.send(json!({"jsonrpc": "2.0", "method": method, "params": params}));
+    }
+
+    /// The next diagnostics published for `uri`.
+    fn diagnostics(&mut self, uri: &str) -> Vec<Value> {
+        loop {
+            let at = self.pending.iter().position(|m| {
+                m["method"] == "textDocument/publishDiagnostics" && m["params"]["uri"] == uri
+            });
+            if let Some(i) = at {
+                let msg = self.pending.remove(i);
+                return msg["params"]["diagnostics"].as_array().unwrap().clone();
+            }
+            let msg = self.read();
+            self.pending.push(msg);
+        }
+    }
+
+    fn open(&mut self, uri: &str, text: &str) {
+        self.notify(
+            "textDocument/didOpen",
+            json!({"textDocument": {"uri": uri, "languageId": "glsl", "version": 1, "text": text}}),
+        );
+    }
+
+    fn at(&mut self, method: &str, uri: &str, line: u32, character: u32) -> Value {
+        let mut params = json!({
+            "textDocument": {"uri": uri},
+            "position": {"line": line, "character": character},
+        });
+        if method == "textDocument/references" {
+            params["context"] = json!({"includeDeclaration": true});
+        }
+        self.request(method, params)
+    }
+
+    fn shutdown(mut self) {
+        self.request("shutdown", Value::Null);
+        self.notify("exit", Value::Null);
+        let status = self.child.wait().unwrap();
+        assert!(status.success(), "{status}");
+    }
+}
+
+fn uri(path: &Path) -> String {
+    format!("file://{}", path.display())
+}
+
+const BROKEN: &str = "#version 300 es
+precision highp float;
+uniform vec3 u_light
+in vec3 v_normal;
+out vec4 color;
+void main() {
+    vec3 n = normalize(v_normal);
+    float d = dot(n, u_light);
+    color = vec4(pow(d, 2.5));
+}
+";
+
+#[test]
+fn diagnostics_and_fixes() {
+    let dir = tempfile::tempdir().unwrap();
+    let a = uri(&dir.path().join("a.frag"));
+    let mut c = Client::start();
+    c.open(&a, BROKEN);
+    let ds = c.diagnostics(&a);
+    assert_eq!(ds.len(), 1, "{ds:#?}");
+    assert_eq!(ds[0]["code"], "missing-semicolon");
+    assert_eq!(ds[0]["source"], "essl");
+    assert_eq!(ds[0]["range"]["start"], json!({"line": 2, "character": 20}));
+    assert!(
+        ds[0]["message"].as_str().unwrap().contains("\nhelp: "),
+        "{}",
+        ds[0]
+    );
+    let actions = c.request(
+        "textDocument/codeAction",
+        json!({"textDocument": {"uri": a}, "range": ds[0]["range"], "context": {"diagnostics": []}}),
+    );
+    let fix = &actions[0];
+    assert_eq!(fix["kind"], "quickfix");
+    assert_eq!(fix["isPreferred"], true);
+    let edit = &fix["edit"]["changes"][&a][0];
+    assert_eq!(edit["newText"], ";");
+    assert_eq!(edit["range"]["start"], json!({"line": 2, "character": 20}));
+
+    // Fixed: the lint finding (`pow` of a base that may be negative) remains, with an
+    // "allow this rule here" action that comments the line before.
+    let fixed = BROKEN.replace("u_light\n", "u_light;\n");
+    c.notify(
+        "textDocument/didChange",
+        json!({"textDocument": {"uri": a, "version": 2}, "contentChanges": [{"text": fixed}]}),
+    );
+    let ds = c.diagnostics(&a);
+    let pow = ds
+        .iter()
+        .find(|d| d["code"] == "pow-negative-base")
+        .expect("a pow finding");
+    let actions = c.request(
+        "textDocument/codeAction",
+        json!({"textDocument": {"uri": a}, "range": pow["range"], "context": {"diagnostics": []}}),
+    );
+    let allow = actions
+        .as_array()
+        .unwrap()
+        .iter()
+        .find(|x| {
+            x["title"]
+                .as_str()
+                .unwrap()
+                .starts_with("allow `pow-negative-base`")
+        })
+        .expect("an allow action");
+    let edit = &allow["edit"]["changes"][&a][0];
+    assert_eq!(edit["newText"], "    // essl-allow: pow-negative-base\n");
+    assert_eq!(edit["range"]["start"], json!({"line": 8, "character": 0}));
+    c.shutdown();
+}
+
+#[test]
+fn hover_definition_references_symbols_completion() {
+    let dir = tempfile::tempdir().unwrap();
+    let a = uri(&dir.path().join("a.frag"));
+    let text = BROKEN.replace("u_light\n", "u_light;\n");
+    let mut c = Client::start();
+    c.open(&a, &text);
+    c.diagnostics(&a);
+    // `u_light` used on line 7 (0-based), column 21.
+    let h = c.at("textDocument/hover", &a, 7, 22);
+    assert_eq!(
+        h["contents"]["value"], "```glsl\nuniform highp vec3 u_light\n```",
+        "{h}"
+    );
+    let h = c.at("textDocument/hover", &a, 6, 14);
+    let value = h["contents"]["value"].as_str().unwrap();
+    assert!(value.contains("vec3 normalize(vec3)"), "{value}");
+    assert!(value.contains("length 1"), "{value}");
+    // `n` used on line 7 → declared on line 6.
+    let def = c.at("textDocument/definition", &a, 7, 18);
+    assert_eq!(
+        def["range"]["start"],
+        json!({"line": 6, "character": 9}),
+        "{def}"
+    );
+    let refs = c.at("textDocument/references", &a, 6, 9);
+    assert_eq!(refs.as_array().unwrap().len(), 2, "{refs}");
+    let symbols = c.request(
+        "textDocument/documentSymbol",
+        json!({"textDocument": {"uri": a}}),
+    );
+    let names: Vec<&str> = symbols
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|s| s["name"].as_str().unwrap())
+        .collect();
+    assert_eq!(names, ["u_light", "v_normal", "color", "main"]);
+    let items = c.at("textDocument/completion", &a, 8, 4);
+    let labels: Vec<&str> = items
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|i| i["label"].as_str().unwrap())
+        .collect();
+    for expected in [
+        "n",
+        "d",
+        "u_light",
+        "normalize",
+        "smoothstep",
+        "gl_FragCoord",
+        "vec3",
+    ] {
+        assert!(labels.contains(&expected), "{expected} missing: {labels:?}");
+    }
+    c.shutdown();
+}
+
+#[test]
+fn programs_put_link_errors_on_the_right_file() {
+    let dir = tempfile::tempdir().unwrap();
+    let vert = dir.path().join("light.vert");
+    std::fs::write(
+        &vert,
+        "#version 300 es\nin vec4 p;\nout vec3 v_normal;\nvoid main() { v_normal = p.xyz; gl_Position = p; }\n",
+    )
+    .unwrap();
+    let frag = uri(&dir.path().join("light.frag"));
+    let text = "#version 300 es\nprecision highp float;\nin vec3 v_normal;\nin vec2 v_uv;\nout vec4 c;\nvoid main() { c = vec4(v_normal, v_uv.x); }\n";
+    let mut c = Client::start();
+    c.open(&frag, text);
+    let ds = c.diagnostics(&frag);
+    let link = ds
+        .iter()
+        .find(|d| d["code"] == "varying-not-written")
+        .expect("a link error");
+    assert_eq!(link["range"]["start"]["line"], 3, "{link}");
+    assert!(
+        link["message"].as_str().unwrap().starts_with("program: "),
+        "{link}"
+    );
+    // The vertex shader, not open, is published too: clean.
+    assert!(c.diagnostics(&uri(&vert)).is_empty());
+    c.shutdown();
+}
