@@ -21,7 +21,7 @@ pub fn extract(text: &str, base: usize) -> Vec<Embedded> {
             b'/' if b.get(i + 1) == Some(&b'*') => i = comment_end(b, i),
             b'\'' | b'"' => i = string_end(b, i),
             b'`' => {
-                let literal = template(b, i);
+                let literal = template(b, i, 0);
                 if let Some(e) = shader(text, i, &literal, base) {
                     found.push(e);
                 }
@@ -32,6 +32,10 @@ pub fn extract(text: &str, base: usize) -> Vec<Embedded> {
     }
     found
 }
+
+/// How deep `${…}` and template literals may nest before the scanner stops following them
+/// (the rest of the file is then one literal): a bound on its recursion for hostile input.
+const MAX_NESTING: usize = 64;
 
 /// A template literal's bounds: its text is `open + 1..end - 1`.
 struct Literal {
@@ -69,8 +73,8 @@ fn string_end(b: &[u8], open: usize) -> usize {
     b.len()
 }
 
-/// The literal that opens at `open` (a backtick).
-fn template(b: &[u8], open: usize) -> Literal {
+/// The literal that opens at `open` (a backtick), `depth` literals deep.
+fn template(b: &[u8], open: usize, depth: usize) -> Literal {
     let mut literal = Literal {
         end: b.len(),
         closed: false,
@@ -91,7 +95,10 @@ fn template(b: &[u8], open: usize) -> Literal {
             }
             b'$' if b.get(i + 1) == Some(&b'{') => {
                 literal.interpolated = true;
-                i = code_end(b, i + 2);
+                if depth >= MAX_NESTING {
+                    return literal;
+                }
+                i = code_end(b, i + 2, depth + 1);
             }
             _ => i += 1,
         }
@@ -99,22 +106,23 @@ fn template(b: &[u8], open: usize) -> Literal {
     literal
 }
 
-/// The end of the code of a `${…}` that starts at `i`: just past its closing `}`.
-fn code_end(b: &[u8], mut i: usize) -> usize {
-    let mut depth = 0usize;
+/// The end of the code of a `${…}` that starts at `i`, `depth` literals deep: just past its
+/// closing `}`.
+fn code_end(b: &[u8], mut i: usize, depth: usize) -> usize {
+    let mut braces = 0usize;
     while i < b.len() {
         match b[i] {
             b'/' if b.get(i + 1) == Some(&b'/') => i = line_end(b, i),
             b'/' if b.get(i + 1) == Some(&b'*') => i = comment_end(b, i),
             b'\'' | b'"' => i = string_end(b, i),
-            b'`' => i = template(b, i).end,
+            b'`' => i = template(b, i, depth).end,
             b'{' => {
-                depth += 1;
+                braces += 1;
                 i += 1;
             }
-            b'}' if depth == 0 => return i + 1,
+            b'}' if braces == 0 => return i + 1,
             b'}' => {
-                depth -= 1;
+                braces -= 1;
                 i += 1;
             }
             _ => i += 1,
@@ -229,6 +237,14 @@ mod tests {
         assert_eq!(found[2].1.as_deref(), Some("x"));
         assert_eq!(found[3].2, Some(Skip::Interpolated));
         assert_eq!(found[4].2, Some(Skip::Escapes));
+    }
+
+    #[test]
+    fn deep_nesting_is_bounded() {
+        let deep = format!("a = `#version 300 es\n{}", "${`".repeat(100_000));
+        let found = shaders(&deep);
+        assert_eq!(found.len(), 1);
+        assert_eq!(found[0].2, Some(Skip::Interpolated));
     }
 
     #[test]
