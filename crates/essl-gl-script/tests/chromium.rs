@@ -14,31 +14,11 @@
 
 use std::path::{Path, PathBuf};
 
+mod common;
+
+use common::{adapter, scripts};
 use essl_gl_script::{compare, read_script, replay, ReplayOptions, Results};
 use essl_scene::{diff_image, RgbaImage};
-
-fn adapter() -> bool {
-    if std::env::var_os("XDG_RUNTIME_DIR").is_none() {
-        std::env::set_var("XDG_RUNTIME_DIR", std::env::temp_dir());
-    }
-    match essl_gl::Context::new(1, 1) {
-        Ok(_) => true,
-        Err(e) => {
-            essl_testdata::adapter_missing(&e);
-            false
-        }
-    }
-}
-
-fn scripts(dir: &Path) -> Vec<PathBuf> {
-    let mut paths: Vec<PathBuf> = std::fs::read_dir(dir)
-        .unwrap()
-        .map(|e| e.unwrap().path())
-        .filter(|p| p.extension().is_some_and(|e| e == "json"))
-        .collect();
-    paths.sort();
-    paths
-}
 
 /// Replays each script of `dir` against `dir/chromium/`; the problems found.
 fn run(dir: &Path, out: &Path) -> (usize, Vec<String>) {

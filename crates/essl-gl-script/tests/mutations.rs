@@ -9,8 +9,10 @@
 //! that reproduce it.
 
 use std::panic::{catch_unwind, AssertUnwindSafe};
-use std::path::{Path, PathBuf};
 
+mod common;
+
+use common::{adapter, scripts};
 use essl_gl_script::{read_script, replay, Arg, Phase, ReplayOptions, Script};
 
 /// Mutations per script; `ESSL_GL_MUTATIONS=N` asks for more (a longer hunt).
@@ -98,23 +100,10 @@ fn mutate(script: &mut Script, rng: &mut Rng) -> String {
     }
 }
 
-fn scripts(dir: &Path) -> Vec<PathBuf> {
-    let mut paths: Vec<PathBuf> = std::fs::read_dir(dir)
-        .unwrap()
-        .map(|e| e.unwrap().path())
-        .filter(|p| p.extension().is_some_and(|e| e == "json"))
-        .collect();
-    paths.sort();
-    paths
-}
-
 #[test]
 fn mutated_scripts_get_webgl_errors_not_panics() {
-    if std::env::var_os("XDG_RUNTIME_DIR").is_none() {
-        std::env::set_var("XDG_RUNTIME_DIR", std::env::temp_dir());
-    }
-    if let Err(e) = essl_gl::Context::new(1, 1) {
-        return essl_testdata::adapter_missing(&e);
+    if !adapter() {
+        return;
     }
     let root = essl_testdata::repo_root().join("tests/gl-scripts");
     let mut paths = scripts(&root);

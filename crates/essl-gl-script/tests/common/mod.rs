@@ -1,0 +1,30 @@
+//! What the call-script tests share: the scripts of a folder, and whether a Vulkan adapter is
+//! there.
+
+use std::path::{Path, PathBuf};
+
+/// Whether essl-gl can make a context; without one, prints why (or panics when
+/// `ESSL_REQUIRE_ADAPTER=1`).
+pub fn adapter() -> bool {
+    if std::env::var_os("XDG_RUNTIME_DIR").is_none() {
+        std::env::set_var("XDG_RUNTIME_DIR", std::env::temp_dir());
+    }
+    match essl_gl::Context::new(1, 1) {
+        Ok(_) => true,
+        Err(e) => {
+            essl_testdata::adapter_missing(&e);
+            false
+        }
+    }
+}
+
+/// The `*.json` scripts of `dir`, sorted.
+pub fn scripts(dir: &Path) -> Vec<PathBuf> {
+    let mut paths: Vec<PathBuf> = std::fs::read_dir(dir)
+        .unwrap()
+        .map(|e| e.unwrap().path())
+        .filter(|p| p.extension().is_some_and(|e| e == "json"))
+        .collect();
+    paths.sort();
+    paths
+}
