@@ -11,6 +11,7 @@ use crate::array::{array_mismatch, ArrayElement, ArrayType};
 use crate::context::Context;
 use crate::framebuffer::SurfaceImage;
 use crate::gl;
+use crate::texture::is_pixel_type;
 
 /// wgpu's row pitch alignment for copies to buffers.
 const ROW_ALIGN: u32 = wgpu::COPY_BYTES_PER_ROW_ALIGNMENT;
@@ -331,23 +332,12 @@ fn is_read_format(format: u32) -> bool {
     )
 }
 
-/// Whether `ty` is one `readPixels` knows.
+/// Whether `ty` is one `readPixels` knows: the pixel types of uploads but the packed
+/// depth-stencil ones.
 fn is_read_type(ty: u32) -> bool {
-    matches!(
-        ty,
-        gl::UNSIGNED_BYTE
-            | gl::BYTE
-            | gl::UNSIGNED_SHORT
-            | gl::SHORT
-            | gl::UNSIGNED_INT
-            | gl::INT
-            | gl::HALF_FLOAT
-            | gl::FLOAT
-            | gl::UNSIGNED_SHORT_5_6_5
-            | gl::UNSIGNED_SHORT_4_4_4_4
-            | gl::UNSIGNED_SHORT_5_5_5_1
-            | gl::UNSIGNED_INT_2_10_10_10_REV
-            | gl::UNSIGNED_INT_10F_11F_11F_REV
-            | gl::UNSIGNED_INT_5_9_9_9_REV
-    )
+    is_pixel_type(ty)
+        && !matches!(
+            ty,
+            gl::UNSIGNED_INT_24_8 | gl::FLOAT_32_UNSIGNED_INT_24_8_REV
+        )
 }

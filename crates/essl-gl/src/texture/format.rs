@@ -513,7 +513,8 @@ pub(super) fn format_channels(format: u32) -> Option<usize> {
     }
 }
 
-pub(super) fn is_pixel_type(ty: u32) -> bool {
+/// Whether `ty` is a pixel type of client data (ES 3.0 table 3.2, with the packed ones).
+pub(crate) fn is_pixel_type(ty: u32) -> bool {
     matches!(
         ty,
         gl::UNSIGNED_BYTE
