@@ -39,7 +39,7 @@ mod token;
 mod usage;
 
 pub use preprocess::Version;
-pub use shader::{compile, CompileOptions, Shader, COMPILE_STACK};
+pub use shader::{compile, compile_front_end, CompileOptions, Shader, COMPILE_STACK};
 pub use target::{Extension, Target};
 
 /// A shader stage.

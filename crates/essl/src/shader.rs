@@ -98,12 +98,46 @@ impl AsRef<hir::Module> for Shader {
 pub(crate) use crate::stack::with_stack;
 pub use crate::stack::COMPILE_STACK;
 
-/// Compiles a shader's text.
+/// Compiles a shader's text: the front end, then lowering to naga IR and naga's validation
+/// ([`compile_front_end`] and [`Shader::lower`]).
 pub fn compile(file: SourceFile, stage: Stage, options: &CompileOptions) -> Shader {
-    with_stack(move || compile_here(file, stage, options))
+    with_stack(move || {
+        let mut shader = front_end_here(file, stage, options);
+        shader.lower_here();
+        shader
+    })
 }
 
-fn compile_here(file: SourceFile, stage: Stage, options: &CompileOptions) -> Shader {
+/// The front end alone (preprocess, parse, check): every diagnostic but those of lowering.
+/// An editor publishes these first and calls [`Shader::lower`] after; lowering finds an error
+/// only where naga rejects what the front end accepted (WebGL's size limits, say).
+pub fn compile_front_end(file: SourceFile, stage: Stage, options: &CompileOptions) -> Shader {
+    with_stack(move || front_end_here(file, stage, options))
+}
+
+impl Shader {
+    /// Lowers a shader from [`compile_front_end`] to a validated naga module, adding the
+    /// diagnostic of a failure; nothing when it has errors or is lowered already.
+    pub fn lower(&mut self) {
+        with_stack(|| self.lower_here())
+    }
+
+    fn lower_here(&mut self) {
+        if !self.ok() || self.naga.is_some() {
+            return;
+        }
+        match crate::lower::lower_shader(self, &crate::program::LowerOptions::default()) {
+            Ok(m) => self.naga = Some(m),
+            Err(e) => {
+                self.diagnostics.push(lowering_diagnostic(&e));
+                diagnostic::sort(&mut self.diagnostics);
+                cap_diagnostics(&mut self.diagnostics);
+            }
+        }
+    }
+}
+
+fn front_end_here(file: SourceFile, stage: Stage, options: &CompileOptions) -> Shader {
     let lexed = crate::lex::lex(&file);
     let target = options.target;
     let mut pp = preprocess::preprocess(
@@ -126,7 +160,9 @@ fn compile_here(file: SourceFile, stage: Stage, options: &CompileOptions) -> Sha
     // The syntax tree is not needed past this point: free it before lowering.
     drop(unit);
     diagnostics.extend(check_diags);
-    let mut shader = Shader {
+    diagnostic::sort(&mut diagnostics);
+    cap_diagnostics(&mut diagnostics);
+    Shader {
         file,
         stage,
         version: pp.version,
@@ -134,16 +170,7 @@ fn compile_here(file: SourceFile, stage: Stage, options: &CompileOptions) -> Sha
         diagnostics,
         module,
         naga: None,
-    };
-    if shader.ok() {
-        match crate::lower::lower_shader(&shader, &crate::program::LowerOptions::default()) {
-            Ok(m) => shader.naga = Some(m),
-            Err(e) => shader.diagnostics.push(lowering_diagnostic(&e)),
-        }
     }
-    diagnostic::sort(&mut shader.diagnostics);
-    cap_diagnostics(&mut shader.diagnostics);
-    shader
 }
 
 /// Keeps the first [`MAX_DIAGNOSTICS`] diagnostics (in source order) and says that more were

@@ -17,6 +17,9 @@ macro_rules! keywords {
         pub enum Kw { $($kw,)* }
 
         impl Kw {
+            /// Every keyword.
+            const ALL: &'static [Kw] = &[$(Kw::$kw,)*];
+
             /// The keyword's text.
             pub fn as_str(self) -> &'static str {
                 match self { $(Kw::$kw => $text,)* }
@@ -293,15 +296,60 @@ pub fn classify(tokens: Vec<PpToken>, diagnostics: &mut Vec<Diagnostic>) -> Vec<
     classify_as(tokens, &Language::es300(), diagnostics)
 }
 
+/// What a word is, in each language, when it is not an identifier in both.
+#[derive(Clone, Copy)]
+struct Known {
+    kw: Option<Kw>,
+    reserved_es300: bool,
+    reserved_es100: bool,
+}
+
+/// Every keyword and reserved word, for one hash lookup per word (the parser classifies every
+/// identifier of a shader, so a walk down the keyword and reserved-word lists cost more than
+/// the lexing).
+fn known(text: &str) -> Option<Known> {
+    use rustc_hash::FxHashMap;
+    use std::sync::OnceLock;
+    static TABLE: OnceLock<FxHashMap<&'static str, Known>> = OnceLock::new();
+    let table = TABLE.get_or_init(|| {
+        let mut t: FxHashMap<&'static str, Known> = FxHashMap::default();
+        let none = Known {
+            kw: None,
+            reserved_es300: false,
+            reserved_es100: false,
+        };
+        for &kw in Kw::ALL {
+            t.insert(
+                kw.as_str(),
+                Known {
+                    kw: Some(kw),
+                    ..none
+                },
+            );
+        }
+        for &w in RESERVED {
+            t.entry(w).or_insert(none).reserved_es300 = true;
+        }
+        for &w in RESERVED_ES100 {
+            t.entry(w).or_insert(none).reserved_es100 = true;
+        }
+        t
+    });
+    table.get(text).copied()
+}
+
 /// A word of the language: a keyword, a reserved word or an identifier.
 fn word(text: &Arc<str>, es100: bool) -> Tok {
-    match Kw::lookup(text) {
+    let Some(k) = known(text) else {
+        return Tok::Ident(text.clone());
+    };
+    match k.kw {
         Some(Kw::Attribute | Kw::Varying) if !es100 => Tok::Reserved(text.clone()),
         Some(kw) if es100 && ES300_ONLY.contains(&kw) => Tok::Ident(text.clone()),
         Some(kw) if es100 && ES300_RESERVED_IN_ES100.contains(&kw) => Tok::Reserved(text.clone()),
         Some(kw) => Tok::Kw(kw),
-        None if es100 && RESERVED_ES100.contains(&&**text) => Tok::Reserved(text.clone()),
-        None if !es100 && RESERVED.contains(&&**text) => Tok::Reserved(text.clone()),
+        None if es100 && k.reserved_es100 => Tok::Reserved(text.clone()),
+        None if !es100 && k.reserved_es300 => Tok::Reserved(text.clone()),
         None => Tok::Ident(text.clone()),
     }
 }

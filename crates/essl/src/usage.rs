@@ -104,13 +104,13 @@ fn analyze(f: &Function) -> Uses {
     w.block(&f.body);
     // Locals read in live code make the stores to them live, which may read more locals: a
     // worklist over locals, each store visited once.
-    let mut stores_of: std::collections::HashMap<LocalId, Vec<usize>> =
-        std::collections::HashMap::new();
+    let mut stores_of: rustc_hash::FxHashMap<LocalId, Vec<usize>> =
+        rustc_hash::FxHashMap::default();
     for (i, st) in w.stores.iter().enumerate() {
         stores_of.entry(st.target).or_default().push(i);
     }
     let mut pending: Vec<LocalId> = w.live.locals.iter().copied().collect();
-    let mut done = std::collections::HashSet::new();
+    let mut done = rustc_hash::FxHashSet::default();
     while let Some(l) = pending.pop() {
         if !done.insert(l) {
             continue;

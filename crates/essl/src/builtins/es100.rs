@@ -5,7 +5,7 @@
 //! [`BuiltinFn::Texture`] on a `sampler2D`), so that checking, folding and lowering treat both
 //! languages alike.
 
-use std::collections::HashMap;
+use rustc_hash::FxHashMap as HashMap;
 
 use super::signatures::{builder, v, Builder};
 use super::BuiltinFn::{self, *};

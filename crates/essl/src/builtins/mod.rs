@@ -4,7 +4,7 @@
 // The overload table reads best with owned `t.clone()` arguments throughout.
 #![allow(clippy::cloned_ref_to_slice_refs)]
 
-use std::collections::HashMap;
+use rustc_hash::FxHashMap as HashMap;
 use std::sync::OnceLock;
 
 mod es100;

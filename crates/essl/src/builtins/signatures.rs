@@ -1,7 +1,7 @@
 //! The table of built-in function overloads (GLSL ES 3.00 chapter 8), built once, one
 //! function per family of built-ins; texture functions are in [`super::texture`].
 
-use std::collections::HashMap;
+use rustc_hash::FxHashMap as HashMap;
 
 use super::{BuiltinFn, Signature};
 use crate::hir::ParamMode;
@@ -59,7 +59,7 @@ impl Builder {
 /// An empty table.
 pub(super) fn builder() -> Builder {
     Builder {
-        map: HashMap::new(),
+        map: HashMap::default(),
     }
 }
 

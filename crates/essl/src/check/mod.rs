@@ -16,7 +16,7 @@ mod types;
 mod webgl;
 
 use crate::diagnostic_code::Code;
-use std::collections::HashMap;
+use rustc_hash::FxHashMap as HashMap;
 use std::sync::Arc;
 
 use crate::ast;

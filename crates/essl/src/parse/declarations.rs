@@ -34,7 +34,7 @@ impl Parser<'_> {
                     .with_label("not expected here")
                     .with_token(&*t.text),
                 );
-                self.bump();
+                self.advance();
                 self.synchronize();
             }
         }
@@ -81,7 +81,7 @@ impl Parser<'_> {
                 }
             }
             if self.at(Punct::Semicolon) {
-                self.bump();
+                self.advance();
                 return Ok(Some(ExternalDecl::Declaration(Declaration::Qualifiers {
                     qualifiers,
                     span: self.span_from(start),
@@ -112,7 +112,7 @@ impl Parser<'_> {
             Tok::Kw(Kw::Highp) => Precision::High,
             _ => return Err(self.expected("`lowp`, `mediump` or `highp`")),
         };
-        self.bump();
+        self.advance();
         let ty = self.type_spec()?;
         self.expect_semicolon("the `precision` statement")?;
         Ok(Declaration::Precision {
@@ -166,7 +166,7 @@ impl Parser<'_> {
     fn declarators(&mut self, ty: FullType, start: Span) -> PResult<Declaration> {
         let mut declarators = Vec::new();
         if self.at(Punct::Comma) && matches!(self.peek_at(1).tok, Tok::Ident(_)) {
-            self.bump();
+            self.advance();
         }
         if !self.at(Punct::Semicolon) {
             loop {
@@ -236,7 +236,7 @@ impl Parser<'_> {
         let open = self.expect(Punct::LeftParen)?;
         let mut params = Vec::new();
         if self.at_kw(Kw::Void) && self.peek_at(1).tok == Tok::P(Punct::RightParen) {
-            self.bump();
+            self.advance();
         } else if !self.at(Punct::RightParen) {
             loop {
                 let p = self.param()?;

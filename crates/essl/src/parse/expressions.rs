@@ -58,7 +58,7 @@ impl Parser<'_> {
     pub(super) fn expr(&mut self) -> PResult<Expr> {
         let mut e = self.assignment()?;
         while self.at(Punct::Comma) {
-            self.bump();
+            self.advance();
             let rhs = self.assignment()?;
             let span = e.span.to(rhs.span);
             e = Expr {
@@ -80,7 +80,7 @@ impl Parser<'_> {
         let lhs = self.conditional()?;
         if let Tok::P(p) = self.tok() {
             if let Some(op) = assign_op(*p) {
-                self.bump();
+                self.advance();
                 let rhs = self.assignment()?;
                 let span = lhs.span.to(rhs.span);
                 return Ok(Expr {
@@ -95,7 +95,7 @@ impl Parser<'_> {
     pub(super) fn conditional(&mut self) -> PResult<Expr> {
         let c = self.binary(0)?;
         if self.at(Punct::Question) {
-            self.bump();
+            self.advance();
             let a = self.expr()?;
             self.expect(Punct::Colon)?;
             let b = self.assignment()?;
@@ -121,7 +121,7 @@ impl Parser<'_> {
             if prec <= min_prec {
                 break Ok(());
             }
-            self.bump();
+            self.advance();
             if let Err(f) = self.enter() {
                 break Err(f);
             }
@@ -154,7 +154,7 @@ impl Parser<'_> {
             _ => None,
         };
         if let Some(op) = op {
-            self.bump();
+            self.advance();
             self.enter()?;
             let e = self.unary();
             self.leave();
@@ -200,7 +200,7 @@ impl Parser<'_> {
                     };
                 }
                 Tok::P(Punct::Dot) => {
-                    self.bump();
+                    self.advance();
                     let name = match self.tok().clone() {
                         // `v.length()` and swizzles/members named like keywords are not a thing,
                         // but give a clear message.
@@ -261,7 +261,7 @@ impl Parser<'_> {
         let open = self.expect(Punct::LeftParen)?;
         let mut args = Vec::new();
         if self.at_kw(Kw::Void) && self.peek_at(1).tok == Tok::P(Punct::RightParen) {
-            self.bump();
+            self.advance();
         } else if !self.at(Punct::RightParen) {
             loop {
                 args.push(self.assignment()?);
@@ -278,19 +278,19 @@ impl Parser<'_> {
         let t = self.peek().clone();
         let kind = match &t.tok {
             Tok::Int(v, u) => {
-                self.bump();
+                self.advance();
                 ExprKind::Int(*v, *u)
             }
             Tok::Float(f) => {
-                self.bump();
+                self.advance();
                 ExprKind::Float(*f)
             }
             Tok::Kw(Kw::True) => {
-                self.bump();
+                self.advance();
                 ExprKind::Bool(true)
             }
             Tok::Kw(Kw::False) => {
-                self.bump();
+                self.advance();
                 ExprKind::Bool(false)
             }
             Tok::P(Punct::LeftParen) => {

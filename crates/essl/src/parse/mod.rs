@@ -11,7 +11,7 @@
 //! parse: `declarations`, `types`, `statements` and `expressions`.
 
 use crate::diagnostic_code::Code;
-use std::collections::HashMap;
+use rustc_hash::FxHashMap as HashMap;
 use std::sync::Arc;
 
 use crate::ast::*;
@@ -55,7 +55,7 @@ pub fn parse_as(
         pos: 0,
         diags: Vec::new(),
         suppress: false,
-        type_names: vec![HashMap::new()],
+        type_names: vec![HashMap::default()],
         depth: 0,
         too_deep_reported: false,
         stage,
@@ -126,15 +126,20 @@ impl<'a> Parser<'a> {
 
     fn bump(&mut self) -> Token {
         let t = self.peek().clone();
+        self.advance();
+        t
+    }
+
+    /// Moves past the current token (never past the final `Eof`).
+    fn advance(&mut self) {
         if self.pos < self.toks.len() - 1 {
             self.pos += 1;
         }
-        t
     }
 
     fn eat(&mut self, p: Punct) -> bool {
         if self.at(p) {
-            self.bump();
+            self.advance();
             true
         } else {
             false
@@ -143,7 +148,7 @@ impl<'a> Parser<'a> {
 
     fn eat_kw(&mut self, kw: Kw) -> bool {
         if self.at_kw(kw) {
-            self.bump();
+            self.advance();
             true
         } else {
             false
@@ -199,7 +204,7 @@ impl<'a> Parser<'a> {
     }
 
     fn push_scope(&mut self) {
-        self.type_names.push(HashMap::new());
+        self.type_names.push(HashMap::default());
     }
 
     fn pop_scope(&mut self) {
@@ -349,17 +354,25 @@ impl<'a> Parser<'a> {
     }
 
     fn ident(&mut self, what: &str) -> PResult<Ident> {
+        if let Tok::Ident(name) = &self.peek().tok {
+            let ident = Ident {
+                name: name.clone(),
+                span: self.peek().span,
+            };
+            self.advance();
+            return Ok(ident);
+        }
         let t = self.peek().clone();
         match &t.tok {
             Tok::Ident(name) => {
-                self.bump();
+                self.advance();
                 Ok(Ident {
                     name: name.clone(),
                     span: t.span,
                 })
             }
             Tok::Reserved(name) => {
-                self.bump();
+                self.advance();
                 self.reserved_word(name, t.span);
                 Ok(Ident {
                     name: name.clone(),
@@ -416,7 +429,7 @@ impl<'a> Parser<'a> {
             match self.tok() {
                 Tok::Eof => break,
                 Tok::P(Punct::Semicolon) if depth == 0 => {
-                    self.bump();
+                    self.advance();
                     break;
                 }
                 Tok::P(Punct::LeftBrace) => depth += 1,
@@ -426,17 +439,17 @@ impl<'a> Parser<'a> {
                     }
                     depth -= 1;
                     if depth == 0 {
-                        self.bump();
+                        self.advance();
                         // `struct S { … } x;` and blocks end with `;`; a function body ends here.
                         if self.at(Punct::Semicolon) {
-                            self.bump();
+                            self.advance();
                         }
                         break;
                     }
                 }
                 _ => {}
             }
-            self.bump();
+            self.advance();
         }
         self.suppress = false;
     }
@@ -463,7 +476,7 @@ impl<'a> Parser<'a> {
             self.suppress = true;
             // Skip everything: nothing sensible can be parsed at this depth.
             while !self.at_eof() {
-                self.bump();
+                self.advance();
             }
             return Err(Failed);
         }

@@ -63,19 +63,19 @@ impl Parser<'_> {
                 StmtKind::Block(b?)
             }
             Tok::P(Punct::Semicolon) => {
-                self.bump();
+                self.advance();
                 StmtKind::Empty
             }
             Tok::Kw(Kw::If) => self.if_statement()?,
             Tok::Kw(Kw::Switch) => self.switch_statement()?,
             Tok::Kw(Kw::Case) => {
-                self.bump();
+                self.advance();
                 let e = self.expr()?;
                 self.expect(Punct::Colon)?;
                 StmtKind::Case(e)
             }
             Tok::Kw(Kw::Default) => {
-                self.bump();
+                self.advance();
                 self.expect(Punct::Colon)?;
                 StmtKind::Default
             }
@@ -98,7 +98,7 @@ impl Parser<'_> {
 
     /// `if (cond) then [else els]`.
     fn if_statement(&mut self) -> PResult<StmtKind> {
-        self.bump();
+        self.advance();
         let open = self.expect(Punct::LeftParen)?;
         let cond = self.expr()?;
         self.expect_close(Punct::RightParen, open)?;
@@ -113,7 +113,7 @@ impl Parser<'_> {
 
     /// `switch (e) { … }`: the body is a scope of its own.
     fn switch_statement(&mut self) -> PResult<StmtKind> {
-        self.bump();
+        self.advance();
         let open = self.expect(Punct::LeftParen)?;
         let e = self.expr()?;
         self.expect_close(Punct::RightParen, open)?;
@@ -125,7 +125,7 @@ impl Parser<'_> {
 
     /// `while (cond) body`: the condition may declare a variable, in a scope the body shares.
     fn while_loop(&mut self) -> PResult<StmtKind> {
-        self.bump();
+        self.advance();
         let open = self.expect(Punct::LeftParen)?;
         self.push_scope();
         let r = (|| {
@@ -140,7 +140,7 @@ impl Parser<'_> {
 
     /// `do body while (cond);`.
     fn do_while_loop(&mut self) -> PResult<StmtKind> {
-        self.bump();
+        self.advance();
         let body = self.scoped_statement()?;
         if !self.eat_kw(Kw::While) {
             return Err(self.expected("`while` after the body of `do`"));
@@ -154,7 +154,7 @@ impl Parser<'_> {
 
     /// `for (init; cond; step) body`: the header opens a scope that the body shares.
     fn for_loop(&mut self) -> PResult<StmtKind> {
-        self.bump();
+        self.advance();
         let open = self.expect(Punct::LeftParen)?;
         self.push_scope();
         let r = (|| {
@@ -187,7 +187,7 @@ impl Parser<'_> {
     fn for_init(&mut self) -> PResult<Stmt> {
         let init_start = self.peek().span;
         Ok(if self.at(Punct::Semicolon) {
-            self.bump();
+            self.advance();
             Stmt {
                 kind: StmtKind::Empty,
                 span: init_start,
@@ -210,7 +210,7 @@ impl Parser<'_> {
 
     /// `continue;`, `break;`, `discard;` or `return [e];`, the keyword `kw` next.
     fn jump(&mut self, kw: Kw) -> PResult<StmtKind> {
-        self.bump();
+        self.advance();
         Ok(match kw {
             Kw::Continue => {
                 self.expect_semicolon("`continue`")?;

@@ -89,7 +89,7 @@ impl Parser<'_> {
                 Tok::Kw(Kw::Mediump) => Qualifier::Precision(Precision::Medium),
                 Tok::Kw(Kw::Highp) => Qualifier::Precision(Precision::High),
                 Tok::Kw(Kw::Layout) => {
-                    self.bump();
+                    self.advance();
                     let open = self.expect(Punct::LeftParen)?;
                     let mut items = Vec::new();
                     loop {
@@ -137,7 +137,7 @@ impl Parser<'_> {
                 }
                 _ => break,
             };
-            self.bump();
+            self.advance();
             out.push((q, t.span));
         }
         Ok(out)
@@ -151,13 +151,13 @@ impl Parser<'_> {
             Tok::Kw(Kw::Struct) => TypeName::Struct(Arc::new(self.struct_decl()?)),
             Tok::Kw(k) => match type_keyword(*k) {
                 Some(n) => {
-                    self.bump();
+                    self.advance();
                     n
                 }
                 None => return Err(self.expected("a type")),
             },
             Tok::Ident(name) if self.is_type_name(name) => {
-                self.bump();
+                self.advance();
                 TypeName::Named(Ident {
                     name: name.clone(),
                     span: t.span,
@@ -220,7 +220,7 @@ impl Parser<'_> {
                 return Err(Failed);
             }
             Tok::Reserved(name) => {
-                self.bump();
+                self.advance();
                 self.reserved_word(&name.clone(), t.span);
                 self.suppress = true;
                 return Err(Failed);

@@ -45,7 +45,7 @@ mod expand;
 mod expr;
 
 use crate::diagnostic_code::Code;
-use std::collections::HashMap;
+use rustc_hash::FxHashMap as HashMap;
 use std::rc::Rc;
 use std::sync::Arc;
 
@@ -315,7 +315,7 @@ impl<'a> Pp<'a> {
             line_start: true,
             line_begin: 0,
             skipped_lines: Vec::new(),
-            macros: HashMap::new(),
+            macros: HashMap::default(),
             conds: Vec::new(),
             diags: Vec::new(),
             out: Vec::new(),
