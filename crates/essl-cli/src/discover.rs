@@ -1,6 +1,6 @@
 //! Finding the shaders `essl lint` checks: files named on the command line, folders walked as
 //! git would see them (`.gitignore`, `.ignore`, hidden entries skipped; `exclude` patterns),
-//! standard input (`-`), and the shaders inside HTML, JS and TS files ([`crate::extract`]).
+//! standard input (`-`), and the shaders inside HTML, JS and TS files ([`essl_build::extract`]).
 //!
 //! A shader's stage comes from its extension (`.vert`/`.vs`/`.vsh`, `.frag`/`.fs`/`.fsh`, also
 //! before `.glsl`: `light.vert.glsl`), then from the `[stages]` globs of `essl.toml`, then from
@@ -15,8 +15,8 @@ use essl::Stage;
 use essl_build::Config;
 use globset::GlobSet;
 
-use crate::extract::{self, Embedded, HostKind};
 use crate::files::{io_message, read_source};
+use essl_build::extract::{self, Embedded, HostKind};
 
 /// Where a shader's text comes from.
 #[derive(Clone, Debug)]

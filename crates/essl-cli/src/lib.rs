@@ -22,7 +22,7 @@ pub mod conformance;
 pub mod deqp_exec;
 pub mod discover;
 pub mod explain;
-pub mod extract;
+pub use essl_build::extract;
 mod files;
 pub mod lint;
 #[cfg(feature = "render")]
