@@ -11,7 +11,7 @@ use lsp_types::{
 };
 
 use crate::analysis::Analysis;
-use crate::convert;
+use crate::convert::{self, Place};
 
 fn overlaps(a: Range, b: Range) -> bool {
     let key = |p: lsp_types::Position| (p.line, p.character);
@@ -26,20 +26,25 @@ fn edit(uri: &Uri, edits: Vec<TextEdit>) -> WorkspaceEdit {
 }
 
 /// The code actions for the diagnostics that overlap `range`.
-pub fn actions(a: &Analysis, uri: &Uri, range: Range) -> Vec<CodeActionOrCommand> {
+pub fn actions(
+    a: &Analysis,
+    place: Place<'_>,
+    uri: &Uri,
+    range: Range,
+) -> Vec<CodeActionOrCommand> {
     let file = &a.shader.file;
     let mut out = Vec::new();
-    for d in &a.shader.diagnostics {
-        let at = convert::range(file, d.span);
+    for d in a.diagnostics() {
+        let at = place.range(d.span);
         if !overlaps(at, range) {
             continue;
         }
-        let diagnostic = convert::diagnostic(file, uri, d);
+        let diagnostic = convert::diagnostic(place, file, uri, d);
         if let Some(fix) = &d.fix {
             let edits = fix
                 .edits
                 .iter()
-                .map(|e| TextEdit::new(convert::range(file, e.span), e.replacement.clone()))
+                .map(|e| TextEdit::new(place.range(e.span), e.replacement.clone()))
                 .collect();
             out.push(CodeActionOrCommand::CodeAction(CodeAction {
                 title: fix.message.clone(),
@@ -50,7 +55,7 @@ pub fn actions(a: &Analysis, uri: &Uri, range: Range) -> Vec<CodeActionOrCommand
                 ..CodeAction::default()
             }));
         }
-        if let Some(action) = allow_here(a, uri, d, diagnostic) {
+        if let Some(action) = allow_here(a, place, uri, d, diagnostic) {
             out.push(CodeActionOrCommand::CodeAction(action));
         }
     }
@@ -60,6 +65,7 @@ pub fn actions(a: &Analysis, uri: &Uri, range: Range) -> Vec<CodeActionOrCommand
 /// `// essl-allow: RULE` on a new line before the finding's, indented as it is.
 fn allow_here(
     a: &Analysis,
+    place: Place<'_>,
     uri: &Uri,
     d: &Diagnostic,
     diagnostic: lsp_types::Diagnostic,
@@ -73,7 +79,7 @@ fn allow_here(
         .chars()
         .take_while(|c| *c == ' ' || *c == '\t')
         .collect();
-    let at = convert::range(file, Span::empty(start));
+    let at = place.range(Span::empty(start));
     let comment = format!("{indent}// essl-allow: {}\n", d.code);
     Some(CodeAction {
         title: format!("allow `{}` here (// essl-allow: {})", d.code, d.code),

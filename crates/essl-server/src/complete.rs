@@ -6,8 +6,9 @@ use essl::Version;
 use lsp_types::{CompletionItem, CompletionItemKind, Documentation, Position};
 
 use crate::analysis::Analysis;
+use crate::convert::Place;
 use crate::index::Sym;
-use crate::{builtin_docs, convert, hover};
+use crate::{builtin_docs, hover};
 
 const KEYWORDS: &[&str] = &[
     "attribute",
@@ -97,9 +98,11 @@ fn item(label: &str, kind: CompletionItemKind, detail: Option<String>) -> Comple
 }
 
 /// The completion items at `pos`.
-pub fn complete(a: &Analysis, pos: Position) -> Vec<CompletionItem> {
+pub fn complete(a: &Analysis, place: Place<'_>, pos: Position) -> Vec<CompletionItem> {
     let module = &a.shader.module;
-    let offset = convert::offset(&a.shader.file, pos);
+    let Some(offset) = place.offset(pos) else {
+        return Vec::new();
+    };
     let es100 = module.version == Version::Es100;
     let mut items = Vec::new();
     // The function the cursor is in: the last one whose name comes before it.

@@ -11,6 +11,45 @@ use lsp_types::{
     Uri,
 };
 
+/// Where a shader's text lies in the document the editor shows: the document's text and the
+/// byte offset the shader starts at (0 for a shader file; a `<script>` body or a template
+/// literal for a shader inside an HTML or JS file).
+#[derive(Clone, Copy, Debug)]
+pub struct Place<'a> {
+    /// The document's text.
+    pub doc: &'a SourceFile,
+    /// Where the shader starts in it.
+    pub base: u32,
+    /// The shader's length.
+    pub len: u32,
+}
+
+impl<'a> Place<'a> {
+    /// A shader that is the whole document.
+    pub fn whole(doc: &'a SourceFile) -> Place<'a> {
+        Place {
+            doc,
+            base: 0,
+            len: doc.text().len() as u32,
+        }
+    }
+
+    /// The shader's offset at a document position, when the position is inside the shader
+    /// (its end included).
+    pub fn offset(&self, pos: Position) -> Option<u32> {
+        let o = offset(self.doc, pos);
+        (o >= self.base && o <= self.base + self.len).then(|| o - self.base)
+    }
+
+    /// The document range of a span of the shader.
+    pub fn range(&self, span: Span) -> Range {
+        range(
+            self.doc,
+            Span::new(span.start + self.base, span.end + self.base),
+        )
+    }
+}
+
 /// The protocol position of a byte offset (clamped to the text).
 pub fn position(file: &SourceFile, offset: u32) -> Position {
     let text = file.text();
@@ -89,9 +128,15 @@ pub fn path_to_uri(path: &Path) -> Option<Uri> {
     Uri::from_str(&s).ok()
 }
 
-/// An essl diagnostic as the protocol's: the code, the message with its notes and help (as
-/// the command line prints them), and the secondary labels as related information.
-pub fn diagnostic(file: &SourceFile, uri: &Uri, d: &Diagnostic) -> lsp_types::Diagnostic {
+/// An essl diagnostic of the shader `file`, which lies at `place` in the document `uri`, as the
+/// protocol's: the code, the message with its notes and help (as the command line prints
+/// them), and the secondary labels as related information.
+pub fn diagnostic(
+    place: Place<'_>,
+    file: &SourceFile,
+    uri: &Uri,
+    d: &Diagnostic,
+) -> lsp_types::Diagnostic {
     let severity = match d.severity {
         essl::diagnostic::Severity::Error => DiagnosticSeverity::ERROR,
         essl::diagnostic::Severity::Warning => DiagnosticSeverity::WARNING,
@@ -111,7 +156,7 @@ pub fn diagnostic(file: &SourceFile, uri: &Uri, d: &Diagnostic) -> lsp_types::Di
         .secondary
         .iter()
         .map(|l| DiagnosticRelatedInformation {
-            location: Location::new(uri.clone(), range(file, l.span)),
+            location: Location::new(uri.clone(), place.range(l.span)),
             message: if l.message.is_empty() {
                 "here".to_string()
             } else {
@@ -120,7 +165,7 @@ pub fn diagnostic(file: &SourceFile, uri: &Uri, d: &Diagnostic) -> lsp_types::Di
         })
         .collect();
     lsp_types::Diagnostic {
-        range: range(file, d.span),
+        range: place.range(d.span),
         severity: Some(severity),
         code: Some(NumberOrString::String(d.code.to_string())),
         source: Some("essl".to_string()),

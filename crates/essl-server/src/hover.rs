@@ -6,8 +6,9 @@ use essl::types::Precision;
 use lsp_types::{Hover, HoverContents, MarkupContent, MarkupKind, Position};
 
 use crate::analysis::Analysis;
+use crate::builtin_docs;
+use crate::convert::Place;
 use crate::index::Sym;
-use crate::{builtin_docs, convert};
 
 fn precision(p: Option<Precision>) -> String {
     p.map(|p| format!("{} ", p.name())).unwrap_or_default()
@@ -138,22 +139,21 @@ fn markdown(code: &str, doc: Option<&str>) -> Hover {
 }
 
 /// The hover at `pos`.
-pub fn hover(a: &Analysis, pos: Position) -> Option<Hover> {
-    let file = &a.shader.file;
+pub fn hover(a: &Analysis, place: Place<'_>, pos: Position) -> Option<Hover> {
     let module = &a.shader.module;
-    let offset = convert::offset(file, pos);
-    if let Some((span, sym)) = a.index.symbol_at(module, offset) {
+    let offset = place.offset(pos)?;
+    if let Some((span, sym)) = a.index().symbol_at(module, offset) {
         let doc = match sym {
             Sym::BuiltinFn(op) => builtin_docs::doc(op.name()),
             Sym::BuiltinVar(v) => builtin_docs::doc(v.name()),
             _ => None,
         };
         let mut h = markdown(&declaration(module, sym)?, doc);
-        h.range = Some(convert::range(file, span));
+        h.range = Some(place.range(span));
         return Some(h);
     }
-    let (span, ty) = a.index.type_at(offset)?;
+    let (span, ty) = a.index().type_at(offset)?;
     let mut h = markdown(&ty.display(&module.structs).to_string(), None);
-    h.range = Some(convert::range(file, span));
+    h.range = Some(place.range(span));
     Some(h)
 }

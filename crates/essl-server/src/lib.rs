@@ -4,7 +4,9 @@
 //! Each document is checked as `essl lint` checks it — compiled, linted with the levels of
 //! its nearest `essl.toml`, and linked with its `NAME.vert` / `NAME.frag` partner (open, or
 //! on disk), link diagnostics published on the file they point into — when it opens and on
-//! every change. Requests are answered from the latest check:
+//! every change. A shader inside an HTML page or a JS/TS file is checked the same way, on its
+//! own text, and placed back on the document's lines ([`document`]). Requests are answered
+//! from the latest check:
 //!
 //! - diagnostics: the same codes, spans, notes and helps as the command line, secondary
 //!   labels as related information ([`convert`]);
@@ -24,10 +26,12 @@ mod analysis;
 mod builtin_docs;
 mod complete;
 mod convert;
+mod document;
 mod hover;
 mod index;
 mod navigate;
 mod server;
+mod state;
 
 use lsp_server::Connection;
 use lsp_types::{

@@ -10,3 +10,7 @@ fn main() -> std::process::ExitCode {
         }
     }
 }
+
+#[cfg(feature = "mimalloc")]
+#[global_allocator]
+static ALLOCATOR: mimalloc::MiMalloc = mimalloc::MiMalloc;

@@ -5,24 +5,29 @@ use essl::hir::GlobalKind;
 use lsp_types::{DocumentSymbol, Location, Position, SymbolKind, Uri};
 
 use crate::analysis::Analysis;
-use crate::convert;
+use crate::convert::Place;
 use crate::index::{self, Sym};
 
 /// Where the name at `pos` is declared (nothing for built-ins).
-pub fn definition(a: &Analysis, uri: &Uri, pos: Position) -> Option<Location> {
-    let file = &a.shader.file;
-    let (_, sym) = a
-        .index
-        .symbol_at(&a.shader.module, convert::offset(file, pos))?;
+pub fn definition(a: &Analysis, place: Place<'_>, uri: &Uri, pos: Position) -> Option<Location> {
+    let (_, sym) = a.index().symbol_at(&a.shader.module, place.offset(pos)?)?;
     let span = index::definition(&a.shader.module, sym)?;
-    Some(Location::new(uri.clone(), convert::range(file, span)))
+    Some(Location::new(uri.clone(), place.range(span)))
 }
 
 /// Every use of the name at `pos` (and its declaration, when asked).
-pub fn references(a: &Analysis, uri: &Uri, pos: Position, declaration: bool) -> Vec<Location> {
-    let file = &a.shader.file;
+pub fn references(
+    a: &Analysis,
+    place: Place<'_>,
+    uri: &Uri,
+    pos: Position,
+    declaration: bool,
+) -> Vec<Location> {
     let module = &a.shader.module;
-    let Some((_, sym)) = a.index.symbol_at(module, convert::offset(file, pos)) else {
+    let Some(offset) = place.offset(pos) else {
+        return Vec::new();
+    };
+    let Some((_, sym)) = a.index().symbol_at(module, offset) else {
         return Vec::new();
     };
     let mut spans: Vec<essl::source::Span> = Vec::new();
@@ -30,7 +35,7 @@ pub fn references(a: &Analysis, uri: &Uri, pos: Position, declaration: bool) -> 
         spans.extend(index::definition(module, sym));
     }
     spans.extend(
-        a.index
+        a.index()
             .uses
             .iter()
             .filter(|(_, s)| *s == sym)
@@ -40,7 +45,7 @@ pub fn references(a: &Analysis, uri: &Uri, pos: Position, declaration: bool) -> 
     spans.dedup();
     spans
         .into_iter()
-        .map(|s| Location::new(uri.clone(), convert::range(file, s)))
+        .map(|s| Location::new(uri.clone(), place.range(s)))
         .collect()
 }
 
@@ -65,8 +70,7 @@ fn symbol(
 
 /// The outline: functions (with their parameters and locals), global variables, uniform
 /// blocks, in source order.
-pub fn symbols(a: &Analysis) -> Vec<DocumentSymbol> {
-    let file = &a.shader.file;
+pub fn symbols(a: &Analysis, place: Place<'_>) -> Vec<DocumentSymbol> {
     let module = &a.shader.module;
     let mut out: Vec<(u32, DocumentSymbol)> = Vec::new();
     for (i, g) in module.globals.iter().enumerate() {
@@ -80,12 +84,7 @@ pub fn symbols(a: &Analysis) -> Vec<DocumentSymbol> {
         let detail = crate::hover::declaration(module, Sym::Global(i));
         out.push((
             g.span.start,
-            symbol(
-                g.name.to_string(),
-                detail,
-                kind,
-                convert::range(file, g.span),
-            ),
+            symbol(g.name.to_string(), detail, kind, place.range(g.span)),
         ));
     }
     for b in &module.blocks {
@@ -98,7 +97,7 @@ pub fn symbols(a: &Analysis) -> Vec<DocumentSymbol> {
                     name.to_string(),
                     detail,
                     SymbolKind::FIELD,
-                    convert::range(file, b.span),
+                    place.range(b.span),
                 )
             })
             .collect();
@@ -106,7 +105,7 @@ pub fn symbols(a: &Analysis) -> Vec<DocumentSymbol> {
             b.name.to_string(),
             Some("uniform block".into()),
             SymbolKind::STRUCT,
-            convert::range(file, b.span),
+            place.range(b.span),
         );
         s.children = Some(members);
         out.push((b.span.start, s));
@@ -117,7 +116,7 @@ pub fn symbols(a: &Analysis) -> Vec<DocumentSymbol> {
             function.name.to_string(),
             detail,
             SymbolKind::FUNCTION,
-            convert::range(file, function.span),
+            place.range(function.span),
         );
         let mut children: Vec<DocumentSymbol> = Vec::new();
         for (p, param) in function.params.iter().enumerate() {
@@ -126,7 +125,7 @@ pub fn symbols(a: &Analysis) -> Vec<DocumentSymbol> {
                 param.name.to_string(),
                 detail,
                 SymbolKind::VARIABLE,
-                convert::range(file, param.span),
+                place.range(param.span),
             ));
         }
         for (l, local) in function.locals.iter().enumerate() {
@@ -135,7 +134,7 @@ pub fn symbols(a: &Analysis) -> Vec<DocumentSymbol> {
                 local.name.to_string(),
                 detail,
                 SymbolKind::VARIABLE,
-                convert::range(file, local.span),
+                place.range(local.span),
             ));
         }
         s.children = Some(children);

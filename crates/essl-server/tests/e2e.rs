@@ -88,8 +88,32 @@ impl Client {
         self.send(json!({"jsonrpc": "2.0", "method": method, "params": params}));
     }
 
-    /// The next diagnostics published for `uri`.
+    /// The diagnostics last published for `uri` once the server has finished every check it
+    /// has pending: a request is answered only after them (the server publishes a change's
+    /// front-end diagnostics first and again with its lint findings).
     fn diagnostics(&mut self, uri: &str) -> Vec<Value> {
+        self.request(
+            "textDocument/documentSymbol",
+            json!({"textDocument": {"uri": uri}}),
+        );
+        let is_mine = |m: &Value| {
+            m["method"] == "textDocument/publishDiagnostics" && m["params"]["uri"] == uri
+        };
+        let mine: Vec<Value> = self
+            .pending
+            .iter()
+            .filter(|m| is_mine(m))
+            .cloned()
+            .collect();
+        self.pending.retain(|m| !is_mine(m));
+        let last = mine
+            .last()
+            .unwrap_or_else(|| panic!("nothing published for {uri}"));
+        last["params"]["diagnostics"].as_array().unwrap().clone()
+    }
+
+    /// The next diagnostics published for `uri`, without waiting for pending checks.
+    fn next_diagnostics(&mut self, uri: &str) -> Vec<Value> {
         loop {
             let at = self.pending.iter().position(|m| {
                 m["method"] == "textDocument/publishDiagnostics" && m["params"]["uri"] == uri
@@ -289,5 +313,130 @@ fn programs_put_link_errors_on_the_right_file() {
     );
     // The vertex shader, not open, is published too: clean.
     assert!(c.diagnostics(&uri(&vert)).is_empty());
+    c.shutdown();
+}
+
+/// A change is published twice: first the front end's diagnostics with the previous lint
+/// findings that lie outside the edit (moved with it), then with the lints of the new text.
+#[test]
+fn a_change_publishes_the_front_end_first_and_keeps_lints_outside_the_edit() {
+    let dir = tempfile::tempdir().unwrap();
+    let a = uri(&dir.path().join("a.frag"));
+    let text = BROKEN.replace("u_light\n", "u_light;\n");
+    let mut c = Client::start();
+    c.open(&a, &text);
+    let pow_line = |ds: &[Value]| -> Vec<Value> {
+        ds.iter()
+            .filter(|d| d["code"] == "pow-negative-base")
+            .map(|d| d["range"]["start"]["line"].clone())
+            .collect()
+    };
+    assert_eq!(pow_line(&c.diagnostics(&a)), [json!(8)]);
+    // A line added above: the finding moves down with its text before the lints run again.
+    let moved = text.replace(
+        "out vec4 color;\n",
+        "out vec4 color;\nconst float k = 2.0;\n",
+    );
+    c.notify(
+        "textDocument/didChange",
+        json!({"textDocument": {"uri": a, "version": 2}, "contentChanges": [{"text": moved}]}),
+    );
+    assert_eq!(pow_line(&c.next_diagnostics(&a)), [json!(9)]);
+    assert_eq!(pow_line(&c.diagnostics(&a)), [json!(9)]);
+    // An edit of the finding's own line drops it until the lints have run on the new text.
+    let edited = moved.replace("pow(d, 2.5)", "pow(0.5 - d * 2.0, 2.5)");
+    c.notify(
+        "textDocument/didChange",
+        json!({"textDocument": {"uri": a, "version": 3}, "contentChanges": [{"text": edited}]}),
+    );
+    assert!(pow_line(&c.next_diagnostics(&a)).is_empty());
+    assert_eq!(pow_line(&c.diagnostics(&a)), [json!(9)]);
+    // A syntax error: the front end's error alone, no lint findings carried.
+    let broken = edited.replace(
+        "vec3 n = normalize(v_normal);",
+        "vec3 n = normalize(v_normal)",
+    );
+    c.notify(
+        "textDocument/didChange",
+        json!({"textDocument": {"uri": a, "version": 4}, "contentChanges": [{"text": broken}]}),
+    );
+    let ds = c.diagnostics(&a);
+    assert_eq!(ds.len(), 1, "{ds:#?}");
+    assert_eq!(ds[0]["code"], "missing-semicolon");
+    c.shutdown();
+}
+
+/// Shaders inside an HTML page: each checked on its own text, diagnostics and fixes on the
+/// page's lines, hover at page positions, the two shaders linked, and a template literal
+/// with `${…}` reported as not checked.
+#[test]
+fn shaders_inside_html_and_js() {
+    let dir = tempfile::tempdir().unwrap();
+    let page = uri(&dir.path().join("page.html"));
+    let html = "<!doctype html>\n<canvas></canvas>\n\
+<script id=\"vertex-shader-3d\" type=\"x-shader/x-vertex\">#version 300 es\n\
+in vec4 a_position;\n\
+out vec3 v_normal;\n\
+void main() { v_normal = a_position.xyz; gl_Position = a_position; }\n\
+</script>\n\
+<script id=\"fragment-shader-3d\" type=\"x-shader/x-fragment\">#version 300 es\n\
+precision highp float;\n\
+in vec3 v_normal;\n\
+in vec2 v_uv;\n\
+out vec4 outColor;\n\
+void main() {\n\
+  float k = 1.0\n\
+  outColor = vec4(v_normal * k, v_uv.x);\n\
+}\n\
+</script>\n";
+    let mut c = Client::start();
+    c.open(&page, html);
+    let ds = c.diagnostics(&page);
+    let semi = ds
+        .iter()
+        .find(|d| d["code"] == "missing-semicolon")
+        .unwrap_or_else(|| panic!("{ds:#?}"));
+    // `float k = 1.0` is on the page's line 13 (0-based), the `;` goes after its 13 columns.
+    assert_eq!(semi["range"]["start"], json!({"line": 13, "character": 13}));
+    let actions = c.request(
+        "textDocument/codeAction",
+        json!({"textDocument": {"uri": page}, "range": semi["range"], "context": {"diagnostics": []}}),
+    );
+    let edit = &actions[0]["edit"]["changes"][&page][0];
+    assert_eq!(edit["newText"], ";");
+    assert_eq!(edit["range"]["start"], json!({"line": 13, "character": 13}));
+    // Fixed: the fragment shader reads `v_uv`, which the vertex shader does not write.
+    let fixed = html.replace("float k = 1.0\n", "float k = 1.0;\n");
+    c.notify(
+        "textDocument/didChange",
+        json!({"textDocument": {"uri": page, "version": 2}, "contentChanges": [{"text": fixed}]}),
+    );
+    let ds = c.diagnostics(&page);
+    let link = ds
+        .iter()
+        .find(|d| d["code"] == "varying-not-written")
+        .unwrap_or_else(|| panic!("{ds:#?}"));
+    assert_eq!(link["range"]["start"]["line"], 10, "{link}");
+    assert!(link["message"].as_str().unwrap().starts_with("program: "));
+    // Hover on `a_position` in the vertex shader's `main` (page line 5, column 27).
+    let h = c.at("textDocument/hover", &page, 5, 27);
+    assert_eq!(
+        h["contents"]["value"], "```glsl\nin highp vec4 a_position\n```",
+        "{h}"
+    );
+    // Outside every shader, nothing.
+    assert_eq!(c.at("textDocument/hover", &page, 1, 3), Value::Null);
+
+    let script = uri(&dir.path().join("app.js"));
+    let js = "const n = 4;\nconst fs = `#version 300 es\nprecision highp float;\nout vec4 c;\nvoid main() { c = vec4(${n}); }\n`;\n";
+    c.open(&script, js);
+    let ds = c.diagnostics(&script);
+    assert_eq!(ds.len(), 1, "{ds:#?}");
+    assert_eq!(ds[0]["code"], "not-checked");
+    assert_eq!(ds[0]["range"]["start"]["line"], 1);
+    assert!(ds[0]["message"]
+        .as_str()
+        .unwrap()
+        .contains("interpolations"));
     c.shutdown();
 }
