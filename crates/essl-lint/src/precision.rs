@@ -9,7 +9,8 @@
 
 use rustc_hash::FxHashMap as HashMap;
 
-use essl::hir::{self, Expr, ExprKind, Function, Module, Stmt, StmtKind};
+use essl::hir::visit::Visitor;
+use essl::hir::{Expr, ExprKind, Function, Module};
 use essl::source::Span;
 use essl::types::{Precision, Type};
 
@@ -29,7 +30,7 @@ impl Precisions {
                 f,
                 out: &mut p.by_span,
             };
-            w.stmts(&f.body);
+            w.visit_stmts(&f.body);
         }
         p
     }
@@ -59,64 +60,15 @@ fn highest(a: Option<Precision>, b: Option<Precision>) -> Option<Precision> {
     }
 }
 
+/// Statements are walked as everywhere else; each expression statement, initialiser and
+/// condition is a root whose precision [`Walker::expr`] computes bottom-up.
+impl Visitor for Walker<'_> {
+    fn visit_expr(&mut self, e: &Expr) {
+        self.expr(e);
+    }
+}
+
 impl Walker<'_> {
-    fn stmts(&mut self, stmts: &[Stmt]) {
-        for s in stmts {
-            self.stmt(s);
-        }
-    }
-
-    fn stmt(&mut self, s: &Stmt) {
-        match &s.kind {
-            StmtKind::Expr(e) => {
-                self.expr(e);
-            }
-            StmtKind::Local(_, Some(e)) => {
-                self.expr(e);
-            }
-            StmtKind::Local(_, None) | StmtKind::Break | StmtKind::Continue | StmtKind::Discard => {
-            }
-            StmtKind::Block(b) => self.stmts(b),
-            StmtKind::If(c, t, e) => {
-                self.expr(c);
-                self.stmts(t);
-                self.stmts(e);
-            }
-            StmtKind::Loop {
-                init,
-                cond,
-                step,
-                body,
-                ..
-            } => {
-                self.stmts(init);
-                if let Some(c) = cond {
-                    match &**c {
-                        hir::Cond::Expr(e) | hir::Cond::Decl(_, e) => {
-                            self.expr(e);
-                        }
-                    }
-                }
-                if let Some(e) = step {
-                    self.expr(e);
-                }
-                self.stmts(body);
-            }
-            StmtKind::Switch(e, cases) => {
-                self.expr(e);
-                for c in cases {
-                    self.stmts(&c.body);
-                }
-            }
-            StmtKind::Return(Some(e)) => {
-                self.expr(e);
-            }
-            StmtKind::Return(None) => {}
-            // A statement kind added to essl later carries no precision of its own.
-            _ => {}
-        }
-    }
-
     fn member_precision(&self, base: &Expr, m: usize) -> Option<Precision> {
         match &base.ty {
             Type::Struct(id) => self

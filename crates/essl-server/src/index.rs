@@ -2,7 +2,8 @@
 //! records every use of a variable, parameter, function or built-in with its span, and every
 //! expression's type, for hover, go to definition, references and completion.
 
-use essl::hir::{BuiltinFn, BuiltinVar, Cond, Expr, ExprKind, Module, Stmt, StmtKind};
+use essl::hir::visit::{self, Visitor};
+use essl::hir::{BuiltinFn, BuiltinVar, Expr, ExprKind, Module};
 use essl::source::{SourceFile, Span};
 use essl::types::Type;
 
@@ -42,7 +43,7 @@ impl Index {
         };
         for (f, function) in module.functions.iter().enumerate() {
             walk.func = f;
-            walk.stmts(&function.body);
+            walk.visit_stmts(&function.body);
         }
         walk.index
     }
@@ -114,50 +115,6 @@ struct Walk<'a> {
 }
 
 impl Walk<'_> {
-    fn stmts(&mut self, stmts: &[Stmt]) {
-        for s in stmts {
-            self.stmt(s);
-        }
-    }
-
-    fn stmt(&mut self, s: &Stmt) {
-        match &s.kind {
-            StmtKind::Expr(e) => self.expr(e),
-            StmtKind::Local(_, Some(e)) => self.expr(e),
-            StmtKind::Block(b) => self.stmts(b),
-            StmtKind::If(c, a, b) => {
-                self.expr(c);
-                self.stmts(a);
-                self.stmts(b);
-            }
-            StmtKind::Loop {
-                init,
-                cond,
-                step,
-                body,
-                ..
-            } => {
-                self.stmts(init);
-                match cond.as_deref() {
-                    Some(Cond::Expr(e)) | Some(Cond::Decl(_, e)) => self.expr(e),
-                    None => {}
-                }
-                if let Some(e) = step {
-                    self.expr(e);
-                }
-                self.stmts(body);
-            }
-            StmtKind::Switch(e, cases) => {
-                self.expr(e);
-                for c in cases {
-                    self.stmts(&c.body);
-                }
-            }
-            StmtKind::Return(Some(e)) => self.expr(e),
-            _ => {}
-        }
-    }
-
     /// A call's name: the span's start, as long as the name is written there.
     fn name_at(&self, span: Span, name: &str) -> Option<Span> {
         let end = span.start + name.len() as u32;
@@ -166,52 +123,24 @@ impl Walk<'_> {
             .then(|| Span::new(span.start, end))
     }
 
-    fn expr(&mut self, e: &Expr) {
+    /// Records an expression's type and the name it uses, if any.
+    fn record(&mut self, e: &Expr) {
         if !matches!(e.ty, Type::Void) {
             self.index.types.push((e.span, e.ty.clone()));
         }
         let f = self.func;
-        let uses = &mut self.index.uses;
-        match &e.kind {
-            ExprKind::Local(l) => uses.push((e.span, Sym::Local(f, *l))),
-            ExprKind::Param(p) => uses.push((e.span, Sym::Param(f, *p))),
-            ExprKind::Global(g) => uses.push((e.span, Sym::Global(*g))),
-            ExprKind::BuiltinVar(v) => uses.push((e.span, Sym::BuiltinVar(*v))),
-            _ => {}
-        }
-        match &e.kind {
-            ExprKind::Call(id, args) => {
-                if let Some(name) = self.call_name(e.span) {
-                    self.index.uses.push((name, Sym::Func(*id)));
-                }
-                args.iter().for_each(|a| self.expr(a));
-            }
-            ExprKind::Builtin(op, args) => {
-                if let Some(name) = self.name_at(e.span, op.name()) {
-                    self.index.uses.push((name, Sym::BuiltinFn(*op)));
-                }
-                args.iter().for_each(|a| self.expr(a));
-            }
-            ExprKind::Construct(args) => args.iter().for_each(|a| self.expr(a)),
-            ExprKind::Unary(_, a)
-            | ExprKind::Member(a, _)
-            | ExprKind::Swizzle(a, _)
-            | ExprKind::IncDec(_, _, a) => self.expr(a),
-            ExprKind::Binary(_, a, b)
-            | ExprKind::Assign(_, a, b)
-            | ExprKind::Comma(a, b)
-            | ExprKind::Index(a, b) => {
-                self.expr(a);
-                self.expr(b);
-            }
-            ExprKind::Select(c, a, b) => {
-                self.expr(c);
-                self.expr(a);
-                self.expr(b);
-            }
-            ExprKind::BlockMember(_, Some(i), _) => self.expr(i),
-            _ => {}
-        }
+        let sym = match &e.kind {
+            ExprKind::Local(l) => Some((e.span, Sym::Local(f, *l))),
+            ExprKind::Param(p) => Some((e.span, Sym::Param(f, *p))),
+            ExprKind::Global(g) => Some((e.span, Sym::Global(*g))),
+            ExprKind::BuiltinVar(v) => Some((e.span, Sym::BuiltinVar(*v))),
+            ExprKind::Call(id, _) => self.call_name(e.span).map(|n| (n, Sym::Func(*id))),
+            ExprKind::Builtin(op, _) => self
+                .name_at(e.span, op.name())
+                .map(|n| (n, Sym::BuiltinFn(*op))),
+            _ => None,
+        };
+        self.index.uses.extend(sym);
     }
 
     /// The name of a user function's call: the identifier at the call's start.
@@ -221,5 +150,12 @@ impl Walk<'_> {
             .find(|c: char| !(c.is_ascii_alphanumeric() || c == '_'))
             .unwrap_or(text.len());
         (len > 0).then(|| Span::new(span.start, span.start + len as u32))
+    }
+}
+
+impl Visitor for Walk<'_> {
+    fn visit_expr(&mut self, e: &Expr) {
+        self.record(e);
+        visit::walk_expr(self, e);
     }
 }

@@ -3,6 +3,8 @@
 //! This is what the checker produces and what lowering (to naga IR), reflection and linking
 //! read. Spans still point into the original text.
 
+pub mod visit;
+
 use std::sync::Arc;
 
 pub use crate::ast::{BinaryOp, Interpolation};
