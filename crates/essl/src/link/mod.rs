@@ -170,78 +170,24 @@ pub fn location_count(ty: &Type, structs: &[StructDef]) -> u32 {
 
 /// Which globals any function of the module references, reachable or not (static use).
 pub(super) fn static_uses(m: &Module) -> Vec<bool> {
-    use crate::hir::{Cond, Expr, ExprKind, Stmt, StmtKind};
-    fn e(x: &Expr, out: &mut Vec<bool>) {
-        match &x.kind {
-            ExprKind::Global(g) => out[*g] = true,
-            ExprKind::Unary(_, a)
-            | ExprKind::IncDec(_, _, a)
-            | ExprKind::Member(a, _)
-            | ExprKind::Swizzle(a, _) => e(a, out),
-            ExprKind::Binary(_, a, b)
-            | ExprKind::Assign(_, a, b)
-            | ExprKind::Comma(a, b)
-            | ExprKind::Index(a, b) => {
-                e(a, out);
-                e(b, out);
+    use crate::hir::visit::{self, Visitor};
+    use crate::hir::{Expr, ExprKind};
+    struct Uses(Vec<bool>);
+    impl Visitor for Uses {
+        fn visit_expr(&mut self, e: &Expr) {
+            if let ExprKind::Global(g) = e.kind {
+                self.0[g] = true;
             }
-            ExprKind::Select(c, a, b) => {
-                e(c, out);
-                e(a, out);
-                e(b, out);
-            }
-            ExprKind::Call(_, args) | ExprKind::Builtin(_, args) | ExprKind::Construct(args) => {
-                args.iter().for_each(|a| e(a, out))
-            }
-            ExprKind::BlockMember(_, Some(i), _) => e(i, out),
-            _ => {}
+            visit::walk_expr(self, e);
         }
     }
-    fn s(x: &[Stmt], out: &mut Vec<bool>) {
-        for st in x {
-            match &st.kind {
-                StmtKind::Expr(x) | StmtKind::Local(_, Some(x)) | StmtKind::Return(Some(x)) => {
-                    e(x, out)
-                }
-                StmtKind::Block(b) => s(b, out),
-                StmtKind::If(c, a, b) => {
-                    e(c, out);
-                    s(a, out);
-                    s(b, out);
-                }
-                StmtKind::Loop {
-                    init,
-                    cond,
-                    step,
-                    body,
-                    ..
-                } => {
-                    s(init, out);
-                    if let Some(c) = cond {
-                        match &**c {
-                            Cond::Expr(x) | Cond::Decl(_, x) => e(x, out),
-                        }
-                    }
-                    if let Some(x) = step {
-                        e(x, out);
-                    }
-                    s(body, out);
-                }
-                StmtKind::Switch(sel, cases) => {
-                    e(sel, out);
-                    cases.iter().for_each(|c| s(&c.body, out));
-                }
-                _ => {}
-            }
-        }
-    }
-    let mut out = vec![false; m.globals.len()];
+    let mut uses = Uses(vec![false; m.globals.len()]);
     for f in &m.functions {
-        s(&f.body, &mut out);
+        uses.visit_stmts(&f.body);
     }
     // Dead code folded away by the checker (a constant `if (false)`) is still static use:
     // the checker keeps those statements, so this sees them.
-    out
+    uses.0
 }
 
 struct Linker<'a> {
