@@ -1,8 +1,8 @@
-//! One document checked: compiled, then linted with the settings of its nearest `essl.toml`,
-//! and indexed when a request needs it; and the program it forms with its `NAME.vert` / `NAME.frag` partner.
+//! One shader checked: the front end, then lowering and the lints with the settings of its
+//! nearest `essl.toml`, and indexed when a request needs it; and the program it forms with its
+//! `NAME.vert` / `NAME.frag` partner.
 
 use std::path::{Path, PathBuf};
-
 use std::sync::OnceLock;
 
 use essl::diagnostic::Diagnostic;
@@ -105,7 +105,7 @@ impl Analysis {
     /// The front end's diagnostics and the lint findings, in source order.
     pub fn diagnostics(&self) -> Vec<&Diagnostic> {
         let mut all: Vec<&Diagnostic> = self.shader.diagnostics.iter().chain(&self.lints).collect();
-        all.sort_by_key(|d| (d.span.start, d.span.end));
+        all.sort_by(|a, b| essl::diagnostic::order(a, b));
         all
     }
 
@@ -119,14 +119,8 @@ impl Analysis {
 /// `d` with every span moved by `moved`, or `None` when one of them cannot be.
 fn move_diagnostic(d: &Diagnostic, moved: &impl Fn(Span) -> Option<Span>) -> Option<Diagnostic> {
     let mut d = d.clone();
-    d.span = moved(d.span)?;
-    for l in &mut d.secondary {
-        l.span = moved(l.span)?;
-    }
-    if let Some(fix) = &mut d.fix {
-        for e in &mut fix.edits {
-            e.span = moved(e.span)?;
-        }
+    for s in d.spans_mut() {
+        *s = moved(*s)?;
     }
     Some(d)
 }

@@ -175,6 +175,19 @@ pub fn diagnostic(
     }
 }
 
+/// A link diagnostic of a program, on the shader `file` it points into: as [`diagnostic`], its
+/// message starting `program: `.
+pub fn link_diagnostic(
+    place: Place<'_>,
+    file: &SourceFile,
+    uri: &Uri,
+    d: &Diagnostic,
+) -> lsp_types::Diagnostic {
+    let mut converted = diagnostic(place, file, uri, d);
+    converted.message = format!("program: {}", converted.message);
+    converted
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -147,11 +147,13 @@ impl Doc {
                 } else {
                     v
                 };
-                let a = &self.parts[i].analysis;
-                let mut converted =
-                    convert::diagnostic(self.place(i), &a.shader.file, uri, &d.diagnostic);
-                converted.message = format!("program: {}", converted.message);
-                out.push(converted);
+                let file = &self.parts[i].analysis.shader.file;
+                out.push(convert::link_diagnostic(
+                    self.place(i),
+                    file,
+                    uri,
+                    &d.diagnostic,
+                ));
             }
         }
         out

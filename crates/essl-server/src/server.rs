@@ -6,9 +6,9 @@
 //! found it: once no message is waiting, changed documents go through the front end and their
 //! diagnostics are published (with the previous text's lint findings that lie outside the
 //! edit); then, if still no message is waiting, each is lowered to naga IR and linted, and its
-//! diagnostics are published again. Changes that
-//! arrive together are checked once (the last text wins), and a request first finishes every
-//! pending check, so that it is answered from the text it was sent for.
+//! diagnostics are published again. Changes that arrive together are checked once (the last
+//! text wins), and a request first finishes every pending check, so that it is answered from
+//! the text it was sent for.
 
 use lsp_server::{Connection, Message, Notification, Request, RequestId, Response};
 use lsp_types::notification::{self, Notification as _};

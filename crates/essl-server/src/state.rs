@@ -147,15 +147,13 @@ impl State {
         let Some((other, theirs)) = self.partner(uri) else {
             return out;
         };
+        let their_place = Place::whole(&theirs.shader.file);
         let mut theirs_params = params(
             &other,
             theirs
                 .diagnostics()
                 .into_iter()
-                .map(|d| {
-                    let place = Place::whole(&theirs.shader.file);
-                    convert::diagnostic(place, &theirs.shader.file, &other, d)
-                })
+                .map(|d| convert::diagnostic(their_place, &theirs.shader.file, &other, d))
                 .collect(),
         );
         let (vs, fs) = match mine.shader.stage {
@@ -169,10 +167,9 @@ impl State {
                 } else {
                     (&mut out[0], &mine)
                 };
-                let u = target.uri.clone();
-                let place = Place::whole(&a.shader.file);
-                let mut converted = convert::diagnostic(place, &a.shader.file, &u, &d.diagnostic);
-                converted.message = format!("program: {}", converted.message);
+                let (u, file) = (target.uri.clone(), &a.shader.file);
+                let converted =
+                    convert::link_diagnostic(Place::whole(file), file, &u, &d.diagnostic);
                 target.diagnostics.push(converted);
             }
         }

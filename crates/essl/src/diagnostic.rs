@@ -92,6 +92,18 @@ pub struct Diagnostic {
 }
 
 impl Diagnostic {
+    /// Every span the diagnostic holds: the primary one, the secondary labels', and its fix's
+    /// edits (for moving it onto another text).
+    pub fn spans_mut(&mut self) -> impl Iterator<Item = &mut Span> {
+        let edits = self
+            .fix
+            .iter_mut()
+            .flat_map(|f| f.edits.iter_mut().map(|e| &mut e.span));
+        std::iter::once(&mut self.span)
+            .chain(self.secondary.iter_mut().map(|l| &mut l.span))
+            .chain(edits)
+    }
+
     /// A new error of the front end.
     pub fn error(code: Code, message: impl Into<String>, span: Span) -> Diagnostic {
         Diagnostic::new(Severity::Error, code.as_str(), message, span)
@@ -331,13 +343,16 @@ pub fn apply_fixes(
 
 /// Sorts diagnostics by position, then severity, as they are shown.
 pub fn sort(diagnostics: &mut [Diagnostic]) {
-    diagnostics.sort_by(|a, b| {
-        (a.span.start, a.span.end, std::cmp::Reverse(a.severity)).cmp(&(
-            b.span.start,
-            b.span.end,
-            std::cmp::Reverse(b.severity),
-        ))
-    });
+    diagnostics.sort_by(order);
+}
+
+/// The order [`sort`] puts diagnostics in: by span, the more severe first at one span.
+pub fn order(a: &Diagnostic, b: &Diagnostic) -> std::cmp::Ordering {
+    (a.span.start, a.span.end, std::cmp::Reverse(a.severity)).cmp(&(
+        b.span.start,
+        b.span.end,
+        std::cmp::Reverse(b.severity),
+    ))
 }
 
 #[cfg(test)]

@@ -2,24 +2,12 @@
 //! primary one, the secondary labels', the fix's edits) shifted by the shader's offset there.
 
 use essl::diagnostic::Diagnostic;
-use essl::source::Span;
 
 /// Shifts every span of `diagnostics` by `by` bytes.
 pub(crate) fn relocate(diagnostics: &mut [Diagnostic], by: u32) {
-    let shift = |s: &mut Span| {
+    for s in diagnostics.iter_mut().flat_map(Diagnostic::spans_mut) {
         s.start += by;
         s.end += by;
-    };
-    for d in diagnostics {
-        shift(&mut d.span);
-        for label in &mut d.secondary {
-            shift(&mut label.span);
-        }
-        if let Some(fix) = &mut d.fix {
-            for edit in &mut fix.edits {
-                shift(&mut edit.span);
-            }
-        }
     }
 }
 
@@ -28,6 +16,7 @@ mod tests {
     use super::*;
     use essl::diagnostic::Fix;
     use essl::diagnostic_code::Code;
+    use essl::source::Span;
 
     #[test]
     fn every_span_moves() {
