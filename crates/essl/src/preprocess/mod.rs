@@ -307,6 +307,8 @@ pub const MAX_EXPANDED_TOKENS: usize = 500_000;
 impl<'a> Pp<'a> {
     fn new(file: &'a SourceFile, toks: Vec<PpToken>, options: &'a PreprocessOptions) -> Pp<'a> {
         let budget = MAX_EXPANDED_TOKENS + 4 * toks.len();
+        // Most shaders expand to about as many tokens as they have.
+        let out = Vec::with_capacity(toks.len());
         Pp {
             file,
             options,
@@ -318,7 +320,7 @@ impl<'a> Pp<'a> {
             macros: HashMap::default(),
             conds: Vec::new(),
             diags: Vec::new(),
-            out: Vec::new(),
+            out,
             version: Version::Es100,
             version_span: None,
             declared_version: None,

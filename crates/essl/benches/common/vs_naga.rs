@@ -1,0 +1,117 @@
+//! The shared body of the `vs_naga` benches: the shader set both front ends accept, and the
+//! two timed loops.
+
+use std::path::{Path, PathBuf};
+
+use criterion::{Criterion, Throughput};
+use essl::source::SourceFile;
+use essl::Stage;
+
+fn naga_stage(stage: Stage) -> naga::ShaderStage {
+    match stage {
+        Stage::Vertex => naga::ShaderStage::Vertex,
+        Stage::Fragment => naga::ShaderStage::Fragment,
+    }
+}
+
+/// naga's parse + validate; a panic inside naga's front end (it has some on these corpora)
+/// counts as a rejection.
+fn naga_compile(src: &str, stage: Stage) -> bool {
+    std::panic::catch_unwind(|| naga_compile_here(src, stage)).unwrap_or(false)
+}
+
+fn naga_compile_here(src: &str, stage: Stage) -> bool {
+    let mut frontend = naga::front::glsl::Frontend::default();
+    let options = naga::front::glsl::Options::from(naga_stage(stage));
+    match frontend.parse(&options, src) {
+        Ok(module) => naga::valid::Validator::new(
+            naga::valid::ValidationFlags::all(),
+            naga::valid::Capabilities::default(),
+        )
+        .validate(&module)
+        .is_ok(),
+        Err(_) => false,
+    }
+}
+
+/// (essl text, naga text, stage) for every shader of the cases both accept.
+fn shaders() -> Vec<(String, String, Stage)> {
+    let corpora = std::env::var_os("ESSL_CORPORA")
+        .map(PathBuf::from)
+        .unwrap_or_else(|| Path::new(env!("CARGO_MANIFEST_DIR")).join("../../../shared/corpora"));
+    let Ok(text) = std::fs::read_to_string(corpora.join("webgl_conformance_es300.jsonl")) else {
+        eprintln!("no corpus at {}: nothing to compare", corpora.display());
+        return Vec::new();
+    };
+    let mut out = Vec::new();
+    let mut cases = 0;
+    // naga's panics on some cases would print a backtrace each.
+    let hook = std::panic::take_hook();
+    std::panic::set_hook(Box::new(|_| {}));
+    for case in text
+        .lines()
+        .filter_map(|l| serde_json::from_str::<serde_json::Value>(l).ok())
+        .filter(|c| c["outcome"] == "must_pass")
+    {
+        let pair: Vec<(String, String, Stage)> = [
+            ("vertex_source", Stage::Vertex),
+            ("fragment_source", Stage::Fragment),
+        ]
+        .iter()
+        .filter_map(|(key, stage)| {
+            let src = case[*key].as_str()?.to_string();
+            let rewritten = src.replacen("#version 300 es", "#version 450 core", 1);
+            Some((src, rewritten, *stage))
+        })
+        .collect();
+        let both = pair.iter().all(|(src, rewritten, stage)| {
+            naga_compile(rewritten, *stage)
+                && essl::compile(
+                    SourceFile::new("s", src.as_str()),
+                    *stage,
+                    &Default::default(),
+                )
+                .ok()
+        });
+        if both && !pair.is_empty() {
+            cases += 1;
+            out.extend(pair);
+        }
+    }
+    std::panic::set_hook(hook);
+    eprintln!(
+        "{cases} cases, {} shaders that both front ends accept",
+        out.len()
+    );
+    out
+}
+
+/// Both sides over the whole set, in one criterion group.
+pub fn bench(c: &mut Criterion) {
+    let set = shaders();
+    if set.is_empty() {
+        return;
+    }
+    let mut group = c.benchmark_group("front end");
+    group.throughput(Throughput::Elements(set.len() as u64));
+    group.bench_function("essl compile (through naga validation)", |b| {
+        b.iter(|| {
+            for (src, _, stage) in &set {
+                let shader = essl::compile(
+                    SourceFile::new("s", src.as_str()),
+                    *stage,
+                    &Default::default(),
+                );
+                std::hint::black_box(shader.ok());
+            }
+        })
+    });
+    group.bench_function("naga glsl-in parse + validate", |b| {
+        b.iter(|| {
+            for (_, rewritten, stage) in &set {
+                std::hint::black_box(naga_compile(rewritten, *stage));
+            }
+        })
+    });
+    group.finish();
+}
