@@ -17,12 +17,8 @@ fn value_cases_pass_from_ir_and_from_wgsl() {
     assert_eq!(cases.len(), 4113, "executed cases");
     let sample: Vec<_> = cases.iter().step_by(20).collect();
     for via_wgsl in [false, true] {
-        let mut runner = match Runner::with(via_wgsl) {
-            Ok(r) => r,
-            Err(e) => {
-                essl_testdata::adapter_missing(&e);
-                return;
-            }
+        let Some(mut runner) = essl_testdata::with_adapter(|| Runner::with(via_wgsl)) else {
+            return;
         };
         let failed: Vec<_> = sample
             .iter()

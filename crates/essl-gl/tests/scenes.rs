@@ -26,16 +26,7 @@ fn scenes_dir() -> Option<PathBuf> {
 
 /// Whether a Vulkan adapter exists (with `ESSL_REQUIRE_ADAPTER=1`, its absence fails the test).
 fn adapter() -> bool {
-    if std::env::var_os("XDG_RUNTIME_DIR").is_none() {
-        std::env::set_var("XDG_RUNTIME_DIR", std::env::temp_dir());
-    }
-    match essl_gl::Context::new(1, 1) {
-        Ok(_) => true,
-        Err(e) => {
-            essl_testdata::adapter_missing(&e);
-            false
-        }
-    }
+    essl_testdata::with_adapter(|| essl_gl::Context::new(1, 1)).is_some()
 }
 
 fn local_dir() -> PathBuf {

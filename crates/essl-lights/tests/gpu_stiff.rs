@@ -16,16 +16,7 @@ use essl_lights::{bridge, CookieBinding, CookieImage, UniformData, UniformSettin
 use essl_scene::SceneFile;
 
 fn adapter() -> Option<String> {
-    if std::env::var_os("XDG_RUNTIME_DIR").is_none() {
-        std::env::set_var("XDG_RUNTIME_DIR", std::env::temp_dir());
-    }
-    match gpu::adapter() {
-        Ok((name, _)) => Some(name),
-        Err(e) => {
-            essl_testdata::adapter_missing(&e);
-            None
-        }
-    }
+    essl_testdata::with_adapter(gpu::adapter).map(|(name, _)| name)
 }
 
 /// A full-viewport quad whose fragment shader is NaN in the left quarter, +∞ in the next,

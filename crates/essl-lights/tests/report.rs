@@ -11,16 +11,7 @@ use essl_lights::report::{self, Group, ProgramKind, Settings, SEED_SCENES};
 use essl_lights::*;
 
 fn adapter() -> bool {
-    if std::env::var_os("XDG_RUNTIME_DIR").is_none() {
-        std::env::set_var("XDG_RUNTIME_DIR", std::env::temp_dir());
-    }
-    match gpu::adapter() {
-        Ok(_) => true,
-        Err(e) => {
-            essl_testdata::adapter_missing(&e);
-            false
-        }
-    }
+    essl_testdata::with_adapter(gpu::adapter).is_some()
 }
 
 fn shared_scenes() -> Option<PathBuf> {

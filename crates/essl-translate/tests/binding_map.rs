@@ -132,13 +132,9 @@ fn draw(wgsl: [&str; 2], map: &BindingMap, misplace: Option<&str>) -> Option<[u8
     let mut desc = wgpu::InstanceDescriptor::new_without_display_handle();
     desc.backends = wgpu::Backends::VULKAN;
     let instance = wgpu::Instance::new(desc);
-    let adapter = match pollster::block_on(instance.request_adapter(&Default::default())) {
-        Ok(a) => a,
-        Err(e) => {
-            essl_testdata::adapter_missing(&e);
-            return None;
-        }
-    };
+    let adapter = essl_testdata::with_adapter(|| {
+        pollster::block_on(instance.request_adapter(&Default::default()))
+    })?;
     let (device, queue) =
         pollster::block_on(adapter.request_device(&Default::default())).expect("a device");
     let module = |text: &str, stage| {

@@ -9,13 +9,7 @@ use essl_gl::Context;
 use essl_scene::Scene;
 
 fn draw(scene: &Scene, via_wgsl: bool) -> Option<Vec<u8>> {
-    let mut ctx = match Context::new(scene.width(), scene.height()) {
-        Ok(c) => c,
-        Err(e) => {
-            essl_testdata::adapter_missing(&e);
-            return None;
-        }
-    };
+    let mut ctx = essl_testdata::with_adapter(|| Context::new(scene.width(), scene.height()))?;
     if via_wgsl {
         let options = essl_translate::Options::default();
         ctx.set_program_filter(Some(Box::new(move |layout| {

@@ -6,16 +6,7 @@ use std::path::{Path, PathBuf};
 /// Whether essl-gl can make a context; without one, prints why (or panics when
 /// `ESSL_REQUIRE_ADAPTER=1`).
 pub fn adapter() -> bool {
-    if std::env::var_os("XDG_RUNTIME_DIR").is_none() {
-        std::env::set_var("XDG_RUNTIME_DIR", std::env::temp_dir());
-    }
-    match essl_gl::Context::new(1, 1) {
-        Ok(_) => true,
-        Err(e) => {
-            essl_testdata::adapter_missing(&e);
-            false
-        }
-    }
+    essl_testdata::with_adapter(|| essl_gl::Context::new(1, 1)).is_some()
 }
 
 /// The `*.json` scripts of `dir`, sorted.

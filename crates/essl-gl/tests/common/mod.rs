@@ -18,13 +18,7 @@ pub fn context(w: u32, h: u32) -> Option<Context> {
 
 /// A context with the given attributes, or `None` (with the skip message) without an adapter.
 pub fn context_with(w: u32, h: u32, attributes: essl_gl::ContextAttributes) -> Option<Context> {
-    match Context::with_attributes(w, h, attributes) {
-        Ok(ctx) => Some(ctx),
-        Err(e) => {
-            essl_testdata::adapter_missing(&e);
-            None
-        }
-    }
+    essl_testdata::with_adapter(|| Context::with_attributes(w, h, attributes))
 }
 
 fn validate(module: &naga::Module) -> naga::valid::ModuleInfo {
