@@ -134,6 +134,14 @@ impl Client {
         );
     }
 
+    /// Replaces the whole text of `uri`, as version `version`.
+    fn change(&mut self, uri: &str, version: i32, text: &str) {
+        self.notify(
+            "textDocument/didChange",
+            json!({"textDocument": {"uri": uri, "version": version}, "contentChanges": [{"text": text}]}),
+        );
+    }
+
     fn at(&mut self, method: &str, uri: &str, line: u32, character: u32) -> Value {
         let mut params = json!({
             "textDocument": {"uri": uri},
@@ -199,10 +207,7 @@ fn diagnostics_and_fixes() {
     // Fixed: the lint finding (`pow` of a base that may be negative) remains, with an
     // "allow this rule here" action that comments the line before.
     let fixed = BROKEN.replace("u_light\n", "u_light;\n");
-    c.notify(
-        "textDocument/didChange",
-        json!({"textDocument": {"uri": a, "version": 2}, "contentChanges": [{"text": fixed}]}),
-    );
+    c.change(&a, 2, &fixed);
     let ds = c.diagnostics(&a);
     let pow = ds
         .iter()
@@ -337,18 +342,12 @@ fn a_change_publishes_the_front_end_first_and_keeps_lints_outside_the_edit() {
         "out vec4 color;\n",
         "out vec4 color;\nconst float k = 2.0;\n",
     );
-    c.notify(
-        "textDocument/didChange",
-        json!({"textDocument": {"uri": a, "version": 2}, "contentChanges": [{"text": moved}]}),
-    );
+    c.change(&a, 2, &moved);
     assert_eq!(pow_line(&c.next_diagnostics(&a)), [json!(9)]);
     assert_eq!(pow_line(&c.diagnostics(&a)), [json!(9)]);
     // An edit of the finding's own line drops it until the lints have run on the new text.
     let edited = moved.replace("pow(d, 2.5)", "pow(0.5 - d * 2.0, 2.5)");
-    c.notify(
-        "textDocument/didChange",
-        json!({"textDocument": {"uri": a, "version": 3}, "contentChanges": [{"text": edited}]}),
-    );
+    c.change(&a, 3, &edited);
     assert!(pow_line(&c.next_diagnostics(&a)).is_empty());
     assert_eq!(pow_line(&c.diagnostics(&a)), [json!(9)]);
     // A syntax error: the front end's error alone, no lint findings carried.
@@ -356,10 +355,7 @@ fn a_change_publishes_the_front_end_first_and_keeps_lints_outside_the_edit() {
         "vec3 n = normalize(v_normal);",
         "vec3 n = normalize(v_normal)",
     );
-    c.notify(
-        "textDocument/didChange",
-        json!({"textDocument": {"uri": a, "version": 4}, "contentChanges": [{"text": broken}]}),
-    );
+    c.change(&a, 4, &broken);
     let ds = c.diagnostics(&a);
     assert_eq!(ds.len(), 1, "{ds:#?}");
     assert_eq!(ds[0]["code"], "missing-semicolon");
@@ -407,10 +403,7 @@ void main() {\n\
     assert_eq!(edit["range"]["start"], json!({"line": 13, "character": 13}));
     // Fixed: the fragment shader reads `v_uv`, which the vertex shader does not write.
     let fixed = html.replace("float k = 1.0\n", "float k = 1.0;\n");
-    c.notify(
-        "textDocument/didChange",
-        json!({"textDocument": {"uri": page, "version": 2}, "contentChanges": [{"text": fixed}]}),
-    );
+    c.change(&page, 2, &fixed);
     let ds = c.diagnostics(&page);
     let link = ds
         .iter()
