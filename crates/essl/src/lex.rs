@@ -314,13 +314,14 @@ pub fn lex(file: &SourceFile) -> Lexed {
             c if c.is_ascii_digit()
                 || (c == '.' && cur.peek().is_some_and(|d| d.is_ascii_digit())) =>
             {
-                let s = number(&mut cur, c);
+                number(&mut cur, c);
+                let text = names.text(text, start, cur.pos);
                 push(
                     &mut out,
                     PpKind::Number,
                     start,
                     cur.pos,
-                    Arc::from(s),
+                    text,
                     &mut space_before,
                 );
             }
@@ -388,26 +389,23 @@ fn block_comment(
     }
 }
 
-/// A preprocessing number starting with `first`: digits, letters, `_`, `.`, and a sign after
-/// a decimal exponent's `e`.
-fn number(cur: &mut Cursor<'_>, first: char) -> String {
-    let mut s = String::new();
-    s.push(first);
+/// Moves past the rest of a preprocessing number that starts with `first`: digits, letters,
+/// `_`, `.`, and a sign after a decimal exponent's `e`.
+fn number(cur: &mut Cursor<'_>, first: char) {
     let mut prev = first;
+    let mut second = true;
+    let mut hex = false;
     while let Some(c) = cur.peek() {
-        let exponent_sign = (c == '+' || c == '-')
-            && (prev == 'e' || prev == 'E')
-            && !s.starts_with("0x")
-            && !s.starts_with("0X");
+        let exponent_sign = (c == '+' || c == '-') && (prev == 'e' || prev == 'E') && !hex;
         if c.is_ascii_alphanumeric() || c == '_' || c == '.' || exponent_sign {
-            s.push(c);
+            hex |= second && first == '0' && (c == 'x' || c == 'X');
+            second = false;
             cur.bump();
             prev = c;
         } else {
             break;
         }
     }
-    s
 }
 
 /// Ends the token list: a line break if the last line has none, then the end of file.

@@ -400,7 +400,7 @@ pub fn number(text: &str, span: Span, diagnostics: &mut Vec<Diagnostic>) -> Tok 
         );
         Tok::Error
     };
-    let lower = text.to_ascii_lowercase();
+    let lower = lowercase(text);
     if let Some(hex) = lower.strip_prefix("0x") {
         let (digits, unsigned) = match hex.strip_suffix('u') {
             Some(d) => (d, true),
@@ -441,7 +441,7 @@ pub fn number(text: &str, span: Span, diagnostics: &mut Vec<Diagnostic>) -> Tok 
     }
     let (digits, unsigned) = match lower.strip_suffix('u') {
         Some(d) => (d, true),
-        None => (lower.as_str(), false),
+        None => (&*lower, false),
     };
     if digits.is_empty() || !digits.bytes().all(|b| b.is_ascii_digit()) {
         return bad(
@@ -476,10 +476,19 @@ pub fn number(text: &str, span: Span, diagnostics: &mut Vec<Diagnostic>) -> Tok 
     int_value(digits, 10, unsigned, text, span, diagnostics)
 }
 
+/// A number's text in lower case, copied only when it has an upper-case letter (most have none).
+fn lowercase(text: &str) -> std::borrow::Cow<'_, str> {
+    if text.bytes().any(|b| b.is_ascii_uppercase()) {
+        text.to_ascii_lowercase().into()
+    } else {
+        text.into()
+    }
+}
+
 /// Parses a preprocessing number as GLSL ES 1.00 does: no `u` or `f` suffix, and an integer past
 /// 32 bits is a warning (ANGLE's `int_constant`) that leaves the largest value.
 fn number_es100(text: &str, span: Span, diagnostics: &mut Vec<Diagnostic>) -> Tok {
-    let lower = text.to_ascii_lowercase();
+    let lower = lowercase(text);
     let hex = lower.starts_with("0x");
     let suffix = if !hex && lower.ends_with('u') {
         Some(("u", "unsigned integers"))
