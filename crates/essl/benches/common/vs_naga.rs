@@ -86,7 +86,43 @@ fn shaders() -> Vec<(String, String, Stage)> {
     out
 }
 
-/// Both sides over the whole set, in one criterion group.
+fn essl_pass(set: &[(String, String, Stage)]) {
+    for (src, _, stage) in set {
+        let shader = essl::compile(
+            SourceFile::new("s", src.as_str()),
+            *stage,
+            &Default::default(),
+        );
+        std::hint::black_box(shader.ok());
+    }
+}
+
+fn naga_pass(set: &[(String, String, Stage)]) {
+    for (_, rewritten, stage) in set {
+        std::hint::black_box(naga_compile(rewritten, *stage));
+    }
+}
+
+/// essl's time over naga's, from passes that alternate (essl, naga, essl, …): the median of
+/// the per-round ratios, so that a change of the machine's load between criterion's two
+/// measurements does not move the ratio.
+fn interleaved_ratio(set: &[(String, String, Stage)], rounds: usize) -> f64 {
+    use std::time::Instant;
+    let mut ratios: Vec<f64> = (0..rounds)
+        .map(|_| {
+            let t = Instant::now();
+            essl_pass(set);
+            let essl = t.elapsed().as_secs_f64();
+            let t = Instant::now();
+            naga_pass(set);
+            essl / t.elapsed().as_secs_f64()
+        })
+        .collect();
+    ratios.sort_by(f64::total_cmp);
+    ratios[rounds / 2]
+}
+
+/// Both sides over the whole set, in one criterion group, then their interleaved ratio.
 pub fn bench(c: &mut Criterion) {
     let set = shaders();
     if set.is_empty() {
@@ -95,23 +131,15 @@ pub fn bench(c: &mut Criterion) {
     let mut group = c.benchmark_group("front end");
     group.throughput(Throughput::Elements(set.len() as u64));
     group.bench_function("essl compile (through naga validation)", |b| {
-        b.iter(|| {
-            for (src, _, stage) in &set {
-                let shader = essl::compile(
-                    SourceFile::new("s", src.as_str()),
-                    *stage,
-                    &Default::default(),
-                );
-                std::hint::black_box(shader.ok());
-            }
-        })
+        b.iter(|| essl_pass(&set))
     });
     group.bench_function("naga glsl-in parse + validate", |b| {
-        b.iter(|| {
-            for (_, rewritten, stage) in &set {
-                std::hint::black_box(naga_compile(rewritten, *stage));
-            }
-        })
+        b.iter(|| naga_pass(&set))
     });
     group.finish();
+    const ROUNDS: usize = 201;
+    eprintln!(
+        "essl / naga, interleaved, median of {ROUNDS} rounds: {:.3}",
+        interleaved_ratio(&set, ROUNDS)
+    );
 }
