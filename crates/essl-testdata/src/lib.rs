@@ -116,16 +116,13 @@ pub fn corpus_file(name: &str) -> Option<PathBuf> {
     None
 }
 
-/// Makes a GPU object with `make` (a context, an adapter, a runner), after pointing an unset
-/// `XDG_RUNTIME_DIR` at the temporary directory (Vulkan loaders ask for it); when `make` fails,
-/// `None` after [`adapter_missing`]'s skip message.
+/// Makes a GPU object with `make` (a context, an adapter, a runner); when `make` fails, `None`
+/// after [`adapter_missing`]'s skip message. (essl-gl's `Context` gives the Vulkan loader an
+/// `XDG_RUNTIME_DIR` of its own where the environment has none.)
 ///
 /// # Panics
 /// When `make` fails and `ESSL_REQUIRE_ADAPTER=1`.
 pub fn with_adapter<T, E: std::fmt::Display>(make: impl FnOnce() -> Result<T, E>) -> Option<T> {
-    if std::env::var_os("XDG_RUNTIME_DIR").is_none() {
-        std::env::set_var("XDG_RUNTIME_DIR", std::env::temp_dir());
-    }
     match make() {
         Ok(made) => Some(made),
         Err(e) => {
