@@ -1,8 +1,6 @@
 //! The shared body of the `vs_naga` benches: the shader set both front ends accept, and the
 //! two timed loops.
 
-use std::path::{Path, PathBuf};
-
 use criterion::{Criterion, Throughput};
 use essl::source::SourceFile;
 use essl::Stage;
@@ -36,13 +34,10 @@ fn naga_compile_here(src: &str, stage: Stage) -> bool {
 
 /// (essl text, naga text, stage) for every shader of the cases both accept.
 fn shaders() -> Vec<(String, String, Stage)> {
-    let corpora = std::env::var_os("ESSL_CORPORA")
-        .map(PathBuf::from)
-        .unwrap_or_else(|| Path::new(env!("CARGO_MANIFEST_DIR")).join("../../../shared/corpora"));
-    let Ok(text) = std::fs::read_to_string(corpora.join("webgl_conformance_es300.jsonl")) else {
-        eprintln!("no corpus at {}: nothing to compare", corpora.display());
+    let Some(path) = essl_testdata::corpus_file("webgl_conformance_es300.jsonl") else {
         return Vec::new();
     };
+    let text = std::fs::read_to_string(&path).expect("the corpus file reads");
     let mut out = Vec::new();
     let mut cases = 0;
     // naga's panics on some cases would print a backtrace each.
