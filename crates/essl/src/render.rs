@@ -9,7 +9,6 @@ use std::ops::Range;
 use codespan_reporting::diagnostic as cs;
 use codespan_reporting::files::{self, Files};
 use codespan_reporting::term::{self, termcolor::WriteColor};
-use serde_json::{json, Value};
 
 use crate::diagnostic::{Applicability, Diagnostic, Severity};
 use crate::source::{SourceFile, Span};
@@ -165,51 +164,111 @@ fn position(file: &SourceFile, offset: u32) -> (u32, u32) {
     (lc.line, lc.column)
 }
 
-/// A diagnostic as JSON:
+/// A diagnostic as JSON, for `serde_json` to write:
 /// `{"severity","code","message","line","column","end_line","end_column","help"}` (1-based,
 /// columns in characters, `help` null when there is none) plus
 /// `"fix": {"message","applicability":"certain"|"suggested","edits":[{"line","column",
-/// "end_line","end_column","replacement"}]}` when there is a fix.
-pub fn to_json(file: &SourceFile, d: &Diagnostic) -> Value {
-    let (line, column) = position(file, d.span.start);
-    let (end_line, end_column) = position(file, d.span.end);
-    let mut v = json!({
-        "severity": d.severity.as_str(),
-        "code": d.code,
-        "message": d.message,
-        "line": line,
-        "column": column,
-        "end_line": end_line,
-        "end_column": end_column,
-        "help": d.help_text(file),
-    });
-    if let Some(fix) = &d.fix {
-        let edits: Vec<Value> = fix
-            .edits
-            .iter()
-            .map(|e| {
-                let (line, column) = position(file, e.span.start);
-                let (end_line, end_column) = position(file, e.span.end);
-                json!({
-                    "line": line,
-                    "column": column,
-                    "end_line": end_line,
-                    "end_column": end_column,
-                    "replacement": e.replacement,
+/// "end_line","end_column","replacement"}]}` when there is a fix, and `"file"` when
+/// [`JsonDiagnostic::in_file`] names one. Keys are written in alphabetical order.
+///
+/// It borrows the diagnostic and is written straight into the output: no `serde_json::Value`
+/// tree is built on the way (a tree per diagnostic took as long as linking the pair did).
+#[derive(Debug, serde::Serialize)]
+pub struct JsonDiagnostic<'a> {
+    code: &'a str,
+    column: Option<u32>,
+    end_column: Option<u32>,
+    end_line: Option<u32>,
+    /// Absent unless named; `Some(None)` is written as `null`.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    file: Option<Option<&'a str>>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    fix: Option<JsonFix<'a>>,
+    help: Option<String>,
+    line: Option<u32>,
+    message: &'a str,
+    severity: &'static str,
+}
+
+#[derive(Debug, serde::Serialize)]
+struct JsonFix<'a> {
+    applicability: &'static str,
+    edits: Vec<JsonEdit<'a>>,
+    message: &'a str,
+}
+
+#[derive(Debug, serde::Serialize)]
+struct JsonEdit<'a> {
+    column: u32,
+    end_column: u32,
+    end_line: u32,
+    line: u32,
+    replacement: &'a str,
+}
+
+impl<'a> JsonDiagnostic<'a> {
+    /// `d`, which points into `file`.
+    pub fn new(file: &SourceFile, d: &'a Diagnostic) -> Self {
+        let (line, column) = position(file, d.span.start);
+        let (end_line, end_column) = position(file, d.span.end);
+        let fix = d.fix.as_ref().map(|fix| JsonFix {
+            applicability: match fix.applicability {
+                Applicability::Certain => "certain",
+                Applicability::Suggested => "suggested",
+            },
+            edits: fix
+                .edits
+                .iter()
+                .map(|e| {
+                    let (line, column) = position(file, e.span.start);
+                    let (end_line, end_column) = position(file, e.span.end);
+                    JsonEdit {
+                        column,
+                        end_column,
+                        end_line,
+                        line,
+                        replacement: &e.replacement,
+                    }
                 })
-            })
-            .collect();
-        let applicability = match fix.applicability {
-            Applicability::Certain => "certain",
-            Applicability::Suggested => "suggested",
-        };
-        v["fix"] = json!({
-            "message": fix.message,
-            "applicability": applicability,
-            "edits": edits,
+                .collect(),
+            message: &fix.message,
         });
+        JsonDiagnostic {
+            code: d.code,
+            column: Some(column),
+            end_column: Some(end_column),
+            end_line: Some(end_line),
+            file: None,
+            fix,
+            help: d.help_text(file),
+            line: Some(line),
+            message: &d.message,
+            severity: d.severity.as_str(),
+        }
     }
-    v
+
+    /// `d`, which points into no file: `"file"` and the positions are null, and there is no
+    /// `"fix"`.
+    pub fn unlocated(d: &'a Diagnostic) -> Self {
+        JsonDiagnostic {
+            code: d.code,
+            column: None,
+            end_column: None,
+            end_line: None,
+            file: Some(None),
+            fix: None,
+            help: d.help.clone(),
+            line: None,
+            message: &d.message,
+            severity: d.severity.as_str(),
+        }
+    }
+
+    /// Adds `"file": name`.
+    pub fn in_file(mut self, name: &'a str) -> Self {
+        self.file = Some(Some(name));
+        self
+    }
 }
 
 /// WebGL's info log: one line per diagnostic, `ERROR: 0:LINE: 'token' : message` or
@@ -318,7 +377,7 @@ mod tests {
         let file = SourceFile::new("a.frag", "é");
         let d = Diagnostic::new(Severity::Error, "x", "m", Span::new(1, 99));
         let _ = human_string(&file, std::slice::from_ref(&d));
-        let _ = to_json(&file, &d);
+        let _ = serde_json::to_string(&JsonDiagnostic::new(&file, &d));
         assert_eq!(webgl_info_log(&file, &[d]), "ERROR: 0:1: '' : m\n");
     }
 
@@ -326,7 +385,7 @@ mod tests {
     fn json_output() {
         let file = file();
         let ds = diagnostics(&file);
-        insta::assert_json_snapshot!(ds.iter().map(|d| to_json(&file, d)).collect::<Vec<_>>(), @r#"
+        insta::assert_json_snapshot!(ds.iter().map(|d| JsonDiagnostic::new(&file, d)).collect::<Vec<_>>(), @r#"
         [
           {
             "code": "missing-semicolon",
@@ -368,11 +427,9 @@ mod tests {
     #[test]
     fn json_help_is_null_without_help() {
         let file = file();
-        let v = to_json(
-            &file,
-            &Diagnostic::new(Severity::Warning, "w", "m", Span::new(0, 1)),
-        );
-        assert_eq!(v["help"], Value::Null);
+        let d = Diagnostic::new(Severity::Warning, "w", "m", Span::new(0, 1));
+        let v = serde_json::to_value(JsonDiagnostic::new(&file, &d)).expect("serialises");
+        assert_eq!(v["help"], serde_json::Value::Null);
         assert_eq!(v["severity"], "warning");
         assert!(v.get("fix").is_none());
     }

@@ -15,6 +15,7 @@
 mod check;
 mod fix;
 mod include;
+mod json;
 mod lines;
 mod options;
 mod output;

@@ -13,11 +13,11 @@ use essl::link::LinkDiagnostic;
 use essl::render;
 use essl::source::SourceFile;
 use essl::{Shader, Stage};
-use serde_json::{json, Value};
+use serde_json::json;
 
-use super::lines;
 use super::options::{Format, Look};
 use super::results::{Checked, Linked, LintResults, Totals};
+use super::{json, lines};
 use crate::discover::{Input, Source};
 
 fn plural(n: usize, word: &str) -> String {
@@ -169,11 +169,7 @@ fn buffer(color: bool) -> Buffer {
 pub(crate) fn render_file(input: &Input, checked: &Result<Checked, String>, look: Look) -> Vec<u8> {
     match look.format {
         Format::Human => human_file(input, checked, look),
-        Format::Json => {
-            let mut line = json_file(input, checked, look).to_string().into_bytes();
-            line.push(b'\n');
-            line
-        }
+        Format::Json => json::shader_line(input, checked, look),
         Format::Sarif => Vec::new(),
         Format::Concise | Format::Github => match checked {
             Ok(c) => std::iter::once((&c.shader.file, &c.shader.diagnostics))
@@ -193,11 +189,7 @@ pub(crate) fn render_file(input: &Input, checked: &Result<Checked, String>, look
 pub(crate) fn render_program(linked: &Linked, look: Look) -> Vec<u8> {
     match look.format {
         Format::Human => human_program(linked, look),
-        Format::Json => {
-            let mut line = json_program(linked, look).to_string().into_bytes();
-            line.push(b'\n');
-            line
-        }
+        Format::Json => json::program_line(linked, look),
         Format::Sarif => Vec::new(),
         Format::Concise | Format::Github => {
             let fallback = linked.vertex.path.display().to_string();
@@ -342,131 +334,14 @@ fn write_human_program(buf: &mut Buffer, linked: &Linked, quiet: bool) -> std::i
     Ok(())
 }
 
-fn file_of<'a>(vs: &'a Shader, fs: &'a Shader, d: &LinkDiagnostic) -> Option<&'a SourceFile> {
+/// The file a link diagnostic points into, if any.
+pub(super) fn file_of<'a>(
+    vs: &'a Shader,
+    fs: &'a Shader,
+    d: &LinkDiagnostic,
+) -> Option<&'a SourceFile> {
     match d.stage? {
         Stage::Vertex => Some(&vs.file),
         Stage::Fragment => Some(&fs.file),
     }
-}
-
-/// A shader's JSON object:
-/// `{"kind":"shader","file","stage","target","version","ok","diagnostics":[…]}` (`target`:
-/// `webgl1` or `webgl2`; `version`: `100` or `300 es`, absent when the file could not be
-/// read), with `"embedded_at"` (`FILE:LINE`) for a shader inside an HTML or JS file,
-/// `"fixes_applied"` under `--fix`, and `"error"` when the file could not be read
-/// (or the fix written back).
-fn json_file(input: &Input, checked: &Result<Checked, String>, look: Look) -> Value {
-    let file = input.path.display().to_string();
-    let fix = look.fix;
-    match checked {
-        Err(e) => json!({
-            "kind": "shader",
-            "file": file,
-            "stage": input.stage.as_str(),
-            "target": look.target.as_str(),
-            "ok": false,
-            "error": e.to_string(),
-            "diagnostics": [],
-        }),
-        Ok(c) => {
-            let mut diagnostics: Vec<Value> = c
-                .shader
-                .diagnostics
-                .iter()
-                .map(|d| render::to_json(&c.shader.file, d))
-                .collect();
-            for (file, ds) in &c.included {
-                diagnostics.extend(ds.iter().map(|d| {
-                    let mut v = render::to_json(file, d);
-                    v["file"] = json!(file.name());
-                    v
-                }));
-            }
-            let version = if c.shader.module.version == essl::Version::Es100 {
-                "100"
-            } else {
-                "300 es"
-            };
-            let mut v = json!({
-                "kind": "shader",
-                "file": file,
-                "stage": input.stage.as_str(),
-                "target": look.target.as_str(),
-                "version": version,
-                "ok": c.shader.ok(),
-                "diagnostics": diagnostics,
-            });
-            if let Source::Embedded(..) = input.source {
-                v["embedded_at"] = json!(input.label());
-            }
-            if fix {
-                v["fixes_applied"] = json!(c.fixes_applied);
-                if let Some(e) = &c.write_error {
-                    v["error"] = json!(e);
-                }
-            }
-            v
-        }
-    }
-}
-
-/// A program's JSON object: `{"kind":"program","vertex","fragment","target","ok","log","uniforms":[{"name",
-/// "type","size"}],"attributes":[{"name","type","size","location"}],"diagnostics":[…]}`; each
-/// diagnostic also carries `"file"` (null, with null positions, when it points into neither
-/// shader).
-fn json_program(linked: &Linked, look: Look) -> Value {
-    let Linked {
-        vertex,
-        fragment,
-        vs,
-        fs,
-        program,
-    } = *linked;
-    let uniforms: Vec<Value> = program
-        .uniforms
-        .iter()
-        .map(|u| json!({"name": u.name, "type": u.ty.name(), "size": u.size}))
-        .collect();
-    let attributes: Vec<Value> = program
-        .attributes
-        .iter()
-        .map(|a| json!({"name": a.name, "type": a.ty.name(), "size": a.size, "location": a.location}))
-        .collect();
-    let diagnostics: Vec<Value> = program
-        .diagnostics
-        .iter()
-        .map(|d| match file_of(vs, fs, d) {
-            Some(file) => {
-                let mut v = render::to_json(file, &d.diagnostic);
-                v["file"] = json!(file.name());
-                v
-            }
-            None => unlocated_json(&d.diagnostic),
-        })
-        .collect();
-    json!({
-        "kind": "program",
-        "vertex": vertex.label(),
-        "fragment": fragment.label(),
-        "target": look.target.as_str(),
-        "ok": program.ok,
-        "log": program.log,
-        "uniforms": uniforms,
-        "attributes": attributes,
-        "diagnostics": diagnostics,
-    })
-}
-
-fn unlocated_json(d: &Diagnostic) -> Value {
-    json!({
-        "severity": d.severity.as_str(),
-        "code": d.code,
-        "message": d.message,
-        "file": null,
-        "line": null,
-        "column": null,
-        "end_line": null,
-        "end_column": null,
-        "help": d.help,
-    })
 }
