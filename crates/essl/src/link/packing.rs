@@ -86,7 +86,21 @@ fn expand(name: &str, ty: &Type, structs: &[StructDef], out: &mut Vec<PackItem>)
 }
 
 /// Packs `items` into `max_rows` rows; the first that does not fit, if any.
+///
+/// Items whose rows add up to no more than `max_rows` always fit, each in rows of its own (the
+/// 2- to 4-column ones fill rows from the top, single components then find a free run below
+/// them), so only a program with more needs the grid: most have a handful of uniforms against
+/// hundreds of rows.
 pub(crate) fn pack(items: &[PackItem], max_rows: u32) -> Result<(), &PackItem> {
+    let rows: u64 = items.iter().map(|i| u64::from(i.rows)).sum();
+    if rows <= u64::from(max_rows) {
+        return Ok(());
+    }
+    pack_in_grid(items, max_rows)
+}
+
+/// [`pack`] by placing every item in a grid.
+fn pack_in_grid(items: &[PackItem], max_rows: u32) -> Result<(), &PackItem> {
     let mut sorted: Vec<&PackItem> = items.iter().collect();
     sorted.sort_by_key(|i| (i.order, std::cmp::Reverse(i.array)));
     let mut grid = Grid {
@@ -202,6 +216,40 @@ mod tests {
             31
         )
         .is_err());
+    }
+
+    proptest::proptest! {
+        /// The shortcut: items that fit in rows of their own always pack in the grid too.
+        #[test]
+        fn items_in_rows_of_their_own_always_pack(
+            kinds in proptest::collection::vec((0usize..8, 1u32..4), 0..24),
+            spare in 0u32..4,
+        ) {
+            let types = [
+                Type::FLOAT,
+                Type::Vector(Float, 2),
+                Type::Vector(Float, 3),
+                Type::Vector(Float, 4),
+                Type::Matrix { cols: 2, rows: 2 },
+                Type::Matrix { cols: 3, rows: 3 },
+                Type::Matrix { cols: 4, rows: 4 },
+                Type::Matrix { cols: 2, rows: 4 },
+            ];
+            let items: Vec<PackItem> = kinds
+                .iter()
+                .enumerate()
+                .flat_map(|(i, &(k, n))| {
+                    let ty = if n == 1 {
+                        types[k].clone()
+                    } else {
+                        Type::Array(Box::new(types[k].clone()), n)
+                    };
+                    items_of(&format!("v{i}"), &ty, &[], Span::default())
+                })
+                .collect();
+            let rows: u32 = items.iter().map(|i| i.rows).sum();
+            proptest::prop_assert!(pack_in_grid(&items, rows + spare).is_ok());
+        }
     }
 
     #[test]
