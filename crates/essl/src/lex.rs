@@ -184,6 +184,9 @@ struct Cursor<'a> {
     bytes: &'a [u8],
     text: &'a str,
     pos: usize,
+    /// A line continuation was skipped since this was last cleared (at a token's start): the
+    /// token's text is not a slice of the original and must be joined.
+    joined: bool,
 }
 
 impl<'a> Cursor<'a> {
@@ -197,6 +200,7 @@ impl<'a> Cursor<'a> {
                     (Some(b'\r'), _) => self.pos += 2,
                     _ => return,
                 }
+                self.joined = true;
             } else {
                 return;
             }
@@ -224,6 +228,17 @@ impl<'a> Cursor<'a> {
         }
     }
 
+    /// Advances past the ASCII bytes for which `f` holds, then (at a line continuation) on
+    /// through [`Cursor::eat_while`]: a name or a number is scanned byte by byte unless a
+    /// continuation splits it.
+    fn eat_ascii_while(&mut self, f: impl Fn(u8) -> bool) {
+        let rest = &self.bytes[self.pos..];
+        self.pos += rest.iter().position(|&b| !f(b)).unwrap_or(rest.len());
+        if self.bytes.get(self.pos) == Some(&b'\\') {
+            self.eat_while(|c| c.is_ascii() && f(c as u8));
+        }
+    }
+
     /// Advances past the characters for which `f` holds.
     fn eat_while(&mut self, f: impl Fn(char) -> bool) {
         while let Some(c) = self.peek() {
@@ -248,6 +263,7 @@ pub fn lex(file: &SourceFile) -> Lexed {
         bytes: text.as_bytes(),
         text,
         pos: 0,
+        joined: false,
     };
     let mut out = Lexed {
         tokens: Vec::with_capacity(text.len() / 3 + 2),
@@ -259,6 +275,7 @@ pub fn lex(file: &SourceFile) -> Lexed {
             (text.len() / 16).clamp(64, 4096),
             Default::default(),
         ),
+        puncts: std::array::from_fn(|_| None),
     };
     let newline = names.intern("\n");
     // No-break spaces per physical line: (span, inside a comment).
@@ -268,6 +285,7 @@ pub fn lex(file: &SourceFile) -> Lexed {
     loop {
         let start = {
             cur.skip_continuations();
+            cur.joined = false;
             cur.pos
         };
         let Some(c) = cur.bump() else { break };
@@ -300,8 +318,8 @@ pub fn lex(file: &SourceFile) -> Lexed {
                 space_before = true;
             }
             c if c.is_ascii_alphabetic() || c == '_' => {
-                cur.eat_while(|c| c.is_ascii_alphanumeric() || c == '_');
-                let text = names.text(text, start, cur.pos);
+                cur.eat_ascii_while(|b| b.is_ascii_alphanumeric() || b == b'_');
+                let text = names.text(text, start, &cur);
                 push(
                     &mut out,
                     PpKind::Ident,
@@ -315,7 +333,7 @@ pub fn lex(file: &SourceFile) -> Lexed {
                 || (c == '.' && cur.peek().is_some_and(|d| d.is_ascii_digit())) =>
             {
                 number(&mut cur, c);
-                let text = names.text(text, start, cur.pos);
+                let text = names.text(text, start, &cur);
                 push(
                     &mut out,
                     PpKind::Number,
@@ -326,11 +344,10 @@ pub fn lex(file: &SourceFile) -> Lexed {
                 );
             }
             c => {
-                let kind = match punct(c, &mut cur) {
-                    Some(p) => PpKind::Punct(p),
-                    None => PpKind::Invalid(c),
+                let (kind, s) = match punct(c, &mut cur) {
+                    Some(p) => (PpKind::Punct(p), names.punct(p)),
+                    None => (PpKind::Invalid(c), names.text(text, start, &cur)),
                 };
-                let s = names.text(text, start, cur.pos);
                 push(&mut out, kind, start, cur.pos, s, &mut space_before);
             }
         }
@@ -444,20 +461,29 @@ fn push(out: &mut Lexed, kind: PpKind, start: usize, end: usize, text: Arc<str>,
 /// punctuation, and a clone of an `Arc` costs less than an allocation per token.
 struct Interner<'a> {
     map: rustc_hash::FxHashMap<&'a str, Arc<str>>,
+    /// Each punctuator's text, by [`Punct`]'s discriminant: no hashing for half the tokens.
+    puncts: [Option<Arc<str>>; Punct::HashHash as usize + 1],
 }
 
 impl<'a> Interner<'a> {
-    /// The token text of `text[start..end]`, with line continuations removed (rare: then the
-    /// text is not interned).
-    fn text(&mut self, text: &'a str, start: usize, end: usize) -> Arc<str> {
-        let raw = &text[start..end];
-        if raw.bytes().any(|b| matches!(b, b'\\' | b'\n' | b'\r')) {
+    /// The text of the token from `start` to the cursor, with line continuations removed
+    /// (rare: then the text is not interned).
+    fn text(&mut self, text: &'a str, start: usize, cur: &Cursor<'_>) -> Arc<str> {
+        let raw = &text[start..cur.pos];
+        if cur.joined {
             let joined = raw.replace(['\\', '\n', '\r'], "");
             if !joined.is_empty() {
                 return Arc::from(joined);
             }
         }
         self.intern(raw)
+    }
+
+    /// The text of the punctuator `p`.
+    fn punct(&mut self, p: Punct) -> Arc<str> {
+        self.puncts[p as usize]
+            .get_or_insert_with(|| Arc::from(p.as_str()))
+            .clone()
     }
 
     fn intern(&mut self, s: &'a str) -> Arc<str> {
@@ -729,6 +755,25 @@ mod tests {
         let k = kinds("fo\\\no bar\\\r\n baz");
         let texts: Vec<&str> = k.iter().map(|(_, t)| t.as_str()).collect();
         assert_eq!(texts, ["foo", "bar", "baz", "\n", ""]);
+    }
+
+    #[test]
+    fn continuations_split_every_kind_of_token() {
+        let k = kinds("a+\\\n=b 1.\\\n5e\\\n-3 ab\\\r\ncd x\\\n");
+        let texts: Vec<&str> = k.iter().map(|(_, t)| t.as_str()).collect();
+        assert_eq!(texts, ["a", "+=", "b", "1.5e-3", "abcd", "x", "\n", ""]);
+        // A backslash before anything but a line break is a character of its own.
+        let k = kinds("ab\\ c a\u{e9}");
+        assert_eq!(
+            k[..4],
+            [
+                (PpKind::Ident, "ab".into()),
+                (PpKind::Invalid('\\'), "\\".into()),
+                (PpKind::Ident, "c".into()),
+                (PpKind::Ident, "a".into()),
+            ]
+        );
+        assert_eq!(k[4], (PpKind::Invalid('\u{e9}'), "\u{e9}".into()));
     }
 
     #[test]
