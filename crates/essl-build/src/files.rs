@@ -1,7 +1,7 @@
 //! Shader files: their stages, the `NAME.vert` + `NAME.frag` pairs to link, and reading them
 //! safely (a size limit, a UTF-8 check). `essl lint` finds its files with these too.
 
-use std::collections::BTreeMap;
+use std::collections::HashMap;
 use std::path::{Path, PathBuf};
 
 use essl::Stage;
@@ -32,7 +32,11 @@ pub fn pairs(files: &[ShaderFile]) -> Vec<(usize, usize)> {
             .position(|e| *e == ext)
             .unwrap_or(9)
     }
-    let mut by_name: BTreeMap<(PathBuf, &std::ffi::OsStr), [Option<usize>; 2]> = BTreeMap::new();
+    // `shaders/a.vert` pairs with `./shaders/a.frag`: compare the folders themselves, each
+    // written form resolved once (a folder of 10,000 shaders is one `canonicalize`).
+    let mut folder_of: HashMap<&Path, usize> = HashMap::new();
+    let mut folders: HashMap<PathBuf, usize> = HashMap::new();
+    let mut by_name: HashMap<(usize, &std::ffi::OsStr), [Option<usize>; 2]> = HashMap::new();
     for (i, file) in files.iter().enumerate() {
         if Stage::from_path(&file.path) != Some(file.stage) {
             continue;
@@ -40,8 +44,11 @@ pub fn pairs(files: &[ShaderFile]) -> Vec<(usize, usize)> {
         let (Some(stem), Some(parent)) = (file.path.file_stem(), file.path.parent()) else {
             continue;
         };
-        // `shaders/a.vert` pairs with `./shaders/a.frag`: compare the folders themselves.
-        let folder = std::fs::canonicalize(parent).unwrap_or_else(|_| parent.to_path_buf());
+        let folder = *folder_of.entry(parent).or_insert_with(|| {
+            let real = std::fs::canonicalize(parent).unwrap_or_else(|_| parent.to_path_buf());
+            let next = folders.len();
+            *folders.entry(real).or_insert(next)
+        });
         let slot = &mut by_name.entry((folder, stem)).or_default()
             [(file.stage == Stage::Fragment) as usize];
         if slot.is_none_or(|j| rank(&file.path) < rank(&files[j].path)) {
@@ -52,7 +59,11 @@ pub fn pairs(files: &[ShaderFile]) -> Vec<(usize, usize)> {
         .into_values()
         .filter_map(|[v, f]| Some((v?, f?)))
         .collect();
-    out.sort_by(|a, b| files[a.0].path.cmp(&files[b.0].path));
+    // Files listed in path order (as `essl lint` lists them) need no path comparisons.
+    out.sort_unstable();
+    if !out.is_sorted_by(|a, b| files[a.0].path <= files[b.0].path) {
+        out.sort_by(|a, b| files[a.0].path.cmp(&files[b.0].path).then(a.0.cmp(&b.0)));
+    }
     out
 }
 
@@ -182,6 +193,37 @@ mod tests {
             file("d/c.frag", Stage::Fragment),
         ];
         assert_eq!(pairs(&files), vec![(1, 0), (3, 2)]);
+    }
+
+    #[test]
+    fn pairs_come_in_vertex_path_order_however_files_are_listed() {
+        let files = vec![
+            file("z.vert", Stage::Vertex),
+            file("b/a.frag", Stage::Fragment),
+            file("a.frag", Stage::Fragment),
+            file("z.frag", Stage::Fragment),
+            file("b/a.vert", Stage::Vertex),
+            file("a.vert", Stage::Vertex),
+        ];
+        assert_eq!(pairs(&files), vec![(5, 2), (4, 1), (0, 3)]);
+    }
+
+    #[test]
+    fn a_folder_pairs_with_itself_however_it_is_written() {
+        let dir = tempfile::tempdir().unwrap();
+        let d = dir.path().join("d");
+        std::fs::create_dir(&d).unwrap();
+        let files = vec![
+            ShaderFile {
+                path: d.join("a.vert"),
+                stage: Stage::Vertex,
+            },
+            ShaderFile {
+                path: d.join("../d/a.frag"),
+                stage: Stage::Fragment,
+            },
+        ];
+        assert_eq!(pairs(&files), vec![(0, 1)]);
     }
 
     #[test]
