@@ -347,17 +347,17 @@ impl<'a> Pp<'a> {
             ("GL_ES", "1", None),
             ("GL_FRAGMENT_PRECISION_HIGH", "1", None),
         ];
+        self.macros
+            .reserve(predefined.len() + self.options.extensions.len() + 8);
         for (name, value, dynamic) in predefined {
-            self.macros.insert(
-                Arc::from(name),
-                Rc::new(Macro::predefined(name, value, dynamic)),
-            );
+            let m = Macro::predefined(name, value, dynamic);
+            self.macros.insert(m.name.clone(), Rc::new(m));
         }
         for ext in &self.options.extensions {
-            let name: Arc<str> = Arc::from(ext.as_str());
-            self.macros
-                .entry(name)
-                .or_insert_with(|| Rc::new(Macro::predefined(ext, "1", None)));
+            if !self.macros.contains_key(ext.as_str()) {
+                let m = Macro::predefined(ext, "1", None);
+                self.macros.insert(m.name.clone(), Rc::new(m));
+            }
         }
         for (name, value) in &self.options.defines {
             self.define_from_options(name, value);
@@ -366,10 +366,8 @@ impl<'a> Pp<'a> {
 
     /// Sets `__VERSION__`.
     fn set_version_macro(&mut self, n: u32) {
-        self.macros.insert(
-            Arc::from("__VERSION__"),
-            Rc::new(Macro::predefined("__VERSION__", &n.to_string(), None)),
-        );
+        let m = Macro::predefined("__VERSION__", &n.to_string(), None);
+        self.macros.insert(m.name.clone(), Rc::new(m));
     }
 
     /// Whether the current group is skipped.
@@ -608,8 +606,12 @@ impl<'a> Pp<'a> {
         let target = self.options.target.display();
         for i in 0..self.toks.len() {
             let t = &self.toks[i];
+            // No more characters than bytes: most tokens need no count.
+            if t.text.len() <= max || !matches!(t.kind, PpKind::Ident | PpKind::Number) {
+                continue;
+            }
             let len = t.text.chars().count();
-            if len <= max || !matches!(t.kind, PpKind::Ident | PpKind::Number) {
+            if len <= max {
                 continue;
             }
             let what = if t.kind == PpKind::Ident {
