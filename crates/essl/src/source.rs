@@ -103,7 +103,9 @@ impl SourceFile {
     pub fn new(name: impl Into<String>, text: impl Into<String>) -> SourceFile {
         let text = text.into();
         let bytes = text.as_bytes();
-        let mut line_starts = vec![0u32];
+        // About one line per 24 bytes of a shader: one allocation for most files.
+        let mut line_starts = Vec::with_capacity(bytes.len() / 24 + 2);
+        line_starts.push(0u32);
         let mut i = 0;
         while i < bytes.len() {
             match bytes[i] {
