@@ -327,7 +327,7 @@ impl Finder {
         }
         // Sorted once here rather than by the walker: its comparison splits both paths into
         // components at every step, which took more time than reading a 10,000-file folder.
-        files.sort_by_cached_key(|p| path_order_key(p));
+        files.sort_unstable_by(|a, b| path_order(a, b));
         for path in files {
             // Never an `Err`: only named files are usage errors.
             let _ = self.file(&path, false, found);
@@ -342,16 +342,31 @@ impl Finder {
     }
 }
 
-/// A key whose byte order is `Path`'s component order: each separator becomes a 0 byte, which
-/// sorts before every byte a component can hold (`a/x` before `a.b`, as a walk meets them).
-fn path_order_key(path: &Path) -> Vec<u8> {
-    let mut key = path.as_os_str().as_encoded_bytes().to_vec();
-    for b in &mut key {
-        if std::path::is_separator(char::from(*b)) {
-            *b = 0;
+/// `Path`'s component order (`a/x` before `a.b`, as a walk meets them) for paths a walk writes
+/// below its folder (no `.` or `..` component after the folder's own), by bytes: paths compare
+/// as if each separator were a 0 byte, which sorts before every byte a component can hold, so
+/// only the first byte where they differ needs mapping.
+fn path_order(a: &Path, b: &Path) -> std::cmp::Ordering {
+    let key = |b: u8| {
+        if std::path::is_separator(char::from(b)) {
+            0
+        } else {
+            b
         }
+    };
+    let (a, b) = (
+        a.as_os_str().as_encoded_bytes(),
+        b.as_os_str().as_encoded_bytes(),
+    );
+    match a.iter().zip(b).position(|(x, y)| x != y) {
+        // Two different separators (`/` and `\` on Windows) are the same step.
+        Some(i) if key(a[i]) == key(b[i]) => a[i..]
+            .iter()
+            .map(|&x| key(x))
+            .cmp(b[i..].iter().map(|&x| key(x))),
+        Some(i) => key(a[i]).cmp(&key(b[i])),
+        None => a.len().cmp(&b.len()),
     }
-    key
 }
 
 /// Sorts by path and drops a file named twice (`a.frag` and `./a.frag`, or a file and its
@@ -368,4 +383,43 @@ fn dedup(found: &mut Found, several: bool) {
         .retain(|i| matches!(i.source, Source::Text(_)) || seen.insert(key(&i.path)));
     found.hosts.sort_by(|a, b| a.path.cmp(&b.path));
     found.hosts.retain(|h| h.stdin || seen.insert(key(&h.path)));
+}
+
+#[cfg(test)]
+mod tests {
+    use super::path_order;
+    use std::path::Path;
+
+    /// Every path of up to four characters from `a`, `.`, `-` and `/`, as a walk writes them
+    /// below its folder (no empty, `.` or `..` component).
+    fn paths() -> Vec<String> {
+        let mut all = vec![String::new()];
+        let mut out = Vec::new();
+        for _ in 0..4 {
+            all = all
+                .iter()
+                .flat_map(|p| ["a", ".", "-", "/"].map(|c| format!("{p}{c}")))
+                .collect();
+            out.extend(
+                all.iter()
+                    .filter(|p| p.split('/').all(|c| !matches!(c, "" | "." | "..")))
+                    .cloned(),
+            );
+        }
+        out
+    }
+
+    #[test]
+    fn byte_order_with_separators_first_is_path_order() {
+        let paths = paths();
+        for a in &paths {
+            for b in &paths {
+                assert_eq!(
+                    path_order(Path::new(a), Path::new(b)),
+                    Path::new(a).cmp(Path::new(b)),
+                    "{a} against {b}"
+                );
+            }
+        }
+    }
 }
