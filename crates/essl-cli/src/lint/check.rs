@@ -429,17 +429,24 @@ pub(crate) fn check(
         .par_iter()
         .map(|unit| check_unit(unit, inputs, options, look, progress))
         .collect();
-    let mut files: Vec<(usize, FileResult)> = Vec::with_capacity(inputs.len());
-    let mut programs: Vec<(usize, ProgramResult)> = Vec::new();
+    // Each result goes to its input's slot: no sort moving 10,000 results around.
+    let mut files: Vec<Option<FileResult>> = std::iter::repeat_with(|| None)
+        .take(inputs.len())
+        .collect();
+    let mut programs: Vec<Option<ProgramResult>> = std::iter::repeat_with(|| None)
+        .take(inputs.len())
+        .collect();
     for (f, p) in done {
-        files.extend(f);
-        programs.extend(p);
+        for (i, r) in f {
+            files[i] = Some(r);
+        }
+        for (i, r) in p {
+            programs[i] = Some(r);
+        }
     }
-    files.sort_by_key(|(i, _)| *i);
-    programs.sort_by_key(|(i, _)| *i);
     LintResults {
-        files: files.into_iter().map(|(_, f)| f).collect(),
-        programs: programs.into_iter().map(|(_, p)| p).collect(),
+        files: files.into_iter().flatten().collect(),
+        programs: programs.into_iter().flatten().collect(),
         ..LintResults::default()
     }
 }
