@@ -7,8 +7,9 @@
 #   essl lint --format json --no-link DIR    compile every file (the same work as glslang)
 #   glslangValidator -t case*                one process, all files, its multi-threaded mode
 #   xargs -P2 -n1 glslangValidator           one process per file, two at a time
-# and prints the mean times and the ratios. glslangValidator compiles each file on its own (no
-# `-l`: `-l` links all inputs into one program, which is not what the corpus means).
+# and prints the mean times and the ratios, then the median ratio of interleaved rounds (ROUNDS,
+# default 21). glslangValidator compiles each file on its own (no `-l`: `-l` links all inputs
+# into one program, which is not what the corpus means).
 #
 # Usage: scripts/bench-lint.sh [CORPORA_DIR] (default: ../shared/corpora)
 # Needs: python3, glslangValidator (Debian glslang-tools), hyperfine (Debian hyperfine).
@@ -78,3 +79,34 @@ print(f"glslangValidator -t (one process) / essl lint --no-link: {g_all / essl_n
 if len(mean) > 3:
     print(f"glslangValidator per file (xargs -P2) / essl lint:       {list(mean.values())[3] / essl:6.2f}x")
 EOF2
+
+# hyperfine runs all of one command, then all of the next: a change in the machine's load between
+# those blocks moves the ratio (on the shared 2-core VM, glslangValidator's mean has moved by a
+# third between two invocations). Interleaved rounds time the three commands back to back, in an
+# order that rotates each round, and report the median of the per-round ratios, which a slow
+# change of load does not bias.
+python3 - "$essl" "${ROUNDS:-21}" <<'EOF3'
+import glob, statistics, subprocess, sys, time
+essl, rounds = sys.argv[1], int(sys.argv[2])
+files = sorted(glob.glob("case*"))
+cmds = {
+    "link": [essl, "lint", "--format", "json", "."],
+    "no-link": [essl, "lint", "--format", "json", "--no-link", "."],
+    "glslang": ["glslangValidator", "-t", *files],
+}
+names = list(cmds)
+ratios = {"link": [], "no-link": []}
+for r in range(rounds):
+    t = {}
+    for name in names[r % 3:] + names[:r % 3]:
+        start = time.perf_counter()
+        subprocess.run(cmds[name], stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+        t[name] = time.perf_counter() - start
+    for k in ratios:
+        ratios[k].append(t["glslang"] / t[k])
+print()
+for k, label in (("link", "essl lint"), ("no-link", "essl lint --no-link")):
+    q = statistics.quantiles(ratios[k], n=4)
+    print(f"glslangValidator -t / {label:20} interleaved, median of {rounds} rounds: "
+          f"{statistics.median(ratios[k]):5.2f}x (quartiles {q[0]:.2f}-{q[2]:.2f})")
+EOF3

@@ -430,12 +430,10 @@ pub(crate) fn check(
         .map(|unit| check_unit(unit, inputs, options, look, progress))
         .collect();
     // Each result goes to its input's slot: no sort moving 10,000 results around.
-    let mut files: Vec<Option<FileResult>> = std::iter::repeat_with(|| None)
-        .take(inputs.len())
-        .collect();
-    let mut programs: Vec<Option<ProgramResult>> = std::iter::repeat_with(|| None)
-        .take(inputs.len())
-        .collect();
+    let mut files: Vec<Option<FileResult>> =
+        std::iter::repeat_with(|| None).take(inputs.len()).collect();
+    let mut programs: Vec<Option<ProgramResult>> =
+        std::iter::repeat_with(|| None).take(inputs.len()).collect();
     for (f, p) in done {
         for (i, r) in f {
             files[i] = Some(r);
