@@ -64,7 +64,8 @@ pub enum Punct {
     RightShiftEqual,
     /// `#`, only meaningful to the preprocessor.
     Hash,
-    /// `##`, only meaningful to the preprocessor.
+    /// `##`, only meaningful to the preprocessor. The last variant: the lexer sizes a table of
+    /// punctuator texts by it.
     HashHash,
 }
 

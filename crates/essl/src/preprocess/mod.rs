@@ -347,6 +347,7 @@ impl<'a> Pp<'a> {
             ("GL_ES", "1", None),
             ("GL_FRAGMENT_PRECISION_HIGH", "1", None),
         ];
+        // The predefined macros, the extensions, and room for a shader's first `#define`s.
         self.macros
             .reserve(predefined.len() + self.options.extensions.len() + 8);
         for (name, value, dynamic) in predefined {
