@@ -172,9 +172,9 @@ fn walk_into(
 mod tests {
     use super::*;
 
-    fn file(path: &str, stage: Stage) -> ShaderFile {
+    fn file(path: impl Into<PathBuf>, stage: Stage) -> ShaderFile {
         ShaderFile {
-            path: PathBuf::from(path),
+            path: path.into(),
             stage,
         }
     }
@@ -214,14 +214,8 @@ mod tests {
         let d = dir.path().join("d");
         std::fs::create_dir(&d).unwrap();
         let files = vec![
-            ShaderFile {
-                path: d.join("a.vert"),
-                stage: Stage::Vertex,
-            },
-            ShaderFile {
-                path: d.join("../d/a.frag"),
-                stage: Stage::Fragment,
-            },
+            file(d.join("a.vert"), Stage::Vertex),
+            file(d.join("../d/a.frag"), Stage::Fragment),
         ];
         assert_eq!(pairs(&files), vec![(0, 1)]);
     }
