@@ -146,6 +146,8 @@ pub struct Analysis {
     version_counter: u32,
     /// The results of calls from their own arguments ([`calls`]).
     calls: calls::Calls,
+    /// The functions walked at their only call ([`calls`]).
+    at_call: calls::AtCall,
     /// What user functions read this round (cells, parameters, call results): a later change
     /// to one of them in the same round makes the round `stale`.
     reads: std::cell::RefCell<Reads>,
@@ -153,6 +155,8 @@ pub struct Analysis {
     stale: bool,
     /// Whether the walk is in an entry point (whose reads only copy outputs).
     walking_entry: bool,
+    /// The rounds the walk took to its fixpoint.
+    rounds: usize,
 }
 
 /// What user functions read in one round of the walk.
@@ -238,9 +242,11 @@ impl Analysis {
             global_writes: flow::global_writes(module),
             version_counter: 0,
             calls: calls::Calls::default(),
+            at_call: calls::AtCall::new(module),
             reads: Default::default(),
             stale: false,
             walking_entry: false,
+            rounds: 0,
         };
         for id in 0..count {
             let f = function(module, id);
@@ -264,13 +270,16 @@ impl Analysis {
             a.stale = false;
             a.reads.replace(Reads::default());
             a.widening = round >= WIDEN_AFTER;
+            a.at_call.start_round();
+            a.rounds = round + 1;
             // Callers after callees is the order naga keeps; entry points last. Walking the
-            // entry points first gives the inputs their values before `main_` reads them.
-            let order: Vec<usize> = (module.functions.len()..count)
-                .chain(0..module.functions.len())
-                .collect();
+            // entry points first gives the inputs their values before `main_` reads them; a
+            // function called from one place has been walked at that call.
+            let order = (module.functions.len()..count).chain(0..module.functions.len());
             for id in order {
-                a.run_function(module, info, id);
+                if !a.at_call.walked[id] {
+                    a.run_function(module, info, id);
+                }
             }
             // Nothing changed, or nothing that was read changed after it was read: the next
             // round would read and compute the same (one round for straight-line code).

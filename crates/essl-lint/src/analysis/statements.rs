@@ -24,6 +24,7 @@ impl Analysis {
         let f = function(module, id);
         let n = f.expressions.len();
         self.walking_entry = id >= module.functions.len();
+        self.at_call.walked[id] = true;
         {
             let ff = &mut self.functions[id];
             ff.values = vec![Val::Bot; n];
@@ -194,7 +195,8 @@ impl Analysis {
     }
 
     /// A call of function `c`: the arguments join into its parameters (a pointer argument
-    /// shares its cell), its result into `result`.
+    /// shares its cell: copy-in, the callee's walk when this is its only call, copy-out), its
+    /// result into `result`.
     fn call(&mut self, s: Site, c: usize, arguments: &[Handle<E>], result: Option<Handle<E>>) {
         let (module, id) = (s.module, s.id);
         for (i, a) in arguments.iter().enumerate() {
@@ -210,9 +212,6 @@ impl Analysis {
                     .current_value(&p)
                     .unwrap_or_else(|| self.load(module, &p, &ty));
                 self.store(module, &arg_root, &mine);
-                self.note_read(Root::Arg(c, i));
-                let theirs = self.cell(module, Root::Arg(c, i));
-                self.store(module, &p, &theirs);
             } else if !self.calls.walking() {
                 let v = self.functions[id].values[a.index()].clone();
                 let mut changed = false;
@@ -221,6 +220,15 @@ impl Analysis {
                 }
                 self.changed |= changed;
                 self.stale |= changed && self.reads.borrow().args.contains(&c);
+            }
+        }
+        self.walk_at_call(s, c);
+        for (i, a) in arguments.iter().enumerate() {
+            if let Some(p) = self.functions[id].places[a.index()].clone() {
+                // Copy-out: what the callee left in the parameter's cell.
+                self.note_read(Root::Arg(c, i));
+                let theirs = self.cell(module, Root::Arg(c, i));
+                self.store(module, &p, &theirs);
             }
         }
         if let Some(r) = result {
