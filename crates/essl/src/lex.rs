@@ -353,7 +353,7 @@ pub fn lex(file: &SourceFile) -> Lexed {
             }
         }
     }
-    finish(&mut out, text.len() as u32, space_before);
+    finish(&mut out, text.len() as u32, space_before, newline);
     report_nbsp(file, &nbsp, &mut out.diagnostics);
     out
 }
@@ -427,13 +427,15 @@ fn number(cur: &mut Cursor<'_>, first: char) {
 }
 
 /// Ends the token list: a line break if the last line has none, then the end of file.
-fn finish(out: &mut Lexed, end: u32, space_before: bool) {
+/// Ends the token list: a line break after a last line without one (`newline`: the interned
+/// `"\n"`), then the end of input.
+fn finish(out: &mut Lexed, end: u32, space_before: bool, newline: Arc<str>) {
     // A last line without a line break still ends.
     if out.tokens.last().is_some_and(|t| t.kind != PpKind::Newline) {
         out.tokens.push(PpToken {
             kind: PpKind::Newline,
             span: Span::empty(end),
-            text: Arc::from("\n"),
+            text: newline,
             space_before,
             from_macro: false,
         });
