@@ -18,6 +18,7 @@
 
 use naga::{Expression as E, Handle};
 
+use super::statements::each_statement;
 use super::{function, Analysis, Site};
 use crate::value::Val;
 
@@ -68,7 +69,13 @@ impl AtCall {
         let count = module.functions.len() + module.entry_points.len();
         let mut sites = vec![0; count];
         for id in 0..count {
-            count_calls(&function(module, id).body, &mut sites);
+            each_statement(&function(module, id).body, &mut |s| {
+                if let naga::Statement::Call { function, .. } = s {
+                    if let Some(n) = sites.get_mut(function.index()) {
+                        *n += 1;
+                    }
+                }
+            });
         }
         AtCall {
             sites,
@@ -80,33 +87,6 @@ impl AtCall {
     /// Starts a round: nothing is walked yet.
     pub fn start_round(&mut self) {
         self.walked.fill(false);
-    }
-}
-
-/// Adds the call statements of `block` (nested blocks included) to `sites`.
-fn count_calls(block: &naga::Block, sites: &mut [u32]) {
-    use naga::Statement as S;
-    for st in block.iter() {
-        match st {
-            S::Call { function, .. } => {
-                if let Some(n) = sites.get_mut(function.index()) {
-                    *n += 1;
-                }
-            }
-            S::Block(b) => count_calls(b, sites),
-            S::If { accept, reject, .. } => {
-                count_calls(accept, sites);
-                count_calls(reject, sites);
-            }
-            S::Switch { cases, .. } => cases.iter().for_each(|c| count_calls(&c.body, sites)),
-            S::Loop {
-                body, continuing, ..
-            } => {
-                count_calls(body, sites);
-                count_calls(continuing, sites);
-            }
-            _ => {}
-        }
     }
 }
 
@@ -174,9 +154,7 @@ impl Analysis {
         self.calls.memo.push((c, args, result.clone()));
         Some(result)
     }
-}
 
-impl Analysis {
     /// Walks function `c` at a call of the function at `s`, when that is the only call naming
     /// `c` and the round has not walked it yet (its parameters now hold every argument).
     pub(super) fn walk_at_call(&mut self, s: Site, c: usize) {

@@ -16,6 +16,7 @@ use rustc_hash::{FxHashMap as HashMap, FxHashSet as HashSet};
 use naga::{Block, Expression as E, Function, Handle, Statement};
 
 use super::memory::write;
+use super::statements::each_statement;
 use super::{function, Analysis, Place, Root, ANY};
 use crate::value::{norm_of, Facts, Val};
 
@@ -106,57 +107,27 @@ pub(super) fn global_writes(module: &naga::Module) -> Vec<HashSet<usize>> {
     for id in 0..count {
         let f = function(module, id);
         let mut set = HashSet::default();
-        collect_global_writes(f, &f.body, &out, &mut set);
-        out[id] = set;
-    }
-    out
-}
-
-fn collect_global_writes(
-    f: &Function,
-    b: &Block,
-    known: &[HashSet<usize>],
-    out: &mut HashSet<usize>,
-) {
-    let global = |p: Handle<E>, out: &mut HashSet<usize>| {
-        if let Some(Root::Global(g)) = root_of(f, 0, p) {
-            out.insert(g);
-        }
-    };
-    for s in b.iter() {
-        match s {
-            Statement::Store { pointer, .. } => global(*pointer, out),
+        let global = |p: Handle<E>| match root_of(f, 0, p) {
+            Some(Root::Global(g)) => Some(g),
+            _ => None,
+        };
+        each_statement(&f.body, &mut |s| match s {
+            Statement::Store { pointer, .. } => set.extend(global(*pointer)),
             Statement::Call {
                 function: callee,
                 arguments,
                 ..
             } => {
-                for a in arguments {
-                    global(*a, out);
+                set.extend(arguments.iter().filter_map(|a| global(*a)));
+                if let Some(w) = out.get(callee.index()) {
+                    set.extend(w.iter().copied());
                 }
-                if let Some(w) = known.get(callee.index()) {
-                    out.extend(w.iter().copied());
-                }
-            }
-            Statement::Block(b) => collect_global_writes(f, b, known, out),
-            Statement::If { accept, reject, .. } => {
-                collect_global_writes(f, accept, known, out);
-                collect_global_writes(f, reject, known, out);
-            }
-            Statement::Switch { cases, .. } => {
-                for c in cases {
-                    collect_global_writes(f, &c.body, known, out);
-                }
-            }
-            Statement::Loop {
-                body, continuing, ..
-            } => {
-                collect_global_writes(f, body, known, out);
-                collect_global_writes(f, continuing, known, out);
             }
             _ => {}
-        }
+        });
+        out[id] = set;
     }
+    out
 }
 
 /// Whether a `switch` case can be walked on its own from the state before the `switch`: it
@@ -288,37 +259,19 @@ impl Analysis {
     }
 
     fn collect_written(&self, f: &Function, id: usize, b: &Block, out: &mut Vec<Root>) {
-        for s in b.iter() {
-            match s {
-                Statement::Store { pointer, .. } => out.extend(root_of(f, id, *pointer)),
-                Statement::Call {
-                    function: callee,
-                    arguments,
-                    ..
-                } => {
-                    out.extend(arguments.iter().filter_map(|a| root_of(f, id, *a)));
-                    if let Some(w) = self.global_writes.get(callee.index()) {
-                        out.extend(w.iter().map(|g| Root::Global(*g)));
-                    }
+        each_statement(b, &mut |s| match s {
+            Statement::Store { pointer, .. } => out.extend(root_of(f, id, *pointer)),
+            Statement::Call {
+                function: callee,
+                arguments,
+                ..
+            } => {
+                out.extend(arguments.iter().filter_map(|a| root_of(f, id, *a)));
+                if let Some(w) = self.global_writes.get(callee.index()) {
+                    out.extend(w.iter().map(|g| Root::Global(*g)));
                 }
-                Statement::Block(b) => self.collect_written(f, id, b, out),
-                Statement::If { accept, reject, .. } => {
-                    self.collect_written(f, id, accept, out);
-                    self.collect_written(f, id, reject, out);
-                }
-                Statement::Switch { cases, .. } => {
-                    for c in cases {
-                        self.collect_written(f, id, &c.body, out);
-                    }
-                }
-                Statement::Loop {
-                    body, continuing, ..
-                } => {
-                    self.collect_written(f, id, body, out);
-                    self.collect_written(f, id, continuing, out);
-                }
-                _ => {}
             }
-        }
+            _ => {}
+        });
     }
 }

@@ -49,7 +49,7 @@ use crate::value::{Num, Val};
 pub(crate) use conditions::condition_atoms;
 pub use conditions::{integral, refine_num, relation, Refinement};
 pub use memory::{const_value, literal};
-pub(crate) use statements::diverges;
+pub(crate) use statements::{diverges, each_statement};
 
 use memory::write;
 use statements::single_stores;

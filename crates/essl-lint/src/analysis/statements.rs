@@ -243,6 +243,33 @@ impl Analysis {
     }
 }
 
+/// Calls `visit` on every statement of `block`, nested blocks included: a statement, then
+/// the statements of the blocks it holds.
+pub(crate) fn each_statement(block: &Block, visit: &mut impl FnMut(&Statement)) {
+    for st in block.iter() {
+        visit(st);
+        match st {
+            Statement::Block(b) => each_statement(b, visit),
+            Statement::If { accept, reject, .. } => {
+                each_statement(accept, visit);
+                each_statement(reject, visit);
+            }
+            Statement::Switch { cases, .. } => {
+                for c in cases {
+                    each_statement(&c.body, visit);
+                }
+            }
+            Statement::Loop {
+                body, continuing, ..
+            } => {
+                each_statement(body, visit);
+                each_statement(continuing, visit);
+            }
+            _ => {}
+        }
+    }
+}
+
 /// Locals stored exactly once (the whole variable), outside loops, never passed by pointer; and
 /// the whole stores of every local never stored in part or passed by pointer.
 #[allow(clippy::type_complexity)]

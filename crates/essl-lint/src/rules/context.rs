@@ -248,39 +248,13 @@ fn collect_written(f: &Function, b: &naga::Block, out: &mut HashSet<usize>) {
             }
         }
     }
-    for s in b.iter() {
-        match s {
-            naga::Statement::Store { pointer, .. } => {
-                if let Some(g) = root_global(f, *pointer) {
-                    out.insert(g);
-                }
-            }
-            naga::Statement::Call { arguments, .. } => {
-                for a in arguments {
-                    if let Some(g) = root_global(f, *a) {
-                        out.insert(g);
-                    }
-                }
-            }
-            naga::Statement::Block(b) => collect_written(f, b, out),
-            naga::Statement::If { accept, reject, .. } => {
-                collect_written(f, accept, out);
-                collect_written(f, reject, out);
-            }
-            naga::Statement::Switch { cases, .. } => {
-                for c in cases {
-                    collect_written(f, &c.body, out);
-                }
-            }
-            naga::Statement::Loop {
-                body, continuing, ..
-            } => {
-                collect_written(f, body, out);
-                collect_written(f, continuing, out);
-            }
-            _ => {}
+    analysis::each_statement(b, &mut |s| match s {
+        Statement::Store { pointer, .. } => out.extend(root_global(f, *pointer)),
+        Statement::Call { arguments, .. } => {
+            out.extend(arguments.iter().filter_map(|a| root_global(f, *a)));
         }
-    }
+        _ => {}
+    });
 }
 
 /// A number as people read it: five significant digits (so that rounding slack does not
