@@ -73,19 +73,23 @@ struct UniformObject<'a> {
 
 /// A shader's line (its object and `\n`).
 pub(crate) fn shader_line(input: &Input, checked: &Result<Checked, String>, look: Look) -> Vec<u8> {
-    let file = input.path.display().to_string();
+    // What every shader's object says; a file that could not be read adds only its error.
+    let unread = ShaderObject {
+        diagnostics: Vec::new(),
+        embedded_at: None,
+        error: None,
+        file: input.path.display().to_string(),
+        fixes_applied: None,
+        kind: "shader",
+        ok: false,
+        stage: input.stage.as_str(),
+        target: look.target.as_str(),
+        version: None,
+    };
     let object = match checked {
         Err(e) => ShaderObject {
-            diagnostics: Vec::new(),
-            embedded_at: None,
             error: Some(e),
-            file,
-            fixes_applied: None,
-            kind: "shader",
-            ok: false,
-            stage: input.stage.as_str(),
-            target: look.target.as_str(),
-            version: None,
+            ..unread
         },
         Ok(c) => {
             let mut diagnostics: Vec<JsonDiagnostic> = c
@@ -109,13 +113,10 @@ pub(crate) fn shader_line(input: &Input, checked: &Result<Checked, String>, look
                 diagnostics,
                 embedded_at: matches!(input.source, Source::Embedded(..)).then(|| input.label()),
                 error: c.write_error.as_deref().filter(|_| look.fix),
-                file,
                 fixes_applied: look.fix.then_some(c.fixes_applied),
-                kind: "shader",
                 ok: c.shader.ok(),
-                stage: input.stage.as_str(),
-                target: look.target.as_str(),
                 version: Some(version),
+                ..unread
             }
         }
     };
