@@ -140,17 +140,11 @@ impl Analysis {
         self.calls.spent += cost;
         let saved_args = std::mem::replace(&mut self.args[c], args.clone());
         let saved_facts = self.functions[c].clone();
-        let saved_current = std::mem::take(&mut self.current);
-        let saved_refine = std::mem::take(&mut self.refine);
-        let saved_entry = self.walking_entry;
         self.calls.results.push(Val::Bot);
-        self.run_function(s.module, s.info, c);
+        self.walk_inside(s, c);
         let result = self.calls.results.pop().unwrap_or(Val::Bot);
-        self.walking_entry = saved_entry;
         self.args[c] = saved_args;
         self.functions[c] = saved_facts;
-        self.current = saved_current;
-        self.refine = saved_refine;
         self.calls.memo.push((c, args, result.clone()));
         Some(result)
     }
@@ -167,12 +161,19 @@ impl Analysis {
         {
             return;
         }
+        self.at_call.nested += 1;
+        self.walk_inside(s, c);
+        self.at_call.nested -= 1;
+    }
+
+    /// Walks function `c` in the middle of the walk of the function at `s`, which then goes on
+    /// with what it knew: its variables' current values, its `if` refinements, whether it is
+    /// an entry point.
+    fn walk_inside(&mut self, s: Site, c: usize) {
         let saved_current = std::mem::take(&mut self.current);
         let saved_refine = std::mem::take(&mut self.refine);
         let saved_entry = self.walking_entry;
-        self.at_call.nested += 1;
         self.run_function(s.module, s.info, c);
-        self.at_call.nested -= 1;
         self.walking_entry = saved_entry;
         self.current = saved_current;
         self.refine = saved_refine;

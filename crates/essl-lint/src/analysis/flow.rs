@@ -98,6 +98,14 @@ fn root_of(f: &Function, id: usize, mut p: Handle<E>) -> Option<Root> {
     }
 }
 
+/// The index of the global variable pointer `p` of `f` points into, if it points into one.
+pub(crate) fn root_global(f: &Function, p: Handle<E>) -> Option<usize> {
+    match root_of(f, 0, p) {
+        Some(Root::Global(g)) => Some(g),
+        _ => None,
+    }
+}
+
 /// The private globals each function writes, itself or through the functions it calls
 /// (module functions by handle index, then entry points).
 pub(super) fn global_writes(module: &naga::Module) -> Vec<HashSet<usize>> {
@@ -107,10 +115,7 @@ pub(super) fn global_writes(module: &naga::Module) -> Vec<HashSet<usize>> {
     for id in 0..count {
         let f = function(module, id);
         let mut set = HashSet::default();
-        let global = |p: Handle<E>| match root_of(f, 0, p) {
-            Some(Root::Global(g)) => Some(g),
-            _ => None,
-        };
+        let global = |p: Handle<E>| root_global(f, p);
         each_statement(&f.body, &mut |s| match s {
             Statement::Store { pointer, .. } => set.extend(global(*pointer)),
             Statement::Call {

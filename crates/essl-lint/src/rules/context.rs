@@ -239,15 +239,7 @@ impl<'a> Cx<'a> {
 }
 
 fn collect_written(f: &Function, b: &naga::Block, out: &mut HashSet<usize>) {
-    fn root_global(f: &Function, mut p: Handle<E>) -> Option<usize> {
-        loop {
-            match f.expressions[p] {
-                E::GlobalVariable(g) => return Some(g.index()),
-                E::Access { base, .. } | E::AccessIndex { base, .. } => p = base,
-                _ => return None,
-            }
-        }
-    }
+    use analysis::root_global;
     analysis::each_statement(b, &mut |s| match s {
         Statement::Store { pointer, .. } => out.extend(root_global(f, *pointer)),
         Statement::Call { arguments, .. } => {
