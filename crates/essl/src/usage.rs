@@ -7,29 +7,38 @@
 //! not folded. A global's non-constant initializer (GLSL ES 1.00 in WebGL) runs at the start of
 //! `main`: what it reads is used when the global is.
 
-use std::collections::BTreeSet;
-
 use crate::builtins::BuiltinVar;
 use crate::hir::{
     Cond, Expr, ExprKind, Function, GlobalId, LocalId, Module, Scalar, Stmt, StmtKind,
 };
 
-#[derive(Default)]
-struct Uses {
-    globals: BTreeSet<GlobalId>,
-    blocks: BTreeSet<usize>,
-    builtins: BTreeSet<BuiltinVar>,
-    calls: BTreeSet<usize>,
-    locals: BTreeSet<LocalId>,
+/// One thing that code reads or calls.
+#[derive(Clone, Copy)]
+enum Use {
+    Global(GlobalId),
+    Block(usize),
+    Builtin(BuiltinVar),
+    Call(usize),
+    Local(LocalId),
 }
 
+/// What a piece of code reads or calls, in the order met, repeats included: appending is all
+/// the walk does, and the few consumers below skip what they have seen. A function's list is
+/// as long as its expressions, so this stays linear where sets of each kind cost an
+/// allocation per kind and per store.
+#[derive(Default)]
+struct Uses(Vec<Use>);
+
 impl Uses {
-    fn merge(&mut self, o: &Uses) {
-        self.globals.extend(&o.globals);
-        self.blocks.extend(&o.blocks);
-        self.builtins.extend(&o.builtins);
-        self.calls.extend(&o.calls);
-        self.locals.extend(&o.locals);
+    fn push(&mut self, u: Use) {
+        self.0.push(u);
+    }
+
+    fn locals(&self) -> impl Iterator<Item = LocalId> + '_ {
+        self.0.iter().filter_map(|u| match *u {
+            Use::Local(l) => Some(l),
+            _ => None,
+        })
     }
 }
 
@@ -42,46 +51,64 @@ pub fn mark(m: &mut Module) {
     fn_used[entry] = true;
     while let Some(f) = stack.pop() {
         let uses = analyze(&m.functions[f]);
-        for &c in &uses.calls {
-            if !fn_used[c] {
-                fn_used[c] = true;
-                stack.push(c);
+        for u in &uses.0 {
+            if let Use::Call(c) = *u {
+                if !fn_used[c] {
+                    fn_used[c] = true;
+                    stack.push(c);
+                }
             }
         }
-        all.merge(&uses);
+        all.0.extend(uses.0);
     }
     for (f, used) in m.functions.iter_mut().zip(fn_used) {
         f.used = used;
     }
     initializer_uses(m, &mut all);
-    for &g in &all.globals {
-        m.globals[g].used = true;
-        if let crate::hir::GlobalKind::BlockMember(b, _) = m.globals[g].kind {
-            all.blocks.insert(b);
+    let mut builtins = Vec::new();
+    for u in all.0 {
+        match u {
+            Use::Global(g) => {
+                m.globals[g].used = true;
+                if let crate::hir::GlobalKind::BlockMember(b, _) = m.globals[g].kind {
+                    m.blocks[b].used = true;
+                }
+            }
+            Use::Block(b) => m.blocks[b].used = true,
+            Use::Builtin(v) => builtins.push(v),
+            Use::Call(_) | Use::Local(_) => {}
         }
     }
-    for &b in &all.blocks {
-        m.blocks[b].used = true;
-    }
-    m.used_builtins = all.builtins.into_iter().collect();
+    builtins.sort_unstable();
+    builtins.dedup();
+    m.used_builtins = builtins;
 }
 
 /// Adds what the non-constant initializers of the used globals read, until nothing changes.
 fn initializer_uses(m: &Module, all: &mut Uses) {
-    let mut pending: Vec<GlobalId> = all.globals.iter().copied().collect();
-    let mut seen: BTreeSet<GlobalId> = all.globals.clone();
+    let mut seen = vec![false; m.globals.len()];
+    let mut pending: Vec<GlobalId> = Vec::new();
+    let mut visit = |u: &Use, pending: &mut Vec<GlobalId>| {
+        if let Use::Global(g) = *u {
+            if !seen[g] {
+                seen[g] = true;
+                pending.push(g);
+            }
+        }
+    };
+    for u in &all.0 {
+        visit(u, &mut pending);
+    }
     while let Some(g) = pending.pop() {
         let Some(crate::hir::Init::Expr(e)) = &m.globals[g].init else {
             continue;
         };
         let mut u = Uses::default();
         expr(e, &mut u);
-        for &ng in &u.globals {
-            if seen.insert(ng) {
-                pending.push(ng);
-            }
+        for x in &u.0 {
+            visit(x, &mut pending);
         }
-        all.merge(&u);
+        all.0.extend(u.0);
     }
 }
 
@@ -109,26 +136,25 @@ fn analyze(f: &Function) -> Uses {
     for (i, st) in w.stores.iter().enumerate() {
         stores_of.entry(st.target).or_default().push(i);
     }
-    let mut pending: Vec<LocalId> = w.live.locals.iter().copied().collect();
+    let mut pending: Vec<LocalId> = w.live.locals().collect();
     let mut done = rustc_hash::FxHashSet::default();
     while let Some(l) = pending.pop() {
         if !done.insert(l) {
             continue;
         }
         for &i in stores_of.get(&l).map(|v| v.as_slice()).unwrap_or(&[]) {
-            let uses = &w.stores[i].uses;
-            for &nl in &uses.locals {
-                if !done.contains(&nl) {
-                    pending.push(nl);
+            for &u in &w.stores[i].uses.0 {
+                match u {
+                    Use::Local(nl) => {
+                        if !done.contains(&nl) {
+                            pending.push(nl);
+                        }
+                    }
+                    u => w.live.push(u),
                 }
             }
-            w.live.globals.extend(&uses.globals);
-            w.live.blocks.extend(&uses.blocks);
-            w.live.builtins.extend(&uses.builtins);
-            w.live.calls.extend(&uses.calls);
         }
     }
-    w.live.locals.extend(done);
     w.live
 }
 
@@ -200,7 +226,7 @@ impl Walker {
                     match &**c {
                         Cond::Expr(e) => expr(e, &mut self.live),
                         Cond::Decl(l, e) => {
-                            self.live.locals.insert(*l);
+                            self.live.push(Use::Local(*l));
                             expr(e, &mut self.live);
                         }
                     }
@@ -241,7 +267,7 @@ impl Walker {
                     // Indices in the target are reads too.
                     target_reads(lhs, &mut u);
                     if op.is_some() {
-                        u.locals.insert(t);
+                        u.push(Use::Local(t));
                     }
                     self.stores.push(Store { target: t, uses: u });
                     return;
@@ -282,14 +308,14 @@ fn expr(e: &Expr, u: &mut Uses) {
     match &e.kind {
         ExprKind::Error | ExprKind::Const(_) => {}
         ExprKind::Local(l) => {
-            u.locals.insert(*l);
+            u.push(Use::Local(*l));
         }
         ExprKind::Param(_) => {}
         ExprKind::Global(g) => {
-            u.globals.insert(*g);
+            u.push(Use::Global(*g));
         }
         ExprKind::BuiltinVar(v) => {
-            u.builtins.insert(*v);
+            u.push(Use::Builtin(*v));
         }
         ExprKind::Unary(_, a)
         | ExprKind::IncDec(_, _, a)
@@ -312,7 +338,7 @@ fn expr(e: &Expr, u: &mut Uses) {
             expr(b, u);
         }
         ExprKind::Call(f, args) => {
-            u.calls.insert(*f);
+            u.push(Use::Call(*f));
             for a in args {
                 expr(a, u);
             }
@@ -323,7 +349,7 @@ fn expr(e: &Expr, u: &mut Uses) {
             }
         }
         ExprKind::BlockMember(b, idx, _) => {
-            u.blocks.insert(*b);
+            u.push(Use::Block(*b));
             if let Some(i) = idx {
                 expr(i, u);
             }
