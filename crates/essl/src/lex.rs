@@ -208,16 +208,39 @@ impl<'a> Cursor<'a> {
         }
     }
 
+    /// The next character. An ASCII byte other than `\\` is its own character with no
+    /// continuation before it: no decoding.
     fn peek(&mut self) -> Option<char> {
-        self.skip_continuations();
-        self.text[self.pos..].chars().next()
+        match self.bytes.get(self.pos) {
+            Some(&b) if b.is_ascii() && b != b'\\' => Some(b as char),
+            _ => {
+                self.skip_continuations();
+                self.text[self.pos..].chars().next()
+            }
+        }
     }
 
     fn bump(&mut self) -> Option<char> {
+        if let Some(&b) = self.bytes.get(self.pos) {
+            if b.is_ascii() && b != b'\\' {
+                self.pos += 1;
+                return Some(b as char);
+            }
+        }
         self.skip_continuations();
         let c = self.text[self.pos..].chars().next()?;
         self.pos += c.len_utf8();
         Some(c)
+    }
+
+    /// Advances past the bytes for which `f` holds, stopping at a line continuation's `\\` or
+    /// a byte that is not ASCII: what the caller then reads through [`Cursor::peek`].
+    fn skip_ascii(&mut self, f: impl Fn(u8) -> bool) {
+        let rest = &self.bytes[self.pos..];
+        self.pos += rest
+            .iter()
+            .position(|&b| !(b.is_ascii() && b != b'\\' && f(b)))
+            .unwrap_or(rest.len());
     }
 
     fn eat(&mut self, c: char) -> bool {
@@ -304,7 +327,10 @@ pub fn lex(file: &SourceFile) -> Lexed {
                 });
                 space_before = false;
             }
-            c if is_space(c) => space_before = true,
+            c if is_space(c) => {
+                cur.skip_ascii(|b| is_space(b as char));
+                space_before = true;
+            }
             '\u{A0}' => {
                 nbsp.push((Span::new(start as u32, cur.pos as u32), false));
                 space_before = true;
@@ -361,7 +387,9 @@ pub fn lex(file: &SourceFile) -> Lexed {
 /// A line comment after its `/`: to the end of the line (continuations included). No-break
 /// spaces in it go to `nbsp`.
 fn line_comment(cur: &mut Cursor<'_>, nbsp: &mut Vec<(Span, bool)>) {
-    while let Some(c) = cur.peek() {
+    loop {
+        cur.skip_ascii(|b| b != b'\n' && b != b'\r');
+        let Some(c) = cur.peek() else { break };
         if c == '\n' || c == '\r' {
             break;
         }
@@ -382,7 +410,9 @@ fn block_comment(
     diagnostics: &mut Vec<Diagnostic>,
 ) {
     let mut closed = false;
-    while let Some(c) = cur.bump() {
+    loop {
+        cur.skip_ascii(|b| b != b'*');
+        let Some(c) = cur.bump() else { break };
         if c == '*' && cur.peek() == Some('/') {
             cur.bump();
             closed = true;
@@ -788,6 +818,18 @@ mod tests {
         assert!(l.tokens[1].space_before);
         assert_eq!(l.diagnostics.len(), 1);
         assert_eq!(l.diagnostics[0].code, "unterminated-comment");
+    }
+
+    #[test]
+    fn continuations_inside_comments_and_white_space_are_removed_first() {
+        // A line comment goes on past a continuation; `*\` + line break + `/` closes a block
+        // comment; a continuation inside a run of blanks leaves one blank.
+        let f = SourceFile::new("t", "a // c \\\n still c\nb /* * *\\\n/ c\t \\\n\td");
+        let tokens = lex(&f).tokens;
+        let texts: Vec<&str> = tokens.iter().map(|t| &*t.text).collect();
+        assert_eq!(texts, ["a", "\n", "b", "c", "d", "\n", ""]);
+        assert!(tokens[3].space_before && tokens[4].space_before);
+        assert_eq!(tokens[4].span, Span::new(36, 37));
     }
 
     #[test]
