@@ -291,6 +291,34 @@ impl Pp<'_> {
         }
     }
 
+    /// The next token of the text when all there is to do is pass it on, consumed: outside
+    /// any expansion, in a group that is not skipped, not a line break, the end, a `#` or an
+    /// invalid character, and not a macro's name. `None` (nothing consumed) otherwise, for
+    /// [`Pp::expand_next`]. Most tokens of a shader take this path.
+    pub(super) fn plain_text_token(&mut self, ex: &Expander) -> Option<PpToken> {
+        if ex.pending.is_some() || !ex.contexts.is_empty() {
+            return None;
+        }
+        let t = &self.toks[self.pos];
+        match t.kind {
+            PpKind::Eof
+            | PpKind::Newline
+            | PpKind::Invalid(_)
+            | PpKind::Punct(Punct::Hash | Punct::HashHash) => return None,
+            PpKind::Ident if self.macros.contains_key(&*t.text) => return None,
+            _ => {}
+        }
+        if self.skipping() {
+            return None;
+        }
+        let t = t.clone();
+        self.pos += 1;
+        self.line_start = false;
+        self.past_first = true;
+        self.seen_code = true;
+        Some(t)
+    }
+
     /// The next token after macro expansion (never a `Newline`; `Eof` at the end, repeatedly).
     pub(super) fn expand_next(&mut self, ex: &mut Expander) -> Tok {
         loop {

@@ -443,6 +443,10 @@ impl<'a> Pp<'a> {
     fn run(&mut self) {
         let mut ex = Expander::main();
         loop {
+            if let Some(t) = self.plain_text_token(&ex) {
+                self.out.push(t);
+                continue;
+            }
             let t = self.expand_next(&mut ex);
             match t.t.kind {
                 PpKind::Eof => break,
