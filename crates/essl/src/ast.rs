@@ -380,7 +380,7 @@ pub enum StmtKind {
     /// `default:`
     Default,
     /// `while (c) body`
-    While(Condition, Box<Stmt>),
+    While(Box<Condition>, Box<Stmt>),
     /// `do body while (c);`
     DoWhile(Box<Stmt>, Expr),
     /// `for (init; cond; step) body`
@@ -388,9 +388,9 @@ pub enum StmtKind {
         /// The init statement (a declaration or an expression statement; may be empty).
         init: Box<Stmt>,
         /// The condition (absent means true).
-        cond: Option<Condition>,
+        cond: Option<Box<Condition>>,
         /// The step expression.
-        step: Option<Expr>,
+        step: Option<Box<Expr>>,
         /// The body.
         body: Box<Stmt>,
     },

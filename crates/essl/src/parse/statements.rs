@@ -132,7 +132,7 @@ impl Parser<'_> {
             let cond = self.condition()?;
             self.expect_close(Punct::RightParen, open)?;
             let body = self.statement_no_new_scope()?;
-            Ok(StmtKind::While(cond, Box::new(body)))
+            Ok(StmtKind::While(Box::new(cond), Box::new(body)))
         })();
         self.pop_scope();
         r
@@ -162,13 +162,13 @@ impl Parser<'_> {
             let cond = if self.at(Punct::Semicolon) {
                 None
             } else {
-                Some(self.condition()?)
+                Some(Box::new(self.condition()?))
             };
             self.expect(Punct::Semicolon)?;
             let step = if self.at(Punct::RightParen) {
                 None
             } else {
-                Some(self.expr()?)
+                Some(Box::new(self.expr()?))
             };
             self.expect_close(Punct::RightParen, open)?;
             let body = self.statement_no_new_scope()?;
