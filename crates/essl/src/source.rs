@@ -106,19 +106,16 @@ impl SourceFile {
         // About one line per 24 bytes of a shader: one allocation for most files.
         let mut line_starts = Vec::with_capacity(bytes.len() / 24 + 2);
         line_starts.push(0u32);
+        // Each line break found with `memchr2` (a vectorised search), not byte by byte.
         let mut i = 0;
-        while i < bytes.len() {
-            match bytes[i] {
-                b'\n' => line_starts.push(i as u32 + 1),
-                b'\r' => {
-                    if bytes.get(i + 1) == Some(&b'\n') {
-                        i += 1;
-                    }
-                    line_starts.push(i as u32 + 1);
-                }
-                _ => {}
-            }
-            i += 1;
+        while let Some(at) = memchr::memchr2(b'\n', b'\r', &bytes[i..]) {
+            let at = i + at;
+            i = if bytes[at] == b'\r' && bytes.get(at + 1) == Some(&b'\n') {
+                at + 2
+            } else {
+                at + 1
+            };
+            line_starts.push(i as u32);
         }
         SourceFile {
             name: name.into(),
@@ -203,5 +200,21 @@ impl SourceFile {
             line: line as u32 + 1,
             column,
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::SourceFile;
+
+    #[test]
+    fn lines_end_at_lf_crlf_and_a_lone_cr() {
+        let f = SourceFile::new("t", "a\nb\r\nc\rd\r\r\n");
+        let starts: Vec<u32> = (0..f.line_count()).map(|l| f.line_start(l)).collect();
+        assert_eq!(starts, [0, 2, 5, 7, 9, 11]);
+        assert_eq!(f.line_text(1), "b");
+        assert_eq!(f.line_of(6), 3);
+        let empty = SourceFile::new("t", "");
+        assert_eq!(empty.line_count(), 1);
     }
 }
