@@ -311,12 +311,7 @@ impl Pp<'_> {
         if self.skipping() {
             return None;
         }
-        let t = t.clone();
-        self.pos += 1;
-        self.line_start = false;
-        self.past_first = true;
-        self.seen_code = true;
-        Some(t)
+        Some(self.take_code_token())
     }
 
     /// The next token after macro expansion (never a `Newline`; `Eof` at the end, repeatedly).

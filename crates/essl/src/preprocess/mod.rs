@@ -431,12 +431,18 @@ impl<'a> Pp<'a> {
                 }
                 continue;
             }
-            let t = self.toks[self.pos].clone();
-            self.pos += 1;
-            self.past_first = true;
-            self.seen_code = true;
-            return Tok::raw(t);
+            return Tok::raw(self.take_code_token());
         }
+    }
+
+    /// Consumes the token at `pos` as code (not a directive, not skipped).
+    fn take_code_token(&mut self) -> PpToken {
+        let t = self.toks[self.pos].clone();
+        self.pos += 1;
+        self.line_start = false;
+        self.past_first = true;
+        self.seen_code = true;
+        t
     }
 
     /// Expands the whole text into `out`.
