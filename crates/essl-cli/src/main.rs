@@ -394,7 +394,7 @@ fn rule_levels(
 
 #[cfg(feature = "mimalloc")]
 #[global_allocator]
-static ALLOCATOR: mimalloc::MiMalloc = mimalloc::MiMalloc;
+static ALLOCATOR: essl_alloc::Allocator = essl_alloc::Allocator;
 
 /// A glob set of `patterns`, or the pattern that is not a glob.
 fn glob_set(patterns: &[String]) -> Result<Option<globset::GlobSet>, String> {

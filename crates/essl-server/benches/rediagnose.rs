@@ -10,7 +10,7 @@ use std::time::Instant;
 
 /// The allocator `essl server` ships with (the CLI's default `mimalloc` feature).
 #[global_allocator]
-static ALLOCATOR: mimalloc::MiMalloc = mimalloc::MiMalloc;
+static ALLOCATOR: essl_alloc::Allocator = essl_alloc::Allocator;
 
 use criterion::{criterion_group, criterion_main, Criterion};
 use lsp_server::{Connection, Message, Notification, Request};

@@ -13,4 +13,4 @@ fn main() -> std::process::ExitCode {
 
 #[cfg(feature = "mimalloc")]
 #[global_allocator]
-static ALLOCATOR: mimalloc::MiMalloc = mimalloc::MiMalloc;
+static ALLOCATOR: essl_alloc::Allocator = essl_alloc::Allocator;

@@ -4,7 +4,7 @@
 use criterion::{criterion_group, criterion_main};
 
 #[global_allocator]
-static GLOBAL: mimalloc::MiMalloc = mimalloc::MiMalloc;
+static GLOBAL: essl_alloc::Allocator = essl_alloc::Allocator;
 
 #[path = "common/vs_naga.rs"]
 mod common;
