@@ -362,27 +362,25 @@ pub fn classify_as(
     lang: &Language,
     diagnostics: &mut Vec<Diagnostic>,
 ) -> Vec<Token> {
-    tokens
-        .into_iter()
-        .filter(|t| t.kind != PpKind::Newline)
-        .map(|t| {
-            let tok = match t.kind {
-                PpKind::Ident => word(&t.text, lang.es100),
-                PpKind::Number if lang.es100 => number_es100(&t.text, t.span, diagnostics),
-                PpKind::Number => number(&t.text, t.span, diagnostics),
-                PpKind::Punct(p) => Tok::P(p),
-                PpKind::Invalid(_) => Tok::Error,
-                PpKind::Eof => Tok::Eof,
-                PpKind::Newline => unreachable!("filtered"),
-            };
-            Token {
-                tok,
-                span: t.span,
-                text: t.text,
-                from_macro: t.from_macro,
-            }
-        })
-        .collect()
+    let mut out = Vec::with_capacity(tokens.len());
+    for t in tokens {
+        let tok = match t.kind {
+            PpKind::Newline => continue,
+            PpKind::Ident => word(&t.text, lang.es100),
+            PpKind::Number if lang.es100 => number_es100(&t.text, t.span, diagnostics),
+            PpKind::Number => number(&t.text, t.span, diagnostics),
+            PpKind::Punct(p) => Tok::P(p),
+            PpKind::Invalid(_) => Tok::Error,
+            PpKind::Eof => Tok::Eof,
+        };
+        out.push(Token {
+            tok,
+            span: t.span,
+            text: t.text,
+            from_macro: t.from_macro,
+        });
+    }
+    out
 }
 
 /// Parses a preprocessing number as GLSL ES 3.00 does.
