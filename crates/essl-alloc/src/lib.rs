@@ -99,7 +99,10 @@ mod tests {
         let at = |size| Layout::from_size_align(size, align).unwrap();
         let aligned = |p: *mut u8, what: &str| {
             assert!(!p.is_null(), "{what}: null for size {size} align {align}");
-            assert!((p as usize).is_multiple_of(align), "{what}: size {size} align {align}");
+            assert!(
+                (p as usize).is_multiple_of(align),
+                "{what}: size {size} align {align}"
+            );
         };
         // SAFETY: each pointer is used within its layout's size and freed once, with it.
         unsafe {
@@ -148,7 +151,9 @@ mod tests {
         // SAFETY: every block is freed once, with its layout.
         unsafe {
             let blocks: Vec<*mut u8> = (0..100_000).map(|_| a.alloc(layout)).collect();
-            assert!(blocks.iter().all(|p| !p.is_null() && (*p as usize).is_multiple_of(16)));
+            assert!(blocks
+                .iter()
+                .all(|p| !p.is_null() && (*p as usize).is_multiple_of(16)));
             for p in blocks {
                 a.dealloc(p, layout);
             }

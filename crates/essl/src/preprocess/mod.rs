@@ -40,13 +40,12 @@
 //! Every error is reported with recovery (a bad directive is skipped to the end of its line).
 //! The work is linear in the input plus the tokens macros produce, which is bounded.
 
+mod defined;
 mod directive;
 mod expand;
 mod expr;
 
 use crate::diagnostic_code::Code;
-use rustc_hash::FxHashMap as HashMap;
-use std::rc::Rc;
 use std::sync::Arc;
 
 use crate::diagnostic::{self, Diagnostic, Fix};
@@ -275,7 +274,7 @@ pub(super) struct Pp<'a> {
     /// (where a no-break space is harmless, as in a comment).
     line_begin: u32,
     skipped_lines: Vec<Span>,
-    macros: HashMap<Arc<str>, Rc<Macro>>,
+    macros: defined::Defined,
     conds: Vec<Cond>,
     diags: Vec<Diagnostic>,
     out: Vec<PpToken>,
@@ -317,7 +316,7 @@ impl<'a> Pp<'a> {
             line_start: true,
             line_begin: 0,
             skipped_lines: Vec::new(),
-            macros: HashMap::default(),
+            macros: defined::Defined::default(),
             conds: Vec::new(),
             diags: Vec::new(),
             out,
@@ -351,13 +350,11 @@ impl<'a> Pp<'a> {
         self.macros
             .reserve(predefined.len() + self.options.extensions.len() + 8);
         for (name, value, dynamic) in predefined {
-            let m = Macro::predefined(name, value, dynamic);
-            self.macros.insert(m.name.clone(), Rc::new(m));
+            self.macros.insert(Macro::predefined(name, value, dynamic));
         }
         for ext in &self.options.extensions {
             if !self.macros.contains_key(ext.as_str()) {
-                let m = Macro::predefined(ext, "1", None);
-                self.macros.insert(m.name.clone(), Rc::new(m));
+                self.macros.insert(Macro::predefined(ext, "1", None));
             }
         }
         for (name, value) in &self.options.defines {
@@ -367,8 +364,8 @@ impl<'a> Pp<'a> {
 
     /// Sets `__VERSION__`.
     fn set_version_macro(&mut self, n: u32) {
-        let m = Macro::predefined("__VERSION__", &n.to_string(), None);
-        self.macros.insert(m.name.clone(), Rc::new(m));
+        self.macros
+            .insert(Macro::predefined("__VERSION__", &n.to_string(), None));
     }
 
     /// Whether the current group is skipped.

@@ -2,7 +2,6 @@
 //! may be defined), `#undef`, and macros defined from the options.
 use crate::diagnostic_code::Code;
 use std::cell::Cell;
-use std::rc::Rc;
 use std::sync::Arc;
 
 use super::Directive;
@@ -280,7 +279,7 @@ impl Pp<'_> {
 
     fn insert_macro(&mut self, m: Macro) {
         let Some(old) = self.macros.get(&m.name) else {
-            self.macros.insert(m.name.clone(), Rc::new(m));
+            self.macros.insert(m);
             return;
         };
         if old.origin == Origin::Options {
@@ -299,7 +298,7 @@ impl Pp<'_> {
                     .with_token(&*m.name),
                 );
             }
-            self.macros.insert(m.name.clone(), Rc::new(m));
+            self.macros.insert(m);
             return;
         }
         if old.same_as(&m) {
