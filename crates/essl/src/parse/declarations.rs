@@ -43,7 +43,7 @@ impl Parser<'_> {
 
     fn external(&mut self) -> PResult<Option<ExternalDecl>> {
         if self.at(Punct::Semicolon) {
-            let s = self.bump().span;
+            let s = self.bump_span();
             self.report(
                 Diagnostic::error(Code::SyntaxError, "unexpected `;` at global scope", s)
                     .with_label("an empty declaration")
@@ -54,7 +54,7 @@ impl Parser<'_> {
             return Ok(None);
         }
         if self.at(Punct::RightBrace) {
-            let s = self.bump().span;
+            let s = self.bump_span();
             self.report(
                 Diagnostic::error(Code::SyntaxError, "unmatched `}`", s)
                     .with_label("no block to close here")
@@ -105,7 +105,7 @@ impl Parser<'_> {
     }
 
     fn precision_statement(&mut self) -> PResult<Declaration> {
-        let start = self.bump().span;
+        let start = self.bump_span();
         let precision = match self.tok() {
             Tok::Kw(Kw::Lowp) => Precision::Low,
             Tok::Kw(Kw::Mediump) => Precision::Medium,
@@ -123,7 +123,7 @@ impl Parser<'_> {
     }
 
     fn invariant_statement(&mut self) -> PResult<Declaration> {
-        let start = self.bump().span;
+        let start = self.bump_span();
         let mut names = vec![self.ident("a variable name")?];
         while self.eat(Punct::Comma) {
             names.push(self.ident("a variable name")?);

@@ -143,8 +143,8 @@ impl Parser<'_> {
     }
 
     pub(super) fn unary(&mut self) -> PResult<Expr> {
-        let t = self.peek().clone();
-        let op = match t.tok {
+        let start = self.peek().span;
+        let op = match self.peek().tok {
             Tok::P(Punct::Plus) => Some(UnaryOp::Plus),
             Tok::P(Punct::Minus) => Some(UnaryOp::Neg),
             Tok::P(Punct::Bang) => Some(UnaryOp::Not),
@@ -159,7 +159,7 @@ impl Parser<'_> {
             let e = self.unary();
             self.leave();
             let e = e?;
-            let span = t.span.to(e.span);
+            let span = start.to(e.span);
             return Ok(Expr {
                 kind: ExprKind::Unary(op, Box::new(e)),
                 span,
@@ -190,7 +190,7 @@ impl Parser<'_> {
             }
             match self.tok() {
                 Tok::P(Punct::LeftBracket) => {
-                    let open = self.bump().span;
+                    let open = self.bump_span();
                     let i = self.expr()?;
                     self.expect_close(Punct::RightBracket, open)?;
                     let span = self.span_from(e.span);
@@ -201,14 +201,14 @@ impl Parser<'_> {
                 }
                 Tok::P(Punct::Dot) => {
                     self.advance();
-                    let name = match self.tok().clone() {
+                    let name = match self.tok() {
                         // `v.length()` and swizzles/members named like keywords are not a thing,
                         // but give a clear message.
                         Tok::Ident(_) | Tok::Reserved(_) => self.ident("a field name")?,
                         _ => return Err(self.expected("a field name or swizzle after `.`")),
                     };
                     if &*name.name == "length" && self.at(Punct::LeftParen) {
-                        let open = self.bump().span;
+                        let open = self.bump_span();
                         self.expect_close(Punct::RightParen, open)?;
                         let span = self.span_from(e.span);
                         e = Expr {
@@ -237,7 +237,7 @@ impl Parser<'_> {
                     }
                 }
                 Tok::P(Punct::PlusPlus) => {
-                    let s = self.bump().span;
+                    let s = self.bump_span();
                     let span = e.span.to(s);
                     e = Expr {
                         kind: ExprKind::Unary(UnaryOp::PostInc, Box::new(e)),
@@ -245,7 +245,7 @@ impl Parser<'_> {
                     };
                 }
                 Tok::P(Punct::MinusMinus) => {
-                    let s = self.bump().span;
+                    let s = self.bump_span();
                     let span = e.span.to(s);
                     e = Expr {
                         kind: ExprKind::Unary(UnaryOp::PostDec, Box::new(e)),
@@ -275,15 +275,15 @@ impl Parser<'_> {
     }
 
     fn primary(&mut self) -> PResult<Expr> {
-        let t = self.peek().clone();
-        let kind = match &t.tok {
+        let start = self.peek().span;
+        let kind = match self.peek().tok {
             Tok::Int(v, u) => {
                 self.advance();
-                ExprKind::Int(*v, *u)
+                ExprKind::Int(v, u)
             }
             Tok::Float(f) => {
                 self.advance();
-                ExprKind::Float(*f)
+                ExprKind::Float(f)
             }
             Tok::Kw(Kw::True) => {
                 self.advance();
@@ -294,7 +294,7 @@ impl Parser<'_> {
                 ExprKind::Bool(false)
             }
             Tok::P(Punct::LeftParen) => {
-                let open = self.bump().span;
+                let open = self.bump_span();
                 let e = self.expr()?;
                 let close = self.expect_close(Punct::RightParen, open)?;
                 return Ok(Expr {
@@ -302,7 +302,7 @@ impl Parser<'_> {
                     span: open.to(close),
                 });
             }
-            Tok::Ident(name) if self.is_type_name(name) => {
+            Tok::Ident(ref name) if self.is_type_name(name) => {
                 let spec = self.type_spec()?;
                 if !self.at(Punct::LeftParen) {
                     return Err(self.expected("`(` after a type name (a constructor)"));
@@ -331,14 +331,14 @@ impl Parser<'_> {
                 let d = Diagnostic::error(
                     Code::SyntaxError,
                     "a struct cannot be defined inside an expression",
-                    t.span,
+                    start,
                 )
                 .with_label("not expected here")
                 .with_token("struct");
                 self.report(d);
                 return Err(Failed);
             }
-            Tok::Kw(k) if type_keyword(*k).is_some() => {
+            Tok::Kw(k) if type_keyword(k).is_some() => {
                 let spec = self.type_spec()?;
                 if !self.at(Punct::LeftParen) {
                     return Err(self.expected("`(` after a type name (a constructor)"));
@@ -350,7 +350,7 @@ impl Parser<'_> {
         };
         Ok(Expr {
             kind,
-            span: self.span_from(t.span),
+            span: self.span_from(start),
         })
     }
 }

@@ -130,6 +130,13 @@ impl<'a> Parser<'a> {
         t
     }
 
+    /// Moves past the current token and gives its span (no copy of the token).
+    fn bump_span(&mut self) -> Span {
+        let span = self.peek().span;
+        self.advance();
+        span
+    }
+
     /// Moves past the current token (never past the final `Eof`).
     fn advance(&mut self) {
         if self.pos < self.toks.len() - 1 {
@@ -320,7 +327,7 @@ impl<'a> Parser<'a> {
 
     fn expect(&mut self, p: Punct) -> PResult<Span> {
         if self.at(p) {
-            Ok(self.bump().span)
+            Ok(self.bump_span())
         } else {
             Err(self.expected(&format!("`{}`", p.as_str())))
         }
@@ -329,7 +336,7 @@ impl<'a> Parser<'a> {
     /// Expects a closing delimiter, pointing back at the opening one.
     fn expect_close(&mut self, close: Punct, open: Span) -> PResult<Span> {
         if self.at(close) {
-            return Ok(self.bump().span);
+            return Ok(self.bump_span());
         }
         let t = self.peek().clone();
         if t.tok == Tok::Error {

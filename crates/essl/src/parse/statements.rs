@@ -55,7 +55,7 @@ impl Parser<'_> {
 
     fn statement_inner(&mut self) -> PResult<Stmt> {
         let start = self.peek().span;
-        let kind = match self.tok().clone() {
+        let kind = match *self.tok() {
             Tok::P(Punct::LeftBrace) => {
                 self.push_scope();
                 let b = self.block_stmts();

@@ -72,8 +72,8 @@ impl Parser<'_> {
     pub(super) fn qualifiers(&mut self) -> PResult<Vec<(Qualifier, Span)>> {
         let mut out = Vec::new();
         loop {
-            let t = self.peek().clone();
-            let q = match &t.tok {
+            let span = self.peek().span;
+            let q = match self.peek().tok {
                 Tok::Kw(Kw::Const) => Qualifier::Storage(Storage::Const),
                 Tok::Kw(Kw::In) => Qualifier::Storage(Storage::In),
                 Tok::Kw(Kw::Out) => Qualifier::Storage(Storage::Out),
@@ -105,27 +105,28 @@ impl Parser<'_> {
                         }
                     }
                     self.expect_close(Punct::RightParen, open)?;
-                    out.push((Qualifier::Layout(items), self.span_from(t.span)));
+                    out.push((Qualifier::Layout(items), self.span_from(span)));
                     continue;
                 }
-                Tok::Reserved(name) if &**name == "attribute" || &**name == "varying" => {
+                Tok::Reserved(ref name) if &**name == "attribute" || &**name == "varying" => {
                     // ES 1.00 qualifiers: report once, then read them as their ES 3.00 twins.
-                    let replacement = match (&**name, self.stage) {
+                    let name = name.clone();
+                    let replacement = match (&*name, self.stage) {
                         ("attribute", _) | ("varying", Stage::Fragment) => "in",
                         _ => "out",
                     };
                     let d = Diagnostic::error(
                         Code::Es100Qualifier,
                         format!("`{name}` is GLSL ES 1.00 and is reserved in GLSL ES 3.00"),
-                        t.span,
+                        span,
                     )
                     .with_label("not a qualifier in GLSL ES 3.00")
                     .with_fix(Fix::certain(
                         format!("write `{replacement}`"),
-                        t.span,
+                        span,
                         replacement,
                     ))
-                    .with_token(&**name);
+                    .with_token(&*name);
                     if !self.suppress {
                         self.push_diag(d);
                     }
@@ -138,7 +139,7 @@ impl Parser<'_> {
                 _ => break,
             };
             self.advance();
-            out.push((q, t.span));
+            out.push((q, span));
         }
         Ok(out)
     }
@@ -146,23 +147,40 @@ impl Parser<'_> {
     /// Parses a type specifier: a type keyword, a struct name or a struct definition, with an
     /// optional array size.
     pub(super) fn type_spec(&mut self) -> PResult<TypeSpec> {
-        let t = self.peek().clone();
-        let name = match &t.tok {
+        let start = self.peek().span;
+        let name = match self.peek().tok {
             Tok::Kw(Kw::Struct) => TypeName::Struct(Arc::new(self.struct_decl()?)),
-            Tok::Kw(k) => match type_keyword(*k) {
+            Tok::Kw(k) => match type_keyword(k) {
                 Some(n) => {
                     self.advance();
                     n
                 }
                 None => return Err(self.expected("a type")),
             },
-            Tok::Ident(name) if self.is_type_name(name) => {
+            Tok::Ident(ref name) if self.is_type_name(name) => {
+                let name = name.clone();
                 self.advance();
-                TypeName::Named(Ident {
-                    name: name.clone(),
-                    span: t.span,
-                })
+                TypeName::Named(Ident { name, span: start })
             }
+            _ => return Err(self.not_a_type()),
+        };
+        let array = if self.at(Punct::LeftBracket) {
+            Some(self.array_size()?)
+        } else {
+            None
+        };
+        Ok(TypeSpec {
+            name,
+            array,
+            span: self.span_from(start),
+        })
+    }
+
+    /// Reports the current token where a type was expected: a variable hiding a struct, an
+    /// unknown name, a reserved word or anything else.
+    fn not_a_type(&mut self) -> Failed {
+        let t = self.peek().clone();
+        match &t.tok {
             Tok::Ident(name) if self.hides_type(name) => {
                 let d = Diagnostic::error(
                     Code::UnknownType,
@@ -174,7 +192,7 @@ impl Parser<'_> {
                 .with_help("rename the variable, or use the type outside the variable's scope")
                 .with_token(&**name);
                 self.report(d);
-                return Err(Failed);
+                Failed
             }
             Tok::Ident(name) => {
                 let d =
@@ -217,26 +235,16 @@ impl Parser<'_> {
                     _ => d.with_help("declare the struct before this line, or use a built-in type"),
                 };
                 self.report(d);
-                return Err(Failed);
+                Failed
             }
             Tok::Reserved(name) => {
                 self.advance();
                 self.reserved_word(&name.clone(), t.span);
                 self.suppress = true;
-                return Err(Failed);
+                Failed
             }
-            _ => return Err(self.expected("a type")),
-        };
-        let array = if self.at(Punct::LeftBracket) {
-            Some(self.array_size()?)
-        } else {
-            None
-        };
-        Ok(TypeSpec {
-            name,
-            array,
-            span: self.span_from(t.span),
-        })
+            _ => self.expected("a type"),
+        }
     }
 
     pub(super) fn array_size(&mut self) -> PResult<ArraySize> {
@@ -254,7 +262,7 @@ impl Parser<'_> {
     }
 
     fn struct_decl(&mut self) -> PResult<StructDecl> {
-        let start = self.bump().span; // `struct`
+        let start = self.bump_span(); // `struct`
         let name = match self.tok() {
             Tok::Ident(_) | Tok::Reserved(_) => Some(self.ident("a struct name")?),
             _ => None,
