@@ -195,29 +195,34 @@ thread_local! {
 
 /// Validates a lowered module the way wgpu will.
 fn validate(module: &naga::Module, stage: Stage) -> Result<naga::valid::ModuleInfo, LowerError> {
-    let result = VALIDATOR.with(|v| match v.try_borrow_mut() {
-        Ok(mut v) => v.validate(module),
-        Err(_) => validator().validate(module), // not reached: validation does not re-enter
-    });
-    result.map_err(|e| {
-        let span = e
-            .spans()
-            .next()
-            .map(|(s, _)| Span::from(*s))
-            .unwrap_or_default();
-        let mut message = e.as_inner().to_string();
-        let mut source: Option<&dyn std::error::Error> = std::error::Error::source(e.as_inner());
-        while let Some(s) = source {
-            message.push_str(": ");
-            message.push_str(&s.to_string());
-            source = s.source();
+    VALIDATOR.with(|v| {
+        match v.try_borrow_mut() {
+            Ok(mut v) => v.validate(module),
+            Err(_) => validator().validate(module), // not reached: validation does not re-enter
         }
-        LowerError::Invalid {
-            stage: stage.as_str(),
-            message,
-            span,
-        }
+        .map_err(|e| invalid(&e, stage))
     })
+}
+
+/// A validation error as a [`LowerError`]: naga's message with its causes, at its first span.
+fn invalid(e: &naga::WithSpan<naga::valid::ValidationError>, stage: Stage) -> LowerError {
+    let span = e
+        .spans()
+        .next()
+        .map(|(s, _)| Span::from(*s))
+        .unwrap_or_default();
+    let mut message = e.as_inner().to_string();
+    let mut source: Option<&dyn std::error::Error> = std::error::Error::source(e.as_inner());
+    while let Some(s) = source {
+        message.push_str(": ");
+        message.push_str(&s.to_string());
+        source = s.source();
+    }
+    LowerError::Invalid {
+        stage: stage.as_str(),
+        message,
+        span,
+    }
 }
 
 /// Lowers a linked program for a GPU API: both stages share one default uniform block and one

@@ -269,10 +269,7 @@ impl Pp<'_> {
                 // even when it is read as an argument after that expansion has ended
                 // (`#define a m((a)` then `a)`: the argument's `a` is not expanded again).
                 if t.t.kind == PpKind::Ident
-                    && self
-                        .macros
-                        .get(&*t.t.text)
-                        .is_some_and(|m| m.disabled.get())
+                    && self.macros.get(&t.t.text).is_some_and(|m| m.disabled.get())
                 {
                     t.no_expand = true;
                 }
@@ -305,7 +302,7 @@ impl Pp<'_> {
             | PpKind::Newline
             | PpKind::Invalid(_)
             | PpKind::Punct(Punct::Hash | Punct::HashHash) => return None,
-            PpKind::Ident if self.macros.contains_key(&*t.text) => return None,
+            PpKind::Ident if self.macros.contains_key(&t.text) => return None,
             _ => {}
         }
         if self.skipping() {
@@ -324,7 +321,7 @@ impl Pp<'_> {
             if ex.if_mode && &*t.t.text == "defined" {
                 return self.defined_operator(ex, t);
             }
-            let Some(m) = self.macros.get(&*t.t.text).cloned() else {
+            let Some(m) = self.macros.get(&t.t.text).cloned() else {
                 return t;
             };
             if m.disabled.get() {
@@ -711,7 +708,7 @@ impl Pp<'_> {
             }
             return value(op.t.span, false);
         }
-        let v = self.macros.contains_key(&*t.t.text);
+        let v = self.macros.contains_key(&t.t.text);
         let mut span = op.t.span.to(t.t.span);
         if paren {
             let close = self.raw_get(ex);

@@ -93,7 +93,7 @@ impl Pp<'_> {
         if d.args().len() > 1 {
             self.extra_tokens(d, 2, &format!("{what} {}", name.text));
         }
-        Some(self.macros.contains_key(&*name.text))
+        Some(self.macros.contains_key(&name.text))
     }
 
     pub(super) fn d_elif(&mut self, d: &Directive) {

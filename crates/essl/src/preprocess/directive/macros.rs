@@ -337,7 +337,7 @@ impl Pp<'_> {
         let Some(name) = self.macro_name(d, "#undef") else {
             return;
         };
-        if let Some(m) = self.macros.get(&*name.text) {
+        if let Some(m) = self.macros.get(&name.text) {
             if m.origin == Origin::Predefined {
                 self.push_diag(
                     Diagnostic::error(
@@ -368,7 +368,7 @@ impl Pp<'_> {
                 );
                 return;
             }
-            self.macros.remove(&*name.text);
+            self.macros.remove(&name.text);
         }
         if d.args().len() > 1 {
             self.extra_tokens(d, 2, &format!("#undef {}", name.text));
