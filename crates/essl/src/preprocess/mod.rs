@@ -54,7 +54,7 @@ use crate::source::{SourceFile, Span};
 use crate::target::{Extension, Target};
 use crate::Stage;
 
-use expand::{Dynamic, Expander, Macro, Tok};
+use expand::{Dynamic, Expander, Tok};
 
 /// Options of the preprocessor.
 #[derive(Clone, Debug, Default)]
@@ -350,11 +350,11 @@ impl<'a> Pp<'a> {
         self.macros
             .reserve(predefined.len() + self.options.extensions.len() + 8);
         for (name, value, dynamic) in predefined {
-            self.macros.insert(Macro::predefined(name, value, dynamic));
+            self.macros.predefine(name, value, dynamic);
         }
         for ext in &self.options.extensions {
             if !self.macros.contains_key(ext.as_str()) {
-                self.macros.insert(Macro::predefined(ext, "1", None));
+                self.macros.predefine(ext, "1", None);
             }
         }
         for (name, value) in &self.options.defines {
@@ -364,8 +364,7 @@ impl<'a> Pp<'a> {
 
     /// Sets `__VERSION__`.
     fn set_version_macro(&mut self, n: u32) {
-        self.macros
-            .insert(Macro::predefined("__VERSION__", &n.to_string(), None));
+        self.macros.predefine("__VERSION__", &n.to_string(), None);
     }
 
     /// Whether the current group is skipped.
