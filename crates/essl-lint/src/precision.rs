@@ -23,7 +23,10 @@ pub struct Precisions {
 impl Precisions {
     /// Computes the precisions of every expression of the module's functions.
     pub fn of(module: &Module) -> Precisions {
-        let mut p = Precisions::default();
+        // Room for a short shader's expressions: the first rehashes cost more than the walk.
+        let mut p = Precisions {
+            by_span: HashMap::with_capacity_and_hasher(64, Default::default()),
+        };
         for f in &module.functions {
             let mut w = Walker {
                 m: module,
