@@ -2,7 +2,7 @@
 //! in members, layout and precision); the active list in ANGLE's order.
 
 use crate::diagnostic_code::Code;
-use std::collections::HashMap;
+use rustc_hash::FxHashMap as HashMap;
 
 use super::{field_names_differ, same_precision, same_type, static_uses, ActiveUniform, Linker};
 use crate::hir::{GlobalId, GlobalKind, Module};
@@ -191,9 +191,9 @@ fn active_default_uniforms(
     fr: &reflect::Reflection,
 ) -> Vec<ActiveUniform> {
     let mut entries: Vec<Entry> = Vec::new();
-    let mut index: HashMap<String, usize> = HashMap::new();
+    let mut index: HashMap<String, usize> = HashMap::default();
     for (stage_rank, (module, refl)) in [(vm, vr), (fm, fr)].into_iter().enumerate() {
-        let mut decl_order: HashMap<GlobalId, usize> = HashMap::new();
+        let mut decl_order: HashMap<GlobalId, usize> = HashMap::default();
         for (leaf, used) in &refl.uniforms {
             let UniformSource::Default { global, .. } = &leaf.source else {
                 continue;
@@ -247,7 +247,7 @@ fn append_block_uniforms(
     vr: &reflect::Reflection,
     fr: &reflect::Reflection,
 ) {
-    let mut seen: HashMap<String, usize> = HashMap::new();
+    let mut seen: HashMap<String, usize> = HashMap::default();
     for (stage_rank, refl) in [vr, fr].into_iter().enumerate() {
         for leaf in &refl.block_uniforms {
             if let Some(&i) = seen.get(&leaf.name) {

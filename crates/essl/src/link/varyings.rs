@@ -2,7 +2,7 @@
 //! and the varyings packed into `MAX_VARYING_VECTORS` rows ([`super::packing`]).
 
 use crate::diagnostic_code::Code;
-use std::collections::HashMap;
+use rustc_hash::FxHashMap as HashMap;
 
 use super::packing::{items_of, pack, PackItem};
 use super::{location_count, same_type, static_uses, Linker, Varying};

@@ -23,7 +23,7 @@ pub mod layout;
 mod plan;
 mod stage;
 
-use std::collections::HashMap;
+use rustc_hash::FxHashMap as HashMap;
 
 use naga::{Handle, Span as NSpan};
 use thiserror::Error;

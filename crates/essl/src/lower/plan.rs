@@ -3,7 +3,7 @@
 //! bindings — for a shader on its own or for a linked program (whose two stages share one
 //! default block and one set of sampler slots), with the program's reflection built beside.
 
-use std::collections::HashMap;
+use rustc_hash::FxHashMap as HashMap;
 
 use crate::builtins::BuiltinVar;
 use crate::hir::{self, GlobalId, GlobalKind};
@@ -176,7 +176,7 @@ impl<'m> ProgramPlanner<'m> {
             pplan: ProgramPlan::default(),
             vplan: StagePlan::default(),
             fplan: StagePlan::default(),
-            member_of: HashMap::new(),
+            member_of: HashMap::default(),
             slots: Vec::new(),
             uniforms: Vec::new(),
             blocks: Vec::new(),

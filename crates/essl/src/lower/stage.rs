@@ -2,7 +2,7 @@
 //! texture and sampler bindings, private variables for globals and built-ins, the functions
 //! `main` calls (callees first) and the entry point that wraps `main`.
 
-use std::collections::HashMap;
+use rustc_hash::FxHashMap as HashMap;
 
 use naga::{Handle, Span as NSpan};
 
@@ -30,10 +30,10 @@ pub(super) fn lower_stage(
         module: naga::Module::default(),
         types: Types::new(&m.structs),
         globals: vec![GlobalLower::None; m.globals.len()],
-        builtins: HashMap::new(),
+        builtins: HashMap::default(),
         functions: vec![None; m.functions.len()],
         blocks: vec![None; m.blocks.len()],
-        samplers: HashMap::new(),
+        samplers: HashMap::default(),
         stage: m.stage,
         options: options.clone(),
         fb_height: None,
@@ -72,7 +72,7 @@ impl ModuleCx<'_> {
     fn default_uniform_block(&mut self, plan: &StagePlan, pplan: &ProgramPlan) {
         let m = self.hir;
         let mut members = Vec::new();
-        let mut member_index: HashMap<GlobalId, (u32, Repr)> = HashMap::new();
+        let mut member_index: HashMap<GlobalId, (u32, Repr)> = HashMap::default();
         let mut plan_uniforms = plan.uniforms.clone();
         plan_uniforms.sort_by_key(|(_, i)| pplan.block_members[*i].offset);
         for (gi, idx) in &plan_uniforms {

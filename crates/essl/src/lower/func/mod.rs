@@ -223,7 +223,7 @@ pub(crate) fn lower_function(cx: &mut ModuleCx, id: FuncId) -> Result<naga::Func
             }
         }
     }
-    let mut param_samplers = sampler::ParamSamplers::new();
+    let mut param_samplers = sampler::ParamSamplers::default();
     for (param, path, st) in sampler_args {
         let (img, smp) = super::sampler_types(&mut cx.module, st);
         let i = f.arguments.len() as u32;

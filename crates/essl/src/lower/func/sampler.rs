@@ -8,7 +8,7 @@
 //!   placeholders, as in every struct), each sampler in it becomes a texture and a sampler
 //!   argument of its own, which the caller fills from its argument at the same path.
 
-use std::collections::HashMap;
+use rustc_hash::FxHashMap as HashMap;
 
 use naga::{Expression, Handle, Statement};
 
