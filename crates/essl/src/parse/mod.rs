@@ -56,6 +56,7 @@ pub fn parse_as(
         diags: Vec::new(),
         suppress: false,
         type_names: vec![HashMap::default()],
+        any_struct: false,
         depth: 0,
         too_deep_reported: false,
         stage,
@@ -92,6 +93,10 @@ struct Parser<'a> {
     /// parameter, which hides a struct of the same name in the scopes around it (GLSL ES
     /// §4.2.2). Whether an identifier starts a declaration or an expression depends on it.
     type_names: Vec<HashMap<Arc<str>, bool>>,
+    /// Whether a struct was declared yet. Until one is, no name is a type and none hides one,
+    /// so variables need not be recorded: a struct declared later is in the same scope as
+    /// the open ones' variables or in a scope inside them, and is found first either way.
+    any_struct: bool,
     depth: u32,
     too_deep_reported: bool,
     stage: Stage,
@@ -189,6 +194,9 @@ impl<'a> Parser<'a> {
     }
 
     fn is_type_name(&self, name: &str) -> bool {
+        if !self.any_struct {
+            return false;
+        }
         self.type_names
             .iter()
             .rev()
@@ -198,6 +206,9 @@ impl<'a> Parser<'a> {
 
     /// Whether `name` is a struct's name hidden by a variable or parameter in an inner scope.
     fn hides_type(&self, name: &str) -> bool {
+        if !self.any_struct {
+            return false;
+        }
         let mut hits = self.type_names.iter().rev().filter_map(|s| s.get(name));
         hits.next() == Some(&false) && hits.any(|t| *t)
     }
@@ -205,6 +216,10 @@ impl<'a> Parser<'a> {
     /// Records a struct's name (`is_type`) or a variable's or parameter's in the innermost
     /// scope.
     fn declare_name(&mut self, name: &Arc<str>, is_type: bool) {
+        self.any_struct |= is_type;
+        if !self.any_struct {
+            return;
+        }
         if let Some(scope) = self.type_names.last_mut() {
             scope.insert(name.clone(), is_type);
         }
