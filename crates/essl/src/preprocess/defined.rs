@@ -47,13 +47,16 @@ impl Defined {
 
     /// Defines (or redefines) the macro `m`.
     pub fn insert(&mut self, m: Macro) {
-        self.first |= bit(&m.name);
-        self.map.insert(m.name.clone(), Rc::new(m));
+        self.insert_shared(Rc::new(m));
     }
 
     /// Defines the predefined macro `name` with the value `value` (a number).
     pub fn predefine(&mut self, name: &str, value: &str, dynamic: Option<Dynamic>) {
-        let m = shared_predefined(name, value, dynamic);
+        self.insert_shared(shared_predefined(name, value, dynamic));
+    }
+
+    /// Defines `m`, keeping [`Defined::first`] in step with the names.
+    fn insert_shared(&mut self, m: Rc<Macro>) {
         self.first |= bit(&m.name);
         self.map.insert(m.name.clone(), m);
     }
