@@ -1,5 +1,6 @@
 //! The syntax tree of a GLSL ES shader, as written (before name resolution and types).
 
+use crate::Name;
 use std::sync::Arc;
 
 use crate::source::Span;
@@ -9,7 +10,7 @@ use crate::types::{Precision, SamplerType, ScalarKind};
 #[derive(Clone, Debug, PartialEq)]
 pub struct Ident {
     /// The name.
-    pub name: Arc<str>,
+    pub name: Name,
     /// Where it is written.
     pub span: Span,
 }

@@ -5,7 +5,7 @@
 
 pub mod visit;
 
-use std::sync::Arc;
+use crate::Name;
 
 pub use crate::ast::{BinaryOp, Interpolation};
 pub use crate::builtins::{BuiltinFn, BuiltinVar};
@@ -70,7 +70,7 @@ pub enum GlobalKind {
 #[derive(Clone, Debug)]
 pub struct Global {
     /// Its name.
-    pub name: Arc<str>,
+    pub name: Name,
     /// Its type.
     pub ty: Type,
     /// Where it lives.
@@ -106,13 +106,13 @@ pub enum Init {
 #[derive(Clone, Debug)]
 pub struct UniformBlock {
     /// The block's name.
-    pub name: Arc<str>,
+    pub name: Name,
     /// The instance name (`None`: members are visible at global scope).
-    pub instance: Option<Arc<str>>,
+    pub instance: Option<Name>,
     /// Instance array size.
     pub array: Option<u32>,
     /// Members: (name, type, precision, row_major).
-    pub members: Vec<(Arc<str>, Type, Option<Precision>, bool)>,
+    pub members: Vec<(Name, Type, Option<Precision>, bool)>,
     /// `std140` (the default in WebGL), `shared` or `packed`.
     pub layout: BlockLayout,
     /// Where it is declared.
@@ -147,7 +147,7 @@ pub enum ParamMode {
 #[derive(Clone, Debug)]
 pub struct Param {
     /// Its name (parameters without a name get an internal one).
-    pub name: Arc<str>,
+    pub name: Name,
     /// Its type.
     pub ty: Type,
     /// How it passes.
@@ -164,7 +164,7 @@ pub struct Param {
 #[derive(Clone, Debug)]
 pub struct Local {
     /// Its name.
-    pub name: Arc<str>,
+    pub name: Name,
     /// Its type.
     pub ty: Type,
     /// `const` locals have a folded value and are never assigned.
@@ -179,7 +179,7 @@ pub struct Local {
 #[derive(Clone, Debug)]
 pub struct Function {
     /// Its name.
-    pub name: Arc<str>,
+    pub name: Name,
     /// The mangled name (name + parameter types) that distinguishes overloads.
     pub signature: String,
     /// Its parameters.

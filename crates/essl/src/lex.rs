@@ -8,7 +8,7 @@
 //! [`PpKind::Invalid`] tokens for the preprocessor to report where they are not skipped.
 
 use crate::diagnostic_code::Code;
-use std::sync::Arc;
+use crate::Name;
 
 use crate::diagnostic::{Applicability, Diagnostic, Edit, Fix};
 use crate::source::{SourceFile, Span};
@@ -151,7 +151,7 @@ pub struct PpToken {
     /// was invoked).
     pub span: Span,
     /// Its text (line continuations inside it removed).
-    pub text: Arc<str>,
+    pub text: Name,
     /// Whitespace or a comment precedes it on its line.
     pub space_before: bool,
     /// It comes from a macro expansion.
@@ -294,14 +294,9 @@ pub fn lex(file: &SourceFile) -> Lexed {
         diagnostics: Vec::new(),
     };
     let mut names = Interner {
-        // About one distinct text per 16 bytes of a typical shader: no rehash while it fills.
-        map: rustc_hash::FxHashMap::with_capacity_and_hasher(
-            (text.len() / 16).clamp(64, 4096),
-            Default::default(),
-        ),
-        puncts: std::array::from_fn(|_| None),
+        long: rustc_hash::FxHashMap::default(),
     };
-    let newline = names.intern("\n");
+    let newline = Name::new_static("\n");
     // No-break spaces per physical line: (span, inside a comment).
     let mut nbsp: Vec<(Span, bool)> = Vec::new();
     let mut space_before = false;
@@ -372,7 +367,7 @@ pub fn lex(file: &SourceFile) -> Lexed {
             }
             c => {
                 let (kind, s) = match punct(c, &mut cur) {
-                    Some(p) => (PpKind::Punct(p), names.punct(p)),
+                    Some(p) => (PpKind::Punct(p), Name::new_static(p.as_str())),
                     None => (PpKind::Invalid(c), names.text(text, start, &cur)),
                 };
                 push(&mut out, kind, start, cur.pos, s, &mut space_before);
@@ -456,10 +451,9 @@ fn number(cur: &mut Cursor<'_>, first: char) {
     }
 }
 
-/// Ends the token list: a line break if the last line has none, then the end of file.
-/// Ends the token list: a line break after a last line without one (`newline`: the interned
+/// Ends the token list: a line break after a last line without one (`newline`: the text
 /// `"\n"`), then the end of input.
-fn finish(out: &mut Lexed, end: u32, space_before: bool, newline: Arc<str>) {
+fn finish(out: &mut Lexed, end: u32, space_before: bool, newline: Name) {
     // A last line without a line break still ends.
     if out.tokens.last().is_some_and(|t| t.kind != PpKind::Newline) {
         out.tokens.push(PpToken {
@@ -473,13 +467,13 @@ fn finish(out: &mut Lexed, end: u32, space_before: bool, newline: Arc<str>) {
     out.tokens.push(PpToken {
         kind: PpKind::Eof,
         span: Span::empty(end),
-        text: Arc::from(""),
+        text: Name::default(),
         space_before: false,
         from_macro: false,
     });
 }
 
-fn push(out: &mut Lexed, kind: PpKind, start: usize, end: usize, text: Arc<str>, space: &mut bool) {
+fn push(out: &mut Lexed, kind: PpKind, start: usize, end: usize, text: Name, space: &mut bool) {
     out.tokens.push(PpToken {
         kind,
         span: Span::new(start as u32, end as u32),
@@ -490,37 +484,31 @@ fn push(out: &mut Lexed, kind: PpKind, start: usize, end: usize, text: Arc<str>,
     *space = false;
 }
 
-/// One shared `Arc<str>` per distinct token text of a file: shaders repeat their names and
-/// punctuation, and a clone of an `Arc` costs less than an allocation per token.
+/// Token texts: up to [`Name::INLINE_CAP`] bytes (nearly every token) copied inline, with no
+/// hashing and no allocation; longer texts shared, one `Arc` per distinct text of a file.
 struct Interner<'a> {
-    map: rustc_hash::FxHashMap<&'a str, Arc<str>>,
-    /// Each punctuator's text, by [`Punct`]'s discriminant: no hashing for half the tokens.
-    puncts: [Option<Arc<str>>; Punct::HashHash as usize + 1],
+    long: rustc_hash::FxHashMap<&'a str, Name>,
 }
 
 impl<'a> Interner<'a> {
     /// The text of the token from `start` to the cursor, with line continuations removed
-    /// (rare: then the text is not interned).
-    fn text(&mut self, text: &'a str, start: usize, cur: &Cursor<'_>) -> Arc<str> {
+    /// (rare: then the text is not shared).
+    fn text(&mut self, text: &'a str, start: usize, cur: &Cursor<'_>) -> Name {
         let raw = &text[start..cur.pos];
         if cur.joined {
             let joined = raw.replace(['\\', '\n', '\r'], "");
             if !joined.is_empty() {
-                return Arc::from(joined);
+                return Name::from(joined);
             }
         }
         self.intern(raw)
     }
 
-    /// The text of the punctuator `p`.
-    fn punct(&mut self, p: Punct) -> Arc<str> {
-        self.puncts[p as usize]
-            .get_or_insert_with(|| Arc::from(p.as_str()))
-            .clone()
-    }
-
-    fn intern(&mut self, s: &'a str) -> Arc<str> {
-        self.map.entry(s).or_insert_with(|| Arc::from(s)).clone()
+    fn intern(&mut self, s: &'a str) -> Name {
+        if s.len() <= Name::INLINE_CAP {
+            return Name::new_inline(s);
+        }
+        self.long.entry(s).or_insert_with(|| Name::from(s)).clone()
     }
 }
 

@@ -42,6 +42,11 @@ pub use preprocess::Version;
 pub use shader::{compile, compile_front_end, CompileOptions, Shader, COMPILE_STACK};
 pub use target::{Extension, Target};
 
+/// A name or token text: up to 23 bytes kept inline (no allocation, and a clone is a copy
+/// rather than an atomic count), longer texts shared behind an `Arc`. Nearly every GLSL name
+/// and token fits inline.
+pub type Name = smol_str::SmolStr;
+
 /// A shader stage.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum Stage {

@@ -2,7 +2,7 @@
 //! literals (with GLSL ES 3.00's rules for number syntax).
 
 use crate::diagnostic_code::Code;
-use std::sync::Arc;
+use crate::Name;
 
 use crate::diagnostic::{Diagnostic, Fix};
 use crate::lex::{PpKind, PpToken, Punct};
@@ -260,11 +260,11 @@ pub const RESERVED: &[&str] = &[
 #[derive(Clone, Debug, PartialEq)]
 pub enum Tok {
     /// An identifier.
-    Ident(Arc<str>),
+    Ident(Name),
     /// A keyword.
     Kw(Kw),
     /// A reserved word (an error to use; parsed as an identifier to recover).
-    Reserved(Arc<str>),
+    Reserved(Name),
     /// An integer literal: its value (possibly past 32 bits: checked later) and `u` suffix.
     Int(u64, bool),
     /// A floating-point literal, rounded to f32.
@@ -285,7 +285,7 @@ pub struct Token {
     /// Where (into the original text).
     pub span: Span,
     /// Its text.
-    pub text: Arc<str>,
+    pub text: Name,
     /// It comes from a macro expansion.
     pub from_macro: bool,
 }
@@ -339,7 +339,7 @@ fn known(text: &str) -> Option<Known> {
 }
 
 /// A word of the language: a keyword, a reserved word or an identifier.
-fn word(text: &Arc<str>, es100: bool) -> Tok {
+fn word(text: &Name, es100: bool) -> Tok {
     let Some(k) = known(text) else {
         return Tok::Ident(text.clone());
     };

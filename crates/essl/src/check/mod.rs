@@ -16,8 +16,8 @@ mod types;
 mod webgl;
 
 use crate::diagnostic_code::Code;
+use crate::Name;
 use rustc_hash::FxHashMap as HashMap;
-use std::sync::Arc;
 
 use crate::ast;
 use crate::builtins::BuiltinVar;
@@ -110,7 +110,7 @@ enum PrecKey {
 
 #[derive(Default)]
 struct Scope {
-    names: HashMap<Arc<str>, Sym>,
+    names: HashMap<Name, Sym>,
     precisions: Vec<(PrecKey, Precision)>,
 }
 
@@ -153,7 +153,7 @@ pub(crate) struct Checker<'a> {
     /// The parser stopped early: do not report what is missing from the end.
     truncated: bool,
     /// Locals of the current function whose block has ended: (name, declaration).
-    ended: Vec<(Arc<str>, Span)>,
+    ended: Vec<(Name, Span)>,
     /// How deeply each struct of `structs` nests structs ([`webgl`]).
     struct_depths: Vec<u32>,
     /// Bytes of private variables declared so far ([`limits`]).
@@ -563,8 +563,8 @@ impl<'a> Checker<'a> {
         f.locals.len() - 1
     }
 
-    fn unnamed_param(&mut self) -> Arc<str> {
+    fn unnamed_param(&mut self) -> Name {
         self.unnamed_param_counter += 1;
-        Arc::from(format!("_essl_unnamed{}", self.unnamed_param_counter))
+        Name::from(format!("_essl_unnamed{}", self.unnamed_param_counter))
     }
 }

@@ -74,7 +74,9 @@ impl Parser<'_> {
         // Interface block: `uniform Name {`.
         if !qualifiers.is_empty() {
             if let Tok::Ident(name) = self.tok().clone() {
-                if self.peek_at(1).tok == Tok::P(Punct::LeftBrace) && !self.is_type_name(&name) {
+                if matches!(self.peek_at(1).tok, Tok::P(Punct::LeftBrace))
+                    && !self.is_type_name(&name)
+                {
                     return Ok(Some(ExternalDecl::Declaration(
                         self.block(qualifiers, start)?,
                     )));
@@ -95,7 +97,7 @@ impl Parser<'_> {
             spec,
         };
         if let Tok::Ident(_) | Tok::Reserved(_) = self.tok() {
-            if self.peek_at(1).tok == Tok::P(Punct::LeftParen) {
+            if matches!(self.peek_at(1).tok, Tok::P(Punct::LeftParen)) {
                 let name = self.ident("a function name")?;
                 return self.function(ty, name, start).map(Some);
             }
@@ -235,7 +237,7 @@ impl Parser<'_> {
     fn function_rest(&mut self, ret: FullType, name: Ident, start: Span) -> PResult<ExternalDecl> {
         let open = self.expect(Punct::LeftParen)?;
         let mut params = Vec::new();
-        if self.at_kw(Kw::Void) && self.peek_at(1).tok == Tok::P(Punct::RightParen) {
+        if self.at_kw(Kw::Void) && matches!(self.peek_at(1).tok, Tok::P(Punct::RightParen)) {
             self.advance();
         } else if !self.at(Punct::RightParen) {
             loop {
@@ -309,7 +311,7 @@ impl Parser<'_> {
     /// bracketed array size.
     fn type_then_name(&self) -> bool {
         let mut i = 1;
-        if self.peek_at(1).tok == Tok::P(Punct::LeftBracket) {
+        if matches!(self.peek_at(1).tok, Tok::P(Punct::LeftBracket)) {
             let mut depth = 0;
             loop {
                 match &self.peek_at(i).tok {
@@ -344,7 +346,9 @@ impl Parser<'_> {
         let qualifiers = self.qualifiers()?;
         if !qualifiers.is_empty() {
             if let Tok::Ident(name) = self.tok().clone() {
-                if self.peek_at(1).tok == Tok::P(Punct::LeftBrace) && !self.is_type_name(&name) {
+                if matches!(self.peek_at(1).tok, Tok::P(Punct::LeftBrace))
+                    && !self.is_type_name(&name)
+                {
                     return self.block(qualifiers, start);
                 }
             }

@@ -260,7 +260,7 @@ impl Parser<'_> {
     fn call_args(&mut self) -> PResult<Vec<Expr>> {
         let open = self.expect(Punct::LeftParen)?;
         let mut args = Vec::new();
-        if self.at_kw(Kw::Void) && self.peek_at(1).tok == Tok::P(Punct::RightParen) {
+        if self.at_kw(Kw::Void) && matches!(self.peek_at(1).tok, Tok::P(Punct::RightParen)) {
             self.advance();
         } else if !self.at(Punct::RightParen) {
             loop {

@@ -11,8 +11,8 @@
 //! parse: `declarations`, `types`, `statements` and `expressions`.
 
 use crate::diagnostic_code::Code;
+use crate::Name;
 use rustc_hash::FxHashMap as HashMap;
-use std::sync::Arc;
 
 use crate::ast::*;
 use crate::diagnostic::{Diagnostic, Fix};
@@ -61,12 +61,12 @@ pub fn parse_as(
         too_deep_reported: false,
         stage,
     };
-    if p.toks.last().is_none_or(|t| t.tok != Tok::Eof) {
+    if p.toks.last().is_none_or(|t| !matches!(t.tok, Tok::Eof)) {
         let end = file.text().len() as u32;
         p.toks.push(Token {
             tok: Tok::Eof,
             span: Span::empty(end),
-            text: Arc::from(""),
+            text: Name::default(),
             from_macro: false,
         });
     }
@@ -92,7 +92,7 @@ struct Parser<'a> {
     /// Per open scope, the names declared in it: `true` for a struct, `false` for a variable or
     /// parameter, which hides a struct of the same name in the scopes around it (GLSL ES
     /// §4.2.2). Whether an identifier starts a declaration or an expression depends on it.
-    type_names: Vec<HashMap<Arc<str>, bool>>,
+    type_names: Vec<HashMap<Name, bool>>,
     /// Whether a struct was declared yet. Until one is, no name is a type and none hides one,
     /// so variables need not be recorded: a struct declared later is in the same scope as
     /// the open ones' variables or in a scope inside them, and is found first either way.
@@ -118,15 +118,15 @@ impl<'a> Parser<'a> {
     }
 
     fn at(&self, p: Punct) -> bool {
-        self.peek().tok == Tok::P(p)
+        matches!(self.peek().tok, Tok::P(q) if q == p)
     }
 
     fn at_kw(&self, kw: Kw) -> bool {
-        self.peek().tok == Tok::Kw(kw)
+        matches!(self.peek().tok, Tok::Kw(q) if q == kw)
     }
 
     fn at_eof(&self) -> bool {
-        self.peek().tok == Tok::Eof
+        matches!(self.peek().tok, Tok::Eof)
     }
 
     fn bump(&mut self) -> Token {
@@ -215,7 +215,7 @@ impl<'a> Parser<'a> {
 
     /// Records a struct's name (`is_type`) or a variable's or parameter's in the innermost
     /// scope.
-    fn declare_name(&mut self, name: &Arc<str>, is_type: bool) {
+    fn declare_name(&mut self, name: &Name, is_type: bool) {
         self.any_struct |= is_type;
         if !self.any_struct {
             return;
@@ -252,7 +252,7 @@ impl<'a> Parser<'a> {
     /// "expected X, found Y" at the current token.
     fn expected(&mut self, what: &str) -> Failed {
         let t = self.peek().clone();
-        if t.tok == Tok::Error {
+        if matches!(t.tok, Tok::Error) {
             // Already reported by the lexer or number parser.
             self.suppress = true;
             return Failed;
@@ -266,7 +266,7 @@ impl<'a> Parser<'a> {
         .with_token(&*t.text);
         let prev = self.prev_span();
         let prev_text = self.file.slice(prev);
-        if t.tok == Tok::P(Punct::Star) && prev_text == "*" && prev.end == t.span.start {
+        if matches!(t.tok, Tok::P(Punct::Star)) && prev_text == "*" && prev.end == t.span.start {
             // `a ** b`: markdown damage, or exponentiation from another language.
             d = d
                 .with_note("`**` is not an operator in GLSL (a copy from a web page often turns `*` into `**`)")
@@ -354,7 +354,7 @@ impl<'a> Parser<'a> {
             return Ok(self.bump_span());
         }
         let t = self.peek().clone();
-        if t.tok == Tok::Error {
+        if matches!(t.tok, Tok::Error) {
             self.suppress = true;
             return Err(Failed);
         }

@@ -9,9 +9,9 @@
 //! file: each thread builds them once and shares them with every file it preprocesses, instead
 //! of allocating two dozen blocks per file for them.
 
+use crate::Name;
 use std::cell::RefCell;
 use std::rc::Rc;
-use std::sync::Arc;
 
 use rustc_hash::FxHashMap as HashMap;
 
@@ -20,7 +20,7 @@ use super::expand::{Body, Dynamic, Macro};
 /// The macros defined at a point of the text, by name.
 #[derive(Default)]
 pub(super) struct Defined {
-    map: HashMap<Arc<str>, Rc<Macro>>,
+    map: HashMap<Name, Rc<Macro>>,
     /// Bit `b & 127` is set when a name starting with byte `b` was ever defined (an `#undef`
     /// leaves it set: the mask only rules names out).
     first: u128,

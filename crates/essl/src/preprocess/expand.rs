@@ -9,9 +9,9 @@
 //! too, so that no input expands without end.
 
 use crate::diagnostic_code::Code;
+use crate::Name;
 use std::cell::Cell;
 use std::rc::Rc;
-use std::sync::Arc;
 
 use crate::diagnostic::Diagnostic;
 use crate::lex::{PpKind, PpToken, Punct};
@@ -104,9 +104,9 @@ pub(super) enum Origin {
 #[derive(Debug)]
 pub(super) struct Macro {
     /// Its name.
-    pub name: Arc<str>,
+    pub name: Name,
     /// Parameter names of a function-like macro; `None` for an object-like one.
-    pub params: Option<Vec<Arc<str>>>,
+    pub params: Option<Vec<Name>>,
     /// The replacement list.
     pub body: Vec<Body>,
     /// The name in its `#define` (empty at 0 for predefined macros and options).
@@ -125,7 +125,7 @@ impl Macro {
     /// An object-like macro predefined with the given value.
     pub fn predefined(name: &str, value: &str, dynamic: Option<Dynamic>) -> Macro {
         Macro {
-            name: Arc::from(name),
+            name: Name::from(name),
             params: None,
             body: vec![Body::Tok(number_token(value, Span::empty(0), false))],
             span: Span::empty(0),
@@ -171,7 +171,7 @@ pub(super) fn number_token(text: &str, span: Span, from_macro: bool) -> PpToken 
     PpToken {
         kind: PpKind::Number,
         span,
-        text: Arc::from(text),
+        text: Name::from(text),
         space_before: true,
         from_macro,
     }
@@ -374,7 +374,7 @@ impl Pp<'_> {
                 if let Some(d) = m.dynamic {
                     let (source, line) = self.presumed(name.loc);
                     let v = if d == Dynamic::Line { line } else { source };
-                    t.text = Arc::from(v.to_string());
+                    t.text = Name::from(v.to_string());
                 }
                 out.push(Tok {
                     t,
@@ -523,7 +523,7 @@ impl Pp<'_> {
         list.push(Tok::raw(PpToken {
             kind: PpKind::Eof,
             span: end,
-            text: Arc::from(""),
+            text: Name::default(),
             space_before: false,
             from_macro: false,
         }));

@@ -46,7 +46,7 @@ mod expand;
 mod expr;
 
 use crate::diagnostic_code::Code;
-use std::sync::Arc;
+use crate::Name;
 
 use crate::diagnostic::{self, Diagnostic, Fix};
 use crate::lex::{Lexed, PpKind, PpToken, Punct};
@@ -232,7 +232,7 @@ fn preprocess_here(file: &SourceFile, lexed: Lexed, options: &PreprocessOptions)
         tokens.push(PpToken {
             kind: PpKind::Eof,
             span: Span::empty(end),
-            text: Arc::from(""),
+            text: Name::default(),
             space_before: false,
             from_macro: false,
         });

@@ -1,7 +1,7 @@
 //! Uniform blocks: `uniform Name { ... } instance;`, their members, layouts and limits.
 
 use crate::diagnostic_code::Code;
-use std::sync::Arc;
+use crate::Name;
 
 use crate::ast::{self, Qualifier, Storage};
 use crate::check::{Checker, Sym, Var};
@@ -11,7 +11,7 @@ use crate::source::Span;
 use crate::types::{Precision, Type};
 
 /// A block member: name, type, precision and whether it is row-major.
-type BlockMember = (Arc<str>, Type, Option<Precision>, bool);
+type BlockMember = (Name, Type, Option<Precision>, bool);
 
 impl Checker<'_> {
     /// Declares a uniform block: its qualifiers, members, instance name and array size.

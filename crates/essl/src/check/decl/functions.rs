@@ -2,7 +2,7 @@
 //! the check that a non-void function returns.
 
 use crate::diagnostic_code::Code;
-use std::sync::Arc;
+use crate::Name;
 
 use crate::ast::{self, Qualifier, Storage};
 use crate::check::{Checker, FnCtx, Sym, Var};
@@ -468,7 +468,7 @@ impl Checker<'_> {
         self.diags.truncate(before);
         let id = self.functions.len();
         self.functions.push(hir::Function {
-            name: Arc::from("_essl_invalid"),
+            name: Name::new_static("_essl_invalid"),
             signature: String::new(),
             params: params.iter().map(|(_, p)| p.clone()).collect(),
             ret: ret.clone(),

@@ -1,8 +1,8 @@
 //! Macro directives: `#define` (object-like and function-like, with the rules on which names
 //! may be defined), `#undef`, and macros defined from the options.
 use crate::diagnostic_code::Code;
+use crate::Name;
 use std::cell::Cell;
-use std::sync::Arc;
 
 use super::Directive;
 use crate::diagnostic::{Diagnostic, Fix};
@@ -99,10 +99,10 @@ impl Pp<'_> {
 
     /// The parameter list of a function-like macro (`args[1]` is its `(`): the names and the
     /// index in `args` after the `)`.
-    fn parse_params(&mut self, d: &Directive, name: &PpToken) -> Option<(Vec<Arc<str>>, usize)> {
+    fn parse_params(&mut self, d: &Directive, name: &PpToken) -> Option<(Vec<Name>, usize)> {
         let args = d.args();
         let open = args[1].span;
-        let mut params: Vec<Arc<str>> = Vec::new();
+        let mut params: Vec<Name> = Vec::new();
         let mut i = 2;
         let unterminated = |pp: &mut Self| {
             pp.diags.push(
@@ -230,7 +230,7 @@ impl Pp<'_> {
             if t.kind == PpKind::Ident {
                 if let Some(index) = params
                     .as_ref()
-                    .and_then(|p: &Vec<Arc<str>>| p.iter().position(|p| **p == *t.text))
+                    .and_then(|p: &Vec<Name>| p.iter().position(|p| **p == *t.text))
                 {
                     body.push(Body::Param {
                         index,
@@ -395,7 +395,7 @@ impl Pp<'_> {
         let eol = PpToken {
             kind: PpKind::Newline,
             span: Span::empty(0),
-            text: Arc::from("\n"),
+            text: Name::new_static("\n"),
             space_before: false,
             from_macro: false,
         };

@@ -9,7 +9,7 @@ mod macros;
 mod version;
 
 use crate::diagnostic_code::Code;
-use std::sync::Arc;
+use crate::Name;
 
 use crate::diagnostic::{Applicability, Diagnostic, Edit, Fix};
 use crate::lex::{PpKind, PpToken, Punct};
@@ -123,10 +123,10 @@ impl Pp<'_> {
             self.past_first = true;
             return;
         }
-        let name: Arc<str> = if d.line[0].kind == PpKind::Ident {
+        let name: Name = if d.line[0].kind == PpKind::Ident {
             d.line[0].text.clone()
         } else {
-            Arc::from("")
+            Name::default()
         };
         let skipping = self.skipping();
         match &*name {
@@ -190,7 +190,7 @@ impl Pp<'_> {
         list.push(Tok::raw(PpToken {
             kind: PpKind::Eof,
             span: d.end(),
-            text: Arc::from(""),
+            text: Name::default(),
             space_before: false,
             from_macro: false,
         }));
