@@ -124,6 +124,32 @@ pub struct Types<'a> {
     pub structs: &'a [StructDef],
     /// Logical naga struct types, by struct id.
     logical_structs: Vec<Option<Handle<naga::Type>>>,
+    /// Logical naga scalar, vector and matrix types, by [`simple_slot`]: most lookups, and
+    /// each would otherwise hash a naga type into the module's type table.
+    logical_simple: [Option<Handle<naga::Type>>; SIMPLE_SLOTS],
+}
+
+/// Scalars (4 kinds), vectors (4 kinds × 3 sizes), matrices (3 × 3 sizes), and the one type
+/// that samplers and `void` stand for.
+const SIMPLE_SLOTS: usize = 4 + 12 + 9 + 1;
+
+/// The slot of a scalar, vector or matrix type (or a sampler or `void`) in
+/// [`Types::logical_simple`].
+fn simple_slot(ty: &Type) -> Option<usize> {
+    let kind = |k: ScalarKind| match k {
+        ScalarKind::Float => 0,
+        ScalarKind::Int => 1,
+        ScalarKind::Uint => 2,
+        ScalarKind::Bool => 3,
+    };
+    let size = |n: u8| (2..=4).contains(&n).then(|| usize::from(n) - 2);
+    match *ty {
+        Type::Scalar(k) => Some(kind(k)),
+        Type::Vector(k, n) => Some(4 + 3 * kind(k) + size(n)?),
+        Type::Matrix { cols, rows } => Some(16 + 3 * size(cols)? + size(rows)?),
+        Type::Sampler(_) | Type::Void => Some(25),
+        Type::Struct(_) | Type::Array(..) => None,
+    }
 }
 
 impl<'a> Types<'a> {
@@ -132,11 +158,16 @@ impl<'a> Types<'a> {
         Types {
             structs,
             logical_structs: vec![None; structs.len()],
+            logical_simple: [None; SIMPLE_SLOTS],
         }
     }
 
     /// The naga type of a GLSL value (function and private variables, expressions).
     pub fn logical(&mut self, m: &mut naga::Module, ty: &Type) -> Handle<naga::Type> {
+        let slot = simple_slot(ty);
+        if let Some(h) = slot.and_then(|i| self.logical_simple[i]) {
+            return h;
+        }
         let inner = match ty {
             Type::Scalar(k) => TypeInner::Scalar(scalar(*k)),
             Type::Vector(k, n) => TypeInner::Vector {
@@ -216,8 +247,13 @@ impl<'a> Types<'a> {
             }
             Type::Sampler(_) | Type::Void => TypeInner::Scalar(NScalar::U32),
         };
-        m.types
-            .insert(naga::Type { name: None, inner }, Default::default())
+        let h = m
+            .types
+            .insert(naga::Type { name: None, inner }, Default::default());
+        if let Some(i) = slot {
+            self.logical_simple[i] = Some(h);
+        }
+        h
     }
 
     /// The naga type a uniform of this GLSL type is stored as (std140), and its repr.

@@ -151,7 +151,7 @@ impl ModuleCx<'_> {
     ) -> Handle<naga::GlobalVariable> {
         self.module.global_variables.append(
             naga::GlobalVariable {
-                name: Some(name.to_string()),
+                name: Some(name.to_owned()),
                 space: naga::AddressSpace::Private,
                 binding: None,
                 ty,
@@ -285,7 +285,7 @@ fn lower_program_here(
                     crate::types::Type::Array(_, n) => *n,
                     _ => 1,
                 };
-                (glob.name.to_string(), *loc, size)
+                (glob.name.as_str().to_owned(), *loc, size)
             })
             .collect(),
         captured: pplan.captured.clone(),

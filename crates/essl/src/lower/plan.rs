@@ -90,7 +90,7 @@ pub(super) fn shader_plan(m: &hir::Module, options: &LowerOptions) -> (StagePlan
             offset = offset.div_ceil(align) * align;
             plan.uniforms.push((gi, pplan.block_members.len()));
             pplan.block_members.push(BlockMember {
-                name: g.name.to_string(),
+                name: g.name.as_str().to_owned(),
                 offset,
             });
             offset += size;
@@ -290,7 +290,7 @@ impl<'m> ProgramPlanner<'m> {
                 if !layout::has_data(&g.ty, &module.structs) {
                     continue;
                 }
-                let name = g.name.to_string();
+                let name = g.name.as_str().to_owned();
                 let idx = match self.member_of.get(&name) {
                     Some(&i) => i,
                     None => {
@@ -487,10 +487,10 @@ impl<'m> ProgramPlanner<'m> {
                         let first = self.blocks.len();
                         let names: Vec<String> = match b.array {
                             Some(n) => (0..n).map(|k| format!("{}[{k}]", b.name)).collect(),
-                            None => vec![b.name.to_string()],
+                            None => vec![b.name.as_str().to_owned()],
                         };
                         for name in names {
-                            block_names.push(b.name.to_string());
+                            block_names.push(b.name.as_str().to_owned());
                             self.blocks.push(program::UniformBlockBinding {
                                 name,
                                 size: size.div_ceil(16) * 16,

@@ -158,7 +158,7 @@ impl ModuleCx<'_> {
                 let (s, a) = layout::std140(ty, &m.structs);
                 off = off.div_ceil(a) * a;
                 members.push(naga::StructMember {
-                    name: Some(name.to_string()),
+                    name: Some(name.as_str().to_owned()),
                     ty: h,
                     binding: None,
                     offset: off,
@@ -169,7 +169,7 @@ impl ModuleCx<'_> {
             let span = off.div_ceil(16).max(1) * 16;
             let ty = self.module.types.insert(
                 naga::Type {
-                    name: Some(b.name.to_string()),
+                    name: Some(b.name.as_str().to_owned()),
                     inner: naga::TypeInner::Struct { members, span },
                 },
                 NSpan::UNDEFINED,
@@ -180,7 +180,7 @@ impl ModuleCx<'_> {
                 .map(|k| {
                     let name = match b.array {
                         Some(_) => format!("{}_{k}", b.name),
-                        None => b.name.to_string(),
+                        None => b.name.as_str().to_owned(),
                     };
                     self.module.global_variables.append(
                         naga::GlobalVariable {

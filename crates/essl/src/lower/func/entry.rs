@@ -82,7 +82,7 @@ fn io_binding(
     let name = if count > 1 {
         format!("{}_{i}", g.name)
     } else {
-        g.name.to_string()
+        g.name.as_str().to_owned()
     };
     (
         name,

@@ -148,7 +148,7 @@ pub(crate) fn literal(s: Scalar) -> Literal {
 pub(crate) fn lower_function(cx: &mut ModuleCx, id: FuncId) -> Result<naga::Function, LowerError> {
     let hir_fn = &cx.hir.functions[id];
     let mut f = naga::Function {
-        name: Some(format!("{}_", hir_fn.name)),
+        name: Some([hir_fn.name.as_str(), "_"].concat()),
         ..Default::default()
     };
     let mut params = Vec::new();
@@ -160,7 +160,7 @@ pub(crate) fn lower_function(cx: &mut ModuleCx, id: FuncId) -> Result<naga::Func
                 let (img, smp) = super::sampler_types(&mut cx.module, *st);
                 let i = f.arguments.len() as u32;
                 f.arguments.push(naga::FunctionArgument {
-                    name: Some(p.name.to_string()),
+                    name: Some(p.name.as_str().to_owned()),
                     ty: img,
                     binding: None,
                 });
@@ -186,13 +186,13 @@ pub(crate) fn lower_function(cx: &mut ModuleCx, id: FuncId) -> Result<naga::Func
                 match p.mode {
                     ParamMode::In => {
                         f.arguments.push(naga::FunctionArgument {
-                            name: Some(p.name.to_string()),
+                            name: Some(p.name.as_str().to_owned()),
                             ty,
                             binding: None,
                         });
                         let local = f.local_variables.append(
                             naga::LocalVariable {
-                                name: Some(p.name.to_string()),
+                                name: Some(p.name.as_str().to_owned()),
                                 ty,
                                 init: None,
                             },
@@ -213,7 +213,7 @@ pub(crate) fn lower_function(cx: &mut ModuleCx, id: FuncId) -> Result<naga::Func
                             NSpan::UNDEFINED,
                         );
                         f.arguments.push(naga::FunctionArgument {
-                            name: Some(p.name.to_string()),
+                            name: Some(p.name.as_str().to_owned()),
                             ty: ptr,
                             binding: None,
                         });
@@ -244,11 +244,13 @@ pub(crate) fn lower_function(cx: &mut ModuleCx, id: FuncId) -> Result<naga::Func
         let ty = cx.types.logical(&mut cx.module, &hir_fn.ret);
         f.result = Some(naga::FunctionResult { ty, binding: None });
     }
+    // About two statements per source statement (an `Emit` and the statement).
+    let body = naga::Block::with_capacity(2 * (hir_fn.body.len() + copies.len()));
     let mut fx = FnCx {
         cx,
         f,
         emitter: Emitter::default(),
-        blocks: vec![naga::Block::new()],
+        blocks: vec![body],
         locals: vec![None; hir_fn.locals.len()],
         params,
         param_samplers,
@@ -337,7 +339,9 @@ impl<'c, 'a> FnCx<'c, 'a> {
     /// Lowers statements into a new block and returns it.
     fn block_of(&mut self, stmts: &[Stmt]) -> Result<naga::Block, LowerError> {
         self.flush();
-        self.blocks.push(naga::Block::new());
+        // About two statements per source statement (an `Emit` and the statement).
+        self.blocks
+            .push(naga::Block::with_capacity(2 * stmts.len()));
         self.stmts(stmts)?;
         self.flush();
         Ok(self.blocks.pop().expect("pushed"))
@@ -363,7 +367,7 @@ impl<'c, 'a> FnCx<'c, 'a> {
         let ty = self.ty(t);
         self.f.local_variables.append(
             naga::LocalVariable {
-                name: Some(name.to_string()),
+                name: Some(name.to_owned()),
                 ty,
                 init: None,
             },

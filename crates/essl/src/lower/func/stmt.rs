@@ -281,7 +281,7 @@ impl<'c, 'a> FnCx<'c, 'a> {
             return h;
         }
         let local = &self.hir_fn.expect("in a function").locals[l];
-        let (name, ty) = (local.name.to_string(), local.ty.clone());
+        let (name, ty) = (local.name.as_str().to_owned(), local.ty.clone());
         let h = self.new_local(&name, &ty);
         self.locals[l] = Some(h);
         h
