@@ -317,7 +317,7 @@ impl<'a> Checker<'a> {
             );
             d.label = "reserved prefix".into();
             d.help = Some(format!("rename it without the `{prefix}` prefix"));
-        } else if n.contains("__") {
+        } else if n.as_bytes().windows(2).any(|w| w == b"__") {
             let d = self.error(
                 Code::ReservedName,
                 name.span,

@@ -271,12 +271,12 @@ impl Checker<'_> {
             self.check_interface_type(fty, &ty, kind, decl.name.span);
         }
         self.check_initializer(kind, decl, &ty, init.as_ref());
-        let init_ok = init.as_ref().filter(|i| i.ty == ty);
+        let init_ok = init.filter(|i| i.ty == ty);
         match kind {
             DeclKind::Local => {
                 let id = self.declare_local(decl, &ty, precision, None);
                 Some(hir::Stmt {
-                    kind: hir::StmtKind::Local(id, init_ok.cloned()),
+                    kind: hir::StmtKind::Local(id, init_ok),
                     span: decl.span,
                 })
             }
@@ -295,7 +295,7 @@ impl Checker<'_> {
                 };
                 let init = init_ok.map(|i| match i.as_const() {
                     Some(c) => hir::Init::Const(c.clone()),
-                    None => hir::Init::Expr(i.clone()),
+                    None => hir::Init::Expr(i),
                 });
                 let invariant = fty.invariant().is_some()
                     || (self.invariant_all

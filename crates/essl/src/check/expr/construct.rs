@@ -30,10 +30,10 @@ impl Checker<'_> {
         if args.iter().any(is_error) {
             return error_expr(span);
         }
-        let tname = self.type_name(&ty);
+        // The type's name is only formatted for an error message.
         let checked = self
-            .constructor_arguments(&tname, &args)
-            .and_then(|()| self.constructor_shape(ty, &tname, &args));
+            .constructor_arguments(&ty, &args)
+            .and_then(|()| self.constructor_shape(ty, &args));
         let ty = match checked {
             Ok(ty) => ty,
             Err(Rejected::Here(msg, label)) => {
@@ -60,10 +60,10 @@ impl Checker<'_> {
     }
 
     /// The arguments on their own: there are some, and none is `void` or holds a sampler.
-    fn constructor_arguments(&self, tname: &str, args: &[Expr]) -> Result<(), Rejected> {
+    fn constructor_arguments(&self, ty: &Type, args: &[Expr]) -> Result<(), Rejected> {
         if args.is_empty() {
             return Err(Rejected::Here(
-                format!("a {tname} constructor needs arguments"),
+                format!("a {} constructor needs arguments", self.type_name(ty)),
                 "no arguments",
             ));
         }
@@ -86,28 +86,23 @@ impl Checker<'_> {
 
     /// The arguments against the constructed type's shape; the type constructed (an unsized
     /// array gets its size from the arguments).
-    fn constructor_shape(
-        &mut self,
-        ty: Type,
-        tname: &str,
-        args: &[Expr],
-    ) -> Result<Type, Rejected> {
+    fn constructor_shape(&mut self, ty: Type, args: &[Expr]) -> Result<Type, Rejected> {
         match &ty {
             Type::Void | Type::Sampler(_) => Err(Rejected::Here(
-                format!("{tname} has no constructor"),
+                format!("{} has no constructor", self.type_name(&ty)),
                 "no constructor",
             )),
-            Type::Array(el, n) => self.array_constructor(el, *n, tname, args),
+            Type::Array(el, n) => self.array_constructor(&ty, el, *n, args),
             Type::Struct(id) => {
-                self.struct_constructor(*id, tname, args)?;
+                self.struct_constructor(&ty, *id, args)?;
                 Ok(ty)
             }
             Type::Scalar(_) => {
-                self.scalar_constructor(tname, args)?;
+                self.scalar_constructor(&ty, args)?;
                 Ok(ty)
             }
             Type::Vector(..) | Type::Matrix { .. } => {
-                vector_matrix_constructor(&ty, tname, args)?;
+                vector_matrix_constructor(&ty, args)?;
                 Ok(ty)
             }
         }
@@ -116,12 +111,13 @@ impl Checker<'_> {
     /// `T[n](...)`: `n` elements of type `T` (any number when the size is left out).
     fn array_constructor(
         &mut self,
+        ty: &Type,
         el: &Type,
         n: u32,
-        tname: &str,
         args: &[Expr],
     ) -> Result<Type, Rejected> {
         if n != 0 && args.len() != n as usize {
+            let tname = self.type_name(ty);
             return Err(Rejected::Here(
                 format!("{tname} needs {n} arguments, not {}", args.len()),
                 "wrong number of elements",
@@ -144,12 +140,13 @@ impl Checker<'_> {
     /// `S(...)`: one argument per member, of the member's type.
     fn struct_constructor(
         &mut self,
+        ty: &Type,
         id: StructId,
-        tname: &str,
         args: &[Expr],
     ) -> Result<(), Rejected> {
         let members = self.structs[id.0 as usize].members.clone();
         if members.len() != args.len() {
+            let tname = self.type_name(ty);
             return Err(Rejected::Here(
                 format!(
                     "{tname} has {} members but {} arguments are given",
@@ -176,17 +173,18 @@ impl Checker<'_> {
     }
 
     /// `float(x)` and the like: one scalar, vector or matrix argument.
-    fn scalar_constructor(&self, tname: &str, args: &[Expr]) -> Result<(), Rejected> {
+    fn scalar_constructor(&self, ty: &Type, args: &[Expr]) -> Result<(), Rejected> {
+        let tname = || self.type_name(ty);
         if args.len() != 1 {
             return Err(Rejected::Here(
-                format!("a {tname} constructor takes one argument"),
+                format!("a {} constructor takes one argument", tname()),
                 "too many arguments",
             ));
         }
         if !args[0].ty.is_numeric_basic() {
             let t = self.type_name(&args[0].ty);
             return Err(Rejected::Here(
-                format!("cannot construct {tname} from {t}"),
+                format!("cannot construct {} from {t}", tname()),
                 "not a scalar, vector or matrix",
             ));
         }
@@ -196,7 +194,9 @@ impl Checker<'_> {
 
 /// `vecN(...)` and `matCxR(...)`: scalars, vectors and matrices with enough components and no
 /// unused argument; a matrix argument only alone.
-fn vector_matrix_constructor(ty: &Type, tname: &str, args: &[Expr]) -> Result<(), Rejected> {
+fn vector_matrix_constructor(ty: &Type, args: &[Expr]) -> Result<(), Rejected> {
+    // A vector's or matrix's name does not depend on the struct table.
+    let tname = format_args!("`{}`", ty.display(&[]));
     let needed = ty.component_count().unwrap_or(0);
     let is_matrix = matches!(ty, Type::Matrix { .. });
     if args.iter().any(|a| !a.ty.is_numeric_basic()) {
