@@ -3,6 +3,7 @@
 
 use crate::diagnostic_code::Code;
 use crate::Name;
+use std::fmt::Write as _;
 
 use crate::ast::{self, Qualifier, Storage};
 use crate::check::{Checker, FnCtx, Sym, Var};
@@ -47,15 +48,17 @@ impl Checker<'_> {
         if self.lang.es100 && self.redefines_builtin(name, &params) {
             return None;
         }
-        let signature = format!(
-            "{}({})",
-            name.name,
-            params
-                .iter()
-                .map(|p| p.ty.display(&self.structs).to_string())
-                .collect::<Vec<_>>()
-                .join(",")
-        );
+        // `name(type,type)`, written into one string.
+        let mut signature = String::with_capacity(name.name.len() + 8 * params.len() + 2);
+        signature.push_str(&name.name);
+        signature.push('(');
+        for (i, p) in params.iter().enumerate() {
+            if i > 0 {
+                signature.push(',');
+            }
+            let _ = write!(signature, "{}", p.ty.display(&self.structs));
+        }
+        signature.push(')');
         self.check_main_signature(proto, &params, &ret);
         // Find an earlier declaration with the same parameter types.
         let existing = match self.lookup(&name.name).cloned() {

@@ -479,14 +479,14 @@ impl FnCx<'_, '_> {
         let span = off.div_ceil(16) * 16;
         let out_ty = self.cx.module.types.insert(
             naga::Type {
-                name: Some(format!(
-                    "_essl_{}Output",
+                name: Some(
                     if self.cx.stage == Stage::Vertex {
-                        "Vertex"
+                        "_essl_VertexOutput"
                     } else {
-                        "Fragment"
+                        "_essl_FragmentOutput"
                     }
-                )),
+                    .to_owned(),
+                ),
                 inner: naga::TypeInner::Struct { members, span },
             },
             NSpan::UNDEFINED,
