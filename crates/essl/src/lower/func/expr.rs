@@ -5,8 +5,8 @@
 use naga::{Expression, Handle, Literal, Span as NSpan, Statement};
 
 use super::operators::Operand;
-use super::FnCx;
 use super::{all_finite, global_constant, has_effects, int_zero_divisor, literal};
+use super::{FnCx, ParamLower};
 use crate::ast::BinaryOp;
 use crate::builtins::BuiltinVar;
 use crate::hir::{self, ConstValue, Expr, ExprKind, FuncId, ParamMode, Scalar};
@@ -189,6 +189,10 @@ impl<'c, 'a> FnCx<'c, 'a> {
                 }
                 Ok(self.access_index(bv, *m as u32, span))
             }
+            ExprKind::Param(i) => match self.params[*i] {
+                ParamLower::Value(a) => Ok(self.add(Expression::FunctionArgument(a), span)),
+                _ => Ok(self.zero(&e.ty)),
+            },
             ExprKind::BuiltinVar(BuiltinVar::DepthRange) => {
                 // WebGL's default depth range: near 0, far 1, diff 1.
                 let c = ConstValue::Composite(vec![

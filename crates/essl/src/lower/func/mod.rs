@@ -11,6 +11,7 @@ mod construct;
 mod entry;
 mod expr;
 mod operators;
+mod params;
 mod place;
 mod sampler;
 mod stmt;
@@ -33,6 +34,9 @@ use crate::Stage;
 enum ParamLower {
     /// An `in` parameter copied into a local (GLSL lets functions write their parameters).
     Local(Handle<naga::LocalVariable>),
+    /// An `in` parameter the body never writes: each read is its argument (an expression per
+    /// read, so that each keeps its own span).
+    Value(u32),
     /// An `out`/`inout` parameter: a pointer argument.
     Pointer(u32),
     /// A sampler parameter: texture and sampler arguments.
@@ -154,7 +158,8 @@ pub(crate) fn lower_function(cx: &mut ModuleCx, id: FuncId) -> Result<naga::Func
     let mut params = Vec::new();
     let mut copies = Vec::new();
     let mut sampler_args = Vec::new();
-    for p in &hir_fn.params {
+    let in_place = params::read_in_place(cx.hir, hir_fn);
+    for (pi, p) in hir_fn.params.iter().enumerate() {
         match &p.ty {
             Type::Sampler(st) => {
                 let (img, smp) = super::sampler_types(&mut cx.module, *st);
@@ -184,6 +189,14 @@ pub(crate) fn lower_function(cx: &mut ModuleCx, id: FuncId) -> Result<naga::Func
                 let ty = cx.types.logical(&mut cx.module, t);
                 let i = f.arguments.len() as u32;
                 match p.mode {
+                    ParamMode::In if in_place[pi] => {
+                        f.arguments.push(naga::FunctionArgument {
+                            name: Some(p.name.as_str().to_owned()),
+                            ty,
+                            binding: None,
+                        });
+                        params.push(ParamLower::Value(i));
+                    }
                     ParamMode::In => {
                         f.arguments.push(naga::FunctionArgument {
                             name: Some(p.name.as_str().to_owned()),

@@ -36,7 +36,7 @@ impl<'c, 'a> FnCx<'c, 'a> {
                     repr: Repr::Same,
                     ty: e.ty.clone(),
                 },
-                ParamLower::Sampler(..) => return Ok(None),
+                ParamLower::Sampler(..) | ParamLower::Value(_) => return Ok(None),
             },
             ExprKind::Global(g) => match self.cx.globals[*g].clone() {
                 GlobalLower::Private(h) => Place {
