@@ -68,7 +68,8 @@ declare_rule! {
 
 fn check(cx: &Cx, out: &mut Vec<Diagnostic>) {
     for (id, f) in cx.functions() {
-        let sym = cx.sym(id, f);
+        // Set up at the first division: a function without one never asks for the analysis.
+        let mut sym = None;
         for (h, e) in f.expressions.iter() {
             let E::Binary {
                 op: Bo::Divide,
@@ -94,7 +95,9 @@ fn check(cx: &Cx, out: &mut Vec<Diagnostic>) {
             {
                 continue;
             }
-            if !v.comps().iter().any(|c| c.contains(0.0)) || sym.nonzero(d) {
+            if !v.comps().iter().any(|c| c.contains(0.0))
+                || sym.get_or_insert_with(|| cx.sym(id, f)).nonzero(d)
+            {
                 continue;
             }
             let g = cx.guards(f, id, h);
