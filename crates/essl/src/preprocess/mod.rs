@@ -433,7 +433,12 @@ impl<'a> Pp<'a> {
 
     /// Consumes the token at `pos` as code (not a directive, not skipped).
     fn take_code_token(&mut self) -> PpToken {
-        let t = self.toks[self.pos].clone();
+        // Moved out: nothing reads a token behind `pos` again.
+        let slot = &mut self.toks[self.pos];
+        let t = PpToken {
+            text: std::mem::take(&mut slot.text),
+            ..*slot
+        };
         self.pos += 1;
         self.line_start = false;
         self.past_first = true;
@@ -613,8 +618,12 @@ impl<'a> Pp<'a> {
         let target = self.options.target.display();
         for i in 0..self.toks.len() {
             let t = &self.toks[i];
-            // No more characters than bytes: most tokens need no count.
-            if t.text.len() <= max || !matches!(t.kind, PpKind::Ident | PpKind::Number) {
+            // No more characters than bytes, and no more bytes than the token spans in the
+            // text (line continuations are left out): most tokens need no count.
+            if !matches!(t.kind, PpKind::Ident | PpKind::Number)
+                || t.span.len() as usize <= max
+                || t.text.len() <= max
+            {
                 continue;
             }
             let len = t.text.chars().count();
