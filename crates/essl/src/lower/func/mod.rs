@@ -189,30 +189,26 @@ pub(crate) fn lower_function(cx: &mut ModuleCx, id: FuncId) -> Result<naga::Func
                 let ty = cx.types.logical(&mut cx.module, t);
                 let i = f.arguments.len() as u32;
                 match p.mode {
-                    ParamMode::In if in_place[pi] => {
-                        f.arguments.push(naga::FunctionArgument {
-                            name: Some(p.name.as_str().to_owned()),
-                            ty,
-                            binding: None,
-                        });
-                        params.push(ParamLower::Value(i));
-                    }
                     ParamMode::In => {
                         f.arguments.push(naga::FunctionArgument {
                             name: Some(p.name.as_str().to_owned()),
                             ty,
                             binding: None,
                         });
-                        let local = f.local_variables.append(
-                            naga::LocalVariable {
-                                name: Some(p.name.as_str().to_owned()),
-                                ty,
-                                init: None,
-                            },
-                            nspan(p.span),
-                        );
-                        copies.push((i, local));
-                        params.push(ParamLower::Local(local));
+                        if in_place[pi] {
+                            params.push(ParamLower::Value(i));
+                        } else {
+                            let local = f.local_variables.append(
+                                naga::LocalVariable {
+                                    name: Some(p.name.as_str().to_owned()),
+                                    ty,
+                                    init: None,
+                                },
+                                nspan(p.span),
+                            );
+                            copies.push((i, local));
+                            params.push(ParamLower::Local(local));
+                        }
                     }
                     _ => {
                         let ptr = cx.module.types.insert(
