@@ -74,3 +74,57 @@ impl Visitor for Writes<'_> {
         visit::walk_expr(self, e);
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use crate::source::SourceFile;
+    use crate::{compile, CompileOptions, Stage};
+
+    /// The local variables of the lowered function `f` of a fragment shader with `funcs`
+    /// (which define `f(float, float, float, vec2, float[2])`), besides the lowering's own
+    /// temporaries (`_essl_…`).
+    fn locals_of_f(funcs: &str) -> Vec<String> {
+        let text = format!(
+            "#version 300 es\nprecision highp float;\nin float v;\nout vec4 o;\n{funcs}\n\
+             void main() {{ o = vec4(f(v, v, v, vec2(v), float[2](v, v))); }}\n"
+        );
+        let s = compile(
+            SourceFile::new("t.frag", text),
+            Stage::Fragment,
+            &CompileOptions::default(),
+        );
+        let (m, _) = s.naga.as_ref().expect("compiles");
+        let (_, f) = m
+            .functions
+            .iter()
+            .find(|(_, f)| f.name.as_deref() == Some("f_"))
+            .expect("f is lowered");
+        f.local_variables
+            .iter()
+            .filter_map(|(_, l)| l.name.clone())
+            .filter(|n| !n.starts_with("_essl_"))
+            .collect()
+    }
+
+    #[test]
+    fn written_and_aggregate_parameters_get_a_local_copy() {
+        let funcs = "void g(inout float x) { x += 1.0; }\n\
+                     float f(float a, float b, float c, vec2 d, float e[2]) {\n\
+                       a = 2.0;\n\
+                       g(b);\n\
+                       float r = modf(d.x, c);\n\
+                       return a + b + c + r + d.y + e[0];\n\
+                     }";
+        // `a` assigned, `b` passed as `inout`, `c` as `modf`'s `out`, `e` an array; `d` is
+        // only read.
+        assert_eq!(locals_of_f(funcs), ["a", "b", "c", "e", "r"]);
+    }
+
+    #[test]
+    fn parameters_only_read_are_read_from_the_arguments() {
+        let funcs = "float f(float a, float b, float c, vec2 d, float e[2]) {\n\
+                       return a * b + c + d.x + d[int(a)] + e[1];\n\
+                     }";
+        assert_eq!(locals_of_f(funcs), ["e"]);
+    }
+}
