@@ -359,6 +359,17 @@ pub enum ExprKind {
 }
 
 impl Expr {
+    /// The expression a write to this one writes into: itself, or the base of the indices,
+    /// members and swizzles it selects (`a[i].xy = …` writes `a`).
+    pub fn write_root(&self) -> &Expr {
+        match &self.kind {
+            ExprKind::Index(b, _) | ExprKind::Member(b, _) | ExprKind::Swizzle(b, _) => {
+                b.write_root()
+            }
+            _ => self,
+        }
+    }
+
     /// Whether evaluating it has a side effect: it writes a variable, or calls a user function
     /// (or `modf`, which writes its `out` argument).
     pub fn has_effects(&self) -> bool {

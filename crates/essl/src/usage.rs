@@ -170,9 +170,8 @@ fn const_bool(e: &Expr) -> Option<bool> {
 
 /// The local a store writes, if the expression is a write to (part of) a local.
 fn store_target(e: &Expr) -> Option<LocalId> {
-    match &e.kind {
-        ExprKind::Local(l) => Some(*l),
-        ExprKind::Index(b, _) | ExprKind::Member(b, _) | ExprKind::Swizzle(b, _) => store_target(b),
+    match e.write_root().kind {
+        ExprKind::Local(l) => Some(l),
         _ => None,
     }
 }

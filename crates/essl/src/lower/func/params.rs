@@ -37,16 +37,10 @@ struct Writes<'m> {
 impl Writes<'_> {
     /// Marks the parameter that the write target `e` is (part of).
     fn target(&mut self, e: &Expr) {
-        match &e.kind {
-            ExprKind::Param(i) => {
-                if let Some(w) = self.written.get_mut(*i) {
-                    *w = true;
-                }
+        if let ExprKind::Param(i) = e.write_root().kind {
+            if let Some(w) = self.written.get_mut(i) {
+                *w = true;
             }
-            ExprKind::Index(b, _) | ExprKind::Member(b, _) | ExprKind::Swizzle(b, _) => {
-                self.target(b)
-            }
-            _ => {}
         }
     }
 }
