@@ -280,9 +280,9 @@ impl<'c, 'a> FnCx<'c, 'a> {
         if let Some(h) = self.locals[l] {
             return h;
         }
+        // The function outlives `self`'s borrow: its name and type need no copies.
         let local = &self.hir_fn.expect("in a function").locals[l];
-        let (name, ty) = (local.name.as_str().to_owned(), local.ty.clone());
-        let h = self.new_local(&name, &ty);
+        let h = self.new_local(&local.name, &local.ty);
         self.locals[l] = Some(h);
         h
     }
