@@ -256,15 +256,15 @@ pub const RESERVED: &[&str] = &[
     "using",
 ];
 
-/// What a parser token is.
-#[derive(Clone, Debug, PartialEq)]
+/// What a parser token is. A word's text is the token's [`Token::text`].
+#[derive(Clone, Copy, Debug, PartialEq)]
 pub enum Tok {
     /// An identifier.
-    Ident(Name),
+    Ident,
     /// A keyword.
     Kw(Kw),
     /// A reserved word (an error to use; parsed as an identifier to recover).
-    Reserved(Name),
+    Reserved,
     /// An integer literal: its value (possibly past 32 bits: checked later) and `u` suffix.
     Int(u64, bool),
     /// A floating-point literal, rounded to f32.
@@ -339,18 +339,18 @@ fn known(text: &str) -> Option<Known> {
 }
 
 /// A word of the language: a keyword, a reserved word or an identifier.
-fn word(text: &Name, es100: bool) -> Tok {
+fn word(text: &str, es100: bool) -> Tok {
     let Some(k) = known(text) else {
-        return Tok::Ident(text.clone());
+        return Tok::Ident;
     };
     match k.kw {
-        Some(Kw::Attribute | Kw::Varying) if !es100 => Tok::Reserved(text.clone()),
-        Some(kw) if es100 && ES300_ONLY.contains(&kw) => Tok::Ident(text.clone()),
-        Some(kw) if es100 && ES300_RESERVED_IN_ES100.contains(&kw) => Tok::Reserved(text.clone()),
+        Some(Kw::Attribute | Kw::Varying) if !es100 => Tok::Reserved,
+        Some(kw) if es100 && ES300_ONLY.contains(&kw) => Tok::Ident,
+        Some(kw) if es100 && ES300_RESERVED_IN_ES100.contains(&kw) => Tok::Reserved,
         Some(kw) => Tok::Kw(kw),
-        None if es100 && k.reserved_es100 => Tok::Reserved(text.clone()),
-        None if !es100 && k.reserved_es300 => Tok::Reserved(text.clone()),
-        None => Tok::Ident(text.clone()),
+        None if es100 && k.reserved_es100 => Tok::Reserved,
+        None if !es100 && k.reserved_es300 => Tok::Reserved,
+        None => Tok::Ident,
     }
 }
 

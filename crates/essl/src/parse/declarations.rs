@@ -67,15 +67,15 @@ impl Parser<'_> {
         if self.at_kw(Kw::Precision) {
             return Ok(Some(ExternalDecl::Declaration(self.precision_statement()?)));
         }
-        if self.at_kw(Kw::Invariant) && matches!(self.peek_at(1).tok, Tok::Ident(_)) {
+        if self.at_kw(Kw::Invariant) && matches!(self.peek_at(1).tok, Tok::Ident) {
             return Ok(Some(ExternalDecl::Declaration(self.invariant_statement()?)));
         }
         let qualifiers = self.qualifiers()?;
         // Interface block: `uniform Name {`.
         if !qualifiers.is_empty() {
-            if let Tok::Ident(name) = self.tok().clone() {
+            if *self.tok() == Tok::Ident {
                 if matches!(self.peek_at(1).tok, Tok::P(Punct::LeftBrace))
-                    && !self.is_type_name(&name)
+                    && !self.is_type_name(&self.peek().text)
                 {
                     return Ok(Some(ExternalDecl::Declaration(
                         self.block(qualifiers, start)?,
@@ -96,7 +96,7 @@ impl Parser<'_> {
             qualifiers,
             spec,
         };
-        if let Tok::Ident(_) | Tok::Reserved(_) = self.tok() {
+        if let Tok::Ident | Tok::Reserved = self.tok() {
             if matches!(self.peek_at(1).tok, Tok::P(Punct::LeftParen)) {
                 let name = self.ident("a function name")?;
                 return self.function(ty, name, start).map(Some);
@@ -142,7 +142,7 @@ impl Parser<'_> {
         let open = self.expect(Punct::LeftBrace)?;
         let members = self.member_list(open)?;
         let instance = match self.tok() {
-            Tok::Ident(_) | Tok::Reserved(_) => {
+            Tok::Ident | Tok::Reserved => {
                 let n = self.ident("an instance name")?;
                 let a = if self.at(Punct::LeftBracket) {
                     Some(self.array_size()?)
@@ -167,7 +167,7 @@ impl Parser<'_> {
     /// grammar lets the list start with an empty declarator: `float, a;` declares `a`.
     fn declarators(&mut self, ty: FullType, start: Span) -> PResult<Declaration> {
         let mut declarators = Vec::new();
-        if self.at(Punct::Comma) && matches!(self.peek_at(1).tok, Tok::Ident(_)) {
+        if self.at(Punct::Comma) && matches!(self.peek_at(1).tok, Tok::Ident) {
             self.advance();
         }
         if !self.at(Punct::Semicolon) {
@@ -277,7 +277,7 @@ impl Parser<'_> {
             spec,
         };
         let name = match self.tok() {
-            Tok::Ident(_) | Tok::Reserved(_) => Some(self.ident("a parameter name")?),
+            Tok::Ident | Tok::Reserved => Some(self.ident("a parameter name")?),
             _ => None,
         };
         let array = if name.is_some() && self.at(Punct::LeftBracket) {
@@ -297,12 +297,12 @@ impl Parser<'_> {
     pub(super) fn at_declaration(&self) -> bool {
         match self.tok() {
             Tok::Kw(k) if is_qualifier_kw(*k) || *k == Kw::Struct || *k == Kw::Precision => true,
-            Tok::Reserved(r) if &**r == "attribute" || &**r == "varying" => true,
+            Tok::Reserved if matches!(&*self.peek().text, "attribute" | "varying") => true,
             Tok::Kw(k) if type_keyword(*k).is_some() => self.type_then_name(),
-            Tok::Ident(n) if self.is_type_name(n) => self.type_then_name(),
+            Tok::Ident if self.is_type_name(&self.peek().text) => self.type_then_name(),
             // Two names in a row can only be a declaration with an unknown type (`uint x`
             // in GLSL ES 1.00, a misspelt struct): read it as one, to say so.
-            Tok::Ident(_) => matches!(self.peek_at(1).tok, Tok::Ident(_)),
+            Tok::Ident => matches!(self.peek_at(1).tok, Tok::Ident),
             _ => false,
         }
     }
@@ -340,14 +340,14 @@ impl Parser<'_> {
         if self.at_kw(Kw::Precision) {
             return self.precision_statement();
         }
-        if self.at_kw(Kw::Invariant) && matches!(self.peek_at(1).tok, Tok::Ident(_)) {
+        if self.at_kw(Kw::Invariant) && matches!(self.peek_at(1).tok, Tok::Ident) {
             return self.invariant_statement();
         }
         let qualifiers = self.qualifiers()?;
         if !qualifiers.is_empty() {
-            if let Tok::Ident(name) = self.tok().clone() {
+            if *self.tok() == Tok::Ident {
                 if matches!(self.peek_at(1).tok, Tok::P(Punct::LeftBrace))
-                    && !self.is_type_name(&name)
+                    && !self.is_type_name(&self.peek().text)
                 {
                     return self.block(qualifiers, start);
                 }
@@ -359,7 +359,7 @@ impl Parser<'_> {
             qualifiers,
             spec,
         };
-        if let (Tok::Ident(_), Tok::P(Punct::LeftParen)) = (self.tok(), &self.peek_at(1).tok) {
+        if let (Tok::Ident, Tok::P(Punct::LeftParen)) = (self.tok(), &self.peek_at(1).tok) {
             let name = self.ident("a function name")?;
             let d = Diagnostic::error(
                 Code::NestedFunction,

@@ -204,7 +204,7 @@ impl Parser<'_> {
                     let name = match self.tok() {
                         // `v.length()` and swizzles/members named like keywords are not a thing,
                         // but give a clear message.
-                        Tok::Ident(_) | Tok::Reserved(_) => self.ident("a field name")?,
+                        Tok::Ident | Tok::Reserved => self.ident("a field name")?,
                         _ => return Err(self.expected("a field name or swizzle after `.`")),
                     };
                     if &*name.name == "length" && self.at(Punct::LeftParen) {
@@ -302,7 +302,7 @@ impl Parser<'_> {
                     span: open.to(close),
                 });
             }
-            Tok::Ident(ref name) if self.is_type_name(name) => {
+            Tok::Ident if self.is_type_name(&self.peek().text) => {
                 let spec = self.type_spec()?;
                 if !self.at(Punct::LeftParen) {
                     return Err(self.expected("`(` after a type name (a constructor)"));
@@ -318,7 +318,7 @@ impl Parser<'_> {
                     Some(_) => ExprKind::Call(Callee::Type(spec), args),
                 }
             }
-            Tok::Ident(_) | Tok::Reserved(_) => {
+            Tok::Ident | Tok::Reserved => {
                 let id = self.ident("an expression")?;
                 if self.at(Punct::LeftParen) {
                     let args = self.call_args()?;

@@ -184,10 +184,10 @@ impl<'a> Parser<'a> {
     fn describe(t: &Token) -> String {
         match &t.tok {
             Tok::Eof => "end of file".into(),
-            Tok::Ident(n) => format!("identifier `{n}`"),
+            Tok::Ident => format!("identifier `{}`", t.text),
             Tok::Int(..) | Tok::Float(_) => format!("number `{}`", t.text),
             Tok::Kw(k) => format!("`{}`", k.as_str()),
-            Tok::Reserved(r) => format!("reserved word `{r}`"),
+            Tok::Reserved => format!("reserved word `{}`", t.text),
             Tok::P(p) => format!("`{}`", p.as_str()),
             Tok::Error => format!("`{}`", t.text),
         }
@@ -376,9 +376,9 @@ impl<'a> Parser<'a> {
     }
 
     fn ident(&mut self, what: &str) -> PResult<Ident> {
-        if let Tok::Ident(name) = &self.peek().tok {
+        if self.peek().tok == Tok::Ident {
             let ident = Ident {
-                name: name.clone(),
+                name: self.peek().text.clone(),
                 span: self.peek().span,
             };
             self.advance();
@@ -386,18 +386,18 @@ impl<'a> Parser<'a> {
         }
         let t = self.peek().clone();
         match &t.tok {
-            Tok::Ident(name) => {
+            Tok::Ident => {
                 self.advance();
                 Ok(Ident {
-                    name: name.clone(),
+                    name: t.text.clone(),
                     span: t.span,
                 })
             }
-            Tok::Reserved(name) => {
+            Tok::Reserved => {
                 self.advance();
-                self.reserved_word(name, t.span);
+                self.reserved_word(&t.text, t.span);
                 Ok(Ident {
-                    name: name.clone(),
+                    name: t.text.clone(),
                     span: t.span,
                 })
             }

@@ -108,9 +108,9 @@ impl Parser<'_> {
                     out.push((Qualifier::Layout(items), self.span_from(span)));
                     continue;
                 }
-                Tok::Reserved(ref name) if &**name == "attribute" || &**name == "varying" => {
+                Tok::Reserved if matches!(&*self.peek().text, "attribute" | "varying") => {
                     // ES 1.00 qualifiers: report once, then read them as their ES 3.00 twins.
-                    let name = name.clone();
+                    let name = self.peek().text.clone();
                     let replacement = match (&*name, self.stage) {
                         ("attribute", _) | ("varying", Stage::Fragment) => "in",
                         _ => "out",
@@ -157,8 +157,8 @@ impl Parser<'_> {
                 }
                 None => return Err(self.expected("a type")),
             },
-            Tok::Ident(ref name) if self.is_type_name(name) => {
-                let name = name.clone();
+            Tok::Ident if self.is_type_name(&self.peek().text) => {
+                let name = self.peek().text.clone();
                 self.advance();
                 TypeName::Named(Ident { name, span: start })
             }
@@ -181,7 +181,8 @@ impl Parser<'_> {
     fn not_a_type(&mut self) -> Failed {
         let t = self.peek().clone();
         match &t.tok {
-            Tok::Ident(name) if self.hides_type(name) => {
+            Tok::Ident if self.hides_type(&t.text) => {
+                let name = &t.text;
                 let d = Diagnostic::error(
                     Code::UnknownType,
                     format!("`{name}` is a variable here, not a type"),
@@ -194,7 +195,8 @@ impl Parser<'_> {
                 self.report(d);
                 Failed
             }
-            Tok::Ident(name) => {
+            Tok::Ident => {
+                let name = &t.text;
                 let d =
                     Diagnostic::error(Code::UnknownType, format!("unknown type `{name}`"), t.span)
                         .with_label("not a type")
@@ -237,9 +239,9 @@ impl Parser<'_> {
                 self.report(d);
                 Failed
             }
-            Tok::Reserved(name) => {
+            Tok::Reserved => {
                 self.advance();
-                self.reserved_word(&name.clone(), t.span);
+                self.reserved_word(&t.text, t.span);
                 self.suppress = true;
                 Failed
             }
@@ -264,7 +266,7 @@ impl Parser<'_> {
     fn struct_decl(&mut self) -> PResult<StructDecl> {
         let start = self.bump_span(); // `struct`
         let name = match self.tok() {
-            Tok::Ident(_) | Tok::Reserved(_) => Some(self.ident("a struct name")?),
+            Tok::Ident | Tok::Reserved => Some(self.ident("a struct name")?),
             _ => None,
         };
         let open = self.expect(Punct::LeftBrace)?;
