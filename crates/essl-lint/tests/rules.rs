@@ -543,6 +543,14 @@ fn mediump_overflow() {
         "  r = v_x / max(u_a - u_b, 1e-6);",
         &["max(u_a - u_b, 1e-6)"],
     );
+    // 60000 fits; scaled by more than 1 it does not.
+    reports(
+        rule,
+        "mediump",
+        "",
+        "  float x = u_a * 6000.0;\n  r = x * 1.5;",
+        &["x * 1.5"],
+    );
 }
 
 #[test]
@@ -562,6 +570,13 @@ fn mediump_without_overflow_and_highp_are_fine() {
         "  r = clamp((v_x - u_b) / max(u_a - u_b, 1e-4), 0.0, 1.0);",
     );
     clean(rule, "mediump", "", "  r = u_a * u_b * u_k * v_x;");
+    // A constant of magnitude at most 1 only shrinks what it scales.
+    clean(
+        rule,
+        "mediump",
+        "",
+        "  float x = u_a * 6000.0;\n  r = x * 0.9 + x * -1.0 + 1.0 * x;",
+    );
     clean(
         rule,
         "mediump",

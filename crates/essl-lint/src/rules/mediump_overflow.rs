@@ -189,7 +189,28 @@ fn could_amplify(cx: &Cx, f: &Function, id: usize, e: &E) -> bool {
 /// 65504: each operand a constant or an external value as such (a uniform, input or texel, of
 /// magnitude at most [`TYPICAL`], more than the ordinary-values analysis gives any of them).
 /// Then the ordinary-values analysis cannot find an overflow there, and need not run.
+///
+/// A product with a constant of magnitude at most 1 (`0.05 * x`, `0.5 * (a + b)`) is bounded
+/// whatever the other operand: it is no larger than that operand, which the rule only
+/// considers while it is within 65504 (an operand that overflows already is its own finding).
 fn bounded_cheaply(cx: &Cx, id: usize, e: &E, ops: &[Handle<E>]) -> bool {
+    let shrinks = |h: Handle<E>| {
+        cx.sound().num(id, h).is_some_and(|n| {
+            n.comps()
+                .iter()
+                .all(|c| c.as_point().is_some_and(|x| x.abs() <= 1.0))
+        })
+    };
+    if matches!(
+        e,
+        E::Binary {
+            op: Bo::Multiply,
+            ..
+        }
+    ) && ops.iter().any(|o| shrinks(*o))
+    {
+        return true;
+    }
     let bound = |h: Handle<E>| {
         let n = cx.sound().num(id, h)?;
         if n.comps().iter().all(|c| c.as_point().is_some()) {
