@@ -551,6 +551,14 @@ fn mediump_overflow() {
         "  float x = u_a * 6000.0;\n  r = x * 1.5;",
         &["x * 1.5"],
     );
+    // Likewise through a parameter that its one call sets to 1.5.
+    reports(
+        rule,
+        "mediump",
+        "float scale(float x, float k) { return x * k; }",
+        "  r = scale(u_a * 6000.0, 1.5);",
+        &["x * k"],
+    );
 }
 
 #[test]
@@ -570,12 +578,19 @@ fn mediump_without_overflow_and_highp_are_fine() {
         "  r = clamp((v_x - u_b) / max(u_a - u_b, 1e-4), 0.0, 1.0);",
     );
     clean(rule, "mediump", "", "  r = u_a * u_b * u_k * v_x;");
-    // A constant of magnitude at most 1 only shrinks what it scales.
+    // A constant of magnitude at most 1 only shrinks what it scales, also as a parameter
+    // that every call sets to one.
     clean(
         rule,
         "mediump",
         "",
         "  float x = u_a * 6000.0;\n  r = x * 0.9 + x * -1.0 + 1.0 * x;",
+    );
+    clean(
+        rule,
+        "mediump",
+        "float scale(float x, float k) { return x * k; }",
+        "  r = scale(u_a * 6000.0, 0.9) + scale(u_a * 6000.0, -1.0);",
     );
     clean(
         rule,

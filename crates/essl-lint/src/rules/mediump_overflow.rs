@@ -79,6 +79,7 @@ pub const LIMIT: f64 = 65504.0;
 pub const MIN_NORMAL: f64 = 6.103515625e-5;
 
 fn check(cx: &Cx, out: &mut Vec<Diagnostic>) {
+    let literal_args = std::cell::OnceCell::new();
     for (id, f) in cx.functions() {
         let uses = Uses {
             cx,
@@ -118,6 +119,20 @@ fn check(cx: &Cx, out: &mut Vec<Diagnostic>) {
                 } => operands(e),
                 _ => continue,
             };
+            // Before the sound analysis, when the source alone shows a product that shrinks.
+            if matches!(
+                e,
+                E::Binary {
+                    op: Bo::Multiply,
+                    ..
+                }
+            ) && ops.iter().any(|o| {
+                literal_within_one(cx, f, id, *o, || {
+                    literal_args.get_or_init(|| literal_arguments(cx.module))
+                })
+            }) {
+                continue;
+            }
             // Before the ordinary-values analysis, which only this asks for.
             if !could_amplify(cx, f, id, e) || bounded_cheaply(cx, id, e, &ops) {
                 continue;
@@ -183,6 +198,70 @@ fn could_amplify(cx: &Cx, f: &Function, id: usize, e: &E) -> bool {
         } => cx.sound().same(f, id, arg, b),
         _ => true,
     }
+}
+
+/// Whether `h` is, in the source, a literal of magnitude at most 1 (`0.5`), or a parameter of a
+/// function every call of which passes one (dEQP's `isOk(a, b, 0.05)`): a product with it is
+/// bounded as [`bounded_cheaply`] says, and this needs no analysis. `args` gives
+/// [`literal_arguments`].
+fn literal_within_one<'m>(
+    cx: &Cx,
+    f: &Function,
+    id: usize,
+    h: Handle<E>,
+    args: impl FnOnce() -> &'m [Vec<Option<f64>>],
+) -> bool {
+    match f.expressions[h] {
+        E::Literal(naga::Literal::F32(v)) => v.abs() <= 1.0,
+        E::FunctionArgument(i) if id < cx.module.functions.len() => args()
+            .get(id)
+            .and_then(|a| a.get(i as usize).copied().flatten())
+            .is_some_and(|m| m <= 1.0),
+        _ => false,
+    }
+}
+
+/// For each module function (by handle index) and parameter, the largest magnitude of the
+/// `float` literals its calls pass there: `None` when some call passes anything else, or when
+/// nothing calls the function.
+fn literal_arguments(module: &naga::Module) -> Vec<Vec<Option<f64>>> {
+    let mut out: Vec<Vec<Option<f64>>> = module
+        .functions
+        .iter()
+        .map(|(_, f)| vec![None; f.arguments.len()])
+        .collect();
+    let mut called = vec![false; out.len()];
+    let callers = module
+        .functions
+        .iter()
+        .map(|(_, f)| f)
+        .chain(module.entry_points.iter().map(|ep| &ep.function));
+    for caller in callers {
+        crate::analysis::each_statement(&caller.body, &mut |st| {
+            let naga::Statement::Call {
+                function,
+                ref arguments,
+                ..
+            } = *st
+            else {
+                return;
+            };
+            let k = function.index();
+            let first = !std::mem::replace(&mut called[k], true);
+            for (slot, a) in out[k].iter_mut().zip(arguments) {
+                let lit = match caller.expressions[*a] {
+                    E::Literal(naga::Literal::F32(v)) if v.is_finite() => Some(f64::from(v.abs())),
+                    _ => None,
+                };
+                *slot = match (first, *slot, lit) {
+                    (true, _, l) => l,
+                    (false, Some(m), Some(l)) => Some(m.max(l)),
+                    _ => None,
+                };
+            }
+        });
+    }
+    out
 }
 
 /// Whether a generous bound on the ordinary values of `e`'s operands already keeps it within
