@@ -73,14 +73,13 @@ impl Parser<'_> {
         let qualifiers = self.qualifiers()?;
         // Interface block: `uniform Name {`.
         if !qualifiers.is_empty() {
-            if *self.tok() == Tok::Ident {
-                if matches!(self.peek_at(1).tok, Tok::P(Punct::LeftBrace))
-                    && !self.is_type_name(&self.peek().text)
-                {
-                    return Ok(Some(ExternalDecl::Declaration(
-                        self.block(qualifiers, start)?,
-                    )));
-                }
+            if *self.tok() == Tok::Ident
+                && matches!(self.peek_at(1).tok, Tok::P(Punct::LeftBrace))
+                && !self.is_type_name(&self.peek().text)
+            {
+                return Ok(Some(ExternalDecl::Declaration(
+                    self.block(qualifiers, start)?,
+                )));
             }
             if self.at(Punct::Semicolon) {
                 self.advance();
@@ -344,14 +343,12 @@ impl Parser<'_> {
             return self.invariant_statement();
         }
         let qualifiers = self.qualifiers()?;
-        if !qualifiers.is_empty() {
-            if *self.tok() == Tok::Ident {
-                if matches!(self.peek_at(1).tok, Tok::P(Punct::LeftBrace))
-                    && !self.is_type_name(&self.peek().text)
-                {
-                    return self.block(qualifiers, start);
-                }
-            }
+        if !qualifiers.is_empty()
+            && *self.tok() == Tok::Ident
+            && matches!(self.peek_at(1).tok, Tok::P(Punct::LeftBrace))
+            && !self.is_type_name(&self.peek().text)
+        {
+            return self.block(qualifiers, start);
         }
         let spec = self.type_spec()?;
         let ty = FullType {
