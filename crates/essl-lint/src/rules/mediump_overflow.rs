@@ -78,6 +78,36 @@ pub const LIMIT: f64 = 65504.0;
 /// The smallest normal 16-bit float (2^-14); smaller values may flush to zero.
 pub const MIN_NORMAL: f64 = 6.103515625e-5;
 
+/// Whether the rule looks at an expression of this kind: a product or quotient, a function
+/// that can amplify its argument, or one whose argument can underflow to 0 (`inversesqrt`,
+/// `log`, `log2`). [`super::candidates`] runs the rule only where one is computed in low
+/// precision.
+pub(super) fn looks_at(e: &E) -> bool {
+    matches!(
+        e,
+        E::Binary {
+            op: Bo::Multiply | Bo::Divide,
+            ..
+        } | E::Math {
+            fun: Mf::Pow
+                | Mf::Exp
+                | Mf::Exp2
+                | Mf::Dot
+                | Mf::Length
+                | Mf::Distance
+                | Mf::Normalize
+                | Mf::Cosh
+                | Mf::Sinh
+                | Mf::Fma
+                | Mf::Ldexp
+                | Mf::InverseSqrt
+                | Mf::Log
+                | Mf::Log2,
+            ..
+        }
+    )
+}
+
 fn check(cx: &Cx, out: &mut Vec<Diagnostic>) {
     let literal_args = std::cell::OnceCell::new();
     for (id, f) in cx.functions() {
@@ -96,6 +126,7 @@ fn check(cx: &Cx, out: &mut Vec<Diagnostic>) {
             if !cx.prec.is_low(span) {
                 continue;
             }
+            // Every kind matched here, and in `guarded_operand`, is one `looks_at` accepts.
             let ops: Vec<Handle<E>> = match *e {
                 E::Binary {
                     op: Bo::Multiply | Bo::Divide,

@@ -75,18 +75,25 @@ pub(crate) fn candidates(
     {
         return (false, false, None);
     }
-    let prec = crate::precision::Precisions::of(&shader.module);
-    let low = module.functions.iter().any(|(_, f)| {
-        f.expressions.iter().any(|(h, e)| {
-            matches!(
-                e,
-                E::Binary {
-                    op: Bo::Multiply,
-                    ..
-                } | E::Math { .. }
-            ) && prec.is_low(essl::source::Span::from(f.expressions.get_span(h)))
+    // The precisions only where the low-precision rule has something to look at (every dEQP
+    // fragment shader names `mediump` for its output).
+    let looked_at: Vec<(&naga::Function, naga::Handle<naga::Expression>)> = module
+        .functions
+        .iter()
+        .flat_map(|(_, f)| {
+            f.expressions
+                .iter()
+                .filter(|(_, e)| mediump_overflow::looks_at(e))
+                .map(move |(h, _)| (f, h))
         })
-    });
+        .collect();
+    if looked_at.is_empty() {
+        return (false, false, None);
+    }
+    let prec = crate::precision::Precisions::of(&shader.module);
+    let low = looked_at
+        .iter()
+        .any(|(f, h)| prec.is_low(essl::source::Span::from(f.expressions.get_span(*h))));
     (low, false, Some(prec))
 }
 
