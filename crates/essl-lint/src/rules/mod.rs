@@ -42,12 +42,12 @@ pub static RULES: &[&Rule] = &[
 pub(crate) const UNUSED_ALLOW: &str = "unused-essl-allow";
 
 /// Whether any rule has something to look at in a shader: a `pow`, `acos`, `asin`,
-/// `smoothstep` or `normalize` call, a division, or low-precision arithmetic
-/// (`mediump-overflow`; only looked up when the text names `mediump`, `lowp` or
-/// `gl_PointCoord`). Most
-/// conformance shaders have none, and then the analysis, which is most of the cost of linting,
-/// is not run. Also says whether something besides low-precision arithmetic is there (the rules
-/// that read signs and ranges), and gives the precisions back when it looked them up.
+/// `smoothstep` or `normalize` call, a division, or low-precision arithmetic of a kind
+/// `mediump-overflow` looks at (the precisions are only looked up when the text names
+/// `mediump`, `lowp` or `gl_PointCoord` and such arithmetic is there). Most conformance shaders
+/// have none, and then the analysis, which is most of the cost of linting, is not run. Also
+/// says whether something besides low-precision arithmetic is there (the rules that read signs
+/// and ranges), and gives the precisions back when it looked them up.
 pub(crate) fn candidates(
     shader: &essl::Shader,
     module: &naga::Module,
