@@ -7,7 +7,8 @@
 #   essl lint --format json --no-link DIR    compile every file (the same work as glslang)
 #   glslangValidator -t case*                one process, all files, its multi-threaded mode
 #   xargs -P2 -n1 glslangValidator           one process per file, two at a time
-# and prints the mean times and the ratios, then the median ratio of interleaved rounds (ROUNDS,
+# and prints the mean times, the CPU time per shader (user, and user + system) and the ratios,
+# then the median ratio of interleaved rounds (ROUNDS,
 # default 21). glslangValidator compiles each file on its own (no `-l`: `-l` links all inputs
 # into one program, which is not what the corpus means).
 #
@@ -69,9 +70,16 @@ for path in sys.argv[1:]:
     if os.path.exists(path):
         results += json.load(open(path))["results"]
 mean = {x["command"]: x["mean"] for x in results}
+files = len(os.listdir("."))
 print()
 for x in results:
     print(f"{x['command']:55} {x['mean'] * 1000:9.1f} ms ± {x['stddev'] * 1000 if x['stddev'] else 0:.1f}")
+print()
+# CPU per shader: the mean user time of the runs over the number of files (all threads
+# together), and with the kernel's time added.
+for x in results:
+    user, system = x["user"] * 1e6 / files, x["system"] * 1e6 / files
+    print(f"CPU per shader, {x['command'][:45]:45} {user:6.1f} µs user, {user + system:6.1f} µs user + system")
 print()
 essl, essl_nolink, g_all = list(mean.values())[:3]
 print(f"glslangValidator -t (one process) / essl lint:           {g_all / essl:6.2f}x")
