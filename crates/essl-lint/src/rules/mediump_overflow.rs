@@ -83,28 +83,31 @@ pub const MIN_NORMAL: f64 = 6.103515625e-5;
 /// `log`, `log2`). [`super::candidates`] runs the rule only where one is computed in low
 /// precision.
 pub(super) fn looks_at(e: &E) -> bool {
-    matches!(
-        e,
-        E::Binary {
-            op: Bo::Multiply | Bo::Divide,
-            ..
-        } | E::Math {
-            fun: Mf::Pow
-                | Mf::Exp
-                | Mf::Exp2
-                | Mf::Dot
-                | Mf::Length
-                | Mf::Distance
-                | Mf::Normalize
-                | Mf::Cosh
-                | Mf::Sinh
-                | Mf::Fma
-                | Mf::Ldexp
-                | Mf::InverseSqrt
-                | Mf::Log
-                | Mf::Log2,
-            ..
+    match *e {
+        E::Binary { op, .. } => matches!(op, Bo::Multiply | Bo::Divide),
+        E::Math { fun, .. } => {
+            amplifies(fun) || matches!(fun, Mf::InverseSqrt | Mf::Log | Mf::Log2)
         }
+        _ => false,
+    }
+}
+
+/// The built-in functions that can amplify their argument past 65504: powers, exponentials,
+/// the sums of squares inside dot products, lengths and distances.
+fn amplifies(fun: Mf) -> bool {
+    matches!(
+        fun,
+        Mf::Pow
+            | Mf::Exp
+            | Mf::Exp2
+            | Mf::Dot
+            | Mf::Length
+            | Mf::Distance
+            | Mf::Normalize
+            | Mf::Cosh
+            | Mf::Sinh
+            | Mf::Fma
+            | Mf::Ldexp
     )
 }
 
@@ -133,21 +136,7 @@ fn check(cx: &Cx, out: &mut Vec<Diagnostic>) {
                     left,
                     right,
                 } => vec![left, right],
-                E::Math {
-                    fun:
-                        Mf::Pow
-                        | Mf::Exp
-                        | Mf::Exp2
-                        | Mf::Dot
-                        | Mf::Length
-                        | Mf::Distance
-                        | Mf::Normalize
-                        | Mf::Cosh
-                        | Mf::Sinh
-                        | Mf::Fma
-                        | Mf::Ldexp,
-                    ..
-                } => operands(e),
+                E::Math { fun, .. } if amplifies(fun) => operands(e),
                 _ => continue,
             };
             // Before the sound analysis, when the source alone shows a product that shrinks.
