@@ -20,20 +20,7 @@ corpora="${3:-../shared/corpora}"
 
 dir="$(mktemp -d)"
 trap 'rm -rf "$dir"' EXIT
-python3 - "$corpora/deqp_gles3.jsonl" "$dir" <<'EOF'
-import json, os, sys
-src, out = sys.argv[1], sys.argv[2]
-n = 0
-for line in open(src, encoding="utf-8"):
-    case = json.loads(line)
-    if case.get("version") != "300 es":
-        continue
-    n += 1
-    for key, ext in (("vertex_source", "vert"), ("fragment_source", "frag")):
-        if case.get(key):
-            with open(os.path.join(out, f"case{n:05}.{ext}"), "w", encoding="utf-8") as f:
-                f.write(case[key])
-EOF
+python3 scripts/write-deqp-shaders.py "$corpora/deqp_gles3.jsonl" "$dir" >/dev/null
 
 python3 - "$a" "$b" "$dir" "${ROUNDS:-15}" "${THREADS:-}" <<'EOF'
 import os, resource, statistics, subprocess, sys

@@ -28,23 +28,7 @@ essl="$PWD/target/release/essl"
 
 dir="$(mktemp -d)"
 trap 'rm -rf "$dir"' EXIT
-python3 - "$corpora/deqp_gles3.jsonl" "$dir/shaders" <<'EOF'
-import json, os, sys
-src, out = sys.argv[1], sys.argv[2]
-os.makedirs(out)
-n = 0
-for line in open(src, encoding="utf-8"):
-    case = json.loads(line)
-    if case.get("version") != "300 es":
-        continue
-    n += 1
-    for key, ext in (("vertex_source", "vert"), ("fragment_source", "frag")):
-        if case.get(key):
-            with open(os.path.join(out, f"case{n:05}.{ext}"), "w", encoding="utf-8") as f:
-                f.write(case[key])
-print(f"{n} cases, {len(os.listdir(out))} files, "
-      f"{sum(os.path.getsize(os.path.join(out, p)) for p in os.listdir(out)) // 1024} KiB")
-EOF
+python3 scripts/write-deqp-shaders.py "$corpora/deqp_gles3.jsonl" "$dir/shaders"
 (cd "$dir/shaders" && ls) > "$dir/files.txt"
 
 echo "machine: $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //')"
