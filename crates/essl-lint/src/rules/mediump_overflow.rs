@@ -10,7 +10,7 @@ use naga::{
 
 use super::rule::declare_rule;
 use super::{fmt_num, operands, users, Cx, User};
-use crate::analysis::TYPICAL;
+use crate::analysis::{literal, TYPICAL};
 use crate::interval::Interval;
 use crate::Level;
 
@@ -232,7 +232,7 @@ fn literal_within_one<'m>(
     args: impl FnOnce() -> &'m [Vec<Option<f64>>],
 ) -> bool {
     match f.expressions[h] {
-        E::Literal(naga::Literal::F32(v)) => v.abs() <= 1.0,
+        E::Literal(l) => literal(&l).abs() <= 1.0,
         E::FunctionArgument(i) if id < cx.module.functions.len() => args()
             .get(id)
             .and_then(|a| a.get(i as usize).copied().flatten())
@@ -242,8 +242,8 @@ fn literal_within_one<'m>(
 }
 
 /// For each module function (by handle index) and parameter, the largest magnitude of the
-/// `float` literals its calls pass there: `None` when some call passes anything else, or when
-/// nothing calls the function.
+/// literals its calls pass there: `None` when some call passes anything else, or when nothing
+/// calls the function.
 fn literal_arguments(module: &naga::Module) -> Vec<Vec<Option<f64>>> {
     let mut out: Vec<Vec<Option<f64>>> = module
         .functions
@@ -270,7 +270,7 @@ fn literal_arguments(module: &naga::Module) -> Vec<Vec<Option<f64>>> {
             let first = !std::mem::replace(&mut called[k], true);
             for (slot, a) in out[k].iter_mut().zip(arguments) {
                 let lit = match caller.expressions[*a] {
-                    E::Literal(naga::Literal::F32(v)) if v.is_finite() => Some(f64::from(v.abs())),
+                    E::Literal(l) => Some(literal(&l).abs()).filter(|m| m.is_finite()),
                     _ => None,
                 };
                 *slot = match (first, *slot, lit) {
