@@ -1,5 +1,8 @@
-//! Checking a folder of shaders from a build script: compile, lint and link every shader the way
-//! `essl lint` does, tell Cargo what to watch and what went wrong, and fail on errors.
+//! Checking a folder of shaders from a build script: the one checking pipeline
+//! ([`essl_check`], the one `essl lint` and the editor server use) finds, compiles, lints and
+//! links every shader — shader files, `.glsl` files essl.toml places, shaders inside HTML and
+//! JS/TS files, `#include`s where essl.toml names include folders — and this module tells
+//! Cargo what to watch and what went wrong, and fails on errors.
 //!
 //! Cargo reads a build script's standard output: each diagnostic becomes a
 //! `cargo:warning=FILE:LINE:COL: error[CODE]: MESSAGE` line (Cargo shows those on every build),
@@ -8,7 +11,6 @@
 //! rustc-style text of each diagnostic goes to standard error, which Cargo shows when the
 //! script fails.
 
-use std::collections::HashMap;
 use std::io::Write;
 use std::path::{Path, PathBuf};
 use std::sync::Arc;
@@ -16,10 +18,10 @@ use std::sync::Arc;
 use essl::diagnostic::{Diagnostic, Severity};
 use essl::link::Program;
 use essl::source::SourceFile;
-use essl::{Shader, Stage};
-
-use crate::config::{Config, ConfigError};
-use crate::files::{self, ShaderFile};
+use essl::Shader;
+use essl_check::{
+    CheckOptions, CheckedUnit, ConfigError, Configs, Files, FindOptions, Found, Overrides,
+};
 
 /// Why a check failed. Its `Debug` is its `Display`, so that `fn main() -> Result<(), Box<dyn
 /// Error>>` in a build script prints the message, not a struct.
@@ -36,7 +38,7 @@ pub enum CheckError {
     },
     /// An `essl.toml` on the way could not be used.
     #[error("essl: {0}")]
-    Config(#[from] ConfigError),
+    Config(Arc<ConfigError>),
     /// Some shader has errors (or warnings, when warnings are denied).
     #[error(
         "essl: {errors} error{} in the shaders under `{}` ({} file{} checked, {} program{} linked); \
@@ -200,149 +202,124 @@ impl Check {
         if let Err(e) = std::fs::read_dir(&dir) {
             return Err(CheckError::Folder {
                 path: dir,
-                message: files::io_message(&e),
+                message: essl_check::io_message(&e),
             });
         }
         writeln!(cargo, "cargo:rerun-if-changed={}", dir.display())?;
-        let mut configs = Configs::default();
-        let mut config_error = None;
-        let mut filter = self.filter.take();
-        let (found, walk_errors) = files::walk(&dir, &mut |path| {
-            if filter.as_mut().is_some_and(|keep| !keep(path)) {
-                return false;
-            }
-            match configs.for_file(path) {
-                Ok(config) => !config.excludes(path),
-                Err(e) => {
-                    config_error.get_or_insert(e);
-                    false
-                }
-            }
+        let configs = Configs::new(Overrides {
+            deny_warnings: self.deny_warnings,
+            ..Overrides::default()
         });
-        if let Some(e) = config_error {
-            return Err(e.into());
+        let mut found = essl_check::find(std::slice::from_ref(&dir), &FindOptions::new(), &configs)
+            .map_err(|e| CheckError::Folder {
+                path: dir.clone(),
+                message: e.to_string(),
+            })?;
+        if let Some(keep) = self.filter.as_mut() {
+            filter(&mut found, &dir, keep);
         }
-        if let Some((path, e)) = walk_errors.into_iter().next() {
-            return Err(CheckError::Folder {
-                path,
-                message: files::io_message(&e),
+        if let Some(e) = std::mem::take(&mut found.errors).into_iter().next() {
+            return Err(match e {
+                essl_check::FindError::Config(c) => CheckError::Config(c),
+                other => CheckError::Folder {
+                    path: dir,
+                    message: other.to_string(),
+                },
             });
         }
         for path in configs.used() {
             writeln!(cargo, "cargo:rerun-if-changed={}", path.display())?;
         }
-        if found.is_empty() {
+        let shaders = found.shader_count();
+        if shaders == 0 {
             writeln!(
                 cargo,
                 "cargo:warning=essl: no shader under `{}` (files named .vert/.vs/.vsh or \
-                 .frag/.fs/.fsh are checked)",
+                 .frag/.fs/.fsh, .glsl files essl.toml places, and shaders inside .html and \
+                 .js/.ts files are checked)",
                 dir.display()
             )?;
         }
-
-        let mut tally = Tally::default();
-        let mut shaders: Vec<Option<Shader>> = Vec::with_capacity(found.len());
-        for file in &found {
-            let config = configs.for_file(&file.path)?;
-            let deny = self.deny_warnings || config.deny_warnings;
-            let shader = match files::read_source(&file.path) {
-                Ok(text) => {
-                    let shader = self.compile(file, text, &config);
-                    for d in &shader.diagnostics {
-                        tally.report(cargo, &file.path, Some(&shader.file), d, deny)?;
-                    }
-                    if !shader.diagnostics.is_empty() {
-                        human.write_all(
-                            essl::render::human_string(&shader.file, &shader.diagnostics)
-                                .as_bytes(),
-                        )?;
-                    }
-                    Some(shader)
-                }
-                Err(e) => {
-                    tally.errors += 1;
-                    writeln!(cargo, "cargo:warning={}: error: {e}", file.path.display())?;
-                    None
-                }
-            };
-            shaders.push(shader);
+        for s in &found.skipped {
+            writeln!(
+                cargo,
+                "cargo:warning={}: shader not checked: {}",
+                s.at,
+                s.reason()
+            )?;
         }
-
-        let mut programs = Vec::new();
-        let pairs = if self.link {
-            files::pairs(&found)
-        } else {
-            Vec::new()
+        let options = CheckOptions {
+            link: self.link,
+            lints: self.lints,
+            ..CheckOptions::default()
         };
-        for (v, f) in pairs {
-            let deny = self.deny_warnings || configs.for_file(&found[v].path)?.deny_warnings;
-            let (Some(vs), Some(fs)) = (&shaders[v], &shaders[f]) else {
-                continue;
-            };
-            if !(vs.ok() && fs.ok()) {
-                continue;
-            }
-            let program = essl::link::link(vs, fs);
-            for d in &program.diagnostics {
-                let (path, file) = match d.stage {
-                    Some(Stage::Vertex) => (found[v].path.clone(), Some(&vs.file)),
-                    Some(Stage::Fragment) => (found[f].path.clone(), Some(&fs.file)),
-                    None => (program_path(&found[v].path, &found[f].path), None),
-                };
-                tally.report(cargo, &path, file, &d.diagnostic, deny)?;
-                if let Some(file) = file {
-                    let text =
-                        essl::render::human_string(file, std::slice::from_ref(&d.diagnostic));
-                    human.write_all(text.as_bytes())?;
-                }
-            }
-            if program.ok {
-                let vertex = shaders[v].take().expect("present");
-                let fragment = shaders[f].take().expect("present");
-                programs.push(LinkedProgram {
-                    name: module_name(&dir, &found[v].path),
-                    vertex_path: found[v].path.clone(),
-                    fragment_path: found[f].path.clone(),
-                    vertex,
-                    fragment,
-                    program,
-                });
-            } else {
-                // A link can fail with only `None`-stage diagnostics' text in its log.
-                tally.errors += program.diagnostics.is_empty() as usize;
-            }
+        let keep = |_, unit: CheckedUnit| unit;
+        let run = essl_check::run(&found, &configs, &mut Files::disk(), options, &keep);
+        let mut tally = Tally::default();
+        let mut watched = std::collections::BTreeSet::new();
+        let mut programs = Vec::new();
+        for unit in run.results {
+            tally.unit(cargo, human, &unit, &configs, &dir, &mut watched)?;
+            programs.extend(linked_programs(unit, &dir));
+        }
+        for path in watched {
+            writeln!(cargo, "cargo:rerun-if-changed={}", path.display())?;
         }
         if tally.errors > 0 {
             return Err(CheckError::Failed {
                 path: dir,
                 errors: tally.errors,
-                files: found.len(),
+                files: shaders,
                 programs: programs.len(),
             });
         }
         Ok(Report {
-            files: found.len(),
+            files: shaders,
             warnings: tally.warnings,
             programs,
         })
     }
+}
 
-    fn compile(&self, file: &ShaderFile, text: String, config: &Config) -> Shader {
-        let name = file.path.display().to_string();
-        let mut shader = essl::compile(
-            SourceFile::new(name, text),
-            file.stage,
-            &config.compile_options(),
-        );
-        if self.lints {
-            let found = essl_lint::lint(&shader, &config.rules);
-            if !found.is_empty() {
-                shader.diagnostics.extend(found);
-                essl::diagnostic::sort(&mut shader.diagnostics);
+/// Keeps the shaders whose file, and every folder between `dir` and it, `keep` accepts.
+fn filter(found: &mut Found, dir: &Path, keep: &mut dyn FnMut(&Path) -> bool) {
+    let mut kept = |path: &Path| {
+        let mut ok = true;
+        for a in path.ancestors().skip(1) {
+            if a == dir || !a.starts_with(dir) {
+                break;
             }
+            ok &= keep(a);
         }
-        shader
+        ok && keep(path)
+    };
+    found.inputs.retain(|i| kept(&i.path));
+    found.hosts.retain(|h| kept(&h.path));
+}
+
+/// The programs of a unit that linked, with their shaders.
+fn linked_programs(mut unit: CheckedUnit, dir: &Path) -> Vec<LinkedProgram> {
+    let mut out = Vec::new();
+    for p in unit.programs {
+        let Some(program) = p.program.filter(|x| x.ok && p.linked) else {
+            continue;
+        };
+        let (v, f) = (p.vertex, p.fragment);
+        let (Some(vertex), Some(fragment)) =
+            (unit.shaders[v].shader.take(), unit.shaders[f].shader.take())
+        else {
+            continue;
+        };
+        out.push(LinkedProgram {
+            name: module_name(dir, &unit.shaders[v].path),
+            vertex_path: unit.shaders[v].path.clone(),
+            fragment_path: unit.shaders[f].path.clone(),
+            vertex,
+            fragment,
+            program,
+        });
     }
+    out
 }
 
 /// `a.vert + a.frag`, for link diagnostics that belong to neither file.
@@ -381,11 +358,80 @@ struct Tally {
 }
 
 impl Tally {
+    /// Reports a unit: its unreadable files, its shaders' diagnostics (the lints' notes left
+    /// out) and its programs'; records the files it includes from outside `dir`, for Cargo to
+    /// watch.
+    fn unit(
+        &mut self,
+        cargo: &mut dyn Write,
+        human: &mut dyn Write,
+        unit: &CheckedUnit,
+        configs: &Configs,
+        dir: &Path,
+        watched: &mut std::collections::BTreeSet<PathBuf>,
+    ) -> std::io::Result<()> {
+        for u in &unit.unread {
+            self.errors += 1;
+            writeln!(
+                cargo,
+                "cargo:warning={}: error: {}",
+                u.path.display(),
+                u.message
+            )?;
+        }
+        for s in &unit.shaders {
+            let deny = configs.for_file(&s.path).is_ok_and(|c| c.deny_warnings);
+            for g in &s.diagnostics {
+                let shown: Vec<Diagnostic> = g
+                    .diagnostics
+                    .iter()
+                    .filter(|d| d.severity != Severity::Note)
+                    .cloned()
+                    .collect();
+                for d in &shown {
+                    self.report(cargo, Some(&g.file), g.file.name(), d, deny)?;
+                }
+                if !shown.is_empty() {
+                    human.write_all(essl::render::human_string(&g.file, &shown).as_bytes())?;
+                }
+            }
+            for f in s.assembly.files().iter().skip(1) {
+                let path = PathBuf::from(f.name());
+                if !path.starts_with(dir) {
+                    watched.insert(path);
+                }
+            }
+        }
+        for p in &unit.programs {
+            let (vs, fs) = (&unit.shaders[p.vertex], &unit.shaders[p.fragment]);
+            let deny = configs.for_file(&vs.path).is_ok_and(|c| c.deny_warnings);
+            let Some(program) = p.program.as_ref().filter(|_| p.linked) else {
+                continue;
+            };
+            for d in &p.diagnostics {
+                let name = match &d.file {
+                    Some(f) => f.name().to_string(),
+                    None => program_path(&vs.path, &fs.path).display().to_string(),
+                };
+                self.report(cargo, d.file.as_deref(), &name, &d.diagnostic, deny)?;
+                if let Some(file) = &d.file {
+                    let one = std::slice::from_ref(&d.diagnostic);
+                    human.write_all(essl::render::human_string(file, one).as_bytes())?;
+                }
+            }
+            // A link can fail with only `None`-stage diagnostics' text in its log.
+            if !program.ok && p.diagnostics.is_empty() {
+                self.errors += 1;
+            }
+        }
+        Ok(())
+    }
+
     fn report(
         &mut self,
         cargo: &mut dyn Write,
-        path: &Path,
         file: Option<&SourceFile>,
+        name: &str,
         d: &Diagnostic,
         deny_warnings: bool,
     ) -> std::io::Result<()> {
@@ -399,9 +445,9 @@ impl Tally {
         let at = match file {
             Some(file) => {
                 let lc = file.line_col(d.span.start);
-                format!("{}:{}:{}", path.display(), lc.line, lc.column)
+                format!("{name}:{}:{}", lc.line, lc.column)
             }
-            None => path.display().to_string(),
+            None => name.to_string(),
         };
         let severity = match (d.severity, error) {
             (Severity::Error, _) => "error",
@@ -415,35 +461,6 @@ impl Tally {
             "cargo:warning={at}: {severity}[{}]: {message}",
             d.code
         )
-    }
-}
-
-/// The settings of each folder, read once.
-#[derive(Default)]
-struct Configs {
-    by_folder: HashMap<PathBuf, Arc<Config>>,
-}
-
-impl Configs {
-    fn for_file(&mut self, path: &Path) -> Result<Arc<Config>, ConfigError> {
-        let folder = path.parent().unwrap_or(Path::new(".")).to_path_buf();
-        if let Some(c) = self.by_folder.get(&folder) {
-            return Ok(c.clone());
-        }
-        let config = Arc::new(Config::discover(&folder)?.unwrap_or_default());
-        self.by_folder.insert(folder, config.clone());
-        Ok(config)
-    }
-
-    fn used(&self) -> Vec<PathBuf> {
-        let mut paths: Vec<PathBuf> = self
-            .by_folder
-            .values()
-            .filter_map(|c| c.path.clone())
-            .collect();
-        paths.sort();
-        paths.dedup();
-        paths
     }
 }
 

@@ -18,9 +18,6 @@
 //! }
 //! ```
 //!
-//! [`extract`] finds the shaders inside HTML pages and JS/TS files, for `essl lint` and the
-//! editor server.
-//!
 //! `docs/testing.md` shows the whole set-up, with `essl::snapshot` for snapshot tests. This
 //! crate depends on the front end and the lints only: a build script that uses it builds no
 //! GPU stack.
@@ -29,9 +26,6 @@
 
 pub mod bindings;
 mod check;
-pub mod config;
-pub mod extract;
-pub mod files;
 
 pub use check::{check, module_name, Check, CheckError, LinkedProgram, Report};
-pub use config::{Config, ConfigError};
+pub use essl_check::{Config, ConfigError};

@@ -389,7 +389,7 @@ fn set_uniform(gl: &mut Context, program: Program, name: &str, v: &Value, sub: u
 /// Reads the corpus' executed cases, those whose name contains `only` if given.
 pub fn read_cases(corpus: &Path, only: Option<&str>) -> Result<Vec<Case>, String> {
     let text = std::fs::read_to_string(corpus)
-        .map_err(|e| format!("{}: {}", corpus.display(), crate::files::io_message(&e)))?;
+        .map_err(|e| format!("{}: {}", corpus.display(), essl_check::io_message(&e)))?;
     let mut cases = Vec::new();
     for (i, line) in text.lines().enumerate() {
         if line.trim().is_empty() {
@@ -442,7 +442,7 @@ pub fn run(corpus: &Path, only: Option<&str>, out: Option<&Path>, via_wgsl: bool
     if let Err(e) = written {
         eprintln!(
             "error: cannot write the results: {}",
-            crate::files::io_message(&e)
+            essl_check::io_message(&e)
         );
         return 2;
     }

@@ -2,10 +2,11 @@
 //! the exit status, so that the binary (`main.rs`, the clap definitions) stays thin and tests can
 //! call the same code.
 //!
-//! - [`lint`]: `essl lint` — check shaders and programs: find the inputs ([`discover`], with
-//!   the shaders inside HTML and JS files from [`extract`]), check them, render the results as
-//!   text, JSON Lines, SARIF, GitHub annotations or one line each (its module doc shows the
-//!   pipeline); [`settings`] reads `essl.toml` and prints it (`essl config`).
+//! - [`lint`]: `essl lint` — check shaders and programs through the one checking pipeline
+//!   ([`essl_check`]: finding them in files, folders, HTML and JS, essl.toml, includes, fixes,
+//!   compile, lint, link), and render the results as text, JSON Lines, SARIF, GitHub
+//!   annotations or one line each; [`settings`] prints the `essl.toml` settings in effect
+//!   (`essl config`).
 //! - [`explain`]: `essl explain CODE` — a diagnostic code's documentation.
 //!
 //! `render`, `deqp_exec` (Cargo feature `render`) and `report` (feature `report`) use the
@@ -20,10 +21,7 @@
 pub mod conformance;
 #[cfg(feature = "render")]
 pub mod deqp_exec;
-pub mod discover;
 pub mod explain;
-pub use essl_build::extract;
-mod files;
 pub mod lint;
 #[cfg(feature = "render")]
 pub mod render;

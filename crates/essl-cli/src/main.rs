@@ -5,7 +5,6 @@ use std::process::ExitCode;
 
 use clap::{Args, Parser, Subcommand, ValueEnum};
 use essl::Stage;
-use essl_cli::discover::Finder;
 use essl_cli::lint::{ColorMode, Format, LintOptions, EXIT_USAGE};
 
 /// WebGL shader toolkit: GLSL ES 3.00 and 1.00, for WebGL 2 and WebGL 1.
@@ -359,12 +358,14 @@ fn parse_define(s: &str) -> Result<(String, String), String> {
 
 /// The lint levels given on the command line, in the order given (a later one wins), on top
 /// of `base` (essl.toml's).
+/// The `--allow/--note/--warn/--deny RULE` flags, in the order given (a later one wins), on
+/// top of each folder's essl.toml; `--deny warnings` makes every warning an error.
 fn rule_levels(
     matches: &clap::ArgMatches,
-    base: essl_lint::LintOptions,
-) -> Result<(essl_lint::LintOptions, bool), essl_lint::UnknownRule> {
+    overrides: &mut essl_check::Overrides,
+) -> Result<(), essl_lint::UnknownRule> {
     let Some(("lint", m)) = matches.subcommand() else {
-        return Ok((base, false));
+        return Ok(());
     };
     let mut given: Vec<(usize, &str, essl_lint::Level)> = Vec::new();
     for (flag, level) in [
@@ -380,16 +381,14 @@ fn rule_levels(
         }
     }
     given.sort_by_key(|(i, _, _)| *i);
-    let mut options = base;
-    let mut deny_warnings = false;
     for (_, rule, level) in given {
         if rule == "warnings" && level == essl_lint::Level::Deny {
-            deny_warnings = true;
+            overrides.deny_warnings = true;
             continue;
         }
-        options.set(rule, level)?;
+        overrides.rule(rule, level)?;
     }
-    Ok((options, deny_warnings))
+    Ok(())
 }
 
 #[cfg(feature = "mimalloc")]
@@ -410,24 +409,18 @@ fn glob_set(patterns: &[String]) -> Result<Option<globset::GlobSet>, String> {
 
 /// `essl lint`: essl.toml's settings with the flags on top, then the run.
 fn lint(args: LintArgs, matches: &clap::ArgMatches) -> i32 {
-    let config = match essl_cli::settings::load(
-        args.config.as_deref(),
-        &args.paths,
-        args.stdin_filename.as_deref(),
-    ) {
-        Ok(c) => c,
-        Err(e) => {
-            eprintln!("error: {e}");
-            return EXIT_USAGE;
-        }
+    let mut overrides = essl_check::Overrides {
+        config: args.config.clone(),
+        target: args.target.map(essl::Target::from),
+        defines: args.define.clone(),
+        include_dirs: args.include.clone(),
+        stage: args.stage.map(Stage::from),
+        ..essl_check::Overrides::default()
     };
-    let (rules, deny_warnings) = match rule_levels(matches, config.rules.clone()) {
-        Ok(r) => r,
-        Err(e) => {
-            eprintln!("error: {e}");
-            return EXIT_USAGE;
-        }
-    };
+    if let Err(e) = rule_levels(matches, &mut overrides) {
+        eprintln!("error: {e}");
+        return EXIT_USAGE;
+    }
     let mut exclude = args.exclude.clone().unwrap_or_default();
     exclude.extend(args.extend_exclude.iter().cloned());
     let exclude = match glob_set(&exclude) {
@@ -437,25 +430,15 @@ fn lint(args: LintArgs, matches: &clap::ArgMatches) -> i32 {
             return EXIT_USAGE;
         }
     };
-    let mut defines = config.defines.clone();
-    defines.extend(args.define);
-    let mut include_dirs = args.include.clone();
-    include_dirs.extend(config.include_dirs());
-    let target = args
-        .target
-        .map(essl::Target::from)
-        .or(config.target)
-        .unwrap_or(essl::Target::WebGl2);
-    let finder = Finder {
-        forced: args.stage.map(Stage::from),
-        exclude,
-        config_exclude: args.exclude.is_none(),
-        stdin_name: args.stdin_filename,
-        config: config.clone(),
-    };
     essl_cli::lint::run(&LintOptions {
         paths: args.paths,
-        finder,
+        find: essl_check::FindOptions {
+            exclude,
+            config_exclude: args.exclude.is_none(),
+            stdin_name: args.stdin_filename,
+            hosts: true,
+        },
+        overrides,
         format: match args.format {
             FormatArg::Human => Format::Human,
             FormatArg::Json => Format::Json,
@@ -474,13 +457,8 @@ fn lint(args: LintArgs, matches: &clap::ArgMatches) -> i32 {
         quiet: args.quiet,
         statistics: args.statistics,
         exit_zero: args.exit_zero,
-        deny_warnings: deny_warnings || config.deny_warnings,
         show_notes: args.show_notes,
-        defines,
-        include_dirs,
         link: !args.no_link,
-        target,
-        rules,
     })
 }
 

@@ -5,7 +5,7 @@
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
 
-use essl_build::{Config, ConfigError};
+use essl_check::{Config, ConfigError};
 
 /// Where to look for `essl.toml`: `explicit` (`--config FILE`), else upward from the folder
 /// of the first path (standard input: the `--stdin-filename`'s folder, else the current one).

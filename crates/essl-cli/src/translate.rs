@@ -1,7 +1,8 @@
 //! `essl translate`: WebGL shaders to WGSL (or SPIR-V, MSL, HLSL, desktop GLSL), with the
 //! binding map beside them.
 //!
-//! Files and folders are found as `essl lint` finds them; every `NAME.vert` + `NAME.frag` pair
+//! Files and folders are found, and shaders compiled with their folder's essl.toml, by the same
+//! pipeline as `essl lint` ([`essl_check`]); every `NAME.vert` + `NAME.frag` pair
 //! is linked and translated as a program (matching varying locations, one uniform buffer for
 //! both stages), any other shader on its own. Each output goes next to its input, or into the
 //! folder `-o` names, as the input's file name plus the target's extension
@@ -11,9 +12,8 @@
 
 use std::path::{Path, PathBuf};
 
-use crate::files;
-use essl::source::SourceFile;
-use essl::{CompileOptions, Shader, Stage};
+use essl::Stage;
+use essl_check::CheckedShader;
 use essl_translate::{BindingMap, Code, Options, Target, TranslateError};
 
 /// What `essl translate` was asked.
@@ -36,10 +36,18 @@ pub struct TranslateArgs {
 /// Runs `essl translate`; the exit status (0 all translated, 1 some could not be, 2 usage or
 /// I/O errors).
 pub fn run(args: &TranslateArgs) -> i32 {
-    let shader_files = match crate::files::collect(&args.paths, args.stage) {
-        Ok(c) if c.errors.is_empty() => c.inputs,
-        Ok(c) => {
-            for e in &c.errors {
+    let configs = essl_check::Configs::new(essl_check::Overrides {
+        stage: args.stage,
+        ..essl_check::Overrides::default()
+    });
+    let find = essl_check::FindOptions {
+        hosts: false,
+        ..essl_check::FindOptions::new()
+    };
+    let found = match essl_check::find(&args.paths, &find, &configs) {
+        Ok(f) if f.errors.is_empty() => f,
+        Ok(f) => {
+            for e in &f.errors {
                 eprintln!("error: {e}");
             }
             return 2;
@@ -49,92 +57,48 @@ pub fn run(args: &TranslateArgs) -> i32 {
             return 2;
         }
     };
-    if shader_files.is_empty() {
+    if found.inputs.is_empty() {
         eprintln!("error: no shader files (.vert, .frag, .vs, .fs, .vsh, .fsh) found");
         return 2;
     }
     if let Some(out) = args.folder() {
         if let Err(e) = std::fs::create_dir_all(out) {
-            eprintln!("error: {}: {}", out.display(), files::io_message(&e));
+            eprintln!("error: {}: {}", out.display(), essl_check::io_message(&e));
             return 2;
         }
     }
-    let mut shaders = Vec::with_capacity(shader_files.len());
-    for f in &shader_files {
-        match files::read_source(&f.path) {
-            Ok(text) => shaders.push(essl::compile(
-                SourceFile::new(f.path.display().to_string(), text),
-                f.stage,
-                &CompileOptions::default(),
-            )),
-            Err(e) => {
-                eprintln!("error: {}: {e}", f.path.display());
-                return 2;
-            }
-        }
-    }
-    let pairs = if args.no_link {
-        Vec::new()
-    } else {
-        files::pairs(&shader_files)
+    let options = essl_check::CheckOptions {
+        link: !args.no_link,
+        lints: false,
+        ..essl_check::CheckOptions::default()
     };
-    let mut paired = vec![false; shader_files.len()];
+    let keep = |_, unit: essl_check::CheckedUnit| unit;
+    let run = essl_check::run(
+        &found,
+        &configs,
+        &mut essl_check::Files::disk(),
+        options,
+        &keep,
+    );
     let mut status = 0;
     let mut written = 0usize;
-    for &(v, f) in &pairs {
-        paired[v] = true;
-        paired[f] = true;
-        let (vs, fs) = (&shaders[v], &shaders[f]);
-        if report_errors(vs) | report_errors(fs) {
-            status = 1;
-            continue;
+    for unit in &run.results {
+        if let Some(u) = unit.unread.first() {
+            eprintln!("error: {}: {}", u.path.display(), u.message);
+            return 2;
         }
-        match essl_translate::translate_program(vs, fs, &args.options) {
-            Ok(t) => {
-                // `dir/light.vert` → the program's map is `light.bindings.json`.
-                let base = shader_files[v].path.with_extension("");
-                let outputs = [
-                    (output_path(&shader_files[v].path, args), t.vertex),
-                    (output_path(&shader_files[f].path, args), t.fragment),
-                ];
-                match write_all(&outputs, &t.bindings, &base, args) {
-                    Ok(n) => written += n,
-                    Err(()) => return 2,
-                }
+        let outcome = match unit.programs.first() {
+            Some(p) => translate_pair(&unit.shaders[p.vertex], &unit.shaders[p.fragment], args),
+            None => unit.shaders.iter().try_fold(Outcome::default(), |a, s| {
+                Ok(a.and(translate_one(s, args)?))
+            }),
+        };
+        match outcome {
+            Ok(o) => {
+                written += o.written;
+                status = status.max(o.status);
             }
-            Err(e) => {
-                status = 1;
-                eprintln!(
-                    "error: {} + {}: {}",
-                    shader_files[v].path.display(),
-                    shader_files[f].path.display(),
-                    message(&e)
-                );
-            }
-        }
-    }
-    for (i, shader) in shaders.iter().enumerate() {
-        if paired[i] {
-            continue;
-        }
-        if report_errors(shader) {
-            status = 1;
-            continue;
-        }
-        match essl_translate::translate_shader(shader, &args.options) {
-            Ok(t) => {
-                let path = &shader_files[i].path;
-                let outputs = [(output_path(path, args), t.code)];
-                // A lone `light.frag` has `light.frag.bindings.json`.
-                match write_all(&outputs, &t.bindings, path, args) {
-                    Ok(n) => written += n,
-                    Err(()) => return 2,
-                }
-            }
-            Err(e) => {
-                status = 1;
-                eprintln!("error: {}: {}", shader_files[i].path.display(), message(&e));
-            }
+            Err(()) => return 2,
         }
     }
     if !args.to_stdout() {
@@ -146,15 +110,103 @@ pub fn run(args: &TranslateArgs) -> i32 {
     status
 }
 
+/// What translating a unit gave: files written and the exit status so far.
+#[derive(Clone, Copy, Debug, Default)]
+struct Outcome {
+    written: usize,
+    status: i32,
+}
+
+impl Outcome {
+    fn and(self, other: Outcome) -> Outcome {
+        Outcome {
+            written: self.written + other.written,
+            status: self.status.max(other.status),
+        }
+    }
+}
+
+/// A linked pair, translated as one program; `Err` when a file cannot be written.
+fn translate_pair(
+    v: &CheckedShader,
+    f: &CheckedShader,
+    args: &TranslateArgs,
+) -> Result<Outcome, ()> {
+    if report_errors(v) | report_errors(f) {
+        return Ok(Outcome {
+            written: 0,
+            status: 1,
+        });
+    }
+    let (Some(vs), Some(fs)) = (&v.shader, &f.shader) else {
+        return Ok(Outcome::default());
+    };
+    match essl_translate::translate_program(vs, fs, &args.options) {
+        Ok(t) => {
+            // `dir/light.vert` → the program's map is `light.bindings.json`.
+            let base = v.path.with_extension("");
+            let outputs = [
+                (output_path(&v.path, args), t.vertex),
+                (output_path(&f.path, args), t.fragment),
+            ];
+            Ok(Outcome {
+                written: write_all(&outputs, &t.bindings, &base, args)?,
+                status: 0,
+            })
+        }
+        Err(e) => {
+            eprintln!(
+                "error: {} + {}: {}",
+                v.path.display(),
+                f.path.display(),
+                message(&e)
+            );
+            Ok(Outcome {
+                written: 0,
+                status: 1,
+            })
+        }
+    }
+}
+
+/// A shader on its own.
+fn translate_one(s: &CheckedShader, args: &TranslateArgs) -> Result<Outcome, ()> {
+    if report_errors(s) {
+        return Ok(Outcome {
+            written: 0,
+            status: 1,
+        });
+    }
+    let Some(shader) = &s.shader else {
+        return Ok(Outcome::default());
+    };
+    match essl_translate::translate_shader(shader, &args.options) {
+        Ok(t) => {
+            let outputs = [(output_path(&s.path, args), t.code)];
+            // A lone `light.frag` has `light.frag.bindings.json`.
+            Ok(Outcome {
+                written: write_all(&outputs, &t.bindings, &s.path, args)?,
+                status: 0,
+            })
+        }
+        Err(e) => {
+            eprintln!("error: {}: {}", s.path.display(), message(&e));
+            Ok(Outcome {
+                written: 0,
+                status: 1,
+            })
+        }
+    }
+}
+
 /// Prints a shader's diagnostics if it has errors; whether it has.
-fn report_errors(shader: &Shader) -> bool {
-    if shader.ok() {
+fn report_errors(s: &CheckedShader) -> bool {
+    if s.ok() {
         return false;
     }
-    eprint!(
-        "{}",
-        essl::render::human_string(&shader.file, &shader.diagnostics)
-    );
+    for g in &s.diagnostics {
+        eprint!("{}", essl::render::human_string(&g.file, &g.diagnostics));
+    }
     true
 }
 
@@ -225,7 +277,7 @@ fn write_all(
     }
     for (path, bytes) in &files {
         if let Err(e) = std::fs::write(path, bytes) {
-            eprintln!("error: {}: {}", path.display(), files::io_message(&e));
+            eprintln!("error: {}: {}", path.display(), essl_check::io_message(&e));
             return Err(());
         }
     }

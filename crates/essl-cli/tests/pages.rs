@@ -173,11 +173,11 @@ fn stages_agree_with_the_corpus_extraction() {
     let (mut compared, mut differ) = (0, Vec::new());
     for entry in std::fs::read_dir(&dir).unwrap() {
         let path = entry.unwrap().path();
-        let Some(kind) = essl_cli::extract::HostKind::of(&path) else {
+        let Some(kind) = essl_check::extract::HostKind::of(&path) else {
             continue;
         };
         let page = std::fs::read_to_string(&path).unwrap();
-        for e in essl_cli::extract::extract(kind, &page) {
+        for e in essl_check::extract::extract(kind, &page) {
             let (Some(stage), Some(expected)) = (e.stage, known.get(&page[e.range.clone()])) else {
                 continue;
             };

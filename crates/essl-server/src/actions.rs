@@ -5,7 +5,7 @@
 use std::collections::HashMap;
 
 use essl::diagnostic::{Applicability, Diagnostic};
-use essl::source::Span;
+use essl::source::{SourceFile, Span};
 use lsp_types::{
     CodeAction, CodeActionKind, CodeActionOrCommand, Range, TextEdit, Uri, WorkspaceEdit,
 };
@@ -32,19 +32,19 @@ pub fn actions(
     uri: &Uri,
     range: Range,
 ) -> Vec<CodeActionOrCommand> {
-    let file = &a.shader.file;
+    let doc = place.doc;
     let mut out = Vec::new();
     for d in a.diagnostics() {
-        let at = place.range(d.span);
+        let at = convert::range(doc, d.span);
         if !overlaps(at, range) {
             continue;
         }
-        let diagnostic = convert::diagnostic(place, file, uri, d);
+        let diagnostic = convert::diagnostic(doc, uri, d);
         if let Some(fix) = &d.fix {
             let edits = fix
                 .edits
                 .iter()
-                .map(|e| TextEdit::new(place.range(e.span), e.replacement.clone()))
+                .map(|e| TextEdit::new(convert::range(doc, e.span), e.replacement.clone()))
                 .collect();
             out.push(CodeActionOrCommand::CodeAction(CodeAction {
                 title: fix.message.clone(),
@@ -55,7 +55,7 @@ pub fn actions(
                 ..CodeAction::default()
             }));
         }
-        if let Some(action) = allow_here(a, place, uri, d, diagnostic) {
+        if let Some(action) = allow_here(doc, uri, d, diagnostic) {
             out.push(CodeActionOrCommand::CodeAction(action));
         }
     }
@@ -64,14 +64,12 @@ pub fn actions(
 
 /// `// essl-allow: RULE` on a new line before the finding's, indented as it is.
 fn allow_here(
-    a: &Analysis,
-    place: Place<'_>,
+    file: &SourceFile,
     uri: &Uri,
     d: &Diagnostic,
     diagnostic: lsp_types::Diagnostic,
 ) -> Option<CodeAction> {
     essl_lint::rule(d.code)?;
-    let file = &a.shader.file;
     let line = file.line_index(d.span.start);
     let start = file.line_start(line);
     let text = file.line_text(line);
@@ -79,7 +77,7 @@ fn allow_here(
         .chars()
         .take_while(|c| *c == ' ' || *c == '\t')
         .collect();
-    let at = place.range(Span::empty(start));
+    let at = convert::range(file, Span::empty(start));
     let comment = format!("{indent}// essl-allow: {}\n", d.code);
     Some(CodeAction {
         title: format!("allow `{}` here (// essl-allow: {})", d.code, d.code),

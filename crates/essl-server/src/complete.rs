@@ -99,7 +99,10 @@ fn item(label: &str, kind: CompletionItemKind, detail: Option<String>) -> Comple
 
 /// The completion items at `pos`.
 pub fn complete(a: &Analysis, place: Place<'_>, pos: Position) -> Vec<CompletionItem> {
-    let module = &a.shader.module;
+    let Some(shader) = a.shader() else {
+        return Vec::new();
+    };
+    let module = &shader.module;
     let Some(offset) = place.offset(pos) else {
         return Vec::new();
     };

@@ -3,50 +3,41 @@
 
 use std::path::{Path, PathBuf};
 use std::str::FromStr;
+use std::sync::Arc;
 
 use essl::diagnostic::Diagnostic;
 use essl::source::{SourceFile, Span};
+use essl_check::Assembly;
 use lsp_types::{
     DiagnosticRelatedInformation, DiagnosticSeverity, Location, NumberOrString, Position, Range,
     Uri,
 };
 
 /// Where a shader's text lies in the document the editor shows: the document's text and the
-/// byte offset the shader starts at (0 for a shader file; a `<script>` body or a template
-/// literal for a shader inside an HTML or JS file).
+/// map from the shader's assembled text to it (the whole document for a shader file; a
+/// `<script>` body or a template literal's value for a shader inside an HTML or JS file).
 #[derive(Clone, Copy, Debug)]
 pub struct Place<'a> {
     /// The document's text.
-    pub doc: &'a SourceFile,
-    /// Where the shader starts in it.
-    pub base: u32,
-    /// The shader's length.
-    pub len: u32,
+    pub doc: &'a Arc<SourceFile>,
+    /// The shader's text and where it came from.
+    pub assembly: &'a Assembly,
 }
 
-impl<'a> Place<'a> {
-    /// A shader that is the whole document.
-    pub fn whole(doc: &'a SourceFile) -> Place<'a> {
-        Place {
-            doc,
-            base: 0,
-            len: doc.text().len() as u32,
-        }
-    }
-
+impl Place<'_> {
     /// The shader's offset at a document position, when the position is inside the shader
     /// (its end included).
     pub fn offset(&self, pos: Position) -> Option<u32> {
-        let o = offset(self.doc, pos);
-        (o >= self.base && o <= self.base + self.len).then(|| o - self.base)
+        self.assembly
+            .offset_in_text(self.doc, offset(self.doc, pos))
     }
 
-    /// The document range of a span of the shader.
-    pub fn range(&self, span: Span) -> Range {
-        range(
-            self.doc,
-            Span::new(span.start + self.base, span.end + self.base),
-        )
+    /// The document range of a span of the shader, when the span lies in the document (not
+    /// in a file the shader includes, nor in code a preset adds).
+    pub fn range(&self, span: Span) -> Option<Range> {
+        let (file, span) = self.assembly.map_span(span)?;
+        let file = self.assembly.files().get(file as usize)?;
+        Arc::ptr_eq(file, self.doc).then(|| range(self.doc, span))
     }
 }
 
@@ -128,15 +119,10 @@ pub fn path_to_uri(path: &Path) -> Option<Uri> {
     Uri::from_str(&s).ok()
 }
 
-/// An essl diagnostic of the shader `file`, which lies at `place` in the document `uri`, as the
-/// protocol's: the code, the message with its notes and help (as the command line prints
-/// them), and the secondary labels as related information.
-pub fn diagnostic(
-    place: Place<'_>,
-    file: &SourceFile,
-    uri: &Uri,
-    d: &Diagnostic,
-) -> lsp_types::Diagnostic {
+/// An essl diagnostic on the document `doc` (spans in its text) as the protocol's: the code,
+/// the message with its notes and help (as the command line prints them), and the secondary
+/// labels as related information.
+pub fn diagnostic(doc: &SourceFile, uri: &Uri, d: &Diagnostic) -> lsp_types::Diagnostic {
     let severity = match d.severity {
         essl::diagnostic::Severity::Error => DiagnosticSeverity::ERROR,
         essl::diagnostic::Severity::Warning => DiagnosticSeverity::WARNING,
@@ -149,14 +135,14 @@ pub fn diagnostic(
     for note in &d.notes {
         message.push_str(&format!("\nnote: {note}"));
     }
-    if let Some(help) = d.help_text(file) {
+    if let Some(help) = d.help_text(doc) {
         message.push_str(&format!("\nhelp: {help}"));
     }
     let related: Vec<DiagnosticRelatedInformation> = d
         .secondary
         .iter()
         .map(|l| DiagnosticRelatedInformation {
-            location: Location::new(uri.clone(), place.range(l.span)),
+            location: Location::new(uri.clone(), range(doc, l.span)),
             message: if l.message.is_empty() {
                 "here".to_string()
             } else {
@@ -165,7 +151,7 @@ pub fn diagnostic(
         })
         .collect();
     lsp_types::Diagnostic {
-        range: place.range(d.span),
+        range: range(doc, d.span),
         severity: Some(severity),
         code: Some(NumberOrString::String(d.code.to_string())),
         source: Some("essl".to_string()),
@@ -175,19 +161,46 @@ pub fn diagnostic(
     }
 }
 
-/// A link diagnostic of a program, on the shader `file` it points into: as [`diagnostic`], its
+/// A link diagnostic of a program, on the document it points into: as [`diagnostic`], its
 /// message starting `program: `.
-pub fn link_diagnostic(
-    place: Place<'_>,
-    file: &SourceFile,
-    uri: &Uri,
-    d: &Diagnostic,
-) -> lsp_types::Diagnostic {
-    let mut converted = diagnostic(place, file, uri, d);
+pub fn link_diagnostic(doc: &SourceFile, uri: &Uri, d: &Diagnostic) -> lsp_types::Diagnostic {
+    let mut converted = diagnostic(doc, uri, d);
     converted.message = format!("program: {}", converted.message);
     converted
 }
 
+/// A diagnostic in a file the shader includes, shown on the document at the shader's start
+/// (`start`), its message naming the file's line, and its place there as related information.
+pub fn elsewhere(
+    doc: &SourceFile,
+    start: u32,
+    file: &SourceFile,
+    d: &Diagnostic,
+) -> lsp_types::Diagnostic {
+    let lc = file.line_col(d.span.start);
+    let there = Path::new(file.name());
+    let absolute = std::fs::canonicalize(there).unwrap_or_else(|_| there.to_path_buf());
+    let uri = path_to_uri(&absolute);
+    let mut converted = match &uri {
+        Some(u) => diagnostic(file, u, d),
+        None => diagnostic(file, &Uri::from_str("file:///").expect("a URI"), d),
+    };
+    converted.message = format!(
+        "in {}:{}:{}: {}",
+        file.name(),
+        lc.line,
+        lc.column,
+        converted.message
+    );
+    converted.related_information = uri.map(|u| {
+        vec![DiagnosticRelatedInformation {
+            location: Location::new(u, range(file, d.span)),
+            message: "here".to_string(),
+        }]
+    });
+    converted.range = range(doc, Span::empty(start));
+    converted
+}
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -140,7 +140,7 @@ fn markdown(code: &str, doc: Option<&str>) -> Hover {
 
 /// The hover at `pos`.
 pub fn hover(a: &Analysis, place: Place<'_>, pos: Position) -> Option<Hover> {
-    let module = &a.shader.module;
+    let module = &a.shader()?.module;
     let offset = place.offset(pos)?;
     if let Some((span, sym)) = a.index().symbol_at(module, offset) {
         let doc = match sym {
@@ -149,11 +149,11 @@ pub fn hover(a: &Analysis, place: Place<'_>, pos: Position) -> Option<Hover> {
             _ => None,
         };
         let mut h = markdown(&declaration(module, sym)?, doc);
-        h.range = Some(place.range(span));
+        h.range = place.range(span);
         return Some(h);
     }
     let (span, ty) = a.index().type_at(offset)?;
     let mut h = markdown(&ty.display(&module.structs).to_string(), None);
-    h.range = Some(place.range(span));
+    h.range = place.range(span);
     Some(h)
 }

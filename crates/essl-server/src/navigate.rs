@@ -10,9 +10,10 @@ use crate::index::{self, Sym};
 
 /// Where the name at `pos` is declared (nothing for built-ins).
 pub fn definition(a: &Analysis, place: Place<'_>, uri: &Uri, pos: Position) -> Option<Location> {
-    let (_, sym) = a.index().symbol_at(&a.shader.module, place.offset(pos)?)?;
-    let span = index::definition(&a.shader.module, sym)?;
-    Some(Location::new(uri.clone(), place.range(span)))
+    let module = &a.shader()?.module;
+    let (_, sym) = a.index().symbol_at(module, place.offset(pos)?)?;
+    let span = index::definition(module, sym)?;
+    Some(Location::new(uri.clone(), place.range(span)?))
 }
 
 /// Every use of the name at `pos` (and its declaration, when asked).
@@ -23,7 +24,10 @@ pub fn references(
     pos: Position,
     declaration: bool,
 ) -> Vec<Location> {
-    let module = &a.shader.module;
+    let Some(shader) = a.shader() else {
+        return Vec::new();
+    };
+    let module = &shader.module;
     let Some(offset) = place.offset(pos) else {
         return Vec::new();
     };
@@ -45,7 +49,7 @@ pub fn references(
     spans.dedup();
     spans
         .into_iter()
-        .map(|s| Location::new(uri.clone(), place.range(s)))
+        .filter_map(|s| Some(Location::new(uri.clone(), place.range(s)?)))
         .collect()
 }
 
@@ -69,9 +73,15 @@ fn symbol(
 }
 
 /// The outline: functions (with their parameters and locals), global variables, uniform
-/// blocks, in source order.
+/// blocks, in source order; what lies in an included file is left out.
 pub fn symbols(a: &Analysis, place: Place<'_>) -> Vec<DocumentSymbol> {
-    let module = &a.shader.module;
+    let Some(shader) = a.shader() else {
+        return Vec::new();
+    };
+    let module = &shader.module;
+    let at = |name: &str, detail: Option<String>, kind: SymbolKind, span: essl::source::Span| {
+        Some(symbol(name.to_string(), detail, kind, place.range(span)?))
+    };
     let mut out: Vec<(u32, DocumentSymbol)> = Vec::new();
     for (i, g) in module.globals.iter().enumerate() {
         if matches!(g.kind, GlobalKind::BlockMember(..)) {
@@ -82,60 +92,41 @@ pub fn symbols(a: &Analysis, place: Place<'_>) -> Vec<DocumentSymbol> {
             _ => SymbolKind::VARIABLE,
         };
         let detail = crate::hover::declaration(module, Sym::Global(i));
-        out.push((
-            g.span.start,
-            symbol(g.name.to_string(), detail, kind, place.range(g.span)),
-        ));
+        out.extend(at(&g.name, detail, kind, g.span).map(|s| (g.span.start, s)));
     }
     for b in &module.blocks {
         let members: Vec<DocumentSymbol> = b
             .members
             .iter()
-            .map(|(name, ty, _, _)| {
+            .filter_map(|(name, ty, _, _)| {
                 let detail = Some(ty.display(&module.structs).to_string());
-                symbol(
-                    name.to_string(),
-                    detail,
-                    SymbolKind::FIELD,
-                    place.range(b.span),
-                )
+                at(name, detail, SymbolKind::FIELD, b.span)
             })
             .collect();
-        let mut s = symbol(
-            b.name.to_string(),
+        let block = at(
+            &b.name,
             Some("uniform block".into()),
             SymbolKind::STRUCT,
-            place.range(b.span),
+            b.span,
         );
-        s.children = Some(members);
-        out.push((b.span.start, s));
+        if let Some(mut s) = block {
+            s.children = Some(members);
+            out.push((b.span.start, s));
+        }
     }
     for (f, function) in module.functions.iter().enumerate() {
         let detail = crate::hover::declaration(module, Sym::Func(f));
-        let mut s = symbol(
-            function.name.to_string(),
-            detail,
-            SymbolKind::FUNCTION,
-            place.range(function.span),
-        );
+        let Some(mut s) = at(&function.name, detail, SymbolKind::FUNCTION, function.span) else {
+            continue;
+        };
         let mut children: Vec<DocumentSymbol> = Vec::new();
         for (p, param) in function.params.iter().enumerate() {
             let detail = crate::hover::declaration(module, Sym::Param(f, p));
-            children.push(symbol(
-                param.name.to_string(),
-                detail,
-                SymbolKind::VARIABLE,
-                place.range(param.span),
-            ));
+            children.extend(at(&param.name, detail, SymbolKind::VARIABLE, param.span));
         }
         for (l, local) in function.locals.iter().enumerate() {
             let detail = crate::hover::declaration(module, Sym::Local(f, l));
-            children.push(symbol(
-                local.name.to_string(),
-                detail,
-                SymbolKind::VARIABLE,
-                place.range(local.span),
-            ));
+            children.extend(at(&local.name, detail, SymbolKind::VARIABLE, local.span));
         }
         s.children = Some(children);
         out.push((function.span.start, s));

@@ -1,17 +1,18 @@
 //! What the server holds between messages: the open documents with their latest checks, the
-//! settings of each folder, the work a change left pending, and the partner shaders read
-//! from disk to link open ones with.
+//! pipeline's settings and files (open documents in front of the disk, so that an included
+//! file being edited is checked as the editor shows it), the work a change left pending, and
+//! the partner shaders read from disk to link open ones with.
 
 use std::collections::HashMap;
-use std::path::{Path, PathBuf};
+use std::path::PathBuf;
 use std::sync::Arc;
 
 use essl::Stage;
-use essl_build::Config;
+use essl_check::{CheckOptions, Configs, Files, Overrides};
 use lsp_types::{PublishDiagnosticsParams, Uri};
 
-use crate::analysis::{self, Analysis};
-use crate::convert::{self, Place};
+use crate::analysis::Analysis;
+use crate::convert;
 use crate::document::{self, Doc};
 
 /// A file read from disk to be linked with an open document, checked once per version.
@@ -22,11 +23,11 @@ struct OnDisk {
 }
 
 /// The server's state.
-#[derive(Default)]
 pub(crate) struct State {
     /// The open documents.
     pub docs: HashMap<Uri, Doc>,
-    configs: HashMap<PathBuf, Config>,
+    configs: Configs,
+    files: Files,
     /// New texts not checked yet, in the order they came.
     pub unchecked: Vec<(Uri, String)>,
     /// Documents checked but not linted yet.
@@ -37,27 +38,26 @@ pub(crate) struct State {
     pub retired: Vec<Doc>,
 }
 
-impl State {
-    /// The settings of the nearest essl.toml above `path` (the defaults when there is none or
-    /// it cannot be read: the error is logged to stderr).
-    fn config(&mut self, path: &Path) -> Config {
-        let dir = path.parent().unwrap_or(Path::new("/")).to_path_buf();
-        self.configs
-            .entry(dir.clone())
-            .or_insert_with(|| match Config::discover(&dir) {
-                Ok(c) => c.unwrap_or_default(),
-                Err(e) => {
-                    eprintln!("essl-server: {e}");
-                    Config::default()
-                }
-            })
-            .clone()
+impl Default for State {
+    fn default() -> State {
+        State {
+            docs: HashMap::new(),
+            configs: Configs::new(Overrides::default()),
+            files: Files::disk(),
+            unchecked: Vec::new(),
+            unlinted: Vec::new(),
+            on_disk: HashMap::new(),
+            retired: Vec::new(),
+        }
     }
+}
 
+impl State {
     /// Forgets the settings and the files read from disk (essl.toml or a partner may have
     /// changed).
     pub fn forget_files(&mut self) {
-        self.configs.clear();
+        self.configs.forget();
+        self.files.forget_disk();
         self.on_disk.clear();
     }
 
@@ -80,8 +80,8 @@ impl State {
     /// [`State::lint`]).
     pub fn update(&mut self, uri: Uri, text: String) {
         let path = document::path_of(&uri);
-        let config = self.config(&path);
-        let doc = Doc::check(path, text, &config, self.docs.get(&uri));
+        self.files.give(path.clone(), text.clone());
+        let doc = Doc::check(path, text, &self.configs, &self.files, self.docs.get(&uri));
         if doc.unlinted() && !self.unlinted.contains(&uri) {
             self.unlinted.push(uri.clone());
         }
@@ -93,22 +93,21 @@ impl State {
     /// Lowers and lints a checked document; whether anything changed.
     pub fn lint(&mut self, uri: &Uri) -> bool {
         self.unlinted.retain(|u| u != uri);
-        let Some(path) = self.docs.get(uri).map(|d| d.path.clone()) else {
-            return false;
-        };
-        let config = self.config(&path);
-        self.docs
-            .get_mut(uri)
-            .is_some_and(|doc| doc.lint(&config.rules))
+        let configs = &self.configs;
+        self.docs.get_mut(uri).is_some_and(|doc| doc.lint(configs))
     }
 
     /// The partner of the shader file at `uri`: its URI and analysis (open, or read from disk).
     fn partner(&mut self, uri: &Uri) -> Option<(Uri, Arc<Analysis>)> {
         let doc = self.docs.get(uri).filter(|d| !d.host)?;
-        let path = analysis::partner(&doc.path)?;
+        let open_path = |p: &std::path::Path| -> Option<Uri> {
+            let u = convert::path_to_uri(p)?;
+            self.docs.get(&u).filter(|d| !d.host).map(|_| u)
+        };
+        let path = essl_check::partner(&doc.path, |p| open_path(p).is_some() || p.is_file())?;
         let other = convert::path_to_uri(&path)?;
         if let Some(doc) = self.docs.get(&other).filter(|d| !d.host) {
-            return Some((other, doc.parts.first()?.analysis.clone()));
+            return Some((other, doc.parts.first()?.clone()));
         }
         let meta = std::fs::metadata(&path).ok()?;
         let (modified, len) = (meta.modified().ok(), meta.len());
@@ -117,9 +116,16 @@ impl State {
                 return Some((other, d.analysis.clone()));
             }
         }
-        let text = std::fs::read_to_string(&path).ok()?;
-        let config = self.config(&path);
-        let analysis = Arc::new(Analysis::analyse(&path, &text, &config));
+        let text = essl_check::read_source(&path).ok()?;
+        let (unit, _) = essl_check::check_text(
+            &path,
+            text,
+            &self.configs,
+            &self.files,
+            CheckOptions::default(),
+        )
+        .ok()?;
+        let analysis = Arc::new(Analysis::new(unit.shaders.into_iter().next()?));
         let entry = OnDisk {
             modified,
             len,
@@ -136,42 +142,39 @@ impl State {
             return Vec::new();
         };
         let mut out = vec![params(uri, doc.diagnostics(uri))];
-        let Some(mine) = doc
-            .parts
-            .first()
-            .filter(|_| !doc.host)
-            .map(|p| p.analysis.clone())
-        else {
+        let Some(mine) = doc.parts.first().filter(|_| !doc.host).cloned() else {
             return out;
         };
         let Some((other, theirs)) = self.partner(uri) else {
             return out;
         };
-        let their_place = Place::whole(&theirs.shader.file);
+        let their_doc = theirs.document().clone();
         let mut theirs_params = params(
             &other,
             theirs
                 .diagnostics()
                 .into_iter()
-                .map(|d| convert::diagnostic(their_place, &theirs.shader.file, &other, d))
+                .map(|d| convert::diagnostic(&their_doc, &other, d))
                 .collect(),
         );
-        let (vs, fs) = match mine.shader.stage {
+        let (vs, fs) = match mine.checked.stage {
             Stage::Vertex => (&mine, &theirs),
             Stage::Fragment => (&theirs, &mine),
         };
-        if let Some(program) = analysis::link(&vs.shader, &fs.shader) {
-            for d in &program.diagnostics {
-                let (target, a) = if d.stage == Some(theirs.shader.stage) {
-                    (&mut theirs_params, &theirs)
-                } else {
-                    (&mut out[0], &mine)
-                };
-                let (u, file) = (target.uri.clone(), &a.shader.file);
-                let converted =
-                    convert::link_diagnostic(Place::whole(file), file, &u, &d.diagnostic);
-                target.diagnostics.push(converted);
-            }
+        let program = essl_check::link(&vs.checked, &fs.checked);
+        for d in &program.diagnostics {
+            let Some(file) = &d.file else { continue };
+            let (target, doc) = if Arc::ptr_eq(file, &their_doc) {
+                (&mut theirs_params, &their_doc)
+            } else if Arc::ptr_eq(file, mine.document()) {
+                (&mut out[0], mine.document())
+            } else {
+                continue;
+            };
+            let u = target.uri.clone();
+            target
+                .diagnostics
+                .push(convert::link_diagnostic(doc, &u, &d.diagnostic));
         }
         out.push(theirs_params);
         out

@@ -9,12 +9,26 @@ fn crate_dir() -> &'static Path {
     Path::new(env!("CARGO_MANIFEST_DIR"))
 }
 
-/// The `NAME.vert` + `NAME.frag` pairs under `dir` that `keep` accepts.
+/// The `NAME.vert` + `NAME.frag` pairs under `dir` that `keep` accepts, found as `essl lint`
+/// and the build script find them.
 fn programs(dir: &Path, keep: impl Fn(&Path) -> bool) -> Vec<(String, PathBuf, PathBuf)> {
-    let (files, errors) = essl_build_files(dir);
-    assert!(errors == 0, "{} cannot be listed", dir.display());
-    let pairs = essl_build::files::pairs(&files);
-    pairs
+    let configs = essl_check::Configs::new(essl_check::Overrides::default());
+    let found = essl_check::find(
+        &[dir.to_path_buf()],
+        &essl_check::FindOptions::new(),
+        &configs,
+    )
+    .expect("a folder");
+    assert!(found.errors.is_empty(), "{:?}", found.errors);
+    let files: Vec<essl_check::ShaderFile> = found
+        .inputs
+        .iter()
+        .map(|i| essl_check::ShaderFile {
+            path: i.path.clone(),
+            stage: i.stage,
+        })
+        .collect();
+    essl_check::pairs(&files)
         .into_iter()
         .filter(|&(v, _)| keep(&files[v].path))
         .map(|(v, f)| {
@@ -22,11 +36,6 @@ fn programs(dir: &Path, keep: impl Fn(&Path) -> bool) -> Vec<(String, PathBuf, P
             (name, files[v].path.clone(), files[f].path.clone())
         })
         .collect()
-}
-
-fn essl_build_files(dir: &Path) -> (Vec<essl_build::files::ShaderFile>, usize) {
-    let (files, errors) = essl_build::files::walk(dir, &mut |_| true);
-    (files, errors.len())
 }
 
 #[test]

@@ -214,7 +214,7 @@ fn read_jsonl<T: for<'de> Deserialize<'de>>(dir: &Path, name: &str) -> Result<Ve
     let path = dir.join(name);
     let text = std::fs::read_to_string(&path).map_err(|e| CorpusError {
         path: path.clone(),
-        message: crate::files::io_message(&e),
+        message: essl_check::io_message(&e),
     })?;
     text.lines()
         .enumerate()
@@ -370,7 +370,7 @@ pub fn run(corpora: &Path, markdown: Option<&Path>, list_failures: bool) -> i32 
             eprintln!(
                 "error: cannot write `{}`: {}",
                 path.display(),
-                crate::files::io_message(&e)
+                essl_check::io_message(&e)
             );
             return 2;
         }

@@ -8,10 +8,10 @@
 use essl::render::JsonDiagnostic;
 use serde::Serialize;
 
+use essl_check::{CheckedProgram, CheckedShader};
+
 use super::options::Look;
-use super::output::file_of;
-use super::results::{Checked, Linked};
-use crate::discover::{Input, Source};
+use super::results::FileResult;
 
 /// A shader's object:
 /// `{"kind":"shader","file","stage","target","version","ok","diagnostics":[…]}` (`target`:
@@ -71,71 +71,91 @@ struct UniformObject<'a> {
     ty: &'static str,
 }
 
-/// A shader's line (its object and `\n`).
-pub(crate) fn shader_line(input: &Input, checked: &Result<Checked, String>, look: Look) -> Vec<u8> {
-    // What every shader's object says; a file that could not be read adds only its error.
-    let unread = ShaderObject {
+/// The object of a shader that could not be read: its file and the error.
+fn unread_object<'a>(r: &'a FileResult, look: Look) -> ShaderObject<'a> {
+    ShaderObject {
         diagnostics: Vec::new(),
         embedded_at: None,
-        error: None,
-        file: input.path.display().to_string(),
+        error: r.read_error.as_deref(),
+        file: r.named.path.display().to_string(),
         fixes_applied: None,
         kind: "shader",
         ok: false,
-        stage: input.stage.as_str(),
+        stage: r.named.stage.as_str(),
         target: look.target.as_str(),
         version: None,
-    };
-    let object = match checked {
-        Err(e) => ShaderObject {
-            error: Some(e),
-            ..unread
-        },
-        Ok(c) => {
-            let mut diagnostics: Vec<JsonDiagnostic> = c
-                .shader
-                .diagnostics
-                .iter()
-                .map(|d| JsonDiagnostic::new(&c.shader.file, d))
-                .collect();
-            for (file, ds) in &c.included {
-                diagnostics.extend(
-                    ds.iter()
-                        .map(|d| JsonDiagnostic::new(file, d).in_file(file.name())),
-                );
-            }
-            let version = if c.shader.module.version == essl::Version::Es100 {
-                "100"
+    }
+}
+
+/// The line of a shader that could not be read.
+pub(crate) fn unread_line(r: &FileResult, look: Look) -> Vec<u8> {
+    line(&unread_object(r, look))
+}
+
+/// A shader's line (its object and `\n`).
+pub(crate) fn shader_line(r: &FileResult, s: &CheckedShader, look: Look) -> Vec<u8> {
+    let mut diagnostics: Vec<JsonDiagnostic> = Vec::new();
+    for (k, g) in s.diagnostics.iter().enumerate() {
+        diagnostics.extend(g.diagnostics.iter().map(|d| {
+            let j = JsonDiagnostic::new(&g.file, d);
+            if k == 0 {
+                j
             } else {
-                "300 es"
-            };
-            ShaderObject {
-                diagnostics,
-                embedded_at: matches!(input.source, Source::Embedded(..)).then(|| input.label()),
-                error: c.write_error.as_deref().filter(|_| look.fix),
-                fixes_applied: look.fix.then_some(c.fixes_applied),
-                ok: c.shader.ok(),
-                version: Some(version),
-                ..unread
+                j.in_file(g.file.name())
             }
+        }));
+    }
+    let version = s.shader.as_ref().map(|sh| {
+        if sh.module.version == essl::Version::Es100 {
+            "100"
+        } else {
+            "300 es"
         }
+    });
+    let target = s.shader.as_ref().map_or(look.target, |sh| sh.target);
+    let object = ShaderObject {
+        diagnostics,
+        embedded_at: r.named.embedded.then(|| r.named.label.clone()),
+        error: r.write_error.as_deref().filter(|_| look.fix),
+        fixes_applied: look.fix.then_some(r.fixes_applied),
+        ok: s.ok(),
+        target: target.as_str(),
+        version,
+        ..unread_object(r, look)
     };
     line(&object)
 }
 
+/// An included file `--fix` changed: `{"kind":"fixed","file","fixes_applied"}`.
+pub(crate) fn fixed_line(r: &FileResult) -> Vec<u8> {
+    #[derive(Serialize)]
+    struct Fixed<'a> {
+        #[serde(skip_serializing_if = "Option::is_none")]
+        error: Option<&'a str>,
+        file: String,
+        fixes_applied: usize,
+        kind: &'static str,
+    }
+    line(&Fixed {
+        error: r.write_error.as_deref(),
+        file: r.named.path.display().to_string(),
+        fixes_applied: r.fixes_applied,
+        kind: "fixed",
+    })
+}
+
 /// A program's line (its object and `\n`).
-pub(crate) fn program_line(linked: &Linked, look: Look) -> Vec<u8> {
-    let Linked {
-        vertex,
-        fragment,
-        vs,
-        fs,
-        program,
-    } = *linked;
+pub(crate) fn program_line(
+    p: &CheckedProgram,
+    vs: &CheckedShader,
+    fs: &CheckedShader,
+    look: Look,
+) -> Vec<u8> {
+    let program = p.program.as_ref();
     let object = ProgramObject {
         attributes: program
-            .attributes
             .iter()
+            .flat_map(|p| &p.attributes)
             .map(|a| AttributeObject {
                 location: a.location,
                 name: &a.name,
@@ -143,29 +163,29 @@ pub(crate) fn program_line(linked: &Linked, look: Look) -> Vec<u8> {
                 ty: a.ty.name(),
             })
             .collect(),
-        diagnostics: program
+        diagnostics: p
             .diagnostics
             .iter()
-            .map(|d| match file_of(vs, fs, d) {
+            .map(|d| match &d.file {
                 Some(file) => JsonDiagnostic::new(file, &d.diagnostic).in_file(file.name()),
                 None => JsonDiagnostic::unlocated(&d.diagnostic),
             })
             .collect(),
-        fragment: fragment.label(),
+        fragment: fs.label(),
         kind: "program",
-        log: &program.log,
-        ok: program.ok,
+        log: program.map_or("", |p| p.log.as_str()),
+        ok: program.is_some_and(|p| p.ok),
         target: look.target.as_str(),
         uniforms: program
-            .uniforms
             .iter()
+            .flat_map(|p| &p.uniforms)
             .map(|u| UniformObject {
                 name: &u.name,
                 size: u.size,
                 ty: u.ty.name(),
             })
             .collect(),
-        vertex: vertex.label(),
+        vertex: vs.label(),
     };
     line(&object)
 }

@@ -1,34 +1,31 @@
-//! `essl lint`: a straight pipeline.
+//! `essl lint`: the one checking pipeline ([`essl_check`]) with the command line's output.
 //!
-//! 1. [`crate::discover`] finds the inputs (files, folders, standard input, shaders inside
+//! 1. [`essl_check::find`] finds the inputs (files, folders, standard input, shaders inside
 //!    HTML and JS files);
-//! 2. [`check`] reads, fixes, compiles, lints and links them on a thread pool, rendering each
-//!    result where its shader was compiled (a host file's shaders moved onto its lines by
-//!    [`relocate`]);
+//! 2. [`essl_check::run`] checks them on a thread pool, and [`check`] renders each unit's
+//!    result on the thread that checked it (writing a fixed file back there);
 //! 3. [`results`] holds what that gives, and the totals and exit status;
 //! 4. [`output`] renders a result in the chosen format ([`lines`] for the one-line formats and
 //!    `--statistics`) and writes everything in a stable order.
 //!
-//! The options are read once: what checking needs stays in [`LintOptions`], what rendering
-//! needs is resolved into a [`options::Look`] (colour decided against the terminal).
+//! The options are read once: what checking needs goes to the pipeline as
+//! [`essl_check::Overrides`] and [`essl_check::CheckOptions`], what rendering needs is
+//! resolved into a [`options::Look`] (colour decided against the terminal).
 
 mod check;
-mod fix;
-mod include;
 mod json;
 mod lines;
 mod options;
 mod output;
-mod relocate;
 mod results;
 
 use std::io::{IsTerminal, Write};
 
 pub use options::{ColorMode, Format, LintOptions, EXIT_ERRORS, EXIT_OK, EXIT_USAGE};
 
-use crate::discover::{Input, Source};
-use crate::files;
+use essl_check::{CheckOptions, Configs, Files, FixMode};
 use options::Look;
+use results::LintResults;
 
 /// A progress bar on stderr when it is a terminal and there are enough files to wait for.
 fn progress_bar(files: usize) -> Option<indicatif::ProgressBar> {
@@ -46,35 +43,42 @@ fn progress_bar(files: usize) -> Option<indicatif::ProgressBar> {
     })
 }
 
-/// The shaders to check, in order: shader files and standard input, then each host file's
-/// shaders that are not skipped.
-fn inputs(found: &crate::discover::Found) -> Vec<Input> {
-    let mut inputs = found.inputs.clone();
-    for host in &found.hosts {
-        for (k, e) in host.embedded.iter().enumerate() {
-            if let (None, Some(stage)) = (e.skip, e.stage) {
-                inputs.push(Input {
-                    path: host.path.clone(),
-                    stage,
-                    source: Source::Embedded(host.clone(), k),
-                });
-            }
-        }
+/// The WebGL version the run checks for, as the JSON summary names it: the flag's, or that of
+/// the first path's essl.toml.
+fn run_target(options: &LintOptions, configs: &Configs) -> essl::Target {
+    if let Some(t) = options.overrides.target {
+        return t;
     }
-    inputs
+    let settings = options.paths.first().and_then(|p| {
+        if p.as_os_str() == "-" {
+            let name = options.find.stdin_name.clone().unwrap_or_default();
+            configs.for_file(&name).ok()
+        } else if p.is_dir() {
+            configs.for_folder(p).ok()
+        } else {
+            configs.for_file(p).ok()
+        }
+    });
+    settings.map_or(essl::Target::WebGl2, |s| s.compile.target)
 }
 
 /// Runs `essl lint` and returns the exit status.
 pub fn run(options: &LintOptions) -> i32 {
-    let found = match options.finder.find(&options.paths) {
+    let configs = Configs::new(options.overrides.clone());
+    if options.overrides.config.is_some() {
+        if let Err(e) = configs.for_folder(std::path::Path::new(".")) {
+            eprintln!("error: {e}");
+            return EXIT_USAGE;
+        }
+    }
+    let found = match essl_check::find(&options.paths, &options.find, &configs) {
         Ok(c) => c,
         Err(e) => {
             eprintln!("error: {e}");
             return EXIT_USAGE;
         }
     };
-    let inputs = inputs(&found);
-    if inputs.is_empty() && found.errors.is_empty() {
+    if found.shader_count() == 0 && found.errors.is_empty() {
         let names: Vec<String> = options
             .paths
             .iter()
@@ -91,31 +95,60 @@ pub fn run(options: &LintOptions) -> i32 {
             }
         );
         for s in &found.skipped {
-            eprintln!("skipped {}: {}", s.at, s.reason);
+            eprintln!("skipped {}: {}", s.at, s.reason());
         }
         return EXIT_USAGE;
     }
-    let bar = progress_bar(inputs.len());
-    let tick = || {
-        if let Some(bar) = &bar {
-            bar.inc(1);
-        }
+    let bar = progress_bar(found.shader_count());
+    let look = Look::of(options, run_target(options, &configs));
+    let check_options = CheckOptions {
+        link: options.link,
+        lints: true,
+        fix: match (options.fix, options.unsafe_fixes) {
+            (false, _) => FixMode::Off,
+            (true, false) => FixMode::Certain,
+            (true, true) => FixMode::Suggested,
+        },
+        phase: essl_check::Phase::Full,
     };
-    let look = Look::of(options);
-    let mut results = check::check(&inputs, options, look, &tick);
+    let sink = |_, unit: essl_check::CheckedUnit| {
+        if let Some(bar) = &bar {
+            bar.inc((unit.shaders.len() + unit.unread.len()) as u64);
+        }
+        check::unit_result(unit, options, &configs, look)
+    };
+    let mut files = Files::disk();
+    let run = essl_check::run(&found, &configs, &mut files, check_options, &sink);
     if let Some(bar) = bar {
         bar.finish_and_clear();
     }
-    results.collect_errors = found.errors;
-    results.skipped = found.skipped;
+    let mut results = LintResults {
+        collect_errors: found.errors,
+        skipped: found.skipped,
+        ..LintResults::default()
+    };
+    for (f, p) in run.results {
+        results.files.extend(f);
+        results.programs.extend(p);
+    }
+    results.files.sort_by_key(|f| f.order);
+    results.programs.sort_by_key(|p| p.order);
+    let base = results.files.len();
+    results.fixed_includes = run
+        .fixed_includes
+        .iter()
+        .enumerate()
+        .map(|(k, f)| check::fixed_include(f, base + k, options, look))
+        .collect();
 
     let stdout = std::io::stdout();
     let mut out = std::io::BufWriter::new(stdout.lock());
+    let from_stdin = results.files.iter().any(|f| f.named.stdin);
     let written = if options.diff {
         output::write_fixed(&mut out, &results, true)
     } else if options.statistics {
         out.write_all(lines::statistics(&results).as_bytes())
-    } else if options.fix && inputs.iter().any(is_stdin) {
+    } else if options.fix && from_stdin {
         // The fixed text goes to stdout; the report to stderr.
         output::write_fixed(&mut out, &results, false).and_then(|()| {
             let mut err = std::io::stderr().lock();
@@ -126,18 +159,12 @@ pub fn run(options: &LintOptions) -> i32 {
     };
     if let Err(e) = written.and_then(|()| out.flush()) {
         if e.kind() != std::io::ErrorKind::BrokenPipe {
-            eprintln!("error: cannot write the output: {}", files::io_message(&e));
+            eprintln!(
+                "error: cannot write the output: {}",
+                essl_check::io_message(&e)
+            );
             return EXIT_USAGE;
         }
     }
-    results.exit_status(options.deny_warnings, options.exit_zero, options.diff)
-}
-
-/// Whether an input is (inside) standard input.
-fn is_stdin(input: &Input) -> bool {
-    match &input.source {
-        Source::Text(_) => true,
-        Source::Embedded(host, _) => host.stdin,
-        Source::File => false,
-    }
+    results.exit_status(options.exit_zero, options.diff)
 }

@@ -60,7 +60,10 @@ pub struct LintOptions {
     /// Files and folders to check (`-`: standard input).
     pub paths: Vec<PathBuf>,
     /// How to find the shaders in them.
-    pub finder: crate::discover::Finder,
+    pub find: essl_check::FindOptions,
+    /// What the flags set on top of each folder's essl.toml: target, macros, include folders,
+    /// rule levels, denied warnings, the stage of named files.
+    pub overrides: essl_check::Overrides,
     /// Output format.
     pub format: Format,
     /// Colours of the human output.
@@ -77,21 +80,10 @@ pub struct LintOptions {
     pub statistics: bool,
     /// `--exit-zero`: exit 0 even where errors were found (still 2 for usage or I/O errors).
     pub exit_zero: bool,
-    /// `--deny warnings`: warnings fail the run.
-    pub deny_warnings: bool,
     /// `--show-notes`: print the lints' notes (counted in the summary either way).
     pub show_notes: bool,
-    /// `-D NAME[=VALUE]` macros.
-    pub defines: Vec<(String, String)>,
-    /// `-I DIR` (and essl.toml's `include`): folders `#include "FILE"` searches after the
-    /// including file's own; empty, `#include` stays an error as GLSL ES has it.
-    pub include_dirs: Vec<PathBuf>,
     /// Link `NAME.vert` + `NAME.frag` pairs (on unless `--no-link`).
     pub link: bool,
-    /// `--target`: the WebGL version of the context (WebGL 2 unless asked).
-    pub target: essl::Target,
-    /// Which numerical-hazard lints run and how loud (`--allow/--warn/--deny RULE`).
-    pub rules: essl_lint::LintOptions,
 }
 
 /// How results are rendered: decided once from the options (colour resolved against the
@@ -106,22 +98,21 @@ pub(crate) struct Look {
     pub fix: bool,
     /// `--quiet`: only the diagnostics.
     pub quiet: bool,
-    /// Whether warnings fail the run (the summary then says so).
-    pub deny_warnings: bool,
-    /// The WebGL version checked for (named in the JSON output).
+    /// The WebGL version the run checks for, where the flags or the first path's essl.toml
+    /// name it (named in the JSON summary).
     pub target: essl::Target,
 }
 
 impl Look {
-    /// The look `options` ask for, with `ColorMode::Auto` resolved against stdout.
-    pub fn of(options: &LintOptions) -> Look {
+    /// The look `options` ask for, with `ColorMode::Auto` resolved against stdout; `target` is
+    /// the run's WebGL version.
+    pub fn of(options: &LintOptions, target: essl::Target) -> Look {
         Look {
             format: options.format,
             color: options.format == Format::Human && options.color.enabled(),
             fix: options.fix,
             quiet: options.quiet,
-            deny_warnings: options.deny_warnings,
-            target: options.target,
+            target,
         }
     }
 }

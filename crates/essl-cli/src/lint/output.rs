@@ -6,19 +6,18 @@
 //! it is written by [`write`] from the kept diagnostics.
 
 use std::io::Write;
+use std::sync::Arc;
 
 use codespan_reporting::term::termcolor::{Buffer, Color, ColorSpec, WriteColor};
 use essl::diagnostic::Diagnostic;
-use essl::link::LinkDiagnostic;
 use essl::render;
 use essl::source::SourceFile;
-use essl::{Shader, Stage};
+use essl_check::{CheckedProgram, CheckedShader};
 use serde_json::json;
 
 use super::options::{Format, Look};
-use super::results::{Checked, Linked, LintResults, Totals};
+use super::results::{FileResult, LintResults, Totals};
 use super::{json, lines};
-use crate::discover::{Input, Source};
 
 fn plural(n: usize, word: &str) -> String {
     match (n, word) {
@@ -70,15 +69,11 @@ pub(crate) fn write_fixed(
     results: &LintResults,
     diff: bool,
 ) -> std::io::Result<()> {
-    for f in &results.files {
+    for f in results.files.iter().chain(&results.fixed_includes) {
         let Some((old, new)) = &f.fixed else { continue };
-        let stdin = match &f.input.source {
-            Source::Text(_) => true,
-            Source::Embedded(host, _) => host.stdin,
-            Source::File => false,
-        };
+        let stdin = f.named.stdin;
         if diff {
-            let name = f.input.path.display().to_string();
+            let name = f.named.path.display().to_string();
             let text = similar::TextDiff::from_lines(old.as_str(), new.as_str());
             write!(
                 out,
@@ -101,20 +96,20 @@ pub(crate) fn write(out: &mut dyn Write, results: &LintResults, look: Look) -> s
         eprintln!("error: {e}");
     }
     for s in &results.skipped {
-        eprintln!("skipped {}: {}", s.at, s.reason);
+        eprintln!("skipped {}: {}", s.at, s.reason());
     }
-    for f in &results.files {
+    for f in results.files.iter().chain(&results.fixed_includes) {
         if let Some(e) = &f.read_error {
-            eprintln!("error: cannot read `{}`: {e}", f.input.path.display());
+            eprintln!("error: cannot read `{}`: {e}", f.named.path.display());
         }
         if let Some(e) = &f.write_error {
             eprintln!(
                 "error: cannot write the fixed `{}`: {e}",
-                f.input.path.display()
+                f.named.path.display()
             );
         }
     }
-    for f in &results.files {
+    for f in results.files.iter().chain(&results.fixed_includes) {
         out.write_all(&f.rendered)?;
     }
     for p in &results.programs {
@@ -129,7 +124,7 @@ pub(crate) fn write(out: &mut dyn Write, results: &LintResults, look: Look) -> s
             summary.set_color(ColorSpec::new().set_bold(true))?;
             write!(summary, "{}", summary_line(&t))?;
             summary.reset()?;
-            if look.deny_warnings && t.warnings > 0 {
+            if results.denied_warnings() {
                 write!(summary, " (warnings denied)")?;
             }
             writeln!(summary)?;
@@ -165,42 +160,57 @@ fn buffer(color: bool) -> Buffer {
     }
 }
 
-/// A file's output in `look.format`.
-pub(crate) fn render_file(input: &Input, checked: &Result<Checked, String>, look: Look) -> Vec<u8> {
+/// A shader's output in `look.format`.
+pub(crate) fn render_shader(r: &FileResult, s: &CheckedShader, look: Look) -> Vec<u8> {
     match look.format {
-        Format::Human => human_file(input, checked, look),
-        Format::Json => json::shader_line(input, checked, look),
+        Format::Human => human_shader(r, s, look),
+        Format::Json => json::shader_line(r, s, look),
         Format::Sarif => Vec::new(),
-        Format::Concise | Format::Github => match checked {
-            Ok(c) => std::iter::once((&c.shader.file, &c.shader.diagnostics))
-                .chain(c.included.iter().map(|(f, ds)| (f, ds)))
-                .flat_map(|(f, ds)| {
-                    ds.iter()
-                        .map(move |d| lines::line(look.format, Some(f), "", d))
-                })
-                .collect::<String>()
-                .into_bytes(),
-            Err(_) => Vec::new(),
-        },
+        Format::Concise | Format::Github => s
+            .all()
+            .map(|(f, d)| lines::line(look.format, Some(f), "", d))
+            .collect::<String>()
+            .into_bytes(),
+    }
+}
+
+/// The output for a file that could not be read (the error itself goes to stderr).
+pub(crate) fn render_unread(r: &FileResult, look: Look) -> Vec<u8> {
+    match look.format {
+        Format::Json => json::unread_line(r, look),
+        _ => Vec::new(),
+    }
+}
+
+/// The output for an included file `--fix` changed.
+pub(crate) fn render_fixed_include(r: &FileResult, look: Look) -> Vec<u8> {
+    match look.format {
+        Format::Human => {
+            let mut buf = buffer(look.color);
+            let _ = write_fixed_line(&mut buf, &r.named.label, r.fixes_applied);
+            buf.into_inner()
+        }
+        Format::Json => json::fixed_line(r),
+        _ => Vec::new(),
     }
 }
 
 /// A program's output in `look.format`.
-pub(crate) fn render_program(linked: &Linked, look: Look) -> Vec<u8> {
+pub(crate) fn render_program(
+    p: &CheckedProgram,
+    vs: &CheckedShader,
+    fs: &CheckedShader,
+    look: Look,
+) -> Vec<u8> {
     match look.format {
-        Format::Human => human_program(linked, look),
-        Format::Json => json::program_line(linked, look),
+        Format::Human => human_program(p, vs, fs, look),
+        Format::Json => json::program_line(p, vs, fs, look),
         Format::Sarif => Vec::new(),
         Format::Concise | Format::Github => {
-            let fallback = linked.vertex.path.display().to_string();
-            linked
-                .program
-                .diagnostics
+            let fallback = vs.path.display().to_string();
+            p.diagnostics
                 .iter()
-                .map(|d| {
-                    let file = file_of(linked.vs, linked.fs, d);
-                    lines::line(look.format, file, &fallback, &d.diagnostic)
-                })
+                .map(|d| lines::line(look.format, d.file.as_deref(), &fallback, &d.diagnostic))
                 .collect::<String>()
                 .into_bytes()
         }
@@ -210,17 +220,28 @@ pub(crate) fn render_program(linked: &Linked, look: Look) -> Vec<u8> {
 /// The SARIF log of every file's diagnostics, link diagnostics included (added to the file
 /// they point into; one that points into no file goes to the vertex shader's).
 fn sarif(results: &LintResults) -> String {
-    let mut files: Vec<(SourceFile, Vec<Diagnostic>)> = results
-        .files
-        .iter()
-        .flat_map(|f| f.diagnostics.clone().into_iter().chain(f.included.clone()))
-        .collect();
+    type Files = Vec<(Arc<SourceFile>, Vec<Diagnostic>)>;
+    fn add(files: &mut Files, file: &Arc<SourceFile>, ds: &[Diagnostic]) {
+        match files.iter_mut().find(|(f, _)| Arc::ptr_eq(f, file)) {
+            Some((_, list)) => list.extend_from_slice(ds),
+            None => files.push((file.clone(), ds.to_vec())),
+        }
+    }
+    let mut files: Files = Vec::new();
+    for f in &results.files {
+        for g in &f.diagnostics {
+            add(&mut files, &g.file, &g.diagnostics);
+        }
+    }
     for p in &results.programs {
-        for (path, d) in &p.diagnostics {
-            let path = path.clone().unwrap_or_else(|| p.vertex.path.clone());
-            let name = path.display().to_string();
-            if let Some((_, ds)) = files.iter_mut().find(|(f, _)| f.name() == name) {
-                ds.push(d.clone());
+        for d in &p.diagnostics {
+            let file = d.file.clone().or_else(|| {
+                let name = p.vertex.display().to_string();
+                let found = files.iter().find(|(f, _)| f.name() == name);
+                found.map(|(f, _)| f.clone())
+            });
+            if let Some(file) = file {
+                add(&mut files, &file, std::slice::from_ref(&d.diagnostic));
             }
         }
     }
@@ -231,71 +252,72 @@ fn sarif(results: &LintResults) -> String {
     essl_lint::sarif::to_string(&list)
 }
 
-/// A file's human output: how many fixes were applied, then its diagnostics.
-fn human_file(input: &Input, checked: &Result<Checked, String>, look: Look) -> Vec<u8> {
+fn write_fixed_line(buf: &mut Buffer, label: &str, applied: usize) -> std::io::Result<()> {
+    buf.set_color(ColorSpec::new().set_fg(Some(Color::Green)).set_bold(true))?;
+    write!(buf, "fixed")?;
+    buf.reset()?;
+    writeln!(buf, " `{label}`: {} applied", plural(applied, "fix"))
+}
+
+/// A shader's human output: how many fixes were applied to its file, then its diagnostics.
+fn human_shader(r: &FileResult, s: &CheckedShader, look: Look) -> Vec<u8> {
     let mut buf = buffer(look.color);
-    if let Ok(c) = checked {
-        let _ = write_human_file(&mut buf, input, c, look.fix);
-    }
+    let _ = (|| -> std::io::Result<()> {
+        if look.fix && r.fixes_applied > 0 {
+            let label = if r.named.embedded {
+                r.named.path.display().to_string()
+            } else {
+                r.named.label.clone()
+            };
+            write_fixed_line(&mut buf, &label, r.fixes_applied)?;
+        }
+        let config = render::default_config();
+        for g in &s.diagnostics {
+            render::emit_human(&mut buf, &g.file, &g.diagnostics, &config)?;
+        }
+        Ok(())
+    })();
     buf.into_inner()
 }
 
-fn write_human_file(
-    buf: &mut Buffer,
-    input: &Input,
-    c: &Checked,
-    fix: bool,
-) -> std::io::Result<()> {
-    if fix && c.fixes_applied > 0 {
-        buf.set_color(ColorSpec::new().set_fg(Some(Color::Green)).set_bold(true))?;
-        write!(buf, "fixed")?;
-        buf.reset()?;
-        writeln!(
-            buf,
-            " `{}`: {} applied",
-            input.label(),
-            plural(c.fixes_applied, "fix")
-        )?;
-    }
-    let config = render::default_config();
-    render::emit_human(buf, &c.shader.file, &c.shader.diagnostics, &config)?;
-    for (file, diagnostics) in &c.included {
-        render::emit_human(buf, file, diagnostics, &config)?;
-    }
-    Ok(())
-}
-
-fn program_name(vertex: &Input, fragment: &Input) -> String {
-    format!("`{}` + `{}`", vertex.label(), fragment.label())
+fn program_name(vs: &CheckedShader, fs: &CheckedShader) -> String {
+    format!("`{}` + `{}`", vs.label(), fs.label())
 }
 
 /// A program's human output: one line when it links cleanly or was not linked; otherwise its
-/// diagnostics, each shown in the shader it points into, and the info log when linking failed.
-fn human_program(linked: &Linked, look: Look) -> Vec<u8> {
+/// diagnostics, each shown in the file it points into, and the info log when linking failed.
+fn human_program(
+    p: &CheckedProgram,
+    vs: &CheckedShader,
+    fs: &CheckedShader,
+    look: Look,
+) -> Vec<u8> {
     let mut buf = buffer(look.color);
-    let _ = write_human_program(&mut buf, linked, look.quiet);
+    let _ = write_human_program(&mut buf, p, vs, fs, look.quiet);
     buf.into_inner()
 }
 
-fn write_human_program(buf: &mut Buffer, linked: &Linked, quiet: bool) -> std::io::Result<()> {
-    let Linked {
-        vertex,
-        fragment,
-        vs,
-        fs,
-        program,
-    } = *linked;
-    let name = program_name(vertex, fragment);
-    if quiet && (program.ok || !vs.ok() || !fs.ok()) && program.diagnostics.is_empty() {
-        return Ok(());
-    }
-    if !vs.ok() || !fs.ok() {
+fn write_human_program(
+    buf: &mut Buffer,
+    p: &CheckedProgram,
+    vs: &CheckedShader,
+    fs: &CheckedShader,
+    quiet: bool,
+) -> std::io::Result<()> {
+    let name = program_name(vs, fs);
+    let Some(program) = p.program.as_ref().filter(|_| p.linked) else {
+        if quiet {
+            return Ok(());
+        }
         let broken = match (vs.ok(), fs.ok()) {
             (false, false) => "the vertex and fragment shaders have errors",
             (false, true) => "the vertex shader has errors",
             _ => "the fragment shader has errors",
         };
         writeln!(buf, "program {name}: not linked ({broken})")?;
+        return Ok(());
+    };
+    if quiet && program.ok && p.diagnostics.is_empty() {
         return Ok(());
     }
     if program.ok {
@@ -317,9 +339,9 @@ fn write_human_program(buf: &mut Buffer, linked: &Linked, quiet: bool) -> std::i
         writeln!(buf)?;
     }
     let config = render::default_config();
-    for d in &program.diagnostics {
+    for d in &p.diagnostics {
         let one = std::slice::from_ref(&d.diagnostic);
-        match file_of(vs, fs, d) {
+        match &d.file {
             Some(file) => render::emit_human(buf, file, one, &config)?,
             None => render::emit_human_unlocated(buf, one, &config)?,
         }
@@ -332,16 +354,4 @@ fn write_human_program(buf: &mut Buffer, linked: &Linked, quiet: bool) -> std::i
         writeln!(buf)?;
     }
     Ok(())
-}
-
-/// The file a link diagnostic points into, if any.
-pub(super) fn file_of<'a>(
-    vs: &'a Shader,
-    fs: &'a Shader,
-    d: &LinkDiagnostic,
-) -> Option<&'a SourceFile> {
-    match d.stage? {
-        Stage::Vertex => Some(&vs.file),
-        Stage::Fragment => Some(&fs.file),
-    }
 }

@@ -3,61 +3,35 @@
 
 use std::path::PathBuf;
 
-use essl::link::Program;
-use essl::source::SourceFile;
-use essl::Shader;
-
 use essl::diagnostic::Severity;
+use essl::Stage;
+use essl_check::{FileDiagnostics, FindError, ProgramDiagnostic, Skipped};
 
 use super::options::{EXIT_ERRORS, EXIT_OK, EXIT_USAGE};
-use crate::discover::{FindError, Input, Skipped};
 
-/// A shader that was read and compiled.
-#[derive(Debug)]
-pub(crate) struct Checked {
-    /// The compiled shader (after `--fix`, of the fixed text).
-    pub shader: Shader,
-    /// How many fixes `--fix` applied.
-    pub fixes_applied: usize,
-    /// The text before and after `--fix`, when the fixes changed it.
-    pub fixed: Option<(String, String)>,
-    /// Why the fixed text could not be written back, if it could not.
-    pub write_error: Option<String>,
-    /// Lint notes left out (no `--show-notes`).
-    pub notes_hidden: usize,
-    /// Diagnostics inside `#include`d files (`-I`), with each file.
-    pub included: Vec<(SourceFile, Vec<essl::diagnostic::Diagnostic>)>,
+/// How a shader is named in the output.
+#[derive(Clone, Debug)]
+pub(crate) struct Named {
+    /// Its file (for a shader inside an HTML or JS file, the host's).
+    pub path: PathBuf,
+    /// Its stage.
+    pub stage: Stage,
+    /// `FILE`, or `FILE:LINE` for a shader inside a host file.
+    pub label: String,
+    /// Whether it is inside a host file.
+    pub embedded: bool,
+    /// Whether it came from standard input.
+    pub stdin: bool,
 }
 
-impl Checked {
-    /// Whether its included files have no errors.
-    pub fn included_ok(&self) -> bool {
-        self.included
-            .iter()
-            .all(|(_, ds)| !ds.iter().any(|d| d.is_error()))
-    }
-}
-
-/// The two shaders of a linked pair and their program.
-pub(crate) struct Linked<'a> {
-    /// The vertex shader's file.
-    pub vertex: &'a Input,
-    /// The fragment shader's file.
-    pub fragment: &'a Input,
-    /// The compiled vertex shader.
-    pub vs: &'a Shader,
-    /// The compiled fragment shader.
-    pub fs: &'a Shader,
-    /// The program linked from them.
-    pub program: &'a Program,
-}
-
-/// One file's result, rendered in the requested format (shaders stay on the thread that
+/// One shader's result, rendered in the requested format (shaders stay on the thread that
 /// compiled them; what crosses threads is this).
 #[derive(Debug)]
 pub(crate) struct FileResult {
-    /// The file.
-    pub input: Input,
+    /// Where it sorts: shader files in path order, then each host file's shaders.
+    pub order: usize,
+    /// The shader.
+    pub named: Named,
     /// Why it could not be read, if it could not.
     pub read_error: Option<String>,
     /// Why the fixed text could not be written back, if it could not.
@@ -66,11 +40,13 @@ pub(crate) struct FileResult {
     pub errors: usize,
     /// Its warnings.
     pub warnings: usize,
+    /// Whether its folder's settings (or `--deny warnings`) make its warnings fail the run.
+    pub deny_warnings: bool,
     /// Its notes shown (`--show-notes`).
     pub notes: usize,
     /// Its notes left out.
     pub notes_hidden: usize,
-    /// Fixes applied by `--fix`.
+    /// Fixes applied by `--fix` to its file (counted with the file's first shader).
     pub fixes_applied: usize,
     /// The text before and after `--fix`, when the fixes changed it (for `--diff`, and for
     /// standard input, whose fixed text is printed).
@@ -79,29 +55,28 @@ pub(crate) struct FileResult {
     pub codes: Vec<(&'static str, Severity)>,
     /// Its output (human text or one JSON line).
     pub rendered: Vec<u8>,
-    /// Its text and diagnostics, kept for formats that need every file at once (SARIF).
-    pub diagnostics: Option<(SourceFile, Vec<essl::diagnostic::Diagnostic>)>,
-    /// Diagnostics inside its `#include`d files, kept likewise.
-    pub included: Vec<(SourceFile, Vec<essl::diagnostic::Diagnostic>)>,
+    /// Its diagnostics on their files, kept for formats that need every file at once (SARIF).
+    pub diagnostics: Vec<FileDiagnostics>,
 }
 
 impl FileResult {
     /// A result with nothing counted yet.
-    pub fn new(input: Input, rendered: Vec<u8>) -> FileResult {
+    pub fn new(order: usize, named: Named) -> FileResult {
         FileResult {
-            input,
+            order,
+            named,
             read_error: None,
             write_error: None,
             errors: 0,
             warnings: 0,
+            deny_warnings: false,
             notes: 0,
             notes_hidden: 0,
             fixes_applied: 0,
             fixed: None,
             codes: Vec::new(),
-            rendered,
-            diagnostics: None,
-            included: Vec::new(),
+            rendered: Vec::new(),
+            diagnostics: Vec::new(),
         }
     }
 }
@@ -109,21 +84,24 @@ impl FileResult {
 /// One linked pair's result, rendered.
 #[derive(Debug)]
 pub(crate) struct ProgramResult {
-    /// The vertex shader.
-    pub vertex: Input,
+    /// Where it sorts: its vertex shader's place.
+    pub order: usize,
+    /// The vertex shader's file.
+    pub vertex: PathBuf,
     /// Whether it was linked (both shaders compiled).
     pub linked: bool,
-    /// Errors it adds to the totals (see [`program_counts`]).
+    /// Errors it adds to the totals (see [`essl_check::CheckedProgram::counts`]).
     pub errors: usize,
     /// Warnings it adds to the totals.
     pub warnings: usize,
+    /// Whether its warnings fail the run.
+    pub deny_warnings: bool,
     /// The code and severity of each link diagnostic (for `--statistics`).
     pub codes: Vec<(&'static str, Severity)>,
     /// Its output (human text or one JSON line).
     pub rendered: Vec<u8>,
-    /// Its link diagnostics with the file each points into, for formats that need every file
-    /// at once (SARIF).
-    pub diagnostics: Vec<(Option<PathBuf>, essl::diagnostic::Diagnostic)>,
+    /// Its link diagnostics on their files, for formats that need every file at once (SARIF).
+    pub diagnostics: Vec<ProgramDiagnostic>,
 }
 
 /// Everything `essl lint` found, rendered, before printing.
@@ -133,8 +111,10 @@ pub(crate) struct LintResults {
     pub collect_errors: Vec<FindError>,
     /// Shaders found and not checked.
     pub skipped: Vec<Skipped>,
-    /// One result per file, sorted by path.
+    /// One result per shader, sorted by path.
     pub files: Vec<FileResult>,
+    /// Included files `--fix` changed.
+    pub fixed_includes: Vec<FileResult>,
     /// One result per linked pair, sorted by the vertex shader's path.
     pub programs: Vec<ProgramResult>,
 }
@@ -170,6 +150,9 @@ impl LintResults {
             skipped: self.skipped.len(),
             ..Totals::default()
         };
+        for f in &self.fixed_includes {
+            t.fixes += f.fixes_applied;
+        }
         for f in &self.files {
             t.errors += f.errors;
             t.warnings += f.warnings;
@@ -195,49 +178,43 @@ impl LintResults {
             || self
                 .files
                 .iter()
+                .chain(&self.fixed_includes)
                 .any(|f| f.read_error.is_some() || f.write_error.is_some())
+    }
+
+    /// Whether some warning is denied (by `--deny warnings` or its folder's essl.toml).
+    pub fn denied_warnings(&self) -> bool {
+        self.files.iter().any(|f| f.deny_warnings && f.warnings > 0)
+            || self
+                .programs
+                .iter()
+                .any(|p| p.deny_warnings && p.warnings > 0)
     }
 
     /// The exit status: 2 for I/O errors, 1 for errors (or warnings under `--deny warnings`;
     /// under `--diff`, for a fix that would change a file), 0 otherwise or under
     /// `--exit-zero`.
-    pub fn exit_status(&self, deny_warnings: bool, exit_zero: bool, diff: bool) -> i32 {
+    pub fn exit_status(&self, exit_zero: bool, diff: bool) -> i32 {
         let t = self.totals();
         if self.has_io_errors() {
             EXIT_USAGE
         } else if exit_zero {
             EXIT_OK
         } else if diff {
-            if self.files.iter().any(|f| f.fixed.is_some()) {
+            if self
+                .files
+                .iter()
+                .chain(&self.fixed_includes)
+                .any(|f| f.fixed.is_some())
+            {
                 EXIT_ERRORS
             } else {
                 EXIT_OK
             }
-        } else if t.errors > 0 || (deny_warnings && t.warnings > 0) {
+        } else if t.errors > 0 || self.denied_warnings() {
             EXIT_ERRORS
         } else {
             EXIT_OK
         }
     }
-}
-
-/// Errors and warnings a program adds to the totals: its link diagnostics, or one error for a
-/// failed link that has none. A pair that was not linked because a shader has errors adds
-/// nothing (those errors are counted with the shader).
-pub(crate) fn program_counts(vs: &Shader, fs: &Shader, program: &Program) -> (usize, usize) {
-    if !vs.ok() || !fs.ok() {
-        return (0, 0);
-    }
-    let errors = program
-        .diagnostics
-        .iter()
-        .filter(|d| d.diagnostic.is_error())
-        .count();
-    let warnings = program.diagnostics.len() - errors;
-    let errors = if !program.ok && errors == 0 {
-        1
-    } else {
-        errors
-    };
-    (errors, warnings)
 }

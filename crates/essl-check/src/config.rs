@@ -42,7 +42,7 @@ pub const FILE_NAME: &str = "essl.toml";
 #[non_exhaustive]
 pub enum ConfigError {
     /// The file could not be read.
-    #[error("{}: {}", .path.display(), crate::files::io_message(.source))]
+    #[error("{}: {}", .path.display(), crate::read::io_message(.source))]
     Read {
         /// The file.
         path: PathBuf,

@@ -1,0 +1,540 @@
+//! Checking one unit of work — a shader file, a `NAME.vert` + `NAME.frag` pair, or the shaders
+//! of one host file — with the settings of its folder: assemble each shader's text (a host's
+//! range, `#include`s in place), apply `--fix` in rounds to the unit's own file, compile, lint,
+//! link, and move every diagnostic onto the file the author wrote.
+
+use std::sync::Arc;
+
+use essl::diagnostic::{apply_fixes, Applicability, Diagnostic};
+use essl::source::SourceFile;
+use essl::{Shader, Stage};
+
+use crate::assembly::Assembly;
+use crate::extract::{self, Embedded};
+use crate::find::{Found, Host, Input};
+use crate::include::{self, InFile};
+use crate::read::Files;
+use crate::result::{
+    CheckedProgram, CheckedShader, CheckedUnit, FileDiagnostics, FixedFile, ProgramDiagnostic,
+    Unread,
+};
+use crate::settings::{Configs, Settings};
+
+/// How many rounds of fixes `--fix` applies at most: a fix can unlock another (a parse that
+/// recovers further once a `;` is in place), and a few rounds reach a fixed point in practice.
+pub const MAX_FIX_ROUNDS: usize = 8;
+
+/// Which fixes to apply to the files checked.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum FixMode {
+    /// None: report only.
+    #[default]
+    Off,
+    /// The certain fixes (`--fix`).
+    Certain,
+    /// The certain fixes, then the suggested ones where no certain one applies
+    /// (`--fix --unsafe-fixes`).
+    Suggested,
+}
+
+/// How far to take each shader.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum Phase {
+    /// Everything: the front end, lowering to naga IR, the lints.
+    #[default]
+    Full,
+    /// The front end alone; [`crate::finish`] does the rest later (an editor publishes the
+    /// front end's diagnostics first).
+    FrontEnd,
+}
+
+/// What a check does beyond the settings of each folder.
+#[derive(Clone, Copy, Debug)]
+pub struct CheckOptions {
+    /// Link the pairs (`NAME.vert` + `NAME.frag`, and those a host file makes plain).
+    pub link: bool,
+    /// Run the numerical-hazard lints.
+    pub lints: bool,
+    /// Which fixes to apply.
+    pub fix: FixMode,
+    /// How far to take each shader.
+    pub phase: Phase,
+}
+
+impl Default for CheckOptions {
+    fn default() -> CheckOptions {
+        CheckOptions {
+            link: true,
+            lints: true,
+            fix: FixMode::Off,
+            phase: Phase::Full,
+        }
+    }
+}
+
+/// A unit of work.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Unit {
+    /// One shader file (or text): an index into [`Found::inputs`].
+    Single(usize),
+    /// A `NAME.vert` + `NAME.frag` pair, compiled and linked together.
+    Pair(usize, usize),
+    /// The shaders of one host file: an index into [`Found::hosts`].
+    Host(usize),
+}
+
+/// The units of work of what a search found: the pairs to link (when `link`), every unpaired
+/// shader file, and one unit per host file.
+pub fn units(found: &Found, link: bool) -> Vec<Unit> {
+    let shader_files: Vec<crate::ShaderFile> = found
+        .inputs
+        .iter()
+        .map(|i| crate::ShaderFile {
+            path: i.path.clone(),
+            stage: i.stage,
+        })
+        .collect();
+    let pairs = if link {
+        crate::pairs::pairs(&shader_files)
+    } else {
+        Vec::new()
+    };
+    let mut paired = vec![false; found.inputs.len()];
+    let mut units: Vec<Unit> = Vec::with_capacity(found.inputs.len() + found.hosts.len());
+    for &(v, f) in &pairs {
+        paired[v] = true;
+        paired[f] = true;
+        units.push(Unit::Pair(v, f));
+    }
+    units.extend(
+        (0..found.inputs.len())
+            .filter(|&i| !paired[i])
+            .map(Unit::Single),
+    );
+    units.extend((0..found.hosts.len()).map(Unit::Host));
+    units
+}
+
+/// One shader of a unit, assembled but not compiled yet.
+struct Part {
+    stage: Stage,
+    name: Option<String>,
+    embedded_at: Option<u32>,
+    /// The assembled text, or why it could not be assembled.
+    assembly: Result<Assembly, Vec<InFile>>,
+}
+
+/// What a unit needs besides itself.
+pub(crate) struct Context<'a> {
+    pub configs: &'a Configs,
+    pub files: &'a Files,
+    pub options: CheckOptions,
+}
+
+/// Checks one unit of what `found` holds.
+pub(crate) fn check_unit(unit: Unit, found: &Found, cx: &Context) -> CheckedUnit {
+    match unit {
+        Unit::Single(i) => single(&found.inputs[i], i, cx),
+        Unit::Pair(v, f) => {
+            let mut out = single(&found.inputs[v], v, cx);
+            let fragment = single(&found.inputs[f], f, cx);
+            out.fixed.extend(fragment.fixed);
+            out.unread.extend(fragment.unread);
+            out.shaders.extend(fragment.shaders);
+            if out.shaders.len() == 2 {
+                out.programs.push(link(&out.shaders, 0, 1));
+            }
+            out
+        }
+        Unit::Host(h) => {
+            let order =
+                found.inputs.len() + found.hosts[..h].iter().map(|x| x.checked()).sum::<usize>();
+            host(&found.hosts[h], order, cx)
+        }
+    }
+}
+
+/// A shader file or a text.
+fn single(input: &Input, order: usize, cx: &Context) -> CheckedUnit {
+    let file = match &input.text {
+        Some(t) => Ok(Arc::new(SourceFile::new(
+            input.path.display().to_string(),
+            t.to_string(),
+        ))),
+        None => cx.files.read(&input.path),
+    };
+    let file = match file {
+        Ok(f) => f,
+        Err(e) => {
+            return CheckedUnit {
+                unread: vec![Unread {
+                    order,
+                    path: input.path.clone(),
+                    stage: input.stage,
+                    message: e.to_string(),
+                }],
+                ..CheckedUnit::default()
+            }
+        }
+    };
+    let Ok(settings) = cx.configs.for_file(&input.path) else {
+        return CheckedUnit::default();
+    };
+    let make = |file: &Arc<SourceFile>| {
+        let source = Assembly::whole(file.clone());
+        vec![Part {
+            stage: input.stage,
+            name: None,
+            embedded_at: None,
+            assembly: includes(source, &input.path, &settings, cx.files),
+        }]
+    };
+    let (after, parts, applied) = fix_rounds(file.clone(), &make, &settings, cx.options);
+    let mut unit = CheckedUnit::default();
+    if applied > 0 {
+        unit.fixed.push(fixed_file(
+            &input.path,
+            &file,
+            &after,
+            applied,
+            input.text.is_some(),
+        ));
+    }
+    let file = after;
+    unit.shaders = finish_parts(parts, &input.path, order, &file, &settings, cx.options);
+    for s in &mut unit.shaders {
+        s.given = input.text.is_some();
+    }
+    unit
+}
+
+/// The shaders of a host file, and the programs it makes plain.
+fn host(h: &Host, order: usize, cx: &Context) -> CheckedUnit {
+    let Ok(settings) = cx.configs.for_file(&h.path) else {
+        return CheckedUnit::default();
+    };
+    let embedded_of = |file: &Arc<SourceFile>| -> Vec<Embedded> {
+        if Arc::ptr_eq(file, &h.file) {
+            h.embedded.clone()
+        } else {
+            extract::extract(h.kind, file.text())
+        }
+    };
+    let make = |file: &Arc<SourceFile>| -> Vec<Part> {
+        embedded_of(file)
+            .into_iter()
+            .filter_map(|e| {
+                let stage = e.stage.filter(|_| e.skip.is_none())?;
+                let source = Assembly::range(file.clone(), e.range.clone());
+                Some(Part {
+                    stage,
+                    name: e.name,
+                    embedded_at: Some(e.range.start as u32),
+                    assembly: includes(source, &h.path, &settings, cx.files),
+                })
+            })
+            .collect()
+    };
+    let (file, parts, applied) = fix_rounds(h.file.clone(), &make, &settings, cx.options);
+    let mut unit = CheckedUnit::default();
+    if applied > 0 {
+        unit.fixed
+            .push(fixed_file(&h.path, &h.file, &file, applied, h.stdin));
+    }
+    let pairs = if cx.options.link {
+        let found = embedded_of(&file);
+        let checked: Vec<usize> = (0..found.len())
+            .filter(|&k| found[k].skip.is_none() && found[k].stage.is_some())
+            .collect();
+        let part_of = |k: usize| checked.iter().position(|&c| c == k);
+        extract::pairs(&found)
+            .into_iter()
+            .filter_map(|(v, f)| Some((part_of(v)?, part_of(f)?)))
+            .collect()
+    } else {
+        Vec::new()
+    };
+    unit.shaders = finish_parts(parts, &h.path, order, &file, &settings, cx.options);
+    for s in &mut unit.shaders {
+        s.given = h.stdin;
+    }
+    for (v, f) in pairs {
+        unit.programs.push(link(&unit.shaders, v, f));
+    }
+    unit
+}
+
+fn fixed_file(
+    path: &std::path::Path,
+    before: &Arc<SourceFile>,
+    after: &Arc<SourceFile>,
+    applied: usize,
+    stdin: bool,
+) -> FixedFile {
+    FixedFile {
+        path: path.to_path_buf(),
+        before: before.clone(),
+        after: after.text().to_string(),
+        applied,
+        stdin,
+    }
+}
+
+/// `source` with its `#include`s in place, where the settings follow them.
+fn includes(
+    source: Assembly,
+    path: &std::path::Path,
+    settings: &Settings,
+    files: &Files,
+) -> Result<Assembly, Vec<InFile>> {
+    match &settings.include {
+        Some(dirs) if include::has_include(source.text()) => {
+            include::expand(&source, path, dirs, files)
+        }
+        _ => Ok(source),
+    }
+}
+
+type Compiled = (Part, Option<Shader>);
+
+/// Compiles the parts `make` assembles from `file`; under `--fix`, applies the fixes that fall
+/// in `file` and compiles again, until none applies. Returns the final text of the file, its
+/// parts compiled, and how many fixes were applied.
+fn fix_rounds(
+    file: Arc<SourceFile>,
+    make: &dyn Fn(&Arc<SourceFile>) -> Vec<Part>,
+    settings: &Settings,
+    options: CheckOptions,
+) -> (Arc<SourceFile>, Vec<Compiled>, usize) {
+    let mut current = file;
+    let mut applied = 0;
+    for round in 0..=MAX_FIX_ROUNDS {
+        let compiled: Vec<Compiled> = make(&current)
+            .into_iter()
+            .map(|p| {
+                let shader = compile(&p, settings, options.phase);
+                (p, shader)
+            })
+            .collect();
+        if options.fix == FixMode::Off || round == MAX_FIX_ROUNDS {
+            return (current, compiled, applied);
+        }
+        let own: Vec<Diagnostic> = compiled
+            .iter()
+            .filter_map(|(p, s)| Some((p.assembly.as_ref().ok()?, s.as_ref()?)))
+            .flat_map(|(a, s)| {
+                s.diagnostics
+                    .iter()
+                    .filter(|d| d.fix.is_some())
+                    .map(|d| a.map_diagnostic(d.clone()))
+                    .filter(|(f, _)| Arc::ptr_eq(&a.files()[*f as usize], &current))
+                    .map(|(_, d)| d)
+                    .collect::<Vec<_>>()
+            })
+            .collect();
+        let (mut text, mut n) = apply_fixes(current.text(), &own, Applicability::Certain);
+        if n == 0 && options.fix == FixMode::Suggested {
+            (text, n) = apply_fixes(current.text(), &own, Applicability::Suggested);
+        }
+        if n == 0 || text == current.text() {
+            return (current, compiled, applied);
+        }
+        applied += n;
+        current = Arc::new(SourceFile::new(current.name(), text));
+    }
+    unreachable!("the last round returns")
+}
+
+/// Compiles one part (nothing where its includes failed).
+fn compile(part: &Part, settings: &Settings, phase: Phase) -> Option<Shader> {
+    let assembly = part.assembly.as_ref().ok()?;
+    let name = assembly
+        .files()
+        .first()
+        .map_or(String::new(), |f| f.name().to_string());
+    let file = SourceFile::new(name, assembly.text());
+    Some(match phase {
+        Phase::Full => essl::compile(file, part.stage, &settings.compile),
+        Phase::FrontEnd => essl::compile_front_end(file, part.stage, &settings.compile),
+    })
+}
+
+/// Lints the compiled parts and moves their diagnostics onto their files.
+fn finish_parts(
+    parts: Vec<Compiled>,
+    path: &std::path::Path,
+    order: usize,
+    own: &Arc<SourceFile>,
+    settings: &Settings,
+    options: CheckOptions,
+) -> Vec<CheckedShader> {
+    parts
+        .into_iter()
+        .enumerate()
+        .map(|(k, (part, shader))| {
+            let (assembly, diagnostics) = match part.assembly {
+                Ok(a) => {
+                    let diagnostics = group(own, &a, shader.iter().flat_map(|s| &s.diagnostics));
+                    (a, diagnostics)
+                }
+                Err(errors) => (Assembly::default(), group_in_files(own, errors)),
+            };
+            let mut checked = CheckedShader {
+                order: order + k,
+                path: path.to_path_buf(),
+                stage: part.stage,
+                embedded_at: part.embedded_at,
+                name: part.name,
+                shader,
+                assembly,
+                diagnostics,
+                linted: false,
+                given: false,
+            };
+            if options.phase == Phase::Full {
+                lint(&mut checked, settings, options.lints);
+            }
+            checked
+        })
+        .collect()
+}
+
+/// Lowers a shader checked by its front end alone and runs the lints (when `lints`), adding
+/// their findings on their files.
+pub(crate) fn lint(checked: &mut CheckedShader, settings: &Settings, lints: bool) {
+    if checked.linted {
+        return;
+    }
+    checked.linted = true;
+    let Some(shader) = checked.shader.as_mut() else {
+        return;
+    };
+    let before = shader.diagnostics.len();
+    shader.lower();
+    let mut found: Vec<Diagnostic> = shader.diagnostics[before..].to_vec();
+    if lints && shader.ok() {
+        found.extend(essl_lint::lint(shader, &settings.rules));
+    }
+    if found.is_empty() {
+        return;
+    }
+    let own = checked.file().clone();
+    let more = group(&own, &checked.assembly, found.iter());
+    for g in more {
+        match checked
+            .diagnostics
+            .iter_mut()
+            .find(|x| Arc::ptr_eq(&x.file, &g.file))
+        {
+            Some(x) => {
+                x.diagnostics.extend(g.diagnostics);
+                essl::diagnostic::sort(&mut x.diagnostics);
+            }
+            None => checked.diagnostics.push(g),
+        }
+    }
+}
+
+/// Diagnostics of `assembly`'s text moved onto their files: `own` first (even with none),
+/// then each other file in the order the assembly met it.
+fn group<'a>(
+    own: &Arc<SourceFile>,
+    assembly: &Assembly,
+    diagnostics: impl Iterator<Item = &'a Diagnostic>,
+) -> Vec<FileDiagnostics> {
+    let mut out = vec![FileDiagnostics {
+        file: own.clone(),
+        diagnostics: Vec::new(),
+    }];
+    for d in diagnostics {
+        let (f, d) = assembly.map_diagnostic(d.clone());
+        let file = assembly.files().get(f as usize).unwrap_or(own);
+        push(&mut out, file, d);
+    }
+    for g in &mut out {
+        essl::diagnostic::sort(&mut g.diagnostics);
+    }
+    out
+}
+
+fn group_in_files(own: &Arc<SourceFile>, errors: Vec<InFile>) -> Vec<FileDiagnostics> {
+    let mut out = vec![FileDiagnostics {
+        file: own.clone(),
+        diagnostics: Vec::new(),
+    }];
+    for (file, d) in errors {
+        push(&mut out, &file, d);
+    }
+    out
+}
+
+fn push(groups: &mut Vec<FileDiagnostics>, file: &Arc<SourceFile>, d: Diagnostic) {
+    match groups.iter_mut().find(|g| Arc::ptr_eq(&g.file, file)) {
+        Some(g) => g.diagnostics.push(d),
+        None => groups.push(FileDiagnostics {
+            file: file.clone(),
+            diagnostics: vec![d],
+        }),
+    }
+}
+
+/// Links shaders `v` and `f` of a unit (when both compiled) and moves the link diagnostics
+/// onto their files.
+fn link(shaders: &[CheckedShader], v: usize, f: usize) -> CheckedProgram {
+    link_shaders(&shaders[v], &shaders[f], v, f)
+}
+
+/// Links a vertex and a fragment shader (when both compiled); `v` and `f` are what the program
+/// records as their indices.
+pub(crate) fn link_shaders(
+    vs: &CheckedShader,
+    fs: &CheckedShader,
+    v: usize,
+    f: usize,
+) -> CheckedProgram {
+    let (Some(a), Some(b)) = (&vs.shader, &fs.shader) else {
+        return CheckedProgram {
+            vertex: v,
+            fragment: f,
+            program: None,
+            linked: false,
+            diagnostics: Vec::new(),
+        };
+    };
+    let program = essl::link::link(a, b);
+    let linked = vs.ok() && fs.ok();
+    let diagnostics = program
+        .diagnostics
+        .iter()
+        .map(|d| {
+            let shader = match d.stage {
+                Some(Stage::Vertex) => Some(vs),
+                Some(Stage::Fragment) => Some(fs),
+                None => None,
+            };
+            match shader {
+                Some(s) => {
+                    let (file, diagnostic) = s.assembly.map_diagnostic(d.diagnostic.clone());
+                    ProgramDiagnostic {
+                        file: s.assembly.files().get(file as usize).cloned(),
+                        stage: d.stage,
+                        diagnostic,
+                    }
+                }
+                None => ProgramDiagnostic {
+                    file: None,
+                    stage: None,
+                    diagnostic: d.diagnostic.clone(),
+                },
+            }
+        })
+        .filter(|_| linked)
+        .collect();
+    CheckedProgram {
+        vertex: v,
+        fragment: f,
+        program: Some(program),
+        linked,
+        diagnostics,
+    }
+}
