@@ -303,9 +303,11 @@ impl Search<'_> {
                 text: None,
             }),
             None if named => return Err(UsageError::NoStage(path.to_path_buf())),
-            None if is_glsl(path) => self.found.errors.push(FindError::NoStage {
-                path: path.to_path_buf(),
-            }),
+            None if is_glsl(path) && !self.in_include_folder(path) => {
+                self.found.errors.push(FindError::NoStage {
+                    path: path.to_path_buf(),
+                })
+            }
             None => {}
         }
         Ok(())
@@ -329,6 +331,20 @@ impl Search<'_> {
             text: Some(text.into()),
         });
         Ok(())
+    }
+
+    /// Whether `path` lies in an include folder of its settings: a file to include, not a
+    /// shader.
+    fn in_include_folder(&self, path: &Path) -> bool {
+        let Ok(settings) = self.configs.for_file(path) else {
+            return false;
+        };
+        let Some(dirs) = &settings.include else {
+            return false;
+        };
+        let real = |p: &Path| std::fs::canonicalize(p).unwrap_or_else(|_| p.to_path_buf());
+        let file = real(path);
+        dirs.iter().any(|d| file.starts_with(real(d)))
     }
 
     fn config_error(&mut self, e: Arc<crate::ConfigError>) {

@@ -110,34 +110,31 @@ pub fn extract(kind: HostKind, text: &str) -> Vec<Embedded> {
 /// `vertex-shader-3d` + `fragment-shader-3d`), each key naming one shader of each stage; or,
 /// when the file holds exactly one vertex and one fragment shader, those two.
 pub fn pairs(found: &[Embedded]) -> Vec<(usize, usize)> {
-    let checked: Vec<usize> = (0..found.len())
-        .filter(|&i| found[i].skip.is_none())
-        .collect();
-    let of = |stage: Stage| -> Vec<usize> {
-        checked
-            .iter()
-            .copied()
-            .filter(|&i| found[i].stage == Some(stage))
-            .collect()
-    };
-    let (vs, fs) = (of(Stage::Vertex), of(Stage::Fragment));
+    let checked = || (0..found.len()).filter(|&i| found[i].skip.is_none());
+    let of = |stage: Stage| checked().filter(move |&i| found[i].stage == Some(stage));
+    let (vs, fs): (Vec<usize>, Vec<usize>) =
+        (of(Stage::Vertex).collect(), of(Stage::Fragment).collect());
     if vs.len() == 1 && fs.len() == 1 {
         return vec![(vs[0], fs[0])];
     }
-    let key = |i: usize| found[i].name.as_deref().map(stage::pair_key);
-    let mut out = Vec::new();
-    for &v in &vs {
-        let Some(k) = key(v) else { continue };
-        let same = |list: &[usize]| -> Vec<usize> {
-            list.iter()
-                .copied()
-                .filter(|&j| key(j).as_ref() == Some(&k))
-                .collect()
+    // Each key's vertex and fragment shaders, counted: a key pairs when it names exactly one
+    // of each. Keys are computed once per shader (a page can hold thousands).
+    let mut by_key: std::collections::HashMap<String, [(usize, Option<usize>); 2]> =
+        std::collections::HashMap::new();
+    for i in checked() {
+        let (Some(name), Some(stage)) = (found[i].name.as_deref(), found[i].stage) else {
+            continue;
         };
-        if let ([_], [f]) = (same(&vs).as_slice(), same(&fs).as_slice()) {
-            out.push((v, *f));
-        }
+        let slot = &mut by_key.entry(stage::pair_key(name)).or_default()
+            [(stage == Stage::Fragment) as usize];
+        slot.0 += 1;
+        slot.1.get_or_insert(i);
     }
+    let mut out: Vec<(usize, usize)> = by_key
+        .into_values()
+        .filter_map(|[(nv, v), (nf, f)]| (nv == 1 && nf == 1).then_some((v?, f?)))
+        .collect();
+    out.sort_unstable();
     out
 }
 
