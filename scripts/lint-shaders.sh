@@ -1,8 +1,10 @@
 #!/usr/bin/env bash
 # The main job: lint (compile, link, check numerical hazards) every shader in shaders-glsl/.
 # Exits 1, because the verbatim seed shaders keep the errors their articles published, on
-# purpose: they are the test cases. Their corrected `.fixed` twins and the composed shaders are
-# lint-clean (no error, no warning). Extra arguments go to `essl lint` (e.g. `--format json`,
+# purpose: they are the test cases. Their corrected `.fixed` twins and article 001's variants are
+# lint-clean (no error, no warning); the shaders composed from articles 003 and 004's snippets
+# compile, with the numerical-hazard warnings those snippets carry (docs/lints/README.md, "The
+# seeds"). Extra arguments go to `essl lint` (e.g. `--format json`,
 # `--deny warnings`); `--fix` is refused here, since it would rewrite the verbatim seeds.
 set -euo pipefail
 cd "$(dirname "$0")/.."

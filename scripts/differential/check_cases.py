@@ -18,7 +18,8 @@ import tempfile
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.abspath(os.path.join(HERE, "..", ".."))
 ESSL = os.path.join(ROOT, "target", "release", "essl")
-ORACLE = "/work/shared/tools/webgl2-oracle.py"
+# ../shared beside the repository.
+ORACLE = os.path.join(ROOT, "..", "shared", "tools", "webgl2-oracle.py")
 
 
 def main(argv):

@@ -23,8 +23,10 @@ import sys
 import tempfile
 
 HERE = os.path.dirname(os.path.abspath(__file__))
-ESSL = os.path.join(HERE, "..", "..", "target", "release", "essl")
-ORACLE = "/work/shared/tools/webgl2-oracle.py"
+ROOT = os.path.abspath(os.path.join(HERE, "..", ".."))
+ESSL = os.path.join(ROOT, "target", "release", "essl")
+# ../shared beside the repository.
+ORACLE = os.path.join(ROOT, "..", "shared", "tools", "webgl2-oracle.py")
 
 
 def norm(msg):

@@ -30,7 +30,8 @@ import known_glslang_differences as known  # noqa: E402
 
 ROOT = os.path.abspath(os.path.join(HERE, "..", ".."))
 DEFAULT_ESSL = os.path.join(ROOT, "target", "release", "essl")
-DEFAULT_ORACLE = "/work/shared/tools/webgl2-oracle.py"
+# ../shared beside the repository.
+DEFAULT_ORACLE = os.path.join(ROOT, "..", "shared", "tools", "webgl2-oracle.py")
 
 
 def essl_check(essl, files):

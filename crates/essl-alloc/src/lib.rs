@@ -17,7 +17,7 @@
 //! allocations quickly; a 1 MiB shader's token, syntax-tree and checked-tree vectors, each tens
 //! of MiB and each freed before the next pass's is at its largest, then all count in the
 //! process's resident memory: 280 MiB for 350,000 statements naming an undeclared variable,
-//! against 110 MiB on glibc's `malloc`, which unmaps such blocks when they are freed and grows
+//! against 109 MiB on glibc's `malloc`, which unmaps such blocks when they are freed and grows
 //! them with `mremap` (docs/reliability.md). No ordinary shader allocates a block that large.
 //!
 //! It is a few dozen lines on `libmimalloc-sys`, the crate under `mimalloc`, rather than a fork

@@ -8,13 +8,16 @@
 //!   annotations or one line each; [`settings`] prints the `essl.toml` settings in effect
 //!   (`essl config`).
 //! - [`explain`]: `essl explain CODE` — a diagnostic code's documentation.
-//!
-//! `render`, `deqp_exec` (Cargo feature `render`) and `report` (feature `report`) use the
-//! WebGL2 API on wgpu; without those features the command builds no GPU stack.
+//! - [`rules`]: `essl rules` — the lint rules, or one rule's documentation.
 //! - [`conformance`]: `essl conformance` — score the front end on the conformance corpora.
-//! - [`deqp_exec`]: `essl deqp-exec` — execute the dEQP value cases through essl-gl.
-//! - [`report`]: `essl report` — the light shaders' error against run time on essl-gl.
 //! - [`translate`]: `essl translate` — shaders to WGSL, SPIR-V, MSL, HLSL or GLSL.
+//! - `render`: `essl render` — draw a scene through essl-gl.
+//! - `deqp_exec`: `essl deqp-exec` — execute the dEQP value cases through essl-gl.
+//! - `report`: `essl report` — the light shaders' error against run time on essl-gl.
+//!
+//! `essl server` runs `essl_server::run_stdio`. `render`, `deqp_exec` (Cargo feature `render`)
+//! and `report` (feature `report`) use the WebGL2 API on wgpu; without those features the
+//! command builds no GPU stack.
 
 #![warn(missing_docs)]
 

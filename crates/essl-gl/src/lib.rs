@@ -8,7 +8,9 @@
 //! [`Program`], [`Shader`], [`UniformLocation`]), and misuse records WebGL's error
 //! ([`Context::get_error`]) instead of panicking.
 //!
-//! Programs are GLSL ES 3.00: [`Context::compile_shader`] runs the `essl` front end, and
+//! Programs are GLSL ES 3.00 or 1.00, compiled as a WebGL 2 context compiles them (GLSL ES 1.00
+//! alone, as WebGL 1 does, after [`Context::set_shader_target`]): [`Context::compile_shader`]
+//! runs the `essl` front end, and
 //! [`Context::link_program`] links and lowers the shaders to an
 //! [`essl::program::ProgramLayout`] — two naga modules and a description of their bindings —
 //! which [`Context::link_program_from_layout`] installs (tests and tools may hand it layouts

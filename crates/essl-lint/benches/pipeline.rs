@@ -5,8 +5,8 @@
 //!
 //! The set: every shader of `shaders-glsl/` and every 10th shader of the dEQP corpus
 //! (`$ESSL_CORPORA` or `../shared/corpora/deqp_gles3.jsonl`, `300 es` cases) that compiles
-//! (about 1,000 shaders; without the corpus, `shaders-glsl/` alone). `docs/performance.md`
-//! shows the table per shader.
+//! (about 1,000 shaders; without the corpus, `shaders-glsl/` alone). `docs/performance.md` has
+//! the current figure, `docs/performance-history.md` the table per pass.
 //!
 //! Run with `cargo bench -p essl-lint --bench pipeline`.
 

@@ -20,8 +20,11 @@
 //! assert_eq!(found[0].code, "pow-negative-base");
 //! ```
 //!
-//! Every finding is a warning unless [`LintOptions`] denies its rule (or the whole set, `all`);
-//! a comment `// essl-allow: RULE` on the line of the finding or on the line before silences it.
+//! A finding is a warning, or a note where one uniform alone, out of the range the shader was
+//! written for, reaches the hazard (and every finding of a note-level rule); notes are reported
+//! only when [`LintOptions::notes`] asks. [`LintOptions`] sets each rule's [`Level`] (allow,
+//! note, warn, deny; `all` for every rule). A comment `// essl-allow: RULE` on the line of the
+//! finding or on the line before silences it there, `// essl-allow-file: RULE` in the whole file.
 //!
 //! What the rules cannot decide statically because it depends on uniform values — equal
 //! `smoothstep` edges, a zero `u_lightDirection` given to `normalize`, `u_shininess <= 0` —

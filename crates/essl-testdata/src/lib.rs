@@ -1,10 +1,10 @@
 //! Where essl's tests find the data that does not live in the repository — the conformance
-//! corpora, the seed scenes with Chromium's reference pictures, the seed articles — and what a
-//! test does when it is missing.
+//! corpora, the seed scenes with Chromium's reference pictures, the seed articles, the WebGL
+//! specifications and IDL — and what a test does when it is missing.
 //!
 //! Each folder is looked up in this order:
-//! 1. an environment variable (`ESSL_CORPORA`, `ESSL_SCENES`, `ESSL_SEEDS`), for data fetched
-//!    elsewhere (`scripts/fetch-test-data.sh` writes `test-data/corpora`);
+//! 1. an environment variable (`ESSL_CORPORA`, `ESSL_SCENES`, `ESSL_SEEDS`, `ESSL_SPECS`), for
+//!    data fetched elsewhere (`scripts/fetch-test-data.sh` writes `test-data/corpora`);
 //! 2. `../shared/<name>` beside the repository, where the project's own machines keep it.
 //!
 //! When neither exists the test **skips** with a message on stderr — a user's clone or a fork's

@@ -364,7 +364,7 @@ pub fn classify_as(
 ) -> Vec<Token> {
     // A plain loop into a new vector: collecting `into_iter().filter().map()` reused the input's
     // buffer in place, which cost about 5 M instructions over 600 dEQP files beyond the
-    // classification itself (docs/performance.md, "At `1cfec54`").
+    // classification itself (docs/performance-history.md, "At `1cfec54`").
     let mut out = Vec::with_capacity(tokens.len());
     for t in tokens {
         let tok = match t.kind {
