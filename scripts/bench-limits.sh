@@ -1,10 +1,12 @@
 #!/usr/bin/env bash
 # Time and peak memory of `essl lint` on hostile inputs of at most 1 MiB each: floods of errors,
-# macro bombs, deep nesting, huge declarations lists, no-break spaces, long lines.
+# macro bombs, deep nesting, huge declarations lists, no-break spaces, long lines; and host
+# files (HTML pages, JS modules) holding thousands of shaders or one huge one.
 #
 # Writes the inputs into a temporary folder, builds essl in release mode, runs each once under
-# GNU time and prints a Markdown table: input, size, CPU seconds (user), peak resident memory
-# (MiB), and the first diagnostic's code. docs/reliability.md shows the last run.
+# GNU time and prints a Markdown table: input, size, wall seconds, CPU seconds (user, on every
+# thread), peak resident memory (MiB), and the first diagnostic's code. Shader files are linted
+# as they are (`NAME.frag` has no partner), host files with their pairs linked. docs/reliability.md shows the last run.
 #
 # Usage: scripts/bench-limits.sh   (needs python3 and /usr/bin/time, Debian's `time`)
 set -euo pipefail
@@ -39,14 +41,34 @@ w('nested-parentheses', hdr + 'void main() { o = vec4(' + '(' * (MB // 2 - 100) 
 w('sum-chain', hdr + 'void main() { float x = 1.0' + ' + 1.0' * ((MB - 200) // 6) + '; o = vec4(x); }\n')
 w('no-break-spaces-one-line', hdr + 'void main() {' + '\u00a0' * ((MB - 100) // 2) + ' o = vec4(1.0); }\n')
 w('switch-30k-cases', hdr + 'void main() { int i = 0; switch (i) { ' + ''.join(f'case {k}: o = vec4({k}.0); break; ' for k in range(30000)) + '} }\n')
+# Host files: shaders inside HTML and JS, checked one unit per file.
+def host(name, s):
+    with open(os.path.join(out, name), 'w', encoding='utf-8') as f:
+        f.write(s[:MB])
+tag = lambda i, stage, body: f'<script id="s{i}-{stage}-shader" type="x-shader/x-{stage}">#version 300 es\n{body}</script>\n'
+vs = 'in vec4 p;\nvoid main() { gl_Position = p; }\n'
+fs = 'precision mediump float;\nout vec4 c;\nvoid main() { c = vec4(1.0); }\n'
+host('page-5000-shader-tags.html', ''.join(tag(i // 2, 'vertex' if i % 2 == 0 else 'fragment', vs if i % 2 == 0 else fs) for i in range(5000)))
+page, i = '', 0
+while len(page) < MB - 400:
+    page += tag(i, 'fragment', 'void main() { x = 1; }\n')
+    i += 1
+host('page-1-MiB-of-broken-tags.html', page)
+script, i = '', 0
+while len(script) < MB - 200:
+    script += f'export const fs{i} = `#version 300 es\nprecision mediump float;\nout vec4 c;\nvoid main() {{ c = vec4({i}.0); }}`;\n'
+    i += 1
+host('module-1-MiB-of-literals.js', script)
+host('page-one-1-MiB-shader.html', '<script type="x-shader/x-fragment">' + hdr + 'void main() { float x = 1.0; ' + ' x = x + 1.0;' * ((MB - 300) // 13) + ' o = vec4(x); }\n</script>\n')
 PY
 echo "essl $("$essl" --version | cut -d' ' -f2) at $(git rev-parse --short HEAD), $(nproc) cores"
 echo
-echo "| input | bytes | CPU s | peak MiB | first diagnostic |"
-echo "|---|---:|---:|---:|---|"
-for f in "$dir"/*.frag; do
-    /usr/bin/time -f "%U %M" -o "$dir/time.txt" "$essl" lint --format json --no-link "$f" > "$dir/out.txt" 2>&1 || true
-    read -r user kib < <(grep -v status "$dir/time.txt")
+echo "| input | bytes | wall s | CPU s | peak MiB | first diagnostic |"
+echo "|---|---:|---:|---:|---:|---|"
+for f in "$dir"/*.frag "$dir"/*.html "$dir"/*.js; do
+    /usr/bin/time -f "%e %U %M" -o "$dir/time.txt" "$essl" lint --format json "$f" > "$dir/out.txt" 2>&1 || true
+    read -r wall user kib < <(grep -v status "$dir/time.txt")
     code=$(grep -o '"code":"[^"]*"' "$dir/out.txt" | head -1 | cut -d'"' -f4 || true)
-    echo "| \`$(basename "$f" .frag)\` | $(stat -c %s "$f") | $user | $((kib / 1024)) | ${code:-none} |"
+    name=$(basename "$f"); name=${name%.frag}
+    echo "| \`$name\` | $(stat -c %s "$f") | $wall | $user | $((kib / 1024)) | ${code:-none} |"
 done
