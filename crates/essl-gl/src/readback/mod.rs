@@ -107,6 +107,8 @@ impl Context {
         if offset < 0 {
             return self.error(gl::INVALID_VALUE, F, "negative offset");
         }
+        // Transform feedback may have written the GPU copy: the pixels go over those bytes.
+        self.buffer_to_cpu(id);
         let mut data =
             std::mem::take(&mut self.objects.buffers.get_any_mut(id).expect("bound").data);
         let start = (offset as usize).min(data.len());
