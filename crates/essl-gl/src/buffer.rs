@@ -7,8 +7,9 @@
 use std::ops::Range;
 
 use crate::bindings::BufferRange;
-use crate::context::{Context, Gpu, MAX_UNIFORM_BUFFER_BINDINGS};
+use crate::context::{Context, MAX_UNIFORM_BUFFER_BINDINGS};
 use crate::gl;
+use crate::gpu::Gpu;
 use crate::objects::{Buffer, Id};
 
 /// Bytes of zeros after a buffer's contents on the GPU, so that a vertex format wider than the

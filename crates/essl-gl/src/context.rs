@@ -10,6 +10,7 @@ use crate::extensions::Extensions;
 use crate::frame::Frame;
 use crate::framebuffer::{ContextAttributes, DefaultFramebuffer};
 use crate::gl;
+use crate::gpu::Gpu;
 use crate::objects::{next_context_id, Objects};
 use crate::program::Linker;
 use crate::state::{PixelStore, RenderState};
@@ -24,14 +25,6 @@ pub const MAX_TEXTURE_UNITS: u32 = 32;
 /// The number of indexed `UNIFORM_BUFFER` binding points (`MAX_UNIFORM_BUFFER_BINDINGS`),
 /// WebGL2's minimum.
 pub const MAX_UNIFORM_BUFFER_BINDINGS: u32 = 24;
-
-/// The GPU objects the context renders with.
-pub(crate) struct Gpu {
-    pub(crate) device: wgpu::Device,
-    pub(crate) queue: wgpu::Queue,
-    pub(crate) info: wgpu::AdapterInfo,
-    pub(crate) limits: wgpu::Limits,
-}
 
 /// Limits of the context that depend on the device.
 #[derive(Clone, Copy, Debug)]

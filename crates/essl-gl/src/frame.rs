@@ -13,7 +13,8 @@
 //! clear of whole attachments ends the pass, and the next draw begins one (loading what the
 //! attachments hold).
 
-use crate::context::{Context, Gpu};
+use crate::context::Context;
+use crate::gpu::Gpu;
 
 /// Bytes of one arena chunk (larger allocations get a chunk of their own size).
 const CHUNK_SIZE: u64 = 1 << 18;

@@ -75,6 +75,7 @@ mod error;
 mod extensions;
 mod frame;
 mod framebuffer;
+mod gpu;
 mod native;
 mod objects;
 mod pipeline;

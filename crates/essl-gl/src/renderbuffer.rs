@@ -5,8 +5,9 @@
 //! multisampled one is resolved by `blit_framebuffer`). wgpu zero-fills new textures, which
 //! is WebGL's rule for new storage.
 
-use crate::context::{Context, Gpu};
+use crate::context::Context;
 use crate::gl;
+use crate::gpu::Gpu;
 use crate::objects::{Id, Renderbuffer};
 use crate::query::Parameter;
 use crate::texture::{internal_format, InternalFormat};

@@ -3,9 +3,10 @@
 //! render pass), premultiplied alpha and whether the image is preserved across
 //! [`Context::present`](crate::Context::present).
 
-use crate::context::{Context, Gpu};
+use crate::context::Context;
 use crate::frame::PassClears;
 use crate::gl;
+use crate::gpu::Gpu;
 
 /// WebGL's `WebGLContextAttributes`: what the default framebuffer has, as given to
 /// [`Context::with_attributes`](crate::Context::with_attributes) and returned by

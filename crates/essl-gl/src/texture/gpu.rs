@@ -18,9 +18,10 @@ use std::collections::HashMap;
 use std::ops::Range;
 
 use super::object::{mip_size, view_dimension, Level, TextureObject};
-use crate::context::{Context, Gpu};
+use crate::context::Context;
 use crate::frame::Frame;
 use crate::gl;
+use crate::gpu::Gpu;
 use crate::objects::Id;
 
 /// What a view of the GPU copy shows.

@@ -4,8 +4,8 @@
 use std::collections::HashMap;
 
 use super::format::SampleKind;
-use crate::context::Gpu;
 use crate::gl;
+use crate::gpu::Gpu;
 use crate::objects::Id;
 
 /// The textures bound to one texture unit, one per target.
