@@ -8,19 +8,10 @@
 //! [`Objects`]. The element array buffer is state of the vertex array, so it lives with the
 //! vertex array in [`Objects`].
 
+use crate::buffer::BufferRange;
 use crate::gl;
 use crate::objects::{Id, Objects};
 use crate::texture::TextureUnit;
-
-/// A range of a buffer bound to an indexed binding point (`bindBufferRange`; the whole buffer
-/// for `bindBufferBase`).
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub(crate) struct BufferRange {
-    pub(crate) buffer: Id,
-    pub(crate) offset: u64,
-    /// `None`: to the end of the buffer.
-    pub(crate) size: Option<u64>,
-}
 
 /// The context's bindings, with GL's initial values (nothing bound, unit 0 active).
 pub(crate) struct Bindings {

@@ -179,7 +179,7 @@ pub(crate) struct PassClears {
 /// The batch being recorded.
 pub(crate) struct Frame {
     /// Identifies the batch; bumped at every submit.
-    pub(crate) serial: u64,
+    serial: u64,
     encoder: Option<wgpu::CommandEncoder>,
     pub(crate) pass: Option<wgpu::RenderPass<'static>>,
     /// The target of the open pass.
@@ -211,6 +211,11 @@ impl Frame {
             occlusion: None,
             pass_counts: false,
         }
+    }
+
+    /// Identifies the batch being recorded; changes at every submit.
+    pub(crate) fn serial(&self) -> u64 {
+        self.serial
     }
 
     fn encoder(&mut self, gpu: &Gpu) -> &mut wgpu::CommandEncoder {

@@ -7,7 +7,7 @@
 //! active session write their vertices' captured varyings after those already written
 //! ([`crate::shader_patch::capture_outputs`]).
 
-use crate::bindings::BufferRange;
+use crate::buffer::BufferRange;
 use crate::context::Context;
 use crate::gl;
 use crate::objects::{Id, TransformFeedback};

@@ -6,7 +6,7 @@
 use essl::types::{SamplerDim, ScalarKind, Type};
 
 use super::{SlotPlan, Source};
-use crate::bindings::BufferRange;
+use crate::buffer::BufferRange;
 use crate::context::Context;
 use crate::framebuffer::DrawFormats;
 use crate::gl;
@@ -141,7 +141,7 @@ impl Context {
                 .objects
                 .buffers
                 .get_any(buffer)
-                .map_or(0, |b| b.data.len() as u64);
+                .map_or(0, |b| b.len() as u64);
             let size = size.unwrap_or(len.saturating_sub(offset));
             if offset + size > len || size < block.size as u64 {
                 let msg = format!(
