@@ -260,6 +260,19 @@ impl Context {
             .unwrap_or_default()
     }
 
+    /// Submits the recorded commands to the GPU without waiting (`flush`).
+    pub fn flush(&mut self) {
+        if !self.frame.is_empty() {
+            self.frame.submit(&self.gpu, |_| {});
+        }
+    }
+
+    /// Submits the recorded commands and waits until the GPU has executed them (`finish`).
+    pub fn finish(&mut self) {
+        self.flush();
+        let _ = self.gpu.device.poll(wgpu::PollType::wait_indefinitely());
+    }
+
     /// Records a GL error (the first one sticks) with a message naming the function.
     pub(crate) fn error(&self, code: u32, function: &str, what: impl std::fmt::Display) {
         self.errors.record(code, || {

@@ -342,13 +342,7 @@ impl Context {
             Some((batch, version, chunk, offset))
                 if *batch == serial && *version == linked.uniform_version =>
             {
-                let buffer = self
-                    .frame
-                    .arena
-                    .chunks
-                    .iter()
-                    .find(|c| c.id == *chunk)
-                    .map(|c| c.buffer.clone());
+                let buffer = self.frame.arena.chunk_buffer(*chunk);
                 (
                     *chunk,
                     buffer.expect("chunks live for the batch"),

@@ -315,10 +315,7 @@ impl Context {
         } else {
             [0, 0, 1, 1]
         };
-        self.frame.pass(&self.gpu, target);
-        let frame = &mut self.frame;
-        let pass = frame.pass.as_mut().expect("opened above");
-        let ps = &mut frame.pass_state;
+        let (pass, ps) = self.frame.pass(&self.gpu, target);
         if ps.pipeline != Some(pipeline.id) {
             pass.set_pipeline(&pipeline.pipeline);
             ps.pipeline = Some(pipeline.id);
@@ -384,7 +381,6 @@ impl Context {
             }
             None => pass.draw(range.vertices, 0..instances),
         }
-        frame.draws += 1;
     }
 }
 
