@@ -160,32 +160,37 @@ class Crate:
             return tuple(here + segs)
         return None
 
-    def resolve(self, path, seen=None):
+    def resolve(self, path):
         """The file defining what an absolute path names (its module's file when unknown)."""
-        seen = seen or set()
-        if path in seen:
-            return None
-        seen = seen | {path}
+        return self.find(path, set()) or self.files[self.module_of(path)]
+
+    def module_of(self, path):
+        """The longest prefix of `path` that is a module with a file."""
         k = len(path)
         while k > 0 and path[:k] not in self.files:
             k -= 1
-        mod = path[:k]
-        if k == len(path):
-            return self.files[mod]
-        name = path[k]
-        if name in self.items[mod]:
+        return path[:k]
+
+    def find(self, path, seen):
+        """The file that defines `path`'s item, following re-exports; `None` if not found."""
+        if path in seen:
+            return None
+        seen.add(path)
+        mod = self.module_of(path)
+        k = len(mod)
+        if k == len(path) or path[k] in self.items[mod]:
             return self.files[mod]
         for full, _, _ in self.uses[mod]:
-            if full[-1] == name:
-                found = self.resolve(full + path[k + 1 :], seen)
+            if full[-1] == path[k]:
+                found = self.find(full + path[k + 1 :], seen)
                 if found is not None:
                     return found
         for full, _, _ in self.uses[mod]:
             if full[-1] == "*":
-                found = self.resolve(full[:-1] + path[k:], seen)
-                if found is not None and found != self.files.get(full[:-1]):
+                found = self.find(full[:-1] + path[k:], seen)
+                if found is not None:
                     return found
-        return self.files[mod]
+        return None
 
     def edges(self):
         """file → {file it imports: [the paths that make the edge]}."""
@@ -250,7 +255,7 @@ def main():
     ap.add_argument("--why", help="list the edges out of this file (relative to SRC)")
     ap.add_argument("--all", action="store_true", help="list every component's files")
     args = ap.parse_args()
-    src = (ROOT / args.src).resolve()
+    src = pathlib.Path(args.src).resolve() if pathlib.Path(args.src).is_absolute() else (ROOT / args.src).resolve()
     crate = Crate(src)
     edges = crate.edges()
     name = lambda f: str(f.relative_to(src))
