@@ -26,6 +26,8 @@ ITEM = re.compile(
     r"(?:struct|enum|fn|const|static|type|trait|union|mod)\s+(\w+)"
 )
 MACRO = re.compile(r"^\s*macro_rules!\s*(\w+)")
+# An item a macro defines at the top level: `handle! { Buffer }` defines `Buffer`.
+MACRO_ITEM = re.compile(r"^(?!macro_rules)\w+!\s*[{(]\s*(?:#\[[^\]]*\]\s*)*(\w+)", re.M)
 USE = re.compile(r"^\s*(?:pub(?:\([^)]*\))?\s+)?use\s+([^;]*);", re.S | re.M)
 INLINE = re.compile(r"(?<![\w:])((?:crate|super|self)(?:::\w+)+)")
 
@@ -130,6 +132,7 @@ class Crate:
                     hit = rx.match(line)
                     if hit:
                         names.add(hit.group(1))
+            names.update(MACRO_ITEM.findall(text))
             self.items[m] = names
             uses = []
             for hit in USE.finditer(text):
