@@ -6,7 +6,7 @@ use std::sync::{Arc, Mutex};
 use crate::bindings::Bindings;
 use crate::caches::Caches;
 use crate::error::{error_name, ContextError, ErrorState};
-use crate::extensions::Extensions;
+use crate::extensions::{Extension, Extensions};
 use crate::frame::Frame;
 use crate::framebuffer::{ContextAttributes, DefaultFramebuffer};
 use crate::gl;
@@ -302,6 +302,52 @@ impl Context {
         } else {
             true
         }
+    }
+}
+
+impl Context {
+    /// The extensions this context offers (`getSupportedExtensions`).
+    pub fn get_supported_extensions(&self) -> Vec<&'static str> {
+        self.supported().iter().map(|e| e.name()).collect()
+    }
+
+    fn supported(&self) -> Vec<Extension> {
+        let mut v = vec![
+            Extension::ColorBufferFloat,
+            Extension::ColorBufferHalfFloat,
+            Extension::FloatBlend,
+        ];
+        if self
+            .gpu
+            .device
+            .features()
+            .contains(wgpu::Features::FLOAT32_FILTERABLE)
+        {
+            v.push(Extension::TextureFloatLinear);
+        }
+        v.push(Extension::ParallelShaderCompile);
+        v
+    }
+
+    /// Turns an extension on and returns it (`getExtension`); `None` for a name this context
+    /// does not offer (names compare case-insensitively, as in WebGL).
+    pub fn get_extension(&mut self, name: &str) -> Option<Extension> {
+        let e = self
+            .supported()
+            .into_iter()
+            .find(|e| e.name().eq_ignore_ascii_case(name))?;
+        let x = &mut self.extensions;
+        match e {
+            // EXT_color_buffer_half_float makes the 16-bit formats renderable, which
+            // EXT_color_buffer_float also does; essl-gl tracks the two together.
+            Extension::ColorBufferFloat | Extension::ColorBufferHalfFloat => {
+                x.color_buffer_float = true
+            }
+            Extension::FloatBlend => x.float_blend = true,
+            Extension::TextureFloatLinear => x.texture_float_linear = true,
+            Extension::ParallelShaderCompile => x.parallel_shader_compile = true,
+        }
+        Some(e)
     }
 }
 

@@ -88,7 +88,6 @@ mod sampler;
 pub mod scene;
 mod shader_patch;
 mod state;
-mod stencil;
 mod sync;
 mod texture;
 mod transform_feedback;

@@ -9,7 +9,7 @@ use crate::frame::PassTarget;
 use crate::gl;
 use crate::pipeline::{CachedPipeline, PipelineKey, VertexSlot};
 use crate::shader_patch::InputPatch;
-use crate::texture::compare_function;
+use crate::state::compare_function;
 
 /// The wgpu blend factor for a GL one.
 fn blend_factor(f: u32) -> wgpu::BlendFactor {

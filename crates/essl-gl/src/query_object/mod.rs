@@ -10,32 +10,14 @@
 //! event loop, which [`Context::present`] stands for: asking before it answers `false`
 //! (`QUERY_RESULT_AVAILABLE`) and 0 (`QUERY_RESULT`).
 
+mod object;
+
+pub(crate) use object::{Measure, QueryObject};
+
 use crate::context::Context;
-use crate::frame::OcclusionCounts;
 use crate::gl;
 use crate::objects::{Id, Query};
 use crate::query::Parameter;
-
-/// What a query measured at its last `end_query`.
-pub(crate) enum Measure {
-    /// The samples each render pass counted.
-    Samples(OcclusionCounts),
-    /// Transform feedback primitives.
-    Primitives(u64),
-}
-
-/// A query object.
-#[derive(Default)]
-pub(crate) struct QueryObject {
-    /// The target of its first `begin_query`; fixed from then on.
-    pub(crate) target: Option<u32>,
-    /// What the last begin/end pair measured, and the [`Context::present`] count at its end.
-    pub(crate) ended: Option<(Measure, u64)>,
-    /// The result, once read.
-    pub(crate) result: Option<u64>,
-    /// Primitives written while active (transform feedback).
-    pub(crate) primitives: u64,
-}
 
 /// The binding slot of a query target: occlusion (both kinds share one) or primitives.
 fn slot(target: u32) -> Option<usize> {
