@@ -73,11 +73,6 @@ pub struct Context {
     pub(crate) presents: u64,
 }
 
-/// A step between lowering and installing a program: see [`Context::set_program_filter`].
-pub type ProgramFilter = Box<
-    dyn FnMut(essl::program::ProgramLayout) -> Result<essl::program::ProgramLayout, String> + Send,
->;
-
 /// The wgpu features essl-gl asks for when the adapter has them: vertex shaders that write
 /// storage buffers (transform feedback), `DEPTH32F_STENCIL8`, filterable 32-bit floats.
 const WANTED_FEATURES: wgpu::Features = wgpu::Features::VERTEX_WRITABLE_STORAGE

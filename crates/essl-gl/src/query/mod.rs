@@ -14,8 +14,10 @@ pub use objects::ShaderPrecisionFormat;
 
 use crate::objects::{Buffer, Program, Texture, VertexArray};
 
-/// A value returned by [`Context::get_parameter`], [`Context::get_shader_parameter`] and
-/// [`Context::get_program_parameter`]: what WebGL's `any` holds for that `pname`.
+/// A value returned by [`Context::get_parameter`](crate::Context::get_parameter),
+/// [`Context::get_shader_parameter`](crate::Context::get_shader_parameter) and
+/// [`Context::get_program_parameter`](crate::Context::get_program_parameter): what WebGL's
+/// `any` holds for that `pname`.
 #[derive(Clone, Debug, PartialEq)]
 #[non_exhaustive]
 pub enum Parameter {
