@@ -5,9 +5,8 @@
 
 use essl::program::InternalUniform;
 
-use super::gather::Feed;
 use super::topology::{emulate, repack, Emulated};
-use super::{DrawCall, Indices, SlotPlan, Source};
+use super::{DrawCall, Feed, Indices, SlotPlan, Source};
 use crate::buffer::{index_size, read_indices, DerivedKey};
 use crate::context::Context;
 use crate::framebuffer::sample_view_key;

@@ -5,7 +5,7 @@
 
 use essl::types::{SamplerDim, ScalarKind, Type};
 
-use super::{SlotPlan, Source};
+use super::{Feed, SlotPlan, Source};
 use crate::buffer::BufferRange;
 use crate::context::Context;
 use crate::framebuffer::DrawFormats;
@@ -15,16 +15,6 @@ use crate::program::{ShaderInput, ValueKind};
 use crate::shader_patch::Norm32;
 use crate::texture::{view_dimension, SampleKind};
 use crate::vertex_array::{GenericAttrib, VertexAttrib};
-
-/// How a vertex format feeds an attribute.
-#[derive(Clone, Copy, Debug)]
-pub(super) struct Feed {
-    pub(super) format: wgpu::VertexFormat,
-    pub(super) kind: ValueKind,
-    pub(super) count: u8,
-    pub(super) used: u8,
-    pub(super) norm: Option<Norm32>,
-}
 
 /// The wgpu vertex format for an attribute array, and what the shader must still do.
 fn feed_for(a: &VertexAttrib) -> Feed {

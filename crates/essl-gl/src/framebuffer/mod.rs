@@ -2,11 +2,13 @@
 //! `framebuffer_texture_layer`, `framebuffer_renderbuffer`, `draw_buffers`, `read_buffer`,
 //! `invalidate_framebuffer`, `delete_framebuffer`.
 //!
-//! Split by concern: [`status`] (WebGL2's completeness rules, `check_framebuffer_status`),
-//! [`attachment`] (`get_framebuffer_attachment_parameter`), [`default`] (the default
-//! framebuffer and the context attributes that shape it) and [`target`] (what a draw, a clear
-//! or a read reaches: the attachments' GPU views). `status`, `attachment` and `target` add
-//! methods to [`Context`]: its `impl` is spread over these files on purpose.
+//! Split by concern: [`object`] (a framebuffer object's attachments and buffers),
+//! [`default`] (the default framebuffer and the context attributes that shape it), and the
+//! calls: [`status`] (WebGL2's completeness rules, `check_framebuffer_status`),
+//! [`attachment`] (`get_framebuffer_attachment_parameter`), [`drawing_buffer`] (`present`,
+//! `drawing_buffer_storage`) and [`target`] (what a draw, a clear or a read reaches: the
+//! attachments' GPU views). The calls add methods to [`Context`]: its `impl` is spread over
+//! these files on purpose.
 
 mod attachment;
 mod default;

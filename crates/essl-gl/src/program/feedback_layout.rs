@@ -4,8 +4,8 @@
 use essl::program::{CaptureSource as Source, ProgramLayout};
 use essl::types::GlType;
 
+use super::interface::ActiveInfo;
 use super::linker::LinkError;
-use super::object::ActiveInfo;
 use crate::gl;
 use crate::shader_patch::{CaptureSource, CaptureSpec, CaptureValue};
 

@@ -21,6 +21,19 @@ pub(crate) struct ShaderInput {
     pub(crate) components: u8,
 }
 
+/// What `get_active_attrib`, `get_active_uniform` and `get_transform_feedback_varying`
+/// return (`WebGLActiveInfo`): the name as WebGL enumerates it, the array size (1 for a
+/// non-array) and the type enum (`FLOAT_VEC3`, `SAMPLER_2D`, …).
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct ActiveInfo {
+    /// The name (`u_lights[0].color`, `u_weights[0]`).
+    pub name: String,
+    /// Elements of an array, else 1.
+    pub size: u32,
+    /// The type, as a GL enum.
+    pub ty: u32,
+}
+
 pub(super) fn value_kind(scalar: naga::Scalar) -> Option<ValueKind> {
     match scalar.kind {
         naga::ScalarKind::Float => Some(ValueKind::Float),

@@ -30,21 +30,22 @@ mod shader;
 mod uniform;
 
 pub(crate) use feedback_layout::MAX_SEPARATE_ATTRIBS;
+pub use interface::ActiveInfo;
 pub(crate) use interface::{
     find_uniform, main_entry, type_shape, uniform_shape, ShaderInput, ValueKind,
 };
 pub(crate) use linker::Linker;
 pub use linker::ProgramFilter;
-pub use object::ActiveInfo;
 pub(crate) use object::{LinkedProgram, ProgramObject, ShaderObject};
+
+use crate::context::Context;
+use crate::gl;
+use crate::objects::Program;
 
 /// `MAX_TRANSFORM_FEEDBACK_SEPARATE_ATTRIBS`: the indexed transform feedback bindings.
 pub(crate) fn feedback_max_buffers() -> u32 {
     MAX_SEPARATE_ATTRIBS
 }
-use crate::context::Context;
-use crate::gl;
-use crate::objects::Program;
 
 impl Context {
     /// The last successful link of `program`; `None` with WebGL's error otherwise (a foreign

@@ -10,19 +10,6 @@ use crate::gl;
 use crate::objects::Id;
 use crate::validation::{LinkedSources, ProgramChecks};
 
-/// What `get_active_attrib`, `get_active_uniform` and `get_transform_feedback_varying`
-/// return (`WebGLActiveInfo`): the name as WebGL enumerates it, the array size (1 for a
-/// non-array) and the type enum (`FLOAT_VEC3`, `SAMPLER_2D`, …).
-#[derive(Clone, Debug, PartialEq, Eq)]
-pub struct ActiveInfo {
-    /// The name (`u_lights[0].color`, `u_weights[0]`).
-    pub name: String,
-    /// Elements of an array, else 1.
-    pub size: u32,
-    /// The type, as a GL enum.
-    pub ty: u32,
-}
-
 /// A shader object (`WebGLShader`).
 pub(crate) struct ShaderObject {
     pub(crate) ty: u32,

@@ -2,8 +2,10 @@
 //! `get_query_parameter`, `delete_query`, `is_query`.
 //!
 //! `ANY_SAMPLES_PASSED` and `ANY_SAMPLES_PASSED_CONSERVATIVE` count samples with wgpu's
-//! occlusion queries: each render pass recorded while the query is active counts into a slot
-//! of its own, and the result is whether any slot counted a sample.
+//! occlusion queries, which the batch runs
+//! ([`Frame::begin_occlusion`](crate::frame::Frame::begin_occlusion)): each render pass
+//! recorded while the query is active counts into a slot of its own, and the result is
+//! whether any slot counted a sample. A query's state is [`object`]'s.
 //! `TRANSFORM_FEEDBACK_PRIMITIVES_WRITTEN` counts the primitives transform feedback wrote.
 //!
 //! As WebGL requires, a result becomes available only after control returns to the caller's

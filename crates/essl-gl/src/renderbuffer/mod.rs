@@ -3,7 +3,8 @@
 //!
 //! A renderbuffer's storage is a wgpu texture that can only be drawn into and copied (a
 //! multisampled one is resolved by `blit_framebuffer`). wgpu zero-fills new textures, which
-//! is WebGL's rule for new storage.
+//! is WebGL's rule for new storage. The object's state is [`object`]'s; this file adds the
+//! calls.
 
 mod object;
 

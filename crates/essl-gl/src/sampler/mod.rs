@@ -1,8 +1,8 @@
-//! Sampler objects (`create_sampler`, `bind_sampler`, `sampler_parameteri/f`,
-//! `get_sampler_parameter`) and the sampling parameters they share with textures: filters,
-//! wrap modes, level-of-detail range and depth comparison. A sampler bound to a texture unit
-//! replaces the unit's textures' own sampling parameters, completeness included (ES 3.0
-//! §3.8.2).
+//! Sampler objects: `create_sampler`, `bind_sampler`, `sampler_parameteri/f`,
+//! `get_sampler_parameter`. The sampling parameters they share with textures (filters, wrap
+//! modes, level-of-detail range, depth comparison) are [`object`]'s. A sampler bound to a
+//! texture unit replaces the unit's textures' own sampling parameters, completeness included
+//! (ES 3.0 §3.8.2).
 
 mod object;
 

@@ -5,7 +5,7 @@
 //! requires, its status changes only after control returns to the caller's event loop, which
 //! [`Context::present`] stands for, and `client_wait_sync` never blocks (WebGL's
 //! `MAX_CLIENT_WAIT_TIMEOUT_WEBGL` is 0 here): it answers `ALREADY_SIGNALED` or
-//! `TIMEOUT_EXPIRED`.
+//! `TIMEOUT_EXPIRED`. A fence's state is [`object`]'s.
 
 mod object;
 

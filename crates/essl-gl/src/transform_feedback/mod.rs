@@ -2,7 +2,8 @@
 //! indexed `TRANSFORM_FEEDBACK_BUFFER` bindings, `begin_transform_feedback`,
 //! `end_transform_feedback`, `pause_transform_feedback`, `resume_transform_feedback`.
 //!
-//! An object holds its buffer bindings and the session begun on it: the primitive mode, the
+//! An object ([`object`]) holds its buffer bindings and the session begun on it: the
+//! primitive mode, the
 //! program, whether it is paused, and how many vertices it has written. The draws of an
 //! active session write their vertices' captured varyings after those already written
 //! ([`crate::shader_patch::capture_outputs`]).

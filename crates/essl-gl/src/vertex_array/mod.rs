@@ -1,5 +1,6 @@
 //! Vertex arrays and vertex attributes: `create_vertex_array`, `bind_vertex_array`,
-//! `vertex_attrib_pointer`, `enable_vertex_attrib_array`, `vertex_attrib4f`, …
+//! `vertex_attrib_pointer`, `enable_vertex_attrib_array`, `vertex_attrib4f`, … The state
+//! they set is [`object`]'s.
 
 mod object;
 
