@@ -222,3 +222,52 @@ fn read_pixels_into_a_captured_buffer_keeps_both_writes() {
     }
     assert_clean(&ctx);
 }
+
+const OFFSET_VS: &str = "#version 300 es
+layout(location = 0) in vec2 a_pos;
+layout(location = 1) in vec2 a_off;
+void main() {
+    gl_Position = vec4(a_pos + a_off, 0.0, 1.0);
+    gl_PointSize = 1.0;
+}";
+
+#[test]
+fn a_draw_that_reads_a_captured_buffer_keeps_its_other_buffers_contents() {
+    // The second attribute reads a buffer transform feedback wrote, through a copy made on
+    // the CPU (a divisor above 1): bringing the captured bytes back submits the batch. The
+    // first attribute's buffer, bound before that, then changes for the next draw: the first
+    // draw must still see its old contents.
+    let Some(mut ctx) = context(4, 4) else { return };
+    let p = linked(&mut ctx, &["v_pos"], gl::INTERLEAVED_ATTRIBS);
+    ctx.use_program(Some(p));
+    float_attribute(&mut ctx, 0, 2, &[0.0, 0.0]);
+    float_attribute(&mut ctx, 1, 2, &[0.0, 0.0]);
+    let captured = ctx.create_buffer();
+    ctx.bind_buffer(gl::TRANSFORM_FEEDBACK_BUFFER, Some(captured));
+    ctx.buffer_data_size(gl::TRANSFORM_FEEDBACK_BUFFER, 2 * 4, gl::STREAM_COPY);
+    ctx.bind_buffer_base(gl::TRANSFORM_FEEDBACK_BUFFER, 0, Some(captured));
+    ctx.enable(gl::RASTERIZER_DISCARD);
+    ctx.begin_transform_feedback(gl::POINTS);
+    ctx.draw_arrays(gl::POINTS, 0, 1);
+    ctx.end_transform_feedback();
+    ctx.disable(gl::RASTERIZER_DISCARD);
+    ctx.bind_buffer_base(gl::TRANSFORM_FEEDBACK_BUFFER, 0, None);
+    ctx.bind_buffer(gl::TRANSFORM_FEEDBACK_BUFFER, None);
+
+    let draw = program(&mut ctx, OFFSET_VS, EMPTY_FS);
+    ctx.use_program(Some(draw));
+    clear_black(&mut ctx);
+    let positions = float_attribute(&mut ctx, 0, 2, &[-0.75, -0.75]);
+    ctx.bind_buffer(gl::ARRAY_BUFFER, Some(captured));
+    ctx.vertex_attrib_pointer(1, 2, gl::FLOAT, false, 0, 0);
+    ctx.vertex_attrib_divisor(1, 2);
+    ctx.draw_arrays_instanced(gl::POINTS, 0, 1, 1);
+    ctx.bind_buffer(gl::ARRAY_BUFFER, Some(positions));
+    ctx.buffer_sub_data(gl::ARRAY_BUFFER, 0, &[0.75f32, 0.75]);
+    ctx.draw_arrays_instanced(gl::POINTS, 0, 1, 1);
+    let message = ctx.error_message();
+    assert_eq!(ctx.get_error(), gl::NO_ERROR, "{message:?}");
+    assert_eq!(pixel(&mut ctx, 0, 0), [255; 4], "the first draw's point");
+    assert_eq!(pixel(&mut ctx, 3, 3), [255; 4], "the second draw's point");
+    assert_clean(&ctx);
+}

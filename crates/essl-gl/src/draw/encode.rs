@@ -46,7 +46,48 @@ pub(super) struct Groups {
     pub(super) slot_bindings: Vec<SlotBinding>,
 }
 
+/// Whether wgpu takes an enabled array as it is (its stride and offset), or it must be
+/// re-packed on the CPU.
+fn binds_directly(a: &VertexAttrib, feed: &Feed) -> bool {
+    let stride = a.effective_stride();
+    let fmt_size = feed.format.size();
+    let rel = a.offset & 3;
+    stride % 4 == 0 && rel % fmt_size.min(4) == 0 && rel + fmt_size <= stride && a.divisor <= 1
+}
+
 impl Context {
+    /// Brings in step, before anything is bound, what could submit the batch while the draw
+    /// is encoded: the CPU copies of the buffers the draw reads on the CPU (re-packed arrays,
+    /// indices), which transform feedback may have written on the GPU, and the GPU copies of
+    /// the textures it samples, whose remade chain may read levels back. A submit between
+    /// two bindings would leave the first in the submitted batch and the draw in the next,
+    /// where a later write could land in place under it.
+    pub(super) fn settle_reads(&mut self, call: &DrawCall) {
+        let (gpu, frame) = (&self.gpu, &mut self.frame);
+        for (_, source) in &call.sources {
+            if let Source::Array {
+                buffer,
+                attrib,
+                feed,
+            } = source
+            {
+                if !binds_directly(attrib, feed) {
+                    let b = self.objects.buffers.get_any_mut(*buffer);
+                    b.expect("attached buffers are alive").cpu_bytes(gpu, frame);
+                }
+            }
+        }
+        if let Indices::Elements { buffer, .. } = call.indices {
+            let b = self.objects.buffers.get_any_mut(buffer);
+            b.expect("bound buffers are alive").cpu_bytes(gpu, frame);
+        }
+        for plan in &call.slot_plans {
+            if let Some((id, c, _)) = plan.texture {
+                self.sync_texture(id, c.base..c.base + c.levels);
+            }
+        }
+    }
+
     /// The vertex buffers and slots of the draw's inputs.
     pub(super) fn bind_vertex_inputs(&mut self, call: &DrawCall) -> VertexInputs {
         let mut out = VertexInputs::default();
@@ -77,10 +118,7 @@ impl Context {
         let stride = a.effective_stride();
         let fmt_size = feed.format.size();
         let rel = a.offset & 3;
-        let direct = stride % 4 == 0
-            && rel % fmt_size.min(4) == 0
-            && rel + fmt_size <= stride
-            && a.divisor <= 1;
+        let direct = binds_directly(a, feed);
         let serial = self.frame.serial();
         let gpu = &self.gpu;
         let b = self
