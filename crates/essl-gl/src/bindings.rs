@@ -8,18 +8,53 @@
 //! [`Objects`]. The element array buffer is state of the vertex array, so it lives with the
 //! vertex array in [`Objects`].
 
+use crate::buffer::BufferRange;
 use crate::gl;
 use crate::objects::{Id, Objects};
-use crate::texture::TextureUnit;
 
-/// A range of a buffer bound to an indexed binding point (`bindBufferRange`; the whole buffer
-/// for `bindBufferBase`).
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub(crate) struct BufferRange {
-    pub(crate) buffer: Id,
-    pub(crate) offset: u64,
-    /// `None`: to the end of the buffer.
-    pub(crate) size: Option<u64>,
+/// The textures bound to one texture unit, one per target.
+#[derive(Clone, Debug, Default)]
+struct TextureUnit {
+    d2: Option<Id>,
+    cube: Option<Id>,
+    d3: Option<Id>,
+    d2_array: Option<Id>,
+}
+
+impl TextureUnit {
+    /// The texture bound to `target` (a texture target the caller has checked).
+    fn get(&self, target: u32) -> Option<Id> {
+        match target {
+            gl::TEXTURE_2D => self.d2,
+            gl::TEXTURE_CUBE_MAP => self.cube,
+            gl::TEXTURE_3D => self.d3,
+            _ => self.d2_array,
+        }
+    }
+
+    /// The binding of `target`, to set.
+    fn slot(&mut self, target: u32) -> &mut Option<Id> {
+        match target {
+            gl::TEXTURE_2D => &mut self.d2,
+            gl::TEXTURE_CUBE_MAP => &mut self.cube,
+            gl::TEXTURE_3D => &mut self.d3,
+            _ => &mut self.d2_array,
+        }
+    }
+
+    /// Unbinds `id` from every target of the unit.
+    fn forget(&mut self, id: Id) {
+        for slot in [
+            &mut self.d2,
+            &mut self.cube,
+            &mut self.d3,
+            &mut self.d2_array,
+        ] {
+            if *slot == Some(id) {
+                *slot = None;
+            }
+        }
+    }
 }
 
 /// The context's bindings, with GL's initial values (nothing bound, unit 0 active).

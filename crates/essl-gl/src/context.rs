@@ -6,10 +6,11 @@ use std::sync::{Arc, Mutex};
 use crate::bindings::Bindings;
 use crate::caches::Caches;
 use crate::error::{error_name, ContextError, ErrorState};
-use crate::extensions::Extensions;
+use crate::extensions::{Extension, Extensions};
 use crate::frame::Frame;
 use crate::framebuffer::{ContextAttributes, DefaultFramebuffer};
 use crate::gl;
+use crate::gpu::Gpu;
 use crate::objects::{next_context_id, Objects};
 use crate::program::Linker;
 use crate::state::{PixelStore, RenderState};
@@ -24,14 +25,6 @@ pub const MAX_TEXTURE_UNITS: u32 = 32;
 /// The number of indexed `UNIFORM_BUFFER` binding points (`MAX_UNIFORM_BUFFER_BINDINGS`),
 /// WebGL2's minimum.
 pub const MAX_UNIFORM_BUFFER_BINDINGS: u32 = 24;
-
-/// The GPU objects the context renders with.
-pub(crate) struct Gpu {
-    pub(crate) device: wgpu::Device,
-    pub(crate) queue: wgpu::Queue,
-    pub(crate) info: wgpu::AdapterInfo,
-    pub(crate) limits: wgpu::Limits,
-}
 
 /// Limits of the context that depend on the device.
 #[derive(Clone, Copy, Debug)]
@@ -79,11 +72,6 @@ pub struct Context {
     /// answered after it.
     pub(crate) presents: u64,
 }
-
-/// A step between lowering and installing a program: see [`Context::set_program_filter`].
-pub type ProgramFilter = Box<
-    dyn FnMut(essl::program::ProgramLayout) -> Result<essl::program::ProgramLayout, String> + Send,
->;
 
 /// The wgpu features essl-gl asks for when the adapter has them: vertex shaders that write
 /// storage buffers (transform feedback), `DEPTH32F_STENCIL8`, filterable 32-bit floats.
@@ -267,6 +255,19 @@ impl Context {
             .unwrap_or_default()
     }
 
+    /// Submits the recorded commands to the GPU without waiting (`flush`).
+    pub fn flush(&mut self) {
+        if !self.frame.is_empty() {
+            self.frame.submit(&self.gpu, |_| {});
+        }
+    }
+
+    /// Submits the recorded commands and waits until the GPU has executed them (`finish`).
+    pub fn finish(&mut self) {
+        self.flush();
+        let _ = self.gpu.device.poll(wgpu::PollType::wait_indefinitely());
+    }
+
     /// Records a GL error (the first one sticks) with a message naming the function.
     pub(crate) fn error(&self, code: u32, function: &str, what: impl std::fmt::Display) {
         self.errors.record(code, || {
@@ -296,6 +297,52 @@ impl Context {
         } else {
             true
         }
+    }
+}
+
+impl Context {
+    /// The extensions this context offers (`getSupportedExtensions`).
+    pub fn get_supported_extensions(&self) -> Vec<&'static str> {
+        self.supported().iter().map(|e| e.name()).collect()
+    }
+
+    fn supported(&self) -> Vec<Extension> {
+        let mut v = vec![
+            Extension::ColorBufferFloat,
+            Extension::ColorBufferHalfFloat,
+            Extension::FloatBlend,
+        ];
+        if self
+            .gpu
+            .device
+            .features()
+            .contains(wgpu::Features::FLOAT32_FILTERABLE)
+        {
+            v.push(Extension::TextureFloatLinear);
+        }
+        v.push(Extension::ParallelShaderCompile);
+        v
+    }
+
+    /// Turns an extension on and returns it (`getExtension`); `None` for a name this context
+    /// does not offer (names compare case-insensitively, as in WebGL).
+    pub fn get_extension(&mut self, name: &str) -> Option<Extension> {
+        let e = self
+            .supported()
+            .into_iter()
+            .find(|e| e.name().eq_ignore_ascii_case(name))?;
+        let x = &mut self.extensions;
+        match e {
+            // EXT_color_buffer_half_float makes the 16-bit formats renderable, which
+            // EXT_color_buffer_float also does; essl-gl tracks the two together.
+            Extension::ColorBufferFloat | Extension::ColorBufferHalfFloat => {
+                x.color_buffer_float = true
+            }
+            Extension::FloatBlend => x.float_blend = true,
+            Extension::TextureFloatLinear => x.texture_float_linear = true,
+            Extension::ParallelShaderCompile => x.parallel_shader_compile = true,
+        }
+        Some(e)
     }
 }
 

@@ -11,24 +11,27 @@
 //!
 //! Draws go into a render pass on a [`PassTarget`]; a draw on another target, a copy, or a
 //! clear of whole attachments ends the pass, and the next draw begins one (loading what the
-//! attachments hold).
+//! attachments hold). The pass, its target and the dynamic state set in it are one value,
+//! begun and ended together. While an occlusion query is active every pass counts its
+//! samples into a slot of the query's set ([`Frame::begin_occlusion`],
+//! [`Frame::end_occlusion`]).
 
-use crate::context::{Context, Gpu};
+use crate::gpu::Gpu;
 
 /// Bytes of one arena chunk (larger allocations get a chunk of their own size).
 const CHUNK_SIZE: u64 = 1 << 18;
 
 /// One GPU buffer of the arena and the bytes it will receive at the next submit.
-pub(crate) struct Chunk {
+struct Chunk {
     /// Unique within the arena, so bind groups made for a chunk can be cached by it.
-    pub(crate) id: u64,
-    pub(crate) buffer: wgpu::Buffer,
+    id: u64,
+    buffer: wgpu::Buffer,
     data: Vec<u8>,
 }
 
 /// A linear allocator of per-draw data, uploaded at each submit.
 pub(crate) struct Arena {
-    pub(crate) chunks: Vec<Chunk>,
+    chunks: Vec<Chunk>,
     current: usize,
     next_id: u64,
 }
@@ -97,6 +100,14 @@ impl Arena {
         }
     }
 
+    /// The buffer of the chunk [`Allocation::chunk`] names, while the batch lasts.
+    pub(crate) fn chunk_buffer(&self, chunk: u64) -> Option<wgpu::Buffer> {
+        self.chunks
+            .iter()
+            .find(|c| c.id == chunk)
+            .map(|c| c.buffer.clone())
+    }
+
     /// Queues the writes of everything pushed since the last submit, and starts over.
     fn upload(&mut self, queue: &wgpu::Queue) {
         for chunk in &mut self.chunks {
@@ -109,7 +120,7 @@ impl Arena {
     }
 }
 
-/// Dynamic state already set in the open render pass.
+/// Dynamic state already set in the open render pass, which a draw need not set again.
 #[derive(Default)]
 pub(crate) struct PassState {
     pub(crate) pipeline: Option<u64>,
@@ -175,41 +186,57 @@ pub(crate) struct PassClears {
     pub(crate) stencil: Option<u32>,
 }
 
-/// The batch being recorded.
-pub(crate) struct Frame {
-    /// Identifies the batch; bumped at every submit.
-    pub(crate) serial: u64,
-    encoder: Option<wgpu::CommandEncoder>,
-    pub(crate) pass: Option<wgpu::RenderPass<'static>>,
-    /// The target of the open pass.
-    target: Option<PassTarget>,
-    pub(crate) pass_state: PassState,
-    pub(crate) arena: Arena,
-    /// Draws recorded in the batch (for statistics).
-    pub(crate) draws: u64,
-    /// The occlusion query in progress: every pass counts the samples that pass into a
-    /// slot of its own of this set; the next slot.
-    pub(crate) occlusion: Option<(wgpu::QuerySet, u32)>,
-    /// Whether the open pass has begun an occlusion query.
-    pass_counts: bool,
+/// The render pass open on a target, and the dynamic state already set in it.
+struct OpenPass {
+    pass: wgpu::RenderPass<'static>,
+    target: PassTarget,
+    state: PassState,
+    /// Whether the pass began an occlusion query, which ends with it.
+    counts: bool,
+}
+
+/// The occlusion query in progress: every render pass counts the samples that pass into a
+/// slot of its own of `set`; `next` is the next free slot.
+struct Occlusion {
+    set: wgpu::QuerySet,
+    next: u32,
 }
 
 /// Slots of one occlusion query's set: render passes counted while it is active.
-pub(crate) const OCCLUSION_SLOTS: u32 = 4096;
+const OCCLUSION_SLOTS: u32 = 4096;
+
+/// What an ended occlusion query counted: the per-pass counts are copied into `buffer` by
+/// the batch that ended it ([`Frame::any_samples`] reads them).
+pub(crate) struct OcclusionCounts {
+    buffer: wgpu::Buffer,
+    slots: u32,
+}
+
+/// The batch being recorded.
+pub(crate) struct Frame {
+    /// Identifies the batch; bumped at every submit.
+    serial: u64,
+    encoder: Option<wgpu::CommandEncoder>,
+    /// The open render pass; ending it drops its target and state with it.
+    open: Option<OpenPass>,
+    pub(crate) arena: Arena,
+    occlusion: Option<Occlusion>,
+}
 
 impl Frame {
     pub(crate) fn new() -> Self {
         Frame {
             serial: 1,
             encoder: None,
-            pass: None,
-            target: None,
-            pass_state: PassState::default(),
+            open: None,
             arena: Arena::new(),
-            draws: 0,
             occlusion: None,
-            pass_counts: false,
         }
+    }
+
+    /// Identifies the batch being recorded; changes at every submit.
+    pub(crate) fn serial(&self) -> u64 {
+        self.serial
     }
 
     fn encoder(&mut self, gpu: &Gpu) -> &mut wgpu::CommandEncoder {
@@ -221,14 +248,13 @@ impl Frame {
         })
     }
 
-    /// Ends the open render pass, if any.
+    /// Ends the open render pass, if any (and the occlusion query it began).
     pub(crate) fn end_pass(&mut self) {
-        if let (Some(pass), true) = (self.pass.as_mut(), self.pass_counts) {
-            pass.end_occlusion_query();
+        if let Some(mut open) = self.open.take() {
+            if open.counts {
+                open.pass.end_occlusion_query();
+            }
         }
-        self.pass_counts = false;
-        self.pass = None;
-        self.target = None;
     }
 
     /// The encoder, for commands outside a render pass (copies): ends the open pass.
@@ -237,17 +263,31 @@ impl Frame {
         self.encoder(gpu)
     }
 
-    /// The render pass open on `target`, beginning one that loads the attachments if the
-    /// open pass (if any) has another target.
+    /// The render pass open on `target` and the state already set in it, beginning a pass
+    /// that loads the attachments if the open one (if any) has another target.
     pub(crate) fn pass(
         &mut self,
         gpu: &Gpu,
         target: &PassTarget,
-    ) -> &mut wgpu::RenderPass<'static> {
-        if self.target.as_ref() != Some(target) {
+    ) -> (&mut wgpu::RenderPass<'static>, &mut PassState) {
+        if self.open.as_ref().is_none_or(|o| o.target != *target) {
             self.begin(gpu, target, &PassClears::default());
         }
-        self.pass.as_mut().expect("just opened")
+        let open = self.open.as_mut().expect("just opened");
+        (&mut open.pass, &mut open.state)
+    }
+
+    /// [`Frame::pass`] for a draw of essl-gl's own (a clear or a blit through a pipeline),
+    /// which sets its pipeline, viewport, scissor, bind groups and stencil reference itself:
+    /// the state the pass remembers is forgotten, so the next draw sets it all again.
+    pub(crate) fn internal_pass(
+        &mut self,
+        gpu: &Gpu,
+        target: &PassTarget,
+    ) -> &mut wgpu::RenderPass<'static> {
+        let (pass, state) = self.pass(gpu, target);
+        *state = PassState::default();
+        pass
     }
 
     /// Ends the open pass and begins one on `target` that clears what `clears` says (whole
@@ -294,9 +334,9 @@ impl Frame {
             }
         });
         let slot = match &mut self.occlusion {
-            Some((set, next)) if *next < OCCLUSION_SLOTS => {
-                *next += 1;
-                Some((set.clone(), *next - 1))
+            Some(o) if o.next < OCCLUSION_SLOTS => {
+                o.next += 1;
+                Some((o.set.clone(), o.next - 1))
             }
             _ => None,
         };
@@ -312,10 +352,74 @@ impl Frame {
         if let Some((_, index)) = &slot {
             pass.begin_occlusion_query(*index);
         }
-        self.pass = Some(pass.forget_lifetime());
-        self.pass_counts = slot.is_some();
-        self.target = Some(target.clone());
-        self.pass_state = PassState::default();
+        self.open = Some(OpenPass {
+            pass: pass.forget_lifetime(),
+            target: target.clone(),
+            state: PassState::default(),
+            counts: slot.is_some(),
+        });
+    }
+
+    /// Starts counting samples: every render pass from the next one on counts into a slot
+    /// of a new query set.
+    pub(crate) fn begin_occlusion(&mut self, gpu: &Gpu) {
+        self.end_pass();
+        let set = gpu.device.create_query_set(&wgpu::QuerySetDescriptor {
+            label: Some("essl-gl occlusion query"),
+            ty: wgpu::QueryType::Occlusion,
+            count: OCCLUSION_SLOTS,
+        });
+        self.occlusion = Some(Occlusion { set, next: 0 });
+    }
+
+    /// Stops counting samples, and records the copy of the counts into a buffer that
+    /// [`Frame::any_samples`] reads once the batch has run.
+    pub(crate) fn end_occlusion(&mut self, gpu: &Gpu) -> OcclusionCounts {
+        self.end_pass();
+        let occlusion = self.occlusion.take();
+        let slots = occlusion.as_ref().map_or(0, |o| o.next);
+        let size = 8 * slots.max(1) as u64;
+        let buffer = gpu.device.create_buffer(&wgpu::BufferDescriptor {
+            label: Some("essl-gl occlusion result"),
+            size,
+            usage: wgpu::BufferUsages::MAP_READ | wgpu::BufferUsages::COPY_DST,
+            mapped_at_creation: false,
+        });
+        if let (Some(o), true) = (occlusion, slots > 0) {
+            let resolve = gpu.device.create_buffer(&wgpu::BufferDescriptor {
+                label: Some("essl-gl occlusion counts"),
+                size,
+                usage: wgpu::BufferUsages::QUERY_RESOLVE | wgpu::BufferUsages::COPY_SRC,
+                mapped_at_creation: false,
+            });
+            let encoder = self.commands(gpu);
+            encoder.resolve_query_set(&o.set, 0..slots, &resolve, 0);
+            encoder.copy_buffer_to_buffer(&resolve, 0, &buffer, 0, size);
+        }
+        OcclusionCounts { buffer, slots }
+    }
+
+    /// Whether any pass counted a sample: submits the batch if it holds anything (the copy
+    /// of the counts among it) and waits for the GPU.
+    pub(crate) fn any_samples(&mut self, gpu: &Gpu, counts: &OcclusionCounts) -> bool {
+        if counts.slots == 0 {
+            return false;
+        }
+        if !self.is_empty() {
+            self.submit(gpu, |_| {});
+        }
+        let slice = counts.buffer.slice(..8 * counts.slots as u64);
+        let (tx, rx) = std::sync::mpsc::channel();
+        slice.map_async(wgpu::MapMode::Read, move |r| {
+            let _ = tx.send(r);
+        });
+        let _ = gpu.device.poll(wgpu::PollType::wait_indefinitely());
+        let counts_read: Vec<u64> = match (rx.recv(), slice.get_mapped_range()) {
+            (Ok(Ok(())), Ok(view)) => bytemuck::pod_collect_to_vec(&view[..]),
+            _ => Vec::new(),
+        };
+        counts.buffer.unmap();
+        counts_read.iter().any(|&c| c > 0)
     }
 
     /// Submits the batch: the arena is uploaded, `extra` records commands after the batch's
@@ -337,20 +441,5 @@ impl Frame {
     /// Whether anything is waiting to be submitted.
     pub(crate) fn is_empty(&self) -> bool {
         self.encoder.is_none()
-    }
-}
-
-impl Context {
-    /// Submits the recorded commands to the GPU without waiting (`flush`).
-    pub fn flush(&mut self) {
-        if !self.frame.is_empty() {
-            self.frame.submit(&self.gpu, |_| {});
-        }
-    }
-
-    /// Submits the recorded commands and waits until the GPU has executed them (`finish`).
-    pub fn finish(&mut self) {
-        self.flush();
-        let _ = self.gpu.device.poll(wgpu::PollType::wait_indefinitely());
     }
 }

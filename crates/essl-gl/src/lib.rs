@@ -77,6 +77,7 @@ mod error;
 mod extensions;
 mod frame;
 mod framebuffer;
+mod gpu;
 mod native;
 mod objects;
 mod pipeline;
@@ -89,7 +90,6 @@ mod sampler;
 pub mod scene;
 mod shader_patch;
 mod state;
-mod stencil;
 mod sync;
 mod texture;
 mod transform_feedback;
@@ -98,7 +98,7 @@ mod vertex_array;
 
 pub use array::{ArrayElement, ArrayType};
 pub use bytemuck;
-pub use context::{Context, ProgramFilter, MAX_TEXTURE_UNITS, MAX_VERTEX_ATTRIBS};
+pub use context::{Context, MAX_TEXTURE_UNITS, MAX_VERTEX_ATTRIBS};
 pub use error::{error_name, ContextError};
 pub use extensions::Extension;
 pub use framebuffer::{ContextAttributes, COLOR_FORMAT, MAX_COLOR_ATTACHMENTS};
@@ -106,7 +106,7 @@ pub use objects::{
     Buffer, Framebuffer, Program, Query, Renderbuffer, Sampler, Shader, Sync, Texture,
     TransformFeedback, UniformLocation, VertexArray,
 };
-pub use program::ActiveInfo;
+pub use program::{ActiveInfo, ProgramFilter};
 pub use query::{
     Parameter, ShaderPrecisionFormat, SHADING_LANGUAGE_VERSION, SUBPIXEL_BITS, VENDOR, VERSION,
 };

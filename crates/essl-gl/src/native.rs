@@ -7,9 +7,10 @@
 use essl::program::ProgramLayout;
 
 use crate::array::ArrayType;
-use crate::context::{Context, ProgramFilter, MAX_TEXTURE_UNITS};
+use crate::context::{Context, MAX_TEXTURE_UNITS};
 use crate::gl;
 use crate::objects::Program;
+use crate::program::ProgramFilter;
 use crate::readback::ReadRequest;
 
 impl Context {

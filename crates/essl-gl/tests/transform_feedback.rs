@@ -181,3 +181,93 @@ fn misuse_is_invalid_operation() {
     assert!(ctx.get_program_info_log(q).unwrap().contains("v_missing"));
     assert_clean(&ctx);
 }
+
+#[test]
+fn read_pixels_into_a_captured_buffer_keeps_both_writes() {
+    // Transform feedback writes the buffer's GPU copy; `readPixels` into it as a
+    // PIXEL_PACK_BUFFER then changes 4 bytes in the middle. `getBufferSubData` must see the
+    // captured floats around the pixel, and the pixel.
+    let Some(mut ctx) = context(4, 4) else { return };
+    let p = linked(&mut ctx, &["v_pos"], gl::INTERLEAVED_ATTRIBS);
+    ctx.use_program(Some(p));
+    float_attribute(&mut ctx, 0, 2, &[0.0, 0.0, 1.0, 1.0, -1.0, 0.5]);
+    float_attribute(&mut ctx, 1, 2, &[0.1, 0.2, 0.3, 0.4, 0.5, 0.6]);
+    let out = ctx.create_buffer();
+    ctx.bind_buffer(gl::TRANSFORM_FEEDBACK_BUFFER, Some(out));
+    ctx.buffer_data_size(gl::TRANSFORM_FEEDBACK_BUFFER, 3 * 2 * 4, gl::STREAM_READ);
+    ctx.bind_buffer_base(gl::TRANSFORM_FEEDBACK_BUFFER, 0, Some(out));
+    ctx.enable(gl::RASTERIZER_DISCARD);
+    ctx.begin_transform_feedback(gl::POINTS);
+    ctx.draw_arrays(gl::POINTS, 0, 3);
+    ctx.end_transform_feedback();
+    ctx.disable(gl::RASTERIZER_DISCARD);
+    ctx.bind_buffer_base(gl::TRANSFORM_FEEDBACK_BUFFER, 0, None);
+    ctx.bind_buffer(gl::TRANSFORM_FEEDBACK_BUFFER, None);
+
+    ctx.clear_color(1.0, 0.0, 0.0, 1.0);
+    ctx.clear(gl::COLOR_BUFFER_BIT);
+    ctx.bind_buffer(gl::PIXEL_PACK_BUFFER, Some(out));
+    ctx.read_pixels_to_buffer(0, 0, 1, 1, gl::RGBA, gl::UNSIGNED_BYTE, 8);
+    let message = ctx.error_message();
+    assert_eq!(ctx.get_error(), gl::NO_ERROR, "{message:?}");
+
+    let mut got = [0f32; 6];
+    ctx.get_buffer_sub_data(gl::PIXEL_PACK_BUFFER, 0, &mut got);
+    let pixel = got[2].to_ne_bytes();
+    assert_eq!(pixel, [255, 0, 0, 255], "the pixel read into the buffer");
+    let captured = [got[0], got[1], got[3], got[4], got[5]];
+    let want = [0.1, 0.2, 1.4, -0.5, 1.1];
+    for (g, w) in captured.iter().zip(want) {
+        assert!((g - w).abs() < 1e-6, "the captured floats: {got:?}");
+    }
+    assert_clean(&ctx);
+}
+
+const OFFSET_VS: &str = "#version 300 es
+layout(location = 0) in vec2 a_pos;
+layout(location = 1) in vec2 a_off;
+void main() {
+    gl_Position = vec4(a_pos + a_off, 0.0, 1.0);
+    gl_PointSize = 1.0;
+}";
+
+#[test]
+fn a_draw_that_reads_a_captured_buffer_keeps_its_other_buffers_contents() {
+    // The second attribute reads a buffer transform feedback wrote, through a copy made on
+    // the CPU (a divisor above 1): bringing the captured bytes back submits the batch. The
+    // first attribute's buffer, bound before that, then changes for the next draw: the first
+    // draw must still see its old contents.
+    let Some(mut ctx) = context(4, 4) else { return };
+    let p = linked(&mut ctx, &["v_pos"], gl::INTERLEAVED_ATTRIBS);
+    ctx.use_program(Some(p));
+    float_attribute(&mut ctx, 0, 2, &[0.0, 0.0]);
+    float_attribute(&mut ctx, 1, 2, &[0.0, 0.0]);
+    let captured = ctx.create_buffer();
+    ctx.bind_buffer(gl::TRANSFORM_FEEDBACK_BUFFER, Some(captured));
+    ctx.buffer_data_size(gl::TRANSFORM_FEEDBACK_BUFFER, 2 * 4, gl::STREAM_COPY);
+    ctx.bind_buffer_base(gl::TRANSFORM_FEEDBACK_BUFFER, 0, Some(captured));
+    ctx.enable(gl::RASTERIZER_DISCARD);
+    ctx.begin_transform_feedback(gl::POINTS);
+    ctx.draw_arrays(gl::POINTS, 0, 1);
+    ctx.end_transform_feedback();
+    ctx.disable(gl::RASTERIZER_DISCARD);
+    ctx.bind_buffer_base(gl::TRANSFORM_FEEDBACK_BUFFER, 0, None);
+    ctx.bind_buffer(gl::TRANSFORM_FEEDBACK_BUFFER, None);
+
+    let draw = program(&mut ctx, OFFSET_VS, EMPTY_FS);
+    ctx.use_program(Some(draw));
+    clear_black(&mut ctx);
+    let positions = float_attribute(&mut ctx, 0, 2, &[-0.75, -0.75]);
+    ctx.bind_buffer(gl::ARRAY_BUFFER, Some(captured));
+    ctx.vertex_attrib_pointer(1, 2, gl::FLOAT, false, 0, 0);
+    ctx.vertex_attrib_divisor(1, 2);
+    ctx.draw_arrays_instanced(gl::POINTS, 0, 1, 1);
+    ctx.bind_buffer(gl::ARRAY_BUFFER, Some(positions));
+    ctx.buffer_sub_data(gl::ARRAY_BUFFER, 0, &[0.75f32, 0.75]);
+    ctx.draw_arrays_instanced(gl::POINTS, 0, 1, 1);
+    let message = ctx.error_message();
+    assert_eq!(ctx.get_error(), gl::NO_ERROR, "{message:?}");
+    assert_eq!(pixel(&mut ctx, 0, 0), [255; 4], "the first draw's point");
+    assert_eq!(pixel(&mut ctx, 3, 3), [255; 4], "the second draw's point");
+    assert_clean(&ctx);
+}

@@ -373,7 +373,7 @@ impl Context {
             self.caches
                 .pipelines
                 .group0(&self.gpu, Some((alloc.chunk, &alloc.buffer, 64)), &[]);
-        let pass = self.frame.pass(&self.gpu, &target);
+        let pass = self.frame.internal_pass(&self.gpu, &target);
         pass.set_pipeline(&pipeline);
         pass.set_viewport(0.0, 0.0, size[0] as f32, size[1] as f32, 0.0, 1.0);
         pass.set_scissor_rect(x0 as u32, y0 as u32, (x1 - x0) as u32, (y1 - y0) as u32);
@@ -381,13 +381,6 @@ impl Context {
         pass.set_bind_group(1, &group1, &[]);
         pass.set_stencil_reference(reference);
         pass.draw(0..3, 0..1);
-        let ps = &mut self.frame.pass_state;
-        ps.pipeline = None;
-        ps.viewport = None;
-        ps.scissor = None;
-        ps.group0 = None;
-        ps.group1 = None;
-        ps.stencil_reference = None;
     }
 }
 

@@ -358,7 +358,7 @@ impl Context {
                 .pipelines
                 .group0(&self.gpu, Some((alloc.chunk, &alloc.buffer, size)), &[]);
         let (w, h) = (target.size[0] as f32, target.size[1] as f32);
-        let pass = self.frame.pass(&self.gpu, target);
+        let pass = self.frame.internal_pass(&self.gpu, target);
         pass.set_pipeline(&pipeline);
         pass.set_viewport(0.0, 0.0, w, h, 0.0, 1.0);
         pass.set_scissor_rect(rect[0], rect[1], rect[2], rect[3]);
@@ -367,12 +367,6 @@ impl Context {
             pass.set_stencil_reference(s);
         }
         pass.draw(0..3, 0..1);
-        let ps = &mut self.frame.pass_state;
-        ps.pipeline = None;
-        ps.viewport = None;
-        ps.scissor = None;
-        ps.group0 = None;
-        ps.stencil_reference = None;
     }
 
     /// The scissor rectangle in wgpu's coordinates (GL's: rows are stored bottom first),

@@ -5,10 +5,9 @@
 
 use essl::program::InternalUniform;
 
-use super::gather::Feed;
-use super::topology::{emulate, index_size, read_indices, repack, Emulated};
-use super::{DrawCall, Indices, SlotPlan, Source};
-use crate::buffer::DerivedKey;
+use super::topology::{emulate, repack, Emulated};
+use super::{DrawCall, Feed, Indices, SlotPlan, Source};
+use crate::buffer::{index_size, read_indices, DerivedKey};
 use crate::context::Context;
 use crate::framebuffer::sample_view_key;
 use crate::gl;
@@ -47,7 +46,48 @@ pub(super) struct Groups {
     pub(super) slot_bindings: Vec<SlotBinding>,
 }
 
+/// Whether wgpu takes an enabled array as it is (its stride and offset), or it must be
+/// re-packed on the CPU.
+fn binds_directly(a: &VertexAttrib, feed: &Feed) -> bool {
+    let stride = a.effective_stride();
+    let fmt_size = feed.format.size();
+    let rel = a.offset & 3;
+    stride % 4 == 0 && rel % fmt_size.min(4) == 0 && rel + fmt_size <= stride && a.divisor <= 1
+}
+
 impl Context {
+    /// Brings in step, before anything is bound, what could submit the batch while the draw
+    /// is encoded: the CPU copies of the buffers the draw reads on the CPU (re-packed arrays,
+    /// indices), which transform feedback may have written on the GPU, and the GPU copies of
+    /// the textures it samples, whose remade chain may read levels back. A submit between
+    /// two bindings would leave the first in the submitted batch and the draw in the next,
+    /// where a later write could land in place under it.
+    pub(super) fn settle_reads(&mut self, call: &DrawCall) {
+        let (gpu, frame) = (&self.gpu, &mut self.frame);
+        for (_, source) in &call.sources {
+            if let Source::Array {
+                buffer,
+                attrib,
+                feed,
+            } = source
+            {
+                if !binds_directly(attrib, feed) {
+                    let b = self.objects.buffers.get_any_mut(*buffer);
+                    b.expect("attached buffers are alive").cpu_bytes(gpu, frame);
+                }
+            }
+        }
+        if let Indices::Elements { buffer, .. } = call.indices {
+            let b = self.objects.buffers.get_any_mut(buffer);
+            b.expect("bound buffers are alive").cpu_bytes(gpu, frame);
+        }
+        for plan in &call.slot_plans {
+            if let Some((id, c, _)) = plan.texture {
+                self.sync_texture(id, c.base..c.base + c.levels);
+            }
+        }
+    }
+
     /// The vertex buffers and slots of the draw's inputs.
     pub(super) fn bind_vertex_inputs(&mut self, call: &DrawCall) -> VertexInputs {
         let mut out = VertexInputs::default();
@@ -78,15 +118,8 @@ impl Context {
         let stride = a.effective_stride();
         let fmt_size = feed.format.size();
         let rel = a.offset & 3;
-        let direct = stride % 4 == 0
-            && rel % fmt_size.min(4) == 0
-            && rel + fmt_size <= stride
-            && a.divisor <= 1;
-        if !direct {
-            // Re-packing reads the CPU copy.
-            self.buffer_to_cpu(buffer);
-        }
-        let serial = self.frame.serial;
+        let direct = binds_directly(a, feed);
+        let serial = self.frame.serial();
         let gpu = &self.gpu;
         let b = self
             .objects
@@ -117,7 +150,8 @@ impl Context {
                 packed,
                 per_instance: (a.divisor > 1).then_some((a.divisor, instances)),
             };
-            let buffer = b.derived(gpu, key.clone(), |data| repack(data, &key));
+            let frame = &mut self.frame;
+            let buffer = b.derived(gpu, frame, key.clone(), |data| repack(data, &key));
             out.bindings.push((buffer, 0));
             out.slots.push(VertexSlot {
                 stride: packed,
@@ -189,7 +223,7 @@ impl Context {
     /// The index buffer or vertex range of the draw; `None` when an emulated topology
     /// leaves nothing to draw.
     pub(super) fn bind_indices(&mut self, call: &DrawCall) -> Option<DrawRange> {
-        let serial = self.frame.serial;
+        let serial = self.frame.serial();
         let gpu = &self.gpu;
         let count = call.count;
         let mut index: Option<IndexBuffer> = None;
@@ -222,7 +256,7 @@ impl Context {
                 let first = (offset / size) as u32;
                 let (buf, format) = match *ty {
                     gl::UNSIGNED_BYTE => (
-                        b.derived(gpu, DerivedKey::WideIndices, |data| {
+                        b.derived(gpu, &mut self.frame, DerivedKey::WideIndices, |data| {
                             let wide: Vec<u16> = data
                                 .iter()
                                 .map(|&i| if i == 0xFF { 0xFFFF } else { i as u16 })
@@ -240,9 +274,10 @@ impl Context {
                 let b = self
                     .objects
                     .buffers
-                    .get_any(*buffer)
+                    .get_any_mut(*buffer)
                     .expect("bound buffers are alive");
-                let generated = emulate(read_indices(&b.data, *ty, *offset, count as u64), how);
+                let data = b.cpu_bytes(gpu, &mut self.frame);
+                let generated = emulate(read_indices(data, *ty, *offset, count as u64), how);
                 if generated.is_empty() {
                     return None;
                 }
@@ -319,7 +354,7 @@ impl Context {
     /// and puts the block in the arena (once per batch and version): chunk, buffer, offset
     /// and size; `None` for a program without one.
     fn upload_default_block(&mut self, pid: Id) -> Option<(u64, wgpu::Buffer, u32, u64)> {
-        let serial = self.frame.serial;
+        let serial = self.frame.serial();
         let gpu = &self.gpu;
         let height = self.fb.height as f32;
         let linked = self
@@ -344,13 +379,7 @@ impl Context {
             Some((batch, version, chunk, offset))
                 if *batch == serial && *version == linked.uniform_version =>
             {
-                let buffer = self
-                    .frame
-                    .arena
-                    .chunks
-                    .iter()
-                    .find(|c| c.id == *chunk)
-                    .map(|c| c.buffer.clone());
+                let buffer = self.frame.arena.chunk_buffer(*chunk);
                 (
                     *chunk,
                     buffer.expect("chunks live for the batch"),
@@ -377,7 +406,7 @@ impl Context {
     pub(super) fn bind_groups(&mut self, call: &DrawCall) -> Groups {
         let (slot_bindings, resources) = self.bind_textures(&call.slot_plans);
         let default = self.upload_default_block(call.program);
-        let serial = self.frame.serial;
+        let serial = self.frame.serial();
         let gpu = &self.gpu;
         let block_buffers: Vec<(wgpu::Buffer, u64, u64)> = call
             .blocks
@@ -414,7 +443,7 @@ impl Context {
     /// newer ones) and the parameters (first vertex, vertices per instance, each buffer's
     /// first word).
     fn capture_group(&mut self, c: &super::feedback::CaptureDraw) -> wgpu::BindGroup {
-        let serial = self.frame.serial;
+        let serial = self.frame.serial();
         let mut buffers = Vec::new();
         for &id in &c.buffers {
             let b = self
@@ -422,8 +451,7 @@ impl Context {
                 .buffers
                 .get_any_mut(id)
                 .expect("bound buffers are alive");
-            buffers.push(b.gpu_buffer(&self.gpu, serial));
-            b.gpu_newer = true;
+            buffers.push(b.mark_gpu_written(&self.gpu, serial));
         }
         let mut params = [0u32; 8];
         params[0] = c.first;

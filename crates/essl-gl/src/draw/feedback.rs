@@ -3,7 +3,7 @@
 //! what the vertex stage writes where, and the bookkeeping after the draw.
 
 use super::{DrawArgs, Source};
-use crate::bindings::BufferRange;
+use crate::buffer::BufferRange;
 use crate::context::Context;
 use crate::gl;
 use crate::objects::Id;
@@ -90,7 +90,7 @@ impl Context {
                 .objects
                 .buffers
                 .get_any(range.buffer)
-                .map_or(0, |b| b.data.len() as u64);
+                .map_or(0, |b| b.len() as u64);
             let end = range.size.map_or(len, |s| (range.offset + s).min(len));
             let stride = 4 * feedback.stride(b as u32) as u64;
             let start = range.offset + session.written * stride;

@@ -5,8 +5,8 @@
 
 use essl::types::{SamplerDim, ScalarKind, Type};
 
-use super::{SlotPlan, Source};
-use crate::bindings::BufferRange;
+use super::{Feed, SlotPlan, Source};
+use crate::buffer::BufferRange;
 use crate::context::Context;
 use crate::framebuffer::DrawFormats;
 use crate::gl;
@@ -15,16 +15,6 @@ use crate::program::{ShaderInput, ValueKind};
 use crate::shader_patch::Norm32;
 use crate::texture::{view_dimension, SampleKind};
 use crate::vertex_array::{GenericAttrib, VertexAttrib};
-
-/// How a vertex format feeds an attribute.
-#[derive(Clone, Copy, Debug)]
-pub(super) struct Feed {
-    pub(super) format: wgpu::VertexFormat,
-    pub(super) kind: ValueKind,
-    pub(super) count: u8,
-    pub(super) used: u8,
-    pub(super) norm: Option<Norm32>,
-}
 
 /// The wgpu vertex format for an attribute array, and what the shader must still do.
 fn feed_for(a: &VertexAttrib) -> Feed {
@@ -141,7 +131,7 @@ impl Context {
                 .objects
                 .buffers
                 .get_any(buffer)
-                .map_or(0, |b| b.data.len() as u64);
+                .map_or(0, |b| b.len() as u64);
             let size = size.unwrap_or(len.saturating_sub(offset));
             if offset + size > len || size < block.size as u64 {
                 let msg = format!(

@@ -27,12 +27,22 @@ mod validate;
 use crate::context::Context;
 use crate::gl;
 use crate::objects::Id;
-use crate::program::ShaderInput;
+use crate::program::{ShaderInput, ValueKind};
+use crate::shader_patch::Norm32;
 use crate::texture::{Complete, SampleKind};
 use crate::vertex_array::{GenericAttrib, VertexAttrib};
 
-use gather::Feed;
 use topology::Emulated;
+
+/// How a vertex format feeds an attribute.
+#[derive(Clone, Copy, Debug)]
+pub(super) struct Feed {
+    pub(super) format: wgpu::VertexFormat,
+    pub(super) kind: ValueKind,
+    pub(super) count: u8,
+    pub(super) used: u8,
+    pub(super) norm: Option<Norm32>,
+}
 
 /// Where one shader input's values come from.
 enum Source {

@@ -9,7 +9,7 @@ use crate::frame::PassTarget;
 use crate::gl;
 use crate::pipeline::{CachedPipeline, PipelineKey, VertexSlot};
 use crate::shader_patch::InputPatch;
-use crate::texture::compare_function;
+use crate::state::compare_function;
 
 /// The wgpu blend factor for a GL one.
 fn blend_factor(f: u32) -> wgpu::BlendFactor {
@@ -93,18 +93,26 @@ struct KeyParts<'a> {
 impl Context {
     /// Encodes a checked draw and records it into the open render pass.
     pub(super) fn encode_draw(&mut self, call: DrawCall) {
-        let vertex = self.bind_vertex_inputs(&call);
-        let Some(range) = self.bind_indices(&call) else {
-            return;
-        };
-        let groups = self.bind_groups(&call);
-        // Last: uploads for the textures sampled end the pass; the target's pass begins
-        // after them.
+        // First what may submit the batch (buffers read back, textures and attachments
+        // remade): the bindings that follow all belong to the batch the draw is recorded in.
+        // The pass on the target begins at the recording, after the texture uploads.
+        self.settle_reads(&call);
         let target = if call.rasterize {
             self.draw_target()
         } else {
             self.discard_target()
         };
+        let serial = self.frame.serial();
+        let vertex = self.bind_vertex_inputs(&call);
+        let Some(range) = self.bind_indices(&call) else {
+            return;
+        };
+        let groups = self.bind_groups(&call);
+        debug_assert_eq!(
+            serial,
+            self.frame.serial(),
+            "a draw's bindings span batches"
+        );
         let parts = KeyParts {
             slots: vertex.slots,
             patches: vertex.patches,
@@ -315,10 +323,7 @@ impl Context {
         } else {
             [0, 0, 1, 1]
         };
-        self.frame.pass(&self.gpu, target);
-        let frame = &mut self.frame;
-        let pass = frame.pass.as_mut().expect("opened above");
-        let ps = &mut frame.pass_state;
+        let (pass, ps) = self.frame.pass(&self.gpu, target);
         if ps.pipeline != Some(pipeline.id) {
             pass.set_pipeline(&pipeline.pipeline);
             ps.pipeline = Some(pipeline.id);
@@ -384,7 +389,6 @@ impl Context {
             }
             None => pass.draw(range.vertices, 0..instances),
         }
-        frame.draws += 1;
     }
 }
 

@@ -3,7 +3,6 @@
 //! attribute arrays at strides or offsets wgpu rejects are re-packed.
 
 use crate::buffer::DerivedKey;
-use crate::gl;
 
 /// A topology wgpu lacks, drawn as another one with generated indices.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -17,48 +16,6 @@ pub(super) enum Emulated {
     /// Vulkan restarts only strips, so the restarts are applied to the indices, dropping
     /// incomplete primitives as GL does.
     List(usize),
-}
-
-/// The size in bytes of an index of type `ty`, or `None` for a type that is not one.
-pub(super) fn index_size(ty: u32) -> Option<u64> {
-    match ty {
-        gl::UNSIGNED_BYTE => Some(1),
-        gl::UNSIGNED_SHORT => Some(2),
-        gl::UNSIGNED_INT => Some(4),
-        _ => None,
-    }
-}
-
-/// Index `i` of `count` indices of type `ty` at `offset`, as `u32` (`u32::MAX` for the
-/// primitive restart index, which WebGL2 always enables).
-pub(super) fn read_indices(
-    data: &[u8],
-    ty: u32,
-    offset: u64,
-    count: u64,
-) -> impl Iterator<Item = u32> + '_ {
-    let size = index_size(ty).unwrap_or(4) as usize;
-    let start = offset as usize;
-    data[start..start + count as usize * size]
-        .chunks_exact(size)
-        .map(move |c| match size {
-            1 => {
-                if c[0] == 0xFF {
-                    u32::MAX
-                } else {
-                    c[0] as u32
-                }
-            }
-            2 => {
-                let v = u16::from_ne_bytes([c[0], c[1]]);
-                if v == 0xFFFF {
-                    u32::MAX
-                } else {
-                    v as u32
-                }
-            }
-            _ => u32::from_ne_bytes([c[0], c[1], c[2], c[3]]),
-        })
 }
 
 /// Generated indices for an emulated topology over `indices` (restart splits primitives).

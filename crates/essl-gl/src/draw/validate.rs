@@ -2,8 +2,9 @@
 //! draw which passes them becomes. What the program reads is collected (and checked) by
 //! [`super::gather`].
 
-use super::topology::{index_size, read_indices, Emulated};
+use super::topology::Emulated;
 use super::{DrawArgs, DrawCall, Indices, Source};
+use crate::buffer::index_size;
 use crate::context::Context;
 use crate::gl;
 use crate::program::ShaderInput;
@@ -194,36 +195,20 @@ impl Context {
             }
             Indices::Elements { buffer, ty, offset } => (*buffer, *ty, *offset),
         };
-        let size = index_size(ty).expect("checked");
         let b = self
             .objects
             .buffers
             .get_any_mut(buffer)
             .expect("bound buffers are alive");
-        if offset + count as u64 * size > b.data.len() as u64 {
+        let Some(range) = b.index_range(&self.gpu, &mut self.frame, ty, offset, count as u64)
+        else {
             return self.fail(
                 gl::INVALID_OPERATION,
                 f,
                 "indices past the end of the element buffer",
             );
-        }
-        let key = (ty, offset, count as u64, b.version);
-        let (max, restarts) = match b.max_index_cache {
-            Some((k, m, r)) if k == key => (m, r),
-            _ => {
-                let (mut max, mut restarts) = (None, false);
-                for i in read_indices(&b.data, ty, offset, count as u64) {
-                    if i == u32::MAX {
-                        restarts = true;
-                    } else {
-                        max = max.max(Some(i));
-                    }
-                }
-                b.max_index_cache = Some((key, max, restarts));
-                (max, restarts)
-            }
         };
-        Some((max.map(u64::from), restarts))
+        Some((range.max.map(u64::from), range.restarts))
     }
 
     /// Checks that no enabled array is read past the end of its buffer, up to vertex
@@ -253,7 +238,6 @@ impl Context {
                 .buffers
                 .get_any(*buffer)
                 .expect("attached buffers are alive")
-                .data
                 .len() as u64;
             if a.offset + last * a.effective_stride() + a.element_size() > len {
                 let msg = format!(

@@ -141,7 +141,7 @@ impl Objects {
         &mut self,
         tf: Option<Id>,
         index: usize,
-        range: Option<crate::bindings::BufferRange>,
+        range: Option<crate::buffer::BufferRange>,
     ) {
         let mut slot = self.feedback(tf).buffers[index].map(|r| r.buffer);
         self.buffers.retarget(&mut slot, range.map(|r| r.buffer));

@@ -9,7 +9,7 @@
 //! alone.
 
 use super::{create_module, PipelineCache};
-use crate::context::Gpu;
+use crate::gpu::Gpu;
 use crate::pipeline::ClearKind;
 
 /// How a source image is read.

@@ -4,7 +4,7 @@
 //! reference value.
 
 use super::{create_module, PipelineCache};
-use crate::context::Gpu;
+use crate::gpu::Gpu;
 
 /// What a clear value is: what the attachment's format takes.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]

@@ -12,7 +12,7 @@ pub(crate) use clear::{ClearKey, ClearKind};
 use std::borrow::Cow;
 use std::collections::HashMap;
 
-use crate::context::Gpu;
+use crate::gpu::Gpu;
 use crate::program::LinkedProgram;
 use crate::shader_patch::{capture_outputs, wrap_entry_point, CaptureSpec, InputPatch};
 use crate::texture::SampleKind;

@@ -5,7 +5,7 @@
 use essl::program::UniformStorage;
 use essl::types::GlType;
 
-use super::uniform::uniform_shape;
+use super::interface::uniform_shape;
 use crate::context::Context;
 use crate::gl;
 use crate::objects::{Program, UniformLocation};

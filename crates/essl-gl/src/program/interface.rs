@@ -1,7 +1,38 @@
-//! What a lowered module reads and writes: its vertex inputs, its first fragment output,
-//! and the kinds and shapes of their types.
+//! A program's interface: what a lowered module reads and writes (its vertex inputs, its
+//! first fragment output, the kinds and shapes of their types), and its uniforms as WebGL
+//! names them.
 
-use super::{ShaderInput, ValueKind};
+use essl::program::{ProgramLayout, UniformStorage};
+use essl::types::GlType;
+
+/// The scalar kind of a shader input or output.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub(crate) enum ValueKind {
+    Float,
+    Sint,
+    Uint,
+}
+
+/// A vertex shader input, read from the naga module's entry point.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub(crate) struct ShaderInput {
+    pub(crate) location: u32,
+    pub(crate) kind: ValueKind,
+    pub(crate) components: u8,
+}
+
+/// What `get_active_attrib`, `get_active_uniform` and `get_transform_feedback_varying`
+/// return (`WebGLActiveInfo`): the name as WebGL enumerates it, the array size (1 for a
+/// non-array) and the type enum (`FLOAT_VEC3`, `SAMPLER_2D`, …).
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct ActiveInfo {
+    /// The name (`u_lights[0].color`, `u_weights[0]`).
+    pub name: String,
+    /// Elements of an array, else 1.
+    pub size: u32,
+    /// The type, as a GL enum.
+    pub ty: u32,
+}
 
 pub(super) fn value_kind(scalar: naga::Scalar) -> Option<ValueKind> {
     match scalar.kind {
@@ -71,4 +102,61 @@ pub(super) fn outputs(module: &naga::Module) -> Vec<(u32, ValueKind)> {
         }
     }
     out
+}
+
+/// Components and matrix shape of a uniform type.
+pub(crate) fn uniform_shape(ty: GlType) -> (u8, Option<(u8, u8)>, bool) {
+    use GlType::*;
+    match ty {
+        FLOAT | INT | UNSIGNED_INT => (1, None, false),
+        BOOL => (1, None, true),
+        FLOAT_VEC2 | INT_VEC2 | UNSIGNED_INT_VEC2 => (2, None, false),
+        BOOL_VEC2 => (2, None, true),
+        FLOAT_VEC3 | INT_VEC3 | UNSIGNED_INT_VEC3 => (3, None, false),
+        BOOL_VEC3 => (3, None, true),
+        FLOAT_VEC4 | INT_VEC4 | UNSIGNED_INT_VEC4 => (4, None, false),
+        BOOL_VEC4 => (4, None, true),
+        FLOAT_MAT2 => (4, Some((2, 2)), false),
+        FLOAT_MAT3 => (9, Some((3, 3)), false),
+        FLOAT_MAT4 => (16, Some((4, 4)), false),
+        FLOAT_MAT2x3 => (6, Some((2, 3)), false),
+        FLOAT_MAT2x4 => (8, Some((2, 4)), false),
+        FLOAT_MAT3x2 => (6, Some((3, 2)), false),
+        FLOAT_MAT3x4 => (12, Some((3, 4)), false),
+        FLOAT_MAT4x2 => (8, Some((4, 2)), false),
+        FLOAT_MAT4x3 => (12, Some((4, 3)), false),
+        _ => (1, None, false),
+    }
+}
+
+/// The active uniform (its index) and the array element that WebGL's `name` designates
+/// (`"u_color"`, `"u_lights[2].position"`, `"u_weights[3]"`); members of uniform blocks have
+/// none.
+pub(crate) fn find_uniform(layout: &ProgramLayout, name: &str) -> Option<(usize, u32)> {
+    for (i, u) in layout.uniforms.iter().enumerate() {
+        // Members of uniform blocks have no location in WebGL.
+        if matches!(u.storage, UniformStorage::Block { .. }) {
+            continue;
+        }
+        let element = if u.name == name {
+            Some(0)
+        } else if let Some(base) = u.name.strip_suffix("[0]") {
+            if name == base {
+                Some(0)
+            } else {
+                name.strip_prefix(base)
+                    .and_then(|rest| rest.strip_prefix('['))
+                    .and_then(|rest| rest.strip_suffix(']'))
+                    .filter(|k| !k.is_empty() && k.bytes().all(|b| b.is_ascii_digit()))
+                    .and_then(|k| k.parse::<u32>().ok())
+                    .filter(|&k| k < u.size)
+            }
+        } else {
+            None
+        };
+        if let Some(element) = element {
+            return Some((i, element));
+        }
+    }
+    None
 }

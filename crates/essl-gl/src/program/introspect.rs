@@ -1,7 +1,7 @@
 //! What a linked program offers: uniform and attribute locations, uniform blocks and their
 //! binding points, active attributes and uniforms.
 
-use super::uniform::find_uniform;
+use super::interface::find_uniform;
 use super::ActiveInfo;
 use crate::context::Context;
 use crate::gl;

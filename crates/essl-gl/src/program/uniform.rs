@@ -1,9 +1,10 @@
 //! A linked program's default-block uniform storage: the `uniform*` calls with WebGL's type
 //! checks, and the low-level setters that write words at byte offsets.
 
-use essl::program::{ProgramLayout, UniformStorage};
+use essl::program::UniformStorage;
 use essl::types::GlType;
 
+use super::interface::uniform_shape;
 use crate::context::{Context, MAX_TEXTURE_UNITS};
 use crate::gl;
 use crate::objects::UniformLocation;
@@ -47,31 +48,6 @@ impl Values<'_> {
     }
 }
 
-/// Components and matrix shape of a uniform type.
-pub(crate) fn uniform_shape(ty: GlType) -> (u8, Option<(u8, u8)>, bool) {
-    use GlType::*;
-    match ty {
-        FLOAT | INT | UNSIGNED_INT => (1, None, false),
-        BOOL => (1, None, true),
-        FLOAT_VEC2 | INT_VEC2 | UNSIGNED_INT_VEC2 => (2, None, false),
-        BOOL_VEC2 => (2, None, true),
-        FLOAT_VEC3 | INT_VEC3 | UNSIGNED_INT_VEC3 => (3, None, false),
-        BOOL_VEC3 => (3, None, true),
-        FLOAT_VEC4 | INT_VEC4 | UNSIGNED_INT_VEC4 => (4, None, false),
-        BOOL_VEC4 => (4, None, true),
-        FLOAT_MAT2 => (4, Some((2, 2)), false),
-        FLOAT_MAT3 => (9, Some((3, 3)), false),
-        FLOAT_MAT4 => (16, Some((4, 4)), false),
-        FLOAT_MAT2x3 => (6, Some((2, 3)), false),
-        FLOAT_MAT2x4 => (8, Some((2, 4)), false),
-        FLOAT_MAT3x2 => (6, Some((3, 2)), false),
-        FLOAT_MAT3x4 => (12, Some((3, 4)), false),
-        FLOAT_MAT4x2 => (8, Some((4, 2)), false),
-        FLOAT_MAT4x3 => (12, Some((4, 3)), false),
-        _ => (1, None, false),
-    }
-}
-
 /// Whether a `uniform*` call may set a uniform of type `ty` (WebGL's type rules).
 pub(super) fn call_matches(call: Call, ty: GlType) -> bool {
     use GlType::*;
@@ -95,40 +71,6 @@ pub(super) fn call_matches(call: Call, ty: GlType) -> bool {
         }
     }
 }
-
-/// The active uniform (its index) and the array element that WebGL's `name` designates
-/// (`"u_color"`, `"u_lights[2].position"`, `"u_weights[3]"`); members of uniform blocks have
-/// none.
-pub(crate) fn find_uniform(layout: &ProgramLayout, name: &str) -> Option<(usize, u32)> {
-    for (i, u) in layout.uniforms.iter().enumerate() {
-        // Members of uniform blocks have no location in WebGL.
-        if matches!(u.storage, UniformStorage::Block { .. }) {
-            continue;
-        }
-        let element = if u.name == name {
-            Some(0)
-        } else if let Some(base) = u.name.strip_suffix("[0]") {
-            if name == base {
-                Some(0)
-            } else {
-                name.strip_prefix(base)
-                    .and_then(|rest| rest.strip_prefix('['))
-                    .and_then(|rest| rest.strip_suffix(']'))
-                    .filter(|k| !k.is_empty() && k.bytes().all(|b| b.is_ascii_digit()))
-                    .and_then(|k| k.parse::<u32>().ok())
-                    .filter(|&k| k < u.size)
-            }
-        } else {
-            None
-        };
-        if let Some(element) = element {
-            return Some((i, element));
-        }
-    }
-    None
-}
-
-impl Context {}
 
 impl Context {
     /// Stores the values of a `uniform*` call, with WebGL's checks.

@@ -32,8 +32,8 @@ impl Context {
         let id = self.bound_buffer(target, F)?;
         let b = self.objects.buffers.get_any(id)?;
         Some(match pname {
-            gl::BUFFER_SIZE => Parameter::Int(b.data.len() as i64),
-            _ => Parameter::Enum(b.usage),
+            gl::BUFFER_SIZE => Parameter::Int(b.len() as i64),
+            _ => Parameter::Enum(b.usage()),
         })
     }
 

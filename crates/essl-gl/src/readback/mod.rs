@@ -107,9 +107,11 @@ impl Context {
         if offset < 0 {
             return self.error(gl::INVALID_VALUE, F, "negative offset");
         }
-        let mut data =
-            std::mem::take(&mut self.objects.buffers.get_any_mut(id).expect("bound").data);
-        let start = (offset as usize).min(data.len());
+        // The bytes from `offset` on, up to date, which the pixels are written over.
+        let b = self.objects.buffers.get_any_mut(id).expect("bound");
+        let bytes = b.cpu_bytes(&self.gpu, &mut self.frame);
+        let start = (offset as usize).min(bytes.len());
+        let mut data = bytes[start..].to_vec();
         let request = ReadRequest {
             x,
             y,
@@ -119,11 +121,14 @@ impl Context {
             ty,
             array: None,
         };
-        let written = self.read_into(&request, &mut data[start..], F);
-        let b = self.objects.buffers.get_any_mut(id).expect("bound");
-        b.data = data;
-        if let Some(range) = written {
-            b.mark_dirty(start + range.start..start + range.end);
+        if let Some(range) = self.read_into(&request, &mut data, F) {
+            let b = self.objects.buffers.get_any_mut(id).expect("bound");
+            b.write(
+                &self.gpu,
+                &mut self.frame,
+                start + range.start,
+                &data[range],
+            );
         }
     }
 

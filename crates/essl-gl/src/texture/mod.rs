@@ -7,14 +7,17 @@
 //! completeness uses. Data row 0 is texture row 0 (`t = 0`), as in GL, with no flip.
 //!
 //! The module is split by concern: [`format`] (internal formats), [`pixels`] (client pixel
-//! layout and conversion), [`object`] (level images, parameters, completeness, the GPU
-//! texture), [`sampling`] (units, samplers, placeholders), and the GL methods: [`upload`]
-//! (`tex_image_*`, `tex_sub_image_*`), [`storage`] (`tex_storage_*`), [`params`]
-//! (`tex_parameter*`) and [`mipmap`] (`generate_mipmap`). Those add methods to [`Context`]:
-//! its `impl` is spread over these files on purpose, one file per group of GL calls.
+//! layout and conversion), [`object`] (level images, parameters, completeness), [`gpu`] (the
+//! GPU texture, its views, uploads), [`sampling`] (samplers, placeholders), and the GL
+//! methods: [`upload`] (`tex_image_*`, `tex_sub_image_*`), [`unpack_buffer`] (the same from
+//! a `PIXEL_UNPACK_BUFFER`), [`storage`] (`tex_storage_*`), [`params`] (`tex_parameter*`),
+//! [`mipmap`] (`generate_mipmap`) and [`gpu_sync`] (the GPU copy brought up to date for a
+//! use). Those add methods to [`Context`]: its `impl` is spread over these files on purpose,
+//! one file per group of GL calls.
 
 mod format;
 mod gpu;
+mod gpu_sync;
 mod mipmap;
 mod object;
 mod params;

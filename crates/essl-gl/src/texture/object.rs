@@ -5,6 +5,7 @@ use super::format::InternalFormat;
 use super::sampling::SamplerKey;
 use crate::gl;
 use crate::sampler::SamplerParams;
+use crate::state::compare_function;
 
 /// One level image (of one cube face).
 #[derive(Clone, Debug)]
@@ -273,20 +274,6 @@ impl TextureObject {
             lod_max: lod_max.to_bits(),
             compare: comparison.then(|| compare_function(p.compare_func)),
         }
-    }
-}
-
-/// wgpu's comparison function for a GL one.
-pub(crate) fn compare_function(func: u32) -> wgpu::CompareFunction {
-    match func {
-        gl::NEVER => wgpu::CompareFunction::Never,
-        gl::LESS => wgpu::CompareFunction::Less,
-        gl::EQUAL => wgpu::CompareFunction::Equal,
-        gl::LEQUAL => wgpu::CompareFunction::LessEqual,
-        gl::GREATER => wgpu::CompareFunction::Greater,
-        gl::NOTEQUAL => wgpu::CompareFunction::NotEqual,
-        gl::GEQUAL => wgpu::CompareFunction::GreaterEqual,
-        _ => wgpu::CompareFunction::Always,
     }
 }
 

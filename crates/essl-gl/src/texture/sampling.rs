@@ -1,55 +1,10 @@
-//! What draws bind for textures: the texture units, wgpu samplers cached by parameters,
-//! and the placeholder textures an incomplete or missing texture reads.
+//! What draws bind for textures: wgpu samplers cached by parameters, and the placeholder
+//! textures an incomplete or missing texture reads.
 
 use std::collections::HashMap;
 
 use super::format::SampleKind;
-use crate::context::Gpu;
-use crate::gl;
-use crate::objects::Id;
-
-/// The textures bound to one texture unit, one per target.
-#[derive(Clone, Debug, Default)]
-pub(crate) struct TextureUnit {
-    pub(crate) d2: Option<Id>,
-    pub(crate) cube: Option<Id>,
-    pub(crate) d3: Option<Id>,
-    pub(crate) d2_array: Option<Id>,
-}
-
-impl TextureUnit {
-    pub(crate) fn get(&self, target: u32) -> Option<Id> {
-        match target {
-            gl::TEXTURE_2D => self.d2,
-            gl::TEXTURE_CUBE_MAP => self.cube,
-            gl::TEXTURE_3D => self.d3,
-            _ => self.d2_array,
-        }
-    }
-
-    pub(crate) fn slot(&mut self, target: u32) -> &mut Option<Id> {
-        match target {
-            gl::TEXTURE_2D => &mut self.d2,
-            gl::TEXTURE_CUBE_MAP => &mut self.cube,
-            gl::TEXTURE_3D => &mut self.d3,
-            _ => &mut self.d2_array,
-        }
-    }
-
-    /// Unbinds `id` from every target of the unit.
-    pub(crate) fn forget(&mut self, id: Id) {
-        for slot in [
-            &mut self.d2,
-            &mut self.cube,
-            &mut self.d3,
-            &mut self.d2_array,
-        ] {
-            if *slot == Some(id) {
-                *slot = None;
-            }
-        }
-    }
-}
+use crate::gpu::Gpu;
 
 /// A sampler's parameters, as a hashable key.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]

@@ -23,8 +23,8 @@ impl Context {
             self.error(gl::INVALID_VALUE, function, "negative offset");
             return None;
         }
-        self.buffer_to_cpu(id);
-        let data = &self.objects.buffers.get_any(id)?.data;
+        let b = self.objects.buffers.get_any_mut(id)?;
+        let data = b.cpu_bytes(&self.gpu, &mut self.frame);
         Some(data.get(offset as usize..).unwrap_or_default().to_vec())
     }
 

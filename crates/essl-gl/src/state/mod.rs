@@ -1,140 +1,14 @@
 //! Fixed-function state: viewport, scissor, clear values, depth, culling, blending, masks,
-//! and pixel storage (`pixel_storei`).
+//! and pixel storage (`pixel_storei`). The values live in [`values`]; this file and
+//! [`stencil`] hold the calls that check and set them.
+
+mod stencil;
+mod values;
+
+pub(crate) use values::{compare_function, is_compare_func, PixelStore, RenderState};
 
 use crate::context::Context;
 use crate::gl;
-use crate::vertex_array::GenericAttrib;
-
-/// The fixed-function state of a context, with GL's initial values.
-#[derive(Clone, Debug)]
-pub(crate) struct RenderState {
-    pub(crate) viewport: [i32; 4],
-    pub(crate) scissor: [i32; 4],
-    pub(crate) scissor_test: bool,
-    pub(crate) clear_color: [f32; 4],
-    pub(crate) clear_depth: f32,
-    pub(crate) clear_stencil: i32,
-    pub(crate) depth_test: bool,
-    pub(crate) depth_func: u32,
-    pub(crate) depth_mask: bool,
-    pub(crate) depth_range: [f32; 2],
-    pub(crate) cull_face: bool,
-    pub(crate) cull_face_mode: u32,
-    pub(crate) front_face: u32,
-    pub(crate) blend: bool,
-    pub(crate) blend_src_rgb: u32,
-    pub(crate) blend_dst_rgb: u32,
-    pub(crate) blend_src_alpha: u32,
-    pub(crate) blend_dst_alpha: u32,
-    pub(crate) blend_equation_rgb: u32,
-    pub(crate) blend_equation_alpha: u32,
-    pub(crate) blend_color: [f32; 4],
-    pub(crate) color_mask: [bool; 4],
-    pub(crate) polygon_offset_fill: bool,
-    pub(crate) polygon_offset_factor: f32,
-    pub(crate) polygon_offset_units: f32,
-    pub(crate) rasterizer_discard: bool,
-    pub(crate) dither: bool,
-    pub(crate) stencil_test: bool,
-    pub(crate) stencil: crate::stencil::StencilState,
-    pub(crate) sample_alpha_to_coverage: bool,
-    pub(crate) sample_coverage: bool,
-    /// `sampleCoverage`'s value and invert flag.
-    pub(crate) sample_coverage_value: (f32, bool),
-    /// `hint(GENERATE_MIPMAP_HINT)` and `hint(FRAGMENT_SHADER_DERIVATIVE_HINT)`.
-    pub(crate) hints: [u32; 2],
-    pub(crate) line_width: f32,
-    /// The current value of each vertex attribute (`vertexAttrib4f`…), read by a draw where
-    /// the attribute's array is disabled.
-    pub(crate) generic_attribs: Vec<GenericAttrib>,
-}
-
-impl RenderState {
-    /// GL's initial state for a `width` × `height` framebuffer and `attribs` vertex
-    /// attributes.
-    pub(crate) fn new(width: u32, height: u32, attribs: u32) -> Self {
-        RenderState {
-            viewport: [0, 0, width as i32, height as i32],
-            scissor: [0, 0, width as i32, height as i32],
-            scissor_test: false,
-            clear_color: [0.0; 4],
-            clear_depth: 1.0,
-            clear_stencil: 0,
-            depth_test: false,
-            depth_func: gl::LESS,
-            depth_mask: true,
-            depth_range: [0.0, 1.0],
-            cull_face: false,
-            cull_face_mode: gl::BACK,
-            front_face: gl::CCW,
-            blend: false,
-            blend_src_rgb: gl::ONE,
-            blend_dst_rgb: gl::ZERO,
-            blend_src_alpha: gl::ONE,
-            blend_dst_alpha: gl::ZERO,
-            blend_equation_rgb: gl::FUNC_ADD,
-            blend_equation_alpha: gl::FUNC_ADD,
-            blend_color: [0.0; 4],
-            color_mask: [true; 4],
-            polygon_offset_fill: false,
-            polygon_offset_factor: 0.0,
-            polygon_offset_units: 0.0,
-            rasterizer_discard: false,
-            dither: true,
-            stencil_test: false,
-            stencil: Default::default(),
-            sample_alpha_to_coverage: false,
-            sample_coverage: false,
-            sample_coverage_value: (1.0, false),
-            hints: [gl::DONT_CARE; 2],
-            line_width: 1.0,
-            generic_attribs: vec![GenericAttrib::default(); attribs as usize],
-        }
-    }
-}
-
-/// Pixel storage parameters (`pixel_storei`).
-#[derive(Clone, Debug)]
-pub(crate) struct PixelStore {
-    pub(crate) unpack_alignment: u32,
-    pub(crate) pack_alignment: u32,
-    pub(crate) unpack_row_length: u32,
-    pub(crate) unpack_skip_rows: u32,
-    pub(crate) unpack_skip_pixels: u32,
-    pub(crate) unpack_image_height: u32,
-    pub(crate) unpack_skip_images: u32,
-    pub(crate) pack_row_length: u32,
-    pub(crate) pack_skip_rows: u32,
-    pub(crate) pack_skip_pixels: u32,
-    pub(crate) unpack_flip_y: bool,
-    pub(crate) unpack_premultiply_alpha: bool,
-    pub(crate) unpack_colorspace_conversion: u32,
-}
-
-impl Default for PixelStore {
-    fn default() -> Self {
-        PixelStore {
-            unpack_alignment: 4,
-            pack_alignment: 4,
-            unpack_row_length: 0,
-            unpack_skip_rows: 0,
-            unpack_skip_pixels: 0,
-            unpack_image_height: 0,
-            unpack_skip_images: 0,
-            pack_row_length: 0,
-            pack_skip_rows: 0,
-            pack_skip_pixels: 0,
-            unpack_flip_y: false,
-            unpack_premultiply_alpha: false,
-            unpack_colorspace_conversion: gl::BROWSER_DEFAULT_WEBGL,
-        }
-    }
-}
-
-/// Whether `func` is one of GL's eight comparison functions.
-pub(crate) fn is_compare_func(func: u32) -> bool {
-    (gl::NEVER..=gl::ALWAYS).contains(&func)
-}
 
 fn is_blend_factor(f: u32) -> bool {
     matches!(

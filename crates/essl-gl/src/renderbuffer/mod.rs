@@ -3,34 +3,19 @@
 //!
 //! A renderbuffer's storage is a wgpu texture that can only be drawn into and copied (a
 //! multisampled one is resolved by `blit_framebuffer`). wgpu zero-fills new textures, which
-//! is WebGL's rule for new storage.
+//! is WebGL's rule for new storage. The object's state is [`object`]'s; this file adds the
+//! calls.
 
-use crate::context::{Context, Gpu};
+mod object;
+
+pub(crate) use object::{RenderbufferObject, RenderbufferStorage};
+
+use crate::context::Context;
 use crate::gl;
+use crate::gpu::Gpu;
 use crate::objects::{Id, Renderbuffer};
 use crate::query::Parameter;
 use crate::texture::{internal_format, InternalFormat};
-
-/// A renderbuffer's storage.
-pub(crate) struct RenderbufferStorage {
-    pub(crate) format: InternalFormat,
-    /// The internal format as asked (`RENDERBUFFER_INTERNAL_FORMAT`: WebGL's
-    /// `DEPTH_STENCIL` stays `DEPTH_STENCIL`, as Chromium answers).
-    pub(crate) asked: u32,
-    pub(crate) width: u32,
-    pub(crate) height: u32,
-    /// `RENDERBUFFER_SAMPLES`: 0 for single-sampled storage.
-    pub(crate) samples: u32,
-    /// The GPU texture and a view of it; `None` for a zero-sized renderbuffer.
-    pub(crate) gpu: Option<(wgpu::Texture, wgpu::TextureView)>,
-}
-
-/// A renderbuffer object.
-#[derive(Default)]
-pub(crate) struct RenderbufferObject {
-    pub(crate) bound_once: bool,
-    pub(crate) storage: Option<RenderbufferStorage>,
-}
 
 /// The internal formats a renderbuffer may have (ES 3.0 table 3.13 and WebGL's
 /// `DEPTH_STENCIL`), with the float formats when `EXT_color_buffer_float` is on.

@@ -2,45 +2,21 @@
 //! indexed `TRANSFORM_FEEDBACK_BUFFER` bindings, `begin_transform_feedback`,
 //! `end_transform_feedback`, `pause_transform_feedback`, `resume_transform_feedback`.
 //!
-//! An object holds its buffer bindings and the session begun on it: the primitive mode, the
+//! An object ([`object`]) holds its buffer bindings and the session begun on it: the
+//! primitive mode, the
 //! program, whether it is paused, and how many vertices it has written. The draws of an
 //! active session write their vertices' captured varyings after those already written
 //! ([`crate::shader_patch::capture_outputs`]).
 
-use crate::bindings::BufferRange;
+mod object;
+
+pub(crate) use object::{vertices_per_primitive, Session, TransformFeedbackObject};
+
+use crate::buffer::BufferRange;
 use crate::context::Context;
 use crate::gl;
-use crate::objects::{Id, TransformFeedback};
+use crate::objects::TransformFeedback;
 use crate::program::feedback_max_buffers;
-
-/// A transform feedback session (between begin and end).
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub(crate) struct Session {
-    /// `POINTS`, `LINES` or `TRIANGLES`.
-    pub(crate) mode: u32,
-    pub(crate) program: Id,
-    pub(crate) paused: bool,
-    /// Vertices written since begin.
-    pub(crate) written: u64,
-}
-
-/// A transform feedback object.
-#[derive(Clone, Debug, Default)]
-pub(crate) struct TransformFeedbackObject {
-    pub(crate) bound_once: bool,
-    /// The indexed `TRANSFORM_FEEDBACK_BUFFER` bindings.
-    pub(crate) buffers: [Option<BufferRange>; 4],
-    pub(crate) session: Option<Session>,
-}
-
-/// Vertices per primitive of a transform feedback primitive mode.
-pub(crate) fn vertices_per_primitive(mode: u32) -> u64 {
-    match mode {
-        gl::LINES => 2,
-        gl::TRIANGLES => 3,
-        _ => 1,
-    }
-}
 
 impl Context {
     /// The bound transform feedback object (the default one for `None`).

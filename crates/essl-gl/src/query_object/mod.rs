@@ -2,40 +2,24 @@
 //! `get_query_parameter`, `delete_query`, `is_query`.
 //!
 //! `ANY_SAMPLES_PASSED` and `ANY_SAMPLES_PASSED_CONSERVATIVE` count samples with wgpu's
-//! occlusion queries: each render pass recorded while the query is active counts into a slot
-//! of its own, and the result is whether any slot counted a sample.
+//! occlusion queries, which the batch runs
+//! ([`Frame::begin_occlusion`](crate::frame::Frame::begin_occlusion)): each render pass
+//! recorded while the query is active counts into a slot of its own, and the result is
+//! whether any slot counted a sample. A query's state is [`object`]'s.
 //! `TRANSFORM_FEEDBACK_PRIMITIVES_WRITTEN` counts the primitives transform feedback wrote.
 //!
 //! As WebGL requires, a result becomes available only after control returns to the caller's
 //! event loop, which [`Context::present`] stands for: asking before it answers `false`
 //! (`QUERY_RESULT_AVAILABLE`) and 0 (`QUERY_RESULT`).
 
+mod object;
+
+pub(crate) use object::{Measure, QueryObject};
+
 use crate::context::Context;
-use crate::frame::OCCLUSION_SLOTS;
 use crate::gl;
 use crate::objects::{Id, Query};
 use crate::query::Parameter;
-
-/// What a query measured at its last `end_query`.
-pub(crate) enum Measure {
-    /// Occlusion slots: the resolved counts are copied into `buffer` (`slots` of them).
-    Samples { buffer: wgpu::Buffer, slots: u32 },
-    /// Transform feedback primitives.
-    Primitives(u64),
-}
-
-/// A query object.
-#[derive(Default)]
-pub(crate) struct QueryObject {
-    /// The target of its first `begin_query`; fixed from then on.
-    pub(crate) target: Option<u32>,
-    /// What the last begin/end pair measured, and the [`Context::present`] count at its end.
-    pub(crate) ended: Option<(Measure, u64)>,
-    /// The result, once read.
-    pub(crate) result: Option<u64>,
-    /// Primitives written while active (transform feedback).
-    pub(crate) primitives: u64,
-}
 
 /// The binding slot of a query target: occlusion (both kinds share one) or primitives.
 fn slot(target: u32) -> Option<usize> {
@@ -116,13 +100,7 @@ impl Context {
         q.primitives = 0;
         self.bindings.begin_query(s, Some(query.id));
         if s == 0 {
-            self.frame.end_pass();
-            let set = self.gpu.device.create_query_set(&wgpu::QuerySetDescriptor {
-                label: Some("essl-gl occlusion query"),
-                ty: wgpu::QueryType::Occlusion,
-                count: OCCLUSION_SLOTS,
-            });
-            self.frame.occlusion = Some((set, 0));
+            self.frame.begin_occlusion(&self.gpu);
         }
     }
 
@@ -149,13 +127,7 @@ impl Context {
         };
         self.bindings.begin_query(s, None);
         let measure = if s == 0 {
-            self.frame.end_pass();
-            let (set, slots) = self
-                .frame
-                .occlusion
-                .take()
-                .expect("an occlusion query is active");
-            self.resolve_occlusion(&set, slots)
+            Measure::Samples(self.frame.end_occlusion(&self.gpu))
         } else {
             Measure::Primitives(self.objects.queries.get_any(id).map_or(0, |q| q.primitives))
         };
@@ -163,29 +135,6 @@ impl Context {
         if let Some(q) = self.objects.queries.get_any_mut(id) {
             q.ended = Some((measure, frames));
         }
-    }
-
-    /// Records the copy of an occlusion set's `slots` counts into a readable buffer.
-    fn resolve_occlusion(&mut self, set: &wgpu::QuerySet, slots: u32) -> Measure {
-        let size = 8 * slots.max(1) as u64;
-        let resolve = self.gpu.device.create_buffer(&wgpu::BufferDescriptor {
-            label: Some("essl-gl occlusion counts"),
-            size,
-            usage: wgpu::BufferUsages::QUERY_RESOLVE | wgpu::BufferUsages::COPY_SRC,
-            mapped_at_creation: false,
-        });
-        let buffer = self.gpu.device.create_buffer(&wgpu::BufferDescriptor {
-            label: Some("essl-gl occlusion result"),
-            size,
-            usage: wgpu::BufferUsages::MAP_READ | wgpu::BufferUsages::COPY_DST,
-            mapped_at_creation: false,
-        });
-        if slots > 0 {
-            let encoder = self.frame.commands(&self.gpu);
-            encoder.resolve_query_set(set, 0..slots, &resolve, 0);
-            encoder.copy_buffer_to_buffer(&resolve, 0, &buffer, 0, size);
-        }
-        Measure::Samples { buffer, slots }
     }
 
     /// The active query of a target (`getQuery(target, CURRENT_QUERY)`).
@@ -249,13 +198,7 @@ impl Context {
         }
         let result = match &q.ended {
             Some((Measure::Primitives(n), _)) => *n,
-            Some((Measure::Samples { buffer, slots }, _)) => {
-                let (buffer, slots) = (buffer.clone(), *slots);
-                self.flush();
-                read_counts(&self.gpu.device, &buffer, slots)
-                    .iter()
-                    .any(|&c| c > 0) as u64
-            }
+            Some((Measure::Samples(counts), _)) => self.frame.any_samples(&self.gpu, counts) as u64,
             None => 0,
         };
         if let Some(q) = self.objects.queries.get_any_mut(id) {
@@ -263,23 +206,4 @@ impl Context {
         }
         result
     }
-}
-
-/// The `slots` 64-bit counts in a mappable buffer (waits for the GPU).
-fn read_counts(device: &wgpu::Device, buffer: &wgpu::Buffer, slots: u32) -> Vec<u64> {
-    if slots == 0 {
-        return Vec::new();
-    }
-    let slice = buffer.slice(..8 * slots as u64);
-    let (tx, rx) = std::sync::mpsc::channel();
-    slice.map_async(wgpu::MapMode::Read, move |r| {
-        let _ = tx.send(r);
-    });
-    let _ = device.poll(wgpu::PollType::wait_indefinitely());
-    let counts = match (rx.recv(), slice.get_mapped_range()) {
-        (Ok(Ok(())), Ok(view)) => bytemuck::pod_collect_to_vec(&view[..]),
-        _ => Vec::new(),
-    };
-    buffer.unmap();
-    counts
 }

@@ -5,18 +5,16 @@
 //! requires, its status changes only after control returns to the caller's event loop, which
 //! [`Context::present`] stands for, and `client_wait_sync` never blocks (WebGL's
 //! `MAX_CLIENT_WAIT_TIMEOUT_WEBGL` is 0 here): it answers `ALREADY_SIGNALED` or
-//! `TIMEOUT_EXPIRED`.
+//! `TIMEOUT_EXPIRED`. A fence's state is [`object`]'s.
+
+mod object;
+
+pub(crate) use object::SyncObject;
 
 use crate::context::Context;
 use crate::gl;
 use crate::objects::{Id, Sync};
 use crate::query::Parameter;
-
-/// A fence sync object.
-pub(crate) struct SyncObject {
-    /// The [`Context::present`] count when it was made: it is signalled after the next.
-    made_at: u64,
-}
 
 impl Context {
     /// Inserts a fence after everything recorded so far (`fenceSync`): `condition` must be
@@ -36,9 +34,7 @@ impl Context {
             return None;
         }
         self.flush();
-        let id = self.objects.syncs.insert(SyncObject {
-            made_at: self.presents,
-        });
+        let id = self.objects.syncs.insert(SyncObject::new(self.presents));
         Some(Sync { ctx: self.id, id })
     }
 
@@ -69,7 +65,7 @@ impl Context {
         self.objects
             .syncs
             .get(id)
-            .is_some_and(|s| self.presents > s.made_at)
+            .is_some_and(|s| s.signalled(self.presents))
     }
 
     /// Whether the fence is signalled, without blocking (`clientWaitSync`): `flags` may only

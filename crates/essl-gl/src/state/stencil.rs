@@ -1,39 +1,13 @@
-//! The stencil test's state: `stencil_func`, `stencil_op`, `stencil_mask` and their
-//! `_separate` forms, and how it becomes wgpu's stencil state.
+//! The stencil test's calls: `stencil_func`, `stencil_op`, `stencil_mask` and their
+//! `_separate` forms, which set [`StencilState`](super::values::StencilState).
 //!
 //! wgpu has one reference value and one read and write mask for both faces; WebGL2 requires
 //! the front and back values to agree at a draw (`INVALID_OPERATION` otherwise), so nothing
 //! is lost.
 
+use super::is_compare_func;
 use crate::context::Context;
 use crate::gl;
-use crate::state::is_compare_func;
-
-/// Front ([0]) and back ([1]) stencil state, with GL's initial values.
-#[derive(Clone, Debug, PartialEq)]
-pub(crate) struct StencilState {
-    pub(crate) func: [u32; 2],
-    pub(crate) reference: [i32; 2],
-    pub(crate) value_mask: [u32; 2],
-    pub(crate) fail: [u32; 2],
-    pub(crate) depth_fail: [u32; 2],
-    pub(crate) pass: [u32; 2],
-    pub(crate) writemask: [u32; 2],
-}
-
-impl Default for StencilState {
-    fn default() -> Self {
-        StencilState {
-            func: [gl::ALWAYS; 2],
-            reference: [0; 2],
-            value_mask: [u32::MAX; 2],
-            fail: [gl::KEEP; 2],
-            depth_fail: [gl::KEEP; 2],
-            pass: [gl::KEEP; 2],
-            writemask: [u32::MAX; 2],
-        }
-    }
-}
 
 /// Which faces a `face` argument names: `FRONT`, `BACK` or `FRONT_AND_BACK`.
 fn faces(face: u32) -> Option<&'static [usize]> {
@@ -57,56 +31,6 @@ fn is_stencil_op(op: u32) -> bool {
             | gl::INCR_WRAP
             | gl::DECR_WRAP
     )
-}
-
-fn stencil_op(op: u32) -> wgpu::StencilOperation {
-    use wgpu::StencilOperation as S;
-    match op {
-        gl::ZERO => S::Zero,
-        gl::REPLACE => S::Replace,
-        gl::INCR => S::IncrementClamp,
-        gl::DECR => S::DecrementClamp,
-        gl::INVERT => S::Invert,
-        gl::INCR_WRAP => S::IncrementWrap,
-        gl::DECR_WRAP => S::DecrementWrap,
-        _ => S::Keep,
-    }
-}
-
-impl StencilState {
-    /// wgpu's stencil state with the test on (`STENCIL_TEST`) or off (always passes, writes
-    /// nothing), for a stencil buffer of 8 bits.
-    pub(crate) fn wgpu(&self, enabled: bool) -> wgpu::StencilState {
-        if !enabled {
-            return wgpu::StencilState::default();
-        }
-        let face = |i: usize| wgpu::StencilFaceState {
-            compare: crate::texture::compare_function(self.func[i]),
-            fail_op: stencil_op(self.fail[i]),
-            depth_fail_op: stencil_op(self.depth_fail[i]),
-            pass_op: stencil_op(self.pass[i]),
-        };
-        wgpu::StencilState {
-            front: face(0),
-            back: face(1),
-            read_mask: self.value_mask[0] & 0xFF,
-            write_mask: self.writemask[0] & 0xFF,
-        }
-    }
-
-    /// The reference value wgpu compares with: GL clamps it to the buffer's range.
-    pub(crate) fn reference(&self) -> u32 {
-        self.reference[0].clamp(0, 0xFF) as u32
-    }
-
-    /// Whether front and back state agree as WebGL requires at a draw with a stencil buffer
-    /// of 8 bits (references after clamping, masks in their low 8 bits).
-    pub(crate) fn faces_agree(&self) -> bool {
-        let r = self.reference.map(|r| r.clamp(0, 0xFF));
-        r[0] == r[1]
-            && self.value_mask[0] & 0xFF == self.value_mask[1] & 0xFF
-            && self.writemask[0] & 0xFF == self.writemask[1] & 0xFF
-    }
 }
 
 impl Context {

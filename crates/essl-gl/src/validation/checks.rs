@@ -1,20 +1,6 @@
-//! The validation mode: uniform values checked against the hazards of the program.
-//!
-//! `essl-lint` finds, for each shader, the expressions whose result is NaN, ±∞ or undefined
-//! for some uniform values — `smoothstep(u_outerLimit, u_innerLimit, d)` with equal limits,
-//! `x / (u_innerLimit - u_outerLimit)`, `normalize(u_lightDirection)` of the zero vector,
-//! `pow(x, u_shininess)` with `u_shininess <= 0` — and exports them as
-//! [`essl_lint::Precondition`]s: conditions on the uniforms, with the span of the expression
-//! at risk. With validation on ([`Context::set_validation`]), each draw evaluates the
-//! conditions of the current program with the uniform values it is about to draw with, once
-//! per change of those values, and queues a [`ValidationWarning`] for each that fails
-//! ([`Context::take_validation_warnings`]).
-//!
-//! Off (the default), none of it runs: a draw tests one flag; `uniform*` is unchanged. The
-//! only bookkeeping that runs either way is at `link_program`, which keeps the two shader
-//! texts it linked (so that validation turned on later checks programs linked before).
-
-use std::fmt;
+//! A linked program's runtime checks: built from the shaders it was linked from
+//! ([`LinkedSources`]) and the layout of its uniforms, evaluated on its default uniform
+//! block's image ([`ProgramChecks::run`]).
 
 use essl::program::{ProgramLayout, UniformStorage};
 use essl::source::{SourceFile, Span};
@@ -22,127 +8,12 @@ use essl::types::GlType;
 use essl::Stage;
 use essl_lint::precondition::{Condition, Outcome, Precision, Precondition, UniformRef, Value};
 
-use crate::context::Context;
-use crate::error::ContextError;
-use crate::objects::{Id, Program, Shader};
-use crate::program::{find_uniform, uniform_shape, LinkedProgram};
-
-/// The most warnings the queue holds; later ones are counted
-/// ([`Context::validation_warnings_dropped`]) until it is read.
-pub const MAX_VALIDATION_WARNINGS: usize = 4096;
+use super::warning::{SourceLocation, ValidationWarning};
+use crate::objects::Program;
+use crate::program::{find_uniform, uniform_shape};
 
 /// The largest finite 16-bit float: what `mediump` holds on GPUs that compute it in 16 bits.
 const MEDIUMP_MAX: f32 = 65504.0;
-
-/// A place in a shader's source: the span of an expression, with its file name, 1-based line
-/// and column (in characters) and the text of that line. `Display` writes `file:line:col`.
-#[derive(Clone, Debug, PartialEq, Eq)]
-pub struct SourceLocation {
-    /// The shader's name: [`Context::set_shader_name`]'s, or `vertex` / `fragment`.
-    pub file: String,
-    /// The expression's byte range in the shader's text.
-    pub span: Span,
-    /// 1-based line of the span's start.
-    pub line: u32,
-    /// 1-based column of the span's start, in characters.
-    pub column: u32,
-    /// The text of that line (without its line break).
-    pub source_line: String,
-}
-
-impl SourceLocation {
-    fn new(file: &SourceFile, span: Span) -> SourceLocation {
-        let lc = file.line_col(span.start);
-        SourceLocation {
-            file: file.name().to_string(),
-            span,
-            line: lc.line,
-            column: lc.column,
-            source_line: file
-                .line_text(file.line_index(span.start))
-                .trim_end_matches(['\r', '\n'])
-                .to_string(),
-        }
-    }
-}
-
-impl fmt::Display for SourceLocation {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        write!(f, "{}:{}:{}", self.file, self.line, self.column)
-    }
-}
-
-/// A uniform value that makes an expression of the program NaN, infinite or undefined, found
-/// by a draw with validation on.
-///
-/// `Display` writes it as a compiler would:
-///
-/// ```text
-/// warning[smoothstep-edges]: `u_outerLimit` = 0.9 is not below `u_innerLimit` = 0.9 (equal): `smoothstep(edge0, edge1, x)` is undefined unless edge0 < edge1 …
-///   --> spot-smooth.frag:43:19
-///    |   float inLight = smoothstep(u_outerLimit, u_innerLimit, dotFromDirection);
-///    = uniforms: u_outerLimit, u_innerLimit (drawElements)
-/// ```
-#[derive(Clone, Debug, PartialEq)]
-pub struct ValidationWarning {
-    /// The program drawn with.
-    pub program: Program,
-    /// The draw call that found it (`drawArrays`, `drawElements`, …).
-    pub function: &'static str,
-    /// The rule: an `essl-lint` rule id (`smoothstep-edges`, `division-by-difference`,
-    /// `normalize-zero`, `pow-zero-base`, `pow-negative-base`, `acos-domain`, `asin-domain`,
-    /// `mediump-overflow`) or a runtime-only one (`division-by-zero`, `non-finite-uniform`).
-    pub rule: &'static str,
-    /// The uniforms involved, as WebGL names them (`u_innerLimit`, `light.cutOff`,
-    /// `spotLights[0].coneCos`).
-    pub uniforms: Vec<String>,
-    /// What is wrong, with the values, and what it does to the result.
-    pub message: String,
-    /// The stage of the expression at risk (`None` for a program linked from a layout, whose
-    /// source essl-gl does not have).
-    pub stage: Option<Stage>,
-    /// The expression at risk.
-    pub location: Option<SourceLocation>,
-    /// The calls through which the values reach it, outermost first (a helper function's
-    /// parameters).
-    pub call_sites: Vec<SourceLocation>,
-}
-
-impl ValidationWarning {
-    /// `file:line:col` of the expression at risk.
-    pub fn position(&self) -> Option<String> {
-        self.location.as_ref().map(|l| l.to_string())
-    }
-}
-
-impl fmt::Display for ValidationWarning {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        write!(f, "warning[{}]: {}", self.rule, self.message)?;
-        if let Some(l) = &self.location {
-            write!(f, "\n  --> {l}\n   | {}", l.source_line)?;
-        }
-        for c in &self.call_sites {
-            write!(f, "\n   = via {c}: {}", c.source_line.trim())?;
-        }
-        write!(
-            f,
-            "\n   = uniforms: {} ({})",
-            self.uniforms.join(", "),
-            self.function
-        )
-    }
-}
-
-/// The context's validation settings and queue.
-#[derive(Default)]
-pub(crate) struct Validation {
-    /// Whether draws check uniform values.
-    pub(crate) enabled: bool,
-    /// Whether warnings are also written to stderr.
-    pub(crate) stderr: bool,
-    warnings: Vec<ValidationWarning>,
-    dropped: u64,
-}
 
 /// The shaders a program was linked from: (name, text) of each stage.
 pub(crate) struct LinkedSources {
@@ -257,11 +128,17 @@ pub(crate) struct ProgramChecks {
 }
 
 impl ProgramChecks {
-    fn build(linked: &LinkedProgram) -> ProgramChecks {
-        let layout = &linked.layout;
+    /// The uniform preconditions of the shaders, vertex stage first.
+    pub(crate) fn preconditions(&self) -> &[Precondition] {
+        &self.preconditions
+    }
+
+    /// The checks of a program with `layout`, linked from `sources` (`None`: a layout linked
+    /// directly, which has only the finiteness checks).
+    pub(crate) fn build(layout: &ProgramLayout, sources: Option<&LinkedSources>) -> ProgramChecks {
         let mut preconditions = Vec::new();
         let mut files = Vec::new();
-        if let Some(src) = &linked.sources {
+        if let Some(src) = sources {
             for (stage, (name, text)) in [
                 (Stage::Vertex, &src.vertex),
                 (Stage::Fragment, &src.fragment),
@@ -383,7 +260,7 @@ impl ProgramChecks {
     }
 
     /// Evaluates the checks whose uniforms changed since their last evaluation.
-    fn run(
+    pub(crate) fn run(
         &mut self,
         data: &[u8],
         version: u64,
@@ -515,129 +392,6 @@ impl ProgramChecks {
                 location: c.location.clone(),
                 call_sites: c.call_sites.clone(),
             });
-        }
-    }
-}
-
-impl Context {
-    /// Creates a context ([`Context::new`]) with validation on: see
-    /// [`Context::set_validation`].
-    pub fn with_validation(width: u32, height: u32) -> Result<Context, ContextError> {
-        let mut ctx = Context::new(width, height)?;
-        ctx.set_validation(true);
-        Ok(ctx)
-    }
-
-    /// Turns the validation of uniform values on or off (off by default; no WebGL
-    /// implementation has it).
-    ///
-    /// On, every draw checks the uniform values of the current program against the hazards
-    /// `essl-lint` finds in its shaders ([`essl_lint::preconditions`]): equal or swapped
-    /// `smoothstep` edges, a zero divisor, the zero vector (or parallel vectors under a cross
-    /// product) given to `normalize`, a `pow` exponent ≤ 0 where the base can be 0, an `acos`
-    /// argument outside [-1, 1], a NaN or infinite value in any uniform, a value beyond ±65504
-    /// in a uniform read in `mediump` arithmetic. Each check runs when
-    /// the values it reads have changed since it last ran, so a bad value is reported once,
-    /// at the first draw that uses it, not at every frame. Read the warnings with
-    /// [`Context::take_validation_warnings`].
-    ///
-    /// The first draw of a program with validation on compiles its shaders again for the
-    /// analysis (a few milliseconds). Off, draws test one flag and nothing else runs.
-    pub fn set_validation(&mut self, enabled: bool) {
-        self.validation.enabled = enabled;
-    }
-
-    /// Whether validation is on.
-    pub fn validation_enabled(&self) -> bool {
-        self.validation.enabled
-    }
-
-    /// Also writes each validation warning to stderr as it is found (off by default).
-    pub fn set_validation_stderr(&mut self, enabled: bool) {
-        self.validation.stderr = enabled;
-    }
-
-    /// The validation warnings found since the last call, oldest first.
-    pub fn take_validation_warnings(&mut self) -> Vec<ValidationWarning> {
-        self.validation.dropped = 0;
-        std::mem::take(&mut self.validation.warnings)
-    }
-
-    /// How many warnings did not fit in the queue ([`MAX_VALIDATION_WARNINGS`]) since it was
-    /// last read.
-    pub fn validation_warnings_dropped(&self) -> u64 {
-        self.validation.dropped
-    }
-
-    /// Names a shader for validation warnings (`spot.frag` in `spot.frag:43:19`); without
-    /// one, a shader is `vertex` or `fragment`. An essl-gl extension, like a wgpu label: it
-    /// changes nothing else. Takes effect at the next `link_program`.
-    pub fn set_shader_name(&mut self, shader: Shader, name: &str) {
-        if let Some(id) = self.shader_id(shader, "setShaderName") {
-            if let Some(s) = self.objects.shaders.get_any_mut(id) {
-                s.name = Some(name.to_owned());
-            }
-        }
-    }
-
-    /// The uniform preconditions of a linked program's shaders, vertex stage first (empty for
-    /// a program linked from a layout): what validation checks, besides every float uniform
-    /// being finite.
-    pub fn program_preconditions(&mut self, program: Program) -> Vec<Precondition> {
-        let Some(p) = self.program_id(program, "programPreconditions") else {
-            return Vec::new();
-        };
-        let Some(linked) = self.objects.linked_mut(p) else {
-            return Vec::new();
-        };
-        if linked.checks.is_none() {
-            linked.checks = Some(Box::new(ProgramChecks::build(linked)));
-        }
-        linked
-            .checks
-            .as_ref()
-            .map(|c| c.preconditions.clone())
-            .unwrap_or_default()
-    }
-
-    /// Checks the current program's uniform values before a draw (validation on).
-    pub(crate) fn validate_uniforms(&mut self, pid: Id, function: &'static str) {
-        let program = Program {
-            ctx: self.id,
-            id: pid,
-        };
-        let Some(linked) = self.objects.linked_mut(pid) else {
-            return;
-        };
-        if linked.checks.is_none() {
-            linked.checks = Some(Box::new(ProgramChecks::build(linked)));
-        }
-        let mut found = Vec::new();
-        let LinkedProgram {
-            checks,
-            uniform_data,
-            uniform_version,
-            ..
-        } = linked;
-        if let Some(c) = checks.as_mut() {
-            c.run(
-                uniform_data,
-                *uniform_version,
-                program,
-                function,
-                &mut found,
-            );
-        }
-        let v = &mut self.validation;
-        for w in found {
-            if v.stderr {
-                eprintln!("{w}");
-            }
-            if v.warnings.len() < MAX_VALIDATION_WARNINGS {
-                v.warnings.push(w);
-            } else {
-                v.dropped += 1;
-            }
         }
     }
 }
