@@ -1,6 +1,7 @@
 //! The checking pipeline end to end, on folders written in a temporary directory: what it
 //! finds, where its diagnostics land, what `--fix` changes, and what a host file costs.
 
+mod find;
 mod fix;
 mod hosts;
 mod includes;

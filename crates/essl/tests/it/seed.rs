@@ -7,7 +7,7 @@ use essl::diagnostic::{apply_fixes, Applicability};
 use essl::source::SourceFile;
 use essl::{compile, Stage};
 
-const SEED: &str = include_str!("../../../shaders-glsl/spot-smooth-nbsp.frag");
+const SEED: &str = include_str!("../../../../shaders-glsl/spot-smooth-nbsp.frag");
 
 #[test]
 fn seed_spot_light_reports_exactly_its_problems() {

@@ -1,7 +1,7 @@
 //! Misuse: each WebGL error essl-gl records, asserting the error code and that nothing was
 //! drawn (or that the failed call changed nothing a draw could see).
 
-mod common;
+use crate::common;
 
 use common::*;
 use essl::types::GlType;

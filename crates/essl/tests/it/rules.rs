@@ -15,7 +15,7 @@
 //! The check renders the annotations of the diagnostics the shader produces into its text
 //! and compares the result with the case, so that a failure shows the case as it would pass.
 
-mod annotated;
+use crate::annotated;
 
 use annotated::{annotate, check};
 use essl::diagnostic::Diagnostic;

@@ -1,7 +1,7 @@
 //! Transform feedback: varyings captured into buffers by draws, interleaved and separate,
 //! with rasterizer discard, pauses, the primitives-written query and WebGL's errors.
 
-mod common;
+use crate::common;
 
 use common::*;
 use essl_gl::{gl, Context, Parameter};

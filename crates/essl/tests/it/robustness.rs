@@ -5,7 +5,7 @@ use essl::source::SourceFile;
 use essl::{compile, Stage};
 use proptest::prelude::*;
 
-const SEED: &str = include_str!("../../../shaders-glsl/spot-smooth-nbsp.frag");
+const SEED: &str = include_str!("../../../../shaders-glsl/spot-smooth-nbsp.frag");
 const VALID: &str = "#version 300 es\nprecision highp float;\nuniform sampler2D t;\nuniform vec3 u[2];\nin vec2 uv;\nout vec4 o;\nstruct S { vec3 a; float b[2]; };\nfloat f(inout S s, int k) { for (int i = 0; i < k; ++i) { s.a += u[i % 2]; if (s.a.x > 1.0) break; } return s.b[1]; }\nvoid main() {\n  S s = S(vec3(0.0), float[2](1.0, 2.0));\n  switch (int(uv.x * 4.0)) { case 0: o = texture(t, uv); break; default: o = vec4(f(s, 3)); }\n}\n";
 
 fn run(src: &str, stage: Stage) -> essl::Shader {

@@ -7,7 +7,7 @@
 //! Without a Vulkan adapter the tests print why and pass, unless `ESSL_REQUIRE_ADAPTER=1`;
 //! without the shared scenes the shared-scene test likewise, unless `ESSL_REQUIRE_CORPORA=1`.
 
-mod common;
+use crate::common;
 
 use std::path::{Path, PathBuf};
 

@@ -2,7 +2,7 @@
 //! programs are minimal (every declared uniform active, no unused function or varying) and
 //! contain nothing for absent features.
 
-mod common;
+use crate::common;
 
 use common::*;
 use essl_lights::*;

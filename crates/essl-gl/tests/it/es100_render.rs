@@ -4,7 +4,7 @@
 //! its `render_color` (green by default) on every pixel wherever Chromium did
 //! (`tests/oracle/es100-render.json`, written by `tests/oracle/render_es100.py`).
 
-mod common;
+use crate::common;
 
 use essl::Target;
 use essl_gl::{gl, Context};

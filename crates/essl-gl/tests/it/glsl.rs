@@ -1,7 +1,7 @@
 //! End to end: GLSL ES 3.00 compiled, linked and lowered by the essl front end, drawn by
 //! essl-gl — the `ProgramLayout` contract exercised by real lowered modules.
 
-mod common;
+use crate::common;
 
 use common::*;
 use essl_gl::{gl, Context, Program};

@@ -5,7 +5,7 @@
 //! Chromium answered (`tests/oracle/*.json`): link status, and names, types, sizes, order and
 //! attribute locations. (`crates/essl/tests/oracle.rs` checks the same below the API.)
 
-mod common;
+use crate::common;
 
 use std::path::{Path, PathBuf};
 

@@ -1,7 +1,7 @@
 //! Framebuffer objects: rendering into textures and renderbuffers, reading them back,
 //! sampling what was drawn, completeness, and WebGL's errors for their misuse.
 
-mod common;
+use crate::common;
 
 use common::*;
 use essl_gl::{gl, Context, Texture};

@@ -2,7 +2,7 @@
 //! comparison helpers, and agreement between the library's model, its CPU mirror and the
 //! scene bridge.
 
-mod common;
+use crate::common;
 
 use common::*;
 use essl_lights::formulas::{library_fragment, FragmentInputs};

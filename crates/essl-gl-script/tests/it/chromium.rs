@@ -14,7 +14,7 @@
 
 use std::path::{Path, PathBuf};
 
-mod common;
+use crate::common;
 
 use common::{adapter, scripts};
 use essl_gl_script::{compare, read_script, replay, ReplayOptions, Results};

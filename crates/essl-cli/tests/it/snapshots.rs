@@ -29,14 +29,14 @@ fn lint(file: &Path, format: &str) -> String {
 
 #[test]
 fn human() {
-    insta::glob!("../../../shaders-glsl", "*.{vert,frag}", |path| {
+    insta::glob!("../../../../shaders-glsl", "*.{vert,frag}", |path| {
         insta::assert_snapshot!(lint(path, "human"));
     });
 }
 
 #[test]
 fn json() {
-    insta::glob!("../../../shaders-glsl", "*.{vert,frag}", |path| {
+    insta::glob!("../../../../shaders-glsl", "*.{vert,frag}", |path| {
         let text = lint(path, "json");
         let (status, lines) = text.split_once('\n').unwrap();
         let values: Vec<serde_json::Value> = lines

@@ -1,7 +1,7 @@
 //! Query objects, fences and `present`, with WebGL's rule that results become available
 //! only after control returns to the event loop (`present` stands for it).
 
-mod common;
+use crate::common;
 
 use common::*;
 use essl_gl::{gl, Context, ContextAttributes, Parameter};

@@ -1,6 +1,6 @@
 //! Impossible parameters are refused with a clear error instead of rendering NaN.
 
-mod common;
+use crate::common;
 
 use common::*;
 use essl_lights::*;

@@ -10,7 +10,7 @@
 
 use std::panic::{catch_unwind, AssertUnwindSafe};
 
-mod common;
+use crate::common;
 
 use common::{adapter, scripts};
 use essl_gl_script::{read_script, replay, Arg, Phase, ReplayOptions, Script};

@@ -2,7 +2,7 @@
 //! `rules.rs` (expected diagnostics under the line they point at). Shaders without
 //! `#version 300 es` are GLSL ES 1.00; cases compile for WebGL 2 unless they say WebGL 1.
 
-mod annotated;
+use crate::annotated;
 
 use annotated::{check, check_with};
 use essl::{CompileOptions, Extension, Stage, Target};

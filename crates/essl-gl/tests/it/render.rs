@@ -1,6 +1,6 @@
 //! Renderer-level tests: what WebGL2 programs draw, read back from the framebuffer.
 
-mod common;
+use crate::common;
 
 use common::*;
 use essl::program::InternalUniform;

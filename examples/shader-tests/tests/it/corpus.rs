@@ -6,7 +6,7 @@
 fn every_linked_pair_has_bindings() {
     let generated = include_str!(concat!(env!("OUT_DIR"), "/corpus.rs"));
     let oracle: serde_json::Value = serde_json::from_str(include_str!(
-        "../../../tests/oracle/webgl2fundamentals.json"
+        "../../../../tests/oracle/webgl2fundamentals.json"
     ))
     .unwrap();
     let linked: Vec<String> = oracle["programs"]

@@ -2,7 +2,7 @@
 //! `getParameter`, with their values and their errors (`INVALID_ENUM` for an unknown pname,
 //! `INVALID_VALUE` for a deleted shader or program, `INVALID_OPERATION` for another context's).
 
-mod common;
+use crate::common;
 
 use common::*;
 use essl_gl::{gl, Context, Parameter, Program, Shader};

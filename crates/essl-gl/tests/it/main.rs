@@ -1,0 +1,15 @@
+//! The integration tests of this crate, one binary (each test file was a binary of its own,
+//! and linking them was most of the test suite's time). Each module is one former file.
+
+mod active_lists;
+mod common;
+mod errors;
+mod es100_render;
+mod framebuffer;
+mod glsl;
+mod queries;
+mod queries_sync;
+mod render;
+mod scenes;
+mod transform_feedback;
+mod validation;

@@ -1,0 +1,11 @@
+//! The integration tests of this crate, one binary (each test file was a binary of its own,
+//! and linking them was most of the test suite's time). Each module is one former file.
+
+mod chromium;
+mod common;
+mod generate;
+mod gpu_stiff;
+mod reference;
+mod report;
+mod stiff;
+mod validate;
