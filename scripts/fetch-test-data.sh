@@ -120,7 +120,7 @@ python3 "$here/testdata/extract.py" --out "$out" \
     --webgl "${src[webgl]}" --glslang "${src[glslang]}" --fundamentals "${src[fundamentals]}" \
     --fundamentals-commit "${commit[fundamentals]}" "${extra[@]+"${extra[@]}"}"
 
-# The WebGL IDL, as ../shared/specs names it (crates/essl-gl-script/tests/idl.rs reads it).
+# The WebGL IDL, as ../shared/specs names it (crates/essl-gl-script/tests/it/idl.rs reads it).
 specs="$(cd "$out/.." && pwd)/specs"
 mkdir -p "$specs"
 cp "${src[webgl]}/specs/latest/1.0/webgl.idl" "$specs/webgl1.idl"

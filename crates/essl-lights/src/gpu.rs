@@ -14,7 +14,7 @@
 //!   `any(isnan(color)) || any(isinf(color))` or a coordinate was, [`PROBE_FINITE`] otherwise.
 //!   Everything before that line is the program's own code, so the probe sees the values the
 //!   program computes. [`count_probe`] counts the flags. The probe itself is checked by a
-//!   program that is NaN everywhere (`tests/gpu_stiff.rs`).
+//!   program that is NaN everywhere (`tests/it/gpu_stiff.rs`).
 //! - [`hard_edge`] and [`reference_band`]: the float64 reference of a lit scene, as a band
 //!   where the picture has a hard edge (see [`crate::reference::BandImage`]).
 

@@ -25,7 +25,7 @@ fn spot_light_example_bindings_are_current() {
     assert!(
         kept == text,
         "{} is not what the generator writes today: run `ESSL_BLESS=1 cargo test -p essl-build \
-         --test checked_in` and review the diff",
+         --test it checked_in` and review the diff",
         path.display()
     );
 }

@@ -152,7 +152,7 @@ Where essl still answers differently from a WebGL browser, beyond the cases abov
   156, ANGLE on SwiftShader: `tests/oracle/ES100.md`); past WebGL's guaranteed minimums a
   shader gets a warning, not an error, as it links there.
 - **Nine shaders found by differential testing** (`tests/differential/essl-wrong/`, the
-  `KNOWN_DIFFERENCES` of `crates/essl/tests/differential.rs`, which fails when one of them
+  `KNOWN_DIFFERENCES` of `crates/essl/tests/it/differential.rs`, which fails when one of them
   starts to agree): essl rejects what Chromium compiles — an integer division or modulo by a
   constant zero in a `const` or global initializer or inside an expression (Chromium folds it
   with a warning), `(v, v) = 1.0` (a comma expression as an l-value), `unpackHalf2x16` of a
@@ -206,7 +206,7 @@ Cases whose vertex or fragment source is empty use a trivial valid shader of tha
 | glslangValidator 12.0.0 (compile + `-l` link) | 155/159 | 52/67 | 4,285/4,287 | 1,332/1,348 | |
 | naga 30.0.1 GLSL front end | 0 (rejects `#version 300 es`) | | 0 | | |
 
-`crates/essl-cli/tests/conformance.rs` fails when a score is below its threshold.
+`crates/essl-cli/tests/it/conformance.rs` fails when a score is below its threshold.
 (The peers' dEQP figures are the corpora README's, counted over all 35 files with its own case
 split; with `#version 450 core` substituted naga accepts 68/159 WebGL and 10/4,287 dEQP
 must-pass cases.) The threshold for the GLSL ES 1.00 cases is, in each context, at least 99.5% of the

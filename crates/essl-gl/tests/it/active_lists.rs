@@ -3,7 +3,7 @@
 //! `link_program`, then enumerated with `get_program_parameter(ACTIVE_UNIFORMS)`,
 //! `get_active_uniform`, `get_active_attrib` and `get_attrib_location`, and compared with what
 //! Chromium answered (`tests/oracle/*.json`): link status, and names, types, sizes, order and
-//! attribute locations. (`crates/essl/tests/oracle.rs` checks the same below the API.)
+//! attribute locations. (`crates/essl/tests/it/oracle.rs` checks the same below the API.)
 
 use crate::common;
 

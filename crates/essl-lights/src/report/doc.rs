@@ -443,7 +443,7 @@ fn stiff_section(report: &Report, out: &mut String) {
                  [numerical-stability.md](numerical-stability.md#the-matrix-on-the-gpu)): of \
                  {total} rows, the library's program is NaN or more than 1/255 off in **{lib}**, the seed's in \
                  **{seed}** ({nan_seed} of them with NaN or infinite fragments). \
-                 `tests/gpu_stiff.rs` asserts the library's 0.",
+                 `tests/it/gpu_stiff.rs` asserts the library's 0.",
                 report.settings.stiff_size.unwrap_or(gpu_stiff::SIZE)
             );
         }

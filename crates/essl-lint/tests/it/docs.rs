@@ -1,5 +1,5 @@
 //! `docs/lints/<id>.md` is each rule's page ([`essl_lint::Rule::page`]), and
-//! `docs/lints/README.md` lists every rule. `ESSL_LINT_BLESS=1 cargo test -p essl-lint --test docs`
+//! `docs/lints/README.md` lists every rule. `ESSL_LINT_BLESS=1 cargo test -p essl-lint --test it docs::`
 //! rewrites the pages from the rules' text.
 
 use std::path::Path;

@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Renders every scene of this folder in Chromium with ../../../../../../shared/tools/webgl2-render.py
 (or $WEBGL2_RENDER) and writes reference/<name>.png and expected.json (the tool's warnings,
-compile and link logs per scene), which tests/scenes.rs compares essl-gl against.
+compile and link logs per scene), which tests/it/scenes.rs compares essl-gl against.
 
 usage: python3 make_references.py
 """
