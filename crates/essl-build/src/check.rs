@@ -259,7 +259,7 @@ impl Check {
         let mut watched = std::collections::BTreeSet::new();
         let mut programs = Vec::new();
         for unit in run.results {
-            tally.unit(cargo, human, &unit, &configs, &dir, &mut watched)?;
+            tally.unit(cargo, human, &unit, &dir, &mut watched)?;
             programs.extend(linked_programs(unit, &dir));
         }
         for path in watched {
@@ -366,7 +366,6 @@ impl Tally {
         cargo: &mut dyn Write,
         human: &mut dyn Write,
         unit: &CheckedUnit,
-        configs: &Configs,
         dir: &Path,
         watched: &mut std::collections::BTreeSet<PathBuf>,
     ) -> std::io::Result<()> {
@@ -380,7 +379,7 @@ impl Tally {
             )?;
         }
         for s in &unit.shaders {
-            let deny = configs.for_file(&s.path).is_ok_and(|c| c.deny_warnings);
+            let deny = s.settings.deny_warnings;
             for g in &s.diagnostics {
                 let shown: Vec<Diagnostic> = g
                     .diagnostics
@@ -404,7 +403,7 @@ impl Tally {
         }
         for p in &unit.programs {
             let (vs, fs) = (&unit.shaders[p.vertex], &unit.shaders[p.fragment]);
-            let deny = configs.for_file(&vs.path).is_ok_and(|c| c.deny_warnings);
+            let deny = vs.settings.deny_warnings;
             let Some(program) = p.program.as_ref().filter(|_| p.linked) else {
                 continue;
             };

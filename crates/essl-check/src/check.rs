@@ -161,7 +161,7 @@ fn single(input: &Input, order: usize, cx: &Context) -> CheckedUnit {
             input.path.display().to_string(),
             t.to_string(),
         ))),
-        None => cx.files.read(&input.path),
+        None => cx.files.read_once(&input.path),
     };
     let file = match file {
         Ok(f) => f,
@@ -365,7 +365,7 @@ fn finish_parts(
     path: &std::path::Path,
     order: usize,
     own: &Arc<SourceFile>,
-    settings: &Settings,
+    settings: &Arc<Settings>,
     options: CheckOptions,
 ) -> Vec<CheckedShader> {
     parts
@@ -390,6 +390,7 @@ fn finish_parts(
                 diagnostics,
                 linted: false,
                 given: false,
+                settings: settings.clone(),
             };
             if options.phase == Phase::Full {
                 lint(&mut checked, settings, options.lints);

@@ -108,6 +108,17 @@ impl Files {
         Ok(file)
     }
 
+    /// The file at `path`, not kept for the rest of the run: a shader's own file, read once
+    /// (keeping every file of a folder of 10,000 shaders would cost a map entry each for
+    /// nothing).
+    pub fn read_once(&self, path: &Path) -> Result<Arc<SourceFile>, ReadError> {
+        if let Some(f) = self.given.get(path) {
+            return Ok(f.clone());
+        }
+        let text = read_source(path)?;
+        Ok(Arc::new(SourceFile::new(path.display().to_string(), text)))
+    }
+
     /// Forgets what was read from disk (a file may have changed); given texts stay.
     pub fn forget_disk(&self) {
         self.cache().clear();

@@ -10,6 +10,7 @@ use essl::source::SourceFile;
 use essl::{Shader, Stage};
 
 use crate::assembly::Assembly;
+use crate::settings::Settings;
 
 /// Diagnostics in one file, with spans in that file's text.
 #[derive(Clone, Debug)]
@@ -46,6 +47,8 @@ pub struct CheckedShader {
     pub linted: bool,
     /// Whether its file's text was given rather than read from its path (standard input).
     pub given: bool,
+    /// The settings it was checked with (its folder's essl.toml and the overrides).
+    pub settings: Arc<Settings>,
 }
 
 impl CheckedShader {

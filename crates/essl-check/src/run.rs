@@ -192,11 +192,10 @@ pub fn check_text(
 }
 
 /// Lowers and lints a shader that a [`crate::Phase::FrontEnd`] check left, with the settings
-/// of its folder.
-pub fn finish(shader: &mut CheckedShader, configs: &Configs, lints: bool) {
-    if let Ok(settings) = configs.for_file(&shader.path) {
-        check::lint(shader, &settings, lints);
-    }
+/// it was checked with.
+pub fn finish(shader: &mut CheckedShader, lints: bool) {
+    let settings = shader.settings.clone();
+    check::lint(shader, &settings, lints);
 }
 
 /// Links two shaders checked apart (an editor's document and its partner file) as a run links

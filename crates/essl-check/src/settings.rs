@@ -100,8 +100,16 @@ pub struct Configs {
 #[derive(Debug, Default)]
 struct Inner {
     overrides: Overrides,
-    by_folder: Mutex<HashMap<PathBuf, Found>>,
+    by_folder: Mutex<Folders>,
     explicit: Option<Found>,
+}
+
+/// The folders met so far, and the last one asked for: files come folder by folder, and a
+/// byte comparison of the path is cheaper than hashing it component by component.
+#[derive(Debug, Default)]
+struct Folders {
+    all: HashMap<PathBuf, Found>,
+    last: Option<(PathBuf, Found)>,
 }
 
 type Found = Result<Arc<Settings>, Arc<ConfigError>>;
@@ -148,8 +156,14 @@ impl Configs {
             .by_folder
             .lock()
             .unwrap_or_else(|e| e.into_inner());
-        if let Some(s) = by_folder.get(folder) {
-            return s.clone();
+        if let Some((last, s)) = &by_folder.last {
+            if last.as_os_str() == folder.as_os_str() {
+                return s.clone();
+            }
+        }
+        if let Some(s) = by_folder.all.get(folder).cloned() {
+            by_folder.last = Some((folder.to_path_buf(), s.clone()));
+            return s;
         }
         let found = Config::discover(folder)
             .map(|c| {
@@ -157,7 +171,8 @@ impl Configs {
                 Arc::new(Settings::new(config, &self.inner.overrides))
             })
             .map_err(Arc::new);
-        by_folder.insert(folder.to_path_buf(), found.clone());
+        by_folder.all.insert(folder.to_path_buf(), found.clone());
+        by_folder.last = Some((folder.to_path_buf(), found.clone()));
         found
     }
 
@@ -169,6 +184,7 @@ impl Configs {
             .lock()
             .unwrap_or_else(|e| e.into_inner());
         let mut paths: Vec<PathBuf> = by_folder
+            .all
             .values()
             .chain(self.inner.explicit.iter())
             .filter_map(|s| s.as_ref().ok()?.config.path.clone())
@@ -184,7 +200,13 @@ impl Configs {
             .by_folder
             .lock()
             .unwrap_or_else(|e| e.into_inner())
+            .all
             .clear();
+        self.inner
+            .by_folder
+            .lock()
+            .unwrap_or_else(|e| e.into_inner())
+            .last = None;
     }
 }
 

@@ -7,7 +7,7 @@ use std::sync::{Arc, OnceLock};
 use essl::diagnostic::{Diagnostic, Severity};
 use essl::source::{SourceFile, Span};
 use essl::Shader;
-use essl_check::{CheckedShader, Configs};
+use essl_check::CheckedShader;
 
 use crate::index::Index;
 
@@ -45,8 +45,8 @@ impl Analysis {
     }
 
     /// Lowers the shader to naga IR and runs the lints with its folder's levels.
-    pub fn lint(&mut self, configs: &Configs) {
-        essl_check::finish(&mut self.checked, configs, true);
+    pub fn lint(&mut self) {
+        essl_check::finish(&mut self.checked, true);
         self.carried.clear();
     }
 

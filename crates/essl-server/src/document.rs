@@ -97,12 +97,12 @@ impl Doc {
     }
 
     /// Lowers and lints every shader that waits for it; whether any did.
-    pub fn lint(&mut self, configs: &Configs) -> bool {
+    pub fn lint(&mut self) -> bool {
         let mut any = false;
         for part in &mut self.parts {
             // Requests hold no analysis between messages, so this one is not shared.
             if let Some(a) = Arc::get_mut(part).filter(|a| !a.linted()) {
-                a.lint(configs);
+                a.lint();
                 any = true;
             }
         }

@@ -93,8 +93,7 @@ impl State {
     /// Lowers and lints a checked document; whether anything changed.
     pub fn lint(&mut self, uri: &Uri) -> bool {
         self.unlinted.retain(|u| u != uri);
-        let configs = &self.configs;
-        self.docs.get_mut(uri).is_some_and(|doc| doc.lint(configs))
+        self.docs.get_mut(uri).is_some_and(|doc| doc.lint())
     }
 
     /// The partner of the shader file at `uri`: its URI and analysis (open, or read from disk).

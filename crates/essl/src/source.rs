@@ -92,7 +92,9 @@ impl fmt::Display for LineCol {
 pub struct SourceFile {
     name: String,
     text: String,
-    line_starts: Vec<u32>,
+    /// Where each line starts, found on first use: a shader that compiles cleanly is never
+    /// asked for a line.
+    line_starts: std::sync::OnceLock<Vec<u32>>,
     /// Whether the text is ASCII: then a column is a byte distance, found without counting
     /// characters (which would make a diagnostic on a long line cost the line's length).
     ascii: bool,
@@ -102,27 +104,34 @@ impl SourceFile {
     /// Wraps a source text. Line breaks are `\n`, `\r\n` or a lone `\r`, as GLSL counts them.
     pub fn new(name: impl Into<String>, text: impl Into<String>) -> SourceFile {
         let text = text.into();
-        let bytes = text.as_bytes();
-        // About one line per 24 bytes of a shader: one allocation for most files.
-        let mut line_starts = Vec::with_capacity(bytes.len() / 24 + 2);
-        line_starts.push(0u32);
-        // Each line break found with `memchr2` (a vectorised search), not byte by byte.
-        let mut i = 0;
-        while let Some(at) = memchr::memchr2(b'\n', b'\r', &bytes[i..]) {
-            let at = i + at;
-            i = if bytes[at] == b'\r' && bytes.get(at + 1) == Some(&b'\n') {
-                at + 2
-            } else {
-                at + 1
-            };
-            line_starts.push(i as u32);
-        }
         SourceFile {
             name: name.into(),
             ascii: text.is_ascii(),
             text,
-            line_starts,
+            line_starts: std::sync::OnceLock::new(),
         }
+    }
+
+    /// Where each line starts.
+    fn line_starts(&self) -> &[u32] {
+        self.line_starts.get_or_init(|| {
+            let bytes = self.text.as_bytes();
+            // About one line per 24 bytes of a shader: one allocation for most files.
+            let mut line_starts = Vec::with_capacity(bytes.len() / 24 + 2);
+            line_starts.push(0u32);
+            // Each line break found with `memchr2` (a vectorised search), not byte by byte.
+            let mut i = 0;
+            while let Some(at) = memchr::memchr2(b'\n', b'\r', &bytes[i..]) {
+                let at = i + at;
+                i = if bytes[at] == b'\r' && bytes.get(at + 1) == Some(&b'\n') {
+                    at + 2
+                } else {
+                    at + 1
+                };
+                line_starts.push(i as u32);
+            }
+            line_starts
+        })
     }
 
     /// The file's name as given.
@@ -142,12 +151,12 @@ impl SourceFile {
 
     /// Number of lines (a trailing line break starts a last, empty line).
     pub fn line_count(&self) -> usize {
-        self.line_starts.len()
+        self.line_starts().len()
     }
 
     /// 0-based line index of a byte offset.
     pub fn line_index(&self, offset: u32) -> usize {
-        match self.line_starts.binary_search(&offset) {
+        match self.line_starts().binary_search(&offset) {
             Ok(i) => i,
             Err(i) => i - 1,
         }
@@ -160,7 +169,7 @@ impl SourceFile {
 
     /// Byte offset where a 0-based line starts.
     pub fn line_start(&self, line_index: usize) -> u32 {
-        self.line_starts
+        self.line_starts()
             .get(line_index)
             .copied()
             .unwrap_or(self.text.len() as u32)
@@ -190,7 +199,7 @@ impl SourceFile {
             offset -= 1;
         }
         let line = self.line_index(offset as u32);
-        let start = self.line_starts[line] as usize;
+        let start = self.line_starts()[line] as usize;
         let column = if self.ascii {
             (offset - start) as u32 + 1
         } else {

@@ -3,7 +3,7 @@
 //! a unit's own fixed file is written back there (the output then says whether that worked).
 
 use essl::diagnostic::Severity;
-use essl_check::{CheckedProgram, CheckedShader, CheckedUnit, Configs, FileDiagnostics, FixedFile};
+use essl_check::{CheckedProgram, CheckedShader, CheckedUnit, FileDiagnostics, FixedFile};
 
 use super::options::{Format, LintOptions, Look};
 use super::output;
@@ -50,12 +50,7 @@ fn write_back(fixed: &FixedFile, options: &LintOptions) -> Option<String> {
 }
 
 /// One checked unit, rendered with `look`.
-pub(crate) fn unit_result(
-    mut unit: CheckedUnit,
-    options: &LintOptions,
-    configs: &Configs,
-    look: Look,
-) -> UnitResult {
+pub(crate) fn unit_result(mut unit: CheckedUnit, options: &LintOptions, look: Look) -> UnitResult {
     let write_errors: Vec<Option<String>> =
         unit.fixed.iter().map(|f| write_back(f, options)).collect();
     let mut files = Vec::new();
@@ -74,7 +69,7 @@ pub(crate) fn unit_result(
     }
     let mut fixes_told = vec![false; unit.fixed.len()];
     for s in &mut unit.shaders {
-        let deny = configs.for_file(&s.path).is_ok_and(|x| x.deny_warnings);
+        let deny = s.settings.deny_warnings;
         let hidden = hide_notes(&mut s.diagnostics, options.show_notes);
         let mut r = FileResult::new(s.order, named(s, s.given));
         r.deny_warnings = deny;
@@ -101,18 +96,13 @@ pub(crate) fn unit_result(
     let programs = unit
         .programs
         .iter()
-        .map(|p| program_result(p, &unit.shaders, configs, look))
+        .map(|p| program_result(p, &unit.shaders, look))
         .collect();
     (files, programs)
 }
 
 /// A linked pair's result, rendered with `look`.
-fn program_result(
-    p: &CheckedProgram,
-    shaders: &[CheckedShader],
-    configs: &Configs,
-    look: Look,
-) -> ProgramResult {
+fn program_result(p: &CheckedProgram, shaders: &[CheckedShader], look: Look) -> ProgramResult {
     let (vs, fs) = (&shaders[p.vertex], &shaders[p.fragment]);
     let (errors, warnings) = p.counts();
     ProgramResult {
@@ -121,7 +111,7 @@ fn program_result(
         linked: p.linked,
         errors,
         warnings,
-        deny_warnings: configs.for_file(&vs.path).is_ok_and(|x| x.deny_warnings),
+        deny_warnings: vs.settings.deny_warnings,
         codes: p
             .diagnostics
             .iter()

@@ -115,7 +115,7 @@ pub fn run(options: &LintOptions) -> i32 {
         if let Some(bar) = &bar {
             bar.inc((unit.shaders.len() + unit.unread.len()) as u64);
         }
-        check::unit_result(unit, options, &configs, look)
+        check::unit_result(unit, options, look)
     };
     let mut files = Files::disk();
     let run = essl_check::run(&found, &configs, &mut files, check_options, &sink);
