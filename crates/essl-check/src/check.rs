@@ -10,7 +10,7 @@ use essl::source::SourceFile;
 use essl::{Shader, Stage};
 
 use crate::assembly::Assembly;
-use crate::extract::{self, Embedded};
+use crate::extract::{self, Embedded, Piece};
 use crate::find::{Found, Host, Input};
 use crate::include::{self, InFile};
 use crate::read::Files;
@@ -120,6 +120,8 @@ struct Part {
     stage: Stage,
     name: Option<String>,
     embedded_at: Option<u32>,
+    /// Whether it is a chunk, checked as a library.
+    chunk: bool,
     /// The assembled text, or why it could not be assembled.
     assembly: Result<Assembly, Vec<InFile>>,
 }
@@ -181,11 +183,15 @@ fn single(input: &Input, order: usize, cx: &Context) -> CheckedUnit {
         return CheckedUnit::default();
     };
     let make = |file: &Arc<SourceFile>| {
-        let source = Assembly::whole(file.clone());
+        let mut source = Assembly::whole(file.clone());
+        if input.chunk {
+            source = chunk_prelude(source, input.stage, &settings);
+        }
         vec![Part {
             stage: input.stage,
             name: None,
             embedded_at: None,
+            chunk: input.chunk,
             assembly: includes(source, &input.path, &settings, cx.files),
         }]
     };
@@ -217,7 +223,7 @@ fn host(h: &Host, order: usize, cx: &Context) -> CheckedUnit {
         if Arc::ptr_eq(file, &h.file) {
             h.embedded.clone()
         } else {
-            extract::extract(h.kind, file.text())
+            Host::extract(&h.path, h.kind, file.text())
         }
     };
     let make = |file: &Arc<SourceFile>| -> Vec<Part> {
@@ -225,11 +231,15 @@ fn host(h: &Host, order: usize, cx: &Context) -> CheckedUnit {
             .into_iter()
             .filter_map(|e| {
                 let stage = e.stage.filter(|_| e.skip.is_none())?;
-                let source = Assembly::range(file.clone(), e.range.clone());
+                let mut source = from_pieces(file, &e.pieces);
+                if e.chunk {
+                    source = chunk_prelude(source, stage, &settings);
+                }
                 Some(Part {
                     stage,
                     name: e.name,
                     embedded_at: Some(e.range.start as u32),
+                    chunk: e.chunk,
                     assembly: includes(source, &h.path, &settings, cx.files),
                 })
             })
@@ -246,6 +256,7 @@ fn host(h: &Host, order: usize, cx: &Context) -> CheckedUnit {
         let checked: Vec<usize> = (0..found.len())
             .filter(|&k| found[k].skip.is_none() && found[k].stage.is_some())
             .collect();
+        // Chunks are parts too, but never paired (extract::pairs leaves them out).
         let part_of = |k: usize| checked.iter().position(|&c| c == k);
         extract::pairs(&found)
             .into_iter()
@@ -279,6 +290,60 @@ fn fixed_file(
         stdin,
     }
 }
+
+/// The text of an embedded shader: its pieces of `file` (and of the files its substitutions
+/// import).
+fn from_pieces(file: &Arc<SourceFile>, pieces: &[Piece]) -> Assembly {
+    fn push(a: &mut Assembly, f: u32, pieces: &[Piece]) {
+        for p in pieces {
+            match p {
+                Piece::Raw(r) => a.verbatim(f, r.clone()),
+                Piece::Cooked { raw, value } => a.cooked(f, raw.clone(), value),
+                Piece::Added { text, at } => a.generated(text, f, *at),
+                Piece::From { file, pieces } => {
+                    let g = a.file_index(file);
+                    push(a, g, pieces);
+                }
+            }
+        }
+    }
+    let mut a = Assembly::default();
+    let f = a.file_index(file);
+    push(&mut a, f, pieces);
+    a
+}
+
+/// A chunk with what a shader that includes it has before it, where it does not say: the
+/// `#version` of the target and, in a fragment shader, a float precision.
+fn chunk_prelude(source: Assembly, stage: Stage, settings: &Settings) -> Assembly {
+    if source.text().trim_start().starts_with("#version") {
+        return source;
+    }
+    let mut prelude = String::new();
+    if settings.compile.target == essl::Target::WebGl2 {
+        prelude.push_str("#version 300 es\n");
+    }
+    if stage == Stage::Fragment {
+        prelude.push_str("precision highp float;\n");
+    }
+    let Some((f, at)) = source.map_span(essl::source::Span::empty(0)) else {
+        return source;
+    };
+    let mut a = Assembly::default();
+    let own = a.file_index(&source.files()[f as usize]);
+    a.generated(&prelude, own, at.start as usize);
+    a.extend_from(&source, 0..source.text().len());
+    a
+}
+
+/// The codes a chunk does not report: what the shader that includes it supplies (the names it
+/// uses and declares elsewhere, `main`).
+const FREE_IN_A_CHUNK: [&str; 4] = [
+    "missing-main",
+    "undeclared-identifier",
+    "undeclared-function",
+    "unknown-type",
+];
 
 /// `source` with its `#include`s in place, where the settings follow them.
 fn includes(
@@ -372,12 +437,13 @@ fn finish_parts(
         .into_iter()
         .enumerate()
         .map(|(k, (part, shader))| {
-            let (assembly, diagnostics) = match part.assembly {
+            let (diagnostics, assembly) = match part.assembly {
                 Ok(a) => {
-                    let diagnostics = group(own, &a, shader.iter().flat_map(|s| &s.diagnostics));
-                    (a, diagnostics)
+                    let free = |d: &&Diagnostic| !(part.chunk && FREE_IN_A_CHUNK.contains(&d.code));
+                    let all = shader.iter().flat_map(|s| &s.diagnostics).filter(free);
+                    (group(own, &a, all), a)
                 }
-                Err(errors) => (Assembly::default(), group_in_files(own, errors)),
+                Err(errors) => (group_in_files(own, errors), Assembly::default()),
             };
             let mut checked = CheckedShader {
                 order: order + k,
@@ -392,9 +458,10 @@ fn finish_parts(
                 given: false,
                 settings: settings.clone(),
             };
-            if options.phase == Phase::Full {
+            if options.phase == Phase::Full && !part.chunk {
                 lint(&mut checked, settings, options.lints);
             }
+            checked.linted |= part.chunk;
             checked
         })
         .collect()

@@ -9,6 +9,9 @@
 //! exclude = ["vendor/**", "*.verbatim.frag"]
 //! # Folders `#include "FILE"` searches (relative to this file's folder), for `essl lint`.
 //! include = ["shaders/common"]
+//! # Files that are chunks — code to put into shaders, checked as a library (no `main`, names
+//! # free for the including shader to declare) — as globs relative to this file's folder.
+//! chunks = ["shaders/chunks/**"]
 //!
 //! # The stage of files whose extension does not tell it (`.glsl`), as globs relative to this
 //! # file's folder or matching a file name.
@@ -99,6 +102,8 @@ struct ConfigFile {
     #[serde(default)]
     include: Vec<PathBuf>,
     #[serde(default)]
+    chunks: Vec<String>,
+    #[serde(default)]
     stages: StagesFile,
 }
 
@@ -132,8 +137,11 @@ pub struct Config {
     pub exclude_patterns: Vec<String>,
     /// The `[stages]` patterns as written: vertex, then fragment.
     pub stage_patterns: [Vec<String>; 2],
+    /// The `chunks` patterns as written.
+    pub chunk_patterns: Vec<String>,
     exclude: Option<GlobSet>,
     stages: [Option<GlobSet>; 2],
+    chunks: Option<GlobSet>,
 }
 
 impl Config {
@@ -190,6 +198,7 @@ impl Config {
             })?;
         }
         let exclude = glob_set(&file.exclude, path)?;
+        let chunks = glob_set(&file.chunks, path)?;
         let stages = [
             glob_set(&file.stages.vertex, path)?,
             glob_set(&file.stages.fragment, path)?,
@@ -203,8 +212,10 @@ impl Config {
             include: file.include,
             exclude_patterns: file.exclude,
             stage_patterns: [file.stages.vertex, file.stages.fragment],
+            chunk_patterns: file.chunks,
             exclude,
             stages,
+            chunks,
         })
     }
 
@@ -224,6 +235,11 @@ impl Config {
     /// `essl.toml`; a pattern without `/` also matches a file name in any folder).
     pub fn excludes(&self, path: &Path) -> bool {
         self.matches(self.exclude.as_ref(), path)
+    }
+
+    /// Whether `path` matches a `chunks` pattern.
+    pub fn is_chunk(&self, path: &Path) -> bool {
+        self.matches(self.chunks.as_ref(), path)
     }
 
     /// The stage `[stages]` gives `path` (vertex patterns first), if a pattern matches.

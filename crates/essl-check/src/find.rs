@@ -28,6 +28,9 @@ pub struct Input {
     pub stage: Stage,
     /// Its text, where it is not read from `path` (standard input, an editor's buffer).
     pub text: Option<Arc<str>>,
+    /// Whether it is a chunk: code to put into shaders (`#pragma essl chunk`, essl.toml's
+    /// `chunks`, a `.glsl` file in an include folder), checked as a library.
+    pub chunk: bool,
 }
 
 /// A file that holds shaders inside it (an HTML page, a script), read and searched.
@@ -46,9 +49,10 @@ pub struct Host {
 }
 
 impl Host {
-    /// Reads the shaders of `text`, a file of kind `kind` at `path`.
+    /// Reads the shaders of `text`, a file of kind `kind` at `path` (what its literals import
+    /// is read beside it).
     pub fn new(path: PathBuf, kind: HostKind, text: String, stdin: bool) -> Host {
-        let embedded = extract::extract(kind, &text);
+        let embedded = Host::extract(&path, kind, &text);
         let file = Arc::new(SourceFile::new(path.display().to_string(), text));
         Host {
             path,
@@ -57,6 +61,12 @@ impl Host {
             stdin,
             embedded,
         }
+    }
+
+    /// The shaders in `text`, the text of a host file at `path`.
+    pub fn extract(path: &Path, kind: HostKind, text: &str) -> Vec<Embedded> {
+        let dir = path.parent().unwrap_or(Path::new(""));
+        extract::extract(kind, text, &crate::imports::DiskImports::new(dir))
     }
 
     /// How many of its shaders are checked.
@@ -284,9 +294,17 @@ impl Search<'_> {
             return Ok(());
         }
         let mut stage = self.stage_of(path, None, false);
+        let by_config = self
+            .configs
+            .for_file(path)
+            .is_ok_and(|s| s.config.is_chunk(path));
+        let mut chunk = by_config || (is_glsl(path) && self.in_include_folder(path));
         if stage.is_none() && (named || is_glsl(path)) {
             match read_source(path) {
-                Ok(text) => stage = self.stage_of(path, Some(&text), named),
+                Ok(text) => {
+                    stage = self.stage_of(path, Some(&text), named);
+                    chunk |= extract::chunk_pragma(&text);
+                }
                 Err(e) => {
                     self.found.errors.push(FindError::Io {
                         path: path.to_path_buf(),
@@ -296,18 +314,19 @@ impl Search<'_> {
                 }
             }
         }
+        // A chunk compiles alike in both stages unless something says which it is for.
+        let stage = stage.or(chunk.then_some(Stage::Vertex));
         match stage {
             Some(stage) => self.found.inputs.push(Input {
                 path: path.to_path_buf(),
                 stage,
                 text: None,
+                chunk,
             }),
             None if named => return Err(UsageError::NoStage(path.to_path_buf())),
-            None if is_glsl(path) && !self.in_include_folder(path) => {
-                self.found.errors.push(FindError::NoStage {
-                    path: path.to_path_buf(),
-                })
-            }
+            None if is_glsl(path) => self.found.errors.push(FindError::NoStage {
+                path: path.to_path_buf(),
+            }),
             None => {}
         }
         Ok(())
@@ -319,7 +338,14 @@ impl Search<'_> {
             self.host(Host::new(path, kind, text, stdin));
             return Ok(());
         }
-        let stage = self.stage_of(&path, Some(&text), true);
+        let chunk = extract::chunk_pragma(&text)
+            || self
+                .configs
+                .for_file(&path)
+                .is_ok_and(|s| s.config.is_chunk(&path));
+        let stage = self
+            .stage_of(&path, Some(&text), true)
+            .or(chunk.then_some(Stage::Vertex));
         let stage = match stage {
             Some(s) => s,
             None if stdin => return Err(UsageError::StdinStage),
@@ -329,12 +355,13 @@ impl Search<'_> {
             path,
             stage,
             text: Some(text.into()),
+            chunk,
         });
         Ok(())
     }
 
-    /// Whether `path` lies in an include folder of its settings: a file to include, not a
-    /// shader.
+    /// Whether `path` lies in an include folder of its settings: a file to include (a chunk),
+    /// not a shader.
     fn in_include_folder(&self, path: &Path) -> bool {
         let Ok(settings) = self.configs.for_file(path) else {
             return false;

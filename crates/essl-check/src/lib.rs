@@ -28,6 +28,7 @@ mod codes;
 pub mod config;
 pub mod extract;
 mod find;
+mod imports;
 mod include;
 mod pairs;
 mod read;

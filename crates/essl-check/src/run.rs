@@ -30,7 +30,7 @@ pub struct Run<R> {
 /// spans in it.
 type Pending = Vec<(PathBuf, Vec<Diagnostic>)>;
 
-/// What a unit includes, and the fixes it proposes there.
+/// What a unit includes and the fixes it proposes there.
 fn included(unit: &CheckedUnit, fix: FixMode) -> (HashSet<PathBuf>, Pending) {
     let mut paths = HashSet::new();
     let mut pending: Pending = Vec::new();
@@ -67,7 +67,8 @@ pub fn run<R: Send>(
     sink: &(dyn Fn(Unit, CheckedUnit) -> R + Sync),
 ) -> Run<R> {
     let units = check::units(found, options.link);
-    let checked = |files: &Files, list: &[usize]| -> Vec<(R, HashSet<PathBuf>, Pending)> {
+    type Checked<R> = (R, HashSet<PathBuf>, Pending, Vec<(PathBuf, String)>);
+    let checked = |files: &Files, list: &[usize]| -> Vec<Checked<R>> {
         let cx = Context {
             configs,
             files,
@@ -77,7 +78,13 @@ pub fn run<R: Send>(
             .map(|&i| {
                 let unit = check_unit(units[i], found, &cx);
                 let (paths, pending) = included(&unit, options.fix);
-                (sink(units[i], unit), paths, pending)
+                let own_fixed = unit
+                    .fixed
+                    .iter()
+                    .filter(|f| !f.stdin)
+                    .map(|f| (f.path.clone(), f.after.clone()))
+                    .collect();
+                (sink(units[i], unit), paths, pending, own_fixed)
             })
             .collect()
     };
@@ -85,24 +92,44 @@ pub fn run<R: Send>(
     let mut results = Vec::with_capacity(units.len());
     let mut includes = Vec::with_capacity(units.len());
     let mut pending = Vec::with_capacity(units.len());
-    for (r, i, p) in checked(files, &all) {
+    let mut own_fixed: Vec<(PathBuf, String)> = Vec::new();
+    for (r, i, p, o) in checked(files, &all) {
         results.push(r);
         includes.push(i);
         pending.push(p);
+        own_fixed.extend(o);
     }
+    // A unit's own files are fixed by the unit: what other units propose there is left to
+    // it, and the texts it wrote are what the units that include them read next.
+    let real = |p: &Path| std::fs::canonicalize(p).unwrap_or_else(|_| p.to_path_buf());
+    let own: HashSet<PathBuf> = found
+        .inputs
+        .iter()
+        .map(|i| real(&i.path))
+        .chain(found.hosts.iter().map(|h| real(&h.path)))
+        .collect();
     let mut fixed: HashMap<PathBuf, FixedFile> = HashMap::new();
     for _ in 0..MAX_FIX_ROUNDS {
-        let changed = fix_includes(files, &mut pending, options.fix, &mut fixed);
+        let mut changed = HashSet::new();
+        for (path, text) in std::mem::take(&mut own_fixed) {
+            files.give(path.clone(), text);
+            changed.insert(path);
+        }
+        for p in pending.iter_mut() {
+            p.retain(|(path, _)| !own.contains(&real(path)));
+        }
+        changed.extend(fix_includes(files, &mut pending, options.fix, &mut fixed));
         if changed.is_empty() {
             break;
         }
         let again: Vec<usize> = (0..units.len())
             .filter(|&i| includes[i].iter().any(|p| changed.contains(p)))
             .collect();
-        for (k, (r, inc, p)) in checked(files, &again).into_iter().enumerate() {
+        for (k, (r, inc, p, o)) in checked(files, &again).into_iter().enumerate() {
             results[again[k]] = r;
             includes[again[k]] = inc;
             pending[again[k]] = p;
+            own_fixed.extend(o);
         }
     }
     let mut fixed_includes: Vec<FixedFile> = fixed.into_values().collect();

@@ -73,7 +73,16 @@ impl Settings {
             let _ = rules.set(rule, *level);
         }
         let mut dirs = overrides.include_dirs.clone();
-        dirs.extend(config.include_dirs());
+        // essl.toml's folders are absolute (the file is found from a canonical path); written
+        // relative to the working folder where they are below it, included files are named
+        // as the walk names the files beside them.
+        let cwd = std::env::current_dir().ok();
+        dirs.extend(config.include_dirs().into_iter().map(|d| {
+            match cwd.as_deref().and_then(|c| d.strip_prefix(c).ok()) {
+                Some(rel) if !rel.as_os_str().is_empty() => rel.to_path_buf(),
+                _ => d,
+            }
+        }));
         let include = (overrides.includes || !dirs.is_empty()).then_some(dirs);
         Settings {
             deny_warnings: overrides.deny_warnings || config.deny_warnings,

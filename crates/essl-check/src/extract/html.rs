@@ -4,10 +4,10 @@
 
 use essl::Stage;
 
-use super::{js, Embedded};
+use super::{js, Embedded, Imports, Piece};
 
 /// The shaders in `page`, in the order they appear.
-pub fn extract(page: &str) -> Vec<Embedded> {
+pub fn extract(page: &str, imports: &dyn Imports) -> Vec<Embedded> {
     let lower = page.to_ascii_lowercase();
     let mut found = Vec::new();
     let mut at = 0;
@@ -44,7 +44,7 @@ pub fn extract(page: &str) -> Vec<Embedded> {
                 }
             }
             "" | "text/javascript" | "module" | "application/javascript" => {
-                found.extend(js::extract(&page[tag_end..body_end], tag_end));
+                found.extend(js::extract(&page[tag_end..body_end], tag_end, imports));
                 None
             }
             _ => None,
@@ -52,6 +52,8 @@ pub fn extract(page: &str) -> Vec<Embedded> {
         if let Some(stage) = stage {
             found.push(Embedded {
                 range: tag_end..body_end,
+                pieces: vec![Piece::Raw(tag_end..body_end)],
+                chunk: false,
                 stage,
                 name: id,
                 skip: None,
@@ -131,7 +133,7 @@ mod tests {
             <SCRIPT type='notjs' id=\"3d-fragment-shader\">#version 300 es\n</SCRIPT>\n\
             <script src=\"a.js\"></script>\n\
             <script>\nconst vs = `#version 300 es\nvoid main() {}`;\n</script>\n";
-        let found = extract(page);
+        let found = extract(page, &super::super::NoImports);
         assert_eq!(found.len(), 3, "{found:?}");
         assert_eq!(
             &page[found[0].range.clone()],

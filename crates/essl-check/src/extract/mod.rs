@@ -1,26 +1,36 @@
-//! Shaders kept inside other files: HTML `<script>` tags and JS/TS template literals.
+//! Shaders kept inside other files: HTML `<script>` tags, and JS/TS literals — template
+//! literals, strings, `+` chains and `[…].join('\n')` arrays — as JavaScript computes their
+//! value.
 //!
-//! Each shader found is an [`Embedded`]: its byte range in the host file (so diagnostics and
-//! fixes land on the host's own lines), its stage where the file tells it, and the name the
-//! host gives it (a tag's `id`, the variable a literal is assigned to), from which shaders are
-//! paired into programs ([`pairs`]). What cannot be checked as written — a template literal
-//! with `${…}` interpolations, a shader whose stage nothing tells — is kept with a [`Skip`]
-//! reason, so that a run reports it instead of dropping it.
+//! Each shader found is an [`Embedded`]: its text as [`Piece`]s of the host file (so that
+//! diagnostics and fixes land on the host's own lines, through escapes and `${…}`
+//! substitutions of constants), its stage where the file tells it, and the name the host gives
+//! it (a tag's `id`, the variable a literal is assigned to), from which shaders are paired into
+//! programs ([`pairs`]). What cannot be checked as written — a substitution whose value is
+//! known only at run time, a shader whose stage nothing tells — is kept with a [`Skip`] reason,
+//! so that a run reports it instead of dropping it. A tagged literal with no `main` is a
+//! *chunk*: code meant to be put into shaders, checked as a library.
 //!
 //! - [`html`]: `<script type="x-shader/x-vertex">` / `x-fragment`, `notjs` tags whose id ends in
-//!   `vertex-shader` / `fragment-shader`, and the template literals of the page's inline scripts;
-//! - [`js`]: template literals that start with `#version` or are tagged `glsl` / `/* glsl */`.
+//!   `vertex-shader` / `fragment-shader`, and the literals of the page's inline scripts;
+//! - [`js`]: literals whose value starts with `#version` or that are tagged `glsl` /
+//!   `/* glsl */`, with the constants and imports their substitutions name.
 
 mod html;
-mod js;
+pub(crate) mod js;
 mod stage;
 
 use std::ops::Range;
 use std::path::Path;
+use std::sync::Arc;
 
+use essl::source::SourceFile;
 use essl::Stage;
 
-pub use stage::stage_pragma;
+pub use js::Unknown;
+pub use js::{Imports, NoImports};
+
+pub use stage::{chunk_pragma, stage_pragma};
 
 /// What kind of file holds shaders inside it.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -45,9 +55,11 @@ impl HostKind {
 /// Why an embedded shader is not checked.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Skip {
-    /// A template literal with `${…}` interpolations: its text is known only when it runs.
+    /// A `${…}` substitution whose value is known only when the script runs (a call, a
+    /// variable, an import from a package).
     Interpolated,
-    /// A template literal with `\` escapes: its text is not what the file shows.
+    /// An escape sequence JavaScript rejects (an octal escape in a template, a lone
+    /// surrogate).
     Escapes,
     /// Nothing tells whether it is a vertex or a fragment shader.
     NoStage,
@@ -58,11 +70,10 @@ impl Skip {
     pub fn reason(self) -> &'static str {
         match self {
             Skip::Interpolated => {
-                "a template literal with `${…}` interpolations (its text is known only at run time)"
+                "a `${…}` substitution whose value is known only when the script runs (not a \
+                 constant of literals in the file or a file it imports)"
             }
-            Skip::Escapes => {
-                "a template literal with `\\` escapes (its text differs from the file's)"
-            }
+            Skip::Escapes => "an escape sequence that JavaScript rejects in this literal",
             Skip::NoStage => {
                 "nothing tells its stage: add `#pragma essl stage(vertex)` or `stage(fragment)`"
             }
@@ -70,11 +81,81 @@ impl Skip {
     }
 }
 
+/// A run of an embedded shader's text and the bytes of its host it comes from.
+#[derive(Clone, Debug)]
+pub enum Piece {
+    /// Host bytes as they are.
+    Raw(Range<usize>),
+    /// An escape sequence (or a `\r\n` a template reads as `\n`) at `raw`, standing for
+    /// `value`.
+    Cooked {
+        /// The bytes of the escape.
+        raw: Range<usize>,
+        /// What it stands for.
+        value: String,
+    },
+    /// Text no file holds (the separator of `[…].join(sep)`), placed at byte `at`.
+    Added {
+        /// The text.
+        text: String,
+        /// The host byte it is reported at.
+        at: usize,
+    },
+    /// Text from another file (a constant it imports), as pieces of that file.
+    From {
+        /// The file.
+        file: Arc<SourceFile>,
+        /// Its pieces.
+        pieces: Vec<Piece>,
+    },
+}
+
+impl PartialEq for Piece {
+    fn eq(&self, other: &Piece) -> bool {
+        match (self, other) {
+            (Piece::Raw(a), Piece::Raw(b)) => a == b,
+            (Piece::Cooked { raw: a, value: x }, Piece::Cooked { raw: b, value: y }) => {
+                a == b && x == y
+            }
+            (Piece::Added { text: a, at: x }, Piece::Added { text: b, at: y }) => a == b && x == y,
+            (Piece::From { file: a, pieces: x }, Piece::From { file: b, pieces: y }) => {
+                Arc::ptr_eq(a, b) && x == y
+            }
+            _ => false,
+        }
+    }
+}
+
+impl Eq for Piece {}
+
+/// The text `pieces` of `host` stand for.
+pub fn text_of(host: &str, pieces: &[Piece]) -> String {
+    let mut s = String::new();
+    push_text(host, pieces, &mut s);
+    s
+}
+
+fn push_text(host: &str, pieces: &[Piece], s: &mut String) {
+    for p in pieces {
+        match p {
+            Piece::Raw(r) => s.push_str(&host[r.clone()]),
+            Piece::Cooked { value, .. } => s.push_str(value),
+            Piece::Added { text, .. } => s.push_str(text),
+            Piece::From { file, pieces } => push_text(file.text(), pieces, s),
+        }
+    }
+}
+
 /// A shader inside a host file.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct Embedded {
-    /// Its text's byte range in the host file.
+    /// The byte range of the host that holds its text (from its first piece to its last).
     pub range: Range<usize>,
+    /// Its text, piece by piece.
+    pub pieces: Vec<Piece>,
+    /// Whether it is a chunk: code to put into shaders (a tagged literal with no `main`),
+    /// checked as a library.
+    pub chunk: bool,
     /// Its stage, where the host or the shader tells it.
     pub stage: Option<Stage>,
     /// The name the host gives it: a `<script>`'s `id`, or the variable or property a literal
@@ -84,19 +165,25 @@ pub struct Embedded {
     pub skip: Option<Skip>,
 }
 
-/// The shaders inside `text`, a file of kind `kind`, in the order they appear.
-pub fn extract(kind: HostKind, text: &str) -> Vec<Embedded> {
+/// The shaders inside `text`, a file of kind `kind`, in the order they appear; `imports`
+/// follows what the file's substitutions import from other files.
+pub fn extract(kind: HostKind, text: &str, imports: &dyn Imports) -> Vec<Embedded> {
     let mut found = match kind {
-        HostKind::Html => html::extract(text),
-        HostKind::Script => js::extract(text, 0),
+        HostKind::Html => html::extract(text, imports),
+        HostKind::Script => js::extract(text, 0, imports),
     };
     for e in &mut found {
         if e.skip.is_none() {
-            let body = &text[e.range.clone()];
-            e.stage = stage_pragma(body).or(e.stage).or_else(|| {
+            let body = text_of(text, &e.pieces);
+            let by_text = || {
                 let by_name = e.name.as_deref().and_then(stage::stage_from_name);
-                by_name.or_else(|| stage::stage_from_text(body))
-            });
+                by_name.or_else(|| stage::stage_from_text(&body))
+            };
+            e.stage = stage_pragma(&body).or(e.stage).or_else(by_text);
+            if e.stage.is_none() && e.chunk {
+                // A library of declarations compiles alike in both stages.
+                e.stage = Some(Stage::Vertex);
+            }
             if e.stage.is_none() {
                 e.skip = Some(Skip::NoStage);
             }
@@ -110,7 +197,7 @@ pub fn extract(kind: HostKind, text: &str) -> Vec<Embedded> {
 /// `vertex-shader-3d` + `fragment-shader-3d`), each key naming one shader of each stage; or,
 /// when the file holds exactly one vertex and one fragment shader, those two.
 pub fn pairs(found: &[Embedded]) -> Vec<(usize, usize)> {
-    let checked = || (0..found.len()).filter(|&i| found[i].skip.is_none());
+    let checked = || (0..found.len()).filter(|&i| found[i].skip.is_none() && !found[i].chunk);
     let of = |stage: Stage| checked().filter(move |&i| found[i].stage == Some(stage));
     let (vs, fs): (Vec<usize>, Vec<usize>) =
         (of(Stage::Vertex).collect(), of(Stage::Fragment).collect());
@@ -145,6 +232,8 @@ mod tests {
     fn e(name: &str, stage: Stage) -> Embedded {
         Embedded {
             range: 0..0,
+            pieces: Vec::new(),
+            chunk: false,
             stage: Some(stage),
             name: Some(name.to_string()),
             skip: None,

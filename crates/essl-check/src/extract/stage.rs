@@ -19,6 +19,20 @@ pub fn stage_pragma(text: &str) -> Option<Stage> {
     })
 }
 
+/// Whether a `#pragma essl chunk` line marks the text as a chunk: code to put into shaders,
+/// checked as a library.
+pub fn chunk_pragma(text: &str) -> bool {
+    text.contains("chunk")
+        && text.lines().any(|line| {
+            let words: Vec<&str> = line
+                .trim_start()
+                .strip_prefix('#')
+                .map(|r| r.split_whitespace().collect())
+                .unwrap_or_default();
+            words == ["pragma", "essl", "chunk"]
+        })
+}
+
 /// The words of a name, lower case: `skyboxVS` → `skybox`, `vs`; `vertex-shader-3d` →
 /// `vertex`, `shader`, `3d`.
 fn words(name: &str) -> Vec<String> {
@@ -113,6 +127,12 @@ mod tests {
         assert_eq!(pair_key("skyboxVS"), pair_key("skyboxFS"));
         assert_eq!(pair_key("vertex-shader-3d"), "3d");
         assert_eq!(pair_key("fragmentShaderSource"), "");
+    }
+
+    #[test]
+    fn chunk() {
+        assert!(chunk_pragma("float f();\n  # pragma  essl chunk\n"));
+        assert!(!chunk_pragma("// chunk\n#pragma essl chunky\n"));
     }
 
     #[test]

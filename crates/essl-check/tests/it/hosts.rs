@@ -50,3 +50,114 @@ fn a_js_file_and_a_shader_file_in_one_run() {
     let run = check(dir.path(), Overrides::default(), CheckOptions::default());
     assert_eq!(lines(dir.path(), &run), ["app.js:4:26 missing-semicolon"]);
 }
+
+/// Where a diagnostic lands in a script, as `LINE:COL code`, and the fixed script.
+fn script(text: &str) -> (Vec<String>, Option<String>) {
+    let dir = tempfile::tempdir().unwrap();
+    write(dir.path(), &[("s.js", text)]);
+    let run = check(dir.path(), Overrides::default(), CheckOptions::default());
+    let found = lines(dir.path(), &run)
+        .into_iter()
+        .map(|l| l.trim_start_matches("s.js:").to_string())
+        .collect();
+    let fixing = CheckOptions {
+        fix: essl_check::FixMode::Certain,
+        ..CheckOptions::default()
+    };
+    let fixed = check(dir.path(), Overrides::default(), fixing);
+    let after = fixed.results[0].fixed.first().map(|f| f.after.clone());
+    (found, after)
+}
+
+#[test]
+fn after_a_line_continuation() {
+    let text = "export default `\\\n#version 300 es\nprecision highp float;\nout vec4 c;\nvoid main() { c = vec4(1) }`;\n";
+    let (found, fixed) = script(text);
+    assert_eq!(found, ["5:26 missing-semicolon"]);
+    assert_eq!(fixed.unwrap(), text.replace("vec4(1) }", "vec4(1); }"));
+}
+
+#[test]
+fn after_a_unicode_escape() {
+    // `\u{41}` is `A`: the error after it is placed past the escape's six bytes.
+    let text = "const fs = `#version 300 es\nprecision highp float;\nout vec4 c;\nvoid main() { float \\u{41} = 1.0; c = vec4(B); }`;\n";
+    let (found, fixed) = script(text);
+    assert_eq!(found, ["4:44 undeclared-identifier"]);
+    assert_eq!(fixed, None, "nothing to fix: the file stays as it is");
+}
+
+#[test]
+fn escaped_line_breaks_in_one_line() {
+    let text = "const fs = `#version 300 es\\nprecision highp float;\\nout vec4 c;\\nvoid main() { c = vec4(1) }`;\n";
+    let (found, fixed) = script(text);
+    assert_eq!(found, ["1:92 missing-semicolon"]);
+    assert_eq!(fixed.unwrap(), text.replace("vec4(1) }", "vec4(1); }"));
+}
+
+#[test]
+fn inside_a_joined_array() {
+    let text = "const fs = [\n  '#version 300 es',\n  'precision highp float;',\n  'out vec4 c;',\n  'void main() { c = vec4(1) }',\n].join('\\n');\n";
+    let (found, fixed) = script(text);
+    assert_eq!(found, ["5:29 missing-semicolon"]);
+    assert_eq!(fixed.unwrap(), text.replace("vec4(1) }", "vec4(1); }"));
+}
+
+#[test]
+fn a_fix_inside_an_escape_is_refused_and_says_so() {
+    // `\u00a0` is a no-break space; its fix would replace what the escape stands for.
+    let text = r#"const fs = `#version 300 es\nprecision highp float;\nout vec4 c;\nvoid main() {\u00a0c = vec4(1.0); }`;"#;
+    let dir = tempfile::tempdir().unwrap();
+    write(dir.path(), &[("s.js", text)]);
+    let run = check(dir.path(), Overrides::default(), CheckOptions::default());
+    let s = &run.results[0].shaders[0];
+    let (_, d) = s.all().next().unwrap();
+    assert_eq!(d.code, "no-break-space");
+    assert!(d.fix.is_none());
+    assert!(
+        d.notes.iter().any(|n| n.contains("escape")),
+        "{:?}",
+        d.notes
+    );
+    // An insertion just before an escape edits the file: `;` before `\n`.
+    let text = r#"const fs = `#version 300 es\nprecision highp float;\nout vec4 c\nvoid main() { c = vec4(1.0); }`;"#;
+    let (found, fixed) = script(text);
+    assert_eq!(found, ["1:64 missing-semicolon"]);
+    assert!(fixed.unwrap().contains(r"out vec4 c;\nvoid"));
+}
+
+#[test]
+fn a_constant_and_an_imported_chunk_are_followed() {
+    let dir = tempfile::tempdir().unwrap();
+    write(
+        dir.path(),
+        &[
+            ("main.glsl.ts", "export default `\\\nvoid main() { c = vec4(K) }\n`;\n"),
+            (
+                "layer.ts",
+                "import main from './main.glsl';\nconst HEAD = `precision highp float;`;\nexport const fs = `\\\n#version 300 es\n${HEAD}\nconst float K = 1.0;\nout vec4 c;\n${main}`;\n",
+            ),
+        ],
+    );
+    let run = check(dir.path(), Overrides::default(), CheckOptions::default());
+    assert_eq!(
+        lines(dir.path(), &run),
+        ["main.glsl.ts:2:26 missing-semicolon"]
+    );
+}
+
+#[test]
+fn a_chunk_is_checked_as_a_library() {
+    let dir = tempfile::tempdir().unwrap();
+    write(
+        dir.path(),
+        &[(
+            "module.js",
+            "export const vs = /* glsl */ `\\\nuniform projectUniforms { mat4 m; } project;\nvec4 project_position(vec4 p) { return project.m * p * fp32_scale(p.w); }\nfloat broken() { return 1.0 }\n`;\n",
+        )],
+    );
+    let run = check(dir.path(), Overrides::default(), CheckOptions::default());
+    assert_eq!(
+        lines(dir.path(), &run),
+        ["module.js:4:28 missing-semicolon"]
+    );
+}

@@ -1,0 +1,108 @@
+//! Following what a script's shader substitutions import: `${main}` where `main` is
+//! `import main from './vertex-main.glsl'` is the default export of
+//! `vertex-main.glsl.ts`, read from disk beside the importing script (relative specifiers
+//! only; a package's modules are a preset's business), each script read once per host.
+
+use std::cell::RefCell;
+use std::collections::HashMap;
+use std::path::{Path, PathBuf};
+use std::rc::Rc;
+use std::sync::Arc;
+
+use essl::source::SourceFile;
+
+use crate::extract::js::{self, Consts, Unknown};
+use crate::extract::{Imports, Piece};
+use crate::read::read_source;
+
+/// A script read for its exports.
+struct Script {
+    file: Arc<SourceFile>,
+    consts: Consts,
+}
+
+type Cache = Rc<RefCell<HashMap<PathBuf, Option<Rc<Script>>>>>;
+
+/// The imports of the scripts in one folder, read from disk.
+pub struct DiskImports {
+    dir: PathBuf,
+    cache: Cache,
+}
+
+/// The extensions tried after a specifier that names no file (`./x.glsl` → `./x.glsl.ts`).
+const EXTENSIONS: [&str; 8] = [".ts", ".js", ".mjs", ".tsx", ".jsx", ".mts", ".cjs", ".cts"];
+
+impl DiskImports {
+    /// Imports relative to `dir`, the importing script's folder.
+    pub fn new(dir: &Path) -> DiskImports {
+        DiskImports {
+            dir: dir.to_path_buf(),
+            cache: Rc::default(),
+        }
+    }
+
+    /// The file a relative specifier names, as a bundler resolves it.
+    fn resolve(&self, from: &str) -> Option<PathBuf> {
+        let base = self.dir.join(from);
+        if base.is_file() {
+            return Some(base);
+        }
+        let name = base.file_name()?.to_string_lossy().into_owned();
+        let with = |ext: &str| base.with_file_name(format!("{name}{ext}"));
+        EXTENSIONS
+            .iter()
+            .map(|e| with(e))
+            .chain(EXTENSIONS.iter().map(|e| base.join(format!("index{e}"))))
+            .find(|p| p.is_file())
+    }
+
+    fn script(&self, path: &Path) -> Option<Rc<Script>> {
+        if let Some(s) = self.cache.borrow().get(path) {
+            return s.clone();
+        }
+        let script = read_source(path).ok().map(|text| {
+            let consts = js::consts_of(&text);
+            Rc::new(Script {
+                file: Arc::new(SourceFile::new(path.display().to_string(), text)),
+                consts,
+            })
+        });
+        self.cache
+            .borrow_mut()
+            .insert(path.to_path_buf(), script.clone());
+        script
+    }
+}
+
+impl Imports for DiskImports {
+    fn import(
+        &self,
+        from: &str,
+        name: &str,
+        member: &str,
+        depth: usize,
+    ) -> Result<Vec<Piece>, Unknown> {
+        let unknown = || Unknown::Name(format!("{name} (from `{from}`)"));
+        if !from.starts_with('.') {
+            return Err(unknown());
+        }
+        let path = self.resolve(from).ok_or_else(unknown)?;
+        let script = self.script(&path).ok_or_else(unknown)?;
+        let there = DiskImports {
+            dir: path.parent().map(Path::to_path_buf).unwrap_or_default(),
+            cache: self.cache.clone(),
+        };
+        let pieces = js::exported(
+            script.file.text(),
+            &script.consts,
+            &there,
+            name,
+            member,
+            depth + 1,
+        )?;
+        Ok(vec![Piece::From {
+            file: script.file.clone(),
+            pieces,
+        }])
+    }
+}
