@@ -298,6 +298,13 @@ impl Assembly {
         })
     }
 
+    /// Whether byte `offset` of the text is text no file holds (a library's prelude, a join's
+    /// separator, a chunk's assumed `#version`).
+    pub fn is_generated(&self, offset: u32) -> bool {
+        self.piece_at(offset)
+            .is_some_and(|i| generated(self.pieces[i].kind))
+    }
+
     /// Whether the text is exactly one file's text from its start: no map is needed.
     pub fn is_whole_file(&self) -> bool {
         self.files.len() == 1

@@ -3,6 +3,7 @@
 //! range, `#include`s in place), apply `--fix` in rounds to the unit's own file, compile, lint,
 //! link, and move every diagnostic onto the file the author wrote.
 
+use std::path::PathBuf;
 use std::sync::Arc;
 
 use essl::diagnostic::{apply_fixes, Applicability, Diagnostic};
@@ -10,9 +11,11 @@ use essl::source::SourceFile;
 use essl::{Shader, Stage};
 
 use crate::assembly::Assembly;
+use crate::codes::CheckCode;
 use crate::extract::{self, Embedded, Piece};
 use crate::find::{Found, Host, Input};
 use crate::include::{self, InFile};
+use crate::preset::{self, Assembled, Prepared};
 use crate::read::Files;
 use crate::result::{
     CheckedProgram, CheckedShader, CheckedUnit, FileDiagnostics, FixedFile, ProgramDiagnostic,
@@ -117,6 +120,9 @@ pub fn units(found: &Found, link: bool) -> Vec<Unit> {
 
 /// One shader of a unit, assembled but not compiled yet.
 struct Part {
+    /// The file it lies in, where that is not the unit's own (a shader a preset's program
+    /// takes from another file).
+    own: Option<(PathBuf, Arc<SourceFile>)>,
     stage: Stage,
     name: Option<String>,
     embedded_at: Option<u32>,
@@ -131,6 +137,7 @@ pub(crate) struct Context<'a> {
     pub configs: &'a Configs,
     pub files: &'a Files,
     pub options: CheckOptions,
+    pub prepared: &'a Prepared,
 }
 
 /// Checks one unit of what `found` holds.
@@ -185,9 +192,10 @@ fn single(input: &Input, order: usize, cx: &Context) -> CheckedUnit {
     let make = |file: &Arc<SourceFile>| {
         let mut source = Assembly::whole(file.clone());
         if input.chunk {
-            source = chunk_prelude(source, input.stage, &settings);
+            source = chunk_prelude(source, input.stage, &settings, &[]);
         }
         vec![Part {
+            own: None,
             stage: input.stage,
             name: None,
             embedded_at: None,
@@ -214,28 +222,40 @@ fn single(input: &Input, order: usize, cx: &Context) -> CheckedUnit {
     unit
 }
 
-/// The shaders of a host file, and the programs it makes plain.
+/// The shaders of a host file, and the programs it makes plain (or that a preset assembles
+/// from its code).
 fn host(h: &Host, order: usize, cx: &Context) -> CheckedUnit {
     let Ok(settings) = cx.configs.for_file(&h.path) else {
         return CheckedUnit::default();
     };
+    let k = preset::key(&h.path);
+    let prepared = cx.prepared;
+    let programs = prepared.programs.get(&k).map_or(&[][..], Vec::as_slice);
     let embedded_of = |file: &Arc<SourceFile>| -> Vec<Embedded> {
-        if Arc::ptr_eq(file, &h.file) {
+        let all = if Arc::ptr_eq(file, &h.file) {
             h.embedded.clone()
         } else {
             Host::extract(&h.path, h.kind, file.text())
-        }
+        };
+        // A shader a preset's program holds is checked with the program.
+        all.into_iter()
+            .filter(|e| !prepared.claimed.contains(&(k.clone(), e.literal)))
+            .collect()
     };
     let make = |file: &Arc<SourceFile>| -> Vec<Part> {
-        embedded_of(file)
+        let mut parts: Vec<Part> = embedded_of(file)
             .into_iter()
             .filter_map(|e| {
                 let stage = e.stage.filter(|_| e.skip.is_none())?;
-                let mut source = from_pieces(file, &e.pieces);
-                if e.chunk {
-                    source = chunk_prelude(source, stage, &settings);
-                }
+                let source = match prepared.lone.get(&(k.clone(), e.literal)) {
+                    Some(wrap) => wrap.assembly(),
+                    None if e.chunk => {
+                        chunk_prelude(from_pieces(file, &e.pieces), stage, &settings, &e.defines)
+                    }
+                    None => from_pieces(file, &e.pieces),
+                };
                 Some(Part {
+                    own: None,
                     stage,
                     name: e.name,
                     embedded_at: Some(e.range.start as u32),
@@ -243,19 +263,38 @@ fn host(h: &Host, order: usize, cx: &Context) -> CheckedUnit {
                     assembly: includes(source, &h.path, &settings, cx.files),
                 })
             })
-            .collect()
+            .collect();
+        if let Some(e) = prepared.failed.get(&k) {
+            parts.push(problem(
+                file,
+                0,
+                CheckCode::PresetUnavailable,
+                e.to_string(),
+            ));
+        }
+        for p in programs {
+            parts.extend(program_parts(p, file));
+        }
+        parts
     };
-    let (file, parts, applied) = fix_rounds(h.file.clone(), &make, &settings, cx.options);
+    // The text a preset's library assembles is made once a run: a host it assembles is not
+    // fixed in rounds.
+    let fixing = programs.is_empty() && !prepared.lone.keys().any(|(host, _)| *host == k);
+    let options = CheckOptions {
+        fix: if fixing { cx.options.fix } else { FixMode::Off },
+        ..cx.options
+    };
+    let (file, parts, applied) = fix_rounds(h.file.clone(), &make, &settings, options);
     let mut unit = CheckedUnit::default();
     if applied > 0 {
         unit.fixed
             .push(fixed_file(&h.path, &h.file, &file, applied, h.stdin));
     }
-    let pairs = if cx.options.link {
-        let found = embedded_of(&file);
-        let checked: Vec<usize> = (0..found.len())
-            .filter(|&k| found[k].skip.is_none() && found[k].stage.is_some())
-            .collect();
+    let found = embedded_of(&file);
+    let checked: Vec<usize> = (0..found.len())
+        .filter(|&k| found[k].skip.is_none() && found[k].stage.is_some())
+        .collect();
+    let mut pairs: Vec<(usize, usize)> = if cx.options.link {
         // Chunks are parts too, but never paired (extract::pairs leaves them out).
         let part_of = |k: usize| checked.iter().position(|&c| c == k);
         extract::pairs(&found)
@@ -265,6 +304,14 @@ fn host(h: &Host, order: usize, cx: &Context) -> CheckedUnit {
     } else {
         Vec::new()
     };
+    let mut next = checked.len() + prepared.failed.contains_key(&k) as usize;
+    for p in programs {
+        let n = program_parts(p, &file).len();
+        if n == 2 && cx.options.link {
+            pairs.push((next, next + 1));
+        }
+        next += n;
+    }
     unit.shaders = finish_parts(parts, &h.path, order, &file, &settings, cx.options);
     for s in &mut unit.shaders {
         s.given = h.stdin;
@@ -273,6 +320,64 @@ fn host(h: &Host, order: usize, cx: &Context) -> CheckedUnit {
         unit.programs.push(link(&unit.shaders, v, f));
     }
     unit
+}
+
+/// The shaders of a program a preset assembled, or the error that it could not be.
+fn program_parts(p: &Assembled, host: &Arc<SourceFile>) -> Vec<Part> {
+    if let Some(e) = &p.error {
+        let message = format!("luma.gl cannot assemble this program: {e}");
+        return vec![problem(host, p.object, CheckCode::PresetAssembly, message)];
+    }
+    [(&p.vs, Stage::Vertex), (&p.fs, Stage::Fragment)]
+        .into_iter()
+        .filter_map(|(w, stage)| {
+            let w = w.as_ref()?;
+            let a = w.assembly();
+            let at = a.map_span(essl::source::Span::empty(a.text().len() as u32));
+            let file = w.literal.file.clone();
+            let start = preset_start(w);
+            let _ = at;
+            Some(Part {
+                own: Some((PathBuf::from(file.name()), file)),
+                stage,
+                name: None,
+                embedded_at: Some(start),
+                chunk: false,
+                assembly: Ok(a),
+            })
+        })
+        .collect()
+}
+
+/// Where a wrapped literal's text starts in its file.
+fn preset_start(w: &preset::Wrap) -> u32 {
+    w.literal
+        .pieces
+        .iter()
+        .find_map(|p| match p {
+            Piece::Raw(r) | Piece::Cooked { raw: r, .. } => Some(r.start as u32),
+            _ => None,
+        })
+        .unwrap_or(w.literal.at as u32)
+}
+
+/// A part that is only an error at byte `at` of `file`.
+fn problem(file: &Arc<SourceFile>, at: usize, code: CheckCode, message: String) -> Part {
+    let span = essl::source::Span::empty(at as u32);
+    let d = Diagnostic::new(
+        essl::diagnostic::Severity::Error,
+        code.as_str(),
+        message,
+        span,
+    );
+    Part {
+        own: None,
+        stage: Stage::Vertex,
+        name: None,
+        embedded_at: Some(at as u32),
+        chunk: false,
+        assembly: Err(vec![(file.clone(), d)]),
+    }
 }
 
 fn fixed_file(
@@ -293,7 +398,7 @@ fn fixed_file(
 
 /// The text of an embedded shader: its pieces of `file` (and of the files its substitutions
 /// import).
-fn from_pieces(file: &Arc<SourceFile>, pieces: &[Piece]) -> Assembly {
+pub(crate) fn from_pieces(file: &Arc<SourceFile>, pieces: &[Piece]) -> Assembly {
     fn push(a: &mut Assembly, f: u32, pieces: &[Piece]) {
         for p in pieces {
             match p {
@@ -314,17 +419,26 @@ fn from_pieces(file: &Arc<SourceFile>, pieces: &[Piece]) -> Assembly {
 }
 
 /// A chunk with what a shader that includes it has before it, where it does not say: the
-/// `#version` of the target and, in a fragment shader, a float precision.
-fn chunk_prelude(source: Assembly, stage: Stage, settings: &Settings) -> Assembly {
+/// `#version` of the target (unless the chunk is written in GLSL ES 1.00), a float precision
+/// in a fragment shader, and the macros its module defines for it.
+fn chunk_prelude(
+    source: Assembly,
+    stage: Stage,
+    settings: &Settings,
+    defines: &[(String, String)],
+) -> Assembly {
     if source.text().trim_start().starts_with("#version") {
         return source;
     }
     let mut prelude = String::new();
-    if settings.compile.target == essl::Target::WebGl2 {
+    if settings.compile.target == essl::Target::WebGl2 && !es100_idioms(source.text()) {
         prelude.push_str("#version 300 es\n");
     }
     if stage == Stage::Fragment {
         prelude.push_str("precision highp float;\n");
+    }
+    for (name, value) in defines {
+        prelude.push_str(&format!("#define {name} {value}\n"));
     }
     let Some((f, at)) = source.map_span(essl::source::Span::empty(0)) else {
         return source;
@@ -334,6 +448,44 @@ fn chunk_prelude(source: Assembly, stage: Stage, settings: &Settings) -> Assembl
     a.generated(&prelude, own, at.start as usize);
     a.extend_from(&source, 0..source.text().len());
     a
+}
+
+/// Whether a chunk is written in GLSL ES 1.00: it uses `attribute`, `varying`, `texture2D`
+/// or `gl_FragColor`, and nothing only GLSL ES 3.00 has (`in`/`out` declarations, `layout`,
+/// `texture(`).
+fn es100_idioms(text: &str) -> bool {
+    let word = |w: &str| {
+        text.match_indices(w).any(|(i, _)| {
+            let before = text[..i].chars().next_back();
+            let after = text[i + w.len()..].chars().next();
+            !before.is_some_and(|c| c.is_alphanumeric() || c == '_')
+                && !after.is_some_and(|c| c.is_alphanumeric() || c == '_')
+        })
+    };
+    let es100 = [
+        "attribute",
+        "varying",
+        "texture2D",
+        "textureCube",
+        "gl_FragColor",
+    ];
+    let declares_300 = text.lines().any(|l| {
+        let l = l.trim_start();
+        ["in ", "out ", "flat ", "layout", "centroid "]
+            .iter()
+            .any(|p| l.starts_with(p))
+    });
+    es100.iter().any(|w| word(w))
+        && !declares_300
+        && !text.contains("texture(")
+        && !text.contains("texelFetch")
+}
+
+/// Whether a diagnostic is the author's to see: a lint finding inside code a library adds
+/// (a luma.gl module, three.js's prelude) is the library's, not reported; an error there is,
+/// since the program does not compile.
+fn shown(a: &Assembly, d: &Diagnostic) -> bool {
+    d.is_error() || essl_lint::rule(d.code).is_none() || !a.is_generated(d.span.start)
 }
 
 /// The codes a chunk does not report: what the shader that includes it supplies (the names it
@@ -437,11 +589,15 @@ fn finish_parts(
         .into_iter()
         .enumerate()
         .map(|(k, (part, shader))| {
+            let (path, own) = match &part.own {
+                Some((p, f)) => (p.as_path(), f),
+                None => (path, own),
+            };
             let (diagnostics, assembly) = match part.assembly {
                 Ok(a) => {
                     let free = |d: &&Diagnostic| !(part.chunk && FREE_IN_A_CHUNK.contains(&d.code));
                     let all = shader.iter().flat_map(|s| &s.diagnostics).filter(free);
-                    (group(own, &a, all), a)
+                    (group(own, &a, all.filter(|d| shown(&a, d))), a)
                 }
                 Err(errors) => (group_in_files(own, errors), Assembly::default()),
             };
@@ -487,7 +643,11 @@ pub(crate) fn lint(checked: &mut CheckedShader, settings: &Settings, lints: bool
         return;
     }
     let own = checked.file().clone();
-    let more = group(&own, &checked.assembly, found.iter());
+    let more = group(
+        &own,
+        &checked.assembly,
+        found.iter().filter(|d| shown(&checked.assembly, d)),
+    );
     for g in more {
         match checked
             .diagnostics

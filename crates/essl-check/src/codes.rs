@@ -14,6 +14,10 @@ pub enum CheckCode {
     IncludeTooDeep,
     /// An included file exists but cannot be read.
     IncludeUnreadable,
+    /// A preset's library could not be read (not installed, no Node.js).
+    PresetUnavailable,
+    /// A preset's library refused to assemble a program.
+    PresetAssembly,
 }
 
 impl CheckCode {
@@ -23,6 +27,8 @@ impl CheckCode {
         CheckCode::IncludeCycle,
         CheckCode::IncludeTooDeep,
         CheckCode::IncludeUnreadable,
+        CheckCode::PresetUnavailable,
+        CheckCode::PresetAssembly,
     ];
 
     /// The code's kebab-case name.
@@ -32,6 +38,8 @@ impl CheckCode {
             CheckCode::IncludeCycle => "include-cycle",
             CheckCode::IncludeTooDeep => "include-too-deep",
             CheckCode::IncludeUnreadable => "include-unreadable",
+            CheckCode::PresetUnavailable => "preset-unavailable",
+            CheckCode::PresetAssembly => "preset-assembly",
         }
     }
 
@@ -65,6 +73,19 @@ impl CheckCode {
             CheckCode::IncludeUnreadable => {
                 "An included file exists but cannot be read: it is larger than 16 MiB, is not \
                  UTF-8, or may not be read.\n"
+            }
+            CheckCode::PresetUnavailable => {
+                "A preset (`preset = \"luma\"` in essl.toml, `--preset`) reads the library it \
+                 follows from the project's `node_modules`, with Node.js: the package is not \
+                 installed at or above the file, or Node.js could not be started. The shaders \
+                 are then checked as written, without what the library adds.\n"
+            }
+            CheckCode::PresetAssembly => {
+                "The preset's library refused to assemble the program, as it would at run \
+                 time: luma.gl throws for a shader whose first line is not `#version 300 es` \
+                 (it drops that line), for an unknown module, or for a uniform block whose \
+                 members are not in the order of the module's `uniformTypes`. The message is \
+                 luma.gl's.\n"
             }
         }
     }

@@ -9,6 +9,8 @@
 //! exclude = ["vendor/**", "*.verbatim.frag"]
 //! # Folders `#include "FILE"` searches (relative to this file's folder), for `essl lint`.
 //! include = ["shaders/common"]
+//! # A library whose way of assembling shaders to follow: "luma" (luma.gl, deck.gl).
+//! preset = "luma"
 //! # Files that are chunks — code to put into shaders, checked as a library (no `main`, names
 //! # free for the including shader to declare) — as globs relative to this file's folder.
 //! chunks = ["shaders/chunks/**"]
@@ -68,6 +70,14 @@ pub enum ConfigError {
         /// The value given.
         target: String,
     },
+    /// `preset` names no preset essl has.
+    #[error("{}: preset `{preset}` is not one essl has (it has: luma)", .path.display())]
+    Preset {
+        /// The file.
+        path: PathBuf,
+        /// The value given.
+        preset: String,
+    },
     /// A `[rules]` key that is no rule, or a level that is not allow/warn/deny.
     #[error("{}: [rules] {message}", .path.display())]
     Rule {
@@ -103,6 +113,7 @@ struct ConfigFile {
     include: Vec<PathBuf>,
     #[serde(default)]
     chunks: Vec<String>,
+    preset: Option<String>,
     #[serde(default)]
     stages: StagesFile,
 }
@@ -139,6 +150,8 @@ pub struct Config {
     pub stage_patterns: [Vec<String>; 2],
     /// The `chunks` patterns as written.
     pub chunk_patterns: Vec<String>,
+    /// `preset`: the library whose way of assembling shaders to follow.
+    pub preset: Option<crate::preset::Preset>,
     exclude: Option<GlobSet>,
     stages: [Option<GlobSet>; 2],
     chunks: Option<GlobSet>,
@@ -199,6 +212,16 @@ impl Config {
         }
         let exclude = glob_set(&file.exclude, path)?;
         let chunks = glob_set(&file.chunks, path)?;
+        let preset =
+            match file.preset.as_deref() {
+                None => None,
+                Some(name) => Some(crate::preset::Preset::from_name(name).ok_or_else(|| {
+                    ConfigError::Preset {
+                        path: path.to_path_buf(),
+                        preset: name.to_string(),
+                    }
+                })?),
+            };
         let stages = [
             glob_set(&file.stages.vertex, path)?,
             glob_set(&file.stages.fragment, path)?,
@@ -213,6 +236,7 @@ impl Config {
             exclude_patterns: file.exclude,
             stage_patterns: [file.stages.vertex, file.stages.fragment],
             chunk_patterns: file.chunks,
+            preset,
             exclude,
             stages,
             chunks,

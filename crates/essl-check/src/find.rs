@@ -384,9 +384,16 @@ impl Search<'_> {
         }
     }
 
-    /// A host file's shaders, with a note for each one not checked.
+    /// A host file's shaders, with a note for each one not checked. A script with none is
+    /// kept where a preset applies and it may name a program (its shaders in other files).
     fn host(&mut self, host: Host) {
-        if host.embedded.is_empty() {
+        let programs = host.kind == HostKind::Script
+            && (host.file.text().contains("modules") || host.file.text().contains("getShaders"))
+            && self
+                .configs
+                .for_file(&host.path)
+                .is_ok_and(|s| s.preset.is_some());
+        if host.embedded.is_empty() && !programs {
             return;
         }
         for e in &host.embedded {

@@ -16,9 +16,13 @@ use crate::extract::{Imports, Piece};
 use crate::read::read_source;
 
 /// A script read for its exports.
-struct Script {
-    file: Arc<SourceFile>,
-    consts: Consts,
+pub(crate) struct Script {
+    /// Its path.
+    pub path: PathBuf,
+    /// Its text.
+    pub file: Arc<SourceFile>,
+    /// Its top-level names.
+    pub consts: Consts,
 }
 
 type Cache = Rc<RefCell<HashMap<PathBuf, Option<Rc<Script>>>>>;
@@ -41,8 +45,16 @@ impl DiskImports {
         }
     }
 
+    /// The imports of a script in `dir` that share this one's cache of scripts read.
+    pub(crate) fn at(&self, dir: &Path) -> DiskImports {
+        DiskImports {
+            dir: dir.to_path_buf(),
+            cache: self.cache.clone(),
+        }
+    }
+
     /// The file a relative specifier names, as a bundler resolves it.
-    fn resolve(&self, from: &str) -> Option<PathBuf> {
+    pub(crate) fn resolve(&self, from: &str) -> Option<PathBuf> {
         let base = self.dir.join(from);
         if base.is_file() {
             return Some(base);
@@ -56,13 +68,28 @@ impl DiskImports {
             .find(|p| p.is_file())
     }
 
-    fn script(&self, path: &Path) -> Option<Rc<Script>> {
-        if let Some(s) = self.cache.borrow().get(path) {
+    /// Puts a script whose text is already read (a host file) in the cache, so that its
+    /// literals are named by the same file wherever they are met.
+    pub(crate) fn add(&self, path: &Path, file: Arc<SourceFile>) {
+        let consts = js::consts_of(file.text());
+        let script = Rc::new(Script {
+            path: path.to_path_buf(),
+            file,
+            consts,
+        });
+        self.cache.borrow_mut().insert(real(path), Some(script));
+    }
+
+    /// The script at `path`, read once.
+    pub(crate) fn script(&self, path: &Path) -> Option<Rc<Script>> {
+        let key = real(path);
+        if let Some(s) = self.cache.borrow().get(&key) {
             return s.clone();
         }
         let script = read_source(path).ok().map(|text| {
             let consts = js::consts_of(&text);
             Rc::new(Script {
+                path: path.to_path_buf(),
                 file: Arc::new(SourceFile::new(path.display().to_string(), text)),
                 consts,
             })
@@ -88,10 +115,7 @@ impl Imports for DiskImports {
         }
         let path = self.resolve(from).ok_or_else(unknown)?;
         let script = self.script(&path).ok_or_else(unknown)?;
-        let there = DiskImports {
-            dir: path.parent().map(Path::to_path_buf).unwrap_or_default(),
-            cache: self.cache.clone(),
-        };
+        let there = self.at(path.parent().unwrap_or(Path::new("")));
         let pieces = js::exported(
             script.file.text(),
             &script.consts,
@@ -105,4 +129,8 @@ impl Imports for DiskImports {
             pieces,
         }])
     }
+}
+
+fn real(p: &Path) -> PathBuf {
+    std::fs::canonicalize(p).unwrap_or_else(|_| p.to_path_buf())
 }

@@ -31,6 +31,7 @@ mod find;
 mod imports;
 mod include;
 mod pairs;
+mod preset;
 mod read;
 mod result;
 mod run;
@@ -47,6 +48,7 @@ pub use find::{
 };
 pub use include::{has_include, MAX_DEPTH as MAX_INCLUDE_DEPTH};
 pub use pairs::{pairs, partner, ShaderFile};
+pub use preset::{Prepared, Preset, PresetError};
 pub use read::{io_message, read_source, Files, ReadError, MAX_FILE_SIZE};
 pub use result::{
     CheckedProgram, CheckedShader, CheckedUnit, FileDiagnostics, FixedFile, ProgramDiagnostic,

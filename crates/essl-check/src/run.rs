@@ -67,12 +67,14 @@ pub fn run<R: Send>(
     sink: &(dyn Fn(Unit, CheckedUnit) -> R + Sync),
 ) -> Run<R> {
     let units = check::units(found, options.link);
+    let prepared = crate::preset::prepare(found, configs);
     type Checked<R> = (R, HashSet<PathBuf>, Pending, Vec<(PathBuf, String)>);
     let checked = |files: &Files, list: &[usize]| -> Vec<Checked<R>> {
         let cx = Context {
             configs,
             files,
             options,
+            prepared: &prepared,
         };
         list.par_iter()
             .map(|&i| {
@@ -202,10 +204,12 @@ pub fn check_text(
     options: CheckOptions,
 ) -> Result<(CheckedUnit, Vec<Skipped>), UsageError> {
     let found = find_text(path, text, configs)?;
+    let prepared = crate::preset::prepare(&found, configs);
     let cx = Context {
         configs,
         files,
         options,
+        prepared: &prepared,
     };
     let mut out = CheckedUnit::default();
     for unit in check::units(&found, options.link) {

@@ -32,6 +32,8 @@ pub struct Overrides {
     pub deny_warnings: bool,
     /// The stage of a file named explicitly (or standard input) that nothing else places.
     pub stage: Option<Stage>,
+    /// The preset, instead of essl.toml's.
+    pub preset: Option<crate::preset::Preset>,
 }
 
 impl Overrides {
@@ -57,6 +59,8 @@ pub struct Settings {
     /// The folders `#include` searches after the including file's own, where `#include` is
     /// followed at all (`None`: it is an error, as in GLSL ES).
     pub include: Option<Vec<PathBuf>>,
+    /// The library whose way of assembling shaders a check follows.
+    pub preset: Option<crate::preset::Preset>,
 }
 
 impl Settings {
@@ -85,6 +89,7 @@ impl Settings {
         }));
         let include = (overrides.includes || !dirs.is_empty()).then_some(dirs);
         Settings {
+            preset: overrides.preset.or(config.preset),
             deny_warnings: overrides.deny_warnings || config.deny_warnings,
             config,
             compile,

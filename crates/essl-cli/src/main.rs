@@ -276,6 +276,16 @@ struct LintArgs {
     /// enables). Overrides essl.toml's `target`.
     #[arg(long, value_enum, value_name = "WEBGL")]
     target: Option<WebglArg>,
+
+    /// Check shaders as a library assembles them, from the copy the project has installed:
+    /// `luma` (luma.gl and deck.gl: modules, hooks, prologue). Overrides essl.toml's `preset`.
+    #[arg(long, value_enum, value_name = "LIBRARY")]
+    preset: Option<PresetArg>,
+}
+
+#[derive(Clone, Copy, Debug, ValueEnum)]
+enum PresetArg {
+    Luma,
 }
 
 /// A WebGL version.
@@ -415,6 +425,9 @@ fn lint(args: LintArgs, matches: &clap::ArgMatches) -> i32 {
         defines: args.define.clone(),
         include_dirs: args.include.clone(),
         stage: args.stage.map(Stage::from),
+        preset: args.preset.map(|p| match p {
+            PresetArg::Luma => essl_check::Preset::Luma,
+        }),
         ..essl_check::Overrides::default()
     };
     if let Err(e) = rule_levels(matches, &mut overrides) {

@@ -54,6 +54,8 @@ pub fn extract(page: &str, imports: &dyn Imports) -> Vec<Embedded> {
                 range: tag_end..body_end,
                 pieces: vec![Piece::Raw(tag_end..body_end)],
                 chunk: false,
+                literal: tag_end,
+                defines: Vec::new(),
                 stage,
                 name: id,
                 skip: None,

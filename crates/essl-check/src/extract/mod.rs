@@ -156,6 +156,12 @@ pub struct Embedded {
     /// Whether it is a chunk: code to put into shaders (a tagged literal with no `main`),
     /// checked as a library.
     pub chunk: bool,
+    /// Where the expression that holds it starts (its backtick, quote or `[`): how presets and
+    /// module objects name it.
+    pub literal: usize,
+    /// Macros the code around it defines for it (a luma.gl module's `defines`), as
+    /// `#define NAME VALUE` before a chunk's text.
+    pub defines: Vec<(String, String)>,
     /// Its stage, where the host or the shader tells it.
     pub stage: Option<Stage>,
     /// The name the host gives it: a `<script>`'s `id`, or the variable or property a literal
@@ -234,6 +240,8 @@ mod tests {
             range: 0..0,
             pieces: Vec::new(),
             chunk: false,
+            literal: 0,
+            defines: Vec::new(),
             stage: Some(stage),
             name: Some(name.to_string()),
             skip: None,

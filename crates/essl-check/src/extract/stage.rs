@@ -34,23 +34,27 @@ pub fn chunk_pragma(text: &str) -> bool {
 }
 
 /// The words of a name, lower case: `skyboxVS` → `skybox`, `vs`; `vertex-shader-3d` →
-/// `vertex`, `shader`, `3d`.
+/// `vertex`, `shader`, `3d`; `FS300` → `fs`, `300`.
 fn words(name: &str) -> Vec<String> {
     let mut out: Vec<String> = Vec::new();
     let mut current = String::new();
     let mut prev_lower = false;
+    let mut prev_upper = false;
     for c in name.chars() {
         if !c.is_ascii_alphanumeric() {
             if !current.is_empty() {
                 out.push(std::mem::take(&mut current));
             }
             prev_lower = false;
+            prev_upper = false;
             continue;
         }
-        if c.is_ascii_uppercase() && prev_lower && !current.is_empty() {
+        let split = (c.is_ascii_uppercase() && prev_lower) || (c.is_ascii_digit() && prev_upper);
+        if split && !current.is_empty() {
             out.push(std::mem::take(&mut current));
         }
         prev_lower = c.is_ascii_lowercase() || c.is_ascii_digit();
+        prev_upper = c.is_ascii_uppercase();
         current.push(c.to_ascii_lowercase());
     }
     if !current.is_empty() {
@@ -124,6 +128,8 @@ mod tests {
         assert_eq!(stage_from_name("vertexShaderSource"), Some(Stage::Vertex));
         assert_eq!(stage_from_name("fragment-shader-3d"), Some(Stage::Fragment));
         assert_eq!(stage_from_name("shader"), None);
+        assert_eq!(stage_from_name("FS300"), Some(Stage::Fragment));
+        assert_eq!(stage_from_name("vec3Shader"), None);
         assert_eq!(pair_key("skyboxVS"), pair_key("skyboxFS"));
         assert_eq!(pair_key("vertex-shader-3d"), "3d");
         assert_eq!(pair_key("fragmentShaderSource"), "");

@@ -257,6 +257,25 @@ impl Expr {
         }
     }
 
+    /// The names its template literals' substitutions are (`${NAME}`, `${A.b}`).
+    pub fn substitutions<'s>(&self, src: &'s str) -> Vec<&'s str> {
+        match self {
+            Expr::Template(t) => t
+                .parts
+                .iter()
+                .filter_map(|p| match p {
+                    TemplatePart::Substitution(r) => Some(src[r.clone()].trim()),
+                    TemplatePart::Text(_) => None,
+                })
+                .filter(|code| is_name(code))
+                .collect(),
+            Expr::Concat(items) | Expr::Join(items, _) => {
+                items.iter().flat_map(|e| e.substitutions(src)).collect()
+            }
+            _ => Vec::new(),
+        }
+    }
+
     /// Whether the expression is a template literal.
     pub fn is_template(&self) -> bool {
         matches!(self, Expr::Template(_))

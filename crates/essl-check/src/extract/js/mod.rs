@@ -14,8 +14,9 @@
 
 mod consts;
 mod cook;
-mod literal;
-mod scan;
+pub(crate) mod literal;
+pub mod objects;
+pub(crate) mod scan;
 
 use super::{text_of, Embedded, Piece, Skip};
 use literal::Expr;
@@ -151,12 +152,79 @@ pub fn extract(text: &str, base: usize, imports: &dyn Imports) -> Vec<Embedded> 
             _ => i += 1,
         }
     }
+    let parts = parts(text, &consts, &found);
+    found.retain(|e| !parts.contains(&e.literal));
+    modules(text, &consts, imports, &mut found);
     for e in &mut found {
         e.range.start += base;
         e.range.end += base;
+        e.literal += base;
         shift(&mut e.pieces, base);
     }
     found
+}
+
+/// Where the literals start that the shaders found interpolate (`${FS_GLES}` in
+/// `` `#version 300 es\n${FS_GLES}` ``): parts of those shaders, checked there rather than on
+/// their own.
+fn parts(text: &str, consts: &Consts, found: &[Embedded]) -> Vec<usize> {
+    let mut out = Vec::new();
+    for e in found.iter().filter(|e| e.skip.is_none()) {
+        let Some((expr, _)) = literal::parse(text.as_bytes(), e.literal) else {
+            continue;
+        };
+        for name in expr.substitutions(text) {
+            if let Some(Binding::Local(at)) = consts.names.get(name.split('.').next().unwrap_or(""))
+            {
+                out.push(*at);
+            }
+        }
+    }
+    out
+}
+
+/// The luma.gl-style module objects of the file (`{name: 'skin', vs, fs, defines: {…}}`):
+/// the stage their `vs` and `fs` literals are for, and the macros they define for them.
+fn modules(text: &str, consts: &Consts, imports: &dyn Imports, found: &mut [Embedded]) {
+    let b = text.as_bytes();
+    for o in objects::objects_with(text, &["vs", "fs"]) {
+        if o.get("name").is_none() {
+            continue;
+        }
+        let defines = o
+            .get("defines")
+            .filter(|r| b.get(r.start) == Some(&b'{'))
+            .and_then(|r| objects::object(text, r.start))
+            .map(|d| {
+                d.entries
+                    .iter()
+                    .filter_map(|(key, value)| {
+                        let code = text[value.clone()].trim();
+                        let pieces = match literal::parse(b, value.start) {
+                            Some((e, _)) => {
+                                let inner =
+                                    |n: &str, depth: usize| lookup(text, consts, imports, n, depth);
+                                e.pieces(text, &inner, 0).ok()?
+                            }
+                            None => lookup(text, consts, imports, code, 0).ok()?,
+                        };
+                        Some((key.clone(), text_of(text, &pieces)))
+                    })
+                    .collect::<Vec<_>>()
+            })
+            .unwrap_or_default();
+        for (key, stage) in [("vs", essl::Stage::Vertex), ("fs", essl::Stage::Fragment)] {
+            let Some(value) = o.get(key) else { continue };
+            let at = match consts.names.get(text[value.clone()].trim()) {
+                Some(Binding::Local(at)) => *at,
+                _ => value.start,
+            };
+            if let Some(e) = found.iter_mut().find(|e| e.literal == at) {
+                e.stage = Some(stage);
+                e.defines = defines.clone();
+            }
+        }
+    }
 }
 
 fn shift(pieces: &mut [Piece], by: usize) {
@@ -201,6 +269,8 @@ fn shader(
             Some(Embedded {
                 range,
                 chunk: !has_version && !has_main(&body),
+                literal: at,
+                defines: Vec::new(),
                 pieces,
                 stage: None,
                 name,
@@ -215,6 +285,8 @@ fn shader(
                 range: start..start,
                 pieces: Vec::new(),
                 chunk: false,
+                literal: at,
+                defines: Vec::new(),
                 stage: None,
                 name,
                 skip: Some(match why {
