@@ -65,6 +65,30 @@ fn find(var: &str, name: &str, what: &str) -> Option<PathBuf> {
     None
 }
 
+/// The JavaScript libraries `scripts/fetch-js-libs.sh` installs (`tests/js/node_modules`:
+/// deck.gl, luma.gl, three.js at pinned versions), or `None` after a skip message.
+///
+/// # Panics
+/// When they are not installed and `ESSL_REQUIRE_CORPORA=1`.
+pub fn js_libraries() -> Option<PathBuf> {
+    let dir = repo_root().join("tests/js");
+    if dir.join("node_modules/.essl-lock").is_file() {
+        return Some(dir);
+    }
+    if data_required() {
+        panic!(
+            "{REQUIRE_CORPORA}=1 but {} has no node_modules: run scripts/fetch-js-libs.sh",
+            dir.display()
+        );
+    }
+    eprintln!(
+        "SKIPPED: {}/node_modules is absent (the pinned JavaScript libraries; run \
+         scripts/fetch-js-libs.sh)",
+        dir.display()
+    );
+    None
+}
+
 /// The conformance corpora (`ESSL_CORPORA`, or `../shared/corpora`), or `None` after a skip
 /// message.
 ///

@@ -5,6 +5,7 @@ mod find;
 mod fix;
 mod hosts;
 mod includes;
+mod presets;
 
 use std::path::Path;
 

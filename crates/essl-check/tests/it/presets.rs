@@ -1,0 +1,121 @@
+//! The `luma` preset on deck.gl's own layers (`@deck.gl/layers` 9.4.0 `src/`, with the
+//! luma.gl 9.4.2 that `scripts/fetch-js-libs.sh` installs): every layer's program assembled as
+//! luma.gl assembles it, compiled and linked with no error where Chromium compiles and links
+//! it (`tests/oracle/deck-layers.json`, written by `scripts/deck-oracle.sh`), with the same
+//! active uniforms and attributes; and an error planted in a layer's shader reported on its
+//! line.
+
+use std::path::{Path, PathBuf};
+
+use essl_check::{CheckOptions, Overrides, Preset};
+
+use crate::{check, lines};
+
+fn luma() -> Overrides {
+    Overrides {
+        preset: Some(Preset::Luma),
+        ..Overrides::default()
+    }
+}
+
+fn layers(js: &Path) -> PathBuf {
+    js.join("node_modules/@deck.gl/layers/src")
+}
+
+/// A program's name as the oracle script names it: `scatterplot-layer-vertex.glsl.ts` →
+/// `scatterplot`, `solid-polygon-layer-vertex-top.glsl.ts` → `solid-polygon-top`.
+fn program_name(vertex: &Path) -> String {
+    let file = vertex.file_name().unwrap().to_string_lossy();
+    let stem = file.split('.').next().unwrap();
+    stem.replace("-layer-vertex", "")
+}
+
+#[test]
+fn deck_gl_layers_compile_and_link_as_in_chromium() {
+    let Some(js) = essl_testdata::js_libraries() else {
+        return;
+    };
+    let oracle: serde_json::Value = serde_json::from_str(
+        &std::fs::read_to_string(essl_testdata::repo_root().join("tests/oracle/deck-layers.json"))
+            .unwrap(),
+    )
+    .unwrap();
+    let dir = layers(&js);
+    let run = check(&dir, luma(), CheckOptions::default());
+    let errors: Vec<String> = lines(&dir, &run)
+        .into_iter()
+        .filter(|l| {
+            !l.contains("asin-domain") && !l.contains("division") && !l.contains("smoothstep")
+        })
+        .collect();
+    assert!(errors.is_empty(), "{errors:#?}");
+    let mut linked = 0;
+    for unit in &run.results {
+        for p in &unit.programs {
+            let vs = &unit.shaders[p.vertex];
+            let name = program_name(&vs.path);
+            let chromium = &oracle["programs"][&name];
+            assert_eq!(chromium["linked"], true, "{name}: {chromium}");
+            let program = p.program.as_ref().unwrap();
+            assert!(program.ok && p.linked, "{name}: {}", program.log);
+            assert_eq!(
+                program.uniforms.len() as u64,
+                chromium["uniforms"],
+                "{name}"
+            );
+            assert_eq!(
+                program.attributes.len() as u64,
+                chromium["attributes"],
+                "{name}"
+            );
+            linked += 1;
+        }
+    }
+    // Every layer with shaders of its own (grid-cell draws with column's).
+    assert_eq!(linked, 12);
+}
+
+#[test]
+fn an_error_planted_in_a_layer_shader_is_on_its_line() {
+    let Some(js) = essl_testdata::js_libraries() else {
+        return;
+    };
+    let project = tempfile::tempdir().unwrap();
+    let root = project.path();
+    std::os::unix::fs::symlink(js.join("node_modules"), root.join("node_modules")).unwrap();
+    let from = layers(&js).join("scatterplot-layer");
+    let to = root.join("src/scatterplot-layer");
+    std::fs::create_dir_all(&to).unwrap();
+    for entry in std::fs::read_dir(&from).unwrap() {
+        let path = entry.unwrap().path();
+        std::fs::copy(&path, to.join(path.file_name().unwrap())).unwrap();
+    }
+    let vertex = to.join("scatterplot-layer-vertex.glsl.ts");
+    let text = std::fs::read_to_string(&vertex).unwrap();
+    let planted = text.replacen(
+        "void main(void) {",
+        "void main(void) {\n  vec3 n = normalise(vec3(1.0));",
+        1,
+    );
+    assert_ne!(
+        planted, text,
+        "the layer's main is where the test expects it"
+    );
+    std::fs::write(&vertex, &planted).unwrap();
+    let line = planted
+        .lines()
+        .position(|l| l.contains("normalise"))
+        .unwrap()
+        + 1;
+    let run = check(&root.join("src"), luma(), CheckOptions::default());
+    let errors: Vec<String> = lines(&root.join("src"), &run)
+        .into_iter()
+        .filter(|l| l.contains("undeclared"))
+        .collect();
+    assert_eq!(
+        errors,
+        [format!(
+            "scatterplot-layer/scatterplot-layer-vertex.glsl.ts:{line}:12 undeclared-function"
+        )]
+    );
+}
