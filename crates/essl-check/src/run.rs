@@ -204,7 +204,7 @@ pub fn check_text(
     options: CheckOptions,
 ) -> Result<(CheckedUnit, Vec<Skipped>), UsageError> {
     let found = find_text(path, text, configs)?;
-    let prepared = crate::preset::prepare(&found, configs);
+    let prepared = crate::preset::prepare_alone(&found, configs);
     let cx = Context {
         configs,
         files,

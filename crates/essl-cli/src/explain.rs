@@ -1,5 +1,6 @@
 //! `essl explain CODE`: the documentation of a diagnostic code — a front-end code of
-//! [`essl::diagnostic_code::Code`] (its doc comment) or a lint rule of essl-lint (its page).
+//! [`essl::diagnostic_code::Code`] (its doc comment), a code of the checking pipeline
+//! ([`essl_check::CheckCode`]: includes, presets) or a lint rule of essl-lint (its page).
 
 use essl::diagnostic_code::Code;
 
@@ -11,14 +12,22 @@ pub fn page(code: &str) -> Option<String> {
             c.doc()
         ));
     }
+    if let Some(c) = essl_check::CheckCode::from_name(code) {
+        return Some(format!(
+            "# {code}\n\nA diagnostic of essl's checking pipeline (what surrounds a shader: \
+             includes, presets).\n\n{}",
+            c.doc()
+        ));
+    }
     essl_lint::rule(code).map(|r| format!("{}\n", r.page().trim_end()))
 }
 
-/// Every code `essl explain` knows: the front end's, then the lint rules'.
+/// Every code `essl explain` knows: the front end's, the pipeline's, then the lint rules'.
 pub fn codes() -> Vec<&'static str> {
     Code::ALL
         .iter()
         .map(|c| c.as_str())
+        .chain(essl_check::CheckCode::ALL.iter().map(|c| c.as_str()))
         .chain(essl_lint::RULES.iter().map(|r| r.id))
         .collect()
 }

@@ -59,9 +59,12 @@ impl Doc {
                 Err(e) => (Default::default(), Some(e.to_string())),
             };
         let skipped = skipped.into_iter().map(|s| (s.range, s.skip)).collect();
+        // The document's text as its shaders hold it (a preset's program may bring shaders
+        // of other files along: they are there for linking, not shown here).
         let doc_text = unit
             .shaders
-            .first()
+            .iter()
+            .find(|s| s.path == path)
             .map(|s| s.file().clone())
             .unwrap_or_else(|| Arc::new(SourceFile::new(path.display().to_string(), text)));
         let mut doc = Doc {
@@ -117,16 +120,21 @@ impl Doc {
         }
     }
 
-    /// The shader at a position, and where it lies.
-    pub fn at(&self, pos: Position) -> Option<(&Analysis, Place<'_>)> {
-        (0..self.parts.len())
-            .map(|i| (&*self.parts[i], self.place(i)))
-            .find(|(_, place)| place.offset(pos).is_some())
+    /// Whether part `i` lies in this document (not a partner a preset's program brought).
+    fn shown(&self, i: usize) -> bool {
+        Arc::ptr_eq(self.parts[i].document(), &self.text)
     }
 
-    /// Every shader and where it lies.
+    /// The shader at a position, and where it lies.
+    pub fn at(&self, pos: Position) -> Option<(&Analysis, Place<'_>)> {
+        self.all().find(|(_, place)| place.offset(pos).is_some())
+    }
+
+    /// Every shader of the document and where it lies.
     pub fn all(&self) -> impl Iterator<Item = (&Analysis, Place<'_>)> {
-        (0..self.parts.len()).map(|i| (&*self.parts[i], self.place(i)))
+        (0..self.parts.len())
+            .filter(|&i| self.shown(i))
+            .map(|i| (&*self.parts[i], self.place(i)))
     }
 
     /// The document's own diagnostics: each shader's (those in files it includes shown at
@@ -137,7 +145,7 @@ impl Doc {
         if let Some(why) = &self.unchecked {
             out.push(note(&self.text, 0..0, "not-checked", why.clone()));
         }
-        for a in &self.parts {
+        for (a, _) in self.all() {
             for d in a.diagnostics() {
                 out.push(convert::diagnostic(&self.text, uri, d));
             }

@@ -18,14 +18,66 @@ pub(crate) mod programs;
 
 use std::collections::{HashMap, HashSet};
 use std::path::{Path, PathBuf};
+use std::sync::Arc;
 
 use essl::source::Span;
 
 use crate::assembly::Assembly;
 use crate::check::from_pieces;
+use crate::extract::HostKind;
+use crate::find::{Found, Host};
+use crate::settings::Configs;
 use programs::Literal;
 
 pub use luma::prepare;
+
+/// Prepares the presets for the shaders of one text (an editor's document, a bundler's
+/// module): the program objects that name its shaders may lie in the scripts beside it (a
+/// deck.gl layer's `scatterplot-layer.ts` beside `scatterplot-layer-vertex.glsl.ts`), so those
+/// are read too, and each program that holds one of the text's shaders is checked with it.
+pub(crate) fn prepare_alone(found: &Found, configs: &Configs) -> Prepared {
+    let Some(host) = found.hosts.first() else {
+        return Prepared::default();
+    };
+    let preset = configs.for_file(&host.path).ok().and_then(|s| s.preset);
+    if preset.is_none() || host.kind != HostKind::Script {
+        return prepare(found, configs);
+    }
+    let dir = match host.path.parent() {
+        Some(p) if !p.as_os_str().is_empty() => p,
+        _ => Path::new("."),
+    };
+    let own = key(&host.path);
+    let mut all = Found {
+        hosts: vec![host.clone()],
+        ..Found::default()
+    };
+    for entry in std::fs::read_dir(dir).into_iter().flatten().flatten() {
+        let path = entry.path();
+        if HostKind::of(&path) != Some(HostKind::Script) || key(&path) == own {
+            continue;
+        }
+        if let Ok(text) = crate::read::read_source(&path) {
+            all.hosts
+                .push(Arc::new(Host::new(path, HostKind::Script, text, false)));
+        }
+    }
+    let mut prepared = prepare(&all, configs);
+    // The programs that hold one of the text's shaders are the text's to check.
+    let mut mine = Vec::new();
+    for programs in std::mem::take(&mut prepared.programs).into_values() {
+        mine.extend(programs.into_iter().filter(|p| {
+            [&p.vs, &p.fs]
+                .into_iter()
+                .flatten()
+                .any(|w| Arc::ptr_eq(&w.literal.file, &host.file))
+        }));
+    }
+    if !mine.is_empty() {
+        prepared.programs.insert(own, mine);
+    }
+    prepared
+}
 
 /// A library whose way of assembling shaders a check follows.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

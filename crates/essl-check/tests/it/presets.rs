@@ -119,3 +119,51 @@ fn an_error_planted_in_a_layer_shader_is_on_its_line() {
         )]
     );
 }
+
+#[test]
+fn luma_gl_modules_are_found_and_checked_as_chunks() {
+    let Some(js) = essl_testdata::js_libraries() else {
+        return;
+    };
+    let dir = js.join("node_modules/@luma.gl/shadertools/src");
+    let configs = essl_check::Configs::new(luma());
+    let found = essl_check::find(
+        std::slice::from_ref(&dir),
+        &essl_check::FindOptions::new(),
+        &configs,
+    )
+    .unwrap();
+    // The two literals left are built from a function's parameters (`${primaryPrefix}`), known
+    // only when the function runs.
+    assert_eq!(found.skipped.len(), 2, "{:?}", found.skipped);
+    let run = check(&dir, luma(), CheckOptions::default());
+    let shaders: usize = run.results.iter().map(|u| u.shaders.len()).sum();
+    assert!(shaders >= 40, "{shaders} shaders and chunks");
+    let mut errors: Vec<String> = Vec::new();
+    for unit in &run.results {
+        for s in &unit.shaders {
+            for (file, d) in s.all().filter(|(_, d)| d.is_error()) {
+                let lc = file.line_col(d.span.start);
+                let name = Path::new(file.name())
+                    .strip_prefix(&dir)
+                    .unwrap()
+                    .display()
+                    .to_string();
+                errors.push(format!("{name}:{}:{} {}", lc.line, lc.column, d.code));
+            }
+        }
+    }
+    errors.sort();
+    // Each is an error in luma.gl 9.4.2 itself: the lambert material's fragment code defines
+    // `lighting_getLightColor(vec3, vec3, vec3, vec3)` twice (Chromium: "function already has
+    // a body"), and the unexported `projection` module declares `varying`s beside a uniform
+    // block, which no GLSL ES version has both of.
+    assert_eq!(
+        errors,
+        [
+            "modules/engine/project/project.ts:77:1 es100-qualifier",
+            "modules/engine/project/project.ts:78:1 es100-qualifier",
+            "modules/lighting/lambert-material/lambert-shaders-glsl.ts:25:6 function-redefined",
+        ]
+    );
+}

@@ -148,7 +148,7 @@ fn server(root: &Path) -> Found {
     let mut paths: Vec<PathBuf> = Vec::new();
     for entry in walk(root) {
         let ext = entry.extension().and_then(|e| e.to_str()).unwrap_or("");
-        if ["vert", "frag", "html", "js"].contains(&ext) {
+        if ["vert", "frag", "html", "js", "ts"].contains(&ext) && !p_in_modules(&entry) {
             paths.push(entry);
         }
     }
@@ -229,10 +229,17 @@ fn uri(path: &Path) -> String {
     format!("file://{}", std::fs::canonicalize(path).unwrap().display())
 }
 
+fn p_in_modules(p: &Path) -> bool {
+    p.components().any(|c| c.as_os_str() == "node_modules")
+}
+
 fn walk(dir: &Path) -> Vec<PathBuf> {
     let mut out = Vec::new();
     for e in std::fs::read_dir(dir).unwrap() {
         let p = e.unwrap().path();
+        if p.is_symlink() {
+            continue;
+        }
         if p.is_dir() {
             out.extend(walk(&p));
         } else {
@@ -260,6 +267,42 @@ fn the_cli_the_build_script_and_the_server_agree() {
     .map(String::from)
     .collect();
     assert_eq!(cli, expected, "essl lint");
+    assert_eq!(build(root), cli, "essl-build");
+    assert_eq!(server(root), cli, "essl-server");
+}
+
+#[test]
+fn they_agree_on_a_deck_gl_layer_with_the_luma_preset() {
+    let Some(js) = essl_testdata::js_libraries() else {
+        return;
+    };
+    let dir = tempfile::tempdir().unwrap();
+    let root = dir.path();
+    std::os::unix::fs::symlink(js.join("node_modules"), root.join("node_modules")).unwrap();
+    std::fs::write(root.join("essl.toml"), "preset = \"luma\"\n").unwrap();
+    let from = js.join("node_modules/@deck.gl/layers/src/scatterplot-layer");
+    let to = root.join("scatterplot-layer");
+    std::fs::create_dir_all(&to).unwrap();
+    for entry in std::fs::read_dir(&from).unwrap() {
+        let path = entry.unwrap().path();
+        std::fs::copy(&path, to.join(path.file_name().unwrap())).unwrap();
+    }
+    let fragment = to.join("scatterplot-layer-fragment.glsl.ts");
+    let text = std::fs::read_to_string(&fragment).unwrap();
+    std::fs::write(
+        &fragment,
+        text.replacen("void main(void) {", "void main(void) {\n  float x = 1.0", 1),
+    )
+    .unwrap();
+    let cli = cli(root);
+    assert_eq!(cli.len(), 1, "{cli:?}");
+    assert!(
+        cli.iter()
+            .next()
+            .unwrap()
+            .starts_with("scatterplot-layer/scatterplot-layer-fragment.glsl.ts:"),
+        "{cli:?}"
+    );
     assert_eq!(build(root), cli, "essl-build");
     assert_eq!(server(root), cli, "essl-server");
 }
