@@ -420,16 +420,22 @@ void main() {\n\
     // Outside every shader, nothing.
     assert_eq!(c.at("textDocument/hover", &page, 1, 3), Value::Null);
 
+    // A constant's value is put in: the error after `${n}` is on the script's own column.
     let script = uri(&dir.path().join("app.js"));
-    let js = "const n = 4;\nconst fs = `#version 300 es\nprecision highp float;\nout vec4 c;\nvoid main() { c = vec4(${n}); }\n`;\n";
+    let js = "const n = 4;\nconst fs = `#version 300 es\nprecision highp float;\nout vec4 c;\nvoid main() { c = vec4(${n}) }\n`;\n";
     c.open(&script, js);
     let ds = c.diagnostics(&script);
     assert_eq!(ds.len(), 1, "{ds:#?}");
+    assert_eq!(ds[0]["code"], "missing-semicolon");
+    assert_eq!(ds[0]["range"]["start"], json!({"line": 4, "character": 28}));
+    // A value known only at run time leaves the shader unchecked, and says so.
+    let other = uri(&dir.path().join("run.js"));
+    let js = "const fs = `#version 300 es\nprecision highp float;\nout vec4 c;\nvoid main() { c = vec4(${count()}); }\n`;\n";
+    c.open(&other, js);
+    let ds = c.diagnostics(&other);
+    assert_eq!(ds.len(), 1, "{ds:#?}");
     assert_eq!(ds[0]["code"], "not-checked");
-    assert_eq!(ds[0]["range"]["start"]["line"], 1);
-    assert!(ds[0]["message"]
-        .as_str()
-        .unwrap()
-        .contains("interpolations"));
+    assert_eq!(ds[0]["range"]["start"]["line"], 0);
+    assert!(ds[0]["message"].as_str().unwrap().contains("run"));
     c.shutdown();
 }
