@@ -31,6 +31,7 @@ mod ast;
 mod builtins;
 mod check;
 mod lex;
+mod near;
 mod parse;
 mod preprocess;
 mod shader;

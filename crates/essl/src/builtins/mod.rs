@@ -319,6 +319,12 @@ pub fn overloads_in(name: &str, es100: bool) -> Option<&'static [Signature]> {
     }
 }
 
+/// The names of the built-in functions of GLSL ES 1.00 (`es100`) or 3.00.
+pub fn function_names(es100: bool) -> impl Iterator<Item = &'static str> {
+    let table = if es100 { table_es100() } else { table() };
+    table.keys().copied()
+}
+
 /// Whether `name` is a built-in function of GLSL ES 3.00.
 pub fn is_builtin_function(name: &str) -> bool {
     table().contains_key(name)

@@ -234,7 +234,14 @@ impl Parser<'_> {
                     )),
                     "sampler" | "texture2D" => d,
                     "half" | "double" => d.with_help("use `float`"),
-                    _ => d.with_help("declare the struct before this line, or use a built-in type"),
+                    _ => match crate::near::type_or_keyword(name) {
+                        Some((near, what)) => d
+                            .with_help(format!("a {what} with a similar name exists, `{near}`"))
+                            .with_fix(Fix::suggested(format!("write `{near}`"), t.span, near)),
+                        None => {
+                            d.with_help("declare the struct before this line, or use a built-in type")
+                        }
+                    },
                 };
                 self.report(d);
                 Failed

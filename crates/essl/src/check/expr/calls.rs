@@ -115,7 +115,17 @@ impl Checker<'_> {
                                 "frac" => Some("GLSL calls it `fract`".to_string()),
                                 "atan2" => Some("GLSL's two-argument arctangent is `atan(y, x)`".to_string()),
                                 "mul" => Some("GLSL multiplies matrices with `*`".to_string()),
-                                _ => Some("functions must be declared (or prototyped) before they are called".to_string()),
+                                _ => match crate::near::builtin_function(&id.name, es100) {
+                                    Some(near) => {
+                                        d.fix = Some(Fix::suggested(
+                                            format!("call `{near}`"),
+                                            id.span,
+                                            near,
+                                        ));
+                                        Some(format!("a built-in function with a similar name exists, `{near}`"))
+                                    }
+                                    None => Some("functions must be declared (or prototyped) before they are called".to_string()),
+                                },
                             };
                             if let Some(h) = help {
                                 if !es100 && h.starts_with('`') && h.contains("texture") {

@@ -337,11 +337,12 @@ impl Checker<'_> {
                 }
                 let dist = if n.eq_ignore_ascii_case(name) {
                     0
+                } else if name.len() < 3 {
+                    continue;
                 } else {
-                    edit_distance(n, name)
+                    crate::near::edit_distance(n, name)
                 };
-                if dist <= 2
-                    && dist < name.len().max(2)
+                if dist <= (name.len() / 3).clamp(1, 2)
                     && best.as_ref().is_none_or(|(b, _)| dist < *b)
                 {
                     best = Some((dist, n.to_string()));
@@ -350,24 +351,4 @@ impl Checker<'_> {
         }
         best.map(|(_, n)| n)
     }
-}
-
-/// Levenshtein distance (small strings only).
-fn edit_distance(a: &str, b: &str) -> usize {
-    let (a, b): (Vec<char>, Vec<char>) = (a.chars().collect(), b.chars().collect());
-    if a.len().abs_diff(b.len()) > 2 {
-        return 3;
-    }
-    let mut prev: Vec<usize> = (0..=b.len()).collect();
-    for (i, ca) in a.iter().enumerate() {
-        let mut cur = vec![i + 1];
-        for (j, cb) in b.iter().enumerate() {
-            let v = (prev[j] + usize::from(ca != cb))
-                .min(prev[j + 1] + 1)
-                .min(cur[j] + 1);
-            cur.push(v);
-        }
-        prev = cur;
-    }
-    prev[b.len()]
 }
