@@ -158,6 +158,18 @@ probe("u-used-only-in-zero-trip-loop", frag=fs(
     "  o = vec4(u_used);\n  for (int i = 0; i < 0; ++i) {\n    o = vec4(u_dead);\n  }\n"))
 probe("u-used-only-in-dead-local", frag=fs(
     "uniform float u_dead;\nuniform float u_used;\n", "  float unused = u_dead;\n  o = vec4(u_used);\n"))
+# A local referenced beyond its declaration keeps its stores, read or not; a chain of
+# declarations nothing else references goes.
+for name, body in [
+    ("u-local-assigned-never-read", "  float x;\n  x = u_dead;\n"),
+    ("u-local-component-stored-never-read", "  vec4 c = vec4(1.0);\n  c.a = u_dead;\n"),
+    ("u-local-compound-assigned-never-read", "  float x = 1.0;\n  x += u_dead;\n"),
+    ("u-dead-local-reassigned", "  float x = u_dead;\n  x = 2.0;\n"),
+    ("u-dead-local-incremented", "  float x = u_dead;\n  x++;\n"),
+    ("u-dead-local-chain", "  float a = u_dead;\n  float b = a;\n"),
+]:
+    probe(name, frag=fs("uniform float u_dead;\nuniform float u_used;\n",
+                        body + "  o = vec4(u_used);\n"))
 probe("u-used-only-in-function-called-from-if-false", frag=fs(
     "uniform float u_dead;\nuniform float u_used;\nfloat helper() {\n  return u_dead;\n}\n",
     "  o = vec4(u_used);\n  if (false) {\n    o = vec4(helper());\n  }\n"))

@@ -1,7 +1,9 @@
 //! Which functions, globals, blocks and built-ins the entry point actually uses — WebGL's
 //! notion of "active", which is more than static use: ANGLE folds constant `if`/`?:`
-//! conditions, drops code after `return`, drops stores to locals that are never read
-//! (measured: `tests/oracle/PROBES.md` §1), and drops values that are computed and discarded
+//! conditions, drops code after `return`, drops the declaration of a local that nothing but
+//! its declaration names — and then the declarations only those name, a chain — while a local
+//! assigned anywhere (`x = u;`, `c.a = u;`, `x++`) is kept with everything stored in it, read
+//! or not (measured: `tests/oracle/PROBES.md` §1), and drops values that are computed and discarded
 //! without a side effect — an expression statement such as `1.0 + u;`, the left operand of
 //! `,` (`tests/oracle/ES100.md`, "Active uniforms"). Loops are not evaluated and `x * 0.0` is
 //! not folded. A global's non-constant initializer (GLSL ES 1.00 in WebGL) runs at the start of
@@ -112,7 +114,8 @@ fn initializer_uses(m: &Module, all: &mut Uses) {
     }
 }
 
-/// A store to a local: its uses count only if the local is read.
+/// A local's declaration: what its initializer reads counts only if something else names the
+/// local.
 struct Store {
     target: LocalId,
     uses: Uses,
@@ -168,14 +171,6 @@ fn const_bool(e: &Expr) -> Option<bool> {
     }
 }
 
-/// The local a store writes, if the expression is a write to (part of) a local.
-fn store_target(e: &Expr) -> Option<LocalId> {
-    match e.write_root().kind {
-        ExprKind::Local(l) => Some(l),
-        _ => None,
-    }
-}
-
 impl Walker {
     /// Walks statements; returns true when the block ends control flow (later code is dead).
     fn block(&mut self, stmts: &[Stmt]) -> bool {
@@ -194,10 +189,16 @@ impl Walker {
                 if let Some(e) = init {
                     let mut u = Uses::default();
                     expr(e, &mut u);
-                    self.stores.push(Store {
-                        target: *l,
-                        uses: u,
-                    });
+                    if e.has_effects() {
+                        // A call or a store in the initializer runs whether or not the local
+                        // is named again.
+                        self.live.0.extend(u.0);
+                    } else {
+                        self.stores.push(Store {
+                            target: *l,
+                            uses: u,
+                        });
+                    }
                 }
             }
             StmtKind::Block(b) => return self.block(b),
@@ -256,29 +257,10 @@ impl Walker {
         false
     }
 
-    /// An expression statement: a store to a local is only live if the local is read.
+    /// An expression statement: a store to a local names it, which keeps the local (and what
+    /// its declaration reads) whether or not it is read later.
     fn effect(&mut self, e: &Expr) {
         match &e.kind {
-            ExprKind::Assign(op, lhs, rhs) => {
-                if let Some(t) = store_target(lhs) {
-                    let mut u = Uses::default();
-                    expr(rhs, &mut u);
-                    // Indices in the target are reads too.
-                    target_reads(lhs, &mut u);
-                    if op.is_some() {
-                        u.push(Use::Local(t));
-                    }
-                    self.stores.push(Store { target: t, uses: u });
-                    return;
-                }
-                expr(e, &mut self.live);
-            }
-            ExprKind::IncDec(_, _, target) if store_target(target).is_some() => {
-                let t = store_target(target).expect("checked");
-                let mut u = Uses::default();
-                target_reads(target, &mut u);
-                self.stores.push(Store { target: t, uses: u });
-            }
             ExprKind::Comma(a, b) => {
                 self.effect(a);
                 self.effect(b);
@@ -287,18 +269,6 @@ impl Walker {
             _ if !e.has_effects() => {}
             _ => expr(e, &mut self.live),
         }
-    }
-}
-
-/// Reads inside an assignment target (`a[i] = …` reads `i`).
-fn target_reads(e: &Expr, u: &mut Uses) {
-    match &e.kind {
-        ExprKind::Index(b, i) => {
-            target_reads(b, u);
-            expr(i, u);
-        }
-        ExprKind::Member(b, _) | ExprKind::Swizzle(b, _) => target_reads(b, u),
-        _ => {}
     }
 }
 

@@ -1,0 +1,10 @@
+#version 300 es
+precision mediump float;
+out vec4 o;
+uniform float u_dead;
+uniform float u_used;
+void main() {
+  float a = u_dead;
+  float b = a;
+  o = vec4(u_used);
+}
