@@ -24,6 +24,7 @@ pub mod reflect;
 pub mod render;
 pub mod snapshot;
 pub mod source;
+pub mod suggest;
 pub mod target;
 pub mod types;
 
