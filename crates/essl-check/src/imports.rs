@@ -55,7 +55,7 @@ impl DiskImports {
 
     /// The file a relative specifier names, as a bundler resolves it.
     pub(crate) fn resolve(&self, from: &str) -> Option<PathBuf> {
-        let base = self.dir.join(from);
+        let base = lexical(&self.dir.join(from));
         if base.is_file() {
             return Some(base);
         }
@@ -94,9 +94,7 @@ impl DiskImports {
                 consts,
             })
         });
-        self.cache
-            .borrow_mut()
-            .insert(path.to_path_buf(), script.clone());
+        self.cache.borrow_mut().insert(key, script.clone());
         script
     }
 }
@@ -129,6 +127,23 @@ impl Imports for DiskImports {
             pieces,
         }])
     }
+}
+
+/// `path` with its `.` and `dir/..` components taken out, as it reads (`src/pp/../x.js` is
+/// `src/x.js`), so that diagnostics name the file as a person would.
+fn lexical(path: &Path) -> PathBuf {
+    use std::path::Component;
+    let mut out: Vec<Component> = Vec::new();
+    for c in path.components() {
+        match c {
+            Component::CurDir => {}
+            Component::ParentDir if matches!(out.last(), Some(Component::Normal(_))) => {
+                out.pop();
+            }
+            _ => out.push(c),
+        }
+    }
+    out.iter().collect()
 }
 
 fn real(p: &Path) -> PathBuf {

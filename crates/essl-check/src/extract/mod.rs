@@ -63,6 +63,8 @@ pub enum Skip {
     Escapes,
     /// Nothing tells whether it is a vertex or a fragment shader.
     NoStage,
+    /// The script changes the text before it is compiled (`` `…`.replace(…) ``).
+    Rewritten,
 }
 
 impl Skip {
@@ -74,6 +76,10 @@ impl Skip {
                  constant of literals in the file or a file it imports)"
             }
             Skip::Escapes => "an escape sequence that JavaScript rejects in this literal",
+            Skip::Rewritten => {
+                "the script changes this text before it is compiled (a method such as \
+                 `.replace(…)` is called on it)"
+            }
             Skip::NoStage => {
                 "nothing tells its stage: add `#pragma essl stage(vertex)` or `stage(fragment)`"
             }

@@ -109,12 +109,74 @@ fn statement(src: &str, word: std::ops::Range<usize>, out: &mut Consts) -> usize
                     }
                     at
                 }
+                None if b.get(at) == Some(&b'{') => export_list(src, at, out),
                 _ => at,
             }
         }
         "import" => import(src, word.end, out),
         _ => word.end,
     }
+}
+
+/// `export {a, b as c}` at `at` (its `{`), and `export {a} from '…'`: a name re-exported from
+/// another script is bound as if imported. Where to go on scanning.
+fn export_list(src: &str, at: usize, out: &mut Consts) -> usize {
+    let b = src.as_bytes();
+    let (listed, end) = name_list(src, at);
+    let (from, end) = from_clause(src, end);
+    for (local, exported) in listed {
+        if let Some(from) = &from {
+            out.names.entry(local.clone()).or_insert(Binding::Import {
+                from: from.clone(),
+                name: local.clone(),
+            });
+        }
+        out.exports.insert(exported, Export::Name(local));
+    }
+    end.min(b.len())
+}
+
+/// The names of `{a, b as c}` at `at` (its `{`), each as (first, second) — `(b, c)` — and
+/// where the list ends.
+fn name_list(src: &str, at: usize) -> (Vec<(String, String)>, usize) {
+    let b = src.as_bytes();
+    let mut names = Vec::new();
+    let mut i = at + 1;
+    loop {
+        i = scan::skip_trivia(b, i);
+        let Some(r) = scan::ident_at(b, i) else { break };
+        let first = src[r.clone()].to_string();
+        i = scan::skip_trivia(b, r.end);
+        let mut second = first.clone();
+        if src[i..].starts_with("as") {
+            if let Some(l) = scan::ident_at(b, scan::skip_trivia(b, i + 2)) {
+                second = src[l.clone()].to_string();
+                i = scan::skip_trivia(b, l.end);
+            }
+        }
+        names.push((first, second));
+        if b.get(i) == Some(&b',') {
+            i += 1;
+        }
+    }
+    (names, scan::skip_trivia(b, i + 1))
+}
+
+/// `from '…'` at `i`: the specifier, and where the clause ends (`i` where there is none).
+fn from_clause(src: &str, i: usize) -> (Option<String>, usize) {
+    let b = src.as_bytes();
+    let Some(from_kw) = scan::ident_at(b, i).filter(|r| &src[r.clone()] == "from") else {
+        return (None, i);
+    };
+    let q = scan::skip_trivia(b, from_kw.end);
+    if !matches!(b.get(q), Some(b'\'' | b'"')) {
+        return (None, q);
+    }
+    let end = scan::string_end(b, q);
+    (
+        Some(src[q + 1..end.saturating_sub(1).max(q + 1)].to_string()),
+        end,
+    )
 }
 
 /// `import NAME from '…'`, `import {a, b as c} from '…'`, `import NAME, {…} from '…'`.
@@ -130,35 +192,17 @@ fn import(src: &str, at: usize, out: &mut Consts) -> usize {
         }
     }
     if b.get(i) == Some(&b'{') {
-        i += 1;
-        loop {
-            i = scan::skip_trivia(b, i);
-            let Some(r) = scan::ident_at(b, i) else { break };
-            let exported = src[r.clone()].to_string();
-            i = scan::skip_trivia(b, r.end);
-            let mut local = exported.clone();
-            if src[i..].starts_with("as") {
-                if let Some(l) = scan::ident_at(b, scan::skip_trivia(b, i + 2)) {
-                    local = src[l.clone()].to_string();
-                    i = scan::skip_trivia(b, l.end);
-                }
-            }
-            names.push((local, exported));
-            if b.get(i) == Some(&b',') {
-                i += 1;
-            }
-        }
-        i = scan::skip_trivia(b, i + 1);
+        let (listed, end) = name_list(src, i);
+        names.extend(
+            listed
+                .into_iter()
+                .map(|(exported, local)| (local, exported)),
+        );
+        i = end;
     }
-    let Some(from_kw) = scan::ident_at(b, i).filter(|r| &src[r.clone()] == "from") else {
-        return i;
+    let (Some(from), end) = from_clause(src, i) else {
+        return from_clause(src, i).1;
     };
-    let q = scan::skip_trivia(b, from_kw.end);
-    if !matches!(b.get(q), Some(b'\'' | b'"')) {
-        return q;
-    }
-    let end = scan::string_end(b, q);
-    let from = src[q + 1..end.saturating_sub(1).max(q + 1)].to_string();
     for (local, name) in names {
         out.names.insert(
             local,
@@ -184,7 +228,8 @@ mod tests {
     fn top_level_names_exports_and_imports() {
         let src = "import main, {a as b, c} from './x.glsl';\nimport d from \"d\";\n\
                    const X = `x`;\nfunction f() { const Y = 1; }\nexport const Z = 'z';\n\
-                   export default `#version 300 es`;\n";
+                   export default `#version 300 es`;\nexport { X as W, X };\n\
+                   export { V } from './v.js';\n";
         let c = scan(src);
         assert_eq!(
             c.names["main"],
@@ -209,5 +254,9 @@ mod tests {
             panic!()
         };
         assert!(src[at..].starts_with("`#version"));
+        assert_eq!(c.exports["W"], Export::Name("X".into()));
+        assert_eq!(c.exports["X"], Export::Name("X".into()));
+        assert_eq!(c.exports["V"], Export::Name("V".into()));
+        assert!(matches!(&c.names["V"], Binding::Import { from, .. } if from == "./v.js"));
     }
 }

@@ -68,6 +68,29 @@ pub fn parse(b: &[u8], at: usize) -> Option<(Expr, usize)> {
     Some((expr, end))
 }
 
+/// Whether the script changes a literal's value before it is used: the expression that ends
+/// at `end` is followed by a method call (`` `…`.replace('{TYPE}', type) ``). Trimming
+/// white space (`.trim()`, `.trimStart()`, `.trimEnd()`) leaves the shader's text as written.
+pub fn rewritten(b: &[u8], end: usize) -> bool {
+    let mut i = scan::skip_trivia(b, end);
+    while b.get(i) == Some(&b'.') {
+        let Some(name) = scan::ident_at(b, scan::skip_trivia(b, i + 1)) else {
+            return false;
+        };
+        let open = scan::skip_trivia(b, name.end);
+        if b.get(open) != Some(&b'(') {
+            return false;
+        }
+        let trim = matches!(&b[name.clone()], b"trim" | b"trimStart" | b"trimEnd");
+        let close = scan::skip_trivia(b, open + 1);
+        if !trim || b.get(close) != Some(&b')') {
+            return true;
+        }
+        i = scan::skip_trivia(b, close + 1);
+    }
+    false
+}
+
 /// A literal, an array joined, an object, or (where `names`) a name.
 fn primary(b: &[u8], at: usize, names: bool) -> Option<(Expr, usize)> {
     match *b.get(at)? {

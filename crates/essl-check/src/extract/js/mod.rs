@@ -136,7 +136,12 @@ pub fn extract(text: &str, base: usize, imports: &dyn Imports) -> Vec<Embedded> 
             b'/' if b.get(i + 1) == Some(&b'*') => i = scan::comment_end(b, i),
             c @ (b'`' | b'\'' | b'"' | b'[') => match literal::parse(b, i) {
                 Some((expr, end)) => {
-                    if let Some(e) = shader(text, i, &expr, &consts, imports) {
+                    if let Some(mut e) = shader(text, i, &expr, &consts, imports) {
+                        if e.skip.is_none() && literal::rewritten(b, end) {
+                            e.skip = Some(Skip::Rewritten);
+                            e.pieces.clear();
+                            e.range = e.range.start..e.range.start;
+                        }
                         found.push(e);
                     }
                     i = end;

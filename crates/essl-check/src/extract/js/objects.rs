@@ -108,6 +108,23 @@ pub fn object(src: &str, open: usize) -> Option<Object> {
     })
 }
 
+/// The arguments of the call whose `(` is at `open`, each as the range of its expression.
+pub fn arguments(src: &str, open: usize) -> Option<Vec<Range<usize>>> {
+    let b = src.as_bytes();
+    let mut out = Vec::new();
+    let mut i = scan::skip_trivia(b, open + 1);
+    while b.get(i) != Some(&b')') {
+        let end = value_end(b, i);
+        out.push(i..trim_end(b, i, end));
+        match b.get(end)? {
+            b',' => i = scan::skip_trivia(b, end + 1),
+            b')' => i = end,
+            _ => return None,
+        }
+    }
+    Some(out)
+}
+
 /// Past the `,` after an entry (or at the closing `}`).
 fn next_entry(b: &[u8], i: usize) -> Option<usize> {
     let i = scan::skip_trivia(b, i);
