@@ -250,7 +250,8 @@ fn host(h: &Host, order: usize, cx: &Context) -> CheckedUnit {
                 let source = match prepared.lone.get(&(k.clone(), e.literal)) {
                     Some(wrap) => wrap.assembly(),
                     None if e.chunk => {
-                        chunk_prelude(from_pieces(file, &e.pieces), stage, &settings, &e.defines)
+                        let text = preset::chunk(from_pieces(file, &e.pieces), settings.preset);
+                        chunk_prelude(text, stage, &settings, &e.defines)
                     }
                     None => from_pieces(file, &e.pieces),
                 };
@@ -325,8 +326,31 @@ fn host(h: &Host, order: usize, cx: &Context) -> CheckedUnit {
 /// The shaders of a program a preset assembled, or the error that it could not be.
 fn program_parts(p: &Assembled, host: &Arc<SourceFile>) -> Vec<Part> {
     if let Some(e) = &p.error {
-        let message = format!("luma.gl cannot assemble this program: {e}");
-        return vec![problem(host, p.object, CheckCode::PresetAssembly, message)];
+        return vec![problem(
+            host,
+            p.object,
+            CheckCode::PresetAssembly,
+            e.clone(),
+        )];
+    }
+    if let Some(why) = &p.unchecked {
+        let mut part = problem(host, p.object, CheckCode::PresetUnchecked, why.clone());
+        if let Err(ds) = &mut part.assembly {
+            for (_, d) in ds.iter_mut() {
+                d.severity = essl::diagnostic::Severity::Note;
+            }
+        }
+        return vec![part];
+    }
+    if !p.problems.is_empty() {
+        return vec![Part {
+            own: None,
+            stage: Stage::Vertex,
+            name: None,
+            embedded_at: Some(p.object as u32),
+            chunk: false,
+            assembly: Err(p.problems.clone()),
+        }];
     }
     [(&p.vs, Stage::Vertex), (&p.fs, Stage::Fragment)]
         .into_iter()

@@ -18,6 +18,8 @@ pub enum CheckCode {
     PresetUnavailable,
     /// A preset's library refused to assemble a program.
     PresetAssembly,
+    /// A program a preset reads needs a value known only when the script runs.
+    PresetUnchecked,
 }
 
 impl CheckCode {
@@ -29,6 +31,7 @@ impl CheckCode {
         CheckCode::IncludeUnreadable,
         CheckCode::PresetUnavailable,
         CheckCode::PresetAssembly,
+        CheckCode::PresetUnchecked,
     ];
 
     /// The code's kebab-case name.
@@ -40,6 +43,7 @@ impl CheckCode {
             CheckCode::IncludeUnreadable => "include-unreadable",
             CheckCode::PresetUnavailable => "preset-unavailable",
             CheckCode::PresetAssembly => "preset-assembly",
+            CheckCode::PresetUnchecked => "preset-unchecked",
         }
     }
 
@@ -85,7 +89,15 @@ impl CheckCode {
                  time: luma.gl throws for a shader whose first line is not `#version 300 es` \
                  (it drops that line), for an unknown module, or for a uniform block whose \
                  members are not in the order of the module's `uniformTypes`. The message is \
-                 luma.gl's.\n"
+                 luma.gl's; for three.js, an `#include <chunk>` of a chunk it does not have.\n"
+            }
+            CheckCode::PresetUnchecked => {
+                "A note: a program the preset reads is not checked, because a value it needs is \
+                 known only when the script runs — a `defines` entry set from a variable \
+                 (`defines: {KERNEL_RADIUS: kernelRadius}`), or a name the script replaces in \
+                 the shader's text before compiling it (`.replace(/DEPTH_TO_VIEW_Z/g, …)`). Any \
+                 value essl picked could report errors the page never has, or hide ones it has. \
+                 Shown with `--show-notes`.\n"
             }
         }
     }

@@ -9,7 +9,8 @@
 //! exclude = ["vendor/**", "*.verbatim.frag"]
 //! # Folders `#include "FILE"` searches (relative to this file's folder), for `essl lint`.
 //! include = ["shaders/common"]
-//! # A library whose way of assembling shaders to follow: "luma" (luma.gl, deck.gl).
+//! # A library whose way of assembling shaders to follow: "luma" (luma.gl, deck.gl) or
+//! # "three" (three.js materials).
 //! preset = "luma"
 //! # Files that are chunks — code to put into shaders, checked as a library (no `main`, names
 //! # free for the including shader to declare) — as globs relative to this file's folder.
@@ -71,7 +72,7 @@ pub enum ConfigError {
         target: String,
     },
     /// `preset` names no preset essl has.
-    #[error("{}: preset `{preset}` is not one essl has (it has: luma)", .path.display())]
+    #[error("{}: preset `{preset}` is not one essl has (it has: luma, three)", .path.display())]
     Preset {
         /// The file.
         path: PathBuf,

@@ -388,7 +388,9 @@ impl Search<'_> {
     /// kept where a preset applies and it may name a program (its shaders in other files).
     fn host(&mut self, host: Host) {
         let programs = host.kind == HostKind::Script
-            && (host.file.text().contains("modules") || host.file.text().contains("getShaders"))
+            && ["modules", "getShaders", "vertexShader", "fragmentShader"]
+                .iter()
+                .any(|w| host.file.text().contains(w))
             && self
                 .configs
                 .for_file(&host.path)

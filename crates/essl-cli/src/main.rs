@@ -278,7 +278,8 @@ struct LintArgs {
     target: Option<WebglArg>,
 
     /// Check shaders as a library assembles them, from the copy the project has installed:
-    /// `luma` (luma.gl and deck.gl: modules, hooks, prologue). Overrides essl.toml's `preset`.
+    /// `luma` (luma.gl and deck.gl: modules, hooks, prologue) or `three` (three.js materials:
+    /// the prelude, `#include <chunk>`). Overrides essl.toml's `preset`.
     #[arg(long, value_enum, value_name = "LIBRARY")]
     preset: Option<PresetArg>,
 }
@@ -286,6 +287,7 @@ struct LintArgs {
 #[derive(Clone, Copy, Debug, ValueEnum)]
 enum PresetArg {
     Luma,
+    Three,
 }
 
 /// A WebGL version.
@@ -427,6 +429,7 @@ fn lint(args: LintArgs, matches: &clap::ArgMatches) -> i32 {
         stage: args.stage.map(Stage::from),
         preset: args.preset.map(|p| match p {
             PresetArg::Luma => essl_check::Preset::Luma,
+            PresetArg::Three => essl_check::Preset::Three,
         }),
         ..essl_check::Overrides::default()
     };

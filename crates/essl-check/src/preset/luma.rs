@@ -228,7 +228,9 @@ fn take(a: Asked, r: &Value, prepared: &mut Prepared) {
                 object: p.object,
                 vs: error.is_none().then(|| wrap(&p.vs, "vs", true)).flatten(),
                 fs: error.is_none().then(|| wrap(&p.fs, "fs", false)).flatten(),
-                error,
+                error: error.map(|e| format!("luma.gl cannot assemble this program: {e}")),
+                unchecked: None,
+                problems: Vec::new(),
             };
             prepared.programs.entry(host).or_default().push(assembled);
         }

@@ -15,6 +15,8 @@
 mod luma;
 mod node;
 pub(crate) mod programs;
+mod resolve;
+mod three;
 
 use std::collections::{HashMap, HashSet};
 use std::path::{Path, PathBuf};
@@ -29,7 +31,12 @@ use crate::find::{Found, Host};
 use crate::settings::Configs;
 use programs::Literal;
 
-pub use luma::prepare;
+/// Prepares every preset the hosts of `found` name.
+pub fn prepare(found: &Found, configs: &Configs) -> Prepared {
+    let mut prepared = luma::prepare(found, configs);
+    three::prepare(found, configs, &mut prepared);
+    prepared
+}
 
 /// Prepares the presets for the shaders of one text (an editor's document, a bundler's
 /// module): the program objects that name its shaders may lie in the scripts beside it (a
@@ -85,6 +92,8 @@ pub(crate) fn prepare_alone(found: &Found, configs: &Configs) -> Prepared {
 pub enum Preset {
     /// luma.gl's shader assembler, and deck.gl's layers on it.
     Luma,
+    /// three.js's `ShaderMaterial` and `RawShaderMaterial`.
+    Three,
 }
 
 impl Preset {
@@ -92,6 +101,7 @@ impl Preset {
     pub fn from_name(name: &str) -> Option<Preset> {
         match name {
             "luma" | "deck" | "deck.gl" | "luma.gl" => Some(Preset::Luma),
+            "three" | "three.js" => Some(Preset::Three),
             _ => None,
         }
     }
@@ -100,6 +110,7 @@ impl Preset {
     pub fn as_str(self) -> &'static str {
         match self {
             Preset::Luma => "luma",
+            Preset::Three => "three",
         }
     }
 }
@@ -150,6 +161,9 @@ pub(crate) struct Wrap {
     pub len: usize,
     /// Module texts of the project found in `prefix`, mapped to their files.
     pub locals: Vec<Literal>,
+    /// Runs of the author's text the library replaces (`#include <chunk>` lines, by the
+    /// chunk's text), as ranges of the literal's text, in order.
+    pub replaced: Vec<(std::ops::Range<usize>, String)>,
 }
 
 impl Wrap {
@@ -180,7 +194,25 @@ impl Wrap {
             len: core.len(),
             literal,
             locals,
+            replaced: Vec::new(),
         })
+    }
+
+    /// `literal` after `prefix`, whole, with the runs `replaced` of its text replaced.
+    pub fn around(
+        literal: Literal,
+        prefix: String,
+        replaced: Vec<(std::ops::Range<usize>, String)>,
+    ) -> Wrap {
+        Wrap {
+            prefix,
+            suffix: String::new(),
+            from: 0,
+            len: literal.text.len(),
+            literal,
+            locals: Vec::new(),
+            replaced,
+        }
     }
 
     /// The assembled text with the map back to the files.
@@ -207,13 +239,62 @@ impl Wrap {
             cursor = at + body.len();
         }
         a.generated(&self.prefix[cursor..], own, anchor);
-        a.extend_from(&author, self.from..self.from + self.len);
+        let range = self.from..self.from + self.len;
+        replace_runs(&mut a, &author, range, &self.replaced, own, anchor);
         let end = author
             .map_span(Span::empty((self.from + self.len) as u32))
             .map_or(anchor, |(_, s)| s.start as usize);
         a.generated(&self.suffix, own, end);
         a
     }
+}
+
+/// Appends `range` of `author` to `a` with the runs `replaced` (in order, apart, within
+/// `range`) replaced by their texts, each generated at the place its run starts.
+fn replace_runs(
+    a: &mut Assembly,
+    author: &Assembly,
+    range: std::ops::Range<usize>,
+    replaced: &[(std::ops::Range<usize>, String)],
+    own: u32,
+    anchor: usize,
+) {
+    let mut at = range.start;
+    for (run, text) in replaced {
+        a.extend_from(author, at..run.start);
+        let near = author
+            .map_span(Span::empty(run.start as u32))
+            .map_or(anchor, |(_, s)| s.start as usize);
+        a.generated(text, own, near);
+        at = run.end;
+    }
+    a.extend_from(author, at..range.end);
+}
+
+/// A chunk's text as its preset's library rewrites every shader's text (three.js: light
+/// counts, unrolled loops); as written for other presets.
+pub(crate) fn chunk(author: Assembly, preset: Option<Preset>) -> Assembly {
+    if preset != Some(Preset::Three) {
+        return author;
+    }
+    let runs = three::rewrites(author.text());
+    let Some((f, at)) = author.map_span(Span::empty(0)) else {
+        return author;
+    };
+    if runs.is_empty() {
+        return author;
+    }
+    let mut a = Assembly::default();
+    let own = a.file_index(&author.files()[f as usize]);
+    replace_runs(
+        &mut a,
+        &author,
+        0..author.text().len(),
+        &runs,
+        own,
+        at.start as usize,
+    );
+    a
 }
 
 /// A program a preset assembled.
@@ -227,6 +308,12 @@ pub(crate) struct Assembled {
     pub fs: Option<Wrap>,
     /// Why it could not be assembled, if it could not.
     pub error: Option<String>,
+    /// Why it is not checked, if it is not: a value it needs is known only when the script
+    /// runs.
+    pub unchecked: Option<String>,
+    /// What the library refused in its shaders (an `#include` of a chunk it does not have),
+    /// each at its place.
+    pub problems: Vec<(Arc<essl::source::SourceFile>, essl::diagnostic::Diagnostic)>,
 }
 
 /// What a run's presets prepared, by host file (canonical path).

@@ -15,6 +15,8 @@ use crate::extract::js::{self, literal, scan, Binding, Export};
 use crate::extract::{text_of, Piece};
 use crate::imports::{DiskImports, Script};
 
+use super::resolve;
+
 /// How deep module dependencies written in the project are followed.
 const MAX_DEPTH: usize = 8;
 
@@ -322,6 +324,16 @@ fn alternatives(text: &str, range: std::ops::Range<usize>) -> Vec<std::ops::Rang
         .collect()
 }
 
+/// The literal a shader-valued entry holds or names (`vertexShader: vs`), with its value.
+pub fn shader_value(
+    script: &Rc<Script>,
+    value: std::ops::Range<usize>,
+    imports: &DiskImports,
+) -> Option<Literal> {
+    let (s, at) = value_position(script, value, imports)?;
+    literal_at(&s, at, imports)
+}
+
 /// Where the expression a value names starts, and in which script: the value itself when it
 /// is a literal, else the constant or the export its name is bound to.
 fn value_position(
@@ -331,16 +343,15 @@ fn value_position(
 ) -> Option<(Rc<Script>, usize)> {
     let text = script.file.text();
     let code = text[value.clone()].trim();
-    let b = code.as_bytes();
-    if scan::ident_at(b, 0).is_some_and(|r| r.end == b.len()) {
-        bound(script, code, imports, 0)
+    if resolve::is_path(code) {
+        resolve::path(script, value.start, code, imports, 0)
     } else {
         Some((script.clone(), value.start))
     }
 }
 
 /// Where the name `name` of `script` is bound to an expression.
-fn bound(
+pub(super) fn bound(
     script: &Rc<Script>,
     name: &str,
     imports: &DiskImports,
@@ -384,7 +395,10 @@ fn exported(
 /// The literal expression at `at` of `script`, with its value.
 fn literal_at(script: &Rc<Script>, at: usize, imports: &DiskImports) -> Option<Literal> {
     let text = script.file.text();
-    let (expr, _) = literal::parse(text.as_bytes(), at)?;
+    let (expr, end) = literal::parse(text.as_bytes(), at)?;
+    if literal::rewritten(text.as_bytes(), end) {
+        return None;
+    }
     let here = imports.at(script.path.parent().unwrap_or(Path::new("")));
     let lookup = |n: &str, d: usize| js::lookup(text, &script.consts, &here, n, d);
     let pieces = expr.pieces(text, &lookup, 0).ok()?;
@@ -458,25 +472,93 @@ fn local_module(
 }
 
 /// An object literal of macro values at `at` (`{USE_X: 1, SKIN_MAX_JOINTS}`): each entry whose
-/// value essl can compute, as `NAME`, `VALUE`.
+/// value essl can compute, as `NAME`, `VALUE`. A value known only when the script runs
+/// (`ringWindingOrderCW`) still defines the macro, as 1: `#if NAME` then reads it, where
+/// leaving it out would be an error.
 pub fn defines(script: &Rc<Script>, at: usize, imports: &DiskImports) -> Vec<(String, String)> {
-    let text = script.file.text();
-    let Some(o) = objects::object(text, at) else {
-        return Vec::new();
+    define_values(script, at..at, imports)
+        .unwrap_or_default()
+        .into_iter()
+        .map(|(k, v)| (k, v.unwrap_or_else(|| "1".to_string())))
+        .collect()
+}
+
+/// The macros a `defines` value (an object literal, a name or path that leads to one, or
+/// `Object.assign({}, A.defines, {…})` of those) gives: each name with its value where essl
+/// can compute it; `None` when the value leads to no object the scripts write.
+/// `Shader.defines` of an object `Shader` that has no `defines` key: none (three.js's
+/// `Object.assign({}, Shader.defines)` then copies nothing).
+fn no_defines_key(
+    script: &Rc<Script>,
+    value: std::ops::Range<usize>,
+    imports: &DiskImports,
+) -> Option<Vec<(String, Option<String>)>> {
+    let code = script.file.text()[value.clone()].trim();
+    let owner = code.strip_suffix(".defines")?;
+    if !resolve::is_path(owner) {
+        return None;
+    }
+    let (there, at) = resolve::path(script, value.start, owner, imports, 0)?;
+    let o = objects::object(there.file.text(), at)?;
+    o.get("defines").is_none().then(Vec::new)
+}
+
+pub fn define_values(
+    script: &Rc<Script>,
+    value: std::ops::Range<usize>,
+    imports: &DiskImports,
+) -> Option<Vec<(String, Option<String>)>> {
+    merged_defines(script, value, imports, 0)
+}
+
+fn merged_defines(
+    script: &Rc<Script>,
+    value: std::ops::Range<usize>,
+    imports: &DiskImports,
+    depth: usize,
+) -> Option<Vec<(String, Option<String>)>> {
+    if depth > MAX_DEPTH {
+        return None;
+    }
+    let b = script.file.text().as_bytes();
+    let start = scan::skip_trivia(b, value.start);
+    if script.file.text()[start..].starts_with("Object.assign") {
+        let open = scan::skip_trivia(b, start + "Object.assign".len());
+        if b.get(open) != Some(&b'(') {
+            return None;
+        }
+        let mut all: Vec<(String, Option<String>)> = Vec::new();
+        for arg in objects::arguments(script.file.text(), open)? {
+            for (k, v) in merged_defines(script, arg, imports, depth + 1)? {
+                all.retain(|(name, _)| *name != k);
+                all.push((k, v));
+            }
+        }
+        return Some(all);
+    }
+    let (script, at) = if b.get(start) == Some(&b'{') {
+        (script.clone(), start)
+    } else {
+        match value_position(script, value.clone(), imports) {
+            Some(found) => found,
+            None => return no_defines_key(script, value, imports),
+        }
     };
-    o.entries
+    let text = script.file.text();
+    let o = objects::object(text, at)?;
+    let values = o
+        .entries
         .iter()
         .map(|(key, value)| {
             let code = text[value.clone()].trim();
-            // A value known only when the script runs (`ringWindingOrderCW`) still defines the
-            // macro, as 1: `#if NAME` then reads it, where leaving it out would be an error.
             let value_text = match code {
-                "true" | "false" => code.to_string(),
-                _ => value_position(script, value.clone(), imports)
+                "true" | "false" => Some(code.to_string()),
+                _ => value_position(&script, value.clone(), imports)
                     .and_then(|(s, at)| literal_at(&s, at, imports))
-                    .map_or_else(|| "1".to_string(), |l| l.text),
+                    .map(|l| l.text),
             };
             (key.clone(), value_text)
         })
-        .collect()
+        .collect();
+    Some(values)
 }

@@ -6,6 +6,7 @@ mod fix;
 mod hosts;
 mod includes;
 mod presets;
+mod three;
 
 use std::path::Path;
 

@@ -78,7 +78,7 @@ pub fn run(options: &LintOptions) -> i32 {
             return EXIT_USAGE;
         }
     };
-    if found.shader_count() == 0 && found.errors.is_empty() {
+    if found.shader_count() == 0 && found.hosts.is_empty() && found.errors.is_empty() {
         let names: Vec<String> = options
             .paths
             .iter()
