@@ -2,6 +2,7 @@
 //! the exit status, so that the binary (`main.rs`, the clap definitions) stays thin and tests can
 //! call the same code.
 //!
+//! - [`cli`]: the command line's arguments, for the binary and for `npx essl`.
 //! - [`lint`]: `essl lint` — check shaders and programs through the one checking pipeline
 //!   ([`essl_check`]: finding them in files, folders, HTML and JS, essl.toml, includes, fixes,
 //!   compile, lint, link), and render the results as text, JSON Lines, SARIF, GitHub
@@ -21,6 +22,7 @@
 
 #![warn(missing_docs)]
 
+pub mod cli;
 pub mod conformance;
 #[cfg(feature = "render")]
 pub mod deqp_exec;
