@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # The whole test suite on a fresh machine: system packages, the pinned JavaScript libraries,
-# formatting, clippy, every test, and a real editor (headless Neovim) driving `essl server`.
+# formatting, clippy, every test, the npm package's node --test suites, and a real editor (headless Neovim) driving `essl server`.
 # GPU tests render on lavapipe (software Vulkan). Tests that need data outside the repository
 # (corpora, scenes, seeds: ESSL_CORPORA / ESSL_SCENES / ESSL_SEEDS, else ../shared/...) skip
 # with a message where it is absent; ESSL_REQUIRE_CORPORA=1 turns that skip into a failure, and
@@ -20,4 +20,6 @@ export RUSTC_WORKSPACE_WRAPPER
 export CLIPPY_ARGS="-D__CLIPPY_HACKERY__warnings__CLIPPY_HACKERY__"
 cargo test --workspace --all-targets --no-run --quiet
 cargo test --workspace --quiet
+# The npm package (crates/essl-node): its API and real Vite, Rollup and webpack builds.
+./scripts/test-essl-node.sh
 ESSL="$PWD/target/debug/essl" ./scripts/editor-neovim.sh

@@ -1,0 +1,107 @@
+// essl for JavaScript: check WebGL shaders as a browser compiles them, link them, translate
+// them, and run the `essl` command. The work is done by the native addon (crates/essl-node,
+// the same checking pipeline as `essl lint`); this file checks arguments and shapes results.
+import {native} from './lib/native.js';
+
+const STAGES = new Set(['vertex', 'fragment']);
+
+function kind(value) {
+  if (value === null) return 'null';
+  if (Array.isArray(value)) return 'an array';
+  const t = typeof value;
+  return t === 'object' ? 'an object' : /^[aeiou]/.test(t) ? `an ${t}` : `a ${t}`;
+}
+
+function text(fn, name, value) {
+  if (typeof value !== 'string') {
+    throw new TypeError(`essl.${fn}: ${name} must be a string, not ${kind(value)}`);
+  }
+  return value;
+}
+
+function opts(fn, value) {
+  if (value === undefined || value === null) return {};
+  if (typeof value !== 'object' || Array.isArray(value)) {
+    throw new TypeError(`essl.${fn}: options must be an object, not ${kind(value)}`);
+  }
+  value = {...value};
+  if (value.stage !== undefined && !STAGES.has(value.stage)) {
+    throw new TypeError(`essl.${fn}: options.stage must be 'vertex' or 'fragment', not ${JSON.stringify(value.stage)}`);
+  }
+  return value;
+}
+
+// Calls the addon, rethrowing its argument errors as TypeErrors with the function's name.
+function call(fn, f) {
+  try {
+    return JSON.parse(f());
+  } catch (e) {
+    if (e instanceof SyntaxError) throw new Error(`essl.${fn}: the addon answered what is not JSON`);
+    const message = `essl.${fn}: ${String(e.message).replace(/^essl: /, '')}`;
+    throw e.code === 'InvalidArg' ? new TypeError(message) : new Error(message);
+  }
+}
+
+/** Every diagnostic of a result (shaders first, then programs). */
+function all(result) {
+  return [
+    ...result.shaders.flatMap(s => s.diagnostics),
+    ...result.programs.flatMap(p => p.diagnostics),
+  ];
+}
+
+export function check(source, options) {
+  text('check', 'source', source);
+  const o = opts('check', options);
+  if (o.filename === undefined && o.stage) o.filename = o.stage === 'vertex' ? 'shader.vert' : 'shader.frag';
+  const result = call('check', () => native.checkJson(source, JSON.stringify(o)));
+  result.diagnostics = all(result);
+  result.ok = result.errors === 0;
+  return result;
+}
+
+export function link(vertex, fragment, options) {
+  text('link', 'vertex', vertex);
+  text('link', 'fragment', fragment);
+  const o = opts('link', options);
+  const {vertexFilename, fragmentFilename, ...rest} = o;
+  const v = {...rest, ...(vertexFilename ? {filename: vertexFilename} : {})};
+  const f = {...rest, ...(fragmentFilename ? {filename: fragmentFilename} : {})};
+  const r = call('link', () => native.linkJson(vertex, fragment, JSON.stringify(v), JSON.stringify(f)));
+  return {
+    ...r.program,
+    vertex: r.vertex,
+    fragment: r.fragment,
+    diagnostics: [...r.vertex.diagnostics, ...r.fragment.diagnostics, ...r.program.diagnostics],
+  };
+}
+
+export function translate(vertex, fragment, options) {
+  text('translate', 'vertex', vertex);
+  text('translate', 'fragment', fragment);
+  const {to = 'wgsl', ...rest} = opts('translate', options);
+  if (typeof to !== 'string') throw new TypeError(`essl.translate: options.to must be a string, not ${kind(to)}`);
+  const r = call('translate', () => native.translateJson(vertex, fragment, to, JSON.stringify(rest)));
+  if (to === 'spirv') {
+    r.vertex = Uint32Array.from(r.vertex);
+    r.fragment = Uint32Array.from(r.fragment);
+  }
+  return r;
+}
+
+export function format(diagnostics) {
+  const list = Array.isArray(diagnostics)
+    ? diagnostics
+    : diagnostics && Array.isArray(diagnostics.diagnostics)
+      ? diagnostics.diagnostics
+      : null;
+  if (!list) throw new TypeError(`essl.format: expected diagnostics or a result, not ${kind(diagnostics)}`);
+  return list.map(d => d.rendered).join('\n');
+}
+
+export function runCli(args) {
+  if (!Array.isArray(args) || args.some(a => typeof a !== 'string')) {
+    throw new TypeError('essl.runCli: args must be an array of strings');
+  }
+  return native.runCli(args);
+}

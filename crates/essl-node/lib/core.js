@@ -1,0 +1,63 @@
+// What the Vite/Rollup plugin and the webpack loader share: which modules to check, checking
+// one through essl (the addon's one pipeline), and the error a bundler shows.
+import {readFileSync} from 'node:fs';
+import {check, format} from '../index.js';
+
+export const SHADER = /\.(glsl|vert|frag|vs|fs|vsh|fsh)$/;
+const SCRIPT = /\.(m?[jt]sx?|c[jt]s)$/;
+// A script is read only when it may hold a shader: a `glsl` tag or comment, or `#version`.
+const MAY_HOLD = /glsl|#version/;
+const CHECK_KEYS = ['target', 'defines', 'includeDirs', 'preset', 'config', 'rules', 'lints', 'denyWarnings'];
+
+/** The file a module id names: without `?query` or Vite's `\0` prefix. */
+export function file(id) {
+  return id.replace(/^\0/, '').replace(/[?#].*$/, '');
+}
+
+/** Whether a module is one essl checks, under the plugin's options. */
+export function wanted(id, options = {}) {
+  if (id.startsWith('\0')) return false;
+  const f = file(id);
+  if (!SHADER.test(f) && !SCRIPT.test(f)) return false;
+  if (options.exclude ? matches(options.exclude, f) : /[\\/]node_modules[\\/]/.test(f)) return false;
+  return options.include ? matches(options.include, f) : true;
+}
+
+function matches(patterns, f) {
+  return [patterns].flat().some(p => (p instanceof RegExp ? p.test(f) : f.includes(p)));
+}
+
+/**
+ * Checks a module: a shader file as essl reads it from disk (its `#include`s followed), a
+ * script from `code`. Returns the result, its errors and warnings (warnings count as errors
+ * under `failOnWarnings`), and for a shader file the text WebGL is given (includes in place)
+ * and the files it read.
+ */
+export function checkModule(id, code, options = {}) {
+  const f = file(id);
+  const isShader = SHADER.test(f);
+  if (!isShader && !MAY_HOLD.test(code)) return null;
+  const source = isShader ? readFileSync(f, 'utf8') : code;
+  const o = {filename: f};
+  for (const k of CHECK_KEYS) if (options[k] !== undefined) o[k] = options[k];
+  const result = check(source, o);
+  const fails = d => d.severity === 'error' || (options.failOnWarnings && d.severity === 'warning');
+  const errors = result.diagnostics.filter(fails);
+  const warnings = result.diagnostics.filter(d => d.severity === 'warning' && !fails(d));
+  const shader = isShader ? result.shaders[0] : null;
+  return {result, errors, warnings, text: shader?.text ?? null, files: shader?.files ?? []};
+}
+
+/** The error a bundler reports: essl's text for every error, located at the first one. */
+export function buildError(errors) {
+  const first = errors[0];
+  const err = new Error(`essl: ${errors.length} error${errors.length === 1 ? '' : 's'} in shaders\n${format(errors)}`);
+  err.name = 'EsslError';
+  err.plugin = 'essl';
+  if (first.range) {
+    err.id = first.file;
+    err.loc = {file: first.file, line: first.range.start.line, column: first.range.start.column - 1};
+  }
+  err.diagnostics = errors;
+  return err;
+}

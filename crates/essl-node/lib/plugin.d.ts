@@ -1,0 +1,22 @@
+import type {CheckOptions} from '../index.js';
+
+/** Options of the Vite/Rollup plugin and the webpack loader. */
+export interface EsslPluginOptions
+  extends Pick<CheckOptions, 'target' | 'defines' | 'includeDirs' | 'preset' | 'config' | 'rules' | 'lints'> {
+  /** Files to check (substrings or RegExps); default every shader file and script. */
+  include?: string | RegExp | (string | RegExp)[];
+  /** Files to leave (default: those under node_modules). */
+  exclude?: string | RegExp | (string | RegExp)[];
+  /** Warnings fail the build too. */
+  failOnWarnings?: boolean;
+  /** Load bare shader imports as modules exporting their text (default true). */
+  load?: boolean;
+}
+
+/** The plugin: `plugins: [essl({preset: 'three'})]`. */
+export default function essl(options?: EsslPluginOptions): {
+  name: 'essl';
+  enforce: 'pre';
+  load(id: string): string | null;
+  transform(code: string, id: string): {code: string; map: null} | null;
+};

@@ -1,0 +1,2 @@
+// The Rollup plugin: the same plugin as `essl/vite` (Rollup ignores Vite's `enforce`).
+export {default} from './vite.js';

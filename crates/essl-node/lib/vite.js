@@ -1,0 +1,35 @@
+// The Vite and Rollup plugin (`essl/vite`, `essl/rollup`): checks every shader file and every
+// script that holds shaders as it is transformed; an error fails the build (and shows in
+// Vite's overlay in `vite dev`, until the file is saved fixed), a warning prints. A shader
+// file imported without another loader (`import fs from './light.frag'`) becomes a module
+// whose default export is the text WebGL is given, its `#include`s in place.
+import {readFileSync} from 'node:fs';
+import {SHADER, buildError, checkModule, file, wanted} from './core.js';
+
+export default function essl(options = {}) {
+  if (options === null || typeof options !== 'object' || Array.isArray(options)) {
+    throw new TypeError('essl(): options must be an object');
+  }
+  const load = options.load !== false;
+  return {
+    name: 'essl',
+    enforce: 'pre',
+    load(id) {
+      // `?raw` and other queries are Vite's; a bare shader import is this plugin's.
+      if (!load || id.includes('?') || id.startsWith('\0') || !SHADER.test(id)) return null;
+      return `export default ${JSON.stringify(readFileSync(id, 'utf8'))};`;
+    },
+    transform(code, id) {
+      if (!wanted(id, options)) return null;
+      const checked = checkModule(id, code, options);
+      if (!checked) return null;
+      for (const f of checked.files) if (f !== file(id)) this.addWatchFile(f);
+      for (const w of checked.warnings) this.warn(w.rendered);
+      if (checked.errors.length) this.error(buildError(checked.errors));
+      if (load && !id.includes('?') && SHADER.test(id) && checked.text !== null) {
+        return {code: `export default ${JSON.stringify(checked.text)};`, map: null};
+      }
+      return null;
+    },
+  };
+}

@@ -1,0 +1,21 @@
+// The webpack loader (`essl/webpack`): checks a shader file or a script that holds shaders;
+// an error fails the build with essl's message at the author's file, line and column, a
+// warning is a webpack warning. A shader file's output is the text WebGL is given (its
+// `#include`s in place): use it with `type: 'asset/source'`. A script passes through as it is.
+module.exports = function esslLoader(source) {
+  const callback = this.async();
+  const options = this.getOptions ? this.getOptions() : {};
+  const id = this.resourcePath + (this.resourceQuery || '');
+  import('./core.js')
+    .then(({checkModule, buildError, SHADER, wanted}) => {
+      if (!wanted(id, options)) return callback(null, source);
+      const checked = checkModule(id, source, options);
+      if (!checked) return callback(null, source);
+      for (const f of checked.files) this.addDependency(f);
+      for (const w of checked.warnings) this.emitWarning(new Error(w.rendered));
+      if (checked.errors.length) return callback(buildError(checked.errors));
+      const shader = SHADER.test(this.resourcePath) && checked.text !== null;
+      return callback(null, shader ? checked.text : source);
+    })
+    .catch(callback);
+};

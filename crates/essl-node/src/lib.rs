@@ -1,0 +1,243 @@
+//! essl's checker as a Node.js addon, the native half of the npm package `essl`
+//! (`crates/essl-node`: `index.js`, `index.d.ts`, the Vite/Rollup plugin and the webpack
+//! loader are its JavaScript half).
+//!
+//! Every call goes through the one checking pipeline the CLI, the build-script checker and
+//! the editor server use ([`essl_check::check_text`], [`essl_check::link`]); the translator is
+//! [`essl_translate`]; `runCli` is the `essl` command itself ([`essl_cli::cli::main_from`]). No
+//! GPU stack is built into it. Options and results cross as JSON text: the JS side checks
+//! argument types (throwing `TypeError`s), parses the result, and keeps this surface to four
+//! functions. A panic inside a call is caught and becomes a thrown `Error`, never an abort of
+//! the Node process.
+
+use std::panic::{catch_unwind, AssertUnwindSafe};
+use std::path::Path;
+
+use essl_check::{CheckOptions, CheckedShader, Configs, Files};
+use napi::{Error, Status};
+use napi_derive::napi;
+use serde_json::json;
+
+mod options;
+mod report;
+
+/// The largest text a call takes, as the CLI's largest file ([`essl_check::MAX_FILE_SIZE`]).
+const MAX_TEXT: usize = essl_check::MAX_FILE_SIZE as usize;
+
+fn type_error(message: impl Into<String>) -> Error {
+    Error::new(Status::InvalidArg, message.into())
+}
+
+/// Runs `f`, turning a panic into a thrown `Error`.
+fn guarded<T>(what: &str, f: impl FnOnce() -> napi::Result<T>) -> napi::Result<T> {
+    match catch_unwind(AssertUnwindSafe(f)) {
+        Ok(r) => r,
+        Err(p) => {
+            let why = p
+                .downcast_ref::<&str>()
+                .map(|s| s.to_string())
+                .or_else(|| p.downcast_ref::<String>().cloned())
+                .unwrap_or_default();
+            Err(Error::new(
+                Status::GenericFailure,
+                format!("essl: internal error in {what}: {why}"),
+            ))
+        }
+    }
+}
+
+fn too_big(text: &str) -> napi::Result<()> {
+    if text.len() > MAX_TEXT {
+        return Err(Error::new(
+            Status::InvalidArg,
+            format!(
+                "the source is {} bytes, over essl's limit of {MAX_TEXT} bytes",
+                text.len()
+            ),
+        ));
+    }
+    Ok(())
+}
+
+/// Checks `text` as the file `options.filename` (its extension says what it is: a shader file,
+/// or an HTML or JS/TS file holding shaders). Returns the checked unit as JSON.
+fn check_one(text: String, opts: &options::Options) -> napi::Result<essl_check::CheckedUnit> {
+    too_big(&text)?;
+    let configs = Configs::new(opts.overrides.clone());
+    let check = CheckOptions {
+        link: opts.link,
+        lints: opts.lints,
+        ..CheckOptions::default()
+    };
+    let (unit, _) = essl_check::check_text(&opts.filename, text, &configs, &Files::disk(), check)
+        .map_err(|e| type_error(e.to_string()))?;
+    Ok(unit)
+}
+
+/// `check(source, options)`: diagnostics of a shader, or of every shader of a JS/TS or HTML
+/// file, and the programs linked where the pairs are known; JSON of `{shaders, programs,
+/// errors, warnings}`.
+#[napi(js_name = "checkJson")]
+pub fn check_json(source: String, options: String) -> napi::Result<String> {
+    guarded("check", || {
+        let opts = options::read(&options, "shader.glsl").map_err(|e| type_error(e.0))?;
+        let mut unit = check_one(source, &opts)?;
+        let partner = with_partner(&mut unit, &opts)?;
+        let mut out = report::unit(&unit);
+        if opts.overrides.deny_warnings {
+            // `--deny warnings`: a warning fails the check as an error does.
+            let all = out["errors"].as_u64().unwrap_or(0) + out["warnings"].as_u64().unwrap_or(0);
+            out["errors"] = json!(all);
+        }
+        if let (Some(i), Some(shaders)) = (partner, out["shaders"].as_array_mut()) {
+            // The partner's own diagnostics are its module's to report.
+            shaders[i]["partner"] = json!(true);
+            shaders[i]["diagnostics"] = json!([]);
+        }
+        Ok(out.to_string())
+    })
+}
+
+/// Links a lone shader file with its partner on disk (`light.frag` with `light.vert`), as
+/// `essl lint` pairs them: the partner is checked and added after it, and the program after
+/// the unit's. Returns the partner's index, if there is one.
+fn with_partner(
+    unit: &mut essl_check::CheckedUnit,
+    opts: &options::Options,
+) -> napi::Result<Option<usize>> {
+    if !opts.link || unit.shaders.len() != 1 || unit.shaders[0].embedded_at.is_some() {
+        return Ok(None);
+    }
+    let Some(path) = essl_check::partner(&opts.filename, |p| p.is_file()) else {
+        return Ok(None);
+    };
+    let Ok(text) = essl_check::read_source(&path) else {
+        return Ok(None);
+    };
+    let mut other = opts.clone();
+    other.filename = path;
+    other.overrides.stage = None;
+    let mut theirs = check_one(text, &other)?;
+    let Some(partner) = theirs.shaders.pop() else {
+        return Ok(None);
+    };
+    let mine = &unit.shaders[0];
+    let (vs, fs) = match mine.stage {
+        essl::Stage::Vertex => (mine, &partner),
+        essl::Stage::Fragment => (&partner, mine),
+    };
+    let mut program = essl_check::link(vs, fs);
+    (program.vertex, program.fragment) = match mine.stage {
+        essl::Stage::Vertex => (0, 1),
+        essl::Stage::Fragment => (1, 0),
+    };
+    unit.shaders.push(partner);
+    unit.programs.push(program);
+    Ok(Some(1))
+}
+
+/// The one shader of a stage-named check.
+fn lone_shader(source: String, options: &str, stage: essl::Stage) -> napi::Result<CheckedShader> {
+    let default = match stage {
+        essl::Stage::Vertex => "shader.vert",
+        essl::Stage::Fragment => "shader.frag",
+    };
+    let mut opts = options::read(options, default).map_err(|e| type_error(e.0))?;
+    opts.overrides.stage = Some(stage);
+    let ext = opts.filename.extension().and_then(|e| e.to_str());
+    if !matches!(
+        ext,
+        Some("vert" | "frag" | "vs" | "fs" | "glsl" | "vsh" | "fsh")
+    ) {
+        opts.filename = opts.filename.with_file_name(Path::new(default));
+    }
+    let unit = check_one(source, &opts)?;
+    unit.shaders
+        .into_iter()
+        .find(|s| s.stage == stage)
+        .ok_or_else(|| type_error(format!("the {default} text holds no {stage:?} shader")))
+}
+
+/// `link(vertex, fragment, options)`: both shaders checked, then linked as WebGL's
+/// `linkProgram`; JSON of `{vertex, fragment, program}` (each shader's result, the program's).
+#[napi(js_name = "linkJson")]
+pub fn link_json(
+    vertex: String,
+    fragment: String,
+    vertex_options: String,
+    fragment_options: String,
+) -> napi::Result<String> {
+    guarded("link", || {
+        let vs = lone_shader(vertex, &vertex_options, essl::Stage::Vertex)?;
+        let fs = lone_shader(fragment, &fragment_options, essl::Stage::Fragment)?;
+        let program = essl_check::link(&vs, &fs);
+        let mut p = report::program(&program);
+        p["vertex"] = json!(0);
+        p["fragment"] = json!(1);
+        Ok(json!({
+            "vertex": report::shader(&vs),
+            "fragment": report::shader(&fs),
+            "program": p,
+        })
+        .to_string())
+    })
+}
+
+/// `translate(vertex, fragment, {to})`: the program in WGSL, SPIR-V, MSL, HLSL or GLSL and its
+/// binding map; JSON of `{vertex, fragment, bindings}` (SPIR-V as an array of words).
+#[napi(js_name = "translateJson")]
+pub fn translate_json(
+    vertex: String,
+    fragment: String,
+    to: String,
+    options: String,
+) -> napi::Result<String> {
+    guarded("translate", || {
+        let target = essl_translate::Target::from_name(&to).ok_or_else(|| {
+            type_error(format!(
+                "options.to must be one of 'wgsl', 'spirv', 'msl', 'hlsl', 'glsl', not '{to}'"
+            ))
+        })?;
+        let vs = lone_shader(vertex, &options, essl::Stage::Vertex)?;
+        let fs = lone_shader(fragment, &options, essl::Stage::Fragment)?;
+        let (Some(v), Some(f)) = (&vs.shader, &fs.shader) else {
+            return Err(Error::new(
+                Status::GenericFailure,
+                "a shader's #include could not be followed".to_string(),
+            ));
+        };
+        let t = essl_translate::translate_program(v, f, &essl_translate::Options::new(target))
+            .map_err(|e| {
+                let shown: Vec<String> = [&vs, &fs]
+                    .iter()
+                    .flat_map(|s| s.all())
+                    .filter(|(_, d)| d.is_error())
+                    .map(|(file, d)| essl::render::human_string(file, std::slice::from_ref(d)))
+                    .collect();
+                Error::new(
+                    Status::GenericFailure,
+                    format!("essl: {e}\n{}", shown.join("")),
+                )
+            })?;
+        let code = |c: &essl_translate::Code| match c {
+            essl_translate::Code::Text(t) => json!(t),
+            essl_translate::Code::SpirV(words) => json!(words),
+        };
+        Ok(json!({
+            "vertex": code(&t.vertex),
+            "fragment": code(&t.fragment),
+            "bindings": t.bindings,
+        })
+        .to_string())
+    })
+}
+
+/// `runCli(args)`: the `essl` command with `args` (after the program's name), printing to this
+/// process's standard output and error; its exit status.
+#[napi(js_name = "runCli")]
+pub fn run_cli(args: Vec<String>) -> napi::Result<u32> {
+    guarded("the essl command", || {
+        let argv = std::iter::once("essl".into()).chain(args.into_iter().map(Into::into));
+        Ok(u32::from(essl_cli::cli::main_from(argv)))
+    })
+}

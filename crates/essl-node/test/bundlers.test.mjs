@@ -1,0 +1,135 @@
+// Real builds with the plugins: Vite, Rollup and webpack (pinned in package-lock.json) on a
+// small project (test/project) whose shaders are imported `.vert`/`.frag` files (linked as a
+// pair), an `#include`d chunk and a `/* glsl */` template literal. An error planted in each
+// (and a link error between the pair) fails the
+// build with essl's message at the file, line and column the author wrote; the project as it
+// is builds, with the included chunk in place in the output.
+import {test} from 'node:test';
+import assert from 'node:assert/strict';
+import {cpSync, mkdtempSync, readFileSync, readdirSync, rmSync, writeFileSync} from 'node:fs';
+import {tmpdir} from 'node:os';
+import {dirname, join} from 'node:path';
+import {fileURLToPath} from 'node:url';
+
+const here = dirname(fileURLToPath(import.meta.url));
+
+// Each planted error: the file, the text replaced, what replaces it, and where essl reports it.
+const PLANTED = [
+  ['src/shaders/light.frag', 'u_color.rgb * lambert', 'u_colour.rgb * lambert', 'light.frag:9:19'],
+  ['src/shaders/common.glsl', 'max(dot', 'max(dott', 'common.glsl:3:14'],
+  // A link error: the fragment shader's input is not the vertex shader's output any more.
+  ['src/shaders/light.vert', 'v_normal', 'v_norm', 'light.frag:4:9'],
+  ['src/materials.js', 'u_outline * ${SCALE}', 'u_outline * ${SCALE} * u_missing', 'materials.js:8:37'],
+];
+
+function project(edit) {
+  const dir = mkdtempSync(join(tmpdir(), 'essl-bundler-'));
+  cpSync(join(here, 'project'), dir, {recursive: true});
+  if (edit) {
+    const [file, from, to] = edit;
+    const path = join(dir, file);
+    const text = readFileSync(path, 'utf8');
+    assert.ok(text.includes(from), `${file} holds ${from}`);
+    writeFileSync(path, text.replaceAll(from, to));
+  }
+  return dir;
+}
+
+async function modules() {
+  try {
+    return {
+      vite: await import('vite'),
+      rollup: await import('rollup'),
+      webpack: (await import('webpack')).default,
+    };
+  } catch {
+    return null;
+  }
+}
+
+const tools = await modules();
+const skip = tools ? false : 'vite, rollup and webpack are not installed (npm ci in crates/essl-node)';
+if (skip && process.env.ESSL_REQUIRE_CORPORA === '1') throw new Error(skip);
+const {default: essl} = await import('../lib/vite.js');
+const loader = join(here, '..', 'lib', 'webpack-loader.cjs');
+
+async function viteBuild(dir) {
+  return tools.vite.build({
+    root: dir,
+    configFile: false,
+    logLevel: 'silent',
+    plugins: [essl()],
+    build: {outDir: join(dir, 'dist'), minify: false},
+  });
+}
+
+async function rollupBuild(dir) {
+  const bundle = await tools.rollup.rollup({input: join(dir, 'src/main.js'), plugins: [essl()], onwarn() {}});
+  const {output} = await bundle.generate({format: 'es'});
+  await bundle.close();
+  return output[0].code;
+}
+
+function webpackBuild(dir) {
+  return new Promise((resolve, reject) => {
+    tools.webpack(
+      {
+        mode: 'development',
+        devtool: false,
+        context: dir,
+        entry: './src/main.js',
+        output: {path: join(dir, 'dist'), filename: 'main.js'},
+        module: {
+          rules: [
+            {test: /\.(glsl|vert|frag)$/, type: 'asset/source', use: [{loader}]},
+            {test: /\.js$/, enforce: 'pre', use: [{loader}]},
+          ],
+        },
+      },
+      (err, stats) => {
+        if (err) return reject(err);
+        if (stats.hasErrors()) return reject(new Error(stats.toJson({all: false, errors: true}).errors.map(e => e.message).join('\n')));
+        resolve(readFileSync(join(dir, 'dist', 'main.js'), 'utf8'));
+      },
+    );
+  });
+}
+
+function output(dir) {
+  const assets = join(dir, 'dist', 'assets');
+  return readdirSync(assets).filter(f => f.endsWith('.js')).map(f => readFileSync(join(assets, f), 'utf8')).join('\n');
+}
+
+const BUILDS = {
+  vite: async dir => (await viteBuild(dir), output(dir)),
+  rollup: rollupBuild,
+  webpack: webpackBuild,
+};
+
+for (const [name, build] of Object.entries(BUILDS)) {
+  test(`${name}: the project builds, its chunk included`, {skip}, async () => {
+    const dir = project(null);
+    try {
+      const code = await build(dir);
+      assert.match(code, /float lambert\(vec3 n, vec3 l\)/);
+      assert.doesNotMatch(code, /#include/);
+    } finally {
+      rmSync(dir, {recursive: true, force: true});
+    }
+  });
+  for (const planted of PLANTED) {
+    test(`${name}: an error in ${planted[0]} fails the build at ${planted[3]}`, {skip}, async () => {
+      const dir = project(planted);
+      try {
+        await assert.rejects(build(dir), e => {
+          const message = String(e.message);
+          assert.ok(message.includes(`${planted[3]}`), message);
+          assert.match(message, /error\[/);
+          return true;
+        });
+      } finally {
+        rmSync(dir, {recursive: true, force: true});
+      }
+    });
+  }
+}
