@@ -11,9 +11,20 @@ export default function essl(options = {}) {
     throw new TypeError('essl(): options must be an object');
   }
   const load = options.load !== false;
+  // Files whose errors the page shows (`vite dev`): saving one reloads the page, so that the
+  // overlay goes as soon as the shader is fixed (a module whose transform failed is not in
+  // Vite's module graph, and its change would not reach the page).
+  const failed = new Set();
   return {
     name: 'essl',
     enforce: 'pre',
+    configureServer(server) {
+      server.watcher.on('change', changed => {
+        if (!failed.has(changed)) return;
+        failed.clear();
+        server.ws.send({type: 'full-reload'});
+      });
+    },
     load(id) {
       // `?raw` and other queries are Vite's; a bare shader import is this plugin's.
       if (!load || id.includes('?') || id.startsWith('\0') || !SHADER.test(id)) return null;
@@ -25,7 +36,12 @@ export default function essl(options = {}) {
       if (!checked) return null;
       for (const f of checked.files) if (f !== file(id)) this.addWatchFile(f);
       for (const w of checked.warnings) this.warn(w.rendered);
-      if (checked.errors.length) this.error(buildError(checked.errors));
+      if (checked.errors.length) {
+        failed.add(file(id));
+        for (const f of checked.files) failed.add(f);
+        for (const e of checked.errors) if (e.file) failed.add(e.file);
+        this.error(buildError(checked.errors));
+      }
       if (load && !id.includes('?') && SHADER.test(id) && checked.text !== null) {
         return {code: `export default ${JSON.stringify(checked.text)};`, map: null};
       }

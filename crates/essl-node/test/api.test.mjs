@@ -2,7 +2,7 @@
 // (a thrown TypeError or Error with a message; the process never crashes).
 import {test} from 'node:test';
 import assert from 'node:assert/strict';
-import {mkdtempSync, writeFileSync, rmSync, mkdirSync} from 'node:fs';
+import {existsSync, mkdtempSync, writeFileSync, rmSync, mkdirSync} from 'node:fs';
 import {tmpdir} from 'node:os';
 import {join} from 'node:path';
 import {check, link, translate, format, runCli} from '../index.js';
@@ -179,4 +179,25 @@ test('runCli is the essl command', () => {
   } finally {
     rmSync(dir, {recursive: true, force: true});
   }
+});
+
+// The pinned three.js that scripts/fetch-js-libs.sh installs for the `three` preset.
+const threeDir = join(import.meta.dirname, '..', '..', '..', 'tests', 'js');
+const haveThree = existsSync(join(threeDir, 'node_modules', 'three', 'package.json'));
+
+test('preset three: a ShaderMaterial checked with three.js prelude', {skip: !haveThree && 'three is not installed (scripts/fetch-js-libs.sh)'}, () => {
+  const js = [
+    "import { ShaderMaterial } from 'three';",
+    'export const m = new ShaderMaterial({',
+    '  vertexShader: /* glsl */`',
+    '    void main() { gl_Position = projectionMatrix * modelViewMatrix * vec4(position, 1.0); }`,',
+    '  fragmentShader: /* glsl */`',
+    '    uniform vec3 tint;',
+    '    void main() { gl_FragColor = vec4(tint * colour, 1.0); }`,',
+    '});',
+  ].join('\n');
+  const filename = join(threeDir, 'src', 'material.js');
+  const r = check(js, {filename, preset: 'three'});
+  assert.deepEqual(r.diagnostics.map(d => [d.code, d.range.start.line, d.range.start.column]), [['undeclared-identifier', 7, 46]]);
+  assert.ok(check(js, {filename}).errors > 1, 'without the preset, the prelude names are undeclared');
 });
