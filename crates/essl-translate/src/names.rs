@@ -45,9 +45,24 @@ pub fn prepare(module: &Module) -> Module {
         }
     }
     // The entry point copies each input into a private global of the GLSL name, which the
-    // shader's code reads: the argument gives way.
+    // shader's code reads: the argument gives way. A built-in's argument takes the built-in's
+    // name in WGSL (`frag_coord` for `@builtin(position)` in a fragment shader).
     for ep in module.entry_points.iter_mut() {
         for arg in ep.function.arguments.iter_mut() {
+            let builtin = match arg.binding {
+                Some(naga::Binding::BuiltIn(naga::BuiltIn::Position { .. })) => Some("frag_coord"),
+                Some(naga::Binding::BuiltIn(naga::BuiltIn::FrontFacing)) => Some("front_facing"),
+                Some(naga::Binding::BuiltIn(naga::BuiltIn::VertexIndex)) => Some("vertex_index"),
+                Some(naga::Binding::BuiltIn(naga::BuiltIn::InstanceIndex)) => {
+                    Some("instance_index")
+                }
+                Some(naga::Binding::BuiltIn(naga::BuiltIn::PointCoord)) => Some("point_coord"),
+                _ => None,
+            };
+            if let Some(b) = builtin.filter(|b| !globals.contains(*b)) {
+                arg.name = Some(b.to_owned());
+                continue;
+            }
             if let Some(name) = &arg.name {
                 if globals.contains(name) {
                     arg.name = Some(format!("{name}_in"));
