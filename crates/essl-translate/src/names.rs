@@ -16,11 +16,16 @@
 //!   and arguments; WGSL lets a local shadow a module-scope name). Anything else keeps the
 //!   namer's choice, so the result is valid WGSL whenever the writer's was; the tests read
 //!   every translated shader back through naga's WGSL front end.
+//! - [`restore_in`] does the same for the MSL, HLSL and desktop GLSL texts, where only the
+//!   namer's suffixes are undone.
 
 use std::collections::{HashMap, HashSet};
 
 use naga::proc::{NameKey, Namer};
 use naga::{Handle, Module};
+
+mod targets;
+pub use targets::restore_in;
 
 /// A copy of the module with the names a reader expects (see the module doc).
 pub fn prepare(module: &Module) -> Module {

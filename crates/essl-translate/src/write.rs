@@ -5,7 +5,7 @@
 //! own writer ([`crate::wgsl`]) from the restructured IR ([`ir::restructure`]), with the
 //! author's comments put back ([`crate::source`]); the text is read back by naga's WGSL front
 //! end, and should it not validate (a bug), naga's writer writes the stage instead, as the
-//! header then says. The other targets go through naga's writers, then [`names::restore`]
+//! header then says. The other targets go through naga's writers, then [`names::restore_in`]
 //! gives back the GLSL names their namers changed and [`comments::annotate`] explains what
 //! the lowering added.
 
@@ -117,6 +117,11 @@ pub(crate) fn stage(
             .map_err(|e| fail(e.to_string()))?;
             text
         }
+    };
+    let text = if options.restore_names {
+        names::restore_in(&module, options.target, &text)
+    } else {
+        text
     };
     Ok(Code::Text(if options.comments {
         comments::annotate(&text, original, (stage, language), options, &notes)

@@ -98,3 +98,47 @@ fn desktop_glsl_keeps_opengl_conventions() {
     assert!(!text.contains("clip_position_depth_0_to_w"), "{text}");
     insta::assert_snapshot!(text);
 }
+
+/// GLSL names in the targets naga's writers write: `u_light0` stays `u_light0` (their namer
+/// writes `u_light0_`), where the target does not reserve the name.
+#[test]
+fn glsl_names_in_every_target() {
+    let vs = essl::compile(
+        SourceFile::new("names.vert", "#version 300 es\nin vec4 a_pos0;\nout vec2 v_uv0;\nvoid main() { v_uv0 = a_pos0.xy; gl_Position = a_pos0; }\n"),
+        Stage::Vertex,
+        &CompileOptions::default(),
+    );
+    let fs = essl::compile(
+        SourceFile::new(
+            "names.frag",
+            "#version 300 es\nprecision highp float;\nin vec2 v_uv0;\nuniform vec4 u_light0;\nout vec4 color;\nvoid main() { vec4 float2 = u_light0; color = float2 * v_uv0.x; }\n",
+        ),
+        Stage::Fragment,
+        &CompileOptions::default(),
+    );
+    for target in [Target::Msl, Target::Hlsl, Target::Glsl, Target::Wgsl] {
+        let t =
+            essl_translate::translate_program(&vs, &fs, &Options::new(target)).expect("translates");
+        let text = format!(
+            "{}\n{}",
+            t.vertex.as_text().unwrap(),
+            t.fragment.as_text().unwrap()
+        );
+        let words: Vec<&str> = text
+            .split(|c: char| !c.is_ascii_alphanumeric() && c != '_')
+            .collect();
+        for name in ["v_uv0", "u_light0"] {
+            let renamed = format!("{name}_");
+            assert!(words.contains(&name), "{}: {name}\n{text}", target.name());
+            assert!(
+                !words.contains(&renamed.as_str()),
+                "{}: {renamed}\n{text}",
+                target.name()
+            );
+        }
+        // `float2` is a type in MSL and HLSL: the namer's `float2_` stays there.
+        if matches!(target, Target::Msl | Target::Hlsl) {
+            assert!(words.contains(&"float2_"), "{}\n{text}", target.name());
+        }
+    }
+}
