@@ -53,6 +53,7 @@ pub(crate) fn text(
         .iter()
         .map(|s| source::SourceText::new(s.file.text()))
         .collect();
+    let raw: Vec<&str> = files.sources.iter().map(|s| s.file.text()).collect();
     let comment_notes = comments::Notes::new(options);
     let commented = |o: wgsl::Origin| match o {
         wgsl::Origin::Source { file, start, .. } => {
@@ -69,6 +70,7 @@ pub(crate) fn text(
         module_scope_uniforms: options.uniforms == crate::Uniforms::ModuleScope,
         notes: &comment_notes,
         commented: &commented,
+        texts: &raw,
     };
     let author: Vec<Vec<String>> = texts.iter().map(|t| t.header()).collect();
     if let Ok(lines) = wgsl::write(&input) {

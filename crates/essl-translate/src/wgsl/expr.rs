@@ -182,7 +182,7 @@ impl FnCtx<'_> {
                     POSTFIX,
                 )
             }
-            Expression::AccessIndex { base, index } => self.access_index(base, index)?,
+            Expression::AccessIndex { base, index } => self.access_index(h, base, index)?,
             Expression::Swizzle {
                 size,
                 vector,
@@ -194,9 +194,10 @@ impl FnCtx<'_> {
                 pattern,
             } => {
                 let b = self.value(vector, false)?.at(POSTFIX, None);
+                let set = self.letters(h);
                 let letters: String = pattern[..size as usize]
                     .iter()
-                    .map(|c| ['x', 'y', 'z', 'w'][*c as usize])
+                    .map(|c| set[*c as usize])
                     .collect();
                 W::new(Doc::Cat(vec![b, Doc::text(format!(".{letters}"))]), POSTFIX)
             }
@@ -337,6 +338,24 @@ impl FnCtx<'_> {
         Ok(W::new(Doc::List { head, args }, POSTFIX))
     }
 
+    /// The component letters the GLSL wrote at `h` (`.rgb` stays `.rgb`; WGSL has no `.stp`).
+    fn letters(&self, h: Handle<Expression>) -> [char; 4] {
+        const XYZW: [char; 4] = ['x', 'y', 'z', 'w'];
+        let span = self.shape.function.expressions.get_span(h);
+        let (Some(file), Some(range)) = (self.file, span.to_range()) else {
+            return XYZW;
+        };
+        let Some(text) = self.env.texts.get(file).and_then(|t| t.get(range)) else {
+            return XYZW;
+        };
+        let tail = text.rsplit('.').next().unwrap_or("");
+        if !tail.is_empty() && tail.chars().all(|c| "rgba".contains(c)) {
+            ['r', 'g', 'b', 'a']
+        } else {
+            XYZW
+        }
+    }
+
     /// `S(v.a, v.b, …)` of every member of a `v` whose type is written as `S` (a std140
     /// copy of `S`): `v`.
     fn struct_copy(&self, head: &str, components: &[Handle<Expression>]) -> Result<Option<W>> {
@@ -417,7 +436,12 @@ impl FnCtx<'_> {
         }
     }
 
-    fn access_index(&self, base: Handle<Expression>, index: u32) -> Result<W> {
+    fn access_index(
+        &self,
+        h: Handle<Expression>,
+        base: Handle<Expression>,
+        index: u32,
+    ) -> Result<W> {
         let b = self
             .place(base, Indirection::Reference, false)?
             .at(POSTFIX, None);
@@ -429,7 +453,7 @@ impl FnCtx<'_> {
         }
         let suffix = match *inner {
             TypeInner::Vector { .. } | TypeInner::ValuePointer { size: Some(_), .. } => {
-                format!(".{}", ['x', 'y', 'z', 'w'][index as usize])
+                format!(".{}", self.letters(h)[index as usize])
             }
             TypeInner::Struct { .. } => {
                 let ty = struct_ty.ok_or_else(|| self.unsupported("an unnamed struct".into()))?;

@@ -88,6 +88,8 @@ pub(crate) struct Env<'a> {
     pub module_scope_uniforms: bool,
     /// essl's comment for a value it named (`clip_position_depth_0_to_w`…).
     pub note_for: &'a dyn Fn(&str) -> Option<String>,
+    /// The GLSL sources' texts, by file.
+    pub texts: &'a [&'a str],
 }
 
 impl Env<'_> {
@@ -112,4 +114,6 @@ pub(crate) struct Input<'a> {
     pub notes: &'a crate::comments::Notes,
     /// Whether the author wrote a comment right above the declaration at this origin.
     pub commented: &'a dyn Fn(Origin) -> bool,
+    /// The GLSL sources' texts, by file.
+    pub texts: &'a [&'a str],
 }

@@ -48,6 +48,7 @@ pub(crate) fn write(input: &Input) -> Result<Vec<Line>> {
         uniforms,
         module_scope_uniforms: input.module_scope_uniforms,
         note_for: &note_for,
+        texts: input.texts,
     };
     let mut w = ModuleWriter {
         input,
