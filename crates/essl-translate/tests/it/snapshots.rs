@@ -99,6 +99,44 @@ fn desktop_glsl_keeps_opengl_conventions() {
     insta::assert_snapshot!(text);
 }
 
+#[test]
+fn a_seed_program_as_one_module() {
+    let dir = essl_testdata::repo_root().join("shaders-glsl");
+    let name = "spot-flashlight-cookie.fixed";
+    let vs = shader(&dir.join(format!("{name}.vert")), Stage::Vertex);
+    let fs = shader(&dir.join(format!("{name}.frag")), Stage::Fragment);
+    let options = Options::default();
+    let one = essl_translate::translate_program_module(&vs, &fs, &options).expect("one module");
+    let text = one.code.as_text().expect("WGSL is text");
+    let (module, _) =
+        essl_translate::roundtrip::read_wgsl(text, Stage::Vertex).expect("reads back");
+    let names: Vec<_> = module
+        .entry_points
+        .iter()
+        .map(|e| e.name.as_str())
+        .collect();
+    assert_eq!(names, ["vs_main", "fs_main"]);
+    // The binding map is the per-stage translation's.
+    let stages = essl_translate::translate_program(&vs, &fs, &options).expect("translates");
+    assert_eq!(one.bindings, stages.bindings);
+    assert_eq!(text.matches("struct Uniforms {").count(), 1, "{text}");
+    insta::assert_snapshot!(text);
+}
+
+#[test]
+fn uniforms_at_module_scope() {
+    let options = Options {
+        uniforms: essl_translate::Uniforms::ModuleScope,
+        ..Options::default()
+    };
+    let text = translate("phong-positional.fixed", &options);
+    assert!(
+        text.contains("let uModelViewMatrix = uniforms.uModelViewMatrix;"),
+        "{text}"
+    );
+    insta::assert_snapshot!(text);
+}
+
 /// GLSL names in the targets naga's writers write: `u_light0` stays `u_light0` (their namer
 /// writes `u_light0_`), where the target does not reserve the name.
 #[test]
