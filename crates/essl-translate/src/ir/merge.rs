@@ -91,9 +91,10 @@ pub(crate) fn merge(vertex: &Module, fragment: &Module) -> Option<Merged> {
     // The fragment stage's accesses, once copied, are into the merged buffer's global.
     let merged_buffer = fragment_buffer.map(|fb| globals[fb.index()]);
     maps.module.as_mut()?.globals = globals;
-    // Functions: one of each.
+    // Functions: one of each. A function calls only functions before it in the arena, so
+    // the map is complete for each one as it is copied.
     let mut function_files = vec![0; out.functions.len()];
-    let mut functions = Vec::new();
+    maps.module.as_mut()?.functions = Vec::new();
     for (h, f) in fragment.functions.iter() {
         let mut copy = maps.function_from(f)?;
         if let Some(b) = merged_buffer {
@@ -111,9 +112,8 @@ pub(crate) fn merge(vertex: &Module, fragment: &Module) -> Option<Merged> {
                 out.functions.append(copy, fragment.functions.get_span(h))
             }
         };
-        functions.push(Some(new));
+        maps.module.as_mut()?.functions.push(Some(new));
     }
-    maps.module.as_mut()?.functions = functions;
     for ep in fragment.entry_points.iter() {
         let mut function = maps.function_from(&ep.function)?;
         if let Some(b) = merged_buffer {

@@ -123,6 +123,26 @@ fn a_seed_program_as_one_module() {
     insta::assert_snapshot!(text);
 }
 
+/// Every seed program becomes one module that naga reads back (a fragment function that
+/// calls another is copied after its callee).
+#[test]
+fn every_seed_program_as_one_module() {
+    let dir = essl_testdata::repo_root().join("shaders-glsl");
+    for name in linkable_seed_programs() {
+        let vs = shader(&dir.join(format!("{name}.vert")), Stage::Vertex);
+        let fs = shader(&dir.join(format!("{name}.frag")), Stage::Fragment);
+        let one = essl_translate::translate_program_module(&vs, &fs, &Options::default())
+            .unwrap_or_else(|e| panic!("{name}: {e}"));
+        let text = one.code.as_text().expect("WGSL is text");
+        assert!(
+            !text.contains("Written by naga's WGSL writer"),
+            "{name}\n{text}"
+        );
+        essl_translate::roundtrip::read_wgsl(text, Stage::Vertex)
+            .unwrap_or_else(|e| panic!("{name}: {e}\n{text}"));
+    }
+}
+
 #[test]
 fn uniforms_at_module_scope() {
     let options = Options {
