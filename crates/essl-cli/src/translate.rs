@@ -67,12 +67,21 @@ pub fn run(args: &TranslateArgs) -> i32 {
         eprintln!("error: no shader files (.vert, .frag, .vs, .fs, .vsh, .fsh) found");
         return 2;
     }
-    if args.single_module && args.options.target != Target::Wgsl {
-        eprintln!(
-            "error: --module single writes WGSL only (not --to {})",
-            args.options.target.name()
-        );
-        return 2;
+    let wgsl_only = [
+        (args.single_module, "--module single"),
+        (
+            args.options.uniforms == essl_translate::Uniforms::ModuleScope,
+            "--uniforms module-scope",
+        ),
+    ];
+    for (asked, option) in wgsl_only {
+        if asked && args.options.target != Target::Wgsl {
+            eprintln!(
+                "error: {option} writes WGSL only (not --to {})",
+                args.options.target.name()
+            );
+            return 2;
+        }
     }
     let options = essl_check::CheckOptions {
         link: !args.no_link,

@@ -244,6 +244,24 @@ fn uniforms_by_their_glsl_names() {
         "{stdout}"
     );
     assert!(stdout.contains("= u_matrix * a_position;"), "{stdout}");
+    // The other targets read uniforms as naga's writers do.
+    let o = essl(
+        &[
+            "translate",
+            "tinted.vert",
+            "--uniforms",
+            "module-scope",
+            "--to",
+            "hlsl",
+        ],
+        dir.path(),
+    );
+    let stderr = String::from_utf8_lossy(&o.stderr);
+    assert_eq!(o.status.code(), Some(2), "{stderr}");
+    assert!(
+        stderr.contains("--uniforms module-scope writes WGSL only"),
+        "{stderr}"
+    );
 }
 
 #[test]
