@@ -131,6 +131,10 @@ fn a_value_read_before_a_loop_is_not_read_again_in_it() {
         green_when("seen == 1 + 2 + 3 && n == 4")
     );
     let text = wgsl(&body);
+    // `i` starts from the value `n++` read, held in a `let` before the loop; the body reads
+    // `n` afresh.
+    assert!(text.contains("for (var i = _e"), "{text}");
+    assert!(text.contains("seen += n;"), "{text}");
     if let Some(c) = drawn(&body) {
         assert_eq!(c, GREEN, "{text}");
     }
