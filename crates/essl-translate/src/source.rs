@@ -3,7 +3,7 @@
 //!
 //! essl's IR keeps, for every statement and expression, the span of the GLSL it came from;
 //! the WGSL writer gives each line it writes the span of its statement or declaration
-//! ([`crate::wgsl::Origin`]). A comment of the GLSL then goes above the first line written
+//! (`wgsl::Origin`). A comment of the GLSL then goes above the first line written
 //! from source after it (a comment on a line of its own), or at the end of the line written
 //! from the statement it follows on its line (a trailing comment). The comments before the
 //! first declaration describe the file: they go under the output's header. A blank line
