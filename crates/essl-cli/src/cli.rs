@@ -40,7 +40,8 @@ enum Command {
     /// Score the front end on the conformance corpora (WebGL, dEQP, glslang, webgl2fundamentals).
     Conformance(ConformanceArgs),
     /// Translate shaders to WGSL, SPIR-V, MSL, HLSL or desktop GLSL (NAME.vert + NAME.frag
-    /// pairs linked first), next to each input or into the folder -o names.
+    /// pairs linked first), next to each input, into the folder -o names, or into the one
+    /// file -o names.
     ///
     /// Exit status: 0 all translated, 1 some have errors or could not be translated, 2 usage
     /// or I/O errors.
@@ -113,9 +114,21 @@ struct TranslateArgs {
     #[arg(long, value_enum, default_value_t = TargetArg::Wgsl)]
     to: TargetArg,
 
-    /// Write into this folder instead of next to each input (`-`: standard output).
-    #[arg(short = 'o', long = "output", value_name = "DIR")]
+    /// Write into this folder instead of next to each input; into this file when there is
+    /// one output and the name ends in the target's extension (`out.wgsl`); `-`: standard
+    /// output.
+    #[arg(short = 'o', long = "output", value_name = "DIR|FILE")]
     output: Option<PathBuf>,
+
+    /// `single`: one WGSL module per program, both entry points (`vs_main`, `fs_main`) in
+    /// NAME.wgsl; `per-stage`: a file per shader.
+    #[arg(long, value_enum, default_value_t = ModuleArg::PerStage)]
+    module: ModuleArg,
+
+    /// How WGSL reads the loose uniforms: `buffer` (`uniforms.u_color`) or `module-scope`
+    /// (`u_color`, a `let` of each at the top of the functions that read it).
+    #[arg(long, value_enum, default_value_t = UniformsArg::Buffer)]
+    uniforms: UniformsArg,
 
     /// Also write the binding map (uniform offsets, sampler and attribute bindings) as
     /// NAME.bindings.json.
@@ -150,6 +163,22 @@ impl From<StageArg> for Stage {
             StageArg::Fragment => Stage::Fragment,
         }
     }
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
+enum ModuleArg {
+    /// A file per shader.
+    PerStage,
+    /// One WGSL module per program.
+    Single,
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
+enum UniformsArg {
+    /// Through the uniform buffer: `uniforms.u_color`.
+    Buffer,
+    /// By their GLSL names: `let u_color = uniforms.u_color;` where a function reads it.
+    ModuleScope,
 }
 
 #[derive(Clone, Copy, Debug, ValueEnum)]
@@ -543,6 +572,9 @@ pub fn main_from(args: impl IntoIterator<Item = OsString>) -> u8 {
             options.depth_remap &= !args.no_depth_remap;
             options.flip_y &= !args.no_flip_y;
             options.comments = !args.no_comments;
+            if args.uniforms == UniformsArg::ModuleScope {
+                options.uniforms = essl_translate::Uniforms::ModuleScope;
+            }
             crate::translate::run(&crate::translate::TranslateArgs {
                 paths: args.paths,
                 stage: args.stage.map(Stage::from),
@@ -550,6 +582,7 @@ pub fn main_from(args: impl IntoIterator<Item = OsString>) -> u8 {
                 bindings: args.bindings.is_some(),
                 out: args.output,
                 no_link: args.no_link,
+                single_module: args.module == ModuleArg::Single,
             })
         }
         Command::Conformance(args) => {

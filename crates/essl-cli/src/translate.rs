@@ -6,8 +6,12 @@
 //! is linked and translated as a program (matching varying locations, one uniform buffer for
 //! both stages), any other shader on its own. Each output goes next to its input, or into the
 //! folder `-o` names, as the input's file name plus the target's extension
-//! (`light.frag` → `light.frag.wgsl`); the binding map, with `--bindings json`, as
-//! `NAME.bindings.json` (`light.frag.bindings.json` for a lone shader). A shader with errors is
+//! (`light.frag` → `light.frag.wgsl`; with `--module single`, a program's one module as
+//! `light.wgsl`); the binding map, with `--bindings json`, as `NAME.bindings.json`
+//! (`light.frag.bindings.json` for a lone shader). When there is one output and `-o` names a
+//! file with the target's extension (`-o out.wgsl`, as glslangValidator, naga and tint take
+//! it), the output is that file and its map `out.bindings.json`; a file name given for more
+//! than one output is an error rather than a folder of that name. A shader with errors is
 //! not translated: its diagnostics are printed as `essl lint` prints them.
 
 use std::path::{Path, PathBuf};
@@ -31,6 +35,8 @@ pub struct TranslateArgs {
     pub out: Option<PathBuf>,
     /// Do not link pairs: translate every shader on its own.
     pub no_link: bool,
+    /// Write each program as one module (WGSL): both entry points in `NAME.wgsl`.
+    pub single_module: bool,
 }
 
 /// Runs `essl translate`; the exit status (0 all translated, 1 some could not be, 2 usage or
@@ -61,9 +67,19 @@ pub fn run(args: &TranslateArgs) -> i32 {
         eprintln!("error: no shader files (.vert, .frag, .vs, .fs, .vsh, .fsh) found");
         return 2;
     }
-    if let Some(out) = args.folder() {
-        if let Err(e) = std::fs::create_dir_all(out) {
-            eprintln!("error: {}: {}", out.display(), essl_check::io_message(&e));
+    let wgsl_only = [
+        (args.single_module, "--module single"),
+        (
+            args.options.uniforms == essl_translate::Uniforms::ModuleScope,
+            "--uniforms module-scope",
+        ),
+    ];
+    for (asked, option) in wgsl_only {
+        if asked && args.options.target != Target::Wgsl {
+            eprintln!(
+                "error: {option} writes WGSL only (not --to {})",
+                args.options.target.name()
+            );
             return 2;
         }
     }
@@ -80,6 +96,30 @@ pub fn run(args: &TranslateArgs) -> i32 {
         options,
         &keep,
     );
+    let outputs: usize = run
+        .results
+        .iter()
+        .map(|u| match (u.programs.first(), args.single_module) {
+            (Some(_), true) => 1,
+            (Some(_), false) => 2,
+            (None, _) => u.shaders.len(),
+        })
+        .sum();
+    if let Some(file) = args.file() {
+        if outputs != 1 {
+            eprintln!(
+                "error: -o {}: a file takes one output, and {outputs} would be written: name a \
+                 folder",
+                file.display()
+            );
+            return 2;
+        }
+    } else if let Some(out) = args.folder() {
+        if let Err(e) = std::fs::create_dir_all(out) {
+            eprintln!("error: {}: {}", out.display(), essl_check::io_message(&e));
+            return 2;
+        }
+    }
     let mut status = 0;
     let mut written = 0usize;
     for unit in &run.results {
@@ -141,10 +181,35 @@ fn translate_pair(
     let (Some(vs), Some(fs)) = (&v.shader, &f.shader) else {
         return Ok(Outcome::default());
     };
+    // `dir/light.vert` → the program's map is `light.bindings.json`, its one module
+    // `light.wgsl`.
+    let base = v.path.with_extension("");
+    if args.single_module {
+        return match essl_translate::translate_program_module(vs, fs, &args.options) {
+            Ok(t) => {
+                let name = base.file_name().unwrap_or_default().to_string_lossy();
+                let path = args.place(&base, format!("{name}.{}", args.options.target.extension()));
+                Ok(Outcome {
+                    written: write_all(&[(path, t.code)], &t.bindings, &base, args)?,
+                    status: 0,
+                })
+            }
+            Err(e) => {
+                eprintln!(
+                    "error: {} + {}: {}",
+                    v.path.display(),
+                    f.path.display(),
+                    message(&e)
+                );
+                Ok(Outcome {
+                    written: 0,
+                    status: 1,
+                })
+            }
+        };
+    }
     match essl_translate::translate_program(vs, fs, &args.options) {
         Ok(t) => {
-            // `dir/light.vert` → the program's map is `light.bindings.json`.
-            let base = v.path.with_extension("");
             let outputs = [
                 (output_path(&v.path, args), t.vertex),
                 (output_path(&f.path, args), t.fragment),
@@ -229,9 +294,20 @@ fn output_path(input: &Path, args: &TranslateArgs) -> PathBuf {
 }
 
 impl TranslateArgs {
-    /// The folder `-o` names (none for `-`, standard output).
+    /// The folder `-o` names (none for `-`, standard output, or a file).
     fn folder(&self) -> Option<&Path> {
-        self.out.as_deref().filter(|o| o.as_os_str() != "-")
+        self.out
+            .as_deref()
+            .filter(|o| o.as_os_str() != "-" && self.file().is_none())
+    }
+
+    /// The file `-o` names: not a folder that exists, and ending in the target's extension.
+    fn file(&self) -> Option<&Path> {
+        self.out.as_deref().filter(|o| {
+            !o.is_dir()
+                && o.extension()
+                    .is_some_and(|e| e == self.options.target.extension())
+        })
     }
 
     /// Whether `-o -` asks for standard output.
@@ -239,8 +315,15 @@ impl TranslateArgs {
         self.out.as_deref().is_some_and(|o| o.as_os_str() == "-")
     }
 
-    /// Where a file named `name` goes: into `-o`'s folder, else beside `beside`.
+    /// Where a file named `name` goes: into `-o`'s folder, the file `-o` names (the one
+    /// output), beside it (a map), else beside `beside`.
     fn place(&self, beside: &Path, name: String) -> PathBuf {
+        if let Some(file) = self.file() {
+            if name.ends_with(".bindings.json") {
+                return file.with_extension("bindings.json");
+            }
+            return file.to_path_buf();
+        }
         match self.folder() {
             Some(dir) => dir.join(name),
             None => beside.with_file_name(name),

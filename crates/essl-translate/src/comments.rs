@@ -11,6 +11,102 @@ use naga::Module;
 
 use crate::{Options, Target};
 
+/// essl's comments for what the lowering added, as the WGSL writer places them (on the
+/// declarations and values they are about, rather than by searching the text).
+#[derive(Clone, Debug, Default)]
+pub(crate) struct Notes {
+    pub uniform_buffer: Option<String>,
+    pub padding: Option<String>,
+    pub framebuffer_height: Option<String>,
+    pub samplers: Option<String>,
+    /// Above the functions essl adds (`inverse4x4`).
+    pub helper: Option<String>,
+    named: Vec<(String, String)>,
+}
+
+impl Notes {
+    /// The notes for the options (none without comments).
+    pub(crate) fn new(options: &Options) -> Notes {
+        if !options.comments {
+            return Notes::default();
+        }
+        let api = api(options.target);
+        Notes {
+            uniform_buffer: Some(
+                "The loose uniforms, in one std140 buffer: the binding map gives their offsets."
+                    .into(),
+            ),
+            padding: Some("The other stage's uniforms.".into()),
+            framebuffer_height: Some(
+                "Not the shader's: the host writes the framebuffer height here (gl_FragCoord.y)."
+                    .into(),
+            ),
+            samplers: Some(
+                "Each GLSL sampler is a texture and a sampler: the binding map gives their bindings."
+                    .into(),
+            ),
+            helper: Some(format!(
+                "GLSL's inverse(), which {} lacks: the adjugate over the determinant.",
+                match options.target {
+                    Target::Wgsl => "WGSL",
+                    Target::Msl => "MSL",
+                    Target::Hlsl => "HLSL",
+                    _ => "the target",
+                }
+            )),
+            named: vec![
+                (
+                    "clip_position_depth_0_to_w".into(),
+                    format!("WebGL's clip-space z runs from -w to w, {api}'s from 0 to w."),
+                ),
+                (
+                    "frag_coord_y_up".into(),
+                    format!("gl_FragCoord.y counts up in WebGL, down in {api}."),
+                ),
+                ("dFdy_y_up".into(), "dFdy changes sign with the flipped y axis.".into()),
+            ],
+        }
+    }
+
+    /// The note for a value essl named.
+    pub(crate) fn named(&self, name: &str) -> Option<String> {
+        self.named
+            .iter()
+            .find(|(n, _)| n == name)
+            .map(|(_, note)| note.clone())
+    }
+}
+
+fn api(target: Target) -> &'static str {
+    match target {
+        Target::Wgsl => "WebGPU",
+        Target::SpirV | Target::Glsl => "the target API",
+        Target::Msl => "Metal",
+        Target::Hlsl => "Direct3D",
+    }
+}
+
+/// The output's first comment lines: what it is, `notes` (what WGSL cannot say), then the
+/// comments that open the GLSL files, as the author wrote them (`author`, without `//`).
+pub(crate) fn header(what: &str, notes: &[String], author: &[Vec<String>]) -> String {
+    let mut out = String::new();
+    for l in crate::source::wrap(what, 93) {
+        out.push_str(&format!("// {l}\n"));
+    }
+    for note in notes {
+        for l in crate::source::wrap(note, 93) {
+            out.push_str(&format!("// {l}\n"));
+        }
+    }
+    for lines in author.iter().filter(|l| !l.is_empty()) {
+        out.push_str("//\n");
+        for l in lines {
+            out.push_str(&format!("//{l}\n"));
+        }
+    }
+    out
+}
+
 /// The text with its comments: a header, then each comment above its anchor's line.
 pub fn annotate(
     text: &str,
@@ -48,12 +144,7 @@ pub fn annotate(
             ),
         ));
     }
-    let api = match options.target {
-        Target::Wgsl => "WebGPU",
-        Target::SpirV | Target::Glsl => "the target API",
-        Target::Msl => "Metal",
-        Target::Hlsl => "Direct3D",
-    };
+    let api = api(options.target);
     notes.push((
         Anchor::Named("clip_position_depth_0_to_w".into()),
         format!(
@@ -170,22 +261,7 @@ fn textures(module: &Module) -> Vec<(String, u32)> {
     out
 }
 
-/// Words of `text` in lines of at most `width` characters (a longer word stands alone).
-fn wrap(text: &str, width: usize) -> Vec<String> {
-    let mut lines = vec![String::new()];
-    for word in text.split_whitespace() {
-        let last = lines.last_mut().expect("one line");
-        if !last.is_empty() && last.len() + 1 + word.len() > width.max(20) {
-            lines.push(word.to_owned());
-        } else {
-            if !last.is_empty() {
-                last.push(' ');
-            }
-            last.push_str(word);
-        }
-    }
-    lines
-}
+use crate::source::wrap;
 
 #[cfg(test)]
 mod tests {

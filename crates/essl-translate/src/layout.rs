@@ -9,10 +9,55 @@
 //! than the IR says; WGSL then computes exactly the IR's offsets. (Array strides already agree:
 //! essl pads array elements smaller than 16 bytes into 16-byte structs.)
 
-use std::collections::HashSet;
+use std::collections::{HashMap, HashSet};
 
 use naga::proc::{Layouter, NameKey};
 use naga::{Handle, Module, TypeInner};
+
+/// Where a uniform struct's WGSL layout needs help to have the IR's offsets.
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
+pub struct Sizes {
+    /// Bytes before the first member (the other stage's uniforms, in a program's buffer).
+    pub lead: u32,
+    /// `@size(N)` of members, by index.
+    pub sizes: HashMap<usize, u32>,
+}
+
+/// The `@size`s each struct used in a uniform buffer needs (only those that need any).
+pub fn struct_sizes(module: &Module) -> HashMap<Handle<naga::Type>, Sizes> {
+    let mut out = HashMap::new();
+    let mut layouter = Layouter::default();
+    if layouter.update(module.to_ctx()).is_err() {
+        return out;
+    }
+    let mut structs = HashSet::new();
+    for (_, g) in module.global_variables.iter() {
+        if g.space == naga::AddressSpace::Uniform {
+            reach(module, g.ty, &mut structs);
+        }
+    }
+    for h in structs {
+        let TypeInner::Struct { members, span } = &module.types[h].inner else {
+            continue;
+        };
+        let mut sizes = HashMap::new();
+        for (i, m) in members.iter().enumerate() {
+            let end = m.offset + layouter[m.ty].size;
+            let (next, next_align) = match members.get(i + 1) {
+                Some(n) => (n.offset, layouter[n.ty].alignment),
+                None => (*span, layouter[h].alignment),
+            };
+            if next_align.round_up(end) != next {
+                sizes.insert(i, next - m.offset);
+            }
+        }
+        let lead = members.first().map_or(0, |m| m.offset);
+        if !sizes.is_empty() || lead > 0 {
+            out.insert(h, Sizes { lead, sizes });
+        }
+    }
+    out
+}
 
 /// The WGSL text with `@size` attributes where the IR's struct layout needs them.
 /// `names` are the WGSL writer's ([`crate::names::wgsl_names`]).

@@ -28,10 +28,14 @@
 
 pub mod bindings;
 pub mod comments;
+mod ir;
 pub mod layout;
 pub mod names;
 pub mod points;
 pub mod roundtrip;
+pub mod source;
+mod wgsl;
+mod wgsl_text;
 mod write;
 
 use essl::program::LowerOptions;
@@ -113,9 +117,23 @@ pub struct Options {
     pub flip_y: bool,
     /// Write comments where the lowering added something.
     pub comments: bool,
-    /// Give the GLSL names back where the target's namer changed them (WGSL only; the other
-    /// backends keep naga's names).
+    /// Give the GLSL names back where the target's namer changed them.
     pub restore_names: bool,
+    /// How WGSL functions read the loose uniforms.
+    pub uniforms: Uniforms,
+}
+
+/// How the WGSL reads the shader's loose uniforms, which live in one uniform buffer (a
+/// `var<uniform>` of one struct: WGSL has no loose uniforms).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub enum Uniforms {
+    /// Through the buffer: `uniforms.u_color`.
+    #[default]
+    Buffer,
+    /// By their GLSL names: each function that reads `u_color` starts with
+    /// `let u_color = uniforms.u_color;` (a uniform read with a dynamic index, or whose name
+    /// a local takes, stays `uniforms.NAME`).
+    ModuleScope,
 }
 
 impl Options {
@@ -128,6 +146,7 @@ impl Options {
             flip_y: target.needs_webgl_compat(),
             comments: true,
             restore_names: true,
+            uniforms: Uniforms::Buffer,
         }
     }
 
@@ -186,6 +205,15 @@ pub struct Translation {
     pub bindings: BindingMap,
 }
 
+/// A program translated to one module.
+#[derive(Clone, Debug)]
+pub struct ProgramModule {
+    /// Both stages: the vertex entry point `vs_main`, the fragment entry point `fs_main`.
+    pub code: Code,
+    /// Where the host puts each uniform, sampler and attribute ([`translate_program`]'s map).
+    pub bindings: BindingMap,
+}
+
 /// A translated lone shader.
 #[derive(Clone, Debug)]
 pub struct ShaderTranslation {
@@ -228,6 +256,12 @@ pub enum TranslateError {
         /// naga's message.
         message: String,
     },
+    /// One module for both stages was asked of a target other than WGSL.
+    #[error("one module for both stages is written for WGSL only, not {target}")]
+    SingleModule {
+        /// The target's name.
+        target: &'static str,
+    },
     /// The WGSL text did not parse or validate again in naga's WGSL front end (a bug).
     #[error("the {stage} shader's WGSL does not read back: {message}")]
     Reparse {
@@ -253,6 +287,7 @@ pub fn translate_program(
         Stage::Vertex,
         language(vs),
         options,
+        &[vs],
     )?;
     let fragment = write::stage(
         &layout.fragment,
@@ -260,12 +295,33 @@ pub fn translate_program(
         Stage::Fragment,
         language(fs),
         options,
+        &[fs],
     )?;
     Ok(Translation {
         vertex,
         fragment,
         bindings,
     })
+}
+
+/// Translates a program to one WGSL module, as WebGPU code usually keeps a pipeline's
+/// shaders: the vertex entry point `vs_main` and the fragment entry point `fs_main` share the
+/// structs and bindings, declared once (the loose uniforms as one struct of both stages'
+/// members). The binding map is [`translate_program`]'s.
+pub fn translate_program_module(
+    vs: &Shader,
+    fs: &Shader,
+    options: &Options,
+) -> Result<ProgramModule, TranslateError> {
+    if options.target != Target::Wgsl {
+        return Err(TranslateError::SingleModule {
+            target: options.target.name(),
+        });
+    }
+    let layout = lower_program(vs, fs, options)?;
+    let bindings = BindingMap::from_program(&layout, options);
+    let code = write::program_module(&layout, [vs, fs], language(vs), options)?;
+    Ok(ProgramModule { code, bindings })
 }
 
 /// Translates one shader on its own: inputs and outputs get locations in declaration order,
@@ -277,7 +333,14 @@ pub fn translate_shader(
     compiled(shader)?;
     let (module, info) = essl::lower::lower_shader(shader, &options.lower_options())?;
     let bindings = BindingMap::from_shader(shader, &module, options);
-    let code = write::stage(&module, &info, shader.stage, language(shader), options)?;
+    let code = write::stage(
+        &module,
+        &info,
+        shader.stage,
+        language(shader),
+        options,
+        &[shader],
+    )?;
     Ok(ShaderTranslation {
         stage: shader.stage,
         code,

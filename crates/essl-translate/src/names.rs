@@ -16,11 +16,16 @@
 //!   and arguments; WGSL lets a local shadow a module-scope name). Anything else keeps the
 //!   namer's choice, so the result is valid WGSL whenever the writer's was; the tests read
 //!   every translated shader back through naga's WGSL front end.
+//! - [`restore_in`] does the same for the MSL, HLSL and desktop GLSL texts, where only the
+//!   namer's suffixes are undone.
 
 use std::collections::{HashMap, HashSet};
 
 use naga::proc::{NameKey, Namer};
 use naga::{Handle, Module};
+
+mod targets;
+pub use targets::restore_in;
 
 /// A copy of the module with the names a reader expects (see the module doc).
 pub fn prepare(module: &Module) -> Module {
@@ -45,9 +50,24 @@ pub fn prepare(module: &Module) -> Module {
         }
     }
     // The entry point copies each input into a private global of the GLSL name, which the
-    // shader's code reads: the argument gives way.
+    // shader's code reads: the argument gives way. A built-in's argument takes the built-in's
+    // name in WGSL (`frag_coord` for `@builtin(position)` in a fragment shader).
     for ep in module.entry_points.iter_mut() {
         for arg in ep.function.arguments.iter_mut() {
+            let builtin = match arg.binding {
+                Some(naga::Binding::BuiltIn(naga::BuiltIn::Position { .. })) => Some("frag_coord"),
+                Some(naga::Binding::BuiltIn(naga::BuiltIn::FrontFacing)) => Some("front_facing"),
+                Some(naga::Binding::BuiltIn(naga::BuiltIn::VertexIndex)) => Some("vertex_index"),
+                Some(naga::Binding::BuiltIn(naga::BuiltIn::InstanceIndex)) => {
+                    Some("instance_index")
+                }
+                Some(naga::Binding::BuiltIn(naga::BuiltIn::PointCoord)) => Some("point_coord"),
+                _ => None,
+            };
+            if let Some(b) = builtin.filter(|b| !globals.contains(*b)) {
+                arg.name = Some(b.to_owned());
+                continue;
+            }
             if let Some(name) = &arg.name {
                 if globals.contains(name) {
                     arg.name = Some(format!("{name}_in"));

@@ -42,7 +42,7 @@ pub fn through_wgsl(
             Stage::Vertex => (&mut layout.vertex, &mut layout.vertex_info),
             Stage::Fragment => (&mut layout.fragment, &mut layout.fragment_info),
         };
-        let Code::Text(text) = write::stage(module, info, stage, "GLSL ES", &options)? else {
+        let Code::Text(text) = write::stage(module, info, stage, "GLSL ES", &options, &[])? else {
             unreachable!("WGSL is text");
         };
         (*module, *info) = read_wgsl(&text, stage)?;

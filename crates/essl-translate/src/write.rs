@@ -1,25 +1,29 @@
-//! One stage in one target language, through naga's backend for it.
+//! One stage in one target language.
 //!
-//! Before writing, [`names::prepare`] gives the module names the backends keep, and for WGSL
-//! [`points::drop_point_builtins`] removes what WGSL cannot say; after, for WGSL,
-//! [`layout::sized_members`] spells out the std140 offsets and [`names::restore`] gives back
-//! the GLSL names the namer changed. [`comments::annotate`] then explains what the lowering
-//! added, in every text target; the other targets keep their namers' choices (each has its
-//! own reserved words and rules).
+//! Before writing, [`names::prepare`] gives the module names the writers keep, and
+//! [`ir::inverse`] replaces `inverse()` where the target has none. WGSL is written by essl's
+//! own writer ([`crate::wgsl`]) from the restructured IR ([`ir::restructure`]), with the
+//! author's comments put back ([`crate::source`]); the text is read back by naga's WGSL front
+//! end, and should it not validate (a bug), naga's writer writes the stage instead, as the
+//! header then says. The other targets go through naga's writers, then [`names::restore_in`]
+//! gives back the GLSL names their namers changed and [`comments::annotate`] explains what
+//! the lowering added.
 
-use essl::Stage;
+use essl::{Shader, Stage};
 use naga::valid::ModuleInfo;
 use naga::Module;
 
-use crate::{comments, layout, names, points, Code, Options, Target, TranslateError};
+use crate::{comments, ir, names, points, Code, Options, Target, TranslateError};
 
-/// Writes one lowered stage.
+/// Writes one lowered stage; `sources` are the shaders its spans point into (none when the
+/// stage is written without its GLSL, as [`crate::roundtrip`] does).
 pub(crate) fn stage(
     module: &Module,
     info: &ModuleInfo,
     stage: Stage,
     language: &str,
     options: &Options,
+    sources: &[&Shader],
 ) -> Result<Code, TranslateError> {
     let fail = |message: String| TranslateError::Write {
         target: options.target.name(),
@@ -27,51 +31,28 @@ pub(crate) fn stage(
         message,
     };
     let original = module;
-    let mut module = names::prepare(module);
-    let mut notes = Vec::new();
-    let revalidated;
-    let mut info = info;
+    let Prepared {
+        module,
+        info,
+        notes,
+    } = prepare(module, info, options.target).map_err(fail)?;
     if options.target == Target::Wgsl {
-        let dropped = points::drop_point_builtins(&mut module);
-        if dropped.point_size {
-            notes.push(
-                "gl_PointSize is left out: WebGPU draws every point one pixel wide (draw \
-                 larger points as quads)."
-                    .to_owned(),
-            );
-        }
-        if dropped.point_coord {
-            notes.push(
-                "gl_PointCoord is (0.5, 0.5), the centre of WebGPU's one-pixel points.".to_owned(),
-            );
-        }
-        if dropped != points::Dropped::default() {
-            revalidated = naga::valid::Validator::new(
-                naga::valid::ValidationFlags::all(),
-                naga::valid::Capabilities::default(),
-            )
-            .validate(&module)
-            .map_err(|e| fail(e.into_inner().to_string()))?;
-            info = &revalidated;
-        }
+        let what = format!(
+            "The {} shader, translated from WebGL's {language} by essl.",
+            stage.as_str()
+        );
+        let (module, info) = ir::restructure::restructure(&module).unwrap_or((module, info));
+        let files = crate::wgsl_text::Files::one(&module, sources);
+        let text = crate::wgsl_text::text(&module, &info, &what, &notes, options, &files)?;
+        return Ok(Code::Text(text));
     }
+    let info = &info;
     let naga_stage = match stage {
         Stage::Vertex => naga::ShaderStage::Vertex,
         Stage::Fragment => naga::ShaderStage::Fragment,
     };
     let text = match options.target {
-        Target::Wgsl => {
-            let flags = naga::back::wgsl::WriterFlags::empty();
-            let text = naga::back::wgsl::write_string(&module, info, flags)
-                .map_err(|e| fail(e.to_string()))?;
-            let written = names::wgsl_names(&module);
-            let text = layout::sized_members(&module, &written, &text);
-            if options.restore_names {
-                names::restore(&module, &written, &text)
-            } else {
-                text
-            }
-        }
+        Target::Wgsl => unreachable!("written above"),
         Target::SpirV => {
             let mut spv = naga::back::spv::Options::default();
             spv.flags.set(naga::back::spv::WriterFlags::DEBUG, false);
@@ -137,9 +118,120 @@ pub(crate) fn stage(
             text
         }
     };
+    let text = if options.restore_names {
+        names::restore_in(&module, options.target, &text)
+    } else {
+        text
+    };
     Ok(Code::Text(if options.comments {
         comments::annotate(&text, original, (stage, language), options, &notes)
     } else {
         text
     }))
+}
+
+/// A linked program as one WGSL module ([`ir::merge`]), both stages written in it.
+pub(crate) fn program_module(
+    layout: &essl::program::ProgramLayout,
+    shaders: [&Shader; 2],
+    language: &str,
+    options: &Options,
+) -> Result<Code, TranslateError> {
+    let fail = |message: String| TranslateError::Write {
+        target: "wgsl",
+        stage: "program",
+        message,
+    };
+    let vertex = prepare(&layout.vertex, &layout.vertex_info, Target::Wgsl).map_err(fail)?;
+    let fragment = prepare(&layout.fragment, &layout.fragment_info, Target::Wgsl).map_err(fail)?;
+    let restructured =
+        |p: Prepared| ir::restructure::restructure(&p.module).map_or(p.module, |(m, _)| m);
+    let mut notes = vertex.notes.clone();
+    notes.extend(
+        fragment
+            .notes
+            .iter()
+            .filter(|n| !vertex.notes.contains(n))
+            .cloned(),
+    );
+    let merged = ir::merge::merge(&restructured(vertex), &restructured(fragment))
+        .ok_or_else(|| fail("the two stages do not make one module".into()))?;
+    let files = crate::wgsl_text::Files {
+        sources: &shaders,
+        functions: merged
+            .function_files
+            .iter()
+            .zip(merged.module.functions.iter())
+            .map(|(file, (h, _))| {
+                merged
+                    .module
+                    .functions
+                    .get_span(h)
+                    .is_defined()
+                    .then_some(*file)
+            })
+            .collect(),
+        entry_points: vec![Some(0), Some(1)],
+    };
+    let [vs_main, fs_main] = ir::merge::ENTRY_POINTS;
+    let what = format!(
+        "The vertex and fragment shaders of a program, translated from WebGL's {language} by \
+         essl: entry points `{vs_main}` and `{fs_main}`."
+    );
+    let text =
+        crate::wgsl_text::text(&merged.module, &merged.info, &what, &notes, options, &files)?;
+    Ok(Code::Text(text))
+}
+
+/// A lowered module ready for a target's writer, with the notes its header gives.
+pub(crate) struct Prepared {
+    pub module: Module,
+    pub info: ModuleInfo,
+    pub notes: Vec<String>,
+}
+
+/// The module with names the writers keep ([`names::prepare`]), `inverse()` as a function
+/// where the target has none, and (WGSL) the point built-ins WGSL lacks left out.
+pub(crate) fn prepare(
+    module: &Module,
+    info: &ModuleInfo,
+    target: Target,
+) -> Result<Prepared, String> {
+    let mut module = names::prepare(module);
+    let mut notes = Vec::new();
+    let mut changed = false;
+    if matches!(target, Target::Wgsl | Target::Msl | Target::Hlsl) {
+        changed |= ir::inverse::lower_inverse(&mut module).unwrap_or(false);
+    }
+    if target == Target::Wgsl {
+        let dropped = points::drop_point_builtins(&mut module);
+        if dropped.point_size {
+            notes.push(
+                "gl_PointSize is left out: WebGPU's points are one pixel (draw larger ones as \
+                 quads)."
+                    .to_owned(),
+            );
+        }
+        if dropped.point_coord {
+            notes.push(
+                "gl_PointCoord is (0.5, 0.5), the centre of WebGPU's one-pixel points.".to_owned(),
+            );
+        }
+        changed |= dropped != points::Dropped::default();
+    }
+    let info = if changed {
+        naga::valid::Validator::new(
+            naga::valid::ValidationFlags::all(),
+            naga::valid::Capabilities::default(),
+        )
+        .validate(&module)
+        .map_err(|e| e.into_inner().to_string())?
+    } else {
+        info.clone()
+    };
+    Ok(Prepared {
+        module,
+        info,
+        notes,
+    })
 }

@@ -1,6 +1,7 @@
 //! `essl translate` end to end: a program and a lone shader in a folder become WGSL files and
-//! binding maps next to them or in `-o`; a shader with errors is reported as `essl lint` would
-//! and not translated; every target writes something its reader takes.
+//! binding maps next to them, in the folder `-o` names, or in the one file it names; a program
+//! becomes one module with `--module single`; a shader with errors is reported as `essl lint`
+//! would and not translated; every target writes something its reader takes.
 
 use std::path::Path;
 use std::process::{Command, Output};
@@ -67,11 +68,11 @@ fn a_folder_becomes_wgsl_and_binding_maps_next_to_it() {
     assert!(vert.contains("@size(16) value: f32"), "{vert}");
     // The comments of what the lowering added.
     assert!(vert.contains("clip-space z runs from -w to w"), "{vert}");
+    assert!(frag.contains("gl_FragCoord.y counts up in WebGL"), "{frag}");
     assert!(
-        frag.contains("gl_FragCoord.y counts up from the bottom"),
+        frag.contains("Each GLSL sampler is a texture and a sampler"),
         "{frag}"
     );
-    assert!(frag.contains("GLSL's sampler uniform `u_tex[1]`"), "{frag}");
     let map: serde_json::Value = serde_json::from_str(&read("tinted.bindings.json")).unwrap();
     let uniform = |name: &str| {
         map["uniforms"]
@@ -121,6 +122,146 @@ fn into_a_folder_without_the_webgl_conventions() {
     assert!(!vert.contains("//") && !frag.contains("//"), "{vert}{frag}");
     assert!(!vert.contains("clip_position_depth_0_to_w"), "{vert}");
     assert!(!frag.contains("frag_coord_y_up") && !frag.contains("_essl_framebuffer_height"));
+}
+
+#[test]
+fn one_output_into_the_file_o_names() {
+    let dir = project();
+    let o = essl(
+        &[
+            "translate",
+            "alone.frag",
+            "-o",
+            "out.wgsl",
+            "--bindings",
+            "json",
+        ],
+        dir.path(),
+    );
+    let stderr = String::from_utf8_lossy(&o.stderr);
+    assert_eq!(o.status.code(), Some(0), "{stderr}");
+    let out = dir.path().join("out.wgsl");
+    assert!(out.is_file(), "-o out.wgsl is a file");
+    assert!(std::fs::read_to_string(&out).unwrap().contains("@fragment"));
+    assert!(dir.path().join("out.bindings.json").is_file());
+    // Two outputs (a program's stages) do not fit one file: an error, and no folder.
+    let o = essl(
+        &["translate", "tinted.vert", "tinted.frag", "-o", "pair.wgsl"],
+        dir.path(),
+    );
+    let stderr = String::from_utf8_lossy(&o.stderr);
+    assert_eq!(o.status.code(), Some(2), "{stderr}");
+    assert!(
+        stderr.contains("a file takes one output, and 2 would be written"),
+        "{stderr}"
+    );
+    assert!(!dir.path().join("pair.wgsl").exists());
+}
+
+#[test]
+fn a_program_as_one_module() {
+    let dir = project();
+    let o = essl(
+        &[
+            "translate",
+            "tinted.vert",
+            "tinted.frag",
+            "--module",
+            "single",
+            "-o",
+            "tinted.wgsl",
+            "--bindings",
+            "json",
+        ],
+        dir.path(),
+    );
+    let stderr = String::from_utf8_lossy(&o.stderr);
+    assert_eq!(o.status.code(), Some(0), "{stderr}");
+    let wgsl = std::fs::read_to_string(dir.path().join("tinted.wgsl")).unwrap();
+    assert!(
+        wgsl.contains("fn vs_main(") && wgsl.contains("fn fs_main("),
+        "{wgsl}"
+    );
+    // One struct of both stages' uniforms, declared once.
+    assert_eq!(wgsl.matches("struct Uniforms {").count(), 1, "{wgsl}");
+    assert!(wgsl.contains("u_matrix: mat4x4f") && wgsl.contains("u_tint: vec4f"));
+    // The binding map is the per-stage translation's.
+    let single = std::fs::read_to_string(dir.path().join("tinted.bindings.json")).unwrap();
+    let o = essl(
+        &[
+            "translate",
+            "tinted.vert",
+            "tinted.frag",
+            "-o",
+            "stages",
+            "--bindings",
+            "json",
+        ],
+        dir.path(),
+    );
+    assert_eq!(o.status.code(), Some(0));
+    let stages = std::fs::read_to_string(dir.path().join("stages/tinted.bindings.json")).unwrap();
+    assert_eq!(single, stages);
+    // Other targets write a file per stage.
+    let o = essl(
+        &[
+            "translate",
+            "tinted.vert",
+            "tinted.frag",
+            "--module",
+            "single",
+            "--to",
+            "msl",
+        ],
+        dir.path(),
+    );
+    assert_eq!(o.status.code(), Some(2));
+}
+
+#[test]
+fn uniforms_by_their_glsl_names() {
+    let dir = project();
+    let o = essl(
+        &[
+            "translate",
+            "tinted.vert",
+            "--uniforms",
+            "module-scope",
+            "-o",
+            "-",
+        ],
+        dir.path(),
+    );
+    let stdout = String::from_utf8_lossy(&o.stdout);
+    assert_eq!(
+        o.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&o.stderr)
+    );
+    assert!(
+        stdout.contains("let u_matrix = uniforms.u_matrix;"),
+        "{stdout}"
+    );
+    assert!(stdout.contains("= u_matrix * a_position;"), "{stdout}");
+    // The other targets read uniforms as naga's writers do.
+    let o = essl(
+        &[
+            "translate",
+            "tinted.vert",
+            "--uniforms",
+            "module-scope",
+            "--to",
+            "hlsl",
+        ],
+        dir.path(),
+    );
+    let stderr = String::from_utf8_lossy(&o.stderr);
+    assert_eq!(o.status.code(), Some(2), "{stderr}");
+    assert!(
+        stderr.contains("--uniforms module-scope writes WGSL only"),
+        "{stderr}"
+    );
 }
 
 #[test]

@@ -140,6 +140,26 @@ fn check_offsets(map: &essl_translate::BindingMap, wgsl: &str) -> Result<(), Str
     Ok(())
 }
 
+/// The program as one WGSL module: written by essl's writer, read back by naga, with the
+/// per-stage translation's binding map and every offset of it where WGSL puts a member.
+fn single_module(
+    vs: &Shader,
+    fs: &Shader,
+    bindings: &essl_translate::BindingMap,
+) -> Result<(), String> {
+    let one = essl_translate::translate_program_module(vs, fs, &Options::default())
+        .map_err(|e| e.to_string())?;
+    let text = one.code.as_text().expect("WGSL is text");
+    if text.contains("Written by naga's WGSL writer") {
+        return Err("naga's writer".into());
+    }
+    read_wgsl(text, Stage::Vertex).map_err(|e| e.to_string())?;
+    if one.bindings != *bindings {
+        return Err("a binding map of its own".into());
+    }
+    check_offsets(&one.bindings, text)
+}
+
 /// Programs that do not translate to WGSL yet (none: a `switch` case with statements that
 /// falls through, which WGSL cannot say, is lowered with the statements it falls into).
 const KNOWN: &[&str] = &[];
@@ -149,7 +169,8 @@ fn every_accepted_program_translates_and_reads_back() {
     let Some(programs) = programs() else {
         return;
     };
-    let (mut accepted, mut wgsl_ok) = (0, 0);
+    let (mut accepted, mut wgsl_ok, mut single_ok) = (0, 0, 0);
+    let mut single_failures = Vec::new();
     let mut others = [0usize; 4];
     let mut failures = Vec::new();
     let mut unlowered = Vec::new();
@@ -172,7 +193,10 @@ fn every_accepted_program_translates_and_reads_back() {
                 let mut ok = true;
                 for (stage, code) in [(Stage::Vertex, &t.vertex), (Stage::Fragment, &t.fragment)] {
                     let text = code.as_text().expect("WGSL is text");
-                    if let Err(e) = read_wgsl(text, stage) {
+                    if text.contains("Written by naga's WGSL writer") {
+                        failures.push(format!("{name} ({}): naga's writer", stage.as_str()));
+                        ok = false;
+                    } else if let Err(e) = read_wgsl(text, stage) {
                         failures.push(format!("{name} ({}): {e}", stage.as_str()));
                         ok = false;
                     } else if let Err(e) = check_offsets(&t.bindings, text) {
@@ -181,6 +205,9 @@ fn every_accepted_program_translates_and_reads_back() {
                     }
                 }
                 wgsl_ok += ok as usize;
+                single_ok += single_module(&vs, &fs, &t.bindings)
+                    .map_err(|e| single_failures.push(format!("{name}: {e}")))
+                    .is_ok() as usize;
             }
             Err(e) => failures.push(format!("{name}: {e}")),
         }
@@ -221,6 +248,8 @@ fn every_accepted_program_translates_and_reads_back() {
         );
     }
     assert_eq!(wgsl_ok, lowered - KNOWN.len());
+    println!("one module per program (--module single): {single_ok} read back");
+    assert_eq!(single_ok, wgsl_ok, "{single_failures:#?}");
     println!("known: {failures:#?}\nother targets: {other_failures:#?}");
     // SPIR-V is what essl-gl runs through wgpu: every program.
     assert_eq!(others[0], lowered, "{other_failures:#?}");
@@ -246,6 +275,13 @@ fn every_accepted_lone_shader_translates_and_reads_back() {
         }
         accepted += 1;
         match essl_translate::translate_shader(&shader, &Options::default()) {
+            Ok(t)
+                if t.code
+                    .as_text()
+                    .is_some_and(|t| t.contains("Written by naga's WGSL writer")) =>
+            {
+                failures.push(format!("{name}: naga's writer"))
+            }
             Ok(t) => match read_wgsl(t.code.as_text().expect("text"), stage) {
                 Ok(_) => ok += 1,
                 Err(e) => failures.push(format!("{name}: {e}")),

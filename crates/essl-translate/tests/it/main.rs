@@ -3,5 +3,6 @@
 
 mod binding_map;
 mod corpora;
+mod hazards;
 mod scenes;
 mod snapshots;

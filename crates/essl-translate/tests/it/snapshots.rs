@@ -98,3 +98,105 @@ fn desktop_glsl_keeps_opengl_conventions() {
     assert!(!text.contains("clip_position_depth_0_to_w"), "{text}");
     insta::assert_snapshot!(text);
 }
+
+#[test]
+fn a_seed_program_as_one_module() {
+    let dir = essl_testdata::repo_root().join("shaders-glsl");
+    let name = "spot-flashlight-cookie.fixed";
+    let vs = shader(&dir.join(format!("{name}.vert")), Stage::Vertex);
+    let fs = shader(&dir.join(format!("{name}.frag")), Stage::Fragment);
+    let options = Options::default();
+    let one = essl_translate::translate_program_module(&vs, &fs, &options).expect("one module");
+    let text = one.code.as_text().expect("WGSL is text");
+    let (module, _) =
+        essl_translate::roundtrip::read_wgsl(text, Stage::Vertex).expect("reads back");
+    let names: Vec<_> = module
+        .entry_points
+        .iter()
+        .map(|e| e.name.as_str())
+        .collect();
+    assert_eq!(names, ["vs_main", "fs_main"]);
+    // The binding map is the per-stage translation's.
+    let stages = essl_translate::translate_program(&vs, &fs, &options).expect("translates");
+    assert_eq!(one.bindings, stages.bindings);
+    assert_eq!(text.matches("struct Uniforms {").count(), 1, "{text}");
+    insta::assert_snapshot!(text);
+}
+
+/// Every seed program becomes one module that naga reads back (a fragment function that
+/// calls another is copied after its callee).
+#[test]
+fn every_seed_program_as_one_module() {
+    let dir = essl_testdata::repo_root().join("shaders-glsl");
+    for name in linkable_seed_programs() {
+        let vs = shader(&dir.join(format!("{name}.vert")), Stage::Vertex);
+        let fs = shader(&dir.join(format!("{name}.frag")), Stage::Fragment);
+        let one = essl_translate::translate_program_module(&vs, &fs, &Options::default())
+            .unwrap_or_else(|e| panic!("{name}: {e}"));
+        let text = one.code.as_text().expect("WGSL is text");
+        assert!(
+            !text.contains("Written by naga's WGSL writer"),
+            "{name}\n{text}"
+        );
+        essl_translate::roundtrip::read_wgsl(text, Stage::Vertex)
+            .unwrap_or_else(|e| panic!("{name}: {e}\n{text}"));
+    }
+}
+
+#[test]
+fn uniforms_at_module_scope() {
+    let options = Options {
+        uniforms: essl_translate::Uniforms::ModuleScope,
+        ..Options::default()
+    };
+    let text = translate("phong-positional.fixed", &options);
+    assert!(
+        text.contains("let uModelViewMatrix = uniforms.uModelViewMatrix;"),
+        "{text}"
+    );
+    insta::assert_snapshot!(text);
+}
+
+/// GLSL names in the targets naga's writers write: `u_light0` stays `u_light0` (their namer
+/// writes `u_light0_`), where the target does not reserve the name.
+#[test]
+fn glsl_names_in_every_target() {
+    let vs = essl::compile(
+        SourceFile::new("names.vert", "#version 300 es\nin vec4 a_pos0;\nout vec2 v_uv0;\nvoid main() { v_uv0 = a_pos0.xy; gl_Position = a_pos0; }\n"),
+        Stage::Vertex,
+        &CompileOptions::default(),
+    );
+    let fs = essl::compile(
+        SourceFile::new(
+            "names.frag",
+            "#version 300 es\nprecision highp float;\nin vec2 v_uv0;\nuniform vec4 u_light0;\nout vec4 color;\nvoid main() { vec4 float2 = u_light0; color = float2 * v_uv0.x; }\n",
+        ),
+        Stage::Fragment,
+        &CompileOptions::default(),
+    );
+    for target in [Target::Msl, Target::Hlsl, Target::Glsl, Target::Wgsl] {
+        let t =
+            essl_translate::translate_program(&vs, &fs, &Options::new(target)).expect("translates");
+        let text = format!(
+            "{}\n{}",
+            t.vertex.as_text().unwrap(),
+            t.fragment.as_text().unwrap()
+        );
+        let words: Vec<&str> = text
+            .split(|c: char| !c.is_ascii_alphanumeric() && c != '_')
+            .collect();
+        for name in ["v_uv0", "u_light0"] {
+            let renamed = format!("{name}_");
+            assert!(words.contains(&name), "{}: {name}\n{text}", target.name());
+            assert!(
+                !words.contains(&renamed.as_str()),
+                "{}: {renamed}\n{text}",
+                target.name()
+            );
+        }
+        // `float2` is a type in MSL and HLSL: the namer's `float2_` stays there.
+        if matches!(target, Target::Msl | Target::Hlsl) {
+            assert!(words.contains(&"float2_"), "{}\n{text}", target.name());
+        }
+    }
+}

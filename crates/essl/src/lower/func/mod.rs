@@ -373,6 +373,16 @@ impl<'c, 'a> FnCx<'c, 'a> {
     }
 
     pub(crate) fn new_local(&mut self, name: &str, t: &Type) -> Handle<naga::LocalVariable> {
+        self.new_local_at(name, t, Span::default())
+    }
+
+    /// A local declared at `span` of the source.
+    pub(crate) fn new_local_at(
+        &mut self,
+        name: &str,
+        t: &Type,
+        span: Span,
+    ) -> Handle<naga::LocalVariable> {
         let ty = self.ty(t);
         self.f.local_variables.append(
             naga::LocalVariable {
@@ -380,7 +390,7 @@ impl<'c, 'a> FnCx<'c, 'a> {
                 ty,
                 init: None,
             },
-            NSpan::UNDEFINED,
+            nspan(span),
         )
     }
 

@@ -282,7 +282,8 @@ impl<'c, 'a> FnCx<'c, 'a> {
         }
         // The function outlives `self`'s borrow: its name and type need no copies.
         let local = &self.hir_fn.expect("in a function").locals[l];
-        let h = self.new_local(&local.name, &local.ty);
+        // Where the GLSL declared it, for a translation to put its comments back.
+        let h = self.new_local_at(&local.name, &local.ty, local.span);
         self.locals[l] = Some(h);
         h
     }
