@@ -122,6 +122,9 @@ export interface CheckResult {
 /** Checks a shader, or every shader of a JS/TS or HTML file, as a browser compiles them. */
 export function check(source: string, options?: CheckOptions): CheckResult;
 
+/** `check` on a thread of Node's pool (bundlers check many modules at once). */
+export function checkAsync(source: string, options?: CheckOptions): Promise<CheckResult>;
+
 /** What `link` returns: the program, and each shader's result. */
 export interface LinkResult extends Omit<CheckedProgram, 'vertex' | 'fragment'> {
   vertex: CheckedShader;

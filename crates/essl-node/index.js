@@ -50,14 +50,35 @@ function all(result) {
   ];
 }
 
-export function check(source, options) {
-  text('check', 'source', source);
-  const o = opts('check', options);
+function checkOptions(fn, source, options) {
+  text(fn, 'source', source);
+  const o = opts(fn, options);
   if (o.filename === undefined && o.stage) o.filename = o.stage === 'vertex' ? 'shader.vert' : 'shader.frag';
-  const result = call('check', () => native.checkJson(source, JSON.stringify(o)));
+  return JSON.stringify(o);
+}
+
+function checked(result) {
   result.diagnostics = all(result);
   result.ok = result.errors === 0;
   return result;
+}
+
+export function check(source, options) {
+  const o = checkOptions('check', source, options);
+  return checked(call('check', () => native.checkJson(source, o)));
+}
+
+export async function checkAsync(source, options) {
+  const o = checkOptions('checkAsync', source, options);
+  let json;
+  try {
+    json = await native.checkJsonAsync(source, o);
+  } catch (e) {
+    return call('checkAsync', () => {
+      throw e;
+    });
+  }
+  return checked(call('checkAsync', () => json));
 }
 
 export function link(vertex, fragment, options) {

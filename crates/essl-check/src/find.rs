@@ -342,7 +342,8 @@ impl Search<'_> {
             || self
                 .configs
                 .for_file(&path)
-                .is_ok_and(|s| s.config.is_chunk(&path));
+                .is_ok_and(|s| s.config.is_chunk(&path))
+            || (is_glsl(&path) && self.in_include_folder(&path));
         let stage = self
             .stage_of(&path, Some(&text), true)
             .or(chunk.then_some(Stage::Vertex));

@@ -1,7 +1,7 @@
 // What the Vite/Rollup plugin and the webpack loader share: which modules to check, checking
 // one through essl (the addon's one pipeline), and the error a bundler shows.
-import {readFileSync} from 'node:fs';
-import {check, format} from '../index.js';
+import {readFile} from 'node:fs/promises';
+import {checkAsync, format} from '../index.js';
 
 export const SHADER = /\.(glsl|vert|frag|vs|fs|vsh|fsh)$/;
 const SCRIPT = /\.(m?[jt]sx?|c[jt]s)$/;
@@ -33,14 +33,22 @@ function matches(patterns, f) {
  * under `failOnWarnings`), and for a shader file the text WebGL is given (includes in place)
  * and the files it read.
  */
-export function checkModule(id, code, options = {}) {
+export async function checkModule(id, code, options = {}) {
   const f = file(id);
   const isShader = SHADER.test(f);
   if (!isShader && !MAY_HOLD.test(code)) return null;
-  const source = isShader ? readFileSync(f, 'utf8') : code;
+  const source = isShader ? await readFile(f, 'utf8') : code;
   const o = {filename: f};
   for (const k of CHECK_KEYS) if (options[k] !== undefined) o[k] = options[k];
-  const result = check(source, o);
+  let result;
+  try {
+    result = await checkAsync(source, o);
+  } catch (e) {
+    // A `.glsl` file nothing gives a stage to is a chunk for other shaders to include (as
+    // vite-plugin-glsl's users write them): it is checked where it is included.
+    if (/\.glsl$/.test(f) && /cannot tell the stage/.test(e.message)) return null;
+    throw e;
+  }
   const fails = d => d.severity === 'error' || (options.failOnWarnings && d.severity === 'warning');
   const errors = result.diagnostics.filter(fails);
   const warnings = result.diagnostics.filter(d => d.severity === 'warning' && !fails(d));

@@ -18,5 +18,5 @@ export default function essl(options?: EsslPluginOptions): {
   name: 'essl';
   enforce: 'pre';
   load(id: string): string | null;
-  transform(code: string, id: string): {code: string; map: null} | null;
+  transform(code: string, id: string): Promise<{code: string; map: null} | null>;
 };

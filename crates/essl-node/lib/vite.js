@@ -30,9 +30,9 @@ export default function essl(options = {}) {
       if (!load || id.includes('?') || id.startsWith('\0') || !SHADER.test(id)) return null;
       return `export default ${JSON.stringify(readFileSync(id, 'utf8'))};`;
     },
-    transform(code, id) {
+    async transform(code, id) {
       if (!wanted(id, options)) return null;
-      const checked = checkModule(id, code, options);
+      const checked = await checkModule(id, code, options);
       if (!checked) return null;
       for (const f of checked.files) if (f !== file(id)) this.addWatchFile(f);
       for (const w of checked.warnings) this.warn(w.rendered);

@@ -7,9 +7,9 @@ module.exports = function esslLoader(source) {
   const options = this.getOptions ? this.getOptions() : {};
   const id = this.resourcePath + (this.resourceQuery || '');
   import('./core.js')
-    .then(({checkModule, buildError, SHADER, wanted}) => {
+    .then(async ({checkModule, buildError, SHADER, wanted}) => {
       if (!wanted(id, options)) return callback(null, source);
-      const checked = checkModule(id, source, options);
+      const checked = await checkModule(id, source, options);
       if (!checked) return callback(null, source);
       for (const f of checked.files) this.addDependency(f);
       for (const w of checked.warnings) this.emitWarning(new Error(w.rendered));

@@ -14,7 +14,8 @@ use std::panic::{catch_unwind, AssertUnwindSafe};
 use std::path::Path;
 
 use essl_check::{CheckOptions, CheckedShader, Configs, Files};
-use napi::{Error, Status};
+use napi::bindgen_prelude::AsyncTask;
+use napi::{Env, Error, Status, Task};
 use napi_derive::napi;
 use serde_json::json;
 
@@ -79,6 +80,39 @@ fn check_one(text: String, opts: &options::Options) -> napi::Result<essl_check::
 /// errors, warnings}`.
 #[napi(js_name = "checkJson")]
 pub fn check_json(source: String, options: String) -> napi::Result<String> {
+    check_text_json(source, options)
+}
+
+/// [`check_json`] on a thread of Node's pool, for a bundler's many modules at once: a
+/// promise of the same JSON.
+#[napi(js_name = "checkJsonAsync")]
+pub fn check_json_async(source: String, options: String) -> AsyncTask<CheckTask> {
+    AsyncTask::new(CheckTask { source, options })
+}
+
+/// The work of [`check_json_async`].
+pub struct CheckTask {
+    source: String,
+    options: String,
+}
+
+impl Task for CheckTask {
+    type Output = String;
+    type JsValue = String;
+
+    fn compute(&mut self) -> napi::Result<String> {
+        check_text_json(
+            std::mem::take(&mut self.source),
+            std::mem::take(&mut self.options),
+        )
+    }
+
+    fn resolve(&mut self, _env: Env, output: String) -> napi::Result<String> {
+        Ok(output)
+    }
+}
+
+fn check_text_json(source: String, options: String) -> napi::Result<String> {
     guarded("check", || {
         let opts = options::read(&options, "shader.glsl").map_err(|e| type_error(e.0))?;
         let mut unit = check_one(source, &opts)?;

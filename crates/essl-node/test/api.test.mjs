@@ -5,7 +5,7 @@ import assert from 'node:assert/strict';
 import {existsSync, mkdtempSync, writeFileSync, rmSync, mkdirSync} from 'node:fs';
 import {tmpdir} from 'node:os';
 import {join} from 'node:path';
-import {check, link, translate, format, runCli} from '../index.js';
+import {check, checkAsync, link, translate, format, runCli} from '../index.js';
 
 const FS = `#version 300 es
 precision mediump float;
@@ -40,6 +40,16 @@ test('an error has its code, range, label, help, fix and text', () => {
   assert.match(d.rendered, /shader\.frag:5:24/);
   assert.equal(format(r), d.rendered);
   assert.equal(format(r.diagnostics), d.rendered);
+});
+
+test('checkAsync gives what check gives, many at once', async () => {
+  const bad = FS.replace('u_color;\n}', 'u_colour;\n}').replace('o = u_color', 'o = u_colour');
+  const results = await Promise.all(Array.from({length: 16}, (_, i) => checkAsync(i % 2 ? bad : FS, {stage: 'fragment'})));
+  assert.deepEqual(results.map(r => r.errors), Array.from({length: 16}, (_, i) => i % 2));
+  assert.deepEqual(results[1], check(bad, {stage: 'fragment'}));
+  await assert.rejects(checkAsync(FS, {stage: 'geometry'}), TypeError);
+  await assert.rejects(checkAsync(FS, {rules: {nope: 'deny'}}), TypeError);
+  await assert.rejects(checkAsync(null), TypeError);
 });
 
 test('every error in one call, and secondary ranges', () => {

@@ -1,0 +1,110 @@
+// essl's npm API against spglsl (ANGLE's translator compiled to WebAssembly, npm) on the WebGL
+// conformance ES 3.00 and ES 1.00 corpora and dEQP (../shared/corpora or $ESSL_CORPORA), in
+// one run: agreement with the expected answers under the corpora's scoring rules, and time
+// per shader through each package's JavaScript API. spglsl checks one shader at a time (no
+// linking), so a case it passes is one whose compile results alone give the answer.
+//
+//   node bench/peers.mjs [--limit N]      (from crates/essl-node, after `npm run build`)
+//
+// Prints a Markdown table for docs/performance.md and docs/conformance.md.
+import {readFileSync, existsSync} from 'node:fs';
+import {join, dirname} from 'node:path';
+import {fileURLToPath} from 'node:url';
+import {execFileSync} from 'node:child_process';
+import {link} from '../index.js';
+
+const here = dirname(fileURLToPath(import.meta.url));
+const corpora = process.env.ESSL_CORPORA || join(here, '..', '..', '..', '..', 'shared', 'corpora');
+if (!existsSync(corpora)) {
+  console.error(`peers: no corpora at ${corpora} (set ESSL_CORPORA)`);
+  process.exit(process.env.ESSL_REQUIRE_CORPORA === '1' ? 1 : 0);
+}
+const {spglslAngleCompile} = await import('spglsl');
+const limitAt = process.argv.indexOf('--limit');
+const limit = limitAt > 0 ? Number(process.argv[limitAt + 1]) : Infinity;
+
+function read(name) {
+  return readFileSync(join(corpora, name), 'utf8').trim().split('\n').map(l => JSON.parse(l)).slice(0, limit);
+}
+
+// Each case as {vertex, fragment, target, want(compiledV, compiledF, linked) -> pass}.
+const SETS = {
+  'WebGL ES 3.00': read('webgl_conformance_es300.jsonl').map(c => ({
+    vertex: c.vertex_source,
+    fragment: c.fragment_source,
+    target: 'webgl2',
+    pass: (v, f, l) => (c.outcome === 'must_fail' ? !(v && f && l) : v && f && l),
+  })),
+  'WebGL ES 1.00 (WebGL 2 context)': read('webgl_conformance_es100.jsonl')
+    .filter(c => c.chromium_webgl2)
+    .map(c => {
+      const want = c.chromium_webgl2;
+      return {
+        vertex: c.vertex_source,
+        fragment: c.fragment_source,
+        target: 'webgl2',
+        pass: (v, f, l) => v === want.vertex && f === want.fragment && (!(v && f) || l === want.link),
+      };
+    }),
+  dEQP: read('deqp_gles3.jsonl')
+    .filter(c => c.version === '300 es')
+    .map(c => ({
+      vertex: c.vertex_source,
+      fragment: c.fragment_source,
+      target: 'webgl2',
+      pass: (v, f, l) => {
+        if (c.expect === 'compile_fail') return !(v && f);
+        if (c.expect === 'link_fail') return v && f && !l;
+        if (c.expect === 'compile_link_fail') return !(v && f && l);
+        return v && f && l;
+      },
+    })),
+};
+
+function essl(c) {
+  const p = link(c.vertex, c.fragment, {target: c.target, lints: false});
+  return [p.vertex.ok, p.fragment.ok, p.ok];
+}
+
+async function spglsl(c) {
+  const one = async (src, language) => {
+    try {
+      const r = await spglslAngleCompile({mainSourceCode: src, language, compileMode: 'Validate'});
+      return r.valid;
+    } catch {
+      return false;
+    }
+  };
+  const v = await one(c.vertex, 'Vertex');
+  const f = await one(c.fragment, 'Fragment');
+  // No linker: a program of two valid shaders counts as linked.
+  return [v, f, v && f];
+}
+
+async function measure(cases, run) {
+  // One untimed round to warm up (spglsl's WebAssembly compile, essl's first calls).
+  for (const c of cases.slice(0, 20)) await run(c);
+  let passed = 0;
+  const start = process.hrtime.bigint();
+  for (const c of cases) if (c.pass(...(await run(c)))) passed++;
+  const ns = Number(process.hrtime.bigint() - start);
+  return {passed, usPerShader: ns / 1000 / (cases.length * 2)};
+}
+
+const commit = (() => {
+  try {
+    return execFileSync('git', ['rev-parse', '--short', 'HEAD'], {encoding: 'utf8'}).trim();
+  } catch {
+    return '?';
+  }
+})();
+console.log(`essl npm API vs spglsl ${JSON.parse(readFileSync(join(here, '..', 'node_modules', 'spglsl', 'package.json'))).version}, commit ${commit}, Node ${process.version}, ${(await import('node:os')).cpus()[0].model}\n`);
+console.log('| corpus | cases | essl agrees | spglsl agrees | essl µs/shader | spglsl µs/shader | spglsl / essl time |');
+console.log('|---|---|---|---|---|---|---|');
+for (const [name, cases] of Object.entries(SETS)) {
+  const e = await measure(cases, essl);
+  const s = await measure(cases, spglsl);
+  console.log(
+    `| ${name} | ${cases.length} | ${e.passed} | ${s.passed} | ${e.usPerShader.toFixed(0)} | ${s.usPerShader.toFixed(0)} | ${(s.usPerShader / e.usPerShader).toFixed(1)}× |`,
+  );
+}
