@@ -174,8 +174,9 @@ impl Analysis {
                 let deps = self.deps_of(id, &[*coordinate]).with(Facts::TEXTURE);
                 self.texel(module, ty, deps)
             }
+            // Sizes, levels, layers and samples of a bound (complete) texture: at least 1.
             E::ImageQuery { .. } => shape(module, ty, &|n, _| {
-                Num::splat(Interval::NON_NEGATIVE, n, Facts::NONE)
+                Num::splat(Interval::new(1.0, f64::INFINITY), n, Facts::NONE)
             }),
             _ => Self::unknown(module, ty, Facts::NONE),
         }

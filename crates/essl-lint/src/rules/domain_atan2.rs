@@ -1,0 +1,134 @@
+//! `domain-atan2`: `atan(y, x)` whose arguments can both be 0 for ordinary inputs.
+
+use essl::diagnostic::Diagnostic;
+use naga::{Expression as E, Function, Handle, MathFunction as Mf};
+
+use super::rule::declare_rule;
+use super::Cx;
+use crate::interval::Interval;
+use crate::value::Facts;
+use crate::Level;
+
+declare_rule! {
+    /// ## What it does
+    /// Reports `atan(y, x)` where `y` and `x` can both be 0 for ordinary inputs:
+    ///
+    /// - two components of one direction (`atan(n.z, n.x)` of a normalised normal, of a normal-map
+    ///   texel, of a view ray): both are 0 when the direction lies along the third axis — a floor's
+    ///   normal, a camera looking straight up;
+    /// - values that are 0 over a region (a clamp saturating at 0, a texel) or for a whole draw
+    ///   (uniforms and constants).
+    ///
+    /// ## Why is this bad?
+    /// GLSL ES 3.00 leaves `atan(y, x)` undefined when `x` and `y` are both 0 (§8.1). Drivers return
+    /// 0, π, or NaN; an equirectangular lookup `atan(d.z, d.x)` of the zenith, or a polar angle of a
+    /// flat-shaded floor's normal, then samples an arbitrary column or goes black.
+    ///
+    /// ## Example
+    /// ```glsl
+    /// vec3 n = normalize(v_normal);
+    /// float phi = atan(n.z, n.x);
+    /// ```
+    ///
+    /// ## Use instead
+    /// ```glsl
+    /// float phi = (abs(n.x) + abs(n.z) > 1e-6) ? atan(n.z, n.x) : 0.0;
+    /// ```
+    /// There is no mechanical fix: the angle of the zero vector needs a choice.
+    ///
+    /// ## What it does not flag
+    /// - A point in the plane crossing the origin only at isolated pixels:
+    ///   `atan(uv.y - 0.5, uv.x - 0.5)` is undefined at one pixel centre at most.
+    /// - Two components of a direction in the plane (`atan(d.y, d.x)` of a normalised `vec2`), which
+    ///   cannot both be 0; arguments a guard keeps apart from 0 (`if (abs(x) > 0.0)`).
+    ///
+    /// Severity: a warning when values the shader itself produces reach the hazard; a note, naming
+    /// the uniform, when one uniform alone (with constants) does.
+    ///
+    /// ## References
+    /// - GLSL ES 3.00 specification, §8.1 Angle and Trigonometry Functions: atan(y, x) "Results
+    ///   are undefined if x and y are both 0."
+    pub(crate) struct DomainAtan2 {
+        id: "domain-atan2",
+        summary: "`atan(y, x)` whose arguments can both be 0 for ordinary inputs",
+        default_level: Level::Warn,
+        check: check,
+    }
+}
+
+fn check(cx: &Cx, out: &mut Vec<Diagnostic>) {
+    for (id, f) in cx.functions() {
+        for (h, e) in f.expressions.iter() {
+            let E::Math {
+                fun: Mf::Atan2,
+                arg,
+                arg1: Some(x),
+                ..
+            } = *e
+            else {
+                continue;
+            };
+            let span = cx.span(f, h);
+            if span.is_empty() {
+                continue;
+            }
+            let (y, x) = (cx.operand(f, h, arg), cx.operand(f, h, x));
+            let g = cx.guards(f, id, h);
+            let zero = |v: Handle<E>| {
+                cx.refined(f, id, v, &g).is_some_and(|n| {
+                    n.comps().iter().any(|c| c.contains(0.0))
+                        && !n.facts.has(Facts::NZ)
+                        && !cx.nonzero(f, id, v, &g)
+                })
+            };
+            if !zero(y) || !zero(x) {
+                continue;
+            }
+            let axis = components_of_direction(cx, f, id, y, x);
+            if !(axis || cx.flat_at(f, id, y, 0.0) && cx.flat_at(f, id, x, 0.0)) {
+                continue;
+            }
+            let label = if axis {
+                "both are components of one direction: 0 when it lies along the third axis"
+            } else {
+                "both can be 0 over a whole region, or for the whole draw"
+            };
+            let d = Diagnostic::rule_warning(
+                DomainAtan2::RULE.id,
+                "`atan(y, x)` with `y` and `x` both 0 for ordinary inputs, where `atan` is undefined",
+                span,
+            )
+            .with_label(label)
+            .with_secondary(cx.span(f, y), "y")
+            .with_secondary(cx.span(f, x), "x")
+            .with_note("GLSL ES 3.00 §8.1: atan(y, x) is undefined if x and y are both 0")
+            .with_help("choose the angle of the zero vector: test `abs(x) + abs(y) > 1e-6` first");
+            out.push(cx.grade(d, &[(id, y), (id, x)]));
+        }
+    }
+}
+
+/// Whether `y` and `x` are two components of one direction of three or more components (a
+/// normalised vector, a texel): both 0 when it lies along another axis.
+fn components_of_direction(cx: &Cx, f: &Function, id: usize, y: Handle<E>, x: Handle<E>) -> bool {
+    let part = |h: Handle<E>| match f.expressions[h] {
+        E::AccessIndex { base, index } => Some((base, index)),
+        E::Swizzle {
+            size: naga::VectorSize::Bi,
+            ..
+        } => None,
+        _ => None,
+    };
+    let (Some((by, iy)), Some((bx, ix))) = (part(y), part(x)) else {
+        return false;
+    };
+    if iy == ix || !cx.sound().same(f, id, by, bx) {
+        return false;
+    }
+    let Some(v) = cx.sound().num(id, by) else {
+        return false;
+    };
+    let unit = v.norm.within(Interval::new(0.99, 1.01));
+    let texel = v.facts.any(Facts::TEXTURE) && v.facts.has(Facts::EXT);
+    v.n >= 3 && (unit || texel)
+}

@@ -1,0 +1,149 @@
+//! `texel-fetch-range`: `texelFetch` coordinates or level that can leave the texture.
+
+use essl::diagnostic::Diagnostic;
+use naga::{BinaryOperator as Bo, Expression as E, Function, Handle, MathFunction as Mf};
+
+use super::rule::declare_rule;
+use super::{fmt_num, Cx};
+use crate::symbolic::resolve;
+use crate::value::Facts;
+use crate::Level;
+
+declare_rule! {
+    /// ## What it does
+    /// Reports `texelFetch` and `texelFetchOffset` whose texel coordinates or level can leave the
+    /// texture:
+    ///
+    /// - a coordinate the shader's own arithmetic can make negative — a neighbour of the current
+    ///   texel, `ivec2(gl_FragCoord.xy) - ivec2(1, 0)`, is −1 on the first column;
+    /// - a coordinate one or more texels past another without a clamp to the size —
+    ///   `texel + ivec2(1, 0)` is past the last column when `texel` is on it;
+    /// - a level that can be negative.
+    ///
+    /// ## Why is this bad?
+    /// GLSL ES 3.00 leaves `texelFetch` undefined outside the level's size (§8.9); WebGL 2.0 defines
+    /// it to return 0 (§5.31 "Texel Fetches"), so a blur, an edge detector or a convolution that
+    /// reads its neighbours with `texelFetch` darkens (or makes transparent) the border of the image
+    /// on every browser, and reads whatever memory is there on a native driver.
+    ///
+    /// ## Example
+    /// ```glsl
+    /// ivec2 p = ivec2(gl_FragCoord.xy);
+    /// vec4 left = texelFetch(u_image, p - ivec2(1, 0), 0);
+    /// ```
+    ///
+    /// ## Use instead
+    /// ```glsl
+    /// ivec2 p = ivec2(gl_FragCoord.xy);
+    /// ivec2 last = textureSize(u_image, 0) - 1;
+    /// vec4 left = texelFetch(u_image, clamp(p - ivec2(1, 0), ivec2(0), last), 0);
+    /// ```
+    /// There is no mechanical fix: whether the border repeats, mirrors or reads zero is a choice.
+    ///
+    /// ## What it does not flag
+    /// - Coordinates the shader keeps in range: `clamp(p, ivec2(0), textureSize(t, 0) - 1)`, `max(p,
+    ///   0)`, `min(p + 1, size - 1)`, or a guard (`if (p.x > 0)`).
+    /// - A coordinate from an input or a uniform as such (`ivec2(gl_FragCoord.xy)`, `ivec2(v_uv *
+    ///   size)`): whether it fits the texture is the host's choice of sizes.
+    /// - `texture` and `textureLod` on integer samplers: the wrap modes define every coordinate
+    ///   there.
+    ///
+    /// Severity: a warning when values the shader itself produces reach the hazard; a note, naming
+    /// the uniform, when one uniform alone (with constants) does.
+    ///
+    /// ## References
+    /// - GLSL ES 3.00 specification, §8.9 Texture Lookup Functions (texelFetch: "undefined" outside
+    ///   the level's size).
+    /// - WebGL 2.0 specification, §5.31 Texel Fetches ("must return zero").
+    pub(crate) struct TexelFetchRange {
+        id: "texel-fetch-range",
+        summary: "`texelFetch` coordinates or level that the shader's arithmetic can take outside the texture",
+        default_level: Level::Warn,
+        check: check,
+    }
+}
+
+fn check(cx: &Cx, out: &mut Vec<Diagnostic>) {
+    for (id, f) in cx.functions() {
+        for (h, e) in f.expressions.iter() {
+            let E::ImageLoad {
+                coordinate, level, ..
+            } = *e
+            else {
+                continue;
+            };
+            let span = cx.span(f, h);
+            if span.is_empty() || !cx.text(span).starts_with("texelFetch") {
+                continue;
+            }
+            let g = cx.guards(f, id, h);
+            let negative = |x: Handle<E>| {
+                cx.refined(f, id, x, &g).and_then(|n| {
+                    let lo = n.hull().lo;
+                    (lo < 0.0 && !n.facts.has(Facts::NN)).then_some(lo)
+                })
+            };
+            let (what, at, lo) = if let Some(lo) = negative(coordinate) {
+                ("coordinate", coordinate, Some(lo))
+            } else if let Some(lo) = level.and_then(negative) {
+                ("level", level.unwrap_or(coordinate), Some(lo))
+            } else if past_a_texel(cx, f, id, coordinate) {
+                ("coordinate", coordinate, None)
+            } else {
+                continue;
+            };
+            let label = match lo {
+                Some(lo) if lo.is_finite() => {
+                    format!("this {what} can be as low as {}", fmt_num(lo))
+                }
+                Some(_) => format!("this {what} can be negative"),
+                None => {
+                    "past the last texel where the texel it offsets is on the last row or column"
+                        .to_string()
+                }
+            };
+            let mut d = Diagnostic::rule_warning(
+                TexelFetchRange::RULE.id,
+                format!("`texelFetch` {what} can leave the texture, where `texelFetch` is undefined (WebGL returns 0)"),
+                span,
+            )
+            .with_label(label)
+            .with_note("GLSL ES 3.00 §8.9: texelFetch is undefined outside the level; WebGL 2.0 §5.31 returns 0")
+            .with_help("clamp the coordinates to `[0, textureSize(sampler, lod) - 1]`");
+            let s = cx.span(f, at);
+            if !s.is_empty() && s != span {
+                d = d.with_secondary(s, what);
+            }
+            out.push(cx.grade(d, &[(id, at)]));
+        }
+    }
+}
+
+/// Whether `c` is `p + k` with a constant `k` positive in some component and nothing bounding
+/// the sum above (no `min` or `clamp` around it).
+fn past_a_texel(cx: &Cx, f: &Function, id: usize, c: Handle<E>) -> bool {
+    let r = resolve(f, cx.sound(), id, c);
+    let E::Binary {
+        op: Bo::Add,
+        left,
+        right,
+    } = f.expressions[r]
+    else {
+        return false;
+    };
+    let positive = |x: Handle<E>| {
+        cx.sound().num(id, x).is_some_and(|n| {
+            n.comps().iter().all(|c| c.as_point().is_some()) && n.comps().iter().any(|c| c.lo > 0.0)
+        })
+    };
+    let bounded = |x: Handle<E>| {
+        matches!(
+            f.expressions[resolve(f, cx.sound(), id, x)],
+            E::Math {
+                fun: Mf::Min | Mf::Clamp,
+                ..
+            }
+        )
+    };
+    (positive(right) && !bounded(left)) || (positive(left) && !bounded(right))
+}
