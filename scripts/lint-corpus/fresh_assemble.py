@@ -141,6 +141,10 @@ def generic_shaders(root, pixi=False):
             if len(c) > 200_000 or not whole(c):
                 continue
             full = complete(c, pixi)
+            # Minified shaders are re-flowed one statement a line, so that findings have
+            # lines to point at.
+            if max(len(line) for line in full.split("\n")) > 300:
+                full = reflow(full)
             yield f"{rel}#{i}", stage_of(full, rel), "shader", full
 
 

@@ -172,10 +172,12 @@ impl<'a> Walk<'a> {
     /// At a `return` (or the end of the function): an `out` parameter not written on every
     /// path leaves the caller's variable undefined, which is a read before any write there.
     fn outs_written(&mut self, st: &State, at: Span) {
-        if self.summary.is_some() {
+        let f = &self.m.functions[self.fid];
+        // A function that returns a value may say by it that its `out` parameters are not set
+        // (`bool hit(…, out float t)`): only a `void` one leaves the caller no way to know.
+        if self.summary.is_some() || f.ret != Type::Void {
             return;
         }
-        let f = &self.m.functions[self.fid];
         for (i, p) in f.params.iter().enumerate() {
             let v = Var::Param(i);
             if p.mode == ParamMode::Out
@@ -345,14 +347,19 @@ impl<'a> Walk<'a> {
     fn call(&mut self, callee: usize, args: &[Expr], span: Span, st: &mut State) {
         let params = &self.m.functions[callee].params;
         let mut outs = Vec::new();
-        for (a, p) in args.iter().zip(params) {
+        for (i, (a, p)) in args.iter().zip(params).enumerate() {
             match p.mode {
                 ParamMode::In => self.expr(a, st),
-                ParamMode::InOut => {
+                // `inout` copies the value in: a read only if the callee reads it before
+                // writing it.
+                ParamMode::InOut if self.reads_param(callee, i) => {
                     self.expr(a, st);
                     outs.push(a);
                 }
-                ParamMode::Out => outs.push(a),
+                ParamMode::InOut | ParamMode::Out => {
+                    let _ = self.place(a, st);
+                    outs.push(a);
+                }
             }
         }
         if self.main || self.summary.is_some() {
@@ -392,6 +399,18 @@ impl<'a> Walk<'a> {
                 self.write(st, v, bits);
             }
         }
+    }
+
+    /// Whether function `f` may read its parameter `i` before writing it.
+    fn reads_param(&mut self, f: usize, i: usize) -> bool {
+        let m = self.m;
+        let mut w = Walk::new(m, f, false, self.summaries);
+        let v = Var::Param(i);
+        w.full.insert(v, full_mask(&m.functions[f].params[i].ty));
+        let mut st = w.start();
+        let _ = w.stmts(&m.functions[f].body, st.clone());
+        st.clear();
+        w.reads.iter().any(|r| r.var == v)
     }
 
     /// What function `f` reads of the tracked globals before writing them, and may write.

@@ -5,7 +5,6 @@ use naga::{Expression as E, Function, Handle, MathFunction as Mf};
 
 use super::rule::declare_rule;
 use super::Cx;
-use crate::interval::Interval;
 use crate::value::Facts;
 use crate::Level;
 
@@ -13,9 +12,8 @@ declare_rule! {
     /// ## What it does
     /// Reports `atan(y, x)` where `y` and `x` can both be 0 for ordinary inputs:
     ///
-    /// - two components of one direction (`atan(n.z, n.x)` of a normalised normal, of a normal-map
-    ///   texel, of a view ray): both are 0 when the direction lies along the third axis — a floor's
-    ///   normal, a camera looking straight up;
+    /// - two components of one texel (`atan(n.y, n.x)` of a normal-map texel): both are 0 wherever
+    ///   the texel lies along the third axis — every flat part of a normal map;
     /// - values that are 0 over a region (a clamp saturating at 0, a texel) or for a whole draw
     ///   (uniforms and constants).
     ///
@@ -38,7 +36,10 @@ declare_rule! {
     ///
     /// ## What it does not flag
     /// - A point in the plane crossing the origin only at isolated pixels:
-    ///   `atan(uv.y - 0.5, uv.x - 0.5)` is undefined at one pixel centre at most.
+    ///   `atan(uv.y - 0.5, uv.x - 0.5)` is undefined at one pixel centre at most; and a direction
+    ///   that varies per pixel (`atan(dir.z, dir.x)` of a view ray or a normalised position in an
+    ///   equirectangular lookup), which passes the axis at one pixel (the pole, where every column
+    ///   is the same point anyway).
     /// - Two components of a direction in the plane (`atan(d.y, d.x)` of a normalised `vec2`), which
     ///   cannot both be 0; arguments a guard keeps apart from 0 (`if (abs(x) > 0.0)`).
     ///
@@ -108,8 +109,8 @@ fn check(cx: &Cx, out: &mut Vec<Diagnostic>) {
     }
 }
 
-/// Whether `y` and `x` are two components of one direction of three or more components (a
-/// normalised vector, a texel): both 0 when it lies along another axis.
+/// Whether `y` and `x` are two components of one texel of three or more components (a
+/// normal-map texel): both 0 wherever it lies along the third axis, a flat region.
 fn components_of_direction(cx: &Cx, f: &Function, id: usize, y: Handle<E>, x: Handle<E>) -> bool {
     let part = |h: Handle<E>| match f.expressions[h] {
         E::AccessIndex { base, index } => Some((base, index)),
@@ -128,7 +129,8 @@ fn components_of_direction(cx: &Cx, f: &Function, id: usize, y: Handle<E>, x: Ha
     let Some(v) = cx.sound().num(id, by) else {
         return false;
     };
-    let unit = v.norm.within(Interval::new(0.99, 1.01));
-    let texel = v.facts.any(Facts::TEXTURE) && v.facts.has(Facts::EXT);
-    v.n >= 3 && (unit || texel)
+    // A texel (a normal map) is the same direction over a whole flat region; a direction
+    // that varies per pixel (a view ray, a normalised position) passes the axis at a point.
+    let texel = v.facts.any(Facts::TEXTURE) && !v.facts.any(Facts::INPUT);
+    v.n >= 3 && texel
 }

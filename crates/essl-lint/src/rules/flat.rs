@@ -150,6 +150,17 @@ impl Cx<'_> {
         if let Some(init) = f.local_variables[l].init {
             out.push(init);
         }
+        // A constant start value (`float r = 0.0;`) that other stores replace is not what a read
+        // after them sees: keep the computed values only.
+        let constant = |h: &Handle<E>| {
+            matches!(
+                f.expressions[*h],
+                E::Literal(_) | E::Constant(_) | E::ZeroValue(_)
+            )
+        };
+        if out.iter().any(|h| !constant(h)) {
+            out.retain(|h| !constant(h));
+        }
         out
     }
 

@@ -3,6 +3,7 @@
 use essl::diagnostic::Diagnostic;
 use naga::{BinaryOperator as Bo, Expression as E, Function, Handle, MathFunction as Mf};
 
+use super::guards::Guards;
 use super::rule::declare_rule;
 use super::{fmt_num, Cx};
 use crate::symbolic::resolve;
@@ -83,11 +84,15 @@ fn check(cx: &Cx, out: &mut Vec<Diagnostic>) {
                     (lo < 0.0 && !n.facts.has(Facts::NN)).then_some(lo)
                 })
             };
-            let (what, at, lo) = if let Some(lo) = negative(coordinate) {
+            let coord_negative =
+                negative(coordinate).filter(|_| !guarded(cx, f, id, coordinate, &g, Side::Low));
+            let (what, at, lo) = if let Some(lo) = coord_negative {
                 ("coordinate", coordinate, Some(lo))
             } else if let Some(lo) = level.and_then(negative) {
                 ("level", level.unwrap_or(coordinate), Some(lo))
-            } else if past_a_texel(cx, f, id, coordinate) {
+            } else if past_a_texel(cx, f, id, coordinate)
+                && !guarded(cx, f, id, coordinate, &g, Side::High)
+            {
                 ("coordinate", coordinate, None)
             } else {
                 continue;
@@ -117,6 +122,73 @@ fn check(cx: &Cx, out: &mut Vec<Diagnostic>) {
             out.push(cx.grade(d, &[(id, at)]));
         }
     }
+}
+
+/// Which end of the texture a guard keeps a coordinate from.
+#[derive(Clone, Copy, PartialEq)]
+enum Side {
+    /// Below 0.
+    Low,
+    /// Past the last texel.
+    High,
+}
+
+/// Whether the guards keep coordinate `c` (`p ± k`, or `p` itself) in range on `side`: in every
+/// component that moves that way, a comparison of that component of `p` (`if (p.x > 0)`,
+/// `p.y < size.y - 1`) or of the whole coordinate (`all(greaterThanEqual(c, ivec2(0)))`,
+/// `all(lessThan(c, size))`).
+fn guarded(cx: &Cx, f: &Function, id: usize, c: Handle<E>, g: &Guards, side: Side) -> bool {
+    let same = |a: Handle<E>, b: Handle<E>| cx.sound().same(f, id, a, b);
+    let bounds = |x: Handle<E>| {
+        g.relations.iter().any(|&(op, l, r)| {
+            let (low, high) = (
+                matches!(op, Bo::Greater | Bo::GreaterEqual),
+                matches!(op, Bo::Less | Bo::LessEqual),
+            );
+            (same(l, x) && (side == Side::Low && low || side == Side::High && high))
+                || (same(r, x) && (side == Side::Low && high || side == Side::High && low))
+        })
+    };
+    if bounds(c) {
+        return true;
+    }
+    let r = resolve(f, cx.sound(), id, c);
+    let (base, k, sign) = match f.expressions[r] {
+        E::Binary {
+            op: Bo::Add,
+            left,
+            right,
+        } => (left, right, 1.0),
+        E::Binary {
+            op: Bo::Subtract,
+            left,
+            right,
+        } => (left, right, -1.0),
+        _ => return false,
+    };
+    let Some(offset) = cx.sound().num(id, k) else {
+        return false;
+    };
+    let moved: Vec<usize> = (0..offset.n as usize)
+        .filter(|&i| {
+            let o = offset.c[i].lo * sign;
+            side == Side::Low && o < 0.0 || side == Side::High && o > 0.0
+        })
+        .collect();
+    !moved.is_empty()
+        && moved.iter().all(|&i| {
+            g.relations.iter().any(|&(op, l, rr)| {
+                let part = |x: Handle<E>| {
+                    matches!(f.expressions[x], E::AccessIndex { base: b, index } if index as usize == i && same(b, base))
+                };
+                let (low, high) = (
+                    matches!(op, Bo::Greater | Bo::GreaterEqual),
+                    matches!(op, Bo::Less | Bo::LessEqual),
+                );
+                (part(l) && (side == Side::Low && low || side == Side::High && high))
+                    || (part(rr) && (side == Side::Low && high || side == Side::High && low))
+            })
+        })
 }
 
 /// Whether `c` is `p + k` with a constant `k` positive in some component and nothing bounding

@@ -13,9 +13,11 @@ declare_rule! {
     /// ## What it does
     /// Reports a read of a variable that some path reaches before any write to it: a local declared
     /// without a value (`float d;`) and assigned only in some branches, only in a loop that may not
-    /// run, only in some components (`v.xy = …` before reading all of `v`); an `out` parameter read
-    /// before the function writes it; and in `main` (and the functions it calls) a global declared
-    /// without a value or a shader output, read before it is written.
+    /// run, only in some components (`v.xy = …` before reading all of `v`), or passed as an `inout`
+    /// argument to a function that reads the parameter before writing it; an `out` parameter read
+    /// before the function writes it, or left unwritten on some path through a `void` function (the
+    /// caller's variable is then undefined); and in `main` (and the functions it calls) a global
+    /// declared without a value or a shader output, read before it is written.
     ///
     /// ## Why is this bad?
     /// GLSL ES leaves a variable without an initializer undefined until it is written (GLSL ES 3.00
@@ -52,6 +54,9 @@ declare_rule! {
     ///   written one by one.
     /// - An array, matrix or struct once any part of it is written (which parts a dynamic index
     ///   writes is not followed).
+    /// - An `inout` argument the callee writes before reading, and an `out` parameter left unset by a
+    ///   function that returns a value (`bool hit(…, out float t)`): the result says whether it is
+    ///   set.
     /// - Paths that cannot run are not told apart from those that can: a read guarded by the same
     ///   condition as the write (`if (i > 0) use(prev); prev = x;` in a loop) is reported; initialise
     ///   the variable.
