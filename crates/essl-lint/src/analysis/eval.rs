@@ -31,6 +31,7 @@ impl Analysis {
             Some(vp) => vp,
             None => (self.operation(s, e, ty), None),
         };
+        let val = within_type(val, ty);
         if let E::Load { pointer } = *e {
             if let Some(p) = self.functions[s.id].places[pointer.index()].clone() {
                 let v = self.load_version(&p);
@@ -317,6 +318,20 @@ impl Analysis {
                         || (start == 0 && x.facts.has(Facts::NZ3));
                     facts = facts.join(x.facts.without(Facts::NZ));
                 }
+                // `vec3(sin(a), y, cos(a))`: a sine and a cosine of one angle are not both 0.
+                let trig = |fun: naga::MathFunction| {
+                    components
+                        .iter()
+                        .filter_map(move |c| match f.expressions[*c] {
+                            E::Math { fun: g, arg, .. } if g == fun => Some(arg),
+                            _ => None,
+                        })
+                };
+                if trig(naga::MathFunction::Sin)
+                    .any(|a| trig(naga::MathFunction::Cos).any(|b| self.same(f, id, a, b)))
+                {
+                    nz = true;
+                }
                 // `vec3(v)` of a vec4 `v` is lowered as a compose of `v[0]`, `v[1]`, `v[2]`.
                 if let [a, b, c] = components {
                     if let (
@@ -392,6 +407,27 @@ impl Analysis {
             x.facts.without(Facts::POS).without(Facts::NZ)
         };
         Val::Num(Num::from_components(&comps, keep.without(Facts::DIFF)))
+    }
+}
+
+/// An integer value within its type's range (`uint` bits times 2^-32 are below 1).
+fn within_type(v: Val, ty: &TypeInner) -> Val {
+    let range = match ty.scalar_kind() {
+        Some(ScalarKind::Uint) => Interval::new(0.0, u32::MAX as f64),
+        Some(ScalarKind::Sint) => Interval::new(i32::MIN as f64, i32::MAX as f64),
+        _ => return v,
+    };
+    match v {
+        Val::Num(mut n) if !n.is_bottom() => {
+            for c in &mut n.c[..n.n as usize] {
+                let m = c.meet(range);
+                if !m.is_empty() {
+                    *c = m;
+                }
+            }
+            Val::Num(n.settle())
+        }
+        other => other,
     }
 }
 
