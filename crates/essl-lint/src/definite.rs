@@ -92,7 +92,21 @@ struct Walk<'a> {
     summaries: &'a mut HashMap<usize, Summary>,
     /// When computing a summary: the globals read before written, and those written.
     summary: Option<Summary>,
+    /// Writes made under a condition on uniforms (`if (u_isText) { c = …; }`), by the
+    /// condition's uniforms: a later `if` on the same uniforms (`u_isText && u_isHalo`) runs
+    /// only where they were made.
+    guarded: Vec<(Vec<Key>, Var, u8)>,
+    /// The uniforms the enclosing `if`s on uniforms require.
+    context: Vec<Key>,
+    /// How many enclosing statements are not `if`s on uniforms (loops, switches, other `if`s):
+    /// a write under them is not recorded in `guarded`, since a later `if` on the same
+    /// uniforms does not run only where they ran.
+    loose: usize,
 }
+
+/// A uniform a condition tests, with the value it requires: a loose uniform, or a member of a
+/// uniform block.
+type Key = (usize, usize, bool);
 
 /// The mask of all of a variable of type `t`: one bit per vector component, one otherwise.
 fn full_mask(t: &Type) -> u8 {
@@ -147,6 +161,9 @@ impl<'a> Walk<'a> {
             reads: Vec::new(),
             summaries,
             summary: None,
+            guarded: Vec::new(),
+            context: Vec::new(),
+            loose: 0,
         }
     }
 
@@ -461,9 +478,25 @@ impl<'a> Walk<'a> {
             StmtKind::Block(b) => return self.stmts(b, st),
             StmtKind::If(c, a, b) => {
                 self.expr(c, &mut st);
-                let sa = self.stmts(a, st.clone());
-                let sb = self.stmts(b, st);
-                return meet_opt(sa, sb);
+                let (yes, no) = (self.keys(c, true), self.keys(c, false));
+                let sa = self.branch(a, &st, &yes);
+                let sb = self.branch(b, &st, &no);
+                let out = meet_opt(sa.clone(), sb.clone());
+                for (branch, keys) in [(sa, yes), (sb, no)] {
+                    if let (Some(branch), Some(out), false, 0) =
+                        (&branch, &out, keys.is_empty(), self.loose)
+                    {
+                        let mut need = self.context.clone();
+                        need.extend(keys);
+                        for (v, bits) in branch {
+                            let extra = bits & !out.get(v).copied().unwrap_or(0);
+                            if extra != 0 {
+                                self.guarded.push((need.clone(), *v, extra));
+                            }
+                        }
+                    }
+                }
+                return out;
             }
             StmtKind::Loop {
                 init,
@@ -471,7 +504,12 @@ impl<'a> Walk<'a> {
                 step,
                 body,
                 do_while,
-            } => return self.loop_stmt(init, cond.as_deref(), step.as_ref(), body, *do_while, st),
+            } => {
+                self.loose += 1;
+                let out = self.loop_stmt(init, cond.as_deref(), step.as_ref(), body, *do_while, st);
+                self.loose -= 1;
+                return out;
+            }
             StmtKind::Switch(sel, cases) => {
                 self.expr(sel, &mut st);
                 self.targets.push(Target {
@@ -481,6 +519,7 @@ impl<'a> Walk<'a> {
                 });
                 let mut fall: Option<State> = None;
                 let mut end = None;
+                self.loose += 1;
                 for c in cases {
                     let start = meet_opt(Some(st.clone()), fall.take());
                     let e = start.and_then(|s0| self.stmts(&c.body, s0));
@@ -490,6 +529,7 @@ impl<'a> Walk<'a> {
                         end = meet_opt(end, e);
                     }
                 }
+                self.loose -= 1;
                 end = meet_opt(end, fall);
                 let t = self.targets.pop().expect("pushed");
                 for b in t.breaks {
@@ -523,6 +563,62 @@ impl<'a> Walk<'a> {
             _ => {}
         }
         Some(st)
+    }
+
+    /// The uniforms a condition requires when it is `pol` (through `!` and `&&`); empty when it
+    /// tests anything else.
+    fn keys(&self, c: &Expr, pol: bool) -> Vec<Key> {
+        let mut out = Vec::new();
+        if self.collect_keys(c, pol, &mut out) {
+            out
+        } else {
+            Vec::new()
+        }
+    }
+
+    fn collect_keys(&self, c: &Expr, pol: bool, out: &mut Vec<Key>) -> bool {
+        match &c.kind {
+            ExprKind::Global(g) if self.m.globals[*g].kind == GlobalKind::Uniform => {
+                out.push((usize::MAX, *g, pol));
+                true
+            }
+            ExprKind::BlockMember(b, None, m) => {
+                out.push((*b, *m, pol));
+                true
+            }
+            ExprKind::Unary(hir::UnaryOp::Not, x) => self.collect_keys(x, !pol, out),
+            ExprKind::Binary(BinaryOp::And, a, b) if pol => {
+                self.collect_keys(a, true, out) & self.collect_keys(b, true, out)
+            }
+            // A failing `||` is a conjunction of failures.
+            ExprKind::Binary(BinaryOp::Or, a, b) if !pol => {
+                self.collect_keys(a, false, out) & self.collect_keys(b, false, out)
+            }
+            _ => false,
+        }
+    }
+
+    /// Walks the branch of an `if` taken when the condition requires the uniforms `keys`
+    /// (none: it tests something else), from `st` with the writes made earlier under conditions
+    /// that the enclosing ones and `keys` include.
+    fn branch(&mut self, ss: &[Stmt], st: &State, keys: &[Key]) -> Option<State> {
+        if keys.is_empty() {
+            self.loose += 1;
+            let out = self.stmts(ss, st.clone());
+            self.loose -= 1;
+            return out;
+        }
+        let depth = self.context.len();
+        self.context.extend_from_slice(keys);
+        let mut start = st.clone();
+        for (need, v, bits) in &self.guarded {
+            if need.iter().all(|k| self.context.contains(k)) {
+                *start.entry(*v).or_insert(0) |= bits;
+            }
+        }
+        let out = self.stmts(ss, start);
+        self.context.truncate(depth);
+        out
     }
 
     fn loop_stmt(

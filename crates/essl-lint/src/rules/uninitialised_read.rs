@@ -57,9 +57,12 @@ declare_rule! {
     /// - An `inout` argument the callee writes before reading, and an `out` parameter left unset by a
     ///   function that returns a value (`bool hit(…, out float t)`): the result says whether it is
     ///   set.
-    /// - Paths that cannot run are not told apart from those that can: a read guarded by the same
-    ///   condition as the write (`if (i > 0) use(prev); prev = x;` in a loop) is reported; initialise
-    ///   the variable.
+    /// - A read under an `if` on uniforms of a variable written earlier under an `if` on the same
+    ///   uniforms (`if (u_isText) c = …;` then `if (u_isText && u_isHalo) use(c);`), both outside
+    ///   loops, switches and other `if`s: every pixel of a draw takes both branches or neither.
+    /// - Other paths that cannot run are not told apart from those that can: a read guarded by the
+    ///   same condition on a per-pixel value as the write, or in a loop (`if (i > 0) use(prev);
+    ///   prev = x;`), is reported; initialise the variable.
     ///
     /// Severity: a warning.
     ///
