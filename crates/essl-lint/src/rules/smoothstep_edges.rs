@@ -53,15 +53,17 @@ declare_rule! {
     ///   gap a constant or a parameter's value keeps positive, or an enclosing `if (u_a < u_b)`. A
     ///   guard proves the order only of the edges it compares.
     /// - The antialiasing idiom, edges `e ∓ w` of a width computed from a derivative (`0.7 -
-    ///   fwidth(c), 0.7 + fwidth(c)`, in either order): the edges meet only where `x` does not change
-    ///   across the pixel, and there the step is exact.
+    ///   fwidth(c), 0.7 + fwidth(c)`, in either order, an edge also kept in range by a constant:
+    ///   `max(0.0, r - w), r`): the edges meet only where `x` does not change across the pixel,
+    ///   and there the step is exact.
     /// - Constant edges in reversed order, or edges `r + w, r - w` with a constant `w > 0`: a
     ///   deliberate mirror, `smoothstep-reversed-constant`'s (a note). Equal constant edges are
     ///   reported here: they divide by zero.
     ///
     /// Severity: a warning when values the shader itself produces reach the hazard; a note, naming
     /// the uniform, when one uniform alone (with constants) does — the hazard then needs that value out
-    /// of the range the shader was written for, and essl-gl's validation mode checks it at draw time. (`smoothstep(cos(u_angle), 1.0, d)` needs `u_angle == 0`). Two uniforms a user sets
+    /// of the range the shader was written for, and essl-gl's validation mode checks it at draw time
+    /// (`smoothstep(cos(u_angle), 1.0, d)` needs `u_angle == 0`). Two uniforms a user sets
     /// independently (`u_outerLimit`, `u_innerLimit`; three.js's `coneCos` and `penumbraCos`, equal when
     /// the penumbra is 0, its default) give a warning, and so do edges computed per pixel; a width
     /// that is one input as such (`smoothstep(0.0, v_radius, d)`) gives a note naming it.
@@ -282,7 +284,34 @@ fn lost_gap(cx: &Cx, c: &Call, gap: f64, low: bool) -> Option<Diagnostic> {
 /// across the pixel, and there the step is exact.
 fn derivative_width(cx: &Cx, c: &Call) -> bool {
     let sym = cx.sym(c.id, c.f);
-    let Some((c0, k, x)) = sym.single_term(c.e1, c.e0) else {
+    // `max(0.0, e - w)`: the edge kept in range is the same edge.
+    let inner = |h: Handle<E>| match c.f.expressions[h] {
+        E::Math {
+            fun: Mf::Max | Mf::Min,
+            arg,
+            arg1: Some(b),
+            ..
+        } => {
+            let constant = |x: Handle<E>| {
+                cx.sound()
+                    .num(c.id, x)
+                    .is_some_and(|n| n.hull().as_point().is_some())
+            };
+            if constant(arg) {
+                b
+            } else if constant(b) {
+                arg
+            } else {
+                h
+            }
+        }
+        _ => h,
+    };
+    let (e0, e1) = (
+        inner(crate::symbolic::resolve(c.f, cx.sound(), c.id, c.e0)),
+        inner(crate::symbolic::resolve(c.f, cx.sound(), c.id, c.e1)),
+    );
+    let Some((c0, k, x)) = sym.single_term(e1, e0) else {
         return false;
     };
     // `e + w, e - w` is the mirrored form of the idiom.

@@ -44,6 +44,9 @@ declare_rule! {
     /// ## What it does not flag
     /// - Coordinates the shader keeps in range: `clamp(p, ivec2(0), textureSize(t, 0) - 1)`, `max(p,
     ///   0)`, `min(p + 1, size - 1)`, or a guard (`if (p.x > 0)`).
+    /// - `2 * p + k` with every component of `k` below 2 (`texelFetch(src, 2 * p + ivec2(1, 0), 0)`):
+    ///   a texel of a level twice the size of the one `p` indexes, as a mip reduction reads its
+    ///   2×2 block.
     /// - A coordinate from an input or a uniform as such (`ivec2(gl_FragCoord.xy)`, `ivec2(v_uv *
     ///   size)`): whether it fits the texture is the host's choice of sizes.
     /// - `texture` and `textureLod` on integer samplers: the wrap modes define every coordinate
@@ -217,5 +220,27 @@ fn past_a_texel(cx: &Cx, f: &Function, id: usize, c: Handle<E>) -> bool {
             }
         )
     };
-    (positive(right) && !bounded(left)) || (positive(left) && !bounded(right))
+    // `2 * p + k` with k below 2: a texel of a level twice the size of the one `p` indexes
+    // (a mip reduction reading its 2×2 block).
+    let scaled = |base: Handle<E>, k: Handle<E>| {
+        let E::Binary {
+            op: Bo::Multiply,
+            left: a,
+            right: b,
+        } = f.expressions[resolve(f, cx.sound(), id, base)]
+        else {
+            return false;
+        };
+        let factor = [a, b].into_iter().find_map(|x| {
+            let n = cx.sound().num(id, x)?;
+            n.comps()
+                .iter()
+                .map(|c| c.as_point())
+                .collect::<Option<Vec<f64>>>()
+        });
+        let offset = cx.sound().num(id, k).map(|n| n.hull().hi);
+        matches!((factor, offset), (Some(fs), Some(o)) if fs.iter().all(|f| *f > o))
+    };
+    (positive(right) && !bounded(left) && !scaled(left, right))
+        || (positive(left) && !bounded(right) && !scaled(right, left))
 }
