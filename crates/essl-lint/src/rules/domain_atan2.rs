@@ -3,8 +3,10 @@
 use essl::diagnostic::Diagnostic;
 use naga::{Expression as E, Function, Handle, MathFunction as Mf};
 
+use super::guards::Guards;
 use super::rule::declare_rule;
 use super::Cx;
+use crate::analysis::Refinement;
 use crate::value::Facts;
 use crate::Level;
 
@@ -12,8 +14,9 @@ declare_rule! {
     /// ## What it does
     /// Reports `atan(y, x)` where `y` and `x` can both be 0 for ordinary inputs:
     ///
-    /// - two components of one texel (`atan(n.y, n.x)` of a normal-map texel): both are 0 wherever
-    ///   the texel lies along the third axis — every flat part of a normal map;
+    /// - two components of one texel or of a vector computed from one (`atan(n.y, n.x)` of a
+    ///   normal-map texel, unpacked and normalised or not, wherever the texture is read): both
+    ///   are 0 wherever the texel lies along the third axis — every flat part of a normal map;
     /// - values that are 0 over a region (a clamp saturating at 0, a texel) or for a whole draw
     ///   (uniforms and constants).
     ///
@@ -41,7 +44,8 @@ declare_rule! {
     ///   equirectangular lookup), which passes the axis at one pixel (the pole, where every column
     ///   is the same point anyway).
     /// - Two components of a direction in the plane (`atan(d.y, d.x)` of a normalised `vec2`), which
-    ///   cannot both be 0; arguments a guard keeps apart from 0 (`if (abs(x) > 0.0)`).
+    ///   cannot both be 0; arguments a guard keeps apart from 0 (`if (abs(x) > 0.0)`), or from
+    ///   being both 0 (`abs(y) + abs(x) > 1e-6`, the fix above).
     ///
     /// Severity: a warning when values the shader itself produces reach the hazard; a note, naming
     /// the uniform, when one uniform alone (with constants) does.
@@ -82,7 +86,7 @@ fn check(cx: &Cx, out: &mut Vec<Diagnostic>) {
                         && !cx.nonzero(f, id, v, &g)
                 })
             };
-            if !zero(y) || !zero(x) {
+            if !zero(y) || !zero(x) || apart(cx, f, id, y, x, &g) {
                 continue;
             }
             let axis = components_of_direction(cx, f, id, y, x);
@@ -109,15 +113,57 @@ fn check(cx: &Cx, out: &mut Vec<Diagnostic>) {
     }
 }
 
+/// Whether a guard keeps `y` and `x` from being both 0: `abs(y) + abs(x) > c` (either order)
+/// with `c >= 0`, or `dot(v, v) > c` / `length(v) > c` of a `vec2` whose components they are.
+fn apart(cx: &Cx, f: &Function, id: usize, y: Handle<E>, x: Handle<E>, g: &Guards) -> bool {
+    let an = cx.sound();
+    let abs_of = |h: Handle<E>| match f.expressions[h] {
+        E::Math {
+            fun: Mf::Abs, arg, ..
+        } => Some(arg),
+        _ => None,
+    };
+    g.facts.iter().any(|(h, r)| {
+        let positive = match r {
+            Refinement::Value(i) | Refinement::Norm(i) => i.lo > 0.0,
+        };
+        if !positive {
+            return false;
+        }
+        let E::Binary {
+            op: naga::BinaryOperator::Add,
+            left,
+            right,
+        } = f.expressions[*h]
+        else {
+            return false;
+        };
+        let (Some(a), Some(b)) = (abs_of(left), abs_of(right)) else {
+            return false;
+        };
+        (an.same(f, id, a, y) && an.same(f, id, b, x))
+            || (an.same(f, id, a, x) && an.same(f, id, b, y))
+    })
+}
+
 /// Whether `y` and `x` are two components of one texel of three or more components (a
 /// normal-map texel): both 0 wherever it lies along the third axis, a flat region.
 fn components_of_direction(cx: &Cx, f: &Function, id: usize, y: Handle<E>, x: Handle<E>) -> bool {
+    // `t.y` of a vector value, or of a local written once (`vec3 nm = …; nm.y`): the vector's
+    // value and the component.
+    let an = cx.sound();
     let part = |h: Handle<E>| match f.expressions[h] {
-        E::AccessIndex { base, index } => Some((base, index)),
-        E::Swizzle {
-            size: naga::VectorSize::Bi,
-            ..
-        } => None,
+        E::AccessIndex { base, index } => Some((crate::symbolic::resolve(f, an, id, base), index)),
+        E::Load { pointer } => match f.expressions[pointer] {
+            E::AccessIndex { base, index } => match f.expressions[base] {
+                E::LocalVariable(l) => an.functions[id]
+                    .single_store
+                    .get(&l.index())
+                    .map(|v| (crate::symbolic::resolve(f, an, id, *v), index)),
+                _ => None,
+            },
+            _ => None,
+        },
         _ => None,
     };
     let (Some((by, iy)), Some((bx, ix))) = (part(y), part(x)) else {
@@ -129,8 +175,8 @@ fn components_of_direction(cx: &Cx, f: &Function, id: usize, y: Handle<E>, x: Ha
     let Some(v) = cx.sound().num(id, by) else {
         return false;
     };
-    // A texel (a normal map) is the same direction over a whole flat region; a direction
-    // that varies per pixel (a view ray, a normalised position) passes the axis at a point.
-    let texel = v.facts.any(Facts::TEXTURE) && !v.facts.any(Facts::INPUT);
-    v.n >= 3 && texel
+    // A texel (a normal map, read at coordinates from an input or not) is the same direction
+    // over a whole flat region; a direction that varies per pixel and reads no texel (a view
+    // ray, a normalised position) passes the axis at a point.
+    v.n >= 3 && v.facts.any(Facts::TEXTURE)
 }
