@@ -14,9 +14,10 @@ declare_rule! {
     /// ## What it does
     /// Reports `atan(y, x)` where `y` and `x` can both be 0 for ordinary inputs:
     ///
-    /// - two components of one texel or of a vector computed from one (`atan(n.y, n.x)` of a
-    ///   normal-map texel, unpacked and normalised or not, wherever the texture is read): both
-    ///   are 0 wherever the texel lies along the third axis — every flat part of a normal map;
+    /// - two components of one texel or of a vector computed from texels, uniforms and constants
+    ///   only (`atan(n.y, n.x)` of a normal-map texel, unpacked, normalised or turned by a
+    ///   uniform matrix, wherever the texture is read): both are 0 wherever the texel lies along
+    ///   the third axis — every flat part of a normal map;
     /// - values that are 0 over a region (a clamp saturating at 0, a texel) or for a whole draw
     ///   (uniforms and constants).
     ///
@@ -40,9 +41,10 @@ declare_rule! {
     /// ## What it does not flag
     /// - A point in the plane crossing the origin only at isolated pixels:
     ///   `atan(uv.y - 0.5, uv.x - 0.5)` is undefined at one pixel centre at most; and a direction
-    ///   that varies per pixel (`atan(dir.z, dir.x)` of a view ray or a normalised position in an
-    ///   equirectangular lookup), which passes the axis at one pixel (the pole, where every column
-    ///   is the same point anyway).
+    ///   that varies per pixel (`atan(dir.z, dir.x)` of a view ray, a normalised position in an
+    ///   equirectangular lookup, a normal-map texel turned by an interpolated tangent frame),
+    ///   which passes the axis at isolated pixels (the pole, where every column is the same
+    ///   point anyway).
     /// - Two components of a direction in the plane (`atan(d.y, d.x)` of a normalised `vec2`), which
     ///   cannot both be 0; arguments a guard keeps apart from 0 (`if (abs(x) > 0.0)`), or from
     ///   being both 0 (`abs(y) + abs(x) > 1e-6`, the fix above).
@@ -176,7 +178,54 @@ fn components_of_direction(cx: &Cx, f: &Function, id: usize, y: Handle<E>, x: Ha
         return false;
     };
     // A texel (a normal map, read at coordinates from an input or not) is the same direction
-    // over a whole flat region; a direction that varies per pixel and reads no texel (a view
-    // ray, a normalised position) passes the axis at a point.
-    v.n >= 3 && v.facts.any(Facts::TEXTURE)
+    // over a whole flat region; a direction that also varies per pixel through something
+    // else (a view ray, a normal map turned by an interpolated tangent frame, a position) passes
+    // the axis at isolated points.
+    v.n >= 3 && v.facts.any(Facts::TEXTURE) && from_texels(cx, f, id, by, &mut Vec::new())
+}
+
+/// Whether `h` is computed from texels, uniforms and constants only (the coordinates of the
+/// texture reads aside). A local's value is every value stored into it whole; `seen` holds
+/// the locals being followed (a value computed from the same local's earlier value).
+fn from_texels(cx: &Cx, f: &Function, id: usize, h: Handle<E>, seen: &mut Vec<usize>) -> bool {
+    if seen.len() > 8 {
+        return false;
+    }
+    let h = crate::symbolic::resolve(f, cx.sound(), id, h);
+    match f.expressions[h] {
+        E::ImageSample { .. }
+        | E::ImageLoad { .. }
+        | E::Literal(_)
+        | E::Constant(_)
+        | E::ZeroValue(_) => true,
+        E::Load { mut pointer } => loop {
+            match f.expressions[pointer] {
+                E::AccessIndex { base, .. } | E::Access { base, .. } => pointer = base,
+                E::GlobalVariable(g) => {
+                    break cx.module.global_variables[g].space == naga::AddressSpace::Uniform
+                }
+                E::LocalVariable(l) => {
+                    if seen.contains(&l.index()) {
+                        break true;
+                    }
+                    let mut values: Vec<Handle<E>> = cx.sound().functions[id]
+                        .stores
+                        .get(&l.index())
+                        .cloned()
+                        .unwrap_or_default();
+                    values.extend(f.local_variables[l].init);
+                    seen.push(l.index());
+                    let all = !values.is_empty()
+                        && values.into_iter().all(|v| from_texels(cx, f, id, v, seen));
+                    seen.pop();
+                    break all;
+                }
+                _ => break false,
+            }
+        },
+        ref e => {
+            let ops = super::context::operands(e);
+            !ops.is_empty() && ops.into_iter().all(|o| from_texels(cx, f, id, o, seen))
+        }
+    }
 }

@@ -228,6 +228,11 @@ const GUARDED: &[(&str, &str)] = &[
         "  vec2 d = normalize(texture(u_tex, v_uv).xy * 2.0 - 1.0);\n  r = atan(d.y, d.x);",
     ),
     ("domain-atan2", "  if (u_a != 1.0) { r = atan(u_a - 1.0, u_b - 1.0); }"),
+    // A normal-map texel turned by an interpolated frame varies per pixel.
+    (
+        "domain-atan2",
+        "  vec3 nm = normalize(mat3(v_n, v_h, v_pos) * (texture(u_tex, v_uv).xyz * 2.0 - 1.0));\n  r = atan(nm.z, nm.x);",
+    ),
     (
         "domain-integer-division",
         "  int k = max(int(v_x * 4.0), 1);\n  r = float(12 / k);",
