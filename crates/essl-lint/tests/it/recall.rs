@@ -341,3 +341,115 @@ fn every_rule_has_a_hazard_and_a_twin() {
         assert!(GUARDED.iter().any(|g| g.0 == r.id), "{}: no twin", r.id);
     }
 }
+
+/// The corpora of `docs/lints/corpus.md`, where `ESSL_LINT_CORPORA` names the folder that
+/// holds them (`old/` as `scripts/lint-corpus/fetch.sh` builds it, `fresh/` as
+/// `scripts/lint-corpus/fetch-fresh.sh` does).
+fn corpora() -> Option<std::path::PathBuf> {
+    let dir = std::path::PathBuf::from(std::env::var_os("ESSL_LINT_CORPORA")?);
+    Some(dir)
+}
+
+fn collapse(s: &str) -> String {
+    s.split_whitespace().collect::<Vec<_>>().join(" ")
+}
+
+/// Every finding classified `real` or `rounding` in a corpus's triage table is still reported
+/// at its source line: a real one as a warning, a rounding-only one at least as a note. Runs
+/// where `ESSL_LINT_CORPORA` names the corpora; skipped otherwise (they live outside the
+/// repository).
+#[test]
+fn every_classified_true_positive_is_still_reported() {
+    let Some(dir) = corpora() else {
+        eprintln!("skipped: set ESSL_LINT_CORPORA to the folder holding old/ and fresh/");
+        return;
+    };
+    let docs = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../../docs/lints");
+    let mut missing = Vec::new();
+    let mut checked = 0;
+    for (corpus, table) in [
+        ("old", "corpus-triage.tsv"),
+        ("fresh", "corpus-fresh-triage.tsv"),
+    ] {
+        let root = dir.join(corpus);
+        let manifest = std::fs::read_to_string(root.join("manifest.jsonl"))
+            .unwrap_or_else(|e| panic!("{}: {e}", root.display()));
+        let triage = std::fs::read_to_string(docs.join(table)).expect("a triage table");
+        // (rule, repository, line or "*", collapsed source line, class)
+        let rows: Vec<[String; 5]> = triage
+            .lines()
+            .filter(|l| !l.starts_with('#') && !l.trim().is_empty())
+            .map(|l| {
+                let p: Vec<&str> = l.split('\t').collect();
+                [
+                    p[0].to_string(),
+                    p[1].to_string(),
+                    p[2].to_string(),
+                    collapse(p[3]),
+                    p[4].to_string(),
+                ]
+            })
+            .filter(|r| r[4] == "real" || r[4] == "rounding")
+            .collect();
+        // The findings of every shader whose text holds one of those lines.
+        let mut found: Vec<(String, String, usize, String, Severity)> = Vec::new();
+        for entry in manifest.lines().filter(|l| !l.trim().is_empty()) {
+            let e: serde_json::Value = serde_json::from_str(entry).expect("a JSON line");
+            let repo = e["repo"].as_str().unwrap_or_default();
+            let file = e["file"].as_str().unwrap_or_default();
+            let Ok(text) = std::fs::read_to_string(root.join(file)) else {
+                continue;
+            };
+            let lines: Vec<String> = text.lines().map(collapse).collect();
+            if !rows
+                .iter()
+                .any(|r| r[1] == repo && lines.iter().any(|l| *l == r[3]))
+            {
+                continue;
+            }
+            let stage = if e["stage"].as_str() == Some("vertex") {
+                Stage::Vertex
+            } else {
+                Stage::Fragment
+            };
+            let s = compile(
+                SourceFile::new(file, text.as_str()),
+                stage,
+                &CompileOptions::default(),
+            );
+            if !s.ok() || s.naga.is_none() {
+                continue;
+            }
+            for d in lint(&s, &LintOptions::default().notes(true)) {
+                let line = s.file.line_col(d.span.start).line as usize;
+                let source = lines.get(line - 1).cloned().unwrap_or_default();
+                found.push((
+                    d.code.to_string(),
+                    repo.to_string(),
+                    line,
+                    source,
+                    d.severity,
+                ));
+            }
+        }
+        for r in &rows {
+            checked += 1;
+            let ok = found.iter().any(|(rule, repo, line, source, severity)| {
+                *rule == r[0]
+                    && *repo == r[1]
+                    && *source == r[3]
+                    && (r[2] == "*" || r[2] == line.to_string())
+                    && (r[4] == "rounding" || *severity == Severity::Warning)
+            });
+            if !ok {
+                missing.push(format!("{corpus}: {} {} `{}` ({})", r[0], r[1], r[3], r[4]));
+            }
+        }
+    }
+    assert!(checked > 0);
+    assert!(
+        missing.is_empty(),
+        "no longer reported:\n{}",
+        missing.join("\n")
+    );
+}
