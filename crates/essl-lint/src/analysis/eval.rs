@@ -10,6 +10,54 @@ use crate::interval::Interval;
 use crate::value::{Facts, Num, Val};
 
 impl Analysis {
+    /// `v.z / length(v)`, a component of a vector over the vector's length: in [-1, 1] in exact
+    /// arithmetic, and a few ulps past it after rounding.
+    fn part_over_length(&self, s: Site, e: &E, v: Val) -> Val {
+        let E::Binary {
+            op: naga::BinaryOperator::Divide,
+            left,
+            right,
+        } = *e
+        else {
+            return v;
+        };
+        let right = crate::symbolic::resolve(s.f, self, s.id, right);
+        let E::Math {
+            fun: naga::MathFunction::Length,
+            arg,
+            ..
+        } = s.f.expressions[right]
+        else {
+            return v;
+        };
+        let base = match s.f.expressions[left] {
+            E::AccessIndex { base, .. } => base,
+            E::Load { pointer } => match s.f.expressions[pointer] {
+                E::AccessIndex { base, .. } => match s.f.expressions[base] {
+                    E::LocalVariable(_) | E::FunctionArgument(_) => base,
+                    _ => return v,
+                },
+                _ => return v,
+            },
+            _ => return v,
+        };
+        let same = self.same(s.f, s.id, base, arg)
+            || matches!(s.f.expressions[arg], E::Load { pointer } if pointer == base);
+        match v {
+            Val::Num(mut n) if same && !n.is_bottom() => {
+                let unit = Interval::new(-1.0 - 1e-6, 1.0 + 1e-6);
+                for c in &mut n.c[..n.n as usize] {
+                    let m = c.meet(unit);
+                    if !m.is_empty() {
+                        *c = m;
+                    }
+                }
+                Val::Num(n.settle())
+            }
+            other => other,
+        }
+    }
+
     /// The value of expression `h` of function `id` (evaluated already).
     pub(super) fn v(&self, id: usize, h: Handle<E>) -> &Val {
         &self.functions[id].values[h.index()]
@@ -32,6 +80,7 @@ impl Analysis {
             None => (self.operation(s, e, ty), None),
         };
         let val = within_type(val, ty);
+        let val = self.part_over_length(s, e, val);
         if let E::Load { pointer } = *e {
             if let Some(p) = self.functions[s.id].places[pointer.index()].clone() {
                 let v = self.load_version(&p);

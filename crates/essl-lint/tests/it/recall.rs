@@ -67,6 +67,7 @@ const HAZARDS: &[Hazard] = &[
     ("acos-domain", "texture", "  r = acos(t.r * 2.0 - 0.5);", W),
     ("acos-domain", "uniform", "  r = acos(u_a * 2.0);", N),
     ("acos-domain", "rounding", "  r = acos(dot(n, l));", W),
+    ("acos-domain", "rounding", "  r = acos(v_pos.z / length(v_pos));", W),
     ("asin-domain", "computed", "  r = asin(v_x * 2.0);", W),
     ("asin-domain", "texture", "  r = asin(t.r * 2.0 - 0.5);", W),
     ("asin-domain", "uniform", "  r = asin(u_a * 2.0);", N),
@@ -189,6 +190,7 @@ const GUARDED: &[(&str, &str)] = &[
     ("pow-negative-base", "  r = pow(clamp(t.r - 0.5, 0.0, 1.0), 2.2);"),
     ("pow-zero-base", "  r = pow(max(dot(n, l), 1e-4), u_k - 1.0);"),
     ("acos-domain", "  r = acos(clamp(dot(n, l), -1.0, 1.0));"),
+    ("acos-domain", "  r = acos(clamp(v_pos.z / length(v_pos), -1.0, 1.0));"),
     ("asin-domain", "  r = asin(clamp(v_x * 2.0, -1.0, 1.0));"),
     ("smoothstep-edges", "  if (u_a < u_b) { r = smoothstep(u_a, u_b, v_x); }"),
     (
