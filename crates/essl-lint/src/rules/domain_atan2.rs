@@ -115,8 +115,8 @@ fn check(cx: &Cx, out: &mut Vec<Diagnostic>) {
     }
 }
 
-/// Whether a guard keeps `y` and `x` from being both 0: `abs(y) + abs(x) > c` (either order)
-/// with `c >= 0`, or `dot(v, v) > c` / `length(v) > c` of a `vec2` whose components they are.
+/// Whether a guard keeps `y` and `x` from being both 0: `abs(y) + abs(x)` (either order)
+/// compared so that it is positive where the `atan` runs.
 fn apart(cx: &Cx, f: &Function, id: usize, y: Handle<E>, x: Handle<E>, g: &Guards) -> bool {
     let an = cx.sound();
     let abs_of = |h: Handle<E>| match f.expressions[h] {
