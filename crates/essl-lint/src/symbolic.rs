@@ -294,6 +294,58 @@ impl<'a> Sym<'a> {
             return best;
         }
         let d = depth + 1;
+        // A scalar constant added to or taken from either side moves the bound by it:
+        // `clamp(t, 0.0, 1.0) + 1e-3` over `clamp(t - 0.3, 0.0, 1.0)` is 1e-3 more than the clamps'.
+        let shifted = |h: Handle<E>| -> Option<(Handle<E>, f64)> {
+            let constant = |x: Handle<E>| {
+                self.an
+                    .num(self.id, x)
+                    .filter(|n| n.n == 1)
+                    .and_then(|n| n.c[0].as_point())
+            };
+            match self.f.expressions[resolve(self.f, self.an, self.id, h)] {
+                E::Binary {
+                    op: Bo::Add,
+                    left,
+                    right,
+                } => constant(right)
+                    .map(|c| (left, c))
+                    .or_else(|| constant(left).map(|c| (right, c))),
+                E::Binary {
+                    op: Bo::Subtract,
+                    left,
+                    right,
+                } => constant(right).map(|c| (left, -c)),
+                _ => None,
+            }
+        };
+        if let Some((x, c)) = a.and_then(shifted) {
+            best = best.max(c + self.diff_lower_d(Some(x), b, d));
+        }
+        if let Some((y, c)) = b.and_then(shifted) {
+            best = best.max(self.diff_lower_d(a, Some(y), d) - c);
+        }
+        // clamp is monotone and moves no value further: clamp(x, lo, hi) - clamp(y, lo, hi) is
+        // at least min(x - y, 0) — ordered, not apart, where both saturate.
+        if let (Some(a), Some(b)) = (a, b) {
+            let clamp =
+                |h: Handle<E>| match self.f.expressions[resolve(self.f, self.an, self.id, h)] {
+                    E::Math {
+                        fun: Mf::Clamp,
+                        arg,
+                        arg1: Some(lo),
+                        arg2: Some(hi),
+                        ..
+                    } => Some((arg, lo, hi)),
+                    _ => None,
+                };
+            if let (Some((x, lo, hi)), Some((y, lo2, hi2))) = (clamp(a), clamp(b)) {
+                if self.an.same(self.f, self.id, lo, lo2) && self.an.same(self.f, self.id, hi, hi2)
+                {
+                    best = best.max(self.diff_lower_d(Some(x), Some(y), d).min(0.0));
+                }
+            }
+        }
         if let Some(a) = a {
             let ra = resolve(self.f, self.an, self.id, a);
             match self.f.expressions[ra] {

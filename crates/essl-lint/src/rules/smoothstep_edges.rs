@@ -50,8 +50,9 @@ declare_rule! {
     ///
     /// ## What it does not flag
     /// - Edges the shader orders itself: `smoothstep(u_r, u_r + 0.1, d)`, `max(e1, e0 + 1e-3)`, a
-    ///   gap a constant or a parameter's value keeps positive, or an enclosing `if (u_a < u_b)`. A
-    ///   guard proves the order only of the edges it compares.
+    ///   gap a constant or a parameter's value keeps positive (`clamp(d - 0.3, 0.0, 1.0)` and
+    ///   `clamp(d, 0.0, 1.0) + 1e-3`: the clamps are ordered, the constant keeps them apart), or
+    ///   an enclosing `if (u_a < u_b)`. A guard proves the order only of the edges it compares.
     /// - The antialiasing idiom, edges `e ∓ w` of a width computed from a derivative (`0.7 -
     ///   fwidth(c), 0.7 + fwidth(c)`, in either order, an edge also kept in range by a constant:
     ///   `max(0.0, r - w), r`): the edges meet only where `x` does not change across the pixel,

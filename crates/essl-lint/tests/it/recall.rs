@@ -201,6 +201,11 @@ const GUARDED: &[(&str, &str)] = &[
         "smoothstep-edges",
         "  float w = fwidth(v_x);\n  r = smoothstep(max(0.0, 0.5 - w), 0.5 + w, v_x);",
     ),
+    // Clamps of the same value shifted are ordered; the constant keeps them apart.
+    (
+        "smoothstep-edges",
+        "  float d = dot(n, l);\n  r = smoothstep(clamp(d - 0.3, 0.0, 1.0), clamp(d, 0.0, 1.0) + 1e-3, v_x);",
+    ),
     ("smoothstep-reversed-constant", "  r = 1.0 - smoothstep(0.0, 1.0, v_x);"),
     ("division-by-difference", "  if (u_a != u_b) { r = v_x / (u_a - u_b); }"),
     (
