@@ -103,7 +103,7 @@ float leftAngle = acos(clamp(leftCos, -1.0, 1.0)); // fixed: clamped
 // Calculate the x coordinate of the sample point
 samplePoint.x = 0.5 + (leftAngle - PI/2.0) / (2.0 * coneAngle);
 
-color = texture(spotLightTexture, samplePoint).rgb * spotLightEx.intensity;
+color = texture(spotLightTexture, samplePoint).rgb * spotLightEx.intensity; // essl-allow: non-uniform-derivative (numerics only: the article's lookup under `if (spotAttenuation > 0.0)` is kept)
 
 light.color = spotLight.color * spotAttenuation;
 light.color *= color; // added: the light takes the projected texture's colour

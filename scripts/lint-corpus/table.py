@@ -16,7 +16,11 @@ With --before BEFORE.jsonl (the findings of an earlier version on the same corpu
 the findings classified `real` or `rounding` there that FINDINGS no longer reports (at the same
 file, line and rule) and exits 1 if there is any.
 
-Usage: table.py FINDINGS.jsonl TRIAGE.tsv [--before BEFORE.jsonl]
+With --hazards HAZARDS.tsv (hazards found by reading shaders, in the triage table's columns),
+also prints how many of them FINDINGS reports (same rule, repository and source line), per
+rule and in all, and lists the others.
+
+Usage: table.py FINDINGS.jsonl TRIAGE.tsv [--before BEFORE.jsonl] [--hazards HAZARDS.tsv]
 """
 
 import collections
@@ -28,6 +32,12 @@ CLASSES = ["real", "rounding", "input", "spec", "fp"]
 
 def key(rule, repo, text):
     return (rule, repo, " ".join(text.split()))
+
+
+def precision(t):
+    """The share of findings that are not false positives."""
+    n = t["findings"]
+    return f"{100.0 * (n - t['fp']) / n:.1f} %" if n else "–"
 
 
 def read(path):
@@ -47,6 +57,11 @@ def main():
     if "--before" in argv:
         i = argv.index("--before")
         before = argv[i + 1]
+        del argv[i : i + 2]
+    hazards = None
+    if "--hazards" in argv:
+        i = argv.index("--hazards")
+        hazards = argv[i + 1]
         del argv[i : i + 2]
     args = [a for a in argv if not a.startswith("--")]
     if len(args) != 2:
@@ -83,8 +98,8 @@ def main():
     print(f"{summary.get('shaders', 0)} shaders, {summary.get('compiled', 0)} compiled by essl, "
           f"from {summary.get('repositories', 0)} repositories")
     print()
-    print("| rule | findings | warnings | notes | distinct lines | real | rounding-only | input-dependent | spec-only | false positives |")
-    print("|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|")
+    print("| rule | findings | warnings | notes | distinct lines | real | rounding-only | input-dependent | spec-only | false positives | precision |")
+    print("|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|")
     total = collections.Counter()
     distinct = 0
     for rule in sorted(table):
@@ -92,14 +107,42 @@ def main():
         total.update(t)
         distinct += len(lines[rule])
         print(f"| {rule} | {t['findings']} | {t['warning']} | {t['note']} | {len(lines[rule])} | "
-              f"{t['real']} | {t['rounding']} | {t['input']} | {t['spec']} | {t['fp']} |")
+              f"{t['real']} | {t['rounding']} | {t['input']} | {t['spec']} | {t['fp']} | "
+              f"{precision(t)} |")
     print(f"| **total** | **{total['findings']}** | **{total['warning']}** | **{total['note']}** | "
           f"**{distinct}** | **{total['real']}** | **{total['rounding']}** | **{total['input']}** | "
-          f"**{total['spec']}** | **{total['fp']}** |")
+          f"**{total['spec']}** | **{total['fp']}** | **{precision(total)}** |")
     n = total["findings"]
     if n:
         print()
         print(f"False positives: {total['fp']} of {n} findings ({100.0 * total['fp'] / n:.1f} %).")
+    if hazards:
+        reported = {key(f["rule"], f["repo"], f["text"]) + (str(f["line"]),) for f in findings}
+        per_rule = collections.defaultdict(lambda: [0, 0])
+        missed = []
+        for line in open(hazards, encoding="utf-8"):
+            if not line.strip() or line.startswith("#"):
+                continue
+            rule, repo, at, text, cls, *_ = line.rstrip("\n").split("\t")
+            k = key(rule, repo, text)
+            hit = any(r[:3] == k and (at == "*" or r[3] == at) for r in reported)
+            per_rule[rule][0] += hit
+            per_rule[rule][1] += 1
+            if not hit:
+                missed.append(f"  [{rule}] {repo}: {text}")
+        print()
+        print("| rule | hand-found hazards | reported |")
+        print("|---|---:|---:|")
+        for rule in sorted(per_rule):
+            hit, n = per_rule[rule]
+            print(f"| {rule} | {n} | {hit} |")
+        hit = sum(v[0] for v in per_rule.values())
+        n = sum(v[1] for v in per_rule.values())
+        print(f"| **total** | **{n}** | **{hit}** |")
+        print()
+        print(f"Recall on the hand-found hazards: {hit} of {n} ({100.0 * hit / max(n, 1):.1f} %).")
+        for m in missed:
+            print(m)
     if before:
         now = {(f["file"], f["line"], f["rule"]) for f in findings}
         lost = []
@@ -108,6 +151,20 @@ def main():
             cls = triage.get(k + (str(f["line"]),), triage.get(k + ("*",)))
             if cls in ("real", "rounding") and (f["file"], f["line"], f["rule"]) not in now:
                 lost.append(f)
+        hazard = ("real", "rounding", "input")
+        def hazards(rows):
+            out = set()
+            for f in rows:
+                k = key(f["rule"], f["repo"], f["text"])
+                if triage.get(k + (str(f["line"]),), triage.get(k + ("*",))) in hazard:
+                    out.add((f["file"], f["line"], f["rule"]))
+            return out
+        mine, theirs = hazards(findings), hazards(read(before)[0])
+        both = mine | theirs
+        print()
+        print(f"Hazards (real, rounding-only, input-dependent) either version reports: {len(both)}; "
+              f"this version {len(mine)} ({100.0 * len(mine) / max(len(both), 1):.1f} %), "
+              f"{before} {len(theirs)} ({100.0 * len(theirs) / max(len(both), 1):.1f} %).")
         print()
         print(f"Real and rounding-only findings of {before} no longer reported: {len(lost)}.")
         for f in lost:

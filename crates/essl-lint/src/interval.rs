@@ -389,9 +389,18 @@ impl Interval {
         }
     }
 
-    /// `clamp(x, lo, hi)` = `min(max(x, lo), hi)`.
-    pub fn clamp(self, lo: Interval, hi: Interval) -> Interval {
-        self.max(lo).min(hi)
+    /// GLSL's `clamp(x, lo, hi)`, which is undefined when `lo > hi`: the values it has for the
+    /// bounds that are in order (`clamp(x, 0, size - 1)` is not negative even if `size - 1`
+    /// could be, since then the call means nothing).
+    pub fn clamp_ordered(self, lo: Interval, hi: Interval) -> Interval {
+        if self.is_empty() || lo.is_empty() || hi.is_empty() {
+            return Interval::EMPTY;
+        }
+        let top = hi.hi.max(lo.lo);
+        let bottom = lo.lo.min(hi.hi);
+        let l = self.lo.max(bottom).min(hi.lo.max(bottom));
+        let h = self.hi.min(top).max(lo.hi.min(top));
+        Interval::new(l.min(h), h)
     }
 
     /// `sqrt(x)` on the part of `x` that is not negative.
@@ -824,7 +833,9 @@ mod tests {
                         prop_assert!(inside(Interval::mix(a, b, tt), x * (1.0 - s) + y * s));
                     }
                     for z in points(c, &t) {
-                        prop_assert!(inside(a.clamp(b, c), x.max(y).min(z)));
+                        if y <= z {
+                            prop_assert!(inside(a.clamp_ordered(b, c), x.max(y).min(z)));
+                        }
                         if x < y {
                             let u = ((z - x) / (y - x)).clamp(0.0, 1.0);
                             prop_assert!(inside(Interval::smoothstep(a, b, c), u * u * (3.0 - 2.0 * u)));

@@ -34,6 +34,7 @@
 #![warn(missing_docs)]
 
 mod analysis;
+mod definite;
 mod interval;
 mod precision;
 pub mod precondition;
@@ -41,6 +42,7 @@ mod rules;
 pub mod sarif;
 mod suppress;
 mod symbolic;
+mod uniformity;
 mod value;
 
 use essl::diagnostic::{self, Diagnostic, Severity};
@@ -199,15 +201,24 @@ pub fn lint(shader: &Shader, options: &LintOptions) -> Vec<Diagnostic> {
     let allowed = suppress::Allowed::scan(&shader.file);
     let mut out = Vec::new();
     let (worth_it, signs, prec) = rules::candidates(shader, module);
-    let cx = worth_it
+    // The rules on the checked module run on every shader; the others only where the value
+    // analysis has something to look at.
+    let runs = |r: &Rule| reported(r) && (worth_it || rules::HIR_RULES.contains(&r.id));
+    let cx = RULES
+        .iter()
+        .any(|r| runs(r))
         .then(|| {
-            let prec = prec.unwrap_or_else(|| precision::Precisions::of(&shader.module));
+            let prec = match (worth_it, prec) {
+                (_, Some(p)) => p,
+                (true, None) => precision::Precisions::of(&shader.module),
+                (false, None) => precision::Precisions::default(),
+            };
             rules::Cx::with_precisions(shader, prec, signs)
         })
         .flatten();
     if let Some(cx) = &cx {
         for r in RULES {
-            if !reported(r) {
+            if !runs(r) {
                 continue;
             }
             let level = options.level(r);

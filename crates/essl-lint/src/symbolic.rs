@@ -25,10 +25,11 @@ enum Atom {
     Expr(usize),
 }
 
-/// `Σ coefficient × atom + constant`.
+/// `Σ coefficient × atom + constant`; each atom with the expression it was first met at.
 #[derive(Clone, Debug, PartialEq)]
 struct Lin {
     terms: Vec<(Atom, f64)>,
+    at: Vec<Handle<E>>,
     c: f64,
 }
 
@@ -36,25 +37,30 @@ impl Lin {
     fn constant(c: f64) -> Lin {
         Lin {
             terms: Vec::new(),
+            at: Vec::new(),
             c,
         }
     }
 
-    fn atom(a: Atom) -> Lin {
+    fn atom(a: Atom, h: Handle<E>) -> Lin {
         Lin {
             terms: vec![(a, 1.0)],
+            at: vec![h],
             c: 0.0,
         }
     }
 
     fn add(mut self, o: &Lin, k: f64) -> Lin {
-        for (a, x) in &o.terms {
+        for ((a, x), h) in o.terms.iter().zip(&o.at) {
             match self.terms.iter_mut().find(|(b, _)| b == a) {
                 Some((_, y)) => *y += k * x,
-                None => self.terms.push((a.clone(), k * x)),
+                None => {
+                    self.terms.push((a.clone(), k * x));
+                    self.at.push(*h);
+                }
             }
         }
-        self.terms.retain(|(_, x)| *x != 0.0);
+        self.drop_zeros();
         self.c += k * o.c;
         self
     }
@@ -63,9 +69,19 @@ impl Lin {
         for (_, x) in &mut self.terms {
             *x *= k;
         }
-        self.terms.retain(|(_, x)| *x != 0.0);
+        self.drop_zeros();
         self.c *= k;
         self
+    }
+
+    fn drop_zeros(&mut self) {
+        let keep: Vec<bool> = self.terms.iter().map(|(_, x)| *x != 0.0).collect();
+        let mut i = 0;
+        self.at.retain(|_| {
+            i += 1;
+            keep[i - 1]
+        });
+        self.terms.retain(|(_, x)| *x != 0.0);
     }
 
     fn as_constant(&self) -> Option<f64> {
@@ -81,6 +97,9 @@ pub struct Sym<'a> {
     an: &'a Analysis,
     /// Private globals some user function writes (not stable across a function).
     written: &'a HashSet<usize>,
+    /// The expressions standing for atoms met so far: an expression with the same value as
+    /// one of them is that atom.
+    seen: std::cell::RefCell<Vec<Handle<E>>>,
 }
 
 /// The operand `h` stands for: through loads of locals stored once, and splats.
@@ -117,11 +136,27 @@ impl<'a> Sym<'a> {
             id,
             an,
             written,
+            seen: Default::default(),
         }
     }
 
+    /// The atom for expression `h`: an earlier one with the same value, or `h` itself.
+    fn expr_atom(&self, h: Handle<E>) -> Lin {
+        let mut seen = self.seen.borrow_mut();
+        let rep = match seen.iter().find(|r| self.an.same(self.f, self.id, **r, h)) {
+            Some(r) => *r,
+            None => {
+                if seen.len() < 64 {
+                    seen.push(h);
+                }
+                h
+            }
+        };
+        Lin::atom(Atom::Expr(rep.index()), rep)
+    }
+
     fn lin(&self, h: Handle<E>, depth: u32) -> Lin {
-        let atom = || Lin::atom(Atom::Expr(h.index()));
+        let atom = || self.expr_atom(h);
         if depth > 12 {
             return atom();
         }
@@ -155,7 +190,7 @@ impl<'a> Sym<'a> {
                 match (a.as_constant(), b.as_constant()) {
                     (Some(k), _) => b.scale(k),
                     (_, Some(k)) => a.scale(k),
-                    _ => Lin::atom(Atom::Expr(h.index())),
+                    _ => self.expr_atom(h),
                 }
             }
             E::Binary {
@@ -166,20 +201,20 @@ impl<'a> Sym<'a> {
                 let (a, b) = (self.lin(*left, depth + 1), self.lin(*right, depth + 1));
                 match b.as_constant() {
                     Some(k) if k != 0.0 => a.scale(1.0 / k),
-                    _ => Lin::atom(Atom::Expr(h.index())),
+                    _ => self.expr_atom(h),
                 }
             }
             E::Unary {
                 op: Uo::Negate,
                 expr,
             } => self.lin(*expr, depth + 1).scale(-1.0),
-            E::FunctionArgument(i) => Lin::atom(Atom::Arg(*i)),
+            E::FunctionArgument(i) => Lin::atom(Atom::Arg(*i), h),
             E::Load { pointer } => match self.an.functions[self.id].places[pointer.index()].clone()
             {
-                Some(p) if self.stable(&p) => Lin::atom(Atom::Place(p)),
-                _ => Lin::atom(Atom::Expr(h.index())),
+                Some(p) if self.stable(&p) => Lin::atom(Atom::Place(p), h),
+                _ => self.expr_atom(h),
             },
-            _ => Lin::atom(Atom::Expr(h.index())),
+            _ => self.expr_atom(h),
         }
     }
 
@@ -220,6 +255,27 @@ impl<'a> Sym<'a> {
         }
     }
 
+    /// A lower bound of a linear form from the ranges of its atoms.
+    fn form_lower(&self, form: &Lin) -> f64 {
+        let mut lo = form.c;
+        for ((_, k), h) in form.terms.iter().zip(&form.at) {
+            let Some(i) = self
+                .an
+                .num(self.id, *h)
+                .filter(|n| n.n == 1)
+                .map(|n| n.c[0])
+            else {
+                return f64::NEG_INFINITY;
+            };
+            lo += if *k > 0.0 { k * i.lo } else { k * i.hi };
+        }
+        if lo.is_nan() {
+            f64::NEG_INFINITY
+        } else {
+            lo
+        }
+    }
+
     fn diff_lower_d(&self, a: Option<Handle<E>>, b: Option<Handle<E>>, depth: u32) -> f64 {
         let (ia, ib) = (self.hull(a), self.hull(b));
         let mut best = if ia.is_empty() || ib.is_empty() {
@@ -229,13 +285,67 @@ impl<'a> Sym<'a> {
         };
         let la = a.map(|h| self.lin(h, 0)).unwrap_or(Lin::constant(0.0));
         let lb = b.map(|h| self.lin(h, 0)).unwrap_or(Lin::constant(0.0));
-        if let Some(c) = la.add(&lb, -1.0).as_constant() {
-            best = best.max(c);
+        let form = la.add(&lb, -1.0);
+        match form.as_constant() {
+            Some(c) => best = best.max(c),
+            None => best = best.max(self.form_lower(&form)),
         }
         if depth >= 4 {
             return best;
         }
         let d = depth + 1;
+        // A scalar constant added to or taken from either side moves the bound by it:
+        // `clamp(t, 0.0, 1.0) + 1e-3` over `clamp(t - 0.3, 0.0, 1.0)` is 1e-3 more than the clamps'.
+        let shifted = |h: Handle<E>| -> Option<(Handle<E>, f64)> {
+            let constant = |x: Handle<E>| {
+                self.an
+                    .num(self.id, x)
+                    .filter(|n| n.n == 1)
+                    .and_then(|n| n.c[0].as_point())
+            };
+            match self.f.expressions[resolve(self.f, self.an, self.id, h)] {
+                E::Binary {
+                    op: Bo::Add,
+                    left,
+                    right,
+                } => constant(right)
+                    .map(|c| (left, c))
+                    .or_else(|| constant(left).map(|c| (right, c))),
+                E::Binary {
+                    op: Bo::Subtract,
+                    left,
+                    right,
+                } => constant(right).map(|c| (left, -c)),
+                _ => None,
+            }
+        };
+        if let Some((x, c)) = a.and_then(shifted) {
+            best = best.max(c + self.diff_lower_d(Some(x), b, d));
+        }
+        if let Some((y, c)) = b.and_then(shifted) {
+            best = best.max(self.diff_lower_d(a, Some(y), d) - c);
+        }
+        // clamp is monotone and moves no value further: clamp(x, lo, hi) - clamp(y, lo, hi) is
+        // at least min(x - y, 0) — ordered, not apart, where both saturate.
+        if let (Some(a), Some(b)) = (a, b) {
+            let clamp =
+                |h: Handle<E>| match self.f.expressions[resolve(self.f, self.an, self.id, h)] {
+                    E::Math {
+                        fun: Mf::Clamp,
+                        arg,
+                        arg1: Some(lo),
+                        arg2: Some(hi),
+                        ..
+                    } => Some((arg, lo, hi)),
+                    _ => None,
+                };
+            if let (Some((x, lo, hi)), Some((y, lo2, hi2))) = (clamp(a), clamp(b)) {
+                if self.an.same(self.f, self.id, lo, lo2) && self.an.same(self.f, self.id, hi, hi2)
+                {
+                    best = best.max(self.diff_lower_d(Some(x), Some(y), d).min(0.0));
+                }
+            }
+        }
         if let Some(a) = a {
             let ra = resolve(self.f, self.an, self.id, a);
             match self.f.expressions[ra] {
@@ -251,14 +361,27 @@ impl<'a> Sym<'a> {
                         d,
                     )));
                 }
+                // clamp(x, lo, hi) = min(max(x, lo), hi): at least min(max(x, lo), hi).
                 E::Math {
                     fun: Mf::Clamp,
+                    arg: x,
                     arg1: Some(lo),
                     arg2: Some(hi),
                     ..
                 } => {
-                    best = best.max(self.diff_lower_d(Some(lo), b, d).min(self.diff_lower_d(
-                        Some(hi),
+                    let low =
+                        self.diff_lower_d(Some(x), b, d)
+                            .max(self.diff_lower_d(Some(lo), b, d));
+                    best = best.max(low.min(self.diff_lower_d(Some(hi), b, d)));
+                }
+                E::Math {
+                    fun: Mf::Min,
+                    arg,
+                    arg1: Some(y),
+                    ..
+                } => {
+                    best = best.max(self.diff_lower_d(Some(arg), b, d).min(self.diff_lower_d(
+                        Some(y),
                         b,
                         d,
                     )));
@@ -288,15 +411,28 @@ impl<'a> Sym<'a> {
                         d,
                     )));
                 }
+                // a - clamp(y, lo, hi) = max(a - max(y, lo), a - hi).
                 E::Math {
                     fun: Mf::Clamp,
+                    arg: y,
                     arg1: Some(lo),
                     arg2: Some(hi),
                     ..
                 } => {
-                    best = best.max(self.diff_lower_d(a, Some(lo), d).min(self.diff_lower_d(
+                    let under =
+                        self.diff_lower_d(a, Some(y), d)
+                            .min(self.diff_lower_d(a, Some(lo), d));
+                    best = best.max(under.max(self.diff_lower_d(a, Some(hi), d)));
+                }
+                E::Math {
+                    fun: Mf::Max,
+                    arg,
+                    arg1: Some(y),
+                    ..
+                } => {
+                    best = best.max(self.diff_lower_d(a, Some(arg), d).min(self.diff_lower_d(
                         a,
-                        Some(hi),
+                        Some(y),
                         d,
                     )));
                 }
@@ -311,6 +447,17 @@ impl<'a> Sym<'a> {
             }
         }
         best
+    }
+
+    /// `a - b` as `c + k × x` when it is one: the constant `c`, the factor `k` and the
+    /// expression `x` (a uniform or input read, a parameter, or an expression the forms do not
+    /// look into).
+    pub fn single_term(&self, a: Handle<E>, b: Handle<E>) -> Option<(f64, f64, Handle<E>)> {
+        let d = self.lin(a, 0).add(&self.lin(b, 0), -1.0);
+        match (&d.terms[..], &d.at[..]) {
+            ([(_, k)], [x]) => Some((d.c, *k, *x)),
+            _ => None,
+        }
     }
 
     /// Whether `h` is certainly not zero (a scalar, or every component of a vector).

@@ -10,6 +10,54 @@ use crate::interval::Interval;
 use crate::value::{Facts, Num, Val};
 
 impl Analysis {
+    /// `v.z / length(v)`, a component of a vector over the vector's length: in [-1, 1] in exact
+    /// arithmetic, and a few ulps past it after rounding.
+    fn part_over_length(&self, s: Site, e: &E, v: Val) -> Val {
+        let E::Binary {
+            op: naga::BinaryOperator::Divide,
+            left,
+            right,
+        } = *e
+        else {
+            return v;
+        };
+        let right = crate::symbolic::resolve(s.f, self, s.id, right);
+        let E::Math {
+            fun: naga::MathFunction::Length,
+            arg,
+            ..
+        } = s.f.expressions[right]
+        else {
+            return v;
+        };
+        let base = match s.f.expressions[left] {
+            E::AccessIndex { base, .. } => base,
+            E::Load { pointer } => match s.f.expressions[pointer] {
+                E::AccessIndex { base, .. } => match s.f.expressions[base] {
+                    E::LocalVariable(_) | E::FunctionArgument(_) => base,
+                    _ => return v,
+                },
+                _ => return v,
+            },
+            _ => return v,
+        };
+        let same = self.same(s.f, s.id, base, arg)
+            || matches!(s.f.expressions[arg], E::Load { pointer } if pointer == base);
+        match v {
+            Val::Num(mut n) if same && !n.is_bottom() => {
+                let unit = Interval::new(-1.0 - 1e-6, 1.0 + 1e-6);
+                for c in &mut n.c[..n.n as usize] {
+                    let m = c.meet(unit);
+                    if !m.is_empty() {
+                        *c = m;
+                    }
+                }
+                Val::Num(n.settle())
+            }
+            other => other,
+        }
+    }
+
     /// The value of expression `h` of function `id` (evaluated already).
     pub(super) fn v(&self, id: usize, h: Handle<E>) -> &Val {
         &self.functions[id].values[h.index()]
@@ -31,6 +79,8 @@ impl Analysis {
             Some(vp) => vp,
             None => (self.operation(s, e, ty), None),
         };
+        let val = within_type(val, ty);
+        let val = self.part_over_length(s, e, val);
         if let E::Load { pointer } = *e {
             if let Some(p) = self.functions[s.id].places[pointer.index()].clone() {
                 let v = self.load_version(&p);
@@ -174,8 +224,9 @@ impl Analysis {
                 let deps = self.deps_of(id, &[*coordinate]).with(Facts::TEXTURE);
                 self.texel(module, ty, deps)
             }
+            // Sizes, levels, layers and samples of a bound (complete) texture: at least 1.
             E::ImageQuery { .. } => shape(module, ty, &|n, _| {
-                Num::splat(Interval::NON_NEGATIVE, n, Facts::NONE)
+                Num::splat(Interval::new(1.0, f64::INFINITY), n, Facts::NONE)
             }),
             _ => Self::unknown(module, ty, Facts::NONE),
         }
@@ -316,6 +367,20 @@ impl Analysis {
                         || (start == 0 && x.facts.has(Facts::NZ3));
                     facts = facts.join(x.facts.without(Facts::NZ));
                 }
+                // `vec3(sin(a), y, cos(a))`: a sine and a cosine of one angle are not both 0.
+                let trig = |fun: naga::MathFunction| {
+                    components
+                        .iter()
+                        .filter_map(move |c| match f.expressions[*c] {
+                            E::Math { fun: g, arg, .. } if g == fun => Some(arg),
+                            _ => None,
+                        })
+                };
+                if trig(naga::MathFunction::Sin)
+                    .any(|a| trig(naga::MathFunction::Cos).any(|b| self.same(f, id, a, b)))
+                {
+                    nz = true;
+                }
                 // `vec3(v)` of a vec4 `v` is lowered as a compose of `v[0]`, `v[1]`, `v[2]`.
                 if let [a, b, c] = components {
                     if let (
@@ -391,6 +456,27 @@ impl Analysis {
             x.facts.without(Facts::POS).without(Facts::NZ)
         };
         Val::Num(Num::from_components(&comps, keep.without(Facts::DIFF)))
+    }
+}
+
+/// An integer value within its type's range (`uint` bits times 2^-32 are below 1).
+fn within_type(v: Val, ty: &TypeInner) -> Val {
+    let range = match ty.scalar_kind() {
+        Some(ScalarKind::Uint) => Interval::new(0.0, u32::MAX as f64),
+        Some(ScalarKind::Sint) => Interval::new(i32::MIN as f64, i32::MAX as f64),
+        _ => return v,
+    };
+    match v {
+        Val::Num(mut n) if !n.is_bottom() => {
+            for c in &mut n.c[..n.n as usize] {
+                let m = c.meet(range);
+                if !m.is_empty() {
+                    *c = m;
+                }
+            }
+            Val::Num(n.settle())
+        }
+        other => other,
     }
 }
 

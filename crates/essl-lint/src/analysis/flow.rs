@@ -178,11 +178,9 @@ impl Analysis {
     }
 
     /// The version of the variable a load of `place` reads here (0: not followed): loads with
-    /// the same version read the same value.
+    /// the same version read the same value (of the same part: a dynamic index is compared by
+    /// [`Analysis::same`]).
     pub(super) fn load_version(&mut self, place: &Place) -> u32 {
-        if place.path.contains(&ANY) {
-            return 0;
-        }
         if let Some(v) = self.current.versions.get(&place.root) {
             return *v;
         }

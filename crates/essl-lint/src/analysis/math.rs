@@ -204,12 +204,13 @@ impl Call<'_> {
                                 n.c[i.min(n.n as usize - 1)]
                             }
                         };
-                        x.c[i].clamp(pick(&lo), pick(&hi))
+                        x.c[i].clamp_ordered(pick(&lo), pick(&hi))
                     })
                     .collect();
-                let nn = (fx.has(Facts::NN) || lo.facts.has(Facts::NN)) && hi.facts.has(Facts::NN);
+                // Bounds in order (the call is undefined otherwise): at least `lo`.
+                let nn = fx.has(Facts::NN) && hi.facts.has(Facts::NN) || lo.facts.has(Facts::NN);
                 let pos =
-                    (fx.has(Facts::POS) || lo.facts.has(Facts::POS)) && hi.facts.has(Facts::POS);
+                    fx.has(Facts::POS) && hi.facts.has(Facts::POS) || lo.facts.has(Facts::POS);
                 let unit =
                     fx.has(Facts::UNIT) && lo.facts.has(Facts::UNIT) && hi.facts.has(Facts::UNIT);
                 Val::Num(Num::from_components(

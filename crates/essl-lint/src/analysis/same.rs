@@ -8,6 +8,50 @@ use super::{Analysis, Root, ANY};
 use crate::value::Facts;
 
 impl Analysis {
+    /// Whether two pointers into the same variable select the same part: the same constant
+    /// indices, and dynamic indices of the same value.
+    fn same_pointer(
+        &self,
+        f: &Function,
+        id: usize,
+        a: Handle<E>,
+        b: Handle<E>,
+        depth: u32,
+    ) -> bool {
+        if a == b {
+            return true;
+        }
+        match (&f.expressions[a], &f.expressions[b]) {
+            (
+                E::Access {
+                    base: b1,
+                    index: i1,
+                },
+                E::Access {
+                    base: b2,
+                    index: i2,
+                },
+            ) => {
+                self.same_depth(f, id, *i1, *i2, depth + 1)
+                    && self.same_pointer(f, id, *b1, *b2, depth)
+            }
+            (
+                E::AccessIndex {
+                    base: b1,
+                    index: i1,
+                },
+                E::AccessIndex {
+                    base: b2,
+                    index: i2,
+                },
+            ) => i1 == i2 && self.same_pointer(f, id, *b1, *b2, depth),
+            (E::LocalVariable(x), E::LocalVariable(y)) => x == y,
+            (E::GlobalVariable(x), E::GlobalVariable(y)) => x == y,
+            (E::FunctionArgument(x), E::FunctionArgument(y)) => x == y,
+            _ => false,
+        }
+    }
+
     /// Whether two expressions of a function certainly have the same value.
     pub fn same(&self, f: &Function, id: usize, a: Handle<E>, b: Handle<E>) -> bool {
         self.same_depth(f, id, a, b, 0)
@@ -27,7 +71,7 @@ impl Analysis {
                 let (Some(x), Some(y)) = (&ff.places[pa.index()], &ff.places[pb.index()]) else {
                     return false;
                 };
-                if x != y || x.path.contains(&ANY) {
+                if x != y || x.path.contains(&ANY) && !self.same_pointer(f, id, *pa, *pb, depth) {
                     return false;
                 }
                 if let Root::Local(_, l) = x.root {
@@ -36,6 +80,10 @@ impl Analysis {
                     }
                 }
                 let same_emit = ff.emit[a.index()] != 0 && ff.emit[a.index()] == ff.emit[b.index()];
+                if x.path.contains(&ANY) {
+                    let version = ff.load_version[a.index()];
+                    return same_emit || version != 0 && version == ff.load_version[b.index()];
+                }
                 let version = ff.load_version[a.index()];
                 same_emit
                     || version != 0 && version == ff.load_version[b.index()]

@@ -11,7 +11,8 @@ declare_rule! {
     /// ## What it does
     /// Reports `acos(x)` where the shader computes `x` and cannot guarantee `-1 ≤ x ≤ 1`. The classic
     /// case is the cosine of an angle as a dot product of unit vectors: mathematically in `[-1, 1]`,
-    /// but `normalize` and `dot` round, and the result can be `1.0000001`. An argument that is a
+    /// but `normalize` and `dot` round, and the result can be `1.0000001`; likewise a component
+    /// over the vector's length (`acos(p.z / length(p))`, a polar angle). An argument that is a
     /// uniform as such (`acos(u_coneCos)`) is not reported: the runtime check validates uniform values.
     ///
     /// ## Why is this bad?

@@ -10,7 +10,8 @@ use crate::Level;
 declare_rule! {
     /// ## What it does
     /// Reports `asin(x)` where the shader computes `x` and cannot guarantee `-1 ≤ x ≤ 1` — a dot
-    /// product or a component of unit vectors, which rounding can push to `1.0000001`. A uniform as
+    /// product or a component of unit vectors, or a component over the vector's length
+    /// (`asin(p.y / length(p))`), which rounding can push to `1.0000001`. A uniform as
     /// such is not reported.
     ///
     /// ## Why is this bad?

@@ -34,6 +34,8 @@ pub struct Cx<'a> {
     pub file: &'a SourceFile,
     /// Its naga IR.
     pub module: &'a naga::Module,
+    /// The checked module the IR was lowered from (statements as the user wrote them).
+    pub hir: &'a essl::hir::Module,
     /// naga's validation information (expression types).
     pub info: &'a naga::valid::ModuleInfo,
     /// The analysis with any external value: computed on first use ([`Cx::sound`]).
@@ -68,6 +70,7 @@ impl<'a> Cx<'a> {
         Some(Cx {
             file: &shader.file,
             module,
+            hir: &shader.module,
             info,
             sound: std::cell::OnceCell::new(),
             typical: std::cell::OnceCell::new(),

@@ -129,6 +129,17 @@ impl Cx<'_> {
 
     /// What one comparison says when it holds (`pol`) or fails: an ordering, a non-zero value.
     fn atom_relations(&self, f: &Function, id: usize, c: Handle<E>, pol: bool, g: &mut Guards) {
+        // `all(greaterThanEqual(p, q))` holding: `p >= q` in every component.
+        if let E::Relational {
+            fun: naga::RelationalFunction::All,
+            argument,
+        } = f.expressions[c]
+        {
+            if let (true, E::Binary { op, left, right }) = (pol, &f.expressions[argument]) {
+                g.relations.push((*op, *left, *right));
+            }
+            return;
+        }
         let E::Binary { op, left, right } = f.expressions[c] else {
             return;
         };

@@ -4,6 +4,8 @@
 //! rule is).
 
 mod context;
+mod domain;
+mod flat;
 mod guards;
 pub(crate) mod origin;
 pub(crate) mod rule;
@@ -11,13 +13,21 @@ pub(crate) mod rule;
 mod acos_domain;
 mod asin_domain;
 mod division_by_difference;
+mod domain_atan2;
+mod domain_integer_division;
+mod domain_inversesqrt;
+mod domain_log;
+mod domain_sqrt;
 mod inverse_trig;
 mod mediump_overflow;
+mod non_uniform_derivative;
 mod normalize_zero;
 mod pow_negative_base;
 mod pow_zero_base;
 mod smoothstep_edges;
 mod smoothstep_reversed_constant;
+mod texel_fetch_range;
+mod uninitialised_read;
 mod unused_allow;
 
 pub(crate) use context::{describe, fmt_num, operands, users, Cx, User};
@@ -34,9 +44,21 @@ pub static RULES: &[&Rule] = &[
     &smoothstep_reversed_constant::SmoothstepReversedConstant::RULE,
     &division_by_difference::DivisionByDifference::RULE,
     &normalize_zero::NormalizeZero::RULE,
+    &domain_sqrt::DomainSqrt::RULE,
+    &domain_inversesqrt::DomainInversesqrt::RULE,
+    &domain_log::DomainLog::RULE,
+    &domain_atan2::DomainAtan2::RULE,
+    &domain_integer_division::DomainIntegerDivision::RULE,
     &mediump_overflow::MediumpOverflow::RULE,
+    &texel_fetch_range::TexelFetchRange::RULE,
+    &uninitialised_read::UninitialisedRead::RULE,
+    &non_uniform_derivative::NonUniformDerivative::RULE,
     &unused_allow::UnusedAllow::RULE,
 ];
+
+/// The rules that read the checked module (HIR) only: they run on every shader, whether or not
+/// the value analysis has anything to look at.
+pub(crate) const HIR_RULES: &[&str] = &["uninitialised-read", "non-uniform-derivative"];
 
 /// The id of the rule that reports suppressions silencing nothing.
 pub(crate) const UNUSED_ALLOW: &str = "unused-essl-allow";
@@ -58,9 +80,21 @@ pub(crate) fn candidates(
             matches!(
                 e,
                 E::Math {
-                    fun: Mf::Pow | Mf::Acos | Mf::Asin | Mf::SmoothStep | Mf::Normalize,
+                    fun: Mf::Pow
+                        | Mf::Acos
+                        | Mf::Asin
+                        | Mf::SmoothStep
+                        | Mf::Normalize
+                        | Mf::Sqrt
+                        | Mf::InverseSqrt
+                        | Mf::Log
+                        | Mf::Log2
+                        | Mf::Atan2,
                     ..
-                } | E::Binary { op: Bo::Divide, .. }
+                } | E::Binary {
+                    op: Bo::Divide | Bo::Modulo,
+                    ..
+                } | E::ImageLoad { .. }
             )
         })
     });

@@ -54,6 +54,8 @@ declare_rule! {
     ///   vec3(1.0, 0.0, 0.0)` (each axis is used only where `n` is not along it).
     /// - A cross product of a per-pixel normal with a constant tilted off the coordinate axes
     ///   (`normalize(vec3(0.001, 1.0, 0.001))`): the tilt keeps it away from axis-aligned normals.
+    /// - A vector with a sine and a cosine of one angle among its components (`vec3(sin(a), y,
+    ///   cos(a))`): they are not both 0.
     /// - A vector a guard says is not zero (`dot(c, c) > 1e-12 ? normalize(c) : …`, `if (length(c) >
     ///   0.0)`).
     /// - Code essl does not lower: an inactive input read by dead code is no zero vector.

@@ -11,9 +11,19 @@ use crate::Level;
 
 declare_rule! {
     /// ## What it does
-    /// Reports `smoothstep(edge0, edge1, x)` where the edges are per-draw values computed from
-    /// uniforms and nothing in the shader keeps `edge0 < edge1` —
-    /// `smoothstep(u_outerLimit, u_innerLimit, d)` — and calls whose constant edges are equal.
+    /// Reports `smoothstep(edge0, edge1, x)` where nothing in the shader keeps `edge0 < edge1` for
+    /// every input it ordinarily gets:
+    ///
+    /// - edges from uniforms set independently (`smoothstep(u_outerLimit, u_innerLimit, d)`);
+    /// - edges the shader computes per pixel — from varyings, texels, dot products, and clamps of
+    ///   those: `smoothstep(clamp(d - 0.3, 0.0, 1.0), clamp(d, 0.0, 1.0), t)` keeps `edge0 ≤ edge1`,
+    ///   but both are 0 wherever `d ≤ 0` (the whole unlit side) and both 1 wherever `d ≥ 1.3`:
+    ///   ordered is not apart;
+    /// - edges `e, e + w` whose gap `w` is below the spacing of floats at their magnitude
+    ///   (`smoothstep(r, r + 1e-8, d)` in `highp`, `r + 1e-4` in `mediump` for `r` near 2): equal
+    ///   after rounding;
+    /// - constant edges that are equal.
+    ///
     /// Edges the shader orders itself (`smoothstep(u_r, u_r + 0.1, d)`, `max(e1, e0 + 1e-3)`) are
     /// not reported; constant edges in reversed order are `smoothstep-reversed-constant`'s.
     ///
@@ -40,17 +50,24 @@ declare_rule! {
     ///
     /// ## What it does not flag
     /// - Edges the shader orders itself: `smoothstep(u_r, u_r + 0.1, d)`, `max(e1, e0 + 1e-3)`, a
-    ///   clamp of one edge above the other, or an enclosing `if (u_a < u_b)`.
-    /// - Edges with a per-pixel part (`0.7 - fwidth(c), 0.7 + fwidth(c)`): equal at isolated
-    ///   pixels at most, where `x` is exactly the edge.
-    /// - Constant edges in reversed order: a deliberate mirror, `smoothstep-reversed-constant`'s (a
-    ///   note). Equal constant edges are reported here: they divide by zero.
+    ///   gap a constant or a parameter's value keeps positive (`clamp(d - 0.3, 0.0, 1.0)` and
+    ///   `clamp(d, 0.0, 1.0) + 1e-3`: the clamps are ordered, the constant keeps them apart), or
+    ///   an enclosing `if (u_a < u_b)`. A guard proves the order only of the edges it compares.
+    /// - The antialiasing idiom, edges `e ∓ w` of a width computed from a derivative (`0.7 -
+    ///   fwidth(c), 0.7 + fwidth(c)`, in either order, an edge also kept in range by a constant:
+    ///   `max(0.0, r - w), r`): the edges meet only where `x` does not change across the pixel,
+    ///   and there the step is exact.
+    /// - Constant edges in reversed order, or edges `r + w, r - w` with a constant `w > 0`: a
+    ///   deliberate mirror, `smoothstep-reversed-constant`'s (a note). Equal constant edges are
+    ///   reported here: they divide by zero.
     ///
     /// Severity: a warning when values the shader itself produces reach the hazard; a note, naming
     /// the uniform, when one uniform alone (with constants) does — the hazard then needs that value out
-    /// of the range the shader was written for, and essl-gl's validation mode checks it at draw time. (`smoothstep(cos(u_angle), 1.0, d)` needs `u_angle == 0`). Two uniforms a user sets
+    /// of the range the shader was written for, and essl-gl's validation mode checks it at draw time
+    /// (`smoothstep(cos(u_angle), 1.0, d)` needs `u_angle == 0`). Two uniforms a user sets
     /// independently (`u_outerLimit`, `u_innerLimit`; three.js's `coneCos` and `penumbraCos`, equal when
-    /// the penumbra is 0, its default) give a warning.
+    /// the penumbra is 0, its default) give a warning, and so do edges computed per pixel; a width
+    /// that is one input as such (`smoothstep(0.0, v_radius, d)`) gives a note naming it.
     ///
     /// ## References
     /// - GLSL ES 3.00 specification, §8.3 Common Functions: smoothstep "Results are undefined if
@@ -58,7 +75,7 @@ declare_rule! {
     /// - Article 001 (webgl2fundamentals, spot lights), its closing note on `smoothstep`.
     pub(crate) struct SmoothstepEdges {
         id: "smoothstep-edges",
-        summary: "`smoothstep(e0, e1, x)` whose edges come from uniforms and can be equal or swapped",
+        summary: "`smoothstep(e0, e1, x)` whose edges can be equal or swapped for ordinary inputs, or equal after rounding",
         default_level: Level::Warn,
         check: check,
     }
@@ -141,61 +158,225 @@ fn check(cx: &Cx, out: &mut Vec<Diagnostic>) {
         let (Some(v0), Some(v1)) = (cx.sound().num(id, c.e0), cx.sound().num(id, c.e1)) else {
             continue;
         };
-        let (s0, s1) = (cx.span(f, c.e0), cx.span(f, c.e1));
         if let Some(pairs) = constant_edges(cx, &c) {
-            if pairs.iter().all(|(a, b)| a < b) {
-                continue;
+            if !pairs.iter().all(|(a, b)| a < b) {
+                out.push(equal_constants(&c, &pairs));
             }
-            out.push(
-                Diagnostic::rule_warning(
-                    SmoothstepEdges::RULE.id,
-                    "`smoothstep` edges are equal, where `smoothstep` is undefined",
-                    span,
-                )
-                .with_label(if pairs.len() == 1 {
-                    format!(
-                        "edge0 = {}, edge1 = {}",
-                        fmt_num(pairs[0].0),
-                        fmt_num(pairs[0].1)
-                    )
-                } else {
-                    "edge0 >= edge1 in some component".to_string()
-                })
-                .with_note("GLSL ES 3.00 §8.3: smoothstep is undefined if edge0 >= edge1")
-                .with_help("use `step(edge, x)` for a hard edge, or give the edges a width"),
-            );
             continue;
         }
-        let uniform = v0.facts.any(Facts::UNIFORM) || v1.facts.any(Facts::UNIFORM);
+        let sym = cx.sym(id, f);
+        let low = [span, cx.span(f, c.e0), cx.span(f, c.e1)]
+            .iter()
+            .any(|s| cx.prec.is_low(*s));
+        let gap = sym.diff_lower(Some(c.e1), Some(c.e0));
+        if gap > 0.0 {
+            // Ordered in exact arithmetic: equal only if the gap is below the edges' ulp.
+            if let Some(d) = lost_gap(cx, &c, gap, low) {
+                out.push(d);
+            }
+            continue;
+        }
+        if cx.ordered(f, id, c.e0, c.e1, &cx.guards(f, id, c.call)) || derivative_width(cx, &c) {
+            continue;
+        }
         let per_pixel = Facts::INPUT.with(Facts::TEXTURE);
-        if !uniform
-            || v0.facts.any(per_pixel)
-            || v1.facts.any(per_pixel)
-            || cx.sym(id, f).diff_lower(Some(c.e1), Some(c.e0)) > 0.0
-            || cx.ordered(f, id, c.e0, c.e1, &cx.guards(f, id, c.call))
-        {
-            continue;
-        }
-        let low = cx.prec.is_low(span) || cx.prec.is_low(s0) || cx.prec.is_low(s1);
-        let eps = if low { "1e-3" } else { "1e-4" };
-        let mut d = Diagnostic::rule_warning(SmoothstepEdges::RULE.id, "`smoothstep` edges come from uniforms and can be equal or swapped, where `smoothstep` is undefined", span)
-            .with_label("undefined when edge0 >= edge1")
-            .with_note("GLSL ES 3.00 §8.3: smoothstep is undefined if edge0 >= edge1")
-            .with_help(format!("keep edge1 above edge0, e.g. `max(edge1, edge0 + {eps})`"));
-        if !s0.is_empty() {
-            d = d.with_secondary(s0, "edge0");
-        }
-        if !s1.is_empty() {
-            d = d.with_secondary(s1, "edge1");
-        }
-        if !s0.is_empty() && !s1.is_empty() && cx.pure(f, c.e0) {
-            let fixed = format!("max({}, {} + {eps})", cx.text(s1), cx.text(s0));
-            d = d.with_fix(Fix::suggested(
-                format!("keep edge1 at least {eps} above edge0"),
-                s1,
-                fixed,
-            ));
-        }
-        out.push(cx.grade(d, &[(id, c.e0), (id, c.e1)]));
+        let computed = v0.facts.any(per_pixel) || v1.facts.any(per_pixel);
+        let message = if computed {
+            "`smoothstep` edges can be equal or swapped for ordinary inputs, where `smoothstep` is undefined"
+        } else {
+            "`smoothstep` edges come from uniforms and can be equal or swapped, where `smoothstep` is undefined"
+        };
+        let d = Diagnostic::rule_warning(SmoothstepEdges::RULE.id, message, span)
+            .with_label(if computed {
+                "nothing keeps edge0 below edge1 for every input"
+            } else {
+                "undefined when edge0 >= edge1"
+            })
+            .with_note("GLSL ES 3.00 §8.3: smoothstep is undefined if edge0 >= edge1");
+        let d = with_fix(cx, &c, d, low);
+        out.push(match single_input(cx, &c) {
+            Some(name) => input_note(d, &name),
+            None => cx.grade(d, &[(id, c.e0), (id, c.e1)]),
+        });
     }
+}
+
+/// The finding for constant edges that are equal in some component.
+fn equal_constants(c: &Call, pairs: &[(f64, f64)]) -> Diagnostic {
+    Diagnostic::rule_warning(
+        SmoothstepEdges::RULE.id,
+        "`smoothstep` edges are equal, where `smoothstep` is undefined",
+        c.span,
+    )
+    .with_label(if pairs.len() == 1 {
+        format!(
+            "edge0 = {}, edge1 = {}",
+            fmt_num(pairs[0].0),
+            fmt_num(pairs[0].1)
+        )
+    } else {
+        "edge0 >= edge1 in some component".to_string()
+    })
+    .with_note("GLSL ES 3.00 §8.3: smoothstep is undefined if edge0 >= edge1")
+    .with_help("use `step(edge, x)` for a hard edge, or give the edges a width")
+}
+
+/// The edges' secondary labels, the help and the suggested fix `max(edge1, edge0 + eps)`.
+fn with_fix(cx: &Cx, c: &Call, mut d: Diagnostic, low: bool) -> Diagnostic {
+    let (s0, s1) = (cx.span(c.f, c.e0), cx.span(c.f, c.e1));
+    let eps = if low { "1e-3" } else { "1e-4" };
+    d = d.with_help(format!(
+        "keep edge1 above edge0, e.g. `max(edge1, edge0 + {eps})`"
+    ));
+    if !s0.is_empty() {
+        d = d.with_secondary(s0, "edge0");
+    }
+    if !s1.is_empty() {
+        d = d.with_secondary(s1, "edge1");
+    }
+    if !s0.is_empty() && !s1.is_empty() && cx.pure(c.f, c.e0) {
+        let fixed = format!("max({}, {} + {eps})", cx.text(s1), cx.text(s0));
+        d = d.with_fix(Fix::suggested(
+            format!("keep edge1 at least {eps} above edge0"),
+            s1,
+            fixed,
+        ));
+    }
+    d
+}
+
+/// Edges `e0 < e1` in exact arithmetic whose gap is below the spacing of floats at their
+/// magnitude (`smoothstep(r, r + 1e-4, d)` in `mediump` with `r` near 2): equal after
+/// rounding. The magnitude is the edges' bound, or 1 for edges a uniform leaves unbounded
+/// (edges are mostly cosines and distances in texture space).
+fn lost_gap(cx: &Cx, c: &Call, gap: f64, low: bool) -> Option<Diagnostic> {
+    let a = cx.sound();
+    let m0 = a.num(c.id, c.e0)?.hull().mag();
+    let m1 = a.num(c.id, c.e1)?.hull().mag();
+    let m = match m0.max(m1) {
+        m if m.is_finite() => m,
+        _ => 1.0,
+    };
+    // The spacing of floats just below `m`: 2^-10 (mediump) or 2^-23 (highp) of its binade.
+    let bits = if low { 10 } else { 23 };
+    let binade = 2f64.powi(m.max(f64::MIN_POSITIVE).log2().floor() as i32);
+    let ulp = binade * 2f64.powi(-bits);
+    if m == 0.0 || gap >= ulp {
+        return None;
+    }
+    let d = Diagnostic::rule_warning(
+        SmoothstepEdges::RULE.id,
+        "`smoothstep` edges differ by less than the spacing of floats at their magnitude: equal after rounding, where `smoothstep` is undefined",
+        c.span,
+    )
+    .with_label(format!(
+        "edge1 - edge0 = {} in exact arithmetic, below the {} spacing {} near {}",
+        fmt_num(gap),
+        if low { "mediump" } else { "highp" },
+        fmt_num(ulp),
+        fmt_num(m)
+    ))
+    .with_note("GLSL ES 3.00 §8.3: smoothstep is undefined if edge0 >= edge1");
+    Some(with_fix(cx, c, d, low))
+}
+
+/// Whether the edges are `e ± w` of a width computed from a derivative (`0.7 - fwidth(c)`,
+/// `0.7 + fwidth(c)`): the antialiasing idiom, whose edges meet only where `x` does not change
+/// across the pixel, and there the step is exact.
+fn derivative_width(cx: &Cx, c: &Call) -> bool {
+    let sym = cx.sym(c.id, c.f);
+    // `max(0.0, e - w)`: the edge kept in range is the same edge.
+    let inner = |h: Handle<E>| match c.f.expressions[h] {
+        E::Math {
+            fun: Mf::Max | Mf::Min,
+            arg,
+            arg1: Some(b),
+            ..
+        } => {
+            let constant = |x: Handle<E>| {
+                cx.sound()
+                    .num(c.id, x)
+                    .is_some_and(|n| n.hull().as_point().is_some())
+            };
+            if constant(arg) {
+                b
+            } else if constant(b) {
+                arg
+            } else {
+                h
+            }
+        }
+        _ => h,
+    };
+    let (e0, e1) = (
+        inner(crate::symbolic::resolve(c.f, cx.sound(), c.id, c.e0)),
+        inner(crate::symbolic::resolve(c.f, cx.sound(), c.id, c.e1)),
+    );
+    let Some((c0, k, x)) = sym.single_term(e1, e0) else {
+        return false;
+    };
+    // `e + w, e - w` is the mirrored form of the idiom.
+    (c0 >= 0.0 && k > 0.0 || c0 <= 0.0 && k < 0.0)
+        && cx
+            .sound()
+            .num(c.id, x)
+            .is_some_and(|v| v.facts.has(Facts::NN))
+        && from_derivative(c.f, x, 0)
+}
+
+/// Whether `h` is computed from a `dFdx`, `dFdy` or `fwidth` (through locals stored once).
+fn from_derivative(f: &Function, h: Handle<E>, depth: u32) -> bool {
+    if depth > 8 {
+        return false;
+    }
+    match &f.expressions[h] {
+        E::Derivative { .. } => true,
+        E::Load { pointer } => match f.expressions[*pointer] {
+            E::LocalVariable(_) => stores_to(f, *pointer)
+                .iter()
+                .all(|v| from_derivative(f, *v, depth + 1)),
+            _ => false,
+        },
+        e => super::operands(e)
+            .into_iter()
+            .any(|o| from_derivative(f, o, depth + 1)),
+    }
+}
+
+/// The values stored whole into the local `pointer` is (empty when it is stored in part).
+fn stores_to(f: &Function, pointer: Handle<E>) -> Vec<Handle<E>> {
+    let mut out = Vec::new();
+    crate::analysis::each_statement(&f.body, &mut |s| {
+        if let naga::Statement::Store { pointer: p, value } = s {
+            if *p == pointer {
+                out.push(*value);
+            }
+        }
+    });
+    out
+}
+
+/// The one input whose value alone, up to a positive factor, is `edge1 - edge0`
+/// (`smoothstep(0.0, v_radius, d)`): the hazard needs that input at 0 or below.
+fn single_input(cx: &Cx, c: &Call) -> Option<String> {
+    let (k0, k, x) = cx.sym(c.id, c.f).single_term(c.e1, c.e0)?;
+    if k0 != 0.0 || k <= 0.0 {
+        return None;
+    }
+    let v = cx.sound().num(c.id, x)?;
+    if !v.facts.has(Facts::EXT) || v.facts.any(Facts::TEXTURE.with(Facts::UNIFORM)) {
+        return None;
+    }
+    let o = cx.origin(&[(c.id, x)]);
+    match (&o.inputs[..], o.uniforms.is_empty(), o.texels, o.unknown) {
+        ([i], true, false, false) => Some(i.clone()),
+        _ => None,
+    }
+}
+
+/// Makes `d` a note naming the input that alone reaches it.
+fn input_note(mut d: Diagnostic, name: &str) -> Diagnostic {
+    d.severity = essl::diagnostic::Severity::Note;
+    d.message = format!("{}, only when the input `{name}` is 0 or below", d.message);
+    d
 }

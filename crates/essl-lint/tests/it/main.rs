@@ -4,5 +4,6 @@
 mod docs;
 mod idioms;
 mod preconditions;
+mod recall;
 mod rules;
 mod seeds;

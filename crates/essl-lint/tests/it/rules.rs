@@ -381,7 +381,42 @@ fn smoothstep_with_ordered_edges_is_fine() {
         "",
         "  float w = 0.01;\n  r = smoothstep(u_a - w, u_a + w, v_x);",
     );
-    clean(rule, "highp", "", "  r = smoothstep(v_x, v_pos.x, 0.5);");
+}
+
+#[test]
+fn smoothstep_with_per_pixel_edges() {
+    let rule = "smoothstep-edges";
+    // Two inputs set independently can be equal.
+    reports(
+        rule,
+        "highp",
+        "",
+        "  r = smoothstep(v_x, v_pos.x, 0.5);",
+        &["smoothstep(v_x, v_pos.x, 0.5)"],
+    );
+    // Clamps of a dot product: ordered, but equal wherever both saturate (`d <= 0`).
+    reports(
+        rule,
+        "highp",
+        "",
+        "  float d = dot(normalize(v_n), normalize(u_dir));\n  r = smoothstep(clamp(d - 0.3, 0.0, 1.0), clamp(d, 0.0, 1.0), v_x);",
+        &["smoothstep(clamp(d - 0.3, 0.0, 1.0), clamp(d, 0.0, 1.0), v_x)"],
+    );
+    // The antialiasing idiom: a width from a derivative, either order.
+    clean(
+        rule,
+        "highp",
+        "",
+        "  float w = fwidth(v_x);\n  r = smoothstep(0.5 - w, 0.5 + w, v_x) + smoothstep(0.5 + w, 0.5 - w, v_x);",
+    );
+    // A constant gap below the spacing of floats at the edges' magnitude.
+    reports(
+        rule,
+        "highp",
+        "",
+        "  r = smoothstep(u_a, u_a + 1e-9, v_x);",
+        &["smoothstep(u_a, u_a + 1e-9, v_x)"],
+    );
 }
 
 // ----- division-by-difference -----

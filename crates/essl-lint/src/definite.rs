@@ -1,0 +1,742 @@
+//! Definite assignment on the checked module (essl's HIR, whose statements keep the shader's
+//! structure): which reads of a variable may come before any write to it, on some path.
+//!
+//! Tracked are the locals declared without an initializer, `out` parameters (undefined until
+//! the function writes them), and — in `main` — plain globals without an initializer and the
+//! shader's outputs. A vector's components are tracked one by one (`v.xy = …; v.z = …;`
+//! writes all of a `vec3`); an array, matrix or struct counts as written once any part of it is
+//! (dynamic indices make anything finer guesswork). The state at a point is the set of
+//! variables written on *every* path to it: branches intersect, a branch that returns,
+//! discards, breaks or continues adds nothing, a loop body may run zero times unless its bounds
+//! are constant and let it run once (`for (int i = 0; i < 4; i++)`), the right side of `&&` and
+//! `||` and the branches of `?:` may not run. A call reads what the callee reads of the tracked
+//! globals before writing them, and then counts as writing what the callee may write.
+
+use rustc_hash::{FxHashMap as HashMap, FxHashSet as HashSet};
+
+use essl::hir::{
+    self, BinaryOp, BuiltinFn, Cond, Expr, ExprKind, GlobalKind, ParamMode, Stmt, StmtKind,
+};
+use essl::source::Span;
+use essl::types::Type;
+
+/// A variable the analysis tracks.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Var {
+    /// A local of the function.
+    Local(usize),
+    /// An `out` parameter of the function.
+    Param(usize),
+    /// A global (in `main` and through the functions it calls).
+    Global(usize),
+}
+
+/// A read that may come before any write.
+#[derive(Clone, Debug)]
+pub struct Read {
+    /// The function the read is in.
+    pub function: usize,
+    /// The variable.
+    pub var: Var,
+    /// The read.
+    pub span: Span,
+    /// For a global read in a called function: the call in `main` it is reached through.
+    pub through: Option<Span>,
+}
+
+/// Every read of a tracked variable that may come before any write, one per variable and
+/// function (the first met).
+pub fn uninitialised_reads(m: &hir::Module) -> Vec<Read> {
+    let mut summaries: HashMap<usize, Summary> = HashMap::default();
+    let mut out = Vec::new();
+    for (fid, f) in m.functions.iter().enumerate() {
+        if !f.used {
+            continue;
+        }
+        let main = m.entry == Some(fid);
+        let mut w = Walk::new(m, fid, main, &mut summaries);
+        let mut st = w.start();
+        w.run(&f.body, &mut st);
+        out.extend(w.reads);
+    }
+    out
+}
+
+/// What a function does to the tracked globals: the ones it may read before writing (with
+/// where), and the ones it may write.
+#[derive(Clone, Debug, Default)]
+struct Summary {
+    reads: Vec<(usize, Span, usize)>,
+    writes: HashSet<usize>,
+}
+
+/// The bits of a variable written on every path so far.
+type State = HashMap<Var, u8>;
+
+/// Where `break` and `continue` go.
+struct Target {
+    is_loop: bool,
+    breaks: Vec<State>,
+    continues: Vec<State>,
+}
+
+struct Walk<'a> {
+    m: &'a hir::Module,
+    fid: usize,
+    main: bool,
+    /// Tracked variables: their full mask.
+    full: HashMap<Var, u8>,
+    targets: Vec<Target>,
+    reported: HashSet<Var>,
+    reads: Vec<Read>,
+    summaries: &'a mut HashMap<usize, Summary>,
+    /// When computing a summary: the globals read before written, and those written.
+    summary: Option<Summary>,
+    /// Writes made under a condition on uniforms (`if (u_isText) { c = …; }`), by the
+    /// condition's uniforms: a later `if` on the same uniforms (`u_isText && u_isHalo`) runs
+    /// only where they were made.
+    guarded: Vec<(Vec<Key>, Var, u8)>,
+    /// The uniforms the enclosing `if`s on uniforms require.
+    context: Vec<Key>,
+    /// How many enclosing statements are not `if`s on uniforms (loops, switches, other `if`s):
+    /// a write under them is not recorded in `guarded`, since a later `if` on the same
+    /// uniforms does not run only where they ran.
+    loose: usize,
+}
+
+/// A uniform a condition tests, with the value it requires: a loose uniform, or a member of a
+/// uniform block.
+type Key = (usize, usize, bool);
+
+/// The mask of all of a variable of type `t`: one bit per vector component, one otherwise.
+fn full_mask(t: &Type) -> u8 {
+    match t {
+        Type::Vector(_, n) => (1u8 << n) - 1,
+        _ => 1,
+    }
+}
+
+/// Whether a global is tracked: a plain global without an initializer, or an output.
+fn tracked_global(g: &hir::Global) -> bool {
+    match g.kind {
+        GlobalKind::Private => g.init.is_none(),
+        GlobalKind::Output => true,
+        _ => false,
+    }
+}
+
+impl<'a> Walk<'a> {
+    fn new(
+        m: &'a hir::Module,
+        fid: usize,
+        main: bool,
+        summaries: &'a mut HashMap<usize, Summary>,
+    ) -> Walk<'a> {
+        let f = &m.functions[fid];
+        let mut full = HashMap::default();
+        for (i, p) in f.params.iter().enumerate() {
+            if p.mode == ParamMode::Out {
+                full.insert(Var::Param(i), full_mask(&p.ty));
+            }
+        }
+        for (i, l) in f.locals.iter().enumerate() {
+            if l.constant.is_none() {
+                full.insert(Var::Local(i), full_mask(&l.ty));
+            }
+        }
+        if main {
+            for (i, g) in m.globals.iter().enumerate() {
+                if tracked_global(g) {
+                    full.insert(Var::Global(i), full_mask(&g.ty));
+                }
+            }
+        }
+        Walk {
+            m,
+            fid,
+            main,
+            full,
+            targets: Vec::new(),
+            reported: HashSet::default(),
+            reads: Vec::new(),
+            summaries,
+            summary: None,
+            guarded: Vec::new(),
+            context: Vec::new(),
+            loose: 0,
+        }
+    }
+
+    /// The state at the function's start: parameters other than `out` ones are written; locals
+    /// are written at their declaration.
+    fn start(&self) -> State {
+        let mut st = State::default();
+        for (v, _) in self.full.iter() {
+            if let Var::Local(_) = v {
+                st.insert(*v, 0);
+            }
+        }
+        st
+    }
+
+    fn run(&mut self, body: &[Stmt], st: &mut State) {
+        if let Some(end) = self.stmts(body, st.clone()) {
+            let at = self.m.functions[self.fid].span;
+            self.outs_written(&end, at);
+        }
+    }
+
+    /// At a `return` (or the end of the function): an `out` parameter not written on every
+    /// path leaves the caller's variable undefined, which is a read before any write there.
+    fn outs_written(&mut self, st: &State, at: Span) {
+        let f = &self.m.functions[self.fid];
+        // A function that returns a value may say by it that its `out` parameters are not set
+        // (`bool hit(…, out float t)`): only a `void` one leaves the caller no way to know.
+        if self.summary.is_some() || f.ret != Type::Void {
+            return;
+        }
+        for (i, p) in f.params.iter().enumerate() {
+            let v = Var::Param(i);
+            if p.mode == ParamMode::Out
+                && !self.written(st, v, self.full[&v])
+                && self.reported.insert(v)
+            {
+                self.reads.push(Read {
+                    function: self.fid,
+                    var: v,
+                    span: at,
+                    through: None,
+                });
+            }
+        }
+    }
+
+    fn written(&self, st: &State, v: Var, bits: u8) -> bool {
+        match self.full.get(&v) {
+            None => true,
+            Some(_) => st.get(&v).copied().unwrap_or(0) & bits == bits,
+        }
+    }
+
+    fn read(&mut self, st: &State, v: Var, bits: u8, span: Span) {
+        if self.written(st, v, bits) {
+            return;
+        }
+        if let (Some(s), Var::Global(g)) = (&mut self.summary, v) {
+            if !s.reads.iter().any(|(x, _, _)| *x == g) {
+                s.reads.push((g, span, self.fid));
+            }
+            return;
+        }
+        if self.reported.insert(v) {
+            self.reads.push(Read {
+                function: self.fid,
+                var: v,
+                span,
+                through: None,
+            });
+        }
+    }
+
+    fn write(&mut self, st: &mut State, v: Var, bits: u8) {
+        if let (Some(s), Var::Global(g)) = (&mut self.summary, v) {
+            s.writes.insert(g);
+        }
+        if self.full.contains_key(&v) {
+            *st.entry(v).or_insert(0) |= bits;
+        }
+    }
+
+    /// The variable an expression names, if it is one the walk knows.
+    fn var_of(&self, e: &Expr) -> Option<Var> {
+        let v = match e.kind {
+            ExprKind::Local(i) => Var::Local(i),
+            ExprKind::Param(i) => Var::Param(i),
+            ExprKind::Global(g) => Var::Global(g),
+            _ => return None,
+        };
+        self.full.contains_key(&v).then_some(v)
+    }
+
+    /// The variable and the bits a place expression (`v`, `v.xz`, `v[1]`, `a[i].m`) selects;
+    /// the index expressions inside it are read.
+    fn place(&mut self, e: &Expr, st: &mut State) -> Option<(Var, u8)> {
+        if let Some(v) = self.var_of(e) {
+            return Some((v, self.full[&v]));
+        }
+        match &e.kind {
+            ExprKind::Swizzle(base, comps) => {
+                let (v, all) = self.place(base, st)?;
+                if all == 1 {
+                    return Some((v, 1));
+                }
+                Some((v, comps.iter().fold(0u8, |m, c| m | (1 << c)) & all))
+            }
+            ExprKind::Index(base, index) => {
+                self.expr(index, st);
+                let (v, all) = self.place(base, st)?;
+                let bit = match (all, index.as_const().and_then(|c| c.as_int())) {
+                    (1, _) => 1,
+                    (_, Some(i)) if (0..8).contains(&i) => (1u8 << i) & all,
+                    _ => all,
+                };
+                Some((v, bit))
+            }
+            ExprKind::Member(base, _) => {
+                let (v, _) = self.place(base, st)?;
+                Some((v, 1))
+            }
+            // A variable the walk does not track.
+            ExprKind::Local(_) | ExprKind::Param(_) | ExprKind::Global(_) => None,
+            _ => {
+                self.expr(e, st);
+                None
+            }
+        }
+    }
+
+    fn expr(&mut self, e: &Expr, st: &mut State) {
+        match &e.kind {
+            ExprKind::Local(_)
+            | ExprKind::Param(_)
+            | ExprKind::Global(_)
+            | ExprKind::Swizzle(..)
+            | ExprKind::Index(..)
+            | ExprKind::Member(..) => {
+                if let Some((v, bits)) = self.place(e, st) {
+                    self.read(st, v, bits, e.span);
+                }
+            }
+            ExprKind::Assign(op, lhs, rhs) => {
+                self.expr(rhs, st);
+                if op.is_some() {
+                    self.expr(lhs, st);
+                }
+                if let Some((v, bits)) = self.place(lhs, st) {
+                    self.write(st, v, bits);
+                }
+            }
+            ExprKind::IncDec(_, _, x) => {
+                self.expr(x, st);
+                if let Some((v, bits)) = self.place(x, st) {
+                    self.write(st, v, bits);
+                }
+            }
+            ExprKind::Select(c, a, b) => {
+                self.expr(c, st);
+                let mut sa = st.clone();
+                self.expr(a, &mut sa);
+                let mut sb = st.clone();
+                self.expr(b, &mut sb);
+                *st = meet(&sa, &sb);
+            }
+            ExprKind::Binary(op, a, b) => {
+                self.expr(a, st);
+                if matches!(op, BinaryOp::And | BinaryOp::Or) {
+                    let mut sb = st.clone();
+                    self.expr(b, &mut sb);
+                } else {
+                    self.expr(b, st);
+                }
+            }
+            ExprKind::Call(callee, args) => self.call(*callee, args, e.span, st),
+            ExprKind::Builtin(BuiltinFn::Modf, args) if args.len() == 2 => {
+                self.expr(&args[0], st);
+                if let Some((v, bits)) = self.place(&args[1], st) {
+                    self.write(st, v, bits);
+                }
+            }
+            ExprKind::Unary(_, a) => self.expr(a, st),
+            ExprKind::Comma(a, b) => {
+                self.expr(a, st);
+                self.expr(b, st);
+            }
+            ExprKind::Builtin(_, args) | ExprKind::Construct(args) => {
+                for a in args {
+                    self.expr(a, st);
+                }
+            }
+            ExprKind::BlockMember(_, Some(i), _) => self.expr(i, st),
+            _ => {}
+        }
+    }
+
+    fn call(&mut self, callee: usize, args: &[Expr], span: Span, st: &mut State) {
+        let params = &self.m.functions[callee].params;
+        let mut outs = Vec::new();
+        for (i, (a, p)) in args.iter().zip(params).enumerate() {
+            match p.mode {
+                ParamMode::In => self.expr(a, st),
+                // `inout` copies the value in: a read only if the callee reads it before
+                // writing it.
+                ParamMode::InOut if self.reads_param(callee, i) => {
+                    self.expr(a, st);
+                    outs.push(a);
+                }
+                ParamMode::InOut | ParamMode::Out => {
+                    let _ = self.place(a, st);
+                    outs.push(a);
+                }
+            }
+        }
+        if self.main || self.summary.is_some() {
+            let s = self.summary_of(callee);
+            for (g, at, in_fn) in &s.reads {
+                let v = Var::Global(*g);
+                if self.written(st, v, self.full.get(&v).copied().unwrap_or(1)) {
+                    continue;
+                }
+                match &mut self.summary {
+                    Some(mine) => {
+                        if !mine.reads.iter().any(|(x, _, _)| x == g) {
+                            mine.reads.push((*g, *at, *in_fn));
+                        }
+                    }
+                    None => {
+                        if self.reported.insert(v) {
+                            self.reads.push(Read {
+                                function: *in_fn,
+                                var: v,
+                                span: *at,
+                                through: Some(span),
+                            });
+                        }
+                    }
+                }
+            }
+            for g in &s.writes {
+                let v = Var::Global(*g);
+                if let Some(all) = self.full.get(&v).copied() {
+                    self.write(st, v, all);
+                }
+            }
+        }
+        for a in outs {
+            if let Some((v, bits)) = self.place(a, st) {
+                self.write(st, v, bits);
+            }
+        }
+    }
+
+    /// Whether function `f` may read its parameter `i` before writing it.
+    fn reads_param(&mut self, f: usize, i: usize) -> bool {
+        let m = self.m;
+        let mut w = Walk::new(m, f, false, self.summaries);
+        let v = Var::Param(i);
+        w.full.insert(v, full_mask(&m.functions[f].params[i].ty));
+        let mut st = w.start();
+        let _ = w.stmts(&m.functions[f].body, st.clone());
+        st.clear();
+        w.reads.iter().any(|r| r.var == v)
+    }
+
+    /// What function `f` reads of the tracked globals before writing them, and may write.
+    fn summary_of(&mut self, f: usize) -> Summary {
+        if let Some(s) = self.summaries.get(&f) {
+            return s.clone();
+        }
+        let m = self.m;
+        let mut w = Walk::new(m, f, false, self.summaries);
+        for (i, g) in m.globals.iter().enumerate() {
+            if tracked_global(g) {
+                w.full.insert(Var::Global(i), full_mask(&g.ty));
+            }
+        }
+        w.summary = Some(Summary::default());
+        let mut st = w.start();
+        w.run(&m.functions[f].body, &mut st);
+        let s = w.summary.take().unwrap_or_default();
+        self.summaries.insert(f, s.clone());
+        s
+    }
+
+    /// Walks statements from `st`: the state at their end, `None` when it is not reached.
+    fn stmts(&mut self, ss: &[Stmt], mut st: State) -> Option<State> {
+        for s in ss {
+            st = self.stmt(s, st)?;
+        }
+        Some(st)
+    }
+
+    fn stmt(&mut self, s: &Stmt, mut st: State) -> Option<State> {
+        match &s.kind {
+            StmtKind::Expr(e) => self.expr(e, &mut st),
+            StmtKind::Local(id, init) => {
+                let v = Var::Local(*id);
+                match init {
+                    Some(e) => {
+                        self.expr(e, &mut st);
+                        if let Some(all) = self.full.get(&v).copied() {
+                            st.insert(v, all);
+                        }
+                    }
+                    None => {
+                        st.insert(v, 0);
+                    }
+                }
+            }
+            StmtKind::Block(b) => return self.stmts(b, st),
+            StmtKind::If(c, a, b) => {
+                self.expr(c, &mut st);
+                let (yes, no) = (self.keys(c, true), self.keys(c, false));
+                let sa = self.branch(a, &st, &yes);
+                let sb = self.branch(b, &st, &no);
+                let out = meet_opt(sa.clone(), sb.clone());
+                for (branch, keys) in [(sa, yes), (sb, no)] {
+                    if let (Some(branch), Some(out), false, 0) =
+                        (&branch, &out, keys.is_empty(), self.loose)
+                    {
+                        let mut need = self.context.clone();
+                        need.extend(keys);
+                        for (v, bits) in branch {
+                            let extra = bits & !out.get(v).copied().unwrap_or(0);
+                            if extra != 0 {
+                                self.guarded.push((need.clone(), *v, extra));
+                            }
+                        }
+                    }
+                }
+                return out;
+            }
+            StmtKind::Loop {
+                init,
+                cond,
+                step,
+                body,
+                do_while,
+            } => {
+                self.loose += 1;
+                let out = self.loop_stmt(init, cond.as_deref(), step.as_ref(), body, *do_while, st);
+                self.loose -= 1;
+                return out;
+            }
+            StmtKind::Switch(sel, cases) => {
+                self.expr(sel, &mut st);
+                self.targets.push(Target {
+                    is_loop: false,
+                    breaks: Vec::new(),
+                    continues: Vec::new(),
+                });
+                let mut fall: Option<State> = None;
+                let mut end = None;
+                self.loose += 1;
+                for c in cases {
+                    let start = meet_opt(Some(st.clone()), fall.take());
+                    let e = start.and_then(|s0| self.stmts(&c.body, s0));
+                    if c.fall_through {
+                        fall = e;
+                    } else {
+                        end = meet_opt(end, e);
+                    }
+                }
+                self.loose -= 1;
+                end = meet_opt(end, fall);
+                let t = self.targets.pop().expect("pushed");
+                for b in t.breaks {
+                    end = meet_opt(end, Some(b));
+                }
+                if !cases.iter().any(|c| c.value.is_none()) {
+                    end = meet_opt(end, Some(st));
+                }
+                return end;
+            }
+            StmtKind::Break => {
+                if let Some(t) = self.targets.last_mut() {
+                    t.breaks.push(st);
+                }
+                return None;
+            }
+            StmtKind::Continue => {
+                if let Some(t) = self.targets.iter_mut().rev().find(|t| t.is_loop) {
+                    t.continues.push(st);
+                }
+                return None;
+            }
+            StmtKind::Return(e) => {
+                if let Some(e) = e {
+                    self.expr(e, &mut st);
+                }
+                self.outs_written(&st, s.span);
+                return None;
+            }
+            StmtKind::Discard => return None,
+            _ => {}
+        }
+        Some(st)
+    }
+
+    /// The uniforms a condition requires when it is `pol` (through `!` and `&&`); empty when it
+    /// tests anything else.
+    fn keys(&self, c: &Expr, pol: bool) -> Vec<Key> {
+        let mut out = Vec::new();
+        if self.collect_keys(c, pol, &mut out) {
+            out
+        } else {
+            Vec::new()
+        }
+    }
+
+    fn collect_keys(&self, c: &Expr, pol: bool, out: &mut Vec<Key>) -> bool {
+        match &c.kind {
+            ExprKind::Global(g) if self.m.globals[*g].kind == GlobalKind::Uniform => {
+                out.push((usize::MAX, *g, pol));
+                true
+            }
+            ExprKind::BlockMember(b, None, m) => {
+                out.push((*b, *m, pol));
+                true
+            }
+            ExprKind::Unary(hir::UnaryOp::Not, x) => self.collect_keys(x, !pol, out),
+            ExprKind::Binary(BinaryOp::And, a, b) if pol => {
+                self.collect_keys(a, true, out) & self.collect_keys(b, true, out)
+            }
+            // A failing `||` is a conjunction of failures.
+            ExprKind::Binary(BinaryOp::Or, a, b) if !pol => {
+                self.collect_keys(a, false, out) & self.collect_keys(b, false, out)
+            }
+            _ => false,
+        }
+    }
+
+    /// Walks the branch of an `if` taken when the condition requires the uniforms `keys`
+    /// (none: it tests something else), from `st` with the writes made earlier under conditions
+    /// that the enclosing ones and `keys` include.
+    fn branch(&mut self, ss: &[Stmt], st: &State, keys: &[Key]) -> Option<State> {
+        if keys.is_empty() {
+            self.loose += 1;
+            let out = self.stmts(ss, st.clone());
+            self.loose -= 1;
+            return out;
+        }
+        let depth = self.context.len();
+        self.context.extend_from_slice(keys);
+        let mut start = st.clone();
+        for (need, v, bits) in &self.guarded {
+            if need.iter().all(|k| self.context.contains(k)) {
+                *start.entry(*v).or_insert(0) |= bits;
+            }
+        }
+        let out = self.stmts(ss, start);
+        self.context.truncate(depth);
+        out
+    }
+
+    fn loop_stmt(
+        &mut self,
+        init: &[Stmt],
+        cond: Option<&Cond>,
+        step: Option<&Expr>,
+        body: &[Stmt],
+        do_while: bool,
+        st: State,
+    ) -> Option<State> {
+        let mut st = self.stmts(init, st)?;
+        let once = do_while || cond.is_none() || runs_once(init, cond);
+        let mut head = st.clone();
+        if !do_while {
+            self.cond(cond, &mut head);
+            st = head.clone();
+        }
+        self.targets.push(Target {
+            is_loop: true,
+            breaks: Vec::new(),
+            continues: Vec::new(),
+        });
+        let end = self.stmts(body, head);
+        let t = self.targets.pop().expect("pushed");
+        let mut pre_step = end;
+        for c in t.continues {
+            pre_step = meet_opt(pre_step, Some(c));
+        }
+        let after = pre_step.map(|mut s| {
+            if let Some(e) = step {
+                self.expr(e, &mut s);
+            }
+            if do_while {
+                self.cond(cond, &mut s);
+            }
+            s
+        });
+        let mut exit = if cond.is_some() { after } else { None };
+        for b in t.breaks {
+            exit = meet_opt(exit, Some(b));
+        }
+        if !once {
+            exit = meet_opt(exit, Some(st));
+        }
+        exit
+    }
+
+    fn cond(&mut self, cond: Option<&Cond>, st: &mut State) {
+        match cond {
+            Some(Cond::Expr(e)) => self.expr(e, st),
+            Some(Cond::Decl(id, e)) => {
+                self.expr(e, st);
+                if let Some(all) = self.full.get(&Var::Local(*id)).copied() {
+                    st.insert(Var::Local(*id), all);
+                }
+            }
+            None => {}
+        }
+    }
+}
+
+/// The variables written on both paths.
+fn meet(a: &State, b: &State) -> State {
+    let mut out = State::default();
+    for (v, x) in a {
+        out.insert(*v, x & b.get(v).copied().unwrap_or(0));
+    }
+    for v in b.keys() {
+        out.entry(*v).or_insert(0);
+    }
+    out
+}
+
+fn meet_opt(a: Option<State>, b: Option<State>) -> Option<State> {
+    match (a, b) {
+        (Some(a), Some(b)) => Some(meet(&a, &b)),
+        (a, None) => a,
+        (None, b) => b,
+    }
+}
+
+/// Whether a `for` loop's constant bounds let its body run at least once:
+/// `for (int i = 0; i < 4; …)` (an initializer and a comparison with constants).
+fn runs_once(init: &[Stmt], cond: Option<&Cond>) -> bool {
+    let Some(Cond::Expr(Expr {
+        kind: ExprKind::Binary(op, l, r),
+        ..
+    })) = cond
+    else {
+        return false;
+    };
+    let ExprKind::Local(i) = l.kind else {
+        return false;
+    };
+    let Some(n) = r.as_const().and_then(scalar) else {
+        return false;
+    };
+    let start = init.iter().find_map(|s| match &s.kind {
+        StmtKind::Local(j, Some(e)) if *j == i => e.as_const().and_then(scalar),
+        _ => None,
+    });
+    let Some(c) = start else {
+        return false;
+    };
+    match op {
+        BinaryOp::Less => c < n,
+        BinaryOp::LessEq => c <= n,
+        BinaryOp::Greater => c > n,
+        BinaryOp::GreaterEq => c >= n,
+        BinaryOp::NotEq => c != n,
+        _ => false,
+    }
+}
+
+fn scalar(c: &hir::ConstValue) -> Option<f64> {
+    match c.scalars()? {
+        [s] => Some(s.as_f64()),
+        _ => None,
+    }
+}

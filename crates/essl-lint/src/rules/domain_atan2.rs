@@ -1,0 +1,231 @@
+//! `domain-atan2`: `atan(y, x)` whose arguments can both be 0 for ordinary inputs.
+
+use essl::diagnostic::Diagnostic;
+use naga::{Expression as E, Function, Handle, MathFunction as Mf};
+
+use super::guards::Guards;
+use super::rule::declare_rule;
+use super::Cx;
+use crate::analysis::Refinement;
+use crate::value::Facts;
+use crate::Level;
+
+declare_rule! {
+    /// ## What it does
+    /// Reports `atan(y, x)` where `y` and `x` can both be 0 for ordinary inputs:
+    ///
+    /// - two components of one texel or of a vector computed from texels, uniforms and constants
+    ///   only (`atan(n.y, n.x)` of a normal-map texel, unpacked, normalised or turned by a
+    ///   uniform matrix, wherever the texture is read): both are 0 wherever the texel lies along
+    ///   the third axis — every flat part of a normal map;
+    /// - values that are 0 over a region (a clamp saturating at 0, a texel) or for a whole draw
+    ///   (uniforms and constants).
+    ///
+    /// ## Why is this bad?
+    /// GLSL ES 3.00 leaves `atan(y, x)` undefined when `x` and `y` are both 0 (§8.1). Drivers return
+    /// 0, π, or NaN; an equirectangular lookup `atan(d.z, d.x)` of the zenith, or a polar angle of a
+    /// flat-shaded floor's normal, then samples an arbitrary column or goes black.
+    ///
+    /// ## Example
+    /// ```glsl
+    /// vec3 n = normalize(v_normal);
+    /// float phi = atan(n.z, n.x);
+    /// ```
+    ///
+    /// ## Use instead
+    /// ```glsl
+    /// float phi = (abs(n.x) + abs(n.z) > 1e-6) ? atan(n.z, n.x) : 0.0;
+    /// ```
+    /// There is no mechanical fix: the angle of the zero vector needs a choice.
+    ///
+    /// ## What it does not flag
+    /// - A point in the plane crossing the origin only at isolated pixels:
+    ///   `atan(uv.y - 0.5, uv.x - 0.5)` is undefined at one pixel centre at most; and a direction
+    ///   that varies per pixel (`atan(dir.z, dir.x)` of a view ray, a normalised position in an
+    ///   equirectangular lookup, a normal-map texel turned by an interpolated tangent frame),
+    ///   which passes the axis at isolated pixels (the pole, where every column is the same
+    ///   point anyway).
+    /// - Two components of a direction in the plane (`atan(d.y, d.x)` of a normalised `vec2`), which
+    ///   cannot both be 0; arguments a guard keeps apart from 0 (`if (abs(x) > 0.0)`), or from
+    ///   being both 0 (`abs(y) + abs(x) > 1e-6`, the fix above).
+    ///
+    /// Severity: a warning when values the shader itself produces reach the hazard; a note, naming
+    /// the uniform, when one uniform alone (with constants) does.
+    ///
+    /// ## References
+    /// - GLSL ES 3.00 specification, §8.1 Angle and Trigonometry Functions: atan(y, x) "Results
+    ///   are undefined if x and y are both 0."
+    pub(crate) struct DomainAtan2 {
+        id: "domain-atan2",
+        summary: "`atan(y, x)` whose arguments can both be 0 for ordinary inputs",
+        default_level: Level::Warn,
+        check: check,
+    }
+}
+
+fn check(cx: &Cx, out: &mut Vec<Diagnostic>) {
+    for (id, f) in cx.functions() {
+        for (h, e) in f.expressions.iter() {
+            let E::Math {
+                fun: Mf::Atan2,
+                arg,
+                arg1: Some(x),
+                ..
+            } = *e
+            else {
+                continue;
+            };
+            let span = cx.span(f, h);
+            if span.is_empty() {
+                continue;
+            }
+            let (y, x) = (cx.operand(f, h, arg), cx.operand(f, h, x));
+            let g = cx.guards(f, id, h);
+            let zero = |v: Handle<E>| {
+                cx.refined(f, id, v, &g).is_some_and(|n| {
+                    n.comps().iter().any(|c| c.contains(0.0))
+                        && !n.facts.has(Facts::NZ)
+                        && !cx.nonzero(f, id, v, &g)
+                })
+            };
+            if !zero(y) || !zero(x) || apart(cx, f, id, y, x, &g) {
+                continue;
+            }
+            let axis = components_of_direction(cx, f, id, y, x);
+            if !(axis || cx.flat_at(f, id, y, 0.0) && cx.flat_at(f, id, x, 0.0)) {
+                continue;
+            }
+            let label = if axis {
+                "both are components of one direction: 0 when it lies along the third axis"
+            } else {
+                "both can be 0 over a whole region, or for the whole draw"
+            };
+            let d = Diagnostic::rule_warning(
+                DomainAtan2::RULE.id,
+                "`atan(y, x)` with `y` and `x` both 0 for ordinary inputs, where `atan` is undefined",
+                span,
+            )
+            .with_label(label)
+            .with_secondary(cx.span(f, y), "y")
+            .with_secondary(cx.span(f, x), "x")
+            .with_note("GLSL ES 3.00 §8.1: atan(y, x) is undefined if x and y are both 0")
+            .with_help("choose the angle of the zero vector: test `abs(x) + abs(y) > 1e-6` first");
+            out.push(cx.grade(d, &[(id, y), (id, x)]));
+        }
+    }
+}
+
+/// Whether a guard keeps `y` and `x` from being both 0: `abs(y) + abs(x)` (either order)
+/// compared so that it is positive where the `atan` runs.
+fn apart(cx: &Cx, f: &Function, id: usize, y: Handle<E>, x: Handle<E>, g: &Guards) -> bool {
+    let an = cx.sound();
+    let abs_of = |h: Handle<E>| match f.expressions[h] {
+        E::Math {
+            fun: Mf::Abs, arg, ..
+        } => Some(arg),
+        _ => None,
+    };
+    g.facts.iter().any(|(h, r)| {
+        let positive = match r {
+            Refinement::Value(i) | Refinement::Norm(i) => i.lo > 0.0,
+        };
+        if !positive {
+            return false;
+        }
+        let E::Binary {
+            op: naga::BinaryOperator::Add,
+            left,
+            right,
+        } = f.expressions[*h]
+        else {
+            return false;
+        };
+        let (Some(a), Some(b)) = (abs_of(left), abs_of(right)) else {
+            return false;
+        };
+        (an.same(f, id, a, y) && an.same(f, id, b, x))
+            || (an.same(f, id, a, x) && an.same(f, id, b, y))
+    })
+}
+
+/// Whether `y` and `x` are two components of one texel of three or more components (a
+/// normal-map texel): both 0 wherever it lies along the third axis, a flat region.
+fn components_of_direction(cx: &Cx, f: &Function, id: usize, y: Handle<E>, x: Handle<E>) -> bool {
+    // `t.y` of a vector value, or of a local written once (`vec3 nm = …; nm.y`): the vector's
+    // value and the component.
+    let an = cx.sound();
+    let part = |h: Handle<E>| match f.expressions[h] {
+        E::AccessIndex { base, index } => Some((crate::symbolic::resolve(f, an, id, base), index)),
+        E::Load { pointer } => match f.expressions[pointer] {
+            E::AccessIndex { base, index } => match f.expressions[base] {
+                E::LocalVariable(l) => an.functions[id]
+                    .single_store
+                    .get(&l.index())
+                    .map(|v| (crate::symbolic::resolve(f, an, id, *v), index)),
+                _ => None,
+            },
+            _ => None,
+        },
+        _ => None,
+    };
+    let (Some((by, iy)), Some((bx, ix))) = (part(y), part(x)) else {
+        return false;
+    };
+    if iy == ix || !cx.sound().same(f, id, by, bx) {
+        return false;
+    }
+    let Some(v) = cx.sound().num(id, by) else {
+        return false;
+    };
+    // A texel (a normal map, read at coordinates from an input or not) is the same direction
+    // over a whole flat region; a direction that also varies per pixel through something
+    // else (a view ray, a normal map turned by an interpolated tangent frame, a position) passes
+    // the axis at isolated points.
+    v.n >= 3 && v.facts.any(Facts::TEXTURE) && from_texels(cx, f, id, by, &mut Vec::new())
+}
+
+/// Whether `h` is computed from texels, uniforms and constants only (the coordinates of the
+/// texture reads aside). A local's value is every value stored into it whole; `seen` holds
+/// the locals being followed (a value computed from the same local's earlier value).
+fn from_texels(cx: &Cx, f: &Function, id: usize, h: Handle<E>, seen: &mut Vec<usize>) -> bool {
+    if seen.len() > 8 {
+        return false;
+    }
+    let h = crate::symbolic::resolve(f, cx.sound(), id, h);
+    match f.expressions[h] {
+        E::ImageSample { .. }
+        | E::ImageLoad { .. }
+        | E::Literal(_)
+        | E::Constant(_)
+        | E::ZeroValue(_) => true,
+        E::Load { mut pointer } => loop {
+            match f.expressions[pointer] {
+                E::AccessIndex { base, .. } | E::Access { base, .. } => pointer = base,
+                E::GlobalVariable(g) => {
+                    break cx.module.global_variables[g].space == naga::AddressSpace::Uniform
+                }
+                E::LocalVariable(l) => {
+                    if seen.contains(&l.index()) {
+                        break true;
+                    }
+                    let mut values: Vec<Handle<E>> = cx.sound().functions[id]
+                        .stores
+                        .get(&l.index())
+                        .cloned()
+                        .unwrap_or_default();
+                    values.extend(f.local_variables[l].init);
+                    seen.push(l.index());
+                    let all = !values.is_empty()
+                        && values.into_iter().all(|v| from_texels(cx, f, id, v, seen));
+                    seen.pop();
+                    break all;
+                }
+                _ => break false,
+            }
+        },
+        ref e => {
+            let ops = super::context::operands(e);
+            !ops.is_empty() && ops.into_iter().all(|o| from_texels(cx, f, id, o, seen))
+        }
+    }
+}

@@ -1,0 +1,462 @@
+//! The recall suite: for each rule, a minimal shader per kind of value that reaches its hazard
+//! — a uniform (or two set independently), a varying, a texel, a value the shader computes,
+//! rounding — each reported at its severity, and guarded twins that are quiet. A kind that
+//! cannot reach a rule's hazard, or that the rule leaves to the host by design (an input as
+//! such, a per-pixel value that is 0 at isolated points only), has no case; the rules' pages
+//! say which.
+
+use essl::diagnostic::Severity;
+use essl::source::SourceFile;
+use essl::{compile, CompileOptions, Stage};
+use essl_lint::{lint, LintOptions};
+
+/// A fragment shader with `body` in `main`; `n` and `l` are unit vectors from varyings, `t` a
+/// texel read at a varying's coordinates.
+fn shader(precision: &str, body: &str) -> String {
+    format!(
+        "#version 300 es\nprecision {precision} float;\nprecision highp int;\n\
+         uniform bool u_on; uniform bool u_two;\n\
+         uniform float u_a; uniform float u_b; uniform float u_k; uniform vec3 u_up; uniform vec3 u_dir;\n\
+         uniform sampler2D u_tex;\n\
+         in vec3 v_n; in vec3 v_h; in vec3 v_pos; in float v_x; in vec2 v_uv;\n\
+         out vec4 o;\nvoid main() {{\n  float r = 0.0;\n  vec3 n = normalize(v_n);\n  \
+         vec3 l = normalize(v_h);\n  vec4 t = texture(u_tex, v_uv);\n{body}\n  o = vec4(r);\n}}\n"
+    )
+}
+
+/// The findings of `rule` in `body`, notes included: (severity, source line).
+fn found(precision: &str, rule: &str, body: &str) -> Vec<(Severity, String)> {
+    let text = shader(precision, body);
+    let s = compile(
+        SourceFile::new("t.frag", text.clone()),
+        Stage::Fragment,
+        &CompileOptions::default(),
+    );
+    assert!(
+        s.ok() && s.naga.is_some(),
+        "does not compile:\n{text}\n{:#?}",
+        s.diagnostics
+    );
+    lint(&s, &LintOptions::default().notes(true))
+        .into_iter()
+        .filter(|d| d.code == rule)
+        .map(|d| {
+            let line = s.file.line_col(d.span.start).line as usize;
+            (
+                d.severity,
+                text.lines().nth(line - 1).unwrap_or("").trim().to_string(),
+            )
+        })
+        .collect()
+}
+
+const W: Severity = Severity::Warning;
+const N: Severity = Severity::Note;
+
+/// One hazard: the rule, the kind of value that reaches it, the body, the severity.
+type Hazard = (&'static str, &'static str, &'static str, Severity);
+
+const HAZARDS: &[Hazard] = &[
+    ("pow-negative-base", "computed", "  r = pow(dot(n, l), u_k);", W),
+    ("pow-negative-base", "varying", "  r = pow(v_x - 0.5, 2.2);", W),
+    ("pow-negative-base", "texture", "  r = pow(t.r - 0.5, 2.2);", W),
+    ("pow-negative-base", "uniform", "  r = pow(u_a - 1.0, 2.2);", N),
+    ("pow-negative-base", "rounding", "  r = pow(1.0 - length(n), 2.2);", W),
+    ("pow-zero-base", "uniform", "  r = pow(max(dot(n, l), 0.0), u_k - 1.0);", N),
+    ("acos-domain", "computed", "  r = acos(v_x * 2.0);", W),
+    ("acos-domain", "texture", "  r = acos(t.r * 2.0 - 0.5);", W),
+    ("acos-domain", "uniform", "  r = acos(u_a * 2.0);", N),
+    ("acos-domain", "rounding", "  r = acos(dot(n, l));", W),
+    ("acos-domain", "rounding", "  r = acos(v_pos.z / length(v_pos));", W),
+    ("asin-domain", "computed", "  r = asin(v_x * 2.0);", W),
+    ("asin-domain", "texture", "  r = asin(t.r * 2.0 - 0.5);", W),
+    ("asin-domain", "uniform", "  r = asin(u_a * 2.0);", N),
+    ("asin-domain", "rounding", "  r = asin(dot(n, l));", W),
+    ("smoothstep-edges", "uniform", "  r = smoothstep(u_a, u_b, v_x);", W),
+    ("smoothstep-edges", "uniform", "  r = smoothstep(0.0, u_b, v_x);", N),
+    ("smoothstep-edges", "varying", "  r = smoothstep(v_x, v_pos.x, 0.5);", W),
+    ("smoothstep-edges", "texture", "  r = smoothstep(t.r, t.g, v_x);", W),
+    (
+        "smoothstep-edges",
+        "computed",
+        "  float d = dot(n, l);\n  r = smoothstep(clamp(d - 0.3, 0.0, 1.0), clamp(d, 0.0, 1.0), v_x);",
+        W,
+    ),
+    ("smoothstep-edges", "rounding", "  r = smoothstep(u_a, u_a + 1e-9, v_x);", W),
+    ("smoothstep-reversed-constant", "constant", "  r = smoothstep(1.0, 0.0, v_x);", N),
+    ("division-by-difference", "uniform", "  r = v_x / (u_a - u_b);", W),
+    ("division-by-difference", "uniform", "  r = v_x / (u_a - 1.0);", N),
+    ("normalize-zero", "uniform", "  r = normalize(cross(u_up, u_dir)).x;", W),
+    ("normalize-zero", "varying", "  r = normalize(cross(v_n, vec3(0.0, 1.0, 0.0))).x;", W),
+    (
+        "normalize-zero",
+        "texture",
+        "  vec3 tn = t.xyz * 2.0 - 1.0;\n  r = normalize(cross(tn, vec3(0.0, 1.0, 0.0))).x;",
+        W,
+    ),
+    ("normalize-zero", "computed", "  r = normalize(u_dir - u_up).x;", W),
+    ("domain-sqrt", "computed", "  r = sqrt(dot(n, l));", W),
+    ("domain-sqrt", "varying", "  r = sqrt(v_x - 0.5);", W),
+    ("domain-sqrt", "texture", "  r = sqrt(t.r - 0.5);", W),
+    ("domain-sqrt", "uniform", "  r = sqrt(u_a - 1.0);", N),
+    ("domain-sqrt", "rounding", "  float c = dot(n, l);\n  r = sqrt(1.0 - c * c);", W),
+    ("domain-inversesqrt", "computed", "  r = inversesqrt(max(dot(n, l), 0.0));", W),
+    ("domain-inversesqrt", "texture", "  r = inversesqrt(t.r);", W),
+    ("domain-inversesqrt", "uniform", "  r = inversesqrt(u_a - 1.0);", N),
+    ("domain-inversesqrt", "rounding", "  r = inversesqrt(1.0 - length(n));", W),
+    ("domain-log", "computed", "  r = log(dot(n, l));", W),
+    ("domain-log", "texture", "  r = log(t.r);", W),
+    ("domain-log", "uniform", "  r = log(u_a - 1.0);", N),
+    ("domain-log", "rounding", "  r = log2(1.0 - length(n));", W),
+    (
+        "domain-atan2",
+        "texture",
+        "  vec3 nm = texture(u_tex, v_uv).xyz * 2.0 - 1.0;\n  r = atan(nm.y, nm.x);",
+        W,
+    ),
+    (
+        "domain-atan2",
+        "computed",
+        "  vec3 nm = normalize(texture(u_tex, v_uv).xyz * 2.0 - 1.0);\n  r = atan(nm.z, nm.x);",
+        W,
+    ),
+    ("domain-atan2", "uniform", "  r = atan(u_a - 1.0, u_b - 1.0);", W),
+    ("domain-integer-division", "varying", "  int k = int(v_x * 4.0);\n  r = float(12 / k);", W),
+    ("domain-integer-division", "texture", "  int k = int(t.r * 4.0);\n  r = float(12 % k);", W),
+    ("domain-integer-division", "uniform", "  r = float(12 / int(u_a));", N),
+    (
+        "domain-integer-division",
+        "computed",
+        "  int k = int(length(n)) - 1;\n  r = float(12 / k);",
+        W,
+    ),
+    (
+        "texel-fetch-range",
+        "computed",
+        "  ivec2 p = ivec2(gl_FragCoord.xy);\n  r = texelFetch(u_tex, p - ivec2(1, 0), 0).r;",
+        W,
+    ),
+    (
+        "texel-fetch-range",
+        "computed",
+        "  ivec2 p = ivec2(gl_FragCoord.xy);\n  r = texelFetch(u_tex, p + ivec2(1, 0), 0).r;",
+        W,
+    ),
+    (
+        "texel-fetch-range",
+        "texture",
+        "  ivec2 p = ivec2(t.xy * 255.0) - 1;\n  r = texelFetch(u_tex, p, 0).r;",
+        W,
+    ),
+    ("texel-fetch-range", "uniform", "  r = texelFetch(u_tex, ivec2(0), int(u_a) - 1).r;", N),
+    (
+        "uninitialised-read",
+        "varying",
+        "  float c;\n  if (v_x > 0.5) { c = 1.0; }\n  r = c;",
+        W,
+    ),
+    (
+        "uninitialised-read",
+        "uniform",
+        "  float c;\n  if (u_a > 0.5) { c = 1.0; }\n  r = c;",
+        W,
+    ),
+    (
+        "uninitialised-read",
+        "uniform",
+        "  float c;\n  for (int i = 0; i < int(u_a); i++) { c = float(i); }\n  r = c;",
+        W,
+    ),
+    // The write's `if` on a uniform runs only where the outer `if` on a varying does.
+    (
+        "uninitialised-read",
+        "varying",
+        "  float c;\n  if (v_x > 0.5) { if (u_on) { c = 1.0; } }\n  r = 0.0;\n  if (u_on) { r = c; }",
+        W,
+    ),
+    (
+        "non-uniform-derivative",
+        "varying",
+        "  if (v_x > 0.5) { r = texture(u_tex, v_uv).r; }",
+        W,
+    ),
+    ("non-uniform-derivative", "texture", "  if (t.a > 0.5) { r = dFdx(v_x); }", W),
+    ("non-uniform-derivative", "computed", "  if (dot(n, l) > 0.0) { r = fwidth(v_x); }", W),
+];
+
+/// The guarded twins: (rule, body) with no finding of the rule, notes included.
+const GUARDED: &[(&str, &str)] = &[
+    ("pow-negative-base", "  r = pow(max(dot(n, l), 0.0), u_k);"),
+    ("pow-negative-base", "  r = pow(clamp(t.r - 0.5, 0.0, 1.0), 2.2);"),
+    ("pow-zero-base", "  r = pow(max(dot(n, l), 1e-4), u_k - 1.0);"),
+    ("acos-domain", "  r = acos(clamp(dot(n, l), -1.0, 1.0));"),
+    ("acos-domain", "  r = acos(clamp(v_pos.z / length(v_pos), -1.0, 1.0));"),
+    ("asin-domain", "  r = asin(clamp(v_x * 2.0, -1.0, 1.0));"),
+    ("smoothstep-edges", "  if (u_a < u_b) { r = smoothstep(u_a, u_b, v_x); }"),
+    (
+        "smoothstep-edges",
+        "  float d = dot(n, l);\n  float e0 = clamp(d - 0.3, 0.0, 1.0);\n  r = smoothstep(e0, max(clamp(d, 0.0, 1.0), e0 + 1e-3), v_x);",
+    ),
+    (
+        "smoothstep-edges",
+        "  float w = fwidth(v_x);\n  r = smoothstep(max(0.0, 0.5 - w), 0.5 + w, v_x);",
+    ),
+    // Clamps of the same value shifted are ordered; the constant keeps them apart.
+    (
+        "smoothstep-edges",
+        "  float d = dot(n, l);\n  r = smoothstep(clamp(d - 0.3, 0.0, 1.0), clamp(d, 0.0, 1.0) + 1e-3, v_x);",
+    ),
+    ("smoothstep-reversed-constant", "  r = 1.0 - smoothstep(0.0, 1.0, v_x);"),
+    ("division-by-difference", "  if (u_a != u_b) { r = v_x / (u_a - u_b); }"),
+    (
+        "normalize-zero",
+        "  vec3 c = cross(u_up, u_dir);\n  if (length(c) > 0.0) { r = normalize(c).x; }",
+    ),
+    (
+        "normalize-zero",
+        "  vec3 tn = t.xyz * 2.0 - 1.0;\n  vec3 up = abs(tn.y) < 0.999 ? vec3(0.0, 1.0, 0.0) : vec3(1.0, 0.0, 0.0);\n  r = normalize(cross(tn, up)).x;",
+    ),
+    ("domain-sqrt", "  r = sqrt(max(dot(n, l), 0.0));"),
+    (
+        "domain-inversesqrt",
+        "  vec3 d = v_pos - u_dir;\n  r = inversesqrt(max(dot(d, d), 1e-8));",
+    ),
+    ("domain-log", "  r = log(max(dot(n, l), 1e-6));"),
+    (
+        "domain-atan2",
+        "  vec3 nm = texture(u_tex, v_uv).xyz * 2.0 - 1.0;\n  r = (abs(nm.x) + abs(nm.y) > 1e-6) ? atan(nm.y, nm.x) : 0.0;",
+    ),
+    (
+        "domain-atan2",
+        "  vec3 nm = texture(u_tex, v_uv).xyz * 2.0 - 1.0;\n  if (abs(nm.x) > 0.0) { r = atan(nm.y, nm.x); }",
+    ),
+    (
+        "domain-atan2",
+        "  vec2 d = normalize(texture(u_tex, v_uv).xy * 2.0 - 1.0);\n  r = atan(d.y, d.x);",
+    ),
+    ("domain-atan2", "  if (u_a != 1.0) { r = atan(u_a - 1.0, u_b - 1.0); }"),
+    // A normal-map texel turned by an interpolated frame varies per pixel.
+    (
+        "domain-atan2",
+        "  vec3 nm = normalize(mat3(v_n, v_h, v_pos) * (texture(u_tex, v_uv).xyz * 2.0 - 1.0));\n  r = atan(nm.z, nm.x);",
+    ),
+    (
+        "domain-integer-division",
+        "  int k = max(int(v_x * 4.0), 1);\n  r = float(12 / k);",
+    ),
+    (
+        "domain-integer-division",
+        "  int k = int(t.r * 4.0);\n  r = float(12 % max(k, 1));",
+    ),
+    (
+        "texel-fetch-range",
+        "  ivec2 p = ivec2(gl_FragCoord.xy);\n  r = texelFetch(u_tex, clamp(p - ivec2(1, 0), ivec2(0), textureSize(u_tex, 0) - 1), 0).r;",
+    ),
+    (
+        "texel-fetch-range",
+        "  ivec2 p = max(ivec2(t.xy * 255.0) - 1, ivec2(0));\n  r = texelFetch(u_tex, p, 0).r;",
+    ),
+    (
+        "texel-fetch-range",
+        "  r = texelFetch(u_tex, ivec2(0), max(int(u_a) - 1, 0)).r;",
+    ),
+    // A mip reduction: texel `2p + 1` of a level twice the size of the one `p` indexes.
+    (
+        "texel-fetch-range",
+        "  ivec2 p = ivec2(gl_FragCoord.xy) * 2;\n  r = texelFetch(u_tex, p + ivec2(1, 0), 0).r;",
+    ),
+    (
+        "uninitialised-read",
+        "  float c = 0.0;\n  if (v_x > 0.5) { c = 1.0; }\n  r = c;",
+    ),
+    // Written under `u_on`, read under `u_on && u_two`: every pixel of the draw takes both.
+    (
+        "uninitialised-read",
+        "  float c;\n  if (u_on) { c = 1.0; }\n  r = 0.0;\n  if (u_on && u_two) { r = c; }",
+    ),
+    (
+        "non-uniform-derivative",
+        "  float s = texture(u_tex, v_uv).r;\n  if (v_x > 0.5) { r = s; }",
+    ),
+    (
+        "non-uniform-derivative",
+        "  if (v_x > 0.5) { r = textureLod(u_tex, v_uv, 0.0).r; }",
+    ),
+    ("non-uniform-derivative", "  if (u_a > 0.5) { r = texture(u_tex, v_uv).r; }"),
+];
+
+#[test]
+fn every_hazard_is_reported_at_its_severity() {
+    let mut failed = Vec::new();
+    for (rule, kind, body, severity) in HAZARDS {
+        let f = found("highp", rule, body);
+        let last = body.lines().last().unwrap_or("").trim();
+        if !f.iter().any(|(s, line)| s == severity && line == last) {
+            failed.push(format!(
+                "{rule} ({kind}): expected a {} at `{last}`, found {f:?}",
+                severity.as_str()
+            ));
+        }
+    }
+    assert!(failed.is_empty(), "{}", failed.join("\n"));
+}
+
+#[test]
+fn guarded_twins_are_quiet() {
+    let mut failed = Vec::new();
+    for (rule, body) in GUARDED {
+        let f = found("highp", rule, body);
+        if !f.is_empty() {
+            failed.push(format!("{rule}: `{body}` has {f:?}"));
+        }
+    }
+    assert!(failed.is_empty(), "{}", failed.join("\n"));
+}
+
+#[test]
+fn mediump_overflow_hazards_and_twins() {
+    let rule = "mediump-overflow";
+    for body in [
+        "  float x = u_a * 1000.0;\n  r = x * x;",
+        "  r = length(v_pos * 100.0);",
+        "  r = exp(t.r * 20.0);",
+    ] {
+        let f = found("mediump", rule, body);
+        assert!(f.iter().any(|(s, _)| *s == W), "{body}: {f:?}");
+    }
+    for body in [
+        "  float x = clamp(u_a, -100.0, 100.0);\n  r = x * x;",
+        "  r = length(v_pos * 100.0);",
+    ] {
+        let p = if body.contains("length") {
+            "highp"
+        } else {
+            "mediump"
+        };
+        assert!(found(p, rule, body).is_empty(), "{body}");
+    }
+}
+
+/// Every kind of value the suite covers has at least one hazard per rule that can meet it.
+#[test]
+fn every_rule_has_a_hazard_and_a_twin() {
+    for r in essl_lint::RULES {
+        if matches!(r.id, "unused-essl-allow" | "mediump-overflow") {
+            continue;
+        }
+        assert!(HAZARDS.iter().any(|h| h.0 == r.id), "{}: no hazard", r.id);
+        assert!(GUARDED.iter().any(|g| g.0 == r.id), "{}: no twin", r.id);
+    }
+}
+
+/// The corpora of `docs/lints/corpus.md`, where `ESSL_LINT_CORPORA` names the folder that
+/// holds them (`old/` as `scripts/lint-corpus/fetch.sh` builds it, `fresh/` as
+/// `scripts/lint-corpus/fetch-fresh.sh` does).
+fn corpora() -> Option<std::path::PathBuf> {
+    let dir = std::path::PathBuf::from(std::env::var_os("ESSL_LINT_CORPORA")?);
+    Some(dir)
+}
+
+fn collapse(s: &str) -> String {
+    s.split_whitespace().collect::<Vec<_>>().join(" ")
+}
+
+/// Every finding classified `real` or `rounding` in a corpus's triage table is still reported
+/// at its source line: a real one as a warning, a rounding-only one at least as a note. Runs
+/// where `ESSL_LINT_CORPORA` names the corpora; skipped otherwise (they live outside the
+/// repository).
+#[test]
+fn every_classified_true_positive_is_still_reported() {
+    let Some(dir) = corpora() else {
+        eprintln!("skipped: set ESSL_LINT_CORPORA to the folder holding old/ and fresh/");
+        return;
+    };
+    let docs = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../../docs/lints");
+    let mut missing = Vec::new();
+    let mut checked = 0;
+    for (corpus, table) in [
+        ("old", "corpus-triage.tsv"),
+        ("fresh", "corpus-fresh-triage.tsv"),
+    ] {
+        let root = dir.join(corpus);
+        let manifest = std::fs::read_to_string(root.join("manifest.jsonl"))
+            .unwrap_or_else(|e| panic!("{}: {e}", root.display()));
+        let triage = std::fs::read_to_string(docs.join(table)).expect("a triage table");
+        // (rule, repository, line or "*", collapsed source line, class)
+        let rows: Vec<[String; 5]> = triage
+            .lines()
+            .filter(|l| !l.starts_with('#') && !l.trim().is_empty())
+            .map(|l| {
+                let p: Vec<&str> = l.split('\t').collect();
+                [
+                    p[0].to_string(),
+                    p[1].to_string(),
+                    p[2].to_string(),
+                    collapse(p[3]),
+                    p[4].to_string(),
+                ]
+            })
+            .filter(|r| r[4] == "real" || r[4] == "rounding")
+            .collect();
+        // The findings of every shader whose text holds one of those lines.
+        let mut found: Vec<(String, String, usize, String, Severity)> = Vec::new();
+        for entry in manifest.lines().filter(|l| !l.trim().is_empty()) {
+            let e: serde_json::Value = serde_json::from_str(entry).expect("a JSON line");
+            let repo = e["repo"].as_str().unwrap_or_default();
+            let file = e["file"].as_str().unwrap_or_default();
+            let Ok(text) = std::fs::read_to_string(root.join(file)) else {
+                continue;
+            };
+            let lines: Vec<String> = text.lines().map(collapse).collect();
+            if !rows
+                .iter()
+                .any(|r| r[1] == repo && lines.iter().any(|l| *l == r[3]))
+            {
+                continue;
+            }
+            let stage = if e["stage"].as_str() == Some("vertex") {
+                Stage::Vertex
+            } else {
+                Stage::Fragment
+            };
+            let s = compile(
+                SourceFile::new(file, text.as_str()),
+                stage,
+                &CompileOptions::default(),
+            );
+            if !s.ok() || s.naga.is_none() {
+                continue;
+            }
+            for d in lint(&s, &LintOptions::default().notes(true)) {
+                let line = s.file.line_col(d.span.start).line as usize;
+                let source = lines.get(line - 1).cloned().unwrap_or_default();
+                found.push((
+                    d.code.to_string(),
+                    repo.to_string(),
+                    line,
+                    source,
+                    d.severity,
+                ));
+            }
+        }
+        for r in &rows {
+            checked += 1;
+            let ok = found.iter().any(|(rule, repo, line, source, severity)| {
+                *rule == r[0]
+                    && *repo == r[1]
+                    && *source == r[3]
+                    && (r[2] == "*" || r[2] == line.to_string())
+                    && (r[4] == "rounding" || *severity == Severity::Warning)
+            });
+            if !ok {
+                missing.push(format!("{corpus}: {} {} `{}` ({})", r[0], r[1], r[3], r[4]));
+            }
+        }
+    }
+    assert!(checked > 0);
+    assert!(
+        missing.is_empty(),
+        "no longer reported:\n{}",
+        missing.join("\n")
+    );
+}
