@@ -433,10 +433,6 @@ fn rule_levels(
     Ok(())
 }
 
-#[cfg(feature = "mimalloc")]
-#[global_allocator]
-static ALLOCATOR: essl_alloc::Allocator = essl_alloc::Allocator;
-
 /// A glob set of `patterns`, or the pattern that is not a glob.
 fn glob_set(patterns: &[String]) -> Result<Option<globset::GlobSet>, String> {
     if patterns.is_empty() {

@@ -12,8 +12,10 @@
 
 use std::panic::{catch_unwind, AssertUnwindSafe};
 use std::path::Path;
+use std::sync::{Arc, Mutex};
+use std::time::{Duration, Instant};
 
-use essl_check::{CheckOptions, CheckedShader, Configs, Files};
+use essl_check::{CheckOptions, CheckedShader, Configs, Files, Overrides};
 use napi::bindgen_prelude::AsyncTask;
 use napi::{Env, Error, Status, Task};
 use napi_derive::napi;
@@ -21,6 +23,11 @@ use serde_json::json;
 
 mod options;
 mod report;
+
+/// mimalloc for the addon's own allocations, as for the `essl` binary (Node's and V8's are
+/// their own): checking a shader allocates many small objects.
+#[global_allocator]
+static ALLOCATOR: essl_alloc::Allocator = essl_alloc::Allocator;
 
 /// The largest text a call takes, as the CLI's largest file ([`essl_check::MAX_FILE_SIZE`]).
 const MAX_TEXT: usize = essl_check::MAX_FILE_SIZE as usize;
@@ -60,11 +67,31 @@ fn too_big(text: &str) -> napi::Result<()> {
     Ok(())
 }
 
+/// How long the settings read for one set of options are kept: a bundler checks hundreds of
+/// modules in a second, each of which would otherwise look for `essl.toml` in every folder
+/// above it again; an edited `essl.toml` is read within this time.
+const SETTINGS_KEPT: Duration = Duration::from_secs(1);
+
+/// The settings for `overrides`, shared by the calls of the last [`SETTINGS_KEPT`].
+fn configs(overrides: &Overrides) -> Arc<Configs> {
+    static KEPT: Mutex<Vec<(String, Instant, Arc<Configs>)>> = Mutex::new(Vec::new());
+    let key = format!("{overrides:?}");
+    let now = Instant::now();
+    let mut kept = KEPT.lock().unwrap_or_else(|e| e.into_inner());
+    kept.retain(|(_, at, _)| now.duration_since(*at) < SETTINGS_KEPT);
+    if let Some((_, _, c)) = kept.iter().find(|(k, _, _)| *k == key) {
+        return c.clone();
+    }
+    let c = Arc::new(Configs::new(overrides.clone()));
+    kept.push((key, now, c.clone()));
+    c
+}
+
 /// Checks `text` as the file `options.filename` (its extension says what it is: a shader file,
 /// or an HTML or JS/TS file holding shaders). Returns the checked unit as JSON.
 fn check_one(text: String, opts: &options::Options) -> napi::Result<essl_check::CheckedUnit> {
     too_big(&text)?;
-    let configs = Configs::new(opts.overrides.clone());
+    let configs = configs(&opts.overrides);
     let check = CheckOptions {
         link: opts.link,
         lints: opts.lints,
@@ -140,6 +167,10 @@ fn with_partner(
     opts: &options::Options,
 ) -> napi::Result<Option<usize>> {
     if !opts.link || unit.shaders.len() != 1 || unit.shaders[0].embedded_at.is_some() {
+        return Ok(None);
+    }
+    // A name that is not on disk (a text checked as `shader.frag`) has no partner.
+    if !opts.filename.is_file() {
         return Ok(None);
     }
     let Some(path) = essl_check::partner(&opts.filename, |p| p.is_file()) else {
