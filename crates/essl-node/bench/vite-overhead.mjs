@@ -1,10 +1,12 @@
 // What the essl plugin adds to a `vite build`: a generated project importing 200 shaders
 // (`?raw`, the webgl2fundamentals lessons' shaders from ../shared/corpora or $ESSL_CORPORA),
 // built with and without the plugin, alternating, ROUNDS times each (default 7); prints the
-// median of each and their ratio.
+// median of each and their ratio, for the plugin's defaults (lints on) and with `lints: false`.
+// Two projects: the shaders alone, and an app that also bundles three.js (the copy
+// scripts/fetch-js-libs.sh installs in tests/js) and makes a ShaderMaterial of each shader.
 //
 //   node bench/vite-overhead.mjs        (from crates/essl-node, after `npm run build`)
-import {mkdtempSync, mkdirSync, readFileSync, rmSync, writeFileSync, existsSync} from 'node:fs';
+import {mkdtempSync, mkdirSync, readFileSync, rmSync, writeFileSync, existsSync, symlinkSync} from 'node:fs';
 import {tmpdir, cpus} from 'node:os';
 import {dirname, join} from 'node:path';
 import {fileURLToPath} from 'node:url';
@@ -27,44 +29,66 @@ const shaders = readFileSync(file, 'utf8')
   .filter(s => !s.templated && s.stage && s.expect_compile)
   .slice(0, 200);
 
-const dir = mkdtempSync(join(tmpdir(), 'essl-vite-bench-'));
-mkdirSync(join(dir, 'src', 'shaders'), {recursive: true});
-const imports = [];
-shaders.forEach((s, i) => {
-  const name = `s${String(i).padStart(3, '0')}.${s.stage === 'vertex' ? 'vert' : 'frag'}`;
-  writeFileSync(join(dir, 'src', 'shaders', name), s.source);
-  imports.push(`import s${i} from './shaders/${name}?raw';`);
-});
-writeFileSync(
-  join(dir, 'src', 'main.js'),
-  `${imports.join('\n')}\nexport const all = [${shaders.map((_, i) => `s${i}`).join(', ')}];\n` +
-    'document.body.textContent = all.join("\\n").length;\n',
-);
-writeFileSync(join(dir, 'index.html'), '<!doctype html><script type="module" src="/src/main.js"></script>\n');
+const three = join(here, '..', '..', '..', 'tests', 'js', 'node_modules', 'three');
 
-async function once(withPlugin) {
+function project(withThree) {
+  const dir = mkdtempSync(join(tmpdir(), 'essl-vite-bench-'));
+  mkdirSync(join(dir, 'src', 'shaders'), {recursive: true});
+  const imports = [];
+  shaders.forEach((s, i) => {
+    const name = `s${String(i).padStart(3, '0')}.${s.stage === 'vertex' ? 'vert' : 'frag'}`;
+    writeFileSync(join(dir, 'src', 'shaders', name), s.source);
+    imports.push(`import s${i} from './shaders/${name}?raw';`);
+  });
+  let main = `${imports.join('\n')}\nexport const all = [${shaders.map((_, i) => `s${i}`).join(', ')}];\n`;
+  if (withThree) {
+    mkdirSync(join(dir, 'node_modules'));
+    symlinkSync(three, join(dir, 'node_modules', 'three'));
+    main =
+      "import * as THREE from 'three';\n" +
+      main +
+      'const renderer = new THREE.WebGLRenderer();\n' +
+      'const scene = new THREE.Scene();\n' +
+      'for (const s of all) scene.add(new THREE.Mesh(new THREE.BoxGeometry(), new THREE.RawShaderMaterial({vertexShader: s, fragmentShader: s})));\n' +
+      'renderer.render(scene, new THREE.PerspectiveCamera());\n';
+  } else {
+    main += 'document.body.textContent = all.join("\\n").length;\n';
+  }
+  writeFileSync(join(dir, 'src', 'main.js'), main);
+  writeFileSync(join(dir, 'index.html'), '<!doctype html><script type="module" src="/src/main.js"></script>\n');
+  return dir;
+}
+
+async function once(dir, plugin) {
   const start = process.hrtime.bigint();
   await build({
     root: dir,
     configFile: false,
     logLevel: 'silent',
-    plugins: withPlugin ? [essl({lints: true})] : [],
+    plugins: plugin ? [plugin] : [],
     build: {outDir: join(dir, 'dist'), emptyOutDir: true},
   });
   return Number(process.hrtime.bigint() - start) / 1e6;
 }
 
-const times = {without: [], with: []};
-await once(false);
-await once(true);
-for (let r = 0; r < ROUNDS; r++) {
-  for (const withPlugin of r % 2 ? [true, false] : [false, true]) {
-    times[withPlugin ? 'with' : 'without'].push(await once(withPlugin));
-  }
-}
-rmSync(dir, {recursive: true, force: true});
 const median = a => [...a].sort((x, y) => x - y)[a.length >> 1];
 const commit = execFileSync('git', ['rev-parse', '--short', 'HEAD'], {encoding: 'utf8'}).trim();
-const [w, wo] = [median(times.with), median(times.without)];
-console.log(`vite build of ${shaders.length} shaders, commit ${commit}, ${cpus().length} × ${cpus()[0].model}, ${ROUNDS} rounds`);
-console.log(`without essl: ${wo.toFixed(0)} ms (median), with essl: ${w.toFixed(0)} ms: ${(((w - wo) / wo) * 100).toFixed(1)} % added`);
+console.log(`vite build, ${shaders.length} shaders, commit ${commit}, ${cpus().length} × ${cpus()[0].model}, ${ROUNDS} rounds`);
+for (const withThree of [false, ...(existsSync(three) ? [true] : [])]) {
+  const dir = project(withThree);
+  const variants = {without: null, essl: essl(), 'essl, lints off': essl({lints: false})};
+  const times = Object.fromEntries(Object.keys(variants).map(k => [k, []]));
+  for (const p of Object.values(variants)) await once(dir, p);
+  for (let r = 0; r < ROUNDS; r++) {
+    const order = Object.keys(variants);
+    for (let k = 0; k < r % order.length; k++) order.push(order.shift());
+    for (const name of order) times[name].push(await once(dir, variants[name]));
+  }
+  rmSync(dir, {recursive: true, force: true});
+  const base = median(times.without);
+  const parts = Object.entries(times).map(([name, t]) => {
+    const m = median(t);
+    return name === 'without' ? `without essl ${m.toFixed(0)} ms` : `${name} ${m.toFixed(0)} ms (+${(((m - base) / base) * 100).toFixed(1)} %)`;
+  });
+  console.log(`${withThree ? 'with three.js' : 'shaders alone'}: ${parts.join(', ')}`);
+}
