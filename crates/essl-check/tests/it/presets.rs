@@ -56,7 +56,10 @@ fn deck_gl_layers_compile_and_link_as_in_chromium() {
     ];
     let found = lines(&dir, &run);
     for known in KNOWN {
-        assert!(found.iter().any(|l| l == known), "{known} is no longer reported");
+        assert!(
+            found.iter().any(|l| l == known),
+            "{known} is no longer reported"
+        );
     }
     let errors: Vec<String> = found
         .into_iter()
