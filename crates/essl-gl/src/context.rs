@@ -268,6 +268,13 @@ impl Context {
         let _ = self.gpu.device.poll(wgpu::PollType::wait_indefinitely());
     }
 
+    /// Records WebGL error `code` for `function` as a binding does for what only it can see
+    /// (a `srcOffset` past the end of a JavaScript array, an object of a context that is
+    /// gone): the first error sticks, as with every error essl-gl records.
+    pub fn synthesize_error(&self, code: u32, function: &str, what: &str) {
+        self.error(code, function, what);
+    }
+
     /// Records a GL error (the first one sticks) with a message naming the function.
     pub(crate) fn error(&self, code: u32, function: &str, what: impl std::fmt::Display) {
         self.errors.record(code, || {

@@ -7,7 +7,7 @@ use super::format::{
 use super::image_target;
 use super::object::Level;
 use super::pixels::{convert_pixels, unpack_layout};
-use crate::array::{array_mismatch, ArrayElement, ArrayType};
+use crate::array::{array_mismatch, ArrayElement, ArrayType, ArrayView};
 use crate::context::Context;
 use crate::gl;
 
@@ -76,6 +76,35 @@ impl Context {
         ty: u32,
         pixels: Option<&[T]>,
     ) {
+        let pixels = pixels.map(ArrayView::of);
+        self.tex_image_2d_view(
+            target,
+            level,
+            internalformat,
+            width,
+            height,
+            border,
+            format,
+            ty,
+            pixels,
+        );
+    }
+
+    /// [`Context::tex_image_2d`] with the client data as a typed array of any kind (a
+    /// binding's `ArrayBufferView`): the array's type is checked against `ty` as WebGL does.
+    #[allow(clippy::too_many_arguments)] // WebGL2's own argument list
+    pub fn tex_image_2d_view(
+        &mut self,
+        target: u32,
+        level: i32,
+        internalformat: i32,
+        width: i32,
+        height: i32,
+        border: i32,
+        format: u32,
+        ty: u32,
+        pixels: Option<ArrayView>,
+    ) {
         const F: &str = "texImage2D";
         if self.client_data_refused(F) {
             return;
@@ -92,8 +121,8 @@ impl Context {
             border,
             format,
             ty,
-            pixels: pixels.map(bytemuck::cast_slice),
-            array: Some(T::TYPE),
+            pixels: pixels.map(|p| p.bytes),
+            array: Some(pixels.map_or(ArrayType::Uint8, |p| p.array)),
             function: F,
         });
     }
@@ -114,6 +143,36 @@ impl Context {
         ty: u32,
         pixels: Option<&[T]>,
     ) {
+        let pixels = pixels.map(ArrayView::of);
+        self.tex_image_3d_view(
+            target,
+            level,
+            internalformat,
+            width,
+            height,
+            depth,
+            border,
+            format,
+            ty,
+            pixels,
+        );
+    }
+
+    /// [`Context::tex_image_3d`] with the client data as a typed array of any kind.
+    #[allow(clippy::too_many_arguments)] // WebGL2's own argument list
+    pub fn tex_image_3d_view(
+        &mut self,
+        target: u32,
+        level: i32,
+        internalformat: i32,
+        width: i32,
+        height: i32,
+        depth: i32,
+        border: i32,
+        format: u32,
+        ty: u32,
+        pixels: Option<ArrayView>,
+    ) {
         const F: &str = "texImage3D";
         if self.client_data_refused(F) {
             return;
@@ -129,8 +188,8 @@ impl Context {
             border,
             format,
             ty,
-            pixels: pixels.map(bytemuck::cast_slice),
-            array: Some(T::TYPE),
+            pixels: pixels.map(|p| p.bytes),
+            array: Some(pixels.map_or(ArrayType::Uint8, |p| p.array)),
             function: F,
         });
     }
@@ -376,6 +435,26 @@ impl Context {
         ty: u32,
         pixels: &[T],
     ) {
+        let pixels = ArrayView::of(pixels);
+        self.tex_sub_image_2d_view(
+            target, level, xoffset, yoffset, width, height, format, ty, pixels,
+        );
+    }
+
+    /// [`Context::tex_sub_image_2d`] with the client data as a typed array of any kind.
+    #[allow(clippy::too_many_arguments)] // WebGL2's own argument list
+    pub fn tex_sub_image_2d_view(
+        &mut self,
+        target: u32,
+        level: i32,
+        xoffset: i32,
+        yoffset: i32,
+        width: i32,
+        height: i32,
+        format: u32,
+        ty: u32,
+        pixels: ArrayView,
+    ) {
         const F: &str = "texSubImage2D";
         if self.client_data_refused(F) {
             return;
@@ -391,8 +470,8 @@ impl Context {
             size: [width, height, 1],
             format,
             ty,
-            pixels: bytemuck::cast_slice(pixels),
-            array: Some(T::TYPE),
+            pixels: pixels.bytes,
+            array: Some(pixels.array),
             function: F,
         });
     }
@@ -413,6 +492,28 @@ impl Context {
         ty: u32,
         pixels: &[T],
     ) {
+        let pixels = ArrayView::of(pixels);
+        self.tex_sub_image_3d_view(
+            target, level, xoffset, yoffset, zoffset, width, height, depth, format, ty, pixels,
+        );
+    }
+
+    /// [`Context::tex_sub_image_3d`] with the client data as a typed array of any kind.
+    #[allow(clippy::too_many_arguments)] // WebGL2's own argument list
+    pub fn tex_sub_image_3d_view(
+        &mut self,
+        target: u32,
+        level: i32,
+        xoffset: i32,
+        yoffset: i32,
+        zoffset: i32,
+        width: i32,
+        height: i32,
+        depth: i32,
+        format: u32,
+        ty: u32,
+        pixels: ArrayView,
+    ) {
         const F: &str = "texSubImage3D";
         if self.client_data_refused(F) {
             return;
@@ -427,8 +528,8 @@ impl Context {
             size: [width, height, depth],
             format,
             ty,
-            pixels: bytemuck::cast_slice(pixels),
-            array: Some(T::TYPE),
+            pixels: pixels.bytes,
+            array: Some(pixels.array),
             function: F,
         });
     }
