@@ -7,3 +7,4 @@ export {
 } from './lib/objects.js';
 export { WebGLRenderingContext, WebGL2RenderingContext } from './lib/context.js';
 export { Canvas, createContext, contextFor, resizeFor } from './lib/canvas.js';
+export { installInWindow } from './lib/dom.js';

@@ -8,6 +8,7 @@ import {
   STATE,
 } from './context.js';
 import { DRAWING_BUFFER } from './sources.js';
+import { contextClass, realmOf } from './realm.js';
 
 const CONTEXTS = new WeakMap();
 
@@ -29,7 +30,7 @@ export function contextFor(canvas, type, attrs) {
     const [w, h] = size();
     return new native.NativeContext(w, h, nativeAttributes(a), version);
   };
-  const cls = version === 2 ? WebGL2RenderingContext : WebGLRenderingContext;
+  const cls = contextClass(realmOf(canvas), version);
   const ctx = new cls(KEY, canvas, make(), a, make);
   CONTEXTS.set(canvas, { ctx, version });
   return ctx;

@@ -18,6 +18,7 @@ const LOST_ERRORS = Symbol('essl-gl errors of a lost context');
 const EXTENSIONS = Symbol('essl-gl extensions enabled');
 const RESTORE = Symbol('essl-gl restore allowed');
 const MAKE = Symbol('essl-gl make native');
+const SCHEDULED = Symbol('essl-gl frame end scheduled');
 
 const CONTEXT_LOST_WEBGL = 0x9242;
 const INVALID_OPERATION = 0x502;
@@ -172,6 +173,7 @@ function init(ctx, key, canvas, native, attrs, version, make) {
     [EXTENSIONS]: { value: new Map(), writable: true },
     [RESTORE]: { value: false, writable: true },
     [MAKE]: { value: make },
+    [SCHEDULED]: { value: false, writable: true },
     _drawingBufferFormat: { value: undefined, writable: true },
     _drawingBufferColorSpace: { value: undefined, writable: true },
     _unpackColorSpace: { value: undefined, writable: true },
@@ -199,6 +201,45 @@ defineConstants(WebGLRenderingContext, CONSTANTS_1);
 defineConstants(WebGL2RenderingContext, { ...CONSTANTS_1, ...CONSTANTS_2 });
 for (const cls of [WebGLRenderingContext, WebGL2RenderingContext]) {
   Object.defineProperty(cls.prototype, Symbol.toStringTag, { value: cls.name, configurable: true });
+}
+
+/**
+ * The calls after which a browser has a frame to present when the task returns: draws and
+ * clears (the drawing buffer changed), fences and queries (their results become available
+ * once control is back in the event loop).
+ */
+const FRAME_CALLS = [
+  'clear', 'clearBufferfv', 'clearBufferiv', 'clearBufferuiv', 'clearBufferfi', 'drawArrays',
+  'drawElements', 'drawArraysInstanced', 'drawElementsInstanced', 'drawRangeElements',
+  'blitFramebuffer', 'fenceSync', 'endQuery',
+];
+for (const cls of [WebGLRenderingContext, WebGL2RenderingContext]) {
+  for (const name of FRAME_CALLS) {
+    const f = cls.prototype[name];
+    if (typeof f !== 'function') continue;
+    const wrapped = {
+      [name](...args) {
+        const r = f.apply(this, args);
+        if (!this[SCHEDULED] && this[NATIVE] !== null) scheduleFrameEnd(this);
+        return r;
+      },
+    }[name];
+    Object.defineProperty(cls.prototype, name, { value: wrapped, writable: true, enumerable: true, configurable: true });
+  }
+}
+
+/**
+ * Ends the frame once the current task returns, as a browser does before its next task:
+ * queries and fences of the frame become available, and the drawing buffer is cleared
+ * unless `preserveDrawingBuffer`.
+ */
+function scheduleFrameEnd(ctx) {
+  ctx[SCHEDULED] = true;
+  setImmediate(() => {
+    ctx[SCHEDULED] = false;
+    const n = ctx[NATIVE];
+    if (n !== null) n.present();
+  });
 }
 
 /**

@@ -6,6 +6,8 @@
 // follow WebIDL: numbers by ToNumber and the integer type's modulo, `null` for nullable
 // objects, a `TypeError` for a value of the wrong kind or too few arguments.
 
+import { types } from 'node:util';
+
 /** The native context of a WebGL context object (`null` while lost or destroyed). */
 export const NATIVE = Symbol('essl-gl native context');
 /** A WebGL object's id, and the context that made it. */
@@ -183,19 +185,19 @@ export function u32seq(v, name, i) {
 
 /** `Float32List`: a `Float32Array` as it is (no copy), or a sequence converted. */
 export function f32list(v, name, i) {
-  if (v instanceof Float32Array) return v;
+  if (types.isFloat32Array(v)) return v;
   return Float32Array.from(iterable(v, name, i), num);
 }
 
 /** `Int32List`. */
 export function i32list(v, name, i) {
-  if (v instanceof Int32Array) return v;
+  if (types.isInt32Array(v)) return v;
   return Int32Array.from(iterable(v, name, i), i32);
 }
 
 /** `Uint32List`. */
 export function u32list(v, name, i) {
-  if (v instanceof Uint32Array) return v;
+  if (types.isUint32Array(v)) return v;
   return Uint32Array.from(iterable(v, name, i), u32);
 }
 

@@ -6,6 +6,7 @@ import {
   WebGLUniformLocation,
 } from './objects.js';
 import { imageSource, isImageSource } from './sources.js';
+import { types } from 'node:util';
 
 const INVALID_VALUE = 0x501;
 
@@ -14,12 +15,9 @@ function isView(v) {
   return ArrayBuffer.isView(v);
 }
 
-/** Whether `v` is an `ArrayBuffer` or `SharedArrayBuffer`. */
+/** Whether `v` is an `ArrayBuffer` or `SharedArrayBuffer` (of any realm). */
 function isBuffer(v) {
-  return (
-    v instanceof ArrayBuffer ||
-    (typeof SharedArrayBuffer !== 'undefined' && v instanceof SharedArrayBuffer)
-  );
+  return types.isAnyArrayBuffer(v);
 }
 
 function typeError(name, what) {
@@ -299,7 +297,7 @@ function texImage(name, sub, threeD, args) {
     return;
   }
   if (!webgl2) throw typeError(name, `parameter ${full + 1} is not of type 'ArrayBufferView'.`);
-  if (typeof data === 'object' && !(data instanceof Number)) {
+  if (typeof data === 'object' && !types.isNumberObject(data)) {
     throw typeError(name, `parameter ${full + 1} is not of type 'ArrayBufferView'.`);
   }
   const o = i64(data);

@@ -4,6 +4,8 @@
 // canvases whose context is essl-gl's. Each is read as 8-bit RGBA, unpremultiplied, top row
 // first — what a browser hands WebGL.
 
+import { types } from 'node:util';
+
 /** A canvas-like object of essl-gl's (its context draws into the drawing buffer). */
 export const DRAWING_BUFFER = Symbol('essl-gl drawing buffer pixels');
 
@@ -20,7 +22,7 @@ function isImageData(v) {
   return (
     typeof v.width === 'number' &&
     typeof v.height === 'number' &&
-    (v.data instanceof Uint8ClampedArray || v.data instanceof Uint8Array)
+    (types.isUint8ClampedArray(v.data) || types.isUint8Array(v.data))
   );
 }
 
