@@ -230,15 +230,17 @@ for (const cls of [WebGLRenderingContext, WebGL2RenderingContext]) {
 
 /**
  * Ends the frame once the current task returns, as a browser does before its next task:
- * queries and fences of the frame become available, and the drawing buffer is cleared
- * unless `preserveDrawingBuffer`.
+ * queries and fences of the frame become available, and the drawing buffer of a canvas in
+ * a document is cleared unless `preserveDrawingBuffer`.
  */
 function scheduleFrameEnd(ctx) {
   ctx[SCHEDULED] = true;
   setImmediate(() => {
     ctx[SCHEDULED] = false;
     const n = ctx[NATIVE];
-    if (n !== null) n.present();
+    // Only a canvas in a document is composited (and so cleared); jsdom's elements say
+    // whether they are, essl-gl's own Canvas never is.
+    if (n !== null) n.present(ctx[CANVAS]?.isConnected === true);
   });
 }
 

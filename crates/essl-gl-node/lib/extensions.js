@@ -3,6 +3,7 @@
 // state). One object per name and context, as browsers return the same object each time.
 import { loseContext, restoreContext } from './context.js';
 import { VERSION } from './objects.js';
+import { METHODS_2 } from './generated.js';
 
 /** Constants of the extensions that have any. */
 const CONSTANTS = {
@@ -13,6 +14,35 @@ const CONSTANTS = {
     UNSIGNED_NORMALIZED_EXT: 0x8c17,
   },
   KHR_parallel_shader_compile: { COMPLETION_STATUS_KHR: 0x91b1 },
+  OES_vertex_array_object: { VERTEX_ARRAY_BINDING_OES: 0x85b5 },
+  ANGLE_instanced_arrays: { VERTEX_ATTRIB_ARRAY_DIVISOR_ANGLE: 0x88fe },
+  OES_standard_derivatives: { FRAGMENT_SHADER_DERIVATIVE_HINT_OES: 0x8b8b },
+  EXT_blend_minmax: { MIN_EXT: 0x8007, MAX_EXT: 0x8008 },
+  WEBGL_draw_buffers: Object.fromEntries([
+    ...Array.from({ length: 16 }, (_, i) => [`COLOR_ATTACHMENT${i}_WEBGL`, 0x8ce0 + i]),
+    ...Array.from({ length: 16 }, (_, i) => [`DRAW_BUFFER${i}_WEBGL`, 0x8825 + i]),
+    ['MAX_COLOR_ATTACHMENTS_WEBGL', 0x8cdf],
+    ['MAX_DRAW_BUFFERS_WEBGL', 0x8824],
+  ]),
+};
+
+/**
+ * The methods of WebGL 1 extensions that expose WebGL 2 calls under their own names: the
+ * same conversions and answers, on the context the extension came from.
+ */
+const METHODS = {
+  OES_vertex_array_object: {
+    createVertexArrayOES: 'createVertexArray',
+    deleteVertexArrayOES: 'deleteVertexArray',
+    isVertexArrayOES: 'isVertexArray',
+    bindVertexArrayOES: 'bindVertexArray',
+  },
+  ANGLE_instanced_arrays: {
+    drawArraysInstancedANGLE: 'drawArraysInstanced',
+    drawElementsInstancedANGLE: 'drawElementsInstanced',
+    vertexAttribDivisorANGLE: 'vertexAttribDivisor',
+  },
+  WEBGL_draw_buffers: { drawBuffersWEBGL: 'drawBuffers' },
 };
 
 /** One class per extension, named as its IDL interface (`EXT_color_buffer_float`). */
@@ -52,7 +82,12 @@ export function extensionObject(ctx, native, name) {
   if (ctx[VERSION] !== 2 && WEBGL2_ONLY.has(canonical(name))) return null;
   const enabled = native.getExtension(name);
   if (enabled === null) return null;
-  return new (classOf(enabled))();
+  const ext = new (classOf(enabled))();
+  for (const [own, core] of Object.entries(METHODS[enabled] ?? {})) {
+    const f = METHODS_2[core];
+    Object.defineProperty(ext, own, { value: (...args) => f.apply(ctx, args), enumerable: true });
+  }
+  return ext;
 }
 
 function canonical(name) {

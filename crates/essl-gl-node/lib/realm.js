@@ -28,6 +28,10 @@ export function contextClass(realm, version) {
 
 function subclass(realm, base) {
   const cls = { [base.name]: class extends base {} }[base.name];
+  // The interface object's constants are its own properties (Object.entries finds them).
+  for (const k of Object.keys(base)) {
+    Object.defineProperty(cls, k, Object.getOwnPropertyDescriptor(base, k));
+  }
   const proto = base.prototype;
   for (const name of Object.getOwnPropertyNames(proto)) {
     const d = Object.getOwnPropertyDescriptor(proto, name);

@@ -83,7 +83,7 @@ impl NativeContext {
         let mut ctx = Context::with_attributes(width.max(1), height.max(1), attributes.into())
             .map_err(BindingError::from)?;
         if version == 1 {
-            ctx.set_shader_target(essl::Target::WebGl1, &[]);
+            ctx.set_webgl1();
         }
         Ok(NativeContext {
             ctx: Some(ctx),
@@ -140,11 +140,17 @@ impl NativeContext {
         self.ctx.as_ref().map(|c| c.get_context_attributes().into())
     }
 
-    /// Ends a frame as a browser does when a task that drew returns: the drawing buffer is
-    /// cleared unless `preserveDrawingBuffer`.
+    /// Ends a frame as a browser does when a task that drew returns: queries and fences
+    /// become available; a `composited` canvas (one in a document) has its drawing buffer
+    /// cleared unless `preserveDrawingBuffer`, an offscreen one keeps it.
     #[napi]
-    pub fn present(&mut self) -> napi::Result<()> {
-        self.gl()?.present();
+    pub fn present(&mut self, composited: bool) -> napi::Result<()> {
+        let c = self.gl()?;
+        if composited {
+            c.present();
+        } else {
+            c.present_offscreen();
+        }
         Ok(())
     }
 

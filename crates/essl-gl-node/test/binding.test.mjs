@@ -4,7 +4,7 @@ import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import {
   createContext, Canvas, WebGL2RenderingContext, WebGLRenderingContext, WebGLBuffer,
-  WebGLTexture, WebGLProgram, WebGLUniformLocation, WebGLActiveInfo,
+  WebGLTexture, WebGLUniformLocation, WebGLActiveInfo, installInWindow,
 } from '../index.js';
 
 const gl = createContext(16, 16);
@@ -244,19 +244,36 @@ test('a WebGL 1 context has WebGL 1 methods only and compiles GLSL ES 1.00 only'
   ctx.destroy();
 });
 
-test('preserveDrawingBuffer: false clears the drawing buffer once the task that drew returns', async () => {
-  const ctx = createContext(4, 4, { preserveDrawingBuffer: false });
-  const keep = createContext(4, 4, { preserveDrawingBuffer: true });
-  for (const c of [ctx, keep]) {
-    c.clearColor(1, 1, 1, 1);
-    c.clear(c.COLOR_BUFFER_BIT);
-  }
+test('a canvas in a document is cleared when the task that drew returns, unless preserveDrawingBuffer; an offscreen one is not', async () => {
+  const { JSDOM } = await import('jsdom');
+  const dom = new JSDOM('<!doctype html><body></body>', { runScripts: 'outside-only' });
+  installInWindow(dom.window);
+  const doc = dom.window.document;
+  const make = (attached, preserve) => {
+    const canvas = doc.createElement('canvas');
+    canvas.width = canvas.height = 4;
+    if (attached) doc.body.appendChild(canvas);
+    const ctx = canvas.getContext('webgl2', { preserveDrawingBuffer: preserve });
+    ctx.clearColor(1, 1, 1, 1);
+    ctx.clear(ctx.COLOR_BUFFER_BIT);
+    return ctx;
+  };
+  const shown = make(true, false);
+  const kept = make(true, true);
+  const offscreen = make(false, false);
+  assert.ok(shown instanceof dom.window.WebGL2RenderingContext);
   await new Promise((r) => setTimeout(r, 5));
-  const px = new Uint8Array(4);
-  ctx.readPixels(0, 0, 1, 1, ctx.RGBA, ctx.UNSIGNED_BYTE, px);
-  assert.deepEqual([...px], [0, 0, 0, 0]);
-  keep.readPixels(0, 0, 1, 1, keep.RGBA, keep.UNSIGNED_BYTE, px);
-  assert.deepEqual([...px], [255, 255, 255, 255]);
-  ctx.destroy();
-  keep.destroy();
+  const read = (ctx) => {
+    const px = new Uint8Array(4);
+    ctx.readPixels(0, 0, 1, 1, ctx.RGBA, ctx.UNSIGNED_BYTE, px);
+    return [...px];
+  };
+  assert.deepEqual(read(shown), [0, 0, 0, 0]);
+  assert.deepEqual(read(kept), [255, 255, 255, 255]);
+  assert.deepEqual(read(offscreen), [255, 255, 255, 255]);
+  // Values cross into the page's realm: its Int32Array and TypeError.
+  assert.ok(shown.getParameter(shown.VIEWPORT) instanceof dom.window.Int32Array);
+  assert.throws(() => shown.bindBuffer(shown.ARRAY_BUFFER, {}), dom.window.TypeError);
+  for (const c of [shown, kept, offscreen]) c.destroy();
+  dom.window.close();
 });

@@ -68,6 +68,8 @@ pub struct Context {
     pub(crate) linker: Linker,
     /// The uniform-value checks ([`Context::set_validation`]) and their warnings.
     pub(crate) validation: crate::validation::Validation,
+    /// Whether this is a WebGL 1 context, and its WebGL 1 extensions.
+    pub(crate) webgl1: crate::webgl1::Webgl1,
     /// How many times [`Context::present`] ran: queries and fences ended before one are
     /// answered after it.
     pub(crate) presents: u64,
@@ -191,6 +193,7 @@ impl Context {
             linker: Linker::default(),
             validation: Default::default(),
             presents: 0,
+            webgl1: Default::default(),
             gpu,
         };
         if !attributes.alpha {
@@ -314,6 +317,9 @@ impl Context {
     }
 
     fn supported(&self) -> Vec<Extension> {
+        if self.webgl1.on {
+            return crate::webgl1::WEBGL1_EXTENSIONS.to_vec();
+        }
         let mut v = vec![
             Extension::ColorBufferFloat,
             Extension::ColorBufferHalfFloat,
@@ -348,6 +354,7 @@ impl Context {
             Extension::FloatBlend => x.float_blend = true,
             Extension::TextureFloatLinear => x.texture_float_linear = true,
             Extension::ParallelShaderCompile => x.parallel_shader_compile = true,
+            webgl1 => self.enable_webgl1_extension(webgl1),
         }
         Some(e)
     }

@@ -95,6 +95,7 @@ mod texture;
 mod transform_feedback;
 mod validation;
 mod vertex_array;
+mod webgl1;
 
 pub use array::{ArrayElement, ArrayType, ArrayView, ArrayViewMut};
 pub use bytemuck;

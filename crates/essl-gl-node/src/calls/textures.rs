@@ -475,10 +475,10 @@ impl NativeContext {
     pub fn synthesize_error(
         &mut self,
         code: u32,
-        function: String,
+        call: String,
         message: String,
     ) -> napi::Result<()> {
-        self.gl()?.synthesize_error(code, &function, &message);
+        self.gl()?.synthesize_error(code, &call, &message);
         Ok(())
     }
 }

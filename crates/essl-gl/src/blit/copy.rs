@@ -90,6 +90,16 @@ impl Context {
         border: i32,
     ) {
         const F: &str = "copyTexImage2D";
+        let unsized_format = matches!(
+            internalformat,
+            gl::ALPHA | gl::LUMINANCE | gl::LUMINANCE_ALPHA | gl::RGB | gl::RGBA
+        );
+        if self.webgl1_refuses(F, &[target]) {
+            return;
+        }
+        if self.webgl1.on && !unsized_format {
+            return self.error(gl::INVALID_ENUM, F, "not an internal format of WebGL 1");
+        }
         let Some((bind, face)) = image_target(target)
             .filter(|(b, _)| matches!(*b, gl::TEXTURE_2D | gl::TEXTURE_CUBE_MAP))
         else {

@@ -21,6 +21,15 @@ impl Context {
         self.clear_drawing_buffer();
     }
 
+    /// Ends a frame of a canvas that is not shown (not in a document, an `OffscreenCanvas`):
+    /// queries and fences ended before it become available, as with [`Context::present`],
+    /// but nothing composites the drawing buffer, so it keeps its contents. Submits the
+    /// recorded commands and waits for them.
+    pub fn present_offscreen(&mut self) {
+        self.finish();
+        self.presents += 1;
+    }
+
     /// Clears the drawing buffer to its initial contents: colour 0 (alpha 1 without an alpha
     /// channel, which then reads back as 1), depth 1, stencil 0.
     pub(crate) fn clear_drawing_buffer(&mut self) {

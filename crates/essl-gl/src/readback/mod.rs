@@ -87,6 +87,9 @@ impl Context {
         dst: ArrayViewMut,
     ) {
         const F: &str = "readPixels";
+        if self.webgl1_refuses(F, &[format, ty]) {
+            return;
+        }
         if self.bindings.buffer(gl::PIXEL_PACK_BUFFER).is_some() {
             return self.error(
                 gl::INVALID_OPERATION,

@@ -97,6 +97,9 @@ impl Context {
     /// was first bound to (`INVALID_OPERATION` for another).
     pub fn bind_texture(&mut self, target: u32, texture: Option<Texture>) {
         const F: &str = "bindTexture";
+        if self.webgl1_refuses("bindTexture", &[target]) {
+            return;
+        }
         if !is_texture_target(target) {
             return self.error(gl::INVALID_ENUM, F, format_args!("target 0x{target:04X}"));
         }

@@ -106,6 +106,11 @@ impl Context {
         pixels: Option<ArrayView>,
     ) {
         const F: &str = "texImage2D";
+        if self.webgl1_refuses(F, &[target])
+            || self.webgl1_refuses_image(internalformat, format, ty)
+        {
+            return;
+        }
         if self.client_data_refused(F) {
             return;
         }
@@ -456,6 +461,10 @@ impl Context {
         pixels: ArrayView,
     ) {
         const F: &str = "texSubImage2D";
+        if self.webgl1_refuses(F, &[target]) || self.webgl1_refuses_image(format as i32, format, ty)
+        {
+            return;
+        }
         if self.client_data_refused(F) {
             return;
         }
