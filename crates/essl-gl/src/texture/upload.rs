@@ -297,7 +297,7 @@ impl Context {
             ty,
             three_d,
         } = pixels;
-        let store = self.pixel_store.clone();
+        let store = self.pixel_store;
         let u = unpack_layout(&store, w, h, d, pixel_size(format, ty), three_d);
         if src.len() < u.needed {
             self.error(
