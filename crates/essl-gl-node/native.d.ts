@@ -2,14 +2,6 @@
 /* eslint-disable */
 
 /**
- * Which binding artifact the generated loader actually loaded: `'native'` for
- * a native addon, otherwise the `platformArchABI` of the WASI flavor. Every
- * flavor napi-rs can build is listed, because `NAPI_RS_NATIVE_LIBRARY_PATH`
- * can point the loader at a WASI artifact this package does not build itself.
- */
-export declare const __napiBindingTarget: 'native' | 'wasm32-wasi' | 'wasm32-wasip1'
-
-/**
  * A WebGL context of essl-gl, as the JavaScript classes `WebGL2RenderingContext` and
  * `WebGLRenderingContext` call it. Its methods take arguments already converted as WebIDL
  * converts them (numbers, booleans, strings, typed arrays, object ids; 0 for `null`).

@@ -7,7 +7,7 @@ import {
   WebGLRenderingContext, WebGL2RenderingContext, attributes, loseContext, drawingBufferSource,
   STATE,
 } from './context.js';
-import { DRAWING_BUFFER } from './sources.js';
+import { DRAWING_BUFFER, setDrawingBufferReader } from './sources.js';
 import { contextClass, realmOf } from './realm.js';
 
 const CONTEXTS = new WeakMap();
@@ -34,6 +34,16 @@ export function contextFor(canvas, type, attrs) {
   const ctx = new cls(KEY, canvas, make(), a, make);
   CONTEXTS.set(canvas, { ctx, version });
   return ctx;
+}
+
+setDrawingBufferReader((canvas) => {
+  const c = CONTEXTS.get(canvas);
+  return c ? drawingBufferSource(c.ctx) : null;
+});
+
+/** The essl-gl context of `canvas`, or `null`. */
+export function contextOf(canvas) {
+  return CONTEXTS.get(canvas)?.ctx ?? null;
 }
 
 /** Resizes the drawing buffer of `canvas`'s context (if any) to the canvas's size. */

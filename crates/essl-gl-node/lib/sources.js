@@ -6,6 +6,12 @@
 
 import { types } from 'node:util';
 
+/** How a DOM canvas with an essl-gl context gives its pixels (set by canvas.js). */
+let drawingBufferOf = () => null;
+export function setDrawingBufferReader(f) {
+  drawingBufferOf = f;
+}
+
 /** A canvas-like object of essl-gl's (its context draws into the drawing buffer). */
 export const DRAWING_BUFFER = Symbol('essl-gl drawing buffer pixels');
 
@@ -15,6 +21,7 @@ export function isImageSource(v) {
   if (ArrayBuffer.isView(v)) return false;
   if (typeof v[DRAWING_BUFFER] === 'function') return true;
   if (isImageData(v)) return true;
+  if (typeof v.videoWidth === 'number') return true;
   return typeof v.getContext === 'function' || isImage(v);
 }
 
@@ -37,6 +44,8 @@ function isImage(v) {
  */
 export function imageSource(v, name) {
   if (typeof v[DRAWING_BUFFER] === 'function') return v[DRAWING_BUFFER]();
+  const webgl = drawingBufferOf(v);
+  if (webgl) return webgl;
   if (isImageData(v)) {
     const { width, height } = v;
     const need = width * height * 4;

@@ -277,3 +277,34 @@ test('a canvas in a document is cleared when the task that drew returns, unless 
   for (const c of [shown, kept, offscreen]) c.destroy();
   dom.window.close();
 });
+
+test('a WebGL canvas in a document reads back: toDataURL, toBlob and texImage2D from it', async () => {
+  const { JSDOM } = await import('jsdom');
+  const dom = new JSDOM('<!doctype html><body></body>', { runScripts: 'outside-only' });
+  installInWindow(dom.window);
+  const doc = dom.window.document;
+  const source = doc.createElement('canvas');
+  source.width = 2;
+  source.height = 2;
+  const a = source.getContext('webgl2', { preserveDrawingBuffer: true });
+  a.clearColor(0, 1, 0, 1);
+  a.clear(a.COLOR_BUFFER_BIT);
+  const url = source.toDataURL();
+  assert.ok(url.startsWith('data:image/png;base64,'));
+  assert.deepEqual([...Buffer.from(url.slice(22), 'base64').subarray(1, 4)], [0x50, 0x4e, 0x47]);
+  const blob = await new Promise((r) => source.toBlob(r));
+  assert.equal(blob.type, 'image/png');
+  const b = doc.createElement('canvas').getContext('webgl2');
+  const tex = b.createTexture();
+  b.bindTexture(b.TEXTURE_2D, tex);
+  b.texImage2D(b.TEXTURE_2D, 0, b.RGBA, b.RGBA, b.UNSIGNED_BYTE, source);
+  assert.equal(b.getError(), b.NO_ERROR);
+  b.bindFramebuffer(b.FRAMEBUFFER, b.createFramebuffer());
+  b.framebufferTexture2D(b.FRAMEBUFFER, b.COLOR_ATTACHMENT0, b.TEXTURE_2D, tex, 0);
+  const px = new Uint8Array(4);
+  b.readPixels(1, 1, 1, 1, b.RGBA, b.UNSIGNED_BYTE, px);
+  assert.deepEqual([...px], [0, 255, 0, 255]);
+  a.destroy();
+  b.destroy();
+  dom.window.close();
+});
