@@ -74,8 +74,9 @@ async function main() {
       row.esslGlMs = node[name].median;
       row.esslGlError = node[name].error;
       if (existsSync(ref)) {
-        const c = compare(node[name].pixels, decodePng(readFileSync(ref)).data);
+        const c = compare(node[name].pixels, decodePng(readFileSync(ref)).data, 3, width);
         row.within = c.within;
+        row.withinAwayFromEdges = c.withinAwayFromEdges;
         row.worst = c.worst;
       }
       if (has('--save')) writeFileSync(join(value('--save'), `${name}.png`), encodePng(width, height, node[name].pixels));
