@@ -13,4 +13,6 @@ export XDG_RUNTIME_DIR="${XDG_RUNTIME_DIR:-$(mktemp -d)}"
 cargo fmt --all -- --check
 cargo clippy --workspace --all-targets --quiet -- -D warnings
 cargo test --workspace --quiet
+# The Node.js addon (crates/essl-gl-node): node --test of the binding, three.js, conformance pages.
+./scripts/test-gl-node.sh
 ESSL="$PWD/target/debug/essl" ./scripts/editor-neovim.sh

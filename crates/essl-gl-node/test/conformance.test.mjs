@@ -2,7 +2,8 @@
 // full run does (conformance/run.mjs): no page may kill its process or fail to finish, and
 // each passes at least the assertions the committed full run passed
 // (conformance/results/essl-gl-*.json). Skips without the suite's sdk/tests
-// (ESSL_WEBGL_SDK, or test-data/webgl/sdk/tests from scripts/gl-node-conformance.sh).
+// (ESSL_WEBGL_SDK, or test-data/webgl/sdk/tests from scripts/gl-node-conformance.sh);
+// ESSL_REQUIRE_CORPORA=1 makes their absence a failure.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { execFileSync } from 'node:child_process';
@@ -23,9 +24,25 @@ function expected(context) {
   return existsSync(f) ? JSON.parse(readFileSync(f, 'utf8')) : {};
 }
 
+// The pages draw with 2D canvases as well, which jsdom takes from the `canvas` package.
+let canvas = true;
+try {
+  await import('canvas');
+} catch {
+  canvas = false;
+}
+const required = process.env.ESSL_REQUIRE_CORPORA === '1';
+const why = !have
+  ? `no WebGL conformance suite at ${sdk} (scripts/gl-node-conformance.sh fetches it)`
+  : !canvas
+    ? 'the canvas package is not installed or did not build (jsdom has no 2D canvas without it)'
+    : null;
+const skip = why === null || required ? false : why;
+
 for (const context of ['webgl2', 'webgl1']) {
   const want = expected(context);
-  test(`conformance sample, ${context}`, { skip: have ? false : `no WebGL conformance suite at ${sdk}` }, async (t) => {
+  test(`conformance sample, ${context}`, { skip }, async (t) => {
+    assert.equal(why, null, `${why} (ESSL_REQUIRE_CORPORA=1)`);
     for (const line of sample) {
       const [ctx, page] = line.split(/\s+/);
       if (ctx !== context) continue;
