@@ -140,13 +140,18 @@ fn select(source: &ImageSource, u: &SourceUpload, p: &PixelStore) -> Option<Vec<
     let mut out = Vec::new();
     for z in 0..d {
         for row in 0..h {
-            // The rectangle's rows from its top; flipped, its bottom row comes first.
-            let r = if p.unpack_flip_y { h - 1 - row } else { row };
-            let sy = skip_y + (skip_images + z) * stride + r;
+            // Flipped, the rectangle is selected from the source turned upside down (the
+            // whole source, as Chromium flips it before the UNPACK_SKIP_* rectangle is taken).
+            let f = skip_y + (skip_images + z) * stride + row;
+            let sy = if p.unpack_flip_y {
+                sh.checked_sub(1 + f)
+            } else {
+                Some(f)
+            };
             for x in 0..w {
                 let sx = skip_x + x;
                 let mut px = [0u8; 4];
-                if sx < sw && sy < sh {
+                if let Some(sy) = sy.filter(|&sy| sx < sw && sy < sh) {
                     let i = (sy * sw + sx) * 4;
                     px.copy_from_slice(&source.rgba[i..i + 4]);
                 }

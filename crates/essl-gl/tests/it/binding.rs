@@ -81,6 +81,47 @@ fn an_image_source_goes_to_row_0_first_and_flips_and_premultiplies_as_asked() {
 }
 
 #[test]
+fn a_flipped_image_source_gives_the_rectangle_of_the_flipped_source() {
+    let Some(mut ctx) = common::context(4, 4) else {
+        return;
+    };
+    // 1×1 rectangles at (1, 0) and (0, 1) of the 2×2 image, flipped: taken from the image
+    // turned upside down, as Chromium takes them.
+    let mut got = Vec::new();
+    for (skip_x, skip_y) in [(1, 0), (0, 1)] {
+        let t = ctx.create_texture();
+        ctx.bind_texture(gl::TEXTURE_2D, Some(t));
+        ctx.pixel_storei(gl::UNPACK_FLIP_Y_WEBGL, 1);
+        ctx.pixel_storei(gl::UNPACK_SKIP_PIXELS, skip_x);
+        ctx.pixel_storei(gl::UNPACK_SKIP_ROWS, skip_y);
+        let u = SourceUpload {
+            sub: false,
+            three_d: false,
+            target: gl::TEXTURE_2D,
+            level: 0,
+            internalformat: gl::RGBA as i32,
+            offset: [0; 3],
+            size: [1, 1, 1],
+            border: 0,
+            format: gl::RGBA,
+            ty: gl::UNSIGNED_BYTE,
+        };
+        let rgba = image();
+        ctx.tex_image_source(
+            u,
+            ImageSource {
+                width: 2,
+                height: 2,
+                rgba: &rgba,
+            },
+        );
+        assert_eq!(ctx.get_error(), gl::NO_ERROR, "{:?}", ctx.error_message());
+        got.push(texels(&mut ctx, t)[..4].to_vec());
+    }
+    assert_eq!(got, [WHITE.to_vec(), RED.to_vec()]);
+}
+
+#[test]
 fn an_image_source_converts_to_float_and_packed_types() {
     let Some(mut ctx) = common::context(4, 4) else {
         return;
