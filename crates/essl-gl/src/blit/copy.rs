@@ -106,10 +106,12 @@ impl Context {
             return self.error(gl::INVALID_ENUM, F, format_args!("target 0x{target:04X}"));
         };
         // Chromium takes float formats only where they can be rendered
-        // (`EXT_color_buffer_float`): otherwise they are unknown enums here.
+        // (`EXT_color_buffer_float`): otherwise they are unknown enums here; the SNORM
+        // formats, which no framebuffer holds, are refused the same way.
         let format = internal_format(internalformat)
             .ok()
-            .filter(|f| !is_float(f) || self.extensions.color_buffer_float);
+            .filter(|f| !is_float(f) || self.extensions.color_buffer_float)
+            .filter(|f| f.comp != crate::texture::Comp::Snorm8);
         let Some(format) = format else {
             return self.error(
                 gl::INVALID_ENUM,

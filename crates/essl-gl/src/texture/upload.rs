@@ -298,6 +298,39 @@ impl Context {
             three_d,
         } = pixels;
         let store = self.pixel_store;
+        // WebGL 2: rows shorter than the rectangle they hold, and images shorter than theirs,
+        // are refused; a 3D upload is neither flipped nor premultiplied.
+        if store.unpack_row_length > 0
+            && i64::from(store.unpack_row_length)
+                < i64::from(w) + i64::from(store.unpack_skip_pixels)
+        {
+            self.error(
+                gl::INVALID_OPERATION,
+                function,
+                "UNPACK_ROW_LENGTH is less than width + UNPACK_SKIP_PIXELS",
+            );
+            return None;
+        }
+        if three_d
+            && store.unpack_image_height > 0
+            && i64::from(store.unpack_image_height)
+                < i64::from(h) + i64::from(store.unpack_skip_rows)
+        {
+            self.error(
+                gl::INVALID_OPERATION,
+                function,
+                "UNPACK_IMAGE_HEIGHT is less than height + UNPACK_SKIP_ROWS",
+            );
+            return None;
+        }
+        if three_d && (store.unpack_flip_y || store.unpack_premultiply_alpha) {
+            self.error(
+                gl::INVALID_OPERATION,
+                function,
+                "UNPACK_FLIP_Y_WEBGL or UNPACK_PREMULTIPLY_ALPHA_WEBGL with a 3D upload",
+            );
+            return None;
+        }
         let u = unpack_layout(&store, w, h, d, pixel_size(format, ty), three_d);
         if src.len() < u.needed {
             self.error(
