@@ -140,7 +140,11 @@ export function u64(v) {
   if (!Number.isFinite(x)) return 0;
   x = Math.trunc(x);
   if (x >= 0 && x < TWO_64) return x;
-  return ((x % TWO_64) + TWO_64) % TWO_64;
+  const m = x % TWO_64;
+  if (m >= 0) return m;
+  // Negative: 2^64 + m, which rounds to 2^64 when m is small; the largest double below
+  // 2^64 stands for it (-1 is 2^64 - 1 to WebIDL: an offset past any array).
+  return Math.min(TWO_64 + m, TWO_64 - 2048);
 }
 
 /** An `unsigned long long` element offset as the native side takes it (past 2^32 - 1: that). */

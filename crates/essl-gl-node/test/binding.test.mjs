@@ -73,6 +73,16 @@ test('WebIDL conversions: numbers modulo, too few arguments and wrong types are 
   // undefined for a nullable object is null.
   gl.bindBuffer(gl.ARRAY_BUFFER, undefined);
   assert.equal(gl.getError(), gl.NO_ERROR);
+  // An unsigned long long srcOffset of -1 is 2^64 - 1: past the view, INVALID_OPERATION.
+  const t = gl.createTexture();
+  gl.bindTexture(gl.TEXTURE_2D, t);
+  for (const o of [-1, 5]) {
+    gl.texImage2D(gl.TEXTURE_2D, 0, gl.RGBA8, 1, 1, 0, gl.RGBA, gl.UNSIGNED_BYTE, new Uint8Array(4), o);
+    assert.equal(gl.getError(), gl.INVALID_OPERATION, `srcOffset ${o}`);
+  }
+  gl.texImage2D(gl.TEXTURE_2D, 0, gl.RGBA8, 1, 1, 0, gl.RGBA, gl.UNSIGNED_BYTE, new Uint8Array(8), 4);
+  assert.equal(gl.getError(), gl.NO_ERROR);
+  gl.deleteTexture(t);
 });
 
 test('a bad value is a GL error, never an exception', () => {

@@ -185,7 +185,15 @@ impl NativeContext {
             Some(v) => match v.window(offset, 0) {
                 Some(w) => Some(w),
                 None => {
-                    self.past_end(upload.name());
+                    // As Chromium: an srcOffset past the view's end leaves too little data,
+                    // INVALID_OPERATION.
+                    if let Some(c) = &self.ctx {
+                        c.synthesize_error(
+                            essl_gl::gl::INVALID_OPERATION,
+                            upload.name(),
+                            "srcOffset past the end of the ArrayBufferView",
+                        );
+                    }
                     return Ok(());
                 }
             },
