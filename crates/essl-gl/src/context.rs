@@ -76,10 +76,12 @@ pub struct Context {
 }
 
 /// The wgpu features essl-gl asks for when the adapter has them: vertex shaders that write
-/// storage buffers (transform feedback), `DEPTH32F_STENCIL8`, filterable 32-bit floats.
+/// storage buffers (transform feedback), `DEPTH32F_STENCIL8`, filterable 32-bit floats, and
+/// `R11F_G11F_B10F` as a render target (`EXT_color_buffer_float`).
 const WANTED_FEATURES: wgpu::Features = wgpu::Features::VERTEX_WRITABLE_STORAGE
     .union(wgpu::Features::DEPTH32FLOAT_STENCIL8)
-    .union(wgpu::Features::FLOAT32_FILTERABLE);
+    .union(wgpu::Features::FLOAT32_FILTERABLE)
+    .union(wgpu::Features::RG11B10UFLOAT_RENDERABLE);
 
 impl Context {
     /// Creates a context with an offscreen default framebuffer of `width` × `height` pixels
