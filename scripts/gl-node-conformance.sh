@@ -3,7 +3,7 @@
 # Chromium, in one run; writes the committed results (crates/essl-gl-node/conformance/results)
 # and the tables of docs/conformance.md.
 #
-#   scripts/gl-node-conformance.sh [--from-git-dir GITDIR] [--jobs N] [--only SUBSTRING] [--skip-chromium]
+#   scripts/gl-node-conformance.sh [--from-git-dir GITDIR] [--jobs N] [--only SUBSTRING] [--every N] [--skip-chromium]
 #
 # The suite's sdk/tests come from KhronosGroup/WebGL at the commit scripts/fetch-test-data.sh
 # pins: from GITDIR (a clone or bare mirror holding it), from $ESSL_WEBGL_SRC (a checkout),
@@ -15,12 +15,13 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 root="$PWD"
 commit=f15a73f727d8ee66a3ec6d0bed9f02f08cacc2c1 # KhronosGroup/WebGL, as scripts/fetch-test-data.sh
-gitdir="" jobs=2 only="" chromium=1
+gitdir="" jobs=2 only="" every="" chromium=1
 while [ $# -gt 0 ]; do
     case "$1" in
         --from-git-dir) gitdir="$2"; shift 2 ;;
         --jobs) jobs="$2"; shift 2 ;;
         --only) only="$2"; shift 2 ;;
+        --every) every="$2"; shift 2 ;;
         --skip-chromium) chromium=0; shift ;;
         *) echo "unknown argument: $1" >&2; exit 2 ;;
     esac
@@ -45,6 +46,7 @@ runs="$root/test-data/webgl/runs"
 mkdir -p "$runs"
 filter=()
 [ -n "$only" ] && filter=(--only "$only")
+[ -n "$every" ] && filter+=(--every "$every")
 for ctx in webgl2 webgl1; do
     if [ "$chromium" = 1 ]; then
         node conformance/run.mjs --impl chromium --context "$ctx" --jobs "$jobs" --timeout 180 "${filter[@]}" --out "$runs/chromium-$ctx.jsonl"
@@ -54,4 +56,6 @@ for ctx in webgl2 webgl1; do
         ESSL_HEADLESS_GL="$runs/gl/node_modules/gl" node conformance/run.mjs --impl gl --context "$ctx" --jobs "$jobs" --timeout 120 "${filter[@]}" --out "$runs/gl-$ctx.jsonl"
     fi
 done
-node conformance/report.mjs --runs "$runs" --write-results --markdown "$root/docs/conformance.md" --intro conformance/intro.md
+sample=()
+[ -n "$every" ] && sample=(--every "$every")
+node conformance/report.mjs --runs "$runs" --write-results --markdown "$root/docs/conformance.md" --intro conformance/intro.md "${sample[@]}"

@@ -59,6 +59,14 @@ async function main() {
     virtualConsole,
     beforeParse(window) {
       install(window);
+      // jsdom's postMessage sends a message whose `source` is null; a browser's names the
+      // window that posted it, which the suite's setZeroTimeout (webgl-test-utils.js) checks.
+      window.postMessage = (data) => {
+        setTimeout(() => {
+          const e = new window.MessageEvent('message', { data, origin: window.location.origin, source: window });
+          window.dispatchEvent(e);
+        }, 0);
+      };
       window.webglTestHarness = {
         reportResults(_path, success, msg, skipped) {
           if (skipped) return;

@@ -2,12 +2,13 @@
 // Turns the JSON lines of conformance runs into the committed results and the tables of
 // docs/conformance.md.
 //
-//   node conformance/report.mjs --runs DIR [--write-results] [--markdown FILE]
+//   node conformance/report.mjs --runs DIR [--write-results] [--markdown FILE] [--intro FILE] [--every N]
 //
 // DIR holds {chromium,essl-gl,gl}-{webgl2,webgl1}.jsonl from conformance/run.mjs.
 // --write-results writes conformance/results/<impl>-<context>.json (per page: passed,
 // failed, finished, error), the expectation the test suite's sample compares with.
 // --markdown replaces the section of FILE that starts with the heading SECTION (or appends it).
+// --every N says the runs took every Nth page (run.mjs --every N).
 import { existsSync, mkdirSync, readFileSync, writeFileSync } from 'node:fs';
 import { dirname, join } from 'node:path';
 import { fileURLToPath } from 'node:url';
@@ -119,7 +120,10 @@ function main() {
   }
   if (a.markdown && parts.length) {
     const leftOut = LEFT_OUT.map(([p, why]) => `- \`${p}*\`: ${why}`).join('\n');
-    const section = `${SECTION}\n\n${a.intro ? readFileSync(a.intro, 'utf8') : ''}\n${parts.join('\n')}\nFolders left out (in both contexts), and why:\n\n${leftOut}\n`;
+    const sample = a.every
+      ? `This run took every ${a.every}th page of each context's list (\`run.mjs --every ${a.every}\`, the first page, the ${Number(a.every) + 1}th, …), in one invocation of \`scripts/gl-node-conformance.sh --every ${a.every}\`: Chromium's pages first, then essl-gl's, context by context.\n`
+      : '';
+    const section = `${SECTION}\n\n${a.intro ? readFileSync(a.intro, 'utf8') : ''}\n${sample}\n${parts.join('\n')}\nFolders left out (in both contexts), and why:\n\n${leftOut}\n`;
     const file = a.markdown;
     const old = existsSync(file) ? readFileSync(file, 'utf8') : '';
     const at = old.indexOf(SECTION);

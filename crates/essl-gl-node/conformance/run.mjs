@@ -3,10 +3,11 @@
 // line per page (resumable: pages already in the output are skipped).
 //
 //   node conformance/run.mjs --impl essl-gl|chromium|gl --context webgl2|webgl1 \
-//     [--sdk DIR] [--pages FILE] [--only SUBSTRING] [--jobs N] [--timeout S] --out FILE
+//     [--sdk DIR] [--pages FILE] [--only SUBSTRING] [--every N] [--jobs N] [--timeout S] --out FILE
 //
 // --sdk defaults to $ESSL_WEBGL_SDK, else test-data/webgl/sdk/tests of the repository
 // (scripts/gl-node-conformance.sh fetches it). --pages reads page paths, one a line.
+// --every N keeps every Nth page of the list (the first, the N+1th, …): a fixed sample.
 // essl-gl and gl run each page in its own Node process (a page that crashes or hangs is
 // recorded as such and the run goes on); chromium runs pages in tabs of one browser.
 import { spawn } from 'node:child_process';
@@ -40,6 +41,7 @@ export function selectPages(a) {
     pages = suite(a.sdk)[a.context].filter((p) => !leftOut(p));
   }
   if (a.only) pages = pages.filter((p) => p.includes(a.only));
+  if (a.every) pages = pages.filter((_, i) => i % Number(a.every) === 0);
   return pages;
 }
 
