@@ -9,7 +9,9 @@
 // failed, finished, error), the expectation the test suite's sample compares with.
 // --markdown replaces the section of FILE that starts with the heading SECTION (or appends it).
 // --every N says the runs took every Nth page (run.mjs --every N).
+import { execSync } from 'node:child_process';
 import { existsSync, mkdirSync, readFileSync, writeFileSync } from 'node:fs';
+import { arch, cpus, platform } from 'node:os';
 import { dirname, join } from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { LEFT_OUT } from './list.mjs';
@@ -123,12 +125,30 @@ function main() {
     const sample = a.every
       ? `This run took every ${a.every}th page of each context's list (\`run.mjs --every ${a.every}\`, the first page, the ${Number(a.every) + 1}th, …), in one invocation of \`scripts/gl-node-conformance.sh --every ${a.every}\`: Chromium's pages first, then essl-gl's, context by context.\n`
       : '';
-    const section = `${SECTION}\n\n${a.intro ? readFileSync(a.intro, 'utf8') : ''}\n${sample}\n${parts.join('\n')}\nFolders left out (in both contexts), and why:\n\n${leftOut}\n`;
+    const where = machine();
+    const section = `${SECTION}\n\n${a.intro ? readFileSync(a.intro, 'utf8') : ''}\n${sample}${where}\n\n${parts.join('\n')}\nFolders left out (in both contexts), and why:\n\n${leftOut}\n`;
     const file = a.markdown;
     const old = existsSync(file) ? readFileSync(file, 'utf8') : '';
     const at = old.indexOf(SECTION);
     writeFileSync(file, `${at >= 0 ? old.slice(0, at) : `${old.trimEnd()}\n\n`}${section}`);
   }
+}
+
+/** Where the tables were made: commit, cores, CPU, Chromium and Mesa versions. */
+function machine() {
+  const run = (cmd) => {
+    try {
+      return execSync(cmd, { encoding: 'utf8', stdio: ['ignore', 'pipe', 'ignore'] }).trim();
+    } catch {
+      return '?';
+    }
+  };
+  const commit = run('git rev-parse --short HEAD');
+  const dirty = run('git status --porcelain --untracked-files=no -- ../../crates ../../scripts') ? ' (with uncommitted changes)' : '';
+  const cpu = run("grep -m1 'model name' /proc/cpuinfo | cut -d: -f2").trim();
+  const chromium = run('chromium --version').split(' built')[0];
+  const mesa = run("dpkg-query -W -f '${Version}' mesa-vulkan-drivers");
+  return `Made at commit \`${commit}\`${dirty} on ${cpus().length} cores (${cpu}), ${platform()} ${arch()}: essl-gl on Mesa ${mesa}'s lavapipe, ${chromium} on SwiftShader.`;
 }
 
 main();
