@@ -251,6 +251,18 @@ impl Context {
             self.error(gl::INVALID_VALUE, function, "cube map faces must be square");
             return false;
         }
+        // WebGL 1: a mipmap level past 0 has power-of-two sides.
+        let pot = |n: i32| n & (n - 1) == 0;
+        if self.webgl1.on && level > 0 && !(pot(w) && pot(h)) {
+            self.error(
+                gl::INVALID_VALUE,
+                function,
+                format_args!(
+                    "level {level} of a WebGL 1 texture must have power-of-two sides, not {w}x{h}"
+                ),
+            );
+            return false;
+        }
         true
     }
 

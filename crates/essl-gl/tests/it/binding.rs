@@ -353,3 +353,39 @@ fn a_webgl1_context_refuses_webgl2_enums_until_an_extension_brings_them() {
         "no mipmaps of a non-power-of-two image"
     );
 }
+
+#[test]
+fn a_webgl1_mipmap_level_past_0_needs_power_of_two_sides() {
+    let Some(mut ctx) = common::context(4, 4) else {
+        return;
+    };
+    ctx.set_webgl1();
+    let t = ctx.create_texture();
+    ctx.bind_texture(gl::TEXTURE_2D, Some(t));
+    let none: Option<&[u8]> = None;
+    for (level, w, h, want) in [
+        (0, 3, 5, gl::NO_ERROR),
+        (1, 3, 4, gl::INVALID_VALUE),
+        (1, 2, 4, gl::NO_ERROR),
+        (2, 1, 0, gl::NO_ERROR),
+    ] {
+        ctx.tex_image_2d(
+            gl::TEXTURE_2D,
+            level,
+            gl::RGBA as i32,
+            w,
+            h,
+            0,
+            gl::RGBA,
+            gl::UNSIGNED_BYTE,
+            none,
+        );
+        assert_eq!(ctx.get_error(), want, "texImage2D level {level}, {w}x{h}");
+    }
+    ctx.copy_tex_image_2d(gl::TEXTURE_2D, 1, gl::RGBA, 0, 0, 3, 3, 0);
+    assert_eq!(
+        ctx.get_error(),
+        gl::INVALID_VALUE,
+        "copyTexImage2D level 1, 3x3"
+    );
+}
