@@ -389,3 +389,30 @@ fn a_webgl1_mipmap_level_past_0_needs_power_of_two_sides() {
         "copyTexImage2D level 1, 3x3"
     );
 }
+
+#[test]
+fn a_current_program_whose_relink_failed_draws_nothing_and_takes_no_uniforms() {
+    let Some(mut ctx) = common::context(4, 4) else {
+        return;
+    };
+    let p = common::program(
+        &mut ctx,
+        "#version 300 es\nvoid main() { gl_Position = vec4(0.0, 0.0, 0.0, 1.0); }",
+        "#version 300 es\nprecision mediump float; uniform vec4 u; out vec4 o; void main() { o = u; }",
+    );
+    ctx.use_program(Some(p));
+    let u = ctx.get_uniform_location(p, "u");
+    ctx.uniform4fv(u, &[1.0, 0.0, 0.0, 1.0]);
+    ctx.draw_arrays(gl::POINTS, 0, 1);
+    assert_eq!(ctx.get_error(), gl::NO_ERROR);
+    // A relink without a fragment shader fails: WebGL keeps no executable from before.
+    let fs = ctx.get_attached_shaders(p)[1];
+    ctx.detach_shader(p, fs);
+    ctx.link_program(p);
+    assert!(!ctx.get_program_link_status(p));
+    assert_eq!(ctx.get_error(), gl::NO_ERROR);
+    ctx.uniform4fv(u, &[0.0, 1.0, 0.0, 1.0]);
+    assert_eq!(ctx.get_error(), gl::INVALID_OPERATION, "uniform4fv");
+    ctx.draw_arrays(gl::POINTS, 0, 1);
+    assert_eq!(ctx.get_error(), gl::INVALID_OPERATION, "drawArrays");
+}
