@@ -144,7 +144,7 @@ function machine() {
     }
   };
   const commit = run('git rev-parse --short HEAD');
-  const dirty = run('git status --porcelain --untracked-files=no -- ../../crates ../../scripts') ? ' (with uncommitted changes)' : '';
+  const dirty = run("git status --porcelain --untracked-files=no -- ../../crates ../../scripts ':(exclude)conformance/results'") ? ' (with uncommitted changes)' : '';
   const cpu = run("grep -m1 'model name' /proc/cpuinfo | cut -d: -f2").trim();
   const chromium = run('chromium --version').split(' built')[0];
   const mesa = run("dpkg-query -W -f '${Version}' mesa-vulkan-drivers");
