@@ -2,8 +2,8 @@
 # Installs what essl's tests and renders need on a fresh Debian machine (Rust comes with the
 # machine): a software Vulkan driver (Mesa's lavapipe) and the Vulkan loader, so that wgpu
 # finds an adapter without a GPU; and Neovim, the headless editor scripts/editor-neovim.sh drives
-# against `essl server`. Optional extras for benchmarks and oracle runs:
-#   ESSL_SETUP_EXTRAS=1 also installs chromium (WebGL2 oracle/peer), glslang-tools and hyperfine.
+# against `essl server`; Node.js, npm and Chromium for the npm packages' tests. Optional extras
+# for benchmarks: ESSL_SETUP_EXTRAS=1 also installs glslang-tools and hyperfine.
 # Idempotent: does nothing when everything is already there.
 set -euo pipefail
 
@@ -11,8 +11,13 @@ need=()
 dpkg -s mesa-vulkan-drivers >/dev/null 2>&1 || need+=(mesa-vulkan-drivers)
 dpkg -s libvulkan1 >/dev/null 2>&1 || need+=(libvulkan1)
 dpkg -s neovim >/dev/null 2>&1 || need+=(neovim)
+# The npm packages' tests: Node.js and npm, and Chromium for Vite's error overlay in a real
+# browser (crates/essl-node/test/overlay.test.mjs).
+command -v node >/dev/null 2>&1 || need+=(nodejs)
+command -v npm >/dev/null 2>&1 || need+=(npm)
+dpkg -s chromium >/dev/null 2>&1 || command -v chromium >/dev/null 2>&1 || need+=(chromium)
 if [ "${ESSL_SETUP_EXTRAS:-0}" = 1 ]; then
-    for p in chromium glslang-tools hyperfine; do
+    for p in glslang-tools hyperfine; do
         dpkg -s "$p" >/dev/null 2>&1 || need+=("$p")
     done
 fi

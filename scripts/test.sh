@@ -22,4 +22,6 @@ cargo test --workspace --all-targets --no-run --quiet
 cargo test --workspace --quiet
 # The npm package (crates/essl-node): its API and real Vite, Rollup and webpack builds.
 ./scripts/test-essl-node.sh
+# The Node.js addon (crates/essl-gl-node): node --test of the binding, three.js, conformance pages.
+./scripts/test-gl-node.sh
 ESSL="$PWD/target/debug/essl" ./scripts/editor-neovim.sh

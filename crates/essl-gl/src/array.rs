@@ -22,6 +22,11 @@ pub enum ArrayType {
     Uint32,
     /// `Float32Array`.
     Float32,
+    /// `Uint8ClampedArray`: where a `Uint8Array` is allowed, so is it.
+    Uint8Clamped,
+    /// `Float64Array`, `BigInt64Array`, `BigUint64Array`, `Float16Array` or a `DataView`:
+    /// views that no WebGL call accepts for pixel data (`INVALID_OPERATION`).
+    Other,
 }
 
 impl ArrayType {
@@ -35,6 +40,8 @@ impl ArrayType {
             ArrayType::Int32 => "Int32Array",
             ArrayType::Uint32 => "Uint32Array",
             ArrayType::Float32 => "Float32Array",
+            ArrayType::Uint8Clamped => "Uint8ClampedArray",
+            ArrayType::Other => "ArrayBufferView of another type",
         }
     }
 }
@@ -87,8 +94,42 @@ pub(crate) fn pixel_array_type(ty: u32) -> Option<ArrayType> {
     })
 }
 
+/// The bytes of a typed array and which typed array it is: client data as a binding of
+/// JavaScript holds it (a view of any type over an `ArrayBuffer`), for the `_view` forms of
+/// the calls that check the array's type against a pixel type.
+#[derive(Clone, Copy, Debug)]
+pub struct ArrayView<'a> {
+    /// Which typed array the bytes are.
+    pub array: ArrayType,
+    /// The view's bytes, in the machine's order.
+    pub bytes: &'a [u8],
+}
+
+impl<'a> ArrayView<'a> {
+    /// The view of a slice of an [`ArrayElement`] (a `&[f32]` is a `Float32Array`).
+    pub fn of<T: ArrayElement>(elements: &'a [T]) -> ArrayView<'a> {
+        ArrayView {
+            array: T::TYPE,
+            bytes: bytemuck::cast_slice(elements),
+        }
+    }
+}
+
+/// A typed array to write into: [`ArrayView`]'s mutable form (`readPixels`).
+#[derive(Debug)]
+pub struct ArrayViewMut<'a> {
+    /// Which typed array the bytes are.
+    pub array: ArrayType,
+    /// The view's bytes, in the machine's order.
+    pub bytes: &'a mut [u8],
+}
+
 /// Why pixel data of `array` type cannot go with pixel `ty`, or `None` when it can.
 pub(crate) fn array_mismatch(ty: u32, array: ArrayType) -> Option<String> {
+    let array = match array {
+        ArrayType::Uint8Clamped => ArrayType::Uint8,
+        a => a,
+    };
     match pixel_array_type(ty) {
         Some(t) if t == array => None,
         Some(t) => Some(format!(

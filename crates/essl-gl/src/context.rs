@@ -68,16 +68,20 @@ pub struct Context {
     pub(crate) linker: Linker,
     /// The uniform-value checks ([`Context::set_validation`]) and their warnings.
     pub(crate) validation: crate::validation::Validation,
+    /// Whether this is a WebGL 1 context, and its WebGL 1 extensions.
+    pub(crate) webgl1: crate::webgl1::Webgl1,
     /// How many times [`Context::present`] ran: queries and fences ended before one are
     /// answered after it.
     pub(crate) presents: u64,
 }
 
 /// The wgpu features essl-gl asks for when the adapter has them: vertex shaders that write
-/// storage buffers (transform feedback), `DEPTH32F_STENCIL8`, filterable 32-bit floats.
+/// storage buffers (transform feedback), `DEPTH32F_STENCIL8`, filterable 32-bit floats, and
+/// `R11F_G11F_B10F` as a render target (`EXT_color_buffer_float`).
 const WANTED_FEATURES: wgpu::Features = wgpu::Features::VERTEX_WRITABLE_STORAGE
     .union(wgpu::Features::DEPTH32FLOAT_STENCIL8)
-    .union(wgpu::Features::FLOAT32_FILTERABLE);
+    .union(wgpu::Features::FLOAT32_FILTERABLE)
+    .union(wgpu::Features::RG11B10UFLOAT_RENDERABLE);
 
 impl Context {
     /// Creates a context with an offscreen default framebuffer of `width` × `height` pixels
@@ -191,6 +195,7 @@ impl Context {
             linker: Linker::default(),
             validation: Default::default(),
             presents: 0,
+            webgl1: Default::default(),
             gpu,
         };
         if !attributes.alpha {
@@ -268,6 +273,13 @@ impl Context {
         let _ = self.gpu.device.poll(wgpu::PollType::wait_indefinitely());
     }
 
+    /// Records WebGL error `code` for `function` as a binding does for what only it can see
+    /// (a `srcOffset` past the end of a JavaScript array, an object of a context that is
+    /// gone): the first error sticks, as with every error essl-gl records.
+    pub fn synthesize_error(&self, code: u32, function: &str, what: &str) {
+        self.error(code, function, what);
+    }
+
     /// Records a GL error (the first one sticks) with a message naming the function.
     pub(crate) fn error(&self, code: u32, function: &str, what: impl std::fmt::Display) {
         self.errors.record(code, || {
@@ -307,6 +319,9 @@ impl Context {
     }
 
     fn supported(&self) -> Vec<Extension> {
+        if self.webgl1.on {
+            return crate::webgl1::WEBGL1_EXTENSIONS.to_vec();
+        }
         let mut v = vec![
             Extension::ColorBufferFloat,
             Extension::ColorBufferHalfFloat,
@@ -341,6 +356,7 @@ impl Context {
             Extension::FloatBlend => x.float_blend = true,
             Extension::TextureFloatLinear => x.texture_float_linear = true,
             Extension::ParallelShaderCompile => x.parallel_shader_compile = true,
+            webgl1 => self.enable_webgl1_extension(webgl1),
         }
         Some(e)
     }

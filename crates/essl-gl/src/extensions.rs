@@ -37,6 +37,22 @@ pub enum Extension {
     TextureFloatLinear,
     /// `KHR_parallel_shader_compile`.
     ParallelShaderCompile,
+    /// `ANGLE_instanced_arrays` (WebGL 1).
+    AngleInstancedArrays,
+    /// `EXT_blend_minmax` (WebGL 1).
+    ExtBlendMinmax,
+    /// `EXT_frag_depth` (WebGL 1).
+    ExtFragDepth,
+    /// `EXT_shader_texture_lod` (WebGL 1).
+    ExtShaderTextureLod,
+    /// `OES_element_index_uint` (WebGL 1).
+    OesElementIndexUint,
+    /// `OES_standard_derivatives` (WebGL 1).
+    OesStandardDerivatives,
+    /// `OES_vertex_array_object` (WebGL 1).
+    OesVertexArrayObject,
+    /// `WEBGL_draw_buffers` (WebGL 1).
+    WebglDrawBuffers,
 }
 
 impl Extension {
@@ -48,6 +64,14 @@ impl Extension {
             Extension::FloatBlend => "EXT_float_blend",
             Extension::TextureFloatLinear => "OES_texture_float_linear",
             Extension::ParallelShaderCompile => "KHR_parallel_shader_compile",
+            Extension::AngleInstancedArrays => "ANGLE_instanced_arrays",
+            Extension::ExtBlendMinmax => "EXT_blend_minmax",
+            Extension::ExtFragDepth => "EXT_frag_depth",
+            Extension::ExtShaderTextureLod => "EXT_shader_texture_lod",
+            Extension::OesElementIndexUint => "OES_element_index_uint",
+            Extension::OesStandardDerivatives => "OES_standard_derivatives",
+            Extension::OesVertexArrayObject => "OES_vertex_array_object",
+            Extension::WebglDrawBuffers => "WEBGL_draw_buffers",
         }
     }
 }

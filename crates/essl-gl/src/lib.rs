@@ -95,8 +95,9 @@ mod texture;
 mod transform_feedback;
 mod validation;
 mod vertex_array;
+mod webgl1;
 
-pub use array::{ArrayElement, ArrayType};
+pub use array::{ArrayElement, ArrayType, ArrayView, ArrayViewMut};
 pub use bytemuck;
 pub use context::{Context, MAX_TEXTURE_UNITS, MAX_VERTEX_ATTRIBS};
 pub use error::{error_name, ContextError};
@@ -110,6 +111,7 @@ pub use program::{ActiveInfo, ProgramFilter};
 pub use query::{
     Parameter, ShaderPrecisionFormat, SHADING_LANGUAGE_VERSION, SUBPIXEL_BITS, VENDOR, VERSION,
 };
+pub use texture::{ImageSource, SourceUpload};
 pub use validation::{SourceLocation, ValidationWarning, MAX_VALIDATION_WARNINGS};
 pub use wgpu;
 

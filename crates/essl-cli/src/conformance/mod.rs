@@ -338,9 +338,13 @@ pub fn score_with(dir: &Path, peers: bool) -> Result<Report, CorpusError> {
     Ok(report)
 }
 
+/// The heading of docs/conformance.md's section written by the Node conformance run, which
+/// `run` keeps when it rewrites the file.
+const KEPT_SECTION: &str = "## The WebGL conformance suite in Node (essl-gl-node)";
+
 /// Runs `essl conformance`: prints the tables (and the failures with `list_failures`), writes
-/// the Markdown page when asked, and returns the exit status (0, or 2 when the corpora cannot
-/// be read or the page cannot be written).
+/// the Markdown page when asked (keeping the Node suite's section), and returns the exit
+/// status (0, or 2 when the corpora cannot be read or the page cannot be written).
 pub fn run(corpora: &Path, markdown: Option<&Path>, list_failures: bool) -> i32 {
     let report = match score_with(corpora, true) {
         Ok(r) => r,
@@ -366,7 +370,18 @@ pub fn run(corpora: &Path, markdown: Option<&Path>, list_failures: bool) -> i32 
         println!("\nbars not met: {}", unmet.join("; "));
     }
     if let Some(path) = markdown {
-        if let Err(e) = std::fs::write(path, report.markdown()) {
+        // The sections other tools write (the WebGL suite in Node, from
+        // crates/essl-gl-node/conformance/report.mjs) follow this report's; keep them.
+        let kept = std::fs::read_to_string(path)
+            .ok()
+            .and_then(|old| old.find(KEPT_SECTION).map(|at| old[at..].to_string()))
+            .unwrap_or_default();
+        let text = if kept.is_empty() {
+            report.markdown()
+        } else {
+            format!("{}\n{kept}", report.markdown().trim_end())
+        };
+        if let Err(e) = std::fs::write(path, text) {
             eprintln!(
                 "error: cannot write `{}`: {}",
                 path.display(),

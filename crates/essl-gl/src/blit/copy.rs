@@ -90,16 +90,28 @@ impl Context {
         border: i32,
     ) {
         const F: &str = "copyTexImage2D";
+        let unsized_format = matches!(
+            internalformat,
+            gl::ALPHA | gl::LUMINANCE | gl::LUMINANCE_ALPHA | gl::RGB | gl::RGBA
+        );
+        if self.webgl1_refuses(F, &[target]) {
+            return;
+        }
+        if self.webgl1.on && !unsized_format {
+            return self.error(gl::INVALID_ENUM, F, "not an internal format of WebGL 1");
+        }
         let Some((bind, face)) = image_target(target)
             .filter(|(b, _)| matches!(*b, gl::TEXTURE_2D | gl::TEXTURE_CUBE_MAP))
         else {
             return self.error(gl::INVALID_ENUM, F, format_args!("target 0x{target:04X}"));
         };
         // Chromium takes float formats only where they can be rendered
-        // (`EXT_color_buffer_float`): otherwise they are unknown enums here.
+        // (`EXT_color_buffer_float`): otherwise they are unknown enums here; the SNORM
+        // formats, which no framebuffer holds, are refused the same way.
         let format = internal_format(internalformat)
             .ok()
-            .filter(|f| !is_float(f) || self.extensions.color_buffer_float);
+            .filter(|f| !is_float(f) || self.extensions.color_buffer_float)
+            .filter(|f| f.comp != crate::texture::Comp::Snorm8);
         let Some(format) = format else {
             return self.error(
                 gl::INVALID_ENUM,

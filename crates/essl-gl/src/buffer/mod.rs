@@ -100,6 +100,9 @@ impl Context {
     /// As WebGL requires, a buffer first bound to `ELEMENT_ARRAY_BUFFER` cannot later be bound
     /// to a target for other data, and the reverse (`INVALID_OPERATION`).
     pub fn bind_buffer(&mut self, target: u32, buffer: Option<Buffer>) {
+        if self.webgl1_refuses("bindBuffer", &[target]) {
+            return;
+        }
         self.bind_buffer_checked(target, buffer, "bindBuffer");
     }
 

@@ -325,9 +325,12 @@ impl Context {
                     slot_bindings.push(SlotBinding {
                         dim: plan.dim,
                         kind: plan.kind,
-                        filterable: c.format.filterable()
-                            || (self.extensions.texture_float_linear
-                                && c.format.comp == crate::texture::Comp::F32),
+                        // A depth texture sampled for its values (no comparison) is an
+                        // unfilterable float texture to wgpu.
+                        filterable: (!c.format.has_depth() || shadow)
+                            && (c.format.filterable()
+                                || (self.extensions.texture_float_linear
+                                    && c.format.comp == crate::texture::Comp::F32)),
                     });
                     resources.push((view, sampler));
                 }

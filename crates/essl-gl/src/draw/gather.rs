@@ -238,7 +238,7 @@ impl Context {
                 self.objects
                     .textures
                     .get_any(id)
-                    .and_then(|t| t.completeness(float_linear, &sampling))
+                    .and_then(|t| t.completeness(float_linear, self.webgl1.on, &sampling))
                     .map(|c| (id, c, sampling))
             });
             if let Some((id, c, sampling)) = &texture {

@@ -147,6 +147,9 @@ impl Context {
     /// `UNSIGNED_INT`) read from byte `offset` of the element array buffer (`drawElements`).
     /// The fixed primitive restart index (all ones) is always enabled, as in WebGL2.
     pub fn draw_elements(&mut self, mode: u32, count: i32, ty: u32, offset: i64) {
+        if self.webgl1_refuses_index_type(ty, "drawElements") {
+            return;
+        }
         self.draw(DrawArgs {
             mode,
             first: 0,
@@ -166,6 +169,9 @@ impl Context {
         offset: i64,
         instance_count: i32,
     ) {
+        if self.webgl1_refuses_index_type(ty, "drawElementsInstanced") {
+            return;
+        }
         self.draw(DrawArgs {
             mode,
             first: 0,

@@ -43,6 +43,13 @@ impl Context {
         let Some(pid) = self.bindings.program() else {
             return self.fail(gl::INVALID_OPERATION, f, "no program in use");
         };
+        if self.objects.linked(pid).is_none() {
+            return self.fail(
+                gl::INVALID_OPERATION,
+                f,
+                "the program in use was relinked and its link failed",
+            );
+        }
         let session = self.capturing();
         if let Some(session) = session {
             self.check_capture_mode(&args, session.mode)?;

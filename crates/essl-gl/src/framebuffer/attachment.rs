@@ -48,6 +48,12 @@ impl Context {
         pname: u32,
     ) -> Option<Parameter> {
         const F: &str = "getFramebufferAttachmentParameter";
+        if self.webgl1_refuses(
+            "getFramebufferAttachmentParameter",
+            &[target, attachment, pname],
+        ) {
+            return None;
+        }
         let [d, r] = self.bindings.framebuffers();
         let bound = match target {
             gl::FRAMEBUFFER | gl::DRAW_FRAMEBUFFER => d,

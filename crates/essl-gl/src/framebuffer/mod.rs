@@ -63,6 +63,9 @@ impl Context {
     /// binding), `DRAW_FRAMEBUFFER` or `READ_FRAMEBUFFER`; `None` binds the default one.
     pub fn bind_framebuffer(&mut self, target: u32, framebuffer: Option<Framebuffer>) {
         const F: &str = "bindFramebuffer";
+        if self.webgl1_refuses("bindFramebuffer", &[target]) {
+            return;
+        }
         let Some((draw, read)) = target_slots(target) else {
             return self.error(gl::INVALID_ENUM, F, format_args!("target 0x{target:04X}"));
         };
@@ -149,6 +152,9 @@ impl Context {
         level: i32,
     ) {
         const F: &str = "framebufferTexture2D";
+        if self.webgl1_refuses("framebufferTexture2D", &[target, attachment]) {
+            return;
+        }
         let Some(fb) = self.bound_framebuffer(target, F) else {
             return;
         };
@@ -277,6 +283,12 @@ impl Context {
         renderbuffer: Option<crate::Renderbuffer>,
     ) {
         const F: &str = "framebufferRenderbuffer";
+        if self.webgl1_refuses(
+            "framebufferRenderbuffer",
+            &[target, attachment, renderbuffertarget],
+        ) {
+            return;
+        }
         let Some(fb) = self.bound_framebuffer(target, F) else {
             return;
         };

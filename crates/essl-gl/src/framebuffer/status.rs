@@ -127,6 +127,9 @@ impl Context {
     /// `FRAMEBUFFER_COMPLETE` for the default framebuffer; an unknown target →
     /// `INVALID_ENUM` and 0.
     pub fn check_framebuffer_status(&self, target: u32) -> u32 {
+        if self.webgl1_refuses("checkFramebufferStatus", &[target]) {
+            return 0;
+        }
         let [d, r] = self.bindings.framebuffers();
         let id = match target {
             gl::FRAMEBUFFER | gl::DRAW_FRAMEBUFFER => d,

@@ -105,12 +105,14 @@ fn source(key: &BlitKey) -> String {
             "textureLoad(src, texel, 0).x".to_owned(),
         ),
     };
+    // Abstract-integer literals, so that the swizzles build vectors of float, signed and
+    // unsigned integer sources alike.
     let swizzle = match key.channels {
         Channels::Rgba => "v",
-        Channels::Rgb1 => "vec4(v.rgb, 1.0)",
-        Channels::Luminance => "vec4(v.rrr, 1.0)",
+        Channels::Rgb1 => "vec4(v.rgb, 1)",
+        Channels::Luminance => "vec4(v.rrr, 1)",
         Channels::LuminanceAlpha => "vec4(v.rrr, v.a)",
-        Channels::Alpha => "vec4(0.0, 0.0, 0.0, v.a)",
+        Channels::Alpha => "vec4(0, 0, 0, v.a)",
     };
     let mut outputs = Vec::new();
     let mut writes = Vec::new();
@@ -286,5 +288,50 @@ impl PipelineCache {
         self.blit
             .insert(key.clone(), (pipeline.clone(), group1.clone()));
         (pipeline, group1)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Every channel layout builds a valid shader from float, signed and unsigned sources
+    /// (copyTexImage2D from an integer framebuffer into an `RGB` integer format included).
+    #[test]
+    fn every_blit_shader_parses_and_validates() {
+        let channels = [
+            Channels::Rgba,
+            Channels::Rgb1,
+            Channels::Luminance,
+            Channels::LuminanceAlpha,
+            Channels::Alpha,
+        ];
+        let formats = [
+            (ClearKind::Float, wgpu::TextureFormat::Rgba8Unorm),
+            (ClearKind::Int, wgpu::TextureFormat::Rgba8Sint),
+            (ClearKind::Uint, wgpu::TextureFormat::Rgba8Uint),
+        ];
+        for channels in channels {
+            for (kind, format) in formats {
+                for samples in [1, 4] {
+                    let key = BlitKey {
+                        source: BlitSource::Color { kind, samples },
+                        linear: false,
+                        channels,
+                        colors: vec![Some((format, kind))],
+                        depth: None,
+                        stencil_mask: 0,
+                    };
+                    let module = naga::front::wgsl::parse_str(&source(&key))
+                        .unwrap_or_else(|e| panic!("{key:?}: {e}"));
+                    naga::valid::Validator::new(
+                        naga::valid::ValidationFlags::all(),
+                        naga::valid::Capabilities::all(),
+                    )
+                    .validate(&module)
+                    .unwrap_or_else(|e| panic!("{key:?}: {e:?}"));
+                }
+            }
+        }
     }
 }

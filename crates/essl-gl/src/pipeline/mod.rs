@@ -250,13 +250,16 @@ impl PipelineCache {
                 }),
             });
         }
+        // A block reads at most MAX_UNIFORM_BLOCK_SIZE bytes (the device's binding limit),
+        // however large the range GL bound: bind no more than that.
+        let max = gpu.limits.max_uniform_buffer_binding_size;
         for (i, (buffer, offset, size)) in blocks.iter().enumerate() {
             entries.push(wgpu::BindGroupEntry {
                 binding: 1 + i as u32,
                 resource: wgpu::BindingResource::Buffer(wgpu::BufferBinding {
                     buffer,
                     offset: *offset,
-                    size: wgpu::BufferSize::new(*size),
+                    size: wgpu::BufferSize::new((*size).min(max)),
                 }),
             });
         }

@@ -184,6 +184,9 @@ impl Context {
     /// The location of a fragment output, or −1 (`getFragDataLocation`): `"color"`,
     /// `"colors[2]"`. A program that is not linked → `INVALID_OPERATION`.
     pub fn get_frag_data_location(&self, program: Program, name: &str) -> i32 {
+        if !self.valid_name(name, true, "getFragDataLocation") {
+            return -1;
+        }
         let Some(linked) = self.linked_program(program, "getFragDataLocation") else {
             return -1;
         };

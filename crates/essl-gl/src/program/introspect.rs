@@ -13,6 +13,9 @@ impl Context {
     /// `None` for a name that is not active; an unlinked program → `INVALID_OPERATION`.
     pub fn get_uniform_location(&self, program: Program, name: &str) -> Option<UniformLocation> {
         let ctx = self.id;
+        if !self.valid_name(name, true, "getUniformLocation") {
+            return None;
+        }
         let linked = self.linked_program(program, "getUniformLocation")?;
         if name.starts_with("gl_") || name.starts_with("webgl_") || name.starts_with("_webgl_") {
             return None;
@@ -29,6 +32,9 @@ impl Context {
 
     /// The index of a uniform block by name, or `INVALID_INDEX` (`getUniformBlockIndex`).
     pub fn get_uniform_block_index(&self, program: Program, name: &str) -> u32 {
+        if !self.valid_name(name, false, "getUniformBlockIndex") {
+            return gl::INVALID_INDEX;
+        }
         let Some(linked) = self.linked_program(program, "getUniformBlockIndex") else {
             return gl::INVALID_INDEX;
         };
@@ -94,7 +100,7 @@ impl Context {
     /// `gl_`/`webgl_` name have none: −1, as in WebGL.
     pub fn get_attrib_location(&self, program: Program, name: &str) -> i32 {
         const F: &str = "getAttribLocation";
-        if self.program_id(program, F).is_none() {
+        if !self.valid_name(name, true, F) || self.program_id(program, F).is_none() {
             return -1;
         }
         if name.starts_with("gl_") || name.starts_with("webgl_") || name.starts_with("_webgl_") {
@@ -109,5 +115,38 @@ impl Context {
             .iter()
             .find(|a| a.name == name)
             .map_or(-1, |a| a.location as i32)
+    }
+
+    /// WebGL's checks of a name a program is asked about: characters outside GLSL ES's
+    /// character set (`"`, `$`, `'`, `@`, `\`, `` ` ``, controls other than whitespace,
+    /// non-ASCII) and, where `length` applies, more than 256 characters (WebGL 1) or 1024
+    /// (WebGL 2) → `INVALID_VALUE`.
+    pub(crate) fn valid_name(&self, name: &str, length: bool, function: &str) -> bool {
+        let max = if self.linker.shaders.target == essl::Target::WebGl1 {
+            256
+        } else {
+            1024
+        };
+        if length && name.len() > max {
+            self.error(
+                gl::INVALID_VALUE,
+                function,
+                format_args!("name longer than {max} characters"),
+            );
+            return false;
+        }
+        let bad = |c: char| {
+            !(c.is_ascii_graphic() || matches!(c, ' ' | '\t' | '\n' | '\x0B' | '\x0C' | '\r'))
+                || matches!(c, '"' | '$' | '\'' | '@' | '\\' | '`')
+        };
+        if name.chars().any(bad) {
+            self.error(
+                gl::INVALID_VALUE,
+                function,
+                "name has a character outside GLSL ES's character set",
+            );
+            return false;
+        }
+        true
     }
 }

@@ -114,6 +114,9 @@ impl Context {
     /// `INVALID_OPERATION`.
     pub fn bind_attrib_location(&mut self, program: Program, index: u32, name: &str) {
         const F: &str = "bindAttribLocation";
+        if !self.valid_name(name, true, F) {
+            return;
+        }
         let Some(p) = self.program_id(program, F) else {
             return;
         };

@@ -77,7 +77,11 @@ impl Context {
                 }
             }
             Err(e) => {
+                // WebGL, unlike GL ES, keeps no executable from an earlier link: a current
+                // program whose link failed draws nothing and takes no uniforms
+                // (INVALID_OPERATION), as in Chromium.
                 let obj = self.objects.programs.get_any_mut(p).expect("live");
+                obj.linked = None;
                 obj.link_status = false;
                 obj.validate_status = false;
                 obj.info_log = e.to_string();

@@ -124,6 +124,10 @@ impl Parameter {
 pub const VERSION: &str = "WebGL 2.0 (essl-gl)";
 /// `SHADING_LANGUAGE_VERSION` (WebGL requires the `"WebGL GLSL ES 3.00"` prefix).
 pub const SHADING_LANGUAGE_VERSION: &str = "WebGL GLSL ES 3.00 (essl)";
+/// `VERSION` of a WebGL 1 context.
+pub const VERSION_1: &str = "WebGL 1.0 (essl-gl)";
+/// `SHADING_LANGUAGE_VERSION` of a WebGL 1 context.
+pub const SHADING_LANGUAGE_VERSION_1: &str = "WebGL GLSL ES 1.0 (essl)";
 /// `VENDOR`.
 pub const VENDOR: &str = "essl";
 /// Bits of sub-pixel precision reported as `SUBPIXEL_BITS` (Vulkan's minimum is 4; lavapipe

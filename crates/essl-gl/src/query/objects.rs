@@ -25,6 +25,9 @@ impl Context {
     /// ([`Parameter::Int`]) or `BUFFER_USAGE` ([`Parameter::Enum`]).
     pub fn get_buffer_parameter(&self, target: u32, pname: u32) -> Option<Parameter> {
         const F: &str = "getBufferParameter";
+        if self.webgl1_refuses("getBufferParameter", &[target, pname]) {
+            return None;
+        }
         if !matches!(pname, gl::BUFFER_SIZE | gl::BUFFER_USAGE) {
             self.error(gl::INVALID_ENUM, F, format_args!("pname 0x{pname:04X}"));
             return None;
@@ -165,6 +168,9 @@ impl Context {
     /// `CURRENT_VERTEX_ATTRIB` (the generic value: floats, ints or uints).
     pub fn get_vertex_attrib(&self, index: u32, pname: u32) -> Option<Parameter> {
         const F: &str = "getVertexAttrib";
+        if self.webgl1_refuses("getVertexAttrib", &[pname]) {
+            return None;
+        }
         if index >= self.limits.max_vertex_attribs {
             self.error(gl::INVALID_VALUE, F, "index ≥ MAX_VERTEX_ATTRIBS");
             return None;

@@ -24,6 +24,18 @@ impl Context {
     ///
     /// Another `pname` → `INVALID_ENUM` and `None`.
     pub fn get_parameter(&self, pname: u32) -> Option<Parameter> {
+        if self.webgl1_refuses("getParameter", &[pname]) {
+            return None;
+        }
+        if self.webgl1.on {
+            match pname {
+                gl::VERSION => return Some(Parameter::String(super::VERSION_1.into())),
+                gl::SHADING_LANGUAGE_VERSION => {
+                    return Some(Parameter::String(super::SHADING_LANGUAGE_VERSION_1.into()))
+                }
+                _ => {}
+            }
+        }
         let value = self
             .state_parameter(pname)
             .or_else(|| self.binding_parameter(pname))

@@ -16,6 +16,9 @@ impl Context {
     /// still attached to a program can be queried (`DELETE_STATUS` is then true).
     pub fn get_shader_parameter(&self, shader: Shader, pname: u32) -> Option<Parameter> {
         const F: &str = "getShaderParameter";
+        if self.webgl1_refuses("getShaderParameter", &[pname]) {
+            return None;
+        }
         let id = self.shader_id(shader, F)?;
         let s = self.objects.shaders.get_any(id)?;
         match pname {
@@ -42,6 +45,9 @@ impl Context {
     /// that is still current can be queried (`DELETE_STATUS` is then true).
     pub fn get_program_parameter(&self, program: Program, pname: u32) -> Option<Parameter> {
         const F: &str = "getProgramParameter";
+        if self.webgl1_refuses("getProgramParameter", &[pname]) {
+            return None;
+        }
         let id = self.program_id(program, F)?;
         let p = self.objects.programs.get_any(id)?;
         let active = |n: fn(&essl::program::ProgramLayout) -> usize| {

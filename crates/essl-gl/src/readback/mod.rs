@@ -7,7 +7,7 @@ mod convert;
 
 pub(crate) use convert::native_pair;
 
-use crate::array::{array_mismatch, ArrayElement, ArrayType};
+use crate::array::{array_mismatch, ArrayElement, ArrayType, ArrayViewMut};
 use crate::context::Context;
 use crate::framebuffer::SurfaceImage;
 use crate::gl;
@@ -66,7 +66,30 @@ impl Context {
         ty: u32,
         dst: &mut [T],
     ) {
+        let dst = ArrayViewMut {
+            array: T::TYPE,
+            bytes: bytemuck::cast_slice_mut(dst),
+        };
+        self.read_pixels_view(x, y, width, height, format, ty, dst);
+    }
+
+    /// [`Context::read_pixels`] into a typed array of any kind (a binding's
+    /// `ArrayBufferView`): the array's type is checked against `ty` as WebGL does.
+    #[allow(clippy::too_many_arguments)] // WebGL2's own argument list
+    pub fn read_pixels_view(
+        &mut self,
+        x: i32,
+        y: i32,
+        width: i32,
+        height: i32,
+        format: u32,
+        ty: u32,
+        dst: ArrayViewMut,
+    ) {
         const F: &str = "readPixels";
+        if self.webgl1_refuses(F, &[format, ty]) {
+            return;
+        }
         if self.bindings.buffer(gl::PIXEL_PACK_BUFFER).is_some() {
             return self.error(
                 gl::INVALID_OPERATION,
@@ -81,9 +104,9 @@ impl Context {
             height,
             format,
             ty,
-            array: Some(T::TYPE),
+            array: Some(dst.array),
         };
-        self.read_into(&request, bytemuck::cast_slice_mut(dst), F);
+        self.read_into(&request, dst.bytes, F);
     }
 
     /// `readPixels` into the bound `PIXEL_PACK_BUFFER` at byte `offset` (WebGL2's overload
@@ -227,6 +250,48 @@ impl Context {
             }
         }
         Some(start..needed)
+    }
+
+    /// The drawing buffer's colour as 8-bit RGBA, top row first (an image file's order),
+    /// whatever framebuffer is bound and whatever its read buffer: what a canvas shows.
+    /// Colours are converted from the drawing buffer's format (`RGBA16F` is clamped); with
+    /// `alpha: false` alpha reads 1. Submits the recorded commands and waits for them.
+    pub fn read_drawing_buffer(&mut self) -> Vec<u8> {
+        let mut surface = self.default_read_surface();
+        let fb = &self.fb;
+        let (w, h) = (fb.width, fb.height);
+        let format = fb.format;
+        let image = surface.color.take().unwrap_or_else(|| SurfaceImage {
+            texture: fb.color.clone(),
+            mip: 0,
+            layer: 0,
+            format,
+            width: w,
+            height: h,
+            samples: 1,
+            slice_3d: false,
+            view: fb.color_view.clone(),
+            depth_slice: None,
+        });
+        let opaque = !fb.attributes.alpha;
+        let texel = image.format.texel_size();
+        let texels = self
+            .read_surface_image(&image, [0, 0], [w, h])
+            .unwrap_or_default();
+        let mut out = vec![0u8; (w * h * 4) as usize];
+        for (i, px) in out.chunks_exact_mut(4).enumerate() {
+            let (x, y) = (i % w as usize, i / w as usize);
+            // Row 0 of the image file is the top: GL's last row.
+            let src = (h as usize - 1 - y) * w as usize + x;
+            if let Some(t) = texels.get(src * texel..(src + 1) * texel) {
+                let rgba = convert::decode(&image.format, t);
+                convert::encode(rgba, gl::RGBA, gl::UNSIGNED_BYTE, px);
+            }
+            if opaque {
+                px[3] = 255;
+            }
+        }
+        out
     }
 
     /// The texels of a rectangle of a framebuffer image, tightly packed, row 0 first.

@@ -67,6 +67,9 @@ impl Context {
     /// `INVALID_ENUM`, a deleted renderbuffer → `INVALID_OPERATION`.
     pub fn bind_renderbuffer(&mut self, target: u32, renderbuffer: Option<Renderbuffer>) {
         const F: &str = "bindRenderbuffer";
+        if self.webgl1_refuses("bindRenderbuffer", &[target]) {
+            return;
+        }
         if target != gl::RENDERBUFFER {
             return self.error(gl::INVALID_ENUM, F, format_args!("target 0x{target:04X}"));
         }
@@ -108,6 +111,11 @@ impl Context {
         width: i32,
         height: i32,
     ) {
+        if self.webgl1_refuses("renderbufferStorage", &[target])
+            || self.webgl1_refuses_renderbuffer_format(internalformat)
+        {
+            return;
+        }
         self.storage(
             target,
             0,
@@ -220,6 +228,9 @@ impl Context {
     /// `_STENCIL_SIZE`.
     pub fn get_renderbuffer_parameter(&self, target: u32, pname: u32) -> Option<Parameter> {
         const F: &str = "getRenderbufferParameter";
+        if self.webgl1_refuses("getRenderbufferParameter", &[target, pname]) {
+            return None;
+        }
         if target != gl::RENDERBUFFER {
             self.error(gl::INVALID_ENUM, F, format_args!("target 0x{target:04X}"));
             return None;

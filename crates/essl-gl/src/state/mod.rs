@@ -116,16 +116,25 @@ impl Context {
     /// `STENCIL_TEST`, `POLYGON_OFFSET_FILL`, `RASTERIZER_DISCARD`, `SAMPLE_ALPHA_TO_COVERAGE`,
     /// `SAMPLE_COVERAGE`, …); an unknown one → `INVALID_ENUM`. `DITHER` is state only.
     pub fn enable(&mut self, cap: u32) {
+        if self.webgl1_refuses("enable", &[cap]) {
+            return;
+        }
         self.capability(cap, true, "enable");
     }
 
     /// Disables a capability; see [`Context::enable`].
     pub fn disable(&mut self, cap: u32) {
+        if self.webgl1_refuses("disable", &[cap]) {
+            return;
+        }
         self.capability(cap, false, "disable");
     }
 
     /// Whether a capability is enabled (`isEnabled`); an unknown one → `INVALID_ENUM`, false.
     pub fn is_enabled(&self, cap: u32) -> bool {
+        if self.webgl1_refuses("isEnabled", &[cap]) {
+            return false;
+        }
         match capability_flag!(self.state, cap) {
             Some(flag) => *flag,
             None => {
@@ -220,11 +229,17 @@ impl Context {
     /// Sets the blend equation for colour and alpha (`blendEquation`): `FUNC_ADD`,
     /// `FUNC_SUBTRACT`, `FUNC_REVERSE_SUBTRACT`, `MIN`, `MAX`.
     pub fn blend_equation(&mut self, mode: u32) {
+        if self.webgl1_refuses("blendEquation", &[mode]) {
+            return;
+        }
         self.blend_equation_separate_impl(mode, mode, "blendEquation");
     }
 
     /// Sets separate blend equations for colour and alpha (`blendEquationSeparate`).
     pub fn blend_equation_separate(&mut self, mode_rgb: u32, mode_alpha: u32) {
+        if self.webgl1_refuses("blendEquationSeparate", &[mode_rgb, mode_alpha]) {
+            return;
+        }
         self.blend_equation_separate_impl(mode_rgb, mode_alpha, "blendEquationSeparate");
     }
 
@@ -263,6 +278,9 @@ impl Context {
     /// `FRAGMENT_SHADER_DERIVATIVE_HINT` to `FASTEST`, `NICEST` or `DONT_CARE`. Kept and
     /// reported; essl-gl does one thing either way, as GL allows.
     pub fn hint(&mut self, target: u32, mode: u32) {
+        if self.webgl1_refuses("hint", &[target, mode]) {
+            return;
+        }
         let slot = match target {
             gl::GENERATE_MIPMAP_HINT => 0,
             gl::FRAGMENT_SHADER_DERIVATIVE_HINT => 1,
@@ -295,6 +313,9 @@ impl Context {
     /// `PACK_SKIP_PIXELS`, `UNPACK_FLIP_Y_WEBGL`, `UNPACK_PREMULTIPLY_ALPHA_WEBGL`,
     /// `UNPACK_COLORSPACE_CONVERSION_WEBGL`.
     pub fn pixel_storei(&mut self, pname: u32, param: i32) {
+        if self.webgl1_refuses("pixelStorei", &[pname]) {
+            return;
+        }
         let p = &mut self.pixel_store;
         let count = |v: i32| u32::try_from(v).ok();
         let ok = match pname {

@@ -96,7 +96,7 @@ impl RenderState {
 }
 
 /// Pixel storage parameters (`pixel_storei`).
-#[derive(Clone, Debug)]
+#[derive(Clone, Copy, Debug)]
 pub(crate) struct PixelStore {
     pub(crate) unpack_alignment: u32,
     pub(crate) pack_alignment: u32,

@@ -10,10 +10,15 @@ use crate::gl;
 impl Context {
     /// Computes levels `base + 1..` of the texture bound to `target` from its base level by
     /// averaging 2×2 (2×2×2 in 3D) blocks (`generateMipmap`). The base level must exist and
-    /// be an 8-bit normalized or unsized format (`INVALID_OPERATION` otherwise, as ES 3.0's
-    /// "colour-renderable and filterable"); a cube map's faces must match.
+    /// be colour-renderable and filterable (`INVALID_OPERATION` otherwise): an 8-bit
+    /// normalized or unsized format, a 16-bit float one once `EXT_color_buffer_float` (or
+    /// `_half_float`) is on, a 32-bit float one once `OES_texture_float_linear` is on too; a
+    /// cube map's faces must match.
     pub fn generate_mipmap(&mut self, target: u32) {
         const F: &str = "generateMipmap";
+        if self.webgl1_refuses("generateMipmap", &[target]) {
+            return;
+        }
         if !is_texture_target(target) {
             return self.error(gl::INVALID_ENUM, F, format_args!("target 0x{target:04X}"));
         }
@@ -30,7 +35,21 @@ impl Context {
         let Some(first) = t.level(0, base).cloned() else {
             return self.error(gl::INVALID_OPERATION, F, "the base level has no image");
         };
-        if first.format.comp != Comp::Unorm8 {
+        let x = &self.extensions;
+        if self.webgl1.on && !(first.width.is_power_of_two() && first.height.is_power_of_two()) {
+            return self.error(
+                gl::INVALID_OPERATION,
+                F,
+                "WebGL 1: the base level's size is not a power of two",
+            );
+        }
+        let mipmappable = match first.format.comp {
+            Comp::Unorm8 => true,
+            Comp::F16 => x.color_buffer_float,
+            Comp::F32 => x.color_buffer_float && x.texture_float_linear,
+            _ => false,
+        };
+        if !mipmappable || first.format.packing != super::format::Packing::None {
             return self.error(
                 gl::INVALID_OPERATION,
                 F,
@@ -108,7 +127,25 @@ pub(super) fn linear_to_srgb(l: f32) -> u8 {
     (c * 255.0 + 0.5).clamp(0.0, 255.0) as u8
 }
 
-/// The next level of an 8-bit normalized image: each texel the mean of its 2×2(×2) block.
+/// A component of a texel as a float (8-bit normalized, 16- or 32-bit float storage).
+fn read_component(comp: Comp, bytes: &[u8]) -> f32 {
+    match comp {
+        Comp::F16 => super::f16_to_f32(u16::from_ne_bytes([bytes[0], bytes[1]])),
+        Comp::F32 => f32::from_ne_bytes([bytes[0], bytes[1], bytes[2], bytes[3]]),
+        _ => bytes[0] as f32 / 255.0,
+    }
+}
+
+/// Stores a float component as `comp` does (8-bit normalized values rounded).
+fn write_component(comp: Comp, v: f32, out: &mut [u8]) {
+    match comp {
+        Comp::F16 => out.copy_from_slice(&super::format::f32_to_f16(v).to_ne_bytes()),
+        Comp::F32 => out.copy_from_slice(&v.to_ne_bytes()),
+        _ => out[0] = (v * 255.0 + 0.5) as u8,
+    }
+}
+
+/// The next level of an image: each texel the mean of its 2×2(×2) block.
 pub(super) fn downsample(src: &Level, three_d: bool) -> Level {
     let (w, h) = (mip_size(src.width, 1), mip_size(src.height, 1));
     let d = if three_d {
@@ -118,6 +155,9 @@ pub(super) fn downsample(src: &Level, three_d: bool) -> Level {
     };
     let n = src.format.texel_size();
     let srgb = src.format.srgb;
+    let comp = src.format.comp;
+    let size = comp.size();
+    let zero = [0u8; 4];
     let empty = Vec::new();
     let src_data = src.data.as_ref().unwrap_or(&empty);
     let mut data = vec![0u8; w as usize * h as usize * d as usize * n];
@@ -132,28 +172,30 @@ pub(super) fn downsample(src: &Level, three_d: bool) -> Level {
             let ys = [(2 * y).min(src.height - 1), (2 * y + 1).min(src.height - 1)];
             for x in 0..w {
                 let xs = [(2 * x).min(src.width - 1), (2 * x + 1).min(src.width - 1)];
-                for c in 0..n {
+                for c in 0..n / size {
                     let mut sum = 0.0f32;
                     let mut count = 0.0f32;
                     for &sz in &zs {
                         for sy in ys {
                             for sx in xs {
-                                let v = src_data.get(at(sx, sy, sz) + c).copied().unwrap_or(0);
+                                let i = at(sx, sy, sz) + c * size;
+                                let v = src_data.get(i..i + size).unwrap_or(&zero[..size]);
                                 sum += if srgb && c % 4 != 3 {
-                                    srgb_to_linear(v)
+                                    srgb_to_linear(v[0])
                                 } else {
-                                    v as f32 / 255.0
+                                    read_component(comp, v)
                                 };
                                 count += 1.0;
                             }
                         }
                     }
                     let mean = sum / count;
-                    data[((z * h + y) * w + x) as usize * n + c] = if srgb && c % 4 != 3 {
-                        linear_to_srgb(mean)
+                    let o = ((z * h + y) * w + x) as usize * n + c * size;
+                    if srgb && c % 4 != 3 {
+                        data[o] = linear_to_srgb(mean);
                     } else {
-                        (mean * 255.0 + 0.5) as u8
-                    };
+                        write_component(comp, mean, &mut data[o..o + size]);
+                    }
                 }
             }
         }

@@ -11,7 +11,7 @@
 //! GPU texture, its views, uploads), [`sampling`] (samplers, placeholders), and the GL
 //! methods: [`upload`] (`tex_image_*`, `tex_sub_image_*`), [`unpack_buffer`] (the same from
 //! a `PIXEL_UNPACK_BUFFER`), [`storage`] (`tex_storage_*`), [`params`] (`tex_parameter*`),
-//! [`mipmap`] (`generate_mipmap`) and [`gpu_sync`] (the GPU copy brought up to date for a
+//! [`mipmap`] (`generate_mipmap`), [`source`] (uploads from DOM images) and [`gpu_sync`] (the GPU copy brought up to date for a
 //! use). Those add methods to [`Context`]: its `impl` is spread over these files on purpose,
 //! one file per group of GL calls.
 
@@ -23,6 +23,7 @@ mod object;
 mod params;
 mod pixels;
 mod sampling;
+mod source;
 mod storage;
 mod unpack_buffer;
 mod upload;
@@ -32,6 +33,7 @@ pub(crate) use gpu::{upload_image, TexelBox, ViewKey};
 pub(crate) use object::*;
 pub(crate) use pixels::f16_to_f32;
 pub(crate) use sampling::*;
+pub use source::{ImageSource, SourceUpload};
 
 use crate::context::{Context, MAX_TEXTURE_UNITS};
 use crate::gl;
@@ -95,6 +97,9 @@ impl Context {
     /// was first bound to (`INVALID_OPERATION` for another).
     pub fn bind_texture(&mut self, target: u32, texture: Option<Texture>) {
         const F: &str = "bindTexture";
+        if self.webgl1_refuses("bindTexture", &[target]) {
+            return;
+        }
         if !is_texture_target(target) {
             return self.error(gl::INVALID_ENUM, F, format_args!("target 0x{target:04X}"));
         }

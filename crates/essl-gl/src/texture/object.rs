@@ -161,7 +161,22 @@ impl TextureObject {
 
     /// GL ES 3.0's texture completeness (§3.8.13): `None` when incomplete, in which case
     /// sampling returns (0, 0, 0, 1).
-    pub(crate) fn completeness(&self, float_linear: bool, p: &SamplerParams) -> Option<Complete> {
+    /// With `webgl1`, WebGL 1's rule too: a base image of a non-power-of-two size is complete
+    /// only without mipmaps and with `CLAMP_TO_EDGE` wrapping (ES 2.0 § 3.8.2).
+    pub(crate) fn completeness(
+        &self,
+        float_linear: bool,
+        webgl1: bool,
+        p: &SamplerParams,
+    ) -> Option<Complete> {
+        if webgl1 {
+            let first = self.level(0, self.level_range().0)?;
+            let npot = !first.width.is_power_of_two() || !first.height.is_power_of_two();
+            let clamped = p.wrap_s == gl::CLAMP_TO_EDGE && p.wrap_t == gl::CLAMP_TO_EDGE;
+            if npot && (p.mipmapped() || !clamped) {
+                return None;
+            }
+        }
         let target = self.target?;
         let (base, max) = self.level_range();
         let faces = if target == gl::TEXTURE_CUBE_MAP { 6 } else { 1 };

@@ -12,11 +12,17 @@ impl Context {
     /// `TEXTURE_BASE_LEVEL`, `TEXTURE_MAX_LEVEL`, `TEXTURE_COMPARE_MODE`,
     /// `TEXTURE_COMPARE_FUNC`, `TEXTURE_MIN_LOD`, `TEXTURE_MAX_LOD`.
     pub fn tex_parameteri(&mut self, target: u32, pname: u32, param: i32) {
+        if self.webgl1_refuses("texParameteri", &[target, pname]) {
+            return;
+        }
         self.tex_parameter(target, pname, param as f32, "texParameteri");
     }
 
     /// Sets a float texture parameter (`texParameterf`); see [`Context::tex_parameteri`].
     pub fn tex_parameterf(&mut self, target: u32, pname: u32, param: f32) {
+        if self.webgl1_refuses("texParameterf", &[target, pname]) {
+            return;
+        }
         self.tex_parameter(target, pname, param, "texParameterf");
     }
 
@@ -72,6 +78,9 @@ impl Context {
     /// `INVALID_ENUM`.
     pub fn get_tex_parameter(&self, target: u32, pname: u32) -> Option<Parameter> {
         const F: &str = "getTexParameter";
+        if self.webgl1_refuses("getTexParameter", &[target, pname]) {
+            return None;
+        }
         if !is_texture_target(target) {
             self.error(gl::INVALID_ENUM, F, format_args!("target 0x{target:04X}"));
             return None;

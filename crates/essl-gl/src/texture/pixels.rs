@@ -34,7 +34,7 @@ pub(super) fn unpack_16(v: u16, ty: u32) -> [u8; 4] {
 
 /// An unsigned float of `mantissa` bits and a 5-bit exponent (the channels of
 /// `R11F_G11F_B10F`), from an `f32`: negative and NaN become 0, too large the largest value.
-fn unsigned_small_float(x: f32, mantissa: u32) -> u32 {
+pub(super) fn unsigned_small_float(x: f32, mantissa: u32) -> u32 {
     if x.is_nan() || x <= 0.0 {
         return 0;
     }
@@ -54,7 +54,7 @@ fn unsigned_small_float(x: f32, mantissa: u32) -> u32 {
 }
 
 /// `RGB9_E5`'s shared-exponent encoding of three floats (ES 3.0 §3.8.3.2).
-fn rgb9e5(rgb: [f32; 3]) -> u32 {
+pub(super) fn rgb9e5(rgb: [f32; 3]) -> u32 {
     const MAX: f32 = (511.0 / 512.0) * 65536.0;
     let c = rgb.map(|x| if x.is_nan() { 0.0 } else { x.clamp(0.0, MAX) });
     let max = c[0].max(c[1]).max(c[2]);

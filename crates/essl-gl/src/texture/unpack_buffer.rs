@@ -9,7 +9,8 @@ use crate::gl;
 
 impl Context {
     /// The bound unpack buffer's bytes from `offset`, or the error: none bound →
-    /// `INVALID_OPERATION`, a negative offset → `INVALID_VALUE`.
+    /// `INVALID_OPERATION`, a negative offset → `INVALID_VALUE`, `UNPACK_FLIP_Y_WEBGL` or
+    /// `UNPACK_PREMULTIPLY_ALPHA_WEBGL` set → `INVALID_OPERATION` (as WebGL 2 has it).
     fn unpack_source(&mut self, offset: i64, function: &str) -> Option<Vec<u8>> {
         let Some(id) = self.bindings.buffer(gl::PIXEL_UNPACK_BUFFER) else {
             self.error(
@@ -21,6 +22,14 @@ impl Context {
         };
         if offset < 0 {
             self.error(gl::INVALID_VALUE, function, "negative offset");
+            return None;
+        }
+        if self.pixel_store.unpack_flip_y || self.pixel_store.unpack_premultiply_alpha {
+            self.error(
+                gl::INVALID_OPERATION,
+                function,
+                "UNPACK_FLIP_Y_WEBGL or UNPACK_PREMULTIPLY_ALPHA_WEBGL with a PIXEL_UNPACK_BUFFER",
+            );
             return None;
         }
         let b = self.objects.buffers.get_any_mut(id)?;

@@ -7,7 +7,7 @@ use super::format::{
 use super::image_target;
 use super::object::Level;
 use super::pixels::{convert_pixels, unpack_layout};
-use crate::array::{array_mismatch, ArrayElement, ArrayType};
+use crate::array::{array_mismatch, ArrayElement, ArrayType, ArrayView};
 use crate::context::Context;
 use crate::gl;
 
@@ -76,7 +76,41 @@ impl Context {
         ty: u32,
         pixels: Option<&[T]>,
     ) {
+        let pixels = pixels.map(ArrayView::of);
+        self.tex_image_2d_view(
+            target,
+            level,
+            internalformat,
+            width,
+            height,
+            border,
+            format,
+            ty,
+            pixels,
+        );
+    }
+
+    /// [`Context::tex_image_2d`] with the client data as a typed array of any kind (a
+    /// binding's `ArrayBufferView`): the array's type is checked against `ty` as WebGL does.
+    #[allow(clippy::too_many_arguments)] // WebGL2's own argument list
+    pub fn tex_image_2d_view(
+        &mut self,
+        target: u32,
+        level: i32,
+        internalformat: i32,
+        width: i32,
+        height: i32,
+        border: i32,
+        format: u32,
+        ty: u32,
+        pixels: Option<ArrayView>,
+    ) {
         const F: &str = "texImage2D";
+        if self.webgl1_refuses(F, &[target])
+            || self.webgl1_refuses_image(internalformat, format, ty)
+        {
+            return;
+        }
         if self.client_data_refused(F) {
             return;
         }
@@ -92,8 +126,8 @@ impl Context {
             border,
             format,
             ty,
-            pixels: pixels.map(bytemuck::cast_slice),
-            array: Some(T::TYPE),
+            pixels: pixels.map(|p| p.bytes),
+            array: Some(pixels.map_or(ArrayType::Uint8, |p| p.array)),
             function: F,
         });
     }
@@ -114,6 +148,36 @@ impl Context {
         ty: u32,
         pixels: Option<&[T]>,
     ) {
+        let pixels = pixels.map(ArrayView::of);
+        self.tex_image_3d_view(
+            target,
+            level,
+            internalformat,
+            width,
+            height,
+            depth,
+            border,
+            format,
+            ty,
+            pixels,
+        );
+    }
+
+    /// [`Context::tex_image_3d`] with the client data as a typed array of any kind.
+    #[allow(clippy::too_many_arguments)] // WebGL2's own argument list
+    pub fn tex_image_3d_view(
+        &mut self,
+        target: u32,
+        level: i32,
+        internalformat: i32,
+        width: i32,
+        height: i32,
+        depth: i32,
+        border: i32,
+        format: u32,
+        ty: u32,
+        pixels: Option<ArrayView>,
+    ) {
         const F: &str = "texImage3D";
         if self.client_data_refused(F) {
             return;
@@ -129,8 +193,8 @@ impl Context {
             border,
             format,
             ty,
-            pixels: pixels.map(bytemuck::cast_slice),
-            array: Some(T::TYPE),
+            pixels: pixels.map(|p| p.bytes),
+            array: Some(pixels.map_or(ArrayType::Uint8, |p| p.array)),
             function: F,
         });
     }
@@ -187,6 +251,18 @@ impl Context {
             self.error(gl::INVALID_VALUE, function, "cube map faces must be square");
             return false;
         }
+        // WebGL 1: a mipmap level past 0 has power-of-two sides.
+        let pot = |n: i32| n & (n - 1) == 0;
+        if self.webgl1.on && level > 0 && !(pot(w) && pot(h)) {
+            self.error(
+                gl::INVALID_VALUE,
+                function,
+                format_args!(
+                    "level {level} of a WebGL 1 texture must have power-of-two sides, not {w}x{h}"
+                ),
+            );
+            return false;
+        }
         true
     }
 
@@ -233,7 +309,40 @@ impl Context {
             ty,
             three_d,
         } = pixels;
-        let store = self.pixel_store.clone();
+        let store = self.pixel_store;
+        // WebGL 2: rows shorter than the rectangle they hold, and images shorter than theirs,
+        // are refused; a 3D upload is neither flipped nor premultiplied.
+        if store.unpack_row_length > 0
+            && i64::from(store.unpack_row_length)
+                < i64::from(w) + i64::from(store.unpack_skip_pixels)
+        {
+            self.error(
+                gl::INVALID_OPERATION,
+                function,
+                "UNPACK_ROW_LENGTH is less than width + UNPACK_SKIP_PIXELS",
+            );
+            return None;
+        }
+        if three_d
+            && store.unpack_image_height > 0
+            && i64::from(store.unpack_image_height)
+                < i64::from(h) + i64::from(store.unpack_skip_rows)
+        {
+            self.error(
+                gl::INVALID_OPERATION,
+                function,
+                "UNPACK_IMAGE_HEIGHT is less than height + UNPACK_SKIP_ROWS",
+            );
+            return None;
+        }
+        if three_d && (store.unpack_flip_y || store.unpack_premultiply_alpha) {
+            self.error(
+                gl::INVALID_OPERATION,
+                function,
+                "UNPACK_FLIP_Y_WEBGL or UNPACK_PREMULTIPLY_ALPHA_WEBGL with a 3D upload",
+            );
+            return None;
+        }
         let u = unpack_layout(&store, w, h, d, pixel_size(format, ty), three_d);
         if src.len() < u.needed {
             self.error(
@@ -376,7 +485,31 @@ impl Context {
         ty: u32,
         pixels: &[T],
     ) {
+        let pixels = ArrayView::of(pixels);
+        self.tex_sub_image_2d_view(
+            target, level, xoffset, yoffset, width, height, format, ty, pixels,
+        );
+    }
+
+    /// [`Context::tex_sub_image_2d`] with the client data as a typed array of any kind.
+    #[allow(clippy::too_many_arguments)] // WebGL2's own argument list
+    pub fn tex_sub_image_2d_view(
+        &mut self,
+        target: u32,
+        level: i32,
+        xoffset: i32,
+        yoffset: i32,
+        width: i32,
+        height: i32,
+        format: u32,
+        ty: u32,
+        pixels: ArrayView,
+    ) {
         const F: &str = "texSubImage2D";
+        if self.webgl1_refuses(F, &[target]) || self.webgl1_refuses_image(format as i32, format, ty)
+        {
+            return;
+        }
         if self.client_data_refused(F) {
             return;
         }
@@ -391,8 +524,8 @@ impl Context {
             size: [width, height, 1],
             format,
             ty,
-            pixels: bytemuck::cast_slice(pixels),
-            array: Some(T::TYPE),
+            pixels: pixels.bytes,
+            array: Some(pixels.array),
             function: F,
         });
     }
@@ -413,6 +546,28 @@ impl Context {
         ty: u32,
         pixels: &[T],
     ) {
+        let pixels = ArrayView::of(pixels);
+        self.tex_sub_image_3d_view(
+            target, level, xoffset, yoffset, zoffset, width, height, depth, format, ty, pixels,
+        );
+    }
+
+    /// [`Context::tex_sub_image_3d`] with the client data as a typed array of any kind.
+    #[allow(clippy::too_many_arguments)] // WebGL2's own argument list
+    pub fn tex_sub_image_3d_view(
+        &mut self,
+        target: u32,
+        level: i32,
+        xoffset: i32,
+        yoffset: i32,
+        zoffset: i32,
+        width: i32,
+        height: i32,
+        depth: i32,
+        format: u32,
+        ty: u32,
+        pixels: ArrayView,
+    ) {
         const F: &str = "texSubImage3D";
         if self.client_data_refused(F) {
             return;
@@ -427,8 +582,8 @@ impl Context {
             size: [width, height, depth],
             format,
             ty,
-            pixels: bytemuck::cast_slice(pixels),
-            array: Some(T::TYPE),
+            pixels: pixels.bytes,
+            array: Some(pixels.array),
             function: F,
         });
     }

@@ -115,6 +115,9 @@ impl Context {
         offset: i64,
     ) {
         const F: &str = "vertexAttribPointer";
+        if self.webgl1_refuses_vertex_type(ty) {
+            return;
+        }
         let float_types = [
             gl::BYTE,
             gl::UNSIGNED_BYTE,

@@ -2,6 +2,7 @@
 //! and linking them was most of the test suite's time). Each module is one former file.
 
 mod active_lists;
+mod binding;
 mod common;
 mod errors;
 mod es100_render;

@@ -1,0 +1,96 @@
+// The extension objects `getExtension` returns: those essl-gl implements (their constants),
+// and `WEBGL_lose_context`, which the binding implements (a lost context is the binding's
+// state). One object per name and context, as browsers return the same object each time.
+import { loseContext, restoreContext } from './context.js';
+import { VERSION } from './objects.js';
+import { METHODS_2 } from './generated.js';
+
+/** Constants of the extensions that have any. */
+const CONSTANTS = {
+  EXT_color_buffer_half_float: {
+    RGBA16F_EXT: 0x881a,
+    RGB16F_EXT: 0x881b,
+    FRAMEBUFFER_ATTACHMENT_COMPONENT_TYPE_EXT: 0x8211,
+    UNSIGNED_NORMALIZED_EXT: 0x8c17,
+  },
+  KHR_parallel_shader_compile: { COMPLETION_STATUS_KHR: 0x91b1 },
+  OES_vertex_array_object: { VERTEX_ARRAY_BINDING_OES: 0x85b5 },
+  ANGLE_instanced_arrays: { VERTEX_ATTRIB_ARRAY_DIVISOR_ANGLE: 0x88fe },
+  OES_standard_derivatives: { FRAGMENT_SHADER_DERIVATIVE_HINT_OES: 0x8b8b },
+  EXT_blend_minmax: { MIN_EXT: 0x8007, MAX_EXT: 0x8008 },
+  WEBGL_draw_buffers: Object.fromEntries([
+    ...Array.from({ length: 16 }, (_, i) => [`COLOR_ATTACHMENT${i}_WEBGL`, 0x8ce0 + i]),
+    ...Array.from({ length: 16 }, (_, i) => [`DRAW_BUFFER${i}_WEBGL`, 0x8825 + i]),
+    ['MAX_COLOR_ATTACHMENTS_WEBGL', 0x8cdf],
+    ['MAX_DRAW_BUFFERS_WEBGL', 0x8824],
+  ]),
+};
+
+/**
+ * The methods of WebGL 1 extensions that expose WebGL 2 calls under their own names: the
+ * same conversions and answers, on the context the extension came from.
+ */
+const METHODS = {
+  OES_vertex_array_object: {
+    createVertexArrayOES: 'createVertexArray',
+    deleteVertexArrayOES: 'deleteVertexArray',
+    isVertexArrayOES: 'isVertexArray',
+    bindVertexArrayOES: 'bindVertexArray',
+  },
+  ANGLE_instanced_arrays: {
+    drawArraysInstancedANGLE: 'drawArraysInstanced',
+    drawElementsInstancedANGLE: 'drawElementsInstanced',
+    vertexAttribDivisorANGLE: 'vertexAttribDivisor',
+  },
+  WEBGL_draw_buffers: { drawBuffersWEBGL: 'drawBuffers' },
+};
+
+/** One class per extension, named as its IDL interface (`EXT_color_buffer_float`). */
+const CLASSES = new Map();
+function classOf(name) {
+  let cls = CLASSES.get(name);
+  if (!cls) {
+    cls = { [name]: class {} }[name];
+    for (const [k, v] of Object.entries(CONSTANTS[name] ?? {})) {
+      Object.defineProperty(cls.prototype, k, { value: v, enumerable: true });
+    }
+    CLASSES.set(name, cls);
+  }
+  return cls;
+}
+
+/** The extensions a context offers (`getSupportedExtensions`). */
+export function supportedExtensions(native, version) {
+  const list = native.getSupportedExtensions().filter((e) => version === 2 || !WEBGL2_ONLY.has(e));
+  return [...list, 'WEBGL_lose_context'].sort();
+}
+
+/** Extensions that exist only in WebGL 2 contexts. */
+const WEBGL2_ONLY = new Set(['EXT_color_buffer_float']);
+
+/** The object `getExtension(name)` returns, or `null`. */
+export function extensionObject(ctx, native, name) {
+  if (name.toLowerCase() === 'webgl_lose_context') {
+    const cls = classOf('WEBGL_lose_context');
+    const ext = new cls();
+    Object.defineProperties(ext, {
+      loseContext: { value: () => loseContext(ctx, false), enumerable: true },
+      restoreContext: { value: () => restoreContext(ctx), enumerable: true },
+    });
+    return ext;
+  }
+  if (ctx[VERSION] !== 2 && WEBGL2_ONLY.has(canonical(name))) return null;
+  const enabled = native.getExtension(name);
+  if (enabled === null) return null;
+  const ext = new (classOf(enabled))();
+  for (const [own, core] of Object.entries(METHODS[enabled] ?? {})) {
+    const f = METHODS_2[core];
+    Object.defineProperty(ext, own, { value: (...args) => f.apply(ctx, args), enumerable: true });
+  }
+  return ext;
+}
+
+function canonical(name) {
+  return name.toUpperCase() === 'EXT_COLOR_BUFFER_FLOAT' ? 'EXT_color_buffer_float' : name;
+}
+

@@ -1,0 +1,90 @@
+// `TexImageSource`s a Node program can have: `ImageData`-shaped objects (`{ width, height,
+// data }` with a Uint8ClampedArray or Uint8Array of RGBA bytes), canvases of the `canvas`
+// and `@napi-rs/canvas` packages (and jsdom's, which use `canvas`), their images, and
+// canvases whose context is essl-gl's. Each is read as 8-bit RGBA, unpremultiplied, top row
+// first — what a browser hands WebGL.
+
+import { types } from 'node:util';
+
+/** How a DOM canvas with an essl-gl context gives its pixels (set by canvas.js). */
+let drawingBufferOf = () => null;
+export function setDrawingBufferReader(f) {
+  drawingBufferOf = f;
+}
+
+/** A canvas-like object of essl-gl's (its context draws into the drawing buffer). */
+export const DRAWING_BUFFER = Symbol('essl-gl drawing buffer pixels');
+
+/** Whether `v` is something `imageSource` can read. */
+export function isImageSource(v) {
+  if (v === null || typeof v !== 'object') return false;
+  if (ArrayBuffer.isView(v)) return false;
+  if (typeof v[DRAWING_BUFFER] === 'function') return true;
+  if (isImageData(v)) return true;
+  if (typeof v.videoWidth === 'number') return true;
+  return typeof v.getContext === 'function' || isImage(v);
+}
+
+function isImageData(v) {
+  return (
+    typeof v.width === 'number' &&
+    typeof v.height === 'number' &&
+    (types.isUint8ClampedArray(v.data) || types.isUint8Array(v.data))
+  );
+}
+
+function isImage(v) {
+  return typeof v.naturalWidth === 'number' || v.constructor?.name === 'Image';
+}
+
+/**
+ * The pixels of an image source: `{ width, height, data }` with `data` RGBA8, top row
+ * first, unpremultiplied. A source that cannot be read (an image not loaded, a canvas whose
+ * package is missing) is a `TypeError`-free empty 0 × 0 image, as a browser uploads one.
+ */
+export function imageSource(v, name) {
+  if (typeof v[DRAWING_BUFFER] === 'function') return v[DRAWING_BUFFER]();
+  const webgl = drawingBufferOf(v);
+  if (webgl) return webgl;
+  if (isImageData(v)) {
+    const { width, height } = v;
+    const need = width * height * 4;
+    if (v.data.length < need) {
+      throw new TypeError(`Failed to execute '${name}': the ImageData has fewer than width × height × 4 bytes.`);
+    }
+    return { width, height, data: v.data };
+  }
+  if (typeof v.getContext === 'function') {
+    const width = v.width | 0;
+    const height = v.height | 0;
+    if (width === 0 || height === 0) return { width: 0, height: 0, data: new Uint8Array(0) };
+    const c2d = v.getContext('2d');
+    if (c2d && typeof c2d.getImageData === 'function') {
+      const img = c2d.getImageData(0, 0, width, height);
+      return { width: img.width, height: img.height, data: img.data };
+    }
+    return { width, height, data: new Uint8Array(width * height * 4) };
+  }
+  if (isImage(v)) {
+    const width = v.naturalWidth ?? v.width ?? 0;
+    const height = v.naturalHeight ?? v.height ?? 0;
+    const canvas = drawnImage(v, width, height);
+    if (canvas) return canvas;
+    return { width, height, data: new Uint8Array(width * height * 4) };
+  }
+  return { width: 0, height: 0, data: new Uint8Array(0) };
+}
+
+/** An image drawn onto a canvas of the package that made it, read back. */
+function drawnImage(img, width, height) {
+  const doc = img.ownerDocument;
+  const canvas = doc?.createElement?.('canvas');
+  if (!canvas || width === 0 || height === 0) return null;
+  canvas.width = width;
+  canvas.height = height;
+  const c2d = canvas.getContext('2d');
+  if (!c2d) return null;
+  c2d.drawImage(img, 0, 0);
+  const d = c2d.getImageData(0, 0, width, height);
+  return { width, height, data: d.data };
+}

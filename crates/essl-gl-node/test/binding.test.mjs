@@ -1,0 +1,320 @@
+// The binding as a JavaScript program sees it: WebIDL's conversions and TypeErrors, object
+// identity, GL errors, extensions, a lost and a destroyed context, typed arrays.
+import { test } from 'node:test';
+import assert from 'node:assert/strict';
+import {
+  createContext, Canvas, WebGL2RenderingContext, WebGLRenderingContext, WebGLBuffer,
+  WebGLTexture, WebGLUniformLocation, WebGLActiveInfo, installInWindow,
+} from '../index.js';
+
+const gl = createContext(16, 16);
+
+function program(ctx, vs, fs) {
+  const p = ctx.createProgram();
+  for (const [type, src] of [[ctx.VERTEX_SHADER, vs], [ctx.FRAGMENT_SHADER, fs]]) {
+    const s = ctx.createShader(type);
+    ctx.shaderSource(s, src);
+    ctx.compileShader(s);
+    assert.ok(ctx.getShaderParameter(s, ctx.COMPILE_STATUS), ctx.getShaderInfoLog(s));
+    ctx.attachShader(p, s);
+  }
+  ctx.linkProgram(p);
+  assert.ok(ctx.getProgramParameter(p, ctx.LINK_STATUS), ctx.getProgramInfoLog(p));
+  return p;
+}
+
+test('the context is a WebGL2RenderingContext with the IDL constants and attributes', () => {
+  assert.ok(gl instanceof WebGL2RenderingContext);
+  assert.equal(Object.prototype.toString.call(gl), '[object WebGL2RenderingContext]');
+  assert.equal(gl.ARRAY_BUFFER, 0x8892);
+  assert.equal(WebGL2RenderingContext.RGBA32F, 0x8814);
+  assert.equal(gl.drawingBufferWidth, 16);
+  assert.equal(gl.drawingBufferHeight, 16);
+  assert.ok(gl.canvas instanceof Canvas);
+  assert.equal(gl.canvas.getContext('webgl2'), gl);
+  assert.equal(gl.canvas.getContext('webgl'), null);
+  assert.equal(gl.canvas.getContext('2d'), null);
+  assert.match(gl.getParameter(gl.VERSION), /^WebGL 2\.0/);
+  assert.throws(() => new WebGL2RenderingContext(), TypeError);
+  assert.throws(() => new WebGLBuffer(), TypeError);
+});
+
+test('objects keep their identity through getParameter', () => {
+  const b = gl.createBuffer();
+  const t = gl.createTexture();
+  assert.ok(b instanceof WebGLBuffer);
+  gl.bindBuffer(gl.ARRAY_BUFFER, b);
+  gl.bindTexture(gl.TEXTURE_2D, t);
+  assert.equal(gl.getParameter(gl.ARRAY_BUFFER_BINDING), b);
+  assert.equal(gl.getParameter(gl.TEXTURE_BINDING_2D), t);
+  assert.ok(gl.getParameter(gl.TEXTURE_BINDING_2D) instanceof WebGLTexture);
+  gl.bindBuffer(gl.ARRAY_BUFFER, null);
+  assert.equal(gl.getParameter(gl.ARRAY_BUFFER_BINDING), null);
+  b.label = 'vertices';
+  assert.equal(b.label, 'vertices');
+  gl.deleteBuffer(b);
+  assert.equal(gl.isBuffer(b), false);
+  assert.equal(gl.getError(), gl.NO_ERROR);
+});
+
+test('WebIDL conversions: numbers modulo, too few arguments and wrong types are TypeErrors', () => {
+  assert.throws(() => gl.bindBuffer(gl.ARRAY_BUFFER), TypeError);
+  assert.throws(() => gl.bindBuffer(gl.ARRAY_BUFFER, {}), TypeError);
+  assert.throws(() => gl.bindBuffer(gl.ARRAY_BUFFER, gl.createTexture()), TypeError);
+  assert.throws(() => gl.attachShader(null, null), TypeError);
+  assert.throws(() => gl.uniform4fv(null, 7), TypeError);
+  assert.throws(() => gl.enable(Symbol('x')), TypeError);
+  assert.throws(() => gl.bufferSubData(gl.ARRAY_BUFFER, 0, 'abc'), TypeError);
+  // "3042" converts to BLEND; 2^32 + BLEND wraps to BLEND.
+  gl.enable('3042');
+  assert.equal(gl.isEnabled(gl.BLEND), true);
+  gl.disable(2 ** 32 + gl.BLEND);
+  assert.equal(gl.isEnabled(gl.BLEND), false);
+  // undefined for a nullable object is null.
+  gl.bindBuffer(gl.ARRAY_BUFFER, undefined);
+  assert.equal(gl.getError(), gl.NO_ERROR);
+  // An unsigned long long srcOffset of -1 is 2^64 - 1: past the view, INVALID_OPERATION.
+  const t = gl.createTexture();
+  gl.bindTexture(gl.TEXTURE_2D, t);
+  for (const o of [-1, 5]) {
+    gl.texImage2D(gl.TEXTURE_2D, 0, gl.RGBA8, 1, 1, 0, gl.RGBA, gl.UNSIGNED_BYTE, new Uint8Array(4), o);
+    assert.equal(gl.getError(), gl.INVALID_OPERATION, `srcOffset ${o}`);
+  }
+  gl.texImage2D(gl.TEXTURE_2D, 0, gl.RGBA8, 1, 1, 0, gl.RGBA, gl.UNSIGNED_BYTE, new Uint8Array(8), 4);
+  assert.equal(gl.getError(), gl.NO_ERROR);
+  gl.deleteTexture(t);
+});
+
+test('a bad value is a GL error, never an exception', () => {
+  gl.enable(0x1234);
+  assert.equal(gl.getError(), gl.INVALID_ENUM);
+  gl.bufferData(gl.ARRAY_BUFFER, null, gl.STATIC_DRAW);
+  assert.equal(gl.getError(), gl.INVALID_VALUE);
+  gl.drawArrays(gl.TRIANGLES, 0, 3);
+  assert.equal(gl.getError(), gl.INVALID_OPERATION);
+  assert.equal(gl.getError(), gl.NO_ERROR);
+});
+
+test('an object of another context is INVALID_OPERATION', () => {
+  const other = createContext(4, 4);
+  const b = other.createBuffer();
+  gl.bindBuffer(gl.ARRAY_BUFFER, b);
+  assert.equal(gl.getError(), gl.INVALID_OPERATION);
+  other.destroy();
+});
+
+test('typed arrays in and out: bufferData without a copy, getBufferSubData and readPixels into the caller', () => {
+  const b = gl.createBuffer();
+  gl.bindBuffer(gl.COPY_READ_BUFFER, b);
+  const src = new Float32Array([1, 2, 3, 4]);
+  gl.bufferData(gl.COPY_READ_BUFFER, src.buffer, gl.STATIC_READ);
+  const dst = new Float32Array(4);
+  gl.getBufferSubData(gl.COPY_READ_BUFFER, 4, dst, 1, 3);
+  assert.deepEqual([...dst], [0, 2, 3, 4]);
+  gl.bufferSubData(gl.COPY_READ_BUFFER, 0, new Float32Array([9, 8]), 1, 1);
+  gl.getBufferSubData(gl.COPY_READ_BUFFER, 0, dst);
+  assert.deepEqual([...dst], [8, 2, 3, 4]);
+  // srcOffset past the end of the array: INVALID_VALUE.
+  gl.bufferSubData(gl.COPY_READ_BUFFER, 0, src, 5);
+  assert.equal(gl.getError(), gl.INVALID_VALUE);
+  gl.clearColor(0, 1, 0, 1);
+  gl.clear(gl.COLOR_BUFFER_BIT);
+  const px = new Uint8Array(8);
+  gl.readPixels(0, 0, 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, px, 4);
+  assert.deepEqual([...px], [0, 0, 0, 0, 0, 255, 0, 255]);
+  gl.readPixels(0, 0, 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, new Float32Array(4));
+  assert.equal(gl.getError(), gl.INVALID_OPERATION);
+  gl.readPixels(0, 0, 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, null);
+  assert.equal(gl.getError(), gl.INVALID_VALUE);
+});
+
+test('a triangle, uniforms, active info, getUniform and a PNG', () => {
+  const p = program(
+    gl,
+    '#version 300 es\nin vec2 a_pos; void main() { gl_Position = vec4(a_pos, 0.0, 1.0); }',
+    '#version 300 es\nprecision mediump float; uniform vec4 u_color; out vec4 o; void main() { o = u_color; }',
+  );
+  gl.useProgram(p);
+  assert.equal(gl.getParameter(gl.CURRENT_PROGRAM), p);
+  const loc = gl.getUniformLocation(p, 'u_color');
+  assert.ok(loc instanceof WebGLUniformLocation);
+  gl.uniform4fv(loc, [1, 0, 0.5, 1]);
+  assert.deepEqual([...gl.getUniform(p, loc)], [1, 0, 0.5, 1]);
+  const info = gl.getActiveUniform(p, 0);
+  assert.ok(info instanceof WebGLActiveInfo);
+  assert.equal(info.name, 'u_color');
+  assert.equal(info.type, gl.FLOAT_VEC4);
+  const vb = gl.createBuffer();
+  gl.bindBuffer(gl.ARRAY_BUFFER, vb);
+  gl.bufferData(gl.ARRAY_BUFFER, new Float32Array([-1, -1, 3, -1, -1, 3]), gl.STATIC_DRAW);
+  const at = gl.getAttribLocation(p, 'a_pos');
+  gl.enableVertexAttribArray(at);
+  gl.vertexAttribPointer(at, 2, gl.FLOAT, false, 0, 0);
+  gl.drawArrays(gl.TRIANGLES, 0, 3);
+  const px = new Uint8Array(4);
+  gl.readPixels(8, 8, 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, px);
+  assert.deepEqual([...px], [255, 0, 128, 255]);
+  const png = gl.toPNG();
+  assert.deepEqual([...png.subarray(0, 8)], [137, 80, 78, 71, 13, 10, 26, 10]);
+  assert.equal(gl.getError(), gl.NO_ERROR);
+});
+
+test('texImage2D from an ImageData-shaped object', () => {
+  const t = gl.createTexture();
+  gl.bindTexture(gl.TEXTURE_2D, t);
+  const data = new Uint8ClampedArray([255, 0, 0, 255, 0, 255, 0, 255, 0, 0, 255, 255, 255, 255, 255, 255]);
+  gl.texImage2D(gl.TEXTURE_2D, 0, gl.RGBA, gl.RGBA, gl.UNSIGNED_BYTE, { width: 2, height: 2, data });
+  assert.equal(gl.getError(), gl.NO_ERROR);
+  const fb = gl.createFramebuffer();
+  gl.bindFramebuffer(gl.FRAMEBUFFER, fb);
+  gl.framebufferTexture2D(gl.FRAMEBUFFER, gl.COLOR_ATTACHMENT0, gl.TEXTURE_2D, t, 0);
+  const px = new Uint8Array(16);
+  gl.readPixels(0, 0, 2, 2, gl.RGBA, gl.UNSIGNED_BYTE, px);
+  // The source's first row is the texture's row 0.
+  assert.deepEqual([...px], [...data]);
+  gl.bindFramebuffer(gl.FRAMEBUFFER, null);
+  assert.throws(() => gl.texImage2D(gl.TEXTURE_2D, 0, gl.RGBA, gl.RGBA, gl.UNSIGNED_BYTE, 5), TypeError);
+});
+
+test('extensions: the same object each time, null for unknown names', () => {
+  const ext = gl.getExtension('EXT_color_buffer_float');
+  assert.ok(ext);
+  assert.equal(gl.getExtension('ext_color_buffer_float'), ext);
+  assert.equal(gl.getExtension('WEBGL_no_such_thing'), null);
+  assert.ok(gl.getSupportedExtensions().includes('WEBGL_lose_context'));
+});
+
+test('WEBGL_lose_context: calls do nothing, getError says CONTEXT_LOST_WEBGL once, events, restore', async () => {
+  const ctx = createContext(8, 8);
+  const canvas = ctx.canvas;
+  const b = ctx.createBuffer();
+  const p = ctx.createProgram();
+  const ext = ctx.getExtension('WEBGL_lose_context');
+  const events = [];
+  canvas.addEventListener('webglcontextlost', (e) => {
+    events.push(e.type);
+    e.preventDefault();
+  });
+  const restored = new Promise((resolve) => canvas.addEventListener('webglcontextrestored', resolve));
+  ext.loseContext();
+  assert.equal(ctx.isContextLost(), true);
+  assert.equal(ctx.getError(), ctx.CONTEXT_LOST_WEBGL);
+  assert.equal(ctx.getError(), ctx.NO_ERROR);
+  assert.equal(ctx.createBuffer(), null);
+  assert.equal(ctx.isBuffer(b), false);
+  assert.equal(ctx.getParameter(ctx.VIEWPORT), null);
+  assert.equal(ctx.checkFramebufferStatus(ctx.FRAMEBUFFER), ctx.FRAMEBUFFER_UNSUPPORTED);
+  assert.equal(ctx.getAttribLocation(p, 'x'), -1);
+  assert.throws(() => ctx.bindBuffer(ctx.ARRAY_BUFFER, {}), TypeError);
+  await new Promise((r) => setTimeout(r, 10));
+  assert.deepEqual(events, ['webglcontextlost']);
+  ext.restoreContext();
+  await restored;
+  assert.equal(ctx.isContextLost(), false);
+  assert.equal(ctx.isBuffer(b), false);
+  ctx.bindBuffer(ctx.ARRAY_BUFFER, b);
+  assert.equal(ctx.getError(), ctx.INVALID_OPERATION);
+  const b2 = ctx.createBuffer();
+  assert.ok(b2 instanceof WebGLBuffer);
+  ctx.destroy();
+});
+
+test('destroy frees the context at once and leaves it lost for good', () => {
+  const ctx = createContext(8, 8);
+  ctx.destroy();
+  assert.equal(ctx.destroyed, true);
+  assert.equal(ctx.isContextLost(), true);
+  assert.equal(ctx.drawingBufferWidth, 0);
+  assert.equal(ctx.createTexture(), null);
+  assert.equal(ctx.toPNG(), null);
+  ctx.clear(ctx.COLOR_BUFFER_BIT);
+});
+
+test('resize and a canvas size change give the drawing buffer a new size', () => {
+  const ctx = createContext(8, 8);
+  ctx.canvas.width = 32;
+  assert.equal(ctx.drawingBufferWidth, 32);
+  ctx.resize(10, 20);
+  assert.equal(ctx.drawingBufferWidth, 10);
+  assert.equal(ctx.drawingBufferHeight, 20);
+  assert.equal(ctx.canvas.height, 20);
+  ctx.destroy();
+});
+
+test('a WebGL 1 context has WebGL 1 methods only and compiles GLSL ES 1.00 only', () => {
+  const ctx = createContext(8, 8, {}, { version: 1 });
+  assert.ok(ctx instanceof WebGLRenderingContext);
+  assert.equal(ctx.createVertexArray, undefined);
+  assert.equal(ctx.TEXTURE_3D, undefined);
+  assert.match(ctx.getParameter(ctx.VERSION), /^WebGL 1\.0/);
+  const s = ctx.createShader(ctx.FRAGMENT_SHADER);
+  ctx.shaderSource(s, '#version 300 es\nprecision mediump float; out vec4 o; void main() { o = vec4(1); }');
+  ctx.compileShader(s);
+  assert.equal(ctx.getShaderParameter(s, ctx.COMPILE_STATUS), false);
+  ctx.destroy();
+});
+
+test('a canvas in a document is cleared when the task that drew returns, unless preserveDrawingBuffer; an offscreen one is not', async () => {
+  const { JSDOM } = await import('jsdom');
+  const dom = new JSDOM('<!doctype html><body></body>', { runScripts: 'outside-only' });
+  installInWindow(dom.window);
+  const doc = dom.window.document;
+  const make = (attached, preserve) => {
+    const canvas = doc.createElement('canvas');
+    canvas.width = canvas.height = 4;
+    if (attached) doc.body.appendChild(canvas);
+    const ctx = canvas.getContext('webgl2', { preserveDrawingBuffer: preserve });
+    ctx.clearColor(1, 1, 1, 1);
+    ctx.clear(ctx.COLOR_BUFFER_BIT);
+    return ctx;
+  };
+  const shown = make(true, false);
+  const kept = make(true, true);
+  const offscreen = make(false, false);
+  assert.ok(shown instanceof dom.window.WebGL2RenderingContext);
+  await new Promise((r) => setTimeout(r, 5));
+  const read = (ctx) => {
+    const px = new Uint8Array(4);
+    ctx.readPixels(0, 0, 1, 1, ctx.RGBA, ctx.UNSIGNED_BYTE, px);
+    return [...px];
+  };
+  assert.deepEqual(read(shown), [0, 0, 0, 0]);
+  assert.deepEqual(read(kept), [255, 255, 255, 255]);
+  assert.deepEqual(read(offscreen), [255, 255, 255, 255]);
+  // Values cross into the page's realm: its Int32Array and TypeError.
+  assert.ok(shown.getParameter(shown.VIEWPORT) instanceof dom.window.Int32Array);
+  assert.throws(() => shown.bindBuffer(shown.ARRAY_BUFFER, {}), dom.window.TypeError);
+  for (const c of [shown, kept, offscreen]) c.destroy();
+  dom.window.close();
+});
+
+test('a WebGL canvas in a document reads back: toDataURL, toBlob and texImage2D from it', async () => {
+  const { JSDOM } = await import('jsdom');
+  const dom = new JSDOM('<!doctype html><body></body>', { runScripts: 'outside-only' });
+  installInWindow(dom.window);
+  const doc = dom.window.document;
+  const source = doc.createElement('canvas');
+  source.width = 2;
+  source.height = 2;
+  const a = source.getContext('webgl2', { preserveDrawingBuffer: true });
+  a.clearColor(0, 1, 0, 1);
+  a.clear(a.COLOR_BUFFER_BIT);
+  const url = source.toDataURL();
+  assert.ok(url.startsWith('data:image/png;base64,'));
+  assert.deepEqual([...Buffer.from(url.slice(22), 'base64').subarray(1, 4)], [0x50, 0x4e, 0x47]);
+  const blob = await new Promise((r) => source.toBlob(r));
+  assert.equal(blob.type, 'image/png');
+  const b = doc.createElement('canvas').getContext('webgl2');
+  const tex = b.createTexture();
+  b.bindTexture(b.TEXTURE_2D, tex);
+  b.texImage2D(b.TEXTURE_2D, 0, b.RGBA, b.RGBA, b.UNSIGNED_BYTE, source);
+  assert.equal(b.getError(), b.NO_ERROR);
+  b.bindFramebuffer(b.FRAMEBUFFER, b.createFramebuffer());
+  b.framebufferTexture2D(b.FRAMEBUFFER, b.COLOR_ATTACHMENT0, b.TEXTURE_2D, tex, 0);
+  const px = new Uint8Array(4);
+  b.readPixels(1, 1, 1, 1, b.RGBA, b.UNSIGNED_BYTE, px);
+  assert.deepEqual([...px], [0, 255, 0, 255]);
+  a.destroy();
+  b.destroy();
+  dom.window.close();
+});

@@ -1,0 +1,220 @@
+//! A WebGL 1 context: WebGL 2's calls with WebGL 1's rules.
+//!
+//! [`Context::set_webgl1`] makes a context answer as a `WebGLRenderingContext` does: shaders
+//! are GLSL ES 1.00 only, `VERSION` and `SHADING_LANGUAGE_VERSION` say WebGL 1.0, and every
+//! enum WebGL 2 added ([`enums::WEBGL2_ONLY`]: `TEXTURE_3D`, `RGBA8`, `READ_FRAMEBUFFER`,
+//! `UNPACK_ROW_LENGTH`, `RASTERIZER_DISCARD`, …) is `INVALID_ENUM` wherever a call takes an
+//! enum, unless a WebGL 1 extension the application turned on brings it back
+//! (`OES_vertex_array_object`'s `VERTEX_ARRAY_BINDING_OES`, `WEBGL_draw_buffers`'
+//! `COLOR_ATTACHMENT1_WEBGL`, `EXT_blend_minmax`'s `MIN_EXT`, …). Rules of WebGL 1 that are
+//! not about enums are checked where they apply: `vertexAttribPointer` takes the five
+//! WebGL 1 types, `drawElements` takes `UNSIGNED_INT` only with `OES_element_index_uint`,
+//! `texImage2D`'s internal format must be its format, and texture images of a
+//! non-power-of-two size take no mipmaps or repeat wrapping.
+
+mod enums;
+
+use crate::context::Context;
+use crate::extensions::Extension;
+use crate::gl;
+
+/// Whether a context is WebGL 1, and the WebGL 1 extensions turned on.
+#[derive(Clone, Copy, Debug, Default)]
+pub(crate) struct Webgl1 {
+    /// A WebGL 1 context.
+    pub(crate) on: bool,
+    pub(crate) vertex_array_object: bool,
+    pub(crate) instanced_arrays: bool,
+    pub(crate) element_index_uint: bool,
+    pub(crate) standard_derivatives: bool,
+    pub(crate) draw_buffers: bool,
+    pub(crate) blend_minmax: bool,
+    pub(crate) frag_depth: bool,
+    pub(crate) shader_texture_lod: bool,
+}
+
+/// The extensions a WebGL 1 context offers.
+pub(crate) const WEBGL1_EXTENSIONS: [Extension; 8] = [
+    Extension::AngleInstancedArrays,
+    Extension::ExtBlendMinmax,
+    Extension::ExtFragDepth,
+    Extension::ExtShaderTextureLod,
+    Extension::OesElementIndexUint,
+    Extension::OesStandardDerivatives,
+    Extension::OesVertexArrayObject,
+    Extension::WebglDrawBuffers,
+];
+
+impl Context {
+    /// Makes this a WebGL 1 context (`canvas.getContext("webgl")`): GLSL ES 1.00 shaders and
+    /// WebGL 1's enums and rules (see the [module](self)); extensions from
+    /// [`Context::get_extension`] are WebGL 1's.
+    pub fn set_webgl1(&mut self) {
+        self.webgl1.on = true;
+        self.set_shader_target(essl::Target::WebGl1, &[]);
+    }
+
+    /// Whether this is a WebGL 1 context ([`Context::set_webgl1`]).
+    pub fn is_webgl1(&self) -> bool {
+        self.webgl1.on
+    }
+
+    /// Turns a WebGL 1 extension on (from `get_extension`); the shader extensions change
+    /// what later compiles accept.
+    pub(crate) fn enable_webgl1_extension(&mut self, e: Extension) {
+        let w = &mut self.webgl1;
+        match e {
+            Extension::OesVertexArrayObject => w.vertex_array_object = true,
+            Extension::AngleInstancedArrays => w.instanced_arrays = true,
+            Extension::OesElementIndexUint => w.element_index_uint = true,
+            Extension::OesStandardDerivatives => w.standard_derivatives = true,
+            Extension::WebglDrawBuffers => w.draw_buffers = true,
+            Extension::ExtBlendMinmax => w.blend_minmax = true,
+            Extension::ExtFragDepth => w.frag_depth = true,
+            Extension::ExtShaderTextureLod => w.shader_texture_lod = true,
+            _ => {}
+        }
+        let w = self.webgl1;
+        let shader: Vec<essl::Extension> = [
+            (
+                w.standard_derivatives,
+                essl::Extension::OesStandardDerivatives,
+            ),
+            (w.frag_depth, essl::Extension::ExtFragDepth),
+            (w.shader_texture_lod, essl::Extension::ExtShaderTextureLod),
+            (w.draw_buffers, essl::Extension::WebglDrawBuffers),
+        ]
+        .into_iter()
+        .filter_map(|(on, e)| on.then_some(e))
+        .collect();
+        self.set_shader_target(essl::Target::WebGl1, &shader);
+    }
+
+    /// Whether enum `value` exists for this context: always in WebGL 2; in WebGL 1 unless
+    /// WebGL 2 added it and no extension that is on brings it back.
+    pub(crate) fn webgl1_has_enum(&self, value: u32) -> bool {
+        if !self.webgl1.on || enums::WEBGL2_ONLY.binary_search(&value).is_err() {
+            return true;
+        }
+        let w = &self.webgl1;
+        match value {
+            gl::VERTEX_ARRAY_BINDING => w.vertex_array_object,
+            gl::VERTEX_ATTRIB_ARRAY_DIVISOR => w.instanced_arrays,
+            gl::FRAGMENT_SHADER_DERIVATIVE_HINT => w.standard_derivatives,
+            gl::MIN | gl::MAX => w.blend_minmax,
+            gl::MAX_COLOR_ATTACHMENTS | gl::MAX_DRAW_BUFFERS => w.draw_buffers,
+            v if (gl::COLOR_ATTACHMENT1..=gl::COLOR_ATTACHMENT15).contains(&v) => w.draw_buffers,
+            v if (gl::DRAW_BUFFER0..=gl::DRAW_BUFFER15).contains(&v) => w.draw_buffers,
+            _ => false,
+        }
+    }
+
+    /// Records `INVALID_ENUM` for the first of `values` a WebGL 1 context does not have;
+    /// whether one was refused.
+    pub(crate) fn webgl1_refuses(&self, function: &str, values: &[u32]) -> bool {
+        if !self.webgl1.on {
+            return false;
+        }
+        match values.iter().find(|&&v| !self.webgl1_has_enum(v)) {
+            Some(v) => {
+                self.error(
+                    gl::INVALID_ENUM,
+                    function,
+                    format_args!("0x{v:04X} is not an enum of WebGL 1"),
+                );
+                true
+            }
+            None => false,
+        }
+    }
+
+    /// WebGL 1's `vertexAttribPointer` types: the five 8-, 16- and 32-bit ones.
+    pub(crate) fn webgl1_refuses_vertex_type(&self, ty: u32) -> bool {
+        let ok = matches!(
+            ty,
+            gl::BYTE | gl::UNSIGNED_BYTE | gl::SHORT | gl::UNSIGNED_SHORT | gl::FLOAT
+        );
+        if self.webgl1.on && !ok {
+            self.error(
+                gl::INVALID_ENUM,
+                "vertexAttribPointer",
+                format_args!("type 0x{ty:04X} is not a vertex type of WebGL 1"),
+            );
+            return true;
+        }
+        false
+    }
+
+    /// WebGL 1's index types: `UNSIGNED_INT` only with `OES_element_index_uint`.
+    pub(crate) fn webgl1_refuses_index_type(&self, ty: u32, function: &str) -> bool {
+        if self.webgl1.on && ty == gl::UNSIGNED_INT && !self.webgl1.element_index_uint {
+            self.error(
+                gl::INVALID_ENUM,
+                function,
+                "UNSIGNED_INT indices need OES_element_index_uint",
+            );
+            return true;
+        }
+        false
+    }
+
+    /// WebGL 1's `texImage2D` formats: the internal format is the format, one of the five
+    /// unsized ones, with `UNSIGNED_BYTE` or a packed 16-bit type.
+    pub(crate) fn webgl1_refuses_image(&self, internalformat: i32, format: u32, ty: u32) -> bool {
+        if !self.webgl1.on {
+            return false;
+        }
+        let formats = [
+            gl::ALPHA,
+            gl::LUMINANCE,
+            gl::LUMINANCE_ALPHA,
+            gl::RGB,
+            gl::RGBA,
+        ];
+        if !formats.contains(&format) {
+            self.error(gl::INVALID_ENUM, "texImage2D", "not a format of WebGL 1");
+            return true;
+        }
+        let types = [
+            gl::UNSIGNED_BYTE,
+            gl::UNSIGNED_SHORT_5_6_5,
+            gl::UNSIGNED_SHORT_4_4_4_4,
+            gl::UNSIGNED_SHORT_5_5_5_1,
+        ];
+        if !types.contains(&ty) {
+            self.error(gl::INVALID_ENUM, "texImage2D", "not a type of WebGL 1");
+            return true;
+        }
+        if internalformat as u32 != format {
+            self.error(
+                gl::INVALID_OPERATION,
+                "texImage2D",
+                "WebGL 1: the internal format must be the format",
+            );
+            return true;
+        }
+        false
+    }
+
+    /// WebGL 1's renderbuffer formats.
+    pub(crate) fn webgl1_refuses_renderbuffer_format(&self, format: u32) -> bool {
+        let ok = matches!(
+            format,
+            gl::RGBA4
+                | gl::RGB565
+                | gl::RGB5_A1
+                | gl::DEPTH_COMPONENT16
+                | gl::STENCIL_INDEX8
+                | gl::DEPTH_STENCIL
+        );
+        if self.webgl1.on && !ok {
+            self.error(
+                gl::INVALID_ENUM,
+                "renderbufferStorage",
+                format_args!("0x{format:04X} is not a renderbuffer format of WebGL 1"),
+            );
+            return true;
+        }
+        false
+    }
+}
