@@ -2,14 +2,12 @@
 //! covers, assembled in one run of luma.gl per project (`luma.mjs`), and wrapped around the
 //! author's literals.
 
-use std::collections::HashMap;
 use std::path::{Path, PathBuf};
 
 use serde_json::{json, Value};
 
 use super::programs::{self, Literal, LocalModule, ModuleRef, Program};
 use super::{key, node, Assembled, Prepared, Preset, PresetError, Wrap};
-use crate::extract::HostKind;
 use crate::find::Found;
 use crate::imports::DiskImports;
 use crate::settings::Configs;
@@ -34,31 +32,7 @@ enum Asked {
 /// Prepares the `luma` preset for every host of `found` whose settings name it.
 pub fn prepare(found: &Found, configs: &Configs) -> Prepared {
     let mut prepared = Prepared::default();
-    // The hosts of each project (the folder whose node_modules holds luma.gl).
-    let mut projects: HashMap<PathBuf, Vec<usize>> = HashMap::new();
-    for (h, host) in found.hosts.iter().enumerate() {
-        let luma = configs
-            .for_file(&host.path)
-            .is_ok_and(|s| s.preset == Some(Preset::Luma));
-        if !luma || host.kind != HostKind::Script {
-            continue;
-        }
-        let dir = match host.path.parent() {
-            Some(p) if !p.as_os_str().is_empty() => p,
-            _ => Path::new("."),
-        };
-        match node::project_root(dir, PACKAGE) {
-            Some(root) => projects.entry(root).or_default().push(h),
-            None => {
-                let e = PresetError::NoPackage {
-                    preset: "luma",
-                    package: PACKAGE,
-                    dir: dir.to_path_buf(),
-                };
-                prepared.failed.insert(key(&host.path), e);
-            }
-        }
-    }
+    let projects = node::projects(found, configs, Preset::Luma, PACKAGE, &mut prepared);
     for (root, hosts) in projects {
         project(found, &root, &hosts, &mut prepared);
     }

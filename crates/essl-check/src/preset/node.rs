@@ -6,7 +6,48 @@ use std::io::Write;
 use std::path::{Path, PathBuf};
 use std::process::{Command, Stdio};
 
-use super::PresetError;
+use std::collections::HashMap;
+
+use super::{key, Prepared, Preset, PresetError};
+use crate::extract::HostKind;
+use crate::find::Found;
+use crate::settings::Configs;
+
+/// The script hosts of `found` whose settings name `preset`, by the project folder whose
+/// `node_modules` holds `package`; a host with no such folder above it is recorded as failed.
+pub fn projects(
+    found: &Found,
+    configs: &Configs,
+    preset: Preset,
+    package: &'static str,
+    prepared: &mut Prepared,
+) -> HashMap<PathBuf, Vec<usize>> {
+    let mut projects: HashMap<PathBuf, Vec<usize>> = HashMap::new();
+    for (h, host) in found.hosts.iter().enumerate() {
+        let named = configs
+            .for_file(&host.path)
+            .is_ok_and(|s| s.preset == Some(preset));
+        if !named || host.kind != HostKind::Script {
+            continue;
+        }
+        let dir = match host.path.parent() {
+            Some(p) if !p.as_os_str().is_empty() => p,
+            _ => Path::new("."),
+        };
+        match project_root(dir, package) {
+            Some(root) => projects.entry(root).or_default().push(h),
+            None => {
+                let e = PresetError::NoPackage {
+                    preset: preset.as_str(),
+                    package,
+                    dir: dir.to_path_buf(),
+                };
+                prepared.failed.insert(key(&host.path), e);
+            }
+        }
+    }
+    projects
+}
 
 /// The folder at or above `from` whose `node_modules` holds `package`: where the project's
 /// copy of the library is.

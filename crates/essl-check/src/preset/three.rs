@@ -7,7 +7,7 @@
 //! Both come from the three.js the project has installed (`three.mjs`, run once per project in
 //! Node.js); the prelude is that of a mesh with normals, opaque, no tone mapping, sRGB output.
 
-use std::collections::{HashMap, HashSet};
+use std::collections::HashSet;
 use std::path::{Path, PathBuf};
 use std::rc::Rc;
 
@@ -16,11 +16,10 @@ use essl::source::Span;
 use serde_json::{json, Value};
 
 use super::programs::{self, Literal};
-use super::{key, node, Assembled, Prepared, Preset, PresetError, Wrap};
+use super::{key, node, Assembled, Prepared, Preset, Wrap};
 use crate::check::from_pieces;
 use crate::codes::CheckCode;
 use crate::extract::js::objects;
-use crate::extract::HostKind;
 use crate::find::Found;
 use crate::imports::{DiskImports, Script};
 use crate::settings::Configs;
@@ -290,30 +289,7 @@ fn includes(text: &str) -> Vec<(std::ops::Range<usize>, String)> {
 
 /// Prepares the `three` preset for every host of `found` whose settings name it.
 pub fn prepare(found: &Found, configs: &Configs, prepared: &mut Prepared) {
-    let mut projects: HashMap<PathBuf, Vec<usize>> = HashMap::new();
-    for (h, host) in found.hosts.iter().enumerate() {
-        let three = configs
-            .for_file(&host.path)
-            .is_ok_and(|s| s.preset == Some(Preset::Three));
-        if !three || host.kind != HostKind::Script {
-            continue;
-        }
-        let dir = match host.path.parent() {
-            Some(p) if !p.as_os_str().is_empty() => p,
-            _ => Path::new("."),
-        };
-        match node::project_root(dir, PACKAGE) {
-            Some(root) => projects.entry(root).or_default().push(h),
-            None => {
-                let e = PresetError::NoPackage {
-                    preset: "three",
-                    package: PACKAGE,
-                    dir: dir.to_path_buf(),
-                };
-                prepared.failed.insert(key(&host.path), e);
-            }
-        }
-    }
+    let projects = node::projects(found, configs, Preset::Three, PACKAGE, prepared);
     for (root, hosts) in projects {
         project(found, &root, &hosts, prepared);
     }
