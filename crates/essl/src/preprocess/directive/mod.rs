@@ -88,21 +88,6 @@ fn join(tokens: &[PpToken]) -> String {
     s
 }
 
-/// Edit distance between two short strings.
-fn distance(a: &str, b: &str) -> usize {
-    let b: Vec<char> = b.chars().collect();
-    let mut prev: Vec<usize> = (0..=b.len()).collect();
-    for (i, ca) in a.chars().enumerate() {
-        let mut cur = vec![i + 1];
-        for (j, cb) in b.iter().enumerate() {
-            let sub = prev[j] + usize::from(ca != *cb);
-            cur.push(sub.min(prev[j + 1] + 1).min(cur[j] + 1));
-        }
-        prev = cur;
-    }
-    prev[b.len()]
-}
-
 impl Pp<'_> {
     /// Reads and handles the directive whose `#` is at `pos`; leaves `pos` at its line's end.
     pub(super) fn directive(&mut self) {
@@ -307,7 +292,7 @@ impl Pp<'_> {
         .with_token(name);
         let best = DIRECTIVES
             .iter()
-            .map(|k| (distance(name, k), *k))
+            .map(|k| (crate::near::edit_distance(name, k), *k))
             .filter(|(dist, k)| *dist <= 2 && *dist < k.len())
             .min();
         if name == "include" {
