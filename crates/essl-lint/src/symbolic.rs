@@ -347,104 +347,120 @@ impl<'a> Sym<'a> {
             }
         }
         if let Some(a) = a {
-            let ra = resolve(self.f, self.an, self.id, a);
-            match self.f.expressions[ra] {
-                E::Math {
-                    fun: Mf::Max,
-                    arg,
-                    arg1: Some(y),
-                    ..
-                } => {
-                    best = best.max(self.diff_lower_d(Some(arg), b, d).max(self.diff_lower_d(
-                        Some(y),
-                        b,
-                        d,
-                    )));
-                }
-                // clamp(x, lo, hi) = min(max(x, lo), hi): at least min(max(x, lo), hi).
-                E::Math {
-                    fun: Mf::Clamp,
-                    arg: x,
-                    arg1: Some(lo),
-                    arg2: Some(hi),
-                    ..
-                } => {
-                    let low =
-                        self.diff_lower_d(Some(x), b, d)
-                            .max(self.diff_lower_d(Some(lo), b, d));
-                    best = best.max(low.min(self.diff_lower_d(Some(hi), b, d)));
-                }
-                E::Math {
-                    fun: Mf::Min,
-                    arg,
-                    arg1: Some(y),
-                    ..
-                } => {
-                    best = best.max(self.diff_lower_d(Some(arg), b, d).min(self.diff_lower_d(
-                        Some(y),
-                        b,
-                        d,
-                    )));
-                }
-                E::Binary {
-                    op: Bo::Subtract,
-                    left,
-                    right,
-                } if b.is_none() => {
-                    best = best.max(self.diff_lower_d(Some(left), Some(right), d));
-                }
-                _ => {}
-            }
+            best = best.max(self.diff_lower_left(a, b, d));
         }
         if let Some(b) = b {
-            let rb = resolve(self.f, self.an, self.id, b);
-            match self.f.expressions[rb] {
-                E::Math {
-                    fun: Mf::Min,
-                    arg,
-                    arg1: Some(y),
-                    ..
-                } => {
-                    best = best.max(self.diff_lower_d(a, Some(arg), d).max(self.diff_lower_d(
-                        a,
-                        Some(y),
-                        d,
-                    )));
-                }
-                // a - clamp(y, lo, hi) = max(a - max(y, lo), a - hi).
-                E::Math {
-                    fun: Mf::Clamp,
-                    arg: y,
-                    arg1: Some(lo),
-                    arg2: Some(hi),
-                    ..
-                } => {
-                    let under =
-                        self.diff_lower_d(a, Some(y), d)
-                            .min(self.diff_lower_d(a, Some(lo), d));
-                    best = best.max(under.max(self.diff_lower_d(a, Some(hi), d)));
-                }
-                E::Math {
-                    fun: Mf::Max,
-                    arg,
-                    arg1: Some(y),
-                    ..
-                } => {
-                    best = best.max(self.diff_lower_d(a, Some(arg), d).min(self.diff_lower_d(
-                        a,
-                        Some(y),
-                        d,
-                    )));
-                }
-                E::Binary {
-                    op: Bo::Subtract,
-                    left,
-                    right,
-                } if a.is_none() => {
-                    best = best.max(self.diff_lower_d(Some(right), Some(left), d));
-                }
-                _ => {}
+            best = best.max(self.diff_lower_right(a, b, d));
+        }
+        best
+    }
+
+    /// [`Self::diff_lower_d`]'s cases on the left operand's shape: `max`, `min`, `clamp`, and a
+    /// subtraction standing alone.
+    fn diff_lower_left(&self, a: Handle<E>, b: Option<Handle<E>>, d: u32) -> f64 {
+        let mut best = f64::NEG_INFINITY;
+        let ra = resolve(self.f, self.an, self.id, a);
+        match self.f.expressions[ra] {
+            E::Math {
+                fun: Mf::Max,
+                arg,
+                arg1: Some(y),
+                ..
+            } => {
+                best = best.max(self.diff_lower_d(Some(arg), b, d).max(self.diff_lower_d(
+                    Some(y),
+                    b,
+                    d,
+                )));
             }
+            // clamp(x, lo, hi) = min(max(x, lo), hi): at least min(max(x, lo), hi).
+            E::Math {
+                fun: Mf::Clamp,
+                arg: x,
+                arg1: Some(lo),
+                arg2: Some(hi),
+                ..
+            } => {
+                let low = self
+                    .diff_lower_d(Some(x), b, d)
+                    .max(self.diff_lower_d(Some(lo), b, d));
+                best = best.max(low.min(self.diff_lower_d(Some(hi), b, d)));
+            }
+            E::Math {
+                fun: Mf::Min,
+                arg,
+                arg1: Some(y),
+                ..
+            } => {
+                best = best.max(self.diff_lower_d(Some(arg), b, d).min(self.diff_lower_d(
+                    Some(y),
+                    b,
+                    d,
+                )));
+            }
+            E::Binary {
+                op: Bo::Subtract,
+                left,
+                right,
+            } if b.is_none() => {
+                best = best.max(self.diff_lower_d(Some(left), Some(right), d));
+            }
+            _ => {}
+        }
+        best
+    }
+
+    /// [`Self::diff_lower_d`]'s cases on the right operand's shape: `min`, `max`, `clamp`, and
+    /// a subtraction standing alone.
+    fn diff_lower_right(&self, a: Option<Handle<E>>, b: Handle<E>, d: u32) -> f64 {
+        let mut best = f64::NEG_INFINITY;
+        let rb = resolve(self.f, self.an, self.id, b);
+        match self.f.expressions[rb] {
+            E::Math {
+                fun: Mf::Min,
+                arg,
+                arg1: Some(y),
+                ..
+            } => {
+                best = best.max(self.diff_lower_d(a, Some(arg), d).max(self.diff_lower_d(
+                    a,
+                    Some(y),
+                    d,
+                )));
+            }
+            // a - clamp(y, lo, hi) = max(a - max(y, lo), a - hi).
+            E::Math {
+                fun: Mf::Clamp,
+                arg: y,
+                arg1: Some(lo),
+                arg2: Some(hi),
+                ..
+            } => {
+                let under = self
+                    .diff_lower_d(a, Some(y), d)
+                    .min(self.diff_lower_d(a, Some(lo), d));
+                best = best.max(under.max(self.diff_lower_d(a, Some(hi), d)));
+            }
+            E::Math {
+                fun: Mf::Max,
+                arg,
+                arg1: Some(y),
+                ..
+            } => {
+                best = best.max(self.diff_lower_d(a, Some(arg), d).min(self.diff_lower_d(
+                    a,
+                    Some(y),
+                    d,
+                )));
+            }
+            E::Binary {
+                op: Bo::Subtract,
+                left,
+                right,
+            } if a.is_none() => {
+                best = best.max(self.diff_lower_d(Some(right), Some(left), d));
+            }
+            _ => {}
         }
         best
     }
