@@ -45,49 +45,6 @@ const KEYWORDS: &[&str] = &[
     "while",
 ];
 
-const TYPES: &[&str] = &[
-    "bool",
-    "int",
-    "uint",
-    "float",
-    "vec2",
-    "vec3",
-    "vec4",
-    "bvec2",
-    "bvec3",
-    "bvec4",
-    "ivec2",
-    "ivec3",
-    "ivec4",
-    "uvec2",
-    "uvec3",
-    "uvec4",
-    "mat2",
-    "mat3",
-    "mat4",
-    "mat2x3",
-    "mat2x4",
-    "mat3x2",
-    "mat3x4",
-    "mat4x2",
-    "mat4x3",
-    "sampler2D",
-    "sampler3D",
-    "samplerCube",
-    "sampler2DShadow",
-    "samplerCubeShadow",
-    "sampler2DArray",
-    "sampler2DArrayShadow",
-    "isampler2D",
-    "isampler3D",
-    "isamplerCube",
-    "isampler2DArray",
-    "usampler2D",
-    "usampler3D",
-    "usamplerCube",
-    "usampler2DArray",
-];
-
 fn item(label: &str, kind: CompletionItemKind, detail: Option<String>) -> CompletionItem {
     CompletionItem {
         label: label.to_string(),
@@ -165,8 +122,10 @@ pub fn complete(a: &Analysis, place: Place<'_>, pos: Position) -> Vec<Completion
             .map(|k| item(k, CompletionItemKind::KEYWORD, None)),
     );
     items.extend(
-        TYPES
+        // `void` is offered with the keywords.
+        essl::suggest::TYPE_NAMES
             .iter()
+            .filter(|t| **t != "void")
             .map(|t| item(t, CompletionItemKind::CLASS, None)),
     );
     items

@@ -4,7 +4,7 @@
 
 /// The words GLSL ES 3.00 and 1.00 have for types, which an unknown type name may be a
 /// misspelling of.
-const TYPES: &[&str] = &[
+pub(crate) const TYPES: &[&str] = &[
     "void",
     "bool",
     "int",

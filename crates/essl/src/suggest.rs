@@ -7,3 +7,7 @@
 pub fn nearest<'a>(name: &str, candidates: impl IntoIterator<Item = &'a str>) -> Option<&'a str> {
     crate::near::nearest(name, candidates)
 }
+
+/// The built-in type names of GLSL ES 3.00 and 1.00 (`void`, `float`, `vec3`, `sampler2D`, …),
+/// the ones a misspelt type is matched against: for completion lists.
+pub const TYPE_NAMES: &[&str] = crate::near::TYPES;
