@@ -193,10 +193,47 @@ def lygia_arg(ty, structs, decls):
         n = ty[-1]
         decls.add(f"in highp vec{n} lh_vec{n};")
         return f"greaterThan(lh_vec{n}, vec{n}(0.5))"
-    if ty.startswith("mat") or ty.startswith("sampler") or ty in structs:
+    if ty in structs:
+        return struct_arg(ty, structs[ty], decls)
+    if ty.startswith("mat") or ty.startswith("sampler"):
         decls.add(f"uniform {ty} lh_{ty};")
         return f"lh_{ty}"
     return None
+
+
+FLOAT_TYPES = ("float", "vec2", "vec3", "vec4")
+
+
+def struct_fields(body):
+    """The `float`/`vecN` fields a struct declares outside any `#if` block."""
+    fields, depth = [], 0
+    for line in body.split("\n"):
+        t = line.strip()
+        if re.match(r"#\s*if", t):
+            depth += 1
+        elif re.match(r"#\s*endif", t):
+            depth -= 1
+        elif depth == 0 and not t.startswith("#"):
+            for decl in t.split(";"):
+                words = [w for w in decl.split("//")[0].split() if w not in ("highp", "mediump", "lowp")]
+                if len(words) == 2 and words[0] in FLOAT_TYPES and re.fullmatch(r"\w+", words[1]):
+                    fields.append((words[0], words[1]))
+    return fields
+
+
+def struct_arg(ty, body, decls):
+    """A struct argument as a shader has it per pixel: the uniform's value with each `float` and
+    `vecN` field read from an input of its own (a material's position and normal, a shading
+    context's vectors vary across the surface)."""
+    decls.add(f"uniform {ty} lh_{ty};")
+    sets = []
+    for fty, name in struct_fields(body):
+        decls.add(f"in highp {fty} lh_{ty}_{name};")
+        sets.append(f"s.{name} = lh_{ty}_{name};")
+    if not sets:
+        return f"lh_{ty}"
+    decls.add(f"{ty} lh_make_{ty}() {{ {ty} s = lh_{ty}; {' '.join(sets)} return s; }}")
+    return f"lh_make_{ty}()"
 
 
 def accumulate(ty, call):
@@ -224,7 +261,7 @@ def lygia_shaders(root):
             continue
         own = read(path) or ""
         body = expand_includes(path, set())
-        structs = set(re.findall(r"\bstruct\s+(\w+)", body))
+        structs = dict(re.findall(r"\bstruct\s+(\w+)\s*\{([^}]*)\}", body))
         decls, calls = set(), []
         fn = re.compile(
             r"^[ \t]*(?:(?:highp|mediump|lowp)\s+)?(\w+)\s+(\w+)\s*\(([^()]*)\)\s*\{", re.M
@@ -263,7 +300,7 @@ def lygia_shaders(root):
             + "\n\n// lint harness: every function of "
             + rel
             + "\n"
-            + "\n".join(sorted(decls))
+            + "\n".join(sorted(decls, key=lambda d: ("{" in d, d)))
             + "\nout vec4 lh_out;\nvoid main() {\n    lh_out = vec4(0.0);\n    "
             + "\n    ".join(calls)
             + "\n}\n"
