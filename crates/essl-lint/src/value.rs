@@ -38,8 +38,11 @@ impl Facts {
     /// Not positive (every component) whenever every external value is non-negative:
     /// `-x`, `-k * d` (what `exp` turns into a value in (0, 1]).
     pub const NP: Facts = Facts(2048);
+    /// Every component an integer (for every value, not only ordinary ones): an `int`, a
+    /// `floor`, a whole constant, and sums and products of those.
+    pub const INTEGRAL: Facts = Facts(4096);
     /// The facts that are intersected on joins.
-    pub const ALL_AND: Facts = Facts(127 | 2048);
+    pub const ALL_AND: Facts = Facts(127 | 2048 | 4096);
 
     /// May be zero because it is a cross product (of vectors that may be parallel).
     pub const CROSS: Facts = Facts(128);
@@ -241,6 +244,12 @@ impl Num {
         }
         if comps.iter().all(|c| c.within(Interval::SIGNED_UNIT)) {
             self.facts = self.facts.with(Facts::UNIT);
+        }
+        if comps
+            .iter()
+            .all(|c| c.as_point().is_some_and(|x| x.fract() == 0.0))
+        {
+            self.facts = self.facts.with(Facts::INTEGRAL);
         }
         if self.n == 3 && self.facts.has(Facts::NZ)
             || self.n >= 3 && comps[..3].iter().any(|c| !c.contains(0.0))

@@ -27,6 +27,13 @@ struct Operands<'a> {
 }
 
 impl Operands<'_> {
+    /// Whether both operands are integers ([`Facts::INTEGRAL`]).
+    fn integral(&self) -> bool {
+        self.a.facts.has(Facts::INTEGRAL) && self.b.facts.has(Facts::INTEGRAL)
+    }
+}
+
+impl Operands<'_> {
     /// Whether the result is a vector.
     fn vector_result(&self) -> bool {
         self.a.n.max(self.b.n) > 1
@@ -66,6 +73,35 @@ impl Analysis {
             return None;
         };
         (x2 == left && y2 == y).then_some(y)
+    }
+
+    /// The modulus `k` of `x - floor(x * c) * k` with `c = 1 / k` (`mod289` of noise
+    /// functions, `x - floor(x * (1.0 / 289.0)) * 289.0`): `mod(x, k)` written out.
+    fn reciprocal_mod(&self, s: Site, left: Handle<E>, right: Handle<E>) -> Option<Num> {
+        let product = |h: Handle<E>| match s.f.expressions[h] {
+            E::Binary {
+                op: Bo::Multiply,
+                left,
+                right,
+            } => Some((left, right)),
+            _ => None,
+        };
+        let point = |h: Handle<E>| self.nm(s.id, h).and_then(|v| v.hull().as_point());
+        let (p, q) = product(right)?;
+        let (fl, k) = [(p, q), (q, p)]
+            .into_iter()
+            .find(|&(fl, _)| matches!(s.f.expressions[fl], E::Math { fun: Mf::Floor, .. }))?;
+        let E::Math { arg, .. } = s.f.expressions[fl] else {
+            return None;
+        };
+        let (u, v) = product(arg)?;
+        let c = [(u, v), (v, u)]
+            .into_iter()
+            .find(|&(x, _)| self.same(s.f, s.id, x, left))
+            .and_then(|(_, c)| point(c))?;
+        let kv = self.nm(s.id, k)?;
+        let kk = kv.hull().as_point()?;
+        ((c * kk - 1.0).abs() <= 1e-6).then_some(kv)
     }
 
     /// `l OP r`.
@@ -159,11 +195,24 @@ impl Analysis {
         if self.same(s.f, s.id, o.l, o.r) {
             return Num::from_components(&vec![Interval::point(0.0); a.n.max(b.n) as usize], deps);
         }
-        if let Some(y) = Self::is_mod(s.f, o.l, o.r) {
-            if let Some(yv) = self.nm(s.id, y) {
-                let comps = a.zip(&yv, Interval::modulo);
-                return Num::from_components(&comps, deps.set(Facts::NN, yv.facts.has(Facts::NN)));
-            }
+        if let Some(yv) = Self::is_mod(s.f, o.l, o.r)
+            .and_then(|y| self.nm(s.id, y))
+            .or_else(|| self.reciprocal_mod(s, o.l, o.r))
+        {
+            // The remainder of integers by an integer `k` is at most `k - 1`.
+            let whole = a.facts.has(Facts::INTEGRAL) && yv.facts.has(Facts::INTEGRAL);
+            let comps = a.zip(&yv, |x, y| {
+                let r = Interval::modulo(x, y);
+                match y.as_point() {
+                    Some(k) if whole && k >= 1.0 => r.meet(Interval::new(0.0, k - 1.0)),
+                    _ => r,
+                }
+            });
+            return Num::from_components(
+                &comps,
+                deps.set(Facts::NN, yv.facts.has(Facts::NN))
+                    .set(Facts::INTEGRAL, whole),
+            );
         }
         // `x - floor(x)`, written out (`level0 = floor(blend); blend -= level0;`): `fract(x)`.
         if let E::Math {
@@ -181,12 +230,18 @@ impl Analysis {
         // `1.0 - x` of an `x` in [-1, 1] whenever the external values are (a weight, a
         // colour channel, `metalness`): not negative for valid external values either, and
         // in [0, 1] when `x` is also not negative.
-        let from_one = a.comps().iter().all(|c| c.lo >= 1.0) && b.facts.has(Facts::UNIT)
+        // More generally `c - k * y` with `c ≥ |k|` and `y` in [-1, 1].
+        let from_one = self
+            .unit_mag(s, o.r, 0)
+            .is_some_and(|m| a.comps().iter().all(|c| c.lo >= m))
             || a.n > 1 && self.at_most_smallest(s, o.r, o.l);
-        let facts = deps.with(Facts::DIFF).set(Facts::NN, from_one).set(
-            Facts::UNIT,
-            from_one && b.facts.has(Facts::NN) && a.comps().iter().all(|c| c.hi <= 1.0),
-        );
+        let unit = from_one && b.facts.has(Facts::NN) && a.comps().iter().all(|c| c.hi <= 1.0);
+        let nn = from_one || self.completes_square(s, o.l, o.r);
+        let facts = deps
+            .with(Facts::DIFF)
+            .set(Facts::NN, nn)
+            .set(Facts::UNIT, unit)
+            .set(Facts::INTEGRAL, o.integral());
         let mut out = Num::from_components(&comps, facts);
         if !o.mixed() && o.vector_result() {
             out.norm = out.norm.meet(triangle(a.norm, b.norm));
@@ -259,7 +314,9 @@ impl Analysis {
         }
         let mixed = o.mixed();
         let comps = a.zip(b, Interval::mul);
-        let nn = fa.has(Facts::NN) && fb.has(Facts::NN) || fa.has(Facts::NP) && fb.has(Facts::NP);
+        let nn = fa.has(Facts::NN) && fb.has(Facts::NN)
+            || fa.has(Facts::NP) && fb.has(Facts::NP)
+            || self.holds_square(s, o.l, o.r);
         let np = fa.has(Facts::NN) && fb.has(Facts::NP) || fa.has(Facts::NP) && fb.has(Facts::NN);
         let pos = fa.has(Facts::POS) && fb.has(Facts::POS);
         let nz = fa.has(Facts::NZ) && fb.has(Facts::NZ) && (mixed || !o.vector_result());
@@ -271,7 +328,8 @@ impl Analysis {
             .set(Facts::POS, pos)
             .set(Facts::NZ, nz)
             .set(Facts::UNIT, unit)
-            .set(Facts::CROSS, cross);
+            .set(Facts::CROSS, cross)
+            .set(Facts::INTEGRAL, o.integral());
         let mut out = Num::from_components(&comps, facts);
         if mixed {
             let (s, v) = if a.n == 1 { (a, b) } else { (b, a) };
@@ -298,7 +356,8 @@ fn add(o: &Operands) -> Num {
         .deps
         .set(Facts::NN, nn)
         .set(Facts::POS, pos)
-        .set(Facts::NZ, nz);
+        .set(Facts::NZ, nz)
+        .set(Facts::INTEGRAL, o.integral());
     let mut out = Num::from_components(&comps, facts);
     if !o.mixed() && o.vector_result() {
         out.norm = out.norm.meet(triangle(a.norm, b.norm));
@@ -321,7 +380,8 @@ fn divide(o: &Operands) -> Num {
         .set(Facts::NN, nn)
         .set(Facts::POS, pos)
         .set(Facts::NZ, nz)
-        .set(Facts::CROSS, cross);
+        .set(Facts::CROSS, cross)
+        .set(Facts::INTEGRAL, is_int);
     let mut out = Num::from_components(&comps, facts);
     if b.n == 1 && a.n > 1 && !is_int {
         out.norm = out.norm.meet(a.norm.div(b.c[0].abs()));
@@ -343,7 +403,12 @@ fn modulo(o: &Operands) -> Num {
             )
         }
     });
-    Num::from_components(&comps, o.deps.set(Facts::NN, o.a.facts.has(Facts::NN)))
+    Num::from_components(
+        &comps,
+        o.deps
+            .set(Facts::NN, o.a.facts.has(Facts::NN))
+            .set(Facts::INTEGRAL, is_int || o.integral()),
+    )
 }
 
 /// Matrix times column vector (`None`: a matrix whose columns are not numbers).

@@ -287,6 +287,7 @@ impl Analysis {
                             .with(Facts::UNIT)
                             .with(Facts::DIFF)
                             .with(Facts::EXT)
+                            .with(Facts::INTEGRAL)
                             .with(Facts::ALL_OR),
                     )
                     .set(Facts::NP, x.facts.has(Facts::NN))
@@ -453,7 +454,10 @@ impl Analysis {
         let keep = if kind == ScalarKind::Float {
             x.facts
         } else {
-            x.facts.without(Facts::POS).without(Facts::NZ)
+            x.facts
+                .without(Facts::POS)
+                .without(Facts::NZ)
+                .with(Facts::INTEGRAL)
         };
         Val::Num(Num::from_components(&comps, keep.without(Facts::DIFF)))
     }

@@ -146,7 +146,8 @@ impl Call<'_> {
                         fx.has(Facts::POS) || (x.n == 1 && fx.has(Facts::NZ)),
                     )
                     .set(Facts::NZ, fx.has(Facts::NZ))
-                    .set(Facts::UNIT, fx.has(Facts::UNIT));
+                    .set(Facts::UNIT, fx.has(Facts::UNIT))
+                    .set(Facts::INTEGRAL, fx.has(Facts::INTEGRAL));
                 let mut r = Num::from_components(&x.map(Interval::abs), facts.with(deps));
                 r.norm = r.norm.meet(x.norm);
                 Val::Num(r.settle())
@@ -186,7 +187,11 @@ impl Call<'_> {
                     .set(Facts::NN, nn)
                     .set(Facts::POS, pos)
                     .set(Facts::NZ, pos)
-                    .set(Facts::UNIT, unit);
+                    .set(Facts::UNIT, unit)
+                    .set(
+                        Facts::INTEGRAL,
+                        fx.has(Facts::INTEGRAL) && fy.has(Facts::INTEGRAL),
+                    );
                 Val::Num(Num::from_components(&comps, facts))
             }
             Mf::Clamp | Mf::Saturate => {
@@ -280,7 +285,9 @@ impl Call<'_> {
             Mf::Ceil => self.unary(
                 Interval::ceil,
                 false,
-                self.keep_sign(fx).with(fx.only(Facts::UNIT)),
+                self.keep_sign(fx)
+                    .with(fx.only(Facts::UNIT))
+                    .with(Facts::INTEGRAL),
             ),
             Mf::Floor | Mf::Round | Mf::Trunc => {
                 let g = match self.fun {
@@ -291,7 +298,7 @@ impl Call<'_> {
                 self.unary(
                     g,
                     false,
-                    Facts::NONE
+                    Facts::INTEGRAL
                         .set(Facts::NN, fx.has(Facts::NN))
                         .with(fx.only(Facts::UNIT)),
                 )
@@ -359,7 +366,17 @@ impl Call<'_> {
             ),
             Mf::Pow => {
                 let y = nums[1];
-                let comps = x.zip(&y, |p, q| p.pow(q).slack(EPS));
+                // As `exp2(y * log2(x))`: `log2` is exact at 1 and increasing, `exp2` exact at
+                // 0 and increasing, so `x ≥ 1` and `y ≥ 0` keep the result at least 1
+                // (`int(pow(256.0, float(k)))` is not 0 for `k ≥ 0`).
+                let comps = x.zip(&y, |p, q| {
+                    let r = p.pow(q).slack(EPS);
+                    if p.lo >= 1.0 && q.lo >= 0.0 {
+                        Interval::new(r.lo.max(1.0), r.hi)
+                    } else {
+                        r
+                    }
+                });
                 let facts = Facts::NN
                     .set(Facts::POS, fx.has(Facts::POS))
                     .set(Facts::NZ, fx.has(Facts::POS) && x.n == 1)
@@ -383,7 +400,7 @@ impl Call<'_> {
                 let comps = x.zip(&y, Interval::step);
                 Val::Num(Num::from_components(
                     &comps,
-                    deps.with(Facts::NN).with(Facts::UNIT),
+                    deps.with(Facts::NN).with(Facts::UNIT).with(Facts::INTEGRAL),
                 ))
             }
             Mf::SmoothStep => {

@@ -235,10 +235,13 @@ impl Analysis {
                 (_, Mode::Typical) if matrix => Interval::new(0.0, TYPICAL_MATRIX),
                 (_, Mode::Typical) => Interval::new(0.0, TYPICAL),
             };
+            let int = matches!(kind, ScalarKind::Sint | ScalarKind::Uint);
             Num::splat(
                 i,
                 n,
-                Facts::NN
+                Facts::NONE
+                    .set(Facts::INTEGRAL, int)
+                    .with(Facts::NN)
                     .with(Facts::POS)
                     .with(Facts::NZ)
                     .with(Facts::NZ3)
@@ -257,7 +260,8 @@ impl Analysis {
                 ScalarKind::Uint => Interval::NON_NEGATIVE,
                 _ => Interval::FULL,
             };
-            Num::splat(i, n, deps.only(Facts::DEPS))
+            let int = matches!(kind, ScalarKind::Sint | ScalarKind::Uint);
+            Num::splat(i, n, deps.only(Facts::DEPS).set(Facts::INTEGRAL, int))
         })
     }
 

@@ -29,8 +29,11 @@
 //! - `relational`: relations intervals lose (an offset at most a vector's smallest component, a
 //!   monotone function of one variable);
 //! - `binary`: the arithmetic operators, on numbers and on matrices;
+//! - `algebra`: signs intervals lose in polynomial shapes (squares in products, completed
+//!   squares);
 //! - `math`: the built-in functions, by family.
 
+mod algebra;
 mod binary;
 mod calls;
 mod conditions;

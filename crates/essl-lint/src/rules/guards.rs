@@ -263,6 +263,11 @@ impl Cx<'_> {
                     Bo::Add => Some(a.add(b)),
                     Bo::Subtract => Some(a.sub(b)),
                     Bo::Multiply => Some(a.mul(b)),
+                    // `a / b` under `a ≥ 0` and `a < b`: in [0, 1) (`1.0 - blend / range`
+                    // under `blend > 0.0` and `blend < range`).
+                    Bo::Divide if a.lo >= 0.0 && self.ordered(f, id, left, right, g) => {
+                        Some(a.div(b).meet(Interval::UNIT))
+                    }
                     Bo::Divide => Some(a.div(b)),
                     _ => None,
                 }

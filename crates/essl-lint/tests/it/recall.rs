@@ -182,6 +182,38 @@ const HAZARDS: &[Hazard] = &[
     ),
     ("non-uniform-derivative", "texture", "  if (t.a > 0.5) { r = dFdx(v_x); }", W),
     ("non-uniform-derivative", "computed", "  if (dot(n, l) > 0.0) { r = fwidth(v_x); }", W),
+    // Near misses of the algebraic shapes the guarded twins below rely on.
+    // `c - k μ` with `c < |k|`: negative where μ is near 1.
+    ("pow-negative-base", "computed", "  r = pow(1.5776 - 2.0 * dot(n, l), 1.5);", W),
+    // A completed square with too little left over: `0.5 + g² - 2 g μ` is −0.5 at g = μ = 1.
+    (
+        "pow-negative-base",
+        "computed",
+        "  float g = v_x;\n  float gg = g * g;\n  r = pow(0.5 + gg - 2.0 * g * dot(n, l), 1.5);",
+        W,
+    ),
+    // `(x - y x) x` with `y` up to 2: `x² (1 - y)` is negative for `y > 1`.
+    (
+        "domain-sqrt",
+        "computed",
+        "  float y = 2.0 * t.r;\n  r = sqrt((v_x - y * v_x) * v_x);",
+        W,
+    ),
+    // A Fibonacci-sphere height from a hash of corners offset by a seed that may be
+    // fractional: the hash reaches 288.99 and `1 - sz²` −0.0069.
+    (
+        "domain-sqrt",
+        "uniform",
+        "  vec3 i0 = floor(v_pos * 10.0) + u_a;\n  vec3 x = ((i0 * 34.0) + 1.0) * i0;\n  vec3 h = x - floor(x * (1.0 / 289.0)) * 289.0;\n  float sz = h.x * -0.006920415 + 0.996539792;\n  r = sqrt(1.0 - sz * sz);",
+        W,
+    ),
+    // `pow(2, k)` of a `k` that can be negative truncates to 0.
+    (
+        "domain-integer-division",
+        "computed",
+        "  int d = int(pow(2.0, float(int(v_x * 9.0) % 4 - 3)));\n  r = float(int(v_x * 1000.0) / d);",
+        W,
+    ),
 ];
 
 /// The guarded twins: (rule, body) with no finding of the rule, notes included.
@@ -283,6 +315,39 @@ const GUARDED: &[(&str, &str)] = &[
         "  if (v_x > 0.5) { r = textureLod(u_tex, v_uv, 0.0).r; }",
     ),
     ("non-uniform-derivative", "  if (u_a > 0.5) { r = texture(u_tex, v_uv).r; }"),
+    // Henyey–Greenstein: `1 + g² - 2 g μ ≥ 1 - μ² ≥ 0` for |μ| ≤ 1, whatever g is (a raw
+    // `dot` of unit vectors is 1 + ε at most: the rounding finding stays).
+    (
+        "pow-negative-base",
+        "  float g = v_x;\n  float gg = g * g;\n  float mu = clamp(dot(n, l), -1.0, 1.0);\n  r = (1.0 - gg) / pow(1.0 + gg - 2.0 * g * mu, 1.5);",
+    ),
+    // The same with a constant g: `1.5776 - 1.52 μ > 0`.
+    ("pow-negative-base", "  r = pow(1.5776 - 1.52 * dot(n, l), 1.5);"),
+    // The correlated Smith term: `(x - a² x) x + a² = x² (1 - a²) + a²` for a roughness in [0, 1].
+    (
+        "domain-sqrt",
+        "  float a2 = t.g * t.g;\n  float nv = max(dot(n, l), 0.0);\n  r = sqrt((nv - a2 * nv) * nv + a2);",
+    ),
+    // A product holding a square: `m (x) (x)` with `m > 0`.
+    (
+        "domain-sqrt",
+        "  float m2 = v_x * v_x + 0.25;\n  float q = v_pos.x - 0.5;\n  r = sqrt(m2 * q * q / m2);",
+    ),
+    // The same hash of whole corners: at most 288, so `sz` stays within ±0.9966.
+    (
+        "domain-sqrt",
+        "  vec3 i0 = floor(v_pos * 10.0);\n  vec3 x = ((i0 * 34.0) + 1.0) * i0;\n  vec3 h = x - floor(x * (1.0 / 289.0)) * 289.0;\n  float sz = h.x * -0.006920415 + 0.996539792;\n  r = sqrt(1.0 - sz * sz);",
+    ),
+    // `pow(256, k)` of a `k` in [0, 6] is at least 1.
+    (
+        "domain-integer-division",
+        "  int d = int(pow(256.0, float(3 - int(v_x * 9.0) % 4)));\n  r = float(int(v_x * 1000.0) / d);",
+    ),
+    // Under `b > 0.0` and `b < u_a`, `b / u_a` is in [0, 1).
+    (
+        "pow-negative-base",
+        "  float b = v_x * 3.0 - 1.0;\n  if (b > 0.0) { if (b < u_a) { r = pow(1.0 - b / u_a, 2.0); } }",
+    ),
 ];
 
 #[test]
