@@ -11,34 +11,11 @@ import {mkdirSync, readdirSync, writeFileSync} from 'node:fs';
 import {dirname, join} from 'node:path';
 import {fileURLToPath, pathToFileURL} from 'node:url';
 import * as S from 'three';
-import {WebGLPrograms} from 'three/src/renderers/webgl/WebGLPrograms.js';
+import {build} from './three-build.mjs';
 
 const out = process.argv[2];
 mkdirSync(out, {recursive: true});
 const shaders = join(dirname(fileURLToPath(import.meta.url)), 'node_modules/three/examples/jsm/shaders');
-
-function build(material) {
-  const sources = [];
-  const gl = {VERTEX_SHADER: 0x8b31, FRAGMENT_SHADER: 0x8b30, createProgram: () => ({}),
-    createShader: t => ({t}), shaderSource: (sh, src) => sources.push(src), compileShader() {},
-    attachShader() {}, bindAttribLocation() {}, linkProgram() {}};
-  const renderer = {getContext: () => gl, getRenderTarget: () => null,
-    state: {buffers: {depth: {getReversed: () => false}}},
-    toneMapping: S.NoToneMapping, outputColorSpace: S.SRGBColorSpace,
-    shadowMap: {enabled: false, type: S.PCFShadowMap}, debug: {checkShaderErrors: true}};
-  const caps = {precision: 'highp', logarithmicDepthBuffer: false, getMaxPrecision: p => p};
-  const lights = {sun: [], sunShadowMap: [], directional: [], directionalShadowMap: [], point: [],
-    pointShadowMap: [], spot: [], spotLightMap: [], spotShadowMap: [], rectArea: [], hemi: [],
-    numSpotLightShadowsWithMaps: 0, numLightProbes: 0};
-  const programs = WebGLPrograms(renderer, {get: () => null}, {has: () => false}, caps, {},
-    {numPlanes: 0, numIntersection: 0});
-  const object = new S.Mesh(new S.BoxGeometry(), material);
-  const params = programs.getParameters(material, lights, [], {isScene: true, fog: null,
-    environment: null}, object, []);
-  params.uniforms = programs.getUniforms(material);
-  programs.acquireProgram(params, programs.getProgramCacheKey(params));
-  return sources;
-}
 
 const raw = /^\s*(?:attribute|in)\s+vec3\s+position\s*;|^\s*uniform\s+mat4\s+(?:modelViewMatrix|projectionMatrix)\s*;/m;
 const written = [];

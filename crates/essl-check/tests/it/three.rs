@@ -2,9 +2,11 @@
 //! `scripts/fetch-js-libs.sh` installs it): every shader object built as three.js's
 //! WebGLProgram builds it, with an error exactly where Chromium reports one
 //! (`tests/oracle/three-shaders.json`, written by `scripts/three-oracle.sh`) and the same active
-//! uniforms and attributes where it links; a program whose `defines` the script computes is
-//! left unchecked with a note; and errors planted in a material's shader, in an
-//! `#include <chunk>` and in a chunk override reported on their lines.
+//! uniforms and attributes where it links; the same for the materials the classes of
+//! `examples/jsm` make (postprocessing passes, objects, lines, …), matched by where their
+//! texts are written; a program whose `defines` the script computes is left unchecked with a
+//! note; and errors planted in a material's shader, in an `#include <chunk>` and in a chunk
+//! override reported on their lines.
 
 use std::collections::BTreeMap;
 use std::path::Path;
@@ -132,6 +134,98 @@ fn three_js_example_shaders_compile_and_link_as_in_chromium() {
             "FreiChenShader.js:85:33 reserved-word",
             "TriangleBlurShader.js:68:14 not-a-function",
         ]
+    );
+}
+
+/// Where a shader's text is written: its file relative to `jsm` and the byte it starts at, as
+/// `scripts/three-oracle.sh` writes it (`FILE@BYTE`).
+fn written_at(jsm: &Path, s: &essl_check::CheckedShader) -> Option<String> {
+    let file = s.path.strip_prefix(jsm).ok()?;
+    Some(format!("{}@{}", file.display(), s.embedded_at?))
+}
+
+#[test]
+fn three_js_example_materials_compile_and_link_as_in_chromium() {
+    let Some(js) = essl_testdata::js_libraries() else {
+        return;
+    };
+    let oracle: serde_json::Value = serde_json::from_str(
+        &std::fs::read_to_string(
+            essl_testdata::repo_root().join("tests/oracle/three-shaders.json"),
+        )
+        .unwrap(),
+    )
+    .unwrap();
+    let jsm = js.join("node_modules/three/examples/jsm");
+    let run = check(&jsm, three(), CheckOptions::default());
+    // Each program essl checked, by where its fragment shader's text is written.
+    let mut by_fragment: BTreeMap<String, Vec<Verdict>> = BTreeMap::new();
+    for unit in &run.results {
+        for p in &unit.programs {
+            let (vs, fs) = (&unit.shaders[p.vertex], &unit.shaders[p.fragment]);
+            let ok = |s: &essl_check::CheckedShader| !s.all().any(|(_, d)| d.is_error());
+            let linked = p
+                .program
+                .as_ref()
+                .filter(|prog| prog.ok && p.linked)
+                .map(|prog| (prog.uniforms.len(), prog.attributes.len()));
+            if let Some(at) = written_at(&jsm, fs) {
+                by_fragment
+                    .entry(at)
+                    .or_default()
+                    .push((ok(vs), ok(fs), linked));
+            }
+        }
+    }
+    let notes: Vec<String> = lines(&jsm, &run)
+        .into_iter()
+        .filter(|l| l.ends_with("preset-unchecked"))
+        .collect();
+    let noted = |file: &str| notes.iter().any(|l| l.starts_with(&format!("{file}:")));
+    let (mut checked, mut computed, mut unchecked, mut differ) = (0, 0, Vec::new(), Vec::new());
+    for (name, chromium) in oracle["materials"].as_object().unwrap() {
+        let Some(fragment) = chromium["fragment"].as_str() else {
+            // A text the script computes (a ShaderLib entry, a joined array): nowhere to check.
+            computed += 1;
+            continue;
+        };
+        let Some(verdicts) = by_fragment.get(fragment) else {
+            // Texts as written but `defines` computed: a note in the class's file or in the
+            // file the text is written in.
+            let class_file = name.split('-').next().unwrap().replacen('_', "/", 1) + ".js";
+            let text_file = fragment.split('@').next().unwrap();
+            assert!(
+                noted(&class_file) || noted(text_file),
+                "{name}: no note: {notes:#?}"
+            );
+            unchecked.push(name.as_str());
+            continue;
+        };
+        checked += 1;
+        for &(vs, fs, linked) in verdicts {
+            let counts = linked.map(|(u, a)| (u as u64, a as u64));
+            let want = chromium["uniforms"]
+                .as_u64()
+                .zip(chromium["attributes"].as_u64());
+            if vs != chromium["vertex_compiled"]
+                || fs != chromium["fragment_compiled"]
+                || (chromium["linked"] == true && counts != want)
+            {
+                differ.push(format!(
+                    "{name}: essl {vs} {fs} {linked:?}, Chromium {chromium}"
+                ));
+            }
+        }
+    }
+    assert!(differ.is_empty(), "{differ:#?}");
+    // 41 materials: Chromium compiles and links every one; essl checks 29 of them with the same
+    // verdicts and numbers of active uniforms and attributes, 3 have texts a script computes,
+    // and 9 have `defines` a script computes (BloomPass's kernel size, GTAOPass's Poisson
+    // samples, OutlinePass's and UnrealBloomPass's kernels and mip counts).
+    assert_eq!(
+        (checked, computed, unchecked.len()),
+        (29, 3, 9),
+        "{unchecked:?}"
     );
 }
 
