@@ -3,6 +3,7 @@
 
 mod annotated;
 mod codes;
+mod minify;
 mod differential;
 mod oracle;
 mod preprocess;
