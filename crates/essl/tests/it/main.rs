@@ -3,8 +3,8 @@
 
 mod annotated;
 mod codes;
-mod minify;
 mod differential;
+mod minify;
 mod oracle;
 mod preprocess;
 mod robustness;
