@@ -138,13 +138,16 @@ fn active_code(file: &SourceFile, stage: Stage, options: &CompileOptions) -> nam
     )
 }
 
+/// One part of a module's interface, as text to compare.
+type Summary = fn(&Module) -> String;
+
 /// Checks that the minified shader compiles and has the original's interface.
 fn verify(original: &Shader, minified: &Shader) -> Result<(), MinifyError> {
     if let Some(first) = minified.diagnostics.iter().find(|d| d.is_error()) {
         return Err(MinifyError::Broken(first.message.clone()));
     }
     let (a, b) = (&original.module, &minified.module);
-    let checks: [(&str, fn(&Module) -> String); 4] = [
+    let checks: [(&str, Summary); 4] = [
         ("interface", interface),
         ("uniform blocks", blocks),
         ("active uniforms and interface variables", |m| {
