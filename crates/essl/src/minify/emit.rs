@@ -66,6 +66,7 @@ pub(super) fn print(
         for (i, t) in line.tokens.iter().enumerate() {
             let text = match rename.get(&t.text) {
                 Some(new) if t.kind == PpKind::Ident && !after_dot(line.tokens, i) => new.as_str(),
+                _ if t.kind == PpKind::Number && !line.directive => shorter_float(&t.text),
                 _ => t.text.as_str(),
             };
             // `#define F(x)` is a function-like macro, `#define F (x)` an object-like one.
@@ -90,6 +91,28 @@ pub(super) fn print(
     out
 }
 
+/// A decimal float literal without the zeros that do not change its value (`1.0` → `1.`,
+/// `0.50` → `.5`); any other number as it is (integers, exponents, suffixes). Directives keep
+/// their numbers: `#if` takes no floats, and `#version 100` is no float.
+fn shorter_float(text: &str) -> &str {
+    let Some((int, frac)) = text.split_once('.') else {
+        return text;
+    };
+    if !int.bytes().chain(frac.bytes()).all(|b| b.is_ascii_digit()) {
+        return text;
+    }
+    let int = int.trim_start_matches('0');
+    let frac = frac.trim_end_matches('0');
+    let start = text.len() - int.len() - 1 - text.split_once('.').map_or(0, |(_, f)| f.len());
+    // `int` ends at the dot and `frac` starts after it: the shortened literal is one slice.
+    let short = &text[start..start + int.len() + 1 + frac.len()];
+    if short == "." {
+        "0."
+    } else {
+        short
+    }
+}
+
 /// Every punctuator's text.
 const PUNCTS: &[&str] = &[
     "(", ")", "[", "]", "{", "}", ".", ",", ":", ";", "?", "+", "-", "*", "/", "%", "!", "~", "&",
@@ -106,22 +129,24 @@ pub(super) fn needs_space(a: &str, b: &str) -> bool {
     let (Some(last), Some(first)) = (a.chars().last(), b.chars().next()) else {
         return false;
     };
-    let a_word = is_word_char(last);
     let a_number = a.starts_with(|c: char| c.is_ascii_digit())
         || (a.starts_with('.') && a.len() > 1 && a.as_bytes()[1].is_ascii_digit());
-    if a_word && (is_word_char(first) || (a_number && first == '.')) {
-        return true;
+    if a_number {
+        // A number takes any word character or `.` after it, and a sign after an exponent's
+        // `e`.
+        return is_word_char(first)
+            || first == '.'
+            || (matches!(last, 'e' | 'E') && matches!(first, '+' | '-'));
     }
-    // A number that ends in an exponent's `e` would take a following sign.
-    if a_number && matches!(last, 'e' | 'E') && matches!(first, '+' | '-') {
-        return true;
-    }
-    // `.5` after a name or number would join it.
-    if a_word && first == '.' && b.len() > 1 && b.as_bytes()[1].is_ascii_digit() {
-        return true;
+    let a_word = is_word_char(last);
+    if a_word {
+        // `.5` after a name would join it; `.x` would not.
+        return is_word_char(first)
+            || (first == '.' && b.len() > 1 && b.as_bytes()[1].is_ascii_digit());
     }
     if !a.is_ascii() || !b.is_ascii() || !PUNCTS.contains(&a) {
-        return !a_word && !PUNCTS.contains(&a);
+        // Around a character outside GLSL's set (only in skipped code): a space.
+        return !PUNCTS.contains(&a);
     }
     if a.ends_with('/') && matches!(first, '/' | '*') {
         return true;
@@ -134,7 +159,28 @@ pub(super) fn needs_space(a: &str, b: &str) -> bool {
 
 #[cfg(test)]
 mod tests {
-    use super::needs_space;
+    use super::{needs_space, shorter_float};
+
+    #[test]
+    fn float_literals_lose_needless_zeros() {
+        for (a, b) in [
+            ("1.0", "1."),
+            ("0.5", ".5"),
+            ("0.0", "0."),
+            ("0.", "0."),
+            ("10.250", "10.25"),
+            ("007.0", "7."),
+            (".5", ".5"),
+            ("1", "1"),
+            ("0", "0"),
+            ("1.0e5", "1.0e5"),
+            ("2.0f", "2.0f"),
+            ("0x10", "0x10"),
+            ("1u", "1u"),
+        ] {
+            assert_eq!(shorter_float(a), b, "{a}");
+        }
+    }
 
     #[test]
     fn spaces_only_where_tokens_would_join() {
@@ -151,6 +197,9 @@ mod tests {
         assert!(needs_space("&", "&"));
         assert!(needs_space("#", "#"));
         assert!(needs_space("1e", "+"));
+        assert!(needs_space("1.", "x"));
+        assert!(!needs_space("1.", ";"));
+        assert!(!needs_space("1.", ")"));
         assert!(!needs_space("x", "+"));
         assert!(!needs_space("(", "x"));
         assert!(!needs_space(")", "{"));

@@ -35,7 +35,7 @@ fn locals_parameters_and_functions_are_renamed_interface_names_kept() {
     let m = run(text, Stage::Fragment);
     insta::assert_snapshot!(m.text, @r"
     #version 300 es
-    precision highp float;struct Light{vec3 position;vec3 color;};uniform Light u_light;uniform Block{mat4 u_view;}block;in vec3 v_normal;out vec4 outColor;float d(vec3 a,vec3 b){float c=max(dot(a,b),0.0);return c;}void main(){vec3 a=normalize(v_normal);vec3 b=normalize(u_light.position-(block.u_view*vec4(a,1)).xyz);outColor=vec4(u_light.color*d(a,b),1);}
+    precision highp float;struct Light{vec3 position;vec3 color;};uniform Light u_light;uniform Block{mat4 u_view;}block;in vec3 v_normal;out vec4 outColor;float d(vec3 a,vec3 b){float c=max(dot(a,b),0.);return c;}void main(){vec3 a=normalize(v_normal);vec3 b=normalize(u_light.position-(block.u_view*vec4(a,1)).xyz);outColor=vec4(u_light.color*d(a,b),1);}
     ");
     let names: Vec<&str> = m.renamed.iter().map(|(a, _)| a.as_str()).collect();
     assert_eq!(names, ["amount", "lambert", "normal", "toLight"]);
@@ -88,7 +88,7 @@ fn macro_bodies_are_renamed_with_the_code_and_function_like_macros_stay() {
     precision highp float;out vec4 o;
     #define TWICE(a)((a)*2.0)
     #define OBJ (1.0)
-    float b(float a){return TWICE(a)+OBJ;}void main(){o=vec4(b(0.5));}
+    float b(float a){return TWICE(a)+OBJ;}void main(){o=vec4(b(.5));}
     ");
 }
 
@@ -158,7 +158,7 @@ fn shadowing_and_overloads_come_out_the_same() {
         void main() { float x = 1.0; { float x = 2.0; o.x = f(x); } o.y = f(vec2(x)); o.zw = vec2(0); }\n";
     insta::assert_snapshot!(frag(text), @r"
     #version 300 es
-    precision highp float;out vec4 o;float b(float a){return a;}float b(vec2 a){return a.x;}void main(){float a=1.0;{float a=2.0;o.x=b(a);}o.y=b(vec2(a));o.zw=vec2(0);}
+    precision highp float;out vec4 o;float b(float a){return a;}float b(vec2 a){return a.x;}void main(){float a=1.;{float a=2.;o.x=b(a);}o.y=b(vec2(a));o.zw=vec2(0);}
     ");
 }
 
