@@ -4,14 +4,16 @@
 //! What changes:
 //! - comments go, and white space is kept only where two tokens would otherwise join
 //!   (`float x`, `a - -b`); code runs on one line. Line continuations are joined.
-//! - local variables, function parameters and user functions (never `main`) take the shortest
-//!   names that nothing in the text, the language, its built-ins or the `defines` spell
-//!   (`a`, `b`, … the most used first); see [`names`] for exactly which names qualify.
+//! - local variables, function parameters, user functions (never `main`) and plain and `const`
+//!   globals take the shortest names that nothing in the text, the language, its built-ins or
+//!   the `defines` spell (`a`, `b`, … the most used first); see [`names`] for exactly which
+//!   names qualify.
+//! - decimal float literals lose the zeros that do not change their value (`1.0` → `1.`).
 //!
 //! What stays: every name WebGL can see or match (uniforms, uniform blocks and their members,
-//! struct types and members, attributes, `in`/`out` variables, varyings, fragment outputs,
-//! other globals), and every preprocessor directive, each on a line of its own with its
-//! comments and extra spaces gone: `#version` first, `#extension`, `#pragma`, `#line`, and
+//! struct types and members, attributes, `in`/`out` variables, varyings, fragment outputs),
+//! and every preprocessor directive, each on a line of its own with its comments and extra
+//! spaces gone: `#version` first, `#extension`, `#pragma`, `#line`, and
 //! macros and conditionals as written, so that the text still answers to other `defines` as
 //! the original did (three.js and similar libraries choose a shader's variant by prepending
 //! `#define`s). `#define` bodies are printed token by token and renamed with the code. A text

@@ -1,9 +1,9 @@
 //! Which names are renamed, and to what.
 //!
 //! A name is renamed when every declaration the checked module has of it is a local variable,
-//! a parameter or a user function other than `main`, and nothing else in the text may spell
-//! it: not a global (uniforms, inputs, outputs, uniform-block members and plain globals keep
-//! their names), a struct or block name, a struct or block member, a macro, a name a directive
+//! a parameter, a user function other than `main`, or a plain or `const` global (none of which
+//! WebGL sees), and nothing else in the text may spell it: not a uniform, input, output or
+//! uniform-block member, a struct or block name, a struct or block member, a macro, a name a directive
 //! tests or a `defines` option mentions, a layout qualifier, a built-in, a keyword or reserved
 //! word. Every occurrence of a renamed name is renamed the same way, except fields and
 //! swizzles after a `.`, so the renaming is a one-to-one map from names to new names that
@@ -17,7 +17,7 @@
 use rustc_hash::{FxHashMap, FxHashSet};
 
 use super::emit::{after_dot, Line};
-use crate::hir::Module;
+use crate::hir::{GlobalKind, Module};
 use crate::lex::PpKind;
 use crate::Name;
 
@@ -80,7 +80,13 @@ fn define_words(defines: &[(String, String)]) -> impl Iterator<Item = &str> {
 /// The names the module declares that are not renamed.
 fn kept_names<'a>(module: &'a Module, defines: &'a [(String, String)]) -> FxHashSet<&'a str> {
     let mut kept: FxHashSet<&str> = FxHashSet::default();
-    kept.extend(module.globals.iter().map(|g| g.name.as_str()));
+    kept.extend(
+        module
+            .globals
+            .iter()
+            .filter(|g| !private(g))
+            .map(|g| g.name.as_str()),
+    );
     for b in &module.blocks {
         kept.insert(&b.name);
         kept.extend(b.instance.as_deref());
@@ -95,6 +101,11 @@ fn kept_names<'a>(module: &'a Module, defines: &'a [(String, String)]) -> FxHash
     kept.extend(define_words(defines));
     kept.insert("main");
     kept
+}
+
+/// Whether a global is the shader's own (a plain or `const` global): WebGL cannot see its name.
+fn private(g: &crate::hir::Global) -> bool {
+    matches!(g.kind, GlobalKind::Private | GlobalKind::Const)
 }
 
 /// Whether a name is one the language or its built-ins take.
@@ -117,6 +128,11 @@ pub(super) fn plan(
 ) -> FxHashMap<Name, Name> {
     let kept = kept_names(module, defines);
     let mut candidates: FxHashMap<&str, usize> = FxHashMap::default();
+    for g in module.globals.iter().filter(|g| private(g)) {
+        if !kept.contains(g.name.as_str()) && !is_builtin(&g.name) {
+            candidates.insert(&g.name, 0);
+        }
+    }
     for f in &module.functions {
         let names = std::iter::once(&f.name)
             .chain(f.params.iter().map(|p| &p.name))

@@ -176,3 +176,15 @@ fn defines_option_names_are_respected() {
     let m = minify(text, Stage::Fragment, &options).unwrap();
     assert!(m.renamed.is_empty(), "{:?}", m.renamed);
 }
+
+#[test]
+fn plain_and_const_globals_are_renamed_interface_globals_kept() {
+    let text =
+        "#version 300 es\nprecision highp float;\nconst float SCALE = 2.0;\nfloat counter = 0.0;\n\
+        uniform float u_gain;\nin vec2 v_uv;\nout vec4 color;\n\
+        void main() { counter += SCALE * u_gain; color = vec4(v_uv, counter, 1); }\n";
+    insta::assert_snapshot!(frag(text), @r"
+    #version 300 es
+    precision highp float;const float b=2.;float a=0.;uniform float u_gain;in vec2 v_uv;out vec4 color;void main(){a+=b*u_gain;color=vec4(v_uv,a,1);}
+    ");
+}
