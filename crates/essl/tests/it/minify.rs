@@ -178,3 +178,62 @@ fn minified_webgl2fundamentals_shaders_compile() {
     assert!(t.failures.is_empty(), "{}", t.failures.join("\n"));
     assert!(t.shaders > 150 && t.after < t.before);
 }
+
+/// A shader with what the minifier must get right: macros (object- and function-like, tested
+/// and skipped), comments, a line continuation, shadowing, overloads, structs, a block.
+const RICH: &str = "#version 300 es // first\nprecision highp float;\n#define SCALE 2.0\n\
+    #define MUL(a, b) ((a) * (b))\n#ifdef USE_MAP\nuniform sampler2D map;\n#endif\n\
+    struct Light { vec3 color; float power; };\nuniform Light u_light;\n\
+    uniform Block { mat4 u_view; } block;\nin vec2 v_uv;\nout vec4 outColor;\n\
+    const float K = 0.50;\nfloat gain = 1.0;\n/* helpers */\n\
+    float shade(float x) { return MUL(x, SCALE) * K; }\nfloat shade(vec2 x) { return x.x; }\n\
+    void main() {\n  float x = shade(v_uv.x); // local\n  { float x = shade(v_uv); gain += x; }\n\
+      vec3 c = u_light.color * u_light.power \\\n    * x;\n  outColor = block.u_view * vec4(c, gain);\n}\n";
+
+proptest::proptest! {
+    #![proptest_config(proptest::prelude::ProptestConfig { cases: 256, ..Default::default() })]
+
+    /// Minify never panics on a mutated shader, and minifies every one that compiles.
+    #[test]
+    fn mutations_that_compile_minify(
+        pos in 0usize..RICH.len(),
+        insert in proptest::sample::select(vec![
+            "", ";", "{", "}", "(", ")", ".x", " float ", "1", "-", "- -", "/", "*", "#",
+            "//", "/*x*/", "\\\n", "\n#define x 1\n", "\n#if 0\nuniform float x;\n#endif\n",
+            "\n#undef SCALE\n", " a", "1.0", ".5", "__LINE__",
+        ]),
+        delete in 0usize..6,
+    ) {
+        let mut s = RICH.to_string();
+        let p = pos.min(s.len());
+        let end = (p + delete).min(s.len());
+        s.replace_range(p..end, insert);
+        let opts = CompileOptions::default();
+        let ok = compile(SourceFile::new("m", s.clone()), Stage::Fragment, &opts).ok();
+        let r = minify(&s, Stage::Fragment, &MinifyOptions::default());
+        if ok {
+            let m = r.unwrap_or_else(|e| panic!("{e}\n{s}"));
+            proptest::prop_assert!(m.text.len() < s.len());
+        } else {
+            proptest::prop_assert!(r.is_err());
+        }
+    }
+}
+
+#[test]
+fn the_rich_shader_minifies_with_and_without_its_macros() {
+    for defines in [vec![], vec![("USE_MAP".to_string(), "1".to_string())]] {
+        let options = MinifyOptions {
+            compile: CompileOptions {
+                defines,
+                ..CompileOptions::default()
+            },
+            ..MinifyOptions::default()
+        };
+        let m = minify(RICH, Stage::Fragment, &options).unwrap();
+        assert!(m
+            .text
+            .contains("#ifdef USE_MAP\nuniform sampler2D map;\n#endif\n"));
+        assert!(m.text.contains("uniform Light u_light;"));
+    }
+}
