@@ -101,3 +101,9 @@ test('bad arguments throw TypeErrors with a message', () => {
   assert.throws(() => minify('const s = 1;', {filename: 'a.js'}), {name: 'TypeError', message: /one shader's text/});
   assert.throws(() => minify(FS, {stage: 'fragment', bogus: 1}), {name: 'TypeError'});
 });
+
+test('the plugins take minify as a boolean only', async () => {
+  const {default: essl} = await import('../lib/vite.js');
+  assert.throws(() => essl({minify: 'yes'}), {name: 'TypeError', message: 'essl(): options.minify must be a boolean'});
+  assert.equal(essl({minify: true}).name, 'essl');
+});
