@@ -125,6 +125,31 @@ export function check(source: string, options?: CheckOptions): CheckResult;
 /** `check` on a thread of Node's pool (bundlers check many modules at once). */
 export function checkAsync(source: string, options?: CheckOptions): Promise<CheckResult>;
 
+/** Options of `minify`: those of `check`, and whether local names are shortened. */
+export interface MinifyOptions extends Omit<CheckOptions, 'preset'> {
+  /** Shorten local variables, parameters and user functions (default true); false removes
+   * comments and white space only. */
+  rename?: boolean;
+}
+
+/** What `minify` returns: the check's result, and the minified text when it has no errors. */
+export interface MinifyResult extends CheckResult {
+  /** The minified text, compiled again and its interface compared with the original's; null
+   * for a shader with errors (see `diagnostics`). */
+  text: string | null;
+  /** Each renamed local name and its new one. Uniforms, attributes, varyings, outputs, block
+   * and struct names and members are never renamed. */
+  renamed: Record<string, string>;
+}
+
+/** Minifies one shader's text (comments, white space, local names) after checking it. A
+ * shader with errors is not minified; an output that would not compile or would change the
+ * interface throws an Error rather than come back. */
+export function minify(source: string, options?: MinifyOptions): MinifyResult;
+
+/** `minify` on a thread of Node's pool. */
+export function minifyAsync(source: string, options?: MinifyOptions): Promise<MinifyResult>;
+
 /** What `link` returns: the program, and each shader's result. */
 export interface LinkResult extends Omit<CheckedProgram, 'vertex' | 'fragment'> {
   vertex: CheckedShader;

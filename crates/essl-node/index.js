@@ -81,6 +81,32 @@ export async function checkAsync(source, options) {
   return checked(call('checkAsync', () => json));
 }
 
+function minifyOptions(fn, source, options) {
+  text(fn, 'source', source);
+  const {rename = true, ...o} = opts(fn, options);
+  if (typeof rename !== 'boolean') throw new TypeError(`essl.${fn}: options.rename must be a boolean, not ${kind(rename)}`);
+  if (o.filename === undefined && o.stage) o.filename = o.stage === 'vertex' ? 'shader.vert' : 'shader.frag';
+  return [JSON.stringify(o), rename];
+}
+
+export function minify(source, options) {
+  const [o, rename] = minifyOptions('minify', source, options);
+  return checked(call('minify', () => native.minifyJson(source, o, rename)));
+}
+
+export async function minifyAsync(source, options) {
+  const [o, rename] = minifyOptions('minifyAsync', source, options);
+  let json;
+  try {
+    json = await native.minifyJsonAsync(source, o, rename);
+  } catch (e) {
+    return call('minifyAsync', () => {
+      throw e;
+    });
+  }
+  return checked(call('minifyAsync', () => json));
+}
+
 export function link(vertex, fragment, options) {
   text('link', 'vertex', vertex);
   text('link', 'fragment', fragment);

@@ -30,6 +30,7 @@ pub mod extract;
 mod find;
 mod imports;
 mod include;
+mod minify;
 mod pairs;
 mod preset;
 mod read;
@@ -47,6 +48,7 @@ pub use find::{
     UsageError,
 };
 pub use include::{has_include, MAX_DEPTH as MAX_INCLUDE_DEPTH};
+pub use minify::{minify, MinifyError};
 pub use pairs::{pairs, partner, ShaderFile};
 pub use preset::{Prepared, Preset, PresetError};
 pub use read::{io_message, read_source, Files, ReadError, MAX_FILE_SIZE};

@@ -46,6 +46,12 @@ enum Command {
     /// Exit status: 0 all translated, 1 some have errors or could not be translated, 2 usage
     /// or I/O errors.
     Translate(TranslateArgs),
+    /// Minify a shader file: comments, white space and local names go; uniform, attribute,
+    /// varying and output names stay; the output is compiled again and compared with the
+    /// original before it is written.
+    ///
+    /// Exit status: 0 minified, 1 the shader has errors (not minified), 2 usage or I/O errors.
+    Minify(MinifyArgs),
     /// Execute the dEQP value cases through essl's WebGL2 API as
     /// ../shared/tools/deqp-exec-oracle.py does in Chromium, with the same JSON Lines output.
     ///
@@ -102,6 +108,28 @@ enum Command {
         /// A rule id (`pow-negative-base`…).
         rule: Option<String>,
     },
+}
+
+#[derive(Args, Debug)]
+struct MinifyArgs {
+    /// The shader file (.vert, .frag, .vs, .fs, .vsh, .fsh, or --stage).
+    #[arg(value_name = "FILE")]
+    path: PathBuf,
+    /// The stage, where the file's extension does not tell it.
+    #[arg(long, value_enum, value_name = "STAGE")]
+    stage: Option<StageArg>,
+    /// The WebGL version the shader is for (overrides essl.toml's `target`).
+    #[arg(long, value_enum, value_name = "WEBGL")]
+    target: Option<WebglArg>,
+    /// A macro the shader is compiled with, `NAME` or `NAME=VALUE` (repeatable).
+    #[arg(short = 'D', value_name = "NAME[=VALUE]")]
+    define: Vec<String>,
+    /// Keep local names: remove comments and white space only.
+    #[arg(long)]
+    no_rename: bool,
+    /// Write to this file instead of standard output.
+    #[arg(short = 'o', long = "output", value_name = "FILE")]
+    output: Option<PathBuf>,
 }
 
 #[derive(Args, Debug)]
@@ -581,6 +609,14 @@ pub fn main_from(args: impl IntoIterator<Item = OsString>) -> u8 {
                 single_module: args.module == ModuleArg::Single,
             })
         }
+        Command::Minify(args) => crate::minify::run(&crate::minify::MinifyArgs {
+            path: args.path,
+            stage: args.stage.map(Stage::from),
+            target: args.target.map(essl::Target::from),
+            defines: args.define,
+            no_rename: args.no_rename,
+            out: args.output,
+        }),
         Command::Conformance(args) => {
             crate::conformance::run(&args.corpora, args.markdown.as_deref(), args.failures)
         }

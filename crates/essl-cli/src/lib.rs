@@ -12,6 +12,8 @@
 //! - [`rules`]: `essl rules` — the lint rules, or one rule's documentation.
 //! - [`conformance`]: `essl conformance` — score the front end on the conformance corpora.
 //! - [`translate`]: `essl translate` — shaders to WGSL, SPIR-V, MSL, HLSL or GLSL.
+//! - [`minify`]: `essl minify` — a shader file without comments, white space or long local
+//!   names, checked again.
 //! - `render`: `essl render` — draw a scene through essl-gl.
 //! - `deqp_exec`: `essl deqp-exec` — execute the dEQP value cases through essl-gl.
 //! - `report`: `essl report` — the light shaders' error against run time on essl-gl.
@@ -28,6 +30,7 @@ pub mod conformance;
 pub mod deqp_exec;
 pub mod explain;
 pub mod lint;
+pub mod minify;
 #[cfg(feature = "render")]
 pub mod render;
 #[cfg(feature = "report")]

@@ -1,7 +1,7 @@
 // What the Vite/Rollup plugin and the webpack loader share: which modules to check, checking
 // one through essl (the addon's one pipeline), and the error a bundler shows.
 import {readFile} from 'node:fs/promises';
-import {checkAsync, format} from '../index.js';
+import {checkAsync, format, minifyAsync} from '../index.js';
 
 export const SHADER = /\.(glsl|vert|frag|vs|fs|vsh|fsh)$/;
 const SCRIPT = /\.(m?[jt]sx?|c[jt]s)$/;
@@ -40,9 +40,13 @@ export async function checkModule(id, code, options = {}) {
   const source = isShader ? await readFile(f, 'utf8') : code;
   const o = {filename: f};
   for (const k of CHECK_KEYS) if (options[k] !== undefined) o[k] = options[k];
+  // `minify: true`: a shader file's text is minified (a script's shaders are left as they are,
+  // and so are shaders a preset's library assembles at run time).
+  const minify = isShader && options.minify === true && !options.preset;
   let result;
+  const notes = [];
   try {
-    result = await checkAsync(source, o);
+    result = minify ? await minifyOrCheck(source, o, f, notes) : await checkAsync(source, o);
   } catch (e) {
     // A `.glsl` file nothing gives a stage to is a chunk for other shaders to include (as
     // vite-plugin-glsl's users write them): it is checked where it is included.
@@ -52,8 +56,25 @@ export async function checkModule(id, code, options = {}) {
   const fails = d => d.severity === 'error' || (options.failOnWarnings && d.severity === 'warning');
   const errors = result.diagnostics.filter(fails);
   const warnings = result.diagnostics.filter(d => d.severity === 'warning' && !fails(d));
+  for (const n of notes) warnings.push({severity: 'warning', rendered: n});
   const shader = isShader ? result.shaders[0] : null;
-  return {result, errors, warnings, text: shader?.text ?? null, files: shader?.files ?? []};
+  const text = minify && typeof result.text === 'string' ? result.text : shader?.text ?? null;
+  return {result, errors, warnings, text, files: shader?.files ?? []};
+}
+
+/**
+ * A shader file checked and minified. Should the minifier refuse its own output (it compiles
+ * the text again and compares the interface), the file is checked as it is, its text goes
+ * out unminified, and a warning says why.
+ */
+async function minifyOrCheck(source, o, f, notes) {
+  try {
+    return await minifyAsync(source, o);
+  } catch (e) {
+    if (e instanceof TypeError || /cannot tell the stage/.test(e.message)) throw e;
+    notes.push(`essl: ${f} is not minified: ${e.message}`);
+    return await checkAsync(source, o);
+  }
 }
 
 /** The error a bundler reports: essl's text for every error, located at the first one. */

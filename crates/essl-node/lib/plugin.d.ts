@@ -9,6 +9,10 @@ export interface EsslPluginOptions
   exclude?: string | RegExp | (string | RegExp)[];
   /** Warnings fail the build too. */
   failOnWarnings?: boolean;
+  /** Minify imported shader files' text (comments, white space, local names; uniform,
+   * attribute and varying names kept), checked again before it is used (default false).
+   * Shaders inside JS/TS modules and shaders under a `preset` are left as they are. */
+  minify?: boolean;
   /** Load bare shader imports as modules exporting their text (default true). */
   load?: boolean;
 }

@@ -2,13 +2,17 @@
 // script that holds shaders as it is transformed; an error fails the build (and shows in
 // Vite's overlay in `vite dev`, until the file is saved fixed), a warning prints. A shader
 // file imported without another loader (`import fs from './light.frag'`) becomes a module
-// whose default export is the text WebGL is given, its `#include`s in place.
+// whose default export is the text WebGL is given, its `#include`s in place; with `minify:
+// true`, that text (and a `?raw` import's) minified.
 import {readFileSync} from 'node:fs';
 import {SHADER, buildError, checkModule, file, wanted} from './core.js';
 
 export default function essl(options = {}) {
   if (options === null || typeof options !== 'object' || Array.isArray(options)) {
     throw new TypeError('essl(): options must be an object');
+  }
+  if (options.minify !== undefined && typeof options.minify !== 'boolean') {
+    throw new TypeError('essl(): options.minify must be a boolean');
   }
   const load = options.load !== false;
   // Files whose errors the page shows (`vite dev`): saving one reloads the page, so that the
@@ -42,7 +46,9 @@ export default function essl(options = {}) {
         for (const e of checked.errors) if (e.file) failed.add(e.file);
         this.error(buildError(checked.errors));
       }
-      if (load && !id.includes('?') && SHADER.test(id) && checked.text !== null) {
+      // The module's text: a bare import's, or under `minify` a `?raw` import's too.
+      const raw = options.minify === true && /\?raw$/.test(id);
+      if (((load && !id.includes('?')) || raw) && SHADER.test(file(id)) && checked.text !== null) {
         return {code: `export default ${JSON.stringify(checked.text)};`, map: null};
       }
       return null;

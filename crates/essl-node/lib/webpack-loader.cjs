@@ -1,11 +1,14 @@
 // The webpack loader (`essl/webpack`): checks a shader file or a script that holds shaders;
 // an error fails the build with essl's message at the author's file, line and column, a
 // warning is a webpack warning. A shader file's output is the text WebGL is given (its
-// `#include`s in place): use it with `type: 'asset/source'`. A script passes through as it is.
+// `#include`s in place), minified under `minify: true`: use it with `type: 'asset/source'`. A script passes through as it is.
 module.exports = function esslLoader(source) {
   const callback = this.async();
   const options = this.getOptions ? this.getOptions() : {};
   const id = this.resourcePath + (this.resourceQuery || '');
+  if (options.minify !== undefined && typeof options.minify !== 'boolean') {
+    return callback(new TypeError('essl/webpack: options.minify must be a boolean'));
+  }
   import('./core.js')
     .then(async ({checkModule, buildError, SHADER, wanted}) => {
       if (!wanted(id, options)) return callback(null, source);

@@ -21,6 +21,7 @@ use napi::{Env, Error, Status, Task};
 use napi_derive::napi;
 use serde_json::json;
 
+pub mod minify;
 mod options;
 mod report;
 

@@ -52,25 +52,26 @@ const skip = tools ? false : 'vite, rollup and webpack are not installed (npm ci
 if (skip && process.env.ESSL_REQUIRE_CORPORA === '1') throw new Error(skip);
 const {default: essl} = await import('../lib/vite.js');
 const loader = join(here, '..', 'lib', 'webpack-loader.cjs');
+const {minify} = await import('../index.js');
 
-async function viteBuild(dir) {
+async function viteBuild(dir, options = {}) {
   return tools.vite.build({
     root: dir,
     configFile: false,
     logLevel: 'silent',
-    plugins: [essl()],
+    plugins: [essl(options)],
     build: {outDir: join(dir, 'dist'), minify: false},
   });
 }
 
-async function rollupBuild(dir) {
-  const bundle = await tools.rollup.rollup({input: join(dir, 'src/main.js'), plugins: [essl()], onwarn() {}});
+async function rollupBuild(dir, options = {}) {
+  const bundle = await tools.rollup.rollup({input: join(dir, 'src/main.js'), plugins: [essl(options)], onwarn() {}});
   const {output} = await bundle.generate({format: 'es'});
   await bundle.close();
   return output[0].code;
 }
 
-function webpackBuild(dir) {
+function webpackBuild(dir, options = {}) {
   return new Promise((resolve, reject) => {
     tools.webpack(
       {
@@ -81,8 +82,8 @@ function webpackBuild(dir) {
         output: {path: join(dir, 'dist'), filename: 'main.js'},
         module: {
           rules: [
-            {test: /\.(glsl|vert|frag)$/, type: 'asset/source', use: [{loader}]},
-            {test: /\.js$/, enforce: 'pre', use: [{loader}]},
+            {test: /\.(glsl|vert|frag)$/, type: 'asset/source', use: [{loader, options}]},
+            {test: /\.js$/, enforce: 'pre', use: [{loader, options}]},
           ],
         },
       },
@@ -101,7 +102,7 @@ function output(dir) {
 }
 
 const BUILDS = {
-  vite: async dir => (await viteBuild(dir), output(dir)),
+  vite: async (dir, options) => (await viteBuild(dir, options), output(dir)),
   rollup: rollupBuild,
   webpack: webpackBuild,
 };
@@ -113,6 +114,26 @@ for (const [name, build] of Object.entries(BUILDS)) {
       const code = await build(dir);
       assert.match(code, /float lambert\(vec3 n, vec3 l\)/);
       assert.doesNotMatch(code, /#include/);
+    } finally {
+      rmSync(dir, {recursive: true, force: true});
+    }
+  });
+  test(`${name}: minify: true ships the minified shader files, interface names intact`, {skip}, async () => {
+    const dir = project(null);
+    try {
+      const code = await build(dir, {minify: true});
+      const fragment = minify(readFileSync(join(dir, 'src/shaders/light.frag'), 'utf8'), {
+        filename: join(dir, 'src/shaders/light.frag'),
+      });
+      assert.equal(fragment.ok, true);
+      // The bundle holds the minified text as a JS string literal.
+      assert.ok(code.includes(JSON.stringify(fragment.text).slice(1, -1)), code);
+      assert.match(code, /uniform vec3 u_lightDirection;uniform vec4 u_color;out vec4 outColor;/);
+      assert.match(code, /in vec3 v_normal;/);
+      assert.match(code, /in vec4 a_position;/);
+      assert.doesNotMatch(code, /float lambert\(vec3 n, vec3 l\)/);
+      // A template literal's shader in a script is left as it is.
+      assert.match(code, /u_outline \* \$\{SCALE\}/);
     } finally {
       rmSync(dir, {recursive: true, force: true});
     }

@@ -18,6 +18,7 @@ pub mod diagnostic_code;
 pub mod hir;
 pub mod link;
 pub mod lower;
+pub mod minify;
 pub mod passes;
 pub mod program;
 pub mod reflect;

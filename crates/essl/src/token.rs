@@ -338,6 +338,12 @@ fn known(text: &str) -> Option<Known> {
     table.get(text).copied()
 }
 
+/// Whether `text` is a keyword or a reserved word of GLSL ES 1.00 or 3.00 (a name no identifier
+/// may take in either version).
+pub(crate) fn is_taken_word(text: &str) -> bool {
+    known(text).is_some()
+}
+
 /// A word of the language: a keyword, a reserved word or an identifier.
 fn word(text: &str, es100: bool) -> Tok {
     let Some(k) = known(text) else {

@@ -716,3 +716,38 @@ fn notes_are_counted_hidden_and_shown_with_show_notes() {
     let log: serde_json::Value = serde_json::from_str(&stdout(&o)).unwrap();
     assert_eq!(log["runs"][0]["results"][0]["level"], "note");
 }
+
+#[test]
+fn minify_prints_the_minified_shader_and_refuses_one_with_errors() {
+    let dir = tempfile::tempdir().unwrap();
+    let text = "#version 300 es\nprecision highp float;\n// the colour\nuniform vec4 u_color;\n\
+        out vec4 color;\nvoid main() {\n    vec4 tinted = u_color * 0.5;\n    color = tinted;\n}\n";
+    std::fs::write(dir.path().join("a.frag"), text).unwrap();
+    let o = essl(&["minify", "a.frag"], dir.path());
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    assert_eq!(
+        stdout(&o),
+        "#version 300 es\nprecision highp float;uniform vec4 u_color;out vec4 color;\
+         void main(){vec4 a=u_color*.5;color=a;}\n"
+    );
+    let o = essl(
+        &["minify", "a.frag", "--no-rename", "-o", "out.frag"],
+        dir.path(),
+    );
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    let out = std::fs::read_to_string(dir.path().join("out.frag")).unwrap();
+    assert!(out.contains("vec4 tinted=u_color*.5;"), "{out}");
+    std::fs::write(
+        dir.path().join("b.frag"),
+        GOOD_FRAG.replace("u_color;\n}", "u_colour;\n}"),
+    )
+    .unwrap();
+    let o = essl(&["minify", "b.frag"], dir.path());
+    assert_eq!(o.status.code(), Some(1));
+    assert!(
+        stderr(&o).contains("undeclared-identifier"),
+        "{}",
+        stderr(&o)
+    );
+    assert!(stdout(&o).is_empty());
+}

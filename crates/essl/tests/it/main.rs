@@ -4,6 +4,7 @@
 mod annotated;
 mod codes;
 mod differential;
+mod minify;
 mod oracle;
 mod preprocess;
 mod robustness;
