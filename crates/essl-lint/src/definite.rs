@@ -9,7 +9,10 @@
 //! variables written on *every* path to it: branches intersect, a branch that returns,
 //! discards, breaks or continues adds nothing, a loop body may run zero times unless its bounds
 //! are constant and let it run once (`for (int i = 0; i < 4; i++)`), the right side of `&&` and
-//! `||` and the branches of `?:` may not run. A call reads what the callee reads of the tracked
+//! `||` and the branches of `?:` may not run — but an `if` runs its first branch only where
+//! its condition is true, which for `a && f(x, out m)` means `f` ran and wrote `m`, and the
+//! same holds through a `bool` local set once at the top of the function (`bool rotate = !b &&
+//! f(x, out m); … if (rotate) { … m … }`). A call reads what the callee reads of the tracked
 //! globals before writing them, and then counts as writing what the callee may write.
 
 use rustc_hash::{FxHashMap as HashMap, FxHashSet as HashSet};
@@ -102,6 +105,11 @@ struct Walk<'a> {
     /// a write under them is not recorded in `guarded`, since a later `if` on the same
     /// uniforms does not run only where they ran.
     loose: usize,
+    /// For a local assigned at the top level of the function (outside every branch and
+    /// loop) and not written since: what is written wherever its value is true.
+    truth: HashMap<usize, State>,
+    /// How many statements (branches, loops, switches, blocks) enclose the current one.
+    nest: usize,
 }
 
 /// A uniform a condition tests, with the value it requires: a loose uniform, or a member of a
@@ -164,6 +172,8 @@ impl<'a> Walk<'a> {
             guarded: Vec::new(),
             context: Vec::new(),
             loose: 0,
+            truth: HashMap::default(),
+            nest: 0,
         }
     }
 
@@ -241,6 +251,9 @@ impl<'a> Walk<'a> {
     fn write(&mut self, st: &mut State, v: Var, bits: u8) {
         if let (Some(s), Var::Global(g)) = (&mut self.summary, v) {
             s.writes.insert(g);
+        }
+        if let Var::Local(l) = v {
+            self.truth.remove(&l);
         }
         if self.full.contains_key(&v) {
             *st.entry(v).or_insert(0) |= bits;
@@ -458,16 +471,75 @@ impl<'a> Walk<'a> {
         Some(st)
     }
 
-    fn stmt(&mut self, s: &Stmt, mut st: State) -> Option<State> {
+    fn stmt(&mut self, s: &Stmt, st: State) -> Option<State> {
+        let nested = matches!(
+            s.kind,
+            StmtKind::If(..) | StmtKind::Loop { .. } | StmtKind::Switch(..) | StmtKind::Block(_)
+        );
+        self.nest += usize::from(nested);
+        let out = self.stmt_in(s, st);
+        self.nest -= usize::from(nested);
+        out
+    }
+
+    /// What is written wherever `e` is true (`None`: nowhere known), from `st` before `e`:
+    /// both sides of `&&`, either of `||`, and what a local's assignment recorded.
+    fn when_true(&mut self, e: &Expr, st: &State) -> Option<State> {
+        match &e.kind {
+            ExprKind::Binary(BinaryOp::And, a, b) => {
+                let sa = self.when_true(a, st)?;
+                self.when_true(b, &sa)
+            }
+            ExprKind::Binary(BinaryOp::Or, a, b) => {
+                let ta = self.when_true(a, st);
+                let mut sa = st.clone();
+                self.expr(a, &mut sa);
+                meet_opt(ta, self.when_true(b, &sa))
+            }
+            _ => {
+                let mut s = st.clone();
+                self.expr(e, &mut s);
+                if let ExprKind::Local(l) = e.kind {
+                    for (v, bits) in self.truth.get(&l).into_iter().flatten() {
+                        *s.entry(*v).or_insert(0) |= bits;
+                    }
+                }
+                Some(s)
+            }
+        }
+    }
+
+    fn stmt_in(&mut self, s: &Stmt, mut st: State) -> Option<State> {
         match &s.kind {
-            StmtKind::Expr(e) => self.expr(e, &mut st),
+            StmtKind::Expr(e) => {
+                let set = match &e.kind {
+                    ExprKind::Assign(None, lhs, rhs) if self.nest == 0 => match lhs.kind {
+                        ExprKind::Local(l) => Some((l, self.when_true(rhs, &st))),
+                        _ => None,
+                    },
+                    _ => None,
+                };
+                self.expr(e, &mut st);
+                if let Some((l, Some(t))) = set {
+                    self.truth.insert(l, t);
+                }
+            }
             StmtKind::Local(id, init) => {
                 let v = Var::Local(*id);
                 match init {
                     Some(e) => {
+                        let t = if self.nest == 0 {
+                            self.when_true(e, &st)
+                        } else {
+                            None
+                        };
                         self.expr(e, &mut st);
                         if let Some(all) = self.full.get(&v).copied() {
                             st.insert(v, all);
+                        }
+                        self.truth.remove(id);
+                        if let Some(t) = t {
+                            self.truth.insert(*id, t);
                         }
                     }
                     None => {
@@ -477,9 +549,10 @@ impl<'a> Walk<'a> {
             }
             StmtKind::Block(b) => return self.stmts(b, st),
             StmtKind::If(c, a, b) => {
+                let when = self.when_true(c, &st);
                 self.expr(c, &mut st);
                 let (yes, no) = (self.keys(c, true), self.keys(c, false));
-                let sa = self.branch(a, &st, &yes);
+                let sa = self.branch(a, when.as_ref().unwrap_or(&st), &yes);
                 let sb = self.branch(b, &st, &no);
                 let out = meet_opt(sa.clone(), sb.clone());
                 for (branch, keys) in [(sa, yes), (sb, no)] {

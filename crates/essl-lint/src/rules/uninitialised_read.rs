@@ -60,6 +60,9 @@ declare_rule! {
     /// - A read under an `if` on uniforms of a variable written earlier under an `if` on the same
     ///   uniforms (`if (u_isText) c = …;` then `if (u_isText && u_isHalo) use(c);`), both outside
     ///   loops, switches and other `if`s: every pixel of a draw takes both branches or neither.
+    /// - A read in the branch of an `if` whose condition, or a `bool` local set once at the top of
+    ///   the function from it, is true only where the write ran: `if (a && f(x, out m)) use(m);`,
+    ///   `bool rotate = !b && f(x, out m); … if (rotate) use(m);`.
     /// - Other paths that cannot run are not told apart from those that can: a read guarded by the
     ///   same condition on a per-pixel value as the write, or in a loop (`if (i > 0) use(prev);
     ///   prev = x;`), is reported; initialise the variable.

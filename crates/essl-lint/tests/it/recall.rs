@@ -207,6 +207,13 @@ const HAZARDS: &[Hazard] = &[
         "  vec3 i0 = floor(v_pos * 10.0) + u_a;\n  vec3 x = ((i0 * 34.0) + 1.0) * i0;\n  vec3 h = x - floor(x * (1.0 / 289.0)) * 289.0;\n  float sz = h.x * -0.006920415 + 0.996539792;\n  r = sqrt(1.0 - sz * sz);",
         W,
     ),
+    // Written on the right of `||`, which does not run where the left is true.
+    (
+        "uninitialised-read",
+        "varying",
+        "  float c;\n  bool ok = v_x > 0.5 || (c = 1.0) > 0.0;\n  if (ok) { r = c; }",
+        W,
+    ),
     // `pow(2, k)` of a `k` that can be negative truncates to 0.
     (
         "domain-integer-division",
@@ -315,6 +322,15 @@ const GUARDED: &[(&str, &str)] = &[
         "  if (v_x > 0.5) { r = textureLod(u_tex, v_uv, 0.0).r; }",
     ),
     ("non-uniform-derivative", "  if (u_a > 0.5) { r = texture(u_tex, v_uv).r; }"),
+    // Written on the right of `&&`: wherever the condition, or a local set from it, is true.
+    (
+        "uninitialised-read",
+        "  float c;\n  if (v_x > 0.5 && (c = 1.0) > 0.0) { r = c; }",
+    ),
+    (
+        "uninitialised-read",
+        "  float c;\n  bool ok = v_x > 0.5 && (c = 1.0) > 0.0;\n  r = 0.5;\n  if (ok) { r = c; }",
+    ),
     // Henyey–Greenstein: `1 + g² - 2 g μ ≥ 1 - μ² ≥ 0` for |μ| ≤ 1, whatever g is (a raw
     // `dot` of unit vectors is 1 + ε at most: the rounding finding stays).
     (
