@@ -57,7 +57,15 @@ function checkOptions(fn, source, options) {
   return JSON.stringify(o);
 }
 
-function checked(result) {
+// The addon answers `text: 1` for a shader whose text is the source as passed (no
+// `#include` expanded), rather than sending the same string back.
+function given(shader, source) {
+  if (shader.text === 1) shader.text = source;
+  return shader;
+}
+
+function checked(result, source) {
+  if (result.shaders.length) given(result.shaders[0], source);
   result.diagnostics = all(result);
   result.ok = result.errors === 0;
   return result;
@@ -65,7 +73,7 @@ function checked(result) {
 
 export function check(source, options) {
   const o = checkOptions('check', source, options);
-  return checked(call('check', () => native.checkJson(source, o)));
+  return checked(call('check', () => native.checkJson(source, o)), source);
 }
 
 export async function checkAsync(source, options) {
@@ -78,7 +86,7 @@ export async function checkAsync(source, options) {
       throw e;
     });
   }
-  return checked(call('checkAsync', () => json));
+  return checked(call('checkAsync', () => json), source);
 }
 
 export function link(vertex, fragment, options) {
@@ -91,8 +99,8 @@ export function link(vertex, fragment, options) {
   const r = call('link', () => native.linkJson(vertex, fragment, JSON.stringify(v), JSON.stringify(f)));
   return {
     ...r.program,
-    vertex: r.vertex,
-    fragment: r.fragment,
+    vertex: given(r.vertex, vertex),
+    fragment: given(r.fragment, fragment),
     diagnostics: [...r.vertex.diagnostics, ...r.fragment.diagnostics, ...r.program.diagnostics],
   };
 }

@@ -15,7 +15,7 @@ use std::path::Path;
 use std::sync::{Arc, Mutex};
 use std::time::{Duration, Instant};
 
-use essl_check::{CheckOptions, CheckedShader, Configs, Files, Overrides};
+use essl_check::{CheckOptions, CheckedShader, Configs, Files};
 use napi::bindgen_prelude::AsyncTask;
 use napi::{Env, Error, Status, Task};
 use napi_derive::napi;
@@ -72,18 +72,24 @@ fn too_big(text: &str) -> napi::Result<()> {
 /// above it again; an edited `essl.toml` is read within this time.
 const SETTINGS_KEPT: Duration = Duration::from_secs(1);
 
-/// The settings for `overrides`, shared by the calls of the last [`SETTINGS_KEPT`].
-fn configs(overrides: &Overrides) -> Arc<Configs> {
-    static KEPT: Mutex<Vec<(String, Instant, Arc<Configs>)>> = Mutex::new(Vec::new());
-    let key = format!("{overrides:?}");
+/// The settings for `opts`, shared by the calls of the last [`SETTINGS_KEPT`] with the same
+/// options: kept by the options' JSON text and the stage asked for, of which the overrides are
+/// a function.
+fn configs(opts: &options::Options) -> Arc<Configs> {
+    type Kept = Vec<(Arc<str>, Option<essl::Stage>, Instant, Arc<Configs>)>;
+    static KEPT: Mutex<Kept> = Mutex::new(Vec::new());
+    let stage = opts.overrides.stage;
     let now = Instant::now();
     let mut kept = KEPT.lock().unwrap_or_else(|e| e.into_inner());
-    kept.retain(|(_, at, _)| now.duration_since(*at) < SETTINGS_KEPT);
-    if let Some((_, _, c)) = kept.iter().find(|(k, _, _)| *k == key) {
+    kept.retain(|(_, _, at, _)| now.duration_since(*at) < SETTINGS_KEPT);
+    if let Some((_, _, _, c)) = kept
+        .iter()
+        .find(|(json, s, _, _)| *s == stage && **json == *opts.json)
+    {
         return c.clone();
     }
-    let c = Arc::new(Configs::new(overrides.clone()));
-    kept.push((key, now, c.clone()));
+    let c = Arc::new(Configs::new(opts.overrides.clone()));
+    kept.push((opts.json.clone(), stage, now, c.clone()));
     c
 }
 
@@ -91,7 +97,7 @@ fn configs(overrides: &Overrides) -> Arc<Configs> {
 /// or an HTML or JS/TS file holding shaders). Returns the checked unit as JSON.
 fn check_one(text: String, opts: &options::Options) -> napi::Result<essl_check::CheckedUnit> {
     too_big(&text)?;
-    let configs = configs(&opts.overrides);
+    let configs = configs(opts);
     let check = CheckOptions {
         link: opts.link,
         lints: opts.lints,
@@ -142,21 +148,25 @@ impl Task for CheckTask {
 fn check_text_json(source: String, options: String) -> napi::Result<String> {
     guarded("check", || {
         let opts = options::read(&options, "shader.glsl").map_err(|e| type_error(e.0))?;
+        let given = source.clone();
         let mut unit = check_one(source, &opts)?;
         let partner = with_partner(&mut unit, &opts)?;
-        let mut out = report::unit(&unit);
+        let mut out = report::unit(&unit, Some(&given));
         if opts.overrides.deny_warnings {
             // `--deny warnings`: a warning fails the check as an error does.
-            let all = out["errors"].as_u64().unwrap_or(0) + out["warnings"].as_u64().unwrap_or(0);
-            out["errors"] = json!(all);
+            out.errors += out.warnings;
         }
-        if let (Some(i), Some(shaders)) = (partner, out["shaders"].as_array_mut()) {
+        if let Some(s) = partner.and_then(|i| out.shaders.get_mut(i)) {
             // The partner's own diagnostics are its module's to report.
-            shaders[i]["partner"] = json!(true);
-            shaders[i]["diagnostics"] = json!([]);
+            s.as_partner();
         }
-        Ok(out.to_string())
+        to_json(&out)
     })
+}
+
+/// The JSON text of a result.
+fn to_json(value: &impl serde::Serialize) -> napi::Result<String> {
+    serde_json::to_string(value).map_err(|e| Error::new(Status::GenericFailure, e.to_string()))
 }
 
 /// Links a lone shader file with its partner on disk (`light.frag` with `light.vert`), as
@@ -201,7 +211,7 @@ fn with_partner(
     Ok(Some(1))
 }
 
-/// The one shader of a stage-named check.
+/// The one shader of a stage-named check (a lone text: no pair to look for).
 fn lone_shader(source: String, options: &str, stage: essl::Stage) -> napi::Result<CheckedShader> {
     let default = match stage {
         essl::Stage::Vertex => "shader.vert",
@@ -223,6 +233,14 @@ fn lone_shader(source: String, options: &str, stage: essl::Stage) -> napi::Resul
         .ok_or_else(|| type_error(format!("the {default} text holds no {stage:?} shader")))
 }
 
+/// What `linkJson` answers.
+#[derive(serde::Serialize)]
+struct Linked<'a> {
+    fragment: report::Shader<'a>,
+    program: report::Program<'a>,
+    vertex: report::Shader<'a>,
+}
+
 /// `link(vertex, fragment, options)`: both shaders checked, then linked as WebGL's
 /// `linkProgram`; JSON of `{vertex, fragment, program}` (each shader's result, the program's).
 #[napi(js_name = "linkJson")]
@@ -233,18 +251,17 @@ pub fn link_json(
     fragment_options: String,
 ) -> napi::Result<String> {
     guarded("link", || {
+        let given = (vertex.clone(), fragment.clone());
         let vs = lone_shader(vertex, &vertex_options, essl::Stage::Vertex)?;
         let fs = lone_shader(fragment, &fragment_options, essl::Stage::Fragment)?;
         let program = essl_check::link(&vs, &fs);
         let mut p = report::program(&program);
-        p["vertex"] = json!(0);
-        p["fragment"] = json!(1);
-        Ok(json!({
-            "vertex": report::shader(&vs),
-            "fragment": report::shader(&fs),
-            "program": p,
+        (p.vertex, p.fragment) = (0, 1);
+        to_json(&Linked {
+            fragment: report::shader(&fs, Some(&given.1)),
+            program: p,
+            vertex: report::shader(&vs, Some(&given.0)),
         })
-        .to_string())
     })
 }
 
