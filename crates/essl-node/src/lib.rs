@@ -73,8 +73,8 @@ fn too_big(text: &str) -> napi::Result<()> {
 const SETTINGS_KEPT: Duration = Duration::from_secs(1);
 
 /// The settings for `opts`, shared by the calls of the last [`SETTINGS_KEPT`] with the same
-/// options: kept by the options' JSON text and the stage asked for, of which the overrides are
-/// a function.
+/// overrides: kept by the overrides as read ([`options::Options::settings_key`]) and the stage
+/// asked for, of which the overrides are a function.
 fn configs(opts: &options::Options) -> Arc<Configs> {
     type Kept = Vec<(Arc<str>, Option<essl::Stage>, Instant, Arc<Configs>)>;
     static KEPT: Mutex<Kept> = Mutex::new(Vec::new());
@@ -84,12 +84,12 @@ fn configs(opts: &options::Options) -> Arc<Configs> {
     kept.retain(|(_, _, at, _)| now.duration_since(*at) < SETTINGS_KEPT);
     if let Some((_, _, _, c)) = kept
         .iter()
-        .find(|(json, s, _, _)| *s == stage && **json == *opts.json)
+        .find(|(key, s, _, _)| *s == stage && **key == *opts.settings_key)
     {
         return c.clone();
     }
     let c = Arc::new(Configs::new(opts.overrides.clone()));
-    kept.push((opts.json.clone(), stage, now, c.clone()));
+    kept.push((opts.settings_key.clone(), stage, now, c.clone()));
     c
 }
 

@@ -25,9 +25,12 @@ pub struct Options {
     pub lints: bool,
     /// Whether a host file's pairs are linked.
     pub link: bool,
-    /// The JSON text these options were read from: with the stage, the key of the settings
-    /// read for them (the overrides are a function of the two).
+    /// The JSON text these options were read from (what [`read`] keeps them by).
     pub json: Arc<str>,
+    /// The overrides as read, written out: with the stage asked for (which `link` and
+    /// `translate` set on top), the key of the settings read for them. It leaves out the
+    /// filename, so modules of one build share their settings.
+    pub settings_key: Arc<str>,
 }
 
 /// What a JSON value is, in words.
@@ -220,10 +223,11 @@ fn parse(json: &str, default_name: &str) -> Result<Options, OptionError> {
     let filename = PathBuf::from(string(o, "filename")?.unwrap_or(default_name));
     Ok(Options {
         filename,
-        overrides,
         lints: boolean(o, "lints", true)?,
         link: boolean(o, "link", true)?,
         json: Arc::from(json),
+        settings_key: Arc::from(format!("{overrides:?}")),
+        overrides,
     })
 }
 
