@@ -31,10 +31,42 @@ function opts(fn, value) {
   return value;
 }
 
+// A diagnostic's `rendered` (its rustc-style text) is written when it is first read: the
+// addon answers its index among the answer's diagnostics, and the getter asks for the text.
+// The key keeps its place among the diagnostic's keys.
+function lazyRendered(diagnostics, rendering) {
+  for (const d of diagnostics) {
+    const index = d.rendered;
+    if (typeof index !== 'number') continue;
+    Object.defineProperty(d, 'rendered', {
+      enumerable: true,
+      configurable: true,
+      get() {
+        const value = native.render(rendering, index);
+        Object.defineProperty(this, 'rendered', {value, enumerable: true, configurable: true, writable: true});
+        return value;
+      },
+      set(value) {
+        Object.defineProperty(this, 'rendered', {value, enumerable: true, configurable: true, writable: true});
+      },
+    });
+  }
+}
+
+// The result of an answer: its JSON parsed, each diagnostic's `rendered` a getter.
+function answered(answer) {
+  if (typeof answer === 'string') return JSON.parse(answer);
+  const r = JSON.parse(answer.json);
+  const shaders = r.shaders ?? [r.vertex, r.fragment];
+  const programs = r.programs ?? [r.program];
+  for (const x of [...shaders, ...programs]) lazyRendered(x.diagnostics, answer.rendering);
+  return r;
+}
+
 // Calls the addon, rethrowing its argument errors as TypeErrors with the function's name.
 function call(fn, f) {
   try {
-    return JSON.parse(f());
+    return answered(f());
   } catch (e) {
     if (e instanceof SyntaxError) throw new Error(`essl.${fn}: the addon answered what is not JSON`);
     const message = `essl.${fn}: ${String(e.message).replace(/^essl: /, '')}`;

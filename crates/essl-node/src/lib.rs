@@ -6,8 +6,8 @@
 //! the editor server use ([`essl_check::check_text`], [`essl_check::link`]); the translator is
 //! [`essl_translate`]; `runCli` is the `essl` command itself ([`essl_cli::cli::main_from`]). No
 //! GPU stack is built into it. Options and results cross as JSON text: the JS side checks
-//! argument types (throwing `TypeError`s), parses the result, and keeps this surface to four
-//! functions. A panic inside a call is caught and becomes a thrown `Error`, never an abort of
+//! argument types (throwing `TypeError`s), parses the result, and keeps this surface small; a
+//! diagnostic's rustc-style text is written when JS first reads it ([`render`]). A panic inside a call is caught and becomes a thrown `Error`, never an abort of
 //! the Node process.
 
 use std::panic::{catch_unwind, AssertUnwindSafe};
@@ -16,7 +16,7 @@ use std::sync::{Arc, Mutex};
 use std::time::{Duration, Instant};
 
 use essl_check::{CheckOptions, CheckedShader, Configs, Files};
-use napi::bindgen_prelude::AsyncTask;
+use napi::bindgen_prelude::{AsyncTask, External};
 use napi::{Env, Error, Status, Task};
 use napi_derive::napi;
 use serde_json::json;
@@ -108,12 +108,38 @@ fn check_one(text: String, opts: &options::Options) -> napi::Result<essl_check::
     Ok(unit)
 }
 
+/// What `checkJson` and `linkJson` answer: the result's JSON, and the diagnostics whose
+/// rustc-style text its `rendered` indices stand for ([`report::Rendering`]).
+#[napi(object, object_from_js = false)]
+pub struct Answer {
+    /// The result as JSON.
+    pub json: String,
+    /// The diagnostics for [`render`].
+    pub rendering: External<report::Rendering>,
+}
+
+impl Answer {
+    fn new((json, rendering): (String, report::Rendering)) -> Answer {
+        Answer {
+            json,
+            rendering: External::new(rendering),
+        }
+    }
+}
+
+/// `render(rendering, index)`: the rustc-style text of a diagnostic of an answer (a
+/// diagnostic's `rendered`, written when it is first read).
+#[napi]
+pub fn render(rendering: &External<report::Rendering>, index: u32) -> napi::Result<String> {
+    guarded("render", || Ok(rendering.render(index as usize)))
+}
+
 /// `check(source, options)`: diagnostics of a shader, or of every shader of a JS/TS or HTML
 /// file, and the programs linked where the pairs are known; JSON of `{shaders, programs,
 /// errors, warnings}`.
 #[napi(js_name = "checkJson")]
-pub fn check_json(source: String, options: String) -> napi::Result<String> {
-    check_text_json(source, options)
+pub fn check_json(source: String, options: String) -> napi::Result<Answer> {
+    check_text_json(source, options).map(Answer::new)
 }
 
 /// [`check_json`] on a thread of Node's pool, for a bundler's many modules at once: a
@@ -130,28 +156,29 @@ pub struct CheckTask {
 }
 
 impl Task for CheckTask {
-    type Output = String;
-    type JsValue = String;
+    type Output = (String, report::Rendering);
+    type JsValue = Answer;
 
-    fn compute(&mut self) -> napi::Result<String> {
+    fn compute(&mut self) -> napi::Result<Self::Output> {
         check_text_json(
             std::mem::take(&mut self.source),
             std::mem::take(&mut self.options),
         )
     }
 
-    fn resolve(&mut self, _env: Env, output: String) -> napi::Result<String> {
-        Ok(output)
+    fn resolve(&mut self, _env: Env, output: Self::Output) -> napi::Result<Answer> {
+        Ok(Answer::new(output))
     }
 }
 
-fn check_text_json(source: String, options: String) -> napi::Result<String> {
+fn check_text_json(source: String, options: String) -> napi::Result<(String, report::Rendering)> {
     guarded("check", || {
         let opts = options::read(&options, "shader.glsl").map_err(|e| type_error(e.0))?;
         let given = source.clone();
         let mut unit = check_one(source, &opts)?;
         let partner = with_partner(&mut unit, &opts)?;
-        let mut out = report::unit(&unit, Some(&given));
+        let mut rendering = report::Rendering::default();
+        let mut out = report::unit(&unit, Some(&given), &mut rendering);
         if opts.overrides.deny_warnings {
             // `--deny warnings`: a warning fails the check as an error does.
             out.errors += out.warnings;
@@ -160,7 +187,7 @@ fn check_text_json(source: String, options: String) -> napi::Result<String> {
             // The partner's own diagnostics are its module's to report.
             s.as_partner();
         }
-        to_json(&out)
+        Ok((to_json(&out)?, rendering))
     })
 }
 
@@ -249,19 +276,23 @@ pub fn link_json(
     fragment: String,
     vertex_options: String,
     fragment_options: String,
-) -> napi::Result<String> {
+) -> napi::Result<Answer> {
     guarded("link", || {
         let given = (vertex.clone(), fragment.clone());
         let vs = lone_shader(vertex, &vertex_options, essl::Stage::Vertex)?;
         let fs = lone_shader(fragment, &fragment_options, essl::Stage::Fragment)?;
         let program = essl_check::link(&vs, &fs);
-        let mut p = report::program(&program);
-        (p.vertex, p.fragment) = (0, 1);
-        to_json(&Linked {
-            fragment: report::shader(&fs, Some(&given.1)),
-            program: p,
-            vertex: report::shader(&vs, Some(&given.0)),
-        })
+        let mut rendering = report::Rendering::default();
+        let vertex = report::shader(&vs, Some(&given.0), &mut rendering);
+        let fragment = report::shader(&fs, Some(&given.1), &mut rendering);
+        let mut program = report::program(&program, &mut rendering);
+        (program.vertex, program.fragment) = (0, 1);
+        let json = to_json(&Linked {
+            fragment,
+            program,
+            vertex,
+        })?;
+        Ok(Answer::new((json, rendering)))
     })
 }
 

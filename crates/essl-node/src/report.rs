@@ -3,11 +3,17 @@
 //! (1-based lines and columns in the file the author wrote, and byte offsets), notes, help, fix
 //! as text edits, and its rustc-style text.
 //!
+//! The rustc-style text is written only when it is read: each diagnostic's `rendered` is its
+//! index in a [`Rendering`] the JS side keeps beside the result, and its getter asks the addon
+//! for the text ([`Rendering::render`]). Rendering one took about as long as checking a small
+//! shader, and most callers read only the code, message and range.
+//!
 //! Each object is a struct that borrows from the checked unit and is serialised straight to
 //! the JSON text (no `serde_json::Value` tree in between). Fields are declared in the
 //! alphabetical order of their JSON names, the order the keys have always come in.
 
 use std::borrow::Cow;
+use std::sync::Arc;
 
 use essl::diagnostic::{Applicability, Diagnostic};
 use essl::render::human_string;
@@ -72,6 +78,28 @@ pub struct Fix<'a> {
     message: &'a str,
 }
 
+/// The diagnostics of a result, in the order of their `rendered` indices, each with its file
+/// (none for a diagnostic with no place).
+#[derive(Default)]
+pub struct Rendering(Vec<(Option<Arc<SourceFile>>, Diagnostic)>);
+
+impl Rendering {
+    /// Adds a diagnostic; its index.
+    fn push(&mut self, file: Option<&Arc<SourceFile>>, d: &Diagnostic) -> usize {
+        self.0.push((file.cloned(), d.clone()));
+        self.0.len() - 1
+    }
+
+    /// The rustc-style text of the diagnostic at `index` (empty past the end).
+    pub fn render(&self, index: usize) -> String {
+        match self.0.get(index) {
+            Some((Some(file), d)) => human_string(file, std::slice::from_ref(d)),
+            Some((None, d)) => format!("{}[{}]: {}\n", d.severity.as_str(), d.code, d.message),
+            None => String::new(),
+        }
+    }
+}
+
 /// A diagnostic as the API's object.
 #[derive(Serialize)]
 pub struct Diag<'a> {
@@ -83,13 +111,18 @@ pub struct Diag<'a> {
     message: &'a str,
     notes: &'a [String],
     range: Option<Range>,
-    rendered: String,
+    /// The index of its text in the result's [`Rendering`].
+    rendered: usize,
     secondary: Vec<Secondary<'a>>,
     severity: &'static str,
 }
 
-/// A diagnostic of `file` as the API's object.
-pub fn diagnostic<'a>(file: &'a SourceFile, d: &'a Diagnostic) -> Diag<'a> {
+/// A diagnostic of `file` as the API's object, its text left to `rendering`.
+pub fn diagnostic<'a>(
+    file: &'a Arc<SourceFile>,
+    d: &'a Diagnostic,
+    rendering: &mut Rendering,
+) -> Diag<'a> {
     let secondary = d
         .secondary
         .iter()
@@ -122,14 +155,14 @@ pub fn diagnostic<'a>(file: &'a SourceFile, d: &'a Diagnostic) -> Diag<'a> {
         message: &d.message,
         notes: &d.notes,
         range: Some(range(file, d.span)),
-        rendered: human_string(file, std::slice::from_ref(d)),
+        rendered: rendering.push(Some(file), d),
         secondary,
         severity: d.severity.as_str(),
     }
 }
 
 /// A diagnostic with no place (a link error that points into neither shader).
-fn unlocated(d: &Diagnostic) -> Diag<'_> {
+fn unlocated<'a>(d: &'a Diagnostic, rendering: &mut Rendering) -> Diag<'a> {
     Diag {
         code: d.code,
         file: None,
@@ -139,7 +172,7 @@ fn unlocated(d: &Diagnostic) -> Diag<'_> {
         message: &d.message,
         notes: &d.notes,
         range: None,
-        rendered: format!("{}[{}]: {}\n", d.severity.as_str(), d.code, d.message),
+        rendered: rendering.push(None, d),
         secondary: Vec::new(),
         severity: d.severity.as_str(),
     }
@@ -193,7 +226,11 @@ impl Shader<'_> {
 /// A checked shader: its file, stage, name, where it starts in its host, whether it compiled,
 /// the text WebGL is given (includes in place; `1` where that is `source`, the text the
 /// caller passed), the files that text was read from, and its diagnostics.
-pub fn shader<'a>(s: &'a CheckedShader, source: Option<&str>) -> Shader<'a> {
+pub fn shader<'a>(
+    s: &'a CheckedShader,
+    source: Option<&str>,
+    rendering: &mut Rendering,
+) -> Shader<'a> {
     let embedded_at = s.embedded_at.and_then(|at| {
         let file = s.diagnostics.first().map(|f| &f.file)?;
         Some(position(file, at))
@@ -204,7 +241,7 @@ pub fn shader<'a>(s: &'a CheckedShader, source: Option<&str>) -> Shader<'a> {
         Some(_) => Text::Text(Some(s.assembly.text())),
     };
     Shader {
-        diagnostics: s.all().map(|(f, d)| diagnostic(f, d)).collect(),
+        diagnostics: s.all().map(|(f, d)| diagnostic(f, d, rendering)).collect(),
         embedded_at,
         file: s.path.display().to_string(),
         files: s.assembly.files().iter().map(|f| f.name()).collect(),
@@ -252,7 +289,7 @@ pub struct Program<'a> {
 
 /// A linked program: whether it links, WebGL's log, the active uniforms and attributes as
 /// `getActiveUniform`/`getActiveAttrib` list them, and its diagnostics.
-pub fn program(p: &CheckedProgram) -> Program<'_> {
+pub fn program<'a>(p: &'a CheckedProgram, rendering: &mut Rendering) -> Program<'a> {
     let program = p.program.as_ref();
     let uniforms = program
         .iter()
@@ -277,8 +314,8 @@ pub fn program(p: &CheckedProgram) -> Program<'_> {
         .diagnostics
         .iter()
         .map(|d| match &d.file {
-            Some(f) => diagnostic(f, &d.diagnostic),
-            None => unlocated(&d.diagnostic),
+            Some(f) => diagnostic(f, &d.diagnostic, rendering),
+            None => unlocated(&d.diagnostic, rendering),
         })
         .collect();
     Program {
@@ -307,14 +344,14 @@ pub struct Unit<'a> {
 
 /// A whole checked text: its shaders, programs, and the counts of errors and warnings. The
 /// first shader's text is `1` where it is `source`.
-pub fn unit<'a>(u: &'a CheckedUnit, source: Option<&str>) -> Unit<'a> {
+pub fn unit<'a>(u: &'a CheckedUnit, source: Option<&str>, rendering: &mut Rendering) -> Unit<'a> {
     let shaders = u
         .shaders
         .iter()
         .enumerate()
-        .map(|(i, s)| shader(s, source.filter(|_| i == 0)))
+        .map(|(i, s)| shader(s, source.filter(|_| i == 0), rendering))
         .collect();
-    let programs = u.programs.iter().map(program).collect();
+    let programs = u.programs.iter().map(|p| program(p, rendering)).collect();
     let count = |sev: essl::diagnostic::Severity| {
         u.shaders.iter().map(|s| s.count(sev)).sum::<usize>()
             + u.programs
