@@ -10,8 +10,10 @@
 //! diagnostic's rustc-style text is written when JS first reads it ([`render`]). A panic inside a call is caught and becomes a thrown `Error`, never an abort of
 //! the Node process.
 
+use std::collections::HashSet;
+use std::ffi::OsString;
 use std::panic::{catch_unwind, AssertUnwindSafe};
-use std::path::Path;
+use std::path::{Path, PathBuf};
 use std::sync::{Arc, Mutex};
 use std::time::{Duration, Instant};
 
@@ -210,7 +212,11 @@ fn with_partner(
     if !opts.filename.is_file() {
         return Ok(None);
     }
-    let Some(path) = essl_check::partner(&opts.filename, |p| p.is_file()) else {
+    let folder = opts.filename.parent().unwrap_or(Path::new("."));
+    let files = files_in(folder);
+    let exists =
+        |p: &Path| p.parent() == Some(folder) && p.file_name().is_some_and(|n| files.contains(n));
+    let Some(path) = essl_check::partner(&opts.filename, exists) else {
         return Ok(None);
     };
     let Ok(text) = essl_check::read_source(&path) else {
@@ -236,6 +242,36 @@ fn with_partner(
     unit.shaders.push(partner);
     unit.programs.push(program);
     Ok(Some(1))
+}
+
+/// The names of the files in `folder` (following links), read once in [`SETTINGS_KEPT`]: a
+/// bundler checks the shaders of a folder one after the other, and looking for each one's
+/// partner file took a dozen `stat`s. A partner file created since is seen within that time.
+fn files_in(folder: &Path) -> Arc<HashSet<OsString>> {
+    type Kept = Vec<(PathBuf, Instant, Arc<HashSet<OsString>>)>;
+    static KEPT: Mutex<Kept> = Mutex::new(Vec::new());
+    let now = Instant::now();
+    {
+        let mut kept = KEPT.lock().unwrap_or_else(|e| e.into_inner());
+        kept.retain(|(_, at, _)| now.duration_since(*at) < SETTINGS_KEPT);
+        if let Some((_, _, names)) = kept.iter().find(|(f, _, _)| f == folder) {
+            return names.clone();
+        }
+    }
+    let names: HashSet<OsString> = std::fs::read_dir(folder)
+        .into_iter()
+        .flatten()
+        .flatten()
+        .filter(|e| {
+            e.file_type()
+                .is_ok_and(|t| t.is_file() || (t.is_symlink() && e.path().is_file()))
+        })
+        .map(|e| e.file_name())
+        .collect();
+    let names = Arc::new(names);
+    let mut kept = KEPT.lock().unwrap_or_else(|e| e.into_inner());
+    kept.push((folder.to_path_buf(), now, names.clone()));
+    names
 }
 
 /// The one shader of a stage-named check (a lone text: no pair to look for).
