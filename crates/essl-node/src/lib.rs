@@ -7,8 +7,8 @@
 //! [`essl_translate`]; `runCli` is the `essl` command itself ([`essl_cli::cli::main_from`]). No
 //! GPU stack is built into it. Options and results cross as JSON text: the JS side checks
 //! argument types (throwing `TypeError`s), parses the result, and keeps this surface small; a
-//! diagnostic's rustc-style text is written when JS first reads it ([`render`]). A panic inside a call is caught and becomes a thrown `Error`, never an abort of
-//! the Node process.
+//! diagnostic's rustc-style text is written when JS first reads it ([`render`]). A panic
+//! inside a call is caught and becomes a thrown `Error`, never an abort of the Node process.
 
 use std::collections::HashSet;
 use std::ffi::OsString;
