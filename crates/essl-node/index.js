@@ -31,10 +31,42 @@ function opts(fn, value) {
   return value;
 }
 
+// A diagnostic's `rendered` (its rustc-style text) is written when it is first read: the
+// addon answers its index among the answer's diagnostics, and the getter asks for the text.
+// The key keeps its place among the diagnostic's keys.
+function lazyRendered(diagnostics, rendering) {
+  for (const d of diagnostics) {
+    const index = d.rendered;
+    if (typeof index !== 'number') continue;
+    Object.defineProperty(d, 'rendered', {
+      enumerable: true,
+      configurable: true,
+      get() {
+        const value = native.render(rendering, index);
+        Object.defineProperty(this, 'rendered', {value, enumerable: true, configurable: true, writable: true});
+        return value;
+      },
+      set(value) {
+        Object.defineProperty(this, 'rendered', {value, enumerable: true, configurable: true, writable: true});
+      },
+    });
+  }
+}
+
+// The result of an answer: its JSON parsed, each diagnostic's `rendered` a getter.
+function answered(answer) {
+  if (typeof answer === 'string') return JSON.parse(answer);
+  const r = JSON.parse(answer.json);
+  const shaders = r.shaders ?? [r.vertex, r.fragment];
+  const programs = r.programs ?? [r.program];
+  for (const x of [...shaders, ...programs]) lazyRendered(x.diagnostics, answer.rendering);
+  return r;
+}
+
 // Calls the addon, rethrowing its argument errors as TypeErrors with the function's name.
 function call(fn, f) {
   try {
-    return JSON.parse(f());
+    return answered(f());
   } catch (e) {
     if (e instanceof SyntaxError) throw new Error(`essl.${fn}: the addon answered what is not JSON`);
     const message = `essl.${fn}: ${String(e.message).replace(/^essl: /, '')}`;
@@ -57,7 +89,15 @@ function checkOptions(fn, source, options) {
   return JSON.stringify(o);
 }
 
-function checked(result) {
+// The addon answers `text: 1` for a shader whose text is the source as passed (no
+// `#include` expanded), rather than sending the same string back.
+function given(shader, source) {
+  if (shader.text === 1) shader.text = source;
+  return shader;
+}
+
+function checked(result, source) {
+  if (result.shaders.length) given(result.shaders[0], source);
   result.diagnostics = all(result);
   result.ok = result.errors === 0;
   return result;
@@ -65,7 +105,7 @@ function checked(result) {
 
 export function check(source, options) {
   const o = checkOptions('check', source, options);
-  return checked(call('check', () => native.checkJson(source, o)));
+  return checked(call('check', () => native.checkJson(source, o)), source);
 }
 
 export async function checkAsync(source, options) {
@@ -78,7 +118,7 @@ export async function checkAsync(source, options) {
       throw e;
     });
   }
-  return checked(call('checkAsync', () => json));
+  return checked(call('checkAsync', () => json), source);
 }
 
 function minifyOptions(fn, source, options) {
@@ -117,8 +157,8 @@ export function link(vertex, fragment, options) {
   const r = call('link', () => native.linkJson(vertex, fragment, JSON.stringify(v), JSON.stringify(f)));
   return {
     ...r.program,
-    vertex: r.vertex,
-    fragment: r.fragment,
+    vertex: given(r.vertex, vertex),
+    fragment: given(r.fragment, fragment),
     diagnostics: [...r.vertex.diagnostics, ...r.fragment.diagnostics, ...r.program.diagnostics],
   };
 }

@@ -51,6 +51,10 @@ fn named(path: &Path) -> Option<(&OsStr, Stage, usize)> {
 /// and `a.vs`), the first in the order `.vert`, `.vs`, `.vsh` (`.frag`, `.fs`, `.fsh`), each
 /// before its `.glsl` form, is used. Only files whose name gives their stage pair up.
 pub fn pairs(files: &[ShaderFile]) -> Vec<(usize, usize)> {
+    // A pair takes two files; one file (a text checked alone) needs no folder resolved.
+    if files.len() < 2 {
+        return Vec::new();
+    }
     // `shaders/a.vert` pairs with `./shaders/a.frag`: compare the folders themselves, each
     // written form resolved once (a folder of 10,000 shaders is one `canonicalize`).
     let mut folder_of: HashMap<&Path, usize> = HashMap::new();

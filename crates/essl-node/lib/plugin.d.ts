@@ -21,6 +21,10 @@ export interface EsslPluginOptions
 export default function essl(options?: EsslPluginOptions): {
   name: 'essl';
   enforce: 'pre';
+  configResolved(config: {command: string}): void;
+  buildStart(): void;
+  /** Waits for the checks a one-shot build did not wait for; fails the build on an error. */
+  generateBundle(): Promise<void>;
   load(id: string): string | null;
   transform(code: string, id: string): Promise<{code: string; map: null} | null>;
 };

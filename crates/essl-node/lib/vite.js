@@ -19,9 +19,29 @@ export default function essl(options = {}) {
   // overlay goes as soon as the shader is fixed (a module whose transform failed is not in
   // Vite's module graph, and its change would not reach the page).
   const failed = new Set();
+  // In a one-shot build (not `vite dev`, not watch mode), a module whose code the plugin does
+  // not replace (a script, a `?raw` import) is not waited for: its check runs on Node's thread
+  // pool while the bundler goes on, and the first failing module (in the order the modules
+  // were transformed) fails the build when the bundle is written; its warnings print then.
+  let serving = false;
+  let pending = [];
   return {
     name: 'essl',
     enforce: 'pre',
+    configResolved(config) {
+      serving = config.command === 'serve';
+    },
+    buildStart() {
+      pending = [];
+    },
+    async generateBundle() {
+      const all = await Promise.all(pending);
+      pending = [];
+      for (const r of all) if (r.thrown) throw r.thrown;
+      for (const r of all) for (const w of r.checked?.warnings ?? []) this.warn(w.rendered);
+      const failing = all.find(r => r.checked?.errors.length);
+      if (failing) this.error(buildError(failing.checked.errors));
+    },
     configureServer(server) {
       server.watcher.on('change', changed => {
         if (!failed.has(changed)) return;
@@ -36,6 +56,11 @@ export default function essl(options = {}) {
     },
     async transform(code, id) {
       if (!wanted(id, options)) return null;
+      const replaces = load && !id.includes('?') && SHADER.test(id);
+      if (!replaces && !serving && !this.meta?.watchMode) {
+        pending.push(checkModule(id, code, options).then(checked => ({checked}), thrown => ({thrown})));
+        return null;
+      }
       const checked = await checkModule(id, code, options);
       if (!checked) return null;
       for (const f of checked.files) if (f !== file(id)) this.addWatchFile(f);

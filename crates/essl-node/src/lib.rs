@@ -6,17 +6,19 @@
 //! the editor server use ([`essl_check::check_text`], [`essl_check::link`]); the translator is
 //! [`essl_translate`]; `runCli` is the `essl` command itself ([`essl_cli::cli::main_from`]). No
 //! GPU stack is built into it. Options and results cross as JSON text: the JS side checks
-//! argument types (throwing `TypeError`s), parses the result, and keeps this surface to four
-//! functions. A panic inside a call is caught and becomes a thrown `Error`, never an abort of
-//! the Node process.
+//! argument types (throwing `TypeError`s), parses the result, and keeps this surface small; a
+//! diagnostic's rustc-style text is written when JS first reads it ([`render`]). A panic
+//! inside a call is caught and becomes a thrown `Error`, never an abort of the Node process.
 
+use std::collections::HashSet;
+use std::ffi::OsString;
 use std::panic::{catch_unwind, AssertUnwindSafe};
-use std::path::Path;
+use std::path::{Path, PathBuf};
 use std::sync::{Arc, Mutex};
 use std::time::{Duration, Instant};
 
-use essl_check::{CheckOptions, CheckedShader, Configs, Files, Overrides};
-use napi::bindgen_prelude::AsyncTask;
+use essl_check::{CheckOptions, CheckedShader, Configs, Files};
+use napi::bindgen_prelude::{AsyncTask, External};
 use napi::{Env, Error, Status, Task};
 use napi_derive::napi;
 use serde_json::json;
@@ -73,18 +75,24 @@ fn too_big(text: &str) -> napi::Result<()> {
 /// above it again; an edited `essl.toml` is read within this time.
 const SETTINGS_KEPT: Duration = Duration::from_secs(1);
 
-/// The settings for `overrides`, shared by the calls of the last [`SETTINGS_KEPT`].
-fn configs(overrides: &Overrides) -> Arc<Configs> {
-    static KEPT: Mutex<Vec<(String, Instant, Arc<Configs>)>> = Mutex::new(Vec::new());
-    let key = format!("{overrides:?}");
+/// The settings for `opts`, shared by the calls of the last [`SETTINGS_KEPT`] with the same
+/// overrides: kept by the overrides as read ([`options::Options::settings_key`]) and the stage
+/// asked for, of which the overrides are a function.
+fn configs(opts: &options::Options) -> Arc<Configs> {
+    type Kept = Vec<(Arc<str>, Option<essl::Stage>, Instant, Arc<Configs>)>;
+    static KEPT: Mutex<Kept> = Mutex::new(Vec::new());
+    let stage = opts.overrides.stage;
     let now = Instant::now();
     let mut kept = KEPT.lock().unwrap_or_else(|e| e.into_inner());
-    kept.retain(|(_, at, _)| now.duration_since(*at) < SETTINGS_KEPT);
-    if let Some((_, _, c)) = kept.iter().find(|(k, _, _)| *k == key) {
+    kept.retain(|(_, _, at, _)| now.duration_since(*at) < SETTINGS_KEPT);
+    if let Some((_, _, _, c)) = kept
+        .iter()
+        .find(|(key, s, _, _)| *s == stage && **key == *opts.settings_key)
+    {
         return c.clone();
     }
-    let c = Arc::new(Configs::new(overrides.clone()));
-    kept.push((key, now, c.clone()));
+    let c = Arc::new(Configs::new(opts.overrides.clone()));
+    kept.push((opts.settings_key.clone(), stage, now, c.clone()));
     c
 }
 
@@ -92,7 +100,7 @@ fn configs(overrides: &Overrides) -> Arc<Configs> {
 /// or an HTML or JS/TS file holding shaders). Returns the checked unit as JSON.
 fn check_one(text: String, opts: &options::Options) -> napi::Result<essl_check::CheckedUnit> {
     too_big(&text)?;
-    let configs = configs(&opts.overrides);
+    let configs = configs(opts);
     let check = CheckOptions {
         link: opts.link,
         lints: opts.lints,
@@ -103,12 +111,38 @@ fn check_one(text: String, opts: &options::Options) -> napi::Result<essl_check::
     Ok(unit)
 }
 
+/// What `checkJson` and `linkJson` answer: the result's JSON, and the diagnostics whose
+/// rustc-style text its `rendered` indices stand for ([`report::Rendering`]).
+#[napi(object, object_from_js = false)]
+pub struct Answer {
+    /// The result as JSON.
+    pub json: String,
+    /// The diagnostics for [`render`].
+    pub rendering: External<report::Rendering>,
+}
+
+impl Answer {
+    fn new((json, rendering): (String, report::Rendering)) -> Answer {
+        Answer {
+            json,
+            rendering: External::new(rendering),
+        }
+    }
+}
+
+/// `render(rendering, index)`: the rustc-style text of a diagnostic of an answer (a
+/// diagnostic's `rendered`, written when it is first read).
+#[napi]
+pub fn render(rendering: &External<report::Rendering>, index: u32) -> napi::Result<String> {
+    guarded("render", || Ok(rendering.render(index as usize)))
+}
+
 /// `check(source, options)`: diagnostics of a shader, or of every shader of a JS/TS or HTML
 /// file, and the programs linked where the pairs are known; JSON of `{shaders, programs,
 /// errors, warnings}`.
 #[napi(js_name = "checkJson")]
-pub fn check_json(source: String, options: String) -> napi::Result<String> {
-    check_text_json(source, options)
+pub fn check_json(source: String, options: String) -> napi::Result<Answer> {
+    check_text_json(source, options).map(Answer::new)
 }
 
 /// [`check_json`] on a thread of Node's pool, for a bundler's many modules at once: a
@@ -125,39 +159,44 @@ pub struct CheckTask {
 }
 
 impl Task for CheckTask {
-    type Output = String;
-    type JsValue = String;
+    type Output = (String, report::Rendering);
+    type JsValue = Answer;
 
-    fn compute(&mut self) -> napi::Result<String> {
+    fn compute(&mut self) -> napi::Result<Self::Output> {
         check_text_json(
             std::mem::take(&mut self.source),
             std::mem::take(&mut self.options),
         )
     }
 
-    fn resolve(&mut self, _env: Env, output: String) -> napi::Result<String> {
-        Ok(output)
+    fn resolve(&mut self, _env: Env, output: Self::Output) -> napi::Result<Answer> {
+        Ok(Answer::new(output))
     }
 }
 
-fn check_text_json(source: String, options: String) -> napi::Result<String> {
+fn check_text_json(source: String, options: String) -> napi::Result<(String, report::Rendering)> {
     guarded("check", || {
         let opts = options::read(&options, "shader.glsl").map_err(|e| type_error(e.0))?;
+        let given = source.clone();
         let mut unit = check_one(source, &opts)?;
         let partner = with_partner(&mut unit, &opts)?;
-        let mut out = report::unit(&unit);
+        let mut rendering = report::Rendering::default();
+        let mut out = report::unit(&unit, Some(&given), &mut rendering);
         if opts.overrides.deny_warnings {
             // `--deny warnings`: a warning fails the check as an error does.
-            let all = out["errors"].as_u64().unwrap_or(0) + out["warnings"].as_u64().unwrap_or(0);
-            out["errors"] = json!(all);
+            out.errors += out.warnings;
         }
-        if let (Some(i), Some(shaders)) = (partner, out["shaders"].as_array_mut()) {
+        if let Some(s) = partner.and_then(|i| out.shaders.get_mut(i)) {
             // The partner's own diagnostics are its module's to report.
-            shaders[i]["partner"] = json!(true);
-            shaders[i]["diagnostics"] = json!([]);
+            s.as_partner();
         }
-        Ok(out.to_string())
+        Ok((to_json(&out)?, rendering))
     })
+}
+
+/// The JSON text of a result.
+fn to_json(value: &impl serde::Serialize) -> napi::Result<String> {
+    serde_json::to_string(value).map_err(|e| Error::new(Status::GenericFailure, e.to_string()))
 }
 
 /// Links a lone shader file with its partner on disk (`light.frag` with `light.vert`), as
@@ -174,7 +213,11 @@ fn with_partner(
     if !opts.filename.is_file() {
         return Ok(None);
     }
-    let Some(path) = essl_check::partner(&opts.filename, |p| p.is_file()) else {
+    let folder = opts.filename.parent().unwrap_or(Path::new("."));
+    let files = files_in(folder);
+    let exists =
+        |p: &Path| p.parent() == Some(folder) && p.file_name().is_some_and(|n| files.contains(n));
+    let Some(path) = essl_check::partner(&opts.filename, exists) else {
         return Ok(None);
     };
     let Ok(text) = essl_check::read_source(&path) else {
@@ -202,7 +245,37 @@ fn with_partner(
     Ok(Some(1))
 }
 
-/// The one shader of a stage-named check.
+/// The names of the files in `folder` (following links), read once in [`SETTINGS_KEPT`]: a
+/// bundler checks the shaders of a folder one after the other, and looking for each one's
+/// partner file took a dozen `stat`s. A partner file created since is seen within that time.
+fn files_in(folder: &Path) -> Arc<HashSet<OsString>> {
+    type Kept = Vec<(PathBuf, Instant, Arc<HashSet<OsString>>)>;
+    static KEPT: Mutex<Kept> = Mutex::new(Vec::new());
+    let now = Instant::now();
+    {
+        let mut kept = KEPT.lock().unwrap_or_else(|e| e.into_inner());
+        kept.retain(|(_, at, _)| now.duration_since(*at) < SETTINGS_KEPT);
+        if let Some((_, _, names)) = kept.iter().find(|(f, _, _)| f == folder) {
+            return names.clone();
+        }
+    }
+    let names: HashSet<OsString> = std::fs::read_dir(folder)
+        .into_iter()
+        .flatten()
+        .flatten()
+        .filter(|e| {
+            e.file_type()
+                .is_ok_and(|t| t.is_file() || (t.is_symlink() && e.path().is_file()))
+        })
+        .map(|e| e.file_name())
+        .collect();
+    let names = Arc::new(names);
+    let mut kept = KEPT.lock().unwrap_or_else(|e| e.into_inner());
+    kept.push((folder.to_path_buf(), now, names.clone()));
+    names
+}
+
+/// The one shader of a stage-named check (a lone text: no pair to look for).
 fn lone_shader(source: String, options: &str, stage: essl::Stage) -> napi::Result<CheckedShader> {
     let default = match stage {
         essl::Stage::Vertex => "shader.vert",
@@ -224,6 +297,14 @@ fn lone_shader(source: String, options: &str, stage: essl::Stage) -> napi::Resul
         .ok_or_else(|| type_error(format!("the {default} text holds no {stage:?} shader")))
 }
 
+/// What `linkJson` answers.
+#[derive(serde::Serialize)]
+struct Linked<'a> {
+    fragment: report::Shader<'a>,
+    program: report::Program<'a>,
+    vertex: report::Shader<'a>,
+}
+
 /// `link(vertex, fragment, options)`: both shaders checked, then linked as WebGL's
 /// `linkProgram`; JSON of `{vertex, fragment, program}` (each shader's result, the program's).
 #[napi(js_name = "linkJson")]
@@ -232,20 +313,23 @@ pub fn link_json(
     fragment: String,
     vertex_options: String,
     fragment_options: String,
-) -> napi::Result<String> {
+) -> napi::Result<Answer> {
     guarded("link", || {
+        let given = (vertex.clone(), fragment.clone());
         let vs = lone_shader(vertex, &vertex_options, essl::Stage::Vertex)?;
         let fs = lone_shader(fragment, &fragment_options, essl::Stage::Fragment)?;
         let program = essl_check::link(&vs, &fs);
-        let mut p = report::program(&program);
-        p["vertex"] = json!(0);
-        p["fragment"] = json!(1);
-        Ok(json!({
-            "vertex": report::shader(&vs),
-            "fragment": report::shader(&fs),
-            "program": p,
-        })
-        .to_string())
+        let mut rendering = report::Rendering::default();
+        let vertex = report::shader(&vs, Some(&given.0), &mut rendering);
+        let fragment = report::shader(&fs, Some(&given.1), &mut rendering);
+        let mut program = report::program(&program, &mut rendering);
+        (program.vertex, program.fragment) = (0, 1);
+        let json = to_json(&Linked {
+            fragment,
+            program,
+            vertex,
+        })?;
+        Ok(Answer::new((json, rendering)))
     })
 }
 

@@ -2,6 +2,7 @@
 //! JS side writes: each key checked, a wrong one an error that names it (`TypeError` in JS).
 
 use std::path::{Path, PathBuf};
+use std::sync::{Arc, Mutex};
 
 use essl::{Stage, Target};
 use essl_check::{Overrides, Preset};
@@ -24,6 +25,12 @@ pub struct Options {
     pub lints: bool,
     /// Whether a host file's pairs are linked.
     pub link: bool,
+    /// The JSON text these options were read from (what [`read`] keeps them by).
+    pub json: Arc<str>,
+    /// The overrides as read, written out: with the stage asked for (which `link` and
+    /// `translate` set on top), the key of the settings read for them. It leaves out the
+    /// filename, so modules of one build share their settings.
+    pub settings_key: Arc<str>,
 }
 
 /// What a JSON value is, in words.
@@ -67,9 +74,40 @@ pub fn stage(name: &str) -> Option<Stage> {
     }
 }
 
+/// How many option texts [`read`] keeps.
+const KEPT: usize = 8;
+
 /// Reads an options object; `default_name` is the file name used when `filename` is absent
-/// (its extension says what the text is).
-pub fn read(json: &str, default_name: &str) -> Result<Options, OptionError> {
+/// (its extension says what the text is). The options last read from the same text are reused
+/// (a bundler, or a loop over many shaders, passes one options object every time): only a
+/// relative `filename` is resolved again, against the current folder of this call.
+pub fn read(json: &str, default_name: &'static str) -> Result<Options, OptionError> {
+    type Kept = Vec<(&'static str, Options)>;
+    static READ: Mutex<Kept> = Mutex::new(Vec::new());
+    let found = {
+        let kept = READ.lock().unwrap_or_else(|e| e.into_inner());
+        kept.iter()
+            .find(|(name, o)| *name == default_name && *o.json == *json)
+            .map(|(_, o)| o.clone())
+    };
+    let mut options = match found {
+        Some(o) => o,
+        None => {
+            let o = parse(json, default_name)?;
+            let mut kept = READ.lock().unwrap_or_else(|e| e.into_inner());
+            if kept.len() == KEPT {
+                kept.remove(0);
+            }
+            kept.push((default_name, o.clone()));
+            o
+        }
+    };
+    options.filename = absolute(&options.filename);
+    Ok(options)
+}
+
+/// Reads an options object, its `filename` as written.
+fn parse(json: &str, default_name: &str) -> Result<Options, OptionError> {
     let value: Value = serde_json::from_str(json)
         .map_err(|e| OptionError(format!("options are not JSON: {e}")))?;
     let empty = Map::new();
@@ -182,13 +220,14 @@ pub fn read(json: &str, default_name: &str) -> Result<Options, OptionError> {
         }
         Some(v) => return Err(bad("rules", "an object ({rule: level})", v)),
     }
-    let filename = string(o, "filename")?.unwrap_or(default_name);
-    let filename = absolute(Path::new(filename));
+    let filename = PathBuf::from(string(o, "filename")?.unwrap_or(default_name));
     Ok(Options {
         filename,
-        overrides,
         lints: boolean(o, "lints", true)?,
         link: boolean(o, "link", true)?,
+        json: Arc::from(json),
+        settings_key: Arc::from(format!("{overrides:?}")),
+        overrides,
     })
 }
 
