@@ -131,7 +131,7 @@ function minifyOptions(fn, source, options) {
 
 export function minify(source, options) {
   const [o, rename] = minifyOptions('minify', source, options);
-  return checked(call('minify', () => native.minifyJson(source, o, rename)));
+  return checked(call('minify', () => native.minifyJson(source, o, rename)), source);
 }
 
 export async function minifyAsync(source, options) {
@@ -144,7 +144,7 @@ export async function minifyAsync(source, options) {
       throw e;
     });
   }
-  return checked(call('minifyAsync', () => json));
+  return checked(call('minifyAsync', () => json), source);
 }
 
 export function link(vertex, fragment, options) {

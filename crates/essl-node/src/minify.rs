@@ -8,12 +8,13 @@ use napi::{Env, Error, Status, Task};
 use napi_derive::napi;
 use serde_json::{json, Map, Value};
 
-use crate::{guarded, options, report, type_error};
+use crate::{guarded, options, report, type_error, Answer};
 
-/// `minify(source, options)`: JSON of `{shaders, programs, errors, warnings, text, renamed}`.
+/// `minify(source, options)`: JSON of `{shaders, programs, errors, warnings, text, renamed}`,
+/// with the diagnostics' texts as `check` answers them.
 #[napi(js_name = "minifyJson")]
-pub fn minify_json(source: String, options: String, rename: bool) -> napi::Result<String> {
-    minify_text_json(source, options, rename)
+pub fn minify_json(source: String, options: String, rename: bool) -> napi::Result<Answer> {
+    minify_text_json(source, options, rename).map(Answer::new)
 }
 
 /// [`minify_json`] on a thread of Node's pool: a promise of the same JSON.
@@ -34,10 +35,10 @@ pub struct MinifyTask {
 }
 
 impl Task for MinifyTask {
-    type Output = String;
-    type JsValue = String;
+    type Output = (String, report::Rendering);
+    type JsValue = Answer;
 
-    fn compute(&mut self) -> napi::Result<String> {
+    fn compute(&mut self) -> napi::Result<Self::Output> {
         minify_text_json(
             std::mem::take(&mut self.source),
             std::mem::take(&mut self.options),
@@ -45,14 +46,19 @@ impl Task for MinifyTask {
         )
     }
 
-    fn resolve(&mut self, _env: Env, output: String) -> napi::Result<String> {
-        Ok(output)
+    fn resolve(&mut self, _env: Env, output: Self::Output) -> napi::Result<Answer> {
+        Ok(Answer::new(output))
     }
 }
 
-fn minify_text_json(source: String, options: String, rename: bool) -> napi::Result<String> {
+fn minify_text_json(
+    source: String,
+    options: String,
+    rename: bool,
+) -> napi::Result<(String, report::Rendering)> {
     guarded("minify", || {
         let opts = options::read(&options, "shader.glsl").map_err(|e| type_error(e.0))?;
+        let given = source.clone();
         let unit = crate::check_one(source, &opts)?;
         let [shader] = unit.shaders.as_slice() else {
             return Err(type_error(format!(
@@ -66,7 +72,9 @@ fn minify_text_json(source: String, options: String, rename: bool) -> napi::Resu
                 "minify takes a shader's text, not a JS/TS or HTML module's",
             ));
         }
-        let mut out = report::unit(&unit);
+        let mut rendering = report::Rendering::default();
+        let mut out = serde_json::to_value(report::unit(&unit, Some(&given), &mut rendering))
+            .map_err(|e| Error::new(Status::GenericFailure, e.to_string()))?;
         let errors = out["errors"].as_u64().unwrap_or(0)
             + if opts.overrides.deny_warnings {
                 out["warnings"].as_u64().unwrap_or(0)
@@ -77,7 +85,7 @@ fn minify_text_json(source: String, options: String, rename: bool) -> napi::Resu
         if errors > 0 {
             out["text"] = Value::Null;
             out["renamed"] = json!({});
-            return Ok(out.to_string());
+            return Ok((out.to_string(), rendering));
         }
         let m = essl_check::minify(shader, rename).map_err(|e| match e {
             essl_check::MinifyError::Preset(_) => type_error(format!("essl: {e}")),
@@ -87,6 +95,6 @@ fn minify_text_json(source: String, options: String, rename: bool) -> napi::Resu
             m.renamed.into_iter().map(|(a, b)| (a, json!(b))).collect();
         out["text"] = json!(m.text);
         out["renamed"] = Value::Object(renamed);
-        Ok(out.to_string())
+        Ok((out.to_string(), rendering))
     })
 }
