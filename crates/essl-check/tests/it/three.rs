@@ -42,23 +42,34 @@ fn export_name(file: &Path, at: usize) -> String {
 /// attribute counts.
 type Verdict = (bool, bool, Option<(usize, usize)>);
 
-/// Each program a run checked, by its oracle name.
-fn verdicts(run: &Run<CheckedUnit>) -> BTreeMap<String, Verdict> {
-    let mut out = BTreeMap::new();
+/// Each program of a run with its verdict, under the name `name` gives its vertex and
+/// fragment shaders (none: left out); several programs may share a name.
+fn verdicts(
+    run: &Run<CheckedUnit>,
+    name: impl Fn(&essl_check::CheckedShader, &essl_check::CheckedShader) -> Option<String>,
+) -> BTreeMap<String, Vec<Verdict>> {
+    let mut out: BTreeMap<String, Vec<Verdict>> = BTreeMap::new();
     for unit in &run.results {
         for p in &unit.programs {
             let (vs, fs) = (&unit.shaders[p.vertex], &unit.shaders[p.fragment]);
             let ok = |s: &essl_check::CheckedShader| !s.all().any(|(_, d)| d.is_error());
-            let name = export_name(&vs.path, vs.embedded_at.unwrap() as usize);
             let linked = p
                 .program
                 .as_ref()
                 .filter(|prog| prog.ok && p.linked)
                 .map(|prog| (prog.uniforms.len(), prog.attributes.len()));
-            out.insert(name, (ok(vs), ok(fs), linked));
+            if let Some(n) = name(vs, fs) {
+                out.entry(n).or_default().push((ok(vs), ok(fs), linked));
+            }
         }
     }
     out
+}
+
+/// Chromium's answers (`tests/oracle/three-shaders.json`).
+fn oracle() -> serde_json::Value {
+    let path = essl_testdata::repo_root().join("tests/oracle/three-shaders.json");
+    serde_json::from_str(&std::fs::read_to_string(path).unwrap()).unwrap()
 }
 
 #[test]
@@ -66,26 +77,22 @@ fn three_js_example_shaders_compile_and_link_as_in_chromium() {
     let Some(js) = essl_testdata::js_libraries() else {
         return;
     };
-    let oracle: serde_json::Value = serde_json::from_str(
-        &std::fs::read_to_string(
-            essl_testdata::repo_root().join("tests/oracle/three-shaders.json"),
-        )
-        .unwrap(),
-    )
-    .unwrap();
+    let oracle = oracle();
     let dir = js.join("node_modules/three/examples/jsm/shaders");
     let run = check(&dir, three(), CheckOptions::default());
-    let checked = verdicts(&run);
+    let checked = verdicts(&run, |vs, _| {
+        Some(export_name(&vs.path, vs.embedded_at? as usize))
+    });
     let unchecked: Vec<String> = lines(&dir, &run)
         .into_iter()
         .filter(|l| l.ends_with("preset-unchecked"))
         .collect();
     for (name, chromium) in oracle["programs"].as_object().unwrap() {
-        let Some((vs, fs, linked)) = checked.get(name) else {
+        let Some(&[(vs, fs, linked)]) = checked.get(name).map(Vec::as_slice) else {
             continue;
         };
-        assert_eq!(*vs, chromium["vertex_compiled"], "{name}: {chromium}");
-        assert_eq!(*fs, chromium["fragment_compiled"], "{name}: {chromium}");
+        assert_eq!(vs, chromium["vertex_compiled"], "{name}: {chromium}");
+        assert_eq!(fs, chromium["fragment_compiled"], "{name}: {chromium}");
         if chromium["linked"] == true {
             let (uniforms, attributes) = linked.expect(name);
             assert_eq!(uniforms as u64, chromium["uniforms"], "{name}");
@@ -149,34 +156,11 @@ fn three_js_example_materials_compile_and_link_as_in_chromium() {
     let Some(js) = essl_testdata::js_libraries() else {
         return;
     };
-    let oracle: serde_json::Value = serde_json::from_str(
-        &std::fs::read_to_string(
-            essl_testdata::repo_root().join("tests/oracle/three-shaders.json"),
-        )
-        .unwrap(),
-    )
-    .unwrap();
+    let oracle = oracle();
     let jsm = js.join("node_modules/three/examples/jsm");
     let run = check(&jsm, three(), CheckOptions::default());
     // Each program essl checked, by where its fragment shader's text is written.
-    let mut by_fragment: BTreeMap<String, Vec<Verdict>> = BTreeMap::new();
-    for unit in &run.results {
-        for p in &unit.programs {
-            let (vs, fs) = (&unit.shaders[p.vertex], &unit.shaders[p.fragment]);
-            let ok = |s: &essl_check::CheckedShader| !s.all().any(|(_, d)| d.is_error());
-            let linked = p
-                .program
-                .as_ref()
-                .filter(|prog| prog.ok && p.linked)
-                .map(|prog| (prog.uniforms.len(), prog.attributes.len()));
-            if let Some(at) = written_at(&jsm, fs) {
-                by_fragment
-                    .entry(at)
-                    .or_default()
-                    .push((ok(vs), ok(fs), linked));
-            }
-        }
-    }
+    let by_fragment = verdicts(&run, |_, fs| written_at(&jsm, fs));
     let notes: Vec<String> = lines(&jsm, &run)
         .into_iter()
         .filter(|l| l.ends_with("preset-unchecked"))
