@@ -319,20 +319,24 @@ impl Context {
     }
 
     fn supported(&self) -> Vec<Extension> {
+        let float_linear = self
+            .gpu
+            .device
+            .features()
+            .contains(wgpu::Features::FLOAT32_FILTERABLE);
         if self.webgl1.on {
-            return crate::webgl1::WEBGL1_EXTENSIONS.to_vec();
+            let mut v = crate::webgl1::WEBGL1_EXTENSIONS.to_vec();
+            if float_linear {
+                v.push(Extension::TextureFloatLinear);
+            }
+            return v;
         }
         let mut v = vec![
             Extension::ColorBufferFloat,
             Extension::ColorBufferHalfFloat,
             Extension::FloatBlend,
         ];
-        if self
-            .gpu
-            .device
-            .features()
-            .contains(wgpu::Features::FLOAT32_FILTERABLE)
-        {
+        if float_linear {
             v.push(Extension::TextureFloatLinear);
         }
         v.push(Extension::ParallelShaderCompile);
@@ -346,6 +350,10 @@ impl Context {
             .supported()
             .into_iter()
             .find(|e| e.name().eq_ignore_ascii_case(name))?;
+        if self.webgl1.on {
+            self.enable_webgl1_extension(e);
+            return Some(e);
+        }
         let x = &mut self.extensions;
         match e {
             // EXT_color_buffer_half_float makes the 16-bit formats renderable, which

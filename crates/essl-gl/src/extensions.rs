@@ -6,7 +6,8 @@
 //! 32-bit float formats and `R11F_G11F_B10F`), `EXT_color_buffer_half_float`,
 //! `EXT_float_blend` (blend into 32-bit float attachments), `OES_texture_float_linear`
 //! (filter 32-bit float textures, where the adapter can) and `KHR_parallel_shader_compile`
-//! (`COMPLETION_STATUS_KHR`, always true: compiling is synchronous).
+//! (`COMPLETION_STATUS_KHR`, always true: compiling is synchronous). WebGL 1 contexts
+//! offer their own list, float textures among them (`webgl1/float.rs`).
 
 /// The WebGL extensions a context has turned on.
 #[derive(Clone, Copy, Debug, Default)]
@@ -53,6 +54,14 @@ pub enum Extension {
     OesVertexArrayObject,
     /// `WEBGL_draw_buffers` (WebGL 1).
     WebglDrawBuffers,
+    /// `OES_texture_float` (WebGL 1).
+    OesTextureFloat,
+    /// `OES_texture_half_float` (WebGL 1).
+    OesTextureHalfFloat,
+    /// `OES_texture_half_float_linear` (WebGL 1).
+    OesTextureHalfFloatLinear,
+    /// `WEBGL_color_buffer_float` (WebGL 1).
+    WebglColorBufferFloat,
 }
 
 impl Extension {
@@ -72,6 +81,10 @@ impl Extension {
             Extension::OesStandardDerivatives => "OES_standard_derivatives",
             Extension::OesVertexArrayObject => "OES_vertex_array_object",
             Extension::WebglDrawBuffers => "WEBGL_draw_buffers",
+            Extension::OesTextureFloat => "OES_texture_float",
+            Extension::OesTextureHalfFloat => "OES_texture_half_float",
+            Extension::OesTextureHalfFloatLinear => "OES_texture_half_float_linear",
+            Extension::WebglColorBufferFloat => "WEBGL_color_buffer_float",
         }
     }
 }

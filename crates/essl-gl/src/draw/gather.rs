@@ -233,12 +233,15 @@ impl Context {
                 _ => SampleKind::Float,
             };
             let float_linear = self.extensions.texture_float_linear;
+            let half_linear = !self.webgl1.on || self.webgl1.texture_half_float_linear;
             let texture = self.bindings.texture(unit, target).and_then(|id| {
                 let sampling = self.sampling_for(unit, id)?;
                 self.objects
                     .textures
                     .get_any(id)
-                    .and_then(|t| t.completeness(float_linear, self.webgl1.on, &sampling))
+                    .and_then(|t| {
+                        t.completeness(float_linear, half_linear, self.webgl1.on, &sampling)
+                    })
                     .map(|c| (id, c, sampling))
             });
             if let Some((id, c, sampling)) = &texture {

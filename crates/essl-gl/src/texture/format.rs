@@ -267,7 +267,8 @@ impl InternalFormat {
                 }
                 match self.comp {
                     Comp::Snorm8 => false,
-                    Comp::F16 | Comp::F32 => float_ok && self.channels != 3,
+                    // WebGL 1's unsized RGB in floats renders, as in Chromium.
+                    Comp::F16 | Comp::F32 => float_ok && (self.channels != 3 || self.gl == gl::RGB),
                     Comp::Unorm8 => {
                         self.channels != 3 || matches!(self.gl, gl::RGB | gl::RGB8 | gl::RGB565)
                     }
