@@ -271,11 +271,13 @@ impl Context {
                     return self.fail(gl::INVALID_OPERATION, f, msg);
                 }
             }
-            slot_plans.push(SlotPlan {
-                texture,
-                dim: view_dimension(target),
-                kind,
-            });
+            // Integer cube samplers are 2D arrays of the six faces (`LOWER_OPTIONS`).
+            let integer = matches!(kind, SampleKind::Sint | SampleKind::Uint);
+            let dim = match view_dimension(target) {
+                wgpu::TextureViewDimension::Cube if integer => wgpu::TextureViewDimension::D2Array,
+                d => d,
+            };
+            slot_plans.push(SlotPlan { texture, dim, kind });
         }
         Some(slot_plans)
     }
