@@ -163,6 +163,11 @@ impl InternalFormat {
         }
     }
 
+    /// Whether the format is RGB stored with a fourth channel (whose value GL reads as 1).
+    pub(crate) fn rgb_in_four_channels(&self) -> bool {
+        self.channels == 3 && self.expand == Expand::None && self.packing == Packing::None
+    }
+
     /// Bytes per texel on the GPU (and in the CPU copy).
     pub(crate) fn texel_size(&self) -> usize {
         match self.packing {

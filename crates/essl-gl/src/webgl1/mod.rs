@@ -15,6 +15,8 @@
 mod enums;
 mod float;
 
+pub(crate) use float::HALF_FLOAT_OES;
+
 use crate::context::Context;
 use crate::extensions::Extension;
 use crate::gl;

@@ -204,3 +204,45 @@ fn float_textures_and_renderbuffers_render_with_color_buffer_float() {
     assert_eq!(ctx.get_error(), gl::NO_ERROR);
     assert_eq!(out, [1000.0, -2.0, 0.25, 1.0]);
 }
+
+#[test]
+fn an_rgb_half_float_attachment_reads_back_alpha_1() {
+    let Some(mut ctx) = webgl1(2, 2) else {
+        return;
+    };
+    ctx.get_extension("OES_texture_half_float");
+    let none: Option<&[u16]> = None;
+    let t = ctx.create_texture();
+    ctx.bind_texture(gl::TEXTURE_2D, Some(t));
+    ctx.tex_image_2d(
+        gl::TEXTURE_2D,
+        0,
+        gl::RGB as i32,
+        2,
+        2,
+        0,
+        gl::RGB,
+        HALF_FLOAT_OES,
+        none,
+    );
+    let fb = ctx.create_framebuffer();
+    ctx.bind_framebuffer(gl::FRAMEBUFFER, Some(fb));
+    ctx.framebuffer_texture_2d(
+        gl::FRAMEBUFFER,
+        gl::COLOR_ATTACHMENT0,
+        gl::TEXTURE_2D,
+        Some(t),
+        0,
+    );
+    assert_eq!(
+        ctx.check_framebuffer_status(gl::FRAMEBUFFER),
+        gl::FRAMEBUFFER_COMPLETE,
+        "RGB in half floats renders with EXT_color_buffer_half_float"
+    );
+    ctx.clear_color(1000.0, 2.0, 0.5, 1000.0);
+    ctx.clear(gl::COLOR_BUFFER_BIT);
+    let mut out = [0f32; 4];
+    ctx.read_pixels(0, 0, 1, 1, gl::RGBA, gl::FLOAT, &mut out);
+    assert_eq!(ctx.get_error(), gl::NO_ERROR);
+    assert_eq!(out, [1000.0, 2.0, 0.5, 1.0]);
+}
