@@ -76,11 +76,12 @@ pub struct Context {
 }
 
 /// The wgpu features essl-gl asks for when the adapter has them: vertex shaders that write
-/// storage buffers (transform feedback), `DEPTH32F_STENCIL8`, filterable 32-bit floats, and
-/// `R11F_G11F_B10F` as a render target (`EXT_color_buffer_float`).
+/// storage buffers (transform feedback), `DEPTH32F_STENCIL8`, filterable and blendable 32-bit
+/// floats, and `R11F_G11F_B10F` as a render target (`EXT_color_buffer_float`).
 const WANTED_FEATURES: wgpu::Features = wgpu::Features::VERTEX_WRITABLE_STORAGE
     .union(wgpu::Features::DEPTH32FLOAT_STENCIL8)
     .union(wgpu::Features::FLOAT32_FILTERABLE)
+    .union(wgpu::Features::FLOAT32_BLENDABLE)
     .union(wgpu::Features::RG11B10UFLOAT_RENDERABLE);
 
 impl Context {
@@ -319,23 +320,23 @@ impl Context {
     }
 
     fn supported(&self) -> Vec<Extension> {
-        let float_linear = self
-            .gpu
-            .device
-            .features()
-            .contains(wgpu::Features::FLOAT32_FILTERABLE);
+        let features = self.gpu.device.features();
+        let float_linear = features.contains(wgpu::Features::FLOAT32_FILTERABLE);
+        let float_blend = features.contains(wgpu::Features::FLOAT32_BLENDABLE);
         if self.webgl1.on {
             let mut v = crate::webgl1::WEBGL1_EXTENSIONS.to_vec();
+            if float_blend {
+                v.push(Extension::FloatBlend);
+            }
             if float_linear {
                 v.push(Extension::TextureFloatLinear);
             }
             return v;
         }
-        let mut v = vec![
-            Extension::ColorBufferFloat,
-            Extension::ColorBufferHalfFloat,
-            Extension::FloatBlend,
-        ];
+        let mut v = vec![Extension::ColorBufferFloat, Extension::ColorBufferHalfFloat];
+        if float_blend {
+            v.push(Extension::FloatBlend);
+        }
         if float_linear {
             v.push(Extension::TextureFloatLinear);
         }

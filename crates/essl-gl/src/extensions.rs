@@ -4,8 +4,9 @@
 //! essl-gl implements the WebGL2 extensions that change what the core API accepts and that
 //! wgpu can do on every adapter it runs on: `EXT_color_buffer_float` (render to 16- and
 //! 32-bit float formats and `R11F_G11F_B10F`), `EXT_color_buffer_half_float`,
-//! `EXT_float_blend` (blend into 32-bit float attachments), `OES_texture_float_linear`
-//! (filter 32-bit float textures, where the adapter can) and `KHR_parallel_shader_compile`
+//! `EXT_float_blend` (blend into 32-bit float attachments, where the adapter can; without
+//! it such a draw is `INVALID_OPERATION`), `OES_texture_float_linear` (filter 32-bit float
+//! textures, where the adapter can) and `KHR_parallel_shader_compile`
 //! (`COMPLETION_STATUS_KHR`, always true: compiling is synchronous). WebGL 1 contexts
 //! offer their own list, float textures among them (`webgl1/float.rs`).
 

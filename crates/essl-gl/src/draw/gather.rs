@@ -305,6 +305,17 @@ impl Context {
                 return self.fail(gl::INVALID_OPERATION, f, msg);
             }
         }
+        // EXT_float_blend: blending into a 32-bit float draw buffer needs the extension.
+        let float32 = |c: &crate::texture::InternalFormat| {
+            c.comp == crate::texture::Comp::F32 && c.packing == crate::texture::Packing::None
+        };
+        if self.state.blend
+            && !self.extensions.float_blend
+            && formats.colors.iter().flatten().any(float32)
+        {
+            let msg = "blending into a 32-bit float draw buffer needs EXT_float_blend";
+            return self.fail(gl::INVALID_OPERATION, f, msg.to_string());
+        }
         // WebGL 2 §5.24: a draw buffer that would be written needs an output of the shader
         // (nothing is written while the rasterizer discards).
         if !self.state.rasterizer_discard && self.state.color_mask.iter().any(|&m| m) {

@@ -82,6 +82,18 @@ impl Context {
         InternalFormat { comp, ..f }
     }
 
+    /// The type a WebGL 1 `readPixels` reads as: `HALF_FLOAT_OES` is `HALF_FLOAT` once
+    /// `OES_texture_half_float` or `EXT_color_buffer_half_float` is on; any other type (and
+    /// every type in WebGL 2) is itself.
+    pub(crate) fn webgl1_read_type(&self, ty: u32) -> u32 {
+        let w = &self.webgl1;
+        if w.on && ty == HALF_FLOAT_OES && (w.texture_half_float || w.color_buffer_half_float) {
+            gl::HALF_FLOAT
+        } else {
+            ty
+        }
+    }
+
     /// Whether the float renderbuffer formats of WebGL 1's extensions are on for
     /// `renderbufferStorage`: `RGBA32F` with `WEBGL_color_buffer_float`, `RGBA16F` with
     /// `EXT_color_buffer_half_float`.

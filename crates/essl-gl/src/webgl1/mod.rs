@@ -41,8 +41,8 @@ pub(crate) struct Webgl1 {
     pub(crate) color_buffer_half_float: bool,
 }
 
-/// The extensions a WebGL 1 context offers (`OES_texture_float_linear` too, where the
-/// adapter filters 32-bit floats).
+/// The extensions a WebGL 1 context offers (`EXT_float_blend` and `OES_texture_float_linear`
+/// too, where the adapter blends and filters 32-bit floats).
 pub(crate) const WEBGL1_EXTENSIONS: [Extension; 13] = [
     Extension::AngleInstancedArrays,
     Extension::ColorBufferHalfFloat,
@@ -96,6 +96,7 @@ impl Context {
             }
             Extension::OesTextureHalfFloatLinear => w.texture_half_float_linear = true,
             Extension::TextureFloatLinear => self.extensions.texture_float_linear = true,
+            Extension::FloatBlend => self.extensions.float_blend = true,
             _ => {}
         }
         // The float attachments of WebGL 2's EXT_color_buffer_float are these extensions'.

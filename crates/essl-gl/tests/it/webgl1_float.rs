@@ -203,6 +203,22 @@ fn float_textures_and_renderbuffers_render_with_color_buffer_float() {
     ctx.read_pixels(0, 0, 1, 1, gl::RGBA, gl::FLOAT, &mut out);
     assert_eq!(ctx.get_error(), gl::NO_ERROR);
     assert_eq!(out, [1000.0, -2.0, 0.25, 1.0]);
+    let p = common::program(&mut ctx, VS, "void main() { gl_FragColor = vec4(1.0); }");
+    ctx.use_program(Some(p));
+    common::float_attribute(&mut ctx, 0, 2, &common::QUAD);
+    ctx.enable(gl::BLEND);
+    ctx.draw_arrays(gl::TRIANGLES, 0, 6);
+    assert_eq!(
+        ctx.get_error(),
+        gl::INVALID_OPERATION,
+        "blending before EXT_float_blend"
+    );
+    if ctx.get_extension("EXT_float_blend").is_none() {
+        return; // the adapter does not blend 32-bit floats
+    }
+    ctx.draw_arrays(gl::TRIANGLES, 0, 6);
+    let m = ctx.error_message();
+    assert_eq!(ctx.get_error(), gl::NO_ERROR, "with EXT_float_blend: {m:?}");
 }
 
 #[test]
@@ -245,4 +261,16 @@ fn an_rgb_half_float_attachment_reads_back_alpha_1() {
     ctx.read_pixels(0, 0, 1, 1, gl::RGBA, gl::FLOAT, &mut out);
     assert_eq!(ctx.get_error(), gl::NO_ERROR);
     assert_eq!(out, [1000.0, 2.0, 0.5, 1.0]);
+    let mut halves = [0u16; 3];
+    ctx.read_pixels(0, 0, 1, 1, gl::RGB, HALF_FLOAT_OES, &mut halves);
+    assert_eq!(
+        ctx.get_error(),
+        gl::NO_ERROR,
+        "RGB, HALF_FLOAT_OES: the native pair"
+    );
+    assert_eq!(halves, [0x63D0, 0x4000, 0x3800]);
+    assert_eq!(
+        ctx.get_parameter(gl::IMPLEMENTATION_COLOR_READ_TYPE),
+        Some(essl_gl::Parameter::Enum(HALF_FLOAT_OES))
+    );
 }
