@@ -487,7 +487,7 @@ fn integer_cube_maps_take_the_face_and_level_a_lookup_selects() {
             let texels: Vec<i8> = rg.repeat(side * side);
             ctx.tex_image_2d(
                 gl::TEXTURE_CUBE_MAP_POSITIVE_X + face as u32,
-                level as i32,
+                level,
                 gl::RG8I as i32,
                 side as i32,
                 side as i32,
