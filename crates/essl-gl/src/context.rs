@@ -322,7 +322,7 @@ impl Context {
     fn supported(&self) -> Vec<Extension> {
         let features = self.gpu.device.features();
         let float_linear = features.contains(wgpu::Features::FLOAT32_FILTERABLE);
-        let float_blend = features.contains(wgpu::Features::FLOAT32_BLENDABLE);
+        let float_blend = self.blends_float32();
         if self.webgl1.on {
             let mut v = crate::webgl1::WEBGL1_EXTENSIONS.to_vec();
             if float_blend {
@@ -344,6 +344,13 @@ impl Context {
         v
     }
 
+    /// Whether 32-bit float attachments blend (`EXT_float_blend`): the adapter's
+    /// `FLOAT32_BLENDABLE`.
+    pub(crate) fn blends_float32(&self) -> bool {
+        let features = self.gpu.device.features();
+        features.contains(wgpu::Features::FLOAT32_BLENDABLE)
+    }
+
     /// Turns an extension on and returns it (`getExtension`); `None` for a name this context
     /// does not offer (names compare case-insensitively, as in WebGL).
     pub fn get_extension(&mut self, name: &str) -> Option<Extension> {
@@ -362,7 +369,8 @@ impl Context {
             Extension::ColorBufferFloat | Extension::ColorBufferHalfFloat => {
                 x.color_buffer_float = true
             }
-            Extension::FloatBlend => x.float_blend = true,
+            // Blending 32-bit floats depends on the adapter only (`blends_float32`).
+            Extension::FloatBlend => {}
             Extension::TextureFloatLinear => x.texture_float_linear = true,
             Extension::ParallelShaderCompile => x.parallel_shader_compile = true,
             webgl1 => self.enable_webgl1_extension(webgl1),

@@ -4,8 +4,10 @@
 //! essl-gl implements the WebGL2 extensions that change what the core API accepts and that
 //! wgpu can do on every adapter it runs on: `EXT_color_buffer_float` (render to 16- and
 //! 32-bit float formats and `R11F_G11F_B10F`), `EXT_color_buffer_half_float`,
-//! `EXT_float_blend` (blend into 32-bit float attachments, where the adapter can; without
-//! it such a draw is `INVALID_OPERATION`), `OES_texture_float_linear` (filter 32-bit float
+//! `EXT_float_blend` (32-bit float attachments blend where the adapter can, whether or not
+//! the extension was turned on, as in Chromium and as the conformance suite checks; elsewhere
+//! such a draw is `INVALID_OPERATION` and the extension is not offered),
+//! `OES_texture_float_linear` (filter 32-bit float
 //! textures, where the adapter can) and `KHR_parallel_shader_compile`
 //! (`COMPLETION_STATUS_KHR`, always true: compiling is synchronous). WebGL 1 contexts
 //! offer their own list, float textures among them (`webgl1/float.rs`).
@@ -15,8 +17,6 @@
 pub(crate) struct Extensions {
     /// `EXT_color_buffer_float`.
     pub(crate) color_buffer_float: bool,
-    /// `EXT_float_blend`.
-    pub(crate) float_blend: bool,
     /// `OES_texture_float_linear`.
     pub(crate) texture_float_linear: bool,
     /// `KHR_parallel_shader_compile`.

@@ -305,15 +305,16 @@ impl Context {
                 return self.fail(gl::INVALID_OPERATION, f, msg);
             }
         }
-        // EXT_float_blend: blending into a 32-bit float draw buffer needs the extension.
+        // EXT_float_blend: blending into a 32-bit float draw buffer needs an adapter that
+        // blends them (the extension is then offered, and on whether turned on or not).
         let float32 = |c: &crate::texture::InternalFormat| {
             c.comp == crate::texture::Comp::F32 && c.packing == crate::texture::Packing::None
         };
         if self.state.blend
-            && !self.extensions.float_blend
+            && !self.blends_float32()
             && formats.colors.iter().flatten().any(float32)
         {
-            let msg = "blending into a 32-bit float draw buffer needs EXT_float_blend";
+            let msg = "this adapter does not blend 32-bit float draw buffers (EXT_float_blend)";
             return self.fail(gl::INVALID_OPERATION, f, msg.to_string());
         }
         // WebGL 2 §5.24: a draw buffer that would be written needs an output of the shader

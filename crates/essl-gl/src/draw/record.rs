@@ -243,7 +243,7 @@ impl Context {
             samples: target.samples,
             alpha_to_coverage: s.sample_alpha_to_coverage,
             sample_mask: sample_mask(s, target.samples),
-            float_blend: self.extensions.float_blend,
+            float_blend: self.blends_float32(),
             capture: call.capture.as_ref().map(|c| c.spec.clone()),
             rasterize: call.rasterize,
         };

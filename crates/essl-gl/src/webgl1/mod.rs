@@ -96,7 +96,6 @@ impl Context {
             }
             Extension::OesTextureHalfFloatLinear => w.texture_half_float_linear = true,
             Extension::TextureFloatLinear => self.extensions.texture_float_linear = true,
-            Extension::FloatBlend => self.extensions.float_blend = true,
             _ => {}
         }
         // The float attachments of WebGL 2's EXT_color_buffer_float are these extensions'.
