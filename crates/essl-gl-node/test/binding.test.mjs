@@ -254,6 +254,23 @@ test('a WebGL 1 context has WebGL 1 methods only and compiles GLSL ES 1.00 only'
   ctx.destroy();
 });
 
+test('a WebGL 1 context takes HALF_FLOAT_OES from a Uint16Array once OES_texture_half_float is on', () => {
+  const ctx = createContext(8, 8, {}, { version: 1 });
+  const t = ctx.createTexture();
+  ctx.bindTexture(ctx.TEXTURE_2D, t);
+  const half = new Uint16Array(4).fill(0x3c00);
+  ctx.texImage2D(ctx.TEXTURE_2D, 0, ctx.RGBA, 1, 1, 0, ctx.RGBA, 0x8d61, half);
+  assert.equal(ctx.getError(), ctx.INVALID_ENUM);
+  const ext = ctx.getExtension('OES_texture_half_float');
+  assert.equal(ext.HALF_FLOAT_OES, 0x8d61);
+  ctx.texImage2D(ctx.TEXTURE_2D, 0, ctx.RGBA, 1, 1, 0, ctx.RGBA, ext.HALF_FLOAT_OES, half);
+  assert.equal(ctx.getError(), ctx.NO_ERROR);
+  ctx.texImage2D(ctx.TEXTURE_2D, 0, ctx.RGBA, 1, 1, 0, ctx.RGBA, ext.HALF_FLOAT_OES, null);
+  assert.equal(ctx.getError(), ctx.NO_ERROR);
+  assert.equal(ctx.getExtension('WEBGL_color_buffer_float').RGBA32F_EXT, 0x8814);
+  ctx.destroy();
+});
+
 test('a canvas in a document is cleared when the task that drew returns, unless preserveDrawingBuffer; an offscreen one is not', async () => {
   const { JSDOM } = await import('jsdom');
   const dom = new JSDOM('<!doctype html><body></body>', { runScripts: 'outside-only' });

@@ -82,7 +82,8 @@ pub(crate) fn pixel_array_type(ty: u32) -> Option<ArrayType> {
         | gl::UNSIGNED_SHORT_5_6_5
         | gl::UNSIGNED_SHORT_4_4_4_4
         | gl::UNSIGNED_SHORT_5_5_5_1
-        | gl::HALF_FLOAT => ArrayType::Uint16,
+        | gl::HALF_FLOAT
+        | 0x8D61 => ArrayType::Uint16, // WebGL 1's HALF_FLOAT_OES
         gl::INT => ArrayType::Int32,
         gl::UNSIGNED_INT
         | gl::UNSIGNED_INT_2_10_10_10_REV

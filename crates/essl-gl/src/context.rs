@@ -76,11 +76,12 @@ pub struct Context {
 }
 
 /// The wgpu features essl-gl asks for when the adapter has them: vertex shaders that write
-/// storage buffers (transform feedback), `DEPTH32F_STENCIL8`, filterable 32-bit floats, and
-/// `R11F_G11F_B10F` as a render target (`EXT_color_buffer_float`).
+/// storage buffers (transform feedback), `DEPTH32F_STENCIL8`, filterable and blendable 32-bit
+/// floats, and `R11F_G11F_B10F` as a render target (`EXT_color_buffer_float`).
 const WANTED_FEATURES: wgpu::Features = wgpu::Features::VERTEX_WRITABLE_STORAGE
     .union(wgpu::Features::DEPTH32FLOAT_STENCIL8)
     .union(wgpu::Features::FLOAT32_FILTERABLE)
+    .union(wgpu::Features::FLOAT32_BLENDABLE)
     .union(wgpu::Features::RG11B10UFLOAT_RENDERABLE);
 
 impl Context {
@@ -319,24 +320,35 @@ impl Context {
     }
 
     fn supported(&self) -> Vec<Extension> {
+        let features = self.gpu.device.features();
+        let float_linear = features.contains(wgpu::Features::FLOAT32_FILTERABLE);
+        let float_blend = self.blends_float32();
         if self.webgl1.on {
-            return crate::webgl1::WEBGL1_EXTENSIONS.to_vec();
+            let mut v = crate::webgl1::WEBGL1_EXTENSIONS.to_vec();
+            if float_blend {
+                v.push(Extension::FloatBlend);
+            }
+            if float_linear {
+                v.push(Extension::TextureFloatLinear);
+            }
+            return v;
         }
-        let mut v = vec![
-            Extension::ColorBufferFloat,
-            Extension::ColorBufferHalfFloat,
-            Extension::FloatBlend,
-        ];
-        if self
-            .gpu
-            .device
-            .features()
-            .contains(wgpu::Features::FLOAT32_FILTERABLE)
-        {
+        let mut v = vec![Extension::ColorBufferFloat, Extension::ColorBufferHalfFloat];
+        if float_blend {
+            v.push(Extension::FloatBlend);
+        }
+        if float_linear {
             v.push(Extension::TextureFloatLinear);
         }
         v.push(Extension::ParallelShaderCompile);
         v
+    }
+
+    /// Whether 32-bit float attachments blend (`EXT_float_blend`): the adapter's
+    /// `FLOAT32_BLENDABLE`.
+    pub(crate) fn blends_float32(&self) -> bool {
+        let features = self.gpu.device.features();
+        features.contains(wgpu::Features::FLOAT32_BLENDABLE)
     }
 
     /// Turns an extension on and returns it (`getExtension`); `None` for a name this context
@@ -346,6 +358,10 @@ impl Context {
             .supported()
             .into_iter()
             .find(|e| e.name().eq_ignore_ascii_case(name))?;
+        if self.webgl1.on {
+            self.enable_webgl1_extension(e);
+            return Some(e);
+        }
         let x = &mut self.extensions;
         match e {
             // EXT_color_buffer_half_float makes the 16-bit formats renderable, which
@@ -353,7 +369,8 @@ impl Context {
             Extension::ColorBufferFloat | Extension::ColorBufferHalfFloat => {
                 x.color_buffer_float = true
             }
-            Extension::FloatBlend => x.float_blend = true,
+            // Blending 32-bit floats depends on the adapter only (`blends_float32`).
+            Extension::FloatBlend => {}
             Extension::TextureFloatLinear => x.texture_float_linear = true,
             Extension::ParallelShaderCompile => x.parallel_shader_compile = true,
             webgl1 => self.enable_webgl1_extension(webgl1),

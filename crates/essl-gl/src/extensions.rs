@@ -4,17 +4,19 @@
 //! essl-gl implements the WebGL2 extensions that change what the core API accepts and that
 //! wgpu can do on every adapter it runs on: `EXT_color_buffer_float` (render to 16- and
 //! 32-bit float formats and `R11F_G11F_B10F`), `EXT_color_buffer_half_float`,
-//! `EXT_float_blend` (blend into 32-bit float attachments), `OES_texture_float_linear`
-//! (filter 32-bit float textures, where the adapter can) and `KHR_parallel_shader_compile`
-//! (`COMPLETION_STATUS_KHR`, always true: compiling is synchronous).
+//! `EXT_float_blend` (32-bit float attachments blend where the adapter can, whether or not
+//! the extension was turned on, as in Chromium and as the conformance suite checks; elsewhere
+//! such a draw is `INVALID_OPERATION` and the extension is not offered),
+//! `OES_texture_float_linear` (filter 32-bit float
+//! textures, where the adapter can) and `KHR_parallel_shader_compile`
+//! (`COMPLETION_STATUS_KHR`, always true: compiling is synchronous). WebGL 1 contexts
+//! offer their own list, float textures among them (`webgl1/float.rs`).
 
 /// The WebGL extensions a context has turned on.
 #[derive(Clone, Copy, Debug, Default)]
 pub(crate) struct Extensions {
     /// `EXT_color_buffer_float`.
     pub(crate) color_buffer_float: bool,
-    /// `EXT_float_blend`.
-    pub(crate) float_blend: bool,
     /// `OES_texture_float_linear`.
     pub(crate) texture_float_linear: bool,
     /// `KHR_parallel_shader_compile`.
@@ -53,6 +55,14 @@ pub enum Extension {
     OesVertexArrayObject,
     /// `WEBGL_draw_buffers` (WebGL 1).
     WebglDrawBuffers,
+    /// `OES_texture_float` (WebGL 1).
+    OesTextureFloat,
+    /// `OES_texture_half_float` (WebGL 1).
+    OesTextureHalfFloat,
+    /// `OES_texture_half_float_linear` (WebGL 1).
+    OesTextureHalfFloatLinear,
+    /// `WEBGL_color_buffer_float` (WebGL 1).
+    WebglColorBufferFloat,
 }
 
 impl Extension {
@@ -72,6 +82,10 @@ impl Extension {
             Extension::OesStandardDerivatives => "OES_standard_derivatives",
             Extension::OesVertexArrayObject => "OES_vertex_array_object",
             Extension::WebglDrawBuffers => "WEBGL_draw_buffers",
+            Extension::OesTextureFloat => "OES_texture_float",
+            Extension::OesTextureHalfFloat => "OES_texture_half_float",
+            Extension::OesTextureHalfFloatLinear => "OES_texture_half_float_linear",
+            Extension::WebglColorBufferFloat => "WEBGL_color_buffer_float",
         }
     }
 }

@@ -125,4 +125,5 @@ pub const LOWER_OPTIONS: essl::program::LowerOptions = essl::program::LowerOptio
     flip_frag_coord_y: false,
     flip_clip_y: true,
     transform_feedback: Vec::new(),
+    integer_cube_as_array: true,
 };

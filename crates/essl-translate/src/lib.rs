@@ -156,6 +156,7 @@ impl Options {
             flip_frag_coord_y: self.flip_y,
             flip_clip_y: false,
             transform_feedback: Vec::new(),
+            integer_cube_as_array: false,
         }
     }
 }

@@ -44,6 +44,12 @@ pub struct LowerOptions {
     /// and [`ProgramLayout::captured`] says where. Names are GLSL's: a variable, an element
     /// of an array output (`v[2]`), `gl_Position` or `gl_PointSize`.
     pub transform_feedback: Vec<String>,
+    /// Declare integer cube samplers (`isamplerCube`, `usamplerCube`) as 2D array textures
+    /// of six layers, one a face in GL's order (+X, −X, +Y, −Y, +Z, −Z): the renderer binds
+    /// a 2D array view of the cube texture, and lookups load the nearest texel of the face
+    /// and level they select (`textureLod` takes its level). Off, they stay cube textures
+    /// and lookups gather from level 0, as naga can neither sample nor load an integer cube.
+    pub integer_cube_as_array: bool,
 }
 
 impl Default for LowerOptions {
@@ -53,6 +59,7 @@ impl Default for LowerOptions {
             flip_frag_coord_y: true,
             flip_clip_y: false,
             transform_feedback: Vec::new(),
+            integer_cube_as_array: false,
         }
     }
 }

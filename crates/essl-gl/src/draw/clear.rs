@@ -256,10 +256,11 @@ impl Context {
         }
         let default_fb = self.bindings.framebuffers()[0].is_none();
         let no_alpha = default_fb && !self.fb.attributes.alpha;
+        let rgb = self.rgb_draw_buffers();
         for (i, c) in request.colors.iter_mut().enumerate() {
             if let (Some(ClearValue::Float(v)), Some(Some(t))) = (c.as_mut(), target.colors.get(i))
             {
-                if no_alpha {
+                if no_alpha || (i < 32 && rgb & (1 << i) != 0) {
                     v[3] = 1.0;
                 }
                 if t.format == wgpu::TextureFormat::Rgba8Unorm

@@ -317,9 +317,9 @@ impl Context {
                         .expect("bound textures are alive");
                     let target = t.target.expect("complete textures have a target");
                     let g = t.gpu.as_mut().expect("synced above");
-                    let view = g.view(sample_view_key(
-                        target, g.anchor, c.base, c.levels, &c.format,
-                    ));
+                    let mut key = sample_view_key(target, g.anchor, c.base, c.levels, &c.format);
+                    key.dimension = plan.dim;
+                    let view = g.view(key);
                     let key = crate::texture::TextureObject::sampler_key(&sampling, shadow);
                     let sampler = self.caches.samplers.get(&gpu.device, key);
                     slot_bindings.push(SlotBinding {

@@ -233,12 +233,15 @@ impl Context {
                 _ => SampleKind::Float,
             };
             let float_linear = self.extensions.texture_float_linear;
+            let half_linear = !self.webgl1.on || self.webgl1.texture_half_float_linear;
             let texture = self.bindings.texture(unit, target).and_then(|id| {
                 let sampling = self.sampling_for(unit, id)?;
                 self.objects
                     .textures
                     .get_any(id)
-                    .and_then(|t| t.completeness(float_linear, self.webgl1.on, &sampling))
+                    .and_then(|t| {
+                        t.completeness(float_linear, half_linear, self.webgl1.on, &sampling)
+                    })
                     .map(|c| (id, c, sampling))
             });
             if let Some((id, c, sampling)) = &texture {
@@ -268,11 +271,13 @@ impl Context {
                     return self.fail(gl::INVALID_OPERATION, f, msg);
                 }
             }
-            slot_plans.push(SlotPlan {
-                texture,
-                dim: view_dimension(target),
-                kind,
-            });
+            // Integer cube samplers are 2D arrays of the six faces (`LOWER_OPTIONS`).
+            let integer = matches!(kind, SampleKind::Sint | SampleKind::Uint);
+            let dim = match view_dimension(target) {
+                wgpu::TextureViewDimension::Cube if integer => wgpu::TextureViewDimension::D2Array,
+                d => d,
+            };
+            slot_plans.push(SlotPlan { texture, dim, kind });
         }
         Some(slot_plans)
     }
@@ -299,6 +304,18 @@ impl Context {
                     format!("fragment output {location} does not match its draw buffer's type");
                 return self.fail(gl::INVALID_OPERATION, f, msg);
             }
+        }
+        // EXT_float_blend: blending into a 32-bit float draw buffer needs an adapter that
+        // blends them (the extension is then offered, and on whether turned on or not).
+        let float32 = |c: &crate::texture::InternalFormat| {
+            c.comp == crate::texture::Comp::F32 && c.packing == crate::texture::Packing::None
+        };
+        if self.state.blend
+            && !self.blends_float32()
+            && formats.colors.iter().flatten().any(float32)
+        {
+            let msg = "this adapter does not blend 32-bit float draw buffers (EXT_float_blend)";
+            return self.fail(gl::INVALID_OPERATION, f, msg.to_string());
         }
         // WebGL 2 §5.24: a draw buffer that would be written needs an output of the shader
         // (nothing is written while the rasterizer discards).

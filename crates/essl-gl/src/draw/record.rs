@@ -231,6 +231,7 @@ impl Context {
             depth_bias,
             blend,
             write_mask: self.draw_write_mask(),
+            rgb_targets: self.rgb_draw_buffers(),
             slots: groups.slot_bindings.clone(),
             targets: target
                 .colors
@@ -242,7 +243,7 @@ impl Context {
             samples: target.samples,
             alpha_to_coverage: s.sample_alpha_to_coverage,
             sample_mask: sample_mask(s, target.samples),
-            float_blend: self.extensions.float_blend,
+            float_blend: self.blends_float32(),
             capture: call.capture.as_ref().map(|c| c.spec.clone()),
             rasterize: call.rasterize,
         };
@@ -272,6 +273,20 @@ impl Context {
             stencil_reference: s.stencil.reference(),
         };
         (key, values)
+    }
+
+    /// The draw buffers whose image is RGB stored with a fourth channel, bit `i` for draw
+    /// buffer `i`: draws and clears keep their alpha at 1.
+    pub(crate) fn rgb_draw_buffers(&self) -> u32 {
+        let formats = self.draw_formats().colors;
+        formats
+            .iter()
+            .take(32)
+            .enumerate()
+            .fold(0, |bits, (i, f)| match f {
+                Some(f) if f.rgb_in_four_channels() => bits | 1 << i,
+                _ => bits,
+            })
     }
 
     /// The channels draws write: the colour mask, without alpha on a default framebuffer

@@ -55,6 +55,9 @@ pub(crate) struct PipelineKey {
     pub(crate) depth_bias: (i32, u32),
     pub(crate) blend: Option<wgpu::BlendState>,
     pub(crate) write_mask: wgpu::ColorWrites,
+    /// Draw buffers whose image is RGB (stored with a fourth channel), bit `i` for draw
+    /// buffer `i`: draws leave their alpha alone (1, as GL reads it).
+    pub(crate) rgb_targets: u32,
     pub(crate) slots: Vec<SlotBinding>,
     /// The format of each colour attachment, by draw buffer (`None`: nothing there).
     pub(crate) targets: Vec<Option<wgpu::TextureFormat>>,
@@ -512,8 +515,14 @@ impl PipelineCache {
 fn color_targets(key: &PipelineKey) -> Vec<Option<wgpu::ColorTargetState>> {
     key.targets
         .iter()
-        .map(|t| {
+        .enumerate()
+        .map(|(i, t)| {
             t.map(|format| {
+                let write_mask = if key.rgb_targets & (1 << i) != 0 {
+                    key.write_mask - wgpu::ColorWrites::ALPHA
+                } else {
+                    key.write_mask
+                };
                 let blendable = format
                     .sample_type(None, None)
                     .is_some_and(|s| matches!(s, wgpu::TextureSampleType::Float { .. }))
@@ -527,7 +536,7 @@ fn color_targets(key: &PipelineKey) -> Vec<Option<wgpu::ColorTargetState>> {
                 wgpu::ColorTargetState {
                     format,
                     blend: if blendable { key.blend } else { None },
-                    write_mask: key.write_mask,
+                    write_mask,
                 }
             })
         })

@@ -36,12 +36,28 @@ impl Context {
                 _ => {}
             }
         }
+        if matches!(
+            pname,
+            gl::IMPLEMENTATION_COLOR_READ_FORMAT | gl::IMPLEMENTATION_COLOR_READ_TYPE
+        ) && self.read_framebuffer_incomplete()
+        {
+            self.error(
+                gl::INVALID_OPERATION,
+                "getParameter",
+                "the read framebuffer is incomplete",
+            );
+            return None;
+        }
         let value = self
             .state_parameter(pname)
             .or_else(|| self.binding_parameter(pname))
             .or_else(|| self.pixel_store_parameter(pname))
             .or_else(|| self.framebuffer_parameter(pname))
             .or_else(|| self.limit_parameter(pname));
+        // WebGL 1 names half floats by OES_texture_half_float's HALF_FLOAT_OES.
+        if self.webgl1.on && matches!(value, Some(Parameter::Enum(gl::HALF_FLOAT))) {
+            return Some(Parameter::Enum(crate::webgl1::HALF_FLOAT_OES));
+        }
         if value.is_none() {
             self.error(
                 gl::INVALID_ENUM,
@@ -177,6 +193,12 @@ impl Context {
             ),
             _ => return None,
         })
+    }
+
+    /// Whether a framebuffer object is bound for reading and is not complete.
+    fn read_framebuffer_incomplete(&self) -> bool {
+        let [_, read] = self.bindings.framebuffers();
+        read.is_some_and(|id| self.framebuffer_status(id) != gl::FRAMEBUFFER_COMPLETE)
     }
 
     /// What the bound framebuffers have: bit depths and samples of the draw framebuffer,

@@ -84,6 +84,12 @@ pub(super) fn decode(f: &InternalFormat, bytes: &[u8]) -> Texel {
             }
         }
     }
+    // RGB formats are stored with a fourth channel, which draws may have written: GL's
+    // alpha of an RGB image is 1.
+    if f.rgb_in_four_channels() {
+        floats[3] = 1.0;
+        ints[3] = 1;
+    }
     // Legacy formats read as their GL components (luminance in R, G, B).
     if f.expand == Expand::Alpha {
         floats = [0.0, 0.0, 0.0, floats[3]];

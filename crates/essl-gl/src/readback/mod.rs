@@ -90,6 +90,7 @@ impl Context {
         if self.webgl1_refuses(F, &[format, ty]) {
             return;
         }
+        let ty = self.webgl1_read_type(ty);
         if self.bindings.buffer(gl::PIXEL_PACK_BUFFER).is_some() {
             return self.error(
                 gl::INVALID_OPERATION,

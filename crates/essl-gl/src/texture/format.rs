@@ -163,6 +163,11 @@ impl InternalFormat {
         }
     }
 
+    /// Whether the format is RGB stored with a fourth channel (whose value GL reads as 1).
+    pub(crate) fn rgb_in_four_channels(&self) -> bool {
+        self.channels == 3 && self.expand == Expand::None && self.packing == Packing::None
+    }
+
     /// Bytes per texel on the GPU (and in the CPU copy).
     pub(crate) fn texel_size(&self) -> usize {
         match self.packing {
@@ -267,7 +272,8 @@ impl InternalFormat {
                 }
                 match self.comp {
                     Comp::Snorm8 => false,
-                    Comp::F16 | Comp::F32 => float_ok && self.channels != 3,
+                    // WebGL 1's unsized RGB in floats renders, as in Chromium.
+                    Comp::F16 | Comp::F32 => float_ok && (self.channels != 3 || self.gl == gl::RGB),
                     Comp::Unorm8 => {
                         self.channels != 3 || matches!(self.gl, gl::RGB | gl::RGB8 | gl::RGB565)
                     }

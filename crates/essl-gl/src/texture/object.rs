@@ -1,7 +1,7 @@
 //! A texture object: its level images, its parameters, and GL ES 3.0 completeness. The GPU
 //! copy of the images is [`super::gpu`]'s business.
 
-use super::format::InternalFormat;
+use super::format::{InternalFormat, Packing};
 use super::sampling::SamplerKey;
 use crate::gl;
 use crate::sampler::SamplerParams;
@@ -39,7 +39,6 @@ impl Level {
     /// in depth formats, as Chromium initializes them (a shadow lookup of a depth texture
     /// nothing was drawn into passes).
     pub(crate) fn blank(size: [u32; 3], format: InternalFormat) -> Self {
-        use super::format::Packing;
         let texels = size[0] as usize * size[1] as usize * size[2] as usize;
         let one: &[u8] = match format.packing {
             Packing::Depth16 => &[0xFF; 2],
@@ -160,12 +159,15 @@ impl TextureObject {
     }
 
     /// GL ES 3.0's texture completeness (§3.8.13): `None` when incomplete, in which case
-    /// sampling returns (0, 0, 0, 1).
+    /// sampling returns (0, 0, 0, 1). 32-bit float formats filter linearly with
+    /// `float_linear`, 16-bit ones only with `half_linear` (always in WebGL 2; in WebGL 1
+    /// with `OES_texture_half_float_linear`).
     /// With `webgl1`, WebGL 1's rule too: a base image of a non-power-of-two size is complete
     /// only without mipmaps and with `CLAMP_TO_EDGE` wrapping (ES 2.0 § 3.8.2).
     pub(crate) fn completeness(
         &self,
         float_linear: bool,
+        half_linear: bool,
         webgl1: bool,
         p: &SamplerParams,
     ) -> Option<Complete> {
@@ -198,7 +200,8 @@ impl TextureObject {
         }
         // Depth formats filter only when compared (ES 3.0 §3.8.13).
         let compared = format.has_depth() && p.compare_mode == gl::COMPARE_REF_TO_TEXTURE;
-        let filterable = format.filterable()
+        let half = format.comp == super::format::Comp::F16 && format.packing == Packing::None;
+        let filterable = (format.filterable() && (half_linear || !half))
             || compared
             || (float_linear
                 && format.comp == super::format::Comp::F32

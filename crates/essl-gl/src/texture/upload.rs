@@ -106,11 +106,12 @@ impl Context {
         pixels: Option<ArrayView>,
     ) {
         const F: &str = "texImage2D";
-        if self.webgl1_refuses(F, &[target])
-            || self.webgl1_refuses_image(internalformat, format, ty)
-        {
+        if self.webgl1_refuses(F, &[target]) {
             return;
         }
+        let Some(ty) = self.webgl1_image_type(F, internalformat, format, ty) else {
+            return;
+        };
         if self.client_data_refused(F) {
             return;
         }
@@ -403,7 +404,7 @@ impl Context {
             return self.error(gl::INVALID_VALUE, function, "border must be 0");
         }
         let f = match internal_format(internalformat as u32) {
-            Ok(f) if f.texture_format() => f,
+            Ok(f) if f.texture_format() => self.webgl1_float_format(f, ty),
             Ok(_) => {
                 return self.error(
                     gl::INVALID_ENUM,
@@ -506,10 +507,12 @@ impl Context {
         pixels: ArrayView,
     ) {
         const F: &str = "texSubImage2D";
-        if self.webgl1_refuses(F, &[target]) || self.webgl1_refuses_image(format as i32, format, ty)
-        {
+        if self.webgl1_refuses(F, &[target]) {
             return;
         }
+        let Some(ty) = self.webgl1_image_type(F, format as i32, format, ty) else {
+            return;
+        };
         if self.client_data_refused(F) {
             return;
         }

@@ -13,6 +13,9 @@
 //! non-power-of-two size take no mipmaps or repeat wrapping.
 
 mod enums;
+mod float;
+
+pub(crate) use float::HALF_FLOAT_OES;
 
 use crate::context::Context;
 use crate::extensions::Extension;
@@ -31,17 +34,28 @@ pub(crate) struct Webgl1 {
     pub(crate) blend_minmax: bool,
     pub(crate) frag_depth: bool,
     pub(crate) shader_texture_lod: bool,
+    pub(crate) texture_float: bool,
+    pub(crate) texture_half_float: bool,
+    pub(crate) texture_half_float_linear: bool,
+    pub(crate) color_buffer_float: bool,
+    pub(crate) color_buffer_half_float: bool,
 }
 
-/// The extensions a WebGL 1 context offers.
-pub(crate) const WEBGL1_EXTENSIONS: [Extension; 8] = [
+/// The extensions a WebGL 1 context offers (`EXT_float_blend` and `OES_texture_float_linear`
+/// too, where the adapter blends and filters 32-bit floats).
+pub(crate) const WEBGL1_EXTENSIONS: [Extension; 13] = [
     Extension::AngleInstancedArrays,
+    Extension::ColorBufferHalfFloat,
     Extension::ExtBlendMinmax,
     Extension::ExtFragDepth,
     Extension::ExtShaderTextureLod,
     Extension::OesElementIndexUint,
     Extension::OesStandardDerivatives,
+    Extension::OesTextureFloat,
+    Extension::OesTextureHalfFloat,
+    Extension::OesTextureHalfFloatLinear,
     Extension::OesVertexArrayObject,
+    Extension::WebglColorBufferFloat,
     Extension::WebglDrawBuffers,
 ];
 
@@ -72,8 +86,20 @@ impl Context {
             Extension::ExtBlendMinmax => w.blend_minmax = true,
             Extension::ExtFragDepth => w.frag_depth = true,
             Extension::ExtShaderTextureLod => w.shader_texture_lod = true,
+            Extension::OesTextureFloat | Extension::WebglColorBufferFloat => {
+                w.texture_float |= e == Extension::OesTextureFloat;
+                w.color_buffer_float = true;
+            }
+            Extension::OesTextureHalfFloat | Extension::ColorBufferHalfFloat => {
+                w.texture_half_float |= e == Extension::OesTextureHalfFloat;
+                w.color_buffer_half_float = true;
+            }
+            Extension::OesTextureHalfFloatLinear => w.texture_half_float_linear = true,
+            Extension::TextureFloatLinear => self.extensions.texture_float_linear = true,
             _ => {}
         }
+        // The float attachments of WebGL 2's EXT_color_buffer_float are these extensions'.
+        self.extensions.color_buffer_float |= w.color_buffer_float || w.color_buffer_half_float;
         let w = self.webgl1;
         let shader: Vec<essl::Extension> = [
             (
@@ -102,6 +128,11 @@ impl Context {
             gl::VERTEX_ATTRIB_ARRAY_DIVISOR => w.instanced_arrays,
             gl::FRAGMENT_SHADER_DERIVATIVE_HINT => w.standard_derivatives,
             gl::MIN | gl::MAX => w.blend_minmax,
+            gl::FRAMEBUFFER_ATTACHMENT_COMPONENT_TYPE => {
+                w.color_buffer_float || w.color_buffer_half_float
+            }
+            gl::RGBA32F => w.color_buffer_float,
+            gl::RGBA16F | gl::RGB16F => w.color_buffer_half_float,
             gl::MAX_COLOR_ATTACHMENTS | gl::MAX_DRAW_BUFFERS => w.draw_buffers,
             v if (gl::COLOR_ATTACHMENT1..=gl::COLOR_ATTACHMENT15).contains(&v) => w.draw_buffers,
             v if (gl::DRAW_BUFFER0..=gl::DRAW_BUFFER15).contains(&v) => w.draw_buffers,
@@ -158,44 +189,6 @@ impl Context {
         false
     }
 
-    /// WebGL 1's `texImage2D` formats: the internal format is the format, one of the five
-    /// unsized ones, with `UNSIGNED_BYTE` or a packed 16-bit type.
-    pub(crate) fn webgl1_refuses_image(&self, internalformat: i32, format: u32, ty: u32) -> bool {
-        if !self.webgl1.on {
-            return false;
-        }
-        let formats = [
-            gl::ALPHA,
-            gl::LUMINANCE,
-            gl::LUMINANCE_ALPHA,
-            gl::RGB,
-            gl::RGBA,
-        ];
-        if !formats.contains(&format) {
-            self.error(gl::INVALID_ENUM, "texImage2D", "not a format of WebGL 1");
-            return true;
-        }
-        let types = [
-            gl::UNSIGNED_BYTE,
-            gl::UNSIGNED_SHORT_5_6_5,
-            gl::UNSIGNED_SHORT_4_4_4_4,
-            gl::UNSIGNED_SHORT_5_5_5_1,
-        ];
-        if !types.contains(&ty) {
-            self.error(gl::INVALID_ENUM, "texImage2D", "not a type of WebGL 1");
-            return true;
-        }
-        if internalformat as u32 != format {
-            self.error(
-                gl::INVALID_OPERATION,
-                "texImage2D",
-                "WebGL 1: the internal format must be the format",
-            );
-            return true;
-        }
-        false
-    }
-
     /// WebGL 1's renderbuffer formats.
     pub(crate) fn webgl1_refuses_renderbuffer_format(&self, format: u32) -> bool {
         let ok = matches!(
@@ -206,7 +199,7 @@ impl Context {
                 | gl::DEPTH_COMPONENT16
                 | gl::STENCIL_INDEX8
                 | gl::DEPTH_STENCIL
-        );
+        ) || self.webgl1_float_renderbuffer(format);
         if self.webgl1.on && !ok {
             self.error(
                 gl::INVALID_ENUM,

@@ -454,6 +454,77 @@ fn cube_maps_select_faces_and_rows_as_gl() {
 }
 
 #[test]
+fn integer_cube_maps_take_the_face_and_level_a_lookup_selects() {
+    let Some(mut ctx) = context(W, H) else { return };
+    // Left half: +X at lod -2 (level 0); right half: +X at lod 3 (past the last level, 2);
+    // top rows: -Y at level 0.
+    full_screen(
+        &mut ctx,
+        "#version 300 es
+        precision mediump float;
+        uniform highp isamplerCube u_cube;
+        in vec2 v_pos;
+        out vec4 color;
+        void main() {
+            vec3 d = v_pos.y > 0.5 ? vec3(0.0, -1.0, 0.0) : vec3(1.0, 0.0, 0.0);
+            float lod = v_pos.y > 0.5 || v_pos.x < 0.0 ? -2.0 : 3.0;
+            ivec4 c = textureLod(u_cube, d, lod);
+            color = vec4(vec2(c.rg) / 100.0, 0.0, 1.0);
+        }",
+    );
+    let tex = ctx.create_texture();
+    ctx.bind_texture(gl::TEXTURE_CUBE_MAP, Some(tex));
+    // Level 0 of face f holds (10 (f + 1), 100); levels 1 and 2 hold (100, 0). Levels are
+    // given past level 0 first, as the conformance suite's specification-order page does.
+    for level in [1, 2, 0] {
+        let side = 4 >> level;
+        for face in 0..6i8 {
+            let rg: [i8; 2] = if level == 0 {
+                [10 * (face + 1), 100]
+            } else {
+                [100, 0]
+            };
+            let texels: Vec<i8> = rg.repeat(side * side);
+            ctx.tex_image_2d(
+                gl::TEXTURE_CUBE_MAP_POSITIVE_X + face as u32,
+                level,
+                gl::RG8I as i32,
+                side as i32,
+                side as i32,
+                0,
+                gl::RG_INTEGER,
+                gl::BYTE,
+                Some(&texels),
+            );
+        }
+    }
+    ctx.tex_parameteri(
+        gl::TEXTURE_CUBE_MAP,
+        gl::TEXTURE_MIN_FILTER,
+        gl::NEAREST_MIPMAP_NEAREST as i32,
+    );
+    ctx.tex_parameteri(
+        gl::TEXTURE_CUBE_MAP,
+        gl::TEXTURE_MAG_FILTER,
+        gl::NEAREST as i32,
+    );
+    clear_black(&mut ctx);
+    ctx.draw_arrays(gl::TRIANGLES, 0, 6);
+    assert_eq!(ctx.get_error(), gl::NO_ERROR, "{:?}", ctx.error_message());
+    let near = |p: [u8; 4], want: [u8; 4]| p.iter().zip(want).all(|(&a, b)| a.abs_diff(b) <= 1);
+    let p = pixel(&mut ctx, 2, 2);
+    assert!(near(p, [26, 255, 0, 255]), "+X, level 0: {p:?}");
+    let p = pixel(&mut ctx, W - 2, 2);
+    assert!(
+        near(p, [255, 0, 0, 255]),
+        "+X, lod 3: the last level: {p:?}"
+    );
+    let p = pixel(&mut ctx, 2, H - 2);
+    assert!(near(p, [102, 255, 0, 255]), "-Y (face 3), level 0: {p:?}");
+    assert_clean(&ctx);
+}
+
+#[test]
 fn array_and_3d_textures() {
     let Some(mut ctx) = context(W, H) else { return };
     full_screen(

@@ -14,3 +14,4 @@ mod render;
 mod scenes;
 mod transform_feedback;
 mod validation;
+mod webgl1_float;

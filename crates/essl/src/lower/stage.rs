@@ -226,7 +226,8 @@ impl ModuleCx<'_> {
             let Some(st) = sampler_type_at(&g.ty, path, &m.structs) else {
                 continue;
             };
-            let (img_ty, smp_ty) = sampler_types(&mut self.module, st);
+            let (img_ty, smp_ty) =
+                sampler_types(&mut self.module, st, self.options.integer_cube_as_array);
             let name = format!("{}{}", g.name, path_suffix(path, &g.ty, &m.structs));
             let tex = self.module.global_variables.append(
                 naga::GlobalVariable {
@@ -365,13 +366,19 @@ fn path_suffix(path: &[PathStep], ty: &Type, structs: &[StructDef]) -> String {
 }
 
 /// naga's image and sampler types for a GLSL sampler type.
+/// With `cube_as_array`, an integer cube sampler's image is a 2D array
+/// ([`LowerOptions::integer_cube_as_array`](crate::program::LowerOptions)).
 pub(crate) fn sampler_types(
     m: &mut naga::Module,
     st: SamplerType,
+    cube_as_array: bool,
 ) -> (Handle<naga::Type>, Handle<naga::Type>) {
     let (dim, arrayed) = match st.dim {
         SamplerDim::D2 => (naga::ImageDimension::D2, false),
         SamplerDim::D3 => (naga::ImageDimension::D3, false),
+        SamplerDim::Cube if cube_as_array && st.kind != ScalarKind::Float => {
+            (naga::ImageDimension::D2, true)
+        }
         SamplerDim::Cube => (naga::ImageDimension::Cube, false),
         SamplerDim::D2Array => (naga::ImageDimension::D2, true),
     };

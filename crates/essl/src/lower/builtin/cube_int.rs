@@ -5,6 +5,10 @@
 //! works out which of them is nearest the point, as the hardware would for a 2D texture,
 //! and keeps that one. Level 0; a point on a face's edge may take its neighbour on the same
 //! face where GL would take the adjacent face's.
+//!
+//! With `LowerOptions::integer_cube_as_array` (essl-gl's) the cube is declared as a 2D array
+//! of its faces instead, which naga can load from at any level: the lookup loads the texel
+//! under the point on the face and level it selects ([`FnCx::integer_cube_load`]).
 
 use naga::{BinaryOperator as Op, Expression, Handle, Literal, MathFunction as Mf};
 
@@ -70,6 +74,91 @@ impl FnCx<'_, '_> {
             channels.push(self.select(hi_y, high_row, low_row, span));
         }
         self.compose(&Type::Vector(kind, 4), channels, span)
+    }
+
+    /// The texel of the integer cube `image`, declared as a 2D array of its six faces
+    /// ([`LowerOptions::integer_cube_as_array`](crate::program::LowerOptions)), nearest the
+    /// direction `dir`: the face the major axis selects, at the level `lod` selects
+    /// (`NEAREST_MIPMAP_NEAREST`'s `ceil(lod + 0.5) - 1`, clamped to the view's levels;
+    /// level 0 without one), the texel under the point clamped to the face's edge.
+    pub(super) fn integer_cube_load(
+        &mut self,
+        image: Handle<Expression>,
+        dir: Handle<Expression>,
+        lod: Option<Handle<Expression>>,
+        span: Span,
+    ) -> Handle<Expression> {
+        let uv = self.cube_face_uv(dir, span);
+        let face = self.cube_face_index(dir, span);
+        let zero = self.lit(Literal::I32(0));
+        let level = match lod {
+            Some(lod) => {
+                let half = self.lit(Literal::F32(0.5));
+                let up = self.binop(Op::Add, lod, half, span);
+                let ceil = self.math(Mf::Ceil, &[up], span);
+                let one = self.lit(Literal::F32(1.0));
+                let d = self.binop(Op::Subtract, ceil, one, span);
+                let d = self.cast(d, naga::ScalarKind::Sint, span);
+                let levels = self.add(
+                    Expression::ImageQuery {
+                        image,
+                        query: naga::ImageQuery::NumLevels,
+                    },
+                    span,
+                );
+                let levels = self.cast(levels, naga::ScalarKind::Sint, span);
+                let one = self.lit(Literal::I32(1));
+                let last = self.binop(Op::Subtract, levels, one, span);
+                self.math(Mf::Clamp, &[d, zero, last], span)
+            }
+            None => zero,
+        };
+        let size = self.add(
+            Expression::ImageQuery {
+                image,
+                query: naga::ImageQuery::Size { level: Some(level) },
+            },
+            span,
+        );
+        let size = self.cast(size, naga::ScalarKind::Sint, span);
+        let fsize = self.cast(size, naga::ScalarKind::Float, span);
+        let scaled = self.binop(Op::Multiply, uv, fsize, span);
+        let fl = self.math(Mf::Floor, &[scaled], span);
+        let texel = self.cast(fl, naga::ScalarKind::Sint, span);
+        let zero2 = self.splat(zero, 2, span);
+        let one = self.lit(Literal::I32(1));
+        let one2 = self.splat(one, 2, span);
+        let max = self.binop(Op::Subtract, size, one2, span);
+        let texel = self.math(Mf::Clamp, &[texel, zero2, max], span);
+        self.add(
+            Expression::ImageLoad {
+                image,
+                coordinate: texel,
+                array_index: Some(face),
+                sample: None,
+                level: Some(level),
+            },
+            span,
+        )
+    }
+
+    /// The face a cube direction selects, as GL numbers the faces from 0: +X, −X, +Y, −Y,
+    /// +Z, −Z (the major axis as [`Self::cube_face_uv`] picks it).
+    fn cube_face_index(&mut self, dir: Handle<Expression>, span: Span) -> Handle<Expression> {
+        let [x, y, z] = [0, 1, 2].map(|k| self.access_index(dir, k, span));
+        let [ax, ay, az] = [x, y, z].map(|c| self.math(Mf::Abs, &[c], span));
+        let x_ge_y = self.binop(Op::GreaterEqual, ax, ay, span);
+        let x_ge_z = self.binop(Op::GreaterEqual, ax, az, span);
+        let x_major = self.binop(Op::LogicalAnd, x_ge_y, x_ge_z, span);
+        let y_major = self.binop(Op::GreaterEqual, ay, az, span);
+        let zero = self.lit(Literal::F32(0.0));
+        let [x_pos, y_pos, z_pos] = [x, y, z].map(|c| self.binop(Op::Greater, c, zero, span));
+        let [f0, f1, f2, f3, f4, f5] = [0, 1, 2, 3, 4, 5].map(|i| self.lit(Literal::I32(i)));
+        let fx = self.select(x_pos, f0, f1, span);
+        let fy = self.select(y_pos, f2, f3, span);
+        let fz = self.select(z_pos, f4, f5, span);
+        let fyz = self.select(y_major, fy, fz, span);
+        self.select(x_major, fx, fyz, span)
     }
 
     /// `accept` where `condition` holds, else `reject`.

@@ -87,6 +87,9 @@ impl FnCx<'_, '_> {
         let extra = lookup_args(&vals, lod, grad, op.has_offset());
         let addr = self.texel_address(st, is_projective(op), vals[0], &args[1].ty, span);
         if st.kind != ScalarKind::Float && st.dim == SamplerDim::Cube {
+            if self.cx.options.integer_cube_as_array {
+                return Ok(self.integer_cube_load(image, addr.coords, extra.level, span));
+            }
             return Ok(self.integer_cube(image, sampler, st.kind, addr.coords, span));
         }
         if st.kind != ScalarKind::Float {

@@ -162,7 +162,8 @@ pub(crate) fn lower_function(cx: &mut ModuleCx, id: FuncId) -> Result<naga::Func
     for (pi, p) in hir_fn.params.iter().enumerate() {
         match &p.ty {
             Type::Sampler(st) => {
-                let (img, smp) = super::sampler_types(&mut cx.module, *st);
+                let (img, smp) =
+                    super::sampler_types(&mut cx.module, *st, cx.options.integer_cube_as_array);
                 let i = f.arguments.len() as u32;
                 f.arguments.push(naga::FunctionArgument {
                     name: Some(p.name.as_str().to_owned()),
@@ -234,7 +235,7 @@ pub(crate) fn lower_function(cx: &mut ModuleCx, id: FuncId) -> Result<naga::Func
     }
     let mut param_samplers = sampler::ParamSamplers::default();
     for (param, path, st) in sampler_args {
-        let (img, smp) = super::sampler_types(&mut cx.module, st);
+        let (img, smp) = super::sampler_types(&mut cx.module, st, cx.options.integer_cube_as_array);
         let i = f.arguments.len() as u32;
         let name = format!("{}_{}", hir_fn.params[param].name, i);
         f.arguments.push(naga::FunctionArgument {
