@@ -26,7 +26,8 @@ impl FnCx<'_, '_> {
         dir: Handle<Expression>,
         span: Span,
     ) -> Handle<Expression> {
-        let uv = self.cube_face_uv(dir, span);
+        let axes = self.cube_axes(dir, span);
+        let uv = self.cube_face_uv(&axes, span);
         let level = self.lit(Literal::I32(0));
         let size = self.add(
             Expression::ImageQuery {
@@ -88,8 +89,9 @@ impl FnCx<'_, '_> {
         lod: Option<Handle<Expression>>,
         span: Span,
     ) -> Handle<Expression> {
-        let uv = self.cube_face_uv(dir, span);
-        let face = self.cube_face_index(dir, span);
+        let axes = self.cube_axes(dir, span);
+        let uv = self.cube_face_uv(&axes, span);
+        let face = self.cube_face_index(&axes, span);
         let zero = self.lit(Literal::I32(0));
         let level = match lod {
             Some(lod) => {
@@ -142,17 +144,32 @@ impl FnCx<'_, '_> {
         )
     }
 
-    /// The face a cube direction selects, as GL numbers the faces from 0: +X, −X, +Y, −Y,
-    /// +Z, −Z (the major axis as [`Self::cube_face_uv`] picks it).
-    fn cube_face_index(&mut self, dir: Handle<Expression>, span: Span) -> Handle<Expression> {
-        let [x, y, z] = [0, 1, 2].map(|k| self.access_index(dir, k, span));
-        let [ax, ay, az] = [x, y, z].map(|c| self.math(Mf::Abs, &[c], span));
-        let x_ge_y = self.binop(Op::GreaterEqual, ax, ay, span);
-        let x_ge_z = self.binop(Op::GreaterEqual, ax, az, span);
+    /// The components of a cube direction, their magnitudes and signs, and which is the major
+    /// axis (GLSL ES 3.00 §3.8.10: x where |x| is the largest, then y, then z), shared by
+    /// [`Self::cube_face_index`] and [`Self::cube_face_uv`].
+    fn cube_axes(&mut self, dir: Handle<Expression>, span: Span) -> CubeAxes {
+        let c = [0, 1, 2].map(|k| self.access_index(dir, k, span));
+        let a = c.map(|x| self.math(Mf::Abs, &[x], span));
+        let x_ge_y = self.binop(Op::GreaterEqual, a[0], a[1], span);
+        let x_ge_z = self.binop(Op::GreaterEqual, a[0], a[2], span);
         let x_major = self.binop(Op::LogicalAnd, x_ge_y, x_ge_z, span);
-        let y_major = self.binop(Op::GreaterEqual, ay, az, span);
+        let y_major = self.binop(Op::GreaterEqual, a[1], a[2], span);
         let zero = self.lit(Literal::F32(0.0));
-        let [x_pos, y_pos, z_pos] = [x, y, z].map(|c| self.binop(Op::Greater, c, zero, span));
+        let pos = c.map(|x| self.binop(Op::Greater, x, zero, span));
+        CubeAxes {
+            c,
+            a,
+            pos,
+            x_major,
+            y_major,
+        }
+    }
+
+    /// The face a cube direction selects, as GL numbers the faces from 0: +X, −X, +Y, −Y,
+    /// +Z, −Z.
+    fn cube_face_index(&mut self, axes: &CubeAxes, span: Span) -> Handle<Expression> {
+        let [x_pos, y_pos, z_pos] = axes.pos;
+        let (x_major, y_major) = (axes.x_major, axes.y_major);
         let [f0, f1, f2, f3, f4, f5] = [0, 1, 2, 3, 4, 5].map(|i| self.lit(Literal::I32(i)));
         let fx = self.select(x_pos, f0, f1, span);
         let fy = self.select(y_pos, f2, f3, span);
@@ -181,15 +198,11 @@ impl FnCx<'_, '_> {
 
     /// The 0..1 coordinates on the face a cube direction selects (GLSL ES 3.00 §3.8.10's
     /// table of major axes: `sc`, `tc` over `|ma|`).
-    fn cube_face_uv(&mut self, dir: Handle<Expression>, span: Span) -> Handle<Expression> {
-        let [x, y, z] = [0, 1, 2].map(|k| self.access_index(dir, k, span));
-        let [ax, ay, az] = [x, y, z].map(|c| self.math(Mf::Abs, &[c], span));
-        let x_ge_y = self.binop(Op::GreaterEqual, ax, ay, span);
-        let x_ge_z = self.binop(Op::GreaterEqual, ax, az, span);
-        let x_major = self.binop(Op::LogicalAnd, x_ge_y, x_ge_z, span);
-        let y_major = self.binop(Op::GreaterEqual, ay, az, span);
-        let zero = self.lit(Literal::F32(0.0));
-        let [x_pos, y_pos, z_pos] = [x, y, z].map(|c| self.binop(Op::Greater, c, zero, span));
+    fn cube_face_uv(&mut self, axes: &CubeAxes, span: Span) -> Handle<Expression> {
+        let [x, y, z] = axes.c;
+        let [ax, ay, az] = axes.a;
+        let [x_pos, y_pos, z_pos] = axes.pos;
+        let (x_major, y_major) = (axes.x_major, axes.y_major);
         let [nx, ny, nz] = [x, y, z].map(|c| {
             self.add(
                 Expression::Unary {
@@ -219,4 +232,14 @@ impl FnCx<'_, '_> {
         let half2 = self.splat(half, 2, span);
         self.binop(Op::Multiply, shifted, half2, span)
     }
+}
+
+/// A cube direction's components (`c`), their magnitudes (`a`), whether each is positive
+/// (`pos`), and which is the major axis.
+struct CubeAxes {
+    c: [Handle<Expression>; 3],
+    a: [Handle<Expression>; 3],
+    pos: [Handle<Expression>; 3],
+    x_major: Handle<Expression>,
+    y_major: Handle<Expression>,
 }
