@@ -179,6 +179,18 @@ impl Analysis {
     }
 
     pub(super) fn store(&mut self, module: &naga::Module, place: &Place, v: &Val) {
+        self.store_within(module, place, v, None);
+    }
+
+    /// [`Analysis::store`], the variable then met with `bound` (a series' sum, which widening
+    /// would otherwise send to infinity).
+    pub(super) fn store_within(
+        &mut self,
+        module: &naga::Module,
+        place: &Place,
+        v: &Val,
+        bound: Option<&[crate::interval::Interval]>,
+    ) {
         if self.calls.walking() {
             return; // a walk for one call changes no cell
         }
@@ -194,7 +206,16 @@ impl Analysis {
             }
         }
         let mut cell = self.cell(module, place.root);
-        if write(&mut cell, &place.path, v, self.widening) {
+        let changed = match bound {
+            Some(b) => {
+                let old = cell.clone();
+                write(&mut cell, &place.path, v, self.widening);
+                cell = super::series::clamp(&cell, b);
+                cell != old
+            }
+            None => write(&mut cell, &place.path, v, self.widening),
+        };
+        if changed {
             self.changed = true;
             self.stale |= self.reads.borrow().roots.contains(&place.root);
         }

@@ -43,6 +43,7 @@ mod math;
 mod memory;
 mod relational;
 mod same;
+mod series;
 mod statements;
 
 use rustc_hash::FxHashMap as HashMap;
@@ -127,6 +128,8 @@ pub struct FnFacts {
     /// For each load, the version of the variable it reads (0: not followed); two loads with
     /// the same version read the same value.
     pub load_version: Vec<u32>,
+    /// The accumulators of geometric series, by local index ([`series`]).
+    series: HashMap<usize, series::Series>,
 }
 
 /// The analysis of a whole module.
@@ -163,6 +166,8 @@ pub struct Analysis {
     walking_entry: bool,
     /// The rounds the walk took to its fixpoint.
     rounds: usize,
+    /// The ratio each series' bound last used, by function and accumulator ([`series`]).
+    series_ratio: HashMap<(usize, usize), Option<crate::interval::Interval>>,
 }
 
 /// What user functions read in one round of the walk.
@@ -253,12 +258,14 @@ impl Analysis {
             stale: false,
             walking_entry: false,
             rounds: 0,
+            series_ratio: HashMap::default(),
         };
         for id in 0..count {
             let f = function(module, id);
             let (single, stores) = single_stores(f);
             a.functions[id].single_store = single;
             a.functions[id].stores = stores;
+            a.functions[id].series = series::find(f);
             a.functions[id].entry = id >= module.functions.len();
         }
         // Private globals start with their initialiser.

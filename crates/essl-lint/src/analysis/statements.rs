@@ -9,6 +9,7 @@ use naga::{Block, Expression as E, Function, Handle, Statement};
 
 use super::flow;
 use super::memory::pointee;
+use super::series;
 use super::{function, function_info, Analysis, Place, Root, Site};
 use crate::value::Val;
 
@@ -106,7 +107,12 @@ impl Analysis {
                 Statement::Store { pointer, value } => {
                     if let Some(p) = self.functions[s.id].places[pointer.index()].clone() {
                         let v = self.functions[s.id].values[value.index()].clone();
-                        self.store(s.module, &p, &v);
+                        let bound = self.series_bound(s, &p, *value);
+                        let v = match &bound {
+                            Some(b) => series::clamp(&v, b),
+                            None => v,
+                        };
+                        self.store_within(s.module, &p, &v, bound.as_deref());
                         self.assign(s.module, &p, &v);
                     }
                 }

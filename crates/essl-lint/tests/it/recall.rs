@@ -221,6 +221,41 @@ const HAZARDS: &[Hazard] = &[
         "  int d = int(pow(2.0, float(int(v_x * 9.0) % 4 - 3)));\n  r = float(int(v_x * 1000.0) / d);",
         W,
     ),
+    // A geometric series whose weights do not shrink (`w *= 1.0`): the sum passes 1.
+    (
+        "domain-sqrt",
+        "texture",
+        "  float s = 0.0;\n  float w = 0.5;\n  for (int i = 0; i < 8; i++) { s += clamp(t.r, 0.0, 1.0) * w; w *= 1.0; }\n  r = sqrt(1.0 - s);",
+        W,
+    ),
+    // The same with a first weight of 0.6: the sum reaches 1.2.
+    (
+        "domain-sqrt",
+        "texture",
+        "  float s = 0.0;\n  float w = 0.6;\n  for (int i = 0; i < 8; i++) { s += clamp(t.r, 0.0, 1.0) * w; w *= 0.5; }\n  r = sqrt(1.0 - s);",
+        W,
+    ),
+    // A `continue` that adds a term and skips the weight's update.
+    (
+        "domain-sqrt",
+        "texture",
+        "  float s = 0.0;\n  float w = 0.5;\n  for (int i = 0; i < 8; i++) { s += clamp(t.r, 0.0, 1.0) * w; if (v_x > 0.5) continue; w *= 0.5; }\n  r = sqrt(1.0 - s);",
+        W,
+    ),
+    // The weight shrinks only under an `if`.
+    (
+        "domain-sqrt",
+        "texture",
+        "  float s = 0.0;\n  float w = 0.5;\n  for (int i = 0; i < 8; i++) { s += clamp(t.r, 0.0, 1.0) * w; if (v_x > 0.5) { w *= 0.5; } }\n  r = sqrt(1.0 - s);",
+        W,
+    ),
+    // A weight that grows (`w *= 2.0`): no bound.
+    (
+        "domain-sqrt",
+        "texture",
+        "  float s = 0.0;\n  float w = 0.25;\n  for (int i = 0; i < 8; i++) { s += clamp(t.r, 0.0, 1.0) * w; w *= 2.0; }\n  r = sqrt(1.0 - s);",
+        W,
+    ),
 ];
 
 /// The guarded twins: (rule, body) with no finding of the rule, notes included.
@@ -363,6 +398,20 @@ const GUARDED: &[(&str, &str)] = &[
     (
         "pow-negative-base",
         "  float b = v_x * 3.0 - 1.0;\n  if (b > 0.0) { if (b < u_a) { r = pow(1.0 - b / u_a, 2.0); } }",
+    ),
+    // Fractal sums: terms in [0, 1] weighted 1/2, 1/4, … stay below 1 (fbm, with the update
+    // in the continuing block, and the radical inverse of Hammersley points).
+    (
+        "domain-sqrt",
+        "  float s = 0.0;\n  float w = 0.5;\n  for (int i = 0; i < 8; i++) { s += w * clamp(t.r, 0.0, 1.0); w *= 0.5; }\n  r = sqrt(1.0 - s);",
+    ),
+    (
+        "domain-sqrt",
+        "  float s = 0.0;\n  float w = 0.25;\n  for (int i = 0; i < 8; i++, w *= 0.5) { s += clamp(t.r, 0.0, 1.0) * w; if (v_x > 0.5) continue; }\n  r = sqrt(0.5 - s);",
+    ),
+    (
+        "domain-sqrt",
+        "  int k = int(v_x * 1000.0);\n  float base = 2.0;\n  float value = 0.0;\n  float inv = 1.0 / base;\n  float w = inv;\n  for (int x = 0; x < 100; x++) {\n    if (k <= 0) break;\n    float b = mod(float(k), base);\n    value += b * w;\n    w *= inv;\n    k = int(float(k) * inv);\n  }\n  r = sqrt(1.0 - value * value);",
     ),
 ];
 
