@@ -166,6 +166,9 @@ impl Walk {
 
 /// The accumulators of geometric series in function `f`, by local index.
 pub(super) fn find(f: &Function) -> HashMap<usize, Series> {
+    if !has_loop(&f.body) {
+        return HashMap::default();
+    }
     let mut w = Walk::default();
     w.block(f, &f.body, None);
     let mut by_local: HashMap<usize, Vec<&Store>> = HashMap::default();
@@ -252,6 +255,17 @@ pub(super) fn find(f: &Function) -> HashMap<usize, Series> {
         );
     }
     out
+}
+
+/// Whether a block holds a loop.
+fn has_loop(b: &Block) -> bool {
+    b.iter().any(|s| match s {
+        Statement::Loop { .. } => true,
+        Statement::Block(b) => has_loop(b),
+        Statement::If { accept, reject, .. } => has_loop(accept) || has_loop(reject),
+        Statement::Switch { cases, .. } => cases.iter().any(|c| has_loop(&c.body)),
+        _ => false,
+    })
 }
 
 /// The weight local and the other factor of a term `a * w`, `w * a` or `w`.
