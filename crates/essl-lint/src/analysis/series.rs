@@ -198,19 +198,7 @@ pub(super) fn find(f: &Function) -> HashMap<usize, Series> {
         let Some((init, add)) = init_and_loop(acc) else {
             continue;
         };
-        let E::Binary {
-            op: Op::Add,
-            left,
-            right,
-        } = f.expressions[add.value]
-        else {
-            continue;
-        };
-        let term = if loads(f, left, acc) {
-            right
-        } else if loads(f, right, acc) {
-            left
-        } else {
+        let Some(term) = other_operand(f, add.value, Op::Add, acc) else {
             continue;
         };
         let Some((weight, factor)) = weight_of(f, term, acc) else {
@@ -219,19 +207,7 @@ pub(super) fn find(f: &Function) -> HashMap<usize, Series> {
         let Some((weight_init, update)) = init_and_loop(weight) else {
             continue;
         };
-        let E::Binary {
-            op: Op::Multiply,
-            left,
-            right,
-        } = f.expressions[update.value]
-        else {
-            continue;
-        };
-        let ratio = if loads(f, left, weight) {
-            right
-        } else if loads(f, right, weight) {
-            left
-        } else {
+        let Some(ratio) = other_operand(f, update.value, Op::Multiply, weight) else {
             continue;
         };
         let lp = update.innermost;
@@ -255,6 +231,22 @@ pub(super) fn find(f: &Function) -> HashMap<usize, Series> {
         );
     }
     out
+}
+
+/// The other operand of `h`, a binary `op` one of whose operands loads local `l`.
+fn other_operand(f: &Function, h: Handle<E>, op: Op, l: usize) -> Option<Handle<E>> {
+    match f.expressions[h] {
+        E::Binary { op: o, left, right } if o == op => {
+            if loads(f, left, l) {
+                Some(right)
+            } else if loads(f, right, l) {
+                Some(left)
+            } else {
+                None
+            }
+        }
+        _ => None,
+    }
 }
 
 /// Whether a block holds a loop.
