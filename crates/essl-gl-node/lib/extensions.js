@@ -5,6 +5,12 @@ import { loseContext, restoreContext } from './context.js';
 import { VERSION } from './objects.js';
 import { METHODS_2 } from './generated.js';
 
+/** ASTC's block sizes, in the order of their enums. */
+const ASTC_SIZES = [
+  [4, 4], [5, 4], [5, 5], [6, 5], [6, 6], [8, 5], [8, 6],
+  [8, 8], [10, 5], [10, 6], [10, 8], [10, 10], [12, 10], [12, 12],
+];
+
 /** Constants of the extensions that have any. */
 const CONSTANTS = {
   EXT_color_buffer_half_float: {
@@ -19,6 +25,37 @@ const CONSTANTS = {
     UNSIGNED_NORMALIZED_EXT: 0x8c17,
   },
   OES_texture_half_float: { HALF_FLOAT_OES: 0x8d61 },
+  WEBGL_compressed_texture_s3tc: {
+    COMPRESSED_RGB_S3TC_DXT1_EXT: 0x83f0,
+    COMPRESSED_RGBA_S3TC_DXT1_EXT: 0x83f1,
+    COMPRESSED_RGBA_S3TC_DXT3_EXT: 0x83f2,
+    COMPRESSED_RGBA_S3TC_DXT5_EXT: 0x83f3,
+  },
+  WEBGL_compressed_texture_s3tc_srgb: {
+    COMPRESSED_SRGB_S3TC_DXT1_EXT: 0x8c4c,
+    COMPRESSED_SRGB_ALPHA_S3TC_DXT1_EXT: 0x8c4d,
+    COMPRESSED_SRGB_ALPHA_S3TC_DXT3_EXT: 0x8c4e,
+    COMPRESSED_SRGB_ALPHA_S3TC_DXT5_EXT: 0x8c4f,
+  },
+  WEBGL_compressed_texture_etc: {
+    COMPRESSED_R11_EAC: 0x9270,
+    COMPRESSED_SIGNED_R11_EAC: 0x9271,
+    COMPRESSED_RG11_EAC: 0x9272,
+    COMPRESSED_SIGNED_RG11_EAC: 0x9273,
+    COMPRESSED_RGB8_ETC2: 0x9274,
+    COMPRESSED_SRGB8_ETC2: 0x9275,
+    COMPRESSED_RGB8_PUNCHTHROUGH_ALPHA1_ETC2: 0x9276,
+    COMPRESSED_SRGB8_PUNCHTHROUGH_ALPHA1_ETC2: 0x9277,
+    COMPRESSED_RGBA8_ETC2_EAC: 0x9278,
+    COMPRESSED_SRGB8_ALPHA8_ETC2_EAC: 0x9279,
+  },
+  WEBGL_compressed_texture_etc1: { COMPRESSED_RGB_ETC1_WEBGL: 0x8d64 },
+  WEBGL_compressed_texture_astc: Object.fromEntries(
+    ASTC_SIZES.flatMap(([w, h], i) => [
+      [`COMPRESSED_RGBA_ASTC_${w}x${h}_KHR`, 0x93b0 + i],
+      [`COMPRESSED_SRGB8_ALPHA8_ASTC_${w}x${h}_KHR`, 0x93d0 + i],
+    ]),
+  ),
   KHR_parallel_shader_compile: { COMPLETION_STATUS_KHR: 0x91b1 },
   OES_vertex_array_object: { VERTEX_ARRAY_BINDING_OES: 0x85b5 },
   ANGLE_instanced_arrays: { VERTEX_ATTRIB_ARRAY_DIVISOR_ANGLE: 0x88fe },
@@ -89,6 +126,10 @@ export function extensionObject(ctx, native, name) {
   const enabled = native.getExtension(name);
   if (enabled === null) return null;
   const ext = new (classOf(enabled))();
+  if (enabled === 'WEBGL_compressed_texture_astc') {
+    // essl-gl decodes ASTC's LDR profile.
+    Object.defineProperty(ext, 'getSupportedProfiles', { value: () => ['ldr'], enumerable: true });
+  }
   for (const [own, core] of Object.entries(METHODS[enabled] ?? {})) {
     const f = METHODS_2[core];
     Object.defineProperty(ext, own, { value: (...args) => f.apply(ctx, args), enumerable: true });

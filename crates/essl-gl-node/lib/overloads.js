@@ -356,13 +356,28 @@ function compressed(name, count, args) {
   const data = args[2 + count];
   const n = this[NATIVE];
   if (isView(data)) {
-    if (n !== null) n.compressedTexImage(name, target, level, numbers, data);
+    // WebGL 2: (…, srcData, srcOffset, srcLengthOverride), both in elements of srcData.
+    let view = data;
+    if (this[VERSION] === 2 && args.length > 3 + count) {
+      const elem = data.BYTES_PER_ELEMENT ?? 1;
+      const length = data.byteLength / elem;
+      const off = u32(args[3 + count]);
+      const over = args.length > 4 + count ? u32(args[4 + count]) : 0;
+      const len = over === 0 ? length - off : over;
+      if (off > length || off + len > length) {
+        if (n !== null) n.synthesizeError(INVALID_VALUE, name, 'srcOffset + srcLengthOverride past the end of srcData');
+        return;
+      }
+      view = new Uint8Array(data.buffer, data.byteOffset + off * elem, len * elem);
+    }
+    if (n !== null) n.compressedTexImage(name, target, level, numbers, view);
     return;
   }
   if (this[VERSION] !== 2) {
     throw typeError(name, `parameter ${3 + count} is not of type 'ArrayBufferView'.`);
   }
   // (…, imageSize, offset): from the bound PIXEL_UNPACK_BUFFER.
-  numbers.push(i64(data));
+  if (args.length < 4 + count) throw argc(name, 4 + count, args.length);
+  numbers.push(i64(data), i64(args[3 + count]));
   if (n !== null) n.compressedTexImage(name, target, level, numbers, null);
 }

@@ -331,6 +331,7 @@ impl Context {
             if float_linear {
                 v.push(Extension::TextureFloatLinear);
             }
+            v.extend(crate::extensions::COMPRESSED_EXTENSIONS);
             return v;
         }
         let mut v = vec![Extension::ColorBufferFloat, Extension::ColorBufferHalfFloat];
@@ -341,6 +342,7 @@ impl Context {
             v.push(Extension::TextureFloatLinear);
         }
         v.push(Extension::ParallelShaderCompile);
+        v.extend(crate::extensions::COMPRESSED_EXTENSIONS);
         v
     }
 
@@ -358,6 +360,9 @@ impl Context {
             .supported()
             .into_iter()
             .find(|e| e.name().eq_ignore_ascii_case(name))?;
+        if self.extensions.compressed.insert(e) {
+            return Some(e);
+        }
         if self.webgl1.on {
             self.enable_webgl1_extension(e);
             return Some(e);

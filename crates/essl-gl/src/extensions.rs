@@ -9,8 +9,10 @@
 //! such a draw is `INVALID_OPERATION` and the extension is not offered),
 //! `OES_texture_float_linear` (filter 32-bit float
 //! textures, where the adapter can) and `KHR_parallel_shader_compile`
-//! (`COMPLETION_STATUS_KHR`, always true: compiling is synchronous). WebGL 1 contexts
-//! offer their own list, float textures among them (`webgl1/float.rs`).
+//! (`COMPLETION_STATUS_KHR`, always true: compiling is synchronous). Both contexts offer the
+//! compressed-texture extensions (S3TC, S3TC sRGB, ETC, ETC1, ASTC LDR: decoded on upload,
+//! `texture/compressed.rs`). WebGL 1 contexts offer their own list besides, float textures
+//! among them (`webgl1/float.rs`).
 
 /// The WebGL extensions a context has turned on.
 #[derive(Clone, Copy, Debug, Default)]
@@ -21,7 +23,46 @@ pub(crate) struct Extensions {
     pub(crate) texture_float_linear: bool,
     /// `KHR_parallel_shader_compile`.
     pub(crate) parallel_shader_compile: bool,
+    /// The compressed-texture extensions turned on.
+    pub(crate) compressed: CompressedSet,
 }
+
+/// A set of the compressed-texture extensions.
+#[derive(Clone, Copy, Debug, Default)]
+pub(crate) struct CompressedSet(u8);
+
+impl CompressedSet {
+    fn bit(e: &Extension) -> u8 {
+        match e {
+            Extension::CompressedS3tc => 1,
+            Extension::CompressedS3tcSrgb => 2,
+            Extension::CompressedEtc => 4,
+            Extension::CompressedEtc1 => 8,
+            Extension::CompressedAstc => 16,
+            _ => 0,
+        }
+    }
+
+    /// Whether `e` is on.
+    pub(crate) fn contains(&self, e: &Extension) -> bool {
+        self.0 & Self::bit(e) != 0
+    }
+
+    /// Turns `e` on; false when it is no compressed-texture extension.
+    pub(crate) fn insert(&mut self, e: Extension) -> bool {
+        self.0 |= Self::bit(&e);
+        Self::bit(&e) != 0
+    }
+}
+
+/// The compressed-texture extensions, offered in both contexts.
+pub(crate) const COMPRESSED_EXTENSIONS: [Extension; 5] = [
+    Extension::CompressedS3tc,
+    Extension::CompressedS3tcSrgb,
+    Extension::CompressedEtc,
+    Extension::CompressedEtc1,
+    Extension::CompressedAstc,
+];
 
 /// An extension [`Context::get_extension`](crate::Context::get_extension) turned on. WebGL
 /// returns an object holding the extension's constants; essl-gl's constants are in
@@ -63,6 +104,16 @@ pub enum Extension {
     OesTextureHalfFloatLinear,
     /// `WEBGL_color_buffer_float` (WebGL 1).
     WebglColorBufferFloat,
+    /// `WEBGL_compressed_texture_s3tc`.
+    CompressedS3tc,
+    /// `WEBGL_compressed_texture_s3tc_srgb`.
+    CompressedS3tcSrgb,
+    /// `WEBGL_compressed_texture_etc`.
+    CompressedEtc,
+    /// `WEBGL_compressed_texture_etc1`.
+    CompressedEtc1,
+    /// `WEBGL_compressed_texture_astc` (the LDR profile).
+    CompressedAstc,
 }
 
 impl Extension {
@@ -86,6 +137,11 @@ impl Extension {
             Extension::OesTextureHalfFloat => "OES_texture_half_float",
             Extension::OesTextureHalfFloatLinear => "OES_texture_half_float_linear",
             Extension::WebglColorBufferFloat => "WEBGL_color_buffer_float",
+            Extension::CompressedS3tc => "WEBGL_compressed_texture_s3tc",
+            Extension::CompressedS3tcSrgb => "WEBGL_compressed_texture_s3tc_srgb",
+            Extension::CompressedEtc => "WEBGL_compressed_texture_etc",
+            Extension::CompressedEtc1 => "WEBGL_compressed_texture_etc1",
+            Extension::CompressedAstc => "WEBGL_compressed_texture_astc",
         }
     }
 }

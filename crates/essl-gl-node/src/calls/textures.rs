@@ -341,7 +341,7 @@ impl NativeContext {
         Ok(())
     }
 
-    /// The compressed-texture calls (essl-gl offers no compressed format: `INVALID_ENUM`);
+    /// The compressed-texture calls (the S3TC and ETC formats, once their extension is on);
     /// `numbers` are the arguments between `level` and the data, `data` the bytes if any.
     #[napi]
     pub fn compressed_tex_image(
@@ -352,10 +352,18 @@ impl NativeContext {
         numbers: Vec<f64>,
         data: Option<View>,
     ) -> napi::Result<()> {
-        let bytes = data.as_ref().map_or(&[][..], View::bytes);
         let n = |k: usize| numbers.get(k).copied().unwrap_or(0.0);
         let (i, u) = (|k| n(k) as i32, |k| n(k) as u32);
         let c = self.gl()?;
+        let Some(data) = data else {
+            // (…, imageSize, offset): the bound PIXEL_UNPACK_BUFFER's bytes.
+            let ints: Vec<i64> = numbers.iter().map(|&x| x as i64).collect();
+            if let [head @ .., size, offset] = &ints[..] {
+                c.compressed_tex_from_buffer(&name, target, level, head, *size, *offset);
+            }
+            return Ok(());
+        };
+        let bytes = data.bytes();
         match name.as_str() {
             "compressedTexImage2D" => {
                 c.compressed_tex_image_2d(target, level, u(0), i(1), i(2), i(3), bytes)

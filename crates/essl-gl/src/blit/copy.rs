@@ -35,7 +35,11 @@ fn copyable(src: &InternalFormat, dst: &InternalFormat) -> bool {
         crate::texture::SampleKind::Uint => ClearKind::Uint,
         _ => ClearKind::Float,
     };
-    if kind(src) != kind(dst) || dst.has_depth() || dst.srgb != src.srgb {
+    if kind(src) != kind(dst)
+        || dst.has_depth()
+        || dst.srgb != src.srgb
+        || dst.base == crate::texture::COMPRESSED_BASE
+    {
         return false;
     }
     let src_has_alpha = src.channels == 4 || src.expand == Expand::LuminanceAlpha;

@@ -48,6 +48,9 @@ impl Context {
             );
             return None;
         }
+        if pname == gl::COMPRESSED_TEXTURE_FORMATS {
+            return Some(Parameter::Uints(self.compressed_formats()));
+        }
         let value = self
             .state_parameter(pname)
             .or_else(|| self.binding_parameter(pname))

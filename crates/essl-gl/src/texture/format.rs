@@ -263,6 +263,9 @@ impl InternalFormat {
     /// Whether ES 3.0 makes the format colour-renderable (table 3.13); the float formats with
     /// `EXT_color_buffer_float` (`float_ok`). Unsized and legacy formats: only `RGBA`/`RGB`.
     pub(crate) fn color_renderable(&self, float_ok: bool) -> bool {
+        if self.base == super::compressed::COMPRESSED_BASE {
+            return false; // compressed formats are sampled only
+        }
         match self.packing {
             Packing::Rgb10A2 | Packing::Rgb10A2Ui => true,
             Packing::Rg11B10F => float_ok,

@@ -49,7 +49,10 @@ impl Context {
             Comp::F32 => x.color_buffer_float && x.texture_float_linear,
             _ => false,
         };
-        if !mipmappable || first.format.packing != super::format::Packing::None {
+        if !mipmappable
+            || first.format.packing != super::format::Packing::None
+            || first.format.base == super::compressed::COMPRESSED_BASE
+        {
             return self.error(
                 gl::INVALID_OPERATION,
                 F,

@@ -15,6 +15,8 @@
 //! use). Those add methods to [`Context`]: its `impl` is spread over these files on purpose,
 //! one file per group of GL calls.
 
+mod compressed;
+pub(crate) use compressed::COMPRESSED_BASE;
 mod format;
 mod gpu;
 mod gpu_sync;

@@ -50,7 +50,14 @@ impl Context {
         function: &str,
     ) {
         let [w, h, d] = size;
-        let f = match internal_format(internal) {
+        let Some(compressed) = self.compressed_storage(target, internal, size, function) else {
+            return;
+        };
+        let f = match compressed
+            .map(|c| Ok(c.internal()))
+            .unwrap_or_else(|| internal_format(internal))
+        {
+            Ok(f) if f.base == super::compressed::COMPRESSED_BASE => f,
             Ok(f) if f.expand == Expand::None && !matches!(internal, gl::RGBA | gl::RGB) => f,
             Err(true) => {
                 return self.error(
@@ -109,7 +116,11 @@ impl Context {
                 d as u32
             };
             for face in 0..faces {
-                t.set_level(face, level, Level::blank([lw, lh, ld], f));
+                let blank = match compressed {
+                    Some(c) => c.blank([lw, lh, ld]),
+                    None => Level::blank([lw, lh, ld], f),
+                };
+                t.set_level(face, level, blank);
             }
         }
         t.immutable_levels = Some(levels as u32);

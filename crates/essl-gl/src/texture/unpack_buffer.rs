@@ -185,76 +185,276 @@ impl Context {
         });
     }
 
-    /// `compressedTexImage2D`: no compressed format is offered → `INVALID_ENUM`.
+    /// `compressedTexImage2D`: a level of a 2D texture or cube face from compressed blocks
+    /// (`texture/compressed.rs`); formats whose extension is off are `INVALID_ENUM`.
     #[allow(clippy::too_many_arguments)] // WebGL2's own argument list
     pub fn compressed_tex_image_2d(
         &mut self,
-        _target: u32,
-        _level: i32,
+        target: u32,
+        level: i32,
         internalformat: u32,
-        _width: i32,
-        _height: i32,
-        _border: i32,
-        _data: &[u8],
+        width: i32,
+        height: i32,
+        border: i32,
+        data: &[u8],
     ) {
-        self.no_compressed_format(internalformat, "compressedTexImage2D");
+        const F: &str = "compressedTexImage2D";
+        if !matches!(
+            target,
+            gl::TEXTURE_2D | gl::TEXTURE_CUBE_MAP_POSITIVE_X..=gl::TEXTURE_CUBE_MAP_NEGATIVE_Z
+        ) {
+            return self.error(gl::INVALID_ENUM, F, format_args!("target 0x{target:04X}"));
+        }
+        let src = Src::Client(data);
+        self.compressed_call(
+            target,
+            level,
+            internalformat,
+            [width, height, 1],
+            None,
+            border,
+            src,
+            F,
+        );
     }
 
-    /// `compressedTexImage3D`: no compressed format is offered → `INVALID_ENUM`.
+    /// `compressedTexImage3D`: a level of a 2D array texture from compressed blocks (3D
+    /// textures take none of the formats: `INVALID_OPERATION`).
     #[allow(clippy::too_many_arguments)] // WebGL2's own argument list
     pub fn compressed_tex_image_3d(
         &mut self,
-        _target: u32,
-        _level: i32,
+        target: u32,
+        level: i32,
         internalformat: u32,
-        _width: i32,
-        _height: i32,
-        _depth: i32,
-        _border: i32,
-        _data: &[u8],
+        width: i32,
+        height: i32,
+        depth: i32,
+        border: i32,
+        data: &[u8],
     ) {
-        self.no_compressed_format(internalformat, "compressedTexImage3D");
+        const F: &str = "compressedTexImage3D";
+        if !matches!(target, gl::TEXTURE_3D | gl::TEXTURE_2D_ARRAY) {
+            return self.error(gl::INVALID_ENUM, F, format_args!("target 0x{target:04X}"));
+        }
+        let src = Src::Client(data);
+        self.compressed_call(
+            target,
+            level,
+            internalformat,
+            [width, height, depth],
+            None,
+            border,
+            src,
+            F,
+        );
     }
 
-    /// `compressedTexSubImage2D`: no compressed format is offered → `INVALID_ENUM`.
+    /// `compressedTexSubImage2D`: a region of a compressed level, in whole blocks.
     #[allow(clippy::too_many_arguments)] // WebGL2's own argument list
     pub fn compressed_tex_sub_image_2d(
         &mut self,
-        _target: u32,
-        _level: i32,
-        _xoffset: i32,
-        _yoffset: i32,
-        _width: i32,
-        _height: i32,
+        target: u32,
+        level: i32,
+        xoffset: i32,
+        yoffset: i32,
+        width: i32,
+        height: i32,
         format: u32,
-        _data: &[u8],
+        data: &[u8],
     ) {
-        self.no_compressed_format(format, "compressedTexSubImage2D");
+        const F: &str = "compressedTexSubImage2D";
+        if !matches!(
+            target,
+            gl::TEXTURE_2D | gl::TEXTURE_CUBE_MAP_POSITIVE_X..=gl::TEXTURE_CUBE_MAP_NEGATIVE_Z
+        ) {
+            return self.error(gl::INVALID_ENUM, F, format_args!("target 0x{target:04X}"));
+        }
+        let offset = Some([xoffset, yoffset, 0]);
+        self.compressed_call(
+            target,
+            level,
+            format,
+            [width, height, 1],
+            offset,
+            0,
+            Src::Client(data),
+            F,
+        );
     }
 
-    /// `compressedTexSubImage3D`: no compressed format is offered → `INVALID_ENUM`.
+    /// `compressedTexSubImage3D`: a region of a compressed 2D array level.
     #[allow(clippy::too_many_arguments)] // WebGL2's own argument list
     pub fn compressed_tex_sub_image_3d(
         &mut self,
-        _target: u32,
-        _level: i32,
-        _xoffset: i32,
-        _yoffset: i32,
-        _zoffset: i32,
-        _width: i32,
-        _height: i32,
-        _depth: i32,
+        target: u32,
+        level: i32,
+        xoffset: i32,
+        yoffset: i32,
+        zoffset: i32,
+        width: i32,
+        height: i32,
+        depth: i32,
         format: u32,
-        _data: &[u8],
+        data: &[u8],
     ) {
-        self.no_compressed_format(format, "compressedTexSubImage3D");
-    }
-
-    fn no_compressed_format(&mut self, format: u32, function: &str) {
-        self.error(
-            gl::INVALID_ENUM,
-            function,
-            format_args!("0x{format:04X}: no compressed texture format is enabled"),
+        const F: &str = "compressedTexSubImage3D";
+        if !matches!(target, gl::TEXTURE_3D | gl::TEXTURE_2D_ARRAY) {
+            return self.error(gl::INVALID_ENUM, F, format_args!("target 0x{target:04X}"));
+        }
+        let offset = Some([xoffset, yoffset, zoffset]);
+        self.compressed_call(
+            target,
+            level,
+            format,
+            [width, height, depth],
+            offset,
+            0,
+            Src::Client(data),
+            F,
         );
     }
+
+    /// The compressed calls' forms that read the bound `PIXEL_UNPACK_BUFFER`: `image_size`
+    /// bytes at `offset` (past the buffer's end → `INVALID_OPERATION`). `function` names the
+    /// call (`compressedTexImage2D`, …); `numbers` are its arguments between `level` and
+    /// `imageSize`, as in WebGL.
+    pub fn compressed_tex_from_buffer(
+        &mut self,
+        function: &str,
+        target: u32,
+        level: i32,
+        numbers: &[i64],
+        image_size: i64,
+        offset: i64,
+    ) {
+        let src = Src::Buffer { image_size, offset };
+        let n = |k: usize| numbers.get(k).copied().unwrap_or(0) as i32;
+        match function {
+            "compressedTexImage2D" => {
+                const F: &str = "compressedTexImage2D";
+                if !two_d(target) {
+                    return self.error(gl::INVALID_ENUM, F, format_args!("target 0x{target:04X}"));
+                }
+                self.compressed_call(
+                    target,
+                    level,
+                    n(0) as u32,
+                    [n(1), n(2), 1],
+                    None,
+                    n(3),
+                    src,
+                    F,
+                )
+            }
+            "compressedTexImage3D" => {
+                const F: &str = "compressedTexImage3D";
+                if !matches!(target, gl::TEXTURE_3D | gl::TEXTURE_2D_ARRAY) {
+                    return self.error(gl::INVALID_ENUM, F, format_args!("target 0x{target:04X}"));
+                }
+                let size = [n(1), n(2), n(3)];
+                self.compressed_call(target, level, n(0) as u32, size, None, n(4), src, F)
+            }
+            "compressedTexSubImage2D" => {
+                const F: &str = "compressedTexSubImage2D";
+                if !two_d(target) {
+                    return self.error(gl::INVALID_ENUM, F, format_args!("target 0x{target:04X}"));
+                }
+                let offset = Some([n(0), n(1), 0]);
+                self.compressed_call(
+                    target,
+                    level,
+                    n(4) as u32,
+                    [n(2), n(3), 1],
+                    offset,
+                    0,
+                    src,
+                    F,
+                )
+            }
+            _ => {
+                const F: &str = "compressedTexSubImage3D";
+                if !matches!(target, gl::TEXTURE_3D | gl::TEXTURE_2D_ARRAY) {
+                    return self.error(gl::INVALID_ENUM, F, format_args!("target 0x{target:04X}"));
+                }
+                let offset = Some([n(0), n(1), n(2)]);
+                let size = [n(3), n(4), n(5)];
+                self.compressed_call(target, level, n(6) as u32, size, offset, 0, src, F)
+            }
+        }
+    }
+
+    #[allow(clippy::too_many_arguments)]
+    fn compressed_call(
+        &mut self,
+        target: u32,
+        level: i32,
+        format: u32,
+        size: [i32; 3],
+        offset: Option<[i32; 3]>,
+        border: i32,
+        src: Src,
+        function: &'static str,
+    ) {
+        let owned;
+        let data = match src {
+            Src::Client(data) => {
+                if self.client_data_refused(function) {
+                    return;
+                }
+                data
+            }
+            Src::Buffer { image_size, offset } => {
+                let Some(id) = self.bindings.buffer(gl::PIXEL_UNPACK_BUFFER) else {
+                    return self.error(
+                        gl::INVALID_OPERATION,
+                        function,
+                        "no PIXEL_UNPACK_BUFFER bound",
+                    );
+                };
+                if image_size < 0 || offset < 0 {
+                    return self.error(gl::INVALID_VALUE, function, "negative imageSize or offset");
+                }
+                let Some(b) = self.objects.buffers.get_any_mut(id) else {
+                    return;
+                };
+                let bytes = b.cpu_bytes(&self.gpu, &mut self.frame);
+                let end = offset as u64 + image_size as u64;
+                if end > bytes.len() as u64 {
+                    return self.error(
+                        gl::INVALID_OPERATION,
+                        function,
+                        "imageSize bytes at offset run past the PIXEL_UNPACK_BUFFER's end",
+                    );
+                }
+                owned = bytes[offset as usize..end as usize].to_vec();
+                &owned[..]
+            }
+        };
+        if border != 0 {
+            return self.error(gl::INVALID_VALUE, function, "border must be 0");
+        }
+        self.compressed_image(super::compressed::CompressedImage {
+            target,
+            level,
+            format,
+            size,
+            offset,
+            data,
+            function,
+        });
+    }
+}
+
+/// Where a compressed upload's bytes come from.
+enum Src<'a> {
+    Client(&'a [u8]),
+    Buffer { image_size: i64, offset: i64 },
+}
+
+/// Whether `target` is a 2D image target (`TEXTURE_2D` or a cube face).
+fn two_d(target: u32) -> bool {
+    matches!(
+        target,
+        gl::TEXTURE_2D | gl::TEXTURE_CUBE_MAP_POSITIVE_X..=gl::TEXTURE_CUBE_MAP_NEGATIVE_Z
+    )
 }

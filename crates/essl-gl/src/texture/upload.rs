@@ -202,7 +202,7 @@ impl Context {
 
     /// WebGL2: the calls that take client data are refused (`INVALID_OPERATION`) while a
     /// `PIXEL_UNPACK_BUFFER` is bound; the `_from_buffer` forms read it.
-    fn client_data_refused(&mut self, function: &str) -> bool {
+    pub(super) fn client_data_refused(&mut self, function: &str) -> bool {
         if self.bindings.buffer(gl::PIXEL_UNPACK_BUFFER).is_some() {
             self.error(
                 gl::INVALID_OPERATION,

@@ -4,6 +4,7 @@
 mod active_lists;
 mod binding;
 mod common;
+mod compressed;
 mod errors;
 mod es100_render;
 mod framebuffer;
