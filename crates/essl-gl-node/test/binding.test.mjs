@@ -184,6 +184,51 @@ test('extensions: the same object each time, null for unknown names', () => {
   assert.ok(gl.getSupportedExtensions().includes('WEBGL_lose_context'));
 });
 
+test('compressed textures: extension objects, the srcOffset and PIXEL_UNPACK_BUFFER forms, sampling', () => {
+  const ctx = createContext(2, 2);
+  const tex = ctx.createTexture();
+  ctx.bindTexture(ctx.TEXTURE_2D, tex);
+  // A DXT1 block of red, 4 bytes into the data.
+  const red = [0x00, 0xf8, 0x1f, 0x00, 0, 0, 0, 0];
+  const data = new Uint8Array([9, 9, 9, 9, ...red]);
+  ctx.compressedTexImage2D(ctx.TEXTURE_2D, 0, 0x83f0, 4, 4, 0, data, 4);
+  assert.equal(ctx.getError(), ctx.INVALID_ENUM, 'before the extension');
+  const s3tc = ctx.getExtension('WEBGL_compressed_texture_s3tc');
+  assert.equal(s3tc.COMPRESSED_RGB_S3TC_DXT1_EXT, 0x83f0);
+  assert.deepEqual([...ctx.getParameter(ctx.COMPRESSED_TEXTURE_FORMATS)], [0x83f0, 0x83f1, 0x83f2, 0x83f3]);
+  assert.deepEqual(ctx.getExtension('WEBGL_compressed_texture_astc').getSupportedProfiles(), ['ldr']);
+  ctx.compressedTexImage2D(ctx.TEXTURE_2D, 0, s3tc.COMPRESSED_RGB_S3TC_DXT1_EXT, 4, 4, 0, data, 13);
+  assert.equal(ctx.getError(), ctx.INVALID_VALUE, 'srcOffset past the end');
+  ctx.compressedTexImage2D(ctx.TEXTURE_2D, 0, s3tc.COMPRESSED_RGB_S3TC_DXT1_EXT, 4, 4, 0, data, 4);
+  assert.equal(ctx.getError(), ctx.NO_ERROR);
+  // The same block from a PIXEL_UNPACK_BUFFER: (imageSize, offset).
+  const pbo = ctx.createBuffer();
+  ctx.bindBuffer(ctx.PIXEL_UNPACK_BUFFER, pbo);
+  ctx.bufferData(ctx.PIXEL_UNPACK_BUFFER, data, ctx.STATIC_DRAW);
+  ctx.compressedTexSubImage2D(ctx.TEXTURE_2D, 0, 0, 0, 4, 4, s3tc.COMPRESSED_RGB_S3TC_DXT1_EXT, 8, 4);
+  assert.equal(ctx.getError(), ctx.NO_ERROR);
+  ctx.compressedTexSubImage2D(ctx.TEXTURE_2D, 0, 0, 0, 4, 4, s3tc.COMPRESSED_RGB_S3TC_DXT1_EXT, 8, 5);
+  assert.equal(ctx.getError(), ctx.INVALID_OPERATION, 'past the buffer');
+  ctx.bindBuffer(ctx.PIXEL_UNPACK_BUFFER, null);
+  ctx.texParameteri(ctx.TEXTURE_2D, ctx.TEXTURE_MIN_FILTER, ctx.NEAREST);
+  const p = program(
+    ctx,
+    '#version 300 es\nin vec2 a; void main() { gl_Position = vec4(a, 0.0, 1.0); }',
+    '#version 300 es\nprecision mediump float; uniform sampler2D t; out vec4 c; void main() { c = texture(t, vec2(0.5)); }',
+  );
+  ctx.useProgram(p);
+  const b = ctx.createBuffer();
+  ctx.bindBuffer(ctx.ARRAY_BUFFER, b);
+  ctx.bufferData(ctx.ARRAY_BUFFER, new Float32Array([-1, -1, 3, -1, -1, 3]), ctx.STATIC_DRAW);
+  ctx.enableVertexAttribArray(0);
+  ctx.vertexAttribPointer(0, 2, ctx.FLOAT, false, 0, 0);
+  ctx.drawArrays(ctx.TRIANGLES, 0, 3);
+  const px = new Uint8Array(4);
+  ctx.readPixels(0, 0, 1, 1, ctx.RGBA, ctx.UNSIGNED_BYTE, px);
+  assert.deepEqual([...px], [255, 0, 0, 255]);
+  ctx.destroy();
+});
+
 test('WEBGL_lose_context: calls do nothing, getError says CONTEXT_LOST_WEBGL once, events, restore', async () => {
   const ctx = createContext(8, 8);
   const canvas = ctx.canvas;
