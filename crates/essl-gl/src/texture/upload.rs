@@ -312,11 +312,10 @@ impl Context {
         } = pixels;
         let store = self.pixel_store;
         // WebGL 2: rows shorter than the rectangle they hold, and images shorter than theirs,
-        // are refused; a 3D upload is neither flipped nor premultiplied.
-        if store.unpack_row_length > 0
-            && i64::from(store.unpack_row_length)
-                < i64::from(w) + i64::from(store.unpack_skip_pixels)
-        {
+        // are refused (a length of 0 is the width, or the height); a 3D upload is neither
+        // flipped nor premultiplied.
+        let or = |n: u32, d: u32| if n > 0 { i64::from(n) } else { i64::from(d) };
+        if or(store.unpack_row_length, w) < i64::from(w) + i64::from(store.unpack_skip_pixels) {
             self.error(
                 gl::INVALID_OPERATION,
                 function,
@@ -325,9 +324,7 @@ impl Context {
             return None;
         }
         if three_d
-            && store.unpack_image_height > 0
-            && i64::from(store.unpack_image_height)
-                < i64::from(h) + i64::from(store.unpack_skip_rows)
+            && or(store.unpack_image_height, h) < i64::from(h) + i64::from(store.unpack_skip_rows)
         {
             self.error(
                 gl::INVALID_OPERATION,

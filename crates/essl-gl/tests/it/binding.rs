@@ -416,3 +416,34 @@ fn a_current_program_whose_relink_failed_draws_nothing_and_takes_no_uniforms() {
     ctx.draw_arrays(gl::POINTS, 0, 1);
     assert_eq!(ctx.get_error(), gl::INVALID_OPERATION, "drawArrays");
 }
+
+#[test]
+fn skipped_pixels_past_the_row_are_invalid_a_row_length_of_0_being_the_width() {
+    let Some(mut ctx) = common::context(2, 2) else {
+        return;
+    };
+    let t = ctx.create_texture();
+    ctx.bind_texture(gl::TEXTURE_2D, Some(t));
+    let data = [0u8; 4 * 5 * 20];
+    let upload = |ctx: &mut essl_gl::Context, row: i32, skip: i32| {
+        ctx.pixel_storei(gl::UNPACK_ROW_LENGTH, row);
+        ctx.pixel_storei(gl::UNPACK_SKIP_PIXELS, skip);
+        let f = gl::RGBA;
+        ctx.tex_image_2d(
+            gl::TEXTURE_2D,
+            0,
+            gl::RGBA8 as i32,
+            5,
+            7,
+            0,
+            f,
+            gl::UNSIGNED_BYTE,
+            Some(&data[..]),
+        );
+        ctx.get_error()
+    };
+    assert_eq!(upload(&mut ctx, 0, 2), gl::INVALID_OPERATION, "5 + 2 > 5");
+    assert_eq!(upload(&mut ctx, 6, 2), gl::INVALID_OPERATION, "5 + 2 > 6");
+    assert_eq!(upload(&mut ctx, 7, 2), gl::NO_ERROR);
+    assert_eq!(upload(&mut ctx, 0, 0), gl::NO_ERROR);
+}
