@@ -15,11 +15,24 @@ export const LEFT_OUT = [
   ['offscreencanvas/', 'OffscreenCanvas and workers'],
 ];
 
+/**
+ * Pages outside those folders that need the same: a `<video>` or SVG image as the texture
+ * source, or workers.
+ */
+export const LEFT_OUT_PAGES = [
+  [/^textures\/misc\/.*video/, 'HTMLVideoElement sources (as textures/video/)'],
+  [/^textures\/misc\/.*svg-image/, 'SVG images rendered by a browser (as textures/svg_image/)'],
+  [/workers?\.html$/, 'workers (as offscreencanvas/)'],
+];
+
 /** Why `page` is left out, or `null`. */
 export function leftOut(page) {
+  const rest = page.replace(/^conformance2?\//, '');
   for (const [prefix, why] of LEFT_OUT) {
-    const rest = page.replace(/^conformance2?\//, '');
     if (rest.startsWith(prefix)) return why;
+  }
+  for (const [pattern, why] of LEFT_OUT_PAGES) {
+    if (pattern.test(rest)) return why;
   }
   return null;
 }

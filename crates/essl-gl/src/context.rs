@@ -59,6 +59,8 @@ pub struct Context {
     pub(crate) fb: DefaultFramebuffer,
     /// The extensions `get_extension` has turned on.
     pub(crate) extensions: Extensions,
+    /// The largest point the device draws, measured the first time it is asked for.
+    pub(crate) largest_point: std::cell::OnceCell<f32>,
     pub(crate) frame: Frame,
     pub(crate) objects: Objects,
     pub(crate) bindings: Bindings,
@@ -187,6 +189,7 @@ impl Context {
             backend_errors,
             fb,
             extensions: Extensions::default(),
+            largest_point: std::cell::OnceCell::new(),
             frame: Frame::new(),
             objects: Objects::new(max_vertex_attribs),
             bindings: Bindings::new(MAX_UNIFORM_BUFFER_BINDINGS, MAX_TEXTURE_UNITS),

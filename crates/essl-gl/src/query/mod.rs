@@ -8,6 +8,7 @@
 
 mod objects;
 mod parameter;
+mod point_size;
 mod program;
 
 pub use objects::ShaderPrecisionFormat;

@@ -375,7 +375,13 @@ impl Context {
             gl::MAX_TRANSFORM_FEEDBACK_INTERLEAVED_COMPONENTS => Int(64),
             gl::MAX_TRANSFORM_FEEDBACK_SEPARATE_ATTRIBS => Int(4),
             gl::MAX_TRANSFORM_FEEDBACK_SEPARATE_COMPONENTS => Int(4),
-            gl::ALIASED_LINE_WIDTH_RANGE | gl::ALIASED_POINT_SIZE_RANGE => Floats(vec![1.0, 1.0]),
+            gl::ALIASED_LINE_WIDTH_RANGE => Floats(vec![1.0, 1.0]),
+            gl::ALIASED_POINT_SIZE_RANGE => {
+                let max = self
+                    .largest_point
+                    .get_or_init(|| super::point_size::largest_point(&self.gpu));
+                Floats(vec![1.0, *max])
+            }
             // Strings.
             gl::VERSION => Parameter::String(VERSION.to_owned()),
             gl::SHADING_LANGUAGE_VERSION => Parameter::String(SHADING_LANGUAGE_VERSION.to_owned()),

@@ -825,3 +825,33 @@ fn contexts_are_send() {
     fn send<T: Send>() {}
     send::<essl_gl::Context>();
 }
+
+#[test]
+fn points_are_as_large_as_the_reported_range_allows() {
+    let Some(mut ctx) = common::context(32, 32) else {
+        return;
+    };
+    let range = match ctx.get_parameter(gl::ALIASED_POINT_SIZE_RANGE) {
+        Some(essl_gl::Parameter::Floats(v)) => v,
+        other => panic!("{other:?}"),
+    };
+    assert_eq!(range[0], 1.0);
+    assert!(range[1] >= 1.0);
+    // A point of min(max, 8) pixels covers that square, gl_PointCoord running 0 → 1.
+    let size = range[1].min(8.0);
+    let vs = format!(
+        "#version 300 es\nvoid main() {{ gl_Position = vec4(0.0, 0.0, 0.0, 1.0); gl_PointSize = {size:.1}; }}"
+    );
+    let fs = "#version 300 es\nprecision mediump float; out vec4 c;\
+        void main() { c = vec4(gl_PointCoord, 1.0, 1.0); }";
+    let p = common::program(&mut ctx, &vs, fs);
+    ctx.use_program(Some(p));
+    common::clear_black(&mut ctx);
+    ctx.draw_arrays(gl::POINTS, 0, 1);
+    assert_eq!(ctx.get_error(), gl::NO_ERROR);
+    let lit = (0..32)
+        .flat_map(|y| (0..32).map(move |x| (x, y)))
+        .filter(|&(x, y)| common::pixel(&mut ctx, x, y)[2] == 255)
+        .count();
+    assert_eq!(lit, (size as usize).pow(2));
+}
