@@ -50,6 +50,10 @@ const CONSTANTS = {
     COMPRESSED_SRGB8_ALPHA8_ETC2_EAC: 0x9279,
   },
   WEBGL_compressed_texture_etc1: { COMPRESSED_RGB_ETC1_WEBGL: 0x8d64 },
+  EXT_texture_filter_anisotropic: {
+    TEXTURE_MAX_ANISOTROPY_EXT: 0x84fe,
+    MAX_TEXTURE_MAX_ANISOTROPY_EXT: 0x84ff,
+  },
   WEBGL_compressed_texture_astc: Object.fromEntries(
     ASTC_SIZES.flatMap(([w, h], i) => [
       [`COMPRESSED_RGBA_ASTC_${w}x${h}_KHR`, 0x93b0 + i],

@@ -335,6 +335,7 @@ impl Context {
                 v.push(Extension::TextureFloatLinear);
             }
             v.extend(crate::extensions::COMPRESSED_EXTENSIONS);
+            v.push(Extension::TextureFilterAnisotropic);
             return v;
         }
         let mut v = vec![Extension::ColorBufferFloat, Extension::ColorBufferHalfFloat];
@@ -346,6 +347,7 @@ impl Context {
         }
         v.push(Extension::ParallelShaderCompile);
         v.extend(crate::extensions::COMPRESSED_EXTENSIONS);
+        v.push(Extension::TextureFilterAnisotropic);
         v
     }
 
@@ -364,6 +366,10 @@ impl Context {
             .into_iter()
             .find(|e| e.name().eq_ignore_ascii_case(name))?;
         if self.extensions.compressed.insert(e) {
+            return Some(e);
+        }
+        if e == Extension::TextureFilterAnisotropic {
+            self.extensions.anisotropic = true;
             return Some(e);
         }
         if self.webgl1.on {

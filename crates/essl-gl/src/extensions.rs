@@ -11,7 +11,9 @@
 //! textures, where the adapter can) and `KHR_parallel_shader_compile`
 //! (`COMPLETION_STATUS_KHR`, always true: compiling is synchronous). Both contexts offer the
 //! compressed-texture extensions (S3TC, S3TC sRGB, ETC, ETC1, ASTC LDR: decoded on upload,
-//! `texture/compressed.rs`). WebGL 1 contexts offer their own list besides, float textures
+//! `texture/compressed.rs`) and `EXT_texture_filter_anisotropic` (wgpu's anisotropy clamp, up to
+//! 16, where the minification, magnification and mipmap filters are all linear, as wgpu
+//! requires). WebGL 1 contexts offer their own list besides, float textures
 //! among them (`webgl1/float.rs`).
 
 /// The WebGL extensions a context has turned on.
@@ -25,7 +27,16 @@ pub(crate) struct Extensions {
     pub(crate) parallel_shader_compile: bool,
     /// The compressed-texture extensions turned on.
     pub(crate) compressed: CompressedSet,
+    /// `EXT_texture_filter_anisotropic`.
+    pub(crate) anisotropic: bool,
 }
+
+/// `EXT_texture_filter_anisotropic`'s texture and sampler parameter.
+pub(crate) const TEXTURE_MAX_ANISOTROPY_EXT: u32 = 0x84FE;
+/// `EXT_texture_filter_anisotropic`'s `getParameter` name.
+pub(crate) const MAX_TEXTURE_MAX_ANISOTROPY_EXT: u32 = 0x84FF;
+/// The largest anisotropy essl-gl asks of the device (wgpu's clamp).
+pub(crate) const MAX_ANISOTROPY: f32 = 16.0;
 
 /// A set of the compressed-texture extensions.
 #[derive(Clone, Copy, Debug, Default)]
@@ -114,6 +125,8 @@ pub enum Extension {
     CompressedEtc1,
     /// `WEBGL_compressed_texture_astc` (the LDR profile).
     CompressedAstc,
+    /// `EXT_texture_filter_anisotropic`.
+    TextureFilterAnisotropic,
 }
 
 impl Extension {
@@ -142,6 +155,7 @@ impl Extension {
             Extension::CompressedEtc => "WEBGL_compressed_texture_etc",
             Extension::CompressedEtc1 => "WEBGL_compressed_texture_etc1",
             Extension::CompressedAstc => "WEBGL_compressed_texture_astc",
+            Extension::TextureFilterAnisotropic => "EXT_texture_filter_anisotropic",
         }
     }
 }

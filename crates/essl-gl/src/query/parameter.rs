@@ -51,6 +51,10 @@ impl Context {
         if pname == gl::COMPRESSED_TEXTURE_FORMATS {
             return Some(Parameter::Uints(self.compressed_formats()));
         }
+        if pname == crate::extensions::MAX_TEXTURE_MAX_ANISOTROPY_EXT && self.extensions.anisotropic
+        {
+            return Some(Parameter::Float(crate::extensions::MAX_ANISOTROPY));
+        }
         let value = self
             .state_parameter(pname)
             .or_else(|| self.binding_parameter(pname))

@@ -84,14 +84,25 @@ impl Context {
         let Some(id) = self.sampler_id(sampler, f) else {
             return;
         };
+        let gated = self.anisotropy_refused(pname);
         let s = self.objects.samplers.get_mut(id).expect("checked");
-        match s.params.set(pname, value) {
+        let result = if gated {
+            Err(ParamError::Pname)
+        } else {
+            s.params.set(pname, value)
+        };
+        match result {
             Ok(()) => {}
             Err(ParamError::Pname) => {
                 self.error(gl::INVALID_ENUM, f, format_args!("pname 0x{pname:04X}"))
             }
             Err(ParamError::Value) => self.error(
                 gl::INVALID_ENUM,
+                f,
+                format_args!("value {value} for pname 0x{pname:04X}"),
+            ),
+            Err(ParamError::Range) => self.error(
+                gl::INVALID_VALUE,
                 f,
                 format_args!("value {value} for pname 0x{pname:04X}"),
             ),
@@ -102,11 +113,20 @@ impl Context {
     pub fn get_sampler_parameter(&self, sampler: Sampler, pname: u32) -> Option<Parameter> {
         const F: &str = "getSamplerParameter";
         let id = self.sampler_id(sampler, F)?;
-        let value = self.objects.samplers.get(id)?.params.get(pname);
+        let value = if self.anisotropy_refused(pname) {
+            None
+        } else {
+            self.objects.samplers.get(id)?.params.get(pname)
+        };
         if value.is_none() {
             self.error(gl::INVALID_ENUM, F, format_args!("pname 0x{pname:04X}"));
         }
         value
+    }
+
+    /// Whether `pname` is `TEXTURE_MAX_ANISOTROPY_EXT` while its extension is off.
+    pub(crate) fn anisotropy_refused(&self, pname: u32) -> bool {
+        pname == crate::extensions::TEXTURE_MAX_ANISOTROPY_EXT && !self.extensions.anisotropic
     }
 
     /// The sampling parameters that apply to texture `texture` on unit `unit`: the bound

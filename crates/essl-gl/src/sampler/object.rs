@@ -17,6 +17,8 @@ pub(crate) struct SamplerParams {
     pub(crate) max_lod: f32,
     pub(crate) compare_mode: u32,
     pub(crate) compare_func: u32,
+    /// `TEXTURE_MAX_ANISOTROPY_EXT`.
+    pub(crate) max_anisotropy: f32,
 }
 
 impl Default for SamplerParams {
@@ -31,6 +33,7 @@ impl Default for SamplerParams {
             max_lod: 1000.0,
             compare_mode: gl::NONE,
             compare_func: gl::LEQUAL,
+            max_anisotropy: 1.0,
         }
     }
 }
@@ -41,6 +44,8 @@ pub(crate) enum ParamError {
     Pname,
     /// Not a value the parameter takes (`INVALID_ENUM`).
     Value,
+    /// A number out of the parameter's range (`INVALID_VALUE`).
+    Range,
 }
 
 impl SamplerParams {
@@ -70,6 +75,13 @@ impl SamplerParams {
             gl::TEXTURE_COMPARE_MODE => matches!(e, gl::NONE | gl::COMPARE_REF_TO_TEXTURE),
             gl::TEXTURE_COMPARE_FUNC => is_compare_func(e),
             gl::TEXTURE_MIN_LOD | gl::TEXTURE_MAX_LOD => true,
+            crate::extensions::TEXTURE_MAX_ANISOTROPY_EXT => {
+                if !(value >= 1.0) {
+                    return Err(ParamError::Range);
+                }
+                self.max_anisotropy = value;
+                return Ok(());
+            }
             _ => return Err(ParamError::Pname),
         };
         if !ok {
@@ -101,6 +113,7 @@ impl SamplerParams {
             gl::TEXTURE_COMPARE_FUNC => Parameter::Enum(self.compare_func),
             gl::TEXTURE_MIN_LOD => Parameter::Float(self.min_lod),
             gl::TEXTURE_MAX_LOD => Parameter::Float(self.max_lod),
+            crate::extensions::TEXTURE_MAX_ANISOTROPY_EXT => Parameter::Float(self.max_anisotropy),
             _ => return None,
         })
     }

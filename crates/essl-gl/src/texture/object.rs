@@ -283,10 +283,20 @@ impl TextureObject {
             gl::MIRRORED_REPEAT => wgpu::AddressMode::MirrorRepeat,
             _ => wgpu::AddressMode::Repeat,
         };
+        let (min, mag) = (filter(p.min_filter), filter(p.mag_filter));
+        // wgpu takes an anisotropy clamp only where every filter is linear.
+        let linear = wgpu::FilterMode::Linear;
+        let anisotropy = if min == linear && mag == linear && mip == wgpu::MipmapFilterMode::Linear
+        {
+            p.max_anisotropy.min(crate::extensions::MAX_ANISOTROPY) as u16
+        } else {
+            1
+        };
         SamplerKey {
-            min: filter(p.min_filter),
-            mag: filter(p.mag_filter),
+            min,
+            mag,
             mip,
+            anisotropy,
             wrap: [wrap(p.wrap_s), wrap(p.wrap_t), wrap(p.wrap_r)],
             lod_min: lod_min.to_bits(),
             lod_max: lod_max.to_bits(),

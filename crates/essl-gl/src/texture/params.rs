@@ -37,6 +37,7 @@ impl Context {
         let Some(id) = self.bound_texture(target, function) else {
             return;
         };
+        let gated = self.anisotropy_refused(pname);
         let p = &mut self
             .objects
             .textures
@@ -55,6 +56,7 @@ impl Context {
                 p.max_level = value as u32;
                 Ok(())
             }
+            _ if gated => Err(ParamError::Pname),
             _ => p.sampling.set(pname, value),
         };
         match result {
@@ -66,6 +68,11 @@ impl Context {
             ),
             Err(ParamError::Value) => self.error(
                 gl::INVALID_ENUM,
+                function,
+                format_args!("value {value} for pname 0x{pname:04X}"),
+            ),
+            Err(ParamError::Range) => self.error(
+                gl::INVALID_VALUE,
                 function,
                 format_args!("value {value} for pname 0x{pname:04X}"),
             ),
@@ -95,6 +102,7 @@ impl Context {
             gl::TEXTURE_IMMUTABLE_LEVELS => {
                 Some(Parameter::Int(t.immutable_levels.unwrap_or(0) as i64))
             }
+            _ if self.anisotropy_refused(pname) => None,
             _ => p.sampling.get(pname),
         };
         if value.is_none() {

@@ -16,6 +16,8 @@ pub(crate) struct SamplerKey {
     pub(super) lod_min: u32,
     pub(super) lod_max: u32,
     pub(super) compare: Option<wgpu::CompareFunction>,
+    /// wgpu's anisotropy clamp (1: none).
+    pub(super) anisotropy: u16,
 }
 
 impl SamplerKey {
@@ -34,6 +36,7 @@ impl SamplerKey {
             lod_min: 0.0f32.to_bits(),
             lod_max: 0.0f32.to_bits(),
             compare: None,
+            anisotropy: 1,
         }
     }
 
@@ -47,6 +50,7 @@ impl SamplerKey {
             lod_min: 0.0f32.to_bits(),
             lod_max: 0.25f32.to_bits(),
             compare: comparison.then_some(wgpu::CompareFunction::LessEqual),
+            anisotropy: 1,
         }
     }
 }
@@ -73,7 +77,7 @@ impl SamplerCache {
                     lod_min_clamp: f32::from_bits(key.lod_min),
                     lod_max_clamp: f32::from_bits(key.lod_max),
                     compare: key.compare,
-                    anisotropy_clamp: 1,
+                    anisotropy_clamp: key.anisotropy,
                     border_color: None,
                 })
             })

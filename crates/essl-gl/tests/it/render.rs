@@ -855,3 +855,58 @@ fn points_are_as_large_as_the_reported_range_allows() {
         .count();
     assert_eq!(lit, (size as usize).pow(2));
 }
+
+#[test]
+fn anisotropy_waits_for_its_extension_and_checks_its_range() {
+    let Some(mut ctx) = common::context(4, 4) else {
+        return;
+    };
+    const TEXTURE_MAX_ANISOTROPY_EXT: u32 = 0x84FE;
+    const MAX_TEXTURE_MAX_ANISOTROPY_EXT: u32 = 0x84FF;
+    let t = ctx.create_texture();
+    ctx.bind_texture(gl::TEXTURE_2D, Some(t));
+    ctx.tex_parameterf(gl::TEXTURE_2D, TEXTURE_MAX_ANISOTROPY_EXT, 4.0);
+    assert_eq!(ctx.get_error(), gl::INVALID_ENUM, "before the extension");
+    assert!(ctx.get_parameter(MAX_TEXTURE_MAX_ANISOTROPY_EXT).is_none());
+    assert_eq!(ctx.get_error(), gl::INVALID_ENUM);
+    assert!(ctx
+        .get_extension("EXT_texture_filter_anisotropic")
+        .is_some());
+    assert_eq!(
+        ctx.get_parameter(MAX_TEXTURE_MAX_ANISOTROPY_EXT),
+        Some(essl_gl::Parameter::Float(16.0))
+    );
+    ctx.tex_parameterf(gl::TEXTURE_2D, TEXTURE_MAX_ANISOTROPY_EXT, 0.5);
+    assert_eq!(ctx.get_error(), gl::INVALID_VALUE);
+    ctx.tex_parameterf(gl::TEXTURE_2D, TEXTURE_MAX_ANISOTROPY_EXT, 8.0);
+    assert_eq!(
+        ctx.get_tex_parameter(gl::TEXTURE_2D, TEXTURE_MAX_ANISOTROPY_EXT),
+        Some(essl_gl::Parameter::Float(8.0))
+    );
+    // A mipmapped, linearly filtered texture with anisotropy samples as the device filters it.
+    let level = [255u8; 16];
+    ctx.tex_image_2d(
+        gl::TEXTURE_2D,
+        0,
+        gl::RGBA as i32,
+        2,
+        2,
+        0,
+        gl::RGBA,
+        gl::UNSIGNED_BYTE,
+        Some(&level[..]),
+    );
+    ctx.generate_mipmap(gl::TEXTURE_2D);
+    let mode = gl::LINEAR_MIPMAP_LINEAR as i32;
+    ctx.tex_parameteri(gl::TEXTURE_2D, gl::TEXTURE_MIN_FILTER, mode);
+    let p = common::program(
+        &mut ctx,
+        "#version 300 es\nin vec2 p; void main() { gl_Position = vec4(p, 0.0, 1.0); }",
+        "#version 300 es\nprecision mediump float; uniform sampler2D t; out vec4 c; void main() { c = texture(t, vec2(0.3, 0.7)); }",
+    );
+    ctx.use_program(Some(p));
+    common::float_attribute(&mut ctx, 0, 2, &common::QUAD);
+    ctx.draw_arrays(gl::TRIANGLES, 0, 6);
+    assert_eq!(ctx.get_error(), gl::NO_ERROR);
+    assert_eq!(common::pixel(&mut ctx, 1, 1), [255, 255, 255, 255]);
+}
