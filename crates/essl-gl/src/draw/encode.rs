@@ -164,7 +164,8 @@ impl Context {
         let needs_patch = feed.kind != input.kind
             || feed.count > input.components
             || feed.used < feed.count
-            || feed.norm.is_some();
+            || feed.norm.is_some()
+            || feed.packed.is_some();
         if needs_patch {
             out.patches.push(InputPatch {
                 location: input.location,
@@ -172,6 +173,7 @@ impl Context {
                 fed_count: feed.count,
                 used: feed.used,
                 norm: feed.norm,
+                packed: feed.packed,
             });
         }
     }

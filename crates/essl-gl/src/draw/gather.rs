@@ -12,7 +12,7 @@ use crate::framebuffer::DrawFormats;
 use crate::gl;
 use crate::objects::Id;
 use crate::program::{ShaderInput, ValueKind};
-use crate::shader_patch::Norm32;
+use crate::shader_patch::{Norm32, Packed};
 use crate::texture::{view_dimension, SampleKind};
 use crate::vertex_array::{GenericAttrib, VertexAttrib};
 
@@ -26,6 +26,26 @@ fn feed_for(a: &VertexAttrib) -> Feed {
         2 => (two, 2),
         _ => (four, 4),
     };
+    if crate::vertex_array::packed(a.ty) {
+        // One 32-bit word per element; the shader takes the four components apart.
+        let signed = a.ty == gl::INT_2_10_10_10_REV;
+        let (format, kind) = if signed {
+            (V::Sint32, ValueKind::Sint)
+        } else {
+            (V::Uint32, ValueKind::Uint)
+        };
+        return Feed {
+            format,
+            kind,
+            count: 1,
+            used: 1,
+            norm: None,
+            packed: Some(Packed {
+                signed,
+                normalized: a.normalized,
+            }),
+        };
+    }
     let (format, count, kind, norm) = match (a.ty, a.normalized && !a.integer) {
         (gl::FLOAT, _) => {
             let f = [V::Float32, V::Float32x2, V::Float32x3, V::Float32x4][n as usize - 1];
@@ -82,6 +102,7 @@ fn feed_for(a: &VertexAttrib) -> Feed {
         count,
         used: n.min(count),
         norm,
+        packed: None,
     }
 }
 

@@ -28,7 +28,7 @@ use crate::context::Context;
 use crate::gl;
 use crate::objects::Id;
 use crate::program::{ShaderInput, ValueKind};
-use crate::shader_patch::Norm32;
+use crate::shader_patch::{Norm32, Packed};
 use crate::texture::{Complete, SampleKind};
 use crate::vertex_array::{GenericAttrib, VertexAttrib};
 
@@ -42,6 +42,8 @@ pub(super) struct Feed {
     pub(super) count: u8,
     pub(super) used: u8,
     pub(super) norm: Option<Norm32>,
+    /// A packed `2_10_10_10` word the shader unpacks.
+    pub(super) packed: Option<Packed>,
 }
 
 /// Where one shader input's values come from.

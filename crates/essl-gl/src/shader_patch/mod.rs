@@ -35,6 +35,15 @@ pub(crate) enum Norm32 {
     Unsigned,
 }
 
+/// A packed `2_10_10_10` vertex word: x, y, z in 10 bits each from bit 0, w in the top 2.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub(crate) struct Packed {
+    /// `INT_2_10_10_10_REV` (two's complement fields) rather than `UNSIGNED_…`.
+    pub(crate) signed: bool,
+    /// Scaled to [0, 1] (or [−1, 1]) as GL normalizes.
+    pub(crate) normalized: bool,
+}
+
 /// How one vertex input is fed, when that differs from what the shader declares.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub(crate) struct InputPatch {
@@ -46,6 +55,8 @@ pub(crate) struct InputPatch {
     /// The components that hold data (3 for a 3-component attribute read as 4).
     pub(crate) used: u8,
     pub(crate) norm: Option<Norm32>,
+    /// A packed word the wrapper takes apart into four floats.
+    pub(crate) packed: Option<Packed>,
 }
 
 pub(super) fn scalar(kind: ValueKind) -> Scalar {
@@ -214,12 +225,13 @@ pub(crate) fn wrap_entry_point(
             continue;
         };
         let fed_ty = shape_type(&mut m, p.fed_kind, p.fed_count);
+        let vec4 = shape_type(&mut m, ValueKind::Float, 4);
         arguments.push(FunctionArgument {
             name: arg.name.clone(),
             ty: fed_ty,
             binding: arg.binding.clone(),
         });
-        call_args.push(b.convert_input(i as u32, arg.ty, p, shape));
+        call_args.push(b.convert_input(i as u32, arg.ty, p, shape, vec4));
     }
 
     let result_expr = original
@@ -290,8 +302,13 @@ impl Builder {
         declared_ty: Handle<Type>,
         p: &InputPatch,
         (kind, n): (ValueKind, u8),
+        vec4: Handle<Type>,
     ) -> Handle<Expression> {
         let mut v = self.plain(Expression::FunctionArgument(index));
+        if let Some(packed) = p.packed {
+            let unpacked = self.unpack(v, packed, vec4);
+            return self.take(unpacked, 4, n);
+        }
         let k = p.used.min(n).min(p.fed_count);
         v = self.take(v, p.fed_count, k);
         if p.fed_kind != kind {
@@ -460,6 +477,7 @@ mod tests {
                 fed_count: 4,
                 used: 3,
                 norm: None,
+                packed: None,
             },
             InputPatch {
                 location: 1,
@@ -467,6 +485,7 @@ mod tests {
                 fed_count: 2,
                 used: 2,
                 norm: Some(Norm32::Unsigned),
+                packed: None,
             },
             InputPatch {
                 location: 2,
@@ -474,6 +493,7 @@ mod tests {
                 fed_count: 4,
                 used: 4,
                 norm: None,
+                packed: None,
             },
         ];
         validate(&wrap_entry_point(&m, &patches, false));
@@ -494,5 +514,64 @@ mod tests {
         .unwrap();
         assert!(output_needs_widening(&m));
         validate(&wrap_entry_point(&m, &[], true));
+    }
+}
+
+impl Builder {
+    /// The four components of a packed `2_10_10_10` word `v` (an `i32` or `u32`) as a `vec4`
+    /// of type `vec4`: each field extracted (sign-extended for the signed type), converted,
+    /// and scaled as GL normalizes it (`c / (2ᵇ − 1)`, or `max(c / (2ᵇ⁻¹ − 1), −1)`).
+    fn unpack(
+        &mut self,
+        v: Handle<Expression>,
+        p: Packed,
+        vec4: Handle<Type>,
+    ) -> Handle<Expression> {
+        let lit = |b: &mut Self, l: Literal| b.plain(Expression::Literal(l));
+        let mut components = Vec::new();
+        for (offset, bits) in [(0u32, 10u32), (10, 10), (20, 10), (30, 2)] {
+            let o = lit(self, Literal::U32(offset));
+            let c = lit(self, Literal::U32(bits));
+            let field = self.emit(Expression::Math {
+                fun: MathFunction::ExtractBits,
+                arg: v,
+                arg1: Some(o),
+                arg2: Some(c),
+                arg3: None,
+            });
+            let mut f = self.emit(Expression::As {
+                expr: field,
+                kind: naga::ScalarKind::Float,
+                convert: Some(4),
+            });
+            if p.normalized {
+                let max = if p.signed {
+                    (1u32 << (bits - 1)) - 1
+                } else {
+                    (1u32 << bits) - 1
+                };
+                let d = lit(self, Literal::F32(max as f32));
+                f = self.emit(Expression::Binary {
+                    op: BinaryOperator::Divide,
+                    left: f,
+                    right: d,
+                });
+                if p.signed {
+                    let lo = lit(self, Literal::F32(-1.0));
+                    f = self.emit(Expression::Math {
+                        fun: MathFunction::Max,
+                        arg: f,
+                        arg1: Some(lo),
+                        arg2: None,
+                        arg3: None,
+                    });
+                }
+            }
+            components.push(f);
+        }
+        self.emit(Expression::Compose {
+            ty: vec4,
+            components,
+        })
     }
 }

@@ -119,6 +119,8 @@ impl Context {
             return;
         }
         let float_types = [
+            gl::INT_2_10_10_10_REV,
+            gl::UNSIGNED_INT_2_10_10_10_REV,
             gl::BYTE,
             gl::UNSIGNED_BYTE,
             gl::SHORT,
@@ -187,18 +189,18 @@ impl Context {
         let Some(i) = self.attrib_index(index, function) else {
             return;
         };
-        if ty == gl::INT_2_10_10_10_REV || ty == gl::UNSIGNED_INT_2_10_10_10_REV {
-            return self.error(
-                gl::INVALID_ENUM,
-                function,
-                "packed 2_10_10_10 types are not supported by essl-gl",
-            );
-        }
         if !types.contains(&ty) {
             return self.error(gl::INVALID_ENUM, function, format_args!("type 0x{ty:04X}"));
         }
         if !(1..=4).contains(&size) {
             return self.error(gl::INVALID_VALUE, function, "size must be 1, 2, 3 or 4");
+        }
+        if packed(ty) && size != 4 {
+            return self.error(
+                gl::INVALID_OPERATION,
+                function,
+                "a packed 2_10_10_10 type has size 4",
+            );
         }
         if !(0..=255).contains(&stride) {
             return self.error(
@@ -349,4 +351,10 @@ impl Context {
     pub fn vertex_attrib_i4ui(&mut self, index: u32, x: u32, y: u32, z: u32, w: u32) {
         self.set_generic(index, GenericAttrib::Uint([x, y, z, w]), "vertexAttribI4ui");
     }
+}
+
+/// Whether `ty` packs four components in 32 bits (`INT_2_10_10_10_REV`,
+/// `UNSIGNED_INT_2_10_10_10_REV`).
+pub(crate) fn packed(ty: u32) -> bool {
+    matches!(ty, gl::INT_2_10_10_10_REV | gl::UNSIGNED_INT_2_10_10_10_REV)
 }

@@ -41,6 +41,9 @@ impl Default for VertexAttrib {
 impl VertexAttrib {
     /// Bytes of one element.
     pub(crate) fn element_size(&self) -> u64 {
+        if super::packed(self.ty) {
+            return 4; // four components in one 32-bit word
+        }
         self.size as u64 * type_size(self.ty).unwrap_or(4) as u64
     }
 
@@ -95,7 +98,11 @@ pub(crate) fn type_size(ty: u32) -> Option<u32> {
     match ty {
         gl::BYTE | gl::UNSIGNED_BYTE => Some(1),
         gl::SHORT | gl::UNSIGNED_SHORT | gl::HALF_FLOAT => Some(2),
-        gl::INT | gl::UNSIGNED_INT | gl::FLOAT => Some(4),
+        gl::INT
+        | gl::UNSIGNED_INT
+        | gl::FLOAT
+        | gl::INT_2_10_10_10_REV
+        | gl::UNSIGNED_INT_2_10_10_10_REV => Some(4),
         _ => None,
     }
 }

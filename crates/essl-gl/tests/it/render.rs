@@ -910,3 +910,42 @@ fn anisotropy_waits_for_its_extension_and_checks_its_range() {
     assert_eq!(ctx.get_error(), gl::NO_ERROR);
     assert_eq!(common::pixel(&mut ctx, 1, 1), [255, 255, 255, 255]);
 }
+
+#[test]
+fn packed_2_10_10_10_attributes_unpack_and_normalize_as_gl() {
+    let Some(mut ctx) = common::context(4, 4) else {
+        return;
+    };
+    let vs = "#version 300 es\nin vec2 p; in vec4 c; out vec4 v;\
+        void main() { v = c; gl_Position = vec4(p, 0.0, 1.0); }";
+    let fs = "#version 300 es\nprecision highp float; in vec4 v; out vec4 o;\
+        void main() { o = vec4(v.x, -v.y, v.z, v.w); }";
+    let prog = common::program(&mut ctx, vs, fs);
+    ctx.bind_attrib_location(prog, 0, "p");
+    ctx.bind_attrib_location(prog, 1, "c");
+    ctx.link_program(prog);
+    ctx.use_program(Some(prog));
+    common::float_attribute(&mut ctx, 0, 2, &common::QUAD);
+    // x = 511 → 1, y = −512 → −1 (clamped), z = 0, w = 1: (1, 1, 0, 1) after the shader.
+    let field = |v: i32, bits: u32| (v as u32) & ((1 << bits) - 1);
+    let word = field(511, 10) | field(-512, 10) << 10 | field(0, 10) << 20 | field(1, 2) << 30;
+    let b = ctx.create_buffer();
+    ctx.bind_buffer(gl::ARRAY_BUFFER, Some(b));
+    ctx.buffer_data(gl::ARRAY_BUFFER, &[word; 6], gl::STATIC_DRAW);
+    ctx.vertex_attrib_pointer(1, 3, gl::INT_2_10_10_10_REV, true, 0, 0);
+    assert_eq!(ctx.get_error(), gl::INVALID_OPERATION, "size 3");
+    ctx.vertex_attrib_pointer(1, 4, gl::INT_2_10_10_10_REV, true, 0, 0);
+    ctx.enable_vertex_attrib_array(1);
+    common::clear_black(&mut ctx);
+    ctx.draw_arrays(gl::TRIANGLES, 0, 6);
+    assert_eq!(ctx.get_error(), gl::NO_ERROR);
+    assert_eq!(common::pixel(&mut ctx, 1, 1), [255, 255, 0, 255]);
+    // Unsigned, not normalized: 1, 0, 0, 1 read as floats (1, −0, 0, 1).
+    let word = 1u32 | 1 << 30;
+    ctx.buffer_data(gl::ARRAY_BUFFER, &[word; 6], gl::STATIC_DRAW);
+    ctx.vertex_attrib_pointer(1, 4, gl::UNSIGNED_INT_2_10_10_10_REV, false, 0, 0);
+    common::clear_black(&mut ctx);
+    ctx.draw_arrays(gl::TRIANGLES, 0, 6);
+    assert_eq!(ctx.get_error(), gl::NO_ERROR);
+    assert_eq!(common::pixel(&mut ctx, 1, 1), [255, 0, 0, 255]);
+}
