@@ -76,7 +76,7 @@ impl SamplerParams {
             gl::TEXTURE_COMPARE_FUNC => is_compare_func(e),
             gl::TEXTURE_MIN_LOD | gl::TEXTURE_MAX_LOD => true,
             crate::extensions::TEXTURE_MAX_ANISOTROPY_EXT => {
-                if !(value >= 1.0) {
+                if value.is_nan() || value < 1.0 {
                     return Err(ParamError::Range);
                 }
                 self.max_anisotropy = value;

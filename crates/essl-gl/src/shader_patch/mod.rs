@@ -450,6 +450,65 @@ fn widen_struct(
     (value, struct_ty)
 }
 
+impl Builder {
+    /// The four components of a packed `2_10_10_10` word `v` (an `i32` or `u32`) as a `vec4`
+    /// of type `vec4`: each field extracted (sign-extended for the signed type), converted,
+    /// and scaled as GL normalizes it (`c / (2ᵇ − 1)`, or `max(c / (2ᵇ⁻¹ − 1), −1)`).
+    fn unpack(
+        &mut self,
+        v: Handle<Expression>,
+        p: Packed,
+        vec4: Handle<Type>,
+    ) -> Handle<Expression> {
+        let lit = |b: &mut Self, l: Literal| b.plain(Expression::Literal(l));
+        let mut components = Vec::new();
+        for (offset, bits) in [(0u32, 10u32), (10, 10), (20, 10), (30, 2)] {
+            let o = lit(self, Literal::U32(offset));
+            let c = lit(self, Literal::U32(bits));
+            let field = self.emit(Expression::Math {
+                fun: MathFunction::ExtractBits,
+                arg: v,
+                arg1: Some(o),
+                arg2: Some(c),
+                arg3: None,
+            });
+            let mut f = self.emit(Expression::As {
+                expr: field,
+                kind: naga::ScalarKind::Float,
+                convert: Some(4),
+            });
+            if p.normalized {
+                let max = if p.signed {
+                    (1u32 << (bits - 1)) - 1
+                } else {
+                    (1u32 << bits) - 1
+                };
+                let d = lit(self, Literal::F32(max as f32));
+                f = self.emit(Expression::Binary {
+                    op: BinaryOperator::Divide,
+                    left: f,
+                    right: d,
+                });
+                if p.signed {
+                    let lo = lit(self, Literal::F32(-1.0));
+                    f = self.emit(Expression::Math {
+                        fun: MathFunction::Max,
+                        arg: f,
+                        arg1: Some(lo),
+                        arg2: None,
+                        arg3: None,
+                    });
+                }
+            }
+            components.push(f);
+        }
+        self.emit(Expression::Compose {
+            ty: vec4,
+            components,
+        })
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -514,64 +573,5 @@ mod tests {
         .unwrap();
         assert!(output_needs_widening(&m));
         validate(&wrap_entry_point(&m, &[], true));
-    }
-}
-
-impl Builder {
-    /// The four components of a packed `2_10_10_10` word `v` (an `i32` or `u32`) as a `vec4`
-    /// of type `vec4`: each field extracted (sign-extended for the signed type), converted,
-    /// and scaled as GL normalizes it (`c / (2ᵇ − 1)`, or `max(c / (2ᵇ⁻¹ − 1), −1)`).
-    fn unpack(
-        &mut self,
-        v: Handle<Expression>,
-        p: Packed,
-        vec4: Handle<Type>,
-    ) -> Handle<Expression> {
-        let lit = |b: &mut Self, l: Literal| b.plain(Expression::Literal(l));
-        let mut components = Vec::new();
-        for (offset, bits) in [(0u32, 10u32), (10, 10), (20, 10), (30, 2)] {
-            let o = lit(self, Literal::U32(offset));
-            let c = lit(self, Literal::U32(bits));
-            let field = self.emit(Expression::Math {
-                fun: MathFunction::ExtractBits,
-                arg: v,
-                arg1: Some(o),
-                arg2: Some(c),
-                arg3: None,
-            });
-            let mut f = self.emit(Expression::As {
-                expr: field,
-                kind: naga::ScalarKind::Float,
-                convert: Some(4),
-            });
-            if p.normalized {
-                let max = if p.signed {
-                    (1u32 << (bits - 1)) - 1
-                } else {
-                    (1u32 << bits) - 1
-                };
-                let d = lit(self, Literal::F32(max as f32));
-                f = self.emit(Expression::Binary {
-                    op: BinaryOperator::Divide,
-                    left: f,
-                    right: d,
-                });
-                if p.signed {
-                    let lo = lit(self, Literal::F32(-1.0));
-                    f = self.emit(Expression::Math {
-                        fun: MathFunction::Max,
-                        arg: f,
-                        arg1: Some(lo),
-                        arg2: None,
-                        arg3: None,
-                    });
-                }
-            }
-            components.push(f);
-        }
-        self.emit(Expression::Compose {
-            ty: vec4,
-            components,
-        })
     }
 }
