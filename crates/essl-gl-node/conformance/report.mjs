@@ -14,7 +14,7 @@ import { existsSync, mkdirSync, readFileSync, writeFileSync } from 'node:fs';
 import { arch, cpus, platform } from 'node:os';
 import { dirname, join } from 'node:path';
 import { fileURLToPath } from 'node:url';
-import { LEFT_OUT } from './list.mjs';
+import { LEFT_OUT, LEFT_OUT_PAGES } from './list.mjs';
 
 const here = dirname(fileURLToPath(import.meta.url));
 export const SECTION = '## The WebGL conformance suite in Node (essl-gl-node)';
@@ -121,12 +121,15 @@ function main() {
     console.log(`${ctx}: ${t.total.matched}/${t.total.chromium} (${pct(t.total.matched, t.total.chromium)}), identical pages ${t.total.identical}/${t.total.pages}, crashed ${t.total.crashed}`);
   }
   if (a.markdown && parts.length) {
-    const leftOut = LEFT_OUT.map(([p, why]) => `- \`${p}*\`: ${why}`).join('\n');
+    const leftOut = [
+      ...LEFT_OUT.map(([p, why]) => `- \`${p}*\`: ${why}`),
+      ...LEFT_OUT_PAGES.map(([re, why]) => `- pages matching \`${re.source.replace(/\\/g, '')}\`: ${why}`),
+    ].join('\n');
     const sample = a.every
       ? `This run took every ${a.every}th page of each context's list (\`run.mjs --every ${a.every}\`, the first page, the ${Number(a.every) + 1}th, …), in one invocation of \`scripts/gl-node-conformance.sh --every ${a.every}\`: Chromium's pages first, then essl-gl's, context by context.\n`
       : '';
     const where = machine();
-    const section = `${SECTION}\n\n${a.intro ? readFileSync(a.intro, 'utf8') : ''}\n${sample}${where}\n\n${parts.join('\n')}\nFolders left out (in both contexts), and why:\n\n${leftOut}\n`;
+    const section = `${SECTION}\n\n${a.intro ? readFileSync(a.intro, 'utf8') : ''}\n${sample}${where}\n\n${parts.join('\n')}\nFolders and pages left out (in both contexts), and why:\n\n${leftOut}\n`;
     const file = a.markdown;
     const old = existsSync(file) ? readFileSync(file, 'utf8') : '';
     const at = old.indexOf(SECTION);

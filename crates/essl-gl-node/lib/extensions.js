@@ -50,6 +50,7 @@ const CONSTANTS = {
     COMPRESSED_SRGB8_ALPHA8_ETC2_EAC: 0x9279,
   },
   WEBGL_compressed_texture_etc1: { COMPRESSED_RGB_ETC1_WEBGL: 0x8d64 },
+  WEBGL_depth_texture: { UNSIGNED_INT_24_8_WEBGL: 0x84fa },
   EXT_texture_filter_anisotropic: {
     TEXTURE_MAX_ANISOTROPY_EXT: 0x84fe,
     MAX_TEXTURE_MAX_ANISOTROPY_EXT: 0x84ff,

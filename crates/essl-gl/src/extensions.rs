@@ -115,6 +115,8 @@ pub enum Extension {
     OesTextureHalfFloatLinear,
     /// `WEBGL_color_buffer_float` (WebGL 1).
     WebglColorBufferFloat,
+    /// `WEBGL_depth_texture` (WebGL 1).
+    WebglDepthTexture,
     /// `WEBGL_compressed_texture_s3tc`.
     CompressedS3tc,
     /// `WEBGL_compressed_texture_s3tc_srgb`.
@@ -150,6 +152,7 @@ impl Extension {
             Extension::OesTextureHalfFloat => "OES_texture_half_float",
             Extension::OesTextureHalfFloatLinear => "OES_texture_half_float_linear",
             Extension::WebglColorBufferFloat => "WEBGL_color_buffer_float",
+            Extension::WebglDepthTexture => "WEBGL_depth_texture",
             Extension::CompressedS3tc => "WEBGL_compressed_texture_s3tc",
             Extension::CompressedS3tcSrgb => "WEBGL_compressed_texture_s3tc_srgb",
             Extension::CompressedEtc => "WEBGL_compressed_texture_etc",

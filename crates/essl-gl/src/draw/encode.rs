@@ -322,6 +322,15 @@ impl Context {
                     let mut key = sample_view_key(target, g.anchor, c.base, c.levels, &c.format);
                     key.dimension = plan.dim;
                     let view = g.view(key);
+                    let mut sampling = sampling;
+                    if c.format.has_depth() && !shadow {
+                        // A depth value is not filtered: WebGL 1's LINEAR reads as NEAREST.
+                        sampling.mag_filter = gl::NEAREST;
+                        sampling.min_filter = match sampling.min_filter {
+                            gl::NEAREST | gl::LINEAR => gl::NEAREST,
+                            _ => gl::NEAREST_MIPMAP_NEAREST,
+                        };
+                    }
                     let key = crate::texture::TextureObject::sampler_key(&sampling, shadow);
                     let sampler = self.caches.samplers.get(&gpu.device, key);
                     slot_bindings.push(SlotBinding {

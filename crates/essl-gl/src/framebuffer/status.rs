@@ -68,11 +68,18 @@ impl Context {
             let Some(info) = self.image_info(a) else {
                 return gl::FRAMEBUFFER_INCOMPLETE_ATTACHMENT;
             };
-            let fits = match point {
+            let mut fits = match point {
                 gl::DEPTH_ATTACHMENT => info.format.has_depth(),
                 gl::STENCIL_ATTACHMENT => info.format.has_stencil(),
                 _ => info.format.color_renderable(float_ok),
             };
+            // WebGL 1 (§6.6): a depth-and-stencil image goes to DEPTH_STENCIL_ATTACHMENT, not
+            // to DEPTH_ATTACHMENT alone. (A stencil point holding one alone is left complete:
+            // the points share slots here, and that is what a DEPTH_STENCIL attachment leaves
+            // when a later DEPTH_ATTACHMENT is removed.)
+            if self.webgl1.on && point == gl::DEPTH_ATTACHMENT && info.format.has_stencil() {
+                fits &= f.depth == f.stencil;
+            }
             if !fits || info.width == 0 || info.height == 0 {
                 return gl::FRAMEBUFFER_INCOMPLETE_ATTACHMENT;
             }

@@ -201,8 +201,10 @@ impl TextureObject {
         // Depth formats filter only when compared (ES 3.0 §3.8.13).
         let compared = format.has_depth() && p.compare_mode == gl::COMPARE_REF_TO_TEXTURE;
         let half = format.comp == super::format::Comp::F16 && format.packing == Packing::None;
+        // WebGL 1's depth textures (WEBGL_depth_texture) take LINEAR, read as NEAREST.
         let filterable = (format.filterable() && (half_linear || !half))
             || compared
+            || (webgl1 && format.has_depth())
             || (float_linear
                 && format.comp == super::format::Comp::F32
                 && format.packing == super::format::Packing::None);

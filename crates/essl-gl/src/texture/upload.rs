@@ -400,7 +400,18 @@ impl Context {
         if border != 0 {
             return self.error(gl::INVALID_VALUE, function, "border must be 0");
         }
-        let f = match internal_format(internalformat as u32) {
+        let sized = self.webgl1_depth_internal(internalformat as u32, ty);
+        let f = match internal_format(sized) {
+            Ok(f) if f.has_depth() && self.webgl1.on => {
+                let data = pixels.is_some();
+                if !self.webgl1_depth_image_ok(target, level, data, function) {
+                    return;
+                }
+                InternalFormat {
+                    gl: internalformat as u32,
+                    ..f
+                }
+            }
             Ok(f) if f.texture_format() => self.webgl1_float_format(f, ty),
             Ok(_) => {
                 return self.error(
@@ -623,6 +634,13 @@ impl Context {
             || offset[2] as u64 + size[2] as u64 > l.depth as u64
         {
             return self.error(gl::INVALID_VALUE, function, "region outside the level");
+        }
+        if self.webgl1.on && l.format.has_depth() {
+            return self.error(
+                gl::INVALID_OPERATION,
+                function,
+                "a WebGL 1 depth texture takes no data",
+            );
         }
         if !self.check_format(&l.format, format, ty, function) {
             return;

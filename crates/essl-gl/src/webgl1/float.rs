@@ -40,12 +40,16 @@ impl Context {
             gl::RGB,
             gl::RGBA,
         ];
-        if !formats.contains(&format) {
+        let w = &self.webgl1;
+        let depth = w.depth_texture && matches!(format, gl::DEPTH_COMPONENT | gl::DEPTH_STENCIL);
+        if !formats.contains(&format) && !depth {
             self.error(gl::INVALID_ENUM, function, "not a format of WebGL 1");
             return None;
         }
-        let w = &self.webgl1;
         let ty = match ty {
+            // WEBGL_depth_texture's types.
+            gl::UNSIGNED_SHORT | gl::UNSIGNED_INT if depth && format == gl::DEPTH_COMPONENT => ty,
+            gl::UNSIGNED_INT_24_8 if depth && format == gl::DEPTH_STENCIL => ty,
             gl::UNSIGNED_BYTE
             | gl::UNSIGNED_SHORT_5_6_5
             | gl::UNSIGNED_SHORT_4_4_4_4

@@ -39,11 +39,12 @@ pub(crate) struct Webgl1 {
     pub(crate) texture_half_float_linear: bool,
     pub(crate) color_buffer_float: bool,
     pub(crate) color_buffer_half_float: bool,
+    pub(crate) depth_texture: bool,
 }
 
 /// The extensions a WebGL 1 context offers (`EXT_float_blend` and `OES_texture_float_linear`
 /// too, where the adapter blends and filters 32-bit floats).
-pub(crate) const WEBGL1_EXTENSIONS: [Extension; 13] = [
+pub(crate) const WEBGL1_EXTENSIONS: [Extension; 14] = [
     Extension::AngleInstancedArrays,
     Extension::ColorBufferHalfFloat,
     Extension::ExtBlendMinmax,
@@ -57,6 +58,7 @@ pub(crate) const WEBGL1_EXTENSIONS: [Extension; 13] = [
     Extension::OesVertexArrayObject,
     Extension::WebglColorBufferFloat,
     Extension::WebglDrawBuffers,
+    Extension::WebglDepthTexture,
 ];
 
 impl Context {
@@ -95,6 +97,7 @@ impl Context {
                 w.color_buffer_half_float = true;
             }
             Extension::OesTextureHalfFloatLinear => w.texture_half_float_linear = true,
+            Extension::WebglDepthTexture => w.depth_texture = true,
             Extension::TextureFloatLinear => self.extensions.texture_float_linear = true,
             _ => {}
         }
@@ -133,6 +136,7 @@ impl Context {
             }
             gl::RGBA32F => w.color_buffer_float,
             gl::RGBA16F | gl::RGB16F => w.color_buffer_half_float,
+            gl::UNSIGNED_INT_24_8 => w.depth_texture,
             gl::MAX_COLOR_ATTACHMENTS | gl::MAX_DRAW_BUFFERS => w.draw_buffers,
             v if (gl::COLOR_ATTACHMENT1..=gl::COLOR_ATTACHMENT15).contains(&v) => w.draw_buffers,
             v if (gl::DRAW_BUFFER0..=gl::DRAW_BUFFER15).contains(&v) => w.draw_buffers,
@@ -208,6 +212,43 @@ impl Context {
             );
             return true;
         }
+        false
+    }
+
+    /// `WEBGL_depth_texture`: the sized format a WebGL 1 `texImage2D` of `DEPTH_COMPONENT`
+    /// (`UNSIGNED_SHORT` → 16 bits, `UNSIGNED_INT` → 24) or `DEPTH_STENCIL`
+    /// (`UNSIGNED_INT_24_8_WEBGL`) allocates once the extension is on; `internal` otherwise.
+    pub(crate) fn webgl1_depth_internal(&self, internal: u32, ty: u32) -> u32 {
+        if !(self.webgl1.on && self.webgl1.depth_texture) {
+            return internal;
+        }
+        match (internal, ty) {
+            (gl::DEPTH_COMPONENT, gl::UNSIGNED_SHORT) => gl::DEPTH_COMPONENT16,
+            (gl::DEPTH_COMPONENT, gl::UNSIGNED_INT) => gl::DEPTH_COMPONENT24,
+            (gl::DEPTH_STENCIL, gl::UNSIGNED_INT_24_8) => gl::DEPTH24_STENCIL8,
+            _ => internal,
+        }
+    }
+
+    /// `WEBGL_depth_texture`'s rules for a WebGL 1 depth texture image: a `TEXTURE_2D`, level
+    /// 0, no data (`INVALID_OPERATION`); whether the call may go on.
+    pub(crate) fn webgl1_depth_image_ok(
+        &mut self,
+        target: u32,
+        level: i32,
+        has_data: bool,
+        function: &str,
+    ) -> bool {
+        let why = if target != gl::TEXTURE_2D {
+            "a WebGL 1 depth texture is a TEXTURE_2D"
+        } else if level != 0 {
+            "a WebGL 1 depth texture has level 0 only"
+        } else if has_data {
+            "a WebGL 1 depth texture takes no data (null)"
+        } else {
+            return true;
+        };
+        self.error(gl::INVALID_OPERATION, function, why);
         false
     }
 }

@@ -271,3 +271,119 @@ fn an_rgb_half_float_attachment_reads_back_alpha_1() {
         Some(essl_gl::Parameter::Enum(HALF_FLOAT_OES))
     );
 }
+
+#[test]
+fn webgl1_depth_textures_with_their_extension() {
+    let Some(mut ctx) = webgl1(4, 4) else {
+        return;
+    };
+    let t = ctx.create_texture();
+    ctx.bind_texture(gl::TEXTURE_2D, Some(t));
+    let depth = |ctx: &mut Context, level: i32, data: Option<&[u16]>| {
+        let (f, ty) = (gl::DEPTH_COMPONENT, gl::UNSIGNED_SHORT);
+        ctx.tex_image_2d(gl::TEXTURE_2D, level, f as i32, 4, 4, 0, f, ty, data);
+        ctx.get_error()
+    };
+    assert_eq!(
+        depth(&mut ctx, 0, None),
+        gl::INVALID_ENUM,
+        "before WEBGL_depth_texture"
+    );
+    assert!(ctx.get_extension("WEBGL_depth_texture").is_some());
+    assert_eq!(
+        depth(&mut ctx, 0, Some(&[0; 16])),
+        gl::INVALID_OPERATION,
+        "data"
+    );
+    assert_eq!(depth(&mut ctx, 1, None), gl::INVALID_OPERATION, "level 1");
+    assert_eq!(depth(&mut ctx, 0, None), gl::NO_ERROR);
+    for filter in [gl::TEXTURE_MIN_FILTER, gl::TEXTURE_MAG_FILTER] {
+        ctx.tex_parameteri(gl::TEXTURE_2D, filter, gl::LINEAR as i32);
+    }
+    // Rendered into as a depth attachment, then sampled: the cleared depth in red.
+    let fb = ctx.create_framebuffer();
+    ctx.bind_framebuffer(gl::FRAMEBUFFER, Some(fb));
+    let colour = ctx.create_texture();
+    ctx.bind_texture(gl::TEXTURE_2D, Some(colour));
+    ctx.tex_image_2d::<u8>(
+        gl::TEXTURE_2D,
+        0,
+        gl::RGBA as i32,
+        4,
+        4,
+        0,
+        gl::RGBA,
+        gl::UNSIGNED_BYTE,
+        None,
+    );
+    ctx.framebuffer_texture_2d(
+        gl::FRAMEBUFFER,
+        gl::COLOR_ATTACHMENT0,
+        gl::TEXTURE_2D,
+        Some(colour),
+        0,
+    );
+    ctx.framebuffer_texture_2d(
+        gl::FRAMEBUFFER,
+        gl::DEPTH_ATTACHMENT,
+        gl::TEXTURE_2D,
+        Some(t),
+        0,
+    );
+    assert_eq!(
+        ctx.check_framebuffer_status(gl::FRAMEBUFFER),
+        gl::FRAMEBUFFER_COMPLETE
+    );
+    ctx.clear_depth(0.5);
+    ctx.clear(gl::DEPTH_BUFFER_BIT);
+    ctx.bind_framebuffer(gl::FRAMEBUFFER, None);
+    ctx.bind_texture(gl::TEXTURE_2D, Some(t));
+    let [r, _, _, a] = sample(&mut ctx);
+    assert!((126..=129).contains(&r) && a == 255, "{r} {a}");
+    // A depth-and-stencil texture belongs at DEPTH_STENCIL_ATTACHMENT, not DEPTH_ATTACHMENT.
+    let ds = ctx.create_texture();
+    ctx.bind_texture(gl::TEXTURE_2D, Some(ds));
+    let f = gl::DEPTH_STENCIL;
+    ctx.tex_image_2d::<u32>(
+        gl::TEXTURE_2D,
+        0,
+        f as i32,
+        4,
+        4,
+        0,
+        f,
+        gl::UNSIGNED_INT_24_8,
+        None,
+    );
+    assert_eq!(ctx.get_error(), gl::NO_ERROR);
+    ctx.bind_framebuffer(gl::FRAMEBUFFER, Some(fb));
+    ctx.framebuffer_texture_2d(
+        gl::FRAMEBUFFER,
+        gl::DEPTH_ATTACHMENT,
+        gl::TEXTURE_2D,
+        Some(ds),
+        0,
+    );
+    assert_ne!(
+        ctx.check_framebuffer_status(gl::FRAMEBUFFER),
+        gl::FRAMEBUFFER_COMPLETE
+    );
+    ctx.framebuffer_texture_2d(
+        gl::FRAMEBUFFER,
+        gl::DEPTH_ATTACHMENT,
+        gl::TEXTURE_2D,
+        None,
+        0,
+    );
+    ctx.framebuffer_texture_2d(
+        gl::FRAMEBUFFER,
+        gl::DEPTH_STENCIL_ATTACHMENT,
+        gl::TEXTURE_2D,
+        Some(ds),
+        0,
+    );
+    assert_eq!(
+        ctx.check_framebuffer_status(gl::FRAMEBUFFER),
+        gl::FRAMEBUFFER_COMPLETE
+    );
+}
