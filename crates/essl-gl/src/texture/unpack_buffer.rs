@@ -198,24 +198,13 @@ impl Context {
         border: i32,
         data: &[u8],
     ) {
-        const F: &str = "compressedTexImage2D";
-        if !matches!(
-            target,
-            gl::TEXTURE_2D | gl::TEXTURE_CUBE_MAP_POSITIVE_X..=gl::TEXTURE_CUBE_MAP_NEGATIVE_Z
-        ) {
-            return self.error(gl::INVALID_ENUM, F, format_args!("target 0x{target:04X}"));
-        }
-        let src = Src::Client(data);
-        self.compressed_call(
-            target,
-            level,
-            internalformat,
-            [width, height, 1],
-            None,
-            border,
-            src,
-            F,
-        );
+        let n = [
+            internalformat as i64,
+            width as i64,
+            height as i64,
+            border as i64,
+        ];
+        self.compressed_dispatch("compressedTexImage2D", target, level, &n, Src::Client(data));
     }
 
     /// `compressedTexImage3D`: a level of a 2D array texture from compressed blocks (3D
@@ -232,21 +221,14 @@ impl Context {
         border: i32,
         data: &[u8],
     ) {
-        const F: &str = "compressedTexImage3D";
-        if !matches!(target, gl::TEXTURE_3D | gl::TEXTURE_2D_ARRAY) {
-            return self.error(gl::INVALID_ENUM, F, format_args!("target 0x{target:04X}"));
-        }
-        let src = Src::Client(data);
-        self.compressed_call(
-            target,
-            level,
-            internalformat,
-            [width, height, depth],
-            None,
-            border,
-            src,
-            F,
-        );
+        let n = [
+            internalformat as i64,
+            width as i64,
+            height as i64,
+            depth as i64,
+            border as i64,
+        ];
+        self.compressed_dispatch("compressedTexImage3D", target, level, &n, Src::Client(data));
     }
 
     /// `compressedTexSubImage2D`: a region of a compressed level, in whole blocks.
@@ -262,23 +244,19 @@ impl Context {
         format: u32,
         data: &[u8],
     ) {
-        const F: &str = "compressedTexSubImage2D";
-        if !matches!(
-            target,
-            gl::TEXTURE_2D | gl::TEXTURE_CUBE_MAP_POSITIVE_X..=gl::TEXTURE_CUBE_MAP_NEGATIVE_Z
-        ) {
-            return self.error(gl::INVALID_ENUM, F, format_args!("target 0x{target:04X}"));
-        }
-        let offset = Some([xoffset, yoffset, 0]);
-        self.compressed_call(
+        let n = [
+            xoffset as i64,
+            yoffset as i64,
+            width as i64,
+            height as i64,
+            format as i64,
+        ];
+        self.compressed_dispatch(
+            "compressedTexSubImage2D",
             target,
             level,
-            format,
-            [width, height, 1],
-            offset,
-            0,
+            &n,
             Src::Client(data),
-            F,
         );
     }
 
@@ -297,20 +275,15 @@ impl Context {
         format: u32,
         data: &[u8],
     ) {
-        const F: &str = "compressedTexSubImage3D";
-        if !matches!(target, gl::TEXTURE_3D | gl::TEXTURE_2D_ARRAY) {
-            return self.error(gl::INVALID_ENUM, F, format_args!("target 0x{target:04X}"));
-        }
-        let offset = Some([xoffset, yoffset, zoffset]);
-        self.compressed_call(
+        let region = [xoffset, yoffset, zoffset, width, height, depth].map(i64::from);
+        let mut n = region.to_vec();
+        n.push(format as i64);
+        self.compressed_dispatch(
+            "compressedTexSubImage3D",
             target,
             level,
-            format,
-            [width, height, depth],
-            offset,
-            0,
+            &n,
             Src::Client(data),
-            F,
         );
     }
 
@@ -328,59 +301,40 @@ impl Context {
         offset: i64,
     ) {
         let src = Src::Buffer { image_size, offset };
+        self.compressed_dispatch(function, target, level, numbers, src);
+    }
+
+    /// A compressed call by name: the target check, then the image or region it names.
+    fn compressed_dispatch(
+        &mut self,
+        function: &str,
+        target: u32,
+        level: i32,
+        numbers: &[i64],
+        src: Src,
+    ) {
         let n = |k: usize| numbers.get(k).copied().unwrap_or(0) as i32;
-        match function {
-            "compressedTexImage2D" => {
-                const F: &str = "compressedTexImage2D";
-                if !two_d(target) {
-                    return self.error(gl::INVALID_ENUM, F, format_args!("target 0x{target:04X}"));
-                }
-                self.compressed_call(
-                    target,
-                    level,
-                    n(0) as u32,
-                    [n(1), n(2), 1],
-                    None,
-                    n(3),
-                    src,
-                    F,
-                )
-            }
-            "compressedTexImage3D" => {
-                const F: &str = "compressedTexImage3D";
-                if !matches!(target, gl::TEXTURE_3D | gl::TEXTURE_2D_ARRAY) {
-                    return self.error(gl::INVALID_ENUM, F, format_args!("target 0x{target:04X}"));
-                }
-                let size = [n(1), n(2), n(3)];
-                self.compressed_call(target, level, n(0) as u32, size, None, n(4), src, F)
-            }
-            "compressedTexSubImage2D" => {
-                const F: &str = "compressedTexSubImage2D";
-                if !two_d(target) {
-                    return self.error(gl::INVALID_ENUM, F, format_args!("target 0x{target:04X}"));
-                }
-                let offset = Some([n(0), n(1), 0]);
-                self.compressed_call(
-                    target,
-                    level,
-                    n(4) as u32,
-                    [n(2), n(3), 1],
-                    offset,
-                    0,
-                    src,
-                    F,
-                )
-            }
-            _ => {
-                const F: &str = "compressedTexSubImage3D";
-                if !matches!(target, gl::TEXTURE_3D | gl::TEXTURE_2D_ARRAY) {
-                    return self.error(gl::INVALID_ENUM, F, format_args!("target 0x{target:04X}"));
-                }
-                let offset = Some([n(0), n(1), n(2)]);
-                let size = [n(3), n(4), n(5)];
-                self.compressed_call(target, level, n(6) as u32, size, offset, 0, src, F)
-            }
+        let f: &'static str = match function {
+            "compressedTexImage2D" => "compressedTexImage2D",
+            "compressedTexImage3D" => "compressedTexImage3D",
+            "compressedTexSubImage2D" => "compressedTexSubImage2D",
+            _ => "compressedTexSubImage3D",
+        };
+        let target_ok = if f.ends_with("3D") {
+            matches!(target, gl::TEXTURE_3D | gl::TEXTURE_2D_ARRAY)
+        } else {
+            two_d(target)
+        };
+        if !target_ok {
+            return self.error(gl::INVALID_ENUM, f, format_args!("target 0x{target:04X}"));
         }
+        let (format, size, offset, border) = match f {
+            "compressedTexImage2D" => (n(0), [n(1), n(2), 1], None, n(3)),
+            "compressedTexImage3D" => (n(0), [n(1), n(2), n(3)], None, n(4)),
+            "compressedTexSubImage2D" => (n(4), [n(2), n(3), 1], Some([n(0), n(1), 0]), 0),
+            _ => (n(6), [n(3), n(4), n(5)], Some([n(0), n(1), n(2)]), 0),
+        };
+        self.compressed_call(target, level, format as u32, size, offset, border, src, f);
     }
 
     #[allow(clippy::too_many_arguments)]
