@@ -9,8 +9,10 @@
 //! `COLOR_ATTACHMENT1_WEBGL`, `EXT_blend_minmax`'s `MIN_EXT`, …). Rules of WebGL 1 that are
 //! not about enums are checked where they apply: `vertexAttribPointer` takes the five
 //! WebGL 1 types, `drawElements` takes `UNSIGNED_INT` only with `OES_element_index_uint`,
-//! `texImage2D`'s internal format must be its format, and texture images of a
-//! non-power-of-two size take no mipmaps or repeat wrapping.
+//! `texImage2D`'s internal format must be its format, texture images of a
+//! non-power-of-two size take no mipmaps or repeat wrapping, and `WEBGL_depth_texture`'s depth
+//! images are level-0 `TEXTURE_2D`s without data, a depth-and-stencil one attached at
+//! `DEPTH_STENCIL_ATTACHMENT` only.
 
 mod enums;
 mod float;
