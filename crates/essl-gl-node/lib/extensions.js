@@ -51,6 +51,12 @@ const CONSTANTS = {
   },
   WEBGL_compressed_texture_etc1: { COMPRESSED_RGB_ETC1_WEBGL: 0x8d64 },
   WEBGL_depth_texture: { UNSIGNED_INT_24_8_WEBGL: 0x84fa },
+  EXT_sRGB: {
+    SRGB_EXT: 0x8c40,
+    SRGB_ALPHA_EXT: 0x8c42,
+    SRGB8_ALPHA8_EXT: 0x8c43,
+    FRAMEBUFFER_ATTACHMENT_COLOR_ENCODING_EXT: 0x8210,
+  },
   EXT_texture_filter_anisotropic: {
     TEXTURE_MAX_ANISOTROPY_EXT: 0x84fe,
     MAX_TEXTURE_MAX_ANISOTROPY_EXT: 0x84ff,

@@ -117,6 +117,8 @@ pub enum Extension {
     WebglColorBufferFloat,
     /// `WEBGL_depth_texture` (WebGL 1).
     WebglDepthTexture,
+    /// `EXT_sRGB` (WebGL 1).
+    ExtSrgb,
     /// `WEBGL_compressed_texture_s3tc`.
     CompressedS3tc,
     /// `WEBGL_compressed_texture_s3tc_srgb`.
@@ -153,6 +155,7 @@ impl Extension {
             Extension::OesTextureHalfFloatLinear => "OES_texture_half_float_linear",
             Extension::WebglColorBufferFloat => "WEBGL_color_buffer_float",
             Extension::WebglDepthTexture => "WEBGL_depth_texture",
+            Extension::ExtSrgb => "EXT_sRGB",
             Extension::CompressedS3tc => "WEBGL_compressed_texture_s3tc",
             Extension::CompressedS3tcSrgb => "WEBGL_compressed_texture_s3tc_srgb",
             Extension::CompressedEtc => "WEBGL_compressed_texture_etc",

@@ -52,6 +52,7 @@ impl Context {
         if !mipmappable
             || first.format.packing != super::format::Packing::None
             || first.format.base == super::compressed::COMPRESSED_BASE
+            || (self.webgl1.on && first.format.srgb)
         {
             return self.error(
                 gl::INVALID_OPERATION,

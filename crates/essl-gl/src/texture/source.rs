@@ -180,8 +180,11 @@ impl Context {
     /// checks with no data (their error).
     pub fn tex_image_source(&mut self, u: SourceUpload, source: ImageSource) {
         let complete = source.rgba.len() >= source.width as usize * source.height as usize * 4;
+        // WebGL 1's EXT_sRGB formats take the texels of RGB and RGBA.
+        let mut texels = u;
+        texels.format = self.webgl1_srgb(0, u.format).1;
         let converted = complete
-            .then(|| select(&source, &u, &self.pixel_store))
+            .then(|| select(&source, &texels, &self.pixel_store))
             .flatten()
             .unwrap_or_default();
         let array = pixel_array_type(u.ty).unwrap_or(ArrayType::Uint8);

@@ -112,6 +112,7 @@ impl Context {
         let Some(ty) = self.webgl1_image_type(F, internalformat, format, ty) else {
             return;
         };
+        let (internalformat, format) = self.webgl1_srgb(internalformat, format);
         if self.client_data_refused(F) {
             return;
         }
@@ -521,6 +522,7 @@ impl Context {
         let Some(ty) = self.webgl1_image_type(F, format as i32, format, ty) else {
             return;
         };
+        let (_, format) = self.webgl1_srgb(0, format);
         if self.client_data_refused(F) {
             return;
         }

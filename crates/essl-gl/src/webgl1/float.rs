@@ -42,7 +42,8 @@ impl Context {
         ];
         let w = &self.webgl1;
         let depth = w.depth_texture && matches!(format, gl::DEPTH_COMPONENT | gl::DEPTH_STENCIL);
-        if !formats.contains(&format) && !depth {
+        let srgb = w.srgb && matches!(format, super::SRGB_EXT | super::SRGB_ALPHA_EXT);
+        if !formats.contains(&format) && !depth && !srgb {
             self.error(gl::INVALID_ENUM, function, "not a format of WebGL 1");
             return None;
         }

@@ -42,11 +42,12 @@ pub(crate) struct Webgl1 {
     pub(crate) color_buffer_float: bool,
     pub(crate) color_buffer_half_float: bool,
     pub(crate) depth_texture: bool,
+    pub(crate) srgb: bool,
 }
 
 /// The extensions a WebGL 1 context offers (`EXT_float_blend` and `OES_texture_float_linear`
 /// too, where the adapter blends and filters 32-bit floats).
-pub(crate) const WEBGL1_EXTENSIONS: [Extension; 14] = [
+pub(crate) const WEBGL1_EXTENSIONS: [Extension; 15] = [
     Extension::AngleInstancedArrays,
     Extension::ColorBufferHalfFloat,
     Extension::ExtBlendMinmax,
@@ -61,6 +62,7 @@ pub(crate) const WEBGL1_EXTENSIONS: [Extension; 14] = [
     Extension::WebglColorBufferFloat,
     Extension::WebglDrawBuffers,
     Extension::WebglDepthTexture,
+    Extension::ExtSrgb,
 ];
 
 impl Context {
@@ -100,6 +102,7 @@ impl Context {
             }
             Extension::OesTextureHalfFloatLinear => w.texture_half_float_linear = true,
             Extension::WebglDepthTexture => w.depth_texture = true,
+            Extension::ExtSrgb => w.srgb = true,
             Extension::TextureFloatLinear => self.extensions.texture_float_linear = true,
             _ => {}
         }
@@ -139,6 +142,7 @@ impl Context {
             gl::RGBA32F => w.color_buffer_float,
             gl::RGBA16F | gl::RGB16F => w.color_buffer_half_float,
             gl::UNSIGNED_INT_24_8 => w.depth_texture,
+            gl::SRGB8_ALPHA8 | gl::FRAMEBUFFER_ATTACHMENT_COLOR_ENCODING => w.srgb,
             gl::MAX_COLOR_ATTACHMENTS | gl::MAX_DRAW_BUFFERS => w.draw_buffers,
             v if (gl::COLOR_ATTACHMENT1..=gl::COLOR_ATTACHMENT15).contains(&v) => w.draw_buffers,
             v if (gl::DRAW_BUFFER0..=gl::DRAW_BUFFER15).contains(&v) => w.draw_buffers,
@@ -205,7 +209,8 @@ impl Context {
                 | gl::DEPTH_COMPONENT16
                 | gl::STENCIL_INDEX8
                 | gl::DEPTH_STENCIL
-        ) || self.webgl1_float_renderbuffer(format);
+        ) || self.webgl1_float_renderbuffer(format)
+            || (format == gl::SRGB8_ALPHA8 && self.webgl1.srgb);
         if self.webgl1.on && !ok {
             self.error(
                 gl::INVALID_ENUM,
@@ -253,4 +258,28 @@ impl Context {
         self.error(gl::INVALID_OPERATION, function, why);
         false
     }
+
+    /// `EXT_sRGB`: a WebGL 1 upload's `(internalformat, format)` with `SRGB_EXT` and
+    /// `SRGB_ALPHA_EXT` as the sized sRGB formats and the formats their texels come in.
+    pub(crate) fn webgl1_srgb(&self, internal: i32, format: u32) -> (i32, u32) {
+        if !(self.webgl1.on && self.webgl1.srgb) {
+            return (internal, format);
+        }
+        let internal = match internal as u32 {
+            SRGB_EXT => gl::SRGB8 as i32,
+            SRGB_ALPHA_EXT => gl::SRGB8_ALPHA8 as i32,
+            _ => internal,
+        };
+        let format = match format {
+            SRGB_EXT => gl::RGB,
+            SRGB_ALPHA_EXT => gl::RGBA,
+            _ => format,
+        };
+        (internal, format)
+    }
 }
+
+/// `EXT_sRGB`'s `SRGB_EXT` (WebGL 2's `SRGB`).
+pub(crate) const SRGB_EXT: u32 = 0x8C40;
+/// `EXT_sRGB`'s `SRGB_ALPHA_EXT`.
+pub(crate) const SRGB_ALPHA_EXT: u32 = 0x8C42;

@@ -387,3 +387,45 @@ fn webgl1_depth_textures_with_their_extension() {
         gl::FRAMEBUFFER_COMPLETE
     );
 }
+
+#[test]
+fn webgl1_srgb_textures_with_ext_srgb() {
+    let Some(mut ctx) = webgl1(4, 4) else {
+        return;
+    };
+    const SRGB_ALPHA_EXT: u32 = 0x8C42;
+    let t = ctx.create_texture();
+    ctx.bind_texture(gl::TEXTURE_2D, Some(t));
+    let upload = |ctx: &mut Context| {
+        let f = SRGB_ALPHA_EXT;
+        let texel = [188u8, 188, 188, 255];
+        ctx.tex_image_2d(
+            gl::TEXTURE_2D,
+            0,
+            f as i32,
+            1,
+            1,
+            0,
+            f,
+            gl::UNSIGNED_BYTE,
+            Some(&texel[..]),
+        );
+        ctx.get_error()
+    };
+    assert_eq!(upload(&mut ctx), gl::INVALID_ENUM, "before EXT_sRGB");
+    assert!(ctx.get_extension("EXT_sRGB").is_some());
+    assert_eq!(upload(&mut ctx), gl::NO_ERROR);
+    // sRGB 188 is linear 0.50: sampled, it is written as 128.
+    ctx.tex_parameteri(gl::TEXTURE_2D, gl::TEXTURE_MIN_FILTER, gl::NEAREST as i32);
+    let [r, g, b, a] = sample(&mut ctx);
+    assert!(
+        (126..=130).contains(&r) && r == g && g == b && a == 255,
+        "{r} {g} {b} {a}"
+    );
+    ctx.generate_mipmap(gl::TEXTURE_2D);
+    assert_eq!(
+        ctx.get_error(),
+        gl::INVALID_OPERATION,
+        "no sRGB mipmaps in WebGL 1"
+    );
+}
