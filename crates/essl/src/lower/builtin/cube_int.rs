@@ -115,33 +115,14 @@ impl FnCx<'_, '_> {
             }
             None => zero,
         };
-        let size = self.add(
-            Expression::ImageQuery {
-                image,
-                query: naga::ImageQuery::Size { level: Some(level) },
-            },
-            span,
-        );
-        let size = self.cast(size, naga::ScalarKind::Sint, span);
-        let fsize = self.cast(size, naga::ScalarKind::Float, span);
-        let scaled = self.binop(Op::Multiply, uv, fsize, span);
-        let fl = self.math(Mf::Floor, &[scaled], span);
-        let texel = self.cast(fl, naga::ScalarKind::Sint, span);
-        let zero2 = self.splat(zero, 2, span);
-        let one = self.lit(Literal::I32(1));
-        let one2 = self.splat(one, 2, span);
-        let max = self.binop(Op::Subtract, size, one2, span);
-        let texel = self.math(Mf::Clamp, &[texel, zero2, max], span);
-        self.add(
-            Expression::ImageLoad {
-                image,
-                coordinate: texel,
-                array_index: Some(face),
-                sample: None,
-                level: Some(level),
-            },
-            span,
-        )
+        let texel = super::texture::NearestTexel {
+            coords: uv,
+            components: 2,
+            level,
+            offset: None,
+            array_index: Some(face),
+        };
+        self.nearest_texel_load(image, texel, span)
     }
 
     /// The components of a cube direction, their magnitudes and signs, and which is the major

@@ -316,38 +316,69 @@ impl FnCx<'_, '_> {
             None => self.lit(Literal::I32(0)),
         };
         let n = if st.dim == SamplerDim::D3 { 3 } else { 2 };
+        let texel = NearestTexel {
+            coords,
+            components: n,
+            level,
+            offset: extra.offset,
+            array_index,
+        };
+        Ok(self.nearest_texel_load(image, texel, span))
+    }
+
+    /// The texel of `image` nearest normalised coordinates at an integer level: the
+    /// coordinates scaled by the level's size, floored, offset, clamped to the level's edge,
+    /// then loaded (what NEAREST filtering of an integer texture reads).
+    pub(super) fn nearest_texel_load(
+        &mut self,
+        image: Handle<Expression>,
+        t: NearestTexel,
+        span: Span,
+    ) -> Handle<Expression> {
         let size = self.add(
             Expression::ImageQuery {
                 image,
-                query: naga::ImageQuery::Size { level: Some(level) },
+                query: naga::ImageQuery::Size {
+                    level: Some(t.level),
+                },
             },
             span,
         );
         let size = self.cast(size, naga::ScalarKind::Sint, span);
         let fsize = self.cast(size, naga::ScalarKind::Float, span);
-        let scaled = self.binop(naga::BinaryOperator::Multiply, coords, fsize, span);
+        let scaled = self.binop(naga::BinaryOperator::Multiply, t.coords, fsize, span);
         let fl = self.math(Mf::Floor, &[scaled], span);
         let mut texel = self.cast(fl, naga::ScalarKind::Sint, span);
-        if let Some(o) = extra.offset {
+        if let Some(o) = t.offset {
             texel = self.binop(naga::BinaryOperator::Add, texel, o, span);
         }
         let zero = self.lit(Literal::I32(0));
-        let zero = self.splat(zero, n, span);
+        let zero = self.splat(zero, t.components, span);
         let one = self.lit(Literal::I32(1));
-        let one = self.splat(one, n, span);
+        let one = self.splat(one, t.components, span);
         let max = self.binop(naga::BinaryOperator::Subtract, size, one, span);
         let texel = self.math(Mf::Clamp, &[texel, zero, max], span);
-        Ok(self.add(
+        self.add(
             Expression::ImageLoad {
                 image,
                 coordinate: texel,
-                array_index,
+                array_index: t.array_index,
                 sample: None,
-                level: Some(level),
+                level: Some(t.level),
             },
             span,
-        ))
+        )
     }
+}
+
+/// Where [`FnCx::nearest_texel_load`] reads: normalised coordinates of `components`
+/// components, an integer level, a texel offset and an array layer if any.
+pub(super) struct NearestTexel {
+    pub(super) coords: Handle<Expression>,
+    pub(super) components: u8,
+    pub(super) level: Handle<Expression>,
+    pub(super) offset: Option<Handle<Expression>>,
+    pub(super) array_index: Option<Handle<Expression>>,
 }
 
 /// Picks the arguments after the coordinates out of `vals` (the lowered arguments after the
