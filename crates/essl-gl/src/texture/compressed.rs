@@ -263,26 +263,6 @@ impl Compressed {
 /// `texSubImage*` refuses the level.
 pub(crate) const COMPRESSED_BASE: u32 = 0;
 
-/// Copies a `size` box of tightly packed texels into a level's bytes at `offset`.
-pub(super) fn write_box(dst: &mut Level, offset: [u32; 3], size: [u32; 3], src: &[u8]) {
-    let texel = dst.format.texel_size();
-    let Some(data) = dst.data.as_mut() else {
-        return;
-    };
-    let row = size[0] as usize * texel;
-    for z in 0..size[2] as usize {
-        for y in 0..size[1] as usize {
-            let s = (z * size[1] as usize + y) * row;
-            let dz = offset[2] as usize + z;
-            let dy = offset[1] as usize + y;
-            let at =
-                ((dz * dst.height as usize + dy) * dst.width as usize + offset[0] as usize) * texel;
-            data[at..at + row].copy_from_slice(&src[s..s + row]);
-        }
-    }
-    dst.uploaded = false;
-}
-
 /// The arguments of a compressed upload after the call's own checks.
 pub(super) struct CompressedImage<'a> {
     pub(super) target: u32,
@@ -427,7 +407,7 @@ impl Context {
         let texels = c.decode(w, h, d, data);
         let t = self.objects.textures.get_mut(id).expect("live");
         if let Some(dst) = t.level_mut(face, level as u32) {
-            write_box(dst, [x, y, z], [w, h, d], &texels);
+            dst.write_box([x, y, z], [w, h, d], &texels);
         }
         t.version += 1;
     }

@@ -23,6 +23,27 @@ pub(crate) struct Level {
 }
 
 impl Level {
+    /// Copies a `size` box of tightly packed texels into the CPU copy at `offset` (nothing
+    /// where the GPU holds the newer texels); the GPU copy is then stale.
+    pub(crate) fn write_box(&mut self, offset: [u32; 3], size: [u32; 3], src: &[u8]) {
+        let texel = self.format.texel_size();
+        let (width, height) = (self.width as usize, self.height as usize);
+        let Some(data) = self.data.as_mut() else {
+            return;
+        };
+        let row = size[0] as usize * texel;
+        for z in 0..size[2] as usize {
+            for y in 0..size[1] as usize {
+                let s = (z * size[1] as usize + y) * row;
+                let dz = offset[2] as usize + z;
+                let dy = offset[1] as usize + y;
+                let at = ((dz * height + dy) * width + offset[0] as usize) * texel;
+                data[at..at + row].copy_from_slice(&src[s..s + row]);
+            }
+        }
+        self.uploaded = false;
+    }
+
     /// A level image from texels in the GPU format (not yet on the GPU).
     pub(crate) fn new(size: [u32; 3], format: InternalFormat, data: Vec<u8>) -> Self {
         Level {

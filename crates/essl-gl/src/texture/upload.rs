@@ -673,7 +673,7 @@ impl Context {
         let cube = t.face_count() == 6;
         let dst = t.faces[face][level as usize].as_mut().expect("checked");
         let texel = dst.format.texel_size();
-        let Some(dst_data) = dst.data.as_mut() else {
+        if dst.data.is_none() {
             // The GPU holds the level's newest texels (it was drawn into): the box goes
             // straight to the GPU copy, in the batch's order.
             let g = t
@@ -694,20 +694,8 @@ impl Context {
                 crate::texture::upload_image(&self.gpu, &mut self.frame, &dst, &src);
             }
             return;
-        };
-        dst.uploaded = false;
-        let row = w as usize * texel;
-        for z in 0..d as usize {
-            for y in 0..h as usize {
-                let s = (z * h as usize + y) * row;
-                let dz = offset[2] as usize + z;
-                let dy = offset[1] as usize + y;
-                let at = ((dz * dst.height as usize + dy) * dst.width as usize
-                    + offset[0] as usize)
-                    * texel;
-                dst_data[at..at + row].copy_from_slice(&src[s..s + row]);
-            }
         }
+        dst.write_box(offset.map(|v| v as u32), [w, h, d], &src);
         t.version += 1;
     }
 }
