@@ -27,6 +27,7 @@ use rustc_hash::{FxHashMap as HashMap, FxHashSet as HashSet};
 
 use naga::{BinaryOperator as Op, Block, Expression as E, Function, Handle, Statement};
 
+use super::statements::root_local;
 use super::{Analysis, Place, Root, Site};
 use crate::interval::Interval;
 use crate::value::{Num, Val};
@@ -78,24 +79,9 @@ struct Walk {
     order: usize,
 }
 
-/// The place a pointer expression names when it is a whole local, `Err(local)` for a part.
-fn local_of(f: &Function, mut p: Handle<E>) -> Option<Result<usize, usize>> {
-    let mut whole = true;
-    loop {
-        match f.expressions[p] {
-            E::LocalVariable(l) => return Some(if whole { Ok(l.index()) } else { Err(l.index()) }),
-            E::Access { base, .. } | E::AccessIndex { base, .. } => {
-                whole = false;
-                p = base;
-            }
-            _ => return None,
-        }
-    }
-}
-
 /// Whether expression `h` loads the whole local `l`.
 fn loads(f: &Function, h: Handle<E>, l: usize) -> bool {
-    matches!(f.expressions[h], E::Load { pointer } if local_of(f, pointer) == Some(Ok(l)))
+    matches!(f.expressions[h], E::Load { pointer } if root_local(f, pointer) == Some((l, true)))
 }
 
 /// Whether a block continues the loop it is in (not counting nested loops).
@@ -137,8 +123,8 @@ impl Walk {
                     self.block(f, body, Some((id, true, false)));
                     self.block(f, continuing, Some((id, true, true)));
                 }
-                Statement::Store { pointer, value } => match local_of(f, *pointer) {
-                    Some(Ok(local)) => self.stores.push(Store {
+                Statement::Store { pointer, value } => match root_local(f, *pointer) {
+                    Some((local, true)) => self.stores.push(Store {
                         local,
                         value: *value,
                         innermost: around.map(|(l, _, _)| l),
@@ -146,14 +132,14 @@ impl Walk {
                         continuing: around.is_some_and(|(_, _, c)| c),
                         order: self.order,
                     }),
-                    Some(Err(l)) => {
+                    Some((l, false)) => {
                         self.spoiled.insert(l);
                     }
                     None => {}
                 },
                 Statement::Call { arguments, .. } => {
                     for a in arguments {
-                        if let Some(Ok(l) | Err(l)) = local_of(f, *a) {
+                        if let Some((l, _)) = root_local(f, *a) {
                             self.spoiled.insert(l);
                         }
                     }
@@ -263,8 +249,8 @@ fn has_loop(b: &Block) -> bool {
 /// The weight local and the other factor of a term `a * w`, `w * a` or `w`.
 fn weight_of(f: &Function, term: Handle<E>, acc: usize) -> Option<(usize, Option<Handle<E>>)> {
     let local = |h: Handle<E>| match f.expressions[h] {
-        E::Load { pointer } => match local_of(f, pointer) {
-            Some(Ok(l)) if l != acc => Some(l),
+        E::Load { pointer } => match root_local(f, pointer) {
+            Some((l, true)) if l != acc => Some(l),
             _ => None,
         },
         _ => None,

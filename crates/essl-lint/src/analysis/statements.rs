@@ -276,6 +276,22 @@ pub(crate) fn each_statement(block: &Block, visit: &mut impl FnMut(&Statement)) 
     }
 }
 
+/// The local a pointer expression points into, and whether it points to the whole local
+/// (not a member, component or element of it).
+pub(super) fn root_local(f: &Function, mut p: Handle<E>) -> Option<(usize, bool)> {
+    let mut whole = true;
+    loop {
+        match f.expressions[p] {
+            E::LocalVariable(l) => return Some((l.index(), whole)),
+            E::Access { base, .. } | E::AccessIndex { base, .. } => {
+                whole = false;
+                p = base;
+            }
+            _ => return None,
+        }
+    }
+}
+
 /// Locals stored exactly once (the whole variable), outside loops, never passed by pointer; and
 /// the whole stores of every local never stored in part or passed by pointer.
 #[allow(clippy::type_complexity)]
@@ -286,19 +302,6 @@ pub(super) fn single_stores(
     struct Count {
         whole: Vec<(usize, Handle<E>, bool)>,
         spoiled: rustc_hash::FxHashSet<usize>,
-    }
-    fn root_local(f: &Function, mut p: Handle<E>) -> Option<(usize, bool)> {
-        let mut whole = true;
-        loop {
-            match f.expressions[p] {
-                E::LocalVariable(l) => return Some((l.index(), whole)),
-                E::Access { base, .. } | E::AccessIndex { base, .. } => {
-                    whole = false;
-                    p = base;
-                }
-                _ => return None,
-            }
-        }
     }
     fn walk(f: &Function, b: &Block, in_loop: bool, c: &mut Count) {
         for s in b.iter() {
