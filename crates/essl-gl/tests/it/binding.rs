@@ -18,15 +18,7 @@ fn image() -> Vec<u8> {
 
 /// Reads the 2×2 RGBA8 level 0 of `texture` through a framebuffer.
 fn texels(ctx: &mut essl_gl::Context, texture: essl_gl::Texture) -> Vec<u8> {
-    let fb = ctx.create_framebuffer();
-    ctx.bind_framebuffer(gl::FRAMEBUFFER, Some(fb));
-    ctx.framebuffer_texture_2d(
-        gl::FRAMEBUFFER,
-        gl::COLOR_ATTACHMENT0,
-        gl::TEXTURE_2D,
-        Some(texture),
-        0,
-    );
+    common::colour_framebuffer(ctx, texture);
     let mut px = vec![0u8; 16];
     ctx.read_pixels(0, 0, 2, 2, gl::RGBA, gl::UNSIGNED_BYTE, &mut px);
     ctx.bind_framebuffer(gl::FRAMEBUFFER, None);

@@ -38,13 +38,7 @@ fn texture(ctx: &mut Context) {
 
 /// Draws the bound texture's centre over the canvas; the centre pixel.
 fn sample(ctx: &mut Context) -> [u8; 4] {
-    let p = common::program(ctx, VS, FS);
-    ctx.use_program(Some(p));
-    common::float_attribute(ctx, 0, 2, &common::QUAD);
-    common::clear_black(ctx);
-    ctx.draw_arrays(gl::TRIANGLES, 0, 6);
-    assert_eq!(ctx.get_error(), gl::NO_ERROR);
-    common::pixel(ctx, 1, 1)
+    common::draw_quad_pixel(ctx, VS, FS)
 }
 
 fn formats(ctx: &mut Context) -> Vec<u32> {

@@ -52,15 +52,7 @@ fn a_texture_drawn_into_is_read_and_sampled_the_way_gl_has_it() {
         return;
     };
     let t = rgba8_texture(&mut ctx, 8, 8);
-    let fb = ctx.create_framebuffer();
-    ctx.bind_framebuffer(gl::FRAMEBUFFER, Some(fb));
-    ctx.framebuffer_texture_2d(
-        gl::FRAMEBUFFER,
-        gl::COLOR_ATTACHMENT0,
-        gl::TEXTURE_2D,
-        Some(t),
-        0,
-    );
+    colour_framebuffer(&mut ctx, t);
     assert_eq!(
         ctx.check_framebuffer_status(gl::FRAMEBUFFER),
         gl::FRAMEBUFFER_COMPLETE
@@ -204,15 +196,7 @@ fn status_follows_webgl2s_completeness_rules() {
 fn sampling_a_texture_that_is_drawn_into_is_a_feedback_loop() {
     let Some(mut ctx) = context(4, 4) else { return };
     let t = rgba8_texture(&mut ctx, 4, 4);
-    let fb = ctx.create_framebuffer();
-    ctx.bind_framebuffer(gl::FRAMEBUFFER, Some(fb));
-    ctx.framebuffer_texture_2d(
-        gl::FRAMEBUFFER,
-        gl::COLOR_ATTACHMENT0,
-        gl::TEXTURE_2D,
-        Some(t),
-        0,
-    );
+    colour_framebuffer(&mut ctx, t);
     ctx.clear_color(1.0, 0.0, 0.0, 1.0);
     ctx.clear(gl::COLOR_BUFFER_BIT);
     let p = program(
@@ -368,15 +352,7 @@ fn blits_scale_and_flip_with_nearest_filtering() {
 fn blit_errors_are_webgl2s_and_draw_nothing() {
     let Some(mut ctx) = context(4, 4) else { return };
     let t = rgba8_texture(&mut ctx, 4, 4);
-    let fb = ctx.create_framebuffer();
-    ctx.bind_framebuffer(gl::FRAMEBUFFER, Some(fb));
-    ctx.framebuffer_texture_2d(
-        gl::FRAMEBUFFER,
-        gl::COLOR_ATTACHMENT0,
-        gl::TEXTURE_2D,
-        Some(t),
-        0,
-    );
+    colour_framebuffer(&mut ctx, t);
     // Read and draw the same image.
     ctx.blit_framebuffer(0, 0, 2, 2, 2, 2, 4, 4, gl::COLOR_BUFFER_BIT, gl::NEAREST);
     assert_eq!(ctx.get_error(), gl::INVALID_OPERATION);
@@ -430,15 +406,7 @@ fn copy_tex_image_spreads_channels_and_zeroes_what_lies_outside() {
     // Half of the rectangle lies right of the framebuffer: those texels are 0.
     ctx.copy_tex_image_2d(gl::TEXTURE_2D, 0, gl::RGBA8, 2, 0, 4, 4, 0);
     assert_eq!(ctx.get_error(), gl::NO_ERROR, "{:?}", ctx.error_message());
-    let fb = ctx.create_framebuffer();
-    ctx.bind_framebuffer(gl::FRAMEBUFFER, Some(fb));
-    ctx.framebuffer_texture_2d(
-        gl::FRAMEBUFFER,
-        gl::COLOR_ATTACHMENT0,
-        gl::TEXTURE_2D,
-        Some(t),
-        0,
-    );
+    colour_framebuffer(&mut ctx, t);
     assert_eq!(pixel(&mut ctx, 0, 0), [51, 102, 153, 204]);
     assert_eq!(pixel(&mut ctx, 3, 3), [0, 0, 0, 0]);
     // Into LUMINANCE: (R, R, R, 1).

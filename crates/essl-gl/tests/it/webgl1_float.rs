@@ -38,13 +38,7 @@ fn texture<T: essl_gl::ArrayElement>(
 
 /// Draws the bound texture's texel over the canvas; the centre pixel.
 fn sample(ctx: &mut Context) -> [u8; 4] {
-    let p = common::program(ctx, VS, FS);
-    ctx.use_program(Some(p));
-    common::float_attribute(ctx, 0, 2, &common::QUAD);
-    common::clear_black(ctx);
-    ctx.draw_arrays(gl::TRIANGLES, 0, 6);
-    assert_eq!(ctx.get_error(), gl::NO_ERROR);
-    common::pixel(ctx, 1, 1)
+    common::draw_quad_pixel(ctx, VS, FS)
 }
 
 #[test]
@@ -184,15 +178,7 @@ fn float_textures_and_renderbuffers_render_with_color_buffer_float() {
         gl::FLOAT,
         none,
     );
-    let fb = ctx.create_framebuffer();
-    ctx.bind_framebuffer(gl::FRAMEBUFFER, Some(fb));
-    ctx.framebuffer_texture_2d(
-        gl::FRAMEBUFFER,
-        gl::COLOR_ATTACHMENT0,
-        gl::TEXTURE_2D,
-        Some(t),
-        0,
-    );
+    common::colour_framebuffer(&mut ctx, t);
     assert_eq!(
         ctx.check_framebuffer_status(gl::FRAMEBUFFER),
         gl::FRAMEBUFFER_COMPLETE
@@ -238,15 +224,7 @@ fn an_rgb_half_float_attachment_reads_back_alpha_1() {
         HALF_FLOAT_OES,
         none,
     );
-    let fb = ctx.create_framebuffer();
-    ctx.bind_framebuffer(gl::FRAMEBUFFER, Some(fb));
-    ctx.framebuffer_texture_2d(
-        gl::FRAMEBUFFER,
-        gl::COLOR_ATTACHMENT0,
-        gl::TEXTURE_2D,
-        Some(t),
-        0,
-    );
+    common::colour_framebuffer(&mut ctx, t);
     assert_eq!(
         ctx.check_framebuffer_status(gl::FRAMEBUFFER),
         gl::FRAMEBUFFER_COMPLETE,

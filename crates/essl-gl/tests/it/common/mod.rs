@@ -220,3 +220,30 @@ pub fn program(ctx: &mut Context, vs: &str, fs: &str) -> essl_gl::Program {
     );
     p
 }
+
+/// Draws a full-canvas quad (attribute 0) with the program of `vs` and `fs` over a black
+/// canvas, checks the draw recorded no error, and returns the pixel at (1, 1).
+pub fn draw_quad_pixel(ctx: &mut Context, vs: &str, fs: &str) -> [u8; 4] {
+    let p = program(ctx, vs, fs);
+    ctx.use_program(Some(p));
+    float_attribute(ctx, 0, 2, &QUAD);
+    clear_black(ctx);
+    ctx.draw_arrays(gl::TRIANGLES, 0, 6);
+    assert_eq!(ctx.get_error(), gl::NO_ERROR);
+    pixel(ctx, 1, 1)
+}
+
+/// A new framebuffer, bound to `FRAMEBUFFER`, with level 0 of 2D texture `t` at
+/// `COLOR_ATTACHMENT0`.
+pub fn colour_framebuffer(ctx: &mut Context, t: essl_gl::Texture) -> essl_gl::Framebuffer {
+    let fb = ctx.create_framebuffer();
+    ctx.bind_framebuffer(gl::FRAMEBUFFER, Some(fb));
+    ctx.framebuffer_texture_2d(
+        gl::FRAMEBUFFER,
+        gl::COLOR_ATTACHMENT0,
+        gl::TEXTURE_2D,
+        Some(t),
+        0,
+    );
+    fb
+}
