@@ -409,14 +409,9 @@ impl Frame {
             self.submit(gpu, |_| {});
         }
         let slice = counts.buffer.slice(..8 * counts.slots as u64);
-        let (tx, rx) = std::sync::mpsc::channel();
-        slice.map_async(wgpu::MapMode::Read, move |r| {
-            let _ = tx.send(r);
-        });
-        let _ = gpu.device.poll(wgpu::PollType::wait_indefinitely());
-        let counts_read: Vec<u64> = match (rx.recv(), slice.get_mapped_range()) {
-            (Ok(Ok(())), Ok(view)) => bytemuck::pod_collect_to_vec(&view[..]),
-            _ => Vec::new(),
+        let counts_read: Vec<u64> = match gpu.read_mapped(slice) {
+            Some(view) => bytemuck::pod_collect_to_vec(&view[..]),
+            None => Vec::new(),
         };
         counts.buffer.unmap();
         counts_read.iter().any(|&c| c > 0)

@@ -311,13 +311,7 @@ impl BufferObject {
             frame.submit(gpu, |encoder| {
                 encoder.copy_buffer_to_buffer(&g.buffer, 0, &staging, 0, size);
             });
-            let slice = staging.slice(..);
-            let (tx, rx) = std::sync::mpsc::channel();
-            slice.map_async(wgpu::MapMode::Read, move |r| {
-                let _ = tx.send(r);
-            });
-            let _ = gpu.device.poll(wgpu::PollType::wait_indefinitely());
-            if let (Ok(Ok(())), Ok(view)) = (rx.recv(), slice.get_mapped_range()) {
+            if let Some(view) = gpu.read_mapped(staging.slice(..)) {
                 self.data.copy_from_slice(&view[..len]);
             }
         }

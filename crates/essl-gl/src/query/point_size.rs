@@ -123,14 +123,7 @@ fn measure(gpu: &Gpu) -> Option<u32> {
     if pollster::block_on(scope.pop()).is_some() {
         return None;
     }
-    let slice = readback.slice(..);
-    let (tx, rx) = std::sync::mpsc::channel();
-    slice.map_async(wgpu::MapMode::Read, move |r| {
-        let _ = tx.send(r);
-    });
-    device.poll(wgpu::PollType::wait_indefinitely()).ok()?;
-    rx.recv().ok()?.ok()?;
-    let view = slice.get_mapped_range().ok()?;
+    let view = gpu.read_mapped(readback.slice(..))?;
     let lit = view.chunks_exact(4).filter(|px| px[0] > 127).count() as u32;
     Some(lit)
 }

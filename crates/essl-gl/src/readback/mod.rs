@@ -364,16 +364,8 @@ impl Context {
                 },
             );
         });
-        let slice = buffer.slice(..size);
-        let (tx, rx) = std::sync::mpsc::channel();
-        slice.map_async(wgpu::MapMode::Read, move |r| {
-            let _ = tx.send(r);
-        });
-        let _ = self.gpu.device.poll(wgpu::PollType::wait_indefinitely());
         let mut out = vec![0u8; (row * h * d) as usize];
-        let (Ok(Ok(())), Ok(view)) = (rx.recv(), slice.get_mapped_range()) else {
-            return None;
-        };
+        let view = self.gpu.read_mapped(buffer.slice(..size))?;
         let row = row as usize;
         for r in 0..(h * d) as usize {
             let src = &view[r * padded as usize..r * padded as usize + row];
