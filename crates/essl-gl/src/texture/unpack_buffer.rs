@@ -12,14 +12,7 @@ impl Context {
     /// `INVALID_OPERATION`, a negative offset → `INVALID_VALUE`, `UNPACK_FLIP_Y_WEBGL` or
     /// `UNPACK_PREMULTIPLY_ALPHA_WEBGL` set → `INVALID_OPERATION` (as WebGL 2 has it).
     fn unpack_source(&mut self, offset: i64, function: &str) -> Option<Vec<u8>> {
-        let Some(id) = self.bindings.buffer(gl::PIXEL_UNPACK_BUFFER) else {
-            self.error(
-                gl::INVALID_OPERATION,
-                function,
-                "no PIXEL_UNPACK_BUFFER bound",
-            );
-            return None;
-        };
+        let id = self.unpack_buffer(function)?;
         if offset < 0 {
             self.error(gl::INVALID_VALUE, function, "negative offset");
             return None;
@@ -32,9 +25,27 @@ impl Context {
             );
             return None;
         }
-        let b = self.objects.buffers.get_any_mut(id)?;
-        let data = b.cpu_bytes(&self.gpu, &mut self.frame);
+        let data = self.unpack_bytes(id)?;
         Some(data.get(offset as usize..).unwrap_or_default().to_vec())
+    }
+
+    /// The bound `PIXEL_UNPACK_BUFFER`, or `INVALID_OPERATION` when none is.
+    fn unpack_buffer(&mut self, function: &str) -> Option<crate::objects::Id> {
+        let id = self.bindings.buffer(gl::PIXEL_UNPACK_BUFFER);
+        if id.is_none() {
+            self.error(
+                gl::INVALID_OPERATION,
+                function,
+                "no PIXEL_UNPACK_BUFFER bound",
+            );
+        }
+        id
+    }
+
+    /// The CPU copy of buffer `id`'s bytes, brought up to date.
+    fn unpack_bytes(&mut self, id: crate::objects::Id) -> Option<&[u8]> {
+        let b = self.objects.buffers.get_any_mut(id)?;
+        Some(b.cpu_bytes(&self.gpu, &mut self.frame))
     }
 
     /// `texImage2D` from the bound `PIXEL_UNPACK_BUFFER` at byte `offset`; see
@@ -358,20 +369,15 @@ impl Context {
                 data
             }
             Src::Buffer { image_size, offset } => {
-                let Some(id) = self.bindings.buffer(gl::PIXEL_UNPACK_BUFFER) else {
-                    return self.error(
-                        gl::INVALID_OPERATION,
-                        function,
-                        "no PIXEL_UNPACK_BUFFER bound",
-                    );
+                let Some(id) = self.unpack_buffer(function) else {
+                    return;
                 };
                 if image_size < 0 || offset < 0 {
                     return self.error(gl::INVALID_VALUE, function, "negative imageSize or offset");
                 }
-                let Some(b) = self.objects.buffers.get_any_mut(id) else {
+                let Some(bytes) = self.unpack_bytes(id) else {
                     return;
                 };
-                let bytes = b.cpu_bytes(&self.gpu, &mut self.frame);
                 let end = offset as u64 + image_size as u64;
                 if end > bytes.len() as u64 {
                     return self.error(
