@@ -142,6 +142,17 @@ pub const VARIABLES: &[(&str, &str)] = &[
         "gl_FragData",
         "GLSL ES 1.00: the fragment's colours, one per draw buffer.",
     ),
+    (
+        "gl_ClipDistance",
+        "GL_ANGLE_clip_cull_distance: the vertex's distances to the user clip planes; the \
+         primitive is clipped where an enabled one is negative. Fragment shaders read them \
+         interpolated.",
+    ),
+    (
+        "gl_CullDistance",
+        "GL_ANGLE_clip_cull_distance: distances that cull a primitive whose vertices are all \
+         negative; essl offers none (gl_MaxCullDistances is 0).",
+    ),
 ];
 
 /// The line about a built-in function or variable.

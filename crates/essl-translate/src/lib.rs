@@ -157,6 +157,7 @@ impl Options {
             flip_clip_y: false,
             transform_feedback: Vec::new(),
             integer_cube_as_array: false,
+            clip_distance_switches: false,
         }
     }
 }

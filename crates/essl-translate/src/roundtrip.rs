@@ -21,9 +21,12 @@ pub fn read_wgsl(text: &str, stage: Stage) -> Result<(Module, ModuleInfo), Trans
         message,
     };
     let module = naga::front::wgsl::parse_str(text).map_err(|e| fail(e.emit_to_string(text)))?;
-    let info = Validator::new(ValidationFlags::all(), Capabilities::default())
-        .validate(&module)
-        .map_err(|e| fail(e.emit_to_string(text)))?;
+    let info = Validator::new(
+        ValidationFlags::all(),
+        Capabilities::default() | Capabilities::CLIP_DISTANCES,
+    )
+    .validate(&module)
+    .map_err(|e| fail(e.emit_to_string(text)))?;
     Ok((module, info))
 }
 

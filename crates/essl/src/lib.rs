@@ -41,6 +41,7 @@ mod stack;
 mod token;
 mod usage;
 
+pub use builtins::MAX_CLIP_DISTANCES;
 pub use preprocess::Version;
 pub use shader::{compile, compile_front_end, CompileOptions, Shader, COMPILE_STACK};
 pub use target::{Extension, Target};

@@ -14,6 +14,10 @@
 //!   already remapped GL's depth range (z from −w..w to 0..w) when
 //!   [`LowerOptions::zero_to_one_depth`] is set, and negated y when [`LowerOptions::flip_clip_y`]
 //!   is.
+//! - A vertex shader that writes `gl_ClipDistance` writes `BuiltIn::ClipDistances` (eight
+//!   floats; wgpu's `CLIP_DISTANCES`). A fragment shader that reads it gets the values through
+//!   two `vec4` varyings at the locations after the others (the GPU APIs have clip distances as
+//!   vertex outputs only).
 //! - Fragment outputs use `Binding::Location` equal to the GLSL output's location.
 //! - All loose (default-block) uniforms of both stages live in one uniform buffer at
 //!   `@group(0) @binding(0)`, laid out as [`UniformBlock`] says; both stages declare the same
@@ -50,6 +54,10 @@ pub struct LowerOptions {
     /// and level they select (`textureLod` takes its level). Off, they stay cube textures
     /// and lookups gather from level 0, as naga can neither sample nor load an integer cube.
     pub integer_cube_as_array: bool,
+    /// Read which clip distances the API has enabled (`enable(CLIP_DISTANCEi_WEBGL)`) from
+    /// [`InternalUniform::ClipDistancesEnabled`]: a vertex shader's `gl_ClipDistance[i]` clips
+    /// only where bit `i` is set. Off, every distance clips, as a WebGPU pipeline does.
+    pub clip_distance_switches: bool,
 }
 
 impl Default for LowerOptions {
@@ -60,6 +68,7 @@ impl Default for LowerOptions {
             flip_clip_y: false,
             transform_feedback: Vec::new(),
             integer_cube_as_array: false,
+            clip_distance_switches: false,
         }
     }
 }
@@ -143,6 +152,9 @@ pub struct UniformBlock {
 pub enum InternalUniform {
     /// The height of the framebuffer in pixels, as an `f32` (for `gl_FragCoord.y` flipping).
     FramebufferHeight,
+    /// The clip distances enabled, as a `u32` whose bit `i` is `CLIP_DISTANCEi_WEBGL`
+    /// ([`LowerOptions::clip_distance_switches`]).
+    ClipDistancesEnabled,
 }
 
 impl InternalUniform {
@@ -150,6 +162,7 @@ impl InternalUniform {
     pub fn name(self) -> &'static str {
         match self {
             InternalUniform::FramebufferHeight => "framebuffer_height",
+            InternalUniform::ClipDistancesEnabled => "clip_distances_enabled",
         }
     }
 }

@@ -69,7 +69,9 @@ impl Target {
     }
 }
 
-/// A WebGL 1 extension that adds to GLSL ES 1.00, as a context enables it.
+/// A WebGL extension that adds to the shading language, as a context enables it: the WebGL 1
+/// extensions add to GLSL ES 1.00 in a WebGL 1 context; `WEBGL_clip_cull_distance` adds to
+/// GLSL ES 3.00 in a WebGL 2 context.
 #[non_exhaustive]
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
 pub enum Extension {
@@ -81,16 +83,30 @@ pub enum Extension {
     ExtFragDepth,
     /// `WEBGL_draw_buffers`: `gl_FragData[n]` for n > 0 (`GL_EXT_draw_buffers` in shaders).
     WebglDrawBuffers,
+    /// `WEBGL_clip_cull_distance` (WebGL 2): `gl_ClipDistance[8]` and `gl_CullDistance`
+    /// (`GL_ANGLE_clip_cull_distance` in shaders), with no cull distances
+    /// (`gl_MaxCullDistances` is 0, as the extension allows).
+    WebglClipCullDistance,
 }
 
 impl Extension {
     /// Every extension essl knows.
-    pub const ALL: [Extension; 4] = [
+    pub const ALL: [Extension; 5] = [
         Extension::OesStandardDerivatives,
         Extension::ExtShaderTextureLod,
         Extension::ExtFragDepth,
         Extension::WebglDrawBuffers,
+        Extension::WebglClipCullDistance,
     ];
+
+    /// The context that offers it: a WebGL 1 extension is for GLSL ES 1.00 shaders of a
+    /// WebGL 1 context, a WebGL 2 one for GLSL ES 3.00 shaders of a WebGL 2 context.
+    pub fn target(self) -> Target {
+        match self {
+            Extension::WebglClipCullDistance => Target::WebGl2,
+            _ => Target::WebGl1,
+        }
+    }
 
     /// The name a shader's `#extension` directive uses (also its macro).
     pub fn directive_name(self) -> &'static str {
@@ -99,6 +115,7 @@ impl Extension {
             Extension::ExtShaderTextureLod => "GL_EXT_shader_texture_lod",
             Extension::ExtFragDepth => "GL_EXT_frag_depth",
             Extension::WebglDrawBuffers => "GL_EXT_draw_buffers",
+            Extension::WebglClipCullDistance => "GL_ANGLE_clip_cull_distance",
         }
     }
 
@@ -109,6 +126,7 @@ impl Extension {
             Extension::ExtShaderTextureLod => "EXT_shader_texture_lod",
             Extension::ExtFragDepth => "EXT_frag_depth",
             Extension::WebglDrawBuffers => "WEBGL_draw_buffers",
+            Extension::WebglClipCullDistance => "WEBGL_clip_cull_distance",
         }
     }
 
@@ -231,13 +249,17 @@ impl Language {
             (crate::Version::Other(n, _), _) => n < 300,
         };
         let mut directives = Vec::new();
-        if target == Target::WebGl1 && es100 {
-            for (name, behavior, span) in &pp.extensions {
-                let on = matches!(behavior, B::Enable | B::Require | B::Warn);
-                for &e in enabled {
-                    if name == e.directive_name() || name == "all" {
-                        directives.push((e, span.start, on));
-                    }
+        // The extensions this shader's context and language take.
+        let offered: Vec<Extension> = enabled
+            .iter()
+            .copied()
+            .filter(|e| e.target() == target && (target == Target::WebGl1) == es100)
+            .collect();
+        for (name, behavior, span) in &pp.extensions {
+            let on = matches!(behavior, B::Enable | B::Require | B::Warn);
+            for &e in &offered {
+                if name == e.directive_name() || name == "all" {
+                    directives.push((e, span.start, on));
                 }
             }
         }
@@ -245,10 +267,7 @@ impl Language {
             es100,
             target,
             directives,
-            context: match target {
-                Target::WebGl1 => enabled.to_vec(),
-                Target::WebGl2 => Vec::new(),
-            },
+            context: offered,
         }
     }
 

@@ -42,6 +42,13 @@ pub enum BuiltinVar {
     FragColor,
     /// `mediump vec4 gl_FragData[gl_MaxDrawBuffers]` (GLSL ES 1.00 fragment): the color outputs.
     FragData,
+    /// `highp float gl_ClipDistance[gl_MaxClipDistances]` (`GL_ANGLE_clip_cull_distance`): a
+    /// vertex output, and the interpolated values as a fragment input.
+    ClipDistance,
+    /// `highp float gl_CullDistance[…]` (`GL_ANGLE_clip_cull_distance`): essl offers no cull
+    /// distances (`gl_MaxCullDistances` is 0), so it exists only for code that tests that
+    /// constant first; writes are kept nowhere and reads give 0.
+    CullDistance,
 }
 
 impl BuiltinVar {
@@ -59,12 +66,15 @@ impl BuiltinVar {
             BuiltinVar::DepthRange => "gl_DepthRange",
             BuiltinVar::FragColor => "gl_FragColor",
             BuiltinVar::FragData => "gl_FragData",
+            BuiltinVar::ClipDistance => "gl_ClipDistance",
+            BuiltinVar::CullDistance => "gl_CullDistance",
         }
     }
 
     /// The variable called `name` in a shader of `stage` in `lang`: GLSL ES 1.00 has
     /// `gl_FragColor` and `gl_FragData` (and `gl_FragDepthEXT`, which is `gl_FragDepth`, with
-    /// `EXT_frag_depth`) but not `gl_VertexID`, `gl_InstanceID` or `gl_FragDepth`.
+    /// `EXT_frag_depth`) but not `gl_VertexID`, `gl_InstanceID` or `gl_FragDepth`; GLSL ES 3.00
+    /// has `gl_ClipDistance` and `gl_CullDistance` with `GL_ANGLE_clip_cull_distance`.
     pub fn lookup_in(
         name: &str,
         stage: Stage,
@@ -72,7 +82,18 @@ impl BuiltinVar {
         at: u32,
     ) -> Option<BuiltinVar> {
         if !lang.es100 {
-            return BuiltinVar::lookup(name, stage);
+            return match name {
+                "gl_ClipDistance" | "gl_CullDistance"
+                    if lang.has_at(Extension::WebglClipCullDistance, at) =>
+                {
+                    Some(if name == "gl_ClipDistance" {
+                        BuiltinVar::ClipDistance
+                    } else {
+                        BuiltinVar::CullDistance
+                    })
+                }
+                _ => BuiltinVar::lookup(name, stage),
+            };
         }
         use BuiltinVar::*;
         let v = match name {
@@ -111,7 +132,7 @@ impl BuiltinVar {
             FragCoord | FrontFacing | FragDepth | PointCoord | FragColor | FragData => {
                 Some(Stage::Fragment)
             }
-            DepthRange => None,
+            DepthRange | ClipDistance | CullDistance => None,
         }
     }
 
@@ -127,6 +148,7 @@ impl BuiltinVar {
             DepthRange => Type::Void,
             FragColor => Type::Vector(ScalarKind::Float, 4),
             FragData => Type::Array(Box::new(Type::Vector(ScalarKind::Float, 4)), 1),
+            ClipDistance | CullDistance => Type::Array(Box::new(Type::FLOAT), MAX_CLIP_DISTANCES),
         }
     }
 
@@ -141,18 +163,24 @@ impl BuiltinVar {
         }
     }
 
-    /// Whether the shader may write it.
-    pub fn writable(self) -> bool {
-        matches!(
-            self,
+    /// Whether a shader of `stage` may write it (the clip and cull distances are vertex
+    /// outputs and fragment inputs).
+    pub fn writable_in(self, stage: Stage) -> bool {
+        match self {
             BuiltinVar::Position
-                | BuiltinVar::PointSize
-                | BuiltinVar::FragDepth
-                | BuiltinVar::FragColor
-                | BuiltinVar::FragData
-        )
+            | BuiltinVar::PointSize
+            | BuiltinVar::FragDepth
+            | BuiltinVar::FragColor
+            | BuiltinVar::FragData => true,
+            BuiltinVar::ClipDistance | BuiltinVar::CullDistance => stage == Stage::Vertex,
+            _ => false,
+        }
     }
 }
+
+/// `gl_MaxClipDistances` with `GL_ANGLE_clip_cull_distance`: the size of `gl_ClipDistance`
+/// (the extension's minimum, and the most naga's back ends take).
+pub const MAX_CLIP_DISTANCES: u32 = 8;
 
 /// Built-in constants of GLSL ES 3.00, with the values Chromium 156 (ANGLE on SwiftShader)
 /// gives them in a WebGL 2 context (`tests/oracle/ES100.md`, "Built-in constants").
@@ -178,9 +206,23 @@ pub fn constant(name: &str) -> Option<i32> {
 /// a WebGL 1 context without `WEBGL_draw_buffers`.
 pub fn constant_in(name: &str, lang: &crate::target::Language) -> Option<i32> {
     if !lang.es100 {
-        return constant(name);
+        return match name {
+            "gl_MaxClipDistances"
+            | "gl_MaxCullDistances"
+            | "gl_MaxCombinedClipAndCullDistances"
+                if !lang.context_has(Extension::WebglClipCullDistance) =>
+            {
+                None
+            }
+            "gl_MaxClipDistances" => Some(MAX_CLIP_DISTANCES as i32),
+            "gl_MaxCullDistances" | "gl_MaxCombinedClipAndCullDistances" => Some(0),
+            _ => constant(name),
+        };
     }
     match name {
+        "gl_MaxClipDistances" | "gl_MaxCullDistances" | "gl_MaxCombinedClipAndCullDistances" => {
+            None
+        }
         "gl_MaxVaryingVectors" => Some(31),
         "gl_MaxDrawBuffers"
             if lang.target == crate::target::Target::WebGl1

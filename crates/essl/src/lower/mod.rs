@@ -136,6 +136,8 @@ pub(crate) struct ModuleCx<'a> {
     pub options: LowerOptions,
     /// The default uniform block global and the framebuffer-height member, for gl_FragCoord.
     pub fb_height: Option<(Handle<naga::GlobalVariable>, u32)>,
+    /// The default uniform block global and the member holding the enabled clip distances.
+    pub clip_switches: Option<(Handle<naga::GlobalVariable>, u32)>,
 }
 
 fn nspan(s: Span) -> NSpan {
@@ -181,7 +183,7 @@ pub fn lower_shader<S: AsRef<hir::Module> + ?Sized>(
 fn validator() -> naga::valid::Validator {
     naga::valid::Validator::new(
         naga::valid::ValidationFlags::all(),
-        naga::valid::Capabilities::default(),
+        naga::valid::Capabilities::default() | naga::valid::Capabilities::CLIP_DISTANCES,
     )
 }
 

@@ -41,6 +41,10 @@ pub(crate) struct StagePlan {
     /// want the two ends of a varying to agree). Outputs not listed follow their own
     /// declaration.
     pub(super) output_centroid: HashMap<GlobalId, bool>,
+    /// The first of the two locations of the `vec4` varyings that carry `gl_ClipDistance` to a
+    /// fragment shader that reads it (written by the vertex stage, read by the fragment
+    /// stage: the GPU APIs' clip distances are vertex outputs only).
+    pub(super) clip_varying: Option<u32>,
 }
 
 /// The program-wide part of the plan.
@@ -55,12 +59,26 @@ pub(super) struct ProgramPlan {
 
 impl ProgramPlan {
     /// Reserves the framebuffer height after `offset` when the fragment stage reads
-    /// `gl_FragCoord` and the options flip it; sets the block's size (whole 16-byte rows).
-    fn finish_block(&mut self, mut offset: u32, frag_coord: bool, options: &LowerOptions) {
+    /// `gl_FragCoord` and the options flip it, and the clip-distance switches when the vertex
+    /// stage writes `gl_ClipDistance` and the options read them; sets the block's size (whole
+    /// 16-byte rows).
+    fn finish_block(
+        &mut self,
+        mut offset: u32,
+        frag_coord: bool,
+        clip_distance: bool,
+        options: &LowerOptions,
+    ) {
         if options.flip_frag_coord_y && frag_coord {
             offset = offset.div_ceil(4) * 4;
             self.internal
                 .push((InternalUniform::FramebufferHeight, offset));
+            offset += 4;
+        }
+        if options.clip_distance_switches && clip_distance {
+            offset = offset.div_ceil(4) * 4;
+            self.internal
+                .push((InternalUniform::ClipDistancesEnabled, offset));
             offset += 4;
         }
         self.block_size = offset.div_ceil(16) * 16;
@@ -101,7 +119,16 @@ pub(super) fn shader_plan(m: &hir::Module, options: &LowerOptions) -> (StagePlan
         }
     }
     let frag_coord = m.stage == Stage::Fragment && m.used_builtins.contains(&BuiltinVar::FragCoord);
-    pplan.finish_block(offset, frag_coord, options);
+    let clip = m.used_builtins.contains(&BuiltinVar::ClipDistance);
+    pplan.finish_block(
+        offset,
+        frag_coord,
+        m.stage == Stage::Vertex && clip,
+        options,
+    );
+    if m.stage == Stage::Fragment && clip {
+        plan.clip_varying = Some(next_location(m, &plan.inputs));
+    }
     let mut binding = 1;
     for (bi, b) in m.blocks.iter().enumerate() {
         if b.used {
@@ -110,6 +137,14 @@ pub(super) fn shader_plan(m: &hir::Module, options: &LowerOptions) -> (StagePlan
         binding += b.array.unwrap_or(1);
     }
     (plan, pplan)
+}
+
+/// The first location after `vars` (globals of `m` at their first locations).
+fn next_location(m: &hir::Module, vars: &[(GlobalId, u32)]) -> u32 {
+    vars.iter()
+        .map(|&(g, loc)| loc + location_count(&m.globals[g].ty, &m.structs))
+        .max()
+        .unwrap_or(0)
 }
 
 /// Locations for a shader's inputs or outputs on its own: explicit ones first (unless they
@@ -183,13 +218,19 @@ impl<'m> ProgramPlanner<'m> {
         };
         let offset = p.default_block(program);
         let frag_coord = fm.used_builtins.contains(&BuiltinVar::FragCoord);
-        p.pplan.finish_block(offset, frag_coord, options);
+        let clip = vm.used_builtins.contains(&BuiltinVar::ClipDistance);
+        p.pplan.finish_block(offset, frag_coord, clip, options);
         p.uniform_blocks();
         p.active_uniforms(program);
         // Samplers of a used uniform that a stage uses but whose leaf is inactive cannot
         // happen: activity is per variable.
         p.inputs_and_outputs(program);
         p.captured_outputs(&options.transform_feedback);
+        if fm.used_builtins.contains(&BuiltinVar::ClipDistance) {
+            let at = next_location(vm, &p.vplan.outputs);
+            p.vplan.clip_varying = Some(at);
+            p.fplan.clip_varying = Some(at);
+        }
         p
     }
 
@@ -197,13 +238,7 @@ impl<'m> ProgramPlanner<'m> {
     /// varyings when the fragment shader does not read them, and records where each is.
     fn captured_outputs(&mut self, names: &[String]) {
         let vm = self.vm;
-        let mut next = self
-            .vplan
-            .outputs
-            .iter()
-            .map(|&(g, loc)| loc + location_count(&vm.globals[g].ty, &vm.structs))
-            .max()
-            .unwrap_or(0);
+        let mut next = next_location(vm, &self.vplan.outputs);
         for name in names {
             let (base, element) = match name.strip_suffix(']').and_then(|n| n.split_once('[')) {
                 Some((b, i)) => match i.parse::<u32>() {

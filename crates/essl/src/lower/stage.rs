@@ -37,6 +37,7 @@ pub(super) fn lower_stage(
         stage: m.stage,
         options: options.clone(),
         fb_height: None,
+        clip_switches: None,
     };
     cx.default_uniform_block(plan, pplan);
     cx.uniform_blocks(plan)?;
@@ -106,6 +107,23 @@ impl ModuleCx<'_> {
                 });
             }
         }
+        let mut clip_member = None;
+        if m.stage == Stage::Vertex && m.used_builtins.contains(&BuiltinVar::ClipDistance) {
+            if let Some((_, off)) = pplan
+                .internal
+                .iter()
+                .find(|(k, _)| *k == InternalUniform::ClipDistancesEnabled)
+            {
+                let u32_ty = self.types.logical(&mut self.module, &Type::UINT);
+                clip_member = Some(members.len() as u32);
+                members.push(naga::StructMember {
+                    name: Some("_essl_clip_distances_enabled".into()),
+                    ty: u32_ty,
+                    binding: None,
+                    offset: *off,
+                });
+            }
+        }
         if members.is_empty() {
             return;
         }
@@ -142,6 +160,9 @@ impl ModuleCx<'_> {
         }
         if let Some(hm) = height_member {
             self.fb_height = Some((block, hm));
+        }
+        if let Some(cm) = clip_member {
+            self.clip_switches = Some((block, cm));
         }
     }
 

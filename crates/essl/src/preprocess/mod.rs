@@ -76,16 +76,14 @@ pub struct PreprocessOptions {
 }
 
 impl PreprocessOptions {
-    /// The extension macros a target's context defines: the directive names of the WebGL 1
-    /// extensions it enabled (WebGL 2 defines none of them).
+    /// The extension macros a target's context defines: the directive names of the extensions
+    /// it enabled that belong to it (a WebGL 2 context defines none of WebGL 1's).
     pub fn extension_macros(target: Target, enabled: &[Extension]) -> Vec<String> {
-        match target {
-            Target::WebGl1 => enabled
-                .iter()
-                .map(|e| e.directive_name().to_string())
-                .collect(),
-            Target::WebGl2 => Vec::new(),
-        }
+        enabled
+            .iter()
+            .filter(|e| e.target() == target)
+            .map(|e| e.directive_name().to_string())
+            .collect()
     }
 }
 

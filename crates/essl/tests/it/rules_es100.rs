@@ -347,3 +347,47 @@ fn webgl_limits_on_tokens_and_structs() {
         sh.diagnostics
     );
 }
+
+#[test]
+fn webgl2_clip_distances_where_the_context_and_the_shader_enable_them() {
+    let vs = r#"#version 300 es
+#extension GL_ANGLE_clip_cull_distance : require
+in vec4 p;
+void main() {
+    gl_Position = p;
+    for (int i = 0; i < gl_MaxClipDistances; i++) gl_ClipDistance[i] = p.x;
+    if (gl_MaxCullDistances > 0) gl_CullDistance[0] = p.y;
+}
+"#;
+    check_with(Stage::Vertex, vs, &CompileOptions::default());
+    check_with(
+        Stage::Fragment,
+        r#"#version 300 es
+#extension GL_ANGLE_clip_cull_distance : enable
+precision mediump float;
+out vec4 o;
+void main() {
+    o = vec4(gl_ClipDistance[0]);
+    gl_ClipDistance[1] = 0.0;
+  //^^^^^^^^^^^^^^^ error not-assignable: cannot assign to read-only built-in `gl_ClipDistance`
+}
+"#,
+        &CompileOptions::default(),
+    );
+    // A WebGL 2 context that has not enabled WEBGL_clip_cull_distance.
+    check_with(
+        Stage::Vertex,
+        r#"#version 300 es
+#extension GL_ANGLE_clip_cull_distance : require
+         //^^^^^^^^^^^^^^^^^^^^^^^^^^^ error extension-not-supported: extension `GL_ANGLE_clip_cull_distance` is not supported
+void main() {
+    gl_ClipDistance[0] = 1.0;
+  //^^^^^^^^^^^^^^^ error undeclared-identifier: `gl_ClipDistance` is not declared
+}
+"#,
+        &CompileOptions {
+            extensions: Vec::new(),
+            ..CompileOptions::default()
+        },
+    );
+}

@@ -476,7 +476,7 @@ impl Checker<'_> {
                     }
                 }
             }
-            ExprKind::BuiltinVar(v) => (!v.writable()).then(|| {
+            ExprKind::BuiltinVar(v) => (!v.writable_in(self.stage)).then(|| {
                 (
                     format!("cannot assign to read-only built-in `{}`", v.name()),
                     e.span,

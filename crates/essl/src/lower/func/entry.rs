@@ -96,6 +96,17 @@ fn io_binding(
     )
 }
 
+/// The binding of one of the two varyings that carry `gl_ClipDistance` to the fragment stage.
+fn clip_varying_binding(location: u32) -> naga::Binding {
+    naga::Binding::Location {
+        location,
+        interpolation: Some(naga::Interpolation::Perspective),
+        sampling: Some(naga::Sampling::Center),
+        blend_src: None,
+        per_primitive: false,
+    }
+}
+
 /// The members and values of the struct the entry point returns.
 #[derive(Default)]
 struct Outputs {
@@ -146,6 +157,7 @@ pub(crate) fn entry_point(
     let sp = Span::default();
     fx.copy_inputs(plan);
     let frag_coord_arg = fx.copy_builtin_inputs();
+    fx.copy_clip_distance_input(plan);
     fx.default_frag_depth(frag_coord_arg);
     // Call the shader's main.
     fx.push(
@@ -159,6 +171,7 @@ pub(crate) fn entry_point(
     let mut outputs = Outputs::default();
     if stage == Stage::Vertex {
         fx.vertex_builtin_outputs(&mut outputs);
+        fx.clip_distance_outputs(plan, &mut outputs);
     }
     fx.user_outputs(plan, &mut outputs);
     if stage == Stage::Fragment {
@@ -282,6 +295,105 @@ impl FnCx<'_, '_> {
             self.store_private(var, value);
         }
         frag_coord_arg
+    }
+
+    /// A fragment shader's `gl_ClipDistance`: the two `vec4` varyings the vertex stage writes
+    /// it to, copied into its private array.
+    fn copy_clip_distance_input(&mut self, plan: &StagePlan) {
+        let (Stage::Fragment, Some(&var), Some(loc)) = (
+            self.cx.stage,
+            self.cx.builtins.get(&BuiltinVar::ClipDistance),
+            plan.clip_varying,
+        ) else {
+            return;
+        };
+        let vec4 = Type::Vector(ScalarKind::Float, 4);
+        let nty = self.ty(&vec4);
+        for k in 0..2u32 {
+            let arg = self.argument(
+                format!("gl_ClipDistance_{k}"),
+                nty,
+                clip_varying_binding(loc + k),
+            );
+            for c in 0..4u32 {
+                let v = self.access_index(arg, c, Span::default());
+                let p = self.leaf_pointer(var, &[k * 4 + c]);
+                self.push(
+                    Statement::Store {
+                        pointer: p,
+                        value: v,
+                    },
+                    Span::default(),
+                );
+            }
+        }
+    }
+
+    /// A vertex shader's `gl_ClipDistance`: the API's clip distances (each 0, which clips
+    /// nothing, where the switches say the distance is disabled), and the two `vec4` varyings
+    /// that carry the values to a fragment shader that reads them.
+    fn clip_distance_outputs(&mut self, plan: &StagePlan, out: &mut Outputs) {
+        let sp = Span::default();
+        let var = self.cx.builtins.get(&BuiltinVar::ClipDistance).copied();
+        if var.is_none() && plan.clip_varying.is_none() {
+            return;
+        }
+        let n = crate::builtins::MAX_CLIP_DISTANCES;
+        let zero = self.lit(Literal::F32(0.0));
+        let values: Vec<Handle<Expression>> = (0..n)
+            .map(|i| match var {
+                Some(var) => {
+                    let p = self.leaf_pointer(var, &[i]);
+                    self.add(Expression::Load { pointer: p }, sp)
+                }
+                None => zero,
+            })
+            .collect();
+        if var.is_some() {
+            let mut clipped = values.clone();
+            if let Some((block, member)) = self.cx.clip_switches {
+                let bp = self.add(Expression::GlobalVariable(block), sp);
+                let mp = self.access_index(bp, member, sp);
+                let mask = self.add(Expression::Load { pointer: mp }, sp);
+                let none = self.lit(Literal::U32(0));
+                for (i, d) in clipped.iter_mut().enumerate() {
+                    let bit = self.lit(Literal::U32(1 << i));
+                    let on = self.binop(naga::BinaryOperator::And, mask, bit, sp);
+                    let on = self.binop(naga::BinaryOperator::NotEqual, on, none, sp);
+                    *d = self.add(
+                        Expression::Select {
+                            condition: on,
+                            accept: *d,
+                            reject: zero,
+                        },
+                        sp,
+                    );
+                }
+            }
+            let ty = Type::Array(Box::new(Type::FLOAT), n);
+            let value = self.compose(&ty, clipped, sp);
+            let nty = self.ty(&ty);
+            out.push(
+                "gl_ClipDistance".into(),
+                nty,
+                naga::Binding::BuiltIn(naga::BuiltIn::ClipDistances),
+                value,
+            );
+        }
+        if let Some(loc) = plan.clip_varying {
+            let vec4 = Type::Vector(ScalarKind::Float, 4);
+            let nty = self.ty(&vec4);
+            for k in 0..2u32 {
+                let parts = values[k as usize * 4..k as usize * 4 + 4].to_vec();
+                let v = self.compose(&vec4, parts, sp);
+                out.push(
+                    format!("gl_ClipDistance_{k}"),
+                    nty,
+                    clip_varying_binding(loc + k),
+                    v,
+                );
+            }
+        }
     }
 
     /// `gl_FragCoord` with y counted from the top, when the options ask for it and the
