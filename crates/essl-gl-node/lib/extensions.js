@@ -2,7 +2,7 @@
 // and `WEBGL_lose_context`, which the binding implements (a lost context is the binding's
 // state). One object per name and context, as browsers return the same object each time.
 import { loseContext, restoreContext } from './context.js';
-import { VERSION } from './objects.js';
+import { NATIVE, VERSION, WebGLShader, oid } from './objects.js';
 import { METHODS_2 } from './generated.js';
 
 /** ASTC's block sizes, in the order of their enums. */
@@ -68,6 +68,14 @@ const CONSTANTS = {
     ]),
   ),
   KHR_parallel_shader_compile: { COMPLETION_STATUS_KHR: 0x91b1 },
+  WEBGL_clip_cull_distance: {
+    MAX_CLIP_DISTANCES_WEBGL: 0x0d32,
+    MAX_CULL_DISTANCES_WEBGL: 0x82f9,
+    MAX_COMBINED_CLIP_AND_CULL_DISTANCES_WEBGL: 0x82fa,
+    ...Object.fromEntries(
+      Array.from({ length: 8 }, (_, i) => [`CLIP_DISTANCE${i}_WEBGL`, 0x3000 + i]),
+    ),
+  },
   OES_vertex_array_object: { VERTEX_ARRAY_BINDING_OES: 0x85b5 },
   ANGLE_instanced_arrays: { VERTEX_ATTRIB_ARRAY_DIVISOR_ANGLE: 0x88fe },
   OES_standard_derivatives: { FRAGMENT_SHADER_DERIVATIVE_HINT_OES: 0x8b8b },
@@ -140,6 +148,16 @@ export function extensionObject(ctx, native, name) {
   if (enabled === 'WEBGL_compressed_texture_astc') {
     // essl-gl decodes ASTC's LDR profile.
     Object.defineProperty(ext, 'getSupportedProfiles', { value: () => ['ldr'], enumerable: true });
+  }
+  if (enabled === 'WEBGL_debug_shaders') {
+    Object.defineProperty(ext, 'getTranslatedShaderSource', {
+      value(shader) {
+        const id = oid(ctx, shader, WebGLShader, false, 'getTranslatedShaderSource', 1);
+        const n = ctx[NATIVE];
+        return n === null ? null : n.getTranslatedShaderSource(id);
+      },
+      enumerable: true,
+    });
   }
   for (const [own, core] of Object.entries(METHODS[enabled] ?? {})) {
     const f = METHODS_2[core];

@@ -84,7 +84,8 @@ const WANTED_FEATURES: wgpu::Features = wgpu::Features::VERTEX_WRITABLE_STORAGE
     .union(wgpu::Features::DEPTH32FLOAT_STENCIL8)
     .union(wgpu::Features::FLOAT32_FILTERABLE)
     .union(wgpu::Features::FLOAT32_BLENDABLE)
-    .union(wgpu::Features::RG11B10UFLOAT_RENDERABLE);
+    .union(wgpu::Features::RG11B10UFLOAT_RENDERABLE)
+    .union(wgpu::Features::CLIP_DISTANCES);
 
 impl Context {
     /// Creates a context with an offscreen default framebuffer of `width` × `height` pixels
@@ -336,6 +337,7 @@ impl Context {
             }
             v.extend(crate::extensions::COMPRESSED_EXTENSIONS);
             v.push(Extension::TextureFilterAnisotropic);
+            v.push(Extension::DebugShaders);
             return v;
         }
         let mut v = vec![Extension::ColorBufferFloat, Extension::ColorBufferHalfFloat];
@@ -348,6 +350,10 @@ impl Context {
         v.push(Extension::ParallelShaderCompile);
         v.extend(crate::extensions::COMPRESSED_EXTENSIONS);
         v.push(Extension::TextureFilterAnisotropic);
+        v.push(Extension::DebugShaders);
+        if features.contains(wgpu::Features::CLIP_DISTANCES) {
+            v.push(Extension::ClipCullDistance);
+        }
         v
     }
 
@@ -372,6 +378,10 @@ impl Context {
             self.extensions.anisotropic = true;
             return Some(e);
         }
+        if e == Extension::DebugShaders {
+            // Nothing to turn on: get_translated_shader_source answers in any case.
+            return Some(e);
+        }
         if self.webgl1.on {
             self.enable_webgl1_extension(e);
             return Some(e);
@@ -387,6 +397,13 @@ impl Context {
             Extension::FloatBlend => {}
             Extension::TextureFloatLinear => x.texture_float_linear = true,
             Extension::ParallelShaderCompile => x.parallel_shader_compile = true,
+            Extension::ClipCullDistance => {
+                x.clip_cull_distance = true;
+                let shaders = &mut self.linker.shaders.extensions;
+                if !shaders.contains(&essl::Extension::WebglClipCullDistance) {
+                    shaders.push(essl::Extension::WebglClipCullDistance);
+                }
+            }
             webgl1 => self.enable_webgl1_extension(webgl1),
         }
         Some(e)

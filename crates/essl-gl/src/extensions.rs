@@ -13,7 +13,10 @@
 //! compressed-texture extensions (S3TC, S3TC sRGB, ETC, ETC1, ASTC LDR: decoded on upload,
 //! `texture/compressed.rs`) and `EXT_texture_filter_anisotropic` (wgpu's anisotropy clamp, up to
 //! 16, where the minification, magnification and mipmap filters are all linear, as wgpu
-//! requires). WebGL 1 contexts offer their own list besides, float textures
+//! requires). WebGL 2 contexts offer `WEBGL_clip_cull_distance` where the adapter has clip
+//! distances (eight; no cull distances: `state/clip_distance.rs`). Both offer
+//! `WEBGL_debug_shaders` (a compiled shader's lowered module as WGSL). WebGL 1 contexts offer their
+//! own list besides, float textures
 //! among them (`webgl1/float.rs`).
 
 /// The WebGL extensions a context has turned on.
@@ -29,6 +32,8 @@ pub(crate) struct Extensions {
     pub(crate) compressed: CompressedSet,
     /// `EXT_texture_filter_anisotropic`.
     pub(crate) anisotropic: bool,
+    /// `WEBGL_clip_cull_distance`.
+    pub(crate) clip_cull_distance: bool,
 }
 
 /// `EXT_texture_filter_anisotropic`'s texture and sampler parameter.
@@ -131,6 +136,10 @@ pub enum Extension {
     CompressedAstc,
     /// `EXT_texture_filter_anisotropic`.
     TextureFilterAnisotropic,
+    /// `WEBGL_clip_cull_distance` (WebGL 2; clip distances only, where the adapter has them).
+    ClipCullDistance,
+    /// `WEBGL_debug_shaders`: [`Context::get_translated_shader_source`](crate::Context::get_translated_shader_source).
+    DebugShaders,
 }
 
 impl Extension {
@@ -162,6 +171,8 @@ impl Extension {
             Extension::CompressedEtc1 => "WEBGL_compressed_texture_etc1",
             Extension::CompressedAstc => "WEBGL_compressed_texture_astc",
             Extension::TextureFilterAnisotropic => "EXT_texture_filter_anisotropic",
+            Extension::ClipCullDistance => "WEBGL_clip_cull_distance",
+            Extension::DebugShaders => "WEBGL_debug_shaders",
         }
     }
 }

@@ -126,4 +126,5 @@ pub const LOWER_OPTIONS: essl::program::LowerOptions = essl::program::LowerOptio
     flip_clip_y: true,
     transform_feedback: Vec::new(),
     integer_cube_as_array: true,
+    clip_distance_switches: true,
 };

@@ -160,7 +160,8 @@ impl Context {
     /// WebGL 1 context compiles GLSL ES 1.00 only (`#version 300 es` is refused), and a
     /// shader may enable with `#extension` (and sees the macro of) only the `extensions` the
     /// application turned on with `getExtension` (`OES_standard_derivatives`, …); a WebGL 2
-    /// context compiles both languages and ignores `extensions`. Only the shading language
+    /// context compiles both languages and takes only WebGL 2's extensions from `extensions`
+    /// (`WEBGL_clip_cull_distance`). Only the shading language
     /// changes: the rest of the API stays WebGL2's. Shaders compiled before keep their status
     /// until compiled again.
     pub fn set_shader_target(&mut self, target: essl::Target, extensions: &[essl::Extension]) {

@@ -52,6 +52,15 @@ impl NativeContext {
         Ok(Answer::string(self.gl()?.get_shader_source(s)))
     }
 
+    /// `WEBGL_debug_shaders.getTranslatedShaderSource`.
+    #[napi]
+    pub fn get_translated_shader_source(&mut self, shader: u32) -> napi::Result<Answer> {
+        let Some(s) = self.req(shader, "getTranslatedShaderSource") else {
+            return Ok(Answer::Null);
+        };
+        Ok(Answer::string(self.gl()?.get_translated_shader_source(s)))
+    }
+
     /// `compileShader`.
     #[napi]
     pub fn compile_shader(&mut self, shader: u32) -> napi::Result<()> {

@@ -371,21 +371,22 @@ impl Context {
         let serial = self.frame.serial();
         let gpu = &self.gpu;
         let height = self.fb.height as f32;
+        let clip_distances = self.clip_distances_enabled();
         let linked = self
             .objects
             .linked_mut(pid)
             .expect("current programs are linked");
         let block = linked.layout.uniform_block.as_ref()?;
         for (what, offset) in &block.internal {
-            match what {
-                InternalUniform::FramebufferHeight => {
-                    let at = *offset as usize;
-                    if let Some(dst) = linked.uniform_data.get_mut(at..at + 4) {
-                        if dst != height.to_ne_bytes() {
-                            dst.copy_from_slice(&height.to_ne_bytes());
-                            linked.uniform_version += 1;
-                        }
-                    }
+            let value = match what {
+                InternalUniform::FramebufferHeight => height.to_ne_bytes(),
+                InternalUniform::ClipDistancesEnabled => clip_distances.to_ne_bytes(),
+            };
+            let at = *offset as usize;
+            if let Some(dst) = linked.uniform_data.get_mut(at..at + 4) {
+                if dst != value {
+                    dst.copy_from_slice(&value);
+                    linked.uniform_version += 1;
                 }
             }
         }

@@ -53,12 +53,26 @@ pub(crate) enum LinkError {
 /// ([`Context::set_program_filter`](crate::Context::set_program_filter)) and the WebGL
 /// version shaders are compiled for
 /// ([`Context::set_shader_target`](crate::Context::set_shader_target)).
-#[derive(Default)]
 pub(crate) struct Linker {
     serial: u64,
     pub(crate) filter: Option<ProgramFilter>,
-    /// How shaders are compiled: the WebGL version and the WebGL 1 extensions turned on.
+    /// How shaders are compiled: the WebGL version and the extensions turned on.
     pub(crate) shaders: essl::CompileOptions,
+}
+
+impl Default for Linker {
+    /// WebGL 2, with none of WebGL 2's shader extensions until `getExtension` turns them on.
+    fn default() -> Linker {
+        let mut shaders = essl::CompileOptions::default();
+        shaders
+            .extensions
+            .retain(|e| e.target() == essl::Target::WebGl1);
+        Linker {
+            serial: 0,
+            filter: None,
+            shaders,
+        }
+    }
 }
 
 impl Linker {

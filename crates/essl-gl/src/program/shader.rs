@@ -104,6 +104,29 @@ impl Context {
         s.compiled = Some((s.source.clone(), compiled.ok()));
     }
 
+    /// `WEBGL_debug_shaders`' `getTranslatedShaderSource`: the shader as the last successful
+    /// compile lowered it, written as WGSL (the text wgpu is handed is naga IR; WGSL is its
+    /// readable form). Empty before a compile and after a failed one; setting a new source
+    /// changes nothing until it is compiled. Worked out when asked: compiles keep no copy.
+    pub fn get_translated_shader_source(&self, shader: Shader) -> Option<String> {
+        let id = self.shader_id(shader, "getTranslatedShaderSource")?;
+        let s = self.objects.shaders.get_any(id)?;
+        let Some((source, true)) = &s.compiled else {
+            return Some(String::new());
+        };
+        let stage = if s.ty == gl::VERTEX_SHADER {
+            essl::Stage::Vertex
+        } else {
+            essl::Stage::Fragment
+        };
+        let compiled = compile(&self.linker.shaders, stage, source);
+        let text = compiled.naga.as_ref().and_then(|(module, info)| {
+            naga::back::wgsl::write_string(module, info, naga::back::wgsl::WriterFlags::empty())
+                .ok()
+        });
+        Some(text.unwrap_or_default())
+    }
+
     /// Whether the last compile succeeded (`getShaderParameter(COMPILE_STATUS)`).
     pub fn get_shader_compile_status(&self, shader: Shader) -> bool {
         self.shader_id(shader, "getShaderParameter")

@@ -2,6 +2,7 @@
 //! and pixel storage (`pixel_storei`). The values live in [`values`]; this file and
 //! [`stencil`] hold the calls that check and set them.
 
+mod clip_distance;
 mod stencil;
 mod values;
 
@@ -102,6 +103,9 @@ impl Context {
 
     /// Sets capability `cap`; an unknown one → `INVALID_ENUM`.
     fn capability(&mut self, cap: u32, value: bool, function: &str) {
+        if let Some(i) = self.clip_distance_switch(cap) {
+            return self.set_clip_distance(i, value);
+        }
         match capability_flag!(self.state, cap, mut) {
             Some(flag) => *flag = value,
             None => self.error(
@@ -114,7 +118,8 @@ impl Context {
 
     /// Enables a capability (`DEPTH_TEST`, `CULL_FACE`, `BLEND`, `SCISSOR_TEST`,
     /// `STENCIL_TEST`, `POLYGON_OFFSET_FILL`, `RASTERIZER_DISCARD`, `SAMPLE_ALPHA_TO_COVERAGE`,
-    /// `SAMPLE_COVERAGE`, …); an unknown one → `INVALID_ENUM`. `DITHER` is state only.
+    /// `SAMPLE_COVERAGE`, …, and `CLIP_DISTANCEi_WEBGL` once `WEBGL_clip_cull_distance` is on);
+    /// an unknown one → `INVALID_ENUM`. `DITHER` is state only.
     pub fn enable(&mut self, cap: u32) {
         if self.webgl1_refuses("enable", &[cap]) {
             return;
@@ -134,6 +139,9 @@ impl Context {
     pub fn is_enabled(&self, cap: u32) -> bool {
         if self.webgl1_refuses("isEnabled", &[cap]) {
             return false;
+        }
+        if let Some(i) = self.clip_distance_switch(cap) {
+            return self.clip_distances_enabled() & (1 << i) != 0;
         }
         match capability_flag!(self.state, cap) {
             Some(flag) => *flag,

@@ -13,6 +13,8 @@ pub(crate) struct RenderState {
     pub(crate) viewport: [i32; 4],
     pub(crate) scissor: [i32; 4],
     pub(crate) scissor_test: bool,
+    /// `CLIP_DISTANCEi_WEBGL` switches: bit i.
+    pub(crate) clip_distances: u8,
     pub(crate) clear_color: [f32; 4],
     pub(crate) clear_depth: f32,
     pub(crate) clear_stencil: i32,
@@ -59,6 +61,7 @@ impl RenderState {
             viewport: [0, 0, width as i32, height as i32],
             scissor: [0, 0, width as i32, height as i32],
             scissor_test: false,
+            clip_distances: 0,
             clear_color: [0.0; 4],
             clear_depth: 1.0,
             clear_stencil: 0,
