@@ -59,6 +59,18 @@ async function main() {
     virtualConsole,
     beforeParse(window) {
       install(window);
+      // jsdom has no OffscreenCanvas. Pages that draw into one with a 2D context and upload it
+      // as a texture (extensions/oes-texture-*-with-canvas.html) get a detached <canvas> of
+      // that size, which the `canvas` package draws as it draws the page's other 2D canvases;
+      // the pages that need OffscreenCanvas itself (transfer, workers) are left out.
+      if (!window.OffscreenCanvas) {
+        window.OffscreenCanvas = function OffscreenCanvas(width, height) {
+          const c = window.document.createElement('canvas');
+          c.width = width;
+          c.height = height;
+          return c;
+        };
+      }
       // jsdom's postMessage sends a message whose `source` is null; a browser's names the
       // window that posted it, which the suite's setZeroTimeout (webgl-test-utils.js) checks.
       window.postMessage = (data) => {
