@@ -229,6 +229,31 @@ test('compressed textures: extension objects, the srcOffset and PIXEL_UNPACK_BUF
   ctx.destroy();
 });
 
+test('WEBGL_debug_shaders and WEBGL_clip_cull_distance: methods, constants, switches', () => {
+  const ctx = createContext(4, 4);
+  const dbg = ctx.getExtension('WEBGL_debug_shaders');
+  const s = ctx.createShader(ctx.FRAGMENT_SHADER);
+  assert.equal(dbg.getTranslatedShaderSource(s), '');
+  ctx.shaderSource(s, 'precision mediump float; void main() { gl_FragColor = gl_FragCoord; }');
+  assert.equal(dbg.getTranslatedShaderSource(s), '', 'not compiled yet');
+  ctx.compileShader(s);
+  const text = dbg.getTranslatedShaderSource(s);
+  assert.match(text, /@fragment/);
+  assert.match(text, /gl_FragCoord/);
+  assert.throws(() => dbg.getTranslatedShaderSource(null), TypeError);
+  assert.throws(() => dbg.getTranslatedShaderSource({}), TypeError);
+  const clip = ctx.getExtension('WEBGL_clip_cull_distance');
+  if (clip !== null) {
+    assert.equal(clip.CLIP_DISTANCE3_WEBGL, 0x3003);
+    assert.equal(ctx.getParameter(clip.MAX_CLIP_DISTANCES_WEBGL), 8);
+    assert.equal(ctx.getParameter(clip.MAX_CULL_DISTANCES_WEBGL), 0);
+    ctx.enable(clip.CLIP_DISTANCE3_WEBGL);
+    assert.equal(ctx.isEnabled(clip.CLIP_DISTANCE3_WEBGL), true);
+    assert.equal(ctx.getError(), ctx.NO_ERROR);
+  }
+  ctx.destroy();
+});
+
 test('WEBGL_lose_context: calls do nothing, getError says CONTEXT_LOST_WEBGL once, events, restore', async () => {
   const ctx = createContext(8, 8);
   const canvas = ctx.canvas;
