@@ -2,7 +2,7 @@
 // and `WEBGL_lose_context`, which the binding implements (a lost context is the binding's
 // state). One object per name and context, as browsers return the same object each time.
 import { loseContext, restoreContext } from './context.js';
-import { NATIVE, VERSION, WebGLShader, oid } from './objects.js';
+import { NATIVE, VERSION, WebGLShader, argc, oid, u32 } from './objects.js';
 import { METHODS_2 } from './generated.js';
 
 /** ASTC's block sizes, in the order of their enums. */
@@ -68,6 +68,14 @@ const CONSTANTS = {
     ]),
   ),
   KHR_parallel_shader_compile: { COMPLETION_STATUS_KHR: 0x91b1 },
+  EXT_clip_control: {
+    LOWER_LEFT_EXT: 0x8ca1,
+    UPPER_LEFT_EXT: 0x8ca2,
+    NEGATIVE_ONE_TO_ONE_EXT: 0x935e,
+    ZERO_TO_ONE_EXT: 0x935f,
+    CLIP_ORIGIN_EXT: 0x935c,
+    CLIP_DEPTH_MODE_EXT: 0x935d,
+  },
   WEBGL_clip_cull_distance: {
     MAX_CLIP_DISTANCES_WEBGL: 0x0d32,
     MAX_CULL_DISTANCES_WEBGL: 0x82f9,
@@ -148,6 +156,17 @@ export function extensionObject(ctx, native, name) {
   if (enabled === 'WEBGL_compressed_texture_astc') {
     // essl-gl decodes ASTC's LDR profile.
     Object.defineProperty(ext, 'getSupportedProfiles', { value: () => ['ldr'], enumerable: true });
+  }
+  if (enabled === 'EXT_clip_control') {
+    Object.defineProperty(ext, 'clipControlEXT', {
+      value(origin, depth) {
+        if (arguments.length < 2) throw argc('clipControlEXT', 2, arguments.length);
+        const [a0, a1] = [u32(origin), u32(depth)];
+        const n = ctx[NATIVE];
+        if (n !== null) n.clipControlExt(a0, a1);
+      },
+      enumerable: true,
+    });
   }
   if (enabled === 'WEBGL_debug_shaders') {
     Object.defineProperty(ext, 'getTranslatedShaderSource', {

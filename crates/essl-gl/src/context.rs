@@ -338,6 +338,7 @@ impl Context {
             v.extend(crate::extensions::COMPRESSED_EXTENSIONS);
             v.push(Extension::TextureFilterAnisotropic);
             v.push(Extension::DebugShaders);
+            v.push(Extension::ClipControl);
             return v;
         }
         let mut v = vec![Extension::ColorBufferFloat, Extension::ColorBufferHalfFloat];
@@ -351,6 +352,7 @@ impl Context {
         v.extend(crate::extensions::COMPRESSED_EXTENSIONS);
         v.push(Extension::TextureFilterAnisotropic);
         v.push(Extension::DebugShaders);
+        v.push(Extension::ClipControl);
         if features.contains(wgpu::Features::CLIP_DISTANCES) {
             v.push(Extension::ClipCullDistance);
         }
@@ -380,6 +382,10 @@ impl Context {
         }
         if e == Extension::DebugShaders {
             // Nothing to turn on: get_translated_shader_source answers in any case.
+            return Some(e);
+        }
+        if e == Extension::ClipControl {
+            self.extensions.clip_control = true;
             return Some(e);
         }
         if self.webgl1.on {

@@ -15,7 +15,8 @@
 //! 16, where the minification, magnification and mipmap filters are all linear, as wgpu
 //! requires). WebGL 2 contexts offer `WEBGL_clip_cull_distance` where the adapter has clip
 //! distances (eight; no cull distances: `state/clip_distance.rs`). Both offer
-//! `WEBGL_debug_shaders` (a compiled shader's lowered module as WGSL). WebGL 1 contexts offer their
+//! `WEBGL_debug_shaders` (a compiled shader's lowered module as WGSL) and `EXT_clip_control`
+//! (`state/clip_control.rs`). WebGL 1 contexts offer their
 //! own list besides, float textures
 //! among them (`webgl1/float.rs`).
 
@@ -34,6 +35,8 @@ pub(crate) struct Extensions {
     pub(crate) anisotropic: bool,
     /// `WEBGL_clip_cull_distance`.
     pub(crate) clip_cull_distance: bool,
+    /// `EXT_clip_control`.
+    pub(crate) clip_control: bool,
 }
 
 /// `EXT_texture_filter_anisotropic`'s texture and sampler parameter.
@@ -140,6 +143,8 @@ pub enum Extension {
     ClipCullDistance,
     /// `WEBGL_debug_shaders`: [`Context::get_translated_shader_source`](crate::Context::get_translated_shader_source).
     DebugShaders,
+    /// `EXT_clip_control`: [`Context::clip_control_ext`](crate::Context::clip_control_ext).
+    ClipControl,
 }
 
 impl Extension {
@@ -173,6 +178,7 @@ impl Extension {
             Extension::TextureFilterAnisotropic => "EXT_texture_filter_anisotropic",
             Extension::ClipCullDistance => "WEBGL_clip_cull_distance",
             Extension::DebugShaders => "WEBGL_debug_shaders",
+            Extension::ClipControl => "EXT_clip_control",
         }
     }
 }

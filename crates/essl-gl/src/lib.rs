@@ -127,4 +127,5 @@ pub const LOWER_OPTIONS: essl::program::LowerOptions = essl::program::LowerOptio
     transform_feedback: Vec::new(),
     integer_cube_as_array: true,
     clip_distance_switches: true,
+    clip_control: false,
 };

@@ -158,6 +158,7 @@ impl Options {
             transform_feedback: Vec::new(),
             integer_cube_as_array: false,
             clip_distance_switches: false,
+            clip_control: false,
         }
     }
 }

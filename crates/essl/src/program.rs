@@ -58,7 +58,20 @@ pub struct LowerOptions {
     /// [`InternalUniform::ClipDistancesEnabled`]: a vertex shader's `gl_ClipDistance[i]` clips
     /// only where bit `i` is set. Off, every distance clips, as a WebGPU pipeline does.
     pub clip_distance_switches: bool,
+    /// Declare `EXT_clip_control`'s state as two pipeline-overridable constants of the vertex
+    /// stage, [`CLIP_UPPER_LEFT`] and [`CLIP_ZERO_TO_ONE`] (false unless the pipeline sets
+    /// them): `UPPER_LEFT_EXT` takes back the negation [`LowerOptions::flip_clip_y`] makes (or
+    /// makes one without it), `ZERO_TO_ONE_EXT` keeps z as the shader wrote it where
+    /// [`LowerOptions::zero_to_one_depth`] would map it.
+    pub clip_control: bool,
 }
+
+/// The vertex stage's pipeline-overridable `bool` that is true under `EXT_clip_control`'s
+/// `UPPER_LEFT_EXT` origin ([`LowerOptions::clip_control`]).
+pub const CLIP_UPPER_LEFT: &str = "_essl_clip_upper_left";
+/// The vertex stage's pipeline-overridable `bool` that is true under `EXT_clip_control`'s
+/// `ZERO_TO_ONE_EXT` depth mode ([`LowerOptions::clip_control`]).
+pub const CLIP_ZERO_TO_ONE: &str = "_essl_clip_zero_to_one";
 
 impl Default for LowerOptions {
     fn default() -> Self {
@@ -69,6 +82,7 @@ impl Default for LowerOptions {
             transform_feedback: Vec::new(),
             integer_cube_as_array: false,
             clip_distance_switches: false,
+            clip_control: false,
         }
     }
 }

@@ -14,6 +14,13 @@ impl NativeContext {
         Ok(())
     }
 
+    /// `EXT_clip_control.clipControlEXT`.
+    #[napi]
+    pub fn clip_control_ext(&mut self, origin: u32, depth: u32) -> napi::Result<()> {
+        self.gl()?.clip_control_ext(origin, depth);
+        Ok(())
+    }
+
     /// `disable`.
     #[napi]
     pub fn disable(&mut self, cap: u32) -> napi::Result<()> {

@@ -172,11 +172,16 @@ impl Context {
         } else {
             None
         };
-        let program = self
+        let linked = self
             .objects
             .linked(call.program)
-            .expect("current programs are linked")
-            .serial;
+            .expect("current programs are linked");
+        let program = linked.serial;
+        let clip_control = if linked.layout.vertex.overrides.is_empty() {
+            (false, false)
+        } else {
+            self.state.clip_control
+        };
         let s = &self.state;
         let blend = s.blend.then(|| wgpu::BlendState {
             color: blend_component(s.blend_src_rgb, s.blend_dst_rgb, s.blend_equation_rgb),
@@ -220,8 +225,10 @@ impl Context {
             topology: call.topology,
             strip_index_format,
             cull_mode,
-            // Draws are flipped vertically (`LOWER_OPTIONS`), which swaps the winding.
-            front_face: if s.front_face == gl::CW {
+            // Draws are flipped vertically (`LOWER_OPTIONS`), which swaps the winding; under
+            // EXT_clip_control's upper-left origin they are not, and GL negates the polygon's
+            // area itself, so the winding is GL's as it stands.
+            front_face: if (s.front_face == gl::CW) != clip_control.0 {
                 wgpu::FrontFace::Ccw
             } else {
                 wgpu::FrontFace::Cw
@@ -246,6 +253,7 @@ impl Context {
             float_blend: self.blends_float32(),
             capture: call.capture.as_ref().map(|c| c.spec.clone()),
             rasterize: call.rasterize,
+            clip_control,
         };
         let uses_constant = blend.is_some_and(|b| {
             [

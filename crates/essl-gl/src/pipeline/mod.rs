@@ -75,6 +75,9 @@ pub(crate) struct PipelineKey {
     /// Whether fragments are made (false: `RASTERIZER_DISCARD` while capturing; the pass
     /// has a placeholder depth target and the pipeline no fragment stage).
     pub(crate) rasterize: bool,
+    /// `EXT_clip_control`'s (upper-left origin, zero-to-one depth) for a program whose vertex
+    /// stage declares them; (false, false) for another.
+    pub(crate) clip_control: (bool, bool),
 }
 
 /// What a group-0 bind group holds: the default block's arena chunk and size, and the
@@ -444,6 +447,17 @@ impl PipelineCache {
                 })
             })
             .collect();
+        // Only values that differ from the constants' defaults: a program without them (a
+        // layout of its own) then never gets a name its module lacks.
+        let (upper_left, zero_to_one) = key.clip_control;
+        let constants: Vec<(&str, f64)> = [
+            (essl::program::CLIP_UPPER_LEFT, upper_left),
+            (essl::program::CLIP_ZERO_TO_ONE, zero_to_one),
+        ]
+        .into_iter()
+        .filter(|(_, on)| *on)
+        .map(|(name, _)| (name, 1.0))
+        .collect();
         let pipeline = gpu
             .device
             .create_render_pipeline(&wgpu::RenderPipelineDescriptor {
@@ -452,7 +466,10 @@ impl PipelineCache {
                 vertex: wgpu::VertexState {
                     module: &vertex_module,
                     entry_point: Some("main"),
-                    compilation_options: Default::default(),
+                    compilation_options: wgpu::PipelineCompilationOptions {
+                        constants: &constants,
+                        ..Default::default()
+                    },
                     buffers: &buffers,
                 },
                 primitive: wgpu::PrimitiveState {

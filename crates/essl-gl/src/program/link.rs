@@ -55,6 +55,7 @@ impl Context {
                     let linked = essl::link::link_with_bindings(v, f, &obj.attrib_bindings);
                     let mut options = crate::LOWER_OPTIONS;
                     options.transform_feedback = obj.feedback_varyings.0.clone();
+                    options.clip_control = self.extensions.clip_control;
                     if linked.ok {
                         essl::lower::lower_program(v, f, &linked, &options)
                             .map_err(LinkError::from)

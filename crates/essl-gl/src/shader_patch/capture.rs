@@ -328,6 +328,30 @@ fn output_value(
         left: z2,
         right: w,
     });
+    // Under EXT_clip_control the lowering negated y and mapped z only where its overrides
+    // say so: undo each where it was done.
+    let control = |b: &mut Builder, name: &str| {
+        m.overrides
+            .iter()
+            .find(|(_, o)| o.name.as_deref() == Some(name))
+            .map(|(h, _)| b.plain(Expression::Override(h)))
+    };
+    let gy = match control(b, essl::program::CLIP_UPPER_LEFT) {
+        Some(upper_left) => b.emit(Expression::Select {
+            condition: upper_left,
+            accept: y,
+            reject: gy,
+        }),
+        None => gy,
+    };
+    let gz = match control(b, essl::program::CLIP_ZERO_TO_ONE) {
+        Some(zero_to_one) => b.emit(Expression::Select {
+            condition: zero_to_one,
+            accept: z,
+            reject: gz,
+        }),
+        None => gz,
+    };
     let vec4 = m.types.iter().find_map(|(h, t)| {
         matches!(
             t.inner,

@@ -2,6 +2,7 @@
 //! and pixel storage (`pixel_storei`). The values live in [`values`]; this file and
 //! [`stencil`] hold the calls that check and set them.
 
+mod clip_control;
 mod clip_distance;
 mod stencil;
 mod values;

@@ -3,6 +3,7 @@
 
 mod active_lists;
 mod binding;
+mod clip_control;
 mod clip_distance;
 mod common;
 mod compressed;

@@ -159,24 +159,6 @@ impl FnCx<'_, '_> {
         self.select(x_major, fx, fyz, span)
     }
 
-    /// `accept` where `condition` holds, else `reject`.
-    fn select(
-        &mut self,
-        condition: Handle<Expression>,
-        accept: Handle<Expression>,
-        reject: Handle<Expression>,
-        span: Span,
-    ) -> Handle<Expression> {
-        self.add(
-            Expression::Select {
-                condition,
-                accept,
-                reject,
-            },
-            span,
-        )
-    }
-
     /// The 0..1 coordinates on the face a cube direction selects (GLSL ES 3.00 §3.8.10's
     /// table of major axes: `sc`, `tc` over `|ma|`).
     fn cube_face_uv(&mut self, axes: &CubeAxes, span: Span) -> Handle<Expression> {

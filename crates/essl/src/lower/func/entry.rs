@@ -360,14 +360,7 @@ impl FnCx<'_, '_> {
                     let bit = self.lit(Literal::U32(1 << i));
                     let on = self.binop(naga::BinaryOperator::And, mask, bit, sp);
                     let on = self.binop(naga::BinaryOperator::NotEqual, on, none, sp);
-                    *d = self.add(
-                        Expression::Select {
-                            condition: on,
-                            accept: *d,
-                            reject: zero,
-                        },
-                        sp,
-                    );
+                    *d = self.select(on, *d, zero, sp);
                 }
             }
             let ty = Type::Array(Box::new(Type::FLOAT), n);
@@ -458,6 +451,11 @@ impl FnCx<'_, '_> {
         let sp = Span::default();
         let var = self.cx.builtins[&BuiltinVar::Position];
         let mut pos = self.load_private(var);
+        let control = self
+            .cx
+            .options
+            .clip_control
+            .then(|| self.clip_control_overrides());
         if self.cx.options.zero_to_one_depth {
             let x = self.access_index(pos, 0, sp);
             let y = self.access_index(pos, 1, sp);
@@ -465,25 +463,33 @@ impl FnCx<'_, '_> {
             let w = self.access_index(pos, 3, sp);
             let zw = self.binop(naga::BinaryOperator::Add, z, w, sp);
             let half = self.lit(Literal::F32(0.5));
-            let nz = self.binop(naga::BinaryOperator::Multiply, zw, half, sp);
+            let mut nz = self.binop(naga::BinaryOperator::Multiply, zw, half, sp);
+            if let Some((_, zero_to_one)) = control {
+                nz = self.select(zero_to_one, z, nz, sp);
+            }
             pos = self.compose(&Type::Vector(ScalarKind::Float, 4), vec![x, y, nz, w], sp);
             // Named so that a translation can point at it (essl-translate's comments).
             self.f
                 .named_expressions
                 .insert(pos, "clip_position_depth_0_to_w".into());
         }
-        if self.cx.options.flip_clip_y {
+        if self.cx.options.flip_clip_y || control.is_some() {
             let x = self.access_index(pos, 0, sp);
             let y = self.access_index(pos, 1, sp);
             let z = self.access_index(pos, 2, sp);
             let w = self.access_index(pos, 3, sp);
-            let ny = self.add(
+            let neg = self.add(
                 Expression::Unary {
                     op: naga::UnaryOperator::Negate,
                     expr: y,
                 },
                 sp,
             );
+            let ny = match (control, self.cx.options.flip_clip_y) {
+                (Some((upper_left, _)), true) => self.select(upper_left, y, neg, sp),
+                (Some((upper_left, _)), false) => self.select(upper_left, neg, y, sp),
+                (None, _) => neg,
+            };
             pos = self.compose(&Type::Vector(ScalarKind::Float, 4), vec![x, ny, z, w], sp);
             self.f
                 .named_expressions
@@ -507,6 +513,31 @@ impl FnCx<'_, '_> {
                 v,
             );
         }
+    }
+
+    /// `EXT_clip_control`'s two pipeline-overridable `bool`s, declared in the module, as
+    /// values: (origin `UPPER_LEFT_EXT`, depth `ZERO_TO_ONE_EXT`).
+    fn clip_control_overrides(&mut self) -> (Handle<Expression>, Handle<Expression>) {
+        let bool_ty = self.ty(&Type::BOOL);
+        let value = |fx: &mut Self, name: &str| {
+            let module = &mut fx.cx.module;
+            let init = module
+                .global_expressions
+                .append(Expression::Literal(Literal::Bool(false)), NSpan::UNDEFINED);
+            let o = module.overrides.append(
+                naga::Override {
+                    name: Some(name.to_owned()),
+                    id: None,
+                    ty: bool_ty,
+                    init: Some(init),
+                },
+                NSpan::UNDEFINED,
+            );
+            fx.add(Expression::Override(o), Span::default())
+        };
+        let upper_left = value(self, crate::program::CLIP_UPPER_LEFT);
+        let zero_to_one = value(self, crate::program::CLIP_ZERO_TO_ONE);
+        (upper_left, zero_to_one)
     }
 
     /// The shader's outputs, one member per leaf, read from their private variables.

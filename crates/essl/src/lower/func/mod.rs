@@ -395,6 +395,24 @@ impl<'c, 'a> FnCx<'c, 'a> {
         )
     }
 
+    /// `accept` where `condition` holds, else `reject`.
+    pub(crate) fn select(
+        &mut self,
+        condition: Handle<Expression>,
+        accept: Handle<Expression>,
+        reject: Handle<Expression>,
+        span: Span,
+    ) -> Handle<Expression> {
+        self.add(
+            Expression::Select {
+                condition,
+                accept,
+                reject,
+            },
+            span,
+        )
+    }
+
     pub(crate) fn lit(&mut self, l: Literal) -> Handle<Expression> {
         self.add(Expression::Literal(l), Span::default())
     }
