@@ -94,6 +94,14 @@ impl Context {
         if !matches!(filter, gl::NEAREST | gl::LINEAR) {
             return self.error(gl::INVALID_ENUM, F, format_args!("filter 0x{filter:04X}"));
         }
+        // A rectangle whose width or height, either way round, does not fit an i32 (ANGLE's
+        // "blit dimensions are out of range").
+        let fits = |a: i32, b: i32| (i64::from(b) - i64::from(a)).abs() <= i64::from(i32::MAX);
+        if !(fits(src_x0, src_x1) && fits(src_y0, src_y1) && fits(dst_x0, dst_x1))
+            || !fits(dst_y0, dst_y1)
+        {
+            return self.error(gl::INVALID_VALUE, F, "blit dimensions are out of range");
+        }
         let linear = filter == gl::LINEAR;
         if linear && mask & (gl::DEPTH_BUFFER_BIT | gl::STENCIL_BUFFER_BIT) != 0 {
             return self.error(

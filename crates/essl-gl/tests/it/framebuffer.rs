@@ -374,6 +374,16 @@ fn blit_errors_are_webgl2s_and_draw_nothing() {
         gl::LINEAR_MIPMAP_LINEAR,
     );
     assert_eq!(ctx.get_error(), gl::INVALID_ENUM);
+    // A width past i32::MAX; i32::MAX itself is a size GL clips.
+    let c = gl::COLOR_BUFFER_BIT;
+    let max = i32::MAX;
+    ctx.bind_framebuffer(gl::READ_FRAMEBUFFER, None);
+    ctx.blit_framebuffer(-1, 0, max, 4, 0, 0, 4, 4, c, gl::NEAREST);
+    assert_eq!(ctx.get_error(), gl::INVALID_VALUE);
+    ctx.blit_framebuffer(0, 0, 4, 4, 0, max, 4, -1, c, gl::NEAREST);
+    assert_eq!(ctx.get_error(), gl::INVALID_VALUE);
+    ctx.blit_framebuffer(0, 0, max, max, 0, 0, 4, 4, c, gl::NEAREST);
+    assert_eq!(ctx.get_error(), gl::NO_ERROR);
     // An integer image into a normalized one.
     let rb = ctx.create_renderbuffer();
     ctx.bind_renderbuffer(gl::RENDERBUFFER, Some(rb));
