@@ -133,7 +133,7 @@ impl Context {
             let draw = BlitDraw {
                 read: BlitSource::Color {
                     kind: kind_of(&source),
-                    samples: 1,
+                    samples: source.samples.max(1),
                 },
                 source: &source,
                 src,
@@ -194,12 +194,21 @@ impl Context {
     }
 
     /// A single-sampled copy of `image` (itself when it is one): multisampled images are
-    /// resolved, slices of 3D textures copied into a 2D texture.
+    /// resolved, slices of 3D textures copied into a 2D texture. A multisampled image of a
+    /// format the GPU cannot resolve (32-bit floats) is returned as it is: the blit shader
+    /// averages its samples.
     fn single_sampled(&mut self, image: &SurfaceImage) -> SurfaceImage {
         if image.samples <= 1 && !image.slice_3d {
             return image.clone();
         }
         let format = image.format.gpu_format();
+        let resolvable = format
+            .guaranteed_format_features(self.gpu.device.features())
+            .flags
+            .contains(wgpu::TextureFormatFeatureFlags::MULTISAMPLE_RESOLVE);
+        if !image.slice_3d && !resolvable {
+            return image.clone();
+        }
         let temp = self.gpu.device.create_texture(&wgpu::TextureDescriptor {
             label: Some("essl-gl blit source"),
             size: wgpu::Extent3d {

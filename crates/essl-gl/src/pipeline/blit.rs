@@ -71,7 +71,17 @@ fn source(key: &BlitKey) -> String {
                 ClearKind::Int => "i32",
                 ClearKind::Uint => "u32",
             };
-            if samples > 1 {
+            if samples > 1 && kind == ClearKind::Float {
+                // GL resolves a float image's samples to one value: their mean.
+                let sum = (0..samples)
+                    .map(|i| format!("textureLoad(src, texel, {i})"))
+                    .collect::<Vec<_>>()
+                    .join(" + ");
+                (
+                    format!("texture_multisampled_2d<{scalar}>"),
+                    format!("(({sum}) / {samples}.0)"),
+                )
+            } else if samples > 1 {
                 (
                     format!("texture_multisampled_2d<{scalar}>"),
                     "textureLoad(src, texel, 0)".to_owned(),
@@ -185,7 +195,7 @@ impl PipelineCache {
             BlitSource::Color { kind, samples } => (
                 match kind {
                     ClearKind::Float => wgpu::TextureSampleType::Float {
-                        filterable: key.linear,
+                        filterable: key.linear && samples <= 1,
                     },
                     ClearKind::Int => wgpu::TextureSampleType::Sint,
                     ClearKind::Uint => wgpu::TextureSampleType::Uint,

@@ -697,3 +697,44 @@ fn sample_coverage_masks_the_samples_a_draw_writes() {
     assert!((63..=64).contains(&quarter), "a quarter: {quarter}");
     assert_clean(&ctx);
 }
+
+#[test]
+fn multisampled_32_bit_floats_resolve_through_blit() {
+    // wgpu cannot resolve R32Float and RGBA32Float; the blit shader averages their samples.
+    let Some(mut ctx) = context(2, 2) else { return };
+    assert!(ctx.get_extension("EXT_color_buffer_float").is_some());
+    for format in [gl::R32F, gl::RGBA32F, gl::R16F] {
+        let samples = match ctx.get_internalformat_parameter(gl::RENDERBUFFER, format, gl::SAMPLES)
+        {
+            Some(essl_gl::Parameter::Ints(s)) if !s.is_empty() => s[0],
+            _ => continue,
+        };
+        let framebuffer = |ctx: &mut Context, samples: i32| {
+            let rb = ctx.create_renderbuffer();
+            ctx.bind_renderbuffer(gl::RENDERBUFFER, Some(rb));
+            ctx.renderbuffer_storage_multisample(gl::RENDERBUFFER, samples, format, 2, 2);
+            let fb = ctx.create_framebuffer();
+            ctx.bind_framebuffer(gl::FRAMEBUFFER, Some(fb));
+            ctx.framebuffer_renderbuffer(
+                gl::FRAMEBUFFER,
+                gl::COLOR_ATTACHMENT0,
+                gl::RENDERBUFFER,
+                Some(rb),
+            );
+            fb
+        };
+        let resolved = framebuffer(&mut ctx, 0);
+        // Bound to FRAMEBUFFER: the clear and the blit's read.
+        framebuffer(&mut ctx, samples);
+        ctx.clear_color(1000.0, 1000.0, 1000.0, 1000.0);
+        ctx.clear(gl::COLOR_BUFFER_BIT);
+        ctx.bind_framebuffer(gl::DRAW_FRAMEBUFFER, Some(resolved));
+        ctx.blit_framebuffer(0, 0, 2, 2, 0, 0, 2, 2, gl::COLOR_BUFFER_BIT, gl::NEAREST);
+        ctx.bind_framebuffer(gl::READ_FRAMEBUFFER, Some(resolved));
+        let mut texel = [0f32; 4];
+        ctx.read_pixels(0, 0, 1, 1, gl::RGBA, gl::FLOAT, &mut texel);
+        assert_eq!(ctx.get_error(), gl::NO_ERROR);
+        assert_eq!(texel[0], 1000.0, "format 0x{format:04X}");
+    }
+    assert_clean(&ctx);
+}
