@@ -57,6 +57,18 @@ pub(crate) fn write(input: &Input) -> Result<Vec<Line>> {
         out: Vec::new(),
         written: HashSet::new(),
     };
+    // WGSL names the extensions a module uses before any declaration.
+    let clip_distances = module.types.iter().any(|(_, t)| match &t.inner {
+        naga::TypeInner::Struct { members, .. } => members
+            .iter()
+            .any(|m| m.binding == Some(Binding::BuiltIn(naga::BuiltIn::ClipDistances))),
+        _ => false,
+    });
+    if clip_distances {
+        w.out
+            .push(Line::new(0, "enable clip_distances;".into(), Origin::None));
+        w.out.push(Line::new(0, String::new(), Origin::None));
+    }
     w.structs()?;
     w.bindings()?;
     w.privates()?;

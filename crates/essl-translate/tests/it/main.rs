@@ -2,6 +2,7 @@
 //! and linking them was most of the test suite's time). Each module is one former file.
 
 mod binding_map;
+mod clip_distances;
 mod corpora;
 mod hazards;
 mod scenes;
