@@ -13,7 +13,10 @@ if ! command -v node >/dev/null || ! command -v npm >/dev/null; then
     echo "test-essl-node: Node.js or npm is not installed; the npm package's tests skip" >&2
     exit 0
 fi
-cargo build -p essl-node --quiet
+# The addon as the workspace's test build resolves features: `cargo build -p essl-node` would
+# resolve them for that package alone and compile naga, wgpu and essl's crates once more
+# (about 40 units); after `cargo test` this builds the two Node addons and nothing else.
+cargo build --workspace --lib --tests --quiet
 cd crates/essl-node
 node scripts/build.mjs --no-build
 stamp=node_modules/.essl-lock

@@ -17,7 +17,10 @@ if ! command -v node >/dev/null || ! command -v npm >/dev/null; then
     [ "${ESSL_REQUIRE_CORPORA:-}" = 1 ] && exit 1
     exit 0
 fi
-cargo build -p essl-gl-node --quiet
+# The addon as the workspace's test build resolves features: `cargo build -p essl-gl-node` would
+# resolve them for that package alone and compile naga, wgpu and essl's crates once more
+# (about 40 units); after `cargo test` this builds the two Node addons and nothing else.
+cargo build --workspace --lib --tests --quiet
 target="$(cargo metadata --format-version 1 --no-deps | node -e 'let s="";process.stdin.on("data",d=>s+=d).on("end",()=>console.log(JSON.parse(s).target_directory))')"
 addon="$target/debug/essl-gl.linux-x64-gnu.node"
 cp "$target/debug/libessl_gl_node.so" "$addon"
