@@ -97,9 +97,13 @@ impl Context {
         // A rectangle whose width or height, either way round, does not fit an i32 (ANGLE's
         // "blit dimensions are out of range").
         let fits = |a: i32, b: i32| (i64::from(b) - i64::from(a)).abs() <= i64::from(i32::MAX);
-        if !(fits(src_x0, src_x1) && fits(src_y0, src_y1) && fits(dst_x0, dst_x1))
-            || !fits(dst_y0, dst_y1)
-        {
+        let spans = [
+            (src_x0, src_x1),
+            (src_y0, src_y1),
+            (dst_x0, dst_x1),
+            (dst_y0, dst_y1),
+        ];
+        if !spans.iter().all(|&(a, b)| fits(a, b)) {
             return self.error(gl::INVALID_VALUE, F, "blit dimensions are out of range");
         }
         let linear = filter == gl::LINEAR;
