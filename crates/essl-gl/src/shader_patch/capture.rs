@@ -328,30 +328,26 @@ fn output_value(
         left: z2,
         right: w,
     });
-    // Under EXT_clip_control the lowering negated y and mapped z only where its overrides
-    // say so: undo each where it was done.
-    let control = |b: &mut Builder, name: &str| {
-        m.overrides
-            .iter()
-            .find(|(_, o)| o.name.as_deref() == Some(name))
-            .map(|(h, _)| b.plain(Expression::Override(h)))
+    // Under EXT_clip_control the lowering negated y and mapped z only where its overrides say
+    // so: the value as the lowering left it (`lowered`) where override `name` is true, else
+    // `undone`; `undone` alone where the module has no such override.
+    let unless = |b: &mut Builder, name: &str, lowered, undone| match m
+        .overrides
+        .iter()
+        .find(|(_, o)| o.name.as_deref() == Some(name))
+    {
+        Some((h, _)) => {
+            let condition = b.plain(Expression::Override(h));
+            b.emit(Expression::Select {
+                condition,
+                accept: lowered,
+                reject: undone,
+            })
+        }
+        None => undone,
     };
-    let gy = match control(b, essl::program::CLIP_UPPER_LEFT) {
-        Some(upper_left) => b.emit(Expression::Select {
-            condition: upper_left,
-            accept: y,
-            reject: gy,
-        }),
-        None => gy,
-    };
-    let gz = match control(b, essl::program::CLIP_ZERO_TO_ONE) {
-        Some(zero_to_one) => b.emit(Expression::Select {
-            condition: zero_to_one,
-            accept: z,
-            reject: gz,
-        }),
-        None => gz,
-    };
+    let gy = unless(b, essl::program::CLIP_UPPER_LEFT, y, gy);
+    let gz = unless(b, essl::program::CLIP_ZERO_TO_ONE, z, gz);
     let vec4 = m.types.iter().find_map(|(h, t)| {
         matches!(
             t.inner,

@@ -488,17 +488,7 @@ fn three_draw_buffers_take_three_outputs() {
 #[test]
 fn an_integer_attachment_holds_ids_read_back_as_integers() {
     let Some(mut ctx) = context(4, 4) else { return };
-    let rb = ctx.create_renderbuffer();
-    ctx.bind_renderbuffer(gl::RENDERBUFFER, Some(rb));
-    ctx.renderbuffer_storage(gl::RENDERBUFFER, gl::R32UI, 4, 4);
-    let fb = ctx.create_framebuffer();
-    ctx.bind_framebuffer(gl::FRAMEBUFFER, Some(fb));
-    ctx.framebuffer_renderbuffer(
-        gl::FRAMEBUFFER,
-        gl::COLOR_ATTACHMENT0,
-        gl::RENDERBUFFER,
-        Some(rb),
-    );
+    renderbuffer_framebuffer(&mut ctx, gl::R32UI, 0, 4, 4);
     // clear() with a float colour is an error on an integer buffer; clearBufferuiv is not.
     ctx.clear(gl::COLOR_BUFFER_BIT);
     assert_eq!(ctx.get_error(), gl::INVALID_OPERATION);
@@ -709,23 +699,9 @@ fn multisampled_32_bit_floats_resolve_through_blit() {
             Some(essl_gl::Parameter::Ints(s)) if !s.is_empty() => s[0],
             _ => continue,
         };
-        let framebuffer = |ctx: &mut Context, samples: i32| {
-            let rb = ctx.create_renderbuffer();
-            ctx.bind_renderbuffer(gl::RENDERBUFFER, Some(rb));
-            ctx.renderbuffer_storage_multisample(gl::RENDERBUFFER, samples, format, 2, 2);
-            let fb = ctx.create_framebuffer();
-            ctx.bind_framebuffer(gl::FRAMEBUFFER, Some(fb));
-            ctx.framebuffer_renderbuffer(
-                gl::FRAMEBUFFER,
-                gl::COLOR_ATTACHMENT0,
-                gl::RENDERBUFFER,
-                Some(rb),
-            );
-            fb
-        };
-        let resolved = framebuffer(&mut ctx, 0);
+        let resolved = renderbuffer_framebuffer(&mut ctx, format, 0, 2, 2);
         // Bound to FRAMEBUFFER: the clear and the blit's read.
-        framebuffer(&mut ctx, samples);
+        renderbuffer_framebuffer(&mut ctx, format, samples, 2, 2);
         ctx.clear_color(1000.0, 1000.0, 1000.0, 1000.0);
         ctx.clear(gl::COLOR_BUFFER_BIT);
         ctx.bind_framebuffer(gl::DRAW_FRAMEBUFFER, Some(resolved));

@@ -90,40 +90,13 @@ impl ModuleCx<'_> {
         let wants_height = m.stage == Stage::Fragment
             && self.options.flip_frag_coord_y
             && m.used_builtins.contains(&BuiltinVar::FragCoord);
-        let mut height_member = None;
-        if wants_height {
-            if let Some((_, off)) = pplan
-                .internal
-                .iter()
-                .find(|(k, _)| *k == InternalUniform::FramebufferHeight)
-            {
-                let f32_ty = self.types.logical(&mut self.module, &Type::FLOAT);
-                height_member = Some(members.len() as u32);
-                members.push(naga::StructMember {
-                    name: Some("_essl_framebuffer_height".into()),
-                    ty: f32_ty,
-                    binding: None,
-                    offset: *off,
-                });
-            }
-        }
-        let mut clip_member = None;
-        if m.stage == Stage::Vertex && m.used_builtins.contains(&BuiltinVar::ClipDistance) {
-            if let Some((_, off)) = pplan
-                .internal
-                .iter()
-                .find(|(k, _)| *k == InternalUniform::ClipDistancesEnabled)
-            {
-                let u32_ty = self.types.logical(&mut self.module, &Type::UINT);
-                clip_member = Some(members.len() as u32);
-                members.push(naga::StructMember {
-                    name: Some("_essl_clip_distances_enabled".into()),
-                    ty: u32_ty,
-                    binding: None,
-                    offset: *off,
-                });
-            }
-        }
+        let height_member = wants_height
+            .then(|| self.internal_member(&mut members, pplan, InternalUniform::FramebufferHeight))
+            .flatten();
+        let clip_member = (m.stage == Stage::Vertex
+            && m.used_builtins.contains(&BuiltinVar::ClipDistance))
+        .then(|| self.internal_member(&mut members, pplan, InternalUniform::ClipDistancesEnabled))
+        .flatten();
         if members.is_empty() {
             return;
         }
@@ -164,6 +137,29 @@ impl ModuleCx<'_> {
         if let Some(cm) = clip_member {
             self.clip_switches = Some((block, cm));
         }
+    }
+
+    /// Appends the member of the default block that holds internal value `what`, where the
+    /// plan placed one; its index.
+    fn internal_member(
+        &mut self,
+        members: &mut Vec<naga::StructMember>,
+        pplan: &ProgramPlan,
+        what: InternalUniform,
+    ) -> Option<u32> {
+        let &(_, offset) = pplan.internal.iter().find(|(k, _)| *k == what)?;
+        let (name, ty) = match what {
+            InternalUniform::FramebufferHeight => ("_essl_framebuffer_height", Type::FLOAT),
+            InternalUniform::ClipDistancesEnabled => ("_essl_clip_distances_enabled", Type::UINT),
+        };
+        let ty = self.types.logical(&mut self.module, &ty);
+        members.push(naga::StructMember {
+            name: Some(name.into()),
+            ty,
+            binding: None,
+            offset,
+        });
+        Some(members.len() as u32 - 1)
     }
 
     /// The uniform blocks the plan binds, each a std140 struct in group 0.
