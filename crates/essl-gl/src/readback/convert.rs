@@ -229,13 +229,26 @@ pub(super) fn encode(t: Texel, format: u32, ty: u32, out: &mut [u8]) {
         }
         (Texel::Int(c), _) => {
             for (i, &ch) in pick.iter().enumerate() {
-                out[4 * i..4 * i + 4].copy_from_slice(&(c[ch] as i32).to_ne_bytes());
+                write_integer(out, i, ty, c[ch]);
             }
         }
         (Texel::Uint(c), _) => {
             for (i, &ch) in pick.iter().enumerate() {
-                out[4 * i..4 * i + 4].copy_from_slice(&(c[ch] as u32).to_ne_bytes());
+                write_integer(out, i, ty, c[ch] as i64);
             }
         }
+    }
+}
+
+/// Writes channel `i` of an integer texel as client data of type `ty` (the implementation's
+/// pair of an 8- or 16-bit integer image is `BYTE`, `SHORT` or their unsigned types):
+/// the value's low bits, as GL converts it.
+fn write_integer(out: &mut [u8], i: usize, ty: u32, v: i64) {
+    match ty {
+        gl::BYTE | gl::UNSIGNED_BYTE => out[i] = v as u8,
+        gl::SHORT | gl::UNSIGNED_SHORT => {
+            out[2 * i..2 * i + 2].copy_from_slice(&(v as u16).to_ne_bytes())
+        }
+        _ => out[4 * i..4 * i + 4].copy_from_slice(&(v as u32).to_ne_bytes()),
     }
 }

@@ -4,7 +4,7 @@
 use crate::common;
 
 use common::*;
-use essl_gl::{gl, Context, Texture};
+use essl_gl::{gl, Context, Parameter, Texture};
 
 const PASS_VS: &str = "#version 300 es
 in vec4 a_position;
@@ -696,7 +696,7 @@ fn multisampled_32_bit_floats_resolve_through_blit() {
     for format in [gl::R32F, gl::RGBA32F, gl::R16F] {
         let samples = match ctx.get_internalformat_parameter(gl::RENDERBUFFER, format, gl::SAMPLES)
         {
-            Some(essl_gl::Parameter::Ints(s)) if !s.is_empty() => s[0],
+            Some(Parameter::Ints(s)) if !s.is_empty() => s[0],
             _ => continue,
         };
         let resolved = renderbuffer_framebuffer(&mut ctx, format, 0, 2, 2);
@@ -713,4 +713,63 @@ fn multisampled_32_bit_floats_resolve_through_blit() {
         assert_eq!(texel[0], 1000.0, "format 0x{format:04X}");
     }
     assert_clean(&ctx);
+}
+
+#[test]
+fn small_integer_images_read_back_in_their_own_pair() {
+    // The implementation's pair of an 8- or 16-bit integer image names a 1- or 2-byte type.
+    let Some(mut ctx) = context(2, 2) else { return };
+    for (format, bytes) in [
+        (gl::RGBA8I, 1),
+        (gl::RGBA8UI, 1),
+        (gl::RGBA16I, 2),
+        (gl::RG16UI, 2),
+        (gl::R32I, 4),
+    ] {
+        renderbuffer_framebuffer(&mut ctx, format, 0, 2, 2);
+        ctx.clear_bufferiv(gl::COLOR, 0, &[3, 5, 7, 9]);
+        ctx.clear_bufferuiv(gl::COLOR, 0, &[3, 5, 7, 9]);
+        let Some(Parameter::Enum(f)) = ctx.get_parameter(gl::IMPLEMENTATION_COLOR_READ_FORMAT)
+        else {
+            panic!("no read format for 0x{format:04X}");
+        };
+        let Some(Parameter::Enum(ty)) = ctx.get_parameter(gl::IMPLEMENTATION_COLOR_READ_TYPE)
+        else {
+            panic!("no read type for 0x{format:04X}");
+        };
+        let _ = ctx.get_error();
+        // The first channel of the first pixel, read into the array type `ty` takes.
+        let first = match ty {
+            gl::BYTE => read_first::<i8>(&mut ctx, f, ty, 16) as i64,
+            gl::UNSIGNED_BYTE => read_first::<u8>(&mut ctx, f, ty, 16) as i64,
+            gl::SHORT => read_first::<i16>(&mut ctx, f, ty, 16) as i64,
+            gl::UNSIGNED_SHORT => read_first::<u16>(&mut ctx, f, ty, 16) as i64,
+            gl::INT => read_first::<i32>(&mut ctx, f, ty, 16) as i64,
+            _ => read_first::<u32>(&mut ctx, f, ty, 16) as i64,
+        };
+        assert_eq!(
+            ctx.get_error(),
+            gl::NO_ERROR,
+            "format 0x{format:04X}: 0x{f:X} 0x{ty:X}"
+        );
+        assert_eq!(first, 3, "format 0x{format:04X}");
+        let size = match ty {
+            gl::BYTE | gl::UNSIGNED_BYTE => 1,
+            gl::SHORT | gl::UNSIGNED_SHORT => 2,
+            _ => 4,
+        };
+        assert_eq!(size, bytes, "format 0x{format:04X}: its own type");
+    }
+}
+
+/// The first element `read_pixels` writes of a 2 × 2 read in `(format, ty)` into `n` `T`s.
+fn read_first<T: essl_gl::ArrayElement + Copy + Default>(
+    ctx: &mut Context,
+    format: u32,
+    ty: u32,
+    n: usize,
+) -> T {
+    let mut out = vec![T::default(); n];
+    ctx.read_pixels(0, 0, 2, 2, format, ty, &mut out[..]);
+    out[0]
 }
