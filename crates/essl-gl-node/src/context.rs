@@ -93,7 +93,7 @@ impl NativeContext {
     }
 
     /// Frees the context's GPU device and memory now; later calls do nothing.
-    #[napi]
+    #[napi(catch_unwind)]
     pub fn destroy(&mut self) {
         if let Some(ctx) = self.ctx.take() {
             drop(ctx);
@@ -115,7 +115,7 @@ impl NativeContext {
     }
 
     /// Gives the drawing buffer a new size (a canvas's `width` or `height` set).
-    #[napi]
+    #[napi(catch_unwind)]
     pub fn resize(&mut self, width: u32, height: u32) -> napi::Result<()> {
         self.gl()?
             .resize_drawing_buffer(width.max(1), height.max(1));
@@ -135,7 +135,7 @@ impl NativeContext {
     }
 
     /// The attributes the context was made with (`getContextAttributes`).
-    #[napi]
+    #[napi(catch_unwind)]
     pub fn get_context_attributes(&self) -> Option<Attributes> {
         self.ctx.as_ref().map(|c| c.get_context_attributes().into())
     }
@@ -143,7 +143,7 @@ impl NativeContext {
     /// Ends a frame as a browser does when a task that drew returns: queries and fences
     /// become available; a `composited` canvas (one in a document) has its drawing buffer
     /// cleared unless `preserveDrawingBuffer`, an offscreen one keeps it.
-    #[napi]
+    #[napi(catch_unwind)]
     pub fn present(&mut self, composited: bool) -> napi::Result<()> {
         let c = self.gl()?;
         if composited {
@@ -155,7 +155,7 @@ impl NativeContext {
     }
 
     /// The adapter's name and driver (`"llvmpipe (LLVM 15.0.6, 256 bits)"`).
-    #[napi]
+    #[napi(catch_unwind)]
     pub fn adapter(&self) -> String {
         self.ctx.as_ref().map_or(String::new(), |c| {
             let i = c.adapter_info();
@@ -164,13 +164,13 @@ impl NativeContext {
     }
 
     /// The message of the first error `getError` would return, if any.
-    #[napi]
+    #[napi(catch_unwind)]
     pub fn error_message(&self) -> Option<String> {
         self.ctx.as_ref().and_then(Context::error_message)
     }
 
     /// Validation errors wgpu reported (a bug in essl-gl if not empty).
-    #[napi]
+    #[napi(catch_unwind)]
     pub fn backend_errors(&self) -> Vec<String> {
         self.ctx
             .as_ref()
@@ -178,7 +178,7 @@ impl NativeContext {
     }
 
     /// How many object ids are registered in this thread (all contexts).
-    #[napi]
+    #[napi(catch_unwind)]
     pub fn registered_objects() -> u32 {
         registry::len() as u32
     }

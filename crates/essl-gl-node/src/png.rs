@@ -27,13 +27,13 @@ pub(crate) fn encode(width: u32, height: u32, rgba: &[u8]) -> Result<Vec<u8>, Bi
 #[napi]
 impl NativeContext {
     /// The drawing buffer as RGBA8 pixels, top row first (what a canvas shows).
-    #[napi]
+    #[napi(catch_unwind)]
     pub fn drawing_buffer_pixels(&mut self) -> napi::Result<Buffer> {
         Ok(self.gl()?.read_drawing_buffer().into())
     }
 
     /// The drawing buffer as a PNG file.
-    #[napi]
+    #[napi(catch_unwind)]
     pub fn to_png(&mut self) -> napi::Result<Buffer> {
         let c = self.gl()?;
         let (w, h) = (c.drawing_buffer_width(), c.drawing_buffer_height());

@@ -11,14 +11,14 @@ use crate::view::View;
 #[napi]
 impl NativeContext {
     /// `createRenderbuffer`.
-    #[napi]
+    #[napi(catch_unwind)]
     pub fn create_renderbuffer(&mut self) -> napi::Result<u32> {
         let r = self.gl()?.create_renderbuffer();
         Ok(self.register(Handle::Renderbuffer(r)))
     }
 
     /// `isRenderbuffer`.
-    #[napi]
+    #[napi(catch_unwind)]
     pub fn is_renderbuffer(&mut self, renderbuffer: u32) -> napi::Result<bool> {
         let r = self
             .arg::<Renderbuffer>(renderbuffer, "isRenderbuffer")
@@ -27,7 +27,7 @@ impl NativeContext {
     }
 
     /// `deleteRenderbuffer`.
-    #[napi]
+    #[napi(catch_unwind)]
     pub fn delete_renderbuffer(&mut self, renderbuffer: u32) -> napi::Result<()> {
         if let Some(r) = self
             .arg::<Renderbuffer>(renderbuffer, "deleteRenderbuffer")
@@ -39,7 +39,7 @@ impl NativeContext {
     }
 
     /// `bindRenderbuffer`.
-    #[napi]
+    #[napi(catch_unwind)]
     pub fn bind_renderbuffer(&mut self, target: u32, renderbuffer: u32) -> napi::Result<()> {
         if let Some(r) = self.arg(renderbuffer, "bindRenderbuffer") {
             self.gl()?.bind_renderbuffer(target, r);
@@ -48,7 +48,7 @@ impl NativeContext {
     }
 
     /// `renderbufferStorage`.
-    #[napi]
+    #[napi(catch_unwind)]
     pub fn renderbuffer_storage(
         &mut self,
         target: u32,
@@ -62,7 +62,7 @@ impl NativeContext {
     }
 
     /// `renderbufferStorageMultisample`.
-    #[napi]
+    #[napi(catch_unwind)]
     pub fn renderbuffer_storage_multisample(
         &mut self,
         target: u32,
@@ -77,13 +77,13 @@ impl NativeContext {
     }
 
     /// `getRenderbufferParameter`.
-    #[napi]
+    #[napi(catch_unwind)]
     pub fn get_renderbuffer_parameter(&mut self, target: u32, pname: u32) -> napi::Result<Answer> {
         Ok(self.gl()?.get_renderbuffer_parameter(target, pname).into())
     }
 
     /// `getInternalformatParameter`.
-    #[napi]
+    #[napi(catch_unwind)]
     pub fn get_internalformat_parameter(
         &mut self,
         target: u32,
@@ -97,14 +97,14 @@ impl NativeContext {
     }
 
     /// `createFramebuffer`.
-    #[napi]
+    #[napi(catch_unwind)]
     pub fn create_framebuffer(&mut self) -> napi::Result<u32> {
         let f = self.gl()?.create_framebuffer();
         Ok(self.register(Handle::Framebuffer(f)))
     }
 
     /// `isFramebuffer`.
-    #[napi]
+    #[napi(catch_unwind)]
     pub fn is_framebuffer(&mut self, framebuffer: u32) -> napi::Result<bool> {
         let f = self
             .arg::<Framebuffer>(framebuffer, "isFramebuffer")
@@ -113,7 +113,7 @@ impl NativeContext {
     }
 
     /// `deleteFramebuffer`.
-    #[napi]
+    #[napi(catch_unwind)]
     pub fn delete_framebuffer(&mut self, framebuffer: u32) -> napi::Result<()> {
         if let Some(f) = self
             .arg::<Framebuffer>(framebuffer, "deleteFramebuffer")
@@ -125,7 +125,7 @@ impl NativeContext {
     }
 
     /// `bindFramebuffer`.
-    #[napi]
+    #[napi(catch_unwind)]
     pub fn bind_framebuffer(&mut self, target: u32, framebuffer: u32) -> napi::Result<()> {
         if let Some(f) = self.arg(framebuffer, "bindFramebuffer") {
             self.gl()?.bind_framebuffer(target, f);
@@ -134,7 +134,7 @@ impl NativeContext {
     }
 
     /// `framebufferTexture2D`.
-    #[napi(js_name = "framebufferTexture2D")]
+    #[napi(js_name = "framebufferTexture2D", catch_unwind)]
     pub fn framebuffer_texture_2d(
         &mut self,
         target: u32,
@@ -151,7 +151,7 @@ impl NativeContext {
     }
 
     /// `framebufferTextureLayer`.
-    #[napi]
+    #[napi(catch_unwind)]
     pub fn framebuffer_texture_layer(
         &mut self,
         target: u32,
@@ -168,7 +168,7 @@ impl NativeContext {
     }
 
     /// `framebufferRenderbuffer`.
-    #[napi]
+    #[napi(catch_unwind)]
     pub fn framebuffer_renderbuffer(
         &mut self,
         target: u32,
@@ -184,13 +184,13 @@ impl NativeContext {
     }
 
     /// `checkFramebufferStatus`.
-    #[napi]
+    #[napi(catch_unwind)]
     pub fn check_framebuffer_status(&mut self, target: u32) -> napi::Result<u32> {
         Ok(self.gl()?.check_framebuffer_status(target))
     }
 
     /// `getFramebufferAttachmentParameter`.
-    #[napi]
+    #[napi(catch_unwind)]
     pub fn get_framebuffer_attachment_parameter(
         &mut self,
         target: u32,
@@ -204,28 +204,28 @@ impl NativeContext {
     }
 
     /// `drawBuffers`.
-    #[napi]
+    #[napi(catch_unwind)]
     pub fn draw_buffers(&mut self, buffers: &[u32]) -> napi::Result<()> {
         self.gl()?.draw_buffers(buffers);
         Ok(())
     }
 
     /// `readBuffer`.
-    #[napi]
+    #[napi(catch_unwind)]
     pub fn read_buffer(&mut self, src: u32) -> napi::Result<()> {
         self.gl()?.read_buffer(src);
         Ok(())
     }
 
     /// `invalidateFramebuffer`.
-    #[napi]
+    #[napi(catch_unwind)]
     pub fn invalidate_framebuffer(&mut self, target: u32, attachments: &[u32]) -> napi::Result<()> {
         self.gl()?.invalidate_framebuffer(target, attachments);
         Ok(())
     }
 
     /// `invalidateSubFramebuffer`.
-    #[napi]
+    #[napi(catch_unwind)]
     pub fn invalidate_sub_framebuffer(
         &mut self,
         target: u32,
@@ -241,7 +241,7 @@ impl NativeContext {
     }
 
     /// `blitFramebuffer`.
-    #[napi]
+    #[napi(catch_unwind)]
     #[allow(clippy::too_many_arguments)] // WebGL's own argument list
     pub fn blit_framebuffer(
         &mut self,
@@ -263,7 +263,7 @@ impl NativeContext {
     }
 
     /// `readPixels` into an `ArrayBufferView` from element `offset` (`dstOffset`).
-    #[napi]
+    #[napi(catch_unwind)]
     #[allow(clippy::too_many_arguments)] // WebGL's own argument list
     pub fn read_pixels(
         &mut self,
@@ -287,7 +287,7 @@ impl NativeContext {
     }
 
     /// `readPixels` into the bound `PIXEL_PACK_BUFFER` at byte `offset`.
-    #[napi]
+    #[napi(catch_unwind)]
     #[allow(clippy::too_many_arguments)] // WebGL's own argument list
     pub fn read_pixels_to_buffer(
         &mut self,

@@ -10,7 +10,7 @@ use crate::registry::Handle;
 #[napi]
 impl NativeContext {
     /// `createShader`: the id, or 0 (`null`) for a bad type.
-    #[napi]
+    #[napi(catch_unwind)]
     pub fn create_shader(&mut self, ty: u32) -> napi::Result<u32> {
         Ok(match self.gl()?.create_shader(ty) {
             Some(s) => self.register(Handle::Shader(s)),
@@ -19,14 +19,14 @@ impl NativeContext {
     }
 
     /// `isShader`.
-    #[napi]
+    #[napi(catch_unwind)]
     pub fn is_shader(&mut self, shader: u32) -> napi::Result<bool> {
         let s = self.arg::<Shader>(shader, "isShader").flatten();
         Ok(s.is_some_and(|s| self.ctx.as_ref().is_some_and(|c| c.is_shader(s))))
     }
 
     /// `deleteShader`.
-    #[napi]
+    #[napi(catch_unwind)]
     pub fn delete_shader(&mut self, shader: u32) -> napi::Result<()> {
         if let Some(s) = self.arg::<Shader>(shader, "deleteShader").flatten() {
             self.gl()?.delete_shader(s);
@@ -35,7 +35,7 @@ impl NativeContext {
     }
 
     /// `shaderSource`.
-    #[napi]
+    #[napi(catch_unwind)]
     pub fn shader_source(&mut self, shader: u32, source: String) -> napi::Result<()> {
         if let Some(s) = self.req(shader, "shaderSource") {
             self.gl()?.shader_source(s, &source);
@@ -44,7 +44,7 @@ impl NativeContext {
     }
 
     /// `getShaderSource`.
-    #[napi]
+    #[napi(catch_unwind)]
     pub fn get_shader_source(&mut self, shader: u32) -> napi::Result<Answer> {
         let Some(s) = self.req(shader, "getShaderSource") else {
             return Ok(Answer::Null);
@@ -53,7 +53,7 @@ impl NativeContext {
     }
 
     /// `WEBGL_debug_shaders.getTranslatedShaderSource`.
-    #[napi]
+    #[napi(catch_unwind)]
     pub fn get_translated_shader_source(&mut self, shader: u32) -> napi::Result<Answer> {
         let Some(s) = self.req(shader, "getTranslatedShaderSource") else {
             return Ok(Answer::Null);
@@ -62,7 +62,7 @@ impl NativeContext {
     }
 
     /// `compileShader`.
-    #[napi]
+    #[napi(catch_unwind)]
     pub fn compile_shader(&mut self, shader: u32) -> napi::Result<()> {
         if let Some(s) = self.req(shader, "compileShader") {
             self.gl()?.compile_shader(s);
@@ -71,7 +71,7 @@ impl NativeContext {
     }
 
     /// `getShaderParameter`.
-    #[napi]
+    #[napi(catch_unwind)]
     pub fn get_shader_parameter(&mut self, shader: u32, pname: u32) -> napi::Result<Answer> {
         let Some(s) = self.req(shader, "getShaderParameter") else {
             return Ok(Answer::Null);
@@ -80,7 +80,7 @@ impl NativeContext {
     }
 
     /// `getShaderInfoLog`.
-    #[napi]
+    #[napi(catch_unwind)]
     pub fn get_shader_info_log(&mut self, shader: u32) -> napi::Result<Answer> {
         let Some(s) = self.req(shader, "getShaderInfoLog") else {
             return Ok(Answer::Null);
@@ -89,7 +89,7 @@ impl NativeContext {
     }
 
     /// `getShaderPrecisionFormat`.
-    #[napi]
+    #[napi(catch_unwind)]
     pub fn get_shader_precision_format(
         &mut self,
         shader: u32,
@@ -100,21 +100,21 @@ impl NativeContext {
     }
 
     /// `createProgram`.
-    #[napi]
+    #[napi(catch_unwind)]
     pub fn create_program(&mut self) -> napi::Result<u32> {
         let p = self.gl()?.create_program();
         Ok(self.register(Handle::Program(p)))
     }
 
     /// `isProgram`.
-    #[napi]
+    #[napi(catch_unwind)]
     pub fn is_program(&mut self, program: u32) -> napi::Result<bool> {
         let p = self.arg::<Program>(program, "isProgram").flatten();
         Ok(p.is_some_and(|p| self.ctx.as_ref().is_some_and(|c| c.is_program(p))))
     }
 
     /// `deleteProgram`.
-    #[napi]
+    #[napi(catch_unwind)]
     pub fn delete_program(&mut self, program: u32) -> napi::Result<()> {
         if let Some(p) = self.arg::<Program>(program, "deleteProgram").flatten() {
             self.gl()?.delete_program(p);
@@ -123,7 +123,7 @@ impl NativeContext {
     }
 
     /// `attachShader`.
-    #[napi]
+    #[napi(catch_unwind)]
     pub fn attach_shader(&mut self, program: u32, shader: u32) -> napi::Result<()> {
         let p = self.req(program, "attachShader");
         let s = self.req(shader, "attachShader");
@@ -134,7 +134,7 @@ impl NativeContext {
     }
 
     /// `detachShader`.
-    #[napi]
+    #[napi(catch_unwind)]
     pub fn detach_shader(&mut self, program: u32, shader: u32) -> napi::Result<()> {
         let p = self.req(program, "detachShader");
         let s = self.req(shader, "detachShader");
@@ -145,7 +145,7 @@ impl NativeContext {
     }
 
     /// `getAttachedShaders`: ids, or `null` for an invalid program.
-    #[napi]
+    #[napi(catch_unwind)]
     pub fn get_attached_shaders(&mut self, program: u32) -> napi::Result<Answer> {
         let Some(p) = self.req::<Program>(program, "getAttachedShaders") else {
             return Ok(Answer::Null);
@@ -165,7 +165,7 @@ impl NativeContext {
     }
 
     /// `bindAttribLocation`.
-    #[napi]
+    #[napi(catch_unwind)]
     pub fn bind_attrib_location(
         &mut self,
         program: u32,
@@ -179,7 +179,7 @@ impl NativeContext {
     }
 
     /// `linkProgram`.
-    #[napi]
+    #[napi(catch_unwind)]
     pub fn link_program(&mut self, program: u32) -> napi::Result<()> {
         if let Some(p) = self.req(program, "linkProgram") {
             self.gl()?.link_program(p);
@@ -188,7 +188,7 @@ impl NativeContext {
     }
 
     /// `validateProgram`.
-    #[napi]
+    #[napi(catch_unwind)]
     pub fn validate_program(&mut self, program: u32) -> napi::Result<()> {
         if let Some(p) = self.req(program, "validateProgram") {
             self.gl()?.validate_program(p);
@@ -197,7 +197,7 @@ impl NativeContext {
     }
 
     /// `useProgram`.
-    #[napi]
+    #[napi(catch_unwind)]
     pub fn use_program(&mut self, program: u32) -> napi::Result<()> {
         if let Some(p) = self.arg(program, "useProgram") {
             self.gl()?.use_program(p);
@@ -206,7 +206,7 @@ impl NativeContext {
     }
 
     /// `getProgramParameter`.
-    #[napi]
+    #[napi(catch_unwind)]
     pub fn get_program_parameter(&mut self, program: u32, pname: u32) -> napi::Result<Answer> {
         let Some(p) = self.req(program, "getProgramParameter") else {
             return Ok(Answer::Null);
@@ -215,7 +215,7 @@ impl NativeContext {
     }
 
     /// `getProgramInfoLog`.
-    #[napi]
+    #[napi(catch_unwind)]
     pub fn get_program_info_log(&mut self, program: u32) -> napi::Result<Answer> {
         let Some(p) = self.req(program, "getProgramInfoLog") else {
             return Ok(Answer::Null);
@@ -224,7 +224,7 @@ impl NativeContext {
     }
 
     /// `getAttribLocation`.
-    #[napi]
+    #[napi(catch_unwind)]
     pub fn get_attrib_location(&mut self, program: u32, name: String) -> napi::Result<i32> {
         let Some(p) = self.req(program, "getAttribLocation") else {
             return Ok(-1);
@@ -233,7 +233,7 @@ impl NativeContext {
     }
 
     /// `getFragDataLocation`.
-    #[napi]
+    #[napi(catch_unwind)]
     pub fn get_frag_data_location(&mut self, program: u32, name: String) -> napi::Result<i32> {
         let Some(p) = self.req(program, "getFragDataLocation") else {
             return Ok(-1);
@@ -242,7 +242,7 @@ impl NativeContext {
     }
 
     /// `getActiveAttrib`.
-    #[napi]
+    #[napi(catch_unwind)]
     pub fn get_active_attrib(&mut self, program: u32, index: u32) -> napi::Result<Answer> {
         let Some(p) = self.req(program, "getActiveAttrib") else {
             return Ok(Answer::Null);
@@ -252,7 +252,7 @@ impl NativeContext {
     }
 
     /// `getActiveUniform`.
-    #[napi]
+    #[napi(catch_unwind)]
     pub fn get_active_uniform(&mut self, program: u32, index: u32) -> napi::Result<Answer> {
         let Some(p) = self.req(program, "getActiveUniform") else {
             return Ok(Answer::Null);
@@ -262,7 +262,7 @@ impl NativeContext {
     }
 
     /// `getUniformLocation`: the location's id, or 0 (`null`).
-    #[napi]
+    #[napi(catch_unwind)]
     pub fn get_uniform_location(&mut self, program: u32, name: String) -> napi::Result<u32> {
         let Some(p) = self.req(program, "getUniformLocation") else {
             return Ok(0);
@@ -274,7 +274,7 @@ impl NativeContext {
     }
 
     /// `getUniform`.
-    #[napi]
+    #[napi(catch_unwind)]
     pub fn get_uniform(&mut self, program: u32, location: u32) -> napi::Result<Answer> {
         let p = self.req::<Program>(program, "getUniform");
         let l = self.req::<UniformLocation>(location, "getUniform");
@@ -285,7 +285,7 @@ impl NativeContext {
     }
 
     /// `getUniformIndices`.
-    #[napi]
+    #[napi(catch_unwind)]
     pub fn get_uniform_indices(
         &mut self,
         program: u32,
@@ -302,7 +302,7 @@ impl NativeContext {
     }
 
     /// `getActiveUniforms`.
-    #[napi]
+    #[napi(catch_unwind)]
     pub fn get_active_uniforms(
         &mut self,
         program: u32,
@@ -326,7 +326,7 @@ impl NativeContext {
     }
 
     /// `getUniformBlockIndex`.
-    #[napi]
+    #[napi(catch_unwind)]
     pub fn get_uniform_block_index(&mut self, program: u32, name: String) -> napi::Result<u32> {
         let Some(p) = self.req(program, "getUniformBlockIndex") else {
             return Ok(u32::MAX);
@@ -335,7 +335,7 @@ impl NativeContext {
     }
 
     /// `getActiveUniformBlockParameter`.
-    #[napi]
+    #[napi(catch_unwind)]
     pub fn get_active_uniform_block_parameter(
         &mut self,
         program: u32,
@@ -352,7 +352,7 @@ impl NativeContext {
     }
 
     /// `getActiveUniformBlockName`.
-    #[napi]
+    #[napi(catch_unwind)]
     pub fn get_active_uniform_block_name(
         &mut self,
         program: u32,
@@ -367,7 +367,7 @@ impl NativeContext {
     }
 
     /// `uniformBlockBinding`.
-    #[napi]
+    #[napi(catch_unwind)]
     pub fn uniform_block_binding(
         &mut self,
         program: u32,

@@ -8,48 +8,48 @@ use crate::context::NativeContext;
 #[napi]
 impl NativeContext {
     /// `enable`.
-    #[napi]
+    #[napi(catch_unwind)]
     pub fn enable(&mut self, cap: u32) -> napi::Result<()> {
         self.gl()?.enable(cap);
         Ok(())
     }
 
     /// `EXT_clip_control.clipControlEXT`.
-    #[napi]
+    #[napi(catch_unwind)]
     pub fn clip_control_ext(&mut self, origin: u32, depth: u32) -> napi::Result<()> {
         self.gl()?.clip_control_ext(origin, depth);
         Ok(())
     }
 
     /// `disable`.
-    #[napi]
+    #[napi(catch_unwind)]
     pub fn disable(&mut self, cap: u32) -> napi::Result<()> {
         self.gl()?.disable(cap);
         Ok(())
     }
 
     /// `isEnabled`.
-    #[napi]
+    #[napi(catch_unwind)]
     pub fn is_enabled(&mut self, cap: u32) -> napi::Result<bool> {
         Ok(self.gl()?.is_enabled(cap))
     }
 
     /// `viewport`.
-    #[napi]
+    #[napi(catch_unwind)]
     pub fn viewport(&mut self, x: i32, y: i32, width: i32, height: i32) -> napi::Result<()> {
         self.gl()?.viewport(x, y, width, height);
         Ok(())
     }
 
     /// `scissor`.
-    #[napi]
+    #[napi(catch_unwind)]
     pub fn scissor(&mut self, x: i32, y: i32, width: i32, height: i32) -> napi::Result<()> {
         self.gl()?.scissor(x, y, width, height);
         Ok(())
     }
 
     /// `clearColor`.
-    #[napi]
+    #[napi(catch_unwind)]
     pub fn clear_color(&mut self, r: f64, g: f64, b: f64, a: f64) -> napi::Result<()> {
         self.gl()?
             .clear_color(r as f32, g as f32, b as f32, a as f32);
@@ -57,63 +57,63 @@ impl NativeContext {
     }
 
     /// `clearDepth`.
-    #[napi]
+    #[napi(catch_unwind)]
     pub fn clear_depth(&mut self, depth: f64) -> napi::Result<()> {
         self.gl()?.clear_depth(depth as f32);
         Ok(())
     }
 
     /// `clearStencil`.
-    #[napi]
+    #[napi(catch_unwind)]
     pub fn clear_stencil(&mut self, s: i32) -> napi::Result<()> {
         self.gl()?.clear_stencil(s);
         Ok(())
     }
 
     /// `depthFunc`.
-    #[napi]
+    #[napi(catch_unwind)]
     pub fn depth_func(&mut self, func: u32) -> napi::Result<()> {
         self.gl()?.depth_func(func);
         Ok(())
     }
 
     /// `depthMask`.
-    #[napi]
+    #[napi(catch_unwind)]
     pub fn depth_mask(&mut self, flag: bool) -> napi::Result<()> {
         self.gl()?.depth_mask(flag);
         Ok(())
     }
 
     /// `depthRange`.
-    #[napi]
+    #[napi(catch_unwind)]
     pub fn depth_range(&mut self, near: f64, far: f64) -> napi::Result<()> {
         self.gl()?.depth_range(near as f32, far as f32);
         Ok(())
     }
 
     /// `cullFace`.
-    #[napi]
+    #[napi(catch_unwind)]
     pub fn cull_face(&mut self, mode: u32) -> napi::Result<()> {
         self.gl()?.cull_face(mode);
         Ok(())
     }
 
     /// `frontFace`.
-    #[napi]
+    #[napi(catch_unwind)]
     pub fn front_face(&mut self, mode: u32) -> napi::Result<()> {
         self.gl()?.front_face(mode);
         Ok(())
     }
 
     /// `blendFunc`.
-    #[napi]
+    #[napi(catch_unwind)]
     pub fn blend_func(&mut self, sfactor: u32, dfactor: u32) -> napi::Result<()> {
         self.gl()?.blend_func(sfactor, dfactor);
         Ok(())
     }
 
     /// `blendFuncSeparate`.
-    #[napi]
+    #[napi(catch_unwind)]
     pub fn blend_func_separate(
         &mut self,
         src_rgb: u32,
@@ -127,21 +127,21 @@ impl NativeContext {
     }
 
     /// `blendEquation`.
-    #[napi]
+    #[napi(catch_unwind)]
     pub fn blend_equation(&mut self, mode: u32) -> napi::Result<()> {
         self.gl()?.blend_equation(mode);
         Ok(())
     }
 
     /// `blendEquationSeparate`.
-    #[napi]
+    #[napi(catch_unwind)]
     pub fn blend_equation_separate(&mut self, rgb: u32, alpha: u32) -> napi::Result<()> {
         self.gl()?.blend_equation_separate(rgb, alpha);
         Ok(())
     }
 
     /// `blendColor`.
-    #[napi]
+    #[napi(catch_unwind)]
     pub fn blend_color(&mut self, r: f64, g: f64, b: f64, a: f64) -> napi::Result<()> {
         self.gl()?
             .blend_color(r as f32, g as f32, b as f32, a as f32);
@@ -149,56 +149,56 @@ impl NativeContext {
     }
 
     /// `colorMask`.
-    #[napi]
+    #[napi(catch_unwind)]
     pub fn color_mask(&mut self, r: bool, g: bool, b: bool, a: bool) -> napi::Result<()> {
         self.gl()?.color_mask(r, g, b, a);
         Ok(())
     }
 
     /// `polygonOffset`.
-    #[napi]
+    #[napi(catch_unwind)]
     pub fn polygon_offset(&mut self, factor: f64, units: f64) -> napi::Result<()> {
         self.gl()?.polygon_offset(factor as f32, units as f32);
         Ok(())
     }
 
     /// `sampleCoverage`.
-    #[napi]
+    #[napi(catch_unwind)]
     pub fn sample_coverage(&mut self, value: f64, invert: bool) -> napi::Result<()> {
         self.gl()?.sample_coverage(value as f32, invert);
         Ok(())
     }
 
     /// `hint`.
-    #[napi]
+    #[napi(catch_unwind)]
     pub fn hint(&mut self, target: u32, mode: u32) -> napi::Result<()> {
         self.gl()?.hint(target, mode);
         Ok(())
     }
 
     /// `lineWidth`.
-    #[napi]
+    #[napi(catch_unwind)]
     pub fn line_width(&mut self, width: f64) -> napi::Result<()> {
         self.gl()?.line_width(width as f32);
         Ok(())
     }
 
     /// `pixelStorei`.
-    #[napi]
+    #[napi(catch_unwind)]
     pub fn pixel_storei(&mut self, pname: u32, param: i32) -> napi::Result<()> {
         self.gl()?.pixel_storei(pname, param);
         Ok(())
     }
 
     /// `stencilFunc`.
-    #[napi]
+    #[napi(catch_unwind)]
     pub fn stencil_func(&mut self, func: u32, reference: i32, mask: u32) -> napi::Result<()> {
         self.gl()?.stencil_func(func, reference, mask);
         Ok(())
     }
 
     /// `stencilFuncSeparate`.
-    #[napi]
+    #[napi(catch_unwind)]
     pub fn stencil_func_separate(
         &mut self,
         face: u32,
@@ -212,14 +212,14 @@ impl NativeContext {
     }
 
     /// `stencilOp`.
-    #[napi]
+    #[napi(catch_unwind)]
     pub fn stencil_op(&mut self, fail: u32, zfail: u32, zpass: u32) -> napi::Result<()> {
         self.gl()?.stencil_op(fail, zfail, zpass);
         Ok(())
     }
 
     /// `stencilOpSeparate`.
-    #[napi]
+    #[napi(catch_unwind)]
     pub fn stencil_op_separate(
         &mut self,
         face: u32,
@@ -232,28 +232,28 @@ impl NativeContext {
     }
 
     /// `stencilMask`.
-    #[napi]
+    #[napi(catch_unwind)]
     pub fn stencil_mask(&mut self, mask: u32) -> napi::Result<()> {
         self.gl()?.stencil_mask(mask);
         Ok(())
     }
 
     /// `stencilMaskSeparate`.
-    #[napi]
+    #[napi(catch_unwind)]
     pub fn stencil_mask_separate(&mut self, face: u32, mask: u32) -> napi::Result<()> {
         self.gl()?.stencil_mask_separate(face, mask);
         Ok(())
     }
 
     /// `clear`.
-    #[napi]
+    #[napi(catch_unwind)]
     pub fn clear(&mut self, mask: u32) -> napi::Result<()> {
         self.gl()?.clear(mask);
         Ok(())
     }
 
     /// `clearBufferfv` with its `srcOffset`.
-    #[napi]
+    #[napi(catch_unwind)]
     pub fn clear_bufferfv(
         &mut self,
         buffer: u32,
@@ -270,7 +270,7 @@ impl NativeContext {
     }
 
     /// `clearBufferiv` with its `srcOffset`.
-    #[napi]
+    #[napi(catch_unwind)]
     pub fn clear_bufferiv(
         &mut self,
         buffer: u32,
@@ -287,7 +287,7 @@ impl NativeContext {
     }
 
     /// `clearBufferuiv` with its `srcOffset`.
-    #[napi]
+    #[napi(catch_unwind)]
     pub fn clear_bufferuiv(
         &mut self,
         buffer: u32,
@@ -304,7 +304,7 @@ impl NativeContext {
     }
 
     /// `clearBufferfi`.
-    #[napi]
+    #[napi(catch_unwind)]
     pub fn clear_bufferfi(
         &mut self,
         buffer: u32,
@@ -318,33 +318,33 @@ impl NativeContext {
     }
 
     /// `getError`.
-    #[napi]
+    #[napi(catch_unwind)]
     pub fn get_error(&mut self) -> napi::Result<u32> {
         Ok(self.gl()?.get_error())
     }
 
     /// `finish`.
-    #[napi]
+    #[napi(catch_unwind)]
     pub fn finish(&mut self) -> napi::Result<()> {
         self.gl()?.finish();
         Ok(())
     }
 
     /// `flush`.
-    #[napi]
+    #[napi(catch_unwind)]
     pub fn flush(&mut self) -> napi::Result<()> {
         self.gl()?.flush();
         Ok(())
     }
 
     /// `getParameter`.
-    #[napi]
+    #[napi(catch_unwind)]
     pub fn get_parameter(&mut self, pname: u32) -> napi::Result<Answer> {
         Ok(self.gl()?.get_parameter(pname).into())
     }
 
     /// `getSupportedExtensions`: the extensions essl-gl implements.
-    #[napi]
+    #[napi(catch_unwind)]
     pub fn get_supported_extensions(&mut self) -> napi::Result<Vec<String>> {
         Ok(self
             .gl()?
@@ -355,13 +355,13 @@ impl NativeContext {
     }
 
     /// `getExtension`: turns an extension of essl-gl on; its name, or `None`.
-    #[napi]
+    #[napi(catch_unwind)]
     pub fn get_extension(&mut self, name: String) -> napi::Result<Option<String>> {
         Ok(self.gl()?.get_extension(&name).map(|e| e.name().into()))
     }
 
     /// `drawingBufferStorage`.
-    #[napi]
+    #[napi(catch_unwind)]
     pub fn drawing_buffer_storage(
         &mut self,
         format: u32,

@@ -73,21 +73,21 @@ impl Upload {
 #[napi]
 impl NativeContext {
     /// `createTexture`.
-    #[napi]
+    #[napi(catch_unwind)]
     pub fn create_texture(&mut self) -> napi::Result<u32> {
         let t = self.gl()?.create_texture();
         Ok(self.register(Handle::Texture(t)))
     }
 
     /// `isTexture`.
-    #[napi]
+    #[napi(catch_unwind)]
     pub fn is_texture(&mut self, texture: u32) -> napi::Result<bool> {
         let t = self.arg::<Texture>(texture, "isTexture").flatten();
         Ok(t.is_some_and(|t| self.ctx.as_ref().is_some_and(|c| c.is_texture(t))))
     }
 
     /// `deleteTexture`.
-    #[napi]
+    #[napi(catch_unwind)]
     pub fn delete_texture(&mut self, texture: u32) -> napi::Result<()> {
         if let Some(t) = self.arg::<Texture>(texture, "deleteTexture").flatten() {
             self.gl()?.delete_texture(t);
@@ -96,14 +96,14 @@ impl NativeContext {
     }
 
     /// `activeTexture`.
-    #[napi]
+    #[napi(catch_unwind)]
     pub fn active_texture(&mut self, unit: u32) -> napi::Result<()> {
         self.gl()?.active_texture(unit);
         Ok(())
     }
 
     /// `bindTexture`.
-    #[napi]
+    #[napi(catch_unwind)]
     pub fn bind_texture(&mut self, target: u32, texture: u32) -> napi::Result<()> {
         if let Some(t) = self.arg(texture, "bindTexture") {
             self.gl()?.bind_texture(target, t);
@@ -112,34 +112,34 @@ impl NativeContext {
     }
 
     /// `texParameteri`.
-    #[napi]
+    #[napi(catch_unwind)]
     pub fn tex_parameteri(&mut self, target: u32, pname: u32, param: i32) -> napi::Result<()> {
         self.gl()?.tex_parameteri(target, pname, param);
         Ok(())
     }
 
     /// `texParameterf`.
-    #[napi]
+    #[napi(catch_unwind)]
     pub fn tex_parameterf(&mut self, target: u32, pname: u32, param: f64) -> napi::Result<()> {
         self.gl()?.tex_parameterf(target, pname, param as f32);
         Ok(())
     }
 
     /// `getTexParameter`.
-    #[napi]
+    #[napi(catch_unwind)]
     pub fn get_tex_parameter(&mut self, target: u32, pname: u32) -> napi::Result<Answer> {
         Ok(self.gl()?.get_tex_parameter(target, pname).into())
     }
 
     /// `generateMipmap`.
-    #[napi]
+    #[napi(catch_unwind)]
     pub fn generate_mipmap(&mut self, target: u32) -> napi::Result<()> {
         self.gl()?.generate_mipmap(target);
         Ok(())
     }
 
     /// `texStorage2D`.
-    #[napi(js_name = "texStorage2D")]
+    #[napi(js_name = "texStorage2D", catch_unwind)]
     pub fn tex_storage_2d(
         &mut self,
         target: u32,
@@ -154,7 +154,7 @@ impl NativeContext {
     }
 
     /// `texStorage3D`.
-    #[napi(js_name = "texStorage3D")]
+    #[napi(js_name = "texStorage3D", catch_unwind)]
     pub fn tex_storage_3d(
         &mut self,
         target: u32,
@@ -171,7 +171,7 @@ impl NativeContext {
 
     /// `texImage2D`/`texImage3D`/`texSubImage2D`/`texSubImage3D` with an
     /// `ArrayBufferView` (or `null`, `texImage` only) and its `srcOffset` in elements.
-    #[napi]
+    #[napi(catch_unwind)]
     pub fn tex_image_view(
         &mut self,
         sub: bool,
@@ -238,7 +238,7 @@ impl NativeContext {
     }
 
     /// The four upload calls from the bound `PIXEL_UNPACK_BUFFER` at byte `offset`.
-    #[napi]
+    #[napi(catch_unwind)]
     pub fn tex_image_buffer(
         &mut self,
         sub: bool,
@@ -283,7 +283,7 @@ impl NativeContext {
     }
 
     /// `copyTexImage2D`.
-    #[napi(js_name = "copyTexImage2D")]
+    #[napi(js_name = "copyTexImage2D", catch_unwind)]
     #[allow(clippy::too_many_arguments)] // WebGL's own argument list
     pub fn copy_tex_image_2d(
         &mut self,
@@ -302,7 +302,7 @@ impl NativeContext {
     }
 
     /// `copyTexSubImage2D`.
-    #[napi(js_name = "copyTexSubImage2D")]
+    #[napi(js_name = "copyTexSubImage2D", catch_unwind)]
     #[allow(clippy::too_many_arguments)] // WebGL's own argument list
     pub fn copy_tex_sub_image_2d(
         &mut self,
@@ -321,7 +321,7 @@ impl NativeContext {
     }
 
     /// `copyTexSubImage3D`.
-    #[napi(js_name = "copyTexSubImage3D")]
+    #[napi(js_name = "copyTexSubImage3D", catch_unwind)]
     #[allow(clippy::too_many_arguments)] // WebGL's own argument list
     pub fn copy_tex_sub_image_3d(
         &mut self,
@@ -343,7 +343,7 @@ impl NativeContext {
 
     /// The compressed-texture calls (the S3TC and ETC formats, once their extension is on);
     /// `numbers` are the arguments between `level` and the data, `data` the bytes if any.
-    #[napi]
+    #[napi(catch_unwind)]
     pub fn compressed_tex_image(
         &mut self,
         name: String,
@@ -391,21 +391,21 @@ impl NativeContext {
     }
 
     /// `createSampler`.
-    #[napi]
+    #[napi(catch_unwind)]
     pub fn create_sampler(&mut self) -> napi::Result<u32> {
         let s = self.gl()?.create_sampler();
         Ok(self.register(Handle::Sampler(s)))
     }
 
     /// `isSampler`.
-    #[napi]
+    #[napi(catch_unwind)]
     pub fn is_sampler(&mut self, sampler: u32) -> napi::Result<bool> {
         let s = self.arg::<Sampler>(sampler, "isSampler").flatten();
         Ok(s.is_some_and(|s| self.ctx.as_ref().is_some_and(|c| c.is_sampler(s))))
     }
 
     /// `deleteSampler`.
-    #[napi]
+    #[napi(catch_unwind)]
     pub fn delete_sampler(&mut self, sampler: u32) -> napi::Result<()> {
         if let Some(s) = self.arg::<Sampler>(sampler, "deleteSampler").flatten() {
             self.gl()?.delete_sampler(s);
@@ -414,7 +414,7 @@ impl NativeContext {
     }
 
     /// `bindSampler`.
-    #[napi]
+    #[napi(catch_unwind)]
     pub fn bind_sampler(&mut self, unit: u32, sampler: u32) -> napi::Result<()> {
         if let Some(s) = self.arg(sampler, "bindSampler") {
             self.gl()?.bind_sampler(unit, s);
@@ -423,7 +423,7 @@ impl NativeContext {
     }
 
     /// `samplerParameteri`.
-    #[napi]
+    #[napi(catch_unwind)]
     pub fn sampler_parameteri(&mut self, sampler: u32, pname: u32, param: i32) -> napi::Result<()> {
         if let Some(s) = self.req::<Sampler>(sampler, "samplerParameteri") {
             self.gl()?.sampler_parameteri(s, pname, param);
@@ -432,7 +432,7 @@ impl NativeContext {
     }
 
     /// `samplerParameterf`.
-    #[napi]
+    #[napi(catch_unwind)]
     pub fn sampler_parameterf(&mut self, sampler: u32, pname: u32, param: f64) -> napi::Result<()> {
         if let Some(s) = self.req::<Sampler>(sampler, "samplerParameterf") {
             self.gl()?.sampler_parameterf(s, pname, param as f32);
@@ -441,7 +441,7 @@ impl NativeContext {
     }
 
     /// `getSamplerParameter`.
-    #[napi]
+    #[napi(catch_unwind)]
     pub fn get_sampler_parameter(&mut self, sampler: u32, pname: u32) -> napi::Result<Answer> {
         let Some(s) = self.req::<Sampler>(sampler, "getSamplerParameter") else {
             return Ok(Answer::Null);
@@ -454,7 +454,7 @@ impl NativeContext {
 impl NativeContext {
     /// The four upload calls from a DOM image source: `rgba` is 8-bit RGBA, unpremultiplied,
     /// top row first, `width` × `height`.
-    #[napi]
+    #[napi(catch_unwind)]
     pub fn tex_image_source(
         &mut self,
         sub: bool,
@@ -487,7 +487,7 @@ impl NativeContext {
 
     /// Records a WebGL error as the bindings do for what only they see (`bufferData` with
     /// `null`, `readPixels` into `null`).
-    #[napi]
+    #[napi(catch_unwind)]
     pub fn synthesize_error(
         &mut self,
         code: u32,

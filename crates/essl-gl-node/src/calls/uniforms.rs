@@ -23,7 +23,7 @@ macro_rules! scalars {
         impl NativeContext {
             $(
                 $(#[$doc])*
-                #[napi(js_name = $js)]
+                #[napi(js_name = $js, catch_unwind)]
                 pub fn $name(&mut self, location: u32, $($a: $t),+) -> napi::Result<()> {
                     if let Some(l) = self.arg::<UniformLocation>(location, $js) {
                         self.gl()?.$name(l, $($a as $c),+);
@@ -65,7 +65,7 @@ scalars! {
 #[napi]
 impl NativeContext {
     /// `uniform[1234]fv` (`n` components) with `srcOffset` and `srcLength`.
-    #[napi(js_name = "uniformFv")]
+    #[napi(js_name = "uniformFv", catch_unwind)]
     pub fn uniform_fv(
         &mut self,
         n: u32,
@@ -94,7 +94,7 @@ impl NativeContext {
     }
 
     /// `uniform[1234]iv` with `srcOffset` and `srcLength`.
-    #[napi(js_name = "uniformIv")]
+    #[napi(js_name = "uniformIv", catch_unwind)]
     pub fn uniform_iv(
         &mut self,
         n: u32,
@@ -123,7 +123,7 @@ impl NativeContext {
     }
 
     /// `uniform[1234]uiv` with `srcOffset` and `srcLength`.
-    #[napi(js_name = "uniformUiv")]
+    #[napi(js_name = "uniformUiv", catch_unwind)]
     pub fn uniform_uiv(
         &mut self,
         n: u32,
@@ -153,7 +153,7 @@ impl NativeContext {
 
     /// `uniformMatrix{C}x{R}fv` (`shape` is `"2"`, `"3"`, `"4"`, `"2x3"`, …) with
     /// `srcOffset` and `srcLength`.
-    #[napi(js_name = "uniformMatrixFv")]
+    #[napi(js_name = "uniformMatrixFv", catch_unwind)]
     pub fn uniform_matrix_fv(
         &mut self,
         shape: u32,

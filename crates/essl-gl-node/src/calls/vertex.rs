@@ -11,21 +11,21 @@ use crate::view::View;
 #[napi]
 impl NativeContext {
     /// `createBuffer`: the new buffer's id.
-    #[napi]
+    #[napi(catch_unwind)]
     pub fn create_buffer(&mut self) -> napi::Result<u32> {
         let b = self.gl()?.create_buffer();
         Ok(self.register(Handle::Buffer(b)))
     }
 
     /// `isBuffer`.
-    #[napi]
+    #[napi(catch_unwind)]
     pub fn is_buffer(&mut self, buffer: u32) -> napi::Result<bool> {
         let b = self.arg::<Buffer>(buffer, "isBuffer").flatten();
         Ok(b.is_some_and(|b| self.ctx.as_ref().is_some_and(|c| c.is_buffer(b))))
     }
 
     /// `deleteBuffer`.
-    #[napi]
+    #[napi(catch_unwind)]
     pub fn delete_buffer(&mut self, buffer: u32) -> napi::Result<()> {
         if let Some(b) = self.arg::<Buffer>(buffer, "deleteBuffer").flatten() {
             self.gl()?.delete_buffer(b);
@@ -34,7 +34,7 @@ impl NativeContext {
     }
 
     /// `bindBuffer`.
-    #[napi]
+    #[napi(catch_unwind)]
     pub fn bind_buffer(&mut self, target: u32, buffer: u32) -> napi::Result<()> {
         if let Some(b) = self.arg(buffer, "bindBuffer") {
             self.gl()?.bind_buffer(target, b);
@@ -43,7 +43,7 @@ impl NativeContext {
     }
 
     /// `bindBufferBase`.
-    #[napi]
+    #[napi(catch_unwind)]
     pub fn bind_buffer_base(&mut self, target: u32, index: u32, buffer: u32) -> napi::Result<()> {
         if let Some(b) = self.arg(buffer, "bindBufferBase") {
             self.gl()?.bind_buffer_base(target, index, b);
@@ -52,7 +52,7 @@ impl NativeContext {
     }
 
     /// `bindBufferRange`.
-    #[napi]
+    #[napi(catch_unwind)]
     pub fn bind_buffer_range(
         &mut self,
         target: u32,
@@ -68,14 +68,14 @@ impl NativeContext {
     }
 
     /// `bufferData(target, size, usage)`.
-    #[napi]
+    #[napi(catch_unwind)]
     pub fn buffer_data_size(&mut self, target: u32, size: i64, usage: u32) -> napi::Result<()> {
         self.gl()?.buffer_data_size(target, size, usage);
         Ok(())
     }
 
     /// `bufferData(target, srcData, usage, srcOffset, length)`.
-    #[napi]
+    #[napi(catch_unwind)]
     pub fn buffer_data(
         &mut self,
         target: u32,
@@ -93,7 +93,7 @@ impl NativeContext {
     }
 
     /// `bufferSubData(target, dstByteOffset, srcData, srcOffset, length)`.
-    #[napi]
+    #[napi(catch_unwind)]
     pub fn buffer_sub_data(
         &mut self,
         target: u32,
@@ -111,7 +111,7 @@ impl NativeContext {
     }
 
     /// `getBufferSubData(target, srcByteOffset, dstBuffer, dstOffset, length)`.
-    #[napi]
+    #[napi(catch_unwind)]
     pub fn get_buffer_sub_data(
         &mut self,
         target: u32,
@@ -131,7 +131,7 @@ impl NativeContext {
     }
 
     /// `copyBufferSubData`.
-    #[napi]
+    #[napi(catch_unwind)]
     pub fn copy_buffer_sub_data(
         &mut self,
         read_target: u32,
@@ -146,20 +146,20 @@ impl NativeContext {
     }
 
     /// `getBufferParameter`.
-    #[napi]
+    #[napi(catch_unwind)]
     pub fn get_buffer_parameter(&mut self, target: u32, pname: u32) -> napi::Result<Answer> {
         Ok(self.gl()?.get_buffer_parameter(target, pname).into())
     }
 
     /// `createVertexArray`.
-    #[napi]
+    #[napi(catch_unwind)]
     pub fn create_vertex_array(&mut self) -> napi::Result<u32> {
         let v = self.gl()?.create_vertex_array();
         Ok(self.register(Handle::VertexArray(v)))
     }
 
     /// `isVertexArray`.
-    #[napi]
+    #[napi(catch_unwind)]
     pub fn is_vertex_array(&mut self, vertex_array: u32) -> napi::Result<bool> {
         let v = self
             .arg::<VertexArray>(vertex_array, "isVertexArray")
@@ -168,7 +168,7 @@ impl NativeContext {
     }
 
     /// `deleteVertexArray`.
-    #[napi]
+    #[napi(catch_unwind)]
     pub fn delete_vertex_array(&mut self, vertex_array: u32) -> napi::Result<()> {
         if let Some(v) = self
             .arg::<VertexArray>(vertex_array, "deleteVertexArray")
@@ -180,7 +180,7 @@ impl NativeContext {
     }
 
     /// `bindVertexArray`.
-    #[napi]
+    #[napi(catch_unwind)]
     pub fn bind_vertex_array(&mut self, vertex_array: u32) -> napi::Result<()> {
         if let Some(v) = self.arg(vertex_array, "bindVertexArray") {
             self.gl()?.bind_vertex_array(v);
@@ -189,21 +189,21 @@ impl NativeContext {
     }
 
     /// `enableVertexAttribArray`.
-    #[napi]
+    #[napi(catch_unwind)]
     pub fn enable_vertex_attrib_array(&mut self, index: u32) -> napi::Result<()> {
         self.gl()?.enable_vertex_attrib_array(index);
         Ok(())
     }
 
     /// `disableVertexAttribArray`.
-    #[napi]
+    #[napi(catch_unwind)]
     pub fn disable_vertex_attrib_array(&mut self, index: u32) -> napi::Result<()> {
         self.gl()?.disable_vertex_attrib_array(index);
         Ok(())
     }
 
     /// `vertexAttribPointer`.
-    #[napi]
+    #[napi(catch_unwind)]
     pub fn vertex_attrib_pointer(
         &mut self,
         index: u32,
@@ -219,7 +219,7 @@ impl NativeContext {
     }
 
     /// `vertexAttribIPointer`.
-    #[napi(js_name = "vertexAttribIPointer")]
+    #[napi(js_name = "vertexAttribIPointer", catch_unwind)]
     pub fn vertex_attrib_i_pointer(
         &mut self,
         index: u32,
@@ -234,14 +234,14 @@ impl NativeContext {
     }
 
     /// `vertexAttribDivisor`.
-    #[napi]
+    #[napi(catch_unwind)]
     pub fn vertex_attrib_divisor(&mut self, index: u32, divisor: u32) -> napi::Result<()> {
         self.gl()?.vertex_attrib_divisor(index, divisor);
         Ok(())
     }
 
     /// `vertexAttrib4f` (the 1f/2f/3f forms pass GL's defaults for the rest).
-    #[napi(js_name = "vertexAttrib4f")]
+    #[napi(js_name = "vertexAttrib4f", catch_unwind)]
     pub fn vertex_attrib4f(
         &mut self,
         index: u32,
@@ -256,7 +256,7 @@ impl NativeContext {
     }
 
     /// `vertexAttrib[1234]fv`: `n` components from `values`.
-    #[napi(js_name = "vertexAttribFv")]
+    #[napi(js_name = "vertexAttribFv", catch_unwind)]
     pub fn vertex_attrib_fv(&mut self, n: u32, index: u32, values: &[f32]) -> napi::Result<()> {
         let c = self.gl()?;
         match n {
@@ -269,7 +269,7 @@ impl NativeContext {
     }
 
     /// `vertexAttribI4i`.
-    #[napi(js_name = "vertexAttribI4i")]
+    #[napi(js_name = "vertexAttribI4i", catch_unwind)]
     pub fn vertex_attrib_i4i(
         &mut self,
         index: u32,
@@ -283,7 +283,7 @@ impl NativeContext {
     }
 
     /// `vertexAttribI4ui`.
-    #[napi(js_name = "vertexAttribI4ui")]
+    #[napi(js_name = "vertexAttribI4ui", catch_unwind)]
     pub fn vertex_attrib_i4ui(
         &mut self,
         index: u32,
@@ -297,40 +297,40 @@ impl NativeContext {
     }
 
     /// `vertexAttribI4iv`.
-    #[napi(js_name = "vertexAttribI4iv")]
+    #[napi(js_name = "vertexAttribI4iv", catch_unwind)]
     pub fn vertex_attrib_i4iv(&mut self, index: u32, values: &[i32]) -> napi::Result<()> {
         self.gl()?.vertex_attrib_i4iv(index, values);
         Ok(())
     }
 
     /// `vertexAttribI4uiv`.
-    #[napi(js_name = "vertexAttribI4uiv")]
+    #[napi(js_name = "vertexAttribI4uiv", catch_unwind)]
     pub fn vertex_attrib_i4uiv(&mut self, index: u32, values: &[u32]) -> napi::Result<()> {
         self.gl()?.vertex_attrib_i4uiv(index, values);
         Ok(())
     }
 
     /// `getVertexAttrib`.
-    #[napi]
+    #[napi(catch_unwind)]
     pub fn get_vertex_attrib(&mut self, index: u32, pname: u32) -> napi::Result<Answer> {
         Ok(self.gl()?.get_vertex_attrib(index, pname).into())
     }
 
     /// `getVertexAttribOffset`.
-    #[napi]
+    #[napi(catch_unwind)]
     pub fn get_vertex_attrib_offset(&mut self, index: u32, pname: u32) -> napi::Result<f64> {
         Ok(self.gl()?.get_vertex_attrib_offset(index, pname) as f64)
     }
 
     /// `drawArrays`.
-    #[napi]
+    #[napi(catch_unwind)]
     pub fn draw_arrays(&mut self, mode: u32, first: i32, count: i32) -> napi::Result<()> {
         self.gl()?.draw_arrays(mode, first, count);
         Ok(())
     }
 
     /// `drawArraysInstanced`.
-    #[napi]
+    #[napi(catch_unwind)]
     pub fn draw_arrays_instanced(
         &mut self,
         mode: u32,
@@ -344,7 +344,7 @@ impl NativeContext {
     }
 
     /// `drawElements`.
-    #[napi]
+    #[napi(catch_unwind)]
     pub fn draw_elements(
         &mut self,
         mode: u32,
@@ -357,7 +357,7 @@ impl NativeContext {
     }
 
     /// `drawElementsInstanced`.
-    #[napi]
+    #[napi(catch_unwind)]
     pub fn draw_elements_instanced(
         &mut self,
         mode: u32,
@@ -372,7 +372,7 @@ impl NativeContext {
     }
 
     /// `drawRangeElements`.
-    #[napi]
+    #[napi(catch_unwind)]
     pub fn draw_range_elements(
         &mut self,
         mode: u32,
