@@ -35,6 +35,9 @@ impl Context {
         let Some(first) = t.level(0, base).cloned() else {
             return self.error(gl::INVALID_OPERATION, F, "the base level has no image");
         };
+        if first.width == 0 || first.height == 0 || first.depth == 0 {
+            return self.error(gl::INVALID_OPERATION, F, "the base level is empty");
+        }
         let x = &self.extensions;
         if self.webgl1.on && !(first.width.is_power_of_two() && first.height.is_power_of_two()) {
             return self.error(

@@ -673,3 +673,27 @@ fn uniform_errors_change_nothing() {
     ctx.use_program(Some(unlinked));
     assert_error_and_no_effect(&mut ctx, gl::INVALID_OPERATION);
 }
+
+#[test]
+fn generate_mipmap_of_an_empty_base_level_is_an_error() {
+    // A 0 × 0 base level once made the level count wrap around and the call never returned.
+    let Some(mut ctx) = context(4, 4) else { return };
+    let t = ctx.create_texture();
+    ctx.bind_texture(gl::TEXTURE_2D, Some(t));
+    for (w, h) in [(0, 0), (4, 0), (0, 4)] {
+        ctx.tex_image_2d(
+            gl::TEXTURE_2D,
+            0,
+            gl::RGBA8 as i32,
+            w,
+            h,
+            0,
+            gl::RGBA,
+            gl::UNSIGNED_BYTE,
+            None::<&[u8]>,
+        );
+        ctx.generate_mipmap(gl::TEXTURE_2D);
+        assert_eq!(ctx.get_error(), gl::INVALID_OPERATION, "{w} × {h}");
+    }
+    assert_clean(&ctx);
+}
