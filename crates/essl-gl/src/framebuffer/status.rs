@@ -32,6 +32,9 @@ impl Context {
                 if !cube && t.target != Some(gl::TEXTURE_2D) && layer >= l.depth {
                     return None;
                 }
+                if !self.webgl1.on && !t.attachable_level(level) {
+                    return None;
+                }
                 Some(ImageInfo {
                     format: l.format,
                     width: l.width,

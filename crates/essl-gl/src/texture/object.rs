@@ -179,6 +179,27 @@ impl TextureObject {
         }
     }
 
+    /// Whether `level` of this texture may be a framebuffer attachment by ES 3.0 §4.4.4: an
+    /// immutable texture's any level; a mutable one's a level in `[base, q]` (q the last level
+    /// a complete mipmap chain from the base level reaches, at most the max level), and one
+    /// other than the base only while the texture is mipmap complete.
+    pub(crate) fn attachable_level(&self, level: u32) -> bool {
+        if self.immutable_levels.is_some() {
+            return true;
+        }
+        let (base, max) = self.level_range();
+        if level == base || base > max {
+            return level == base && base <= max;
+        }
+        let mipmapped = SamplerParams {
+            min_filter: gl::NEAREST_MIPMAP_NEAREST,
+            mag_filter: gl::NEAREST,
+            ..SamplerParams::default()
+        };
+        self.completeness(true, true, false, &mipmapped)
+            .is_some_and(|c| level > base && level < base + c.levels)
+    }
+
     /// GL ES 3.0's texture completeness (§3.8.13): `None` when incomplete, in which case
     /// sampling returns (0, 0, 0, 1). 32-bit float formats filter linearly with
     /// `float_linear`, 16-bit ones only with `half_linear` (always in WebGL 2; in WebGL 1

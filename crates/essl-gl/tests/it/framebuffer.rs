@@ -773,3 +773,82 @@ fn read_first<T: essl_gl::ArrayElement + Copy + Default>(
     ctx.read_pixels(0, 0, 2, 2, format, ty, &mut out[..]);
     out[0]
 }
+
+#[test]
+fn a_mutable_textures_attached_level_lies_in_its_complete_mip_chain() {
+    // ES 3.0 §4.4.4: level in [base, q], and other than the base only when mipmap complete.
+    let Some(mut ctx) = context(4, 4) else { return };
+    let t = ctx.create_texture();
+    ctx.bind_texture(gl::TEXTURE_2D, Some(t));
+    let level = |ctx: &mut Context, level: i32, size: i32| {
+        ctx.tex_image_2d(
+            gl::TEXTURE_2D,
+            level,
+            gl::RGBA8 as i32,
+            size,
+            size,
+            0,
+            gl::RGBA,
+            gl::UNSIGNED_BYTE,
+            None::<&[u8]>,
+        );
+    };
+    level(&mut ctx, 0, 4);
+    level(&mut ctx, 1, 2);
+    let fb = ctx.create_framebuffer();
+    ctx.bind_framebuffer(gl::FRAMEBUFFER, Some(fb));
+    let status = |ctx: &mut Context, at: i32| {
+        ctx.framebuffer_texture_2d(
+            gl::FRAMEBUFFER,
+            gl::COLOR_ATTACHMENT0,
+            gl::TEXTURE_2D,
+            Some(t),
+            at,
+        );
+        ctx.check_framebuffer_status(gl::FRAMEBUFFER)
+    };
+    assert_eq!(
+        status(&mut ctx, 0),
+        gl::FRAMEBUFFER_COMPLETE,
+        "the base level"
+    );
+    assert_eq!(
+        status(&mut ctx, 1),
+        gl::FRAMEBUFFER_INCOMPLETE_ATTACHMENT,
+        "no 1 × 1 level yet"
+    );
+    level(&mut ctx, 2, 1);
+    assert_eq!(
+        status(&mut ctx, 1),
+        gl::FRAMEBUFFER_COMPLETE,
+        "mipmap complete"
+    );
+    ctx.tex_parameteri(gl::TEXTURE_2D, gl::TEXTURE_BASE_LEVEL, 1);
+    assert_eq!(
+        status(&mut ctx, 0),
+        gl::FRAMEBUFFER_INCOMPLETE_ATTACHMENT,
+        "below the base"
+    );
+    ctx.tex_parameteri(gl::TEXTURE_2D, gl::TEXTURE_MAX_LEVEL, 0);
+    assert_eq!(
+        status(&mut ctx, 1),
+        gl::FRAMEBUFFER_INCOMPLETE_ATTACHMENT,
+        "max below base"
+    );
+    // An immutable texture's every level may be attached.
+    let s = ctx.create_texture();
+    ctx.bind_texture(gl::TEXTURE_2D, Some(s));
+    ctx.tex_storage_2d(gl::TEXTURE_2D, 3, gl::RGBA8, 4, 4);
+    ctx.tex_parameteri(gl::TEXTURE_2D, gl::TEXTURE_BASE_LEVEL, 2);
+    ctx.framebuffer_texture_2d(
+        gl::FRAMEBUFFER,
+        gl::COLOR_ATTACHMENT0,
+        gl::TEXTURE_2D,
+        Some(s),
+        0,
+    );
+    assert_eq!(
+        ctx.check_framebuffer_status(gl::FRAMEBUFFER),
+        gl::FRAMEBUFFER_COMPLETE
+    );
+}
