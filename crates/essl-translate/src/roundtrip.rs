@@ -9,7 +9,7 @@
 
 use essl::program::ProgramLayout;
 use essl::Stage;
-use naga::valid::{Capabilities, ModuleInfo, ValidationFlags, Validator};
+use naga::valid::{ModuleInfo, ValidationFlags, Validator};
 use naga::Module;
 
 use crate::{write, Code, Options, Target, TranslateError};
@@ -21,12 +21,9 @@ pub fn read_wgsl(text: &str, stage: Stage) -> Result<(Module, ModuleInfo), Trans
         message,
     };
     let module = naga::front::wgsl::parse_str(text).map_err(|e| fail(e.emit_to_string(text)))?;
-    let info = Validator::new(
-        ValidationFlags::all(),
-        Capabilities::default() | Capabilities::CLIP_DISTANCES,
-    )
-    .validate(&module)
-    .map_err(|e| fail(e.emit_to_string(text)))?;
+    let info = Validator::new(ValidationFlags::all(), essl::lower::capabilities())
+        .validate(&module)
+        .map_err(|e| fail(e.emit_to_string(text)))?;
     Ok((module, info))
 }
 

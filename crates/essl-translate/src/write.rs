@@ -222,7 +222,7 @@ pub(crate) fn prepare(
     let info = if changed {
         naga::valid::Validator::new(
             naga::valid::ValidationFlags::all(),
-            naga::valid::Capabilities::default() | naga::valid::Capabilities::CLIP_DISTANCES,
+            essl::lower::capabilities(),
         )
         .validate(&module)
         .map_err(|e| e.into_inner().to_string())?

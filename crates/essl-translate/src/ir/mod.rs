@@ -106,7 +106,7 @@ pub(crate) fn import_global_expressions(
 pub(crate) fn validate(module: &Module) -> Option<naga::valid::ModuleInfo> {
     naga::valid::Validator::new(
         naga::valid::ValidationFlags::all(),
-        naga::valid::Capabilities::default() | naga::valid::Capabilities::CLIP_DISTANCES,
+        essl::lower::capabilities(),
     )
     .validate(module)
     .ok()

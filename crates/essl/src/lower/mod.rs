@@ -179,12 +179,16 @@ pub fn lower_shader<S: AsRef<hir::Module> + ?Sized>(
     Ok((module, info))
 }
 
-/// A validator with wgpu's flags and capabilities.
+/// The naga capabilities lowered modules use and are validated with: naga's defaults (what
+/// wgpu grants every device) and clip distances (`gl_ClipDistance`, wgpu's `CLIP_DISTANCES`).
+/// Tools that validate lowered or rewritten modules again take the same set.
+pub fn capabilities() -> naga::valid::Capabilities {
+    naga::valid::Capabilities::default() | naga::valid::Capabilities::CLIP_DISTANCES
+}
+
+/// A validator with wgpu's flags and [`capabilities`].
 fn validator() -> naga::valid::Validator {
-    naga::valid::Validator::new(
-        naga::valid::ValidationFlags::all(),
-        naga::valid::Capabilities::default() | naga::valid::Capabilities::CLIP_DISTANCES,
-    )
+    naga::valid::Validator::new(naga::valid::ValidationFlags::all(), capabilities())
 }
 
 thread_local! {
