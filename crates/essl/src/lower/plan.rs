@@ -69,16 +69,20 @@ impl ProgramPlan {
         clip_distance: bool,
         options: &LowerOptions,
     ) {
-        if options.flip_frag_coord_y && frag_coord {
+        let wanted = [
+            (
+                InternalUniform::FramebufferHeight,
+                options.flip_frag_coord_y && frag_coord,
+            ),
+            (
+                InternalUniform::ClipDistancesEnabled,
+                options.clip_distance_switches && clip_distance,
+            ),
+        ];
+        for (what, _) in wanted.into_iter().filter(|&(_, on)| on) {
+            // Each is 4 bytes (an f32 or a u32).
             offset = offset.div_ceil(4) * 4;
-            self.internal
-                .push((InternalUniform::FramebufferHeight, offset));
-            offset += 4;
-        }
-        if options.clip_distance_switches && clip_distance {
-            offset = offset.div_ceil(4) * 4;
-            self.internal
-                .push((InternalUniform::ClipDistancesEnabled, offset));
+            self.internal.push((what, offset));
             offset += 4;
         }
         self.block_size = offset.div_ceil(16) * 16;

@@ -87,16 +87,16 @@ impl ModuleCx<'_> {
                 offset: pplan.block_members[*idx].offset,
             });
         }
-        let wants_height = m.stage == Stage::Fragment
-            && self.options.flip_frag_coord_y
-            && m.used_builtins.contains(&BuiltinVar::FragCoord);
-        let height_member = wants_height
+        // The plan holds an internal value only where a stage reads it (the fragment stage the
+        // framebuffer height, the vertex stage the clip-distance switches).
+        let height_member = (m.stage == Stage::Fragment)
             .then(|| self.internal_member(&mut members, pplan, InternalUniform::FramebufferHeight))
             .flatten();
-        let clip_member = (m.stage == Stage::Vertex
-            && m.used_builtins.contains(&BuiltinVar::ClipDistance))
-        .then(|| self.internal_member(&mut members, pplan, InternalUniform::ClipDistancesEnabled))
-        .flatten();
+        let clip_member = (m.stage == Stage::Vertex)
+            .then(|| {
+                self.internal_member(&mut members, pplan, InternalUniform::ClipDistancesEnabled)
+            })
+            .flatten();
         if members.is_empty() {
             return;
         }
