@@ -2,11 +2,11 @@
 //! the read buffer drawn into a texture level (or a layer of one), its channels spread as
 //! the texture's format has them.
 
-use super::{kind_of, BlitDraw, Corners};
+use super::{color_source, BlitDraw, Corners};
 use crate::context::Context;
 use crate::framebuffer::Attachment;
 use crate::gl;
-use crate::pipeline::{BlitSource, Channels, ClearKind};
+use crate::pipeline::{Channels, ClearKind};
 use crate::texture::{bit_sizes, image_target, internal_format, Expand, InternalFormat, Level};
 
 /// Where a copy goes: a texture level (a cube face or a layer) and the box's corner in it.
@@ -337,10 +337,7 @@ impl Context {
         let source = self.single_sampled(&src);
         let [ox, oy, _] = dest.offset;
         let draw = BlitDraw {
-            read: BlitSource::Color {
-                kind: kind_of(&source),
-                samples: 1,
-            },
+            read: color_source(&source),
             source: &source,
             src: Corners([x, y, x + w, y + h]),
             dst: Corners([ox, oy, ox + w, oy + h]),

@@ -60,6 +60,15 @@ pub(crate) fn kind_of(image: &SurfaceImage) -> ClearKind {
     }
 }
 
+/// How the blit shader reads colour image `source`: its kind, and its samples where it is still
+/// multisampled ([`Context::single_sampled`] keeps formats the GPU cannot resolve so).
+pub(crate) fn color_source(source: &SurfaceImage) -> BlitSource {
+    BlitSource::Color {
+        kind: kind_of(source),
+        samples: source.samples.max(1),
+    }
+}
+
 impl Context {
     /// Copies a rectangle of the read framebuffer into one of the draw framebuffer
     /// (`blitFramebuffer`): `COLOR_BUFFER_BIT` (the read buffer into every draw buffer),
@@ -135,10 +144,7 @@ impl Context {
         if let Some(color) = plan.color {
             let source = self.single_sampled(&color);
             let draw = BlitDraw {
-                read: BlitSource::Color {
-                    kind: kind_of(&source),
-                    samples: source.samples.max(1),
-                },
+                read: color_source(&source),
                 source: &source,
                 src,
                 dst,

@@ -180,7 +180,7 @@ impl Context {
         let clip_control = if linked.layout.vertex.overrides.is_empty() {
             (false, false)
         } else {
-            self.state.clip_control
+            self.clip_control_flags()
         };
         let s = &self.state;
         let blend = s.blend.then(|| wgpu::BlendState {

@@ -17,6 +17,15 @@ pub(super) fn compile(
     essl::compile(file, stage, options)
 }
 
+/// The stage of a shader object of type `ty` (`VERTEX_SHADER` or `FRAGMENT_SHADER`).
+fn stage_of(ty: u32) -> essl::Stage {
+    if ty == gl::VERTEX_SHADER {
+        essl::Stage::Vertex
+    } else {
+        essl::Stage::Fragment
+    }
+}
+
 /// WebGL's shader info log: `ERROR: 0:LINE: 'token' : message`, one line per diagnostic, in
 /// source order.
 pub(super) fn info_log(shader: &essl::Shader) -> String {
@@ -94,12 +103,7 @@ impl Context {
         };
         let options = &self.linker.shaders;
         let s = self.objects.shaders.get_any_mut(id).expect("live");
-        let stage = if s.ty == gl::VERTEX_SHADER {
-            essl::Stage::Vertex
-        } else {
-            essl::Stage::Fragment
-        };
-        let compiled = compile(options, stage, &s.source);
+        let compiled = compile(options, stage_of(s.ty), &s.source);
         s.info_log = info_log(&compiled);
         s.compiled = Some((s.source.clone(), compiled.ok()));
     }
@@ -114,12 +118,7 @@ impl Context {
         let Some((source, true)) = &s.compiled else {
             return Some(String::new());
         };
-        let stage = if s.ty == gl::VERTEX_SHADER {
-            essl::Stage::Vertex
-        } else {
-            essl::Stage::Fragment
-        };
-        let compiled = compile(&self.linker.shaders, stage, source);
+        let compiled = compile(&self.linker.shaders, stage_of(s.ty), source);
         let text = compiled.naga.as_ref().and_then(|(module, info)| {
             naga::back::wgsl::write_string(module, info, naga::back::wgsl::WriterFlags::empty())
                 .ok()

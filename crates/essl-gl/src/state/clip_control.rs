@@ -23,6 +23,8 @@ pub(crate) const ZERO_TO_ONE_EXT: u32 = 0x935F;
 pub(crate) const CLIP_ORIGIN_EXT: u32 = 0x935C;
 /// `CLIP_DEPTH_MODE_EXT`.
 pub(crate) const CLIP_DEPTH_MODE_EXT: u32 = 0x935D;
+/// GL's initial `[CLIP_ORIGIN_EXT, CLIP_DEPTH_MODE_EXT]`.
+pub(crate) const DEFAULT_CLIP_CONTROL: [u32; 2] = [LOWER_LEFT_EXT, NEGATIVE_ONE_TO_ONE_EXT];
 
 impl Context {
     /// `EXT_clip_control`'s `clipControlEXT`: the clip-space origin (`LOWER_LEFT_EXT`,
@@ -36,29 +38,27 @@ impl Context {
                 "EXT_clip_control is not enabled",
             );
         }
-        let upper_left = match origin {
-            LOWER_LEFT_EXT => false,
-            UPPER_LEFT_EXT => true,
-            _ => {
-                return self.error(
-                    gl::INVALID_ENUM,
-                    "clipControlEXT",
-                    format_args!("origin 0x{origin:04X}"),
-                )
-            }
-        };
-        let zero_to_one = match depth {
-            NEGATIVE_ONE_TO_ONE_EXT => false,
-            ZERO_TO_ONE_EXT => true,
-            _ => {
-                return self.error(
-                    gl::INVALID_ENUM,
-                    "clipControlEXT",
-                    format_args!("depth 0x{depth:04X}"),
-                )
-            }
-        };
-        self.state.clip_control = (upper_left, zero_to_one);
+        if !matches!(origin, LOWER_LEFT_EXT | UPPER_LEFT_EXT) {
+            return self.error(
+                gl::INVALID_ENUM,
+                "clipControlEXT",
+                format_args!("origin 0x{origin:04X}"),
+            );
+        }
+        if !matches!(depth, NEGATIVE_ONE_TO_ONE_EXT | ZERO_TO_ONE_EXT) {
+            return self.error(
+                gl::INVALID_ENUM,
+                "clipControlEXT",
+                format_args!("depth 0x{depth:04X}"),
+            );
+        }
+        self.state.clip_control = [origin, depth];
+    }
+
+    /// The state a draw's pipeline takes: (origin `UPPER_LEFT_EXT`, depth `ZERO_TO_ONE_EXT`).
+    pub(crate) fn clip_control_flags(&self) -> (bool, bool) {
+        let [origin, depth] = self.state.clip_control;
+        (origin == UPPER_LEFT_EXT, depth == ZERO_TO_ONE_EXT)
     }
 
     /// `CLIP_ORIGIN_EXT` and `CLIP_DEPTH_MODE_EXT`, once the extension is on.
@@ -66,18 +66,10 @@ impl Context {
         if !self.extensions.clip_control {
             return None;
         }
-        let (upper_left, zero_to_one) = self.state.clip_control;
+        let [origin, depth] = self.state.clip_control;
         match pname {
-            CLIP_ORIGIN_EXT => Some(Parameter::Enum(if upper_left {
-                UPPER_LEFT_EXT
-            } else {
-                LOWER_LEFT_EXT
-            })),
-            CLIP_DEPTH_MODE_EXT => Some(Parameter::Enum(if zero_to_one {
-                ZERO_TO_ONE_EXT
-            } else {
-                NEGATIVE_ONE_TO_ONE_EXT
-            })),
+            CLIP_ORIGIN_EXT => Some(Parameter::Enum(origin)),
+            CLIP_DEPTH_MODE_EXT => Some(Parameter::Enum(depth)),
             _ => None,
         }
     }

@@ -33,6 +33,11 @@ impl Context {
         }
     }
 
+    /// Whether switch `i` is on.
+    pub(super) fn clip_distance_on(&self, i: u32) -> bool {
+        self.state.clip_distances & (1 << i) != 0
+    }
+
     /// The extension's `getParameter` names, once it is on: its limits and its switches.
     pub(crate) fn clip_distance_parameter(&self, pname: u32) -> Option<Parameter> {
         if !self.extensions.clip_cull_distance {
@@ -45,7 +50,7 @@ impl Context {
             }
             _ => {
                 let i = self.clip_distance_switch(pname)?;
-                Some(Parameter::Bool(self.state.clip_distances & (1 << i) != 0))
+                Some(Parameter::Bool(self.clip_distance_on(i)))
             }
         }
     }

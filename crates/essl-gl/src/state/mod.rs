@@ -142,7 +142,7 @@ impl Context {
             return false;
         }
         if let Some(i) = self.clip_distance_switch(cap) {
-            return self.clip_distances_enabled() & (1 << i) != 0;
+            return self.clip_distance_on(i);
         }
         match capability_flag!(self.state, cap) {
             Some(flag) => *flag,

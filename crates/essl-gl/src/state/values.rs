@@ -15,8 +15,8 @@ pub(crate) struct RenderState {
     pub(crate) scissor_test: bool,
     /// `CLIP_DISTANCEi_WEBGL` switches: bit i.
     pub(crate) clip_distances: u8,
-    /// `EXT_clip_control`: (origin `UPPER_LEFT_EXT`, depth `ZERO_TO_ONE_EXT`).
-    pub(crate) clip_control: (bool, bool),
+    /// `EXT_clip_control`: `[CLIP_ORIGIN_EXT, CLIP_DEPTH_MODE_EXT]`.
+    pub(crate) clip_control: [u32; 2],
     pub(crate) clear_color: [f32; 4],
     pub(crate) clear_depth: f32,
     pub(crate) clear_stencil: i32,
@@ -64,7 +64,7 @@ impl RenderState {
             scissor: [0, 0, width as i32, height as i32],
             scissor_test: false,
             clip_distances: 0,
-            clip_control: (false, false),
+            clip_control: super::clip_control::DEFAULT_CLIP_CONTROL,
             clear_color: [0.0; 4],
             clear_depth: 1.0,
             clear_stencil: 0,

@@ -188,8 +188,11 @@ impl TextureObject {
             return true;
         }
         let (base, max) = self.level_range();
-        if level == base || base > max {
-            return level == base && base <= max;
+        if base > max {
+            return false;
+        }
+        if level == base {
+            return true;
         }
         let mipmapped = SamplerParams {
             min_filter: gl::NEAREST_MIPMAP_NEAREST,
