@@ -120,7 +120,8 @@ impl Place {
 /// A value the host writes into the uniform buffer for the translation itself.
 #[derive(Clone, Debug, PartialEq, Eq, Serialize, Deserialize)]
 pub struct Internal {
-    /// What it is: `framebuffer_height` (an `f32`, the render target's height in pixels).
+    /// What it is: `framebuffer_height` (an `f32`, the render target's height in pixels) or
+    /// `draw_id` (an `i32`, `gl_DrawID`: the index of the draw within a multi-draw call).
     pub value: String,
     /// Byte offset in the loose uniforms' buffer.
     pub offset: u32,
@@ -344,10 +345,14 @@ impl BindingMap {
         let internal = default
             .iter()
             .flat_map(|(_, members)| members)
-            .filter(|(n, _)| *n == "_essl_framebuffer_height")
-            .map(|(_, offset)| Internal {
-                value: InternalUniform::FramebufferHeight.name().into(),
-                offset: *offset,
+            .filter_map(|(n, offset)| {
+                let what = InternalUniform::ALL
+                    .into_iter()
+                    .find(|u| u.member_name() == *n)?;
+                Some(Internal {
+                    value: what.name().into(),
+                    offset: *offset,
+                })
             })
             .collect();
         BindingMap {

@@ -18,6 +18,7 @@ pub(crate) struct Notes {
     pub uniform_buffer: Option<String>,
     pub padding: Option<String>,
     pub framebuffer_height: Option<String>,
+    pub draw_id: Option<String>,
     pub samplers: Option<String>,
     /// Above the functions essl adds (`inverse4x4`).
     pub helper: Option<String>,
@@ -39,6 +40,11 @@ impl Notes {
             padding: Some("The other stage's uniforms.".into()),
             framebuffer_height: Some(
                 "Not the shader's: the host writes the framebuffer height here (gl_FragCoord.y)."
+                    .into(),
+            ),
+            draw_id: Some(
+                "Not the shader's: the host writes gl_DrawID here, the draw's index within a \
+                 multi-draw call (0 for a single draw)."
                     .into(),
             ),
             samplers: Some(
@@ -115,24 +121,31 @@ pub fn annotate(
     options: &Options,
     header: &[String],
 ) -> String {
-    let mut notes: Vec<(Anchor, String)> = Vec::new();
-    notes.push((
-        Anchor::Token(vec!["_essl_DefaultUniforms".into()]),
-        "The shader's loose uniforms (`uniform vec3 u_x;`…), gathered into one uniform buffer \
-         at group 0, binding 0, in std140 layout: the binding map gives each one's offset. \
-         Uniform blocks of the shader follow at bindings 1, 2…"
-            .into(),
-    ));
-    notes.push((
-        Anchor::Token(vec!["_essl_padding".into()]),
-        "Bytes of the buffer that only the other stage reads.".into(),
-    ));
-    notes.push((
-        Anchor::Token(vec!["_essl_framebuffer_height".into()]),
-        "Not the shader's: the host writes the framebuffer's height in pixels here, for the \
-         gl_FragCoord.y flip."
-            .into(),
-    ));
+    let mut notes: Vec<(Anchor, String)> = vec![
+        (
+            Anchor::Token(vec!["_essl_DefaultUniforms".into()]),
+            "The shader's loose uniforms (`uniform vec3 u_x;`…), gathered into one uniform \
+             buffer at group 0, binding 0, in std140 layout: the binding map gives each one's \
+             offset. Uniform blocks of the shader follow at bindings 1, 2…"
+                .into(),
+        ),
+        (
+            Anchor::Token(vec!["_essl_padding".into()]),
+            "Bytes of the buffer that only the other stage reads.".into(),
+        ),
+        (
+            Anchor::Token(vec!["_essl_framebuffer_height".into()]),
+            "Not the shader's: the host writes the framebuffer's height in pixels here, for the \
+             gl_FragCoord.y flip."
+                .into(),
+        ),
+        (
+            Anchor::Token(vec!["_essl_draw_id".into()]),
+            "Not the shader's: gl_DrawID, which the target lacks. The host writes the index of \
+             the draw within a multi-draw call here before each draw (0 for a single draw)."
+                .into(),
+        ),
+    ];
     for (name, binding) in textures(module) {
         let ident = crate::names::identifier(&name);
         notes.push((

@@ -169,14 +169,43 @@ pub enum InternalUniform {
     /// The clip distances enabled, as a `u32` whose bit `i` is `CLIP_DISTANCEi_WEBGL`
     /// ([`LowerOptions::clip_distance_switches`]).
     ClipDistancesEnabled,
+    /// `gl_DrawID` as an `i32`: the index of the draw within a multi-draw call, 0 for any
+    /// other draw (`WEBGL_multi_draw`).
+    DrawId,
 }
 
 impl InternalUniform {
+    /// Every value.
+    pub const ALL: [InternalUniform; 3] = [
+        InternalUniform::FramebufferHeight,
+        InternalUniform::ClipDistancesEnabled,
+        InternalUniform::DrawId,
+    ];
+
     /// A stable snake_case name for the value (`framebuffer_height`), for binding maps.
     pub fn name(self) -> &'static str {
         match self {
             InternalUniform::FramebufferHeight => "framebuffer_height",
             InternalUniform::ClipDistancesEnabled => "clip_distances_enabled",
+            InternalUniform::DrawId => "draw_id",
+        }
+    }
+
+    /// The name of its member of the default uniform block (`_essl_framebuffer_height`).
+    pub fn member_name(self) -> &'static str {
+        match self {
+            InternalUniform::FramebufferHeight => "_essl_framebuffer_height",
+            InternalUniform::ClipDistancesEnabled => "_essl_clip_distances_enabled",
+            InternalUniform::DrawId => "_essl_draw_id",
+        }
+    }
+
+    /// The vertex stage reads it (`gl_ClipDistance`'s switches, `gl_DrawID`), or the fragment
+    /// stage (the framebuffer height).
+    pub fn stage(self) -> crate::Stage {
+        match self {
+            InternalUniform::FramebufferHeight => crate::Stage::Fragment,
+            InternalUniform::ClipDistancesEnabled | InternalUniform::DrawId => crate::Stage::Vertex,
         }
     }
 }

@@ -71,7 +71,7 @@ impl Target {
 
 /// A WebGL extension that adds to the shading language, as a context enables it: the WebGL 1
 /// extensions add to GLSL ES 1.00 in a WebGL 1 context; `WEBGL_clip_cull_distance` adds to
-/// GLSL ES 3.00 in a WebGL 2 context.
+/// GLSL ES 3.00 in a WebGL 2 context; `WEBGL_multi_draw` adds to both languages in both.
 #[non_exhaustive]
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
 pub enum Extension {
@@ -87,25 +87,39 @@ pub enum Extension {
     /// (`GL_ANGLE_clip_cull_distance` in shaders), with no cull distances
     /// (`gl_MaxCullDistances` is 0, as the extension allows).
     WebglClipCullDistance,
+    /// `WEBGL_multi_draw` (both contexts): `highp int gl_DrawID` in vertex shaders of either
+    /// language (`GL_ANGLE_multi_draw` in shaders), the index of the draw within a multi-draw
+    /// call and 0 for any other draw.
+    WebglMultiDraw,
 }
 
 impl Extension {
     /// Every extension essl knows.
-    pub const ALL: [Extension; 5] = [
+    pub const ALL: [Extension; 6] = [
         Extension::OesStandardDerivatives,
         Extension::ExtShaderTextureLod,
         Extension::ExtFragDepth,
         Extension::WebglDrawBuffers,
         Extension::WebglClipCullDistance,
+        Extension::WebglMultiDraw,
     ];
 
-    /// The context that offers it: a WebGL 1 extension is for GLSL ES 1.00 shaders of a
-    /// WebGL 1 context, a WebGL 2 one for GLSL ES 3.00 shaders of a WebGL 2 context.
-    pub fn target(self) -> Target {
+    /// Whether a context of `target` offers it: the WebGL 1 extensions only WebGL 1 (WebGL 2
+    /// made them core), `WEBGL_clip_cull_distance` only WebGL 2, `WEBGL_multi_draw` both.
+    pub fn offered_by(self, target: Target) -> bool {
         match self {
-            Extension::WebglClipCullDistance => Target::WebGl2,
-            _ => Target::WebGl1,
+            Extension::WebglMultiDraw => true,
+            Extension::WebglClipCullDistance => target == Target::WebGl2,
+            _ => target == Target::WebGl1,
         }
+    }
+
+    /// Whether a GLSL ES 1.00 (`es100`) or 3.00 shader of a `target` context may use it: a
+    /// WebGL 1 extension in GLSL ES 1.00 and a WebGL 2 one in GLSL ES 3.00 only;
+    /// `WEBGL_multi_draw` in either.
+    pub fn usable_in(self, target: Target, es100: bool) -> bool {
+        self.offered_by(target)
+            && (self == Extension::WebglMultiDraw || (target == Target::WebGl1) == es100)
     }
 
     /// The name a shader's `#extension` directive uses (also its macro).
@@ -116,6 +130,7 @@ impl Extension {
             Extension::ExtFragDepth => "GL_EXT_frag_depth",
             Extension::WebglDrawBuffers => "GL_EXT_draw_buffers",
             Extension::WebglClipCullDistance => "GL_ANGLE_clip_cull_distance",
+            Extension::WebglMultiDraw => "GL_ANGLE_multi_draw",
         }
     }
 
@@ -127,6 +142,7 @@ impl Extension {
             Extension::ExtFragDepth => "EXT_frag_depth",
             Extension::WebglDrawBuffers => "WEBGL_draw_buffers",
             Extension::WebglClipCullDistance => "WEBGL_clip_cull_distance",
+            Extension::WebglMultiDraw => "WEBGL_multi_draw",
         }
     }
 
@@ -253,7 +269,7 @@ impl Language {
         let offered: Vec<Extension> = enabled
             .iter()
             .copied()
-            .filter(|e| e.target() == target && (target == Target::WebGl1) == es100)
+            .filter(|e| e.usable_in(target, es100))
             .collect();
         for (name, behavior, span) in &pp.extensions {
             let on = matches!(behavior, B::Enable | B::Require | B::Warn);

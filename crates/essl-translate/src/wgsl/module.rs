@@ -203,9 +203,11 @@ impl ModuleWriter<'_> {
                 .or_else(|| self.input.anchors.lookup(&glsl))
                 .unwrap_or(Origin::None);
             let mut line = Line::new(1, text, origin);
-            if glsl == "_essl_framebuffer_height" {
-                line.notes
-                    .extend(self.input.notes.framebuffer_height.clone());
+            let notes = &self.input.notes;
+            match glsl.as_str() {
+                "_essl_framebuffer_height" => line.notes.extend(notes.framebuffer_height.clone()),
+                "_essl_draw_id" => line.notes.extend(notes.draw_id.clone()),
+                _ => {}
             }
             self.out.push(line);
         }

@@ -4,6 +4,7 @@
 mod binding_map;
 mod clip_distances;
 mod corpora;
+mod draw_id;
 mod hazards;
 mod scenes;
 mod snapshots;

@@ -49,6 +49,9 @@ pub enum BuiltinVar {
     /// distances (`gl_MaxCullDistances` is 0), so it exists only for code that tests that
     /// constant first; writes are kept nowhere and reads give 0.
     CullDistance,
+    /// `in highp int gl_DrawID` (vertex, `GL_ANGLE_multi_draw`): the index of the draw within
+    /// a multi-draw call, 0 for any other draw.
+    DrawId,
 }
 
 impl BuiltinVar {
@@ -68,19 +71,25 @@ impl BuiltinVar {
             BuiltinVar::FragData => "gl_FragData",
             BuiltinVar::ClipDistance => "gl_ClipDistance",
             BuiltinVar::CullDistance => "gl_CullDistance",
+            BuiltinVar::DrawId => "gl_DrawID",
         }
     }
 
     /// The variable called `name` in a shader of `stage` in `lang`: GLSL ES 1.00 has
     /// `gl_FragColor` and `gl_FragData` (and `gl_FragDepthEXT`, which is `gl_FragDepth`, with
     /// `EXT_frag_depth`) but not `gl_VertexID`, `gl_InstanceID` or `gl_FragDepth`; GLSL ES 3.00
-    /// has `gl_ClipDistance` and `gl_CullDistance` with `GL_ANGLE_clip_cull_distance`.
+    /// has `gl_ClipDistance` and `gl_CullDistance` with `GL_ANGLE_clip_cull_distance`; both
+    /// have `gl_DrawID` in vertex shaders with `GL_ANGLE_multi_draw`.
     pub fn lookup_in(
         name: &str,
         stage: Stage,
         lang: &crate::target::Language,
         at: u32,
     ) -> Option<BuiltinVar> {
+        if name == "gl_DrawID" {
+            return (stage == Stage::Vertex && lang.has_at(Extension::WebglMultiDraw, at))
+                .then_some(BuiltinVar::DrawId);
+        }
         if !lang.es100 {
             return match name {
                 "gl_ClipDistance" | "gl_CullDistance"
@@ -128,7 +137,7 @@ impl BuiltinVar {
     pub fn stage(self) -> Option<Stage> {
         use BuiltinVar::*;
         match self {
-            Position | PointSize | VertexId | InstanceId => Some(Stage::Vertex),
+            Position | PointSize | VertexId | InstanceId | DrawId => Some(Stage::Vertex),
             FragCoord | FrontFacing | FragDepth | PointCoord | FragColor | FragData => {
                 Some(Stage::Fragment)
             }
@@ -142,7 +151,7 @@ impl BuiltinVar {
         match self {
             Position | FragCoord => Type::Vector(ScalarKind::Float, 4),
             PointSize | FragDepth => Type::FLOAT,
-            VertexId | InstanceId => Type::INT,
+            VertexId | InstanceId | DrawId => Type::INT,
             FrontFacing => Type::BOOL,
             PointCoord => Type::Vector(ScalarKind::Float, 2),
             DepthRange => Type::Void,

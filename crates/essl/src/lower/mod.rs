@@ -31,7 +31,7 @@ use thiserror::Error;
 use crate::builtins::BuiltinVar;
 use crate::hir::{self, GlobalId};
 use crate::link;
-use crate::program::{self, LowerOptions, ProgramLayout};
+use crate::program::{self, InternalUniform, LowerOptions, ProgramLayout};
 use crate::reflect::PathStep;
 use crate::source::Span;
 use crate::Stage;
@@ -134,10 +134,9 @@ pub(crate) struct ModuleCx<'a> {
     pub samplers: HashMap<(GlobalId, Vec<PathStep>), TextureAndSampler>,
     pub stage: Stage,
     pub options: LowerOptions,
-    /// The default uniform block global and the framebuffer-height member, for gl_FragCoord.
-    pub fb_height: Option<(Handle<naga::GlobalVariable>, u32)>,
-    /// The default uniform block global and the member holding the enabled clip distances.
-    pub clip_switches: Option<(Handle<naga::GlobalVariable>, u32)>,
+    /// The values the renderer provides that this stage reads: the default uniform block
+    /// global and the member holding each.
+    pub internal: HashMap<InternalUniform, (Handle<naga::GlobalVariable>, u32)>,
 }
 
 fn nspan(s: Span) -> NSpan {

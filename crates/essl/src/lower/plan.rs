@@ -57,30 +57,50 @@ pub(super) struct ProgramPlan {
     pub(super) internal: Vec<(InternalUniform, u32)>,
 }
 
+/// Which built-in variables the program's stages use that the renderer feeds through the
+/// default uniform block.
+#[derive(Clone, Copy, Debug, Default)]
+pub(super) struct InternalUses {
+    /// The fragment stage reads `gl_FragCoord`.
+    pub(super) frag_coord: bool,
+    /// The vertex stage writes `gl_ClipDistance`.
+    pub(super) clip_distance: bool,
+    /// The vertex stage reads `gl_DrawID`.
+    pub(super) draw_id: bool,
+}
+
+impl InternalUses {
+    /// What a vertex module `vm` and a fragment module `fm` use (either may be absent).
+    pub(super) fn of(vm: Option<&hir::Module>, fm: Option<&hir::Module>) -> InternalUses {
+        let v = |b| vm.is_some_and(|m| m.used_builtins.contains(&b));
+        InternalUses {
+            frag_coord: fm.is_some_and(|m| m.used_builtins.contains(&BuiltinVar::FragCoord)),
+            clip_distance: v(BuiltinVar::ClipDistance),
+            draw_id: v(BuiltinVar::DrawId),
+        }
+    }
+}
+
 impl ProgramPlan {
-    /// Reserves the framebuffer height after `offset` when the fragment stage reads
-    /// `gl_FragCoord` and the options flip it, and the clip-distance switches when the vertex
-    /// stage writes `gl_ClipDistance` and the options read them; sets the block's size (whole
-    /// 16-byte rows).
-    fn finish_block(
-        &mut self,
-        mut offset: u32,
-        frag_coord: bool,
-        clip_distance: bool,
-        options: &LowerOptions,
-    ) {
+    /// Reserves after `offset` the values the renderer provides that the stages use: the
+    /// framebuffer height when the fragment stage reads `gl_FragCoord` and the options flip
+    /// it, the clip-distance switches when the vertex stage writes `gl_ClipDistance` and the
+    /// options read them, the draw index when the vertex stage reads `gl_DrawID`; sets the
+    /// block's size (whole 16-byte rows).
+    fn finish_block(&mut self, mut offset: u32, uses: InternalUses, options: &LowerOptions) {
         let wanted = [
             (
                 InternalUniform::FramebufferHeight,
-                options.flip_frag_coord_y && frag_coord,
+                options.flip_frag_coord_y && uses.frag_coord,
             ),
             (
                 InternalUniform::ClipDistancesEnabled,
-                options.clip_distance_switches && clip_distance,
+                options.clip_distance_switches && uses.clip_distance,
             ),
+            (InternalUniform::DrawId, uses.draw_id),
         ];
         for (what, _) in wanted.into_iter().filter(|&(_, on)| on) {
-            // Each is 4 bytes (an f32 or a u32).
+            // Each is 4 bytes (an f32, u32 or i32).
             offset = offset.div_ceil(4) * 4;
             self.internal.push((what, offset));
             offset += 4;
@@ -122,15 +142,12 @@ pub(super) fn shader_plan(m: &hir::Module, options: &LowerOptions) -> (StagePlan
             slot += 1;
         }
     }
-    let frag_coord = m.stage == Stage::Fragment && m.used_builtins.contains(&BuiltinVar::FragCoord);
-    let clip = m.used_builtins.contains(&BuiltinVar::ClipDistance);
-    pplan.finish_block(
-        offset,
-        frag_coord,
-        m.stage == Stage::Vertex && clip,
-        options,
-    );
-    if m.stage == Stage::Fragment && clip {
+    let (vm, fm) = match m.stage {
+        Stage::Vertex => (Some(m), None),
+        Stage::Fragment => (None, Some(m)),
+    };
+    pplan.finish_block(offset, InternalUses::of(vm, fm), options);
+    if m.stage == Stage::Fragment && m.used_builtins.contains(&BuiltinVar::ClipDistance) {
         plan.clip_varying = Some(next_location(m, &plan.inputs));
     }
     let mut binding = 1;
@@ -221,9 +238,8 @@ impl<'m> ProgramPlanner<'m> {
             blocks: Vec::new(),
         };
         let offset = p.default_block(program);
-        let frag_coord = fm.used_builtins.contains(&BuiltinVar::FragCoord);
-        let clip = vm.used_builtins.contains(&BuiltinVar::ClipDistance);
-        p.pplan.finish_block(offset, frag_coord, clip, options);
+        let uses = InternalUses::of(Some(vm), Some(fm));
+        p.pplan.finish_block(offset, uses, options);
         p.uniform_blocks();
         p.active_uniforms(program);
         // Samplers of a used uniform that a stage uses but whose leaf is inactive cannot

@@ -36,8 +36,7 @@ pub(super) fn lower_stage(
         samplers: HashMap::default(),
         stage: m.stage,
         options: options.clone(),
-        fb_height: None,
-        clip_switches: None,
+        internal: HashMap::default(),
     };
     cx.default_uniform_block(plan, pplan);
     cx.uniform_blocks(plan)?;
@@ -87,16 +86,13 @@ impl ModuleCx<'_> {
                 offset: pplan.block_members[*idx].offset,
             });
         }
-        // The plan holds an internal value only where a stage reads it (the fragment stage the
-        // framebuffer height, the vertex stage the clip-distance switches).
-        let height_member = (m.stage == Stage::Fragment)
-            .then(|| self.internal_member(&mut members, pplan, InternalUniform::FramebufferHeight))
-            .flatten();
-        let clip_member = (m.stage == Stage::Vertex)
-            .then(|| {
-                self.internal_member(&mut members, pplan, InternalUniform::ClipDistancesEnabled)
-            })
-            .flatten();
+        // The plan holds an internal value only where a stage reads it.
+        let internal: Vec<(InternalUniform, u32)> = pplan
+            .internal
+            .iter()
+            .filter(|(what, _)| what.stage() == m.stage)
+            .map(|&(what, offset)| (what, self.internal_member(&mut members, what, offset)))
+            .collect();
         if members.is_empty() {
             return;
         }
@@ -131,35 +127,33 @@ impl ModuleCx<'_> {
                 repr,
             };
         }
-        if let Some(hm) = height_member {
-            self.fb_height = Some((block, hm));
-        }
-        if let Some(cm) = clip_member {
-            self.clip_switches = Some((block, cm));
-        }
+        self.internal = internal
+            .into_iter()
+            .map(|(what, member)| (what, (block, member)))
+            .collect();
     }
 
-    /// Appends the member of the default block that holds internal value `what`, where the
-    /// plan placed one; its index.
+    /// Appends the member of the default block that holds internal value `what` at `offset`;
+    /// its index.
     fn internal_member(
         &mut self,
         members: &mut Vec<naga::StructMember>,
-        pplan: &ProgramPlan,
         what: InternalUniform,
-    ) -> Option<u32> {
-        let &(_, offset) = pplan.internal.iter().find(|(k, _)| *k == what)?;
-        let (name, ty) = match what {
-            InternalUniform::FramebufferHeight => ("_essl_framebuffer_height", Type::FLOAT),
-            InternalUniform::ClipDistancesEnabled => ("_essl_clip_distances_enabled", Type::UINT),
+        offset: u32,
+    ) -> u32 {
+        let ty = match what {
+            InternalUniform::FramebufferHeight => Type::FLOAT,
+            InternalUniform::ClipDistancesEnabled => Type::UINT,
+            InternalUniform::DrawId => Type::INT,
         };
         let ty = self.types.logical(&mut self.module, &ty);
         members.push(naga::StructMember {
-            name: Some(name.into()),
+            name: Some(what.member_name().into()),
             ty,
             binding: None,
             offset,
         });
-        Some(members.len() as u32 - 1)
+        members.len() as u32 - 1
     }
 
     /// The uniform blocks the plan binds, each a std140 struct in group 0.

@@ -77,11 +77,11 @@ pub struct PreprocessOptions {
 
 impl PreprocessOptions {
     /// The extension macros a target's context defines: the directive names of the extensions
-    /// it enabled that belong to it (a WebGL 2 context defines none of WebGL 1's).
+    /// it enabled that it offers (a WebGL 2 context defines none of WebGL 1's).
     pub fn extension_macros(target: Target, enabled: &[Extension]) -> Vec<String> {
         enabled
             .iter()
-            .filter(|e| e.target() == target)
+            .filter(|e| e.offered_by(target))
             .map(|e| e.directive_name().to_string())
             .collect()
     }

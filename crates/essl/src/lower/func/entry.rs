@@ -10,6 +10,7 @@ use crate::builtins::BuiltinVar;
 use crate::hir::{self};
 use crate::lower::plan::StagePlan;
 use crate::lower::{GlobalLower, LowerError, ModuleCx};
+use crate::program::InternalUniform;
 use crate::source::Span;
 use crate::types::{ScalarKind, Type};
 use crate::Stage;
@@ -263,6 +264,13 @@ impl FnCx<'_, '_> {
         builtins.sort_by_key(|(k, _)| *k);
         let mut frag_coord_arg = None;
         for &(b, var) in &builtins {
+            if b == BuiltinVar::DrawId {
+                let value = self
+                    .load_internal(InternalUniform::DrawId)
+                    .unwrap_or_else(|| self.lit(Literal::I32(0)));
+                self.store_private(var, value);
+                continue;
+            }
             let (builtin, ty) = match b {
                 BuiltinVar::VertexId => (naga::BuiltIn::VertexIndex, Type::UINT),
                 BuiltinVar::InstanceId => (naga::BuiltIn::InstanceIndex, Type::UINT),
@@ -295,6 +303,16 @@ impl FnCx<'_, '_> {
             self.store_private(var, value);
         }
         frag_coord_arg
+    }
+
+    /// The value the renderer provides as `what`, loaded from the default uniform block, where
+    /// the plan gave this stage one.
+    fn load_internal(&mut self, what: InternalUniform) -> Option<Handle<Expression>> {
+        let (block, member) = *self.cx.internal.get(&what)?;
+        let sp = Span::default();
+        let bp = self.add(Expression::GlobalVariable(block), sp);
+        let mp = self.access_index(bp, member, sp);
+        Some(self.add(Expression::Load { pointer: mp }, sp))
     }
 
     /// A fragment shader's `gl_ClipDistance`: the two `vec4` varyings the vertex stage writes
@@ -351,10 +369,7 @@ impl FnCx<'_, '_> {
             .collect();
         if var.is_some() {
             let mut clipped = values.clone();
-            if let Some((block, member)) = self.cx.clip_switches {
-                let bp = self.add(Expression::GlobalVariable(block), sp);
-                let mp = self.access_index(bp, member, sp);
-                let mask = self.add(Expression::Load { pointer: mp }, sp);
+            if let Some(mask) = self.load_internal(InternalUniform::ClipDistancesEnabled) {
                 let none = self.lit(Literal::U32(0));
                 for (i, d) in clipped.iter_mut().enumerate() {
                     let bit = self.lit(Literal::U32(1 << i));
@@ -392,14 +407,13 @@ impl FnCx<'_, '_> {
     /// `gl_FragCoord` with y counted from the top, when the options ask for it and the
     /// framebuffer height is in the default uniform block; else `value` as it is.
     fn flip_frag_coord(&mut self, value: Handle<Expression>) -> Handle<Expression> {
-        let (true, Some((block, member))) = (self.cx.options.flip_frag_coord_y, self.cx.fb_height)
-        else {
+        if !self.cx.options.flip_frag_coord_y {
+            return value;
+        }
+        let Some(h) = self.load_internal(InternalUniform::FramebufferHeight) else {
             return value;
         };
         let sp = Span::default();
-        let bp = self.add(Expression::GlobalVariable(block), sp);
-        let hp = self.access_index(bp, member, sp);
-        let h = self.add(Expression::Load { pointer: hp }, sp);
         let x = self.access_index(value, 0, sp);
         let y = self.access_index(value, 1, sp);
         let z = self.access_index(value, 2, sp);

@@ -202,30 +202,22 @@ impl Pp<'_> {
             .with_label(if require { "required here" } else { "ignored" })
             .with_token(n);
             e = match (crate::target::Extension::from_name(n), self.options.target) {
-                (Some(ext), t) if ext.target() == Target::WebGl2 && t == Target::WebGl2 => e
+                (Some(ext), t) if ext.offered_by(t) => e
                     .with_note(format!(
-                        "the WebGL 2 context has not enabled `{}`",
+                        "the {} context has not enabled `{}`",
+                        t.display(),
                         ext.webgl_name()
                     ))
                     .with_help(format!(
                         "enable it in the context first: `gl.getExtension('{}')`",
                         ext.webgl_name()
                     )),
-                (Some(ext), Target::WebGl1) if ext.target() == Target::WebGl2 => e
+                (Some(ext), Target::WebGl1) => e
                     .with_note(format!(
                         "`{}` is a WebGL 2 extension, for GLSL ES 3.00 shaders",
                         ext.webgl_name()
                     ))
                     .with_help("write the shader in GLSL ES 3.00 for a WebGL 2 context"),
-                (Some(ext), Target::WebGl1) => e
-                    .with_note(format!(
-                        "the WebGL 1 context has not enabled `{}`",
-                        ext.webgl_name()
-                    ))
-                    .with_help(format!(
-                        "enable it in the context first: `gl.getExtension('{}')`",
-                        ext.webgl_name()
-                    )),
                 (Some(_), Target::WebGl2) if self.version == Version::Es300 => e
                     .with_note("its features are part of GLSL ES 3.00, under their core names")
                     .with_help("remove the directive")
