@@ -55,6 +55,14 @@ export declare class NativeContext {
   readPixels(x: number, y: number, width: number, height: number, format: number, ty: number, dst: View, offset: number): void
   /** `readPixels` into the bound `PIXEL_PACK_BUFFER` at byte `offset`. */
   readPixelsToBuffer(x: number, y: number, width: number, height: number, format: number, ty: number, offset: number): void
+  /** `multiDrawArraysWEBGL`. */
+  multiDrawArrays(mode: number, firsts: Int32Array, firstsOffset: number, counts: Int32Array, countsOffset: number, drawcount: number): void
+  /** `multiDrawArraysInstancedWEBGL` (the IDL's eight arguments). */
+  multiDrawArraysInstanced(mode: number, firsts: Int32Array, firstsOffset: number, counts: Int32Array, countsOffset: number, instanceCounts: Int32Array, instanceCountsOffset: number, drawcount: number): void
+  /** `multiDrawElementsWEBGL`. */
+  multiDrawElements(mode: number, counts: Int32Array, countsOffset: number, ty: number, offsets: Int32Array, offsetsOffset: number, drawcount: number): void
+  /** `multiDrawElementsInstancedWEBGL` (the IDL's nine arguments). */
+  multiDrawElementsInstanced(mode: number, counts: Int32Array, countsOffset: number, ty: number, offsets: Int32Array, offsetsOffset: number, instanceCounts: Int32Array, instanceCountsOffset: number, drawcount: number): void
   /** `createShader`: the id, or 0 (`null`) for a bad type. */
   createShader(ty: number): number
   /** `isShader`. */
@@ -65,6 +73,8 @@ export declare class NativeContext {
   shaderSource(shader: number, source: string): void
   /** `getShaderSource`. */
   getShaderSource(shader: number): Answer
+  /** `WEBGL_debug_shaders.getTranslatedShaderSource`. */
+  getTranslatedShaderSource(shader: number): Answer
   /** `compileShader`. */
   compileShader(shader: number): void
   /** `getShaderParameter`. */
@@ -171,6 +181,8 @@ export declare class NativeContext {
   getSyncParameter(sync: number, pname: number): Answer
   /** `enable`. */
   enable(cap: number): void
+  /** `EXT_clip_control.clipControlEXT`. */
+  clipControlExt(origin: number, depth: number): void
   /** `disable`. */
   disable(cap: number): void
   /** `isEnabled`. */
@@ -289,7 +301,7 @@ export declare class NativeContext {
   /** `copyTexSubImage3D`. */
   copyTexSubImage3D(target: number, level: number, xoffset: number, yoffset: number, zoffset: number, x: number, y: number, width: number, height: number): void
   /**
-   * The compressed-texture calls (essl-gl offers no compressed format: `INVALID_ENUM`);
+   * The compressed-texture calls (the S3TC and ETC formats, once their extension is on);
    * `numbers` are the arguments between `level` and the data, `data` the bytes if any.
    */
   compressedTexImage(name: string, target: number, level: number, numbers: Array<number>, data?: View | undefined | null): void

@@ -220,12 +220,17 @@ for (const cls of [WebGLRenderingContext, WebGL2RenderingContext]) {
     const wrapped = {
       [name](...args) {
         const r = f.apply(this, args);
-        if (!this[SCHEDULED] && this[NATIVE] !== null) scheduleFrameEnd(this);
+        frameChanged(this);
         return r;
       },
     }[name];
     Object.defineProperty(cls.prototype, name, { value: wrapped, writable: true, enumerable: true, configurable: true });
   }
+}
+
+/** After a call of `FRAME_CALLS` (or an extension's draw): the frame ends with the task. */
+export function frameChanged(ctx) {
+  if (!ctx[SCHEDULED] && ctx[NATIVE] !== null) scheduleFrameEnd(ctx);
 }
 
 /**

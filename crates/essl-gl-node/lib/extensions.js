@@ -1,8 +1,8 @@
 // The extension objects `getExtension` returns: those essl-gl implements (their constants),
 // and `WEBGL_lose_context`, which the binding implements (a lost context is the binding's
 // state). One object per name and context, as browsers return the same object each time.
-import { loseContext, restoreContext } from './context.js';
-import { NATIVE, VERSION, WebGLShader, argc, oid, u32 } from './objects.js';
+import { frameChanged, loseContext, restoreContext } from './context.js';
+import { NATIVE, VERSION, WebGLShader, argc, i32, i32list, oid, u32 } from './objects.js';
 import { METHODS_2 } from './generated.js';
 
 /** ASTC's block sizes, in the order of their enums. */
@@ -178,11 +178,47 @@ export function extensionObject(ctx, native, name) {
       enumerable: true,
     });
   }
+  if (enabled === 'WEBGL_multi_draw') multiDrawMethods(ctx, ext);
   for (const [own, core] of Object.entries(METHODS[enabled] ?? {})) {
     const f = METHODS_2[core];
     Object.defineProperty(ext, own, { value: (...args) => f.apply(ctx, args), enumerable: true });
   }
   return ext;
+}
+
+/**
+ * `WEBGL_multi_draw`'s four calls. Each argument is converted as its IDL type says — a list is
+ * an `Int32Array` (shared memory too) or a sequence of `GLint`, an offset a `GLuint` — and the
+ * native side checks the offsets and `drawcount`.
+ */
+function multiDrawMethods(ctx, ext) {
+  // Name, then per argument: 'list', 'u32' or 'i32'.
+  const calls = {
+    multiDrawArraysWEBGL: ['multiDrawArrays', 'u32 list u32 list u32 i32'],
+    multiDrawArraysInstancedWEBGL: ['multiDrawArraysInstanced', 'u32 list u32 list u32 list u32 i32'],
+    multiDrawElementsWEBGL: ['multiDrawElements', 'u32 list u32 u32 list u32 i32'],
+    multiDrawElementsInstancedWEBGL: [
+      'multiDrawElementsInstanced',
+      'u32 list u32 u32 list u32 list u32 i32',
+    ],
+  };
+  for (const [name, [native, signature]] of Object.entries(calls)) {
+    const kinds = signature.split(' ');
+    // A named function, so that `drawFunc.name` reads as in a browser.
+    const f = {
+      [name](...args) {
+        if (args.length < kinds.length) throw argc(name, kinds.length, args.length);
+        const converted = kinds.map((k, i) => {
+          if (k === 'list') return i32list(args[i], name, i + 1);
+          return k === 'u32' ? u32(args[i]) : i32(args[i]);
+        });
+        const n = ctx[NATIVE];
+        if (n !== null) n[native](...converted);
+        frameChanged(ctx);
+      },
+    }[name];
+    Object.defineProperty(ext, name, { value: f, enumerable: true });
+  }
 }
 
 function canonical(name) {

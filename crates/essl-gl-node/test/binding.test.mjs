@@ -254,6 +254,45 @@ test('WEBGL_debug_shaders and WEBGL_clip_cull_distance: methods, constants, swit
   ctx.destroy();
 });
 
+test('WEBGL_multi_draw: lists as arrays or shared Int32Arrays, gl_DrawID per draw, TypeErrors and GL errors', () => {
+  for (const version of [1, 2]) {
+    const ctx = createContext(8, 2, {}, { version });
+    const ext = ctx.getExtension('WEBGL_multi_draw');
+    assert.equal(ext.multiDrawArraysWEBGL.name, 'multiDrawArraysWEBGL');
+    const p = program(ctx, `#extension GL_ANGLE_multi_draw : require
+attribute vec2 p;
+varying float v;
+void main() { v = float(gl_DrawID) / 3.0; gl_Position = vec4(p, 0.0, 1.0); }`,
+    'precision mediump float; varying float v; void main() { gl_FragColor = vec4(v, 0.0, 0.0, 1.0); }');
+    ctx.useProgram(p);
+    // Four strips across the canvas, 6 vertices each.
+    const strips = [];
+    for (let i = 0; i < 4; i++) {
+      const [a, b] = [-1 + 0.5 * i, -0.5 + 0.5 * i];
+      strips.push(a, -1, b, -1, b, 1, a, -1, b, 1, a, 1);
+    }
+    ctx.bindBuffer(ctx.ARRAY_BUFFER, ctx.createBuffer());
+    ctx.bufferData(ctx.ARRAY_BUFFER, new Float32Array(strips), ctx.STATIC_DRAW);
+    ctx.enableVertexAttribArray(0);
+    ctx.vertexAttribPointer(0, 2, ctx.FLOAT, false, 0, 0);
+    // Strips 3, 2, 1, 0 as draws 0..3; the firsts from shared memory at offset 1.
+    const firsts = new Int32Array(new SharedArrayBuffer(20));
+    firsts.set([-1, 18, 12, 6, 0]);
+    ext.multiDrawArraysWEBGL(ctx.TRIANGLES, firsts, 1, [6, 6, 6, 6], 0, 4);
+    assert.equal(ctx.getError(), ctx.NO_ERROR);
+    const px = new Uint8Array(8 * 2 * 4);
+    ctx.readPixels(0, 0, 8, 2, ctx.RGBA, ctx.UNSIGNED_BYTE, px);
+    assert.deepEqual([0, 2, 4, 6].map((x) => px[x * 4]), [255, 170, 85, 0], `WebGL ${version}`);
+    assert.throws(() => ext.multiDrawArraysWEBGL(ctx.TRIANGLES, 5, 0, [6], 0, 1), TypeError);
+    assert.throws(() => ext.multiDrawArraysWEBGL(ctx.TRIANGLES, [0], 0, [6], 0), TypeError);
+    ext.multiDrawArraysWEBGL(ctx.TRIANGLES, [0], 0, [6], 0, -1);
+    assert.equal(ctx.getError(), ctx.INVALID_VALUE);
+    ext.multiDrawElementsWEBGL(ctx.TRIANGLES, [3], 1, ctx.UNSIGNED_SHORT, [0], 0, 1);
+    assert.equal(ctx.getError(), ctx.INVALID_OPERATION);
+    ctx.destroy();
+  }
+});
+
 test('WEBGL_lose_context: calls do nothing, getError says CONTEXT_LOST_WEBGL once, events, restore', async () => {
   const ctx = createContext(8, 8);
   const canvas = ctx.canvas;

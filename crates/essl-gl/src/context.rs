@@ -75,6 +75,9 @@ pub struct Context {
     /// How many times [`Context::present`] ran: queries and fences ended before one are
     /// answered after it.
     pub(crate) presents: u64,
+    /// `gl_DrawID`: the index of the draw a multi-draw call is encoding, 0 for other draws
+    /// (`WEBGL_multi_draw`, `draw/multi.rs`).
+    pub(crate) draw_id: i32,
 }
 
 /// The wgpu features essl-gl asks for when the adapter has them: vertex shaders that write
@@ -200,6 +203,7 @@ impl Context {
             linker: Linker::default(),
             validation: Default::default(),
             presents: 0,
+            draw_id: 0,
             webgl1: Default::default(),
             gpu,
         };
@@ -339,6 +343,7 @@ impl Context {
             v.push(Extension::TextureFilterAnisotropic);
             v.push(Extension::DebugShaders);
             v.push(Extension::ClipControl);
+            v.push(Extension::MultiDraw);
             return v;
         }
         let mut v = vec![Extension::ColorBufferFloat, Extension::ColorBufferHalfFloat];
@@ -353,6 +358,7 @@ impl Context {
         v.push(Extension::TextureFilterAnisotropic);
         v.push(Extension::DebugShaders);
         v.push(Extension::ClipControl);
+        v.push(Extension::MultiDraw);
         if features.contains(wgpu::Features::CLIP_DISTANCES) {
             v.push(Extension::ClipCullDistance);
         }
@@ -386,6 +392,18 @@ impl Context {
         }
         if e == Extension::ClipControl {
             self.extensions.clip_control = true;
+            return Some(e);
+        }
+        if e == Extension::MultiDraw {
+            // WebGL 1: its instanced calls need ANGLE_instanced_arrays, which it turns on.
+            if self.webgl1.on {
+                self.enable_webgl1_extension(Extension::AngleInstancedArrays);
+            }
+            self.extensions.multi_draw = true;
+            let shaders = &mut self.linker.shaders.extensions;
+            if !shaders.contains(&essl::Extension::WebglMultiDraw) {
+                shaders.push(essl::Extension::WebglMultiDraw);
+            }
             return Some(e);
         }
         if self.webgl1.on {

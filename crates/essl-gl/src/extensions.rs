@@ -16,7 +16,7 @@
 //! requires). WebGL 2 contexts offer `WEBGL_clip_cull_distance` where the adapter has clip
 //! distances (eight; no cull distances: `state/clip_distance.rs`). Both offer
 //! `WEBGL_debug_shaders` (a compiled shader's lowered module as WGSL) and `EXT_clip_control`
-//! (`state/clip_control.rs`). WebGL 1 contexts offer their
+//! (`state/clip_control.rs`), and `WEBGL_multi_draw` (`draw/multi.rs`). WebGL 1 contexts offer their
 //! own list besides, float textures
 //! among them (`webgl1/float.rs`).
 
@@ -37,6 +37,8 @@ pub(crate) struct Extensions {
     pub(crate) clip_cull_distance: bool,
     /// `EXT_clip_control`.
     pub(crate) clip_control: bool,
+    /// `WEBGL_multi_draw`.
+    pub(crate) multi_draw: bool,
 }
 
 /// `EXT_texture_filter_anisotropic`'s texture and sampler parameter.
@@ -145,6 +147,9 @@ pub enum Extension {
     DebugShaders,
     /// `EXT_clip_control`: [`Context::clip_control_ext`](crate::Context::clip_control_ext).
     ClipControl,
+    /// `WEBGL_multi_draw`: [`Context::multi_draw_arrays`](crate::Context::multi_draw_arrays)
+    /// and its kin, and `gl_DrawID` in shaders.
+    MultiDraw,
 }
 
 impl Extension {
@@ -179,6 +184,7 @@ impl Extension {
             Extension::ClipCullDistance => "WEBGL_clip_cull_distance",
             Extension::DebugShaders => "WEBGL_debug_shaders",
             Extension::ClipControl => "EXT_clip_control",
+            Extension::MultiDraw => "WEBGL_multi_draw",
         }
     }
 }

@@ -100,6 +100,7 @@ mod webgl1;
 pub use array::{ArrayElement, ArrayType, ArrayView, ArrayViewMut};
 pub use bytemuck;
 pub use context::{Context, MAX_TEXTURE_UNITS, MAX_VERTEX_ATTRIBS};
+pub use draw::DrawList;
 pub use error::{error_name, ContextError};
 pub use extensions::Extension;
 pub use framebuffer::{ContextAttributes, COLOR_FORMAT, MAX_COLOR_ATTACHMENTS};

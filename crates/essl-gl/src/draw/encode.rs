@@ -372,6 +372,7 @@ impl Context {
         let gpu = &self.gpu;
         let height = self.fb.height as f32;
         let clip_distances = self.clip_distances_enabled();
+        let draw_id = self.draw_id;
         let linked = self
             .objects
             .linked_mut(pid)
@@ -381,6 +382,7 @@ impl Context {
             let value = match what {
                 InternalUniform::FramebufferHeight => height.to_ne_bytes(),
                 InternalUniform::ClipDistancesEnabled => clip_distances.to_ne_bytes(),
+                InternalUniform::DrawId => draw_id.to_ne_bytes(),
             };
             let at = *offset as usize;
             if let Some(dst) = linked.uniform_data.get_mut(at..at + 4) {

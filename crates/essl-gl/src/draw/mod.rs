@@ -12,6 +12,7 @@
 //!    makes the bind groups; [`record`] fetches or builds the pipeline for the program,
 //!    vertex layout and state, and records the draw into the open render pass.
 //!
+//! [`multi`] holds `WEBGL_multi_draw`'s calls, which are draws in a row.
 //! [`topology`] makes on the CPU what wgpu lacks (emulated topologies, re-packed arrays) and
 //! [`clear`] holds `clear`. Each module adds methods to [`Context`]: its `impl` is spread
 //! over these files on purpose, one file per step.
@@ -20,6 +21,7 @@ mod clear;
 mod encode;
 mod feedback;
 mod gather;
+mod multi;
 mod record;
 mod topology;
 mod validate;
@@ -32,6 +34,7 @@ use crate::shader_patch::{Norm32, Packed};
 use crate::texture::{Complete, SampleKind};
 use crate::vertex_array::{GenericAttrib, VertexAttrib};
 
+pub use multi::DrawList;
 use topology::Emulated;
 
 /// How a vertex format feeds an attribute.

@@ -66,7 +66,7 @@ impl Default for Linker {
         let mut shaders = essl::CompileOptions::default();
         shaders
             .extensions
-            .retain(|e| e.target() == essl::Target::WebGl1);
+            .retain(|e| !e.offered_by(essl::Target::WebGl2));
         Linker {
             serial: 0,
             filter: None,

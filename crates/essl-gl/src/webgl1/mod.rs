@@ -117,6 +117,7 @@ impl Context {
             (w.frag_depth, essl::Extension::ExtFragDepth),
             (w.shader_texture_lod, essl::Extension::ExtShaderTextureLod),
             (w.draw_buffers, essl::Extension::WebglDrawBuffers),
+            (self.extensions.multi_draw, essl::Extension::WebglMultiDraw),
         ]
         .into_iter()
         .filter_map(|(on, e)| on.then_some(e))

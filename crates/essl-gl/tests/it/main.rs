@@ -11,6 +11,7 @@ mod errors;
 mod es100_render;
 mod framebuffer;
 mod glsl;
+mod multi_draw;
 mod queries;
 mod queries_sync;
 mod render;
