@@ -7,18 +7,17 @@
 //! `EXT_float_blend` (32-bit float attachments blend where the adapter can, whether or not
 //! the extension was turned on, as in Chromium and as the conformance suite checks; elsewhere
 //! such a draw is `INVALID_OPERATION` and the extension is not offered),
-//! `OES_texture_float_linear` (filter 32-bit float
-//! textures, where the adapter can) and `KHR_parallel_shader_compile`
-//! (`COMPLETION_STATUS_KHR`, always true: compiling is synchronous). Both contexts offer the
-//! compressed-texture extensions (S3TC, S3TC sRGB, ETC, ETC1, ASTC LDR: decoded on upload,
-//! `texture/compressed.rs`) and `EXT_texture_filter_anisotropic` (wgpu's anisotropy clamp, up to
-//! 16, where the minification, magnification and mipmap filters are all linear, as wgpu
-//! requires). WebGL 2 contexts offer `WEBGL_clip_cull_distance` where the adapter has clip
-//! distances (eight; no cull distances: `state/clip_distance.rs`). Both offer
-//! `WEBGL_debug_shaders` (a compiled shader's lowered module as WGSL) and `EXT_clip_control`
-//! (`state/clip_control.rs`), and `WEBGL_multi_draw` (`draw/multi.rs`). WebGL 1 contexts offer their
-//! own list besides, float textures
-//! among them (`webgl1/float.rs`).
+//! `OES_texture_float_linear` (filter 32-bit float textures, where the adapter can) and
+//! `KHR_parallel_shader_compile` (`COMPLETION_STATUS_KHR`, always true: compiling is
+//! synchronous). Both contexts offer the compressed-texture extensions (S3TC, S3TC sRGB, ETC,
+//! ETC1, ASTC LDR, RGTC, BPTC: decoded on upload, `texture/compressed/`) and
+//! `EXT_texture_filter_anisotropic` (wgpu's anisotropy clamp, up to 16, where the
+//! minification, magnification and mipmap filters are all linear, as wgpu requires). WebGL 2
+//! contexts offer `WEBGL_clip_cull_distance` where the adapter has clip distances (eight; no
+//! cull distances: `state/clip_distance.rs`). Both offer `WEBGL_debug_shaders` (a compiled
+//! shader's lowered module as WGSL), `EXT_clip_control` (`state/clip_control.rs`) and
+//! `WEBGL_multi_draw` (`draw/multi.rs`). WebGL 1 contexts offer their own list besides, float
+//! textures among them (`webgl1/float.rs`).
 
 /// The WebGL extensions a context has turned on.
 #[derive(Clone, Copy, Debug, Default)]
@@ -60,6 +59,8 @@ impl CompressedSet {
             Extension::CompressedEtc => 4,
             Extension::CompressedEtc1 => 8,
             Extension::CompressedAstc => 16,
+            Extension::CompressedRgtc => 32,
+            Extension::CompressedBptc => 64,
             _ => 0,
         }
     }
@@ -77,12 +78,14 @@ impl CompressedSet {
 }
 
 /// The compressed-texture extensions, offered in both contexts.
-pub(crate) const COMPRESSED_EXTENSIONS: [Extension; 5] = [
+pub(crate) const COMPRESSED_EXTENSIONS: [Extension; 7] = [
     Extension::CompressedS3tc,
     Extension::CompressedS3tcSrgb,
     Extension::CompressedEtc,
     Extension::CompressedEtc1,
     Extension::CompressedAstc,
+    Extension::CompressedRgtc,
+    Extension::CompressedBptc,
 ];
 
 /// An extension [`Context::get_extension`](crate::Context::get_extension) turned on. WebGL
@@ -139,6 +142,10 @@ pub enum Extension {
     CompressedEtc1,
     /// `WEBGL_compressed_texture_astc` (the LDR profile).
     CompressedAstc,
+    /// `EXT_texture_compression_rgtc` (BC4 and BC5).
+    CompressedRgtc,
+    /// `EXT_texture_compression_bptc` (BC6H and BC7).
+    CompressedBptc,
     /// `EXT_texture_filter_anisotropic`.
     TextureFilterAnisotropic,
     /// `WEBGL_clip_cull_distance` (WebGL 2; clip distances only, where the adapter has them).
@@ -180,6 +187,8 @@ impl Extension {
             Extension::CompressedEtc => "WEBGL_compressed_texture_etc",
             Extension::CompressedEtc1 => "WEBGL_compressed_texture_etc1",
             Extension::CompressedAstc => "WEBGL_compressed_texture_astc",
+            Extension::CompressedRgtc => "EXT_texture_compression_rgtc",
+            Extension::CompressedBptc => "EXT_texture_compression_bptc",
             Extension::TextureFilterAnisotropic => "EXT_texture_filter_anisotropic",
             Extension::ClipCullDistance => "WEBGL_clip_cull_distance",
             Extension::DebugShaders => "WEBGL_debug_shaders",

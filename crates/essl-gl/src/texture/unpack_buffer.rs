@@ -197,7 +197,7 @@ impl Context {
     }
 
     /// `compressedTexImage2D`: a level of a 2D texture or cube face from compressed blocks
-    /// (`texture/compressed.rs`); formats whose extension is off are `INVALID_ENUM`.
+    /// (`texture/compressed/`); formats whose extension is off are `INVALID_ENUM`.
     #[allow(clippy::too_many_arguments)] // WebGL2's own argument list
     pub fn compressed_tex_image_2d(
         &mut self,

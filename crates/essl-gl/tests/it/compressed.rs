@@ -222,3 +222,90 @@ fn storage_and_pixel_unpack_buffers() {
     ctx.bind_buffer(gl::PIXEL_UNPACK_BUFFER, None);
     assert_eq!(sample(&mut ctx), [255, 0, 0, 255]);
 }
+
+/// A BC6H block in mode 11 (one region, 10-bit endpoints, no deltas) whose every texel is
+/// endpoint 0, (512, 512, 512).
+fn bc6h_512() -> [u8; 16] {
+    let bits: u128 = 0b00011 | 512 << 5 | 512 << 15 | 512 << 25;
+    bits.to_le_bytes()
+}
+
+/// The value BC6H's unsigned decoding gives a 10-bit endpoint `v`: unquantised to 16 bits,
+/// scaled by 31/64 into a half float's bits (the format's specification).
+fn bc6h_unsigned_value(v: u32) -> f32 {
+    let q = ((v << 16) + 0x8000) >> 10;
+    let h = (q * 31) >> 6;
+    let (e, m) = ((h >> 10) as i32, (h & 0x3FF) as f32);
+    2f32.powi(e - 15) * (1.0 + m / 1024.0)
+}
+
+/// A BC7 block in mode 6 (one subset, 7-bit RGBA endpoints and a p-bit each): endpoint 0 is
+/// (0x7F, 0x00, 0x40, 0x7F) with p-bit 1, every index 0: (255, 1, 129, 255).
+fn bc7_mode6() -> [u8; 16] {
+    let bits: u128 = 1 << 6 | 0x7F << 7 | 0x40 << 35 | 0x7F << 49 | 1 << 63;
+    bits.to_le_bytes()
+}
+
+/// A signed BC4 block with red0 = 127, red1 = −127 and every index 1: −1.
+const BC4_SIGNED_MINUS_ONE: [u8; 8] = [0x7F, 0x81, 0x49, 0x92, 0x24, 0x49, 0x92, 0x24];
+
+/// The texture's centre drawn into a 1×1 RGBA32F framebuffer, as floats.
+fn sample_float(ctx: &mut Context) -> [f32; 4] {
+    let target = ctx.create_texture();
+    ctx.active_texture(gl::TEXTURE1);
+    ctx.bind_texture(gl::TEXTURE_2D, Some(target));
+    ctx.tex_storage_2d(gl::TEXTURE_2D, 1, gl::RGBA32F, 1, 1);
+    common::colour_framebuffer(ctx, target);
+    ctx.active_texture(gl::TEXTURE0);
+    let p = common::program(ctx, VS, &FS.replace("mediump", "highp"));
+    ctx.use_program(Some(p));
+    common::float_attribute(ctx, 0, 2, &common::QUAD);
+    ctx.viewport(0, 0, 1, 1);
+    ctx.draw_arrays(gl::TRIANGLES, 0, 6);
+    assert_eq!(ctx.get_error(), gl::NO_ERROR);
+    let mut out = [0f32; 4];
+    ctx.read_pixels(0, 0, 1, 1, gl::RGBA, gl::FLOAT, &mut out);
+    assert_eq!(ctx.get_error(), gl::NO_ERROR);
+    out
+}
+
+#[test]
+fn rgtc_and_bptc_keep_signed_and_high_dynamic_range_values() {
+    let Some(mut ctx) = common::context(2, 2) else {
+        return;
+    };
+    for name in [
+        "EXT_texture_compression_rgtc",
+        "EXT_texture_compression_bptc",
+        "EXT_color_buffer_float",
+    ] {
+        assert!(ctx.get_extension(name).is_some(), "{name}");
+    }
+    // BC6H: a value past 1 stays a half float.
+    texture(&mut ctx);
+    ctx.compressed_tex_image_2d(gl::TEXTURE_2D, 0, 0x8E8F, 4, 4, 0, &bc6h_512());
+    assert_eq!(ctx.get_error(), gl::NO_ERROR);
+    let want = bc6h_unsigned_value(512);
+    assert!(want > 1.5, "{want}");
+    let got = sample_float(&mut ctx);
+    for c in &got[..3] {
+        assert!((c - want).abs() < 1e-3, "{got:?} against {want}");
+    }
+    assert_eq!(got[3], 1.0);
+    // Signed RGTC: −1 in red, 0 in green and blue, 1 in alpha.
+    texture(&mut ctx);
+    ctx.compressed_tex_image_2d(gl::TEXTURE_2D, 0, 0x8DBC, 4, 4, 0, &BC4_SIGNED_MINUS_ONE);
+    assert_eq!(ctx.get_error(), gl::NO_ERROR);
+    assert_eq!(sample_float(&mut ctx), [-1.0, 0.0, 0.0, 1.0]);
+    // BC7 into the default framebuffer.
+    ctx.bind_framebuffer(gl::FRAMEBUFFER, None);
+    ctx.viewport(0, 0, 2, 2);
+    texture(&mut ctx);
+    ctx.compressed_tex_image_2d(gl::TEXTURE_2D, 0, 0x8E8C, 4, 4, 0, &bc7_mode6());
+    assert_eq!(ctx.get_error(), gl::NO_ERROR);
+    assert_eq!(sample(&mut ctx), [255, 1, 129, 255]);
+    // Level 0 must be whole blocks, as for S3TC.
+    texture(&mut ctx);
+    ctx.compressed_tex_image_2d(gl::TEXTURE_2D, 0, 0x8E8C, 2, 2, 0, &bc7_mode6());
+    assert_eq!(ctx.get_error(), gl::INVALID_OPERATION);
+}
