@@ -191,6 +191,7 @@ export function extensionObject(ctx, native, name) {
     });
   }
   if (enabled === 'WEBGL_multi_draw') multiDrawMethods(ctx, ext);
+  if (enabled === 'OES_draw_buffers_indexed') drawBuffersIndexedMethods(ctx, ext);
   for (const [own, core] of Object.entries(METHODS[enabled] ?? {})) {
     const f = METHODS_2[core];
     Object.defineProperty(ext, own, { value: (...args) => f.apply(ctx, args), enumerable: true });
@@ -227,6 +228,40 @@ function multiDrawMethods(ctx, ext) {
         const n = ctx[NATIVE];
         if (n !== null) n[native](...converted);
         frameChanged(ctx);
+      },
+    }[name];
+    Object.defineProperty(ext, name, { value: f, enumerable: true });
+  }
+}
+
+/**
+ * `OES_draw_buffers_indexed`'s calls: each draw buffer's blending and colour mask. The
+ * one-equation and one-function forms are the separate ones with the same value twice.
+ */
+function drawBuffersIndexedMethods(ctx, ext) {
+  // Name: the IDL's argument types ('u32' or 'bool'), then the native call of the converted
+  // arguments.
+  const calls = {
+    enableiOES: ['u32 u32', (n, [t, i]) => n.enableIndexed(t, i, true)],
+    disableiOES: ['u32 u32', (n, [t, i]) => n.enableIndexed(t, i, false)],
+    blendEquationiOES: ['u32 u32', (n, [i, m]) => n.blendEquationSeparateIndexed(i, m, m)],
+    blendEquationSeparateiOES: [
+      'u32 u32 u32', (n, [i, rgb, a]) => n.blendEquationSeparateIndexed(i, rgb, a),
+    ],
+    blendFunciOES: ['u32 u32 u32', (n, [i, s, d]) => n.blendFuncSeparateIndexed(i, s, d, s, d)],
+    blendFuncSeparateiOES: [
+      'u32 u32 u32 u32 u32', (n, [i, ...f]) => n.blendFuncSeparateIndexed(i, ...f),
+    ],
+    colorMaskiOES: ['u32 bool bool bool bool', (n, [i, ...m]) => n.colorMaskIndexed(i, ...m)],
+  };
+  for (const [name, [signature, call]] of Object.entries(calls)) {
+    const kinds = signature.split(' ');
+    const f = {
+      [name](...args) {
+        if (args.length < kinds.length) throw argc(name, kinds.length, args.length);
+        const converted = kinds.map((k, i) => (k === 'bool' ? !!args[i] : u32(args[i])));
+        const n = ctx[NATIVE];
+        if (n !== null) call(n, converted);
       },
     }[name];
     Object.defineProperty(ext, name, { value: f, enumerable: true });

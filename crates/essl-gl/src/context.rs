@@ -359,6 +359,7 @@ impl Context {
         v.push(Extension::DebugShaders);
         v.push(Extension::ClipControl);
         v.push(Extension::MultiDraw);
+        v.push(Extension::DrawBuffersIndexed);
         if features.contains(wgpu::Features::CLIP_DISTANCES) {
             v.push(Extension::ClipCullDistance);
         }
@@ -421,6 +422,7 @@ impl Context {
             Extension::FloatBlend => {}
             Extension::TextureFloatLinear => x.texture_float_linear = true,
             Extension::ParallelShaderCompile => x.parallel_shader_compile = true,
+            Extension::DrawBuffersIndexed => x.draw_buffers_indexed = true,
             Extension::ClipCullDistance => {
                 x.clip_cull_distance = true;
                 let shaders = &mut self.linker.shaders.extensions;

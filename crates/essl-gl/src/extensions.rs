@@ -14,7 +14,7 @@
 //! `EXT_texture_filter_anisotropic` (wgpu's anisotropy clamp, up to 16, where the
 //! minification, magnification and mipmap filters are all linear, as wgpu requires). WebGL 2
 //! contexts offer `WEBGL_clip_cull_distance` where the adapter has clip distances (eight; no
-//! cull distances: `state/clip_distance.rs`). Both offer `WEBGL_debug_shaders` (a compiled
+//! cull distances: `state/clip_distance.rs`) and `OES_draw_buffers_indexed` (`state/blend.rs`). Both offer `WEBGL_debug_shaders` (a compiled
 //! shader's lowered module as WGSL), `EXT_clip_control` (`state/clip_control.rs`) and
 //! `WEBGL_multi_draw` (`draw/multi.rs`). WebGL 1 contexts offer their own list besides, float
 //! textures among them (`webgl1/float.rs`).
@@ -38,6 +38,8 @@ pub(crate) struct Extensions {
     pub(crate) clip_control: bool,
     /// `WEBGL_multi_draw`.
     pub(crate) multi_draw: bool,
+    /// `OES_draw_buffers_indexed`.
+    pub(crate) draw_buffers_indexed: bool,
 }
 
 /// `EXT_texture_filter_anisotropic`'s texture and sampler parameter.
@@ -157,6 +159,9 @@ pub enum Extension {
     /// `WEBGL_multi_draw`: [`Context::multi_draw_arrays`](crate::Context::multi_draw_arrays)
     /// and its kin, and `gl_DrawID` in shaders.
     MultiDraw,
+    /// `OES_draw_buffers_indexed` (WebGL 2): blending and colour masks per draw buffer
+    /// ([`Context::color_mask_indexed`](crate::Context::color_mask_indexed) and its kin).
+    DrawBuffersIndexed,
 }
 
 impl Extension {
@@ -194,6 +199,7 @@ impl Extension {
             Extension::DebugShaders => "WEBGL_debug_shaders",
             Extension::ClipControl => "EXT_clip_control",
             Extension::MultiDraw => "WEBGL_multi_draw",
+            Extension::DrawBuffersIndexed => "OES_draw_buffers_indexed",
         }
     }
 }

@@ -155,6 +155,55 @@ impl NativeContext {
         Ok(())
     }
 
+    /// `OES_draw_buffers_indexed.enableiOES` / `disableiOES`.
+    #[napi(catch_unwind)]
+    pub fn enable_indexed(&mut self, target: u32, index: u32, on: bool) -> napi::Result<()> {
+        self.gl()?.set_enabled_indexed(target, index, on);
+        Ok(())
+    }
+
+    /// `OES_draw_buffers_indexed.blendEquationSeparateiOES` (and `blendEquationiOES`).
+    #[napi(catch_unwind)]
+    pub fn blend_equation_separate_indexed(
+        &mut self,
+        index: u32,
+        rgb: u32,
+        alpha: u32,
+    ) -> napi::Result<()> {
+        self.gl()?
+            .blend_equation_separate_indexed(index, rgb, alpha);
+        Ok(())
+    }
+
+    /// `OES_draw_buffers_indexed.blendFuncSeparateiOES` (and `blendFunciOES`).
+    #[napi(catch_unwind)]
+    pub fn blend_func_separate_indexed(
+        &mut self,
+        index: u32,
+        src_rgb: u32,
+        dst_rgb: u32,
+        src_alpha: u32,
+        dst_alpha: u32,
+    ) -> napi::Result<()> {
+        let factors = [src_rgb, dst_rgb, src_alpha, dst_alpha];
+        self.gl()?.blend_func_separate_indexed(index, factors);
+        Ok(())
+    }
+
+    /// `OES_draw_buffers_indexed.colorMaskiOES`.
+    #[napi(catch_unwind)]
+    pub fn color_mask_indexed(
+        &mut self,
+        index: u32,
+        r: bool,
+        g: bool,
+        b: bool,
+        a: bool,
+    ) -> napi::Result<()> {
+        self.gl()?.color_mask_indexed(index, [r, g, b, a]);
+        Ok(())
+    }
+
     /// `polygonOffset`.
     #[napi(catch_unwind)]
     pub fn polygon_offset(&mut self, factor: f64, units: f64) -> napi::Result<()> {

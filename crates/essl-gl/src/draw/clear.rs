@@ -241,7 +241,9 @@ impl Context {
         if s.rasterizer_discard {
             return;
         }
-        let color_mask = s.color_mask;
+        let masks: Vec<[bool; 4]> = (0..request.colors.len())
+            .map(|i| s.draw_buffers.get(i).map_or([true; 4], |b| b.color_mask))
+            .collect();
         let has_depth = target.depth.as_ref().is_some_and(|d| d.has_depth());
         let has_stencil = target.depth.as_ref().is_some_and(|d| d.has_stencil());
         if !s.depth_mask || !has_depth {
@@ -251,8 +253,10 @@ impl Context {
         if stencil_mask == 0 || !has_stencil {
             request.stencil = None;
         }
-        if !color_mask.iter().any(|&m| m) {
-            request.colors.clear();
+        for (c, mask) in request.colors.iter_mut().zip(&masks) {
+            if !mask.iter().any(|&m| m) {
+                *c = None;
+            }
         }
         let default_fb = self.bindings.framebuffers()[0].is_none();
         let no_alpha = default_fb && !self.fb.attributes.alpha;
@@ -285,8 +289,11 @@ impl Context {
             return;
         }
         let full = rect == [0, 0, target.size[0], target.size[1]];
-        let unmasked_color =
-            request.colors.iter().all(|c| c.is_none()) || color_mask == [true; 4] && !no_alpha;
+        let unmasked_color = request
+            .colors
+            .iter()
+            .zip(&masks)
+            .all(|(c, mask)| c.is_none() || (*mask == [true; 4] && !no_alpha));
         let unmasked_stencil = request.stencil.is_none() || stencil_mask == 0xFF;
         if full && unmasked_color && unmasked_stencil {
             let clears = PassClears {
@@ -314,10 +321,18 @@ impl Context {
         stencil_mask: u32,
         no_alpha: bool,
     ) {
-        let mut mask = crate::draw::record::write_mask(&self.state.color_mask);
-        if no_alpha {
-            mask -= wgpu::ColorWrites::ALPHA;
-        }
+        let mask = |i: usize| {
+            let m = self
+                .state
+                .draw_buffers
+                .get(i)
+                .map_or([true; 4], |b| b.color_mask);
+            let mut mask = crate::draw::record::write_mask(&m);
+            if no_alpha {
+                mask -= wgpu::ColorWrites::ALPHA;
+            }
+            mask
+        };
         let key = ClearKey {
             colors: target
                 .colors
@@ -330,7 +345,7 @@ impl Context {
                             c.format,
                             cleared.map(|v| v.kind()),
                             if cleared.is_some() {
-                                mask
+                                mask(i)
                             } else {
                                 wgpu::ColorWrites::empty()
                             },

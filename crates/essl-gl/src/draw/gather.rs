@@ -331,18 +331,24 @@ impl Context {
         let float32 = |c: &crate::texture::InternalFormat| {
             c.comp == crate::texture::Comp::F32 && c.packing == crate::texture::Packing::None
         };
-        if self.state.blend
-            && !self.blends_float32()
-            && formats.colors.iter().flatten().any(float32)
-        {
+        let blended = |(i, c): (usize, &Option<crate::texture::InternalFormat>)| {
+            c.as_ref().is_some_and(float32)
+                && self.state.draw_buffers.get(i).is_some_and(|b| b.blend)
+        };
+        if !self.blends_float32() && formats.colors.iter().enumerate().any(blended) {
             let msg = "this adapter does not blend 32-bit float draw buffers (EXT_float_blend)";
             return self.fail(gl::INVALID_OPERATION, f, msg.to_string());
         }
         // WebGL 2 §5.24: a draw buffer that would be written needs an output of the shader
-        // (nothing is written while the rasterizer discards).
-        if !self.state.rasterizer_discard && self.state.color_mask.iter().any(|&m| m) {
+        // (nothing is written while the rasterizer discards, nor where the colour mask is
+        // all off).
+        if !self.state.rasterizer_discard {
+            let written = |i: usize| {
+                let b = self.state.draw_buffers.get(i);
+                b.is_some_and(|b| b.color_mask.iter().any(|&m| m))
+            };
             let missing = formats.colors.iter().enumerate().find(|(i, c)| {
-                c.is_some() && !linked.outputs.iter().any(|&(l, _)| l as usize == *i)
+                c.is_some() && written(*i) && !linked.outputs.iter().any(|&(l, _)| l as usize == *i)
             });
             if let Some((i, _)) = missing {
                 let msg = format!("draw buffer {i} has no fragment output to write it");

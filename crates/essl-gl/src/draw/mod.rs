@@ -35,6 +35,7 @@ use crate::texture::{Complete, SampleKind};
 use crate::vertex_array::{GenericAttrib, VertexAttrib};
 
 pub use multi::DrawList;
+pub(crate) use record::blend_component;
 use topology::Emulated;
 
 /// How a vertex format feeds an attribute.

@@ -32,7 +32,7 @@ fn blend_factor(f: u32) -> wgpu::BlendFactor {
 }
 
 /// The wgpu blend component for GL's source and destination factors and equation.
-fn blend_component(src: u32, dst: u32, eq: u32) -> wgpu::BlendComponent {
+pub(crate) fn blend_component(src: u32, dst: u32, eq: u32) -> wgpu::BlendComponent {
     let operation = match eq {
         gl::FUNC_SUBTRACT => wgpu::BlendOperation::Subtract,
         gl::FUNC_REVERSE_SUBTRACT => wgpu::BlendOperation::ReverseSubtract,
@@ -183,18 +183,14 @@ impl Context {
             self.clip_control_flags()
         };
         let s = &self.state;
-        let blend = s.blend.then(|| wgpu::BlendState {
-            color: blend_component(s.blend_src_rgb, s.blend_dst_rgb, s.blend_equation_rgb),
-            alpha: blend_component(s.blend_src_alpha, s.blend_dst_alpha, s.blend_equation_alpha),
-        });
-        let constant_alpha = [
-            s.blend_src_rgb,
-            s.blend_dst_rgb,
-            s.blend_src_alpha,
-            s.blend_dst_alpha,
-        ]
-        .iter()
-        .any(|&f| matches!(f, gl::CONSTANT_ALPHA | gl::ONE_MINUS_CONSTANT_ALPHA));
+        let buffers = &s.draw_buffers[..target.colors.len().min(s.draw_buffers.len())];
+        let blends: Vec<_> = buffers
+            .iter()
+            .enumerate()
+            .map(|(i, b)| (b.wgpu_blend(), self.draw_write_mask(i)))
+            .collect();
+        // wgpu has one constant colour: CONSTANT_ALPHA reads it as (a, a, a, a).
+        let constant_alpha = buffers.iter().any(|b| b.uses_constant_alpha());
         let blend_constant = if constant_alpha {
             [s.blend_color[3]; 4]
         } else {
@@ -236,8 +232,7 @@ impl Context {
             depth_write,
             depth_compare,
             depth_bias,
-            blend,
-            write_mask: self.draw_write_mask(),
+            blends,
             rgb_targets: self.rgb_draw_buffers(),
             slots: groups.slot_bindings.clone(),
             targets: target
@@ -255,7 +250,7 @@ impl Context {
             rasterize: call.rasterize,
             clip_control,
         };
-        let uses_constant = blend.is_some_and(|b| {
+        let uses_constant = key.blends.iter().flat_map(|(b, _)| b).any(|b| {
             [
                 b.color.src_factor,
                 b.color.dst_factor,
@@ -297,10 +292,10 @@ impl Context {
             })
     }
 
-    /// The channels draws write: the colour mask, without alpha on a default framebuffer
-    /// that has none (`alpha: false`), so that it stays 1.
-    pub(crate) fn draw_write_mask(&self) -> wgpu::ColorWrites {
-        let mut mask = write_mask(&self.state.color_mask);
+    /// The channels draws write into draw buffer `i`: its colour mask, without alpha on a
+    /// default framebuffer that has none (`alpha: false`), so that it stays 1.
+    pub(crate) fn draw_write_mask(&self, i: usize) -> wgpu::ColorWrites {
+        let mut mask = write_mask(&self.state.draw_buffers[i].color_mask);
         if self.bindings.framebuffers()[0].is_none() && !self.fb.attributes.alpha {
             mask -= wgpu::ColorWrites::ALPHA;
         }

@@ -53,8 +53,8 @@ pub(crate) struct PipelineKey {
     pub(crate) depth_compare: wgpu::CompareFunction,
     /// Constant and slope-scale (as bits) depth bias.
     pub(crate) depth_bias: (i32, u32),
-    pub(crate) blend: Option<wgpu::BlendState>,
-    pub(crate) write_mask: wgpu::ColorWrites,
+    /// Each draw buffer's blend state and write mask, as `targets` lists them.
+    pub(crate) blends: Vec<(Option<wgpu::BlendState>, wgpu::ColorWrites)>,
     /// Draw buffers whose image is RGB (stored with a fourth channel), bit `i` for draw
     /// buffer `i`: draws leave their alpha alone (1, as GL reads it).
     pub(crate) rgb_targets: u32,
@@ -535,10 +535,15 @@ fn color_targets(key: &PipelineKey) -> Vec<Option<wgpu::ColorTargetState>> {
         .enumerate()
         .map(|(i, t)| {
             t.map(|format| {
+                let (blend, mask) = key
+                    .blends
+                    .get(i)
+                    .copied()
+                    .unwrap_or((None, wgpu::ColorWrites::ALL));
                 let write_mask = if key.rgb_targets & (1 << i) != 0 {
-                    key.write_mask - wgpu::ColorWrites::ALPHA
+                    mask - wgpu::ColorWrites::ALPHA
                 } else {
-                    key.write_mask
+                    mask
                 };
                 let blendable = format
                     .sample_type(None, None)
@@ -552,7 +557,7 @@ fn color_targets(key: &PipelineKey) -> Vec<Option<wgpu::ColorTargetState>> {
                         ));
                 wgpu::ColorTargetState {
                     format,
-                    blend: if blendable { key.blend } else { None },
+                    blend: if blendable { blend } else { None },
                     write_mask,
                 }
             })

@@ -46,6 +46,9 @@ impl Context {
     /// of range → `INVALID_VALUE`.
     pub fn get_indexed_parameter(&self, target: u32, index: u32) -> Option<Parameter> {
         const F: &str = "getIndexedParameter";
+        if let Some(p) = self.indexed_blend_parameter(target, index) {
+            return p;
+        }
         let range = match target {
             gl::UNIFORM_BUFFER_BINDING | gl::UNIFORM_BUFFER_START | gl::UNIFORM_BUFFER_SIZE => {
                 if index >= crate::context::MAX_UNIFORM_BUFFER_BINDINGS {

@@ -5,6 +5,7 @@ use super::{Parameter, SHADING_LANGUAGE_VERSION, SUBPIXEL_BITS, VENDOR, VERSION}
 use crate::context::{Context, MAX_TEXTURE_UNITS, MAX_UNIFORM_BUFFER_BINDINGS};
 use crate::gl;
 use crate::objects::{Buffer, Id, Texture, VertexArray};
+use crate::state::draw_buffer_parameter;
 
 impl Context {
     /// A value of the context's state (`getParameter`).
@@ -94,18 +95,18 @@ impl Context {
             gl::DEPTH_RANGE => Floats(s.depth_range.to_vec()),
             gl::CULL_FACE_MODE => Enum(s.cull_face_mode),
             gl::FRONT_FACE => Enum(s.front_face),
-            gl::BLEND_SRC_RGB => Enum(s.blend_src_rgb),
-            gl::BLEND_DST_RGB => Enum(s.blend_dst_rgb),
-            gl::BLEND_SRC_ALPHA => Enum(s.blend_src_alpha),
-            gl::BLEND_DST_ALPHA => Enum(s.blend_dst_alpha),
-            gl::BLEND_EQUATION_RGB => Enum(s.blend_equation_rgb),
-            gl::BLEND_EQUATION_ALPHA => Enum(s.blend_equation_alpha),
+            gl::BLEND_SRC_RGB => draw_buffer_parameter(&s.draw_buffers[0], Some(0)),
+            gl::BLEND_DST_RGB => draw_buffer_parameter(&s.draw_buffers[0], Some(1)),
+            gl::BLEND_SRC_ALPHA => draw_buffer_parameter(&s.draw_buffers[0], Some(2)),
+            gl::BLEND_DST_ALPHA => draw_buffer_parameter(&s.draw_buffers[0], Some(3)),
+            gl::BLEND_EQUATION_RGB => draw_buffer_parameter(&s.draw_buffers[0], Some(4)),
+            gl::BLEND_EQUATION_ALPHA => draw_buffer_parameter(&s.draw_buffers[0], Some(5)),
             gl::BLEND_COLOR => Floats(s.blend_color.to_vec()),
-            gl::COLOR_WRITEMASK => Parameter::Bools(s.color_mask.to_vec()),
+            gl::COLOR_WRITEMASK => draw_buffer_parameter(&s.draw_buffers[0], None),
             gl::POLYGON_OFFSET_FACTOR => Float(s.polygon_offset_factor),
             gl::POLYGON_OFFSET_UNITS => Float(s.polygon_offset_units),
             gl::LINE_WIDTH => Float(s.line_width),
-            gl::BLEND => Bool(s.blend),
+            gl::BLEND => Bool(s.draw_buffers[0].blend),
             gl::CULL_FACE => Bool(s.cull_face),
             gl::DEPTH_TEST => Bool(s.depth_test),
             gl::DITHER => Bool(s.dither),

@@ -1,12 +1,15 @@
 //! Fixed-function state: viewport, scissor, clear values, depth, culling, blending, masks,
-//! and pixel storage (`pixel_storei`). The values live in [`values`]; this file and
-//! [`stencil`] hold the calls that check and set them.
+//! and pixel storage (`pixel_storei`). The values live in [`values`]; this file,
+//! [`blend`] (blending and colour masks, per draw buffer) and [`stencil`] hold the calls that
+//! check and set them.
 
+mod blend;
 mod clip_control;
 mod clip_distance;
 mod stencil;
 mod values;
 
+pub(crate) use blend::{draw_buffer_parameter, DrawBufferState};
 pub(crate) use values::{compare_function, is_compare_func, PixelStore, RenderState};
 
 use crate::context::Context;
@@ -40,20 +43,11 @@ fn is_blend_equation(e: u32) -> bool {
     )
 }
 
-fn uses_constant_color(f: u32) -> bool {
-    matches!(f, gl::CONSTANT_COLOR | gl::ONE_MINUS_CONSTANT_COLOR)
-}
-
-fn uses_constant_alpha(f: u32) -> bool {
-    matches!(f, gl::CONSTANT_ALPHA | gl::ONE_MINUS_CONSTANT_ALPHA)
-}
-
 /// The flag of capability `cap` in a `State` (`&mut` with a trailing `mut`), or `None` for a
 /// name that is not a capability.
 macro_rules! capability_flag {
     ($s:expr, $cap:expr $(, $m:ident)?) => {
         match $cap {
-            gl::BLEND => Some(&$($m)? $s.blend),
             gl::CULL_FACE => Some(&$($m)? $s.cull_face),
             gl::DEPTH_TEST => Some(&$($m)? $s.depth_test),
             gl::DITHER => Some(&$($m)? $s.dither),
@@ -107,6 +101,12 @@ impl Context {
         if let Some(i) = self.clip_distance_switch(cap) {
             return self.set_clip_distance(i, value);
         }
+        if cap == gl::BLEND {
+            for b in &mut self.state.draw_buffers {
+                b.blend = value;
+            }
+            return;
+        }
         match capability_flag!(self.state, cap, mut) {
             Some(flag) => *flag = value,
             None => self.error(
@@ -143,6 +143,9 @@ impl Context {
         }
         if let Some(i) = self.clip_distance_switch(cap) {
             return self.clip_distance_on(i);
+        }
+        if cap == gl::BLEND {
+            return self.state.draw_buffers[0].blend;
         }
         match capability_flag!(self.state, cap) {
             Some(flag) => *flag,
@@ -195,79 +198,9 @@ impl Context {
         self.state.front_face = mode;
     }
 
-    /// Sets the blend factors for colour and alpha (`blendFunc`).
-    pub fn blend_func(&mut self, sfactor: u32, dfactor: u32) {
-        self.blend_func_impl(sfactor, dfactor, sfactor, dfactor, "blendFunc");
-    }
-
-    /// Sets separate blend factors for colour and alpha (`blendFuncSeparate`).
-    pub fn blend_func_separate(
-        &mut self,
-        src_rgb: u32,
-        dst_rgb: u32,
-        src_alpha: u32,
-        dst_alpha: u32,
-    ) {
-        self.blend_func_impl(src_rgb, dst_rgb, src_alpha, dst_alpha, "blendFuncSeparate");
-    }
-
-    fn blend_func_impl(&mut self, sr: u32, dr: u32, sa: u32, da: u32, function: &str) {
-        if ![sr, dr, sa, da].into_iter().all(is_blend_factor) {
-            return self.error(gl::INVALID_ENUM, function, "not a blend factor");
-        }
-        // WebGL: constant colour and constant alpha cannot be combined as source and
-        // destination factors.
-        if (uses_constant_color(sr) && uses_constant_alpha(dr))
-            || (uses_constant_alpha(sr) && uses_constant_color(dr))
-        {
-            return self.error(
-                gl::INVALID_OPERATION,
-                function,
-                "CONSTANT_COLOR and CONSTANT_ALPHA cannot be used together",
-            );
-        }
-        let s = &mut self.state;
-        (
-            s.blend_src_rgb,
-            s.blend_dst_rgb,
-            s.blend_src_alpha,
-            s.blend_dst_alpha,
-        ) = (sr, dr, sa, da);
-    }
-
-    /// Sets the blend equation for colour and alpha (`blendEquation`): `FUNC_ADD`,
-    /// `FUNC_SUBTRACT`, `FUNC_REVERSE_SUBTRACT`, `MIN`, `MAX`.
-    pub fn blend_equation(&mut self, mode: u32) {
-        if self.webgl1_refuses("blendEquation", &[mode]) {
-            return;
-        }
-        self.blend_equation_separate_impl(mode, mode, "blendEquation");
-    }
-
-    /// Sets separate blend equations for colour and alpha (`blendEquationSeparate`).
-    pub fn blend_equation_separate(&mut self, mode_rgb: u32, mode_alpha: u32) {
-        if self.webgl1_refuses("blendEquationSeparate", &[mode_rgb, mode_alpha]) {
-            return;
-        }
-        self.blend_equation_separate_impl(mode_rgb, mode_alpha, "blendEquationSeparate");
-    }
-
-    fn blend_equation_separate_impl(&mut self, rgb: u32, alpha: u32, function: &str) {
-        if !is_blend_equation(rgb) || !is_blend_equation(alpha) {
-            return self.error(gl::INVALID_ENUM, function, "not a blend equation");
-        }
-        self.state.blend_equation_rgb = rgb;
-        self.state.blend_equation_alpha = alpha;
-    }
-
     /// Sets the constant blend colour (`blendColor`).
     pub fn blend_color(&mut self, red: f32, green: f32, blue: f32, alpha: f32) {
         self.state.blend_color = [red, green, blue, alpha];
-    }
-
-    /// Enables or disables writing of each colour component (`colorMask`).
-    pub fn color_mask(&mut self, red: bool, green: bool, blue: bool, alpha: bool) {
-        self.state.color_mask = [red, green, blue, alpha];
     }
 
     /// Sets the depth offset of `POLYGON_OFFSET_FILL` (`polygonOffset`).

@@ -7,6 +7,7 @@ mod clip_control;
 mod clip_distance;
 mod common;
 mod compressed;
+mod draw_buffers_indexed;
 mod errors;
 mod es100_render;
 mod framebuffer;
