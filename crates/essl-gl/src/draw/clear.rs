@@ -373,10 +373,14 @@ impl Context {
             self.caches
                 .pipelines
                 .group0(&self.gpu, Some((alloc.chunk, &alloc.buffer, size)), &[]);
-        let (w, h) = (target.size[0] as f32, target.size[1] as f32);
         let pass = self.frame.internal_pass(&self.gpu, target);
         pass.set_pipeline(&pipeline);
-        pass.set_viewport(0.0, 0.0, w, h, 0.0, 1.0);
+        // The triangle covers the viewport: make that the rectangle, not only the scissor
+        // box. lavapipe (Mesa 22.3) lets a multisampled draw cover the samples of the pixels
+        // left of and below a scissor box that does not start at 0; the geometry itself ends
+        // on the box's edges.
+        let [x, y, w, h] = rect.map(|v| v as f32);
+        pass.set_viewport(x, y, w, h, 0.0, 1.0);
         pass.set_scissor_rect(rect[0], rect[1], rect[2], rect[3]);
         pass.set_bind_group(0, &group, &[alloc.offset as u32]);
         if let Some(s) = request.stencil {

@@ -254,9 +254,11 @@ impl Context {
     }
 
     /// The drawing buffer's colour as 8-bit RGBA, top row first (an image file's order),
-    /// whatever framebuffer is bound and whatever its read buffer: what a canvas shows.
-    /// Colours are converted from the drawing buffer's format (`RGBA16F` is clamped); with
-    /// `alpha: false` alpha reads 1. Submits the recorded commands and waits for them.
+    /// whatever framebuffer is bound and whatever its read buffer: what a canvas shows, as an
+    /// image file or a 2D canvas's `ImageData` holds it. Colours are converted from the
+    /// drawing buffer's format (`RGBA16F` is clamped); with `alpha: false` alpha reads 1;
+    /// with `premultipliedAlpha` (the default) colour is divided by alpha, as a browser does
+    /// when it encodes or copies the canvas. Submits the recorded commands and waits for them.
     pub fn read_drawing_buffer(&mut self) -> Vec<u8> {
         let mut surface = self.default_read_surface();
         let fb = &self.fb;
@@ -275,6 +277,7 @@ impl Context {
             depth_slice: None,
         });
         let opaque = !fb.attributes.alpha;
+        let premultiplied = fb.attributes.premultiplied_alpha;
         let texel = image.format.texel_size();
         let texels = self
             .read_surface_image(&image, [0, 0], [w, h])
@@ -290,6 +293,8 @@ impl Context {
             }
             if opaque {
                 px[3] = 255;
+            } else if premultiplied {
+                unpremultiply(px);
             }
         }
         out
@@ -403,4 +408,16 @@ fn is_read_type(ty: u32) -> bool {
             ty,
             gl::UNSIGNED_INT_24_8 | gl::FLOAT_32_UNSIGNED_INT_24_8_REV
         )
+}
+
+/// A premultiplied 8-bit RGBA pixel divided by its alpha, rounded (black where alpha is 0).
+fn unpremultiply(px: &mut [u8]) {
+    let a = u32::from(px[3]);
+    if a == 255 {
+        return;
+    }
+    for c in &mut px[..3] {
+        let v = (u32::from(*c) * 255 + a / 2).checked_div(a).unwrap_or(0);
+        *c = v.min(255) as u8;
+    }
 }

@@ -439,3 +439,55 @@ fn skipped_pixels_past_the_row_are_invalid_a_row_length_of_0_being_the_width() {
     assert_eq!(upload(&mut ctx, 7, 2), gl::NO_ERROR);
     assert_eq!(upload(&mut ctx, 0, 0), gl::NO_ERROR);
 }
+
+#[test]
+fn the_drawing_buffer_reads_unpremultiplied_unless_the_context_is_not_premultiplied() {
+    for premultiplied_alpha in [true, false] {
+        let attributes = essl_gl::ContextAttributes {
+            premultiplied_alpha,
+            ..Default::default()
+        };
+        let Some(mut ctx) = common::context_with(1, 1, attributes) else {
+            return;
+        };
+        // Stored as (64, 128, 128, 128) and (0, 0, 0, 0).
+        ctx.clear_color(0.25, 0.5, 0.5, 0.5);
+        ctx.clear(gl::COLOR_BUFFER_BIT);
+        let want = if premultiplied_alpha {
+            [128, 255, 255, 128]
+        } else {
+            [64, 128, 128, 128]
+        };
+        assert_eq!(ctx.read_drawing_buffer(), want, "{premultiplied_alpha}");
+        ctx.clear_color(0.5, 0.5, 0.5, 0.0);
+        ctx.clear(gl::COLOR_BUFFER_BIT);
+        let want = if premultiplied_alpha {
+            [0, 0, 0, 0]
+        } else {
+            [128, 128, 128, 0]
+        };
+        assert_eq!(ctx.read_drawing_buffer(), want, "{premultiplied_alpha}");
+    }
+}
+
+#[test]
+fn a_scissored_clear_of_a_multisampled_drawing_buffer_stays_in_its_box() {
+    let attributes = essl_gl::ContextAttributes {
+        antialias: true,
+        ..Default::default()
+    };
+    let Some(mut ctx) = common::context_with(4, 4, attributes) else {
+        return;
+    };
+    ctx.clear_color(0.0, 0.0, 0.0, 0.0);
+    ctx.clear(gl::COLOR_BUFFER_BIT);
+    ctx.enable(gl::SCISSOR_TEST);
+    ctx.scissor(1, 1, 1, 1);
+    ctx.clear_color(0.0, 1.0, 0.0, 1.0);
+    ctx.clear(gl::COLOR_BUFFER_BIT);
+    let px = ctx.read_pixels_rgba8(0, 0, 4, 4);
+    for (i, p) in px.chunks_exact(4).enumerate() {
+        let want = if i == 5 { [0, 255, 0, 255] } else { [0; 4] };
+        assert_eq!(p, want, "pixel ({}, {})", i % 4, i / 4);
+    }
+}
