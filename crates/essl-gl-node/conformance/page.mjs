@@ -9,7 +9,7 @@
 // Prints one JSON line: { page, version, passed, failed, finished, failures: [msg…], error }.
 import { readFileSync } from 'node:fs';
 import { join } from 'node:path';
-import { pathToFileURL } from 'node:url';
+import { fileURLToPath, pathToFileURL } from 'node:url';
 import { JSDOM, VirtualConsole } from 'jsdom';
 
 const [sdk, page, versionArg, timeoutArg] = process.argv.slice(2);
@@ -71,6 +71,14 @@ async function main() {
           return c;
         };
       }
+      // jsdom has no fetch, and Node's does not read file: URLs: the suite's resources are
+      // read from the folder the page is in, as a browser serving the suite reads them.
+      window.fetch = async (input) => {
+        const u = new URL(String(input?.url ?? input), window.location.href);
+        if (u.protocol !== 'file:') return fetch(u);
+        const body = readFileSync(fileURLToPath(u));
+        return new Response(body, { status: 200 });
+      };
       // jsdom's postMessage sends a message whose `source` is null; a browser's names the
       // window that posted it, which the suite's setZeroTimeout (webgl-test-utils.js) checks.
       window.postMessage = (data) => {

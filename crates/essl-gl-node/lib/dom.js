@@ -3,7 +3,10 @@
 // with an essl-gl context (its size follows the element's width and height), and defines
 // WebGL's interfaces on the window (`WebGL2RenderingContext`, `WebGLBuffer`, …) so that
 // `instanceof` works in the page's scripts. '2d' and other types keep the library's answer.
+// Where the window lacks them, it gets `createImageBitmap`, `ImageBitmap` and
+// `HTMLImageElement.decode()` (`bitmap.js`).
 import * as objects from './objects.js';
+import { installImageDecoding } from './bitmap.js';
 import { contextFor, contextOf, resizeFor } from './canvas.js';
 import { NATIVE } from './objects.js';
 import { contextClass } from './realm.js';
@@ -29,6 +32,7 @@ export function installInWindow(window) {
     });
   }
   patchReadback(window, proto);
+  installImageDecoding(window);
   const globals = {
     WebGLRenderingContext: contextClass(window, 1),
     WebGL2RenderingContext: contextClass(window, 2),

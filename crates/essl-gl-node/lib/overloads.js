@@ -293,7 +293,7 @@ function texImage(name, sub, threeD, args) {
   if (isImageSource(data)) {
     if (!webgl2) throw typeError(name, `parameter ${full + 1} is not of type 'ArrayBufferView'.`);
     const src = imageSource(data, name);
-    if (n !== null) n.texImageSource(sub, threeD, r, src.data, src.width, src.height);
+    if (n !== null) n.texImageSource(sub, threeD, r, src.data, src.width, src.height, src.bitmap === true);
     return;
   }
   if (!webgl2) throw typeError(name, `parameter ${full + 1} is not of type 'ArrayBufferView'.`);
@@ -342,7 +342,7 @@ function sourceShort(name, sub, args) {
   r.width = src.width;
   r.height = src.height;
   const n = this[NATIVE];
-  if (n !== null) n.texImageSource(sub, false, r, src.data, src.width, src.height);
+  if (n !== null) n.texImageSource(sub, false, r, src.data, src.width, src.height, src.bitmap === true);
 }
 
 /** The compressed-texture calls: `count` integers between `level` and the data. */

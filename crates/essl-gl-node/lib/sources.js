@@ -12,6 +12,9 @@ export function setDrawingBufferReader(f) {
   drawingBufferOf = f;
 }
 
+/** The pixels of an ImageBitmap (`bitmap.js`; `null` once closed). */
+export const BITMAP_PIXELS = Symbol('essl-gl ImageBitmap pixels');
+
 /** A canvas-like object of essl-gl's (its context draws into the drawing buffer). */
 export const DRAWING_BUFFER = Symbol('essl-gl drawing buffer pixels');
 
@@ -19,6 +22,7 @@ export const DRAWING_BUFFER = Symbol('essl-gl drawing buffer pixels');
 export function isImageSource(v) {
   if (v === null || typeof v !== 'object') return false;
   if (ArrayBuffer.isView(v)) return false;
+  if (BITMAP_PIXELS in v) return true;
   if (typeof v[DRAWING_BUFFER] === 'function') return true;
   if (isImageData(v)) return true;
   if (typeof v.videoWidth === 'number') return true;
@@ -39,10 +43,15 @@ function isImage(v) {
 
 /**
  * The pixels of an image source: `{ width, height, data }` with `data` RGBA8, top row
- * first, unpremultiplied. A source that cannot be read (an image not loaded, a canvas whose
+ * first, unpremultiplied (`bitmap: true` for an ImageBitmap, uploaded as it is). A source that cannot be read (an image not loaded, a canvas whose
  * package is missing) is a `TypeError`-free empty 0 × 0 image, as a browser uploads one.
  */
 export function imageSource(v, name) {
+  if (BITMAP_PIXELS in v) {
+    // WebGL uploads a bitmap as it is: no UNPACK_FLIP_Y_WEBGL, no UNPACK_PREMULTIPLY_ALPHA_WEBGL.
+    const p = v[BITMAP_PIXELS] ?? { width: 0, height: 0, data: new Uint8Array(0) };
+    return { ...p, bitmap: true };
+  }
   if (typeof v[DRAWING_BUFFER] === 'function') return v[DRAWING_BUFFER]();
   const webgl = drawingBufferOf(v);
   if (webgl) return webgl;

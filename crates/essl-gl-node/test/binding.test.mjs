@@ -444,3 +444,60 @@ test('a WebGL canvas in a document reads back: toDataURL, toBlob and texImage2D 
   b.destroy();
   dom.window.close();
 });
+
+test('createImageBitmap and image.decode in a document: blobs, images, flipY, crops, no pixel store', async () => {
+  const { JSDOM } = await import('jsdom');
+  const dom = new JSDOM('<!doctype html><body></body>', { runScripts: 'outside-only', resources: 'usable' });
+  const w = dom.window;
+  installInWindow(w);
+  const doc = w.document;
+  // A 1 × 2 PNG: red on top, blue below, made by a WebGL canvas.
+  const source = doc.createElement('canvas');
+  source.width = 1;
+  source.height = 2;
+  const a = source.getContext('webgl2', { preserveDrawingBuffer: true });
+  a.enable(a.SCISSOR_TEST);
+  for (const [y, rgb] of [[1, [1, 0, 0]], [0, [0, 0, 1]]]) {
+    a.scissor(0, y, 1, 1);
+    a.clearColor(...rgb, 1);
+    a.clear(a.COLOR_BUFFER_BIT);
+  }
+  const blob = await new Promise((r) => source.toBlob(r));
+  const gl = doc.createElement('canvas').getContext('webgl2');
+  const tex = gl.createTexture();
+  gl.bindTexture(gl.TEXTURE_2D, tex);
+  gl.bindFramebuffer(gl.FRAMEBUFFER, gl.createFramebuffer());
+  /** The uploaded texture's texels, row 0 first. */
+  const upload = (src) => {
+    gl.texImage2D(gl.TEXTURE_2D, 0, gl.RGBA, gl.RGBA, gl.UNSIGNED_BYTE, src);
+    assert.equal(gl.getError(), gl.NO_ERROR);
+    gl.framebufferTexture2D(gl.FRAMEBUFFER, gl.COLOR_ATTACHMENT0, gl.TEXTURE_2D, tex, 0);
+    const px = new Uint8Array(src.width * src.height * 4);
+    gl.readPixels(0, 0, src.width, src.height, gl.RGBA, gl.UNSIGNED_BYTE, px);
+    return [...px];
+  };
+  const RED = [255, 0, 0, 255], BLUE = [0, 0, 255, 255];
+  const bitmap = await w.createImageBitmap(blob);
+  assert.ok(bitmap instanceof w.ImageBitmap);
+  assert.deepEqual([bitmap.width, bitmap.height], [1, 2]);
+  // The image's first row is row 0; UNPACK_FLIP_Y_WEBGL does not apply to a bitmap.
+  gl.pixelStorei(gl.UNPACK_FLIP_Y_WEBGL, true);
+  assert.deepEqual(upload(bitmap), [...RED, ...BLUE]);
+  gl.pixelStorei(gl.UNPACK_FLIP_Y_WEBGL, false);
+  assert.deepEqual(upload(await w.createImageBitmap(blob, { imageOrientation: 'flipY' })), [...BLUE, ...RED]);
+  assert.deepEqual(upload(await w.createImageBitmap(bitmap, 0, 1, 1, 1)), BLUE);
+  const img = new w.Image();
+  img.src = `data:image/png;base64,${Buffer.from(await blob.arrayBuffer()).toString('base64')}`;
+  await img.decode();
+  assert.deepEqual(upload(img), [...RED, ...BLUE]);
+  bitmap.close();
+  assert.equal(bitmap.width, 0);
+  await assert.rejects(w.createImageBitmap(bitmap), { name: 'InvalidStateError' });
+  await assert.rejects(w.createImageBitmap(42), TypeError);
+  const broken = new w.Image();
+  broken.src = 'data:image/png;base64,AAAA';
+  await assert.rejects(broken.decode(), { name: 'EncodingError' });
+  a.destroy();
+  gl.destroy();
+  w.close();
+});

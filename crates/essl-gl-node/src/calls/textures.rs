@@ -453,7 +453,8 @@ impl NativeContext {
 #[napi]
 impl NativeContext {
     /// The four upload calls from a DOM image source: `rgba` is 8-bit RGBA, unpremultiplied,
-    /// top row first, `width` × `height`.
+    /// top row first, `width` × `height`; `bitmap` for an ImageBitmap, uploaded as it is.
+    #[allow(clippy::too_many_arguments)]
     #[napi(catch_unwind)]
     pub fn tex_image_source(
         &mut self,
@@ -463,6 +464,7 @@ impl NativeContext {
         rgba: View,
         width: u32,
         height: u32,
+        bitmap: bool,
     ) -> napi::Result<()> {
         let upload = essl_gl::SourceUpload {
             sub,
@@ -480,6 +482,7 @@ impl NativeContext {
             width,
             height,
             rgba: rgba.bytes(),
+            bitmap,
         };
         self.gl()?.tex_image_source(upload, source);
         Ok(())

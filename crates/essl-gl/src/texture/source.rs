@@ -26,6 +26,10 @@ pub struct ImageSource<'a> {
     pub height: u32,
     /// `width × height × 4` bytes.
     pub rgba: &'a [u8],
+    /// An `ImageBitmap`: uploaded as it is, without `UNPACK_FLIP_Y_WEBGL` and
+    /// `UNPACK_PREMULTIPLY_ALPHA_WEBGL`, which WebGL's pixel storage parameters leave to
+    /// the bitmap's own options.
+    pub bitmap: bool,
 }
 
 /// Which upload, and the numbers of its call.
@@ -183,8 +187,12 @@ impl Context {
         // WebGL 1's EXT_sRGB formats take the texels of RGB and RGBA.
         let mut texels = u;
         texels.format = self.webgl1_srgb(0, u.format).1;
+        let mut store = self.pixel_store;
+        if source.bitmap {
+            (store.unpack_flip_y, store.unpack_premultiply_alpha) = (false, false);
+        }
         let converted = complete
-            .then(|| select(&source, &texels, &self.pixel_store))
+            .then(|| select(&source, &texels, &store))
             .flatten()
             .unwrap_or_default();
         let array = pixel_array_type(u.ty).unwrap_or(ArrayType::Uint8);

@@ -26,6 +26,11 @@ fn texels(ctx: &mut essl_gl::Context, texture: essl_gl::Texture) -> Vec<u8> {
 }
 
 fn upload(flip: bool, premultiply: bool, rgba: &[u8]) -> Option<Vec<u8>> {
+    upload_source(flip, premultiply, rgba, false)
+}
+
+/// [`upload`] of an image or (`bitmap`) an ImageBitmap.
+fn upload_source(flip: bool, premultiply: bool, rgba: &[u8], bitmap: bool) -> Option<Vec<u8>> {
     let mut ctx = common::context(4, 4)?;
     let t = ctx.create_texture();
     ctx.bind_texture(gl::TEXTURE_2D, Some(t));
@@ -49,6 +54,7 @@ fn upload(flip: bool, premultiply: bool, rgba: &[u8]) -> Option<Vec<u8>> {
             width: 2,
             height: 2,
             rgba,
+            bitmap,
         },
     );
     assert_eq!(ctx.get_error(), gl::NO_ERROR, "{:?}", ctx.error_message());
@@ -70,6 +76,16 @@ fn an_image_source_goes_to_row_0_first_and_flips_and_premultiplies_as_asked() {
     let half = [[200, 100, 50, 128]; 4].concat();
     let pre = upload(false, true, &half).unwrap();
     assert_eq!(&pre[..4], &[100, 50, 25, 128]);
+}
+
+#[test]
+fn an_image_bitmap_is_uploaded_as_it_is_whatever_the_pixel_store_says() {
+    let half = [[200, 100, 50, 128]; 4].concat();
+    let Some(bitmap) = upload_source(true, true, &half, true) else {
+        return;
+    };
+    assert_eq!(bitmap, half);
+    assert_eq!(upload_source(true, false, &image(), true).unwrap(), image());
 }
 
 #[test]
@@ -105,6 +121,7 @@ fn a_flipped_image_source_gives_the_rectangle_of_the_flipped_source() {
                 width: 2,
                 height: 2,
                 rgba: &rgba,
+                bitmap: false,
             },
         );
         assert_eq!(ctx.get_error(), gl::NO_ERROR, "{:?}", ctx.error_message());
@@ -139,6 +156,7 @@ fn an_image_source_converts_to_float_and_packed_types() {
             width: 2,
             height: 2,
             rgba: &rgba,
+            bitmap: false,
         },
     );
     assert_eq!(ctx.get_error(), gl::NO_ERROR, "{:?}", ctx.error_message());
@@ -151,6 +169,7 @@ fn an_image_source_converts_to_float_and_packed_types() {
             width: 2,
             height: 2,
             rgba: &rgba,
+            bitmap: false,
         },
     );
     assert_eq!(ctx.get_error(), gl::NO_ERROR, "{:?}", ctx.error_message());
@@ -161,6 +180,7 @@ fn an_image_source_converts_to_float_and_packed_types() {
             width: 2,
             height: 2,
             rgba: &rgba[..8],
+            bitmap: false,
         },
     );
     assert_eq!(ctx.get_error(), gl::INVALID_OPERATION);
