@@ -80,6 +80,7 @@ const CONSTANTS = {
     ]),
   ),
   KHR_parallel_shader_compile: { COMPLETION_STATUS_KHR: 0x91b1 },
+  WEBGL_stencil_texturing: { DEPTH_STENCIL_TEXTURE_MODE_WEBGL: 0x90ea, STENCIL_INDEX_WEBGL: 0x1901 },
   EXT_clip_control: {
     LOWER_LEFT_EXT: 0x8ca1,
     UPPER_LEFT_EXT: 0x8ca2,

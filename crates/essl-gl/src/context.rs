@@ -360,6 +360,7 @@ impl Context {
         v.push(Extension::ClipControl);
         v.push(Extension::MultiDraw);
         v.push(Extension::DrawBuffersIndexed);
+        v.push(Extension::StencilTexturing);
         if features.contains(wgpu::Features::CLIP_DISTANCES) {
             v.push(Extension::ClipCullDistance);
         }
@@ -423,6 +424,7 @@ impl Context {
             Extension::TextureFloatLinear => x.texture_float_linear = true,
             Extension::ParallelShaderCompile => x.parallel_shader_compile = true,
             Extension::DrawBuffersIndexed => x.draw_buffers_indexed = true,
+            Extension::StencilTexturing => x.stencil_texturing = true,
             Extension::ClipCullDistance => {
                 x.clip_cull_distance = true;
                 let shaders = &mut self.linker.shaders.extensions;

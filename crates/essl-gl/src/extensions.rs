@@ -14,7 +14,8 @@
 //! `EXT_texture_filter_anisotropic` (wgpu's anisotropy clamp, up to 16, where the
 //! minification, magnification and mipmap filters are all linear, as wgpu requires). WebGL 2
 //! contexts offer `WEBGL_clip_cull_distance` where the adapter has clip distances (eight; no
-//! cull distances: `state/clip_distance.rs`) and `OES_draw_buffers_indexed` (`state/blend.rs`). Both offer `WEBGL_debug_shaders` (a compiled
+//! cull distances: `state/clip_distance.rs`), `OES_draw_buffers_indexed` (`state/blend.rs`)
+//! and `WEBGL_stencil_texturing` (`texture/params.rs`). Both offer `WEBGL_debug_shaders` (a compiled
 //! shader's lowered module as WGSL), `EXT_clip_control` (`state/clip_control.rs`) and
 //! `WEBGL_multi_draw` (`draw/multi.rs`). WebGL 1 contexts offer their own list besides, float
 //! textures among them (`webgl1/float.rs`).
@@ -40,6 +41,8 @@ pub(crate) struct Extensions {
     pub(crate) multi_draw: bool,
     /// `OES_draw_buffers_indexed`.
     pub(crate) draw_buffers_indexed: bool,
+    /// `WEBGL_stencil_texturing`.
+    pub(crate) stencil_texturing: bool,
 }
 
 /// `EXT_texture_filter_anisotropic`'s texture and sampler parameter.
@@ -162,6 +165,9 @@ pub enum Extension {
     /// `OES_draw_buffers_indexed` (WebGL 2): blending and colour masks per draw buffer
     /// ([`Context::color_mask_indexed`](crate::Context::color_mask_indexed) and its kin).
     DrawBuffersIndexed,
+    /// `WEBGL_stencil_texturing` (WebGL 2): a depth-stencil texture sampled for its stencil
+    /// (`DEPTH_STENCIL_TEXTURE_MODE_WEBGL`).
+    StencilTexturing,
 }
 
 impl Extension {
@@ -200,6 +206,7 @@ impl Extension {
             Extension::ClipControl => "EXT_clip_control",
             Extension::MultiDraw => "WEBGL_multi_draw",
             Extension::DrawBuffersIndexed => "OES_draw_buffers_indexed",
+            Extension::StencilTexturing => "WEBGL_stencil_texturing",
         }
     }
 }

@@ -321,6 +321,9 @@ impl Context {
                     let g = t.gpu.as_mut().expect("synced above");
                     let mut key = sample_view_key(target, g.anchor, c.base, c.levels, &c.format);
                     key.dimension = plan.dim;
+                    if c.stencil {
+                        key.aspect = wgpu::TextureAspect::StencilOnly;
+                    }
                     let view = g.view(key);
                     let mut sampling = sampling;
                     if c.format.has_depth() && !shadow {

@@ -255,7 +255,26 @@ impl Context {
             };
             let float_linear = self.extensions.texture_float_linear;
             let half_linear = !self.webgl1.on || self.webgl1.texture_half_float_linear;
-            let texture = self.bindings.texture(unit, target).and_then(|id| {
+            let bound = self.bindings.texture(unit, target);
+            // As in Chromium, a texture whose format does not suit the sampler is an error
+            // whether or not it is complete.
+            let sampled = bound
+                .and_then(|id| self.objects.textures.get_any(id))
+                .and_then(|t| t.sampled_format());
+            if let Some((format, stencil)) = sampled {
+                let fits = match kind {
+                    _ if stencil => kind == SampleKind::Uint,
+                    SampleKind::Depth => format.has_depth(),
+                    // Depth values read as floats, whatever the format stores.
+                    _ if format.has_depth() => kind == SampleKind::Float,
+                    k => format.kind() == k,
+                };
+                if !fits {
+                    let msg = format!("texture on unit {unit} does not match its sampler's type");
+                    return self.fail(gl::INVALID_OPERATION, f, msg);
+                }
+            }
+            let texture = bound.and_then(|id| {
                 let sampling = self.sampling_for(unit, id)?;
                 self.objects
                     .textures
@@ -266,19 +285,11 @@ impl Context {
                     .map(|c| (id, c, sampling))
             });
             if let Some((id, c, sampling)) = &texture {
-                let fits = match kind {
-                    SampleKind::Depth => c.format.has_depth(),
-                    k => c.format.kind() == k,
-                };
-                if !fits {
-                    let msg = format!("texture on unit {unit} does not match its sampler's type");
-                    return self.fail(gl::INVALID_OPERATION, f, msg);
-                }
                 // Chromium checks shadow samplers against the compare mode at the draw: a
                 // shadow sampler needs COMPARE_REF_TO_TEXTURE, another sampler of a depth
                 // texture needs NONE (ES 3.0 leaves both undefined).
                 let compares = sampling.compare_mode == gl::COMPARE_REF_TO_TEXTURE;
-                if c.format.has_depth() && compares != (kind == SampleKind::Depth) {
+                if c.format.has_depth() && !c.stencil && compares != (kind == SampleKind::Depth) {
                     let msg = format!(
                         "the depth texture on unit {unit} has TEXTURE_COMPARE_MODE {}, its sampler is {}a shadow sampler",
                         if compares { "COMPARE_REF_TO_TEXTURE" } else { "NONE" },

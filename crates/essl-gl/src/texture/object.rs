@@ -86,6 +86,9 @@ pub(crate) struct TexParams {
     pub(crate) sampling: SamplerParams,
     pub(crate) base_level: u32,
     pub(crate) max_level: u32,
+    /// `DEPTH_STENCIL_TEXTURE_MODE_WEBGL` (`WEBGL_stencil_texturing`): a depth-stencil
+    /// texture is sampled for its stencil values (an unsigned integer texture).
+    pub(crate) stencil_mode: bool,
 }
 
 impl Default for TexParams {
@@ -94,6 +97,7 @@ impl Default for TexParams {
             sampling: SamplerParams::default(),
             base_level: 0,
             max_level: 1000,
+            stencil_mode: false,
         }
     }
 }
@@ -118,6 +122,9 @@ pub(crate) struct Complete {
     pub(crate) base: u32,
     pub(crate) levels: u32,
     pub(crate) format: InternalFormat,
+    /// Sampled for its stencil values (`WEBGL_stencil_texturing`): an unsigned integer
+    /// texture of the stencil aspect.
+    pub(crate) stencil: bool,
 }
 
 pub(super) fn mip_size(size: u32, level: u32) -> u32 {
@@ -138,6 +145,15 @@ impl TextureObject {
 
     pub(crate) fn level(&self, face: usize, level: u32) -> Option<&Level> {
         self.faces.get(face)?.get(level as usize)?.as_ref()
+    }
+
+    /// What sampling reads whether or not the texture is complete: the base level's format,
+    /// and whether the stencil is sampled (`WEBGL_stencil_texturing`); `None` without a base
+    /// level.
+    pub(crate) fn sampled_format(&self) -> Option<(InternalFormat, bool)> {
+        let (base, _) = self.level_range();
+        let format = self.level(0, base)?.format;
+        Some((format, self.params.stencil_mode && format.has_stencil()))
     }
 
     /// Mutable [`TextureObject::level`].
@@ -243,16 +259,19 @@ impl TextureObject {
         if target == gl::TEXTURE_CUBE_MAP && first.width != first.height {
             return None;
         }
+        // A depth-stencil texture sampled for its stencil is an integer texture.
+        let stencil = self.params.stencil_mode && format.has_stencil();
         // Depth formats filter only when compared (ES 3.0 §3.8.13).
         let compared = format.has_depth() && p.compare_mode == gl::COMPARE_REF_TO_TEXTURE;
         let half = format.comp == super::format::Comp::F16 && format.packing == Packing::None;
         // WebGL 1's depth textures (WEBGL_depth_texture) take LINEAR, read as NEAREST.
-        let filterable = (format.filterable() && (half_linear || !half))
-            || compared
-            || (webgl1 && format.has_depth())
-            || (float_linear
-                && format.comp == super::format::Comp::F32
-                && format.packing == super::format::Packing::None);
+        let filterable = !stencil
+            && ((format.filterable() && (half_linear || !half))
+                || compared
+                || (webgl1 && format.has_depth())
+                || (float_linear
+                    && format.comp == super::format::Comp::F32
+                    && format.packing == super::format::Packing::None));
         if !filterable
             && (p.mag_filter != gl::NEAREST
                 || !matches!(p.min_filter, gl::NEAREST | gl::NEAREST_MIPMAP_NEAREST))
@@ -264,6 +283,7 @@ impl TextureObject {
                 base,
                 levels: 1,
                 format,
+                stencil,
             });
         }
         if base > max {
@@ -298,6 +318,7 @@ impl TextureObject {
             base,
             levels: q - base + 1,
             format,
+            stencil,
         })
     }
 

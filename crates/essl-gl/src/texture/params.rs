@@ -6,11 +6,20 @@ use crate::gl;
 use crate::query::Parameter;
 use crate::sampler::ParamError;
 
+/// `WEBGL_stencil_texturing`'s texture parameter: which aspect of a depth-stencil texture is
+/// sampled.
+pub(crate) const DEPTH_STENCIL_TEXTURE_MODE: u32 = 0x90EA;
+/// `WEBGL_stencil_texturing`'s value of [`DEPTH_STENCIL_TEXTURE_MODE`] for the stencil.
+pub(crate) const STENCIL_INDEX: u32 = 0x1901;
+
 impl Context {
     /// Sets an integer texture parameter of the texture bound to `target` (`texParameteri`):
     /// `TEXTURE_MIN_FILTER`, `TEXTURE_MAG_FILTER`, `TEXTURE_WRAP_S/T/R`,
     /// `TEXTURE_BASE_LEVEL`, `TEXTURE_MAX_LEVEL`, `TEXTURE_COMPARE_MODE`,
-    /// `TEXTURE_COMPARE_FUNC`, `TEXTURE_MIN_LOD`, `TEXTURE_MAX_LOD`.
+    /// `TEXTURE_COMPARE_FUNC`, `TEXTURE_MIN_LOD`, `TEXTURE_MAX_LOD`; with
+    /// `WEBGL_stencil_texturing`, `DEPTH_STENCIL_TEXTURE_MODE_WEBGL` (`DEPTH_COMPONENT` or
+    /// `STENCIL_INDEX_WEBGL`: a depth-stencil texture sampled for its stencil, through an
+    /// unsigned integer sampler).
     pub fn tex_parameteri(&mut self, target: u32, pname: u32, param: i32) {
         if self.webgl1_refuses("texParameteri", &[target, pname]) {
             return;
@@ -38,6 +47,7 @@ impl Context {
             return;
         };
         let gated = self.anisotropy_refused(pname);
+        let stencil_texturing = self.extensions.stencil_texturing;
         let p = &mut self
             .objects
             .textures
@@ -56,6 +66,17 @@ impl Context {
                 p.max_level = value as u32;
                 Ok(())
             }
+            DEPTH_STENCIL_TEXTURE_MODE if stencil_texturing => match value as u32 {
+                gl::DEPTH_COMPONENT => {
+                    p.stencil_mode = false;
+                    Ok(())
+                }
+                STENCIL_INDEX => {
+                    p.stencil_mode = true;
+                    Ok(())
+                }
+                _ => Err(ParamError::Value),
+            },
             _ if gated => Err(ParamError::Pname),
             _ => p.sampling.set(pname, value),
         };
@@ -99,6 +120,13 @@ impl Context {
             gl::TEXTURE_BASE_LEVEL => Some(Parameter::Int(p.base_level as i64)),
             gl::TEXTURE_MAX_LEVEL => Some(Parameter::Int(p.max_level as i64)),
             gl::TEXTURE_IMMUTABLE_FORMAT => Some(Parameter::Bool(t.immutable_levels.is_some())),
+            DEPTH_STENCIL_TEXTURE_MODE if self.extensions.stencil_texturing => {
+                Some(Parameter::Enum(if p.stencil_mode {
+                    STENCIL_INDEX
+                } else {
+                    gl::DEPTH_COMPONENT
+                }))
+            }
             gl::TEXTURE_IMMUTABLE_LEVELS => {
                 Some(Parameter::Int(t.immutable_levels.unwrap_or(0) as i64))
             }

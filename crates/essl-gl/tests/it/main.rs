@@ -17,6 +17,7 @@ mod queries;
 mod queries_sync;
 mod render;
 mod scenes;
+mod stencil_texturing;
 mod transform_feedback;
 mod validation;
 mod webgl1_float;

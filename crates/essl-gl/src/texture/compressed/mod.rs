@@ -8,16 +8,17 @@
 //! The blocks are decoded on upload ([`formats`]: block decoders are what no GPU-independent
 //! path in wgpu offers — wgpu's compressed formats need an adapter feature that lavapipe and
 //! most desktop GPUs lack for ETC2, and the others for BC) into an uncompressed level:
-//! sampling then reads what the compressed texture holds, on every adapter. A compressed level keeps its
-//! compressed internal format, so it is neither colour-renderable nor a target of
-//! `texSubImage*`, `copyTex*` or `generateMipmap`.
+//! sampling then reads what the compressed texture holds, on every adapter. A compressed
+//! level keeps its compressed internal format, so it is neither colour-renderable nor a
+//! target of `texSubImage*`, `copyTex*` or `generateMipmap`.
 //!
 //! Validation follows the extensions' specifications and WebGL 2.0 §5.37: the data's length
-//! is exactly the blocks' (`INVALID_VALUE`); S3TC, RGTC and BPTC levels are whole blocks at level 0's scale
-//! (`width << level` a multiple of 4, else `INVALID_OPERATION`); a sub-image starts on a block
-//! and covers whole blocks or reaches the level's edge (`INVALID_OPERATION`; ETC1 takes no
-//! sub-images), and its format
-//! is the level's (`INVALID_OPERATION`); 3D textures take none of these formats.
+//! is exactly the blocks' (`INVALID_VALUE`); S3TC, RGTC and BPTC levels are whole blocks at
+//! level 0's scale (`width << level` a multiple of 4, else `INVALID_OPERATION`); a sub-image
+//! starts on a block and covers whole blocks or reaches the level's edge
+//! (`INVALID_OPERATION`; ETC1 takes no sub-images), and its format is the level's
+//! (`INVALID_OPERATION`, checked before the data's length); 3D textures take none of these
+//! formats.
 
 mod formats;
 
