@@ -13,13 +13,18 @@ import { contextClass } from './realm.js';
 
 const WEBGL = new Set(['webgl', 'webgl2', 'experimental-webgl']);
 
+/** Marks a 2D context whose `drawImage` reads WebGL canvases. */
+const PATCHED = Symbol('essl-gl drawImage');
+
 /** Installs essl-gl into a jsdom `window` (call it before the page's scripts run). */
 export function installInWindow(window) {
   const proto = window.HTMLCanvasElement.prototype;
   const getContext = proto.getContext;
   proto.getContext = function (type, attrs) {
     if (WEBGL.has(`${type}`)) return contextFor(this, type, attrs);
-    return getContext.call(this, type, attrs);
+    const c = getContext.call(this, type, attrs);
+    if (`${type}` === '2d') drawsWebGL(window, c);
+    return c;
   };
   for (const dim of ['width', 'height']) {
     const d = Object.getOwnPropertyDescriptor(proto, dim);
@@ -51,9 +56,9 @@ export function installInWindow(window) {
 }
 
 /**
- * What a page reads of a WebGL canvas: `toDataURL` and `toBlob` give the drawing buffer (a PNG),
- * and a 2D context's `drawImage` draws it (through a 2D canvas holding its pixels), when the
- * DOM library has a 2D canvas (jsdom with the `canvas` package).
+ * What a page reads of a WebGL canvas: `toDataURL` and `toBlob` give the drawing buffer (a
+ * PNG); a 2D context's `drawImage` draws it (`drawsWebGL`) when the DOM library has a 2D
+ * canvas (jsdom with the `canvas` package).
  */
 function patchReadback(window, proto) {
   const toDataURL = proto.toDataURL;
@@ -72,10 +77,18 @@ function patchReadback(window, proto) {
     const blob = n === null ? null : new window.Blob([n.toPng()], { type: 'image/png' });
     setTimeout(() => callback(blob), 0);
   };
-  const c2d = window.CanvasRenderingContext2D?.prototype;
-  if (!c2d || typeof c2d.drawImage !== 'function') return;
-  const drawImage = c2d.drawImage;
-  c2d.drawImage = function (image, ...args) {
+}
+
+/**
+ * Makes the 2D context `c` draw WebGL canvases (`drawImage`) through a 2D canvas holding their
+ * pixels. jsdom's 2D contexts are the `canvas` package's, each with its own `drawImage` that
+ * unwraps jsdom's elements, so each context is wrapped as its canvas hands it out.
+ */
+function drawsWebGL(window, c) {
+  if (!c || typeof c.drawImage !== 'function' || c[PATCHED]) return;
+  c[PATCHED] = true;
+  const drawImage = c.drawImage;
+  c.drawImage = function (image, ...args) {
     const ctx = image && contextOf(image);
     if (!ctx) return drawImage.call(this, image, ...args);
     const n = ctx[NATIVE];
@@ -84,11 +97,11 @@ function patchReadback(window, proto) {
     const copy = window.document.createElement('canvas');
     copy.width = w;
     copy.height = h;
-    const c = copy.getContext('2d');
-    if (c && w > 0 && h > 0) {
-      const data = c.createImageData(w, h);
+    const pixels = copy.getContext('2d');
+    if (pixels && w > 0 && h > 0) {
+      const data = pixels.createImageData(w, h);
       data.data.set(n.drawingBufferPixels());
-      c.putImageData(data, 0, 0);
+      pixels.putImageData(data, 0, 0);
     }
     return drawImage.call(this, copy, ...args);
   };

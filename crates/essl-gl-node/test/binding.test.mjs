@@ -414,7 +414,7 @@ test('a canvas in a document is cleared when the task that drew returns, unless 
   dom.window.close();
 });
 
-test('a WebGL canvas in a document reads back: toDataURL, toBlob and texImage2D from it', async () => {
+test('a WebGL canvas in a document reads back: toDataURL, toBlob, drawImage and texImage2D from it', async () => {
   const { JSDOM } = await import('jsdom');
   const dom = new JSDOM('<!doctype html><body></body>', { runScripts: 'outside-only' });
   installInWindow(dom.window);
@@ -430,6 +430,13 @@ test('a WebGL canvas in a document reads back: toDataURL, toBlob and texImage2D 
   assert.deepEqual([...Buffer.from(url.slice(22), 'base64').subarray(1, 4)], [0x50, 0x4e, 0x47]);
   const blob = await new Promise((r) => source.toBlob(r));
   assert.equal(blob.type, 'image/png');
+  // A 2D context draws it, scaled too.
+  const flat = doc.createElement('canvas');
+  flat.width = 4;
+  flat.height = 4;
+  const c2 = flat.getContext('2d');
+  c2.drawImage(source, 0, 0, 4, 4);
+  assert.deepEqual([...c2.getImageData(3, 3, 1, 1).data], [0, 255, 0, 255]);
   const b = doc.createElement('canvas').getContext('webgl2');
   const tex = b.createTexture();
   b.bindTexture(b.TEXTURE_2D, tex);
