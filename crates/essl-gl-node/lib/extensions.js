@@ -2,7 +2,7 @@
 // and `WEBGL_lose_context`, which the binding implements (a lost context is the binding's
 // state). One object per name and context, as browsers return the same object each time.
 import { frameChanged, loseContext, restoreContext } from './context.js';
-import { NATIVE, VERSION, WebGLShader, argc, i32, i32list, oid, u32 } from './objects.js';
+import { NATIVE, VERSION, WebGLShader, argc, i32, i32list, num, oid, u32 } from './objects.js';
 import { METHODS_2 } from './generated.js';
 
 /** ASTC's block sizes, in the order of their enums. */
@@ -81,6 +81,14 @@ const CONSTANTS = {
   ),
   KHR_parallel_shader_compile: { COMPLETION_STATUS_KHR: 0x91b1 },
   WEBGL_stencil_texturing: { DEPTH_STENCIL_TEXTURE_MODE_WEBGL: 0x90ea, STENCIL_INDEX_WEBGL: 0x1901 },
+  EXT_polygon_offset_clamp: { POLYGON_OFFSET_CLAMP_EXT: 0x8e1b },
+  EXT_depth_clamp: { DEPTH_CLAMP_EXT: 0x864f },
+  WEBGL_polygon_mode: {
+    POLYGON_MODE_WEBGL: 0x0b40,
+    POLYGON_OFFSET_LINE_WEBGL: 0x2a02,
+    LINE_WEBGL: 0x1b01,
+    FILL_WEBGL: 0x1b02,
+  },
   EXT_clip_control: {
     LOWER_LEFT_EXT: 0x8ca1,
     UPPER_LEFT_EXT: 0x8ca2,
@@ -171,15 +179,7 @@ export function extensionObject(ctx, native, name) {
     Object.defineProperty(ext, 'getSupportedProfiles', { value: () => ['ldr'], enumerable: true });
   }
   if (enabled === 'EXT_clip_control') {
-    Object.defineProperty(ext, 'clipControlEXT', {
-      value(origin, depth) {
-        if (arguments.length < 2) throw argc('clipControlEXT', 2, arguments.length);
-        const [a0, a1] = [u32(origin), u32(depth)];
-        const n = ctx[NATIVE];
-        if (n !== null) n.clipControlExt(a0, a1);
-      },
-      enumerable: true,
-    });
+    method(ctx, ext, 'clipControlEXT', 'u32 u32', (n, a) => n.clipControlExt(...a));
   }
   if (enabled === 'WEBGL_debug_shaders') {
     Object.defineProperty(ext, 'getTranslatedShaderSource', {
@@ -193,6 +193,12 @@ export function extensionObject(ctx, native, name) {
   }
   if (enabled === 'WEBGL_multi_draw') multiDrawMethods(ctx, ext);
   if (enabled === 'OES_draw_buffers_indexed') drawBuffersIndexedMethods(ctx, ext);
+  if (enabled === 'EXT_polygon_offset_clamp') {
+    method(ctx, ext, 'polygonOffsetClampEXT', 'num num num', (n, a) => n.polygonOffsetClampExt(...a));
+  }
+  if (enabled === 'WEBGL_polygon_mode') {
+    method(ctx, ext, 'polygonModeWEBGL', 'u32 u32', (n, a) => n.polygonModeWebgl(...a));
+  }
   for (const [own, core] of Object.entries(METHODS[enabled] ?? {})) {
     const f = METHODS_2[core];
     Object.defineProperty(ext, own, { value: (...args) => f.apply(ctx, args), enumerable: true });
@@ -206,7 +212,6 @@ export function extensionObject(ctx, native, name) {
  * native side checks the offsets and `drawcount`.
  */
 function multiDrawMethods(ctx, ext) {
-  // Name, then per argument: 'list', 'u32' or 'i32'.
   const calls = {
     multiDrawArraysWEBGL: ['multiDrawArrays', 'u32 list u32 list u32 i32'],
     multiDrawArraysInstancedWEBGL: ['multiDrawArraysInstanced', 'u32 list u32 list u32 list u32 i32'],
@@ -217,21 +222,7 @@ function multiDrawMethods(ctx, ext) {
     ],
   };
   for (const [name, [native, signature]] of Object.entries(calls)) {
-    const kinds = signature.split(' ');
-    // A named function, so that `drawFunc.name` reads as in a browser.
-    const f = {
-      [name](...args) {
-        if (args.length < kinds.length) throw argc(name, kinds.length, args.length);
-        const converted = kinds.map((k, i) => {
-          if (k === 'list') return i32list(args[i], name, i + 1);
-          return k === 'u32' ? u32(args[i]) : i32(args[i]);
-        });
-        const n = ctx[NATIVE];
-        if (n !== null) n[native](...converted);
-        frameChanged(ctx);
-      },
-    }[name];
-    Object.defineProperty(ext, name, { value: f, enumerable: true });
+    method(ctx, ext, name, signature, (n, a) => n[native](...a), true);
   }
 }
 
@@ -240,8 +231,6 @@ function multiDrawMethods(ctx, ext) {
  * one-equation and one-function forms are the separate ones with the same value twice.
  */
 function drawBuffersIndexedMethods(ctx, ext) {
-  // Name: the IDL's argument types ('u32' or 'bool'), then the native call of the converted
-  // arguments.
   const calls = {
     enableiOES: ['u32 u32', (n, [t, i]) => n.enableIndexed(t, i, true)],
     disableiOES: ['u32 u32', (n, [t, i]) => n.enableIndexed(t, i, false)],
@@ -255,18 +244,34 @@ function drawBuffersIndexedMethods(ctx, ext) {
     ],
     colorMaskiOES: ['u32 bool bool bool bool', (n, [i, ...m]) => n.colorMaskIndexed(i, ...m)],
   };
-  for (const [name, [signature, call]] of Object.entries(calls)) {
-    const kinds = signature.split(' ');
-    const f = {
-      [name](...args) {
-        if (args.length < kinds.length) throw argc(name, kinds.length, args.length);
-        const converted = kinds.map((k, i) => (k === 'bool' ? !!args[i] : u32(args[i])));
-        const n = ctx[NATIVE];
-        if (n !== null) call(n, converted);
-      },
-    }[name];
-    Object.defineProperty(ext, name, { value: f, enumerable: true });
-  }
+  for (const [name, [signature, call]] of Object.entries(calls)) method(ctx, ext, name, signature, call);
+}
+
+/**
+ * Defines extension method `name` on `ext`: its arguments converted as `signature` lists their
+ * IDL types (`u32`, `i32`, `num`, `bool`, `list`: an `Int32Array` or a sequence of `GLint`),
+ * then `call(native, converted)`; a draw (`draws`) ends the frame as a core draw does. A named
+ * function, so that `f.name` reads as in a browser.
+ */
+function method(ctx, ext, name, signature, call, draws = false) {
+  const kinds = signature.split(' ');
+  const convert = {
+    u32,
+    i32,
+    num,
+    bool: (v) => !!v,
+    list: (v, i) => i32list(v, name, i + 1),
+  };
+  const f = {
+    [name](...args) {
+      if (args.length < kinds.length) throw argc(name, kinds.length, args.length);
+      const converted = kinds.map((k, i) => convert[k](args[i], i));
+      const n = ctx[NATIVE];
+      if (n !== null) call(n, converted);
+      if (draws) frameChanged(ctx);
+    },
+  }[name];
+  Object.defineProperty(ext, name, { value: f, enumerable: true });
 }
 
 function canonical(name) {

@@ -103,7 +103,7 @@ export function argc(name, required, given) {
 }
 
 /** ToNumber as WebIDL's numeric conversions start (a Symbol or BigInt is a `TypeError`). */
-function num(v) {
+export function num(v) {
   if (typeof v === 'number') return v;
   if (typeof v === 'bigint' || typeof v === 'symbol') {
     throw new TypeError(`Cannot convert a ${typeof v} to a number`);

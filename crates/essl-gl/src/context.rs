@@ -88,7 +88,9 @@ const WANTED_FEATURES: wgpu::Features = wgpu::Features::VERTEX_WRITABLE_STORAGE
     .union(wgpu::Features::FLOAT32_FILTERABLE)
     .union(wgpu::Features::FLOAT32_BLENDABLE)
     .union(wgpu::Features::RG11B10UFLOAT_RENDERABLE)
-    .union(wgpu::Features::CLIP_DISTANCES);
+    .union(wgpu::Features::CLIP_DISTANCES)
+    .union(wgpu::Features::DEPTH_CLIP_CONTROL)
+    .union(wgpu::Features::POLYGON_MODE_LINE);
 
 impl Context {
     /// Creates a context with an offscreen default framebuffer of `width` × `height` pixels
@@ -121,6 +123,7 @@ impl Context {
         }))
         .map_err(|e| ContextError::NoAdapter(e.to_string()))?;
         let info = adapter.get_info();
+        let downlevel = adapter.get_downlevel_capabilities().flags;
         let (device, queue) = pollster::block_on(adapter.request_device(&wgpu::DeviceDescriptor {
             label: Some("essl-gl"),
             required_features: adapter.features() & WANTED_FEATURES,
@@ -133,19 +136,33 @@ impl Context {
             adapter: info.name.clone(),
             source,
         })?;
-        Context::from_device(device, queue, width, height, attributes)
+        Context::on_device(device, queue, width, height, attributes, downlevel)
     }
 
     /// Creates a context on a caller's wgpu device and queue (an application that already
     /// renders with wgpu). essl-gl uses the device's features where they help (transform
     /// feedback needs `VERTEX_WRITABLE_STORAGE`) and records wgpu's validation errors in
-    /// [`Context::backend_errors`] instead of panicking.
+    /// [`Context::backend_errors`] instead of panicking. The device says nothing of its
+    /// adapter's downlevel abilities, so `EXT_polygon_offset_clamp` is not offered.
     pub fn from_device(
         device: wgpu::Device,
         queue: wgpu::Queue,
         width: u32,
         height: u32,
         attributes: ContextAttributes,
+    ) -> Result<Context, ContextError> {
+        let none = wgpu::DownlevelFlags::empty();
+        Context::on_device(device, queue, width, height, attributes, none)
+    }
+
+    /// [`Context::from_device`] with the adapter's downlevel abilities.
+    fn on_device(
+        device: wgpu::Device,
+        queue: wgpu::Queue,
+        width: u32,
+        height: u32,
+        attributes: ContextAttributes,
+        downlevel: wgpu::DownlevelFlags,
     ) -> Result<Context, ContextError> {
         let info = device.adapter_info();
         let limits = device.limits();
@@ -181,6 +198,7 @@ impl Context {
             queue,
             info,
             limits,
+            downlevel,
         };
         let fb = DefaultFramebuffer::new(&gpu, width, height, attributes);
         let mut ctx = Context {
@@ -344,6 +362,7 @@ impl Context {
             v.push(Extension::DebugShaders);
             v.push(Extension::ClipControl);
             v.push(Extension::MultiDraw);
+            v.extend(self.raster_extensions());
             return v;
         }
         let mut v = vec![Extension::ColorBufferFloat, Extension::ColorBufferHalfFloat];
@@ -361,10 +380,34 @@ impl Context {
         v.push(Extension::MultiDraw);
         v.push(Extension::DrawBuffersIndexed);
         v.push(Extension::StencilTexturing);
+        v.extend(self.raster_extensions());
         if features.contains(wgpu::Features::CLIP_DISTANCES) {
             v.push(Extension::ClipCullDistance);
         }
         v
+    }
+
+    /// The rasterization extensions the adapter can do (`state/raster.rs`).
+    fn raster_extensions(&self) -> Vec<Extension> {
+        let features = self.gpu.device.features();
+        let downlevel = &self.gpu.downlevel;
+        [
+            (
+                downlevel.contains(wgpu::DownlevelFlags::DEPTH_BIAS_CLAMP),
+                Extension::PolygonOffsetClamp,
+            ),
+            (
+                features.contains(wgpu::Features::DEPTH_CLIP_CONTROL),
+                Extension::DepthClamp,
+            ),
+            (
+                features.contains(wgpu::Features::POLYGON_MODE_LINE),
+                Extension::PolygonMode,
+            ),
+        ]
+        .into_iter()
+        .filter_map(|(on, e)| on.then_some(e))
+        .collect()
     }
 
     /// Whether 32-bit float attachments blend (`EXT_float_blend`): the adapter's
@@ -394,6 +437,18 @@ impl Context {
         }
         if e == Extension::ClipControl {
             self.extensions.clip_control = true;
+            return Some(e);
+        }
+        match e {
+            Extension::PolygonOffsetClamp => self.extensions.polygon_offset_clamp = true,
+            Extension::DepthClamp => self.extensions.depth_clamp = true,
+            Extension::PolygonMode => self.extensions.polygon_mode = true,
+            _ => {}
+        }
+        if matches!(
+            e,
+            Extension::PolygonOffsetClamp | Extension::DepthClamp | Extension::PolygonMode
+        ) {
             return Some(e);
         }
         if e == Extension::MultiDraw {

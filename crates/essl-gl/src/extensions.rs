@@ -15,9 +15,12 @@
 //! minification, magnification and mipmap filters are all linear, as wgpu requires). WebGL 2
 //! contexts offer `WEBGL_clip_cull_distance` where the adapter has clip distances (eight; no
 //! cull distances: `state/clip_distance.rs`), `OES_draw_buffers_indexed` (`state/blend.rs`)
-//! and `WEBGL_stencil_texturing` (`texture/params.rs`). Both offer `WEBGL_debug_shaders` (a compiled
-//! shader's lowered module as WGSL), `EXT_clip_control` (`state/clip_control.rs`) and
-//! `WEBGL_multi_draw` (`draw/multi.rs`). WebGL 1 contexts offer their own list besides, float
+//! and `WEBGL_stencil_texturing` (`texture/params.rs`). Both offer `WEBGL_debug_shaders` (a
+//! compiled shader's lowered module as WGSL), `EXT_clip_control` (`state/clip_control.rs`)
+//! and `WEBGL_multi_draw` (`draw/multi.rs`), and where the adapter can,
+//! `EXT_polygon_offset_clamp`, `EXT_depth_clamp` and `WEBGL_polygon_mode` (`state/raster.rs`).
+//! WebGL 1 contexts offer their
+//! own list besides, float
 //! textures among them (`webgl1/float.rs`).
 
 /// The WebGL extensions a context has turned on.
@@ -43,6 +46,12 @@ pub(crate) struct Extensions {
     pub(crate) draw_buffers_indexed: bool,
     /// `WEBGL_stencil_texturing`.
     pub(crate) stencil_texturing: bool,
+    /// `EXT_polygon_offset_clamp`.
+    pub(crate) polygon_offset_clamp: bool,
+    /// `EXT_depth_clamp`.
+    pub(crate) depth_clamp: bool,
+    /// `WEBGL_polygon_mode`.
+    pub(crate) polygon_mode: bool,
 }
 
 /// `EXT_texture_filter_anisotropic`'s texture and sampler parameter.
@@ -168,6 +177,13 @@ pub enum Extension {
     /// `WEBGL_stencil_texturing` (WebGL 2): a depth-stencil texture sampled for its stencil
     /// (`DEPTH_STENCIL_TEXTURE_MODE_WEBGL`).
     StencilTexturing,
+    /// `EXT_polygon_offset_clamp`:
+    /// [`Context::polygon_offset_clamp_ext`](crate::Context::polygon_offset_clamp_ext).
+    PolygonOffsetClamp,
+    /// `EXT_depth_clamp`: the `DEPTH_CLAMP_EXT` capability.
+    DepthClamp,
+    /// `WEBGL_polygon_mode`: [`Context::polygon_mode_webgl`](crate::Context::polygon_mode_webgl).
+    PolygonMode,
 }
 
 impl Extension {
@@ -207,6 +223,9 @@ impl Extension {
             Extension::MultiDraw => "WEBGL_multi_draw",
             Extension::DrawBuffersIndexed => "OES_draw_buffers_indexed",
             Extension::StencilTexturing => "WEBGL_stencil_texturing",
+            Extension::PolygonOffsetClamp => "EXT_polygon_offset_clamp",
+            Extension::DepthClamp => "EXT_depth_clamp",
+            Extension::PolygonMode => "WEBGL_polygon_mode",
         }
     }
 }

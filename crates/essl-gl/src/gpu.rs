@@ -7,6 +7,9 @@ pub(crate) struct Gpu {
     pub(crate) queue: wgpu::Queue,
     pub(crate) info: wgpu::AdapterInfo,
     pub(crate) limits: wgpu::Limits,
+    /// What the adapter can do beyond WebGPU's baseline that no feature names (a clamped
+    /// depth bias).
+    pub(crate) downlevel: wgpu::DownlevelFlags,
 }
 
 impl Gpu {

@@ -155,6 +155,26 @@ impl NativeContext {
         Ok(())
     }
 
+    /// `EXT_polygon_offset_clamp.polygonOffsetClampEXT`.
+    #[napi(catch_unwind)]
+    pub fn polygon_offset_clamp_ext(
+        &mut self,
+        factor: f64,
+        units: f64,
+        clamp: f64,
+    ) -> napi::Result<()> {
+        self.gl()?
+            .polygon_offset_clamp_ext(factor as f32, units as f32, clamp as f32);
+        Ok(())
+    }
+
+    /// `WEBGL_polygon_mode.polygonModeWEBGL`.
+    #[napi(catch_unwind)]
+    pub fn polygon_mode_webgl(&mut self, face: u32, mode: u32) -> napi::Result<()> {
+        self.gl()?.polygon_mode_webgl(face, mode);
+        Ok(())
+    }
+
     /// `OES_draw_buffers_indexed.enableiOES` / `disableiOES`.
     #[napi(catch_unwind)]
     pub fn enable_indexed(&mut self, target: u32, index: u32, on: bool) -> napi::Result<()> {

@@ -206,13 +206,20 @@ impl Context {
         } else {
             (false, wgpu::CompareFunction::Always)
         };
-        let depth_bias = if s.polygon_offset_fill && call.triangles {
+        // Triangles drawn as lines (WEBGL_polygon_mode) take POLYGON_OFFSET_LINE's switch.
+        let offset = if s.polygon_line {
+            s.polygon_offset_line
+        } else {
+            s.polygon_offset_fill
+        };
+        let depth_bias = if offset && call.triangles {
             (
                 s.polygon_offset_units as i32,
                 s.polygon_offset_factor.to_bits(),
+                s.polygon_offset_clamp.to_bits(),
             )
         } else {
-            (0, 0f32.to_bits())
+            (0, 0f32.to_bits(), 0f32.to_bits())
         };
         let key = PipelineKey {
             program,
@@ -232,6 +239,8 @@ impl Context {
             depth_write,
             depth_compare,
             depth_bias,
+            unclipped_depth: s.depth_clamp,
+            polygon_line: s.polygon_line && call.triangles,
             blends,
             rgb_targets: self.rgb_draw_buffers(),
             slots: groups.slot_bindings.clone(),

@@ -51,8 +51,12 @@ pub(crate) struct PipelineKey {
     pub(crate) front_face: wgpu::FrontFace,
     pub(crate) depth_write: bool,
     pub(crate) depth_compare: wgpu::CompareFunction,
-    /// Constant and slope-scale (as bits) depth bias.
-    pub(crate) depth_bias: (i32, u32),
+    /// Constant, slope-scale and clamp (as bits) depth bias.
+    pub(crate) depth_bias: (i32, u32, u32),
+    /// Depth clamped rather than clipped (`EXT_depth_clamp`).
+    pub(crate) unclipped_depth: bool,
+    /// Triangles drawn as their edges (`WEBGL_polygon_mode`).
+    pub(crate) polygon_line: bool,
     /// Each draw buffer's blend state and write mask, as `targets` lists them.
     pub(crate) blends: Vec<(Option<wgpu::BlendState>, wgpu::ColorWrites)>,
     /// Draw buffers whose image is RGB (stored with a fourth channel), bit `i` for draw
@@ -477,8 +481,12 @@ impl PipelineCache {
                     strip_index_format: key.strip_index_format,
                     front_face: key.front_face,
                     cull_mode: key.cull_mode,
-                    unclipped_depth: false,
-                    polygon_mode: wgpu::PolygonMode::Fill,
+                    unclipped_depth: key.unclipped_depth,
+                    polygon_mode: if key.polygon_line {
+                        wgpu::PolygonMode::Line
+                    } else {
+                        wgpu::PolygonMode::Fill
+                    },
                     conservative: false,
                 },
                 depth_stencil: key.depth_format.map(|format| wgpu::DepthStencilState {
@@ -497,7 +505,7 @@ impl PipelineCache {
                     bias: wgpu::DepthBiasState {
                         constant: key.depth_bias.0,
                         slope_scale: f32::from_bits(key.depth_bias.1),
-                        clamp: 0.0,
+                        clamp: f32::from_bits(key.depth_bias.2),
                     },
                 }),
                 multisample: wgpu::MultisampleState {

@@ -60,6 +60,7 @@ impl Context {
             .state_parameter(pname)
             .or_else(|| self.clip_distance_parameter(pname))
             .or_else(|| self.clip_control_parameter(pname))
+            .or_else(|| self.raster_parameter(pname))
             .or_else(|| self.binding_parameter(pname))
             .or_else(|| self.pixel_store_parameter(pname))
             .or_else(|| self.framebuffer_parameter(pname))

@@ -6,6 +6,7 @@
 mod blend;
 mod clip_control;
 mod clip_distance;
+mod raster;
 mod stencil;
 mod values;
 
@@ -107,6 +108,10 @@ impl Context {
             }
             return;
         }
+        if let Some(flag) = self.raster_capability(cap) {
+            *flag = value;
+            return;
+        }
         match capability_flag!(self.state, cap, mut) {
             Some(flag) => *flag = value,
             None => self.error(
@@ -146,6 +151,9 @@ impl Context {
         }
         if cap == gl::BLEND {
             return self.state.draw_buffers[0].blend;
+        }
+        if let Some(on) = self.raster_capability_on(cap) {
+            return on;
         }
         match capability_flag!(self.state, cap) {
             Some(flag) => *flag,
@@ -203,10 +211,12 @@ impl Context {
         self.state.blend_color = [red, green, blue, alpha];
     }
 
-    /// Sets the depth offset of `POLYGON_OFFSET_FILL` (`polygonOffset`).
+    /// Sets the depth offset of `POLYGON_OFFSET_FILL` (`polygonOffset`), not clamped (see
+    /// [`Context::polygon_offset_clamp_ext`]).
     pub fn polygon_offset(&mut self, factor: f32, units: f32) {
         self.state.polygon_offset_factor = factor;
         self.state.polygon_offset_units = units;
+        self.state.polygon_offset_clamp = 0.0;
     }
 
     /// Sets how many samples `SAMPLE_COVERAGE` keeps (`sampleCoverage`): with the capability

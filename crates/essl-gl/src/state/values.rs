@@ -33,6 +33,14 @@ pub(crate) struct RenderState {
     pub(crate) polygon_offset_fill: bool,
     pub(crate) polygon_offset_factor: f32,
     pub(crate) polygon_offset_units: f32,
+    /// `polygonOffsetClampEXT`'s clamp (0: none).
+    pub(crate) polygon_offset_clamp: f32,
+    /// `POLYGON_OFFSET_LINE_WEBGL`: polygon offset for triangles drawn as lines.
+    pub(crate) polygon_offset_line: bool,
+    /// `polygonModeWEBGL(FRONT_AND_BACK, LINE_WEBGL)`: triangles drawn as their edges.
+    pub(crate) polygon_line: bool,
+    /// `DEPTH_CLAMP_EXT`: depth clamped to the depth range instead of clipped.
+    pub(crate) depth_clamp: bool,
     pub(crate) rasterizer_discard: bool,
     pub(crate) dither: bool,
     pub(crate) stencil_test: bool,
@@ -74,6 +82,10 @@ impl RenderState {
             polygon_offset_fill: false,
             polygon_offset_factor: 0.0,
             polygon_offset_units: 0.0,
+            polygon_offset_clamp: 0.0,
+            polygon_offset_line: false,
+            polygon_line: false,
+            depth_clamp: false,
             rasterizer_discard: false,
             dither: true,
             stencil_test: false,

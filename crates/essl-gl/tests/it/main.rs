@@ -15,6 +15,7 @@ mod glsl;
 mod multi_draw;
 mod queries;
 mod queries_sync;
+mod raster;
 mod render;
 mod scenes;
 mod stencil_texturing;
