@@ -360,6 +360,7 @@ impl Context {
             v.extend(crate::extensions::COMPRESSED_EXTENSIONS);
             v.push(Extension::TextureFilterAnisotropic);
             v.push(Extension::DebugShaders);
+            v.push(Extension::DebugRendererInfo);
             v.push(Extension::ClipControl);
             v.push(Extension::MultiDraw);
             v.extend(self.raster_extensions());
@@ -376,15 +377,25 @@ impl Context {
         v.extend(crate::extensions::COMPRESSED_EXTENSIONS);
         v.push(Extension::TextureFilterAnisotropic);
         v.push(Extension::DebugShaders);
+        v.push(Extension::DebugRendererInfo);
         v.push(Extension::ClipControl);
         v.push(Extension::MultiDraw);
         v.push(Extension::DrawBuffersIndexed);
         v.push(Extension::StencilTexturing);
+        v.push(Extension::ConservativeDepth);
         v.extend(self.raster_extensions());
         if features.contains(wgpu::Features::CLIP_DISTANCES) {
             v.push(Extension::ClipCullDistance);
         }
         v
+    }
+
+    /// Lets the shaders compiled from now on use `e`.
+    fn enable_shader_extension(&mut self, e: essl::Extension) {
+        let shaders = &mut self.linker.shaders.extensions;
+        if !shaders.contains(&e) {
+            shaders.push(e);
+        }
     }
 
     /// The rasterization extensions the adapter can do (`state/raster.rs`).
@@ -443,11 +454,15 @@ impl Context {
             Extension::PolygonOffsetClamp => self.extensions.polygon_offset_clamp = true,
             Extension::DepthClamp => self.extensions.depth_clamp = true,
             Extension::PolygonMode => self.extensions.polygon_mode = true,
+            Extension::DebugRendererInfo => self.extensions.debug_renderer_info = true,
             _ => {}
         }
         if matches!(
             e,
-            Extension::PolygonOffsetClamp | Extension::DepthClamp | Extension::PolygonMode
+            Extension::PolygonOffsetClamp
+                | Extension::DepthClamp
+                | Extension::PolygonMode
+                | Extension::DebugRendererInfo
         ) {
             return Some(e);
         }
@@ -457,10 +472,7 @@ impl Context {
                 self.enable_webgl1_extension(Extension::AngleInstancedArrays);
             }
             self.extensions.multi_draw = true;
-            let shaders = &mut self.linker.shaders.extensions;
-            if !shaders.contains(&essl::Extension::WebglMultiDraw) {
-                shaders.push(essl::Extension::WebglMultiDraw);
-            }
+            self.enable_shader_extension(essl::Extension::WebglMultiDraw);
             return Some(e);
         }
         if self.webgl1.on {
@@ -482,10 +494,10 @@ impl Context {
             Extension::StencilTexturing => x.stencil_texturing = true,
             Extension::ClipCullDistance => {
                 x.clip_cull_distance = true;
-                let shaders = &mut self.linker.shaders.extensions;
-                if !shaders.contains(&essl::Extension::WebglClipCullDistance) {
-                    shaders.push(essl::Extension::WebglClipCullDistance);
-                }
+                self.enable_shader_extension(essl::Extension::WebglClipCullDistance);
+            }
+            Extension::ConservativeDepth => {
+                self.enable_shader_extension(essl::Extension::ExtConservativeDepth)
             }
             webgl1 => self.enable_webgl1_extension(webgl1),
         }

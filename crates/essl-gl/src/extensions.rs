@@ -14,9 +14,10 @@
 //! `EXT_texture_filter_anisotropic` (wgpu's anisotropy clamp, up to 16, where the
 //! minification, magnification and mipmap filters are all linear, as wgpu requires). WebGL 2
 //! contexts offer `WEBGL_clip_cull_distance` where the adapter has clip distances (eight; no
-//! cull distances: `state/clip_distance.rs`), `OES_draw_buffers_indexed` (`state/blend.rs`)
-//! and `WEBGL_stencil_texturing` (`texture/params.rs`). Both offer `WEBGL_debug_shaders` (a
-//! compiled shader's lowered module as WGSL), `EXT_clip_control` (`state/clip_control.rs`)
+//! cull distances: `state/clip_distance.rs`), `OES_draw_buffers_indexed` (`state/blend.rs`),
+//! `WEBGL_stencil_texturing` (`texture/params.rs`) and `EXT_conservative_depth` (shaders only). Both offer `WEBGL_debug_shaders` (a
+//! compiled shader's lowered module as WGSL), `WEBGL_debug_renderer_info` (the adapter's
+//! vendor and name), `EXT_clip_control` (`state/clip_control.rs`)
 //! and `WEBGL_multi_draw` (`draw/multi.rs`), and where the adapter can,
 //! `EXT_polygon_offset_clamp`, `EXT_depth_clamp` and `WEBGL_polygon_mode` (`state/raster.rs`).
 //! WebGL 1 contexts offer their
@@ -52,6 +53,31 @@ pub(crate) struct Extensions {
     pub(crate) depth_clamp: bool,
     /// `WEBGL_polygon_mode`.
     pub(crate) polygon_mode: bool,
+    /// `WEBGL_debug_renderer_info`.
+    pub(crate) debug_renderer_info: bool,
+}
+
+/// `WEBGL_debug_renderer_info`'s `getParameter` name: the adapter's vendor.
+pub(crate) const UNMASKED_VENDOR: u32 = 0x9245;
+/// `WEBGL_debug_renderer_info`'s `getParameter` name: the adapter's name.
+pub(crate) const UNMASKED_RENDERER: u32 = 0x9246;
+
+/// The vendor `UNMASKED_VENDOR_WEBGL` names: the company of the adapter's PCI (or Vulkan)
+/// vendor id, else its driver's name.
+pub(crate) fn unmasked_vendor(info: &wgpu::AdapterInfo) -> String {
+    let known = match info.vendor {
+        0x1002 | 0x1022 => "AMD",
+        0x10DE => "NVIDIA",
+        0x8086 => "Intel",
+        0x13B5 => "ARM",
+        0x5143 => "Qualcomm",
+        0x106B => "Apple",
+        0x1010 => "Imagination Technologies",
+        // VK_VENDOR_ID_MESA: lavapipe and Mesa's other software drivers.
+        0x10005 => "Mesa",
+        _ => return info.driver.clone(),
+    };
+    known.to_owned()
 }
 
 /// `EXT_texture_filter_anisotropic`'s texture and sampler parameter.
@@ -146,6 +172,8 @@ pub enum Extension {
     WebglDepthTexture,
     /// `EXT_sRGB` (WebGL 1).
     ExtSrgb,
+    /// `OES_fbo_render_mipmap` (WebGL 1): framebuffers attach any level of a texture.
+    OesFboRenderMipmap,
     /// `WEBGL_compressed_texture_s3tc`.
     CompressedS3tc,
     /// `WEBGL_compressed_texture_s3tc_srgb`.
@@ -184,6 +212,12 @@ pub enum Extension {
     DepthClamp,
     /// `WEBGL_polygon_mode`: [`Context::polygon_mode_webgl`](crate::Context::polygon_mode_webgl).
     PolygonMode,
+    /// `WEBGL_debug_renderer_info`: the adapter's vendor and name
+    /// (`UNMASKED_VENDOR_WEBGL`, `UNMASKED_RENDERER_WEBGL`).
+    DebugRendererInfo,
+    /// `EXT_conservative_depth` (WebGL 2): `layout(depth_any | depth_greater | depth_less)` on
+    /// `gl_FragDepth` in shaders.
+    ConservativeDepth,
 }
 
 impl Extension {
@@ -209,6 +243,7 @@ impl Extension {
             Extension::WebglColorBufferFloat => "WEBGL_color_buffer_float",
             Extension::WebglDepthTexture => "WEBGL_depth_texture",
             Extension::ExtSrgb => "EXT_sRGB",
+            Extension::OesFboRenderMipmap => "OES_fbo_render_mipmap",
             Extension::CompressedS3tc => "WEBGL_compressed_texture_s3tc",
             Extension::CompressedS3tcSrgb => "WEBGL_compressed_texture_s3tc_srgb",
             Extension::CompressedEtc => "WEBGL_compressed_texture_etc",
@@ -226,6 +261,8 @@ impl Extension {
             Extension::PolygonOffsetClamp => "EXT_polygon_offset_clamp",
             Extension::DepthClamp => "EXT_depth_clamp",
             Extension::PolygonMode => "WEBGL_polygon_mode",
+            Extension::DebugRendererInfo => "WEBGL_debug_renderer_info",
+            Extension::ConservativeDepth => "EXT_conservative_depth",
         }
     }
 }

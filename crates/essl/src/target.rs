@@ -71,7 +71,8 @@ impl Target {
 
 /// A WebGL extension that adds to the shading language, as a context enables it: the WebGL 1
 /// extensions add to GLSL ES 1.00 in a WebGL 1 context; `WEBGL_clip_cull_distance` adds to
-/// GLSL ES 3.00 in a WebGL 2 context; `WEBGL_multi_draw` adds to both languages in both.
+/// GLSL ES 3.00 in a WebGL 2 context (`WEBGL_clip_cull_distance`, `EXT_conservative_depth`);
+/// `WEBGL_multi_draw` adds to both languages in both.
 #[non_exhaustive]
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
 pub enum Extension {
@@ -91,17 +92,22 @@ pub enum Extension {
     /// language (`GL_ANGLE_multi_draw` in shaders), the index of the draw within a multi-draw
     /// call and 0 for any other draw.
     WebglMultiDraw,
+    /// `EXT_conservative_depth` (WebGL 2): `layout(depth_any | depth_greater | depth_less) out
+    /// float gl_FragDepth;` in GLSL ES 3.00 fragment shaders, a promise about how the shader
+    /// moves depth (WebGL's extension leaves out `depth_unchanged`).
+    ExtConservativeDepth,
 }
 
 impl Extension {
     /// Every extension essl knows.
-    pub const ALL: [Extension; 6] = [
+    pub const ALL: [Extension; 7] = [
         Extension::OesStandardDerivatives,
         Extension::ExtShaderTextureLod,
         Extension::ExtFragDepth,
         Extension::WebglDrawBuffers,
         Extension::WebglClipCullDistance,
         Extension::WebglMultiDraw,
+        Extension::ExtConservativeDepth,
     ];
 
     /// Whether a context of `target` offers it: the WebGL 1 extensions only WebGL 1 (WebGL 2
@@ -109,7 +115,9 @@ impl Extension {
     pub fn offered_by(self, target: Target) -> bool {
         match self {
             Extension::WebglMultiDraw => true,
-            Extension::WebglClipCullDistance => target == Target::WebGl2,
+            Extension::WebglClipCullDistance | Extension::ExtConservativeDepth => {
+                target == Target::WebGl2
+            }
             _ => target == Target::WebGl1,
         }
     }
@@ -131,6 +139,7 @@ impl Extension {
             Extension::WebglDrawBuffers => "GL_EXT_draw_buffers",
             Extension::WebglClipCullDistance => "GL_ANGLE_clip_cull_distance",
             Extension::WebglMultiDraw => "GL_ANGLE_multi_draw",
+            Extension::ExtConservativeDepth => "GL_EXT_conservative_depth",
         }
     }
 
@@ -143,6 +152,7 @@ impl Extension {
             Extension::WebglDrawBuffers => "WEBGL_draw_buffers",
             Extension::WebglClipCullDistance => "WEBGL_clip_cull_distance",
             Extension::WebglMultiDraw => "WEBGL_multi_draw",
+            Extension::ExtConservativeDepth => "EXT_conservative_depth",
         }
     }
 

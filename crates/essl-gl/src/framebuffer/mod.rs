@@ -271,6 +271,11 @@ impl Context {
             self.error(gl::INVALID_VALUE, function, format_args!("level {level}"));
             return None;
         }
+        if self.webgl1.on && level != 0 && !self.webgl1.fbo_render_mipmap {
+            let what = "WebGL 1 attaches level 0 only, without OES_fbo_render_mipmap";
+            self.error(gl::INVALID_VALUE, function, what);
+            return None;
+        }
         Some(t.id)
     }
 

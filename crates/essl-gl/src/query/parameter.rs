@@ -395,6 +395,12 @@ impl Context {
             gl::SHADING_LANGUAGE_VERSION => Parameter::String(SHADING_LANGUAGE_VERSION.to_owned()),
             gl::VENDOR => Parameter::String(VENDOR.to_owned()),
             gl::RENDERER => Parameter::String(format!("essl-gl on {}", self.gpu.info.name)),
+            crate::extensions::UNMASKED_VENDOR if self.extensions.debug_renderer_info => {
+                Parameter::String(crate::extensions::unmasked_vendor(&self.gpu.info))
+            }
+            crate::extensions::UNMASKED_RENDERER if self.extensions.debug_renderer_info => {
+                Parameter::String(self.gpu.info.name.clone())
+            }
             _ => return None,
         })
     }

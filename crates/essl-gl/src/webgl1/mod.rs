@@ -43,11 +43,13 @@ pub(crate) struct Webgl1 {
     pub(crate) color_buffer_half_float: bool,
     pub(crate) depth_texture: bool,
     pub(crate) srgb: bool,
+    /// `OES_fbo_render_mipmap`: a framebuffer may attach a texture level other than 0.
+    pub(crate) fbo_render_mipmap: bool,
 }
 
 /// The extensions a WebGL 1 context offers (`EXT_float_blend` and `OES_texture_float_linear`
 /// too, where the adapter blends and filters 32-bit floats).
-pub(crate) const WEBGL1_EXTENSIONS: [Extension; 15] = [
+pub(crate) const WEBGL1_EXTENSIONS: [Extension; 16] = [
     Extension::AngleInstancedArrays,
     Extension::ColorBufferHalfFloat,
     Extension::ExtBlendMinmax,
@@ -63,6 +65,7 @@ pub(crate) const WEBGL1_EXTENSIONS: [Extension; 15] = [
     Extension::WebglDrawBuffers,
     Extension::WebglDepthTexture,
     Extension::ExtSrgb,
+    Extension::OesFboRenderMipmap,
 ];
 
 impl Context {
@@ -103,6 +106,7 @@ impl Context {
             Extension::OesTextureHalfFloatLinear => w.texture_half_float_linear = true,
             Extension::WebglDepthTexture => w.depth_texture = true,
             Extension::ExtSrgb => w.srgb = true,
+            Extension::OesFboRenderMipmap => w.fbo_render_mipmap = true,
             Extension::TextureFloatLinear => self.extensions.texture_float_linear = true,
             _ => {}
         }

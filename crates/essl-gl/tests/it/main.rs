@@ -18,6 +18,7 @@ mod queries_sync;
 mod raster;
 mod render;
 mod scenes;
+mod small_extensions;
 mod stencil_texturing;
 mod transform_feedback;
 mod validation;

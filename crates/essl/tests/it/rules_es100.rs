@@ -391,3 +391,64 @@ void main() {
         },
     );
 }
+
+#[test]
+fn webgl2_conservative_depth_layouts_where_the_shader_enables_them() {
+    let fs = |layout: &str, directive: bool| {
+        format!(
+            "#version 300 es\n{}precision mediump float;\nout vec4 o;\nlayout ({layout}) out float gl_FragDepth;\nvoid main() {{ o = vec4(1.0); gl_FragDepth = 0.5; }}\n",
+            if directive {
+                "#extension GL_EXT_conservative_depth : enable\n"
+            } else {
+                ""
+            }
+        )
+    };
+    let compile = |src: String| {
+        essl::compile(
+            essl::source::SourceFile::new("depth", src.as_str()),
+            Stage::Fragment,
+            &CompileOptions::default(),
+        )
+    };
+    for layout in ["depth_any", "depth_greater", "depth_less"] {
+        let sh = compile(fs(layout, true));
+        assert!(sh.ok(), "{layout}: {:?}", sh.diagnostics);
+        assert!(
+            !compile(fs(layout, false)).ok(),
+            "{layout} without the directive"
+        );
+    }
+    // WebGL's EXT_conservative_depth has no depth_unchanged.
+    let sh = compile(fs("depth_unchanged", true));
+    assert!(!sh.ok());
+    assert!(
+        sh.diagnostics[0].message.contains("depth_any"),
+        "{:?}",
+        sh.diagnostics
+    );
+}
+
+#[test]
+fn draw_id_where_the_shader_enables_it_in_both_languages() {
+    for (version, input) in [("#version 300 es\n", "in"), ("", "attribute")] {
+        let vs = format!(
+            "{version}#extension GL_ANGLE_multi_draw : require\n{input} vec4 p;\nvoid main() {{ gl_Position = p * float(gl_DrawID); }}\n"
+        );
+        let sh = essl::compile(
+            essl::source::SourceFile::new("draw_id", vs.as_str()),
+            Stage::Vertex,
+            &CompileOptions::default(),
+        );
+        assert!(sh.ok(), "{version:?}: {:?}", sh.diagnostics);
+        let fs = format!(
+            "{version}#extension GL_ANGLE_multi_draw : require\nprecision mediump float;\nvoid main() {{ float d = float(gl_DrawID); }}\n"
+        );
+        let sh = essl::compile(
+            essl::source::SourceFile::new("draw_id", fs.as_str()),
+            Stage::Fragment,
+            &CompileOptions::default(),
+        );
+        assert!(!sh.ok(), "gl_DrawID is a vertex shader's");
+    }
+}

@@ -123,6 +123,9 @@ impl Checker<'_> {
         let Some(base) = self.resolve_type(&ty.spec) else {
             return Vec::new();
         };
+        if self.conservative_depth(ty, kind, &base, declarators, span) {
+            return Vec::new();
+        }
         if !declarators.is_empty() {
             self.check_declaration_qualifiers(ty, kind, &base);
         }
@@ -165,6 +168,53 @@ impl Checker<'_> {
             }
         }
         out
+    }
+
+    /// `layout(depth_any | depth_greater | depth_less) out float gl_FragDepth;` in a fragment
+    /// shader that enabled `GL_EXT_conservative_depth`: a redeclaration that only promises how
+    /// the shader moves depth, which essl checks and then has no use for (true: handled).
+    /// Without the extension the declaration is checked as any other, and fails.
+    fn conservative_depth(
+        &mut self,
+        ty: &ast::FullType,
+        kind: DeclKind,
+        base: &Type,
+        declarators: &[ast::Declarator],
+        span: Span,
+    ) -> bool {
+        use crate::target::Extension;
+        let [d] = declarators else { return false };
+        if self.stage != Stage::Fragment
+            || kind != DeclKind::Output
+            || &*d.name.name != "gl_FragDepth"
+            || !self
+                .lang
+                .has_at(Extension::ExtConservativeDepth, span.start)
+        {
+            return false;
+        }
+        let layout = ty.layout();
+        let ok = matches!(
+            layout.as_slice(),
+            [item] if matches!(&*item.name.name, "depth_any" | "depth_greater" | "depth_less")
+        );
+        if !ok {
+            let at = layout.first().map_or(ty.spec.span, |i| i.name.span);
+            let d = self.error(
+                Code::InvalidLayout,
+                at,
+                "`gl_FragDepth` takes one of `depth_any`, `depth_greater` or `depth_less`",
+            );
+            d.label = "not a depth layout WebGL's EXT_conservative_depth offers".into();
+        } else if *base != Type::FLOAT || d.array.is_some() || d.init.is_some() {
+            let d = self.error(
+                Code::InvalidLayout,
+                d.span,
+                "`gl_FragDepth` is redeclared as `out float gl_FragDepth;`",
+            );
+            d.label = "another type, an array or an initializer".into();
+        }
+        true
     }
 
     fn check_declaration_qualifiers(&mut self, ty: &ast::FullType, kind: DeclKind, base: &Type) {
