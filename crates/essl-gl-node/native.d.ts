@@ -219,6 +219,18 @@ export declare class NativeContext {
   blendColor(r: number, g: number, b: number, a: number): void
   /** `colorMask`. */
   colorMask(r: boolean, g: boolean, b: boolean, a: boolean): void
+  /** `EXT_polygon_offset_clamp.polygonOffsetClampEXT`. */
+  polygonOffsetClampExt(factor: number, units: number, clamp: number): void
+  /** `WEBGL_polygon_mode.polygonModeWEBGL`. */
+  polygonModeWebgl(face: number, mode: number): void
+  /** `OES_draw_buffers_indexed.enableiOES` / `disableiOES`. */
+  enableIndexed(target: number, index: number, on: boolean): void
+  /** `OES_draw_buffers_indexed.blendEquationSeparateiOES` (and `blendEquationiOES`). */
+  blendEquationSeparateIndexed(index: number, rgb: number, alpha: number): void
+  /** `OES_draw_buffers_indexed.blendFuncSeparateiOES` (and `blendFunciOES`). */
+  blendFuncSeparateIndexed(index: number, srcRgb: number, dstRgb: number, srcAlpha: number, dstAlpha: number): void
+  /** `OES_draw_buffers_indexed.colorMaskiOES`. */
+  colorMaskIndexed(index: number, r: boolean, g: boolean, b: boolean, a: boolean): void
   /** `polygonOffset`. */
   polygonOffset(factor: number, units: number): void
   /** `sampleCoverage`. */
@@ -321,9 +333,9 @@ export declare class NativeContext {
   getSamplerParameter(sampler: number, pname: number): Answer
   /**
    * The four upload calls from a DOM image source: `rgba` is 8-bit RGBA, unpremultiplied,
-   * top row first, `width` × `height`.
+   * top row first, `width` × `height`; `bitmap` for an ImageBitmap, uploaded as it is.
    */
-  texImageSource(sub: boolean, threeD: boolean, r: Region, rgba: View, width: number, height: number): void
+  texImageSource(sub: boolean, threeD: boolean, r: Region, rgba: View, width: number, height: number, bitmap: boolean): void
   /**
    * Records a WebGL error as the bindings do for what only they see (`bufferData` with
    * `null`, `readPixels` into `null`).
