@@ -379,7 +379,7 @@ pub fn run(corpora: &Path, markdown: Option<&Path>, list_failures: bool) -> i32 
         let text = if kept.is_empty() {
             report.markdown()
         } else {
-            format!("{}\n{kept}", report.markdown().trim_end())
+            format!("{}\n\n{kept}", report.markdown().trim_end())
         };
         if let Err(e) = std::fs::write(path, text) {
             eprintln!(
