@@ -383,6 +383,7 @@ impl Context {
         v.push(Extension::DrawBuffersIndexed);
         v.push(Extension::StencilTexturing);
         v.push(Extension::ConservativeDepth);
+        v.push(Extension::NoperspectiveInterpolation);
         v.extend(self.raster_extensions());
         if features.contains(wgpu::Features::CLIP_DISTANCES) {
             v.push(Extension::ClipCullDistance);
@@ -498,6 +499,9 @@ impl Context {
             }
             Extension::ConservativeDepth => {
                 self.enable_shader_extension(essl::Extension::ExtConservativeDepth)
+            }
+            Extension::NoperspectiveInterpolation => {
+                self.enable_shader_extension(essl::Extension::NvShaderNoperspectiveInterpolation)
             }
             webgl1 => self.enable_webgl1_extension(webgl1),
         }

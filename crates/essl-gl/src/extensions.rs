@@ -15,7 +15,8 @@
 //! minification, magnification and mipmap filters are all linear, as wgpu requires). WebGL 2
 //! contexts offer `WEBGL_clip_cull_distance` where the adapter has clip distances (eight; no
 //! cull distances: `state/clip_distance.rs`), `OES_draw_buffers_indexed` (`state/blend.rs`),
-//! `WEBGL_stencil_texturing` (`texture/params.rs`) and `EXT_conservative_depth` (shaders only). Both offer `WEBGL_debug_shaders` (a
+//! `WEBGL_stencil_texturing` (`texture/params.rs`), and for shaders only
+//! `EXT_conservative_depth` and `NV_shader_noperspective_interpolation`. Both offer `WEBGL_debug_shaders` (a
 //! compiled shader's lowered module as WGSL), `WEBGL_debug_renderer_info` (the adapter's
 //! vendor and name), `EXT_clip_control` (`state/clip_control.rs`)
 //! and `WEBGL_multi_draw` (`draw/multi.rs`), and where the adapter can,
@@ -218,6 +219,9 @@ pub enum Extension {
     /// `EXT_conservative_depth` (WebGL 2): `layout(depth_any | depth_greater | depth_less)` on
     /// `gl_FragDepth` in shaders.
     ConservativeDepth,
+    /// `NV_shader_noperspective_interpolation` (WebGL 2): the `noperspective` qualifier in
+    /// shaders.
+    NoperspectiveInterpolation,
 }
 
 impl Extension {
@@ -263,6 +267,7 @@ impl Extension {
             Extension::PolygonMode => "WEBGL_polygon_mode",
             Extension::DebugRendererInfo => "WEBGL_debug_renderer_info",
             Extension::ConservativeDepth => "EXT_conservative_depth",
+            Extension::NoperspectiveInterpolation => "NV_shader_noperspective_interpolation",
         }
     }
 }

@@ -30,6 +30,7 @@ pub fn declaration(module: &Module, sym: Sym) -> Option<String> {
             match g.interpolation {
                 Some(Interpolation::Flat) => q.push_str("flat "),
                 Some(Interpolation::Smooth) => q.push_str("smooth "),
+                Some(Interpolation::NoPerspective) => q.push_str("noperspective "),
                 None => {}
             }
             if g.centroid {

@@ -112,6 +112,8 @@ pub enum Interpolation {
     Smooth,
     /// `flat`
     Flat,
+    /// `noperspective` (`GL_NV_shader_noperspective_interpolation`): linear in screen space.
+    NoPerspective,
 }
 
 /// One qualifier as written, in source order (ES 3.00 constrains the order).

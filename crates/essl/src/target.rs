@@ -71,7 +71,8 @@ impl Target {
 
 /// A WebGL extension that adds to the shading language, as a context enables it: the WebGL 1
 /// extensions add to GLSL ES 1.00 in a WebGL 1 context; `WEBGL_clip_cull_distance` adds to
-/// GLSL ES 3.00 in a WebGL 2 context (`WEBGL_clip_cull_distance`, `EXT_conservative_depth`);
+/// GLSL ES 3.00 in a WebGL 2 context (`WEBGL_clip_cull_distance`, `EXT_conservative_depth`,
+/// `NV_shader_noperspective_interpolation`);
 /// `WEBGL_multi_draw` adds to both languages in both.
 #[non_exhaustive]
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
@@ -96,11 +97,14 @@ pub enum Extension {
     /// float gl_FragDepth;` in GLSL ES 3.00 fragment shaders, a promise about how the shader
     /// moves depth (WebGL's extension leaves out `depth_unchanged`).
     ExtConservativeDepth,
+    /// `NV_shader_noperspective_interpolation` (WebGL 2): the `noperspective` interpolation
+    /// qualifier in GLSL ES 3.00 (linear interpolation in screen space).
+    NvShaderNoperspectiveInterpolation,
 }
 
 impl Extension {
     /// Every extension essl knows.
-    pub const ALL: [Extension; 7] = [
+    pub const ALL: [Extension; 8] = [
         Extension::OesStandardDerivatives,
         Extension::ExtShaderTextureLod,
         Extension::ExtFragDepth,
@@ -108,6 +112,7 @@ impl Extension {
         Extension::WebglClipCullDistance,
         Extension::WebglMultiDraw,
         Extension::ExtConservativeDepth,
+        Extension::NvShaderNoperspectiveInterpolation,
     ];
 
     /// Whether a context of `target` offers it: the WebGL 1 extensions only WebGL 1 (WebGL 2
@@ -115,9 +120,9 @@ impl Extension {
     pub fn offered_by(self, target: Target) -> bool {
         match self {
             Extension::WebglMultiDraw => true,
-            Extension::WebglClipCullDistance | Extension::ExtConservativeDepth => {
-                target == Target::WebGl2
-            }
+            Extension::WebglClipCullDistance
+            | Extension::ExtConservativeDepth
+            | Extension::NvShaderNoperspectiveInterpolation => target == Target::WebGl2,
             _ => target == Target::WebGl1,
         }
     }
@@ -140,6 +145,9 @@ impl Extension {
             Extension::WebglClipCullDistance => "GL_ANGLE_clip_cull_distance",
             Extension::WebglMultiDraw => "GL_ANGLE_multi_draw",
             Extension::ExtConservativeDepth => "GL_EXT_conservative_depth",
+            Extension::NvShaderNoperspectiveInterpolation => {
+                "GL_NV_shader_noperspective_interpolation"
+            }
         }
     }
 
@@ -153,6 +161,9 @@ impl Extension {
             Extension::WebglClipCullDistance => "WEBGL_clip_cull_distance",
             Extension::WebglMultiDraw => "WEBGL_multi_draw",
             Extension::ExtConservativeDepth => "EXT_conservative_depth",
+            Extension::NvShaderNoperspectiveInterpolation => {
+                "NV_shader_noperspective_interpolation"
+            }
         }
     }
 

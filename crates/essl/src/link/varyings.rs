@@ -89,10 +89,24 @@ impl Linker<'_> {
                 let _ = vspan;
                 continue;
             }
-            let vflat = vg.interpolation == Some(crate::ast::Interpolation::Flat);
-            let fflat = fg.interpolation == Some(crate::ast::Interpolation::Flat);
-            if vflat != fflat {
-                let msg = format!("varying `{name}` is `flat` in one shader only");
+            // `flat` and `noperspective` must match; `smooth` is what no qualifier means.
+            use crate::ast::Interpolation as I;
+            let (vq, fq) = (
+                vg.interpolation.unwrap_or(I::Smooth),
+                fg.interpolation.unwrap_or(I::Smooth),
+            );
+            if vq != fq {
+                let q = if vq == I::Flat || fq == I::Flat {
+                    I::Flat
+                } else {
+                    I::NoPerspective
+                };
+                let word = if q == I::Flat {
+                    "flat"
+                } else {
+                    "noperspective"
+                };
+                let msg = format!("varying `{name}` is `{word}` in one shader only");
                 let line = format!("Interpolation types of varying '{name}' differ between VERTEX and FRAGMENT shaders.");
                 let d = self.error(
                     Some(Stage::Fragment),
@@ -101,12 +115,11 @@ impl Linker<'_> {
                     msg,
                     line,
                 );
-                d.label = if fflat {
-                    "`flat` here but not in the vertex shader"
+                d.label = if fq == q {
+                    format!("`{word}` here but not in the vertex shader")
                 } else {
-                    "not `flat` here but `flat` in the vertex shader"
-                }
-                .into();
+                    format!("not `{word}` here but `{word}` in the vertex shader")
+                };
                 self.log.push_str(&format!(
                     "FRAGMENT varying {name} does not match any VERTEX varying\n"
                 ));

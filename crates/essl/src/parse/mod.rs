@@ -60,6 +60,7 @@ pub fn parse_as(
         depth: 0,
         too_deep_reported: false,
         stage,
+        lang: lang.clone(),
     };
     if p.toks.last().is_none_or(|t| !matches!(t.tok, Tok::Eof)) {
         let end = file.text().len() as u32;
@@ -100,6 +101,9 @@ struct Parser<'a> {
     depth: u32,
     too_deep_reported: bool,
     stage: Stage,
+    /// Where the shader enables `GL_NV_shader_noperspective_interpolation`, which makes the
+    /// reserved word `noperspective` a qualifier.
+    lang: Language,
 }
 
 impl<'a> Parser<'a> {

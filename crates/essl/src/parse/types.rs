@@ -108,6 +108,15 @@ impl Parser<'_> {
                     out.push((Qualifier::Layout(items), self.span_from(span)));
                     continue;
                 }
+                Tok::Reserved
+                    if &*self.peek().text == "noperspective"
+                        && self.lang.has_at(
+                            crate::target::Extension::NvShaderNoperspectiveInterpolation,
+                            span.start,
+                        ) =>
+                {
+                    Qualifier::Interpolation(Interpolation::NoPerspective)
+                }
                 Tok::Reserved if matches!(&*self.peek().text, "attribute" | "varying") => {
                     // ES 1.00 qualifiers: report once, then read them as their ES 3.00 twins.
                     let name = self.peek().text.clone();

@@ -452,3 +452,42 @@ fn draw_id_where_the_shader_enables_it_in_both_languages() {
         assert!(!sh.ok(), "gl_DrawID is a vertex shader's");
     }
 }
+
+#[test]
+fn noperspective_where_the_shader_enables_it_and_both_stages_agree() {
+    let vs = |q: &str| {
+        format!("#version 300 es\n#extension GL_NV_shader_noperspective_interpolation : enable\n{q} out float v;\nin vec4 p;\nvoid main() {{ v = p.x; gl_Position = p; }}\n")
+    };
+    let fs = |q: &str| {
+        format!("#version 300 es\n#extension GL_NV_shader_noperspective_interpolation : enable\nprecision highp float;\n{q} in float v;\nout vec4 o;\nvoid main() {{ o = vec4(v); }}\n")
+    };
+    let compile = |src: String, stage| {
+        essl::compile(
+            essl::source::SourceFile::new("np", src.as_str()),
+            stage,
+            &CompileOptions::default(),
+        )
+    };
+    let (v, f) = (
+        compile(vs("noperspective"), Stage::Vertex),
+        compile(fs("noperspective"), Stage::Fragment),
+    );
+    assert!(v.ok() && f.ok(), "{:?} {:?}", v.diagnostics, f.diagnostics);
+    assert!(essl::link::link(&v, &f).ok);
+    let smooth = compile(fs(""), Stage::Fragment);
+    let p = essl::link::link(&v, &smooth);
+    assert!(!p.ok, "the qualifiers differ");
+    assert!(
+        p.log.contains("Interpolation types of varying 'v' differ"),
+        "{}",
+        p.log
+    );
+    let undirected = vs("noperspective").replace(
+        "#extension GL_NV_shader_noperspective_interpolation : enable\n",
+        "",
+    );
+    assert!(
+        !compile(undirected, Stage::Vertex).ok(),
+        "a reserved word without the directive"
+    );
+}

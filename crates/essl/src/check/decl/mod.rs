@@ -36,6 +36,7 @@ pub(super) fn qualifier_text(q: &Qualifier) -> &'static str {
         Qualifier::Invariant => "invariant",
         Qualifier::Interpolation(Interpolation::Flat) => "flat",
         Qualifier::Interpolation(Interpolation::Smooth) => "smooth",
+        Qualifier::Interpolation(Interpolation::NoPerspective) => "noperspective",
         Qualifier::Layout(_) => "layout",
         Qualifier::Centroid => "centroid",
         Qualifier::Storage(s) => s.as_str(),

@@ -72,7 +72,13 @@ fn io_binding(
         (false, _) => (None, None),
         (true, true) => (Some(naga::Interpolation::Flat), None),
         (true, false) => (
-            Some(naga::Interpolation::Perspective),
+            Some(
+                if g.interpolation == Some(crate::ast::Interpolation::NoPerspective) {
+                    naga::Interpolation::Linear
+                } else {
+                    naga::Interpolation::Perspective
+                },
+            ),
             Some(if centroid {
                 naga::Sampling::Centroid
             } else {
