@@ -202,7 +202,16 @@ export function extensionObject(ctx, native, name) {
   }
   for (const [own, core] of Object.entries(METHODS[enabled] ?? {})) {
     const f = METHODS_2[core];
-    Object.defineProperty(ext, own, { value: (...args) => f.apply(ctx, args), enumerable: true });
+    // A draw ends the frame as the core draws do.
+    const draws = core.startsWith('draw') && core !== 'drawBuffers';
+    const value = {
+      [own](...args) {
+        const r = f.apply(ctx, args);
+        if (draws) frameChanged(ctx);
+        return r;
+      },
+    }[own];
+    Object.defineProperty(ext, own, { value, enumerable: true });
   }
   return ext;
 }

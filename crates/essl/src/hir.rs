@@ -47,6 +47,9 @@ pub struct Module {
     pub invariant_builtins: Vec<BuiltinVar>,
     /// The length of `gl_FragData` (`gl_MaxDrawBuffers`) in a GLSL ES 1.00 fragment shader.
     pub frag_data_len: u32,
+    /// A GLSL ES 1.00 fragment shader that enabled `GL_EXT_draw_buffers`: what it writes to
+    /// `gl_FragColor` goes to every draw buffer (`gl_FragData[0..frag_data_len]`).
+    pub frag_color_broadcast: bool,
 }
 
 /// Where a global variable lives.

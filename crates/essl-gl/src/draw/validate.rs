@@ -91,6 +91,12 @@ impl Context {
                 "front and back stencil references or masks differ (WebGL)",
             );
         }
+        // ANGLE_instanced_arrays (WebGL 1): an instanced draw needs an attribute the program
+        // uses whose divisor is 0.
+        if self.webgl1.on && f.ends_with("Instanced") && !self.has_divisor_zero(pid) {
+            let msg = "no attribute of the program has a divisor of 0 (ANGLE_instanced_arrays)";
+            return self.fail(gl::INVALID_OPERATION, f, msg);
+        }
         if args.count == 0 || args.instances == 0 {
             return None;
         }
@@ -255,5 +261,20 @@ impl Context {
             }
         }
         Some(())
+    }
+}
+
+impl Context {
+    /// Whether an attribute the program `pid` uses reads its array with divisor 0.
+    fn has_divisor_zero(&self, pid: crate::objects::Id) -> bool {
+        let Some(linked) = self.objects.linked(pid) else {
+            return true;
+        };
+        let attribs = &self.vao().attribs;
+        linked.layout.attributes.iter().any(|a| {
+            attribs
+                .get(a.location as usize)
+                .is_some_and(|x| x.divisor == 0)
+        })
     }
 }

@@ -33,7 +33,7 @@ impl Context {
     /// Clears the drawing buffer to its initial contents: colour 0 (alpha 1 without an alpha
     /// channel, which then reads back as 1), depth 1, stencil 0.
     pub(crate) fn clear_drawing_buffer(&mut self) {
-        let target = self.default_target();
+        let target = self.default_target_with(true);
         let alpha = if self.fb.attributes.alpha { 0.0 } else { 1.0 };
         let color = wgpu::Color {
             a: alpha,

@@ -243,8 +243,14 @@ impl Context {
 
     /// The default framebuffer as a render pass target.
     pub(crate) fn default_target(&self) -> PassTarget {
+        self.default_target_with(self.fb.draw_buffer == gl::BACK)
+    }
+
+    /// The default framebuffer as a pass target, its colour image included or not (the
+    /// compositor clears it whatever `drawBuffers` says).
+    pub(crate) fn default_target_with(&self, color: bool) -> PassTarget {
         let fb = &self.fb;
-        let color = (fb.draw_buffer == gl::BACK).then(|| match &fb.msaa {
+        let color = color.then(|| match &fb.msaa {
             Some((t, v)) => ColorTarget {
                 view: v.clone(),
                 depth_slice: None,

@@ -22,4 +22,5 @@ mod small_extensions;
 mod stencil_texturing;
 mod transform_feedback;
 mod validation;
+mod webgl1_draws;
 mod webgl1_float;

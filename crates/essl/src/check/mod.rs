@@ -69,6 +69,8 @@ pub fn check_as(
         invariant_all,
         invariant_builtins: c.invariant_builtins,
         frag_data_len: crate::builtins::constant_in("gl_MaxDrawBuffers", lang).unwrap_or(1) as u32,
+        frag_color_broadcast: lang.es100
+            && lang.has_at(crate::target::Extension::WebglDrawBuffers, u32::MAX),
     };
     crate::usage::mark(&mut module);
     (module, c.diags)

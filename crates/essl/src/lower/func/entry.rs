@@ -582,7 +582,8 @@ impl FnCx<'_, '_> {
         }
     }
 
-    /// A GLSL ES 1.00 fragment shader's `gl_FragColor` (location 0) or `gl_FragData[i]`
+    /// A GLSL ES 1.00 fragment shader's `gl_FragColor` (location 0, or every draw buffer's
+    /// with `GL_EXT_draw_buffers` enabled, as `WEBGL_draw_buffers` says) or `gl_FragData[i]`
     /// (location `i`), when it writes them.
     fn frag_color_outputs(&mut self, out: &mut Outputs) {
         let vec4 = Type::Vector(ScalarKind::Float, 4);
@@ -597,6 +598,12 @@ impl FnCx<'_, '_> {
             let v = self.load_private(var);
             let ty = self.ty(&vec4);
             out.push("gl_FragColor".into(), ty, interp(0), v);
+            let hir = self.cx.hir;
+            if hir.frag_color_broadcast {
+                for i in 1..hir.frag_data_len {
+                    out.push(format!("gl_FragColor_{i}"), ty, interp(i), v);
+                }
+            }
         }
         if let Some(&var) = self.cx.builtins.get(&BuiltinVar::FragData) {
             for i in 0..self.cx.hir.frag_data_len.max(1) {
