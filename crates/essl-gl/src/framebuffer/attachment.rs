@@ -102,6 +102,11 @@ impl Context {
             (gl::FRAMEBUFFER_ATTACHMENT_OBJECT_TYPE, None) => {
                 return Some(Parameter::Enum(gl::NONE))
             }
+            // ES 2.0 answers only OBJECT_TYPE where nothing is attached.
+            (gl::FRAMEBUFFER_ATTACHMENT_OBJECT_NAME, None) if self.webgl1.on => {
+                self.error(gl::INVALID_ENUM, F, "nothing is attached (WebGL 1)");
+                return None;
+            }
             (gl::FRAMEBUFFER_ATTACHMENT_OBJECT_NAME, _) => return Some(object),
             (gl::FRAMEBUFFER_ATTACHMENT_OBJECT_TYPE, Some(Attachment::Texture { .. })) => {
                 return Some(Parameter::Enum(gl::TEXTURE))
@@ -112,10 +117,12 @@ impl Context {
             _ => {}
         }
         let Some(image) = image else {
-            if is_attachment_pname(pname) {
-                self.error(gl::INVALID_OPERATION, F, "nothing is attached");
-            } else {
+            // ES 2.0 answers only OBJECT_TYPE where nothing is attached (INVALID_ENUM); WebGL 2,
+            // as Chromium, INVALID_OPERATION whatever else is asked.
+            if self.webgl1.on {
                 self.error(gl::INVALID_ENUM, F, format_args!("pname 0x{pname:04X}"));
+            } else {
+                self.error(gl::INVALID_OPERATION, F, "nothing is attached");
             }
             return None;
         };
@@ -166,6 +173,15 @@ impl Context {
     /// `STENCIL`.
     fn default_attachment_parameter(&self, attachment: u32, pname: u32) -> Option<Parameter> {
         const F: &str = "getFramebufferAttachmentParameter";
+        if self.webgl1.on {
+            // WebGL 1 queries framebuffer objects only.
+            self.error(
+                gl::INVALID_OPERATION,
+                F,
+                "no framebuffer is bound (WebGL 1)",
+            );
+            return None;
+        }
         let a = self.fb.attributes;
         let format = match attachment {
             gl::BACK => Some(if a.alpha { gl::RGBA8 } else { gl::RGB8 }),

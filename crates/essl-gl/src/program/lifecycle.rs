@@ -34,7 +34,8 @@ impl Context {
 
     /// Whether `program` names a live program (`isProgram`).
     pub fn is_program(&self, program: Program) -> bool {
-        program.ctx == self.id && self.objects.programs.is_live(program.id)
+        // A program deleted while in use lives on until replaced, and is one till then.
+        program.ctx == self.id && self.objects.programs.get_any(program.id).is_some()
     }
 
     /// Attaches a shader (`attachShader`); a second shader of the same type, or the same

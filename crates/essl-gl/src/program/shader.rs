@@ -149,7 +149,8 @@ impl Context {
 
     /// Whether `shader` names a live shader (`isShader`).
     pub fn is_shader(&self, shader: Shader) -> bool {
-        shader.ctx == self.id && self.objects.shaders.is_live(shader.id)
+        // A shader deleted while attached lives on until detached, and is one till then.
+        shader.ctx == self.id && self.objects.shaders.get_any(shader.id).is_some()
     }
 
     /// Deletes a shader (`deleteShader`); a shader attached to a program lives on until

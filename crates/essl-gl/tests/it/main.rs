@@ -13,6 +13,7 @@ mod es100_render;
 mod framebuffer;
 mod glsl;
 mod multi_draw;
+mod object_queries;
 mod queries;
 mod queries_sync;
 mod raster;
