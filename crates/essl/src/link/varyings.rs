@@ -89,40 +89,7 @@ impl Linker<'_> {
                 let _ = vspan;
                 continue;
             }
-            // `flat` and `noperspective` must match; `smooth` is what no qualifier means.
-            use crate::ast::Interpolation as I;
-            let (vq, fq) = (
-                vg.interpolation.unwrap_or(I::Smooth),
-                fg.interpolation.unwrap_or(I::Smooth),
-            );
-            if vq != fq {
-                let q = if vq == I::Flat || fq == I::Flat {
-                    I::Flat
-                } else {
-                    I::NoPerspective
-                };
-                let word = if q == I::Flat {
-                    "flat"
-                } else {
-                    "noperspective"
-                };
-                let msg = format!("varying `{name}` is `{word}` in one shader only");
-                let line = format!("Interpolation types of varying '{name}' differ between VERTEX and FRAGMENT shaders.");
-                let d = self.error(
-                    Some(Stage::Fragment),
-                    fg.span,
-                    Code::VaryingInterpolationMismatch,
-                    msg,
-                    line,
-                );
-                d.label = if fq == q {
-                    format!("`{word}` here but not in the vertex shader")
-                } else {
-                    format!("not `{word}` here but `{word}` in the vertex shader")
-                };
-                self.log.push_str(&format!(
-                    "FRAGMENT varying {name} does not match any VERTEX varying\n"
-                ));
+            if self.interpolation_differs(&name, vg, fg) {
                 continue;
             }
             let es100 = fm.version == crate::Version::Es100;
@@ -162,6 +129,54 @@ impl Linker<'_> {
         self.check_varying_packing(&packed);
         self.check_builtin_invariance();
         out
+    }
+
+    /// Reports a varying whose interpolation differs between the stages (`flat` and
+    /// `noperspective` must match; `smooth` is what no qualifier means); whether it did.
+    fn interpolation_differs(
+        &mut self,
+        name: &str,
+        vg: &crate::hir::Global,
+        fg: &crate::hir::Global,
+    ) -> bool {
+        use crate::ast::Interpolation as I;
+        let (vq, fq) = (
+            vg.interpolation.unwrap_or(I::Smooth),
+            fg.interpolation.unwrap_or(I::Smooth),
+        );
+        if vq == fq {
+            return false;
+        }
+        let q = if vq == I::Flat || fq == I::Flat {
+            I::Flat
+        } else {
+            I::NoPerspective
+        };
+        let word = if q == I::Flat {
+            "flat"
+        } else {
+            "noperspective"
+        };
+        let msg = format!("varying `{name}` is `{word}` in one shader only");
+        let line = format!(
+            "Interpolation types of varying '{name}' differ between VERTEX and FRAGMENT shaders."
+        );
+        let d = self.error(
+            Some(Stage::Fragment),
+            fg.span,
+            Code::VaryingInterpolationMismatch,
+            msg,
+            line,
+        );
+        d.label = if fq == q {
+            format!("`{word}` here but not in the vertex shader")
+        } else {
+            format!("not `{word}` here but `{word}` in the vertex shader")
+        };
+        self.log.push_str(&format!(
+            "FRAGMENT varying {name} does not match any VERTEX varying\n"
+        ));
+        true
     }
 
     /// The built-in varyings ANGLE packs with the others when they are used: the fragment
