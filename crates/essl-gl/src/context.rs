@@ -22,9 +22,10 @@ pub const MAX_VERTEX_ATTRIBS: u32 = 16;
 /// The number of texture units (`MAX_COMBINED_TEXTURE_IMAGE_UNITS`), WebGL2's minimum.
 pub const MAX_TEXTURE_UNITS: u32 = 32;
 
-/// The number of indexed `UNIFORM_BUFFER` binding points (`MAX_UNIFORM_BUFFER_BINDINGS`),
-/// WebGL2's minimum.
-pub const MAX_UNIFORM_BUFFER_BINDINGS: u32 = 24;
+/// The number of indexed `UNIFORM_BUFFER` binding points (`MAX_UNIFORM_BUFFER_BINDINGS`):
+/// Chromium's on ANGLE/SwiftShader (WebGL 2's minimum is 24). They are the context's state
+/// alone; what one program may use at once is `MAX_COMBINED_UNIFORM_BLOCKS`.
+pub const MAX_UNIFORM_BUFFER_BINDINGS: u32 = 72;
 
 /// Limits of the context that depend on the device.
 #[derive(Clone, Copy, Debug)]

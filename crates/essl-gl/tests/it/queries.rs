@@ -437,7 +437,7 @@ fn get_parameter_limits_and_strings() {
     assert!(int(&mut ctx, gl::MAX_VERTEX_UNIFORM_VECTORS) >= 256);
     assert!(int(&mut ctx, gl::MAX_FRAGMENT_UNIFORM_VECTORS) >= 224);
     assert!(int(&mut ctx, gl::MAX_VARYING_VECTORS) >= 15);
-    assert_eq!(int(&mut ctx, gl::MAX_UNIFORM_BUFFER_BINDINGS), 24);
+    assert_eq!(int(&mut ctx, gl::MAX_UNIFORM_BUFFER_BINDINGS), 72);
     assert!(int(&mut ctx, gl::MAX_UNIFORM_BLOCK_SIZE) >= 16384);
     assert!(int(&mut ctx, gl::UNIFORM_BUFFER_OFFSET_ALIGNMENT) >= 1);
     assert_eq!(int(&mut ctx, gl::DEPTH_BITS), 24);
