@@ -282,7 +282,11 @@ function texImage(name, sub, threeD, args) {
     return;
   }
   if (data === null || data === undefined) {
-    if (sub) throw typeError(name, `parameter ${full + 1} is not of type 'ArrayBufferView'.`);
+    // The IDL's pixels are nullable: a sub-image of no data is a GL error, as in Chromium.
+    if (sub) {
+      if (n !== null) n.synthesizeError(0x0501, name, 'no image data');
+      return;
+    }
     if (n !== null) n.texImageView(sub, threeD, r, null, 0);
     return;
   }

@@ -93,6 +93,9 @@ test('a bad value is a GL error, never an exception', () => {
   gl.drawArrays(gl.TRIANGLES, 0, 3);
   assert.equal(gl.getError(), gl.INVALID_OPERATION);
   assert.equal(gl.getError(), gl.NO_ERROR);
+  // The pixels of texSubImage2D are nullable: no data is a GL error, as in Chromium.
+  gl.texSubImage2D(gl.TEXTURE_2D, 0, 0, 0, 0, 0, gl.RGBA, gl.UNSIGNED_BYTE, null);
+  assert.equal(gl.getError(), gl.INVALID_VALUE);
 });
 
 test('an object of another context is INVALID_OPERATION', () => {
