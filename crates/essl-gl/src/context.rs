@@ -348,48 +348,66 @@ impl Context {
 
     fn supported(&self) -> Vec<Extension> {
         let features = self.gpu.device.features();
-        let float_linear = features.contains(wgpu::Features::FLOAT32_FILTERABLE);
-        let float_blend = self.blends_float32();
-        if self.webgl1.on {
-            let mut v = crate::webgl1::WEBGL1_EXTENSIONS.to_vec();
-            if float_blend {
-                v.push(Extension::FloatBlend);
+        let mut v = if self.webgl1.on {
+            crate::webgl1::WEBGL1_EXTENSIONS.to_vec()
+        } else {
+            let mut v = vec![
+                Extension::ColorBufferFloat,
+                Extension::ColorBufferHalfFloat,
+                Extension::ParallelShaderCompile,
+                Extension::DrawBuffersIndexed,
+                Extension::StencilTexturing,
+                Extension::ConservativeDepth,
+                Extension::NoperspectiveInterpolation,
+            ];
+            if features.contains(wgpu::Features::CLIP_DISTANCES) {
+                v.push(Extension::ClipCullDistance);
             }
-            if float_linear {
-                v.push(Extension::TextureFloatLinear);
-            }
-            v.extend(crate::extensions::COMPRESSED_EXTENSIONS);
-            v.push(Extension::TextureFilterAnisotropic);
-            v.push(Extension::DebugShaders);
-            v.push(Extension::DebugRendererInfo);
-            v.push(Extension::ClipControl);
-            v.push(Extension::MultiDraw);
-            v.extend(self.raster_extensions());
-            return v;
-        }
-        let mut v = vec![Extension::ColorBufferFloat, Extension::ColorBufferHalfFloat];
-        if float_blend {
+            v
+        };
+        // Both contexts.
+        if self.blends_float32() {
             v.push(Extension::FloatBlend);
         }
-        if float_linear {
+        if features.contains(wgpu::Features::FLOAT32_FILTERABLE) {
             v.push(Extension::TextureFloatLinear);
         }
-        v.push(Extension::ParallelShaderCompile);
         v.extend(crate::extensions::COMPRESSED_EXTENSIONS);
-        v.push(Extension::TextureFilterAnisotropic);
-        v.push(Extension::DebugShaders);
-        v.push(Extension::DebugRendererInfo);
-        v.push(Extension::ClipControl);
-        v.push(Extension::MultiDraw);
-        v.push(Extension::DrawBuffersIndexed);
-        v.push(Extension::StencilTexturing);
-        v.push(Extension::ConservativeDepth);
-        v.push(Extension::NoperspectiveInterpolation);
+        v.extend([
+            Extension::TextureFilterAnisotropic,
+            Extension::DebugShaders,
+            Extension::DebugRendererInfo,
+            Extension::ClipControl,
+            Extension::MultiDraw,
+        ]);
         v.extend(self.raster_extensions());
-        if features.contains(wgpu::Features::CLIP_DISTANCES) {
-            v.push(Extension::ClipCullDistance);
-        }
         v
+    }
+
+    /// Turns on `e` where it means the same in both contexts; false for an extension of one
+    /// context only.
+    fn turn_on_in_either_context(&mut self, e: Extension) -> bool {
+        let x = &mut self.extensions;
+        match e {
+            // Nothing to turn on: get_translated_shader_source answers in any case.
+            Extension::DebugShaders => {}
+            Extension::TextureFilterAnisotropic => x.anisotropic = true,
+            Extension::ClipControl => x.clip_control = true,
+            Extension::PolygonOffsetClamp => x.polygon_offset_clamp = true,
+            Extension::DepthClamp => x.depth_clamp = true,
+            Extension::PolygonMode => x.polygon_mode = true,
+            Extension::DebugRendererInfo => x.debug_renderer_info = true,
+            Extension::MultiDraw => {
+                x.multi_draw = true;
+                // WebGL 1: its instanced calls need ANGLE_instanced_arrays, which it turns on.
+                if self.webgl1.on {
+                    self.enable_webgl1_extension(Extension::AngleInstancedArrays);
+                }
+                self.enable_shader_extension(essl::Extension::WebglMultiDraw);
+            }
+            _ => return x.compressed.insert(e),
+        }
+        true
     }
 
     /// Lets the shaders compiled from now on use `e`.
@@ -437,44 +455,7 @@ impl Context {
             .supported()
             .into_iter()
             .find(|e| e.name().eq_ignore_ascii_case(name))?;
-        if self.extensions.compressed.insert(e) {
-            return Some(e);
-        }
-        if e == Extension::TextureFilterAnisotropic {
-            self.extensions.anisotropic = true;
-            return Some(e);
-        }
-        if e == Extension::DebugShaders {
-            // Nothing to turn on: get_translated_shader_source answers in any case.
-            return Some(e);
-        }
-        if e == Extension::ClipControl {
-            self.extensions.clip_control = true;
-            return Some(e);
-        }
-        match e {
-            Extension::PolygonOffsetClamp => self.extensions.polygon_offset_clamp = true,
-            Extension::DepthClamp => self.extensions.depth_clamp = true,
-            Extension::PolygonMode => self.extensions.polygon_mode = true,
-            Extension::DebugRendererInfo => self.extensions.debug_renderer_info = true,
-            _ => {}
-        }
-        if matches!(
-            e,
-            Extension::PolygonOffsetClamp
-                | Extension::DepthClamp
-                | Extension::PolygonMode
-                | Extension::DebugRendererInfo
-        ) {
-            return Some(e);
-        }
-        if e == Extension::MultiDraw {
-            // WebGL 1: its instanced calls need ANGLE_instanced_arrays, which it turns on.
-            if self.webgl1.on {
-                self.enable_webgl1_extension(Extension::AngleInstancedArrays);
-            }
-            self.extensions.multi_draw = true;
-            self.enable_shader_extension(essl::Extension::WebglMultiDraw);
+        if self.turn_on_in_either_context(e) {
             return Some(e);
         }
         if self.webgl1.on {

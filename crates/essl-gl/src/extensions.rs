@@ -16,14 +16,13 @@
 //! contexts offer `WEBGL_clip_cull_distance` where the adapter has clip distances (eight; no
 //! cull distances: `state/clip_distance.rs`), `OES_draw_buffers_indexed` (`state/blend.rs`),
 //! `WEBGL_stencil_texturing` (`texture/params.rs`), and for shaders only
-//! `EXT_conservative_depth` and `NV_shader_noperspective_interpolation`. Both offer `WEBGL_debug_shaders` (a
-//! compiled shader's lowered module as WGSL), `WEBGL_debug_renderer_info` (the adapter's
-//! vendor and name), `EXT_clip_control` (`state/clip_control.rs`)
-//! and `WEBGL_multi_draw` (`draw/multi.rs`), and where the adapter can,
-//! `EXT_polygon_offset_clamp`, `EXT_depth_clamp` and `WEBGL_polygon_mode` (`state/raster.rs`).
-//! WebGL 1 contexts offer their
-//! own list besides, float
-//! textures among them (`webgl1/float.rs`).
+//! `EXT_conservative_depth` and `NV_shader_noperspective_interpolation`. Both offer
+//! `WEBGL_debug_shaders` (a compiled shader's lowered module as WGSL),
+//! `WEBGL_debug_renderer_info` (the adapter's vendor and name), `EXT_clip_control`
+//! (`state/clip_control.rs`) and `WEBGL_multi_draw` (`draw/multi.rs`), and where the adapter
+//! can, `EXT_polygon_offset_clamp`, `EXT_depth_clamp` and `WEBGL_polygon_mode`
+//! (`state/raster.rs`). WebGL 1 contexts offer their own list besides, float textures among
+//! them (`webgl1/float.rs`).
 
 /// The WebGL extensions a context has turned on.
 #[derive(Clone, Copy, Debug, Default)]

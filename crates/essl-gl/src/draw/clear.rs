@@ -242,7 +242,7 @@ impl Context {
             return;
         }
         let masks: Vec<[bool; 4]> = (0..request.colors.len())
-            .map(|i| s.draw_buffers.get(i).map_or([true; 4], |b| b.color_mask))
+            .map(|i| s.draw_buffer(i).color_mask)
             .collect();
         let has_depth = target.depth.as_ref().is_some_and(|d| d.has_depth());
         let has_stencil = target.depth.as_ref().is_some_and(|d| d.has_stencil());
@@ -308,7 +308,7 @@ impl Context {
             self.frame.clear_pass(&self.gpu, target, &clears);
             return;
         }
-        self.clear_with_quad(target, &request, rect, stencil_mask, no_alpha);
+        self.clear_with_quad(target, &request, rect, stencil_mask);
     }
 
     /// A masked or scissored clear: a rectangle drawn with a pipeline that writes the clear
@@ -319,20 +319,7 @@ impl Context {
         request: &ClearRequest,
         rect: [u32; 4],
         stencil_mask: u32,
-        no_alpha: bool,
     ) {
-        let mask = |i: usize| {
-            let m = self
-                .state
-                .draw_buffers
-                .get(i)
-                .map_or([true; 4], |b| b.color_mask);
-            let mut mask = crate::draw::record::write_mask(&m);
-            if no_alpha {
-                mask -= wgpu::ColorWrites::ALPHA;
-            }
-            mask
-        };
         let key = ClearKey {
             colors: target
                 .colors
@@ -345,7 +332,7 @@ impl Context {
                             c.format,
                             cleared.map(|v| v.kind()),
                             if cleared.is_some() {
-                                mask(i)
+                                self.draw_write_mask(i)
                             } else {
                                 wgpu::ColorWrites::empty()
                             },

@@ -343,8 +343,7 @@ impl Context {
             c.comp == crate::texture::Comp::F32 && c.packing == crate::texture::Packing::None
         };
         let blended = |(i, c): (usize, &Option<crate::texture::InternalFormat>)| {
-            c.as_ref().is_some_and(float32)
-                && self.state.draw_buffers.get(i).is_some_and(|b| b.blend)
+            c.as_ref().is_some_and(float32) && self.state.draw_buffer(i).blend
         };
         if !self.blends_float32() && formats.colors.iter().enumerate().any(blended) {
             let msg = "this adapter does not blend 32-bit float draw buffers (EXT_float_blend)";
@@ -354,10 +353,7 @@ impl Context {
         // (nothing is written while the rasterizer discards, nor where the colour mask is
         // all off).
         if !self.state.rasterizer_discard {
-            let written = |i: usize| {
-                let b = self.state.draw_buffers.get(i);
-                b.is_some_and(|b| b.color_mask.iter().any(|&m| m))
-            };
+            let written = |i: usize| self.state.draw_buffer(i).color_mask.iter().any(|&m| m);
             let missing = formats.colors.iter().enumerate().find(|(i, c)| {
                 c.is_some() && written(*i) && !linked.outputs.iter().any(|&(l, _)| l as usize == *i)
             });

@@ -304,7 +304,7 @@ impl Context {
     /// The channels draws write into draw buffer `i`: its colour mask, without alpha on a
     /// default framebuffer that has none (`alpha: false`), so that it stays 1.
     pub(crate) fn draw_write_mask(&self, i: usize) -> wgpu::ColorWrites {
-        let mut mask = write_mask(&self.state.draw_buffers[i].color_mask);
+        let mut mask = write_mask(&self.state.draw_buffer(i).color_mask);
         if self.bindings.framebuffers()[0].is_none() && !self.fb.attributes.alpha {
             mask -= wgpu::ColorWrites::ALPHA;
         }

@@ -262,9 +262,7 @@ impl Context {
         }
         Some(())
     }
-}
 
-impl Context {
     /// Whether an attribute the program `pid` uses reads its array with divisor 0.
     fn has_divisor_zero(&self, pid: crate::objects::Id) -> bool {
         let Some(linked) = self.objects.linked(pid) else {

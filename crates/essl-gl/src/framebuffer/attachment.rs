@@ -102,12 +102,10 @@ impl Context {
             (gl::FRAMEBUFFER_ATTACHMENT_OBJECT_TYPE, None) => {
                 return Some(Parameter::Enum(gl::NONE))
             }
-            // ES 2.0 answers only OBJECT_TYPE where nothing is attached.
-            (gl::FRAMEBUFFER_ATTACHMENT_OBJECT_NAME, None) if self.webgl1.on => {
-                self.error(gl::INVALID_ENUM, F, "nothing is attached (WebGL 1)");
-                return None;
+            // ES 2.0 answers only OBJECT_TYPE where nothing is attached (below).
+            (gl::FRAMEBUFFER_ATTACHMENT_OBJECT_NAME, _) if image.is_some() || !self.webgl1.on => {
+                return Some(object)
             }
-            (gl::FRAMEBUFFER_ATTACHMENT_OBJECT_NAME, _) => return Some(object),
             (gl::FRAMEBUFFER_ATTACHMENT_OBJECT_TYPE, Some(Attachment::Texture { .. })) => {
                 return Some(Parameter::Enum(gl::TEXTURE))
             }

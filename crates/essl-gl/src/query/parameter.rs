@@ -96,14 +96,15 @@ impl Context {
             gl::DEPTH_RANGE => Floats(s.depth_range.to_vec()),
             gl::CULL_FACE_MODE => Enum(s.cull_face_mode),
             gl::FRONT_FACE => Enum(s.front_face),
-            gl::BLEND_SRC_RGB => draw_buffer_parameter(&s.draw_buffers[0], Some(0)),
-            gl::BLEND_DST_RGB => draw_buffer_parameter(&s.draw_buffers[0], Some(1)),
-            gl::BLEND_SRC_ALPHA => draw_buffer_parameter(&s.draw_buffers[0], Some(2)),
-            gl::BLEND_DST_ALPHA => draw_buffer_parameter(&s.draw_buffers[0], Some(3)),
-            gl::BLEND_EQUATION_RGB => draw_buffer_parameter(&s.draw_buffers[0], Some(4)),
-            gl::BLEND_EQUATION_ALPHA => draw_buffer_parameter(&s.draw_buffers[0], Some(5)),
+            // Blending and the colour mask: draw buffer 0's.
+            gl::BLEND_SRC_RGB
+            | gl::BLEND_DST_RGB
+            | gl::BLEND_SRC_ALPHA
+            | gl::BLEND_DST_ALPHA
+            | gl::BLEND_EQUATION_RGB
+            | gl::BLEND_EQUATION_ALPHA
+            | gl::COLOR_WRITEMASK => return draw_buffer_parameter(&s.draw_buffers[0], pname),
             gl::BLEND_COLOR => Floats(s.blend_color.to_vec()),
-            gl::COLOR_WRITEMASK => draw_buffer_parameter(&s.draw_buffers[0], None),
             gl::POLYGON_OFFSET_FACTOR => Float(s.polygon_offset_factor),
             gl::POLYGON_OFFSET_UNITS => Float(s.polygon_offset_units),
             gl::LINE_WIDTH => Float(s.line_width),

@@ -174,21 +174,10 @@ impl Context {
         if !self.extensions.draw_buffers_indexed {
             return None;
         }
-        let slot = match pname {
-            gl::BLEND_SRC_RGB => Some(0),
-            gl::BLEND_DST_RGB => Some(1),
-            gl::BLEND_SRC_ALPHA => Some(2),
-            gl::BLEND_DST_ALPHA => Some(3),
-            gl::BLEND_EQUATION_RGB => Some(4),
-            gl::BLEND_EQUATION_ALPHA => Some(5),
-            gl::COLOR_WRITEMASK => None,
-            _ => return None,
-        };
+        // Whether `pname` is one of the draw buffers' names, before the index is checked.
+        draw_buffer_parameter(&DrawBufferState::default(), pname)?;
         let i = self.draw_buffer_index(index, "getIndexedParameter")?;
-        Some(Some(draw_buffer_parameter(
-            &self.state.draw_buffers[i],
-            slot,
-        )))
+        Some(draw_buffer_parameter(&self.state.draw_buffers[i], pname))
     }
 
     /// `index` as a draw buffer, or `INVALID_VALUE` past `MAX_DRAW_BUFFERS`.
@@ -234,12 +223,19 @@ impl Context {
     }
 }
 
-/// A draw buffer's factor or equation (`slot` 0–5: the four factors, then the two
-/// equations), or its colour mask (`None`).
-pub(crate) fn draw_buffer_parameter(b: &DrawBufferState, slot: Option<usize>) -> Parameter {
-    match slot {
-        Some(s @ 0..=3) => Parameter::Enum(b.factors[s]),
-        Some(s) => Parameter::Enum(b.equations[s - 4]),
-        None => Parameter::Bools(b.color_mask.to_vec()),
-    }
+/// What a draw buffer's state answers for `pname` (`BLEND_SRC_RGB`, …, `BLEND_EQUATION_ALPHA`,
+/// `COLOR_WRITEMASK`); `None` for another name.
+pub(crate) fn draw_buffer_parameter(b: &DrawBufferState, pname: u32) -> Option<Parameter> {
+    let [sr, dr, sa, da] = b.factors;
+    let [er, ea] = b.equations;
+    Some(match pname {
+        gl::BLEND_SRC_RGB => Parameter::Enum(sr),
+        gl::BLEND_DST_RGB => Parameter::Enum(dr),
+        gl::BLEND_SRC_ALPHA => Parameter::Enum(sa),
+        gl::BLEND_DST_ALPHA => Parameter::Enum(da),
+        gl::BLEND_EQUATION_RGB => Parameter::Enum(er),
+        gl::BLEND_EQUATION_ALPHA => Parameter::Enum(ea),
+        gl::COLOR_WRITEMASK => Parameter::Bools(b.color_mask.to_vec()),
+        _ => return None,
+    })
 }

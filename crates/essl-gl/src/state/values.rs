@@ -98,6 +98,12 @@ impl RenderState {
             generic_attribs: vec![GenericAttrib::default(); attribs as usize],
         }
     }
+
+    /// Draw buffer `i`'s blending and colour mask; GL's initial ones (no blending, every
+    /// channel written) past the last draw buffer.
+    pub(crate) fn draw_buffer(&self, i: usize) -> super::DrawBufferState {
+        self.draw_buffers.get(i).copied().unwrap_or_default()
+    }
 }
 
 /// Pixel storage parameters (`pixel_storei`).
