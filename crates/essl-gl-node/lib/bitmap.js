@@ -132,11 +132,13 @@ export function imageBitmapFactory(window) {
         `Failed to execute '${name}': The provided value is not of type '(Blob or HTMLCanvasElement or HTMLImageElement or ImageBitmap or ImageData or OffscreenCanvas)'.`,
       );
     }
-    pixels = { width: pixels.width, height: pixels.height, data: Uint8Array.from(pixels.data) };
+    const taken = pixels.data;
     if (rect) pixels = crop(pixels, rect);
     if (options.imageOrientation === 'flipY') pixels = flipRows(pixels);
     if (options.premultiplyAlpha === 'premultiply') pixels = premultiply(pixels);
-    return new ImageBitmap(BITMAP_PIXELS, pixels);
+    // The bitmap owns its pixels: each step above made new ones; without any, copy them.
+    const data = pixels.data === taken ? Uint8Array.from(taken) : pixels.data;
+    return new ImageBitmap(BITMAP_PIXELS, { width: pixels.width, height: pixels.height, data });
   };
 }
 

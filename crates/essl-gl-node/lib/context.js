@@ -208,7 +208,7 @@ for (const cls of [WebGLRenderingContext, WebGL2RenderingContext]) {
  * clears (the drawing buffer changed), fences and queries (their results become available
  * once control is back in the event loop).
  */
-const FRAME_CALLS = [
+export const FRAME_CALLS = [
   'clear', 'clearBufferfv', 'clearBufferiv', 'clearBufferuiv', 'clearBufferfi', 'drawArrays',
   'drawElements', 'drawArraysInstanced', 'drawElementsInstanced', 'drawRangeElements',
   'blitFramebuffer', 'fenceSync', 'endQuery',

@@ -1,7 +1,7 @@
 // The extension objects `getExtension` returns: those essl-gl implements (their constants),
 // and `WEBGL_lose_context`, which the binding implements (a lost context is the binding's
 // state). One object per name and context, as browsers return the same object each time.
-import { frameChanged, loseContext, restoreContext } from './context.js';
+import { FRAME_CALLS, frameChanged, loseContext, restoreContext } from './context.js';
 import { NATIVE, VERSION, WebGLShader, argc, i32, i32list, num, oid, u32 } from './objects.js';
 import { METHODS_2 } from './generated.js';
 
@@ -202,8 +202,8 @@ export function extensionObject(ctx, native, name) {
   }
   for (const [own, core] of Object.entries(METHODS[enabled] ?? {})) {
     const f = METHODS_2[core];
-    // A draw ends the frame as the core draws do.
-    const draws = core.startsWith('draw') && core !== 'drawBuffers';
+    // A draw ends the frame as the core call does.
+    const draws = FRAME_CALLS.includes(core);
     const value = {
       [own](...args) {
         const r = f.apply(ctx, args);
