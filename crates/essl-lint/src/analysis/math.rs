@@ -140,12 +140,17 @@ impl Call<'_> {
         let nums = &self.nums;
         match self.fun {
             Mf::Abs => {
+                // `abs` of an external value as such says the caller passes both signs, so
+                // its 0 is an ordinary value: the assumption that the value is positive (or,
+                // for a scalar, not 0) is dropped. A vector keeps its assumed non-zero length.
+                let ext = fx.has(Facts::EXT);
+                let nz = fx.has(Facts::NZ) && !(ext && x.n == 1);
                 let facts = Facts::NN
                     .set(
                         Facts::POS,
-                        fx.has(Facts::POS) || (x.n == 1 && fx.has(Facts::NZ)),
+                        !ext && (fx.has(Facts::POS) || (x.n == 1 && fx.has(Facts::NZ))),
                     )
-                    .set(Facts::NZ, fx.has(Facts::NZ))
+                    .set(Facts::NZ, nz)
                     .set(Facts::UNIT, fx.has(Facts::UNIT))
                     .set(Facts::INTEGRAL, fx.has(Facts::INTEGRAL));
                 let mut r = Num::from_components(&x.map(Interval::abs), facts.with(deps));

@@ -37,7 +37,9 @@ declare_rule! {
     /// - A per-pixel value that reaches 0 only at isolated points (a difference of varyings).
     /// - An argument kept positive: `max(x, 1e-6)`, `x + 1e-4` of a non-negative `x`, `exp(x)`,
     ///   or under a guard (`if (lum > 0.0)`).
-    /// - A uniform or input as such: valid values are the caller's business.
+    /// - A uniform or input as such: valid values are the caller's business. Its `abs` is another
+    ///   matter: `log2(abs(u_m[1][0]))` says the value takes both signs, and 0 (an entry of an
+    ///   identity matrix) is an ordinary one.
     ///
     /// Severity: a warning when values the shader itself produces reach the hazard (rounding
     /// included, which says so in the message); a note, naming the uniform, when one uniform alone

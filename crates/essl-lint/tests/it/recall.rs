@@ -107,6 +107,7 @@ const HAZARDS: &[Hazard] = &[
     ("domain-log", "computed", "  r = log(dot(n, l));", W),
     ("domain-log", "texture", "  r = log(t.r);", W),
     ("domain-log", "uniform", "  r = log(u_a - 1.0);", N),
+    ("domain-log", "uniform", "  r = log2(abs(u_a));", N),
     ("domain-log", "rounding", "  r = log2(1.0 - length(n));", W),
     (
         "domain-atan2",
@@ -296,6 +297,7 @@ const GUARDED: &[(&str, &str)] = &[
         "  vec3 d = v_pos - u_dir;\n  r = inversesqrt(max(dot(d, d), 1e-8));",
     ),
     ("domain-log", "  r = log(max(dot(n, l), 1e-6));"),
+    ("domain-log", "  r = log2(max(abs(u_a), 1e-6));"),
     (
         "domain-atan2",
         "  vec3 nm = texture(u_tex, v_uv).xyz * 2.0 - 1.0;\n  r = (abs(nm.x) + abs(nm.y) > 1e-6) ? atan(nm.y, nm.x) : 0.0;",
