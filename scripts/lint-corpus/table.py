@@ -119,6 +119,7 @@ def main():
     if hazards:
         reported = {key(f["rule"], f["repo"], f["text"]) + (str(f["line"]),) for f in findings}
         per_rule = collections.defaultdict(lambda: [0, 0])
+        per_class = collections.defaultdict(lambda: [0, 0])
         missed = []
         for line in open(hazards, encoding="utf-8"):
             if not line.strip() or line.startswith("#"):
@@ -128,6 +129,8 @@ def main():
             hit = any(r[:3] == k and (at == "*" or r[3] == at) for r in reported)
             per_rule[rule][0] += hit
             per_rule[rule][1] += 1
+            per_class[cls][0] += hit
+            per_class[cls][1] += 1
             if not hit:
                 missed.append(f"  [{rule}] {repo}: {text}")
         print()
@@ -141,6 +144,7 @@ def main():
         print(f"| **total** | **{n}** | **{hit}** |")
         print()
         print(f"Recall on the hand-found hazards: {hit} of {n} ({100.0 * hit / max(n, 1):.1f} %).")
+        print("By class: " + ", ".join(f"{c} {v[0]} of {v[1]}" for c, v in sorted(per_class.items())) + ".")
         for m in missed:
             print(m)
     if before:
