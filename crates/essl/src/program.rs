@@ -64,6 +64,12 @@ pub struct LowerOptions {
     /// makes one without it), `ZERO_TO_ONE_EXT` keeps z as the shader wrote it where
     /// [`LowerOptions::zero_to_one_depth`] would map it.
     pub clip_control: bool,
+    /// Declare a fragment-stage pipeline-overridable `bool`, [`SCISSOR_DISCARD`] (false unless
+    /// the pipeline sets it), under which fragments whose framebuffer position lies outside
+    /// [`InternalUniform::ScissorRect`] are discarded before the shader runs: for a renderer
+    /// whose rasterizer does not keep a multisampled draw inside the scissor box (Mesa 22's
+    /// lavapipe covers samples of the pixels left of and below it).
+    pub scissor_discard: bool,
 }
 
 /// The vertex stage's pipeline-overridable `bool` that is true under `EXT_clip_control`'s
@@ -72,6 +78,10 @@ pub const CLIP_UPPER_LEFT: &str = "_essl_clip_upper_left";
 /// The vertex stage's pipeline-overridable `bool` that is true under `EXT_clip_control`'s
 /// `ZERO_TO_ONE_EXT` depth mode ([`LowerOptions::clip_control`]).
 pub const CLIP_ZERO_TO_ONE: &str = "_essl_clip_zero_to_one";
+
+/// The fragment stage's pipeline-overridable `bool` that turns on the scissor test in the
+/// shader ([`LowerOptions::scissor_discard`]).
+pub const SCISSOR_DISCARD: &str = "_essl_scissor_discard";
 
 impl Default for LowerOptions {
     fn default() -> Self {
@@ -83,6 +93,7 @@ impl Default for LowerOptions {
             integer_cube_as_array: false,
             clip_distance_switches: false,
             clip_control: false,
+            scissor_discard: false,
         }
     }
 }
@@ -172,14 +183,19 @@ pub enum InternalUniform {
     /// `gl_DrawID` as an `i32`: the index of the draw within a multi-draw call, 0 for any
     /// other draw (`WEBGL_multi_draw`).
     DrawId,
+    /// The scissor box as a `vec4` of the framebuffer's coordinates (the stage's
+    /// `@builtin(position)`): left, top, right, bottom, the last two exclusive
+    /// ([`LowerOptions::scissor_discard`]).
+    ScissorRect,
 }
 
 impl InternalUniform {
     /// Every value.
-    pub const ALL: [InternalUniform; 3] = [
+    pub const ALL: [InternalUniform; 4] = [
         InternalUniform::FramebufferHeight,
         InternalUniform::ClipDistancesEnabled,
         InternalUniform::DrawId,
+        InternalUniform::ScissorRect,
     ];
 
     /// A stable snake_case name for the value (`framebuffer_height`), for binding maps.
@@ -188,6 +204,7 @@ impl InternalUniform {
             InternalUniform::FramebufferHeight => "framebuffer_height",
             InternalUniform::ClipDistancesEnabled => "clip_distances_enabled",
             InternalUniform::DrawId => "draw_id",
+            InternalUniform::ScissorRect => "scissor_rect",
         }
     }
 
@@ -197,14 +214,17 @@ impl InternalUniform {
             InternalUniform::FramebufferHeight => "_essl_framebuffer_height",
             InternalUniform::ClipDistancesEnabled => "_essl_clip_distances_enabled",
             InternalUniform::DrawId => "_essl_draw_id",
+            InternalUniform::ScissorRect => "_essl_scissor_rect",
         }
     }
 
     /// The vertex stage reads it (`gl_ClipDistance`'s switches, `gl_DrawID`), or the fragment
-    /// stage (the framebuffer height).
+    /// stage (the framebuffer height, the scissor box).
     pub fn stage(self) -> crate::Stage {
         match self {
-            InternalUniform::FramebufferHeight => crate::Stage::Fragment,
+            InternalUniform::FramebufferHeight | InternalUniform::ScissorRect => {
+                crate::Stage::Fragment
+            }
             InternalUniform::ClipDistancesEnabled | InternalUniform::DrawId => crate::Stage::Vertex,
         }
     }

@@ -183,6 +183,10 @@ impl Context {
             self.clip_control_flags()
         };
         let s = &self.state;
+        // Lavapipe lets a multisampled draw cover samples outside the scissor box: the
+        // fragment shader tests the box itself there (`LOWER_OPTIONS.scissor_discard`).
+        let scissor_discard =
+            s.scissor_test && target.samples > 1 && !linked.layout.fragment.overrides.is_empty();
         let buffers = &s.draw_buffers[..target.colors.len().min(s.draw_buffers.len())];
         let blends: Vec<_> = buffers
             .iter()
@@ -258,6 +262,7 @@ impl Context {
             capture: call.capture.as_ref().map(|c| c.spec.clone()),
             rasterize: call.rasterize,
             clip_control,
+            scissor_discard,
         };
         let uses_constant = key.blends.iter().flat_map(|(b, _)| b).any(|b| {
             [

@@ -14,7 +14,10 @@ use std::collections::HashMap;
 
 use crate::gpu::Gpu;
 use crate::program::LinkedProgram;
-use crate::shader_patch::{capture_outputs, wrap_entry_point, CaptureSpec, InputPatch};
+use crate::shader_patch::{
+    capture_outputs, output_needs_widening, without_frag_depth, wrap_entry_point, CaptureSpec,
+    InputPatch,
+};
 use crate::texture::SampleKind;
 
 /// Bind groups kept at most before the caches are emptied.
@@ -82,6 +85,8 @@ pub(crate) struct PipelineKey {
     /// `EXT_clip_control`'s (upper-left origin, zero-to-one depth) for a program whose vertex
     /// stage declares them; (false, false) for another.
     pub(crate) clip_control: (bool, bool),
+    /// The fragment stage tests the scissor box itself ([`essl::program::SCISSOR_DISCARD`]).
+    pub(crate) scissor_discard: bool,
 }
 
 /// What a group-0 bind group holds: the default block's arena chunk and size, and the
@@ -109,6 +114,9 @@ pub(crate) struct PipelineCache {
     #[allow(clippy::type_complexity)]
     modules:
         HashMap<(u64, Vec<InputPatch>, Option<CaptureSpec>), Result<wgpu::ShaderModule, Rejected>>,
+    /// Per program: its fragment module without the `gl_FragDepth` output (`None`: it writes
+    /// none), for targets without a depth attachment.
+    fragment_without_depth: HashMap<u64, Option<Result<wgpu::ShaderModule, Rejected>>>,
     capture_layouts: HashMap<u32, wgpu::BindGroupLayout>,
     clear: HashMap<ClearKey, wgpu::RenderPipeline>,
     blit: HashMap<BlitKey, (wgpu::RenderPipeline, wgpu::BindGroupLayout)>,
@@ -343,6 +351,38 @@ impl PipelineCache {
             .clone()
     }
 
+    /// The fragment module for a target with (`depth`) or without a depth attachment: without
+    /// one, a shader that writes `gl_FragDepth` has the output taken out, as GL ignores it.
+    fn fragment_module(
+        &mut self,
+        gpu: &Gpu,
+        program: &LinkedProgram,
+        depth: bool,
+    ) -> Result<wgpu::ShaderModule, Rejected> {
+        if depth {
+            return Ok(program.fragment_module.clone());
+        }
+        let variant = self
+            .fragment_without_depth
+            .entry(program.serial)
+            .or_insert_with(|| {
+                let fragment = &program.layout.fragment;
+                let widened;
+                let base = if output_needs_widening(fragment) {
+                    widened = wrap_entry_point(fragment, &[], true);
+                    &widened
+                } else {
+                    fragment
+                };
+                without_frag_depth(base)
+                    .map(|m| create_module(gpu, m, "essl-gl fragment (no depth output)"))
+            });
+        match variant {
+            Some(r) => r.clone(),
+            None => Ok(program.fragment_module.clone()),
+        }
+    }
+
     /// The layout of group 2 for transform feedback: `buffers` storage buffers at bindings
     /// `0..`, the capture parameters at binding 4.
     pub(crate) fn capture_layout(&mut self, gpu: &Gpu, buffers: u32) -> wgpu::BindGroupLayout {
@@ -402,6 +442,7 @@ impl PipelineCache {
         program: &LinkedProgram,
     ) -> Result<CachedPipeline, Rejected> {
         let vertex_module = self.vertex_module(gpu, program, &key.patches, &key.capture)?;
+        let fragment_module = self.fragment_module(gpu, program, key.depth_format.is_some())?;
         let (default, blocks) = (
             program.layout.uniform_block.is_some(),
             program.layout.blocks.len(),
@@ -462,6 +503,11 @@ impl PipelineCache {
         .filter(|(_, on)| *on)
         .map(|(name, _)| (name, 1.0))
         .collect();
+        let fragment_constants: Vec<(&str, f64)> = key
+            .scissor_discard
+            .then_some((essl::program::SCISSOR_DISCARD, 1.0))
+            .into_iter()
+            .collect();
         let pipeline = gpu
             .device
             .create_render_pipeline(&wgpu::RenderPipelineDescriptor {
@@ -514,9 +560,12 @@ impl PipelineCache {
                     alpha_to_coverage_enabled: key.alpha_to_coverage && key.samples > 1,
                 },
                 fragment: key.rasterize.then(|| wgpu::FragmentState {
-                    module: &program.fragment_module,
+                    module: &fragment_module,
                     entry_point: Some("main"),
-                    compilation_options: Default::default(),
+                    compilation_options: wgpu::PipelineCompilationOptions {
+                        constants: &fragment_constants,
+                        ..Default::default()
+                    },
                     targets: &targets,
                 }),
                 multiview_mask: None,

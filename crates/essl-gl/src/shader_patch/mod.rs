@@ -18,11 +18,13 @@ use naga::{
 };
 
 mod capture;
+mod depth;
 
 pub(crate) use capture::{
     capture_outputs, CaptureSource, CaptureSpec, CaptureValue,
     PARAMS_BINDING as CAPTURE_PARAMS_BINDING,
 };
+pub(crate) use depth::without_frag_depth;
 
 use crate::program::{type_shape, ValueKind};
 
