@@ -79,7 +79,6 @@ const CONSTANTS = {
       [`COMPRESSED_SRGB8_ALPHA8_ASTC_${w}x${h}_KHR`, 0x93d0 + i],
     ]),
   ),
-  KHR_parallel_shader_compile: { COMPLETION_STATUS_KHR: 0x91b1 },
   WEBGL_stencil_texturing: { DEPTH_STENCIL_TEXTURE_MODE_WEBGL: 0x90ea, STENCIL_INDEX_WEBGL: 0x1901 },
   EXT_polygon_offset_clamp: { POLYGON_OFFSET_CLAMP_EXT: 0x8e1b },
   WEBGL_debug_renderer_info: { UNMASKED_VENDOR_WEBGL: 0x9245, UNMASKED_RENDERER_WEBGL: 0x9246 },

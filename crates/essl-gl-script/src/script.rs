@@ -96,11 +96,6 @@ const EXTENSION_ENUMS: &[(&str, &str, u32)] = &[
         "UNSIGNED_NORMALIZED_EXT",
         0x8C17,
     ),
-    (
-        "KHR_parallel_shader_compile",
-        "COMPLETION_STATUS_KHR",
-        0x91B1,
-    ),
 ];
 
 /// Reads a script from a file; `{"file": …}` arguments are read relative to its folder.

@@ -354,7 +354,6 @@ impl Context {
             let mut v = vec![
                 Extension::ColorBufferFloat,
                 Extension::ColorBufferHalfFloat,
-                Extension::ParallelShaderCompile,
                 Extension::DrawBuffersIndexed,
                 Extension::StencilTexturing,
                 Extension::ConservativeDepth,
@@ -472,7 +471,6 @@ impl Context {
             // Blending 32-bit floats depends on the adapter only (`blends_float32`).
             Extension::FloatBlend => {}
             Extension::TextureFloatLinear => x.texture_float_linear = true,
-            Extension::ParallelShaderCompile => x.parallel_shader_compile = true,
             Extension::DrawBuffersIndexed => x.draw_buffers_indexed = true,
             Extension::StencilTexturing => x.stencil_texturing = true,
             Extension::ClipCullDistance => {

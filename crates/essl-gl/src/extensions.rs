@@ -7,10 +7,12 @@
 //! `EXT_float_blend` (32-bit float attachments blend where the adapter can, whether or not
 //! the extension was turned on, as in Chromium and as the conformance suite checks; elsewhere
 //! such a draw is `INVALID_OPERATION` and the extension is not offered),
-//! `OES_texture_float_linear` (filter 32-bit float textures, where the adapter can) and
-//! `KHR_parallel_shader_compile` (`COMPLETION_STATUS_KHR`, always true: compiling is
-//! synchronous). Both contexts offer the compressed-texture extensions (S3TC, S3TC sRGB, ETC,
-//! ETC1, ASTC LDR, RGTC, BPTC: decoded on upload, `texture/compressed/`) and
+//! and `OES_texture_float_linear` (filter 32-bit float textures, where the adapter can). It
+//! does not offer `KHR_parallel_shader_compile`: programs link inside `linkProgram`, so
+//! `COMPLETION_STATUS_KHR` could never be false, and a page that waits for it to be (the
+//! conformance suite's) grows its shaders until memory runs out. Both contexts offer the
+//! compressed-texture extensions (S3TC, S3TC sRGB, ETC, ETC1, ASTC LDR, RGTC, BPTC: decoded on
+//! upload, `texture/compressed/`) and
 //! `EXT_texture_filter_anisotropic` (wgpu's anisotropy clamp, up to 16, where the
 //! minification, magnification and mipmap filters are all linear, as wgpu requires). WebGL 2
 //! contexts offer `WEBGL_clip_cull_distance` where the adapter has clip distances (eight; no
@@ -31,8 +33,6 @@ pub(crate) struct Extensions {
     pub(crate) color_buffer_float: bool,
     /// `OES_texture_float_linear`.
     pub(crate) texture_float_linear: bool,
-    /// `KHR_parallel_shader_compile`.
-    pub(crate) parallel_shader_compile: bool,
     /// The compressed-texture extensions turned on.
     pub(crate) compressed: CompressedSet,
     /// `EXT_texture_filter_anisotropic`.
@@ -142,8 +142,6 @@ pub enum Extension {
     FloatBlend,
     /// `OES_texture_float_linear`.
     TextureFloatLinear,
-    /// `KHR_parallel_shader_compile`.
-    ParallelShaderCompile,
     /// `ANGLE_instanced_arrays` (WebGL 1).
     AngleInstancedArrays,
     /// `EXT_blend_minmax` (WebGL 1).
@@ -231,7 +229,6 @@ impl Extension {
             Extension::ColorBufferHalfFloat => "EXT_color_buffer_half_float",
             Extension::FloatBlend => "EXT_float_blend",
             Extension::TextureFloatLinear => "OES_texture_float_linear",
-            Extension::ParallelShaderCompile => "KHR_parallel_shader_compile",
             Extension::AngleInstancedArrays => "ANGLE_instanced_arrays",
             Extension::ExtBlendMinmax => "EXT_blend_minmax",
             Extension::ExtFragDepth => "EXT_frag_depth",
