@@ -71,6 +71,16 @@ async function main() {
           return c;
         };
       }
+      // jsdom lays nothing out, so an element's client size is 0; an unstyled canvas's is
+      // its width and height, as a browser lays it out.
+      for (const dim of ['Width', 'Height']) {
+        Object.defineProperty(window.HTMLCanvasElement.prototype, `client${dim}`, {
+          configurable: true,
+          get() {
+            return this.style[dim.toLowerCase()] ? 0 : this[dim.toLowerCase()];
+          },
+        });
+      }
       // jsdom has no fetch, and Node's does not read file: URLs: the suite's resources are
       // read from the folder the page is in, as a browser serving the suite reads them.
       window.fetch = async (input) => {

@@ -164,4 +164,47 @@ export function installImageDecoding(window) {
   if (typeof window.ImageBitmap !== 'function') {
     Object.defineProperty(window, 'ImageBitmap', { value: ImageBitmap, writable: true, configurable: true });
   }
+  if (typeof window.ImageData !== 'function') {
+    Object.defineProperty(window, 'ImageData', { value: ImageData, writable: true, configurable: true });
+  }
+}
+
+/**
+ * `ImageData` for a window that has none (jsdom without a 2D canvas library): RGBA pixels in
+ * a `Uint8ClampedArray`, from `new ImageData(width, height)` or `new ImageData(data, width[,
+ * height])`, with the DOM's checks (a `RangeError` where it throws an `IndexSizeError`).
+ */
+export class ImageData {
+  constructor(a, b, c) {
+    let data;
+    let width;
+    let height;
+    if (types.isUint8ClampedArray(a)) {
+      width = b >>> 0;
+      if (width === 0) throw new RangeError("Failed to construct 'ImageData': The source width is zero or not a number.");
+      if (a.length === 0 || a.length % (4 * width) !== 0) {
+        throw new RangeError("Failed to construct 'ImageData': The input data length is not a multiple of (4 * width).");
+      }
+      height = c === undefined ? a.length / (4 * width) : c >>> 0;
+      if (a.length !== 4 * width * height) {
+        throw new RangeError("Failed to construct 'ImageData': The input data length is not equal to (4 * width * height).");
+      }
+      data = a;
+    } else if (typeof a === 'number' && b !== undefined) {
+      width = a >>> 0;
+      height = b >>> 0;
+      if (width === 0 || height === 0) {
+        throw new RangeError("Failed to construct 'ImageData': The source width or height is zero.");
+      }
+      data = new Uint8ClampedArray(width * height * 4);
+    } else {
+      throw new TypeError("Failed to construct 'ImageData': parameter 1 is not of type 'Uint8ClampedArray' or a number of pixels.");
+    }
+    Object.defineProperties(this, {
+      data: { value: data, enumerable: true },
+      width: { value: width, enumerable: true },
+      height: { value: height, enumerable: true },
+      colorSpace: { value: 'srgb', enumerable: true },
+    });
+  }
 }

@@ -511,3 +511,31 @@ test('createImageBitmap and image.decode in a document: blobs, images, flipY, cr
   gl.destroy();
   w.close();
 });
+
+test('ImageData in a document without one: both constructors, the DOM checks, uploads', async () => {
+  const { JSDOM } = await import('jsdom');
+  const dom = new JSDOM('<!doctype html><body></body>', { runScripts: 'outside-only' });
+  const w = dom.window;
+  installInWindow(w);
+  assert.equal(typeof w.ImageData, 'function');
+  // Pixels made in the page's realm, as a page script makes them.
+  const data = w.eval('new Uint8ClampedArray([255, 0, 0, 255, 0, 0, 255, 255])');
+  const image = new w.ImageData(data, 1);
+  assert.deepEqual([image.width, image.height, image.colorSpace], [1, 2, 'srgb']);
+  assert.equal(new w.ImageData(3, 2).data.length, 24);
+  assert.throws(() => new w.ImageData(data, 3), RangeError);
+  assert.throws(() => new w.ImageData(data, 1, 3), RangeError);
+  assert.throws(() => new w.ImageData(0, 2), RangeError);
+  assert.throws(() => new w.ImageData('pixels', 1), TypeError);
+  const gl = w.document.createElement('canvas').getContext('webgl2');
+  gl.bindTexture(gl.TEXTURE_2D, gl.createTexture());
+  gl.texImage2D(gl.TEXTURE_2D, 0, gl.RGBA, gl.RGBA, gl.UNSIGNED_BYTE, image);
+  assert.equal(gl.getError(), gl.NO_ERROR);
+  gl.bindFramebuffer(gl.FRAMEBUFFER, gl.createFramebuffer());
+  gl.framebufferTexture2D(gl.FRAMEBUFFER, gl.COLOR_ATTACHMENT0, gl.TEXTURE_2D, gl.getParameter(gl.TEXTURE_BINDING_2D), 0);
+  const px = new Uint8Array(8);
+  gl.readPixels(0, 0, 1, 2, gl.RGBA, gl.UNSIGNED_BYTE, px);
+  assert.deepEqual([...px], [255, 0, 0, 255, 0, 0, 255, 255]);
+  gl.destroy();
+  w.close();
+});
