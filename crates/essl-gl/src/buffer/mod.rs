@@ -92,6 +92,13 @@ impl Context {
         bound
     }
 
+    /// [`Context::bound_buffer`] for an operation on the data: `INVALID_OPERATION` too when the
+    /// buffer is bound for transform feedback and at another binding point.
+    fn data_buffer(&mut self, target: u32, function: &str) -> Option<Id> {
+        let id = self.bound_buffer(target, function)?;
+        (!self.refuse_double_bound(id, function)).then_some(id)
+    }
+
     /// Binds a buffer to a target (`bindBuffer`): `ARRAY_BUFFER`, `ELEMENT_ARRAY_BUFFER` (state
     /// of the bound vertex array, as in GL), `COPY_READ_BUFFER`, `COPY_WRITE_BUFFER`,
     /// `UNIFORM_BUFFER`, `PIXEL_PACK_BUFFER`, `PIXEL_UNPACK_BUFFER`,
@@ -171,7 +178,7 @@ impl Context {
 
     fn buffer_data_impl(&mut self, target: u32, data: &[u8], size: Option<usize>, usage: u32) {
         const F: &str = "bufferData";
-        let Some(id) = self.bound_buffer(target, F) else {
+        let Some(id) = self.data_buffer(target, F) else {
             return;
         };
         if !is_usage(usage) {
@@ -198,7 +205,7 @@ impl Context {
     ) {
         const F: &str = "bufferSubData";
         let bytes: &[u8] = bytemuck::cast_slice(data);
-        let Some(id) = self.bound_buffer(target, F) else {
+        let Some(id) = self.data_buffer(target, F) else {
             return;
         };
         let b = self
@@ -222,7 +229,7 @@ impl Context {
     ) {
         const F: &str = "getBufferSubData";
         let dst: &mut [u8] = bytemuck::cast_slice_mut(dst);
-        let Some(id) = self.bound_buffer(target, F) else {
+        let Some(id) = self.data_buffer(target, F) else {
             return;
         };
         let b = self
@@ -248,10 +255,10 @@ impl Context {
         size: i64,
     ) {
         const F: &str = "copyBufferSubData";
-        let Some(src) = self.bound_buffer(read_target, F) else {
+        let Some(src) = self.data_buffer(read_target, F) else {
             return;
         };
-        let Some(dst) = self.bound_buffer(write_target, F) else {
+        let Some(dst) = self.data_buffer(write_target, F) else {
             return;
         };
         if size < 0 {

@@ -113,28 +113,6 @@ impl Context {
         })
     }
 
-    /// Whether `buffer` is bound at a point other than the transform feedback ones: a generic
-    /// binding, an indexed uniform buffer binding, or the vertex array's element buffer.
-    fn bound_elsewhere(&self, buffer: crate::objects::Id) -> bool {
-        const GENERIC: [u32; 6] = [
-            gl::ARRAY_BUFFER,
-            gl::COPY_READ_BUFFER,
-            gl::COPY_WRITE_BUFFER,
-            gl::PIXEL_PACK_BUFFER,
-            gl::PIXEL_UNPACK_BUFFER,
-            gl::UNIFORM_BUFFER,
-        ];
-        GENERIC
-            .iter()
-            .any(|&t| self.bindings.buffer(t) == Some(buffer))
-            || (0..crate::context::MAX_UNIFORM_BUFFER_BINDINGS as usize).any(|i| {
-                self.bindings
-                    .uniform_range(i)
-                    .is_some_and(|r| r.buffer == buffer)
-            })
-            || self.vao().element_buffer == Some(buffer)
-    }
-
     /// After a capturing draw: the session has written `vertices` more, and the
     /// primitives-written query counts them.
     pub(super) fn count_captured(&mut self, vertices: u64) {

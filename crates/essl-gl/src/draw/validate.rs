@@ -79,6 +79,19 @@ impl Context {
         }
         let blocks = self.gather_blocks(pid, f)?;
         let sources = self.gather_sources(pid, f)?;
+        // WebGL 2 §5.1: a buffer at an indexed binding of the bound transform feedback object
+        // cannot be read by a draw, capturing or not (while capturing, `plan_capture` also
+        // refuses one bound anywhere else).
+        let read_for_feedback = sources.iter().any(
+            |(_, s)| matches!(s, Source::Array { buffer, .. } if self.in_feedback_object(*buffer)),
+        ) || blocks.iter().any(|&(b, _, _)| self.in_feedback_object(b));
+        if read_for_feedback {
+            return self.fail(
+                gl::INVALID_OPERATION,
+                f,
+                "a buffer the draw reads is bound for transform feedback",
+            );
+        }
         let slot_plans = self.gather_samplers(pid, f)?;
         let formats = self.draw_formats();
         self.check_outputs(pid, &formats, f)?;

@@ -125,6 +125,15 @@ impl Objects {
         }
     }
 
+    /// Whether `buffer` is at an indexed binding of a transform feedback object whose session
+    /// is active (bound or not, paused or not).
+    pub(crate) fn captures_into(&self, buffer: Id) -> bool {
+        std::iter::once(&self.default_transform_feedback)
+            .chain(self.transform_feedbacks.values())
+            .filter(|tf| tf.session.is_some())
+            .any(|tf| tf.buffers.iter().flatten().any(|r| r.buffer == buffer))
+    }
+
     /// Mutable [`Objects::feedback`] (for the state that holds no reference).
     pub(crate) fn feedback_mut(&mut self, bound: Option<Id>) -> &mut TransformFeedbackObject {
         match bound {

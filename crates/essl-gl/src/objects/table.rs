@@ -94,6 +94,11 @@ impl<T> Table<T> {
         self.entry_mut(id).and_then(|e| e.value.as_mut())
     }
 
+    /// Every object stored, deleted but still referenced ones too.
+    pub(crate) fn values(&self) -> impl Iterator<Item = &T> {
+        self.entries.iter().filter_map(|e| e.value.as_ref())
+    }
+
     /// Whether `id` names a live object.
     pub(crate) fn is_live(&self, id: Id) -> bool {
         self.get(id).is_some()

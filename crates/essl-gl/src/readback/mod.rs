@@ -128,6 +128,9 @@ impl Context {
         let Some(id) = self.bindings.buffer(gl::PIXEL_PACK_BUFFER) else {
             return self.error(gl::INVALID_OPERATION, F, "no PIXEL_PACK_BUFFER bound");
         };
+        if self.refuse_double_bound(id, F) {
+            return;
+        }
         if offset < 0 {
             return self.error(gl::INVALID_VALUE, F, "negative offset");
         }
@@ -209,6 +212,15 @@ impl Context {
         } else {
             r.width as usize
         };
+        // WebGL 2's pixel store constraint: rows do not overlap.
+        if p.pack_skip_pixels as usize + r.width as usize > row_len {
+            self.error(
+                gl::INVALID_OPERATION,
+                f,
+                "PACK_SKIP_PIXELS + width is past PACK_ROW_LENGTH",
+            );
+            return None;
+        }
         let align = p.pack_alignment as usize;
         let stride = (row_len * pixel).div_ceil(align) * align;
         let start = p.pack_skip_rows as usize * stride + p.pack_skip_pixels as usize * pixel;
@@ -389,8 +401,6 @@ fn is_read_format(format: u32) -> bool {
         gl::RGBA
             | gl::RGB
             | gl::ALPHA
-            | gl::LUMINANCE
-            | gl::LUMINANCE_ALPHA
             | gl::RED
             | gl::RG
             | gl::RGBA_INTEGER

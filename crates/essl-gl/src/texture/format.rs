@@ -339,6 +339,8 @@ impl InternalFormat {
             gl::UNSIGNED_SHORT_5_6_5 => matches!(self.gl, gl::RGB | gl::RGB565),
             gl::UNSIGNED_SHORT_4_4_4_4 => matches!(self.gl, gl::RGBA | gl::RGBA4),
             gl::UNSIGNED_SHORT_5_5_5_1 => matches!(self.gl, gl::RGBA | gl::RGB5_A1),
+            // ES 3.0 table 3.2: RGB5_A1 also takes 10-bit colour with 2-bit alpha.
+            gl::UNSIGNED_INT_2_10_10_10_REV => self.gl == gl::RGB5_A1,
             _ => false,
         }
     }

@@ -140,6 +140,25 @@ pub(super) fn convert_pixels(
         }
         return;
     }
+    if ty == gl::UNSIGNED_INT_2_10_10_10_REV {
+        // Into RGB5_A1 (stored as RGBA8): each channel rounded to the format's 5 bits, alpha
+        // to its 1, as GL converts.
+        let to5 = |x: u32| -> u8 {
+            let q = (x * 31 + 511) / 1023;
+            ((q * 255 + 15) / 31) as u8
+        };
+        for px in src.chunks_exact(4).take(count) {
+            let v = u32::from_ne_bytes([px[0], px[1], px[2], px[3]]);
+            let a = if v >> 30 >= 2 { 255 } else { 0 };
+            out.extend_from_slice(&[
+                to5(v & 0x3FF),
+                to5((v >> 10) & 0x3FF),
+                to5((v >> 20) & 0x3FF),
+                a,
+            ]);
+        }
+        return;
+    }
     let cs = f.comp.size();
     let src_cs = if ty == gl::FLOAT { 4 } else { cs };
     let n = f.channels as usize;

@@ -29,17 +29,18 @@ impl Context {
         Some(data.get(offset as usize..).unwrap_or_default().to_vec())
     }
 
-    /// The bound `PIXEL_UNPACK_BUFFER`, or `INVALID_OPERATION` when none is.
+    /// The bound `PIXEL_UNPACK_BUFFER`, or `INVALID_OPERATION` when none is or it is bound
+    /// for transform feedback too.
     fn unpack_buffer(&mut self, function: &str) -> Option<crate::objects::Id> {
-        let id = self.bindings.buffer(gl::PIXEL_UNPACK_BUFFER);
-        if id.is_none() {
+        let Some(id) = self.bindings.buffer(gl::PIXEL_UNPACK_BUFFER) else {
             self.error(
                 gl::INVALID_OPERATION,
                 function,
                 "no PIXEL_UNPACK_BUFFER bound",
             );
-        }
-        id
+            return None;
+        };
+        (!self.refuse_double_bound(id, function)).then_some(id)
     }
 
     /// The CPU copy of buffer `id`'s bytes, brought up to date.

@@ -29,6 +29,55 @@ impl Context {
         self.feedback_object().session.filter(|s| !s.paused)
     }
 
+    /// Whether `buffer` is bound at a point other than the transform feedback ones: a generic
+    /// binding, an indexed uniform buffer binding, or the vertex array's element buffer.
+    pub(crate) fn bound_elsewhere(&self, buffer: crate::objects::Id) -> bool {
+        const GENERIC: [u32; 6] = [
+            gl::ARRAY_BUFFER,
+            gl::COPY_READ_BUFFER,
+            gl::COPY_WRITE_BUFFER,
+            gl::PIXEL_PACK_BUFFER,
+            gl::PIXEL_UNPACK_BUFFER,
+            gl::UNIFORM_BUFFER,
+        ];
+        GENERIC
+            .iter()
+            .any(|&t| self.bindings.buffer(t) == Some(buffer))
+            || (0..crate::context::MAX_UNIFORM_BUFFER_BINDINGS as usize).any(|i| {
+                self.bindings
+                    .uniform_range(i)
+                    .is_some_and(|r| r.buffer == buffer)
+            })
+            || self.vao().element_buffer == Some(buffer)
+    }
+
+    /// Whether `buffer` is at an indexed binding of the bound transform feedback object, in
+    /// use or not: WebGL 2 §5.1 forbids reading or writing it through any other binding.
+    pub(crate) fn in_feedback_object(&self, buffer: crate::objects::Id) -> bool {
+        self.feedback_object()
+            .buffers
+            .iter()
+            .flatten()
+            .any(|r| r.buffer == buffer)
+    }
+
+    /// `INVALID_OPERATION` for an operation on `buffer`'s data (`bufferData`, a copy, a pixel
+    /// transfer through it) while it is bound for transform feedback and at another binding
+    /// point, or while a transform feedback session writes it, as Chromium checks (WebGL 2
+    /// §5.1); true when that is recorded.
+    pub(crate) fn refuse_double_bound(&mut self, buffer: crate::objects::Id, f: &str) -> bool {
+        let refused = self.in_feedback_object(buffer) && self.bound_elsewhere(buffer)
+            || self.objects.captures_into(buffer);
+        if refused {
+            self.error(
+                gl::INVALID_OPERATION,
+                f,
+                "the buffer is bound for transform feedback and at another binding point",
+            );
+        }
+        refused
+    }
+
     /// Creates a transform feedback object (`createTransformFeedback`).
     pub fn create_transform_feedback(&mut self) -> TransformFeedback {
         TransformFeedback {
@@ -166,9 +215,10 @@ impl Context {
                 "a varying has no TRANSFORM_FEEDBACK_BUFFER bound",
             );
         }
-        let used: Vec<_> = bound[..buffers as usize].iter().flatten().collect();
+        // Every binding counts, those past the program's outputs too, as Chromium checks.
+        let used: Vec<_> = bound.iter().flatten().collect();
         if (1..used.len()).any(|i| used[..i].iter().any(|b| b.buffer == used[i].buffer)) {
-            // WebGL 2 §5.21: one buffer at two bindings written by a session.
+            // WebGL 2 §5.21: one buffer at two bindings of a session.
             return self.error(
                 gl::INVALID_OPERATION,
                 F,

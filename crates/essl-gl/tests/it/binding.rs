@@ -458,6 +458,18 @@ fn skipped_pixels_past_the_row_are_invalid_a_row_length_of_0_being_the_width() {
     assert_eq!(upload(&mut ctx, 6, 2), gl::INVALID_OPERATION, "5 + 2 > 6");
     assert_eq!(upload(&mut ctx, 7, 2), gl::NO_ERROR);
     assert_eq!(upload(&mut ctx, 0, 0), gl::NO_ERROR);
+    // The same for reads: PACK_SKIP_PIXELS + width within PACK_ROW_LENGTH (or the width).
+    let mut px = [0u8; 4 * 8 * 2];
+    let mut read = |ctx: &mut essl_gl::Context, row: i32, skip: i32| {
+        ctx.pixel_storei(gl::PACK_ROW_LENGTH, row);
+        ctx.pixel_storei(gl::PACK_SKIP_PIXELS, skip);
+        ctx.read_pixels(0, 0, 2, 2, gl::RGBA, gl::UNSIGNED_BYTE, &mut px);
+        ctx.get_error()
+    };
+    assert_eq!(read(&mut ctx, 0, 1), gl::INVALID_OPERATION, "2 + 1 > 2");
+    assert_eq!(read(&mut ctx, 1, 0), gl::INVALID_OPERATION, "2 + 0 > 1");
+    assert_eq!(read(&mut ctx, 3, 1), gl::NO_ERROR);
+    assert_eq!(read(&mut ctx, 0, 0), gl::NO_ERROR);
 }
 
 #[test]
@@ -510,4 +522,49 @@ fn a_scissored_clear_of_a_multisampled_drawing_buffer_stays_in_its_box() {
         let want = if i == 5 { [0, 255, 0, 255] } else { [0; 4] };
         assert_eq!(p, want, "pixel ({}, {})", i % 4, i / 4);
     }
+}
+
+#[test]
+fn rgb5_a1_takes_10_bit_colour_rounded_to_its_5_bits() {
+    let Some(mut ctx) = common::context(2, 2) else {
+        return;
+    };
+    let t = ctx.create_texture();
+    ctx.bind_texture(gl::TEXTURE_2D, Some(t));
+    // (1023, 512, 0, alpha 3) and (33, 0, 1023, alpha 1), as UNSIGNED_INT_2_10_10_10_REV.
+    let texels: [u32; 2] = [
+        1023 | (512 << 10) | (3 << 30),
+        33 | (1023 << 20) | (1 << 30),
+    ];
+    ctx.tex_image_2d(
+        gl::TEXTURE_2D,
+        0,
+        gl::RGB5_A1 as i32,
+        2,
+        1,
+        0,
+        gl::RGBA,
+        gl::UNSIGNED_INT_2_10_10_10_REV,
+        Some(&texels[..]),
+    );
+    assert_eq!(ctx.get_error(), gl::NO_ERROR, "{:?}", ctx.error_message());
+    // The unsized RGBA format does not take the type.
+    ctx.tex_image_2d(
+        gl::TEXTURE_2D,
+        0,
+        gl::RGBA as i32,
+        2,
+        1,
+        0,
+        gl::RGBA,
+        gl::UNSIGNED_INT_2_10_10_10_REV,
+        Some(&texels[..]),
+    );
+    assert_eq!(ctx.get_error(), gl::INVALID_OPERATION);
+    common::colour_framebuffer(&mut ctx, t);
+    let mut px = [0u8; 8];
+    ctx.read_pixels(0, 0, 2, 1, gl::RGBA, gl::UNSIGNED_BYTE, &mut px);
+    // 512/1023 → 16/31 → 132; 33/1023 → 1/31 → 8; alpha 1/3 → 0.
+    assert_eq!(px, [255, 132, 0, 255, 8, 0, 255, 0]);
+    common::assert_clean(&ctx);
 }

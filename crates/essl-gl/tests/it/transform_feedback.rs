@@ -46,10 +46,14 @@ fn linked(ctx: &mut Context, varyings: &[&str], mode: u32) -> essl_gl::Program {
     p
 }
 
+/// The first `n` floats of `buffer`, read through the generic `TRANSFORM_FEEDBACK_BUFFER`
+/// binding: a buffer still at an indexed binding of the bound transform feedback object cannot
+/// be read through another target (WebGL 2 §5.1).
 fn floats(ctx: &mut Context, buffer: essl_gl::Buffer, n: usize) -> Vec<f32> {
-    ctx.bind_buffer(gl::COPY_READ_BUFFER, Some(buffer));
+    ctx.bind_buffer(gl::TRANSFORM_FEEDBACK_BUFFER, Some(buffer));
     let mut out = vec![0f32; n];
-    ctx.get_buffer_sub_data(gl::COPY_READ_BUFFER, 0, &mut out);
+    ctx.get_buffer_sub_data(gl::TRANSFORM_FEEDBACK_BUFFER, 0, &mut out);
+    assert_eq!(ctx.get_error(), gl::NO_ERROR);
     out
 }
 
@@ -270,4 +274,75 @@ fn a_draw_that_reads_a_captured_buffer_keeps_its_other_buffers_contents() {
     assert_eq!(pixel(&mut ctx, 0, 0), [255; 4], "the first draw's point");
     assert_eq!(pixel(&mut ctx, 3, 3), [255; 4], "the second draw's point");
     assert_clean(&ctx);
+}
+
+#[test]
+fn a_buffer_bound_for_transform_feedback_is_not_read_or_written_elsewhere() {
+    let Some(mut ctx) = context(4, 4) else { return };
+    let p = linked(&mut ctx, &["v_pos"], gl::SEPARATE_ATTRIBS);
+    ctx.use_program(Some(p));
+    float_attribute(&mut ctx, 1, 2, &[0.0; 6]);
+    let tf = ctx.create_buffer();
+    ctx.bind_buffer(gl::TRANSFORM_FEEDBACK_BUFFER, Some(tf));
+    ctx.buffer_data_size(gl::TRANSFORM_FEEDBACK_BUFFER, 64, gl::STREAM_COPY);
+    ctx.bind_buffer_base(gl::TRANSFORM_FEEDBACK_BUFFER, 0, Some(tf));
+    // Data calls through another binding of it (or on it while it has one).
+    ctx.bind_buffer(gl::ARRAY_BUFFER, Some(tf));
+    ctx.buffer_data_size(gl::ARRAY_BUFFER, 64, gl::STATIC_DRAW);
+    assert_eq!(ctx.get_error(), gl::INVALID_OPERATION, "bufferData");
+    ctx.buffer_data_size(gl::TRANSFORM_FEEDBACK_BUFFER, 64, gl::STATIC_DRAW);
+    assert_eq!(
+        ctx.get_error(),
+        gl::INVALID_OPERATION,
+        "bufferData, double bound"
+    );
+    // A draw that reads it, capturing or not.
+    ctx.vertex_attrib_pointer(0, 2, gl::FLOAT, false, 0, 0);
+    ctx.enable_vertex_attrib_array(0);
+    ctx.draw_arrays(gl::POINTS, 0, 3);
+    assert_eq!(
+        ctx.get_error(),
+        gl::INVALID_OPERATION,
+        "drawArrays reading it"
+    );
+    float_attribute(&mut ctx, 0, 2, &[0.0; 6]);
+    ctx.draw_arrays(gl::POINTS, 0, 3);
+    assert_eq!(
+        ctx.get_error(),
+        gl::NO_ERROR,
+        "drawArrays reading another buffer"
+    );
+    // One buffer at two indices, one past the program's outputs, cannot be captured into.
+    ctx.bind_buffer(gl::ARRAY_BUFFER, None);
+    ctx.bind_buffer_base(gl::TRANSFORM_FEEDBACK_BUFFER, 2, Some(tf));
+    ctx.begin_transform_feedback(gl::POINTS);
+    assert_eq!(
+        ctx.get_error(),
+        gl::INVALID_OPERATION,
+        "the same buffer twice"
+    );
+    ctx.bind_buffer_base(gl::TRANSFORM_FEEDBACK_BUFFER, 2, None);
+    // (which unbinds the generic binding too)
+    ctx.bind_buffer(gl::TRANSFORM_FEEDBACK_BUFFER, Some(tf));
+    ctx.begin_transform_feedback(gl::POINTS);
+    assert_eq!(ctx.get_error(), gl::NO_ERROR);
+    // While a session writes it, not even its own target reads it.
+    let mut out = [0f32; 2];
+    ctx.get_buffer_sub_data(gl::TRANSFORM_FEEDBACK_BUFFER, 0, &mut out);
+    assert_eq!(
+        ctx.get_error(),
+        gl::INVALID_OPERATION,
+        "getBufferSubData while capturing"
+    );
+    ctx.end_transform_feedback();
+    ctx.get_buffer_sub_data(gl::TRANSFORM_FEEDBACK_BUFFER, 0, &mut out);
+    assert_eq!(ctx.get_error(), gl::NO_ERROR);
+    ctx.bind_buffer_base(gl::TRANSFORM_FEEDBACK_BUFFER, 0, None);
+    ctx.bind_buffer(gl::ARRAY_BUFFER, Some(tf));
+    ctx.buffer_data_size(gl::ARRAY_BUFFER, 64, gl::STATIC_DRAW);
+    assert_eq!(
+        ctx.get_error(),
+        gl::NO_ERROR,
+        "no longer bound for transform feedback"
+    );
 }
