@@ -130,4 +130,5 @@ pub const LOWER_OPTIONS: essl::program::LowerOptions = essl::program::LowerOptio
     clip_distance_switches: true,
     clip_control: false,
     scissor_discard: true,
+    clamp_lod_bias: true,
 };

@@ -160,6 +160,7 @@ impl Options {
             clip_distance_switches: false,
             clip_control: false,
             scissor_discard: false,
+            clamp_lod_bias: false,
         }
     }
 }

@@ -70,7 +70,15 @@ pub struct LowerOptions {
     /// whose rasterizer does not keep a multisampled draw inside the scissor box (Mesa 22's
     /// lavapipe covers samples of the pixels left of and below it).
     pub scissor_discard: bool,
+    /// Clamp the bias of `texture(s, p, bias)` to ±[`MAX_TEXTURE_LOD_BIAS`], as GL clamps it
+    /// to its `MAX_TEXTURE_LOD_BIAS`: a renderer that reports that limit then samples what it
+    /// says, whatever bias the device itself takes (WGSL clamps at 16).
+    pub clamp_lod_bias: bool,
 }
+
+/// The `MAX_TEXTURE_LOD_BIAS` that [`LowerOptions::clamp_lod_bias`] clamps to: 2.0, the least
+/// ES 3.0 allows, what Chromium reports on SwiftShader.
+pub const MAX_TEXTURE_LOD_BIAS: f32 = 2.0;
 
 /// The vertex stage's pipeline-overridable `bool` that is true under `EXT_clip_control`'s
 /// `UPPER_LEFT_EXT` origin ([`LowerOptions::clip_control`]).
@@ -94,6 +102,7 @@ impl Default for LowerOptions {
             clip_distance_switches: false,
             clip_control: false,
             scissor_discard: false,
+            clamp_lod_bias: false,
         }
     }
 }

@@ -374,7 +374,7 @@ impl Context {
             gl::MAX_ELEMENTS_VERTICES | gl::MAX_ELEMENTS_INDICES => Int(i32::MAX as i64),
             gl::MIN_PROGRAM_TEXEL_OFFSET => Int(-8),
             gl::MAX_PROGRAM_TEXEL_OFFSET => Int(7),
-            gl::MAX_TEXTURE_LOD_BIAS => Parameter::Float(2.0),
+            gl::MAX_TEXTURE_LOD_BIAS => Parameter::Float(essl::program::MAX_TEXTURE_LOD_BIAS),
             gl::MAX_SERVER_WAIT_TIMEOUT => Int(0),
             gl::MAX_CLIENT_WAIT_TIMEOUT_WEBGL => Int(0),
             gl::MAX_COMBINED_VERTEX_UNIFORM_COMPONENTS

@@ -654,3 +654,48 @@ fn non_square_outer_products_and_scalar_faceforward_and_refract_compute_as_glsl(
     assert_eq!(pixel(&mut ctx, W / 2, H / 2), [0, 255, 0, 255]);
     assert_clean(&ctx);
 }
+
+#[test]
+fn a_texture_bias_is_clamped_to_max_texture_lod_bias() {
+    let Some(mut ctx) = context(1, 1) else { return };
+    assert_eq!(
+        ctx.get_parameter(gl::MAX_TEXTURE_LOD_BIAS),
+        Some(essl_gl::Parameter::Float(2.0))
+    );
+    // Eight levels of 128 × 1 down to 1 × 1, level `l` holding the value `l + 1`.
+    let t = ctx.create_texture();
+    ctx.bind_texture(gl::TEXTURE_2D, Some(t));
+    ctx.tex_storage_2d(gl::TEXTURE_2D, 8, gl::RGBA8, 128, 1);
+    for level in 0..8 {
+        let w = 128 >> level;
+        let texels = vec![level as u8 + 1; w * 4];
+        ctx.tex_sub_image_2d(
+            gl::TEXTURE_2D,
+            level,
+            0,
+            0,
+            w as i32,
+            1,
+            gl::RGBA,
+            gl::UNSIGNED_BYTE,
+            &texels[..],
+        );
+    }
+    ctx.tex_parameteri(
+        gl::TEXTURE_2D,
+        gl::TEXTURE_MIN_FILTER,
+        gl::NEAREST_MIPMAP_NEAREST as i32,
+    );
+    ctx.tex_parameteri(gl::TEXTURE_2D, gl::TEXTURE_MAG_FILTER, gl::NEAREST as i32);
+    // One pixel spans 1/128 of the texture: level 0, then the bias.
+    for (bias, level) in [(1.0, 1), (2.0, 2), (5.0, 2)] {
+        let fs = format!(
+            "#version 300 es\nprecision highp float; uniform sampler2D t; out vec4 o;\
+             void main() {{ o = texture(t, vec2(gl_FragCoord.x / 128.0, 0.5), {bias:?}); }}"
+        );
+        full_screen(&mut ctx, &fs);
+        ctx.draw_arrays(gl::TRIANGLES, 0, 6);
+        assert_eq!(pixel(&mut ctx, 0, 0)[0], level + 1, "bias {bias}");
+    }
+    assert_clean(&ctx);
+}

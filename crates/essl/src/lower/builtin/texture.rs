@@ -108,7 +108,16 @@ impl FnCx<'_, '_> {
         } else if let Some((x, y)) = extra.grads {
             SampleLevel::Gradient { x, y }
         } else if let Some(b) = extra.bias {
-            SampleLevel::Bias(b)
+            SampleLevel::Bias(if self.cx.options.clamp_lod_bias {
+                let limit = crate::program::MAX_TEXTURE_LOD_BIAS;
+                let (lo, hi) = (
+                    self.lit(Literal::F32(-limit)),
+                    self.lit(Literal::F32(limit)),
+                );
+                self.math(naga::MathFunction::Clamp, &[b, lo, hi], span)
+            } else {
+                b
+            })
         } else if vertex {
             SampleLevel::Zero
         } else {
