@@ -1,7 +1,7 @@
 //! A texture object: its level images, its parameters, and GL ES 3.0 completeness. The GPU
 //! copy of the images is [`super::gpu`]'s business.
 
-use super::format::{InternalFormat, Packing};
+use super::format::{Expand, InternalFormat, Packing};
 use super::sampling::SamplerKey;
 use crate::gl;
 use crate::sampler::SamplerParams;
@@ -58,9 +58,20 @@ impl Level {
 
     /// A level image with no data given (`null` pixels, `texStorage*`): zeros, but depth 1.0
     /// in depth formats, as Chromium initializes them (a shadow lookup of a depth texture
-    /// nothing was drawn into passes).
+    /// nothing was drawn into passes), and alpha 1 in formats without alpha that are stored
+    /// with it (`RGB8` as RGBA, `LUMINANCE`), which GL samples as 1.
     pub(crate) fn blank(size: [u32; 3], format: InternalFormat) -> Self {
         let texels = size[0] as usize * size[1] as usize * size[2] as usize;
+        let stored_alpha = format.packing == Packing::None
+            && (format.channels == 3 && format.expand == Expand::None
+                || format.expand == Expand::Luminance);
+        if stored_alpha {
+            let cs = format.comp.size();
+            let mut texel = vec![0; 3 * cs];
+            texel.extend_from_slice(&format.comp.one()[..cs]);
+            debug_assert_eq!(texel.len(), format.texel_size());
+            return Level::new(size, format, texel.repeat(texels));
+        }
         let one: &[u8] = match format.packing {
             Packing::Depth16 => &[0xFF; 2],
             Packing::Depth24 => &[0xFF; 4],

@@ -699,3 +699,45 @@ fn a_texture_bias_is_clamped_to_max_texture_lod_bias() {
     }
     assert_clean(&ctx);
 }
+
+#[test]
+fn textures_without_alpha_given_no_data_sample_alpha_one() {
+    let Some(mut ctx) = context(1, 1) else { return };
+    for (internal, format, ty) in [
+        (gl::RGB8, gl::RGB, gl::UNSIGNED_BYTE),
+        (gl::RGB, gl::RGB, gl::UNSIGNED_BYTE),
+        (gl::LUMINANCE, gl::LUMINANCE, gl::UNSIGNED_BYTE),
+        (gl::RGB16F, gl::RGB, gl::HALF_FLOAT),
+        (gl::RGB32F, gl::RGB, gl::FLOAT),
+        (gl::RGBA8, gl::RGBA, gl::UNSIGNED_BYTE),
+    ] {
+        let t = ctx.create_texture();
+        ctx.bind_texture(gl::TEXTURE_2D, Some(t));
+        ctx.tex_image_2d(
+            gl::TEXTURE_2D,
+            0,
+            internal as i32,
+            2,
+            2,
+            0,
+            format,
+            ty,
+            None::<&[u8]>,
+        );
+        ctx.tex_parameteri(gl::TEXTURE_2D, gl::TEXTURE_MIN_FILTER, gl::NEAREST as i32);
+        ctx.tex_parameteri(gl::TEXTURE_2D, gl::TEXTURE_MAG_FILTER, gl::NEAREST as i32);
+        full_screen(
+            &mut ctx,
+            "#version 300 es\nprecision highp float; uniform sampler2D t; out vec4 o;\
+             void main() { o = texture(t, vec2(0.5)) + vec4(0.0, 0.0, 0.5, 0.0); }",
+        );
+        ctx.draw_arrays(gl::TRIANGLES, 0, 6);
+        let alpha = if internal == gl::RGBA8 { 0 } else { 255 };
+        assert_eq!(
+            pixel(&mut ctx, 0, 0),
+            [0, 0, 128, alpha],
+            "0x{internal:04X}"
+        );
+    }
+    assert_clean(&ctx);
+}
