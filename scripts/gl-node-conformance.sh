@@ -11,6 +11,12 @@
 # test suite's sample (crates/essl-gl-node/test/conformance.test.mjs) finds them.
 # Needs Debian's chromium, Node.js and npm (npm ci installs jsdom and playwright-core).
 # A full run of both contexts takes about two hours on 2 cores.
+#
+# The `gl` package (headless-gl) runs the same pages as a peer where it is installed in
+# test-data/webgl/runs/gl: its install compiles ANGLE with node-gyp, and its contexts need an X
+# display (xvfb-run gives one when DISPLAY is unset):
+#   apt-get install build-essential python3 pkg-config libxi-dev libglu1-mesa-dev libglew-dev xvfb
+#   npm i --prefix test-data/webgl/runs/gl gl@8.1.6
 set -euo pipefail
 cd "$(dirname "$0")/.."
 root="$PWD"
@@ -53,7 +59,9 @@ for ctx in webgl2 webgl1; do
     fi
     node conformance/run.mjs --impl essl-gl --context "$ctx" --jobs "$jobs" --timeout 120 "${filter[@]}" --out "$runs/essl-gl-$ctx.jsonl"
     if [ -d "$runs/gl/node_modules/gl" ]; then
-        ESSL_HEADLESS_GL="$runs/gl/node_modules/gl" node conformance/run.mjs --impl gl --context "$ctx" --jobs "$jobs" --timeout 120 "${filter[@]}" --out "$runs/gl-$ctx.jsonl"
+        display=()
+        [ -z "${DISPLAY:-}" ] && display=(xvfb-run -a)
+        ESSL_HEADLESS_GL="$runs/gl/node_modules/gl" "${display[@]}" node conformance/run.mjs --impl gl --context "$ctx" --jobs "$jobs" --timeout 120 "${filter[@]}" --out "$runs/gl-$ctx.jsonl"
     fi
 done
 sample=()

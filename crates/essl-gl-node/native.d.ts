@@ -504,6 +504,26 @@ export interface Attributes {
   failIfMajorPerformanceCaveat: boolean
 }
 
+/** An image decoded from a file: RGBA8 pixels, top row first, colour not multiplied by alpha. */
+export interface DecodedImage {
+  /** Width in pixels. */
+  width: number
+  /** Height in pixels. */
+  height: number
+  /** `width * height * 4` bytes. */
+  data: Buffer
+}
+
+/**
+ * Decodes a PNG file as a browser decodes an image for a WebGL upload: every colour type and
+ * depth to RGBA8 (palettes and `tRNS` expanded, 16-bit channels to their high byte, as
+ * libpng strips them), colour not multiplied by alpha, the `gAMA` chunk not applied. A
+ * 2D canvas (the `canvas` package) stores premultiplied colour, which loses the colour of
+ * nearly transparent pixels; this keeps it. A file that is not a PNG, or one over 256 MiB
+ * decoded, is an `Error`.
+ */
+export declare function decodePng(bytes: Buffer): DecodedImage
+
 /**
  * The numbers of a `texImage`/`texSubImage` call before its data: target, level, then
  * (internalformat, width, height, [depth], border) or (x, y, [z], width, height, [depth]),

@@ -4,7 +4,10 @@
 // canvases whose context is essl-gl's. Each is read as 8-bit RGBA, unpremultiplied, top row
 // first — what a browser hands WebGL.
 
+import { readFileSync } from 'node:fs';
+import { fileURLToPath } from 'node:url';
 import { types } from 'node:util';
+import { native } from './native.js';
 
 /** How a DOM canvas with an essl-gl context gives its pixels (set by canvas.js). */
 let drawingBufferOf = () => null;
@@ -75,6 +78,8 @@ export function imageSource(v, name) {
     return { width, height, data: new Uint8Array(width * height * 4) };
   }
   if (isImage(v)) {
+    const png = decodedPng(v);
+    if (png) return png;
     const width = v.naturalWidth ?? v.width ?? 0;
     const height = v.naturalHeight ?? v.height ?? 0;
     const canvas = drawnImage(v, width, height);
@@ -82,6 +87,38 @@ export function imageSource(v, name) {
     return { width, height, data: new Uint8Array(width * height * 4) };
   }
   return { width: 0, height: 0, data: new Uint8Array(0) };
+}
+
+const PNG_SIGNATURE = Buffer.from([137, 80, 78, 71, 13, 10, 26, 10]);
+
+/**
+ * A PNG image's pixels decoded from its file (a `data:` or `file:` URL), as a browser decodes
+ * it for an upload: colour not multiplied by alpha. Drawing it onto a 2D canvas (the `canvas`
+ * package keeps premultiplied colour) loses the colour of nearly transparent pixels and
+ * quantizes ramps. `null` for another source, another format or a file that does not decode.
+ */
+function decodedPng(img) {
+  const src = typeof img.src === 'string' ? img.src : '';
+  let bytes = null;
+  try {
+    if (src.startsWith('data:')) {
+      const comma = src.indexOf(',');
+      const meta = src.slice(5, comma);
+      const body = src.slice(comma + 1);
+      bytes = meta.endsWith(';base64') ? Buffer.from(body, 'base64') : Buffer.from(decodeURIComponent(body), 'latin1');
+    } else if (src.startsWith('file:')) {
+      bytes = readFileSync(fileURLToPath(src));
+    }
+  } catch {
+    return null;
+  }
+  if (!bytes || bytes.length < 8 || !bytes.subarray(0, 8).equals(PNG_SIGNATURE)) return null;
+  try {
+    const { width, height, data } = native.decodePng(bytes);
+    return { width, height, data: new Uint8Array(data.buffer, data.byteOffset, data.length) };
+  } catch {
+    return null;
+  }
 }
 
 /** An image drawn onto a canvas of the package that made it, read back. */

@@ -539,3 +539,33 @@ test('ImageData in a document without one: both constructors, the DOM checks, up
   gl.destroy();
   w.close();
 });
+
+test('PNG images upload their colour as the file holds it, nearly transparent pixels too', async () => {
+  const { JSDOM } = await import('jsdom');
+  const dom = new JSDOM('<!doctype html><body></body>', { runScripts: 'outside-only', resources: 'usable' });
+  const w = dom.window;
+  installInWindow(w);
+  const source = w.document.createElement('canvas');
+  source.width = 1;
+  source.height = 1;
+  const a = source.getContext('webgl2', { premultipliedAlpha: false, preserveDrawingBuffer: true });
+  a.clearColor(1, 192 / 255, 128 / 255, 1 / 255);
+  a.clear(a.COLOR_BUFFER_BIT);
+  const img = new w.Image();
+  img.src = source.toDataURL();
+  await img.decode();
+  const gl = w.document.createElement('canvas').getContext('webgl2');
+  const tex = gl.createTexture();
+  gl.bindTexture(gl.TEXTURE_2D, tex);
+  gl.texImage2D(gl.TEXTURE_2D, 0, gl.RGBA, gl.RGBA, gl.UNSIGNED_BYTE, img);
+  assert.equal(gl.getError(), gl.NO_ERROR);
+  gl.bindFramebuffer(gl.FRAMEBUFFER, gl.createFramebuffer());
+  gl.framebufferTexture2D(gl.FRAMEBUFFER, gl.COLOR_ATTACHMENT0, gl.TEXTURE_2D, tex, 0);
+  const px = new Uint8Array(4);
+  gl.readPixels(0, 0, 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, px);
+  // A 2D canvas keeps premultiplied colour and would give 255, 255, 255, 1.
+  assert.deepEqual([...px], [255, 192, 128, 1]);
+  a.destroy();
+  gl.destroy();
+  w.close();
+});
