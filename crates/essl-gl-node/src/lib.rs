@@ -23,3 +23,4 @@ pub mod view;
 
 pub use context::{Attributes, NativeContext};
 pub use error::BindingError;
+pub use png::{decode_png, DecodedImage};
