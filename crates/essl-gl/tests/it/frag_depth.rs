@@ -1,6 +1,7 @@
-//! `gl_FragDepth` written into framebuffers without a depth attachment: GL ignores the value
-//! (wgpu refuses a pipeline whose fragment stage writes depth without a depth target, so
-//! essl-gl draws with the output taken out); with a depth attachment the value is tested.
+//! Depth: `gl_FragDepth` written into framebuffers without a depth attachment, which GL
+//! ignores (wgpu refuses a pipeline whose fragment stage writes depth without a depth target,
+//! so essl-gl draws with the output taken out); with a depth attachment the value is tested;
+//! new depth renderbuffers hold 1.0.
 
 use essl_gl::{gl, Context};
 
@@ -77,3 +78,58 @@ fn a_depth_write_with_a_depth_attachment_is_tested() {
     }
     common::assert_clean(&ctx);
 }
+
+#[test]
+fn new_depth_renderbuffers_hold_one() {
+    let Some(mut ctx) = common::context(2, 2) else {
+        return;
+    };
+    for (format, samples) in [
+        (gl::DEPTH_COMPONENT16, 0),
+        (gl::DEPTH24_STENCIL8, 0),
+        (gl::DEPTH_COMPONENT24, 4),
+    ] {
+        let colour = ctx.create_renderbuffer();
+        ctx.bind_renderbuffer(gl::RENDERBUFFER, Some(colour));
+        ctx.renderbuffer_storage_multisample(gl::RENDERBUFFER, samples, gl::RGBA8, 2, 2);
+        let depth = ctx.create_renderbuffer();
+        ctx.bind_renderbuffer(gl::RENDERBUFFER, Some(depth));
+        ctx.renderbuffer_storage_multisample(gl::RENDERBUFFER, samples, format, 2, 2);
+        let fb = ctx.create_framebuffer();
+        ctx.bind_framebuffer(gl::FRAMEBUFFER, Some(fb));
+        ctx.framebuffer_renderbuffer(
+            gl::FRAMEBUFFER,
+            gl::COLOR_ATTACHMENT0,
+            gl::RENDERBUFFER,
+            Some(colour),
+        );
+        let point = if format == gl::DEPTH24_STENCIL8 {
+            gl::DEPTH_STENCIL_ATTACHMENT
+        } else {
+            gl::DEPTH_ATTACHMENT
+        };
+        ctx.framebuffer_renderbuffer(gl::FRAMEBUFFER, point, gl::RENDERBUFFER, Some(depth));
+        ctx.enable(gl::DEPTH_TEST);
+        ctx.depth_func(gl::LESS);
+        // No clear: the quad at depth 0.5 passes against 1.0.
+        draw(&mut ctx, FS_GREEN);
+        ctx.disable(gl::DEPTH_TEST);
+        ctx.bind_framebuffer(gl::DRAW_FRAMEBUFFER, None);
+        ctx.blit_framebuffer(0, 0, 2, 2, 0, 0, 2, 2, gl::COLOR_BUFFER_BIT, gl::NEAREST);
+        ctx.bind_framebuffer(gl::FRAMEBUFFER, None);
+        assert_eq!(
+            pixel(&mut ctx, 1, 1),
+            [0, 255, 0, 255],
+            "0x{format:04X}, {samples} samples"
+        );
+    }
+    // WebGL 1's unsized DEPTH_STENCIL takes no samples.
+    ctx.renderbuffer_storage_multisample(gl::RENDERBUFFER, 0, gl::DEPTH_STENCIL, 1, 1);
+    assert_eq!(ctx.get_error(), gl::NO_ERROR);
+    ctx.renderbuffer_storage_multisample(gl::RENDERBUFFER, 2, gl::DEPTH_STENCIL, 1, 1);
+    assert_eq!(ctx.get_error(), gl::INVALID_OPERATION);
+    common::assert_clean(&ctx);
+}
+
+const FS_GREEN: &str = "#version 300 es\nprecision mediump float; out vec4 o;\
+    void main() { o = vec4(0.0, 1.0, 0.0, 1.0); }";
