@@ -314,6 +314,17 @@ impl Context {
                 None => return,
             },
         };
+        if let Some(Attachment::Renderbuffer(id)) = image {
+            // A renderbuffer is an object only once bound (WebGL, as `bindRenderbuffer`).
+            if self
+                .objects
+                .renderbuffers
+                .get(id)
+                .is_some_and(|r| !r.bound_once)
+            {
+                return self.error(gl::INVALID_OPERATION, F, "the renderbuffer was never bound");
+            }
+        }
         self.objects.attach(fb, attachment, image);
     }
 

@@ -223,17 +223,19 @@ impl Context {
         let bits = color
             .map(|f| crate::texture::bit_sizes(&f))
             .unwrap_or_default();
-        let depth_stencil = match draw.and_then(|id| self.objects.framebuffers.get_any(id)) {
-            Some(f) => f
-                .depth
-                .or(f.stencil)
-                .and_then(|a| self.image_info(a))
-                .map(|i| i.format),
-            None => None,
+        // Depth bits from the depth attachment, stencil bits from the stencil one: a
+        // depth-and-stencil image at only one of them gives that one's bits alone.
+        let fbo = draw.and_then(|id| self.objects.framebuffers.get_any(id));
+        let bits_at = |a: Option<_>| {
+            a.and_then(|a| self.image_info(a))
+                .map(|i| crate::texture::bit_sizes(&i.format))
+                .unwrap_or_default()
         };
-        let ds = depth_stencil
-            .map(|f| crate::texture::bit_sizes(&f))
-            .unwrap_or_default();
+        let ds = crate::texture::BitSizes {
+            depth: bits_at(fbo.and_then(|f| f.depth)).depth,
+            stencil: bits_at(fbo.and_then(|f| f.stencil)).stencil,
+            ..Default::default()
+        };
         let (depth_bits, stencil_bits, samples) = match draw {
             Some(id) => {
                 let f = self.objects.framebuffers.get_any(id)?;

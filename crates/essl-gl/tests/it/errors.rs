@@ -697,3 +697,61 @@ fn generate_mipmap_of_an_empty_base_level_is_an_error() {
     }
     assert_clean(&ctx);
 }
+
+#[test]
+fn renderbuffers_attach_once_bound_and_depth_and_stencil_bits_come_from_their_own_attachment() {
+    let Some(mut ctx) = context(2, 2) else { return };
+    let fb = ctx.create_framebuffer();
+    ctx.bind_framebuffer(gl::FRAMEBUFFER, Some(fb));
+    let never_bound = ctx.create_renderbuffer();
+    ctx.framebuffer_renderbuffer(
+        gl::FRAMEBUFFER,
+        gl::DEPTH_ATTACHMENT,
+        gl::RENDERBUFFER,
+        Some(never_bound),
+    );
+    assert_eq!(ctx.get_error(), gl::INVALID_OPERATION);
+    let colour = ctx.create_renderbuffer();
+    ctx.bind_renderbuffer(gl::RENDERBUFFER, Some(colour));
+    ctx.renderbuffer_storage(gl::RENDERBUFFER, gl::RGBA8, 2, 2);
+    ctx.framebuffer_renderbuffer(
+        gl::FRAMEBUFFER,
+        gl::COLOR_ATTACHMENT0,
+        gl::RENDERBUFFER,
+        Some(colour),
+    );
+    let ds = ctx.create_renderbuffer();
+    ctx.bind_renderbuffer(gl::RENDERBUFFER, Some(ds));
+    ctx.renderbuffer_storage(gl::RENDERBUFFER, gl::DEPTH24_STENCIL8, 2, 2);
+    let bits = |ctx: &mut Context| {
+        [gl::DEPTH_BITS, gl::STENCIL_BITS].map(|p| ctx.get_parameter(p).and_then(|v| v.as_int()))
+    };
+    ctx.framebuffer_renderbuffer(
+        gl::FRAMEBUFFER,
+        gl::DEPTH_ATTACHMENT,
+        gl::RENDERBUFFER,
+        Some(ds),
+    );
+    assert_eq!(bits(&mut ctx), [Some(24), Some(0)]);
+    ctx.framebuffer_renderbuffer(
+        gl::FRAMEBUFFER,
+        gl::DEPTH_ATTACHMENT,
+        gl::RENDERBUFFER,
+        None,
+    );
+    ctx.framebuffer_renderbuffer(
+        gl::FRAMEBUFFER,
+        gl::STENCIL_ATTACHMENT,
+        gl::RENDERBUFFER,
+        Some(ds),
+    );
+    assert_eq!(bits(&mut ctx), [Some(0), Some(8)]);
+    ctx.framebuffer_renderbuffer(
+        gl::FRAMEBUFFER,
+        gl::DEPTH_STENCIL_ATTACHMENT,
+        gl::RENDERBUFFER,
+        Some(ds),
+    );
+    assert_eq!(bits(&mut ctx), [Some(24), Some(8)]);
+    assert_eq!(ctx.get_error(), gl::NO_ERROR);
+}
