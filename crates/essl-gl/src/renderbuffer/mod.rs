@@ -198,9 +198,11 @@ impl Context {
             let v = t.create_view(&Default::default());
             (t, v)
         });
+        // Depth 1.0 in new depth storage, as Chromium initializes it: wgpu's own is zeros,
+        // which a `LESS` depth test passes nothing against.
         if let Some((_, view)) = &gpu {
             if format.gpu_format().has_depth_aspect() {
-                self.clear_depth_storage(view, format.gpu_format());
+                self.clear_depth_view(view, format.gpu_format(), 1.0);
             }
         }
         let r = self
@@ -216,31 +218,6 @@ impl Context {
             samples,
             gpu,
         });
-    }
-
-    /// Depth 1.0 (and stencil 0) in new depth storage, as Chromium initializes it: wgpu's
-    /// own initialization is zeros, which a `LESS` depth test passes nothing against.
-    fn clear_depth_storage(&mut self, view: &wgpu::TextureView, format: wgpu::TextureFormat) {
-        let encoder = self.frame.commands(&self.gpu);
-        let pass = encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
-            label: Some("essl-gl renderbuffer initialization"),
-            color_attachments: &[],
-            depth_stencil_attachment: Some(wgpu::RenderPassDepthStencilAttachment {
-                view,
-                depth_ops: Some(wgpu::Operations {
-                    load: wgpu::LoadOp::Clear(1.0),
-                    store: wgpu::StoreOp::Store,
-                }),
-                stencil_ops: format.has_stencil_aspect().then_some(wgpu::Operations {
-                    load: wgpu::LoadOp::Clear(0),
-                    store: wgpu::StoreOp::Store,
-                }),
-            }),
-            timestamp_writes: None,
-            occlusion_query_set: None,
-            multiview_mask: None,
-        });
-        drop(pass);
     }
 
     /// The sample counts a format allows, largest first (`getInternalformatParameter(SAMPLES)`):

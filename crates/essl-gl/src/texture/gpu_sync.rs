@@ -204,27 +204,37 @@ impl Context {
                 array_layer_count: Some(1),
                 ..Default::default()
             });
-            let encoder = self.frame.commands(&self.gpu);
-            let pass = encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
-                label: Some("essl-gl depth upload"),
-                color_attachments: &[],
-                depth_stencil_attachment: Some(wgpu::RenderPassDepthStencilAttachment {
-                    view: &view,
-                    depth_ops: Some(wgpu::Operations {
-                        load: wgpu::LoadOp::Clear(value),
-                        store: wgpu::StoreOp::Store,
-                    }),
-                    stencil_ops: format.has_stencil_aspect().then_some(wgpu::Operations {
-                        load: wgpu::LoadOp::Clear(0),
-                        store: wgpu::StoreOp::Store,
-                    }),
-                }),
-                timestamp_writes: None,
-                occlusion_query_set: None,
-                multiview_mask: None,
-            });
-            drop(pass);
+            self.clear_depth_view(&view, format, value);
         }
+    }
+
+    /// Records a pass that clears a depth view to `depth` (and its stencil, if any, to 0).
+    pub(crate) fn clear_depth_view(
+        &mut self,
+        view: &wgpu::TextureView,
+        format: wgpu::TextureFormat,
+        depth: f32,
+    ) {
+        let encoder = self.frame.commands(&self.gpu);
+        let pass = encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
+            label: Some("essl-gl depth clear"),
+            color_attachments: &[],
+            depth_stencil_attachment: Some(wgpu::RenderPassDepthStencilAttachment {
+                view,
+                depth_ops: Some(wgpu::Operations {
+                    load: wgpu::LoadOp::Clear(depth),
+                    store: wgpu::StoreOp::Store,
+                }),
+                stencil_ops: format.has_stencil_aspect().then_some(wgpu::Operations {
+                    load: wgpu::LoadOp::Clear(0),
+                    store: wgpu::StoreOp::Store,
+                }),
+            }),
+            timestamp_writes: None,
+            occlusion_query_set: None,
+            multiview_mask: None,
+        });
+        drop(pass);
     }
 
     /// Reads one level image of a texture's GPU copy back (submitting the batch and waiting):
