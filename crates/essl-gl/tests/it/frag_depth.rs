@@ -89,20 +89,10 @@ fn new_depth_renderbuffers_hold_one() {
         (gl::DEPTH24_STENCIL8, 0),
         (gl::DEPTH_COMPONENT24, 4),
     ] {
-        let colour = ctx.create_renderbuffer();
-        ctx.bind_renderbuffer(gl::RENDERBUFFER, Some(colour));
-        ctx.renderbuffer_storage_multisample(gl::RENDERBUFFER, samples, gl::RGBA8, 2, 2);
+        common::renderbuffer_framebuffer(&mut ctx, gl::RGBA8, samples, 2, 2);
         let depth = ctx.create_renderbuffer();
         ctx.bind_renderbuffer(gl::RENDERBUFFER, Some(depth));
         ctx.renderbuffer_storage_multisample(gl::RENDERBUFFER, samples, format, 2, 2);
-        let fb = ctx.create_framebuffer();
-        ctx.bind_framebuffer(gl::FRAMEBUFFER, Some(fb));
-        ctx.framebuffer_renderbuffer(
-            gl::FRAMEBUFFER,
-            gl::COLOR_ATTACHMENT0,
-            gl::RENDERBUFFER,
-            Some(colour),
-        );
         let point = if format == gl::DEPTH24_STENCIL8 {
             gl::DEPTH_STENCIL_ATTACHMENT
         } else {

@@ -216,32 +216,6 @@ fn sampling_a_texture_that_is_drawn_into_is_a_feedback_loop() {
     assert_clean(&ctx);
 }
 
-/// A framebuffer with one renderbuffer of `format` at COLOR_ATTACHMENT0, `samples` per pixel.
-fn renderbuffer_framebuffer(
-    ctx: &mut Context,
-    format: u32,
-    samples: i32,
-    w: i32,
-    h: i32,
-) -> essl_gl::Framebuffer {
-    let rb = ctx.create_renderbuffer();
-    ctx.bind_renderbuffer(gl::RENDERBUFFER, Some(rb));
-    ctx.renderbuffer_storage_multisample(gl::RENDERBUFFER, samples, format, w, h);
-    let fb = ctx.create_framebuffer();
-    ctx.bind_framebuffer(gl::FRAMEBUFFER, Some(fb));
-    ctx.framebuffer_renderbuffer(
-        gl::FRAMEBUFFER,
-        gl::COLOR_ATTACHMENT0,
-        gl::RENDERBUFFER,
-        Some(rb),
-    );
-    assert_eq!(
-        ctx.check_framebuffer_status(gl::FRAMEBUFFER),
-        gl::FRAMEBUFFER_COMPLETE
-    );
-    fb
-}
-
 #[test]
 fn a_multisampled_renderbuffer_resolves_through_blit() {
     let Some(mut ctx) = context(16, 16) else {

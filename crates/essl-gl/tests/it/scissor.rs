@@ -51,17 +51,7 @@ fn a_multisampled_framebuffer_object_keeps_draws_inside_the_box() {
         return;
     };
     for fs in [FS, FS_FRAG_COORD] {
-        let rb = ctx.create_renderbuffer();
-        ctx.bind_renderbuffer(gl::RENDERBUFFER, Some(rb));
-        ctx.renderbuffer_storage_multisample(gl::RENDERBUFFER, 4, gl::RGBA8, 4, 4);
-        let fb = ctx.create_framebuffer();
-        ctx.bind_framebuffer(gl::FRAMEBUFFER, Some(fb));
-        ctx.framebuffer_renderbuffer(
-            gl::FRAMEBUFFER,
-            gl::COLOR_ATTACHMENT0,
-            gl::RENDERBUFFER,
-            Some(rb),
-        );
+        common::renderbuffer_framebuffer(&mut ctx, gl::RGBA8, 4, 4, 4);
         scissored_quad(&mut ctx, fs, true);
         ctx.bind_framebuffer(gl::DRAW_FRAMEBUFFER, None);
         ctx.blit_framebuffer(0, 0, 4, 4, 0, 0, 4, 4, gl::COLOR_BUFFER_BIT, gl::NEAREST);

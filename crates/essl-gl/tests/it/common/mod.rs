@@ -247,3 +247,30 @@ pub fn colour_framebuffer(ctx: &mut Context, t: essl_gl::Texture) -> essl_gl::Fr
     );
     fb
 }
+
+/// A framebuffer with one renderbuffer of `format` at COLOR_ATTACHMENT0, `samples` per pixel.
+#[allow(dead_code)]
+pub fn renderbuffer_framebuffer(
+    ctx: &mut Context,
+    format: u32,
+    samples: i32,
+    w: i32,
+    h: i32,
+) -> essl_gl::Framebuffer {
+    let rb = ctx.create_renderbuffer();
+    ctx.bind_renderbuffer(gl::RENDERBUFFER, Some(rb));
+    ctx.renderbuffer_storage_multisample(gl::RENDERBUFFER, samples, format, w, h);
+    let fb = ctx.create_framebuffer();
+    ctx.bind_framebuffer(gl::FRAMEBUFFER, Some(fb));
+    ctx.framebuffer_renderbuffer(
+        gl::FRAMEBUFFER,
+        gl::COLOR_ATTACHMENT0,
+        gl::RENDERBUFFER,
+        Some(rb),
+    );
+    assert_eq!(
+        ctx.check_framebuffer_status(gl::FRAMEBUFFER),
+        gl::FRAMEBUFFER_COMPLETE
+    );
+    fb
+}
