@@ -80,8 +80,17 @@ impl NativeContext {
         attributes: Attributes,
         version: u32,
     ) -> napi::Result<Self> {
-        let mut ctx = Context::with_attributes(width.max(1), height.max(1), attributes.into())
-            .map_err(BindingError::from)?;
+        let attributes: ContextAttributes = attributes.into();
+        let (w, h) = (width.max(1), height.max(1));
+        // A canvas larger than the device allows gets a smaller drawing buffer (WebGL §2.2):
+        // as large as it allows in each dimension, as Chromium makes it.
+        let mut ctx = match Context::with_attributes(w, h, attributes) {
+            Err(essl_gl::ContextError::InvalidSize { max, .. }) => {
+                Context::with_attributes(w.min(max), h.min(max), attributes)
+            }
+            other => other,
+        }
+        .map_err(BindingError::from)?;
         if version == 1 {
             ctx.set_webgl1();
         }
@@ -114,11 +123,16 @@ impl NativeContext {
         self.ctx.is_none()
     }
 
-    /// Gives the drawing buffer a new size (a canvas's `width` or `height` set).
+    /// Gives the drawing buffer a new size (a canvas's `width` or `height` set), each at most
+    /// `MAX_TEXTURE_SIZE` (WebGL §2.2: a smaller drawing buffer where the size cannot be had).
     #[napi(catch_unwind)]
     pub fn resize(&mut self, width: u32, height: u32) -> napi::Result<()> {
-        self.gl()?
-            .resize_drawing_buffer(width.max(1), height.max(1));
+        let gl = self.gl()?;
+        let max = gl
+            .get_parameter(essl_gl::gl::MAX_TEXTURE_SIZE)
+            .and_then(|p| p.as_int())
+            .map_or(u32::MAX, |m| m as u32);
+        gl.resize_drawing_buffer(width.clamp(1, max), height.clamp(1, max));
         Ok(())
     }
 

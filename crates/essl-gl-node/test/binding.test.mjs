@@ -569,3 +569,16 @@ test('PNG images upload their colour as the file holds it, nearly transparent pi
   gl.destroy();
   w.close();
 });
+
+test('a canvas larger than the device allows gets a drawing buffer as large as it allows', () => {
+  const small = createContext(1, 1);
+  const max = small.getParameter(small.MAX_TEXTURE_SIZE);
+  small.destroy();
+  const gl = createContext(max + 32, 8);
+  assert.deepEqual([gl.drawingBufferWidth, gl.drawingBufferHeight], [max, 8]);
+  gl.canvas.width = 8;
+  gl.canvas.height = max + 32;
+  assert.deepEqual([gl.drawingBufferWidth, gl.drawingBufferHeight], [8, max]);
+  assert.equal(gl.getError(), gl.NO_ERROR);
+  gl.destroy();
+});
