@@ -129,6 +129,5 @@ pub const LOWER_OPTIONS: essl::program::LowerOptions = essl::program::LowerOptio
     integer_cube_as_array: true,
     clip_distance_switches: true,
     clip_control: false,
-    scissor_discard: true,
     clamp_lod_bias: true,
 };

@@ -159,7 +159,6 @@ impl Options {
             integer_cube_as_array: false,
             clip_distance_switches: false,
             clip_control: false,
-            scissor_discard: false,
             clamp_lod_bias: false,
         }
     }

@@ -64,21 +64,16 @@ pub struct LowerOptions {
     /// makes one without it), `ZERO_TO_ONE_EXT` keeps z as the shader wrote it where
     /// [`LowerOptions::zero_to_one_depth`] would map it.
     pub clip_control: bool,
-    /// Declare a fragment-stage pipeline-overridable `bool`, [`SCISSOR_DISCARD`] (false unless
-    /// the pipeline sets it), under which fragments whose framebuffer position lies outside
-    /// [`InternalUniform::ScissorRect`] are discarded before the shader runs: for a renderer
-    /// whose rasterizer does not keep a multisampled draw inside the scissor box (Mesa 22's
-    /// lavapipe covers samples of the pixels left of and below it).
-    pub scissor_discard: bool,
     /// Clamp the bias of `texture(s, p, bias)` to ±[`MAX_TEXTURE_LOD_BIAS`], as GL clamps it
     /// to its `MAX_TEXTURE_LOD_BIAS`: a renderer that reports that limit then samples what it
-    /// says, whatever bias the device itself takes (WGSL clamps at 16).
+    /// says for any bias (WGSL's own clamp is at 15.99).
     pub clamp_lod_bias: bool,
 }
 
-/// The `MAX_TEXTURE_LOD_BIAS` that [`LowerOptions::clamp_lod_bias`] clamps to: 2.0, the least
-/// ES 3.0 allows, what Chromium reports on SwiftShader.
-pub const MAX_TEXTURE_LOD_BIAS: f32 = 2.0;
+/// The `MAX_TEXTURE_LOD_BIAS` that [`LowerOptions::clamp_lod_bias`] clamps to: 15.0, within
+/// what WGSL takes (it clamps a bias to [−16, 15.99]) and what Vulkan devices such as
+/// lavapipe (16) apply, and above the biases the conformance suite's pages draw with.
+pub const MAX_TEXTURE_LOD_BIAS: f32 = 15.0;
 
 /// The vertex stage's pipeline-overridable `bool` that is true under `EXT_clip_control`'s
 /// `UPPER_LEFT_EXT` origin ([`LowerOptions::clip_control`]).
@@ -86,10 +81,6 @@ pub const CLIP_UPPER_LEFT: &str = "_essl_clip_upper_left";
 /// The vertex stage's pipeline-overridable `bool` that is true under `EXT_clip_control`'s
 /// `ZERO_TO_ONE_EXT` depth mode ([`LowerOptions::clip_control`]).
 pub const CLIP_ZERO_TO_ONE: &str = "_essl_clip_zero_to_one";
-
-/// The fragment stage's pipeline-overridable `bool` that turns on the scissor test in the
-/// shader ([`LowerOptions::scissor_discard`]).
-pub const SCISSOR_DISCARD: &str = "_essl_scissor_discard";
 
 impl Default for LowerOptions {
     fn default() -> Self {
@@ -101,7 +92,6 @@ impl Default for LowerOptions {
             integer_cube_as_array: false,
             clip_distance_switches: false,
             clip_control: false,
-            scissor_discard: false,
             clamp_lod_bias: false,
         }
     }
@@ -192,19 +182,14 @@ pub enum InternalUniform {
     /// `gl_DrawID` as an `i32`: the index of the draw within a multi-draw call, 0 for any
     /// other draw (`WEBGL_multi_draw`).
     DrawId,
-    /// The scissor box as a `vec4` of the framebuffer's coordinates (the stage's
-    /// `@builtin(position)`): left, top, right, bottom, the last two exclusive
-    /// ([`LowerOptions::scissor_discard`]).
-    ScissorRect,
 }
 
 impl InternalUniform {
     /// Every value.
-    pub const ALL: [InternalUniform; 4] = [
+    pub const ALL: [InternalUniform; 3] = [
         InternalUniform::FramebufferHeight,
         InternalUniform::ClipDistancesEnabled,
         InternalUniform::DrawId,
-        InternalUniform::ScissorRect,
     ];
 
     /// A stable snake_case name for the value (`framebuffer_height`), for binding maps.
@@ -213,7 +198,6 @@ impl InternalUniform {
             InternalUniform::FramebufferHeight => "framebuffer_height",
             InternalUniform::ClipDistancesEnabled => "clip_distances_enabled",
             InternalUniform::DrawId => "draw_id",
-            InternalUniform::ScissorRect => "scissor_rect",
         }
     }
 
@@ -223,17 +207,14 @@ impl InternalUniform {
             InternalUniform::FramebufferHeight => "_essl_framebuffer_height",
             InternalUniform::ClipDistancesEnabled => "_essl_clip_distances_enabled",
             InternalUniform::DrawId => "_essl_draw_id",
-            InternalUniform::ScissorRect => "_essl_scissor_rect",
         }
     }
 
     /// The vertex stage reads it (`gl_ClipDistance`'s switches, `gl_DrawID`), or the fragment
-    /// stage (the framebuffer height, the scissor box).
+    /// stage (the framebuffer height).
     pub fn stage(self) -> crate::Stage {
         match self {
-            InternalUniform::FramebufferHeight | InternalUniform::ScissorRect => {
-                crate::Stage::Fragment
-            }
+            InternalUniform::FramebufferHeight => crate::Stage::Fragment,
             InternalUniform::ClipDistancesEnabled | InternalUniform::DrawId => crate::Stage::Vertex,
         }
     }

@@ -370,34 +370,27 @@ impl Context {
     /// Writes the values the renderer provides into program `pid`'s default uniform block
     /// and puts the block in the arena (once per batch and version): chunk, buffer, offset
     /// and size; `None` for a program without one.
-    fn upload_default_block(&mut self, call: &DrawCall) -> Option<(u64, wgpu::Buffer, u32, u64)> {
-        let pid = call.program;
+    fn upload_default_block(&mut self, pid: Id) -> Option<(u64, wgpu::Buffer, u32, u64)> {
         let serial = self.frame.serial();
         let gpu = &self.gpu;
         let height = self.fb.height as f32;
         let clip_distances = self.clip_distances_enabled();
         let draw_id = self.draw_id;
-        let [x, y, w, h] = call.scissor.map(|v| v as f32);
-        let scissor: Vec<u8> = [x, y, x + w, y + h]
-            .iter()
-            .flat_map(|v| v.to_ne_bytes())
-            .collect();
         let linked = self
             .objects
             .linked_mut(pid)
             .expect("current programs are linked");
         let block = linked.layout.uniform_block.as_ref()?;
         for (what, offset) in &block.internal {
-            let value: &[u8] = match what {
-                InternalUniform::FramebufferHeight => &height.to_ne_bytes(),
-                InternalUniform::ClipDistancesEnabled => &clip_distances.to_ne_bytes(),
-                InternalUniform::DrawId => &draw_id.to_ne_bytes(),
-                InternalUniform::ScissorRect => &scissor,
+            let value = match what {
+                InternalUniform::FramebufferHeight => height.to_ne_bytes(),
+                InternalUniform::ClipDistancesEnabled => clip_distances.to_ne_bytes(),
+                InternalUniform::DrawId => draw_id.to_ne_bytes(),
             };
             let at = *offset as usize;
-            if let Some(dst) = linked.uniform_data.get_mut(at..at + value.len()) {
+            if let Some(dst) = linked.uniform_data.get_mut(at..at + 4) {
                 if dst != value {
-                    dst.copy_from_slice(value);
+                    dst.copy_from_slice(&value);
                     linked.uniform_version += 1;
                 }
             }
@@ -432,7 +425,7 @@ impl Context {
     /// uniform blocks' buffer ranges.
     pub(super) fn bind_groups(&mut self, call: &DrawCall) -> Groups {
         let (slot_bindings, resources) = self.bind_textures(&call.slot_plans);
-        let default = self.upload_default_block(call);
+        let default = self.upload_default_block(call.program);
         let serial = self.frame.serial();
         let gpu = &self.gpu;
         let block_buffers: Vec<(wgpu::Buffer, u64, u64)> = call

@@ -184,9 +184,11 @@ impl Context {
         };
         let s = &self.state;
         // Lavapipe lets a multisampled draw cover samples outside the scissor box: the
-        // fragment shader tests the box itself there (`LOWER_OPTIONS.scissor_discard`).
-        let scissor_discard =
-            s.scissor_test && target.samples > 1 && !linked.layout.fragment.overrides.is_empty();
+        // fragment shader tests the box itself there (`shader_patch::with_scissor_discard`).
+        let scissor_discard = (s.scissor_test && target.samples > 1 && call.rasterize).then(|| {
+            let [x, y, w, h] = call.scissor;
+            [x, y, x + w, y + h]
+        });
         let buffers = &s.draw_buffers[..target.colors.len().min(s.draw_buffers.len())];
         let blends: Vec<_> = buffers
             .iter()

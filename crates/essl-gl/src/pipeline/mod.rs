@@ -15,8 +15,8 @@ use std::collections::HashMap;
 use crate::gpu::Gpu;
 use crate::program::LinkedProgram;
 use crate::shader_patch::{
-    capture_outputs, output_needs_widening, without_frag_depth, wrap_entry_point, CaptureSpec,
-    InputPatch,
+    capture_outputs, output_needs_widening, with_scissor_discard, without_frag_depth,
+    wrap_entry_point, CaptureSpec, InputPatch,
 };
 use crate::texture::SampleKind;
 
@@ -85,8 +85,9 @@ pub(crate) struct PipelineKey {
     /// `EXT_clip_control`'s (upper-left origin, zero-to-one depth) for a program whose vertex
     /// stage declares them; (false, false) for another.
     pub(crate) clip_control: (bool, bool),
-    /// The fragment stage tests the scissor box itself ([`essl::program::SCISSOR_DISCARD`]).
-    pub(crate) scissor_discard: bool,
+    /// The scissor box the fragment stage tests itself, where it does (left, top, right,
+    /// bottom; `shader_patch::with_scissor_discard`).
+    pub(crate) scissor_discard: Option<[u32; 4]>,
 }
 
 /// What a group-0 bind group holds: the default block's arena chunk and size, and the
@@ -114,9 +115,10 @@ pub(crate) struct PipelineCache {
     #[allow(clippy::type_complexity)]
     modules:
         HashMap<(u64, Vec<InputPatch>, Option<CaptureSpec>), Result<wgpu::ShaderModule, Rejected>>,
-    /// Per program: its fragment module without the `gl_FragDepth` output (`None`: it writes
-    /// none), for targets without a depth attachment.
-    fragment_without_depth: HashMap<u64, Option<Result<wgpu::ShaderModule, Rejected>>>,
+    /// Fragment modules patched for a draw: (program, the target has depth, the scissor box
+    /// the module tests) → the module.
+    #[allow(clippy::type_complexity)]
+    fragment_modules: HashMap<(u64, bool, Option<[u32; 4]>), Result<wgpu::ShaderModule, Rejected>>,
     capture_layouts: HashMap<u32, wgpu::BindGroupLayout>,
     clear: HashMap<ClearKey, wgpu::RenderPipeline>,
     blit: HashMap<BlitKey, (wgpu::RenderPipeline, wgpu::BindGroupLayout)>,
@@ -351,36 +353,42 @@ impl PipelineCache {
             .clone()
     }
 
-    /// The fragment module for a target with (`depth`) or without a depth attachment: without
-    /// one, a shader that writes `gl_FragDepth` has the output taken out, as GL ignores it.
+    /// The fragment module for a draw: into a target without a depth attachment (`!depth`),
+    /// a shader that writes `gl_FragDepth` has the output taken out, as GL ignores it; with
+    /// `scissor`, the module discards fragments outside that box itself
+    /// ([`with_scissor_discard`]).
     fn fragment_module(
         &mut self,
         gpu: &Gpu,
         program: &LinkedProgram,
         depth: bool,
+        scissor: Option<[u32; 4]>,
     ) -> Result<wgpu::ShaderModule, Rejected> {
-        if depth {
+        if depth && scissor.is_none() {
             return Ok(program.fragment_module.clone());
         }
-        let variant = self
-            .fragment_without_depth
-            .entry(program.serial)
+        self.fragment_modules
+            .entry((program.serial, depth, scissor))
             .or_insert_with(|| {
                 let fragment = &program.layout.fragment;
-                let widened;
-                let base = if output_needs_widening(fragment) {
-                    widened = wrap_entry_point(fragment, &[], true);
-                    &widened
+                let mut module = if output_needs_widening(fragment) {
+                    wrap_entry_point(fragment, &[], true)
                 } else {
-                    fragment
+                    fragment.clone()
                 };
-                without_frag_depth(base)
-                    .map(|m| create_module(gpu, m, "essl-gl fragment (no depth output)"))
-            });
-        match variant {
-            Some(r) => r.clone(),
-            None => Ok(program.fragment_module.clone()),
-        }
+                if !depth {
+                    match without_frag_depth(&module) {
+                        Some(m) => module = m,
+                        None if scissor.is_none() => return Ok(program.fragment_module.clone()),
+                        None => {}
+                    }
+                }
+                if let Some(rect) = scissor {
+                    module = with_scissor_discard(&module, rect);
+                }
+                create_module(gpu, module, "essl-gl fragment (patched)")
+            })
+            .clone()
     }
 
     /// The layout of group 2 for transform feedback: `buffers` storage buffers at bindings
@@ -442,7 +450,12 @@ impl PipelineCache {
         program: &LinkedProgram,
     ) -> Result<CachedPipeline, Rejected> {
         let vertex_module = self.vertex_module(gpu, program, &key.patches, &key.capture)?;
-        let fragment_module = self.fragment_module(gpu, program, key.depth_format.is_some())?;
+        let fragment_module = self.fragment_module(
+            gpu,
+            program,
+            key.depth_format.is_some(),
+            key.scissor_discard,
+        )?;
         let (default, blocks) = (
             program.layout.uniform_block.is_some(),
             program.layout.blocks.len(),
@@ -503,11 +516,6 @@ impl PipelineCache {
         .filter(|(_, on)| *on)
         .map(|(name, _)| (name, 1.0))
         .collect();
-        let fragment_constants: Vec<(&str, f64)> = key
-            .scissor_discard
-            .then_some((essl::program::SCISSOR_DISCARD, 1.0))
-            .into_iter()
-            .collect();
         let pipeline = gpu
             .device
             .create_render_pipeline(&wgpu::RenderPipelineDescriptor {
@@ -562,10 +570,7 @@ impl PipelineCache {
                 fragment: key.rasterize.then(|| wgpu::FragmentState {
                     module: &fragment_module,
                     entry_point: Some("main"),
-                    compilation_options: wgpu::PipelineCompilationOptions {
-                        constants: &fragment_constants,
-                        ..Default::default()
-                    },
+                    compilation_options: Default::default(),
                     targets: &targets,
                 }),
                 multiview_mask: None,

@@ -19,12 +19,14 @@ use naga::{
 
 mod capture;
 mod depth;
+mod scissor;
 
 pub(crate) use capture::{
     capture_outputs, CaptureSource, CaptureSpec, CaptureValue,
     PARAMS_BINDING as CAPTURE_PARAMS_BINDING,
 };
 pub(crate) use depth::without_frag_depth;
+pub(crate) use scissor::with_scissor_discard;
 
 use crate::program::{type_shape, ValueKind};
 

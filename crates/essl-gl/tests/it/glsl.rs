@@ -660,14 +660,14 @@ fn a_texture_bias_is_clamped_to_max_texture_lod_bias() {
     let Some(mut ctx) = context(1, 1) else { return };
     assert_eq!(
         ctx.get_parameter(gl::MAX_TEXTURE_LOD_BIAS),
-        Some(essl_gl::Parameter::Float(2.0))
+        Some(essl_gl::Parameter::Float(15.0))
     );
-    // Eight levels of 128 × 1 down to 1 × 1, level `l` holding the value `l + 1`.
+    // Levels of 8192 × 1 down to 1 × 1, level `l` holding the value `l + 1`.
     let t = ctx.create_texture();
     ctx.bind_texture(gl::TEXTURE_2D, Some(t));
-    ctx.tex_storage_2d(gl::TEXTURE_2D, 8, gl::RGBA8, 128, 1);
-    for level in 0..8 {
-        let w = 128 >> level;
+    ctx.tex_storage_2d(gl::TEXTURE_2D, 14, gl::RGBA8, 8192, 1);
+    for level in 0..14 {
+        let w = 8192 >> level;
         let texels = vec![level as u8 + 1; w * 4];
         ctx.tex_sub_image_2d(
             gl::TEXTURE_2D,
@@ -687,11 +687,12 @@ fn a_texture_bias_is_clamped_to_max_texture_lod_bias() {
         gl::NEAREST_MIPMAP_NEAREST as i32,
     );
     ctx.tex_parameteri(gl::TEXTURE_2D, gl::TEXTURE_MAG_FILTER, gl::NEAREST as i32);
-    // One pixel spans 1/128 of the texture: level 0, then the bias.
-    for (bias, level) in [(1.0, 1), (2.0, 2), (5.0, 2)] {
+    // One pixel spans 1/16 of a texel: level -4 before the bias, which is clamped to 15 (WGSL's
+    // own clamp, at 15.99, would reach level 12).
+    for (bias, level) in [(1.0, 0), (6.0, 2), (15.0, 11), (17.0, 11)] {
         let fs = format!(
             "#version 300 es\nprecision highp float; uniform sampler2D t; out vec4 o;\
-             void main() {{ o = texture(t, vec2(gl_FragCoord.x / 128.0, 0.5), {bias:?}); }}"
+             void main() {{ o = texture(t, vec2(gl_FragCoord.x / 131072.0, 0.5), {bias:?}); }}"
         );
         full_screen(&mut ctx, &fs);
         ctx.draw_arrays(gl::TRIANGLES, 0, 6);

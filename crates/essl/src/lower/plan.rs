@@ -67,8 +67,6 @@ pub(super) struct InternalUses {
     pub(super) clip_distance: bool,
     /// The vertex stage reads `gl_DrawID`.
     pub(super) draw_id: bool,
-    /// There is a fragment stage.
-    pub(super) fragment: bool,
 }
 
 impl InternalUses {
@@ -79,7 +77,6 @@ impl InternalUses {
             frag_coord: fm.is_some_and(|m| m.used_builtins.contains(&BuiltinVar::FragCoord)),
             clip_distance: v(BuiltinVar::ClipDistance),
             draw_id: v(BuiltinVar::DrawId),
-            fragment: fm.is_some(),
         }
     }
 }
@@ -101,21 +98,12 @@ impl ProgramPlan {
                 options.clip_distance_switches && uses.clip_distance,
             ),
             (InternalUniform::DrawId, uses.draw_id),
-            (
-                InternalUniform::ScissorRect,
-                options.scissor_discard && uses.fragment,
-            ),
         ];
         for (what, _) in wanted.into_iter().filter(|&(_, on)| on) {
-            // Each is 4 bytes (an f32, u32 or i32), but the scissor box, a vec4 (16).
-            let size = if what == InternalUniform::ScissorRect {
-                16
-            } else {
-                4
-            };
-            offset = offset.div_ceil(size) * size;
+            // Each is 4 bytes (an f32, u32 or i32).
+            offset = offset.div_ceil(4) * 4;
             self.internal.push((what, offset));
-            offset += size;
+            offset += 4;
         }
         self.block_size = offset.div_ceil(16) * 16;
     }

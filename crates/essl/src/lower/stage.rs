@@ -145,7 +145,6 @@ impl ModuleCx<'_> {
             InternalUniform::FramebufferHeight => Type::FLOAT,
             InternalUniform::ClipDistancesEnabled => Type::UINT,
             InternalUniform::DrawId => Type::INT,
-            InternalUniform::ScissorRect => Type::Vector(ScalarKind::Float, 4),
         };
         let ty = self.types.logical(&mut self.module, &ty);
         members.push(naga::StructMember {

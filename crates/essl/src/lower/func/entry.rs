@@ -165,7 +165,6 @@ pub(crate) fn entry_point(
     fx.copy_inputs(plan);
     let frag_coord_arg = fx.copy_builtin_inputs();
     fx.copy_clip_distance_input(plan);
-    let frag_coord_arg = fx.scissor_discard(frag_coord_arg);
     fx.default_frag_depth(frag_coord_arg);
     // Call the shader's main.
     fx.push(
@@ -539,81 +538,26 @@ impl FnCx<'_, '_> {
     /// `EXT_clip_control`'s two pipeline-overridable `bool`s, declared in the module, as
     /// values: (origin `UPPER_LEFT_EXT`, depth `ZERO_TO_ONE_EXT`).
     fn clip_control_overrides(&mut self) -> (Handle<Expression>, Handle<Expression>) {
-        let upper_left = self.bool_override(crate::program::CLIP_UPPER_LEFT);
-        let zero_to_one = self.bool_override(crate::program::CLIP_ZERO_TO_ONE);
-        (upper_left, zero_to_one)
-    }
-
-    /// A pipeline-overridable `bool` named `name`, false unless the pipeline sets it,
-    /// declared in the module, as a value.
-    fn bool_override(&mut self, name: &str) -> Handle<Expression> {
         let bool_ty = self.ty(&Type::BOOL);
-        let module = &mut self.cx.module;
-        let init = module
-            .global_expressions
-            .append(Expression::Literal(Literal::Bool(false)), NSpan::UNDEFINED);
-        let o = module.overrides.append(
-            naga::Override {
-                name: Some(name.to_owned()),
-                id: None,
-                ty: bool_ty,
-                init: Some(init),
-            },
-            NSpan::UNDEFINED,
-        );
-        self.add(Expression::Override(o), Span::default())
-    }
-
-    /// [`LowerOptions::scissor_discard`]: where the pipeline turns the test on, a fragment
-    /// whose position is outside [`InternalUniform::ScissorRect`] is discarded before the
-    /// shader's `main` runs. Returns the position argument, made here when the shader does
-    /// not read `gl_FragCoord` (`pos` is its argument when it does).
-    ///
-    /// [`LowerOptions::scissor_discard`]: crate::program::LowerOptions::scissor_discard
-    fn scissor_discard(&mut self, pos: Option<Handle<Expression>>) -> Option<Handle<Expression>> {
-        if self.cx.stage != Stage::Fragment || !self.cx.options.scissor_discard {
-            return pos;
-        }
-        let Some(rect) = self.load_internal(InternalUniform::ScissorRect) else {
-            return pos;
+        let value = |fx: &mut Self, name: &str| {
+            let module = &mut fx.cx.module;
+            let init = module
+                .global_expressions
+                .append(Expression::Literal(Literal::Bool(false)), NSpan::UNDEFINED);
+            let o = module.overrides.append(
+                naga::Override {
+                    name: Some(name.to_owned()),
+                    id: None,
+                    ty: bool_ty,
+                    init: Some(init),
+                },
+                NSpan::UNDEFINED,
+            );
+            fx.add(Expression::Override(o), Span::default())
         };
-        let pos = pos.unwrap_or_else(|| {
-            let nty = self.ty(&Type::Vector(ScalarKind::Float, 4));
-            self.argument(
-                "gl_FragCoord".into(),
-                nty,
-                naga::Binding::BuiltIn(naga::BuiltIn::Position { invariant: false }),
-            )
-        });
-        let sp = Span::default();
-        let on = self.bool_override(crate::program::SCISSOR_DISCARD);
-        use naga::BinaryOperator as B;
-        let mut outside = None;
-        for (axis, edge, op) in [
-            (0, 0, B::Less),
-            (1, 1, B::Less),
-            (0, 2, B::GreaterEqual),
-            (1, 3, B::GreaterEqual),
-        ] {
-            let p = self.access_index(pos, axis, sp);
-            let e = self.access_index(rect, edge, sp);
-            let past = self.binop(op, p, e, sp);
-            outside = Some(match outside {
-                Some(o) => self.binop(B::LogicalOr, o, past, sp),
-                None => past,
-            });
-        }
-        let outside = outside.expect("four edges");
-        let condition = self.binop(B::LogicalAnd, on, outside, sp);
-        self.push(
-            Statement::If {
-                condition,
-                accept: naga::Block::from_vec(vec![Statement::Kill]),
-                reject: naga::Block::new(),
-            },
-            sp,
-        );
-        Some(pos)
+        let upper_left = value(self, crate::program::CLIP_UPPER_LEFT);
+        let zero_to_one = value(self, crate::program::CLIP_ZERO_TO_ONE);
+        (upper_left, zero_to_one)
     }
 
     /// The shader's outputs, one member per leaf, read from their private variables.
