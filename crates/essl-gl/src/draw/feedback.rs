@@ -2,12 +2,11 @@
 //! session's primitive mode, room in every buffer, no buffer both captured into and read),
 //! what the vertex stage writes where, and the bookkeeping after the draw.
 
-use super::{DrawArgs, Source};
+use super::DrawArgs;
 use crate::buffer::BufferRange;
 use crate::context::Context;
 use crate::gl;
 use crate::objects::Id;
-use crate::program::ShaderInput;
 use crate::shader_patch::CaptureSpec;
 use crate::transform_feedback::{vertices_per_primitive, Session};
 
@@ -51,11 +50,10 @@ impl Context {
     }
 
     /// Where the draw's captured vertices go, checking that each buffer has room and is not
-    /// also read by the draw.
+    /// also bound elsewhere.
     pub(super) fn plan_capture(
         &mut self,
         session: Session,
-        sources: &[(ShaderInput, Source)],
         first: u32,
         count: u32,
         instances: u32,
@@ -74,16 +72,14 @@ impl Context {
         let vertices = count as u64 * instances as u64;
         let mut base = [0u32; 4];
         for (b, range) in bindings.iter().enumerate() {
-            let read = sources
-                .iter()
-                .any(|(_, s)| matches!(s, Source::Array { buffer, .. } if *buffer == range.buffer));
-            if read || self.bound_elsewhere(range.buffer) {
-                // WebGL 2 §5.1: a buffer bound for transform feedback and at any other point
-                // (generic ARRAY_BUFFER included, as Chromium checks it) cannot be written.
+            // WebGL 2 §5.1: a buffer bound for transform feedback and at any other point
+            // (generic ARRAY_BUFFER included, as Chromium checks it) cannot be written; one the
+            // draw reads was refused before (`validate`).
+            if self.bound_elsewhere(range.buffer) {
                 return self.fail(
                     gl::INVALID_OPERATION,
                     f,
-                    "a transform feedback buffer is also bound elsewhere or read by the draw",
+                    "a transform feedback buffer is also bound elsewhere",
                 );
             }
             let len = self

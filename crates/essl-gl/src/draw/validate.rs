@@ -118,14 +118,7 @@ impl Context {
             Some(session) => {
                 // Only whole primitives are captured (and drawn).
                 count -= count % super::feedback::per_primitive(session.mode);
-                Some(self.plan_capture(
-                    session,
-                    &sources,
-                    args.first as u32,
-                    count,
-                    instances,
-                    f,
-                )?)
+                Some(self.plan_capture(session, args.first as u32, count, instances, f)?)
             }
             None => None,
         };
