@@ -455,7 +455,10 @@ export declare class NativeContext {
   get version(): number
   /** Whether [`NativeContext::destroy`] ran. */
   get destroyed(): boolean
-  /** Gives the drawing buffer a new size (a canvas's `width` or `height` set). */
+  /**
+   * Gives the drawing buffer a new size (a canvas's `width` or `height` set), each at most
+   * `MAX_TEXTURE_SIZE` (WebGL §2.2: a smaller drawing buffer where the size cannot be had).
+   */
   resize(width: number, height: number): void
   /** `drawingBufferWidth`. */
   get drawingBufferWidth(): number
