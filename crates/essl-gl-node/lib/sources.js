@@ -91,6 +91,9 @@ export function imageSource(v, name) {
 
 const PNG_SIGNATURE = Buffer.from([137, 80, 78, 71, 13, 10, 26, 10]);
 
+/** Image element → { src, pixels } of its last decode (`decodedPng`). */
+const decodedImages = new WeakMap();
+
 /**
  * A PNG image's pixels decoded from its file (a `data:` or `file:` URL), as a browser decodes
  * it for an upload: colour not multiplied by alpha. Drawing it onto a 2D canvas (the `canvas`
@@ -99,6 +102,17 @@ const PNG_SIGNATURE = Buffer.from([137, 80, 78, 71, 13, 10, 26, 10]);
  */
 function decodedPng(img) {
   const src = typeof img.src === 'string' ? img.src : '';
+  // An image element keeps its decoded pixels while its src stays, as a browser keeps a
+  // decoded image: a page that uploads one image many times reads and decodes it once.
+  const kept = decodedImages.get(img);
+  if (kept?.src === src) return kept.pixels;
+  const pixels = readPng(src);
+  decodedImages.set(img, { src, pixels });
+  return pixels;
+}
+
+/** The pixels a PNG `data:` or `file:` URL holds; `null` for anything else. */
+function readPng(src) {
   let bytes = null;
   try {
     if (src.startsWith('data:')) {
