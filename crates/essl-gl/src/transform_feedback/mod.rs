@@ -66,16 +66,15 @@ impl Context {
     /// point, or while a transform feedback session writes it, as Chromium checks (WebGL 2
     /// §5.1); true when that is recorded.
     pub(crate) fn refuse_double_bound(&mut self, buffer: crate::objects::Id, f: &str) -> bool {
-        let refused = self.in_feedback_object(buffer) && self.bound_elsewhere(buffer)
-            || self.objects.captures_into(buffer);
-        if refused {
-            self.error(
-                gl::INVALID_OPERATION,
-                f,
-                "the buffer is bound for transform feedback and at another binding point",
-            );
-        }
-        refused
+        let why = if self.objects.captures_into(buffer) {
+            "a transform feedback session writes the buffer"
+        } else if self.in_feedback_object(buffer) && self.bound_elsewhere(buffer) {
+            "the buffer is bound for transform feedback and at another binding point"
+        } else {
+            return false;
+        };
+        self.error(gl::INVALID_OPERATION, f, why);
+        true
     }
 
     /// Creates a transform feedback object (`createTransformFeedback`).
