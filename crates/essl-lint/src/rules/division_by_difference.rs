@@ -1,4 +1,5 @@
-//! `division-by-difference`: `x / (a - b)` where `a` and `b` are uniforms that may be equal.
+//! `division-by-difference`: `x / (a - b)` where `a` and `b` are uniforms that may be equal, or
+//! texels whose difference is 0 at an end of their range.
 
 use essl::diagnostic::{Diagnostic, Fix};
 use naga::{BinaryOperator as Bo, Expression as E, ScalarKind};
@@ -15,7 +16,9 @@ declare_rule! {
     /// that nothing in the shader keeps away from zero: `(d - u_outerLimit) / (u_innerLimit - u_outerLimit)`, or the
     /// same through a local (`float limitRange = u_innerLimit - u_outerLimit; … / limitRange`). A
     /// divisor the shader guards (`max(limitRange, 1e-4)`) or can order itself (`u_r + 0.1 - u_r`) is
-    /// not reported.
+    /// not reported. A difference of texel values is reported where it is 0 at an end of the texels'
+    /// range: `1.0 - k` for `k = min(1.0 - c.r, min(1.0 - c.g, 1.0 - c.b))` of a texel's colour `c`
+    /// is 0 for every black texel, `1.0 - c.a` for every opaque one.
     ///
     /// ## Why is this bad?
     /// Two parameters a user sets independently are equal sooner or later — a spot light with the
@@ -47,9 +50,12 @@ declare_rule! {
     ///   (`if (u_a != u_b)`, `abs(d) > 1e-6 ? x / d : 0.0`).
     /// - A divisor with a per-pixel part, zero at isolated pixels at most: the depth linearisation
     ///   `far + near - z * (far - near)` (positive for `z` in [-1, 1]), a Fresnel term
-    ///   `1.0 - Ems * Favg`; and integer divisions.
+    ///   `1.0 - Ems * Favg`, a difference of texels that is 0 only inside their range
+    ///   (`c.r - c.g`, `c.r * 2.0 - 1.0`: an exact mid value, where black, white and transparent
+    ///   texels fill whole regions); and integer divisions.
     ///
-    /// Severity: a warning when values the shader itself produces reach the hazard; a note, naming
+    /// Severity: a warning when values the shader itself produces reach the hazard, a texel at an
+    /// end of its range among them; a note, naming
     /// the uniform, when one uniform alone (with constants) does — the hazard then needs that value out
     /// of the range the shader was written for, and essl-gl's validation mode checks it at draw time. (`x / (u_resolution - 1.0)` needs `u_resolution == 1`). A difference of two uniforms
     /// a user sets independently (`cutOff - outerCutOff`, `far - near`) gives a warning.
@@ -60,7 +66,7 @@ declare_rule! {
     ///   `/ epsilon`.
     pub(crate) struct DivisionByDifference {
         id: "division-by-difference",
-        summary: "division by a difference of uniform values that can be zero",
+        summary: "division by a difference of uniforms, or of texels at an end of their range, that can be zero",
         default_level: Level::Warn,
         check: check,
     }
@@ -87,12 +93,14 @@ fn check(cx: &Cx, out: &mut Vec<Diagnostic>) {
                 continue;
             };
             // A difference of per-draw values: one with a per-pixel part (a depth, a ray) is
-            // zero at isolated pixels at most, not for the whole draw.
-            if cx.kind(id, d) != Some(ScalarKind::Float)
-                || !v.facts.has(Facts::DIFF)
-                || !v.facts.any(Facts::UNIFORM)
-                || v.facts.any(Facts::INPUT.with(Facts::TEXTURE))
-            {
+            // zero at isolated pixels at most, not for the whole draw — unless the part is a
+            // texel and the difference is 0 at an end of its range.
+            if cx.kind(id, d) != Some(ScalarKind::Float) || !v.facts.has(Facts::DIFF) {
+                continue;
+            }
+            let texel = zero_at_texel_end(cx, id, d, v.facts);
+            let per_pixel = v.facts.any(Facts::INPUT.with(Facts::TEXTURE));
+            if (per_pixel && !texel) || (!per_pixel && !v.facts.any(Facts::UNIFORM)) {
                 continue;
             }
             if !v.comps().iter().any(|c| c.contains(0.0))
@@ -113,12 +121,23 @@ fn check(cx: &Cx, out: &mut Vec<Diagnostic>) {
                 continue;
             }
             let what = cx.what(f, id, d);
-            let mut diag = Diagnostic::rule_warning(
-                DivisionByDifference::RULE.id,
-                "division by a difference of uniforms that can be zero",
-                span,
-            )
-            .with_label(format!("{what} is 0 when the uniforms are equal"))
+            let mut diag = if texel {
+                Diagnostic::rule_warning(
+                    DivisionByDifference::RULE.id,
+                    "division by a difference that is zero for ordinary texels",
+                    span,
+                )
+                .with_label(format!(
+                    "{what} is 0 where a texel it reads is at an end of its range (black, white, transparent)"
+                ))
+            } else {
+                Diagnostic::rule_warning(
+                    DivisionByDifference::RULE.id,
+                    "division by a difference of uniforms that can be zero",
+                    span,
+                )
+                .with_label(format!("{what} is 0 when the uniforms are equal"))
+            }
             .with_help("guard the divisor");
             let def = resolve(f, cx.sound(), id, d);
             let def_span = cx.span(f, def);
@@ -142,4 +161,18 @@ fn check(cx: &Cx, out: &mut Vec<Diagnostic>) {
             out.push(cx.grade(diag, &[(id, d)]));
         }
     }
+}
+
+/// Whether a difference that reads a texel is 0 where texels sit at an end of their range:
+/// with texels in `[0, 1]` (and other external values ordinary), 0 is an end of the
+/// difference's range (`1.0 - k` for `k = min(1.0 - rgb)` of a texel's colour, `1.0 - t.a`).
+/// Black, white and transparent texels cover whole regions of a picture, where a varying
+/// crosses a value at isolated pixels only.
+fn zero_at_texel_end(cx: &Cx, id: usize, d: naga::Handle<E>, facts: Facts) -> bool {
+    if !facts.any(Facts::TEXTURE) {
+        return false;
+    }
+    cx.typical()
+        .num(id, d)
+        .is_some_and(|t| t.comps().iter().any(|c| c.lo == 0.0 || c.hi == 0.0))
 }

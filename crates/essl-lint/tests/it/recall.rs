@@ -86,6 +86,13 @@ const HAZARDS: &[Hazard] = &[
     ("smoothstep-reversed-constant", "constant", "  r = smoothstep(1.0, 0.0, v_x);", N),
     ("division-by-difference", "uniform", "  r = v_x / (u_a - u_b);", W),
     ("division-by-difference", "uniform", "  r = v_x / (u_a - 1.0);", N),
+    (
+        "division-by-difference",
+        "texture",
+        "  float k = min(1.0 - t.r, min(1.0 - t.g, 1.0 - t.b));\n  r = (1.0 - t.r - k) / (1.0 - k);",
+        W,
+    ),
+    ("division-by-difference", "texture", "  r = t.r / (1.0 - t.a);", W),
     ("normalize-zero", "uniform", "  r = normalize(cross(u_up, u_dir)).x;", W),
     ("normalize-zero", "varying", "  r = normalize(cross(v_n, vec3(0.0, 1.0, 0.0))).x;", W),
     (
@@ -283,6 +290,13 @@ const GUARDED: &[(&str, &str)] = &[
     ),
     ("smoothstep-reversed-constant", "  r = 1.0 - smoothstep(0.0, 1.0, v_x);"),
     ("division-by-difference", "  if (u_a != u_b) { r = v_x / (u_a - u_b); }"),
+    (
+        "division-by-difference",
+        "  float k = min(1.0 - t.r, min(1.0 - t.g, 1.0 - t.b));\n  r = (1.0 - t.r - k) / max(1.0 - k, 1e-4);",
+    ),
+    // Differences of texels 0 inside their range only: at isolated values, not at black or white.
+    ("division-by-difference", "  r = v_x / (t.r - t.g);"),
+    ("division-by-difference", "  r = v_x / (t.r * 2.0 - 1.0);"),
     (
         "normalize-zero",
         "  vec3 c = cross(u_up, u_dir);\n  if (length(c) > 0.0) { r = normalize(c).x; }",
