@@ -4,7 +4,11 @@
 // per shader through each package's JavaScript API. spglsl checks one shader at a time (no
 // linking), so a case it passes is one whose compile results alone give the answer.
 //
-//   node bench/peers.mjs [--limit N]      (from crates/essl-node, after `npm run build`)
+//   node bench/peers.mjs [--limit N] [--rounds R]   (from crates/essl-node, after `npm run build`)
+//
+// Each corpus is timed in R rounds (default 5), the two packages alternating and taking turns
+// to go first; the figure is each package's median round, so that a burst of load on a shared
+// machine moves one round rather than the ratio.
 //
 // Prints a Markdown table for docs/performance.md and docs/conformance.md.
 import {readFileSync, existsSync} from 'node:fs';
@@ -22,6 +26,8 @@ if (!existsSync(corpora)) {
 const {spglslAngleCompile} = await import('spglsl');
 const limitAt = process.argv.indexOf('--limit');
 const limit = limitAt > 0 ? Number(process.argv[limitAt + 1]) : Infinity;
+const roundsAt = process.argv.indexOf('--rounds');
+const ROUNDS = roundsAt > 0 ? Number(process.argv[roundsAt + 1]) : 5;
 
 function read(name) {
   return readFileSync(join(corpora, name), 'utf8').trim().split('\n').map(l => JSON.parse(l)).slice(0, limit);
@@ -81,15 +87,21 @@ async function spglsl(c) {
   return [v, f, v && f];
 }
 
-async function measure(cases, run) {
-  // One untimed round to warm up (spglsl's WebAssembly compile, essl's first calls).
+async function warmUp(cases, run) {
+  // One untimed pass over a few cases (spglsl's WebAssembly compile, essl's first calls).
   for (const c of cases.slice(0, 20)) await run(c);
+}
+
+// One timed pass: the cases that pass, and wall-clock µs per shader.
+async function measure(cases, run) {
   let passed = 0;
   const start = process.hrtime.bigint();
   for (const c of cases) if (c.pass(...(await run(c)))) passed++;
   const ns = Number(process.hrtime.bigint() - start);
   return {passed, usPerShader: ns / 1000 / (cases.length * 2)};
 }
+
+const median = a => [...a].sort((x, y) => x - y)[a.length >> 1];
 
 const commit = (() => {
   try {
@@ -99,12 +111,21 @@ const commit = (() => {
   }
 })();
 console.log(`essl npm API vs spglsl ${JSON.parse(readFileSync(join(here, '..', 'node_modules', 'spglsl', 'package.json'))).version}, commit ${commit}, Node ${process.version}, ${(await import('node:os')).cpus()[0].model}\n`);
-console.log('| corpus | cases | essl agrees | spglsl agrees | essl µs/shader | spglsl µs/shader | spglsl / essl time |');
-console.log('|---|---|---|---|---|---|---|');
+console.log(`${ROUNDS} rounds per corpus, the packages alternating; medians\n`);
+console.log('| corpus | cases | essl agrees | spglsl agrees | essl µs/shader | spglsl µs/shader | spglsl / essl time | rounds: spglsl / essl |');
+console.log('|---|---|---|---|---|---|---|---|');
 for (const [name, cases] of Object.entries(SETS)) {
-  const e = await measure(cases, essl);
-  const s = await measure(cases, spglsl);
+  await warmUp(cases, essl);
+  await warmUp(cases, spglsl);
+  const runs = {essl: [], spglsl: []};
+  for (let r = 0; r < ROUNDS; r++) {
+    const order = r % 2 ? [['spglsl', spglsl], ['essl', essl]] : [['essl', essl], ['spglsl', spglsl]];
+    for (const [who, run] of order) runs[who].push(await measure(cases, run));
+  }
+  const e = median(runs.essl.map(x => x.usPerShader));
+  const s = median(runs.spglsl.map(x => x.usPerShader));
+  const each = runs.essl.map((x, i) => (runs.spglsl[i].usPerShader / x.usPerShader).toFixed(1)).join(', ');
   console.log(
-    `| ${name} | ${cases.length} | ${e.passed} | ${s.passed} | ${e.usPerShader.toFixed(0)} | ${s.usPerShader.toFixed(0)} | ${(s.usPerShader / e.usPerShader).toFixed(1)}× |`,
+    `| ${name} | ${cases.length} | ${runs.essl[0].passed} | ${runs.spglsl[0].passed} | ${e.toFixed(0)} | ${s.toFixed(0)} | ${(s / e).toFixed(1)}× | ${each} |`,
   );
 }
