@@ -8,14 +8,17 @@
 //
 // Each corpus is timed in R rounds (default 5), the two packages alternating and taking turns
 // to go first; the figure is each package's median round, so that a burst of load on a shared
-// machine moves one round rather than the ratio.
+// machine moves one round rather than the ratio. spglsl runs each round in a worker thread of
+// its own, after its own warm-up: its WebAssembly instance breaks for good after some thousands
+// of calls (`RuntimeError: null function or function signature mismatch`, then every call
+// throws), and a fresh instance per round keeps its answers those of a working compiler.
 //
 // Prints a Markdown table for docs/performance.md and docs/conformance.md.
 import {readFileSync, existsSync} from 'node:fs';
 import {join, dirname} from 'node:path';
 import {fileURLToPath} from 'node:url';
 import {execFileSync} from 'node:child_process';
-import {link} from '../index.js';
+import {Worker, isMainThread, parentPort, workerData} from 'node:worker_threads';
 
 const here = dirname(fileURLToPath(import.meta.url));
 const corpora = process.env.ESSL_CORPORA || join(here, '..', '..', '..', '..', 'shared', 'corpora');
@@ -67,6 +70,8 @@ const SETS = {
     })),
 };
 
+const link = isMainThread ? (await import('../index.js')).link : null;
+
 function essl(c) {
   const p = link(c.vertex, c.fragment, {target: c.target, lints: false});
   return [p.vertex.ok, p.fragment.ok, p.ok];
@@ -103,29 +108,44 @@ async function measure(cases, run) {
 
 const median = a => [...a].sort((x, y) => x - y)[a.length >> 1];
 
-const commit = (() => {
-  try {
-    return execFileSync('git', ['rev-parse', '--short', 'HEAD'], {encoding: 'utf8'}).trim();
-  } catch {
-    return '?';
-  }
-})();
-console.log(`essl npm API vs spglsl ${JSON.parse(readFileSync(join(here, '..', 'node_modules', 'spglsl', 'package.json'))).version}, commit ${commit}, Node ${process.version}, ${(await import('node:os')).cpus()[0].model}\n`);
-console.log(`${ROUNDS} rounds per corpus, the packages alternating; medians\n`);
-console.log('| corpus | cases | essl agrees | spglsl agrees | essl µs/shader | spglsl µs/shader | spglsl / essl time | rounds: spglsl / essl |');
-console.log('|---|---|---|---|---|---|---|---|');
-for (const [name, cases] of Object.entries(SETS)) {
-  await warmUp(cases, essl);
+// One timed round of spglsl on a corpus, in a worker thread with a fresh instance.
+function spglslRound(set) {
+  return new Promise((resolve, reject) => {
+    const w = new Worker(new URL(import.meta.url), {workerData: {set}, argv: process.argv.slice(2)});
+    w.once('message', resolve);
+    w.once('error', reject);
+  });
+}
+
+if (!isMainThread) {
+  const cases = SETS[workerData.set];
   await warmUp(cases, spglsl);
-  const runs = {essl: [], spglsl: []};
-  for (let r = 0; r < ROUNDS; r++) {
-    const order = r % 2 ? [['spglsl', spglsl], ['essl', essl]] : [['essl', essl], ['spglsl', spglsl]];
-    for (const [who, run] of order) runs[who].push(await measure(cases, run));
+  parentPort.postMessage(await measure(cases, spglsl));
+} else {
+  const commit = (() => {
+    try {
+      return execFileSync('git', ['rev-parse', '--short', 'HEAD'], {encoding: 'utf8'}).trim();
+    } catch {
+      return '?';
+    }
+  })();
+  console.log(`essl npm API vs spglsl ${JSON.parse(readFileSync(join(here, '..', 'node_modules', 'spglsl', 'package.json'))).version}, commit ${commit}, Node ${process.version}, ${(await import('node:os')).cpus()[0].model}\n`);
+  console.log(`${ROUNDS} rounds per corpus, the packages alternating; medians\n`);
+  console.log('| corpus | cases | essl agrees | spglsl agrees | essl µs/shader | spglsl µs/shader | spglsl / essl time | rounds: spglsl / essl |');
+  console.log('|---|---|---|---|---|---|---|---|');
+  for (const [name, cases] of Object.entries(SETS)) {
+    await warmUp(cases, essl);
+    const rounds = {essl: () => measure(cases, essl), spglsl: () => spglslRound(name)};
+    const runs = {essl: [], spglsl: []};
+    for (let r = 0; r < ROUNDS; r++) {
+      const order = r % 2 ? ['spglsl', 'essl'] : ['essl', 'spglsl'];
+      for (const who of order) runs[who].push(await rounds[who]());
+    }
+    const e = median(runs.essl.map(x => x.usPerShader));
+    const s = median(runs.spglsl.map(x => x.usPerShader));
+    const each = runs.essl.map((x, i) => (runs.spglsl[i].usPerShader / x.usPerShader).toFixed(1)).join(', ');
+    console.log(
+      `| ${name} | ${cases.length} | ${runs.essl[0].passed} | ${runs.spglsl[0].passed} | ${e.toFixed(0)} | ${s.toFixed(0)} | ${(s / e).toFixed(1)}× | ${each} |`,
+    );
   }
-  const e = median(runs.essl.map(x => x.usPerShader));
-  const s = median(runs.spglsl.map(x => x.usPerShader));
-  const each = runs.essl.map((x, i) => (runs.spglsl[i].usPerShader / x.usPerShader).toFixed(1)).join(', ');
-  console.log(
-    `| ${name} | ${cases.length} | ${runs.essl[0].passed} | ${runs.spglsl[0].passed} | ${e.toFixed(0)} | ${s.toFixed(0)} | ${(s / e).toFixed(1)}× | ${each} |`,
-  );
 }
