@@ -18,7 +18,7 @@ use std::sync::{Arc, Mutex};
 use std::time::{Duration, Instant};
 
 use essl_check::{CheckOptions, CheckedShader, Configs, Files};
-use napi::bindgen_prelude::{AsyncTask, External};
+use napi::bindgen_prelude::{AsyncTask, Either, External};
 use napi::{Env, Error, Status, Task};
 use napi_derive::napi;
 use serde_json::json;
@@ -121,12 +121,19 @@ pub struct Answer {
     pub rendering: External<report::Rendering>,
 }
 
+/// An answer as it crosses to JavaScript: the JSON text alone when no diagnostic has a text to
+/// render (most results), which spares an object and an external per call.
+pub type Answered = Either<String, Answer>;
+
 impl Answer {
-    fn new((json, rendering): (String, report::Rendering)) -> Answer {
-        Answer {
+    fn new((json, rendering): (String, report::Rendering)) -> Answered {
+        if rendering.is_empty() {
+            return Either::A(json);
+        }
+        Either::B(Answer {
             json,
             rendering: External::new(rendering),
-        }
+        })
     }
 }
 
@@ -141,7 +148,7 @@ pub fn render(rendering: &External<report::Rendering>, index: u32) -> napi::Resu
 /// file, and the programs linked where the pairs are known; JSON of `{shaders, programs,
 /// errors, warnings}`.
 #[napi(js_name = "checkJson")]
-pub fn check_json(source: String, options: String) -> napi::Result<Answer> {
+pub fn check_json(source: String, options: String) -> napi::Result<Answered> {
     check_text_json(source, options).map(Answer::new)
 }
 
@@ -160,7 +167,7 @@ pub struct CheckTask {
 
 impl Task for CheckTask {
     type Output = (String, report::Rendering);
-    type JsValue = Answer;
+    type JsValue = Answered;
 
     fn compute(&mut self) -> napi::Result<Self::Output> {
         check_text_json(
@@ -169,7 +176,7 @@ impl Task for CheckTask {
         )
     }
 
-    fn resolve(&mut self, _env: Env, output: Self::Output) -> napi::Result<Answer> {
+    fn resolve(&mut self, _env: Env, output: Self::Output) -> napi::Result<Answered> {
         Ok(Answer::new(output))
     }
 }
@@ -313,7 +320,7 @@ pub fn link_json(
     fragment: String,
     vertex_options: String,
     fragment_options: String,
-) -> napi::Result<Answer> {
+) -> napi::Result<Answered> {
     guarded("link", || {
         let given = (vertex.clone(), fragment.clone());
         let vs = lone_shader(vertex, &vertex_options, essl::Stage::Vertex)?;

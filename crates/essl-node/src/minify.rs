@@ -8,12 +8,12 @@ use napi::{Env, Error, Status, Task};
 use napi_derive::napi;
 use serde_json::{json, Map, Value};
 
-use crate::{guarded, options, report, type_error, Answer};
+use crate::{guarded, options, report, type_error, Answer, Answered};
 
 /// `minify(source, options)`: JSON of `{shaders, programs, errors, warnings, text, renamed}`,
 /// with the diagnostics' texts as `check` answers them.
 #[napi(js_name = "minifyJson")]
-pub fn minify_json(source: String, options: String, rename: bool) -> napi::Result<Answer> {
+pub fn minify_json(source: String, options: String, rename: bool) -> napi::Result<Answered> {
     minify_text_json(source, options, rename).map(Answer::new)
 }
 
@@ -36,7 +36,7 @@ pub struct MinifyTask {
 
 impl Task for MinifyTask {
     type Output = (String, report::Rendering);
-    type JsValue = Answer;
+    type JsValue = Answered;
 
     fn compute(&mut self) -> napi::Result<Self::Output> {
         minify_text_json(
@@ -46,7 +46,7 @@ impl Task for MinifyTask {
         )
     }
 
-    fn resolve(&mut self, _env: Env, output: Self::Output) -> napi::Result<Answer> {
+    fn resolve(&mut self, _env: Env, output: Self::Output) -> napi::Result<Answered> {
         Ok(Answer::new(output))
     }
 }

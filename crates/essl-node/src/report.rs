@@ -84,6 +84,11 @@ pub struct Fix<'a> {
 pub struct Rendering(Vec<(Option<Arc<SourceFile>>, Diagnostic)>);
 
 impl Rendering {
+    /// Whether no diagnostic was added.
+    pub fn is_empty(&self) -> bool {
+        self.0.is_empty()
+    }
+
     /// Adds a diagnostic; its index.
     fn push(&mut self, file: Option<&Arc<SourceFile>>, d: &Diagnostic) -> usize {
         self.0.push((file.cloned(), d.clone()));
