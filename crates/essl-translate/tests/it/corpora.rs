@@ -164,67 +164,128 @@ fn single_module(
 /// falls through, which WGSL cannot say, is lowered with the statements it falls into).
 const KNOWN: &[&str] = &[];
 
-#[test]
-fn every_accepted_program_translates_and_reads_back() {
-    let Some(programs) = programs() else {
-        return;
-    };
-    let (mut accepted, mut wgsl_ok, mut single_ok) = (0, 0, 0);
-    let mut single_failures = Vec::new();
-    let mut others = [0usize; 4];
-    let mut failures = Vec::new();
-    let mut unlowered = Vec::new();
-    let mut other_failures = Vec::new();
-    for (name, v, f) in &programs {
+/// What translating a share of the programs found.
+#[derive(Default)]
+struct Tally {
+    accepted: usize,
+    wgsl_ok: usize,
+    single_ok: usize,
+    single_failures: Vec<String>,
+    others: [usize; 4],
+    failures: Vec<String>,
+    unlowered: Vec<String>,
+    other_failures: Vec<String>,
+}
+
+impl Tally {
+    fn add(&mut self, o: Tally) {
+        self.accepted += o.accepted;
+        self.wgsl_ok += o.wgsl_ok;
+        self.single_ok += o.single_ok;
+        self.single_failures.extend(o.single_failures);
+        for (a, b) in self.others.iter_mut().zip(o.others) {
+            *a += b;
+        }
+        self.failures.extend(o.failures);
+        self.unlowered.extend(o.unlowered);
+        self.other_failures.extend(o.other_failures);
+    }
+
+    /// Translates one program to every target, if essl accepts it.
+    fn program(&mut self, name: &str, v: &str, f: &str) {
         let vs = compile(&format!("{name}.vert"), v, Stage::Vertex);
         let fs = compile(&format!("{name}.frag"), f, Stage::Fragment);
         if !(vs.ok() && fs.ok() && essl::link::link(&vs, &fs).ok) {
-            continue;
+            return;
         }
-        accepted += 1;
+        self.accepted += 1;
         match essl_translate::translate_program(&vs, &fs, &Options::default()) {
             // A construct essl does not lower yet (docs/conformance.md's known gaps): essl-gl
             // cannot run it either.
             Err(essl_translate::TranslateError::Lower(e)) => {
-                unlowered.push(format!("{name}: {e}"));
-                continue;
+                self.unlowered.push(format!("{name}: {e}"));
+                return;
             }
             Ok(t) => {
                 let mut ok = true;
                 for (stage, code) in [(Stage::Vertex, &t.vertex), (Stage::Fragment, &t.fragment)] {
                     let text = code.as_text().expect("WGSL is text");
-                    if text.contains("Written by naga's WGSL writer") {
-                        failures.push(format!("{name} ({}): naga's writer", stage.as_str()));
-                        ok = false;
-                    } else if let Err(e) = read_wgsl(text, stage) {
-                        failures.push(format!("{name} ({}): {e}", stage.as_str()));
-                        ok = false;
-                    } else if let Err(e) = check_offsets(&t.bindings, text) {
-                        failures.push(format!("{name} ({}): {e}", stage.as_str()));
+                    let wrong = if text.contains("Written by naga's WGSL writer") {
+                        Err("naga's writer".to_string())
+                    } else {
+                        read_wgsl(text, stage)
+                            .map(|_| ())
+                            .map_err(|e| e.to_string())
+                            .and_then(|()| check_offsets(&t.bindings, text))
+                    };
+                    if let Err(e) = wrong {
+                        self.failures
+                            .push(format!("{name} ({}): {e}", stage.as_str()));
                         ok = false;
                     }
                 }
-                wgsl_ok += ok as usize;
-                single_ok += single_module(&vs, &fs, &t.bindings)
-                    .map_err(|e| single_failures.push(format!("{name}: {e}")))
+                self.wgsl_ok += ok as usize;
+                self.single_ok += single_module(&vs, &fs, &t.bindings)
+                    .map_err(|e| self.single_failures.push(format!("{name}: {e}")))
                     .is_ok() as usize;
             }
-            Err(e) => failures.push(format!("{name}: {e}")),
+            Err(e) => self.failures.push(format!("{name}: {e}")),
         }
         for (k, target) in [Target::SpirV, Target::Msl, Target::Hlsl, Target::Glsl]
             .into_iter()
             .enumerate()
         {
-            if let Ok(t) = essl_translate::translate_program(&vs, &fs, &Options::new(target)) {
-                let nonempty = |c: &Code| !c.to_bytes().is_empty();
-                others[k] += (nonempty(&t.vertex) && nonempty(&t.fragment)) as usize;
-            } else if let Err(e) =
-                essl_translate::translate_program(&vs, &fs, &Options::new(target))
-            {
-                other_failures.push(format!("{name} ({}): {e}", target.name()));
+            match essl_translate::translate_program(&vs, &fs, &Options::new(target)) {
+                Ok(t) => {
+                    let nonempty = |c: &Code| !c.to_bytes().is_empty();
+                    self.others[k] += (nonempty(&t.vertex) && nonempty(&t.fragment)) as usize;
+                }
+                Err(e) => self
+                    .other_failures
+                    .push(format!("{name} ({}): {e}", target.name())),
             }
         }
     }
+}
+
+#[test]
+fn every_accepted_program_translates_and_reads_back() {
+    let Some(programs) = programs() else {
+        return;
+    };
+    // The programs in as many shares as the machine has cores (this test is most of the
+    // crate's test time): each share tallied on a thread of its own, in order.
+    let threads = std::thread::available_parallelism().map_or(1, |n| n.get());
+    let share = programs.len().div_ceil(threads).max(1);
+    let tally = std::thread::scope(|scope| {
+        let running: Vec<_> = programs
+            .chunks(share)
+            .map(|chunk| {
+                scope.spawn(move || {
+                    let mut t = Tally::default();
+                    for (name, v, f) in chunk {
+                        t.program(name, v, f);
+                    }
+                    t
+                })
+            })
+            .collect();
+        let mut all = Tally::default();
+        for r in running {
+            all.add(r.join().expect("a share of the programs"));
+        }
+        all
+    });
+    let Tally {
+        accepted,
+        wgsl_ok,
+        single_ok,
+        single_failures,
+        others,
+        failures,
+        unlowered,
+        other_failures,
+    } = tally;
     let lowered = accepted - unlowered.len();
     println!(
         "programs: {accepted} accepted, {lowered} lowered, {wgsl_ok} WGSL read back; spirv {}, \
