@@ -154,3 +154,42 @@ for (const [name, build] of Object.entries(BUILDS)) {
     });
   }
 }
+
+// A `?raw` import (Vite's own loader makes its module; the plugin checks the file it names
+// while the build goes on, and fails it at the end): an error fails the build at the file,
+// line and column; the file as written builds, its text in the bundle.
+const GLOW = '#version 300 es\nprecision mediump float;\nuniform vec4 u_glow;\nout vec4 outColor;\nvoid main() {\n  outColor = u_glow * 0.5;\n}\n';
+
+function rawProject(glow) {
+  const dir = project(null);
+  writeFileSync(join(dir, 'src/shaders/glow.frag'), glow);
+  const main = join(dir, 'src/main.js');
+  const text = readFileSync(main, 'utf8');
+  assert.ok(text.includes('outline};'), 'main.js lists the shaders');
+  writeFileSync(main, `import glow from './shaders/glow.frag?raw';\n${text.replace('outline};', 'outline, glow};')}`);
+  return dir;
+}
+
+test('vite: a ?raw import is checked: the file as written builds', {skip}, async () => {
+  const dir = rawProject(GLOW);
+  try {
+    await viteBuild(dir);
+    assert.match(output(dir), /outColor = u_glow \* 0\.5;/);
+  } finally {
+    rmSync(dir, {recursive: true, force: true});
+  }
+});
+
+test('vite: an error in a ?raw import fails the build at glow.frag:6:14', {skip}, async () => {
+  const dir = rawProject(GLOW.replace('u_glow * 0.5', 'u_glw * 0.5'));
+  try {
+    await assert.rejects(viteBuild(dir), e => {
+      const message = String(e.message);
+      assert.ok(message.includes('glow.frag:6:14'), message);
+      assert.match(message, /error\[undeclared-identifier\]/);
+      return true;
+    });
+  } finally {
+    rmSync(dir, {recursive: true, force: true});
+  }
+});
