@@ -28,8 +28,8 @@ function matches(patterns, f) {
 }
 
 /**
- * Checks a module: a shader file as essl reads it from disk (its `#include`s followed), a
- * script from `code`. Returns the result, its errors and warnings (warnings count as errors
+ * Checks a module: a shader file as its author wrote it (`shaderText`; its `#include`s
+ * followed from disk), a script from `code`. Returns the result, its errors and warnings (warnings count as errors
  * under `failOnWarnings`), and for a shader file the text WebGL is given (includes in place)
  * and the files it read.
  */

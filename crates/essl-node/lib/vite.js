@@ -56,7 +56,9 @@ export default function essl(options = {}) {
     },
     async transform(code, id) {
       if (!wanted(id, options)) return null;
-      const replaces = load && !id.includes('?') && SHADER.test(id);
+      // Under `minify`, a `?raw` import's code is replaced too (its text minified).
+      const raw = options.minify === true && /\?raw$/.test(id) && SHADER.test(file(id));
+      const replaces = (load && !id.includes('?') && SHADER.test(id)) || raw;
       if (!replaces && !serving && !this.meta?.watchMode) {
         pending.push(checkModule(id, code, options).then(checked => ({checked}), thrown => ({thrown})));
         return null;
@@ -72,8 +74,7 @@ export default function essl(options = {}) {
         this.error(buildError(checked.errors));
       }
       // The module's text: a bare import's, or under `minify` a `?raw` import's too.
-      const raw = options.minify === true && /\?raw$/.test(id);
-      if (((load && !id.includes('?')) || raw) && SHADER.test(file(id)) && checked.text !== null) {
+      if (replaces && checked.text !== null) {
         return {code: `export default ${JSON.stringify(checked.text)};`, map: null};
       }
       return null;

@@ -193,3 +193,18 @@ test('vite: an error in a ?raw import fails the build at glow.frag:6:14', {skip}
     rmSync(dir, {recursive: true, force: true});
   }
 });
+
+test('vite: minify: true minifies a ?raw import in a one-shot build', {skip}, async () => {
+  const dir = rawProject(GLOW);
+  try {
+    await viteBuild(dir, {minify: true});
+    const minified = minify(GLOW, {filename: join(dir, 'src/shaders/glow.frag')});
+    assert.equal(minified.ok, true);
+    assert.match(minified.text, /uniform vec4 u_glow;out vec4 outColor;/);
+    const code = output(dir);
+    assert.ok(code.includes(JSON.stringify(minified.text).slice(1, -1)), code);
+    assert.doesNotMatch(code, /outColor = u_glow \* 0\.5;/);
+  } finally {
+    rmSync(dir, {recursive: true, force: true});
+  }
+});
