@@ -14,7 +14,7 @@
 // of calls (`RuntimeError: null function or function signature mismatch`, then every call
 // throws), and a fresh instance per round keeps its answers those of a working compiler.
 //
-// Prints a Markdown table for docs/performance.md and docs/conformance.md.
+// Prints a Markdown table for docs/performance.md.
 import {readFileSync, existsSync} from 'node:fs';
 import {join, dirname} from 'node:path';
 import {fileURLToPath} from 'node:url';

@@ -1,9 +1,10 @@
 // What the essl plugin adds to a `vite build`: a generated project importing 200 shaders
 // (`?raw`, the webgl2fundamentals lessons' shaders from ../shared/corpora or $ESSL_CORPORA),
-// built with and without the plugin, alternating, ROUNDS times each (default 7); prints the
-// median of each and their ratio, for the plugin's defaults (lints on) and with `lints: false`.
-// Two projects: the shaders alone, and an app that also bundles three.js (the copy
-// scripts/fetch-js-libs.sh installs in tests/js) and makes a ShaderMaterial of each shader.
+// built with and without the plugin, after one untimed build of each, alternating, ROUNDS times
+// each (default 7); prints the median of each and the change in per cent, for the plugin's
+// defaults (lints on) and with `lints: false`. Two projects: the shaders alone, and an app that
+// also bundles three.js (the copy scripts/fetch-js-libs.sh installs in tests/js) and makes a
+// RawShaderMaterial of each shader.
 //
 //   node bench/vite-overhead.mjs        (from crates/essl-node, after `npm run build`)
 import {mkdtempSync, mkdirSync, readFileSync, rmSync, writeFileSync, existsSync, symlinkSync} from 'node:fs';
