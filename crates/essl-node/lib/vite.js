@@ -56,8 +56,9 @@ export default function essl(options = {}) {
     },
     async transform(code, id) {
       if (!wanted(id, options)) return null;
-      // Under `minify`, a `?raw` import's code is replaced too (its text minified).
-      const raw = options.minify === true && /\?raw$/.test(id) && SHADER.test(file(id));
+      // Under `minify` (which a `preset` turns off), a `?raw` import's code is replaced too:
+      // its text minified.
+      const raw = options.minify === true && !options.preset && /\?raw$/.test(id) && SHADER.test(file(id));
       const replaces = (load && !id.includes('?') && SHADER.test(id)) || raw;
       if (!replaces && !serving && !this.meta?.watchMode) {
         pending.push(checkModule(id, code, options).then(checked => ({checked}), thrown => ({thrown})));
