@@ -5,13 +5,20 @@ import {checkAsync, format, minifyAsync} from '../index.js';
 
 export const SHADER = /\.(glsl|vert|frag|vs|fs|vsh|fsh)$/;
 const SCRIPT = /\.(m?[jt]sx?|c[jt]s)$/;
-// A script is read only when it may hold a shader: a `glsl` tag or comment, or `#version`.
-const MAY_HOLD = /glsl|#version/;
+// A script is read only when it may hold a shader: a `glsl` tag or comment (in any case), or
+// `#version`; under a preset, every script (three.js's ShaderMaterial shaders carry neither).
+const MAY_HOLD = /glsl|#version/i;
 const CHECK_KEYS = ['target', 'defines', 'includeDirs', 'preset', 'config', 'rules', 'lints', 'denyWarnings'];
 
-/** The file a module id names: without `?query` or Vite's `\0` prefix. */
+/** The file a module id names: without `?query` or Vite's `\0` prefix (a `#` is the path's). */
 export function file(id) {
-  return id.replace(/^\0/, '').replace(/[?#].*$/, '');
+  return id.replace(/^\0/, '').replace(/\?.*$/, '');
+}
+
+/** A module id's query (`raw` for `light.frag?raw`), `''` without one. */
+function query(id) {
+  const at = id.indexOf('?');
+  return at < 0 ? '' : id.slice(at + 1);
 }
 
 /** Whether a module is one essl checks, under the plugin's options. */
@@ -24,20 +31,25 @@ export function wanted(id, options = {}) {
 }
 
 function matches(patterns, f) {
-  return [patterns].flat().some(p => (p instanceof RegExp ? p.test(f) : f.includes(p)));
+  return [patterns].flat().some(p => {
+    if (!(p instanceof RegExp)) return f.includes(p);
+    p.lastIndex = 0; // a `g` or `y` RegExp keeps its place between tests
+    return p.test(f);
+  });
 }
 
 /**
- * Checks a module: a shader file as its author wrote it (`shaderText`; its `#include`s
- * followed from disk), a script from `code`. Returns the result, its errors and warnings (warnings count as errors
- * under `failOnWarnings`), and for a shader file the text WebGL is given (includes in place)
- * and the files it read.
+ * Checks a module: a shader file as its author wrote it (`shaderText`, or `code` itself when
+ * `given`: a webpack loader's source, as the loaders before it left it; its `#include`s followed
+ * from disk), a script from `code`. Returns the result, its errors and warnings (warnings count
+ * as errors under `failOnWarnings`), and for a shader file the text WebGL is given (includes in
+ * place) and the files it read.
  */
-export async function checkModule(id, code, options = {}) {
+export async function checkModule(id, code, options = {}, given = false) {
   const f = file(id);
   const isShader = SHADER.test(f);
-  if (!isShader && !MAY_HOLD.test(code)) return null;
-  const source = isShader ? shaderText(f, code) : code;
+  if (!isShader && !options.preset && !MAY_HOLD.test(code)) return null;
+  const source = !isShader || given ? code : shaderText(f, code, query(id));
   const o = {filename: f};
   for (const k of CHECK_KEYS) if (options[k] !== undefined) o[k] = options[k];
   // `minify: true`: a shader file's text is minified (a script's shaders are left as they are,
@@ -68,7 +80,9 @@ export async function checkModule(id, code, options = {}) {
  * from the file. The read is synchronous: an asynchronous one costs four trips through Node's
  * thread pool, which the bundler's own reads wait behind (200 shaders: 20 ms on a build of 80).
  */
-function shaderText(f, code) {
+function shaderText(f, code, q) {
+  // Another query's module (`?url`, `?inline`, `?worker`) is not the text: the file is.
+  if (q !== '' && q !== 'raw') return readFileSync(f, 'utf8');
   const prefix = 'export default "';
   const body = code.trimEnd().replace(/;$/, '');
   if (body.startsWith(prefix) && body.endsWith('"')) {

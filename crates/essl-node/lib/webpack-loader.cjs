@@ -12,7 +12,8 @@ module.exports = function esslLoader(source) {
   import('./core.js')
     .then(async ({checkModule, buildError, SHADER, wanted}) => {
       if (!wanted(id, options)) return callback(null, source);
-      const checked = await checkModule(id, source, options);
+      // `source` is the module's text as the loaders before this one left it.
+      const checked = await checkModule(id, source, options, true);
       if (!checked) return callback(null, source);
       for (const f of checked.files) this.addDependency(f);
       for (const w of checked.warnings) this.emitWarning(new Error(w.rendered));

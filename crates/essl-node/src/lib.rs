@@ -101,6 +101,11 @@ fn configs(opts: &options::Options) -> Arc<Configs> {
 fn check_one(text: String, opts: &options::Options) -> napi::Result<essl_check::CheckedUnit> {
     too_big(&text)?;
     let configs = configs(opts);
+    // An `essl.toml` that cannot be read (a `config` that names no file, a malformed one found
+    // upward) is an error, as it is for `essl lint`, not a check of nothing.
+    if let Err(e) = configs.for_file(&opts.filename) {
+        return Err(Error::new(Status::GenericFailure, e.to_string()));
+    }
     let check = CheckOptions {
         link: opts.link,
         lints: opts.lints,

@@ -211,3 +211,9 @@ test('preset three: a ShaderMaterial checked with three.js prelude', {skip: !hav
   assert.deepEqual(r.diagnostics.map(d => [d.code, d.range.start.line, d.range.start.column]), [['undeclared-identifier', 7, 46]]);
   assert.ok(check(js, {filename}).errors > 1, 'without the preset, the prelude names are undeclared');
 });
+
+test('a config that names no file is an error, not a check of nothing', () => {
+  const fs = '#version 300 es\nprecision mediump float;\nout vec4 o;\nvoid main() { o = vec4(1.0); }\n';
+  const config = join(tmpdir(), 'essl-no-such-config', 'essl.toml');
+  assert.throws(() => check(fs, {stage: 'fragment', config}), {name: 'Error', message: /^essl\.check: .*essl\.toml: no such file or directory/});
+});

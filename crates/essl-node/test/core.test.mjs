@@ -1,0 +1,55 @@
+// What the plugins and the loader share (lib/core.js): which modules they check, and which text
+// they check for a module.
+import {test} from 'node:test';
+import assert from 'node:assert/strict';
+import {existsSync, mkdtempSync, rmSync, writeFileSync} from 'node:fs';
+import {tmpdir} from 'node:os';
+import {join} from 'node:path';
+import {checkModule, file, wanted} from '../lib/core.js';
+
+const FRAG = '#version 300 es\nprecision mediump float;\nuniform vec4 u_c;\nout vec4 o;\nvoid main() { o = u_c; }\n';
+
+test('a # belongs to the path; a query does not', () => {
+  assert.equal(file('/p/C#/light.frag?raw'), '/p/C#/light.frag');
+  assert.equal(wanted('/p/C#/light.frag'), true);
+  assert.equal(wanted('\0virtual.frag'), false);
+});
+
+test('a RegExp with the g flag includes every file it matches, not every other one', () => {
+  const include = /\.frag$/g;
+  assert.deepEqual(['/a.frag', '/b.frag', '/c.frag'].map(id => wanted(id, {include})), [true, true, true]);
+});
+
+test("a ?url module's code is not the shader: the file is checked", async () => {
+  const dir = mkdtempSync(join(tmpdir(), 'essl-core-'));
+  try {
+    const f = join(dir, 'light.frag');
+    writeFileSync(f, FRAG);
+    const url = await checkModule(`${f}?url`, 'export default "data:text/plain;base64,AAAA"');
+    assert.deepEqual(url.errors, []);
+    // A ?raw module's code is the text as a JSON string: that text is checked.
+    const raw = await checkModule(`${f}?raw`, `export default ${JSON.stringify(FRAG.replace('u_c;\nout', 'u_c;\nuniform float u_broken\nout'))}`);
+    assert.equal(raw.errors.length, 1);
+    // A webpack loader's source (the loaders before it may have changed the file's text).
+    const given = await checkModule(f, FRAG.replace('o = u_c;', 'o = u_d;'), {}, true);
+    assert.deepEqual(given.errors.map(e => e.code), ['undeclared-identifier']);
+  } finally {
+    rmSync(dir, {recursive: true, force: true});
+  }
+});
+
+const threeDir = join(import.meta.dirname, '..', '..', '..', 'tests', 'js');
+const haveThree = existsSync(join(threeDir, 'node_modules', 'three', 'package.json'));
+
+test('preset three: a ShaderMaterial without a glsl tag or #version is checked', {skip: !haveThree && 'three is not installed (scripts/fetch-js-libs.sh)'}, async () => {
+  const js = [
+    "import { ShaderMaterial } from 'three';",
+    'export const m = new ShaderMaterial({',
+    '  vertexShader: `void main() { gl_Position = projectionMatrix * modelViewMatrix * vec4(position, 1.0); }`,',
+    '  fragmentShader: `uniform vec3 tint; void main() { gl_FragColor = vec4(tint * colour, 1.0); }`,',
+    '});',
+  ].join('\n');
+  const checked = await checkModule(join(threeDir, 'src', 'material.js'), js, {preset: 'three'});
+  assert.ok(checked, 'the script is checked');
+  assert.deepEqual(checked.errors.map(e => [e.code, e.range.start.line]), [['undeclared-identifier', 4]]);
+});
