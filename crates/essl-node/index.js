@@ -28,7 +28,30 @@ function opts(fn, value) {
   if (value.stage !== undefined && !STAGES.has(value.stage)) {
     throw new TypeError(`essl.${fn}: options.stage must be 'vertex' or 'fragment', not ${JSON.stringify(value.stage)}`);
   }
+  // A define's value as JSON carries it: a string, a finite number or a boolean.
+  if (value.defines !== null && typeof value.defines === 'object' && !Array.isArray(value.defines)) {
+    for (const [name, v] of Object.entries(value.defines)) {
+      const ok = typeof v === 'string' || typeof v === 'boolean' || (typeof v === 'number' && Number.isFinite(v));
+      if (!ok) {
+        throw new TypeError(
+          `essl.${fn}: options.defines.${name} must be a string, a finite number or a boolean, not ${typeof v === 'number' ? String(v) : kind(v)}`,
+        );
+      }
+    }
+  }
   return value;
+}
+
+// `link` and `translate` take two texts: a `filename` or `stage` would name both.
+function pairOptions(fn, options) {
+  const o = opts(fn, options);
+  for (const key of ['filename', 'stage']) {
+    if (o[key] !== undefined) {
+      const instead = fn === 'link' ? 'use options.vertexFilename and options.fragmentFilename' : 'the first text is the vertex shader, the second the fragment shader';
+      throw new TypeError(`essl.${fn}: options.${key} would name both shaders; ${instead}`);
+    }
+  }
+  return o;
 }
 
 // A diagnostic's `rendered` (its rustc-style text) is written when it is first read: the
@@ -150,7 +173,7 @@ export async function minifyAsync(source, options) {
 export function link(vertex, fragment, options) {
   text('link', 'vertex', vertex);
   text('link', 'fragment', fragment);
-  const o = opts('link', options);
+  const o = pairOptions('link', options);
   const {vertexFilename, fragmentFilename, ...rest} = o;
   const v = {...rest, ...(vertexFilename ? {filename: vertexFilename} : {})};
   const f = {...rest, ...(fragmentFilename ? {filename: fragmentFilename} : {})};
@@ -166,7 +189,7 @@ export function link(vertex, fragment, options) {
 export function translate(vertex, fragment, options) {
   text('translate', 'vertex', vertex);
   text('translate', 'fragment', fragment);
-  const {to = 'wgsl', ...rest} = opts('translate', options);
+  const {to = 'wgsl', ...rest} = pairOptions('translate', options);
   if (typeof to !== 'string') throw new TypeError(`essl.translate: options.to must be a string, not ${kind(to)}`);
   const r = call('translate', () => native.translateJson(vertex, fragment, to, JSON.stringify(rest)));
   if (to === 'spirv') {

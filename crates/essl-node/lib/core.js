@@ -10,6 +10,15 @@ const SCRIPT = /\.(m?[jt]sx?|c[jt]s)$/;
 const MAY_HOLD = /glsl|#version/i;
 const CHECK_KEYS = ['target', 'defines', 'includeDirs', 'preset', 'config', 'rules', 'lints', 'denyWarnings'];
 
+const PLUGIN_KEYS = new Set([...CHECK_KEYS, 'include', 'exclude', 'failOnWarnings', 'minify', 'load']);
+
+/** A TypeError for a plugin or loader option essl does not know (a typo would pass silently). */
+export function unknownOption(fn, options) {
+  const unknown = Object.keys(options).filter(k => !PLUGIN_KEYS.has(k));
+  if (!unknown.length) return null;
+  return new TypeError(`${fn}: unknown option${unknown.length > 1 ? 's' : ''} ${unknown.join(', ')} (known: ${[...PLUGIN_KEYS].join(', ')})`);
+}
+
 /** The file a module id names: without `?query` or Vite's `\0` prefix (a `#` is the path's). */
 export function file(id) {
   return id.replace(/^\0/, '').replace(/\?.*$/, '');

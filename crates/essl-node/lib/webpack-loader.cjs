@@ -10,7 +10,9 @@ module.exports = function esslLoader(source) {
     return callback(new TypeError('essl/webpack: options.minify must be a boolean'));
   }
   import('./core.js')
-    .then(async ({checkModule, buildError, SHADER, wanted}) => {
+    .then(async ({checkModule, buildError, SHADER, unknownOption, wanted}) => {
+      const unknown = unknownOption('essl/webpack', options);
+      if (unknown) return callback(unknown);
       if (!wanted(id, options)) return callback(null, source);
       // `source` is the module's text as the loaders before this one left it.
       const checked = await checkModule(id, source, options, true);

@@ -217,3 +217,15 @@ test('a config that names no file is an error, not a check of nothing', () => {
   const config = join(tmpdir(), 'essl-no-such-config', 'essl.toml');
   assert.throws(() => check(fs, {stage: 'fragment', config}), {name: 'Error', message: /^essl\.check: .*essl\.toml: no such file or directory/});
 });
+
+test('link and translate refuse one filename or stage for two shaders; defines JSON cannot carry are TypeErrors', () => {
+  const vs = '#version 300 es\nin vec4 p;\nvoid main() { gl_Position = p; }\n';
+  const fs = '#version 300 es\nprecision mediump float;\nout vec4 o;\nvoid main() { o = vec4(1.0); }\n';
+  assert.throws(() => link(vs, fs, {filename: 'a.vert'}), {name: 'TypeError', message: /^essl\.link: options\.filename would name both shaders; use options\.vertexFilename/});
+  assert.throws(() => translate(vs, fs, {stage: 'vertex'}), {name: 'TypeError', message: /^essl\.translate: options\.stage would name both shaders/});
+  assert.equal(link(vs, fs, {vertexFilename: 'a.vert', fragmentFilename: 'a.frag'}).ok, true);
+  for (const bad of [1n, NaN, Infinity, null, {}, [1]]) {
+    assert.throws(() => check(fs, {stage: 'fragment', defines: {A: bad}}), {name: 'TypeError', message: /^essl\.check: options\.defines\.A must be a string, a finite number or a boolean/});
+  }
+  assert.equal(check(fs, {stage: 'fragment', defines: {A: '1', B: 2, C: true}}).ok, true);
+});

@@ -53,3 +53,15 @@ test('preset three: a ShaderMaterial without a glsl tag or #version is checked',
   assert.ok(checked, 'the script is checked');
   assert.deepEqual(checked.errors.map(e => [e.code, e.range.start.line]), [['undeclared-identifier', 4]]);
 });
+
+test('a plugin option essl does not know is a TypeError, in the plugin and the loader', async () => {
+  const {default: essl} = await import('../lib/vite.js');
+  assert.throws(() => essl({failOnWarning: true}), {name: 'TypeError', message: /^essl\(\): unknown option failOnWarning \(known: .*failOnWarnings/});
+  assert.equal(typeof essl({failOnWarnings: true, minify: true, include: /x/, exclude: 'y', load: false, lints: false}), 'object');
+  const {createRequire} = await import('node:module');
+  const loader = createRequire(import.meta.url)('../lib/webpack-loader.cjs');
+  const err = await new Promise(resolve => {
+    loader.call({async: () => resolve, getOptions: () => ({minfy: true}), resourcePath: '/x/a.frag', resourceQuery: ''}, FRAG);
+  });
+  assert.ok(err instanceof TypeError && /^essl\/webpack: unknown option minfy/.test(err.message), String(err));
+});
