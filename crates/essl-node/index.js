@@ -92,7 +92,11 @@ function call(fn, f) {
     return answered(f());
   } catch (e) {
     if (e instanceof SyntaxError) throw new Error(`essl.${fn}: the addon answered what is not JSON`);
-    const message = `essl.${fn}: ${String(e.message).replace(/^essl: /, '')}`;
+    // The pipeline's messages name the command line's flags; here they are options.
+    const said = String(e.message)
+      .replace(/^essl: /, '')
+      .replace('pass `--stage vertex` or `--stage fragment`', "pass options.stage ('vertex' or 'fragment')");
+    const message = `essl.${fn}: ${said}`;
     throw e.code === 'InvalidArg' ? new TypeError(message) : new Error(message);
   }
 }
@@ -205,7 +209,9 @@ export function format(diagnostics) {
     : diagnostics && Array.isArray(diagnostics.diagnostics)
       ? diagnostics.diagnostics
       : null;
-  if (!list) throw new TypeError(`essl.format: expected diagnostics or a result, not ${kind(diagnostics)}`);
+  if (!list || list.some(d => d === null || typeof d !== 'object' || typeof d.rendered !== 'string')) {
+    throw new TypeError(`essl.format: expected diagnostics or a result, not ${kind(diagnostics)}`);
+  }
   return list.map(d => d.rendered).join('\n');
 }
 

@@ -229,3 +229,11 @@ test('link and translate refuse one filename or stage for two shaders; defines J
   }
   assert.equal(check(fs, {stage: 'fragment', defines: {A: '1', B: 2, C: true}}).ok, true);
 });
+
+test('messages name options, not the command line; format takes only diagnostics', () => {
+  assert.throws(() => check('void main() {}'), {name: 'TypeError', message: /pass options\.stage \('vertex' or 'fragment'\)$/});
+  assert.throws(() => format([1, 2]), {name: 'TypeError', message: /^essl\.format: expected diagnostics or a result/});
+  const r = check('#version 300 es\nvoid main() { x; }\n', {stage: 'fragment'});
+  assert.match(format(r), /error\[undeclared-identifier\]/);
+  assert.match(format(r.diagnostics), /error\[undeclared-identifier\]/);
+});
