@@ -53,7 +53,7 @@ export default function essl(options = {}) {
     },
     load(id) {
       // `?raw` and other queries are Vite's; a bare shader import is this plugin's.
-      if (!load || id.includes('?') || id.startsWith('\0') || !SHADER.test(id)) return null;
+      if (!load || id.includes('?') || id.startsWith('\0') || !SHADER.test(id) || !wanted(id, options)) return null;
       return `export default ${JSON.stringify(readFileSync(id, 'utf8'))};`;
     },
     async transform(code, id) {

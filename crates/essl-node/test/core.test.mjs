@@ -65,3 +65,17 @@ test('a plugin option essl does not know is a TypeError, in the plugin and the l
   });
   assert.ok(err instanceof TypeError && /^essl\/webpack: unknown option minfy/.test(err.message), String(err));
 });
+
+test("the plugin's load leaves excluded shader files to other plugins", async () => {
+  const {default: essl} = await import('../lib/vite.js');
+  const dir = mkdtempSync(join(tmpdir(), 'essl-core-'));
+  try {
+    const f = join(dir, 'light.frag');
+    writeFileSync(f, FRAG);
+    assert.equal(essl().load(f), `export default ${JSON.stringify(FRAG)};`);
+    assert.equal(essl({exclude: 'light'}).load(f), null);
+    assert.equal(essl({include: /\.vert$/}).load(f), null);
+  } finally {
+    rmSync(dir, {recursive: true, force: true});
+  }
+});
