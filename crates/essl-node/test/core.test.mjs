@@ -79,3 +79,27 @@ test("the plugin's load leaves excluded shader files to other plugins", async ()
     rmSync(dir, {recursive: true, force: true});
   }
 });
+
+test('the webpack loader passes the source map and metadata of the loaders before it on', async () => {
+  const {createRequire} = await import('node:module');
+  const loader = createRequire(import.meta.url)('../lib/webpack-loader.cjs');
+  const run = (resourcePath, source) =>
+    new Promise(resolve => {
+      const map = {version: 3, mappings: ''};
+      const meta = {from: 'babel'};
+      const ctx = {async: () => (...args) => resolve({args, map, meta}), getOptions: () => ({}), resourcePath, resourceQuery: '', addDependency() {}, emitWarning() {}};
+      loader.call(ctx, source, map, meta);
+    });
+  const script = await run('/x/a.js', 'export const n = 1;\n');
+  assert.equal(script.args[0], null);
+  assert.equal(script.args[2], script.map);
+  assert.equal(script.args[3], script.meta);
+  const dir = mkdtempSync(join(tmpdir(), 'essl-core-'));
+  try {
+    const shader = await run(join(dir, 'a.frag'), FRAG);
+    assert.deepEqual(shader.args.slice(0, 2), [null, FRAG]);
+    assert.equal(shader.args[2], shader.map);
+  } finally {
+    rmSync(dir, {recursive: true, force: true});
+  }
+});
