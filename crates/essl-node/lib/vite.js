@@ -45,10 +45,16 @@ export default function essl(options = {}) {
       if (failing) this.error(buildError(failing.checked.errors));
     },
     configureServer(server) {
-      server.watcher.on('change', changed => {
-        if (!failed.has(changed)) return;
+      const reload = () => {
         failed.clear();
         server.ws.send({type: 'full-reload'});
+      };
+      server.watcher.on('change', changed => {
+        if (failed.has(changed)) reload();
+      });
+      // A shader file created while the page shows an error may be the `#include` it missed.
+      server.watcher.on('add', added => {
+        if (failed.size && SHADER.test(added)) reload();
       });
     },
     load(id) {

@@ -2,7 +2,7 @@
 // they check for a module.
 import {test} from 'node:test';
 import assert from 'node:assert/strict';
-import {existsSync, mkdtempSync, rmSync, writeFileSync} from 'node:fs';
+import {existsSync, mkdtempSync, readFileSync, rmSync, writeFileSync} from 'node:fs';
 import {tmpdir} from 'node:os';
 import {join} from 'node:path';
 import {checkModule, file, wanted} from '../lib/core.js';
@@ -99,6 +99,30 @@ test('the webpack loader passes the source map and metadata of the loaders befor
     const shader = await run(join(dir, 'a.frag'), FRAG);
     assert.deepEqual(shader.args.slice(0, 2), [null, FRAG]);
     assert.equal(shader.args[2], shader.map);
+  } finally {
+    rmSync(dir, {recursive: true, force: true});
+  }
+});
+
+test('vite dev: creating the #include a failing shader missed reloads the page', async () => {
+  const {default: essl} = await import('../lib/vite.js');
+  const {EventEmitter} = await import('node:events');
+  const dir = mkdtempSync(join(tmpdir(), 'essl-core-'));
+  try {
+    const f = join(dir, 'light.frag');
+    writeFileSync(f, FRAG.replace('void main', '#include "common.glsl"\nvoid main'));
+    const plugin = essl();
+    const watcher = new EventEmitter();
+    const sent = [];
+    plugin.configResolved({command: 'serve'});
+    plugin.configureServer({watcher, ws: {send: m => sent.push(m)}});
+    const ctx = {addWatchFile() {}, warn() {}, error(e) { throw e; }, meta: {}};
+    await assert.rejects(plugin.transform.call(ctx, `export default ${JSON.stringify(readFileSync(f, 'utf8'))};`, f));
+    watcher.emit('add', join(dir, 'other.js'));
+    assert.deepEqual(sent, []);
+    writeFileSync(join(dir, 'common.glsl'), 'float half(float x) { return x * 0.5; }\n');
+    watcher.emit('add', join(dir, 'common.glsl'));
+    assert.deepEqual(sent, [{type: 'full-reload'}]);
   } finally {
     rmSync(dir, {recursive: true, force: true});
   }
