@@ -142,6 +142,10 @@ pub enum UsageError {
     /// Standard input could not be read.
     #[error("cannot read standard input: {0}")]
     Stdin(String),
+    /// The `essl.toml` that applies to the text cannot be read (a `--config` that names no
+    /// file, a malformed one found upward).
+    #[error("{0}")]
+    Config(Arc<crate::ConfigError>),
 }
 
 /// How to find shaders beyond essl.toml: the caller's exclude patterns, and the name standard

@@ -203,6 +203,8 @@ pub fn check_text(
     files: &Files,
     options: CheckOptions,
 ) -> Result<(CheckedUnit, Vec<Skipped>), UsageError> {
+    // Checked without its settings, the text would be checked as nothing.
+    configs.for_file(path).map_err(UsageError::Config)?;
     let found = find_text(path, text, configs)?;
     let prepared = crate::preset::prepare_alone(&found, configs);
     let cx = Context {

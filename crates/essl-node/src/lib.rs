@@ -101,18 +101,18 @@ fn configs(opts: &options::Options) -> Arc<Configs> {
 fn check_one(text: String, opts: &options::Options) -> napi::Result<essl_check::CheckedUnit> {
     too_big(&text)?;
     let configs = configs(opts);
-    // An `essl.toml` that cannot be read (a `config` that names no file, a malformed one found
-    // upward) is an error, as it is for `essl lint`, not a check of nothing.
-    if let Err(e) = configs.for_file(&opts.filename) {
-        return Err(Error::new(Status::GenericFailure, e.to_string()));
-    }
     let check = CheckOptions {
         link: opts.link,
         lints: opts.lints,
         ..CheckOptions::default()
     };
     let (unit, _) = essl_check::check_text(&opts.filename, text, &configs, &Files::disk(), check)
-        .map_err(|e| type_error(e.to_string()))?;
+        .map_err(|e| match e {
+        // An `essl.toml` that cannot be read is an error, as it is for `essl lint`; the
+        // others are about the arguments.
+        essl_check::UsageError::Config(_) => Error::new(Status::GenericFailure, e.to_string()),
+        _ => type_error(e.to_string()),
+    })?;
     Ok(unit)
 }
 

@@ -65,3 +65,25 @@ fn a_walk_skips_hidden_and_ignored_files_and_names_a_file_once() {
     let found = find(&twice, &FindOptions::new(), &configs).unwrap();
     assert_eq!(found.inputs.len(), 1);
 }
+
+#[test]
+fn a_text_whose_settings_cannot_be_read_is_a_usage_error_not_a_check_of_nothing() {
+    let dir = tempfile::tempdir().unwrap();
+    let configs = Configs::new(Overrides {
+        config: Some(dir.path().join("no-such").join("essl.toml")),
+        ..Overrides::default()
+    });
+    let text =
+        "#version 300 es\nprecision mediump float;\nout vec4 o;\nvoid main() { o = vec4(1.0); }\n";
+    let checked = essl_check::check_text(
+        Path::new("a.frag"),
+        text.to_string(),
+        &configs,
+        &essl_check::Files::disk(),
+        essl_check::CheckOptions::default(),
+    );
+    match checked {
+        Err(UsageError::Config(e)) => assert!(e.to_string().contains("no-such"), "{e}"),
+        other => panic!("{:?}", other.map(|(u, _)| u.shaders.len())),
+    }
+}
