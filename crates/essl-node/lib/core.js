@@ -12,8 +12,14 @@ const CHECK_KEYS = ['target', 'defines', 'includeDirs', 'preset', 'config', 'rul
 
 const PLUGIN_KEYS = new Set([...CHECK_KEYS, 'include', 'exclude', 'failOnWarnings', 'minify', 'load']);
 
-/** A TypeError for a plugin or loader option essl does not know (a typo would pass silently). */
-export function unknownOption(fn, options) {
+/**
+ * The TypeError for the options of a plugin or the loader (`fn` names it), or null: `minify`
+ * not a boolean, or an option essl does not know (a typo would pass silently).
+ */
+export function optionsError(fn, options) {
+  if (options.minify !== undefined && typeof options.minify !== 'boolean') {
+    return new TypeError(`${fn}: options.minify must be a boolean`);
+  }
   const unknown = Object.keys(options).filter(k => !PLUGIN_KEYS.has(k));
   if (!unknown.length) return null;
   return new TypeError(`${fn}: unknown option${unknown.length > 1 ? 's' : ''} ${unknown.join(', ')} (known: ${[...PLUGIN_KEYS].join(', ')})`);
@@ -91,10 +97,9 @@ export async function checkModule(id, code, options = {}, given = false) {
  */
 function shaderText(f, code, q) {
   // Another query's module (`?url`, `?inline`, `?worker`) is not the text: the file is.
-  if (q !== '' && q !== 'raw') return readFileSync(f, 'utf8');
   const prefix = 'export default "';
   const body = code.trimEnd().replace(/;$/, '');
-  if (body.startsWith(prefix) && body.endsWith('"')) {
+  if ((q === '' || q === 'raw') && body.startsWith(prefix) && body.endsWith('"')) {
     try {
       const text = JSON.parse(body.slice(prefix.length - 1));
       if (typeof text === 'string') return text;

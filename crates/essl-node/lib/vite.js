@@ -5,17 +5,14 @@
 // whose default export is the text WebGL is given, its `#include`s in place; with `minify:
 // true`, that text (and a `?raw` import's) minified.
 import {readFileSync} from 'node:fs';
-import {SHADER, buildError, checkModule, file, unknownOption, wanted} from './core.js';
+import {SHADER, buildError, checkModule, file, optionsError, wanted} from './core.js';
 
 export default function essl(options = {}) {
   if (options === null || typeof options !== 'object' || Array.isArray(options)) {
     throw new TypeError('essl(): options must be an object');
   }
-  if (options.minify !== undefined && typeof options.minify !== 'boolean') {
-    throw new TypeError('essl(): options.minify must be a boolean');
-  }
-  const unknown = unknownOption('essl()', options);
-  if (unknown) throw unknown;
+  const bad = optionsError('essl()', options);
+  if (bad) throw bad;
   const load = options.load !== false;
   // Files whose errors the page shows (`vite dev`): saving one reloads the page, so that the
   // overlay goes as soon as the shader is fixed (a module whose transform failed is not in

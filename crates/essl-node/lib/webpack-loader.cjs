@@ -7,13 +7,10 @@ module.exports = function esslLoader(source, map, meta) {
   const callback = this.async();
   const options = this.getOptions ? this.getOptions() : {};
   const id = this.resourcePath + (this.resourceQuery || '');
-  if (options.minify !== undefined && typeof options.minify !== 'boolean') {
-    return callback(new TypeError('essl/webpack: options.minify must be a boolean'));
-  }
   import('./core.js')
-    .then(async ({checkModule, buildError, SHADER, unknownOption, wanted}) => {
-      const unknown = unknownOption('essl/webpack', options);
-      if (unknown) return callback(unknown);
+    .then(async ({checkModule, buildError, SHADER, optionsError, wanted}) => {
+      const bad = optionsError('essl/webpack', options);
+      if (bad) return callback(bad);
       if (!wanted(id, options)) return callback(null, source, map, meta);
       // `source` is the module's text as the loaders before this one left it.
       const checked = await checkModule(id, source, options, true);
