@@ -93,6 +93,30 @@ const WANTED_FEATURES: wgpu::Features = wgpu::Features::VERTEX_WRITABLE_STORAGE
     .union(wgpu::Features::DEPTH_CLIP_CONTROL)
     .union(wgpu::Features::POLYGON_MODE_LINE);
 
+/// The Vulkan adapter every context of the process takes its device from, found once: creating
+/// a wgpu instance loads the Vulkan loader and its drivers (lavapipe: LLVM) and enumerates the
+/// adapters, most of the time a context took to create.
+fn adapter() -> Result<wgpu::Adapter, ContextError> {
+    static ADAPTER: std::sync::OnceLock<Result<wgpu::Adapter, String>> = std::sync::OnceLock::new();
+    ADAPTER
+        .get_or_init(|| {
+            quiet_vulkan_loader();
+            let mut desc = wgpu::InstanceDescriptor::new_without_display_handle();
+            desc.backends = wgpu::Backends::VULKAN;
+            desc.flags = wgpu::InstanceFlags::empty();
+            let instance = wgpu::Instance::new(desc);
+            pollster::block_on(instance.request_adapter(&wgpu::RequestAdapterOptions {
+                power_preference: wgpu::PowerPreference::HighPerformance,
+                force_fallback_adapter: false,
+                compatible_surface: None,
+                apply_limit_buckets: false,
+            }))
+            .map_err(|e| e.to_string())
+        })
+        .clone()
+        .map_err(ContextError::NoAdapter)
+}
+
 impl Context {
     /// Creates a context with an offscreen default framebuffer of `width` × `height` pixels
     /// and the default [`ContextAttributes`] (8-bit RGBA, 24-bit depth, no stencil, no
@@ -111,18 +135,7 @@ impl Context {
         height: u32,
         attributes: ContextAttributes,
     ) -> Result<Context, ContextError> {
-        quiet_vulkan_loader();
-        let mut desc = wgpu::InstanceDescriptor::new_without_display_handle();
-        desc.backends = wgpu::Backends::VULKAN;
-        desc.flags = wgpu::InstanceFlags::empty();
-        let instance = wgpu::Instance::new(desc);
-        let adapter = pollster::block_on(instance.request_adapter(&wgpu::RequestAdapterOptions {
-            power_preference: wgpu::PowerPreference::HighPerformance,
-            force_fallback_adapter: false,
-            compatible_surface: None,
-            apply_limit_buckets: false,
-        }))
-        .map_err(|e| ContextError::NoAdapter(e.to_string()))?;
+        let adapter = adapter()?;
         let info = adapter.get_info();
         let downlevel = adapter.get_downlevel_capabilities().flags;
         let (device, queue) = pollster::block_on(adapter.request_device(&wgpu::DeviceDescriptor {
