@@ -86,6 +86,8 @@ export interface CheckOptions {
    * it is a JS/TS or HTML file holding shaders; `#include`s, `essl.toml` and a preset's
    * package are looked for from its folder. Default: `shader.vert`/`shader.frag` by `stage`. */
   filename?: string;
+  /** The stage of a text whose name does not give one (`shader.glsl`, the default name); a
+   * stage that contradicts `filename`'s extension is a `TypeError`. */
   stage?: 'vertex' | 'fragment';
   target?: 'webgl1' | 'webgl2';
   /** Macros defined as the API would (`{USE_FOG: 1}`; `true` is 1, `false` leaves it out). */

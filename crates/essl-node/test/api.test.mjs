@@ -159,6 +159,14 @@ test('bad input is a TypeError or an Error with a message', () => {
   assert.throws(() => check(FS, {stage: 'compute'}), {name: 'TypeError', message: /options.stage must be 'vertex' or 'fragment'/});
   assert.throws(() => check(FS, {target: 'webgl3'}), {name: 'TypeError', message: /options.target/});
   assert.throws(() => check(FS, {stagee: 'vertex'}), {name: 'TypeError', message: /options.stagee is not an option/});
+  // A stage the file name contradicts (the name would win, silently).
+  assert.throws(() => check(FS, {stage: 'vertex', filename: 'light.frag'}), {
+    name: 'TypeError',
+    message: "essl.check: options.stage is 'vertex', but options.filename 'light.frag' names a fragment shader",
+  });
+  assert.throws(() => check(FS, {stage: 'vertex', filename: 'light.fs.glsl'}), /names a fragment shader/);
+  assert.equal(check(FS, {stage: 'fragment', filename: 'light.frag'}).errors, 0);
+  assert.equal(check(FS, {stage: 'fragment', filename: 'light.glsl'}).shaders[0].stage, 'fragment');
   assert.throws(() => check(FS, {rules: {'no-such-rule': 'deny'}}), {name: 'TypeError', message: /no-such-rule/});
   assert.throws(() => check(FS, {defines: ['A']}), {name: 'TypeError', message: /options.defines must be an object/});
   assert.throws(() => check(FS, {preset: 'babylon'}), {name: 'TypeError', message: /options.preset/});
