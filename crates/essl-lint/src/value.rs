@@ -166,8 +166,11 @@ impl Num {
 
     /// A constant.
     pub fn constant(v: &[f64]) -> Num {
-        let c: Vec<Interval> = v.iter().map(|x| Interval::point(*x)).collect();
-        Num::from_components(&c, Facts::NONE)
+        let mut c = [Interval::EMPTY; 4];
+        for (i, x) in v.iter().take(4).enumerate() {
+            c[i] = Interval::point(*x);
+        }
+        Num::from_components(&c[..v.len().min(4)], Facts::NONE)
     }
 
     /// A scalar in `i`, with `facts`.
@@ -177,7 +180,7 @@ impl Num {
 
     /// `n` components each in `i`, with `facts`.
     pub fn splat(i: Interval, n: u8, facts: Facts) -> Num {
-        Num::from_components(&vec![i; n as usize], facts)
+        Num::from_components(&[i; 4][..(n as usize).min(4)], facts)
     }
 
     /// The used components.

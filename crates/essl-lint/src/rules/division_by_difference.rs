@@ -98,14 +98,16 @@ fn check(cx: &Cx, out: &mut Vec<Diagnostic>) {
             if cx.kind(id, d) != Some(ScalarKind::Float) || !v.facts.has(Facts::DIFF) {
                 continue;
             }
-            let texel = zero_at_texel_end(cx, id, d, v.facts);
             let per_pixel = v.facts.any(Facts::INPUT.with(Facts::TEXTURE));
-            if (per_pixel && !texel) || (!per_pixel && !v.facts.any(Facts::UNIFORM)) {
+            if (!per_pixel && !v.facts.any(Facts::UNIFORM))
+                || !v.comps().iter().any(|c| c.contains(0.0))
+            {
                 continue;
             }
-            if !v.comps().iter().any(|c| c.contains(0.0))
-                || sym.get_or_insert_with(|| cx.sym(id, f)).nonzero(d)
-            {
+            // Only a per-pixel difference asks about texels, with the analysis of ordinary
+            // values (a second run over the module): after the cheaper tests.
+            let texel = per_pixel && zero_at_texel_end(cx, id, d, v.facts);
+            if (per_pixel && !texel) || sym.get_or_insert_with(|| cx.sym(id, f)).nonzero(d) {
                 continue;
             }
             let g = cx.guards(f, id, h);

@@ -97,6 +97,11 @@ fn check(cx: &Cx, out: &mut Vec<Diagnostic>) {
             if v.n < 2 || !v.may_be_zero() || v.facts.has(Facts::NZ) {
                 continue;
             }
+            // A per-pixel vector that is not a cross product is left alone (below): the guards
+            // refine intervals and keep where a value comes from, so they need not be looked up.
+            if !v.facts.any(Facts::CROSS) && v.facts.any(Facts::INPUT.with(Facts::TEXTURE)) {
+                continue;
+            }
             // `dot(v, v) > 1e-12 ? normalize(v) : fallback`, `if (length(v) > 0.0)`.
             let Some(v) = cx.refined(f, id, x, &cx.guards(f, id, h)) else {
                 continue;
