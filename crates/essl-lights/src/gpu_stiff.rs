@@ -557,17 +557,44 @@ pub fn evaluate(model: Model, case: Case, size: u32) -> Result<GpuRow, LightsErr
     })
 }
 
-/// Every row of the matrix (every model × every case that applies), at `size`.
+/// Every row of the matrix (every model × every case that applies), at `size`, in that order.
+/// The rows are drawn on as many threads as there are cores, each row on a context of its own:
+/// most of a row's time is the CPU's (the float64 model of every pixel, lavapipe's shading).
 pub fn run(size: u32) -> Result<Vec<GpuRow>, LightsError> {
-    let mut rows = Vec::new();
-    for m in Model::ALL {
-        for c in Case::ALL {
-            if c.applies(m) {
-                rows.push(evaluate(m, c, size)?);
-            }
-        }
-    }
-    Ok(rows)
+    let pairs: Vec<(Model, Case)> = Model::ALL
+        .into_iter()
+        .flat_map(|m| {
+            Case::ALL
+                .into_iter()
+                .filter(move |c| c.applies(m))
+                .map(move |c| (m, c))
+        })
+        .collect();
+    let threads = std::thread::available_parallelism()
+        .map_or(1, |n| n.get())
+        .clamp(1, pairs.len().max(1));
+    let mut done: Vec<(usize, Result<GpuRow, LightsError>)> = std::thread::scope(|s| {
+        let workers: Vec<_> = (0..threads)
+            .map(|t| {
+                let pairs = &pairs;
+                s.spawn(move || {
+                    pairs
+                        .iter()
+                        .enumerate()
+                        .skip(t)
+                        .step_by(threads)
+                        .map(|(i, &(m, c))| (i, evaluate(m, c, size)))
+                        .collect::<Vec<_>>()
+                })
+            })
+            .collect();
+        workers
+            .into_iter()
+            .flat_map(|w| w.join().unwrap_or_else(|e| std::panic::resume_unwind(e)))
+            .collect()
+    });
+    done.sort_by_key(|(i, _)| *i);
+    done.into_iter().map(|(_, row)| row).collect()
 }
 
 /// Counts: rows, rows where the seed's program fails on the GPU (NaN or more than 1/255 off),
