@@ -558,9 +558,10 @@ pub fn evaluate(model: Model, case: Case, size: u32) -> Result<GpuRow, LightsErr
 }
 
 /// Every row of the matrix (every model × every case that applies), at `size`, in that order.
-/// The rows are drawn on as many threads as there are cores, each row on a context of its own:
-/// most of a row's time is the CPU's (the float64 model of every pixel, lavapipe's shading).
+/// The rows are drawn on rayon's threads, each on a context of its own: most of a row's time is
+/// the CPU's (the float64 model of every pixel, lavapipe's shading).
 pub fn run(size: u32) -> Result<Vec<GpuRow>, LightsError> {
+    use rayon::prelude::*;
     let pairs: Vec<(Model, Case)> = Model::ALL
         .into_iter()
         .flat_map(|m| {
@@ -570,31 +571,12 @@ pub fn run(size: u32) -> Result<Vec<GpuRow>, LightsError> {
                 .map(move |c| (m, c))
         })
         .collect();
-    let threads = std::thread::available_parallelism()
-        .map_or(1, |n| n.get())
-        .clamp(1, pairs.len().max(1));
-    let mut done: Vec<(usize, Result<GpuRow, LightsError>)> = std::thread::scope(|s| {
-        let workers: Vec<_> = (0..threads)
-            .map(|t| {
-                let pairs = &pairs;
-                s.spawn(move || {
-                    pairs
-                        .iter()
-                        .enumerate()
-                        .skip(t)
-                        .step_by(threads)
-                        .map(|(i, &(m, c))| (i, evaluate(m, c, size)))
-                        .collect::<Vec<_>>()
-                })
-            })
-            .collect();
-        workers
-            .into_iter()
-            .flat_map(|w| w.join().unwrap_or_else(|e| std::panic::resume_unwind(e)))
-            .collect()
-    });
-    done.sort_by_key(|(i, _)| *i);
-    done.into_iter().map(|(_, row)| row).collect()
+    let rows: Vec<Result<GpuRow, LightsError>> = pairs
+        .par_iter()
+        .map(|&(m, c)| evaluate(m, c, size))
+        .collect();
+    // The first error in the matrix's order, as a walk in order would meet it.
+    rows.into_iter().collect()
 }
 
 /// Counts: rows, rows where the seed's program fails on the GPU (NaN or more than 1/255 off),
