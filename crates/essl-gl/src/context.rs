@@ -503,22 +503,20 @@ impl Context {
 }
 
 /// The Vulkan loader prints "XDG_RUNTIME_DIR is invalid or not set in the environment" on
-/// stderr when that variable is unset (for every instance); give it a private directory
-/// first, once per process, unless the environment already has one.
+/// stderr when that variable is unset; give it a private directory first, unless the
+/// environment already has one. Called once, before the process's one wgpu instance
+/// ([`adapter`]).
 fn quiet_vulkan_loader() {
-    static ONCE: std::sync::Once = std::sync::Once::new();
-    ONCE.call_once(|| {
-        if std::env::var_os("XDG_RUNTIME_DIR").is_some() {
-            return;
+    if std::env::var_os("XDG_RUNTIME_DIR").is_some() {
+        return;
+    }
+    let dir = std::env::temp_dir().join(format!("essl-gl-runtime-{}", std::process::id()));
+    if std::fs::create_dir_all(&dir).is_ok() {
+        #[cfg(unix)]
+        {
+            use std::os::unix::fs::PermissionsExt;
+            let _ = std::fs::set_permissions(&dir, std::fs::Permissions::from_mode(0o700));
         }
-        let dir = std::env::temp_dir().join(format!("essl-gl-runtime-{}", std::process::id()));
-        if std::fs::create_dir_all(&dir).is_ok() {
-            #[cfg(unix)]
-            {
-                use std::os::unix::fs::PermissionsExt;
-                let _ = std::fs::set_permissions(&dir, std::fs::Permissions::from_mode(0o700));
-            }
-            std::env::set_var("XDG_RUNTIME_DIR", &dir);
-        }
-    });
+        std::env::set_var("XDG_RUNTIME_DIR", &dir);
+    }
 }
