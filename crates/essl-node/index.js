@@ -109,21 +109,9 @@ function all(result) {
   ];
 }
 
-// The stage a file name gives (its extension, or the one before `.glsl`), as essl reads names.
-const NAMED_STAGES = {vert: 'vertex', vs: 'vertex', vsh: 'vertex', frag: 'fragment', fs: 'fragment', fsh: 'fragment'};
-function namedStage(filename) {
-  const m = /\.(vert|vs|vsh|frag|fs|fsh)(\.glsl)?$/.exec(filename);
-  return m ? NAMED_STAGES[m[1]] : undefined;
-}
-
 function checkOptions(fn, source, options) {
   text(fn, 'source', source);
   const o = opts(fn, options);
-  // The file name decides a shader file's stage; a `stage` that says otherwise is a mistake.
-  const named = o.stage && typeof o.filename === 'string' ? namedStage(o.filename) : undefined;
-  if (named && named !== o.stage) {
-    throw new TypeError(`essl.${fn}: options.stage is '${o.stage}', but options.filename '${o.filename}' names a ${named} shader`);
-  }
   if (o.filename === undefined && o.stage) o.filename = o.stage === 'vertex' ? 'shader.vert' : 'shader.frag';
   return JSON.stringify(o);
 }

@@ -221,6 +221,18 @@ fn parse(json: &str, default_name: &str) -> Result<Options, OptionError> {
         Some(v) => return Err(bad("rules", "an object ({rule: level})", v)),
     }
     let filename = PathBuf::from(string(o, "filename")?.unwrap_or(default_name));
+    // A shader file's name decides its stage, as everywhere in essl; a `stage` that says
+    // otherwise is a mistake (it would be dropped silently).
+    if let (Some(asked), Some(named)) = (overrides.stage, essl_check::stage_from_name(&filename)) {
+        if asked != named {
+            return Err(OptionError(format!(
+                "options.stage is '{}', but options.filename '{}' names a {} shader",
+                asked.as_str(),
+                filename.display(),
+                named.as_str()
+            )));
+        }
+    }
     Ok(Options {
         filename,
         lints: boolean(o, "lints", true)?,

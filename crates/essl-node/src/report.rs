@@ -18,7 +18,6 @@ use std::sync::Arc;
 use essl::diagnostic::{Applicability, Diagnostic};
 use essl::render::human_string;
 use essl::source::SourceFile;
-use essl::Stage;
 use essl_check::{CheckedProgram, CheckedShader, CheckedUnit};
 use serde::Serialize;
 
@@ -183,13 +182,6 @@ fn unlocated<'a>(d: &'a Diagnostic, rendering: &mut Rendering) -> Diag<'a> {
     }
 }
 
-fn stage_name(stage: Stage) -> &'static str {
-    match stage {
-        Stage::Vertex => "vertex",
-        Stage::Fragment => "fragment",
-    }
-}
-
 /// The text WebGL is given: `null` where an `#include` could not be followed, `1` where it is
 /// the source the caller passed (the JS side puts that string back: the text does not cross
 /// twice), else the text.
@@ -253,7 +245,7 @@ pub fn shader<'a>(
         name: s.name.as_deref(),
         ok: s.ok(),
         partner: false,
-        stage: stage_name(s.stage),
+        stage: s.stage.as_str(),
         text,
     }
 }
