@@ -161,3 +161,43 @@ fn a_chunk_is_checked_as_a_library() {
         ["module.js:4:28 missing-semicolon"]
     );
 }
+
+/// A check without the lints answers as WebGL does, from the front end and the linker: the
+/// shaders are not lowered to naga IR (which only the lints and the translators read). With
+/// the lints they are, and the lints' findings land on the file.
+#[test]
+fn only_a_check_with_lints_lowers() {
+    let dir = tempfile::tempdir().unwrap();
+    let frag = "#version 300 es\nprecision highp float;\nuniform float u_a, u_b;\nout vec4 c;\nvoid main() { c = vec4(1.0 / (u_a - u_b)); }\n";
+    write(
+        dir.path(),
+        &[
+            (
+                "a.vert",
+                "#version 300 es\nvoid main() { gl_Position = vec4(0); }\n",
+            ),
+            ("a.frag", frag),
+        ],
+    );
+    let without = CheckOptions {
+        lints: false,
+        ..CheckOptions::default()
+    };
+    for (options, lowered, found) in [
+        (without, false, Vec::<String>::new()),
+        (
+            CheckOptions::default(),
+            true,
+            vec!["a.frag:5:30 division-by-difference".to_string()],
+        ),
+    ] {
+        let run = check(dir.path(), Overrides::default(), options);
+        let unit = &run.results[0];
+        assert_eq!(unit.programs.len(), 1, "the pair is linked either way");
+        assert!(unit
+            .shaders
+            .iter()
+            .all(|s| s.shader.as_ref().unwrap().naga.is_some() == lowered));
+        assert_eq!(lines(dir.path(), &run), found);
+    }
+}
