@@ -1,12 +1,18 @@
 // What the essl plugin adds to a `vite build`: a generated project importing 200 shaders
 // (`?raw`, the webgl2fundamentals lessons' shaders from ../shared/corpora or $ESSL_CORPORA),
 // built with and without the plugin, after one untimed build of each, alternating, ROUNDS times
-// each (default 7); prints the median of each and the change in per cent, for the plugin's
-// defaults (lints on) and with `lints: false`. Two projects: the shaders alone, and an app that
+// each (default 7); prints the median of each and the change in per cent: the plugin with the
+// lints and with `lints: false`, both without its cache (every module checked), and with the
+// lints and a cache the untimed build filled (every module unchanged since). Two projects: the
+// shaders alone, and an app that
 // also bundles three.js (the copy scripts/fetch-js-libs.sh installs in tests/js) and makes a
 // RawShaderMaterial of each shader.
 //
-//   node bench/vite-overhead.mjs        (from crates/essl-node, after `npm run build`)
+//   node --expose-gc bench/vite-overhead.mjs   (from crates/essl-node, after `npm run build`)
+//
+// The projects are written under /dev/shm where there is one (a disk's write-back otherwise
+// moves the builds' times), and the heap is collected before each build where `--expose-gc`
+// allows (one variant's garbage otherwise lands in the next one's build).
 import {mkdtempSync, mkdirSync, readFileSync, rmSync, writeFileSync, existsSync, symlinkSync} from 'node:fs';
 import {tmpdir, cpus} from 'node:os';
 import {dirname, join} from 'node:path';
@@ -33,7 +39,7 @@ const shaders = readFileSync(file, 'utf8')
 const three = join(here, '..', '..', '..', 'tests', 'js', 'node_modules', 'three');
 
 function project(withThree) {
-  const dir = mkdtempSync(join(tmpdir(), 'essl-vite-bench-'));
+  const dir = mkdtempSync(join(existsSync('/dev/shm') ? '/dev/shm' : tmpdir(), 'essl-vite-bench-'));
   mkdirSync(join(dir, 'src', 'shaders'), {recursive: true});
   const imports = [];
   shaders.forEach((s, i) => {
@@ -61,6 +67,7 @@ function project(withThree) {
 }
 
 async function once(dir, plugin) {
+  globalThis.gc?.();
   const start = process.hrtime.bigint();
   await build({
     root: dir,
@@ -77,7 +84,12 @@ const commit = execFileSync('git', ['rev-parse', '--short', 'HEAD'], {encoding: 
 console.log(`vite build, ${shaders.length} shaders, commit ${commit}, ${cpus().length} × ${cpus()[0].model}, ${ROUNDS} rounds`);
 for (const withThree of [false, ...(existsSync(three) ? [true] : [])]) {
   const dir = project(withThree);
-  const variants = {without: null, essl: essl(), 'essl, lints off': essl({lints: false})};
+  const variants = {
+    without: null,
+    essl: essl({cache: false}),
+    'essl, lints off': essl({cache: false, lints: false}),
+    'essl, cached': essl({cache: join(dir, 'essl-cache')}),
+  };
   const times = Object.fromEntries(Object.keys(variants).map(k => [k, []]));
   for (const p of Object.values(variants)) await once(dir, p);
   for (let r = 0; r < ROUNDS; r++) {

@@ -10,7 +10,7 @@ const SCRIPT = /\.(m?[jt]sx?|c[jt]s)$/;
 const MAY_HOLD = /glsl|#version/i;
 const CHECK_KEYS = ['target', 'defines', 'includeDirs', 'preset', 'config', 'rules', 'lints', 'denyWarnings'];
 
-const PLUGIN_KEYS = new Set([...CHECK_KEYS, 'include', 'exclude', 'failOnWarnings', 'minify', 'load']);
+const PLUGIN_KEYS = new Set([...CHECK_KEYS, 'include', 'exclude', 'failOnWarnings', 'minify', 'load', 'cache']);
 
 /**
  * The TypeError for the options of a plugin or the loader (`fn` names it), or null: `minify`
@@ -19,6 +19,9 @@ const PLUGIN_KEYS = new Set([...CHECK_KEYS, 'include', 'exclude', 'failOnWarning
 export function optionsError(fn, options) {
   if (options.minify !== undefined && typeof options.minify !== 'boolean') {
     return new TypeError(`${fn}: options.minify must be a boolean`);
+  }
+  if (options.cache !== undefined && typeof options.cache !== 'boolean' && typeof options.cache !== 'string') {
+    return new TypeError(`${fn}: options.cache must be a boolean or a folder's path`);
   }
   const unknown = Object.keys(options).filter(k => !PLUGIN_KEYS.has(k));
   if (!unknown.length) return null;
@@ -60,7 +63,7 @@ function matches(patterns, f) {
  * as errors under `failOnWarnings`), and for a shader file the text WebGL is given (includes in
  * place) and the files it read.
  */
-export async function checkModule(id, code, options = {}, given = false) {
+export async function checkModule(id, code, options = {}, given = false, cache = null) {
   const f = file(id);
   const isShader = SHADER.test(f);
   if (!isShader && !options.preset && !MAY_HOLD.test(code)) return null;
@@ -70,6 +73,23 @@ export async function checkModule(id, code, options = {}, given = false) {
   // `minify: true`: a shader file's text is minified (a script's shaders are left as they are,
   // and so are shaders a preset's library assembles at run time).
   const minify = isShader && options.minify === true && !options.preset;
+  // A preset's checks read the library the project has installed: those are not kept.
+  const key = cache && !options.preset ? cache.key(f, source, [o, minify, !!options.failOnWarnings]) : null;
+  if (key) {
+    const kept = cache.get(key, f);
+    if (kept) return kept;
+  }
+  const checked = await checkSource(source, o, f, isShader, minify, options);
+  if (key && checked) cache.set(key, f, checked, read(checked.result));
+  return checked;
+}
+
+/** Every file a check read: each shader's file and the files its `#include`s named. */
+function read(result) {
+  return result.shaders.flatMap(s => [s.file, ...(s.files ?? [])]);
+}
+
+async function checkSource(source, o, f, isShader, minify, options) {
   let result;
   const notes = [];
   try {

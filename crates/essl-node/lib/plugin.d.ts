@@ -15,14 +15,20 @@ export interface EsslPluginOptions
   minify?: boolean;
   /** Load bare shader imports as modules exporting their text (default true). */
   load?: boolean;
+  /** Keep checks that found no error between builds (Vite/Rollup; default true:
+   * `node_modules/.cache/essl` under Vite's root or the working folder), or the folder to
+   * keep them in; `false` keeps none. The webpack loader uses webpack's cache instead. */
+  cache?: boolean | string;
 }
 
 /** The plugin: `plugins: [essl({preset: 'three'})]`. */
 export default function essl(options?: EsslPluginOptions): {
   name: 'essl';
   enforce: 'pre';
-  configResolved(config: {command: string}): void;
+  configResolved(config: {command: string; root?: string}): void;
   buildStart(): void;
+  /** Keeps the checks in `vite dev` and watch mode. */
+  buildEnd(): void;
   /** Waits for the checks a one-shot build did not wait for; fails the build on an error. */
   generateBundle(): Promise<void>;
   load(id: string): string | null;

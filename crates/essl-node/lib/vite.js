@@ -5,6 +5,7 @@
 // whose default export is the text WebGL is given, its `#include`s in place; with `minify:
 // true`, that text (and a `?raw` import's) minified.
 import {readFileSync} from 'node:fs';
+import {CheckCache, cacheDir} from './cache.js';
 import {SHADER, buildError, checkModule, file, optionsError, wanted} from './core.js';
 
 export default function essl(options = {}) {
@@ -24,18 +25,32 @@ export default function essl(options = {}) {
   // were transformed) fails the build when the bundle is written; its warnings print then.
   let serving = false;
   let pending = [];
+  // Checks kept between builds (`cache`, default on): Vite's root, else the working folder.
+  let cache = null;
+  const useCache = root => {
+    const dir = cacheDir(options.cache, root);
+    cache = dir ? new CheckCache(dir) : null;
+  };
+  useCache(process.cwd());
   return {
     name: 'essl',
     enforce: 'pre',
     configResolved(config) {
       serving = config.command === 'serve';
+      if (config.root) useCache(config.root);
     },
     buildStart() {
       pending = [];
+      cache?.startBuild();
+    },
+    buildEnd() {
+      // A one-shot build keeps its checks at `generateBundle`, after those still running.
+      if (serving || this.meta?.watchMode) cache?.save();
     },
     async generateBundle() {
       const all = await Promise.all(pending);
       pending = [];
+      cache?.save();
       for (const r of all) if (r.thrown) throw r.thrown;
       for (const r of all) for (const w of r.checked?.warnings ?? []) this.warn(w.rendered);
       const failing = all.find(r => r.checked?.errors.length);
@@ -66,10 +81,10 @@ export default function essl(options = {}) {
       const raw = options.minify === true && !options.preset && /\?raw$/.test(id) && SHADER.test(file(id));
       const replaces = (load && !id.includes('?') && SHADER.test(id)) || raw;
       if (!replaces && !serving && !this.meta?.watchMode) {
-        pending.push(checkModule(id, code, options).then(checked => ({checked}), thrown => ({thrown})));
+        pending.push(checkModule(id, code, options, false, cache).then(checked => ({checked}), thrown => ({thrown})));
         return null;
       }
-      const checked = await checkModule(id, code, options);
+      const checked = await checkModule(id, code, options, false, cache);
       if (!checked) return null;
       for (const f of checked.files) if (f !== file(id)) this.addWatchFile(f);
       for (const w of checked.warnings) this.warn(w.rendered);

@@ -1,0 +1,156 @@
+// The plugin's cache of checks between builds (`cache` option; default
+// `<root>/node_modules/.cache/essl`), as eslint-webpack-plugin and rollup-plugin-typescript2
+// keep theirs: a module whose check found no error is not checked again while its text, the
+// options, the essl build, every file the check read (`#include`d files, the partner of a
+// `NAME.vert` + `NAME.frag` pair) and the nearest `essl.toml` are unchanged. Results with
+// errors are never kept, so a fix is always checked; what is kept is what the plugin uses
+// (the warnings' text, the shader text, the files read), one JSON file for the folder.
+//
+// Written by hand: the caches on npm (flat-cache, file-entry-cache, find-cache-dir) key on a
+// file's metadata and know nothing of what a check read besides the file itself.
+import {createHash} from 'node:crypto';
+import {existsSync, mkdirSync, readFileSync, renameSync, statSync, writeFileSync} from 'node:fs';
+import {dirname, join} from 'node:path';
+import {fileURLToPath} from 'node:url';
+
+const FORMAT = 1;
+/** Entries kept in the file (the most recently used). */
+const MAX_ENTRIES = 10000;
+const here = dirname(fileURLToPath(import.meta.url));
+
+const sha = text => createHash('sha256').update(text).digest('base64url');
+
+/** What makes results of one essl differ from another's: the package's version and, where
+ * the addon was built beside it (this repository), the addon file's size and time. */
+function buildId() {
+  const pkg = readFileSync(join(here, '..', 'package.json'), 'utf8');
+  let stamp = '';
+  try {
+    const s = statSync(join(here, '..', `essl.${process.platform}-${process.arch}-gnu.node`));
+    stamp = `${s.size}:${s.mtimeMs}`;
+  } catch {
+    // The per-platform package's addon: its version is the package's.
+  }
+  return sha(`${FORMAT}\n${pkg}\n${stamp}`);
+}
+
+/** The cache folder an option names: `true` or absent → `<root>/node_modules/.cache/essl`. */
+export function cacheDir(option, root) {
+  if (option === false) return null;
+  if (typeof option === 'string') return option;
+  return join(root, 'node_modules', '.cache', 'essl');
+}
+
+/** The checks of one plugin instance: loaded on first use, written by `save`. */
+export class CheckCache {
+  constructor(dir) {
+    this.dir = dir;
+    this.file = join(dir, 'checks.json');
+    this.entries = null;
+    this.changed = false;
+    this.base = null;
+    // Within one build: each file's hash and each folder's nearest `essl.toml`.
+    this.hashes = new Map();
+    this.configs = new Map();
+  }
+
+  /** Forgets what the last build saw of the disk (files may change between builds). */
+  startBuild() {
+    this.hashes.clear();
+    this.configs.clear();
+  }
+
+  load() {
+    if (this.entries) return;
+    this.base ??= buildId();
+    this.entries = new Map();
+    try {
+      const kept = JSON.parse(readFileSync(this.file, 'utf8'));
+      if (kept.format === FORMAT && kept.base === this.base && Array.isArray(kept.entries)) {
+        for (const [key, entry] of kept.entries) this.entries.set(key, entry);
+      }
+    } catch {
+      // None yet, or unreadable: start empty.
+    }
+  }
+
+  /** The key of a module's check: its file, its text and the options that change the answer. */
+  key(f, source, options) {
+    this.load();
+    return sha(`${this.base}\n${f}\n${JSON.stringify(options)}\n${source}`);
+  }
+
+  fileHash(path) {
+    let h = this.hashes.get(path);
+    if (h === undefined) {
+      try {
+        h = sha(readFileSync(path));
+      } catch {
+        h = null;
+      }
+      this.hashes.set(path, h);
+    }
+    return h;
+  }
+
+  /** The nearest `essl.toml` in `dir` or above, with its hash: `[path, hash]`, or `null`. */
+  config(dir) {
+    if (this.configs.has(dir)) return this.configs.get(dir);
+    const here = join(dir, 'essl.toml');
+    let found;
+    if (existsSync(here)) {
+      found = [here, this.fileHash(here)];
+    } else {
+      const up = dirname(dir);
+      found = up === dir ? null : this.config(up);
+    }
+    this.configs.set(dir, found);
+    return found;
+  }
+
+  /** The kept check for `key` when nothing it read has changed, else undefined. */
+  get(key, f) {
+    const entry = this.entries.get(key);
+    if (!entry) return undefined;
+    const same =
+      JSON.stringify(this.config(dirname(f))) === JSON.stringify(entry.config) &&
+      entry.deps.every(([path, h]) => this.fileHash(path) === h);
+    if (!same) return undefined;
+    // Used again: among the most recent, written when something else changes (a build
+    // that checks nothing new writes nothing).
+    this.entries.delete(key);
+    this.entries.set(key, entry);
+    return entry.checked;
+  }
+
+  /** Keeps a check that found no error, with the files it read (besides `f` itself). */
+  set(key, f, checked, read) {
+    if (checked.errors.length) return;
+    const deps = [...new Set(read)].filter(p => p && p !== f).map(p => [p, this.fileHash(p)]);
+    if (deps.some(([, h]) => h === null)) return;
+    const plain = {
+      errors: [],
+      warnings: checked.warnings.map(w => JSON.parse(JSON.stringify(w))),
+      text: checked.text,
+      files: checked.files,
+    };
+    this.entries.delete(key);
+    this.entries.set(key, {config: this.config(dirname(f)), deps, checked: plain});
+    this.changed = true;
+  }
+
+  /** Writes the kept checks, the most recently used last. */
+  save() {
+    if (!this.entries || !this.changed) return;
+    this.changed = false;
+    const all = [...this.entries].slice(-MAX_ENTRIES);
+    try {
+      mkdirSync(this.dir, {recursive: true});
+      const tmp = `${this.file}.${process.pid}.tmp`;
+      writeFileSync(tmp, JSON.stringify({format: FORMAT, base: this.base, entries: all}));
+      renameSync(tmp, this.file);
+    } catch {
+      // A cache that cannot be written leaves the next build to check again.
+    }
+  }
+}
