@@ -45,8 +45,25 @@ async function decodeBytes(window, bytes, type) {
   return img;
 }
 
+/** Whether the `canvas` package loads: jsdom decodes images with it, and without it an image
+ * element fires neither `load` nor `error`, so a `decode()` would wait forever. */
+let canvasPackage = null;
+function canvasLoads() {
+  canvasPackage ??= import('canvas').then(
+    () => true,
+    () => false,
+  );
+  return canvasPackage;
+}
+
 /** `HTMLImageElement.decode()`: resolves once the image is loaded, rejects if it cannot be. */
-function decode(window) {
+async function decode(window) {
+  if (/\bjsdom\b/.test(window.navigator?.userAgent ?? '') && !(await canvasLoads())) {
+    throw new window.DOMException(
+      'The source image cannot be decoded: jsdom decodes images with the `canvas` package, which is not installed or did not build.',
+      'EncodingError',
+    );
+  }
   return new Promise((resolve, reject) => {
     const fail = () => reject(new window.DOMException('The source image cannot be decoded.', 'EncodingError'));
     if (this.complete && this.getAttribute('src') !== null) {
