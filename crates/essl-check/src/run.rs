@@ -225,7 +225,7 @@ pub fn check_text(
 }
 
 /// Lowers and lints a shader that a [`crate::Phase::FrontEnd`] check left, with the settings
-/// it was checked with.
+/// it was checked with (without `lints`, nothing more is done: the check is complete).
 pub fn finish(shader: &mut CheckedShader, lints: bool) {
     let settings = shader.settings.clone();
     check::lint(shader, &settings, lints);
