@@ -46,7 +46,7 @@ pub enum Phase {
     /// Everything: the front end and, where the lints run, lowering to naga IR and the lints.
     /// Without the lints a check is what WebGL answers (the front end and the linker):
     /// lowering, which only the lints and the translators read, fails only where essl cannot
-    /// translate valid GLSL ES, and took about 40 % of a dEQP shader's check.
+    /// translate valid GLSL ES, and costs about as much as the front end.
     #[default]
     Full,
     /// The front end alone; [`crate::finish`] does the rest later (an editor publishes the
@@ -552,11 +552,11 @@ fn fix_rounds(
 ) -> (Arc<SourceFile>, Vec<Compiled>, usize) {
     let mut current = file;
     let mut applied = 0;
+    let lower = options.phase == Phase::Full && options.lints;
     for round in 0..=MAX_FIX_ROUNDS {
         let compiled: Vec<Compiled> = make(&current)
             .into_iter()
             .map(|p| {
-                let lower = options.phase == Phase::Full && options.lints;
                 let shader = compile(&p, settings, lower);
                 (p, shader)
             })

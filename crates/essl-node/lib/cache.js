@@ -2,7 +2,8 @@
 // `<root>/node_modules/.cache/essl`), as eslint-webpack-plugin and rollup-plugin-typescript2
 // keep theirs: a module whose check found no error is not checked again while its text, the
 // options, the essl build, every file the check read (`#include`d files, the partner of a
-// `NAME.vert` + `NAME.frag` pair) and the nearest `essl.toml` are unchanged. Results with
+// `NAME.vert` + `NAME.frag` pair, the `essl.toml` the options name) and the nearest
+// `essl.toml` are unchanged. Results with
 // errors are never kept, so a fix is always checked; what is kept is what the plugin uses
 // (the warnings' text, the shader text, the files read), one JSON file for the folder.
 //
@@ -54,8 +55,9 @@ export class CheckCache {
     this.configs = new Map();
   }
 
-  /** Forgets what the last build saw of the disk (files may change between builds). */
-  startBuild() {
+  /** Forgets what was seen of the disk: at each build, and before each check in `vite dev`,
+   * where files change while the server runs. */
+  forgetDisk() {
     this.hashes.clear();
     this.configs.clear();
   }
@@ -96,10 +98,10 @@ export class CheckCache {
   /** The nearest `essl.toml` in `dir` or above, with its hash: `[path, hash]`, or `null`. */
   config(dir) {
     if (this.configs.has(dir)) return this.configs.get(dir);
-    const here = join(dir, 'essl.toml');
+    const candidate = join(dir, 'essl.toml');
     let found;
-    if (existsSync(here)) {
-      found = [here, this.fileHash(here)];
+    if (existsSync(candidate)) {
+      found = [candidate, this.fileHash(candidate)];
     } else {
       const up = dirname(dir);
       found = up === dir ? null : this.config(up);

@@ -80,7 +80,8 @@ export async function checkModule(id, code, options = {}, given = false, cache =
     if (kept) return kept;
   }
   const checked = await checkSource(source, o, f, isShader, minify, options);
-  if (key && checked) cache.set(key, f, checked, read(checked.result));
+  // An `essl.toml` the options name is read too (the nearest one the cache finds itself).
+  if (key && checked) cache.set(key, f, checked, [...read(checked.result), ...[o.config ?? []].flat()]);
   return checked;
 }
 

@@ -41,7 +41,7 @@ export default function essl(options = {}) {
     },
     buildStart() {
       pending = [];
-      cache?.startBuild();
+      cache?.forgetDisk();
     },
     buildEnd() {
       // A one-shot build keeps its checks at `generateBundle`, after those still running.
@@ -84,6 +84,9 @@ export default function essl(options = {}) {
         pending.push(checkModule(id, code, options, false, cache).then(checked => ({checked}), thrown => ({thrown})));
         return null;
       }
+      // `vite dev` has one build start for the server's life: an included file may have
+      // changed since the last check.
+      if (serving) cache?.forgetDisk();
       const checked = await checkModule(id, code, options, false, cache);
       if (!checked) return null;
       for (const f of checked.files) if (f !== file(id)) this.addWatchFile(f);

@@ -118,3 +118,51 @@ test('a check with errors is not kept; cache: false writes nothing', {skip}, asy
     rmSync(dir, {recursive: true, force: true});
   }
 });
+
+test('an essl.toml the options name is read again when it changes', {skip}, async () => {
+  const dir = project();
+  const cache = join(dir, 'cache');
+  const config = join(dir, 'lint.toml');
+  const lints = async () => (await build(dir, {cache, config})).warnings.filter(w => w.includes('division-by-difference'));
+  try {
+    writeFileSync(config, '[rules]\n"division-by-difference" = "allow"\n');
+    assert.equal((await lints()).length, 0);
+    writeFileSync(config, '[rules]\n"division-by-difference" = "warn"\n');
+    // The addon keeps settings read for one second.
+    await new Promise(r => setTimeout(r, 1100));
+    assert.equal((await lints()).length, 1);
+  } finally {
+    rmSync(dir, {recursive: true, force: true});
+  }
+});
+
+test('in vite dev, a check sees an included file changed since the last one', {skip}, async () => {
+  const dir = project();
+  const plugin = essl({cache: join(dir, 'cache')});
+  plugin.configResolved({command: 'serve', root: dir});
+  plugin.buildStart();
+  const id = join(dir, 'src', 'light.frag');
+  const code = plugin.load(id);
+  const context = {
+    warnings: [],
+    meta: {},
+    addWatchFile() {},
+    warn(w) {
+      this.warnings.push(w);
+    },
+    error(e) {
+      throw e;
+    },
+  };
+  try {
+    const first = await plugin.transform.call(context, code, id);
+    assert.match(first.code, /clamp\(\(d - u_outer\)/);
+    writeFileSync(join(dir, 'src', 'ramp.glsl'), RAMP.replace('clamp', 'clamb'));
+    await assert.rejects(plugin.transform.call(context, code, id), /clamb/);
+    writeFileSync(join(dir, 'src', 'ramp.glsl'), RAMP);
+    const fixed = await plugin.transform.call(context, code, id);
+    assert.equal(fixed.code, first.code);
+  } finally {
+    rmSync(dir, {recursive: true, force: true});
+  }
+});
