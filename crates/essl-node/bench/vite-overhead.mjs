@@ -1,12 +1,11 @@
 // What the essl plugin adds to a `vite build`: a generated project importing 200 shaders
 // (`?raw`, the webgl2fundamentals lessons' shaders from ../shared/corpora or $ESSL_CORPORA),
 // built with and without the plugin, after one untimed build of each, alternating, ROUNDS times
-// each (default 7); prints the median of each, wall-clock and CPU time, and the change in per cent: the plugin with the
-// lints and with `lints: false`, both without its cache (every module checked), and with the
-// lints and a cache the untimed build filled (every module unchanged since). Two projects: the
-// shaders alone, and an app that
-// also bundles three.js (the copy scripts/fetch-js-libs.sh installs in tests/js) and makes a
-// RawShaderMaterial of each shader.
+// each (default 7); prints the median wall-clock and CPU time of each and the change in per
+// cent: the plugin with the lints and with `lints: false`, both without its cache (every module
+// checked), and with the lints and a cache the untimed build filled (every module unchanged
+// since). Two projects: the shaders alone, and an app that also bundles three.js (the copy
+// scripts/fetch-js-libs.sh installs in tests/js) and makes a RawShaderMaterial of each shader.
 //
 //   node --expose-gc bench/vite-overhead.mjs   (from crates/essl-node, after `npm run build`)
 //
@@ -67,8 +66,9 @@ function project(withThree) {
 }
 
 // One build: its wall-clock time and the process's CPU time (every thread: Vite's, esbuild's
-// service aside, and the checks on Node's thread pool), in ms. The CPU time moves less with
-// the machine's load than the wall-clock time does.
+// service aside, and the checks on Node's thread pool), in ms. The CPU time says what the
+// checks cost the process however they were scheduled (on a VM whose two threads slow each
+// other, it moves between runs about as much as the wall-clock time).
 async function once(dir, plugin) {
   globalThis.gc?.();
   const cpu = process.cpuUsage();

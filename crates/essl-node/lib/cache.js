@@ -13,6 +13,7 @@ import {createHash} from 'node:crypto';
 import {existsSync, mkdirSync, readFileSync, renameSync, statSync, writeFileSync} from 'node:fs';
 import {dirname, join} from 'node:path';
 import {fileURLToPath} from 'node:url';
+import {LOCAL_ADDON} from './native.js';
 
 const FORMAT = 1;
 /** Entries kept in the file (the most recently used). */
@@ -27,7 +28,7 @@ function buildId() {
   const pkg = readFileSync(join(here, '..', 'package.json'), 'utf8');
   let stamp = '';
   try {
-    const s = statSync(join(here, '..', `essl.${process.platform}-${process.arch}-gnu.node`));
+    const s = statSync(LOCAL_ADDON);
     stamp = `${s.size}:${s.mtimeMs}`;
   } catch {
     // The per-platform package's addon: its version is the package's.

@@ -80,8 +80,12 @@ export async function checkModule(id, code, options = {}, given = false, cache =
     if (kept) return kept;
   }
   const checked = await checkSource(source, o, f, isShader, minify, options);
-  // An `essl.toml` the options name is read too (the nearest one the cache finds itself).
-  if (key && checked) cache.set(key, f, checked, [...read(checked.result), ...[o.config ?? []].flat()]);
+  if (key && checked) {
+    // An `essl.toml` the options name is read too (the nearest one the cache finds itself).
+    const files = read(checked.result);
+    if (o.config) files.push(o.config);
+    cache.set(key, f, checked, files);
+  }
   return checked;
 }
 

@@ -1,13 +1,16 @@
 // Loads the addon: the `.node` beside the package (as the repository's build and `npm pack`
 // put it), else the per-platform package napi-rs's convention names.
 import {createRequire} from 'node:module';
+import {fileURLToPath} from 'node:url';
 
 const require = createRequire(import.meta.url);
 const PLATFORM = `${process.platform}-${process.arch}${process.platform === 'linux' ? '-gnu' : ''}`;
+/** The addon file beside the package, where the repository's build puts it. */
+export const LOCAL_ADDON = fileURLToPath(new URL(`../essl.${PLATFORM}.node`, import.meta.url));
 
 function load() {
   const tried = [];
-  for (const name of [`../essl.${PLATFORM}.node`, `essl-${PLATFORM}`]) {
+  for (const name of [LOCAL_ADDON, `essl-${PLATFORM}`]) {
     try {
       return require(name);
     } catch (e) {
