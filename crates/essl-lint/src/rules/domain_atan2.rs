@@ -23,18 +23,19 @@ declare_rule! {
     ///
     /// ## Why is this bad?
     /// GLSL ES 3.00 leaves `atan(y, x)` undefined when `x` and `y` are both 0 (§8.1). Drivers return
-    /// 0, π, or NaN; an equirectangular lookup `atan(d.z, d.x)` of the zenith, or a polar angle of a
-    /// flat-shaded floor's normal, then samples an arbitrary column or goes black.
+    /// 0, π, or NaN; the azimuth of a normal-map texel is then arbitrary or NaN on every flat part
+    /// of the map (a texel pointing straight along z), and what the angle drives — an anisotropy
+    /// direction, a rotated or equirectangular lookup — goes wrong over whole regions.
     ///
     /// ## Example
     /// ```glsl
-    /// vec3 n = normalize(v_normal);
-    /// float phi = atan(n.z, n.x);
+    /// vec3 n = texture(u_normalMap, v_uv).xyz * 2.0 - 1.0;
+    /// float phi = atan(n.y, n.x);
     /// ```
     ///
     /// ## Use instead
     /// ```glsl
-    /// float phi = (abs(n.x) + abs(n.z) > 1e-6) ? atan(n.z, n.x) : 0.0;
+    /// float phi = (abs(n.x) + abs(n.y) > 1e-6) ? atan(n.y, n.x) : 0.0;
     /// ```
     /// There is no mechanical fix: the angle of the zero vector needs a choice.
     ///

@@ -11,9 +11,10 @@ use crate::Level;
 declare_rule! {
     /// ## What it does
     /// Reports an integer division `a / b` or remainder `a % b` (of `int`, `uint` or their vectors)
-    /// whose divisor can be 0: a difference, a conversion of a per-pixel value
-    /// (`int(v_uv.x * 4.0)` is 0 on a quarter of the screen), a texel of an integer texture, a
-    /// uniform count.
+    /// whose divisor can be 0: a difference (`u_columns - 1`), a conversion of a per-pixel value
+    /// (`int(v_uv.x * 4.0)` is 0 on a quarter of the screen), a texel of an integer texture. A
+    /// uniform as such (`index % u_columns`) is not reported: essl-gl's validation mode checks
+    /// uniform values.
     ///
     /// ## Why is this bad?
     /// GLSL ES 3.00 leaves integer division by zero undefined (§5.9: "the result is undefined").
@@ -23,12 +24,13 @@ declare_rule! {
     ///
     /// ## Example
     /// ```glsl
-    /// int cell = index % u_columns;
+    /// int bands = int(v_uv.x * 4.0);   // 0 on the left quarter of the screen
+    /// int cell = index % bands;
     /// ```
     ///
     /// ## Use instead
     /// ```glsl
-    /// int cell = index % max(u_columns, 1);
+    /// int cell = index % max(bands, 1);
     /// ```
     /// The suggested fix keeps the divisor at least 1 (`max(…, 1)`, `max(…, 1u)`), which is right for
     /// counts and sizes; a divisor that may be negative needs its own guard.

@@ -46,10 +46,14 @@ declare_rule! {
     ///
     /// ## Use instead
     /// ```glsl
+    /// uniform highp float u_distance;
+    /// …
     /// highp float falloff = exp(u_distance * 2.0);
     /// ```
-    /// Declare the operands (or the variable) `highp`, or rescale the computation (work in kilometres,
-    /// divide before multiplying). There is no mechanical fix.
+    /// Declare the operands `highp`, and the variable that keeps the result: an operation takes the
+    /// precision of its operands (GLSL ES 3.00 §4.5.2), so a `highp` variable alone still gets a
+    /// `mediump` result. Or rescale the computation (work in kilometres, divide before
+    /// multiplying). There is no mechanical fix.
     ///
     /// ## What it does not flag
     /// - Operations in `highp`, and products of different parameters (their scale is the parameters',

@@ -40,9 +40,11 @@ declare_rule! {
     ///
     /// ## Use instead
     /// ```glsl
-    /// vec3 c = cross(spotLightEx.up, spotLight.direction);
-    /// // Parallel vectors: fall back to any vector perpendicular to the direction.
-    /// vec3 left = dot(c, c) > 1e-12 ? normalize(c) : normalize(cross(vec3(1.0, 0.0, 0.0), spotLight.direction));
+    /// vec3 d = spotLight.direction;
+    /// vec3 c = cross(spotLightEx.up, d);
+    /// // Parallel vectors: fall back to an axis the direction is far from.
+    /// vec3 axis = abs(d.x) < 0.5 ? vec3(1.0, 0.0, 0.0) : vec3(0.0, 1.0, 0.0);
+    /// vec3 left = dot(c, c) > 1e-12 ? normalize(c) : normalize(cross(axis, d));
     /// ```
     /// There is no mechanical fix: the degenerate case needs a choice (a fallback axis, or no light).
     ///

@@ -2,6 +2,7 @@
 //! and linking them was most of the test suite's time). Each module is one former file.
 
 mod docs;
+mod examples;
 mod idioms;
 mod preconditions;
 mod recall;
