@@ -142,15 +142,15 @@ const KNOWN_GAPS: &str = "\
 
 Where essl still answers differently from a WebGL browser, beyond the cases above:
 
-- **Extensions of WebGL 2:** `essl::compile` offers GLSL ES 3.00 shaders three extensions,
+- **Extensions of WebGL 2:** `essl::compile` offers GLSL ES 3.00 shaders four extensions,
   `GL_ANGLE_clip_cull_distance` (`WEBGL_clip_cull_distance`: `gl_ClipDistance[8]`, and
   `gl_CullDistance` with `gl_MaxCullDistances` 0, as the extension allows where a device has no
   cull distances), `GL_EXT_conservative_depth` (`layout(depth_any | depth_greater |
-  depth_less)` on `gl_FragDepth`) and `GL_ANGLE_multi_draw` (`WEBGL_multi_draw`: `gl_DrawID`,
-  in GLSL ES 1.00 shaders of either context too). Another `#extension NAME : require` is an
+  depth_less)` on `gl_FragDepth`), `GL_NV_shader_noperspective_interpolation` (the
+  `noperspective` qualifier) and `GL_ANGLE_multi_draw` (`WEBGL_multi_draw`: `gl_DrawID`, in
+  GLSL ES 1.00 shaders of either context too). Another `#extension NAME : require` is an
   error and `enable` or `warn` a warning, the extension's features staying unavailable, where a
-  browser accepts the extensions its WebGL 2 implementation exposes (`OVR_multiview2`,
-  `NV_shader_noperspective_interpolation`, …). A WebGL 1 context offers GLSL ES 1.00 shaders
+  browser accepts the extensions its WebGL 2 implementation exposes (`OVR_multiview2`, …). A WebGL 1 context offers GLSL ES 1.00 shaders
   `OES_standard_derivatives`, `EXT_shader_texture_lod`, `EXT_frag_depth` and
   `WEBGL_draw_buffers` (`CompileOptions::extensions`).
 - **Limits that depend on the device** are those of the reference implementation (Chromium
