@@ -16,6 +16,12 @@ dpkg -s neovim >/dev/null 2>&1 || need+=(neovim)
 command -v node >/dev/null 2>&1 || need+=(nodejs)
 command -v npm >/dev/null 2>&1 || need+=(npm)
 dpkg -s chromium >/dev/null 2>&1 || command -v chromium >/dev/null 2>&1 || need+=(chromium)
+# The `canvas` package (jsdom's 2D canvas and image decoding, for crates/essl-gl-node's tests)
+# builds from source where its prebuilt binary cannot be downloaded: Cairo's, Pango's and the
+# image libraries' headers, and a C++ compiler.
+for p in libcairo2-dev libpango1.0-dev libjpeg-dev libgif-dev librsvg2-dev g++ make; do
+    dpkg -s "$p" >/dev/null 2>&1 || need+=("$p")
+done
 if [ "${ESSL_SETUP_EXTRAS:-0}" = 1 ]; then
     for p in glslang-tools hyperfine; do
         dpkg -s "$p" >/dev/null 2>&1 || need+=("$p")

@@ -28,6 +28,10 @@ cd crates/essl-gl-node
 stamp=node_modules/.essl-lock
 if ! { [ -f "$stamp" ] && cmp -s package-lock.json "$stamp"; }; then
     npm ci --no-audit --no-fund --ignore-scripts --loglevel=error
+    # node-gyp takes Node's headers from the installation when it has them, rather than
+    # downloading them from nodejs.org.
+    nodedir="$(dirname "$(dirname "$(command -v node)")")"
+    if [ -f "$nodedir/include/node/node_api.h" ]; then export npm_config_nodedir="$nodedir"; fi
     if ! npm rebuild canvas --loglevel=error >/dev/null 2>&1; then
         echo "test-gl-node: the canvas package did not build; it is removed (jsdom then has no 2D canvas)" >&2
         rm -rf node_modules/canvas
