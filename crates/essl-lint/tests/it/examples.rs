@@ -2,18 +2,16 @@
 //! two `glsl` blocks are taken from the page ([`essl_lint::Rule::doc`]) and compiled in a
 //! fragment shader whose declarations (what a block names but does not declare) are below.
 
-use essl::source::SourceFile;
-use essl::{compile, CompileOptions, Stage};
 use essl_lint::{lint, LintOptions, RULES};
 
-/// What a rule's blocks need: the declarations outside `main`, the statements before the
-/// *Example* block, those before the *Use instead* block (which may use what the *Example*
-/// declared), and the value the shader writes out (so that nothing is dead code).
+/// What a rule's blocks need: the declarations outside `main`, the statements before both
+/// blocks, the statements of the *Example* that the *Use instead* block uses without declaring
+/// them, and the value the shader writes out (so that nothing is dead code).
 struct Setting {
     rule: &'static str,
     globals: &'static str,
     before: &'static str,
-    before_instead: &'static str,
+    instead_needs: &'static str,
     sink: &'static str,
 }
 
@@ -28,70 +26,70 @@ const SETTINGS: &[Setting] = &[
         globals: "struct Light { vec3 direction; };\nuniform Light light;\n\
                   struct SpotLightEx { vec3 up; };\nuniform SpotLightEx spotLightEx;",
         before: "",
-        before_instead: "float upCos = dot(light.direction, spotLightEx.up);",
+        instead_needs: "float upCos = dot(light.direction, spotLightEx.up);",
         sink: "upAngle",
     },
     Setting {
         rule: "asin-domain",
         globals: "in vec3 v_position;",
         before: "vec3 p = v_position;",
-        before_instead: "vec3 p = v_position;",
+        instead_needs: "",
         sink: "lat",
     },
     Setting {
         rule: "division-by-difference",
         globals: DOT_FROM_DIRECTION,
         before: FROM_DIRECTION,
-        before_instead: FROM_DIRECTION,
+        instead_needs: "",
         sink: "inLight",
     },
     Setting {
         rule: "domain-atan2",
         globals: "uniform sampler2D u_normalMap;\nin vec2 v_uv;",
         before: "",
-        before_instead: "vec3 n = texture(u_normalMap, v_uv).xyz * 2.0 - 1.0;",
+        instead_needs: "vec3 n = texture(u_normalMap, v_uv).xyz * 2.0 - 1.0;",
         sink: "phi",
     },
     Setting {
         rule: "domain-integer-division",
         globals: "in vec2 v_uv;\nflat in int v_index;",
         before: "int index = v_index;",
-        before_instead: "int index = v_index;\nint bands = int(v_uv.x * 4.0);",
+        instead_needs: "int bands = int(v_uv.x * 4.0);",
         sink: "float(cell)",
     },
     Setting {
         rule: "domain-inversesqrt",
         globals: "in vec3 v_normal;\nin vec3 v_surfaceToLight;",
         before: "vec3 n = normalize(v_normal);\nvec3 l = normalize(v_surfaceToLight);",
-        before_instead: "vec3 n = normalize(v_normal);\nvec3 l = normalize(v_surfaceToLight);",
+        instead_needs: "",
         sink: "k",
     },
     Setting {
         rule: "domain-log",
         globals: "uniform sampler2D u_hdr;\nin vec2 v_uv;",
         before: "",
-        before_instead: "",
+        instead_needs: "",
         sink: "logLum",
     },
     Setting {
         rule: "domain-sqrt",
         globals: "in vec3 v_normal;\nin vec3 v_surfaceToView;",
         before: "float NdotV = dot(normalize(v_normal), normalize(v_surfaceToView));",
-        before_instead: "float NdotV = dot(normalize(v_normal), normalize(v_surfaceToView));",
+        instead_needs: "",
         sink: "sinTheta",
     },
     Setting {
         rule: "mediump-overflow",
         globals: "precision mediump float;",
         before: "",
-        before_instead: "",
+        instead_needs: "",
         sink: "falloff",
     },
     Setting {
         rule: "non-uniform-derivative",
         globals: "uniform sampler2D u_detail;\nin vec2 v_uv;",
         before: "vec4 color = vec4(0.0);",
-        before_instead: "vec4 color = vec4(0.0);",
+        instead_needs: "",
         sink: "color.x",
     },
     Setting {
@@ -99,15 +97,14 @@ const SETTINGS: &[Setting] = &[
         globals: "struct SpotLightEx { vec3 up; };\nuniform SpotLightEx spotLightEx;\n\
                   struct SpotLight { vec3 direction; };\nuniform SpotLight spotLight;",
         before: "",
-        before_instead: "",
+        instead_needs: "",
         sink: "left.x",
     },
     Setting {
         rule: "pow-negative-base",
         globals: "in vec3 v_normal;\nin vec3 v_halfVector;\nuniform float u_shininess;",
         before: "vec3 normal = normalize(v_normal);\nvec3 halfVector = normalize(v_halfVector);",
-        before_instead: "vec3 normal = normalize(v_normal);\n\
-                         vec3 halfVector = normalize(v_halfVector);",
+        instead_needs: "",
         sink: "specular",
     },
     Setting {
@@ -115,29 +112,28 @@ const SETTINGS: &[Setting] = &[
         globals: "in vec3 v_normal;\nin vec3 v_surfaceToLight;\nuniform float u_k;",
         before: "vec3 n = normalize(v_normal);\nvec3 l = normalize(v_surfaceToLight);\n\
                  float k = u_k;",
-        before_instead: "vec3 n = normalize(v_normal);\nvec3 l = normalize(v_surfaceToLight);\n\
-                         float k = u_k;",
+        instead_needs: "",
         sink: "f",
     },
     Setting {
         rule: "smoothstep-edges",
         globals: DOT_FROM_DIRECTION,
         before: FROM_DIRECTION,
-        before_instead: FROM_DIRECTION,
+        instead_needs: "",
         sink: "inLight",
     },
     Setting {
         rule: "smoothstep-reversed-constant",
         globals: "in vec2 v_uv;",
         before: "vec2 d = v_uv - 0.5;",
-        before_instead: "vec2 d = v_uv - 0.5;",
+        instead_needs: "",
         sink: "a",
     },
     Setting {
         rule: "texel-fetch-range",
         globals: "uniform sampler2D u_image;",
         before: "",
-        before_instead: "",
+        instead_needs: "",
         sink: "left.x",
     },
     Setting {
@@ -147,16 +143,14 @@ const SETTINGS: &[Setting] = &[
         before: "vec4 coord = v_shadowCoord / v_shadowCoord.w;\n\
                  bool inFrustum = all(greaterThanEqual(coord.xyz, vec3(0.0))) && \
                  all(lessThanEqual(coord.xyz, vec3(1.0)));\nvec3 color = vec3(1.0);",
-        before_instead: "vec4 coord = v_shadowCoord / v_shadowCoord.w;\n\
-                         bool inFrustum = all(greaterThanEqual(coord.xyz, vec3(0.0))) && \
-                         all(lessThanEqual(coord.xyz, vec3(1.0)));\nvec3 color = vec3(1.0);",
+        instead_needs: "",
         sink: "color.x",
     },
     Setting {
         rule: "unused-essl-allow",
         globals: "in float v_d;",
         before: "float d = v_d;",
-        before_instead: "float d = v_d;",
+        instead_needs: "",
         sink: "f",
     },
 ];
@@ -213,16 +207,7 @@ fn shader(s: &Setting, before: &str, code: &str) -> String {
 /// The findings of `rule` in `text`, notes included (severity and line), after checking that
 /// the shader compiles.
 fn findings(rule: &str, text: &str) -> Vec<String> {
-    let s = compile(
-        SourceFile::new("example.frag", text.to_string()),
-        Stage::Fragment,
-        &CompileOptions::default(),
-    );
-    assert!(
-        s.ok() && s.naga.is_some(),
-        "{rule}: the page's block does not compile:\n{text}\n{:#?}",
-        s.diagnostics
-    );
+    let s = super::compiled(&format!("{rule}.frag"), text);
     lint(&s, &LintOptions::default().notes(true))
         .into_iter()
         .filter(|d| d.code == rule)
@@ -262,7 +247,8 @@ fn each_page_example_is_reported_and_its_fix_is_quiet() {
                 s.rule
             ));
         }
-        let instead = shader(s, s.before_instead, block(rule.doc, "Use instead"));
+        let before_instead = format!("{}\n{}", s.before, s.instead_needs);
+        let instead = shader(s, &before_instead, block(rule.doc, "Use instead"));
         let found = findings(s.rule, &instead);
         if !found.is_empty() {
             wrong.push(format!(

@@ -20,17 +20,7 @@ fn frag(precision: &str, decls: &str, body: &str) -> String {
 }
 
 fn compiled(text: &str) -> Shader {
-    let s = compile(
-        SourceFile::new("t.frag", text.to_string()),
-        Stage::Fragment,
-        &CompileOptions::default(),
-    );
-    assert!(
-        s.ok() && s.naga.is_some(),
-        "does not compile:\n{text}\n{:#?}",
-        s.diagnostics
-    );
-    s
+    super::compiled("t.frag", text)
 }
 
 /// (rule, condition, text of the span) of every precondition but the `non-finite-uniform`

@@ -27,16 +27,7 @@ fn shader(precision: &str, body: &str) -> String {
 /// The findings of `rule` in `body`, notes included: (severity, source line).
 fn found(precision: &str, rule: &str, body: &str) -> Vec<(Severity, String)> {
     let text = shader(precision, body);
-    let s = compile(
-        SourceFile::new("t.frag", text.clone()),
-        Stage::Fragment,
-        &CompileOptions::default(),
-    );
-    assert!(
-        s.ok() && s.naga.is_some(),
-        "does not compile:\n{text}\n{:#?}",
-        s.diagnostics
-    );
+    let s = super::compiled("t.frag", &text);
     lint(&s, &LintOptions::default().notes(true))
         .into_iter()
         .filter(|d| d.code == rule)

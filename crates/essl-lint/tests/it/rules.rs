@@ -18,18 +18,7 @@ fn frag(precision: &str, decls: &str, body: &str) -> String {
 }
 
 fn compiled(text: &str) -> Shader {
-    let s = compile(
-        SourceFile::new("t.frag", text.to_string()),
-        Stage::Fragment,
-        &CompileOptions::default(),
-    );
-    assert!(s.ok(), "does not compile:\n{text}\n{:#?}", s.diagnostics);
-    assert!(
-        s.naga.is_some(),
-        "not lowered:\n{text}\n{:#?}",
-        s.diagnostics
-    );
-    s
+    super::compiled("t.frag", text)
 }
 
 /// The findings: (rule, the text of the span).
