@@ -48,9 +48,11 @@ impl Facts {
     pub const CROSS: Facts = Facts(128);
     /// Depends on a uniform's value.
     pub const UNIFORM: Facts = Facts(256);
-    /// Depends on a shader input (attribute, varying, built-in input).
+    /// Depends on a shader input (attribute, varying, built-in input) other than through a
+    /// texture read's coordinates: a value that varies from pixel to pixel.
     pub const INPUT: Facts = Facts(512);
-    /// Depends on a texel.
+    /// Depends on a texel, or on an input whose name says it holds a colour or a normal: a value
+    /// that holds over whole regions of the picture.
     pub const TEXTURE: Facts = Facts(1024);
     /// The dependency bits.
     pub const DEPS: Facts = Facts(256 | 512 | 1024);

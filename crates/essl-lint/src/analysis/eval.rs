@@ -5,7 +5,7 @@
 use naga::{Expression as E, Handle, ScalarKind, TypeInner, UnaryOperator as Uo};
 
 use super::memory::{const_value, literal, pointee, read, shape};
-use super::{Analysis, Mode, Place, Root, Site, ANY, EPS};
+use super::{names, Analysis, Mode, Place, Root, Site, ANY, EPS};
 use crate::interval::Interval;
 use crate::value::{Facts, Num, Val};
 
@@ -99,6 +99,15 @@ impl Analysis {
         })
     }
 
+    /// Where a texel read at `coordinate` comes from: a texture, and the uniforms the coordinate
+    /// reads. Not the coordinate's inputs: the texel is constant over whole regions of the
+    /// picture (where the texture is), not a value that varies per pixel as the inputs do.
+    fn texel_deps(&self, id: usize, coordinate: Handle<E>) -> Facts {
+        self.deps_of(id, &[coordinate])
+            .without(Facts::INPUT)
+            .with(Facts::TEXTURE)
+    }
+
     /// The value (and place) of a constant, an argument, a variable, a call's result, a part of
     /// a variable, or of anything the entry point computes; `None` for other operations.
     fn variable(
@@ -134,11 +143,22 @@ impl Analysis {
                     TypeInner::Pointer { .. } | TypeInner::ValuePointer { .. }
                 ) {
                     return at(Root::Arg(id, *i as usize));
-                } else if entry {
-                    self.external(module, ty, Facts::INPUT)
                 } else {
-                    self.reads.borrow_mut().args.insert(id);
-                    self.args[id].get(*i as usize).cloned().unwrap_or(Val::Any)
+                    let name = s.f.arguments[*i as usize].name.as_deref();
+                    let kind = names::kind(name, ty);
+                    if entry {
+                        match kind {
+                            Some(k) => self.named(module, ty, k),
+                            None => self.external(module, ty, Facts::INPUT),
+                        }
+                    } else {
+                        self.reads.borrow_mut().args.insert(id);
+                        let v = self.args[id].get(*i as usize).cloned().unwrap_or(Val::Any);
+                        match kind {
+                            Some(k) if names::as_such(&v) => self.named(module, ty, k),
+                            _ => v,
+                        }
+                    }
                 }
             }
             E::GlobalVariable(g) => return at(Root::Global(g.index())),
@@ -213,7 +233,7 @@ impl Analysis {
                 depth_ref,
                 ..
             } => {
-                let deps = self.deps_of(id, &[*coordinate]).with(Facts::TEXTURE);
+                let deps = self.texel_deps(id, *coordinate);
                 if depth_ref.is_some() {
                     Val::Num(Num::scalar(Interval::UNIT, deps.with(Facts::EXT)))
                 } else {
@@ -221,7 +241,7 @@ impl Analysis {
                 }
             }
             E::ImageLoad { coordinate, .. } => {
-                let deps = self.deps_of(id, &[*coordinate]).with(Facts::TEXTURE);
+                let deps = self.texel_deps(id, *coordinate);
                 self.texel(module, ty, deps)
             }
             // Sizes, levels, layers and samples of a bound (complete) texture: at least 1.
@@ -322,7 +342,7 @@ impl Analysis {
     }
 
     /// A texel: unknown in [`Mode::Sound`], in `[0, 1]` in [`Mode::Typical`].
-    fn texel(&self, module: &naga::Module, ty: &TypeInner, deps: Facts) -> Val {
+    pub(super) fn texel(&self, module: &naga::Module, ty: &TypeInner, deps: Facts) -> Val {
         match self.mode {
             Mode::Sound => self.external(module, ty, deps),
             Mode::Typical => shape(module, ty, &|n, _| {

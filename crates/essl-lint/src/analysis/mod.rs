@@ -31,7 +31,8 @@
 //! - `binary`: the arithmetic operators, on numbers and on matrices;
 //! - `algebra`: signs intervals lose in polynomial shapes (squares in products, completed
 //!   squares);
-//! - `math`: the built-in functions, by family.
+//! - `math`: the built-in functions, by family;
+//! - `names`: what an input's name says it holds (a colour, a normal).
 
 mod algebra;
 mod binary;
@@ -41,6 +42,7 @@ mod eval;
 mod flow;
 mod math;
 mod memory;
+mod names;
 mod relational;
 mod same;
 mod series;

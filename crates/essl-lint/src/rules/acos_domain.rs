@@ -12,8 +12,10 @@ declare_rule! {
     /// Reports `acos(x)` where the shader computes `x` and cannot guarantee `-1 ≤ x ≤ 1`. The classic
     /// case is the cosine of an angle as a dot product of unit vectors: mathematically in `[-1, 1]`,
     /// but `normalize` and `dot` round, and the result can be `1.0000001`; likewise a component
-    /// over the vector's length (`acos(p.z / length(p))`, a polar angle). An argument that is a
-    /// uniform as such (`acos(u_coneCos)`) is not reported: the runtime check validates uniform values.
+    /// over the vector's length (`acos(p.z / length(p))`, a polar angle), and a component of a
+    /// normal (`acos(normal.z)` of an input whose name says it holds one: a unit vector, in
+    /// `[-1, 1]` only as exactly as it was normalised). An argument that is a uniform as such
+    /// (`acos(u_coneCos)`) is not reported: the runtime check validates uniform values.
     ///
     /// ## Why is this bad?
     /// GLSL ES 3.00 leaves `acos(x)` undefined for `|x| > 1` (§8.1); GPUs return NaN. The NaN appears
@@ -36,7 +38,8 @@ declare_rule! {
     /// ## What it does not flag
     /// - An argument the shader clamps (`clamp(c, -1.0, 1.0)`, `min(max(c, -1.0), 1.0)`, `sin`/`cos` of
     ///   anything) or a guard keeps in range (`abs(c) <= 1.0 ? acos(c) : 0.0`).
-    /// - A uniform or input as such (`acos(u_coneCos)`): the runtime check validates uniform values.
+    /// - A uniform or input as such (`acos(u_coneCos)`, `acos(v_t)`): the runtime check validates
+    ///   uniform values, and an input's range is its producer's.
     ///
     /// A dot product of unit vectors is in [-1, 1] in exact arithmetic only: it is reported, with a
     /// message that says rounding is the cause and the clamp as the fix.

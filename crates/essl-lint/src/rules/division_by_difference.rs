@@ -18,7 +18,9 @@ declare_rule! {
     /// divisor the shader guards (`max(limitRange, 1e-4)`) or can order itself (`u_r + 0.1 - u_r`) is
     /// not reported. A difference of texel values is reported where it is 0 at an end of the texels'
     /// range: `1.0 - k` for `k = min(1.0 - c.r, min(1.0 - c.g, 1.0 - c.b))` of a texel's colour `c`
-    /// is 0 for every black texel, `1.0 - c.a` for every opaque one.
+    /// is 0 for every black texel, `1.0 - c.a` for every opaque one. An input whose name says it
+    /// holds a colour (`v_color`, a function's `vec3 rgb` its callers pass an input to) counts as
+    /// a texel: black and white are ordinary colours.
     ///
     /// ## Why is this bad?
     /// Two parameters a user sets independently are equal sooner or later — a spot light with the
@@ -126,11 +128,11 @@ fn check(cx: &Cx, out: &mut Vec<Diagnostic>) {
             let mut diag = if texel {
                 Diagnostic::rule_warning(
                     DivisionByDifference::RULE.id,
-                    "division by a difference that is zero for ordinary texels",
+                    "division by a difference that is zero for ordinary texels or colours",
                     span,
                 )
                 .with_label(format!(
-                    "{what} is 0 where a texel it reads is at an end of its range (black, white, transparent)"
+                    "{what} is 0 where a texel or colour it reads is at an end of its range (black, white, transparent)"
                 ))
             } else {
                 Diagnostic::rule_warning(

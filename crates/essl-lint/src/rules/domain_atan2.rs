@@ -17,7 +17,12 @@ declare_rule! {
     /// - two components of one texel or of a vector computed from texels, uniforms and constants
     ///   only (`atan(n.y, n.x)` of a normal-map texel, unpacked, normalised or turned by a
     ///   uniform matrix, wherever the texture is read): both are 0 wherever the texel lies along
-    ///   the third axis — every flat part of a normal map;
+    ///   the third axis — every flat part of a normal map; the same for a vector computed from a
+    ///   colour (`atan(lab.z, lab.y)` of a texel's Lab form: both 0 for every black texel);
+    /// - two components of a normal: an input whose name says it holds one (`v_normal`, a
+    ///   function's `vec3 normal` its callers pass an input to), alone, normalised or turned by a
+    ///   uniform matrix, is the same over every flat face, and lies along the third axis on every
+    ///   face that faces that way;
     /// - values that are 0 over a region (a clamp saturating at 0, a texel) or for a whole draw
     ///   (uniforms and constants).
     ///
@@ -97,7 +102,7 @@ fn check(cx: &Cx, out: &mut Vec<Diagnostic>) {
                 continue;
             }
             let label = if axis {
-                "both are components of one direction: 0 when it lies along the third axis"
+                "both are components of one vector: 0 wherever it lies along the third axis"
             } else {
                 "both can be 0 over a whole region, or for the whole draw"
             };
@@ -178,55 +183,9 @@ fn components_of_direction(cx: &Cx, f: &Function, id: usize, y: Handle<E>, x: Ha
     let Some(v) = cx.sound().num(id, by) else {
         return false;
     };
-    // A texel (a normal map, read at coordinates from an input or not) is the same direction
-    // over a whole flat region; a direction that also varies per pixel through something
-    // else (a view ray, a normal map turned by an interpolated tangent frame, a position) passes
-    // the axis at isolated points.
-    v.n >= 3 && v.facts.any(Facts::TEXTURE) && from_texels(cx, f, id, by, &mut Vec::new())
-}
-
-/// Whether `h` is computed from texels, uniforms and constants only (the coordinates of the
-/// texture reads aside). A local's value is every value stored into it whole; `seen` holds
-/// the locals being followed (a value computed from the same local's earlier value).
-fn from_texels(cx: &Cx, f: &Function, id: usize, h: Handle<E>, seen: &mut Vec<usize>) -> bool {
-    if seen.len() > 8 {
-        return false;
-    }
-    let h = crate::symbolic::resolve(f, cx.sound(), id, h);
-    match f.expressions[h] {
-        E::ImageSample { .. }
-        | E::ImageLoad { .. }
-        | E::Literal(_)
-        | E::Constant(_)
-        | E::ZeroValue(_) => true,
-        E::Load { mut pointer } => loop {
-            match f.expressions[pointer] {
-                E::AccessIndex { base, .. } | E::Access { base, .. } => pointer = base,
-                E::GlobalVariable(g) => {
-                    break cx.module.global_variables[g].space == naga::AddressSpace::Uniform
-                }
-                E::LocalVariable(l) => {
-                    if seen.contains(&l.index()) {
-                        break true;
-                    }
-                    let mut values: Vec<Handle<E>> = cx.sound().functions[id]
-                        .stores
-                        .get(&l.index())
-                        .cloned()
-                        .unwrap_or_default();
-                    values.extend(f.local_variables[l].init);
-                    seen.push(l.index());
-                    let all = !values.is_empty()
-                        && values.into_iter().all(|v| from_texels(cx, f, id, v, seen));
-                    seen.pop();
-                    break all;
-                }
-                _ => break false,
-            }
-        },
-        ref e => {
-            let ops = super::context::operands(e);
-            !ops.is_empty() && ops.into_iter().all(|o| from_texels(cx, f, id, o, seen))
-        }
-    }
+    // A texel (a normal map, read at coordinates from an input or not) or a normal is the same
+    // direction over a whole flat region; a direction that also varies per pixel through
+    // something else (a view ray, a normal map turned by an interpolated tangent frame, a
+    // position) passes the axis at isolated points.
+    v.n >= 3 && v.facts.any(Facts::TEXTURE) && !v.facts.any(Facts::INPUT)
 }

@@ -11,7 +11,7 @@ use essl::{compile, CompileOptions, Stage};
 use essl_lint::{lint, LintOptions};
 
 /// A fragment shader with `body` in `main`; `n` and `l` are unit vectors from varyings, `t` a
-/// texel read at a varying's coordinates.
+/// texel read at a varying's coordinates; `v_normal` and `v_color` are named for what they hold.
 fn shader(precision: &str, body: &str) -> String {
     format!(
         "#version 300 es\nprecision {precision} float;\nprecision highp int;\n\
@@ -19,6 +19,7 @@ fn shader(precision: &str, body: &str) -> String {
          uniform float u_a; uniform float u_b; uniform float u_k; uniform vec3 u_up; uniform vec3 u_dir;\n\
          uniform sampler2D u_tex;\n\
          in vec3 v_n; in vec3 v_h; in vec3 v_pos; in float v_x; in vec2 v_uv;\n\
+         in vec3 v_normal; in vec4 v_color;\n\
          out vec4 o;\nvoid main() {{\n  float r = 0.0;\n  vec3 n = normalize(v_n);\n  \
          vec3 l = normalize(v_h);\n  vec4 t = texture(u_tex, v_uv);\n{body}\n  o = vec4(r);\n}}\n"
     )
@@ -120,9 +121,28 @@ const HAZARDS: &[Hazard] = &[
         W,
     ),
     ("domain-atan2", "uniform", "  r = atan(u_a - 1.0, u_b - 1.0);", W),
+    (
+        "domain-atan2",
+        "named",
+        "  vec3 nn = normalize(v_normal);\n  r = atan(nn.y, nn.x);",
+        W,
+    ),
+    ("acos-domain", "named", "  r = acos(v_normal.z);", W),
+    (
+        "division-by-difference",
+        "named",
+        "  float k = min(1.0 - v_color.r, 1.0 - v_color.g);\n  r = v_color.b / (1.0 - k);",
+        W,
+    ),
     ("domain-integer-division", "varying", "  int k = int(v_x * 4.0);\n  r = float(12 / k);", W),
     ("domain-integer-division", "texture", "  int k = int(t.r * 4.0);\n  r = float(12 % k);", W),
     ("domain-integer-division", "uniform", "  r = float(12 / int(u_a));", N),
+    (
+        "domain-integer-division",
+        "computed",
+        "  int c = int(floor(v_x * 8.0 - 4.0));\n  r = float(c % 2);",
+        W,
+    ),
     (
         "domain-integer-division",
         "computed",
@@ -259,6 +279,28 @@ const HAZARDS: &[Hazard] = &[
 
 /// The guarded twins: (rule, body) with no finding of the rule, notes included.
 const GUARDED: &[(&str, &str)] = &[
+    // A direction not named a normal, and one that varies per pixel through a view ray: the
+    // axis at isolated pixels.
+    ("domain-atan2", "  vec3 nn = normalize(v_h);\n  r = atan(nn.y, nn.x);"),
+    (
+        "domain-atan2",
+        "  vec3 nn = reflect(normalize(v_pos), normalize(v_normal));\n  r = atan(nn.z, nn.x);",
+    ),
+    ("acos-domain", "  r = acos(clamp(v_normal.z, -1.0, 1.0));"),
+    (
+        "domain-integer-division",
+        "  int c = int(floor(v_x * 8.0 - 4.0));\n  r = float(abs(c) % 2);",
+    ),
+    (
+        "domain-integer-division",
+        "  int c = int(floor(v_x * 8.0 - 4.0));\n  if (c >= 0) { r = float(c % 2); }",
+    ),
+    // An input as such is the caller's to keep non-negative.
+    ("domain-integer-division", "  r = float(int(v_x) % 2);"),
+    (
+        "division-by-difference",
+        "  float k = min(1.0 - v_color.r, 1.0 - v_color.g);\n  r = v_color.b / max(1.0 - k, 1e-4);",
+    ),
     ("pow-negative-base", "  r = pow(max(dot(n, l), 0.0), u_k);"),
     ("pow-negative-base", "  r = pow(clamp(t.r - 0.5, 0.0, 1.0), 2.2);"),
     ("pow-zero-base", "  r = pow(max(dot(n, l), 1e-4), u_k - 1.0);"),
@@ -595,5 +637,39 @@ fn every_classified_true_positive_is_still_reported() {
         missing.is_empty(),
         "no longer reported:\n{}",
         missing.join("\n")
+    );
+}
+
+/// A parameter takes its name's word only where callers pass an input as such (the way a
+/// library function is called from a harness, or a helper with a varying): `rgb` a colour, where
+/// black is ordinary, `normal` a unit normal, along an axis over whole faces.
+#[test]
+fn parameters_named_for_a_colour_or_a_normal() {
+    let helpers = "float mmin(vec3 v) { return min(v.x, min(v.y, v.z)); }\n\
+        vec3 toCmy(vec3 rgb) { float k = mmin(1.0 - rgb); return (1.0 - rgb - k) / (1.0 - k); }\n\
+        float azimuth(vec3 normal) { return atan(normal.y, normal.x); }\n\
+        float polar(vec3 normal) { return acos(normal.z); }\n";
+    let run = |call: &str| {
+        let text = format!(
+            "#version 300 es\nprecision highp float;\nin vec3 v_a; in vec3 v_pos;\nuniform vec3 u_eye;\n\
+             out vec4 o;\n{helpers}void main() {{ {call} }}\n"
+        );
+        let s = super::compiled("t.frag", &text);
+        let mut codes: Vec<&str> = lint(&s, &LintOptions::default().notes(true))
+            .into_iter()
+            .map(|d| d.code)
+            .collect();
+        codes.sort();
+        codes
+    };
+    assert_eq!(
+        run("o = vec4(toCmy(v_a), azimuth(v_a) + polar(v_a));"),
+        ["acos-domain", "division-by-difference", "domain-atan2"]
+    );
+    // A view direction passed under the name: per pixel, the axis at isolated pixels; `acos` of
+    // its component is rounding's hazard still.
+    assert_eq!(
+        run("vec3 d = normalize(v_pos - u_eye); o = vec4(azimuth(d) + polar(d));"),
+        ["acos-domain"]
     );
 }

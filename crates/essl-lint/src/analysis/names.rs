@@ -1,0 +1,151 @@
+//! What an input's name says it holds: a colour or a normal.
+//!
+//! An input as such — a varying or attribute, or the parameter of a function whose callers pass
+//! one unchanged — is unknown to the analysis, and a rule leaves a hazard that needs particular
+//! values of it to whoever supplies them. A reviewer reads the name instead: `rgb2cmyk(vec3 rgb)`
+//! is written for colours, and black is an ordinary colour; `decimateNormal(vec3 normal)` for
+//! unit normals, which lie along an axis over every face that faces that way. So an input whose
+//! name says *colour* (`rgb`, `color`, `vColor`, `albedo`) gets a texel's value (per region,
+//! `[0, 1]` in [`Mode::Typical`]), and a `vec3` whose name says *normal* (`normal`, `v_normal`,
+//! `nor`) the value of a unit vector that, like a texel, holds over whole regions
+//! ([`Facts::TEXTURE`] rather than [`Facts::INPUT`]; in [`Mode::Typical`] the ordinary
+//! non-negative magnitudes of every external value).
+//!
+//! Only inputs as such take a name's word: a value the caller computes (a position, arithmetic, a
+//! uniform) keeps what the analysis knows of it, whatever the parameter is called.
+//!
+//! The word lists are written by hand, from the names WebGL code gives colours and normals, and
+//! checked on the lint corpora (`docs/lints/corpus.md`): no finding there comes from a name that
+//! meant something else.
+
+use naga::{ScalarKind, TypeInner};
+
+use super::{Analysis, Mode, EPS};
+use crate::interval::Interval;
+use crate::value::{Facts, Num, Val};
+
+/// What a name says an input holds.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(super) enum Kind {
+    /// A colour: components in `[0, 1]`, black and white over whole regions.
+    Colour,
+    /// A unit normal, the same over every flat face.
+    Normal,
+}
+
+/// Words that name a colour.
+const COLOUR: &[&str] = &[
+    "color", "colour", "col", "rgb", "rgba", "srgb", "albedo", "tint",
+];
+/// Words that name a normal.
+const NORMAL: &[&str] = &["normal", "normals", "nor", "nrm"];
+
+/// The words of an identifier, lower-cased: split at `_`, digits and lower-to-upper case changes
+/// (`v_normalWorld2` → `v`, `normal`, `world`).
+fn words(name: &str) -> Vec<String> {
+    let mut out = Vec::new();
+    let mut cur = String::new();
+    let mut prev_lower = false;
+    for ch in name.chars() {
+        if !ch.is_ascii_alphabetic() {
+            if !cur.is_empty() {
+                out.push(std::mem::take(&mut cur));
+            }
+            prev_lower = false;
+            continue;
+        }
+        if ch.is_ascii_uppercase() && prev_lower && !cur.is_empty() {
+            out.push(std::mem::take(&mut cur));
+        }
+        prev_lower = ch.is_ascii_lowercase();
+        cur.push(ch.to_ascii_lowercase());
+    }
+    if !cur.is_empty() {
+        out.push(cur);
+    }
+    out
+}
+
+/// What `name` says a value of type `ty` holds: a colour for a float `vec3` or `vec4`, a normal
+/// for a float `vec3`.
+pub(super) fn kind(name: Option<&str>, ty: &TypeInner) -> Option<Kind> {
+    let TypeInner::Vector { size, scalar } = ty else {
+        return None;
+    };
+    if scalar.kind != ScalarKind::Float {
+        return None;
+    }
+    let n = *size as u8;
+    let ws = words(name?);
+    let has = |list: &[&str]| ws.iter().any(|w| list.contains(&w.as_str()));
+    if n == 3 && has(NORMAL) {
+        Some(Kind::Normal)
+    } else if n >= 3 && has(COLOUR) {
+        Some(Kind::Colour)
+    } else {
+        None
+    }
+}
+
+/// Whether `v` is an input as such: an external value from the shader's inputs (and texels),
+/// not a uniform, through copies and swizzles only — at some call at least, where others pass a
+/// texel or an input a name has given a value.
+pub(super) fn as_such(v: &Val) -> bool {
+    matches!(v, Val::Num(n) if n.facts.has(Facts::EXT)
+        && n.facts.any(Facts::INPUT)
+        && !n.facts.any(Facts::UNIFORM))
+}
+
+impl Analysis {
+    /// The value of an input of type `ty` that holds what `kind` says.
+    pub(super) fn named(&self, module: &naga::Module, ty: &TypeInner, kind: Kind) -> Val {
+        match kind {
+            Kind::Colour => self.texel(module, ty, Facts::TEXTURE),
+            // The typical analysis keeps external values non-negative, the signs formulas
+            // expect (`mediump-overflow` asks about magnitudes), for normals too.
+            Kind::Normal if self.mode == Mode::Typical => self.external(module, ty, Facts::TEXTURE),
+            Kind::Normal => {
+                let one = Interval::new(1.0 - EPS, 1.0 + EPS);
+                let c = Interval::new(-one.hi, one.hi);
+                let mut r = Num::from_components(&[c; 3], Facts::NZ.with(Facts::TEXTURE));
+                r.norm = one;
+                Val::Num(r.settle())
+            }
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn words_split_at_underscores_digits_and_case() {
+        assert_eq!(words("v_normalWorld2"), ["v", "normal", "world"]);
+        assert_eq!(words("vRGB"), ["v", "rgb"]);
+        assert_eq!(words("normalMC"), ["normal", "mc"]);
+        assert_eq!(words("lh_vec3"), ["lh", "vec"]);
+    }
+
+    #[test]
+    fn kinds_need_the_word_and_the_type() {
+        let vec = |n| TypeInner::Vector {
+            size: match n {
+                2 => naga::VectorSize::Bi,
+                3 => naga::VectorSize::Tri,
+                _ => naga::VectorSize::Quad,
+            },
+            scalar: naga::Scalar::F32,
+        };
+        assert_eq!(kind(Some("vNormal"), &vec(3)), Some(Kind::Normal));
+        assert_eq!(kind(Some("nor"), &vec(3)), Some(Kind::Normal));
+        assert_eq!(kind(Some("rgb"), &vec(3)), Some(Kind::Colour));
+        assert_eq!(kind(Some("v_color"), &vec(4)), Some(Kind::Colour));
+        // Not a word of its own, or not the type.
+        assert_eq!(kind(Some("normalize"), &vec(3)), None);
+        assert_eq!(kind(Some("colorUv"), &vec(2)), None);
+        assert_eq!(kind(Some("vNormal"), &vec(4)), None);
+        assert_eq!(kind(Some("dir"), &vec(3)), None);
+        assert_eq!(kind(None, &vec(3)), None);
+    }
+}
