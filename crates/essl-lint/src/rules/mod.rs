@@ -6,6 +6,7 @@
 mod context;
 mod domain;
 mod flat;
+mod gradient;
 mod guards;
 pub(crate) mod origin;
 pub(crate) mod rule;

@@ -19,13 +19,17 @@ declare_rule! {
     ///   (`normalize(cross(spotLightEx.up, spotLight.direction))` for a spot light pointing straight
     ///   up or down; `cross(normal, vec3(0.0, 1.0, 0.0))` on a floor);
     /// - a sum or difference computed from uniforms and constants only — the same for every pixel of
-    ///   a draw, such as `normalize(u_target - u_eye)` or `normalize(u_a + u_b)`.
+    ///   a draw, such as `normalize(u_target - u_eye)` or `normalize(u_a + u_b)`;
+    /// - an image's gradient: a vector each of whose components is a weighted sum of reads of one
+    ///   channel of one texture with weights that sum to 0 (a Sobel or central difference,
+    ///   `vec2(r - l, t - b)`), the zero vector wherever the image is flat.
     ///
     /// Not reported: `normalize` of a uniform, an input or a texel itself (`normalize(v_normal)`; the
     /// runtime check validates uniform values), of a transformed vector (`normalize(mat3(u_world) *
     /// a_normal)`), and of per-pixel sums and differences such as `normalize(u_lightPos - v_position)`
     /// or a half vector `normalize(l + v)`: those vanish only at isolated points (the pixel that is at
-    /// the light's position), not for a whole draw.
+    /// the light's position), not for a whole draw. A gradient with a constant component
+    /// (`normalize(vec3(r - l, t - b, 1.0))`, a normal from a height map) is not zero.
     ///
     /// ## Why is this bad?
     /// `normalize(v)` is `v / length(v)`: for the zero vector it is `0 / 0`, NaN in every component.
@@ -63,8 +67,8 @@ declare_rule! {
     /// - Code essl does not lower: an inactive input read by dead code is no zero vector.
     ///
     /// Severity: a cross product with a vector fixed for the draw is a warning (a light pointing
-    /// straight down is ordinary); `normalize` of a per-draw difference is a note when one uniform alone
-    /// reaches it.
+    /// straight down is ordinary), as is a gradient (flat regions are in every picture);
+    /// `normalize` of a per-draw difference is a note when one uniform alone reaches it.
     ///
     /// ## References
     /// - GLSL ES 3.00 specification, §8.4 Geometric Functions (normalize: "a vector in the same
@@ -72,7 +76,7 @@ declare_rule! {
     /// - Article 003 (A-Frame projected-texture spot lights): `left = normalize(cross(up, direction))`.
     pub(crate) struct NormalizeZero {
         id: "normalize-zero",
-        summary: "`normalize(v)` of a cross product or per-draw difference that can be the zero vector",
+        summary: "`normalize(v)` of a cross product, per-draw difference or image gradient that can be the zero vector",
         default_level: Level::Warn,
         check: check,
     }
@@ -99,9 +103,16 @@ fn check(cx: &Cx, out: &mut Vec<Diagnostic>) {
             if v.n < 2 || !v.may_be_zero() || v.facts.has(Facts::NZ) {
                 continue;
             }
-            // A per-pixel vector that is not a cross product is left alone (below): the guards
-            // refine intervals and keep where a value comes from, so they need not be looked up.
-            if !v.facts.any(Facts::CROSS) && v.facts.any(Facts::INPUT.with(Facts::TEXTURE)) {
+            // A per-pixel vector that is not a cross product or an image's gradient is left
+            // alone (below): the guards refine intervals and keep where a value comes from, so
+            // they need not be looked up.
+            let gradient = !v.facts.any(Facts::CROSS)
+                && v.facts.any(Facts::TEXTURE)
+                && super::gradient::texel_gradient(cx, f, id, x);
+            if !v.facts.any(Facts::CROSS)
+                && v.facts.any(Facts::INPUT.with(Facts::TEXTURE))
+                && !gradient
+            {
                 continue;
             }
             // `dot(v, v) > 1e-12 ? normalize(v) : fallback`, `if (length(v) > 0.0)`.
@@ -120,13 +131,17 @@ fn check(cx: &Cx, out: &mut Vec<Diagnostic>) {
                 continue;
             }
             let per_draw = !v.facts.any(Facts::INPUT.with(Facts::TEXTURE));
-            if !cross && !per_draw {
+            if !cross && !per_draw && !gradient {
                 continue;
             }
             let span = cx.span(f, x);
             let what = cx.what(f, id, x);
             let label = if cross {
                 format!("{what} is the zero vector when its two vectors are parallel")
+            } else if gradient {
+                format!(
+                    "{what}, a difference of texels, is the zero vector wherever the image is flat"
+                )
             } else if v.facts.any(Facts::UNIFORM) {
                 format!("{what} is the zero vector for some values of the uniforms, for every pixel of the draw")
             } else {
@@ -142,7 +157,11 @@ fn check(cx: &Cx, out: &mut Vec<Diagnostic>) {
             .with_help(
                 "test the length first (`dot(v, v) > 1e-12`) and choose a fallback direction",
             );
-            out.push(if cross { d } else { cx.grade(d, &[(id, x)]) });
+            out.push(if cross || gradient {
+                d
+            } else {
+                cx.grade(d, &[(id, x)])
+            });
         }
     }
 }

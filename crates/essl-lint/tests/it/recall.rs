@@ -129,6 +129,14 @@ const HAZARDS: &[Hazard] = &[
     ),
     ("acos-domain", "named", "  r = acos(v_normal.z);", W),
     (
+        "normalize-zero",
+        "texture",
+        "  float dx = texture(u_tex, v_uv + vec2(0.01, 0.0)).r - texture(u_tex, v_uv - vec2(0.01, 0.0)).r;\n  \
+         float dy = texture(u_tex, v_uv + vec2(0.0, 0.01)).r - texture(u_tex, v_uv - vec2(0.0, 0.01)).r;\n  \
+         r = normalize(vec2(dx, dy)).x;",
+        W,
+    ),
+    (
         "division-by-difference",
         "named",
         "  float k = min(1.0 - v_color.r, 1.0 - v_color.g);\n  r = v_color.b / (1.0 - k);",
@@ -287,6 +295,19 @@ const GUARDED: &[(&str, &str)] = &[
         "  vec3 nn = reflect(normalize(v_pos), normalize(v_normal));\n  r = atan(nn.z, nn.x);",
     ),
     ("acos-domain", "  r = acos(clamp(v_normal.z, -1.0, 1.0));"),
+    // A normal from a height map has a constant component; a weighted sum whose weights do not
+    // cancel is no gradient.
+    (
+        "normalize-zero",
+        "  float dx = texture(u_tex, v_uv + vec2(0.01, 0.0)).r - texture(u_tex, v_uv - vec2(0.01, 0.0)).r;\n  \
+         float dy = texture(u_tex, v_uv + vec2(0.0, 0.01)).r - texture(u_tex, v_uv - vec2(0.0, 0.01)).r;\n  \
+         r = normalize(vec3(dx, dy, 1.0)).x;",
+    ),
+    (
+        "normalize-zero",
+        "  float a = texture(u_tex, v_uv + vec2(0.01, 0.0)).r;\n  float b = texture(u_tex, v_uv - vec2(0.01, 0.0)).r;\n  \
+         r = normalize(vec2(a - b, a + b + 0.5)).x;",
+    ),
     (
         "domain-integer-division",
         "  int c = int(floor(v_x * 8.0 - 4.0));\n  r = float(abs(c) % 2);",
