@@ -130,7 +130,13 @@ impl Analysis {
             | Bo::LogicalOr => {
                 return shape(module, ty, &|n, _| Num::splat(Interval::UNIT, n, deps));
             }
-            Bo::And | Bo::InclusiveOr | Bo::ExclusiveOr | Bo::ShiftLeft | Bo::ShiftRight => {
+            Bo::And | Bo::ShiftRight => {
+                return match (&lv, &rv) {
+                    (Val::Num(a), Val::Num(b)) => Val::Num(bits(op, a, b, deps)),
+                    _ => Self::unknown(module, ty, deps),
+                };
+            }
+            Bo::InclusiveOr | Bo::ExclusiveOr | Bo::ShiftLeft => {
                 return Self::unknown(module, ty, deps);
             }
             _ => {}
@@ -555,4 +561,29 @@ pub(super) fn triangle(a: Interval, b: Interval) -> Interval {
     }
     let lo = (a.lo - b.hi).max(b.lo - a.hi).max(0.0);
     Interval::new(lo, a.hi + b.hi).slack(EPS)
+}
+
+/// `a >> b` and `a & b` of integers: a right shift keeps a non-negative value between 0 and
+/// itself (and is non-negative whenever `a` is), `&` with a non-negative mask (either side) is
+/// between 0 and the mask (`(x >> 8) & 0xff` is in [0, 255]); otherwise unknown.
+fn bits(op: Bo, a: &Num, b: &Num, deps: Facts) -> Num {
+    let n = a.n.max(b.n);
+    let at = |x: &Num, i: usize| x.c[if x.n == 1 { 0 } else { i }];
+    let comps: Vec<Interval> = (0..n as usize)
+        .map(|i| {
+            let (x, y) = (at(a, i), at(b, i));
+            match op {
+                Bo::ShiftRight => Interval::new(x.lo.min(0.0), x.hi.max(0.0)),
+                _ if y.lo >= 0.0 && x.lo >= 0.0 => Interval::new(0.0, x.hi.min(y.hi)),
+                _ if y.lo >= 0.0 => Interval::new(0.0, y.hi),
+                _ if x.lo >= 0.0 => Interval::new(0.0, x.hi),
+                _ => Interval::FULL,
+            }
+        })
+        .collect();
+    let nn = match op {
+        Bo::ShiftRight => a.facts.has(Facts::NN),
+        _ => a.facts.has(Facts::NN) || b.facts.has(Facts::NN),
+    };
+    Num::from_components(&comps, deps.with(Facts::INTEGRAL).set(Facts::NN, nn)).settle()
 }

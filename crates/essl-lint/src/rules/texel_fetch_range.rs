@@ -19,7 +19,10 @@ declare_rule! {
     ///   texel, `ivec2(gl_FragCoord.xy) - ivec2(1, 0)`, is −1 on the first column;
     /// - a coordinate one or more texels past another without a clamp to the size —
     ///   `texel + ivec2(1, 0)` is past the last column when `texel` is on it;
-    /// - a level that can be negative.
+    /// - a level that can be negative;
+    /// - coordinates scaled by the size of one level (`ivec2(v_uv * vec2(textureSize(t, 0)))`)
+    ///   read at a level that can be above it (`texelFetch(t, c, int(u_lod))`): past the smaller
+    ///   level's size for most pixels (a mip viewer, a texture inspector).
     ///
     /// ## Why is this bad?
     /// GLSL ES 3.00 leaves `texelFetch` undefined outside the level's size (§8.9); WebGL 2.0 defines
@@ -49,6 +52,9 @@ declare_rule! {
     ///   2×2 block.
     /// - A coordinate from an input or a uniform as such (`ivec2(gl_FragCoord.xy)`, `ivec2(v_uv *
     ///   size)`): whether it fits the texture is the host's choice of sizes.
+    /// - Coordinates scaled by one level's size and brought to the level read by a shift or a
+    ///   division (`ivec2(v_uv * vec2(textureSize(t, 0))) >> lod`), or by the size of the level
+    ///   read itself (`textureSize(t, lod)`).
     /// - `texture` and `textureLod` on integer samplers: the wrap modes define every coordinate
     ///   there.
     ///
@@ -98,10 +104,13 @@ fn check(cx: &Cx, out: &mut Vec<Diagnostic>) {
             {
                 ("coordinate", coordinate, None)
             } else {
+                if let Some(d) = level_mismatch(cx, f, id, h) {
+                    out.push(d);
+                }
                 continue;
             };
             let label = match lo {
-                Some(lo) if lo.is_finite() => {
+                Some(lo) if lo > -1e6 => {
                     format!("this {what} can be as low as {}", fmt_num(lo))
                 }
                 Some(_) => format!("this {what} can be negative"),
@@ -243,4 +252,92 @@ fn past_a_texel(cx: &Cx, f: &Function, id: usize, c: Handle<E>) -> bool {
     };
     (positive(right) && !bounded(left) && !scaled(left, right))
         || (positive(left) && !bounded(right) && !scaled(right, left))
+}
+
+/// The finding for `texelFetch(t, c, level)` (`h`) whose coordinates `c` scale with the size of
+/// another level of `t` (`ivec2(v_uv * vec2(textureSize(t, 0)))` read at a level that can be
+/// above 0): past that level's size for most pixels. Coordinates divided or shifted by anything
+/// but a constant are left alone (`>> lod` scales them down to the level).
+fn level_mismatch(cx: &Cx, f: &Function, id: usize, h: Handle<E>) -> Option<Diagnostic> {
+    let E::ImageLoad {
+        image,
+        coordinate,
+        level: Some(level),
+        ..
+    } = f.expressions[h]
+    else {
+        return None;
+    };
+    let an = cx.sound();
+    let (query, sized) = size_query(cx, f, id, coordinate, image, 0)?;
+    let at = an.num(id, sized)?.hull().as_point()?;
+    let lv = an.num(id, level)?.hull();
+    if an.same(f, id, level, sized) || lv.hi <= at {
+        return None;
+    }
+    let span = cx.span(f, h);
+    let d = Diagnostic::rule_warning(
+        TexelFetchRange::RULE.id,
+        "`texelFetch` coordinates scaled by one level's size, read at another level, where `texelFetch` is undefined (WebGL returns 0)",
+        span,
+    )
+    .with_label(format!(
+        "read at this level, which can be above {}: a smaller level, whose size the coordinates pass",
+        fmt_num(at)
+    ))
+    .with_secondary(cx.span(f, query), format!("the size of level {}", fmt_num(at)))
+    .with_note("GLSL ES 3.00 §8.9: texelFetch is undefined outside the level; WebGL 2.0 §5.31 returns 0")
+    .with_help("scale the coordinates by the size of the level read: `textureSize(sampler, lod)`");
+    // A warning even where a uniform alone sets the level: choosing a level above the one the
+    // coordinates were scaled for is what the parameter is for.
+    Some(d)
+}
+
+/// A `textureSize(image, level)` query the coordinate `c` scales with, and its level: followed
+/// through arithmetic other than a division or shift by a non-constant.
+fn size_query(
+    cx: &Cx,
+    f: &Function,
+    id: usize,
+    c: Handle<E>,
+    image: Handle<E>,
+    depth: u32,
+) -> Option<(Handle<E>, Handle<E>)> {
+    if depth > 12 {
+        return None;
+    }
+    let c = resolve(f, cx.sound(), id, c);
+    match f.expressions[c] {
+        E::ImageQuery {
+            image: qi,
+            query: naga::ImageQuery::Size { level: Some(ql) },
+        } if same_image(f, qi, image) => Some((c, ql)),
+        E::Binary {
+            op: Bo::Divide | Bo::ShiftRight,
+            left,
+            right,
+        } => {
+            let constant = cx
+                .sound()
+                .num(id, right)
+                .is_some_and(|n| n.comps().iter().all(|x| x.as_point().is_some()));
+            if constant {
+                size_query(cx, f, id, left, image, depth + 1)
+            } else {
+                None
+            }
+        }
+        ref e => super::context::operands(e)
+            .into_iter()
+            .find_map(|o| size_query(cx, f, id, o, image, depth + 1)),
+    }
+}
+
+/// Whether two image expressions name the same global texture.
+fn same_image(f: &Function, a: Handle<E>, b: Handle<E>) -> bool {
+    a == b
+        || matches!(
+            (&f.expressions[a], &f.expressions[b]),
+            (E::GlobalVariable(x), E::GlobalVariable(y)) if x == y
+        )
 }

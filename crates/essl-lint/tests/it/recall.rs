@@ -177,6 +177,12 @@ const HAZARDS: &[Hazard] = &[
     ),
     ("texel-fetch-range", "uniform", "  r = texelFetch(u_tex, ivec2(0), int(u_a) - 1).r;", N),
     (
+        "texel-fetch-range",
+        "uniform",
+        "  ivec2 c = ivec2(v_uv * vec2(textureSize(u_tex, 0)));\n  r = texelFetch(u_tex, c, int(u_a)).r;",
+        W,
+    ),
+    (
         "uninitialised-read",
         "varying",
         "  float c;\n  if (v_x > 0.5) { c = 1.0; }\n  r = c;",
@@ -391,6 +397,17 @@ const GUARDED: &[(&str, &str)] = &[
     (
         "domain-integer-division",
         "  int k = int(t.r * 4.0);\n  r = float(12 % max(k, 1));",
+    ),
+    // Coordinates brought to the level read, or scaled by its own size.
+    (
+        "texel-fetch-range",
+        "  int lod = int(u_a);\n  ivec2 c = ivec2(v_uv * vec2(textureSize(u_tex, 0))) >> lod;\n  \
+         r = texelFetch(u_tex, c, lod).r;",
+    ),
+    (
+        "texel-fetch-range",
+        "  int lod = int(u_a);\n  ivec2 c = ivec2(v_uv * vec2(textureSize(u_tex, lod)));\n  \
+         r = texelFetch(u_tex, c, lod).r;",
     ),
     (
         "texel-fetch-range",
