@@ -79,7 +79,11 @@ fn component_stores(
             _ => {}
         }
     });
-    if whole || twice || parts.len() < 2 {
+    let size = match cx.module.types[f.local_variables[l].ty].inner {
+        naga::TypeInner::Vector { size, .. } => size as usize,
+        _ => return None,
+    };
+    if whole || twice || parts.len() != size {
         return None;
     }
     parts.into_iter().collect()

@@ -131,6 +131,13 @@ const HAZARDS: &[Hazard] = &[
     (
         "normalize-zero",
         "texture",
+        "  float a = texture(u_tex, v_uv + vec2(0.01, 0.0)).r;\n  float b = texture(u_tex, v_uv - vec2(0.01, 0.0)).r;\n  \
+         vec2 g = vec2(0.0);\n  g.x = a - b;\n  g.y = 2.0 * b - 2.0 * a;\n  r = normalize(g).x;",
+        W,
+    ),
+    (
+        "normalize-zero",
+        "texture",
         "  float dx = texture(u_tex, v_uv + vec2(0.01, 0.0)).r - texture(u_tex, v_uv - vec2(0.01, 0.0)).r;\n  \
          float dy = texture(u_tex, v_uv + vec2(0.0, 0.01)).r - texture(u_tex, v_uv - vec2(0.0, 0.01)).r;\n  \
          r = normalize(vec2(dx, dy)).x;",
@@ -303,6 +310,11 @@ const GUARDED: &[(&str, &str)] = &[
     ("acos-domain", "  r = acos(clamp(v_normal.z, -1.0, 1.0));"),
     // A normal from a height map has a constant component; a weighted sum whose weights do not
     // cancel is no gradient.
+    (
+        "normalize-zero",
+        "  float a = texture(u_tex, v_uv + vec2(0.01, 0.0)).r;\n  float b = texture(u_tex, v_uv - vec2(0.01, 0.0)).r;\n  \
+         vec3 g = vec3(0.0, 0.0, 1.0);\n  g.x = a - b;\n  g.y = b - a;\n  r = normalize(g).x;",
+    ),
     (
         "normalize-zero",
         "  float dx = texture(u_tex, v_uv + vec2(0.01, 0.0)).r - texture(u_tex, v_uv - vec2(0.01, 0.0)).r;\n  \
