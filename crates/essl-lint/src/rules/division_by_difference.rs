@@ -1,5 +1,6 @@
 //! `division-by-difference`: `x / (a - b)` where `a` and `b` are uniforms that may be equal, or
-//! texels whose difference is 0 at an end of their range.
+//! texels whose difference is 0 at an end of their range; and `x / t` of a texel `t` whose range
+//! ends at 0.
 
 use essl::diagnostic::{Diagnostic, Fix};
 use naga::{BinaryOperator as Bo, Expression as E, ScalarKind};
@@ -20,7 +21,9 @@ declare_rule! {
     /// range: `1.0 - k` for `k = min(1.0 - c.r, min(1.0 - c.g, 1.0 - c.b))` of a texel's colour `c`
     /// is 0 for every black texel, `1.0 - c.a` for every opaque one. An input whose name says it
     /// holds a colour (`v_color`, a function's `vec3 rgb` its callers pass an input to) counts as
-    /// a texel: black and white are ordinary colours.
+    /// a texel: black and white are ordinary colours. A divisor that is a texel (or such a colour)
+    /// itself is reported too: `c.rgb / c.a` un-premultiplies by an alpha that is 0 wherever the
+    /// texture is transparent, `x / t.r` divides by 0 wherever it is black.
     ///
     /// ## Why is this bad?
     /// Two parameters a user sets independently are equal sooner or later — a spot light with the
@@ -68,7 +71,7 @@ declare_rule! {
     ///   `/ epsilon`.
     pub(crate) struct DivisionByDifference {
         id: "division-by-difference",
-        summary: "division by a difference of uniforms, or of texels at an end of their range, that can be zero",
+        summary: "division by a difference of uniforms, or by a texel or a difference of texels at an end of their range, that can be zero",
         default_level: Level::Warn,
         check: check,
     }
@@ -97,7 +100,13 @@ fn check(cx: &Cx, out: &mut Vec<Diagnostic>) {
             // A difference of per-draw values: one with a per-pixel part (a depth, a ray) is
             // zero at isolated pixels at most, not for the whole draw — unless the part is a
             // texel and the difference is 0 at an end of its range.
-            if cx.kind(id, d) != Some(ScalarKind::Float) || !v.facts.has(Facts::DIFF) {
+            if cx.kind(id, d) != Some(ScalarKind::Float) {
+                continue;
+            }
+            if !v.facts.has(Facts::DIFF) {
+                if let Some(diag) = texel_divisor(cx, f, id, h, d, v.facts) {
+                    out.push(diag);
+                }
                 continue;
             }
             let per_pixel = v.facts.any(Facts::INPUT.with(Facts::TEXTURE));
@@ -179,4 +188,49 @@ fn zero_at_texel_end(cx: &Cx, id: usize, d: naga::Handle<E>, facts: Facts) -> bo
     cx.typical()
         .num(id, d)
         .is_some_and(|t| t.comps().iter().any(|c| c.lo == 0.0 || c.hi == 0.0))
+}
+
+/// The finding for a divisor `d` of `h` that is a texel (or a colour input) as such, whose
+/// range ends at 0: `c.rgb / c.a` un-premultiplies by an alpha that is 0 wherever the texture
+/// is transparent, `x / t.r` divides by 0 wherever it is black.
+fn texel_divisor(
+    cx: &Cx,
+    f: &naga::Function,
+    id: usize,
+    h: naga::Handle<E>,
+    d: naga::Handle<E>,
+    facts: Facts,
+) -> Option<Diagnostic> {
+    if !facts.has(Facts::EXT) || !zero_at_texel_end(cx, id, d, facts) {
+        return None;
+    }
+    let g = cx.guards(f, id, h);
+    if cx.nonzero(f, id, d, &g)
+        || cx
+            .refined(f, id, d, &g)
+            .is_none_or(|v| !v.comps().iter().any(|c| c.contains(0.0)))
+    {
+        return None;
+    }
+    let span = cx.span(f, d);
+    if span.is_empty() {
+        return None;
+    }
+    let what = cx.what(f, id, d);
+    Some(
+        Diagnostic::rule_warning(
+            DivisionByDifference::RULE.id,
+            "division by a texel or colour that is 0 wherever the texture is black or transparent",
+            span,
+        )
+        .with_label(format!(
+            "{what} is 0 where the texel is at the bottom of its range"
+        ))
+        .with_help("guard the divisor: `max(x, 1e-4)`, or test it first")
+        .with_fix(Fix::suggested(
+            "wrap the divisor in `max(…, 1e-4)`",
+            span,
+            format!("max({}, 1e-4)", cx.text(span)),
+        )),
+    )
 }

@@ -85,6 +85,7 @@ const HAZARDS: &[Hazard] = &[
         W,
     ),
     ("division-by-difference", "texture", "  r = t.r / (1.0 - t.a);", W),
+    ("division-by-difference", "texture", "  r = t.r / t.a;", W),
     ("normalize-zero", "uniform", "  r = normalize(cross(u_up, u_dir)).x;", W),
     ("normalize-zero", "varying", "  r = normalize(cross(v_n, vec3(0.0, 1.0, 0.0))).x;", W),
     (
@@ -308,6 +309,9 @@ const GUARDED: &[(&str, &str)] = &[
         "  vec3 nn = reflect(normalize(v_pos), normalize(v_normal));\n  r = atan(nn.z, nn.x);",
     ),
     ("acos-domain", "  r = acos(clamp(v_normal.z, -1.0, 1.0));"),
+    // An alpha tested first, or kept above 0.
+    ("division-by-difference", "  r = t.a > 0.0 ? t.r / t.a : 0.0;"),
+    ("division-by-difference", "  r = t.r / max(t.a, 1e-4);"),
     // A normal from a height map has a constant component; a weighted sum whose weights do not
     // cancel is no gradient.
     (
