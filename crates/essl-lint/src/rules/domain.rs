@@ -56,9 +56,13 @@ pub(super) fn check(cx: &Cx, out: &mut Vec<Diagnostic>, domains: &[Domain], rule
             continue;
         };
         let negative = v.hull().lo < 0.0 && !v.facts.has(Facts::NN);
+        // A per-draw value positive only because its uniforms are taken to be: 0 is an
+        // ordinary value of many (a blurriness, a roughness at its default).
+        let per_draw =
+            v.facts.any(Facts::UNIFORM) && !v.facts.any(Facts::INPUT.with(Facts::TEXTURE));
         let zero = dom.zero
             && v.comps().iter().any(|c| c.contains(0.0))
-            && (!v.facts.has(Facts::POS) || v.facts.any(Facts::TEXTURE));
+            && (!v.facts.has(Facts::POS) || v.facts.any(Facts::TEXTURE) || per_draw);
         if !negative && !zero {
             continue;
         }
@@ -76,7 +80,14 @@ pub(super) fn check(cx: &Cx, out: &mut Vec<Diagnostic>, domains: &[Domain], rule
         if !negative && !zero {
             continue;
         }
-        out.push(finding(cx, f, id, x, dom, rule, negative, lo));
+        let d = finding(cx, f, id, x, dom, rule, negative, lo);
+        let uniform = (!negative && per_draw)
+            .then(|| cx.origin(&[(id, x)]).single_uniform().map(str::to_string))
+            .flatten();
+        out.push(match uniform {
+            Some(name) => at_zero_uniform(d, dom.name, &name),
+            None => cx.grade(d, &[(id, x)]),
+        });
     }
 }
 
@@ -140,5 +151,17 @@ fn finding(
             format!("max({}, {floor})", cx.text(span)),
         ));
     }
-    cx.grade(d, &[(id, x)])
+    d
+}
+
+/// A note for an argument that is 0 when one uniform is: 0 is an ordinary value of many
+/// parameters (a blurriness, a roughness at its default), not one out of their range.
+fn at_zero_uniform(mut d: Diagnostic, fun: &str, uniform: &str) -> Diagnostic {
+    d.severity = essl::diagnostic::Severity::Note;
+    d.message = format!(
+        "`{fun}` of a value that is 0 when `{uniform}` is 0, where `{fun}` is undefined (±∞, then NaN)"
+    );
+    d.with_note(format!(
+        "0 is an ordinary value of many parameters: keep the argument above 0 whatever `{uniform}` is"
+    ))
 }

@@ -38,7 +38,8 @@ declare_rule! {
     ///   `inversesqrt(dot(n, n))` of an interpolated normal.
     /// - An argument kept positive: `max(x, 1e-6)`, `x + 1e-4` of a non-negative `x`, `dot(v, v)`
     ///   of a valid (non-zero) uniform direction, or under a guard (`if (x > 0.0)`).
-    /// - A uniform or input as such: valid values are the caller's business.
+    /// - An input as such: valid values are the caller's business. A uniform is taken to be
+    ///   non-negative, not non-zero: `inversesqrt(u_x)` is a note naming it.
     ///
     /// Severity: a warning when values the shader itself produces reach the hazard; a note, naming
     /// the uniform, when one uniform alone (with constants) does.

@@ -13,7 +13,9 @@ declare_rule! {
     /// Reports `log(x)` and `log2(x)` where the shader's own arithmetic can make `x` negative, or
     /// where `x` is 0 over a whole region of ordinary inputs: a luminance or a colour channel read
     /// from a texture (0 wherever it is black), a value that saturates at 0 (`max(d, 0.0)`, a clamp),
-    /// or a per-draw value (uniforms and constants) that can be 0.
+    /// or a per-draw value (uniforms and constants) that can be 0 — a uniform itself included, as
+    /// a note naming it: 0 is an ordinary value of a blurriness or a roughness (three.js's
+    /// `log2(1.16 * roughness)` of `backgroundBlurriness`, 0 by default).
     ///
     /// ## Why is this bad?
     /// GLSL ES 3.00 leaves `log(x)` and `log2(x)` undefined for `x ≤ 0` (§8.2): at 0 GPUs return
@@ -37,9 +39,9 @@ declare_rule! {
     /// - A per-pixel value that reaches 0 only at isolated points (a difference of varyings).
     /// - An argument kept positive: `max(x, 1e-6)`, `x + 1e-4` of a non-negative `x`, `exp(x)`,
     ///   or under a guard (`if (lum > 0.0)`).
-    /// - A uniform or input as such: valid values are the caller's business. Its `abs` is another
-    ///   matter: `log2(abs(u_m[1][0]))` says the value takes both signs, and 0 (an entry of an
-    ///   identity matrix) is an ordinary one.
+    /// - An input as such: valid values are the caller's business. A uniform is taken to be
+    ///   non-negative, not non-zero: `log2(u_x)` is a note, `log2(abs(u_m[1][0]))` too (0, an
+    ///   entry of an identity matrix, is an ordinary value).
     ///
     /// Severity: a warning when values the shader itself produces reach the hazard (rounding
     /// included, which says so in the message); a note, naming the uniform, when one uniform alone

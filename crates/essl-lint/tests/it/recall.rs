@@ -108,6 +108,7 @@ const HAZARDS: &[Hazard] = &[
     ("domain-log", "texture", "  r = log(t.r);", W),
     ("domain-log", "uniform", "  r = log(u_a - 1.0);", N),
     ("domain-log", "uniform", "  r = log2(abs(u_a));", N),
+    ("domain-log", "uniform", "  r = -2.0 * log2(1.16 * u_a);", N),
     ("domain-log", "rounding", "  r = log2(1.0 - length(n));", W),
     (
         "domain-atan2",
@@ -309,6 +310,7 @@ const GUARDED: &[(&str, &str)] = &[
         "  vec3 nn = reflect(normalize(v_pos), normalize(v_normal));\n  r = atan(nn.z, nn.x);",
     ),
     ("acos-domain", "  r = acos(clamp(v_normal.z, -1.0, 1.0));"),
+    ("domain-log", "  r = -2.0 * log2(max(1.16 * u_a, 1e-6));"),
     // An alpha tested first, or kept above 0.
     ("division-by-difference", "  r = t.a > 0.0 ? t.r / t.a : 0.0;"),
     ("division-by-difference", "  r = t.r / max(t.a, 1e-4);"),
