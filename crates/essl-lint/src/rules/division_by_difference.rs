@@ -121,18 +121,9 @@ fn check(cx: &Cx, out: &mut Vec<Diagnostic>) {
             if (per_pixel && !texel) || sym.get_or_insert_with(|| cx.sym(id, f)).nonzero(d) {
                 continue;
             }
-            let g = cx.guards(f, id, h);
-            if cx.nonzero(f, id, d, &g)
-                || cx
-                    .refined(f, id, d, &g)
-                    .is_none_or(|v| !v.comps().iter().any(|c| c.contains(0.0)))
-            {
+            let Some(span) = unguarded(cx, f, id, h, d) else {
                 continue;
-            }
-            let span = cx.span(f, d);
-            if span.is_empty() {
-                continue;
-            }
+            };
             let what = cx.what(f, id, d);
             let mut diag = if texel {
                 Diagnostic::rule_warning(
@@ -166,12 +157,7 @@ fn check(cx: &Cx, out: &mut Vec<Diagnostic>) {
             {
                 diag = diag.with_secondary(def_span, "the difference");
             }
-            diag = diag.with_fix(Fix::suggested(
-                "wrap the divisor in `max(…, 1e-4)`",
-                span,
-                format!("max({}, 1e-4)", cx.text(span)),
-            ));
-            out.push(cx.grade(diag, &[(id, d)]));
+            out.push(cx.grade(diag.with_fix(floor_fix(cx, span)), &[(id, d)]));
         }
     }
 }
@@ -204,18 +190,7 @@ fn texel_divisor(
     if !facts.has(Facts::EXT) || !zero_at_texel_end(cx, id, d, facts) {
         return None;
     }
-    let g = cx.guards(f, id, h);
-    if cx.nonzero(f, id, d, &g)
-        || cx
-            .refined(f, id, d, &g)
-            .is_none_or(|v| !v.comps().iter().any(|c| c.contains(0.0)))
-    {
-        return None;
-    }
-    let span = cx.span(f, d);
-    if span.is_empty() {
-        return None;
-    }
+    let span = unguarded(cx, f, id, h, d)?;
     let what = cx.what(f, id, d);
     Some(
         Diagnostic::rule_warning(
@@ -227,10 +202,36 @@ fn texel_divisor(
             "{what} is 0 where the texel is at the bottom of its range"
         ))
         .with_help("guard the divisor: `max(x, 1e-4)`, or test it first")
-        .with_fix(Fix::suggested(
-            "wrap the divisor in `max(…, 1e-4)`",
-            span,
-            format!("max({}, 1e-4)", cx.text(span)),
-        )),
+        .with_fix(floor_fix(cx, span)),
+    )
+}
+
+/// The span of divisor `d` of the division `h` where no guard keeps it from 0 (an enclosing
+/// condition, `abs(d) > 1e-6 ? x / d : 0.0`); `None` where one does, or where `d` has no span.
+fn unguarded(
+    cx: &Cx,
+    f: &naga::Function,
+    id: usize,
+    h: naga::Handle<E>,
+    d: naga::Handle<E>,
+) -> Option<essl::source::Span> {
+    let g = cx.guards(f, id, h);
+    if cx.nonzero(f, id, d, &g)
+        || cx
+            .refined(f, id, d, &g)
+            .is_none_or(|v| !v.comps().iter().any(|c| c.contains(0.0)))
+    {
+        return None;
+    }
+    let span = cx.span(f, d);
+    (!span.is_empty()).then_some(span)
+}
+
+/// The suggested fix for a divisor at `span`: `max(…, 1e-4)`.
+fn floor_fix(cx: &Cx, span: essl::source::Span) -> Fix {
+    Fix::suggested(
+        "wrap the divisor in `max(…, 1e-4)`",
+        span,
+        format!("max({}, 1e-4)", cx.text(span)),
     )
 }
