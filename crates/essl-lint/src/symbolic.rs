@@ -476,6 +476,14 @@ impl<'a> Sym<'a> {
         }
     }
 
+    /// `h` as a linear form: each atom (by the first expression met for it) with its
+    /// coefficient, and the constant.
+    pub fn terms(&self, h: Handle<E>) -> (Vec<(Handle<E>, f64)>, f64) {
+        let l = self.lin(h, 0);
+        let terms = l.at.into_iter().zip(l.terms.into_iter().map(|(_, k)| k));
+        (terms.collect(), l.c)
+    }
+
     /// Whether `h` is certainly not zero (a scalar, or every component of a vector).
     pub fn nonzero(&self, h: Handle<E>) -> bool {
         self.diff_lower(Some(h), None) > 0.0 || self.diff_lower(None, Some(h)) > 0.0

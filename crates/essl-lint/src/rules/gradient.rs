@@ -3,15 +3,12 @@
 //! weights sum to 0. A Sobel or central-difference gradient is then the zero vector wherever the
 //! image is flat — whole regions of any picture — which `normalize-zero` reports.
 
-use naga::{BinaryOperator as Bo, Expression as E, Function, Handle, Statement, UnaryOperator};
+use naga::{Expression as E, Function, Handle, Statement};
 
 use super::Cx;
 use crate::analysis::each_statement;
-use crate::symbolic::resolve;
+use crate::symbolic::{resolve, Sym};
 use crate::value::Facts;
-
-/// How deep a component's sum is followed.
-const DEPTH: u32 = 24;
 
 /// Where a texel read comes from: the texture (or the function that samples it) and the channel.
 #[derive(Clone, Copy, PartialEq, Eq)]
@@ -38,11 +35,12 @@ pub(super) fn texel_gradient(cx: &Cx, f: &Function, id: usize, h: Handle<E>) -> 
         },
         _ => return false,
     };
+    let sym = cx.sym(id, f);
     let mut source = None;
     components.len() >= 2
         && components
             .iter()
-            .all(|&c| zero_sum(cx, f, id, c, &mut source))
+            .all(|&c| zero_sum(cx, f, id, &sym, c, &mut source))
 }
 
 /// The values written into each component of local `l` (`l.x = a; l.y = b;`), in order, where
@@ -90,87 +88,28 @@ fn component_stores(
 }
 
 /// Whether `h` is a weighted sum of two or more reads of one channel of one texture, with
-/// constant weights that sum to 0; `source` is the texture every component reads.
-fn zero_sum(cx: &Cx, f: &Function, id: usize, h: Handle<E>, source: &mut Option<Source>) -> bool {
-    let mut terms: Vec<(Handle<E>, f64)> = Vec::new();
-    if !linear(cx, f, id, h, 1.0, &mut terms, source, 0) {
-        return false;
-    }
-    let mut merged: Vec<(Handle<E>, f64)> = Vec::new();
-    for (leaf, k) in terms {
-        match merged.iter_mut().find(|(l, _)| *l == leaf) {
-            Some((_, w)) => *w += k,
-            None => merged.push((leaf, k)),
-        }
-    }
-    merged.retain(|(_, k)| *k != 0.0);
-    let sum: f64 = merged.iter().map(|(_, k)| k).sum();
-    merged.len() >= 2 && sum.abs() < 1e-9
-}
-
-/// Adds `k` times the linear form of `h` over texel reads to `terms`; false where `h` is not
-/// one (a product of two reads, a function of one, another input).
-#[allow(clippy::too_many_arguments)]
-fn linear(
+/// constant weights that sum to 0 (its linear form, `Sym::terms`); `source` is the texture
+/// every component reads.
+fn zero_sum(
     cx: &Cx,
     f: &Function,
     id: usize,
+    sym: &Sym,
     h: Handle<E>,
-    k: f64,
-    terms: &mut Vec<(Handle<E>, f64)>,
     source: &mut Option<Source>,
-    depth: u32,
 ) -> bool {
-    if depth > DEPTH {
+    let (terms, constant) = sym.terms(h);
+    if constant != 0.0 || terms.len() < 2 {
         return false;
     }
-    let d = depth + 1;
-    let h = resolve(f, cx.sound(), id, h);
-    let constant = |x: Handle<E>| {
-        cx.sound()
-            .num(id, x)
-            .and_then(|n| n.hull().as_point())
-            .filter(|p| p.is_finite())
-    };
-    match f.expressions[h] {
-        E::Binary {
-            op: Bo::Add,
-            left,
-            right,
-        } => {
-            linear(cx, f, id, left, k, terms, source, d)
-                && linear(cx, f, id, right, k, terms, source, d)
+    for &(leaf, _) in &terms {
+        match read(cx, f, id, leaf) {
+            Some(s) if source.is_none_or(|t| t == s) => *source = Some(s),
+            _ => return false,
         }
-        E::Binary {
-            op: Bo::Subtract,
-            left,
-            right,
-        } => {
-            linear(cx, f, id, left, k, terms, source, d)
-                && linear(cx, f, id, right, -k, terms, source, d)
-        }
-        E::Unary {
-            op: UnaryOperator::Negate,
-            expr,
-        } => linear(cx, f, id, expr, -k, terms, source, d),
-        E::Binary {
-            op: Bo::Multiply,
-            left,
-            right,
-        } => match (constant(left), constant(right)) {
-            (Some(c), _) => linear(cx, f, id, right, k * c, terms, source, d),
-            (_, Some(c)) => linear(cx, f, id, left, k * c, terms, source, d),
-            _ => false,
-        },
-        _ => match read(cx, f, id, h) {
-            Some(s) if source.is_none_or(|t| t == s) => {
-                *source = Some(s);
-                terms.push((h, k));
-                true
-            }
-            _ => false,
-        },
     }
+    let sum: f64 = terms.iter().map(|(_, k)| k).sum();
+    sum.abs() < 1e-9
 }
 
 /// The texture and channel a scalar texel read `h` comes from: `texture(t, uv).r`, `.r` of a
