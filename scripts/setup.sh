@@ -8,9 +8,13 @@
 set -euo pipefail
 
 need=()
-dpkg -s mesa-vulkan-drivers >/dev/null 2>&1 || need+=(mesa-vulkan-drivers)
-dpkg -s libvulkan1 >/dev/null 2>&1 || need+=(libvulkan1)
-dpkg -s neovim >/dev/null 2>&1 || need+=(neovim)
+# Adds each Debian package not installed yet to `need`.
+want() {
+    for p in "$@"; do
+        dpkg -s "$p" >/dev/null 2>&1 || need+=("$p")
+    done
+}
+want mesa-vulkan-drivers libvulkan1 neovim
 # The npm packages' tests: Node.js and npm, and Chromium for Vite's error overlay in a real
 # browser (crates/essl-node/test/overlay.test.mjs).
 command -v node >/dev/null 2>&1 || need+=(nodejs)
@@ -19,13 +23,9 @@ dpkg -s chromium >/dev/null 2>&1 || command -v chromium >/dev/null 2>&1 || need+
 # The `canvas` package (jsdom's 2D canvas and image decoding, for crates/essl-gl-node's tests)
 # builds from source where its prebuilt binary cannot be downloaded: Cairo's, Pango's and the
 # image libraries' headers, and a C++ compiler.
-for p in libcairo2-dev libpango1.0-dev libjpeg-dev libgif-dev librsvg2-dev g++ make; do
-    dpkg -s "$p" >/dev/null 2>&1 || need+=("$p")
-done
+want libcairo2-dev libpango1.0-dev libjpeg-dev libgif-dev librsvg2-dev g++ make
 if [ "${ESSL_SETUP_EXTRAS:-0}" = 1 ]; then
-    for p in glslang-tools hyperfine; do
-        dpkg -s "$p" >/dev/null 2>&1 || need+=("$p")
-    done
+    want glslang-tools hyperfine
 fi
 if [ ${#need[@]} -gt 0 ]; then
     sudo=""
