@@ -8,6 +8,8 @@
 //  5. undeclared `lightReflection` -> `vec3 lightReflection = reflect(L, N);` added;
 //  6. `Id`, `Is` were declared inside the `if` but used after it -> declared before the `if`
 //     as `vec4(0.0)` and assigned inside it.
+// Numerical fix (essl-lint pow-zero-base): the exponent `max(shininess, 1e-4)`: pow(0, 0) is undefined
+// (NaN) where the highlight's base is 0, should the shininess be set to 0; no other value changes.
 precision mediump float;
 uniform mat4 uModelViewMatrix;
 uniform mat4 uProjectionMatrix;
@@ -47,7 +49,7 @@ void main(void) {
     Id = uMaterialDiffuse * uLightDiffuse * lambertTerm;
     vec3 lightReflection = reflect(L, N);
     // Specular colors: note we retrieve the positive value for the dot product between R and E
-    float specular = pow(max(dot(lightReflection, eyeVector), 0.0), shininess);
+    float specular = pow(max(dot(lightReflection, eyeVector), 0.0), max(shininess, 1e-4));
     Is = uMaterialDiffuse * uLightSpecular * specular;
   }
 

@@ -1,5 +1,7 @@
 #version 300 es
 // Corrected twin of phong-directional.frag (article 002): `**` (markdown damage) -> `*` (4 occurrences).
+// Numerical fix (essl-lint pow-zero-base): the exponent `max(uShininess, 1e-4)`: pow(0, 0) is undefined
+// (NaN) where the highlight's base is 0, should the shininess be set to 0; no other value changes.
 precision mediump float;
 uniform float uShininess;
 uniform vec3 uLightDirection;
@@ -30,7 +32,7 @@ void main(void) {
     Id = uLightDiffuse * uMaterialDiffuse * lambertTerm;
     vec3 E = normalize(vEyeVector);
     vec3 R = reflect(L, N);
-    float specular = pow( max(dot(R, E), 0.0), uShininess);
+    float specular = pow( max(dot(R, E), 0.0), max(uShininess, 1e-4));
     Is = uLightSpecular * uMaterialSpecular * specular;
   }
   fragColor = vec4(vec3(Ia + Id + Is), 1.0);

@@ -7,6 +7,8 @@
 //     pow is undefined (NaN) for a negative base, and dot(normal, halfVector) < 0 is possible
 //     even where `light > 0.0`.
 // This is the article's `if (dotFromDirection >= u_limit)` spot light with one limit.
+// Numerical fix (essl-lint pow-zero-base): the exponent `max(u_shininess, 1e-4)`: pow(0, 0) is undefined
+// (NaN) where the highlight's base is 0, should the shininess be set to 0; no other value changes.
 precision mediump float;
 // Passed in from the vertex shader.
 in vec3 v_normal;
@@ -33,7 +35,7 @@ float specular = 0.0;
  if (dotFromDirection >= u_limit) {
  light = dot(normal, surfaceToLightDirection);
  if (light > 0.0) {
- specular = pow(max(dot(normal, halfVector), 0.0), u_shininess);
+ specular = pow(max(dot(normal, halfVector), 0.0), max(u_shininess, 1e-4));
  }
  }
 outColor = u_color;

@@ -2,6 +2,8 @@
 // CORRECTED twin of spot-flashlight-cookie.frag (article 004 composed into a shader): the
 // same code with the division by `epsilon = light.cutOff - light.outerCutOff` guarded, as
 // essl lint asks (equal cut-offs divide by zero), marked `fixed`.
+// Numerical fix (essl-lint pow-zero-base): the exponent `max(material.shininess, 1e-4)`: pow(0, 0) is undefined
+// (NaN) where the highlight's base is 0, should the shininess be set to 0; no other value changes.
 precision highp float;
 
 struct Material {
@@ -48,7 +50,7 @@ void main()
     // specular
     vec3 viewDir = normalize(viewPos - FragPos);
     vec3 reflectDir = reflect(-lightDir, norm);
-    float spec = pow(max(dot(viewDir, reflectDir), 0.0), material.shininess);
+    float spec = pow(max(dot(viewDir, reflectDir), 0.0), max(material.shininess, 1e-4));
     vec3 specular = light.specular * spec * texture(material.specular, TexCoords).rgb;
 
     // spotlight (soft edges) and flashlight cookie: verbatim from the article

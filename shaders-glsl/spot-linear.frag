@@ -7,6 +7,8 @@
 // faces away from the half vector, even where dot(normal, surfaceToLight) > 0.
 // Numerical fix (essl-lint division-by-difference): `limitRange = max(u_innerLimit - u_outerLimit, 1e-4)`;
 // the article notes that equal limits divide by zero (a floor of 1e-4 stays normal in mediump).
+// Numerical fix (essl-lint pow-zero-base): the exponent `max(u_shininess, 1e-4)`: pow(0, 0) is undefined
+// (NaN) where the highlight's base is 0, should the shininess be set to 0; no other value changes.
 precision mediump float;
 // Passed in from the vertex shader.
 in vec3 v_normal;
@@ -33,7 +35,7 @@ float dotFromDirection = dot(surfaceToLightDirection,
  float limitRange = max(u_innerLimit - u_outerLimit, 1e-4);
  float inLight = clamp((dotFromDirection - u_outerLimit) / limitRange, 0.0, 1.0);
 float light = inLight * dot(normal, surfaceToLightDirection);
-float specular = inLight * pow(max(dot(normal, halfVector), 0.0), u_shininess);
+float specular = inLight * pow(max(dot(normal, halfVector), 0.0), max(u_shininess, 1e-4));
 outColor = u_color;
 // Lets multiply just the color portion (not the alpha)
 // by the light

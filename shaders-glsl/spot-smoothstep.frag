@@ -7,6 +7,8 @@
 // faces away from the half vector, even where dot(normal, surfaceToLight) > 0.
 // Numerical fix (essl-lint smoothstep-edges): edge1 = `max(u_innerLimit, u_outerLimit + 1e-3)`;
 // smoothstep is undefined for equal or swapped edges (1e-3 is more than a mediump ulp below 2).
+// Numerical fix (essl-lint pow-zero-base): the exponent `max(u_shininess, 1e-4)`: pow(0, 0) is undefined
+// (NaN) where the highlight's base is 0, should the shininess be set to 0; no other value changes.
 precision mediump float;
 // Passed in from the vertex shader.
 in vec3 v_normal;
@@ -32,7 +34,7 @@ float dotFromDirection = dot(surfaceToLightDirection,
 // inLight will be 1 if we're inside the spotlight and 0 if not
 float inLight = smoothstep(u_outerLimit, max(u_innerLimit, u_outerLimit + 1e-3), dotFromDirection);
 float light = inLight * dot(normal, surfaceToLightDirection);
-float specular = inLight * pow(max(dot(normal, halfVector), 0.0), u_shininess);
+float specular = inLight * pow(max(dot(normal, halfVector), 0.0), max(u_shininess, 1e-4));
 outColor = u_color;
 // Lets multiply just the color portion (not the alpha)
 // by the light

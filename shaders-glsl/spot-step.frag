@@ -5,6 +5,8 @@
 // Numerical fix (essl-lint pow-negative-base): `pow(max(dot(normal, halfVector), 0.0), u_shininess)`;
 // pow is undefined (NaN) for a negative base, and dot(normal, halfVector) < 0 where the surface
 // faces away from the half vector, even where dot(normal, surfaceToLight) > 0.
+// Numerical fix (essl-lint pow-zero-base): the exponent `max(u_shininess, 1e-4)`: pow(0, 0) is undefined
+// (NaN) where the highlight's base is 0, should the shininess be set to 0; no other value changes.
 precision mediump float;
 // Passed in from the vertex shader.
 in vec3 v_normal;
@@ -29,7 +31,7 @@ float dotFromDirection = dot(surfaceToLightDirection,
 // inLight will be 1 if we're inside the spotlight and 0 if not
 float inLight = step(u_limit, dotFromDirection);
 float light = inLight * dot(normal, surfaceToLightDirection);
-float specular = inLight * pow(max(dot(normal, halfVector), 0.0), u_shininess);
+float specular = inLight * pow(max(dot(normal, halfVector), 0.0), max(u_shininess, 1e-4));
 outColor = u_color;
 // Lets multiply just the color portion (not the alpha)
 // by the light

@@ -106,6 +106,8 @@ void main() {
 //     undefined when the limits are equal or swapped -> edge1 kept above edge0 with
 //     `max(u_innerLimit, u_outerLimit + 1e-4)`.
 // The first line keeps its trailing space(s) from the replaced NBSP.
+// Numerical fix (essl-lint pow-zero-base): the exponent `max(u_shininess, 1e-4)`: pow(0, 0) is undefined
+// (NaN) where the highlight's base is 0, should the shininess be set to 0; no other value changes.
   
 // fragment shaders don't have a default precision so we need  
 // to pick one. highp is a good default. It means "high precision"  
@@ -149,7 +151,7 @@ void main() {
   
   float light = inLight * dot(normal, unitSurfaceToLight);
   float rawSpecular = max(0.0, dot(normal, halfVector));
-  float specular = pow(rawSpecular, u_shininess);
+  float specular = pow(rawSpecular, max(u_shininess, 1e-4));
   float limitedSpecular = step(0.1, light) * specular;
   
   // Apply color

@@ -1,6 +1,6 @@
 //! `pow-negative-base`: `pow(x, y)` whose base the shader's own arithmetic can make negative.
 
-use essl::diagnostic::{Diagnostic, Fix};
+use essl::diagnostic::{Diagnostic, Edit, Fix};
 use naga::Expression as E;
 
 use super::context::PowCall;
@@ -130,7 +130,7 @@ fn check_negative(cx: &Cx, out: &mut Vec<Diagnostic>) {
             .with_label(label)
             .with_note("GLSL ES 3.00 §8.2: pow(x, y) is undefined if x < 0");
         let d = if rounding {
-            clamp_fix(cx, bspan, d)
+            clamp_fix(cx, bspan, floor_exponent(cx, f, id, exp), d)
         } else {
             fix_negative(cx, f, id, span, base, exp, d)
         };
@@ -142,17 +142,45 @@ fn check_negative(cx: &Cx, out: &mut Vec<Diagnostic>) {
 /// analysis's slack on dot products and lengths of unit vectors is a few ulps).
 const ROUNDING: f64 = 1e-4;
 
-/// The fix for a base negative only through rounding: `max(x, 0.0)`, whatever the exponent.
-fn clamp_fix(cx: &Cx, bspan: essl::source::Span, d: Diagnostic) -> Diagnostic {
+/// The fix for a base negative only through rounding: `max(x, 0.0)`, whatever the exponent
+/// (with `exponent`, the edit that keeps a uniform exponent above 0).
+fn clamp_fix(
+    cx: &Cx,
+    bspan: essl::source::Span,
+    exponent: Option<Edit>,
+    d: Diagnostic,
+) -> Diagnostic {
     if bspan.is_empty() {
         return d.with_help("clamp the base to 0");
     }
     d.with_help("clamp the base to 0: rounding is all that takes it below")
-        .with_fix(Fix::suggested(
-            "wrap the base in `max(…, 0.0)`",
-            bspan,
-            format!("max({}, 0.0)", cx.text(bspan)),
-        ))
+        .with_fix(base_floor(cx, bspan, exponent))
+}
+
+/// `max(x, 0.0)` of the base at `bspan`, and the edit of a uniform exponent where there is
+/// one: the clamped base is 0 where the base was negative, and `pow(0.0, 0.0)` is undefined
+/// when the uniform is 0 (what `pow-zero-base` notes).
+fn base_floor(cx: &Cx, bspan: essl::source::Span, exponent: Option<Edit>) -> Fix {
+    let mut fix = Fix::suggested(
+        "wrap the base in `max(…, 0.0)`",
+        bspan,
+        format!("max({}, 0.0)", cx.text(bspan)),
+    );
+    if let Some(e) = exponent {
+        fix.message = "wrap the base in `max(…, 0.0)` and the exponent in `max(…, 1e-4)`".into();
+        fix.edits.push(e);
+    }
+    fix
+}
+
+/// The edit `max(u, 1e-4)` of an exponent that is a uniform as such.
+fn floor_exponent(cx: &Cx, f: &naga::Function, id: usize, exp: naga::Handle<E>) -> Option<Edit> {
+    let espan = cx.span(f, exp);
+    let x = cx.sound().num(id, exp)?;
+    (super::pow_zero_base::as_uniform(x.facts) && !espan.is_empty()).then(|| Edit {
+        span: espan,
+        replacement: format!("max({}, 1e-4)", cx.text(espan)),
+    })
 }
 
 /// The fix for a base that can be negative, by exponent: an even integer power is the power of
@@ -194,6 +222,6 @@ fn fix_negative(
         }
         None => d
             .with_help("clamp the base to 0")
-            .with_fix(Fix::suggested("wrap the base in `max(…, 0.0)`", bspan, format!("max({b}, 0.0)"))),
+            .with_fix(base_floor(cx, bspan, floor_exponent(cx, f, id, exp))),
     }
 }

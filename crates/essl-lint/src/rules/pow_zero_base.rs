@@ -1,6 +1,7 @@
 //! `pow-zero-base`: `pow(x, y)` whose base can be 0 while its exponent can be ≤ 0.
 
 use essl::diagnostic::{Diagnostic, Fix};
+use essl::source::Span;
 
 use super::context::PowCall;
 use super::rule::declare_rule;
@@ -12,8 +13,11 @@ declare_rule! {
     /// ## What it does
     /// Reports `pow(x, y)` where the base can be 0 (a `max(…, 0.0)`, a product that vanishes) while the
     /// exponent can be 0 or negative, and where both come from the shader's arithmetic or constants.
-    /// An exponent that is a uniform as such (`u_shininess`) is taken to be valid: the runtime check
-    /// validates uniform values.
+    /// An exponent that is one uniform as such (`pow(max(dot(n, h), 0.0), u_shininess)`) is 0 when
+    /// the user sets it to 0, the value a shininess slider starts at; with a base that is 0 over a
+    /// whole region (the side facing away from the highlight) that is a note naming the uniform.
+    /// three.js keeps this from happening in JavaScript: its Phong material passes
+    /// `Math.max(shininess, 1e-4)`, "to prevent pow( 0.0, 0.0 )".
     ///
     /// ## Why is this bad?
     /// GLSL ES 3.00 leaves `pow(x, y)` undefined for `x = 0` and `y ≤ 0` (§8.2). `exp2(y * log2(0))`
@@ -29,10 +33,13 @@ declare_rule! {
     /// float f = pow(max(dot(n, l), 1e-4), k - 1.0);  // a base that is never 0
     /// ```
     /// (or make the exponent positive, `max(k - 1.0, 1e-4)`). 1e-4 is above `mediump`'s smallest
-    /// normal number (6.1e-5), so the guard survives in `mediump` too.
+    /// normal number (6.1e-5), so the guard survives in `mediump` too. For a uniform exponent the
+    /// suggested fix is on the exponent, `pow(max(dot(n, h), 0.0), max(u_shininess, 1e-4))`,
+    /// which changes no result for a shininess of 1e-4 or more.
     ///
     /// ## What it does not flag
-    /// - An exponent that is a uniform as such (`u_shininess`), or positive by construction.
+    /// - An exponent positive by construction (`max(u_shininess, 1e-4)`, `u_k + 1.0`), or a uniform
+    ///   exponent whose base is 0 at isolated pixels only (`pow(abs(v_x - 0.5), u_k)`).
     /// - A base the shader keeps above 0 (`max(x, 1e-4)`, `exp(x)`, `x * x + 1.0`) or a guard says is
     ///   not 0 (`if (x > 0.0)`, `x != 0.0 ? pow(x, y) : 0.0`).
     /// - A base that can be negative: `pow-negative-base` reports it.
@@ -40,6 +47,7 @@ declare_rule! {
     /// Severity: a warning when values the shader itself produces reach the hazard; a note, naming
     /// the uniform, when one uniform alone (with constants) does — the hazard then needs that value out
     /// of the range the shader was written for, and essl-gl's validation mode checks it at draw time. (`pow(r, u_power - 1.0)` needs `u_power ≤ 1`).
+    /// An exponent that is a uniform as such is a note too.
     ///
     /// ## References
     /// - GLSL ES 3.00 specification, §8.2 Exponential Functions: "Results are undefined if x = 0 and
@@ -70,7 +78,10 @@ fn check_zero(cx: &Cx, out: &mut Vec<Diagnostic>) {
             continue; // pow-negative-base says it
         }
         let base_zero = bi.contains(0.0) && !b.facts.has(Facts::POS);
-        let exp_nonpositive = xi.lo <= 0.0 && !x.facts.has(Facts::POS);
+        // An exponent that is one uniform as such is positive only because uniforms are taken
+        // to be: 0 is the value a material's shininess slider starts at.
+        let at_zero = as_uniform(x.facts);
+        let exp_nonpositive = xi.lo <= 0.0 && (!x.facts.has(Facts::POS) || at_zero);
         if !base_zero || !exp_nonpositive {
             continue;
         }
@@ -81,8 +92,16 @@ fn check_zero(cx: &Cx, out: &mut Vec<Diagnostic>) {
         let (bi, xi) = (b.hull(), x.hull());
         let base_zero =
             bi.contains(0.0) && !b.facts.has(Facts::POS) && !cx.nonzero(f, id, base, &g);
-        let exp_nonpositive = xi.lo <= 0.0 && !x.facts.has(Facts::POS);
+        let exp_nonpositive = xi.lo <= 0.0 && (!x.facts.has(Facts::POS) || at_zero);
         if !base_zero || !exp_nonpositive {
+            continue;
+        }
+        // With the uniform at 0, the base must be 0 over a region (the side facing away), not
+        // at isolated pixels.
+        let uniform = at_zero
+            .then(|| cx.origin(&[(id, exp)]).single_uniform().map(str::to_string))
+            .flatten();
+        if at_zero && (uniform.is_none() || !cx.flat_at(f, id, base, 0.0)) {
             continue;
         }
         let bspan = cx.span(f, base);
@@ -92,11 +111,20 @@ fn check_zero(cx: &Cx, out: &mut Vec<Diagnostic>) {
             "`pow` base can be 0 while the exponent can be ≤ 0, where `pow` is undefined",
             bspan,
         )
-        .with_label(format!("{} can be 0", cx.what(f, id, base)))
+        .with_label(match uniform {
+            Some(_) => format!("{} is 0 over a whole region", cx.what(f, id, base)),
+            None => format!("{} can be 0", cx.what(f, id, base)),
+        })
         .with_note("GLSL ES 3.00 §8.2: pow(x, y) is undefined if x = 0 and y <= 0")
         .with_help("keep the base above 0");
         if !xspan.is_empty() {
-            d = d.with_secondary(xspan, format!("the exponent can be ≤ 0: {}", describe(xi)));
+            d = d.with_secondary(
+                xspan,
+                match &uniform {
+                    Some(u) => format!("the exponent: 0 when `{u}` is 0"),
+                    None => format!("the exponent can be ≤ 0: {}", describe(xi)),
+                },
+            );
         }
         if !bspan.is_empty() {
             d = d.with_fix(Fix::suggested(
@@ -105,6 +133,39 @@ fn check_zero(cx: &Cx, out: &mut Vec<Diagnostic>) {
                 format!("max({}, 1e-4)", cx.text(bspan)),
             ));
         }
-        out.push(cx.grade(d, &[(id, exp)]));
+        out.push(match uniform {
+            Some(name) => at_zero_uniform(cx, d, &name, xspan),
+            None => cx.grade(d, &[(id, exp)]),
+        });
     }
+}
+
+/// Whether an exponent with `facts` is one uniform as such (through copies, swizzles and
+/// conversions), and no per-pixel value.
+pub(super) fn as_uniform(facts: Facts) -> bool {
+    facts.has(Facts::EXT)
+        && facts.any(Facts::UNIFORM)
+        && !facts.any(Facts::INPUT.with(Facts::TEXTURE))
+}
+
+/// The note for a base that is 0 over a region raised to a uniform exponent `uniform`, which is
+/// 0 when the uniform is: three.js's Phong material passes `max(shininess, 1e-4)` "to prevent
+/// pow(0.0, 0.0)". Its fix keeps the exponent above 0, which changes no result for the values the uniform is
+/// meant to take.
+fn at_zero_uniform(cx: &Cx, mut d: Diagnostic, uniform: &str, xspan: Span) -> Diagnostic {
+    d.severity = essl::diagnostic::Severity::Note;
+    d.message = format!(
+        "`pow` of a base that is 0 over a region, with the exponent `{uniform}`: undefined (NaN) when `{uniform}` is 0"
+    );
+    d.help = Some("keep the exponent above 0 (or the base)".to_string());
+    if !xspan.is_empty() {
+        d.fix = Some(Fix::suggested(
+            "wrap the exponent in `max(…, 1e-4)`",
+            xspan,
+            format!("max({}, 1e-4)", cx.text(xspan)),
+        ));
+    }
+    d.with_note(
+        "0 is an ordinary value of an exponent a user sets (a shininess slider starts there): `pow(0.0, 0.0)` is NaN on GPUs that compute `exp2(y * log2(x))`",
+    )
 }

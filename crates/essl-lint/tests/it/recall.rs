@@ -55,6 +55,9 @@ const HAZARDS: &[Hazard] = &[
     ("pow-negative-base", "uniform", "  r = pow(u_a - 1.0, 2.2);", N),
     ("pow-negative-base", "rounding", "  r = pow(1.0 - length(n), 2.2);", W),
     ("pow-zero-base", "uniform", "  r = pow(max(dot(n, l), 0.0), u_k - 1.0);", N),
+    // A uniform exponent as such is 0 when the uniform is, with a base 0 over a region.
+    ("pow-zero-base", "uniform", "  r = pow(max(dot(n, l), 0.0), u_k);", N),
+    ("pow-zero-base", "uniform", "  r = pow(clamp(t.r - 0.5, 0.0, 1.0), u_k);", N),
     ("acos-domain", "computed", "  r = acos(v_x * 2.0);", W),
     ("acos-domain", "texture", "  r = acos(t.r * 2.0 - 0.5);", W),
     ("acos-domain", "uniform", "  r = acos(u_a * 2.0);", N),
@@ -349,6 +352,9 @@ const GUARDED: &[(&str, &str)] = &[
     ("pow-negative-base", "  r = pow(max(dot(n, l), 0.0), u_k);"),
     ("pow-negative-base", "  r = pow(clamp(t.r - 0.5, 0.0, 1.0), 2.2);"),
     ("pow-zero-base", "  r = pow(max(dot(n, l), 1e-4), u_k - 1.0);"),
+    ("pow-zero-base", "  r = pow(max(dot(n, l), 0.0), max(u_k, 1e-4));"),
+    // A uniform exponent with a base 0 at isolated pixels only (a varying's crossing).
+    ("pow-zero-base", "  r = pow(abs(v_x - 0.5), u_k);"),
     ("acos-domain", "  r = acos(clamp(dot(n, l), -1.0, 1.0));"),
     ("acos-domain", "  r = acos(clamp(v_pos.z / length(v_pos), -1.0, 1.0));"),
     ("asin-domain", "  r = asin(clamp(v_x * 2.0, -1.0, 1.0));"),

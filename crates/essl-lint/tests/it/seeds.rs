@@ -114,7 +114,7 @@ fn twins_are_clean_and_fixes_clean_the_article_code() {
     let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/articles");
     for path in shaders(&dir) {
         let shader = compiled(&path);
-        let found = lint(&shader, &LintOptions::default());
+        let found = lint(&shader, &LintOptions::default().notes(true));
         assert!(!found.is_empty(), "{} has hazards", path.display());
         let (fixed, n) = apply_fixes(shader.file.text(), &found, Applicability::Suggested);
         assert_eq!(n, found.len());
