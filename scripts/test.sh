@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
-# The whole test suite on a fresh machine: system packages, the pinned JavaScript libraries,
-# formatting, clippy, every test, the npm package's node --test suites, and a real editor (headless Neovim) driving `essl server`.
+# The whole test suite on a fresh machine: system packages, the pinned JavaScript libraries, the
+# fresh lint corpus (npm, beside the checkout), formatting, clippy, every test, the npm
+# package's node --test suites, and a real editor (headless Neovim) driving `essl server`.
 # GPU tests render on lavapipe (software Vulkan). Tests that need data outside the repository
 # (corpora, scenes, seeds: ESSL_CORPORA / ESSL_SCENES / ESSL_SEEDS, else ../shared/...) skip
 # with a message where it is absent; ESSL_REQUIRE_CORPORA=1 turns that skip into a failure, and
@@ -9,6 +10,12 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 ./scripts/setup.sh
 ./scripts/fetch-js-libs.sh
+# The fresh lint corpus (npm packages pinned by integrity; docs/lints/corpus.md) beside the
+# checkout: the test that every classified true positive is still reported reads it.
+export ESSL_LINT_CORPORA="${ESSL_LINT_CORPORA:-$(cd .. && pwd)/lint-corpus}"
+if [ ! -f "$ESSL_LINT_CORPORA/fresh/manifest.jsonl" ]; then
+    ./scripts/lint-corpus/fetch-fresh.sh "$ESSL_LINT_CORPORA/fresh" "$ESSL_LINT_CORPORA/old"
+fi
 export XDG_RUNTIME_DIR="${XDG_RUNTIME_DIR:-$(mktemp -d)}"
 cargo fmt --all -- --check
 # Clippy's lints run inside the build of the tests, clippy-driver standing in for rustc on the
