@@ -141,9 +141,10 @@ fn check_zero(cx: &Cx, out: &mut Vec<Diagnostic>) {
 }
 
 /// Whether an exponent with `facts` is one uniform as such (through copies, swizzles and
-/// conversions), and no per-pixel value.
+/// conversions, not negation: positive whenever the uniform is), and no per-pixel value.
 pub(super) fn as_uniform(facts: Facts) -> bool {
     facts.has(Facts::EXT)
+        && facts.has(Facts::POS)
         && facts.any(Facts::UNIFORM)
         && !facts.any(Facts::INPUT.with(Facts::TEXTURE))
 }

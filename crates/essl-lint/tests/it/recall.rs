@@ -58,6 +58,8 @@ const HAZARDS: &[Hazard] = &[
     // A uniform exponent as such is 0 when the uniform is, with a base 0 over a region.
     ("pow-zero-base", "uniform", "  r = pow(max(dot(n, l), 0.0), u_k);", N),
     ("pow-zero-base", "uniform", "  r = pow(clamp(t.r - 0.5, 0.0, 1.0), u_k);", N),
+    // A negated uniform is not positive for positive uniforms: 0 at isolated pixels is enough.
+    ("pow-zero-base", "uniform", "  r = pow(abs(v_x - 0.5), -u_k);", N),
     ("acos-domain", "computed", "  r = acos(v_x * 2.0);", W),
     ("acos-domain", "texture", "  r = acos(t.r * 2.0 - 0.5);", W),
     ("acos-domain", "uniform", "  r = acos(u_a * 2.0);", N),
