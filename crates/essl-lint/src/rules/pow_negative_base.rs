@@ -153,8 +153,11 @@ fn clamp_fix(
     if bspan.is_empty() {
         return d.with_help("clamp the base to 0");
     }
-    d.with_help("clamp the base to 0: rounding is all that takes it below")
-        .with_fix(base_floor(cx, bspan, exponent))
+    let help = match exponent {
+        Some(_) => "clamp the base to 0 (rounding is all that takes it below) and keep the uniform exponent above 0 (`pow(0.0, 0.0)` is NaN)",
+        None => "clamp the base to 0: rounding is all that takes it below",
+    };
+    d.with_help(help).with_fix(base_floor(cx, bspan, exponent))
 }
 
 /// `max(x, 0.0)` of the base at `bspan`, and the edit of a uniform exponent where there is
@@ -220,8 +223,13 @@ fn fix_negative(
                 d
             }
         }
-        None => d
-            .with_help("clamp the base to 0")
-            .with_fix(base_floor(cx, bspan, floor_exponent(cx, f, id, exp))),
+        None => {
+            let exponent = floor_exponent(cx, f, id, exp);
+            let help = match exponent {
+                Some(_) => "clamp the base to 0 and keep the uniform exponent above 0 (`pow(0.0, 0.0)` is NaN)",
+                None => "clamp the base to 0",
+            };
+            d.with_help(help).with_fix(base_floor(cx, bspan, exponent))
+        }
     }
 }
