@@ -15,7 +15,9 @@ declare_rule! {
     /// exponent can be 0 or negative, and where both come from the shader's arithmetic or constants.
     /// An exponent that is one uniform as such (`pow(max(dot(n, h), 0.0), u_shininess)`) is 0 when
     /// the user sets it to 0, the value a shininess slider starts at; with a base that is 0 over a
-    /// whole region (the side facing away from the highlight) that is a note naming the uniform.
+    /// whole region (the side facing away from the highlight, a texel wherever the texture is
+    /// black: `pow(texture(uAmbient, uv).r, uOcclusionStrength)`) that is a note naming the
+    /// uniform.
     /// three.js keeps this from happening in JavaScript: its Phong material passes
     /// `Math.max(shininess, 1e-4)`, "to prevent pow( 0.0, 0.0 )".
     ///
@@ -74,13 +76,17 @@ fn check_zero(cx: &Cx, out: &mut Vec<Diagnostic>) {
             continue;
         };
         let (bi, xi) = (b.hull(), x.hull());
-        if bi.lo < 0.0 && !b.facts.has(Facts::NN) {
-            continue; // pow-negative-base says it
-        }
-        let base_zero = bi.contains(0.0) && !b.facts.has(Facts::POS);
         // An exponent that is one uniform as such is positive only because uniforms are taken
         // to be: 0 is the value a material's shininess slider starts at.
         let at_zero = as_uniform(x.facts);
+        // A texel as such can be anything to the sound analysis (a float texture), but an
+        // ordinary one is 0 wherever the picture is black: `pow(texture(t, uv).r, u_strength)`.
+        let black = at_zero && texel_from_zero(cx, id, base, b.facts);
+        if bi.lo < 0.0 && !b.facts.has(Facts::NN) && !black {
+            continue; // pow-negative-base says it
+        }
+        // The texel, like the uniform, is positive only by assumption.
+        let base_zero = bi.contains(0.0) && (!b.facts.has(Facts::POS) || black);
         let exp_nonpositive = xi.lo <= 0.0 && (!x.facts.has(Facts::POS) || at_zero);
         if !base_zero || !exp_nonpositive {
             continue;
@@ -91,7 +97,7 @@ fn check_zero(cx: &Cx, out: &mut Vec<Diagnostic>) {
         };
         let (bi, xi) = (b.hull(), x.hull());
         let base_zero =
-            bi.contains(0.0) && !b.facts.has(Facts::POS) && !cx.nonzero(f, id, base, &g);
+            bi.contains(0.0) && (!b.facts.has(Facts::POS) || black) && !cx.nonzero(f, id, base, &g);
         let exp_nonpositive = xi.lo <= 0.0 && (!x.facts.has(Facts::POS) || at_zero);
         if !base_zero || !exp_nonpositive {
             continue;
@@ -112,6 +118,10 @@ fn check_zero(cx: &Cx, out: &mut Vec<Diagnostic>) {
             bspan,
         )
         .with_label(match uniform {
+            Some(_) if black => format!(
+                "{} is 0 wherever the texture is black",
+                cx.what(f, id, base)
+            ),
             Some(_) => format!("{} is 0 over a whole region", cx.what(f, id, base)),
             None => format!("{} can be 0", cx.what(f, id, base)),
         })
@@ -147,6 +157,17 @@ pub(super) fn as_uniform(facts: Facts) -> bool {
         && facts.has(Facts::POS)
         && facts.any(Facts::UNIFORM)
         && !facts.any(Facts::INPUT.with(Facts::TEXTURE))
+}
+
+/// Whether `base` (with `facts`) is a texel as such whose ordinary values start at 0.
+fn texel_from_zero(cx: &Cx, id: usize, base: naga::Handle<naga::Expression>, facts: Facts) -> bool {
+    facts.has(Facts::EXT)
+        && facts.any(Facts::TEXTURE)
+        && !facts.any(Facts::INPUT.with(Facts::UNIFORM))
+        && cx
+            .typical()
+            .num(id, base)
+            .is_some_and(|t| t.comps().iter().any(|c| c.lo == 0.0))
 }
 
 /// The note for a base that is 0 over a region raised to a uniform exponent `uniform`, which is

@@ -58,6 +58,7 @@ const HAZARDS: &[Hazard] = &[
     // A uniform exponent as such is 0 when the uniform is, with a base 0 over a region.
     ("pow-zero-base", "uniform", "  r = pow(max(dot(n, l), 0.0), u_k);", N),
     ("pow-zero-base", "uniform", "  r = pow(clamp(t.r - 0.5, 0.0, 1.0), u_k);", N),
+    ("pow-zero-base", "texture", "  r = pow(t.r, u_k);", N),
     // A negated uniform is not positive for positive uniforms: 0 at isolated pixels is enough.
     ("pow-zero-base", "uniform", "  r = pow(abs(v_x - 0.5), -u_k);", N),
     ("acos-domain", "computed", "  r = acos(v_x * 2.0);", W),
@@ -356,6 +357,7 @@ const GUARDED: &[(&str, &str)] = &[
     ("pow-zero-base", "  r = pow(max(dot(n, l), 1e-4), u_k - 1.0);"),
     ("pow-zero-base", "  r = pow(max(dot(n, l), 0.0), max(u_k, 1e-4));"),
     ("pow-zero-base", "  if (u_k > 0.0) { r = pow(max(dot(n, l), 0.0), u_k); }"),
+    ("pow-zero-base", "  r = pow(max(t.r, 1e-4), u_k);"),
     // A uniform exponent with a base 0 at isolated pixels only (a varying's crossing).
     ("pow-zero-base", "  r = pow(abs(v_x - 0.5), u_k);"),
     ("acos-domain", "  r = acos(clamp(dot(n, l), -1.0, 1.0));"),
