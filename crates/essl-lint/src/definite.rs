@@ -4,8 +4,10 @@
 //! Tracked are the locals declared without an initializer, `out` parameters (undefined until
 //! the function writes them), and — in `main` — plain globals without an initializer and the
 //! shader's outputs. A vector's components are tracked one by one (`v.xy = …; v.z = …;`
-//! writes all of a `vec3`); an array, matrix or struct counts as written once any part of it is
-//! (dynamic indices make anything finer guesswork). The state at a point is the set of
+//! writes all of a `vec3`; `v[i] = …` in a loop whose counter `i` takes 0..=2 writes `v.xyz`,
+//! [`counters`], and through any other dynamic index every component); an array, matrix or
+//! struct counts as written once any part of it is (dynamic indices make anything finer
+//! guesswork). The state at a point is the set of
 //! variables written on *every* path to it: branches intersect, a branch that returns,
 //! discards, breaks or continues adds nothing, a loop body may run zero times unless its bounds
 //! are constant and let it run once (`for (int i = 0; i < 4; i++)`), the right side of `&&` and
@@ -24,6 +26,7 @@ use essl::source::Span;
 use essl::types::Type;
 
 mod conditions;
+mod counters;
 
 /// A variable the analysis tracks.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
@@ -112,6 +115,9 @@ struct Walk<'a> {
     truth: HashMap<usize, State>,
     /// How many statements (branches, loops, switches, blocks) enclose the current one.
     nest: usize,
+    /// The counters of the enclosing loops and the values they take there
+    /// ([`counters::counter_range`]).
+    counters: Vec<(usize, i64, i64)>,
 }
 
 /// A uniform a condition tests, with the value it requires: a loose uniform, or a member of a
@@ -176,6 +182,7 @@ impl<'a> Walk<'a> {
             loose: 0,
             truth: HashMap::default(),
             nest: 0,
+            counters: Vec::new(),
         }
     }
 
@@ -293,7 +300,7 @@ impl<'a> Walk<'a> {
                 let bit = match (all, index.as_const().and_then(|c| c.as_int())) {
                     (1, _) => 1,
                     (_, Some(i)) if (0..8).contains(&i) => (1u8 << i) & all,
-                    _ => all,
+                    _ => self.counter_bits(index).map_or(all, |b| b & all),
                 };
                 Some((v, bit))
             }
@@ -308,6 +315,17 @@ impl<'a> Walk<'a> {
                 None
             }
         }
+    }
+
+    /// The components an index that is an enclosing loop's counter selects, one bit per
+    /// value the counter takes there (`None`: not a counter, or a value past a vector's end).
+    fn counter_bits(&self, index: &Expr) -> Option<u8> {
+        let ExprKind::Local(i) = index.kind else {
+            return None;
+        };
+        let &(_, lo, hi) = self.counters.iter().rev().find(|c| c.0 == i)?;
+        ((0..8).contains(&lo) && (0..8).contains(&hi))
+            .then(|| (lo..=hi).fold(0u8, |m, k| m | (1 << k)))
     }
 
     fn expr(&mut self, e: &Expr, st: &mut State) {
@@ -634,7 +652,12 @@ impl<'a> Walk<'a> {
             breaks: Vec::new(),
             continues: Vec::new(),
         });
+        let counter = counters::counter_range(init, cond, step, body);
+        self.counters.extend(counter);
         let end = self.stmts(body, head);
+        if counter.is_some() {
+            self.counters.pop();
+        }
         let t = self.targets.pop().expect("pushed");
         let mut pre_step = end;
         for c in t.continues {

@@ -13,8 +13,10 @@ declare_rule! {
     /// ## What it does
     /// Reports a read of a variable that some path reaches before any write to it: a local declared
     /// without a value (`float d;`) and assigned only in some branches, only in a loop that may not
-    /// run, only in some components (`v.xy = …` before reading all of `v`), or passed as an `inout`
-    /// argument to a function that reads the parameter before writing it; an `out` parameter read
+    /// run, only in some components (`v.xy = …` before reading all of `v`; `v[i] = …` in a loop
+    /// whose counter stops short of a component, `for (int i = 0; i < 3; i++)` then `v.a`), or
+    /// passed as an `inout` argument to a function that reads the parameter before writing it; an
+    /// `out` parameter read
     /// before the function writes it, or left unwritten on some path through a `void` function (the
     /// caller's variable is then undefined); and in `main` (and the functions it calls) a global
     /// declared without a value or a shader output, read before it is written.
@@ -53,7 +55,8 @@ declare_rule! {
     ///   (`for (int i = 0; i < 4; i++)`), an `out` argument of a call, all components of a vector
     ///   written one by one.
     /// - An array, matrix or struct once any part of it is written (which parts a dynamic index
-    ///   writes is not followed).
+    ///   writes is not followed), and every component of a vector written through a dynamic
+    ///   index other than a loop counter with constant bounds (`v[k] = …` for a uniform `k`).
     /// - An `inout` argument the callee writes before reading, and an `out` parameter left unset by a
     ///   function that returns a value (`bool hit(…, out float t)`): the result says whether it is
     ///   set.

@@ -215,6 +215,20 @@ const HAZARDS: &[Hazard] = &[
         "  float c;\n  for (int i = 0; i < int(u_a); i++) { c = float(i); }\n  r = c;",
         W,
     ),
+    // A loop whose counter stops at 2 writes `c.rgb` through `c[i]`, not `c.a` (three.js's
+    // dispersion loop, `transmittedLight[ i ]` then `transmittedLight.a`).
+    (
+        "uninitialised-read",
+        "computed",
+        "  vec4 c;\n  for (int i = 0; i < 3; i++) { c[i] = t[i]; }\n  r = c.a;",
+        W,
+    ),
+    (
+        "uninitialised-read",
+        "computed",
+        "  vec4 c;\n  for (int i = 3; i > 0; i--) { c[i] = t[i]; }\n  r = c.x;",
+        W,
+    ),
     // The write's `if` on a uniform runs only where the outer `if` on a varying does.
     (
         "uninitialised-read",
@@ -458,6 +472,15 @@ const GUARDED: &[(&str, &str)] = &[
     (
         "uninitialised-read",
         "  float c = 0.0;\n  if (v_x > 0.5) { c = 1.0; }\n  r = c;",
+    ),
+    // Every component through the counter of a loop that reaches each.
+    (
+        "uninitialised-read",
+        "  vec4 c;\n  for (int i = 0; i <= 3; ++i) { c[i] = t[i]; }\n  r = c.a;",
+    ),
+    (
+        "uninitialised-read",
+        "  vec3 c;\n  c.z = 1.0;\n  for (int i = 0; i < 2; i += 1) { c[i] = t[i]; }\n  r = c.x + c.z;",
     ),
     // Written under `u_on`, read under `u_on && u_two`: every pixel of the draw takes both.
     (

@@ -1,0 +1,107 @@
+//! The values a loop counter takes: `for (int i = 0; i < 3; i++)` runs its body with `i` in
+//! 0..=2, so `v[i] = …` there writes `v.x`, `v.y` and `v.z` of a `vec4`, and not `v.w`
+//! (three.js's dispersion loop writes `transmittedLight[ i ]` for `i < 3` and then reads
+//! `transmittedLight.a`). A counter is a local the loop's initializer sets to a constant and
+//! its condition compares with a constant, which its step moves towards the bound by a
+//! constant and its body never writes (nor passes to a call, which might write it through an
+//! `out` parameter); anything else gives no range, and a write through the index then counts
+//! for every component, as before.
+
+use essl::hir::visit::{self, Visitor};
+use essl::hir::{BinaryOp, Cond, Expr, ExprKind, Stmt, StmtKind};
+
+use super::scalar;
+
+/// The counter of a loop and the values it takes in the body, inclusive.
+pub(super) fn counter_range(
+    init: &[Stmt],
+    cond: Option<&Cond>,
+    step: Option<&Expr>,
+    body: &[Stmt],
+) -> Option<(usize, i64, i64)> {
+    let Some(Cond::Expr(Expr {
+        kind: ExprKind::Binary(op, l, r),
+        ..
+    })) = cond
+    else {
+        return None;
+    };
+    let ExprKind::Local(i) = l.kind else {
+        return None;
+    };
+    let bound = whole(r.as_const().and_then(scalar)?)?;
+    let start = init.iter().find_map(|s| match &s.kind {
+        StmtKind::Local(j, Some(e)) if *j == i => e.as_const().and_then(scalar),
+        _ => None,
+    });
+    let start = whole(start?)?;
+    let up = step_sign(step?, i)?;
+    let (lo, hi) = match (op, up) {
+        (BinaryOp::Less, true) => (start, bound - 1),
+        (BinaryOp::LessEq, true) => (start, bound),
+        (BinaryOp::Greater, false) => (bound + 1, start),
+        (BinaryOp::GreaterEq, false) => (bound, start),
+        _ => return None,
+    };
+    if lo > hi {
+        return None;
+    }
+    let mut w = Writes {
+        local: i,
+        found: false,
+    };
+    w.visit_stmts(body);
+    (!w.found).then_some((i, lo, hi))
+}
+
+/// An integer-valued constant.
+fn whole(x: f64) -> Option<i64> {
+    (x.fract() == 0.0 && x.abs() < 1e9).then_some(x as i64)
+}
+
+/// Whether a loop's step moves local `i` up (`true`) or down by a constant.
+fn step_sign(step: &Expr, i: usize) -> Option<bool> {
+    let is_i = |e: &Expr| matches!(e.kind, ExprKind::Local(j) if j == i);
+    match &step.kind {
+        ExprKind::IncDec(inc, _, x) if is_i(x) => Some(*inc),
+        ExprKind::Assign(Some(op), x, c) if is_i(x) => {
+            let c = c.as_const().and_then(scalar)?;
+            match op {
+                BinaryOp::Add if c > 0.0 => Some(true),
+                BinaryOp::Sub if c > 0.0 => Some(false),
+                _ => None,
+            }
+        }
+        _ => None,
+    }
+}
+
+/// Finds a write to a local in a loop's body, or a call it is passed to.
+struct Writes {
+    local: usize,
+    found: bool,
+}
+
+impl Writes {
+    fn names(&self, e: &Expr) -> bool {
+        match &e.kind {
+            ExprKind::Local(j) => *j == self.local,
+            ExprKind::Swizzle(b, _) | ExprKind::Index(b, _) | ExprKind::Member(b, _) => {
+                self.names(b)
+            }
+            _ => false,
+        }
+    }
+}
+
+impl Visitor for Writes {
+    fn visit_expr(&mut self, e: &Expr) {
+        match &e.kind {
+            ExprKind::Assign(_, lhs, _) | ExprKind::IncDec(_, _, lhs) if self.names(lhs) => {
+                self.found = true;
+            }
+            ExprKind::Call(_, args) if args.iter().any(|a| self.names(a)) => self.found = true,
+            _ => visit::walk_expr(self, e),
+        }
+    }
+}
