@@ -23,7 +23,13 @@ declare_rule! {
     /// holds a colour (`v_color`, a function's `vec3 rgb` its callers pass an input to) counts as
     /// a texel: black and white are ordinary colours. A divisor that is a texel (or such a colour)
     /// itself is reported too: `c.rgb / c.a` un-premultiplies by an alpha that is 0 wherever the
-    /// texture is transparent, `x / t.r` divides by 0 wherever it is black.
+    /// texture is transparent, `x / t.r` divides by 0 wherever it is black. So is a shading term
+    /// that is 0 wherever the surface faces away from the light or the viewer: a product with a
+    /// clamped cosine (`max(dot(n, l), 0.0)`, `saturate(dot(n, v))`), or a sum, difference or
+    /// `mix` of such products — Cook–Torrance's `4.0 * NdotL * NdotV`, Neubelt's sheen
+    /// `4.0 * (dotNL + dotNV - dotNL * dotNV)`, Smith–GGX's `lambdaV + lambdaL`. A parameter named
+    /// for such a cosine (`NoL`, `NdotV`, `dotNL`) counts as one where a call passes it an input
+    /// as such, as a library function's harness does.
     ///
     /// ## Why is this bad?
     /// Two parameters a user sets independently are equal sooner or later — a spot light with the
@@ -32,7 +38,9 @@ declare_rule! {
     /// turns ±∞ into a hard edge but lets NaN through as black or garbage pixels on the cone's
     /// boundary. Article 001 says it itself: "dividing by zero is bad/undefined … we just need to make
     /// sure in our JavaScript that `u_innerLimit` is never equal to `u_outerLimit` (note: the example
-    /// code does not do this)".
+    /// code does not do this)". A BRDF's visibility term divided by the clamped cosines is ±∞ on
+    /// the whole unlit side of every object, and NaN where the numerator carries the same cosine:
+    /// `saturate` turns +∞ into 1 but NaN into whatever the GPU makes of it.
     ///
     /// ## Example
     /// ```glsl
@@ -53,6 +61,8 @@ declare_rule! {
     /// - A divisor the shader keeps away from 0: `max(d, 1e-4)`, `d + 0.1` of a non-negative `d`, a
     ///   difference it orders itself (`u_r + 0.1 - u_r`), or one an enclosing condition says is not 0
     ///   (`if (u_a != u_b)`, `abs(d) > 1e-6 ? x / d : 0.0`).
+    /// - A shading term the shader keeps from 0 (`4.0 * NdotL * NdotV + 0.0001`, `max(NdotL, 1e-4)`,
+    ///   under `if (NdotL > 0.0 && NdotV > 0.0)`), and a raw `dot(n, l)`, 0 on a line of pixels only.
     /// - A divisor with a per-pixel part, zero at isolated pixels at most: the depth linearisation
     ///   `far + near - z * (far - near)` (positive for `z` in [-1, 1]), a Fresnel term
     ///   `1.0 - Ems * Favg`, a difference of texels that is 0 only inside their range
@@ -71,7 +81,7 @@ declare_rule! {
     ///   `/ epsilon`.
     pub(crate) struct DivisionByDifference {
         id: "division-by-difference",
-        summary: "division by a difference of uniforms, or by a texel or a difference of texels at an end of their range, that can be zero",
+        summary: "division by a difference of uniforms, a texel or a difference of texels at an end of their range, or a shading term of clamped cosines, that can be zero",
         default_level: Level::Warn,
         check: check,
     }
@@ -101,6 +111,10 @@ fn check(cx: &Cx, out: &mut Vec<Diagnostic>) {
             // zero at isolated pixels at most, not for the whole draw — unless the part is a
             // texel and the difference is 0 at an end of its range.
             if cx.kind(id, d) != Some(ScalarKind::Float) {
+                continue;
+            }
+            if let Some(diag) = unlit_divisor(cx, f, id, h, d, v) {
+                out.push(diag);
                 continue;
             }
             if !v.facts.has(Facts::DIFF) {
@@ -204,6 +218,42 @@ fn texel_divisor(
         .with_help("guard the divisor: `max(x, 1e-4)`, or test it first")
         .with_fix(floor_fix(cx, span)),
     )
+}
+
+/// The finding for a divisor `d` of `h` that is 0 over the unlit side of a surface
+/// ([`Cx::unlit_zero`]): a visibility term's `4.0 * NdotL * NdotV`, `lambdaV + lambdaL`.
+fn unlit_divisor(
+    cx: &Cx,
+    f: &naga::Function,
+    id: usize,
+    h: naga::Handle<E>,
+    d: naga::Handle<E>,
+    v: &crate::value::Num,
+) -> Option<Diagnostic> {
+    if !v.comps().iter().any(|c| c.contains(0.0)) {
+        return None;
+    }
+    let (cid, c) = cx.unlit_zero(f, id, d)?;
+    let span = unguarded(cx, f, id, h, d)?;
+    let what = cx.what(f, id, d);
+    let mut diag = Diagnostic::rule_warning(
+        DivisionByDifference::RULE.id,
+        "division by a shading term that is 0 wherever the surface faces away from the light or the viewer",
+        span,
+    )
+    .with_label(format!("{what} is 0 wherever the clamped cosine is"))
+    .with_help("guard the divisor: `max(x, 1e-4)`, or test the cosine first")
+    .with_fix(floor_fix(cx, span));
+    let cspan = cx.span(crate::analysis::function(cx.module, cid), c);
+    let inside =
+        |a: essl::source::Span, b: essl::source::Span| a.start <= b.start && b.end <= a.end;
+    if !cspan.is_empty() && !inside(cspan, span) && !inside(span, cspan) {
+        diag = diag.with_secondary(
+            cspan,
+            "0 over every pixel where this dot product is negative",
+        );
+    }
+    Some(diag)
 }
 
 /// The span of divisor `d` of the division `h` where no guard keeps it from 0 (an enclosing

@@ -286,13 +286,30 @@ impl Cx<'_> {
         })
     }
 
-    /// Whether the guards say `x != 0`, or `a != b` for `x = a - b`.
+    /// Whether the guards say `x != 0`, or `a != b` for `x = a - b`, or each factor of a
+    /// product is not 0.
     pub fn nonzero(&self, f: &Function, id: usize, x: Handle<E>, g: &Guards) -> bool {
         let same = |p: Handle<E>, q: Handle<E>| self.sound().same(f, id, p, q);
         if g.nonzero.iter().any(|&y| same(y, x)) {
             return true;
         }
         let r = symbolic::resolve(f, self.sound(), id, x);
+        // A product of factors the guards (or constants) keep from 0: `nl * nv` under
+        // `nl > 0.0 && nv > 0.0`.
+        if let E::Binary {
+            op: Bo::Multiply,
+            left,
+            right,
+        } = f.expressions[r]
+        {
+            let factor = |h: Handle<E>| {
+                self.sound()
+                    .num(id, h)
+                    .is_some_and(|n| !n.comps().iter().any(|c| c.contains(0.0)))
+                    || self.nonzero(f, id, h, g)
+            };
+            return factor(left) && factor(right);
+        }
         let E::Binary {
             op: Bo::Subtract,
             left,

@@ -10,6 +10,7 @@ mod gradient;
 mod guards;
 pub(crate) mod origin;
 pub(crate) mod rule;
+mod unlit;
 
 mod acos_domain;
 mod asin_domain;

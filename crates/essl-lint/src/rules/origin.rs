@@ -65,6 +65,11 @@ pub struct Flows {
 }
 
 impl Flows {
+    /// The calls of function `id`: (caller, the call's arguments).
+    pub(crate) fn callers(&self, id: usize) -> &[(usize, Vec<Handle<E>>)] {
+        self.calls.get(id).map_or(&[], Vec::as_slice)
+    }
+
     /// The flows of a module.
     pub fn of(module: &naga::Module) -> Flows {
         let count = module.functions.len() + module.entry_points.len();
@@ -168,9 +173,14 @@ fn root(f: &Function, mut p: Handle<E>) -> Option<Root> {
 }
 
 impl Cx<'_> {
+    /// The module's calls, returns and stores: computed on first use.
+    pub(crate) fn flows(&self) -> &Flows {
+        self.flows.get_or_init(|| Flows::of(self.module))
+    }
+
     /// Where the values of expressions (function id, expression) come from, together.
     pub fn origin(&self, start: &[(usize, Handle<E>)]) -> Origin {
-        let flows = self.flows.get_or_init(|| Flows::of(self.module));
+        let flows = self.flows();
         let mut out = Origin::default();
         let mut seen: HashSet<Item> = HashSet::default();
         let mut work: Vec<Item> = start.iter().map(|&(id, h)| (id, h, Vec::new())).collect();

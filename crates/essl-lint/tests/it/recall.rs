@@ -92,6 +92,13 @@ const HAZARDS: &[Hazard] = &[
     ),
     ("division-by-difference", "texture", "  r = t.r / (1.0 - t.a);", W),
     ("division-by-difference", "texture", "  r = t.r / t.a;", W),
+    // A visibility term's denominator, 0 wherever the surface faces away from the light.
+    (
+        "division-by-difference",
+        "computed",
+        "  float nl = max(dot(n, l), 0.0);\n  float nv = max(dot(n, normalize(-v_pos)), 0.0);\n  r = 1.0 / (4.0 * (nl + nv - nl * nv));",
+        W,
+    ),
     ("normalize-zero", "uniform", "  r = normalize(cross(u_up, u_dir)).x;", W),
     ("normalize-zero", "varying", "  r = normalize(cross(v_n, vec3(0.0, 1.0, 0.0))).x;", W),
     (
@@ -334,6 +341,10 @@ const GUARDED: &[(&str, &str)] = &[
     // An alpha tested first, or kept above 0.
     ("division-by-difference", "  r = t.a > 0.0 ? t.r / t.a : 0.0;"),
     ("division-by-difference", "  r = t.r / max(t.a, 1e-4);"),
+    (
+        "division-by-difference",
+        "  float nl = max(dot(n, l), 0.0);\n  float nv = max(dot(n, normalize(-v_pos)), 0.0);\n  r = 1.0 / max(4.0 * (nl + nv - nl * nv), 1e-4);",
+    ),
     // A normal from a height map has a constant component; a weighted sum whose weights do not
     // cancel is no gradient.
     (

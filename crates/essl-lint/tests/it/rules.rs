@@ -460,6 +460,81 @@ fn a_guarded_or_non_uniform_divisor_is_fine() {
     );
 }
 
+#[test]
+fn division_by_a_shading_term_zero_on_the_unlit_side() {
+    let rule = "division-by-difference";
+    let cosines = "  vec3 n = normalize(v_n);\n  float nl = max(dot(n, normalize(v_h)), 0.0);\n  \
+                   float nv = clamp(dot(n, normalize(-v_pos)), 0.0, 1.0);\n";
+    // Cook–Torrance's denominator, Neubelt's sheen visibility, Smith–GGX's sum.
+    reports(
+        rule,
+        "highp",
+        "",
+        &format!("{cosines}  r = v_x / (4.0 * nl * nv);"),
+        &["(4.0 * nl * nv)"],
+    );
+    reports(
+        rule,
+        "highp",
+        "",
+        &format!("{cosines}  r = 1.0 / (4.0 * (nl + nv - nl * nv));"),
+        &["(4.0 * (nl + nv - nl * nv))"],
+    );
+    reports(
+        rule,
+        "highp",
+        "",
+        &format!("{cosines}  float gv = nl * sqrt(nv * nv + u_a);\n  float gl = nv * sqrt(nl * nl + u_a);\n  r = 0.5 / (gv + gl);"),
+        &["(gv + gl)"],
+    );
+    // A parameter named for the clamped cosine, passed an input as such (lygia's harness).
+    reports(
+        rule,
+        "highp",
+        "float vis(float NoV, float NoL) { return 0.5 / mix(2.0 * NoL * NoV, NoL + NoV, u_a); }",
+        "  r = vis(v_x, v_pos.x);",
+        &["mix(2.0 * NoL * NoV, NoL + NoV, u_a)"],
+    );
+    fixes_clear(
+        rule,
+        "highp",
+        "",
+        &format!("{cosines}  r = v_x / (4.0 * nl * nv);"),
+    );
+}
+
+#[test]
+fn a_shading_term_kept_from_zero_is_fine() {
+    let rule = "division-by-difference";
+    let cosines = "  vec3 n = normalize(v_n);\n  float nl = max(dot(n, normalize(v_h)), 0.0);\n  \
+                   float nv = clamp(dot(n, normalize(-v_pos)), 0.0, 1.0);\n";
+    // Guarded, floored, tested, a raw cosine (0 on a line of pixels), a sum with a constant.
+    clean(
+        rule,
+        "highp",
+        "",
+        &format!(
+            "{cosines}  r = v_x / (4.0 * nl * nv + 0.0001) + v_x / max(nl, 1e-4) + v_x / (nl + 0.5)\n    \
+             + v_x / dot(n, normalize(v_h));\n  if (nl > 0.0 && nv > 0.0) {{ r += 1.0 / (nl * nv); }}"
+        ),
+    );
+    // One call of a helper with a clamped cosine says nothing of another call's argument: GGX's
+    // `a2 / pow2(pow2(NdotH) * (a2 - 1.0) + 1.0)`.
+    clean(
+        rule,
+        "highp",
+        "float pow2(float x) { return x * x; }",
+        &format!("{cosines}  r = u_a / pow2(pow2(nl) * (u_a - 1.0) + 1.0);"),
+    );
+    // A parameter with another name, or a cosine-named one passed a computed value.
+    clean(
+        rule,
+        "highp",
+        "float f(float k, float NoL) { return 1.0 / k + 1.0 / NoL; }",
+        "  r = f(v_x, 0.5 + v_x * v_x);",
+    );
+}
+
 // ----- normalize-zero -----
 
 #[test]

@@ -1,0 +1,216 @@
+//! Whether a value is 0 over the unlit side of a surface: a product with a clamped cosine
+//! (`max(dot(n, l), 0.0)`, `saturate(dot(n, v))`), or a sum, difference or `mix` of such
+//! values. A BRDF's visibility term divides by one: the Smith–GGX `0.5 / (lambdaV + lambdaL)`
+//! with `lambdaV = NoL * …` and `lambdaL = NoV * …` (for a roughness of 0, `2 NoL NoV`),
+//! Neubelt's `1.0 / (4.0 * (dotNL + dotNV - dotNL * dotNV))`, Cook–Torrance's
+//! `/ (4.0 * NdotL * NdotV)`; each is 0 on every pixel that faces away from the light (or,
+//! with a normal map, from the viewer), where the quotient is ±∞ or, over a numerator with the
+//! same factor, NaN.
+//!
+//! A clamped cosine is 0 over a region where its dot product is negative; a raw `dot` of
+//! per-pixel vectors crosses 0 on a line of pixels only, and a clamp of per-draw values is the
+//! runtime check's. A function's parameter is such a cosine where a call passes one, or — for
+//! an input as such, which the analysis knows nothing of — where its name is one the
+//! physically based shading literature gives the clamped cosines of the light and view
+//! directions (`NoL`, `NdotV`, `dotNL`): every caller in the corpora computes them with
+//! `saturate` or `max(…, 0.0)` (`docs/lints/corpus.md`). A sum is taken to be 0 where each of
+//! its terms is: the terms' regions are the same unlit side in every shader seen, which the
+//! analysis does not prove.
+
+use naga::{BinaryOperator as Bo, Expression as E, Function, Handle, MathFunction as Mf};
+
+use super::Cx;
+use crate::analysis;
+use crate::value::Facts;
+
+/// How deep the walk follows operands.
+const DEPTH: u32 = 10;
+
+/// Names of parameters that hold the clamped cosine of a light or view direction with the
+/// normal, lower-cased.
+const COSINES: &[&str] = &[
+    "nol", "nov", "ndotl", "ndotv", "dotnl", "dotnv", "ndl", "ndv",
+];
+
+/// A call the walk went through from its result into the callee: the caller and the call's
+/// arguments.
+struct Call<'a> {
+    id: usize,
+    f: &'a Function,
+    args: Vec<Handle<E>>,
+    up: Option<&'a Call<'a>>,
+}
+
+impl Cx<'_> {
+    /// The clamped cosine that makes `h` 0 over the unlit side of a surface, if one does: the
+    /// clamp's expression, in function `at.0`.
+    pub fn unlit_zero(&self, f: &Function, id: usize, h: Handle<E>) -> Option<(usize, Handle<E>)> {
+        self.unlit(f, id, h, None, 0)
+    }
+
+    fn unlit(
+        &self,
+        f: &Function,
+        id: usize,
+        h: Handle<E>,
+        at: Option<&Call>,
+        depth: u32,
+    ) -> Option<(usize, Handle<E>)> {
+        if depth > DEPTH {
+            return None;
+        }
+        let d = depth + 1;
+        let go = |x: Handle<E>| self.unlit(f, id, x, at, d);
+        let constant = |x: Handle<E>| {
+            self.sound()
+                .num(id, x)
+                .and_then(|n| n.hull().as_point())
+                .filter(|p| p.is_finite())
+        };
+        match f.expressions[h] {
+            E::Math {
+                fun,
+                arg,
+                arg1,
+                arg2,
+                ..
+            } => match (fun, arg1, arg2) {
+                (Mf::Saturate, _, _) => self.cosine(f, id, arg).then_some((id, h)),
+                (Mf::Max, Some(b), _) => {
+                    let clamps = |x, c: Handle<E>| {
+                        self.cosine(f, id, x) && constant(c).is_some_and(|c| c <= 0.0)
+                    };
+                    (clamps(arg, b) || clamps(b, arg)).then_some((id, h))
+                }
+                (Mf::Clamp, Some(lo), _) => (self.cosine(f, id, arg)
+                    && constant(lo).is_some_and(|c| c <= 0.0))
+                .then_some((id, h)),
+                (Mf::Mix, Some(b), _) => go(arg).and(go(b)),
+                (Mf::Sqrt | Mf::Abs | Mf::Length, _, _) => go(arg),
+                (Mf::Pow, Some(e), _) if constant(e).is_some_and(|e| e > 0.0) => go(arg),
+                _ => None,
+            },
+            E::Binary { op, left, right } => match op {
+                Bo::Multiply => go(left).or_else(|| go(right)),
+                Bo::Divide => go(left),
+                Bo::Add | Bo::Subtract => go(left).and(go(right)),
+                _ => None,
+            },
+            E::Unary {
+                op: naga::UnaryOperator::Negate,
+                expr,
+            } => go(expr),
+            E::Swizzle { vector: base, .. } | E::AccessIndex { base, .. } => go(base),
+            E::Splat { value, .. } => go(value),
+            E::Load { pointer } => {
+                let E::LocalVariable(l) = f.expressions[pointer] else {
+                    return None;
+                };
+                let stores = self.sound().functions[id].stores.get(&l.index());
+                let init = f.local_variables[l].init;
+                stores
+                    .into_iter()
+                    .flatten()
+                    .chain(&init)
+                    .find_map(|x| go(*x))
+            }
+            E::CallResult(callee) => {
+                let c = callee.index();
+                if c >= self.module.functions.len() {
+                    return None;
+                }
+                // The callee's parameters are this call's arguments.
+                let mut args = None;
+                analysis::each_statement(&f.body, &mut |s| {
+                    if let naga::Statement::Call {
+                        result: Some(r),
+                        arguments,
+                        ..
+                    } = s
+                    {
+                        if *r == h {
+                            args = Some(arguments.clone());
+                        }
+                    }
+                });
+                let call = Call {
+                    id,
+                    f,
+                    args: args?,
+                    up: at,
+                };
+                let g = analysis::function(self.module, c);
+                let mut values = Vec::new();
+                analysis::each_statement(&g.body, &mut |s| {
+                    if let naga::Statement::Return { value: Some(x) } = s {
+                        values.push(*x);
+                    }
+                });
+                values
+                    .into_iter()
+                    .find_map(|x| self.unlit(g, c, x, Some(&call), d))
+            }
+            E::FunctionArgument(i) if id < self.module.functions.len() => {
+                let i = i as usize;
+                let named = f.arguments[i].name.as_deref().is_some_and(is_cosine_name);
+                let from = |caller: usize, g: &Function, a: Handle<E>, up: Option<&Call>| {
+                    self.unlit(g, caller, a, up, d)
+                        .or_else(|| (named && self.input_as_such(caller, a)).then_some((id, h)))
+                };
+                if let Some(call) = at {
+                    return from(call.id, call.f, *call.args.get(i)?, call.up);
+                }
+                self.flows().callers(id).iter().find_map(|(caller, args)| {
+                    let g = analysis::function(self.module, *caller);
+                    from(*caller, g, *args.get(i)?, None)
+                })
+            }
+            _ => None,
+        }
+    }
+
+    /// Whether `x` is a per-pixel dot product that can be negative (through locals).
+    fn cosine(&self, f: &Function, id: usize, x: Handle<E>) -> bool {
+        let per_pixel_negative = self.sound().num(id, x).is_some_and(|n| {
+            n.facts.any(Facts::INPUT.with(Facts::TEXTURE)) && n.comps().iter().any(|c| c.lo < 0.0)
+        });
+        if !per_pixel_negative {
+            return false;
+        }
+        match f.expressions[x] {
+            E::Math { fun: Mf::Dot, .. } => true,
+            E::Load { pointer } => {
+                let E::LocalVariable(l) = f.expressions[pointer] else {
+                    return false;
+                };
+                self.sound().functions[id]
+                    .stores
+                    .get(&l.index())
+                    .is_some_and(|s| {
+                        !s.is_empty()
+                            && s.iter()
+                                .all(|v| matches!(f.expressions[*v], E::Math { fun: Mf::Dot, .. }))
+                    })
+            }
+            _ => false,
+        }
+    }
+
+    /// Whether `a` (in function `caller`) is an input as such: a varying or attribute, not a
+    /// uniform, through copies only.
+    fn input_as_such(&self, caller: usize, a: Handle<E>) -> bool {
+        self.sound().num(caller, a).is_some_and(|n| {
+            n.facts.has(Facts::EXT) && n.facts.any(Facts::INPUT) && !n.facts.any(Facts::UNIFORM)
+        })
+    }
+}
+
+/// Whether a parameter's name is one of [`COSINES`] (case and underscores aside).
+fn is_cosine_name(name: &str) -> bool {
+    let n: String = name
+        .chars()
+        .filter(|c| *c != '_')
+        .map(|c| c.to_ascii_lowercase())
+        .collect();
+    COSINES.contains(&n.as_str())
+}
