@@ -42,7 +42,7 @@ mod eval;
 mod flow;
 mod math;
 mod memory;
-mod names;
+pub(crate) mod names;
 mod relational;
 mod same;
 mod series;

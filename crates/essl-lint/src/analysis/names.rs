@@ -1,4 +1,5 @@
-//! What an input's name says it holds: a colour or a normal.
+//! What an input's name says it holds: a colour or a normal; and what a uniform's name says: a
+//! setting a user may set to 0.
 //!
 //! An input as such — a varying or attribute, or the parameter of a function whose callers pass
 //! one unchanged — is unknown to the analysis, and a rule leaves a hazard that needs particular
@@ -66,6 +67,34 @@ fn words(name: &str) -> Vec<String> {
     out
 }
 
+/// Words that name a setting a user may set to 0: a count, a length, a radius, a gamma, a
+/// falloff (`directionCount`, `numberOfTilesWidth`, `_Blob_Fade_Length_`, `uRadius`, `uGamma`).
+/// Not sizes, resolutions, ratios or distances, which the host computes from the canvas and the
+/// camera and which are not 0 while anything is drawn (`u_resolution`, `u_pixelRatio`,
+/// `u_camera_to_center_distance`).
+const SETTING: &[&str] = &[
+    "count", "counts", "number", "num", "samples", "steps", "length", "radius", "gamma", "falloff",
+];
+
+/// Words that name what a draw call draws: a count of them (`numVerts`) is not 0 while a vertex
+/// shader runs.
+const DRAWN: &[&str] = &[
+    "vert",
+    "verts",
+    "vertex",
+    "vertices",
+    "instance",
+    "instances",
+];
+
+/// Whether a uniform's name says it holds a setting a user may set to 0 ([`SETTING`]), not a
+/// count of what is drawn ([`DRAWN`]).
+pub(crate) fn is_setting(name: &str) -> bool {
+    let ws = words(name);
+    let has = |list: &[&str]| ws.iter().any(|w| list.contains(&w.as_str()));
+    has(SETTING) && !has(DRAWN)
+}
+
 /// What `name` says a value of type `ty` holds: a colour for a float `vec3` or `vec4`, a normal
 /// for a float `vec3`.
 pub(super) fn kind(name: Option<&str>, ty: &TypeInner) -> Option<Kind> {
@@ -125,6 +154,29 @@ mod tests {
         assert_eq!(words("vRGB"), ["v", "rgb"]);
         assert_eq!(words("normalMC"), ["normal", "mc"]);
         assert_eq!(words("lh_vec3"), ["lh", "vec"]);
+    }
+
+    #[test]
+    fn settings_are_counts_lengths_radii_and_gammas() {
+        for name in [
+            "directionCount",
+            "numberOfTilesWidth",
+            "_Blob_Fade_Length_",
+            "uGamma",
+            "u_radius",
+        ] {
+            assert!(is_setting(name), "{name}");
+        }
+        for name in [
+            "u_resolution",
+            "uInputSize",
+            "u_camera_to_center_distance",
+            "u_pixelRatio",
+            "uLengths",
+            "numVerts",
+        ] {
+            assert!(!is_setting(name), "{name}");
+        }
     }
 
     #[test]

@@ -7,6 +7,7 @@ use naga::{BinaryOperator as Bo, Expression as E, ScalarKind};
 
 use super::rule::declare_rule;
 use super::Cx;
+use crate::analysis::names::is_setting;
 use crate::symbolic::resolve;
 use crate::value::Facts;
 use crate::Level;
@@ -29,7 +30,11 @@ declare_rule! {
     /// `mix` of such products — Cook–Torrance's `4.0 * NdotL * NdotV`, Neubelt's sheen
     /// `4.0 * (dotNL + dotNV - dotNL * dotNV)`, Smith–GGX's `lambdaV + lambdaL`. A parameter named
     /// for such a cosine (`NoL`, `NdotV`, `dotNL`) counts as one where a call passes it an input
-    /// as such, as a library function's harness does.
+    /// as such, as a library function's harness does. And, as a note naming it, a uniform as such
+    /// whose name says it holds a setting a user may set to 0 — a count, a length, a radius, a
+    /// gamma (`1.0 / uGamma`, `1.0 / float(directionCount)`, `d / uRadius`) — but not a size,
+    /// resolution, ratio or distance the host computes from the canvas or the camera, nor a count
+    /// of the vertices drawn.
     ///
     /// ## Why is this bad?
     /// Two parameters a user sets independently are equal sooner or later — a spot light with the
@@ -63,6 +68,8 @@ declare_rule! {
     ///   (`if (u_a != u_b)`, `abs(d) > 1e-6 ? x / d : 0.0`).
     /// - A shading term the shader keeps from 0 (`4.0 * NdotL * NdotV + 0.0001`, `max(NdotL, 1e-4)`,
     ///   under `if (NdotL > 0.0 && NdotV > 0.0)`), and a raw `dot(n, l)`, 0 on a line of pixels only.
+    /// - Any other uniform as such (`gl_FragCoord.xy / u_resolution`, `/ u_pixelRatio`): essl-gl's
+    ///   validation mode checks divisors at draw time.
     /// - A divisor with a per-pixel part, zero at isolated pixels at most: the depth linearisation
     ///   `far + near - z * (far - near)` (positive for `z` in [-1, 1]), a Fresnel term
     ///   `1.0 - Ems * Favg`, a difference of texels that is 0 only inside their range
@@ -119,6 +126,8 @@ fn check(cx: &Cx, out: &mut Vec<Diagnostic>) {
             }
             if !v.facts.has(Facts::DIFF) {
                 if let Some(diag) = texel_divisor(cx, f, id, h, d, v.facts) {
+                    out.push(diag);
+                } else if let Some(diag) = setting_divisor(cx, f, id, h, d, v) {
                     out.push(diag);
                 }
                 continue;
@@ -218,6 +227,40 @@ fn texel_divisor(
         .with_help("guard the divisor: `max(x, 1e-4)`, or test it first")
         .with_fix(floor_fix(cx, span)),
     )
+}
+
+/// The finding for a divisor `d` of `h` that is a uniform as such whose name says it holds a
+/// setting a user may set to 0 (a count, a length, a radius, a gamma: `1.0 / uGamma`,
+/// `1.0 / float(directionCount)`): a note naming it.
+fn setting_divisor(
+    cx: &Cx,
+    f: &naga::Function,
+    id: usize,
+    h: naga::Handle<E>,
+    d: naga::Handle<E>,
+    v: &crate::value::Num,
+) -> Option<Diagnostic> {
+    if !v.facts.has(Facts::EXT)
+        || !v.facts.any(Facts::UNIFORM)
+        || v.facts.any(Facts::INPUT.with(Facts::TEXTURE))
+        || !v.comps().iter().any(|c| c.contains(0.0))
+    {
+        return None;
+    }
+    let name = cx.origin(&[(id, d)]).single_uniform()?.to_string();
+    if !is_setting(&name) {
+        return None;
+    }
+    let span = unguarded(cx, f, id, h, d)?;
+    let diag = Diagnostic::rule_warning(
+        DivisionByDifference::RULE.id,
+        format!("division by the setting `{name}`, which a user may set to 0"),
+        span,
+    )
+    .with_label(format!("0 when `{name}` is"))
+    .with_help("guard the divisor: `max(x, 1e-4)`, or keep the setting above 0 where it is set")
+    .with_fix(floor_fix(cx, span));
+    Some(cx.grade(diag, &[(id, d)]))
 }
 
 /// The finding for a divisor `d` of `h` that is 0 over the unlit side of a surface

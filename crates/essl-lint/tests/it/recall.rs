@@ -17,7 +17,7 @@ fn shader(precision: &str, body: &str) -> String {
         "#version 300 es\nprecision {precision} float;\nprecision highp int;\n\
          uniform bool u_on; uniform bool u_two;\n\
          uniform float u_a; uniform float u_b; uniform float u_k; uniform vec3 u_up; uniform vec3 u_dir;\n\
-         uniform sampler2D u_tex;\n\
+         uniform sampler2D u_tex; uniform float u_gamma; uniform int u_sampleCount; uniform vec2 u_resolution;\n\
          in vec3 v_n; in vec3 v_h; in vec3 v_pos; in float v_x; in vec2 v_uv;\n\
          in vec3 v_normal; in vec4 v_color;\n\
          out vec4 o;\nvoid main() {{\n  float r = 0.0;\n  vec3 n = normalize(v_n);\n  \
@@ -92,6 +92,9 @@ const HAZARDS: &[Hazard] = &[
     ),
     ("division-by-difference", "texture", "  r = t.r / (1.0 - t.a);", W),
     ("division-by-difference", "texture", "  r = t.r / t.a;", W),
+    // A uniform as such whose name says a user may set it to 0: a gamma, a count.
+    ("division-by-difference", "uniform", "  r = pow(t.r, 1.0 / u_gamma);", N),
+    ("division-by-difference", "uniform", "  r = v_x / float(u_sampleCount);", N),
     // A visibility term's denominator, 0 wherever the surface faces away from the light.
     (
         "division-by-difference",
@@ -341,6 +344,11 @@ const GUARDED: &[(&str, &str)] = &[
     // An alpha tested first, or kept above 0.
     ("division-by-difference", "  r = t.a > 0.0 ? t.r / t.a : 0.0;"),
     ("division-by-difference", "  r = t.r / max(t.a, 1e-4);"),
+    // A size the host takes from the canvas, and a guarded setting.
+    (
+        "division-by-difference",
+        "  r = gl_FragCoord.x / u_resolution.x + pow(t.r, 1.0 / max(u_gamma, 1e-4));",
+    ),
     (
         "division-by-difference",
         "  float nl = max(dot(n, l), 0.0);\n  float nv = max(dot(n, normalize(-v_pos)), 0.0);\n  r = 1.0 / max(4.0 * (nl + nv - nl * nv), 1e-4);",
