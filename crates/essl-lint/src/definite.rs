@@ -716,27 +716,31 @@ fn meet_opt(a: Option<State>, b: Option<State>) -> Option<State> {
     }
 }
 
-/// Whether a `for` loop's constant bounds let its body run at least once:
-/// `for (int i = 0; i < 4; …)` (an initializer and a comparison with constants).
-fn runs_once(init: &[Stmt], cond: Option<&Cond>) -> bool {
+/// A `for` loop's counter and constant bounds: the comparison, the local it tests, the constant
+/// the initializer gives it and the constant it is compared with (`for (int i = 0; i < 4; …)`).
+fn constant_bounds(init: &[Stmt], cond: Option<&Cond>) -> Option<(BinaryOp, usize, f64, f64)> {
     let Some(Cond::Expr(Expr {
         kind: ExprKind::Binary(op, l, r),
         ..
     })) = cond
     else {
-        return false;
+        return None;
     };
     let ExprKind::Local(i) = l.kind else {
-        return false;
+        return None;
     };
-    let Some(n) = r.as_const().and_then(scalar) else {
-        return false;
-    };
+    let bound = r.as_const().and_then(scalar)?;
     let start = init.iter().find_map(|s| match &s.kind {
         StmtKind::Local(j, Some(e)) if *j == i => e.as_const().and_then(scalar),
         _ => None,
-    });
-    let Some(c) = start else {
+    })?;
+    Some((*op, i, start, bound))
+}
+
+/// Whether a `for` loop's constant bounds let its body run at least once:
+/// `for (int i = 0; i < 4; …)` (an initializer and a comparison with constants).
+fn runs_once(init: &[Stmt], cond: Option<&Cond>) -> bool {
+    let Some((op, _, c, n)) = constant_bounds(init, cond) else {
         return false;
     };
     match op {

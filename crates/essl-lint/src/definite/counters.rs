@@ -8,9 +8,9 @@
 //! for every component, as before.
 
 use essl::hir::visit::{self, Visitor};
-use essl::hir::{BinaryOp, Cond, Expr, ExprKind, Stmt, StmtKind};
+use essl::hir::{BinaryOp, Cond, Expr, ExprKind, Stmt};
 
-use super::scalar;
+use super::{constant_bounds, scalar};
 
 /// The counter of a loop and the values it takes in the body, inclusive.
 pub(super) fn counter_range(
@@ -19,22 +19,8 @@ pub(super) fn counter_range(
     step: Option<&Expr>,
     body: &[Stmt],
 ) -> Option<(usize, i64, i64)> {
-    let Some(Cond::Expr(Expr {
-        kind: ExprKind::Binary(op, l, r),
-        ..
-    })) = cond
-    else {
-        return None;
-    };
-    let ExprKind::Local(i) = l.kind else {
-        return None;
-    };
-    let bound = whole(r.as_const().and_then(scalar)?)?;
-    let start = init.iter().find_map(|s| match &s.kind {
-        StmtKind::Local(j, Some(e)) if *j == i => e.as_const().and_then(scalar),
-        _ => None,
-    });
-    let start = whole(start?)?;
+    let (op, i, start, bound) = constant_bounds(init, cond)?;
+    let (start, bound) = (whole(start)?, whole(bound)?);
     let up = step_sign(step?, i)?;
     let (lo, hi) = match (op, up) {
         (BinaryOp::Less, true) => (start, bound - 1),

@@ -120,14 +120,15 @@ fn check(cx: &Cx, out: &mut Vec<Diagnostic>) {
             if cx.kind(id, d) != Some(ScalarKind::Float) {
                 continue;
             }
-            if let Some(diag) = unlit_divisor(cx, f, id, h, d, v) {
+            let div = Division { f, id, h, d };
+            if let Some(diag) = unlit_divisor(cx, &div, v) {
                 out.push(diag);
                 continue;
             }
             if !v.facts.has(Facts::DIFF) {
-                if let Some(diag) = texel_divisor(cx, f, id, h, d, v.facts) {
+                if let Some(diag) = texel_divisor(cx, &div, v.facts) {
                     out.push(diag);
-                } else if let Some(diag) = setting_divisor(cx, f, id, h, d, v) {
+                } else if let Some(diag) = setting_divisor(cx, &div, v) {
                     out.push(diag);
                 }
                 continue;
@@ -144,7 +145,7 @@ fn check(cx: &Cx, out: &mut Vec<Diagnostic>) {
             if (per_pixel && !texel) || sym.get_or_insert_with(|| cx.sym(id, f)).nonzero(d) {
                 continue;
             }
-            let Some(span) = unguarded(cx, f, id, h, d) else {
+            let Some(span) = unguarded(cx, &div) else {
                 continue;
             };
             let what = cx.what(f, id, d);
@@ -185,6 +186,14 @@ fn check(cx: &Cx, out: &mut Vec<Diagnostic>) {
     }
 }
 
+/// A division: its function, the function's id, the division and its divisor.
+struct Division<'a> {
+    f: &'a naga::Function,
+    id: usize,
+    h: naga::Handle<E>,
+    d: naga::Handle<E>,
+}
+
 /// Whether a difference that reads a texel is 0 where texels sit at an end of their range:
 /// with texels in `[0, 1]` (and other external values ordinary), 0 is an end of the
 /// difference's range (`1.0 - k` for `k = min(1.0 - rgb)` of a texel's colour, `1.0 - t.a`).
@@ -202,18 +211,12 @@ fn zero_at_texel_end(cx: &Cx, id: usize, d: naga::Handle<E>, facts: Facts) -> bo
 /// The finding for a divisor `d` of `h` that is a texel (or a colour input) as such, whose
 /// range ends at 0: `c.rgb / c.a` un-premultiplies by an alpha that is 0 wherever the texture
 /// is transparent, `x / t.r` divides by 0 wherever it is black.
-fn texel_divisor(
-    cx: &Cx,
-    f: &naga::Function,
-    id: usize,
-    h: naga::Handle<E>,
-    d: naga::Handle<E>,
-    facts: Facts,
-) -> Option<Diagnostic> {
+fn texel_divisor(cx: &Cx, div: &Division, facts: Facts) -> Option<Diagnostic> {
+    let Division { f, id, d, .. } = *div;
     if !facts.has(Facts::EXT) || !zero_at_texel_end(cx, id, d, facts) {
         return None;
     }
-    let span = unguarded(cx, f, id, h, d)?;
+    let span = unguarded(cx, div)?;
     let what = cx.what(f, id, d);
     Some(
         Diagnostic::rule_warning(
@@ -232,14 +235,8 @@ fn texel_divisor(
 /// The finding for a divisor `d` of `h` that is a uniform as such whose name says it holds a
 /// setting a user may set to 0 (a count, a length, a radius, a gamma: `1.0 / uGamma`,
 /// `1.0 / float(directionCount)`): a note naming it.
-fn setting_divisor(
-    cx: &Cx,
-    f: &naga::Function,
-    id: usize,
-    h: naga::Handle<E>,
-    d: naga::Handle<E>,
-    v: &crate::value::Num,
-) -> Option<Diagnostic> {
+fn setting_divisor(cx: &Cx, div: &Division, v: &crate::value::Num) -> Option<Diagnostic> {
+    let Division { id, d, .. } = *div;
     if !v.facts.has(Facts::EXT)
         || !v.facts.any(Facts::UNIFORM)
         || v.facts.any(Facts::INPUT.with(Facts::TEXTURE))
@@ -251,7 +248,7 @@ fn setting_divisor(
     if !is_setting(&name) {
         return None;
     }
-    let span = unguarded(cx, f, id, h, d)?;
+    let span = unguarded(cx, div)?;
     let diag = Diagnostic::rule_warning(
         DivisionByDifference::RULE.id,
         format!("division by the setting `{name}`, which a user may set to 0"),
@@ -265,19 +262,13 @@ fn setting_divisor(
 
 /// The finding for a divisor `d` of `h` that is 0 over the unlit side of a surface
 /// ([`Cx::unlit_zero`]): a visibility term's `4.0 * NdotL * NdotV`, `lambdaV + lambdaL`.
-fn unlit_divisor(
-    cx: &Cx,
-    f: &naga::Function,
-    id: usize,
-    h: naga::Handle<E>,
-    d: naga::Handle<E>,
-    v: &crate::value::Num,
-) -> Option<Diagnostic> {
+fn unlit_divisor(cx: &Cx, div: &Division, v: &crate::value::Num) -> Option<Diagnostic> {
+    let Division { f, id, d, .. } = *div;
     if !v.comps().iter().any(|c| c.contains(0.0)) {
         return None;
     }
     let (cid, c) = cx.unlit_zero(f, id, d)?;
-    let span = unguarded(cx, f, id, h, d)?;
+    let span = unguarded(cx, div)?;
     let what = cx.what(f, id, d);
     let mut diag = Diagnostic::rule_warning(
         DivisionByDifference::RULE.id,
@@ -301,13 +292,8 @@ fn unlit_divisor(
 
 /// The span of divisor `d` of the division `h` where no guard keeps it from 0 (an enclosing
 /// condition, `abs(d) > 1e-6 ? x / d : 0.0`); `None` where one does, or where `d` has no span.
-fn unguarded(
-    cx: &Cx,
-    f: &naga::Function,
-    id: usize,
-    h: naga::Handle<E>,
-    d: naga::Handle<E>,
-) -> Option<essl::source::Span> {
+fn unguarded(cx: &Cx, div: &Division) -> Option<essl::source::Span> {
+    let Division { f, id, h, d } = *div;
     let g = cx.guards(f, id, h);
     if cx.nonzero(f, id, d, &g)
         || cx
