@@ -76,23 +76,25 @@ const SETTING: &[&str] = &[
     "count", "counts", "number", "num", "samples", "steps", "length", "radius", "gamma", "falloff",
 ];
 
-/// Words that name what a draw call draws: a count of them (`numVerts`) is not 0 while a vertex
-/// shader runs.
-const DRAWN: &[&str] = &[
+/// Words that say a name with a [`SETTING`] word holds something else: what a draw call draws,
+/// whose count (`numVerts`) is not 0 while a vertex shader runs, and a scale the host computes
+/// (MapLibre's `u_gamma_scale`, from the camera's pitch and distance).
+const NOT_SETTING: &[&str] = &[
     "vert",
     "verts",
     "vertex",
     "vertices",
     "instance",
     "instances",
+    "scale",
 ];
 
-/// Whether a uniform's name says it holds a setting a user may set to 0 ([`SETTING`]), not a
-/// count of what is drawn ([`DRAWN`]).
+/// Whether a uniform's name says it holds a setting a user may set to 0 ([`SETTING`], not
+/// [`NOT_SETTING`]).
 pub(crate) fn is_setting(name: &str) -> bool {
     let ws = words(name);
     let has = |list: &[&str]| ws.iter().any(|w| list.contains(&w.as_str()));
-    has(SETTING) && !has(DRAWN)
+    has(SETTING) && !has(NOT_SETTING)
 }
 
 /// What `name` says a value of type `ty` holds: a colour for a float `vec3` or `vec4`, a normal
@@ -174,6 +176,7 @@ mod tests {
             "u_pixelRatio",
             "uLengths",
             "numVerts",
+            "u_gamma_scale",
         ] {
             assert!(!is_setting(name), "{name}");
         }

@@ -32,7 +32,8 @@ declare_rule! {
     /// for such a cosine (`NoL`, `NdotV`, `dotNL`) counts as one where a call passes it an input
     /// as such, as a library function's harness does. And, as a note naming it, a uniform as such
     /// whose name says it holds a setting a user may set to 0 — a count, a length, a radius, a
-    /// gamma (`1.0 / uGamma`, `1.0 / float(directionCount)`, `d / uRadius`) — but not a size,
+    /// gamma (`1.0 / uGamma`, `1.0 / float(directionCount)`, `d / uRadius`), or a multiple of
+    /// one (`lengthCap * sqrt(-z)`, through locals and calls) — but not a size,
     /// resolution, ratio or distance the host computes from the canvas or the camera, nor a count
     /// of the vertices drawn.
     ///
@@ -128,7 +129,7 @@ fn check(cx: &Cx, out: &mut Vec<Diagnostic>) {
             if !v.facts.has(Facts::DIFF) {
                 if let Some(diag) = texel_divisor(cx, &div, v.facts) {
                     out.push(diag);
-                } else if let Some(diag) = setting_divisor(cx, &div, v) {
+                } else if let Some(diag) = setting_divisor(cx, &div) {
                     out.push(diag);
                 }
                 continue;
@@ -234,30 +235,84 @@ fn texel_divisor(cx: &Cx, div: &Division, facts: Facts) -> Option<Diagnostic> {
 
 /// The finding for a divisor `d` of `h` that is a uniform as such whose name says it holds a
 /// setting a user may set to 0 (a count, a length, a radius, a gamma: `1.0 / uGamma`,
-/// `1.0 / float(directionCount)`): a note naming it.
-fn setting_divisor(cx: &Cx, div: &Division, v: &crate::value::Num) -> Option<Diagnostic> {
-    let Division { id, d, .. } = *div;
-    if !v.facts.has(Facts::EXT)
-        || !v.facts.any(Facts::UNIFORM)
-        || v.facts.any(Facts::INPUT.with(Facts::TEXTURE))
-        || !v.comps().iter().any(|c| c.contains(0.0))
-    {
-        return None;
-    }
-    let name = cx.origin(&[(id, d)]).single_uniform()?.to_string();
-    if !is_setting(&name) {
-        return None;
-    }
+/// `1.0 / float(directionCount)`), or a multiple of one (`lengthCap * sqrt(-z)`): a note
+/// naming it.
+fn setting_divisor(cx: &Cx, div: &Division) -> Option<Diagnostic> {
+    let Division { f, id, d, .. } = *div;
+    let (name, itself) = setting_factor(cx, f, id, d, 0)?;
     let span = unguarded(cx, div)?;
-    let diag = Diagnostic::rule_warning(
-        DivisionByDifference::RULE.id,
-        format!("division by the setting `{name}`, which a user may set to 0"),
-        span,
-    )
-    .with_label(format!("0 when `{name}` is"))
-    .with_help("guard the divisor: `max(x, 1e-4)`, or keep the setting above 0 where it is set")
-    .with_fix(floor_fix(cx, span));
-    Some(cx.grade(diag, &[(id, d)]))
+    let (message, label) = if itself {
+        (
+            format!("division by the setting `{name}`, which a user may set to 0"),
+            format!("0 when `{name}` is"),
+        )
+    } else {
+        (
+            format!("division by a multiple of the setting `{name}`, which a user may set to 0"),
+            format!("{} is 0 wherever `{name}` is", cx.what(f, id, d)),
+        )
+    };
+    let mut diag = Diagnostic::rule_warning(DivisionByDifference::RULE.id, message, span)
+        .with_label(label)
+        .with_help("guard the divisor: `max(x, 1e-4)`, or keep the setting above 0 where it is set")
+        .with_fix(floor_fix(cx, span));
+    if itself {
+        return Some(cx.grade(diag, &[(id, d)]));
+    }
+    diag.severity = essl::diagnostic::Severity::Note;
+    Some(diag.with_note(format!(
+        "`{name}` at 0 makes the divisor 0 for the whole draw: essl-gl's validation mode checks the value at each draw"
+    )))
+}
+
+/// The setting (a uniform as such that [`is_setting`]) expression `h` of function `id` is, or is
+/// a multiple of, through locals, conversions and the arguments of calls; and whether `h` is the
+/// setting itself.
+fn setting_factor(
+    cx: &Cx,
+    f: &naga::Function,
+    id: usize,
+    h: naga::Handle<E>,
+    depth: u32,
+) -> Option<(String, bool)> {
+    let n = cx.sound().num(id, h)?;
+    if depth > 8 || !n.comps().iter().any(|c| c.contains(0.0)) {
+        return None;
+    }
+    if n.facts.has(Facts::EXT)
+        && n.facts.any(Facts::UNIFORM)
+        && !n.facts.any(Facts::INPUT.with(Facts::TEXTURE))
+    {
+        let name = cx.origin(&[(id, h)]).single_uniform()?.to_string();
+        return is_setting(&name).then_some((name, depth == 0));
+    }
+    let go = |x: naga::Handle<E>| setting_factor(cx, f, id, x, depth + 1);
+    let found = match f.expressions[h] {
+        E::Binary {
+            op: Bo::Multiply,
+            left,
+            right,
+        } => go(left).or_else(|| go(right)),
+        E::Splat { value: x, .. }
+        | E::Swizzle { vector: x, .. }
+        | E::AccessIndex { base: x, .. }
+        | E::As { expr: x, .. } => go(x),
+        E::Load { pointer } => {
+            let E::LocalVariable(l) = f.expressions[pointer] else {
+                return None;
+            };
+            let stores = cx.sound().functions[id].stores.get(&l.index())?;
+            stores.iter().find_map(|x| go(*x))
+        }
+        E::FunctionArgument(i) if id < cx.module.functions.len() => {
+            cx.flows().callers(id).iter().find_map(|(caller, args)| {
+                let g = crate::analysis::function(cx.module, *caller);
+                setting_factor(cx, g, *caller, *args.get(i as usize)?, depth + 1)
+            })
+        }
+        _ => None,
+    }?;
+    Some((found.0, false))
 }
 
 /// The finding for a divisor `d` of `h` that is 0 over the unlit side of a surface

@@ -95,6 +95,13 @@ const HAZARDS: &[Hazard] = &[
     // A uniform as such whose name says a user may set it to 0: a gamma, a count.
     ("division-by-difference", "uniform", "  r = pow(t.r, 1.0 / u_gamma);", N),
     ("division-by-difference", "uniform", "  r = v_x / float(u_sampleCount);", N),
+    // A multiple of one: 0 for the whole draw when the setting is.
+    (
+        "division-by-difference",
+        "uniform",
+        "  float w = u_gamma * sqrt(abs(v_x));\n  r = v_x / w;",
+        N,
+    ),
     // A visibility term's denominator, 0 wherever the surface faces away from the light.
     (
         "division-by-difference",
