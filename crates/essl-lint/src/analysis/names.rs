@@ -67,13 +67,37 @@ fn words(name: &str) -> Vec<String> {
     out
 }
 
-/// Words that name a setting a user may set to 0: a count, a length, a radius, a gamma, a
-/// falloff (`directionCount`, `numberOfTilesWidth`, `_Blob_Fade_Length_`, `uRadius`, `uGamma`).
+/// Words that name a setting a user may set to 0: a count (of samples, steps, columns, rows,
+/// segments, octaves, iterations…), a length, a radius, a gamma, a falloff (`directionCount`,
+/// `numberOfTilesWidth`, `uTileColumns`, `_Blob_Fade_Length_`, `uRadius`, `uGamma`).
 /// Not sizes, resolutions, ratios or distances, which the host computes from the canvas and the
 /// camera and which are not 0 while anything is drawn (`u_resolution`, `u_pixelRatio`,
 /// `u_camera_to_center_distance`).
 const SETTING: &[&str] = &[
-    "count", "counts", "number", "num", "samples", "steps", "length", "radius", "gamma", "falloff",
+    "count",
+    "counts",
+    "number",
+    "num",
+    "samples",
+    "steps",
+    "length",
+    "radius",
+    "gamma",
+    "falloff",
+    "columns",
+    "rows",
+    "cols",
+    "divisions",
+    "segments",
+    "slices",
+    "subdivisions",
+    "levels",
+    "frames",
+    "octaves",
+    "iterations",
+    "bands",
+    "cells",
+    "tiles",
 ];
 
 /// Words that say a name with a [`SETTING`] word holds something else: what a draw call draws,
