@@ -16,10 +16,10 @@ declare_rule! {
     /// run, only in some components (`v.xy = …` before reading all of `v`; `v[i] = …` in a loop
     /// whose counter stops short of a component, `for (int i = 0; i < 3; i++)` then `v.a`), or
     /// passed as an `inout` argument to a function that reads the parameter before writing it; an
-    /// `out` parameter read
-    /// before the function writes it, or left unwritten on some path through a `void` function (the
-    /// caller's variable is then undefined); and in `main` (and the functions it calls) a global
-    /// declared without a value or a shader output, read before it is written.
+    /// `out` parameter read before the function writes it, or left unwritten on some path through
+    /// a `void` function (the caller's variable is then undefined); and in `main` (and the
+    /// functions it calls) a global declared without a value or a shader output, read before it
+    /// is written.
     ///
     /// ## Why is this bad?
     /// GLSL ES leaves a variable without an initializer undefined until it is written (GLSL ES 3.00
