@@ -652,7 +652,7 @@ impl<'a> Walk<'a> {
             breaks: Vec::new(),
             continues: Vec::new(),
         });
-        let counter = counters::counter_range(init, cond, step, body);
+        let counter = counters::counter_range(self.m, init, cond, step, body);
         self.counters.extend(counter);
         let end = self.stmts(body, head);
         if counter.is_some() {

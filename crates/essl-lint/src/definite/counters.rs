@@ -3,17 +3,18 @@
 //! (three.js's dispersion loop writes `transmittedLight[ i ]` for `i < 3` and then reads
 //! `transmittedLight.a`). A counter is a local the loop's initializer sets to a constant and
 //! its condition compares with a constant, which its step moves towards the bound by a
-//! constant and its body never writes (nor passes to a call, which might write it through an
-//! `out` parameter); anything else gives no range, and a write through the index then counts
-//! for every component, as before.
+//! constant and its body never writes (nor passes to a function's `out` or `inout`
+//! parameter); anything else gives no range, and a write through the index then counts for
+//! every component, as before.
 
 use essl::hir::visit::{self, Visitor};
-use essl::hir::{BinaryOp, Cond, Expr, ExprKind, Stmt};
+use essl::hir::{self, BinaryOp, Cond, Expr, ExprKind, ParamMode, Stmt};
 
 use super::{constant_bounds, scalar};
 
 /// The counter of a loop and the values it takes in the body, inclusive.
 pub(super) fn counter_range(
+    m: &hir::Module,
     init: &[Stmt],
     cond: Option<&Cond>,
     step: Option<&Expr>,
@@ -33,6 +34,7 @@ pub(super) fn counter_range(
         return None;
     }
     let mut w = Writes {
+        m,
         local: i,
         found: false,
     };
@@ -62,13 +64,26 @@ fn step_sign(step: &Expr, i: usize) -> Option<bool> {
     }
 }
 
-/// Finds a write to a local in a loop's body, or a call it is passed to.
-struct Writes {
+/// Finds a write to a local in a loop's body, or a call that may write it through an `out` or
+/// `inout` parameter.
+struct Writes<'m> {
+    m: &'m hir::Module,
     local: usize,
     found: bool,
 }
 
-impl Writes {
+impl Writes<'_> {
+    /// Whether a call passes the local to an `out` or `inout` parameter (or to a function the
+    /// module does not describe).
+    fn writes_through(&self, callee: usize, args: &[Expr]) -> bool {
+        let Some(f) = self.m.functions.get(callee) else {
+            return args.iter().any(|a| self.names(a));
+        };
+        args.iter()
+            .enumerate()
+            .any(|(i, a)| self.names(a) && f.params.get(i).is_none_or(|p| p.mode != ParamMode::In))
+    }
+
     fn names(&self, e: &Expr) -> bool {
         match &e.kind {
             ExprKind::Local(j) => *j == self.local,
@@ -80,13 +95,15 @@ impl Writes {
     }
 }
 
-impl Visitor for Writes {
+impl Visitor for Writes<'_> {
     fn visit_expr(&mut self, e: &Expr) {
         match &e.kind {
             ExprKind::Assign(_, lhs, _) | ExprKind::IncDec(_, _, lhs) if self.names(lhs) => {
                 self.found = true;
             }
-            ExprKind::Call(_, args) if args.iter().any(|a| self.names(a)) => self.found = true,
+            ExprKind::Call(callee, args) if self.writes_through(*callee, args) => {
+                self.found = true;
+            }
             _ => visit::walk_expr(self, e),
         }
     }

@@ -172,6 +172,36 @@ void main() {
     );
 }
 
+#[test]
+fn components_written_through_a_loop_counter() {
+    // three.js's dispersion loop: `.rgb` through the counter, then `.a` read; the counter passed
+    // to a function by value keeps its range, passed to an `inout` parameter it has none.
+    check(
+        r#"#version 300 es
+precision highp float;
+uniform sampler2D u_tex;
+in vec2 v_uv;
+out vec4 o;
+float sampleAt(int k) { return texture(u_tex, v_uv)[k]; }
+void bump(inout int k) { k += 0; }
+void main() {
+  vec4 light;
+  for (int i = 0; i < 3; i++) {
+    light[i] = sampleAt(i);
+    light.a += 1.0;
+  //^^^^^^^ warning uninitialised-read
+  }
+  vec4 all4;
+  for (int j = 0; j < 3; j++) {
+    bump(j);
+    all4[j] = 1.0;
+  }
+  o = light + all4;
+}
+"#,
+    );
+}
+
 // ----- guards -----
 
 #[test]
