@@ -13,7 +13,7 @@
 use naga::{BinaryOperator as Bo, Expression as E, Function, Handle, MathFunction as Mf};
 
 use super::Cx;
-use crate::analysis::{self, each_statement};
+use crate::analysis;
 use crate::value::Facts;
 
 /// How deep the walk follows operands.
@@ -138,7 +138,7 @@ impl Cx<'_> {
     }
 
     /// The values stored whole into the local a load reads (nothing for other variables).
-    fn stored(&self, f: &Function, id: usize, pointer: Handle<E>) -> Vec<Handle<E>> {
+    pub(super) fn stored(&self, f: &Function, id: usize, pointer: Handle<E>) -> Vec<Handle<E>> {
         let E::LocalVariable(l) = f.expressions[pointer] else {
             return Vec::new();
         };
@@ -170,14 +170,9 @@ impl Cx<'_> {
             return false;
         }
         let g = analysis::function(self.module, callee);
-        let mut values = Vec::new();
-        each_statement(&g.body, &mut |s| {
-            if let naga::Statement::Return { value: Some(x) } = s {
-                values.push(*x);
-            }
-        });
-        values
-            .into_iter()
-            .any(|x| self.flat(g, callee, x, v, depth + 1))
+        self.flows()
+            .returns(callee)
+            .iter()
+            .any(|x| self.flat(g, callee, *x, v, depth + 1))
     }
 }

@@ -56,6 +56,8 @@ impl Origin {
 pub struct Flows {
     /// Per function: (caller, the call's arguments).
     calls: Vec<Vec<(usize, Vec<Handle<E>>)>>,
+    /// Per (caller, call result): the callee and the call's place in its `calls`.
+    results: HashMap<(usize, Handle<E>), (usize, usize)>,
     /// Per function: the values it returns.
     returns: Vec<Vec<Handle<E>>>,
     /// Per function: the values stored into each local, with the part stored (empty: whole).
@@ -70,11 +72,23 @@ impl Flows {
         self.calls.get(id).map_or(&[], Vec::as_slice)
     }
 
+    /// The arguments of the call in function `caller` whose result is `result`.
+    pub(crate) fn arguments(&self, caller: usize, result: Handle<E>) -> Option<&[Handle<E>]> {
+        let &(callee, at) = self.results.get(&(caller, result))?;
+        Some(&self.calls[callee][at].1)
+    }
+
+    /// The values function `id` returns.
+    pub(crate) fn returns(&self, id: usize) -> &[Handle<E>] {
+        self.returns.get(id).map_or(&[], Vec::as_slice)
+    }
+
     /// The flows of a module.
     pub fn of(module: &naga::Module) -> Flows {
         let count = module.functions.len() + module.entry_points.len();
         let mut fl = Flows {
             calls: vec![Vec::new(); count],
+            results: HashMap::default(),
             returns: vec![Vec::new(); count],
             locals: vec![HashMap::default(); count],
             globals: HashMap::default(),
@@ -102,9 +116,13 @@ impl Flows {
                 Statement::Call {
                     function,
                     arguments,
-                    ..
+                    result,
                 } => {
-                    if let Some(c) = self.calls.get_mut(function.index()) {
+                    let callee = function.index();
+                    if let Some(c) = self.calls.get_mut(callee) {
+                        if let Some(r) = result {
+                            self.results.insert((id, *r), (callee, c.len()));
+                        }
                         c.push((id, arguments.clone()));
                     }
                 }

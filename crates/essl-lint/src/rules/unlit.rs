@@ -37,7 +37,7 @@ const COSINES: &[&str] = &[
 struct Call<'a> {
     id: usize,
     f: &'a Function,
-    args: Vec<Handle<E>>,
+    args: &'a [Handle<E>],
     up: Option<&'a Call<'a>>,
 }
 
@@ -102,53 +102,24 @@ impl Cx<'_> {
             } => go(expr),
             E::Swizzle { vector: base, .. } | E::AccessIndex { base, .. } => go(base),
             E::Splat { value, .. } => go(value),
-            E::Load { pointer } => {
-                let E::LocalVariable(l) = f.expressions[pointer] else {
-                    return None;
-                };
-                let stores = self.sound().functions[id].stores.get(&l.index());
-                let init = f.local_variables[l].init;
-                stores
-                    .into_iter()
-                    .flatten()
-                    .chain(&init)
-                    .find_map(|x| go(*x))
-            }
+            E::Load { pointer } => self.stored(f, id, pointer).into_iter().find_map(go),
             E::CallResult(callee) => {
                 let c = callee.index();
                 if c >= self.module.functions.len() {
                     return None;
                 }
                 // The callee's parameters are this call's arguments.
-                let mut args = None;
-                analysis::each_statement(&f.body, &mut |s| {
-                    if let naga::Statement::Call {
-                        result: Some(r),
-                        arguments,
-                        ..
-                    } = s
-                    {
-                        if *r == h {
-                            args = Some(arguments.clone());
-                        }
-                    }
-                });
                 let call = Call {
                     id,
                     f,
-                    args: args?,
+                    args: self.flows().arguments(id, h)?,
                     up: at,
                 };
                 let g = analysis::function(self.module, c);
-                let mut values = Vec::new();
-                analysis::each_statement(&g.body, &mut |s| {
-                    if let naga::Statement::Return { value: Some(x) } = s {
-                        values.push(*x);
-                    }
-                });
-                values
-                    .into_iter()
-                    .find_map(|x| self.unlit(g, c, x, Some(&call), d))
+                self.flows()
+                    .returns(c)
+                    .iter()
+                    .find_map(|x| self.unlit(g, c, *x, Some(&call), d))
             }
             E::FunctionArgument(i) if id < self.module.functions.len() => {
                 let i = i as usize;
