@@ -14,6 +14,7 @@ mod unlit;
 
 mod acos_domain;
 mod asin_domain;
+mod clamp_bounds;
 mod division_by_difference;
 mod domain_atan2;
 mod domain_integer_division;
@@ -44,6 +45,7 @@ pub static RULES: &[&Rule] = &[
     &asin_domain::AsinDomain::RULE,
     &smoothstep_edges::SmoothstepEdges::RULE,
     &smoothstep_reversed_constant::SmoothstepReversedConstant::RULE,
+    &clamp_bounds::ClampBounds::RULE,
     &division_by_difference::DivisionByDifference::RULE,
     &normalize_zero::NormalizeZero::RULE,
     &domain_sqrt::DomainSqrt::RULE,
@@ -66,7 +68,8 @@ pub(crate) const HIR_RULES: &[&str] = &["uninitialised-read", "non-uniform-deriv
 pub(crate) const UNUSED_ALLOW: &str = "unused-essl-allow";
 
 /// Whether any rule has something to look at in a shader: a `pow`, `acos`, `asin`,
-/// `smoothstep` or `normalize` call, a division, or low-precision arithmetic of a kind
+/// `smoothstep` or `normalize` call, a division, a `clamp` of a constant or with reversed
+/// constant bounds, or low-precision arithmetic of a kind
 /// `mediump-overflow` looks at (the precisions are only looked up when the text names
 /// `mediump`, `lowp` or `gl_PointCoord` and such arithmetic is there). Most conformance shaders
 /// have none, and then the analysis, which is most of the cost of linting, is not run. Also
@@ -79,25 +82,26 @@ pub(crate) fn candidates(
     use naga::{BinaryOperator as Bo, Expression as E, MathFunction as Mf};
     let hard = module.functions.iter().any(|(_, f)| {
         f.expressions.iter().any(|(_, e)| {
-            matches!(
-                e,
-                E::Math {
-                    fun: Mf::Pow
-                        | Mf::Acos
-                        | Mf::Asin
-                        | Mf::SmoothStep
-                        | Mf::Normalize
-                        | Mf::Sqrt
-                        | Mf::InverseSqrt
-                        | Mf::Log
-                        | Mf::Log2
-                        | Mf::Atan2,
-                    ..
-                } | E::Binary {
-                    op: Bo::Divide | Bo::Modulo,
-                    ..
-                } | E::ImageLoad { .. }
-            )
+            clamp_bounds::suspect(module, f, e)
+                || matches!(
+                    e,
+                    E::Math {
+                        fun: Mf::Pow
+                            | Mf::Acos
+                            | Mf::Asin
+                            | Mf::SmoothStep
+                            | Mf::Normalize
+                            | Mf::Sqrt
+                            | Mf::InverseSqrt
+                            | Mf::Log
+                            | Mf::Log2
+                            | Mf::Atan2,
+                        ..
+                    } | E::Binary {
+                        op: Bo::Divide | Bo::Modulo,
+                        ..
+                    } | E::ImageLoad { .. }
+                )
         })
     });
     if hard {

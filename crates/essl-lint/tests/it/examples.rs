@@ -37,6 +37,13 @@ const SETTINGS: &[Setting] = &[
         sink: "lat",
     },
     Setting {
+        rule: "clamp-bounds",
+        globals: "",
+        before: "",
+        instead_needs: "",
+        sink: "isFrontFace",
+    },
+    Setting {
         rule: "division-by-difference",
         globals: DOT_FROM_DIRECTION,
         before: FROM_DIRECTION,

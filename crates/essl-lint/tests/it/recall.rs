@@ -82,6 +82,13 @@ const HAZARDS: &[Hazard] = &[
     ),
     ("smoothstep-edges", "rounding", "  r = smoothstep(u_a, u_a + 1e-9, v_x);", W),
     ("smoothstep-reversed-constant", "constant", "  r = smoothstep(1.0, 0.0, v_x);", N),
+    ("clamp-bounds", "constant", "  r = clamp(v_x, 1.0, 0.0);", W),
+    ("clamp-bounds", "constant", "  r = clamp(t.rg, vec2(0.0, 1.0), vec2(1.0, 0.5)).y;", W),
+    // The value and the bounds in the wrong order: reversed wherever the last is below 1.
+    ("clamp-bounds", "varying", "  r = clamp(0.0, 1.0, v_x);", W),
+    ("clamp-bounds", "texture", "  r = clamp(0.0, 1.0, t.r);", W),
+    ("clamp-bounds", "computed", "  r = clamp(0.0, 1.0, float(gl_FrontFacing));", W),
+    ("clamp-bounds", "uniform", "  r = clamp(0.3, 1.0, 1.05 - u_a * 0.5);", W),
     ("division-by-difference", "uniform", "  r = v_x / (u_a - u_b);", W),
     ("division-by-difference", "uniform", "  r = v_x / (u_a - 1.0);", N),
     (
@@ -418,6 +425,10 @@ const GUARDED: &[(&str, &str)] = &[
         "  float d = dot(n, l);\n  r = smoothstep(clamp(d - 0.3, 0.0, 1.0), clamp(d, 0.0, 1.0) + 1e-3, v_x);",
     ),
     ("smoothstep-reversed-constant", "  r = 1.0 - smoothstep(0.0, 1.0, v_x);"),
+    ("clamp-bounds", "  r = clamp(v_x, 0.0, 1.0) + clamp(t.r, 0.5, 0.5);"),
+    ("clamp-bounds", "  r = clamp(float(gl_FrontFacing), 0.0, 1.0);"),
+    // A constant value whose bounds are never reversed: defined, if pointless.
+    ("clamp-bounds", "  r = clamp(0.5, 0.0, 1.0 + v_x * v_x);"),
     ("division-by-difference", "  if (u_a != u_b) { r = v_x / (u_a - u_b); }"),
     (
         "division-by-difference",
