@@ -53,13 +53,21 @@ declare_rule! {
     ///   gap a constant or a parameter's value keeps positive (`clamp(d - 0.3, 0.0, 1.0)` and
     ///   `clamp(d, 0.0, 1.0) + 1e-3`: the clamps are ordered, the constant keeps them apart), or
     ///   an enclosing `if (u_a < u_b)`. A guard proves the order only of the edges it compares.
-    /// - The antialiasing idiom, edges `e ∓ w` of a width computed from a derivative (`0.7 -
-    ///   fwidth(c), 0.7 + fwidth(c)`, in either order, an edge also kept in range by a constant:
-    ///   `max(0.0, r - w), r`): the edges meet only where `x` does not change across the pixel,
-    ///   and there the step is exact.
+    /// - Edges `e ∓ w` whose width only an input or a parameter as such makes 0 (`buff ∓ gamma *
+    ///   v_scale`, with `gamma` a constant over a uniform): a width of 0 is a value out of the
+    ///   input's range, the caller's business, as for `sqrt(v_t)`. A uniform width (`t, t +
+    ///   u_smoothWidth`) is a setting a user can set to 0, and is reported.
     /// - Constant edges in reversed order, or edges `r + w, r - w` with a constant `w > 0`: a
     ///   deliberate mirror, `smoothstep-reversed-constant`'s (a note). Equal constant edges are
     ///   reported here: they divide by zero.
+    ///
+    /// The antialiasing idiom, edges `e ∓ w` of a width computed from a derivative (`0.7 -
+    /// fwidth(c), 0.7 + fwidth(c)`, in either order, an edge also kept in range by a constant:
+    /// `max(0.0, r - w), r`), is a note: the edges are equal wherever the value differentiated is
+    /// the same across the 2×2 pixel quad — whole flat faces under a directional light in
+    /// three.js's toon shading, flat stretches of a field — where the specification leaves
+    /// `smoothstep` undefined. Drivers that compute the formula give the exact step there, and NaN
+    /// where `x` equals the edge; `max(fwidth(c), 1e-4)` makes it defined.
     ///
     /// Severity: a warning when values the shader itself produces reach the hazard; a note, naming
     /// the uniform, when one uniform alone (with constants) does — the hazard then needs that value out
@@ -176,7 +184,15 @@ fn check(cx: &Cx, out: &mut Vec<Diagnostic>) {
             }
             continue;
         }
-        if cx.ordered(f, id, c.e0, c.e1, &cx.guards(f, id, c.call)) || derivative_width(cx, &c) {
+        if cx.ordered(f, id, c.e0, c.e1, &cx.guards(f, id, c.call)) {
+            continue;
+        }
+        if derivative_width(cx, &c) {
+            out.push(flat_quad(cx, &c));
+            continue;
+        }
+        let single = single_input(cx, &c);
+        if single.is_none() && input_width(cx, &c) {
             continue;
         }
         let per_pixel = Facts::INPUT.with(Facts::TEXTURE);
@@ -194,11 +210,29 @@ fn check(cx: &Cx, out: &mut Vec<Diagnostic>) {
             })
             .with_note("GLSL ES 3.00 §8.3: smoothstep is undefined if edge0 >= edge1");
         let d = with_fix(cx, &c, d, low);
-        out.push(match single_input(cx, &c) {
+        out.push(match single {
             Some(name) => input_note(d, &name),
             None => cx.grade(d, &[(id, c.e0), (id, c.e1)]),
         });
     }
+}
+
+/// The note for the antialiasing idiom `e ∓ w` with `w` a derivative's width: both edges are `e`
+/// wherever the value differentiated is the same across the 2×2 pixel quad (a flat face under a
+/// directional light, a saturated texel, a constant stretch of a field) — whole regions, not
+/// points. Drivers that compute the formula give an exact step there, and NaN where `x == e`.
+fn flat_quad(cx: &Cx, c: &Call) -> Diagnostic {
+    let d = Diagnostic::rule_warning(
+        SmoothstepEdges::RULE.id,
+        "`smoothstep` edges `e ∓ w` of a derivative's width are equal wherever the value differentiated is constant across the pixel quad, where `smoothstep` is undefined",
+        c.span,
+    )
+    .with_label("w = 0 over flat regions: edge0 == edge1")
+    .with_note("GLSL ES 3.00 §8.3: smoothstep is undefined if edge0 >= edge1; drivers that compute the formula give a hard step there, and NaN where x equals the edge")
+    .with_help("keep the width above 0: `max(fwidth(x), 1e-4)`");
+    let mut d = with_secondaries(cx, c, d);
+    d.severity = essl::diagnostic::Severity::Note;
+    d
 }
 
 /// The finding for constant edges that are equal in some component.
@@ -225,15 +259,13 @@ fn equal_constants(c: &Call, pairs: &[(f64, f64)]) -> Diagnostic {
 fn with_fix(cx: &Cx, c: &Call, mut d: Diagnostic, low: bool) -> Diagnostic {
     let (s0, s1) = (cx.span(c.f, c.e0), cx.span(c.f, c.e1));
     let eps = if low { "1e-3" } else { "1e-4" };
-    d = d.with_help(format!(
-        "keep edge1 above edge0, e.g. `max(edge1, edge0 + {eps})`"
-    ));
-    if !s0.is_empty() {
-        d = d.with_secondary(s0, "edge0");
-    }
-    if !s1.is_empty() {
-        d = d.with_secondary(s1, "edge1");
-    }
+    d = with_secondaries(
+        cx,
+        c,
+        d.with_help(format!(
+            "keep edge1 above edge0, e.g. `max(edge1, edge0 + {eps})`"
+        )),
+    );
     if !s0.is_empty() && !s1.is_empty() && cx.pure(c.f, c.e0) {
         let fixed = format!("max({}, {} + {eps})", cx.text(s1), cx.text(s0));
         d = d.with_fix(Fix::suggested(
@@ -241,6 +273,18 @@ fn with_fix(cx: &Cx, c: &Call, mut d: Diagnostic, low: bool) -> Diagnostic {
             s1,
             fixed,
         ));
+    }
+    d
+}
+
+/// `d` with the edges labelled.
+fn with_secondaries(cx: &Cx, c: &Call, mut d: Diagnostic) -> Diagnostic {
+    let (s0, s1) = (cx.span(c.f, c.e0), cx.span(c.f, c.e1));
+    if !s0.is_empty() {
+        d = d.with_secondary(s0, "edge0");
+    }
+    if !s1.is_empty() {
+        d = d.with_secondary(s1, "edge1");
     }
     d
 }
@@ -321,39 +365,99 @@ fn derivative_width(cx: &Cx, c: &Call) -> bool {
             .sound()
             .num(c.id, x)
             .is_some_and(|v| v.facts.has(Facts::NN))
-        && from_derivative(c.f, x, 0)
+        && from_derivative(cx, c.id, c.f, x, 0)
 }
 
-/// Whether `h` is computed from a `dFdx`, `dFdy` or `fwidth` (through locals stored once).
-fn from_derivative(f: &Function, h: Handle<E>, depth: u32) -> bool {
+/// Whether the edges are `e ∓ w` (`buff - gamma * scale`, `buff + gamma * scale`) of a
+/// non-negative width that is 0 only where an input or parameter as such is 0
+/// ([`zero_only_as_input`]): a width of 0 is then a value out of the input's range, which the
+/// rules leave to the caller, as `sqrt(v_t)`.
+fn input_width(cx: &Cx, c: &Call) -> bool {
+    let Some((c0, k, x)) = cx.sym(c.id, c.f).single_term(c.e1, c.e0) else {
+        return false;
+    };
+    (c0 >= 0.0 && k > 0.0 || c0 <= 0.0 && k < 0.0)
+        && cx
+            .sound()
+            .num(c.id, x)
+            .is_some_and(|v| v.facts.has(Facts::NN))
+        && zero_only_as_input(cx, c.id, c.f, x, 0)
+}
+
+/// Whether `h` is 0 only where an input (an attribute, a varying) or a parameter as such is: one
+/// of those (through locals, swizzles and `abs`), a non-zero constant, a product of such, a
+/// quotient whose dividend is one (the divisor makes it larger, never 0), or a sum of
+/// non-negative values one of which is such. A uniform is not: a width a user sets
+/// (`luminosityThreshold + smoothWidth`) is 0 when they set it so, and stays reported.
+fn zero_only_as_input(cx: &Cx, id: usize, f: &Function, h: Handle<E>, depth: u32) -> bool {
+    use naga::BinaryOperator as Bo;
+    if depth > 8 {
+        return false;
+    }
+    let num = cx.sound().num(id, h);
+    let nn = |x: Handle<E>| {
+        cx.sound()
+            .num(id, x)
+            .is_some_and(|v| v.facts.has(Facts::NN))
+    };
+    let go = |x: Handle<E>| zero_only_as_input(cx, id, f, x, depth + 1);
+    match f.expressions[h] {
+        E::Literal(_) | E::Constant(_) => num.is_some_and(|v| !v.hull().contains(0.0)),
+        E::FunctionArgument(_) => true,
+        E::Load { pointer } if matches!(f.expressions[pointer], E::LocalVariable(_)) => {
+            let values = cx.stored(f, id, pointer);
+            !values.is_empty() && values.iter().all(|v| go(*v))
+        }
+        E::Load { .. } | E::AccessIndex { .. } | E::Swizzle { .. } => {
+            num.is_some_and(|v| {
+                v.facts.has(Facts::EXT) && !v.facts.any(Facts::TEXTURE.with(Facts::UNIFORM))
+            }) || match f.expressions[h] {
+                E::AccessIndex { base, .. } => go(base),
+                E::Swizzle { vector, .. } => go(vector),
+                _ => false,
+            }
+        }
+        E::Binary {
+            op: Bo::Multiply,
+            left,
+            right,
+        } => go(left) && go(right),
+        E::Binary {
+            op: Bo::Divide,
+            left,
+            ..
+        } => go(left),
+        E::Binary {
+            op: Bo::Add,
+            left,
+            right,
+        } => nn(left) && nn(right) && (go(left) || go(right)),
+        E::Math {
+            fun: Mf::Abs, arg, ..
+        } => go(arg),
+        _ => false,
+    }
+}
+
+/// Whether `h` is computed from a `dFdx`, `dFdy` or `fwidth` (through locals whose every value,
+/// initializer and stores, is: [`Cx::stored`]).
+fn from_derivative(cx: &Cx, id: usize, f: &Function, h: Handle<E>, depth: u32) -> bool {
     if depth > 8 {
         return false;
     }
     match &f.expressions[h] {
         E::Derivative { .. } => true,
-        E::Load { pointer } => match f.expressions[*pointer] {
-            E::LocalVariable(_) => stores_to(f, *pointer)
-                .iter()
-                .all(|v| from_derivative(f, *v, depth + 1)),
-            _ => false,
-        },
+        E::Load { pointer } => {
+            let values = cx.stored(f, id, *pointer);
+            !values.is_empty()
+                && values
+                    .iter()
+                    .all(|v| from_derivative(cx, id, f, *v, depth + 1))
+        }
         e => super::operands(e)
             .into_iter()
-            .any(|o| from_derivative(f, o, depth + 1)),
+            .any(|o| from_derivative(cx, id, f, o, depth + 1)),
     }
-}
-
-/// The values stored whole into the local `pointer` is (empty when it is stored in part).
-fn stores_to(f: &Function, pointer: Handle<E>) -> Vec<Handle<E>> {
-    let mut out = Vec::new();
-    crate::analysis::each_statement(&f.body, &mut |s| {
-        if let naga::Statement::Store { pointer: p, value } = s {
-            if *p == pointer {
-                out.push(*value);
-            }
-        }
-    });
-    out
 }
 
 /// The one input whose value alone, up to a positive factor, is `edge1 - edge0`

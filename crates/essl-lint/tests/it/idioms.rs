@@ -566,6 +566,7 @@ void main() {
   vec2 coord = vec2(dot(normalize(v_n), vec3(0.0, 0.0, 1.0)) * 0.5 + 0.5, 0.0);
   vec2 fw = fwidth(coord) * 0.5;
   float band = smoothstep(0.7 - fw.x, 0.7 + fw.x, coord.x);
+  //           ^^^^^^^^^^^^^^^^^^^^^^^^^^^^^^^^^^^^^^^^^^^ note smoothstep-edges
   o = vec4(d, band, 0.0, 1.0);
 }
 "#,

@@ -81,6 +81,13 @@ const HAZARDS: &[Hazard] = &[
         W,
     ),
     ("smoothstep-edges", "rounding", "  r = smoothstep(u_a, u_a + 1e-9, v_x);", W),
+    // The antialiasing idiom: edges equal wherever `v_x` is the same across the pixel quad.
+    (
+        "smoothstep-edges",
+        "derivative",
+        "  float w = fwidth(v_x);\n  r = smoothstep(max(0.0, 0.5 - w), 0.5 + w, v_x);",
+        N,
+    ),
     ("smoothstep-reversed-constant", "constant", "  r = smoothstep(1.0, 0.0, v_x);", N),
     ("clamp-bounds", "constant", "  r = clamp(v_x, 1.0, 0.0);", W),
     ("clamp-bounds", "constant", "  r = clamp(t.rg, vec2(0.0, 1.0), vec2(1.0, 0.5)).y;", W),
@@ -415,9 +422,15 @@ const GUARDED: &[(&str, &str)] = &[
         "smoothstep-edges",
         "  float d = dot(n, l);\n  float e0 = clamp(d - 0.3, 0.0, 1.0);\n  r = smoothstep(e0, max(clamp(d, 0.0, 1.0), e0 + 1e-3), v_x);",
     ),
+    // The antialiasing width kept above 0.
     (
         "smoothstep-edges",
-        "  float w = fwidth(v_x);\n  r = smoothstep(max(0.0, 0.5 - w), 0.5 + w, v_x);",
+        "  float w = max(fwidth(v_x), 1e-4);\n  r = smoothstep(0.5 - w, 0.5 + w, v_x);",
+    ),
+    // A width that only an input as such makes 0 (MapLibre's `gamma * gamma_scale`).
+    (
+        "smoothstep-edges",
+        "  float w = 0.1 / max(u_a, 1.0) * v_x * v_x;\n  r = smoothstep(0.5 - w, 0.5 + w, t.r);",
     ),
     // Clamps of the same value shifted are ordered; the constant keeps them apart.
     (
