@@ -297,13 +297,7 @@ fn setting_factor(
         | E::Swizzle { vector: x, .. }
         | E::AccessIndex { base: x, .. }
         | E::As { expr: x, .. } => go(x),
-        E::Load { pointer } => {
-            let E::LocalVariable(l) = f.expressions[pointer] else {
-                return None;
-            };
-            let stores = cx.sound().functions[id].stores.get(&l.index())?;
-            stores.iter().find_map(|x| go(*x))
-        }
+        E::Load { pointer } => cx.stored(f, id, pointer).into_iter().find_map(go),
         E::FunctionArgument(i) if id < cx.module.functions.len() => {
             cx.flows().callers(id).iter().find_map(|(caller, args)| {
                 let g = crate::analysis::function(cx.module, *caller);

@@ -206,17 +206,13 @@ pub(crate) fn orthogonal_cross(cx: &Cx, f: &Function, id: usize, h: Handle<E>) -
     perpendicular(a, b) || perpendicular(b, a)
 }
 
-/// The values `h` can be: every value stored into the local it loads, or itself.
+/// The values `h` can be: every value the local it loads is given ([`Cx::stored`]: its
+/// initializer and stores), or itself.
 fn values(cx: &Cx, f: &Function, id: usize, h: Handle<E>) -> Vec<Handle<E>> {
     if let E::Load { pointer } = f.expressions[h] {
-        if let E::LocalVariable(l) = f.expressions[pointer] {
-            if let Some(vs) = cx.sound().functions[id]
-                .stores
-                .get(&l.index())
-                .filter(|vs| !vs.is_empty())
-            {
-                return vs.clone();
-            }
+        let vs = cx.stored(f, id, pointer);
+        if !vs.is_empty() {
+            return vs;
         }
     }
     vec![h]

@@ -151,17 +151,11 @@ impl Cx<'_> {
         match f.expressions[x] {
             E::Math { fun: Mf::Dot, .. } => true,
             E::Load { pointer } => {
-                let E::LocalVariable(l) = f.expressions[pointer] else {
-                    return false;
-                };
-                self.sound().functions[id]
-                    .stores
-                    .get(&l.index())
-                    .is_some_and(|s| {
-                        !s.is_empty()
-                            && s.iter()
-                                .all(|v| matches!(f.expressions[*v], E::Math { fun: Mf::Dot, .. }))
-                    })
+                let values = self.stored(f, id, pointer);
+                !values.is_empty()
+                    && values
+                        .iter()
+                        .all(|v| matches!(f.expressions[*v], E::Math { fun: Mf::Dot, .. }))
             }
             _ => false,
         }
