@@ -3,7 +3,8 @@
 //!
 //! Tracked are the locals declared without an initializer, `out` parameters (undefined until
 //! the function writes them), and — in `main` — plain globals without an initializer and the
-//! shader's outputs. A vector's components are tracked one by one (`v.xy = …; v.z = …;`
+//! shader's outputs, declared or built-in (`gl_FragColor`, `gl_FragData`, `gl_Position`,
+//! `gl_PointSize`, `gl_FragDepth`). A vector's components are tracked one by one (`v.xy = …; v.z = …;`
 //! writes all of a `vec3`; `v[i] = …` in a loop whose counter `i` takes 0..=2 writes `v.xyz`,
 //! [`counters`], and through any other dynamic index every component); an array, matrix or
 //! struct counts as written once any part of it is (dynamic indices make anything finer
@@ -20,7 +21,8 @@
 use rustc_hash::{FxHashMap as HashMap, FxHashSet as HashSet};
 
 use essl::hir::{
-    self, BinaryOp, BuiltinFn, Cond, Expr, ExprKind, GlobalKind, ParamMode, Stmt, StmtKind,
+    self, BinaryOp, BuiltinFn, BuiltinVar, Cond, Expr, ExprKind, GlobalKind, ParamMode, Stmt,
+    StmtKind,
 };
 use essl::source::Span;
 use essl::types::Type;
@@ -37,7 +39,25 @@ pub enum Var {
     Param(usize),
     /// A global (in `main` and through the functions it calls).
     Global(usize),
+    /// A built-in output (in `main` and through the functions it calls).
+    Builtin(BuiltinVar),
 }
+
+impl Var {
+    /// Whether it is a global or built-in output: tracked in `main` and through its calls.
+    fn global(self) -> bool {
+        matches!(self, Var::Global(_) | Var::Builtin(_))
+    }
+}
+
+/// The built-in outputs, with their full masks ([`full_mask`]): `gl_FragData` is an array.
+const BUILTIN_OUTPUTS: [(BuiltinVar, u8); 5] = [
+    (BuiltinVar::FragColor, 0b1111),
+    (BuiltinVar::FragData, 1),
+    (BuiltinVar::FragDepth, 1),
+    (BuiltinVar::Position, 0b1111),
+    (BuiltinVar::PointSize, 1),
+];
 
 /// A read that may come before any write.
 #[derive(Clone, Debug)]
@@ -74,8 +94,8 @@ pub fn uninitialised_reads(m: &hir::Module) -> Vec<Read> {
 /// where), and the ones it may write.
 #[derive(Clone, Debug, Default)]
 struct Summary {
-    reads: Vec<(usize, Span, usize)>,
-    writes: HashSet<usize>,
+    reads: Vec<(Var, Span, usize)>,
+    writes: HashSet<Var>,
 }
 
 /// The bits of a variable written on every path so far.
@@ -132,6 +152,18 @@ fn full_mask(t: &Type) -> u8 {
     }
 }
 
+/// Tracks the globals of `m` (those [`tracked_global`] says) and the built-in outputs.
+fn track_globals(m: &hir::Module, full: &mut HashMap<Var, u8>) {
+    for (i, g) in m.globals.iter().enumerate() {
+        if tracked_global(g) {
+            full.insert(Var::Global(i), full_mask(&g.ty));
+        }
+    }
+    for (b, mask) in BUILTIN_OUTPUTS {
+        full.insert(Var::Builtin(b), mask);
+    }
+}
+
 /// Whether a global is tracked: a plain global without an initializer, or an output.
 fn tracked_global(g: &hir::Global) -> bool {
     match g.kind {
@@ -161,11 +193,7 @@ impl<'a> Walk<'a> {
             }
         }
         if main {
-            for (i, g) in m.globals.iter().enumerate() {
-                if tracked_global(g) {
-                    full.insert(Var::Global(i), full_mask(&g.ty));
-                }
-            }
+            track_globals(m, &mut full);
         }
         Walk {
             m,
@@ -241,9 +269,9 @@ impl<'a> Walk<'a> {
         if self.written(st, v, bits) {
             return;
         }
-        if let (Some(s), Var::Global(g)) = (&mut self.summary, v) {
-            if !s.reads.iter().any(|(x, _, _)| *x == g) {
-                s.reads.push((g, span, self.fid));
+        if let (Some(s), true) = (&mut self.summary, v.global()) {
+            if !s.reads.iter().any(|(x, _, _)| *x == v) {
+                s.reads.push((v, span, self.fid));
             }
             return;
         }
@@ -258,8 +286,8 @@ impl<'a> Walk<'a> {
     }
 
     fn write(&mut self, st: &mut State, v: Var, bits: u8) {
-        if let (Some(s), Var::Global(g)) = (&mut self.summary, v) {
-            s.writes.insert(g);
+        if let (Some(s), true) = (&mut self.summary, v.global()) {
+            s.writes.insert(v);
         }
         if let Var::Local(l) = v {
             self.truth.remove(&l);
@@ -275,6 +303,7 @@ impl<'a> Walk<'a> {
             ExprKind::Local(i) => Var::Local(i),
             ExprKind::Param(i) => Var::Param(i),
             ExprKind::Global(g) => Var::Global(g),
+            ExprKind::BuiltinVar(b) => Var::Builtin(b),
             _ => return None,
         };
         self.full.contains_key(&v).then_some(v)
@@ -309,7 +338,10 @@ impl<'a> Walk<'a> {
                 Some((v, 1))
             }
             // A variable the walk does not track.
-            ExprKind::Local(_) | ExprKind::Param(_) | ExprKind::Global(_) => None,
+            ExprKind::Local(_)
+            | ExprKind::Param(_)
+            | ExprKind::Global(_)
+            | ExprKind::BuiltinVar(_) => None,
             _ => {
                 self.expr(e, st);
                 None
@@ -333,6 +365,7 @@ impl<'a> Walk<'a> {
             ExprKind::Local(_)
             | ExprKind::Param(_)
             | ExprKind::Global(_)
+            | ExprKind::BuiltinVar(_)
             | ExprKind::Swizzle(..)
             | ExprKind::Index(..)
             | ExprKind::Member(..) => {
@@ -415,7 +448,7 @@ impl<'a> Walk<'a> {
         if self.main || self.summary.is_some() {
             let s = self.summary_of(callee);
             for (g, at, in_fn) in &s.reads {
-                let v = Var::Global(*g);
+                let v = *g;
                 if self.written(st, v, self.full.get(&v).copied().unwrap_or(1)) {
                     continue;
                 }
@@ -438,7 +471,7 @@ impl<'a> Walk<'a> {
                 }
             }
             for g in &s.writes {
-                let v = Var::Global(*g);
+                let v = *g;
                 if let Some(all) = self.full.get(&v).copied() {
                     self.write(st, v, all);
                 }
@@ -470,11 +503,7 @@ impl<'a> Walk<'a> {
         }
         let m = self.m;
         let mut w = Walk::new(m, f, false, self.summaries);
-        for (i, g) in m.globals.iter().enumerate() {
-            if tracked_global(g) {
-                w.full.insert(Var::Global(i), full_mask(&g.ty));
-            }
-        }
+        track_globals(m, &mut w.full);
         w.summary = Some(Summary::default());
         let mut st = w.start();
         w.run(&m.functions[f].body, &mut st);

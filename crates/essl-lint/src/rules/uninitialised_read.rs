@@ -18,8 +18,10 @@ declare_rule! {
     /// passed as an `inout` argument to a function that reads the parameter before writing it; an
     /// `out` parameter read before the function writes it, or left unwritten on some path through
     /// a `void` function (the caller's variable is then undefined); and in `main` (and the
-    /// functions it calls) a global declared without a value or a shader output, read before it
-    /// is written.
+    /// functions it calls) a global declared without a value or a shader output — declared (`out
+    /// vec4 o`) or built in (`gl_FragColor`, `gl_FragData`, `gl_Position`, `gl_PointSize`,
+    /// `gl_FragDepth`) — read before it is written (vtk.js's `if (gl_FragData[0].a <= 0.0)
+    /// discard;` where its template's tags write nothing).
     ///
     /// ## Why is this bad?
     /// GLSL ES leaves a variable without an initializer undefined until it is written (GLSL ES 3.00
@@ -102,6 +104,7 @@ fn check(cx: &Cx, out: &mut Vec<Diagnostic>) {
                 let what = if output { "output" } else { "global" };
                 (what, gl.name.as_str(), gl.span, (!output).then_some(&gl.ty))
             }
+            Var::Builtin(b) => ("output", b.name(), essl::source::Span::default(), None),
         };
         let unwritten_out = matches!(r.var, Var::Param(_)) && cx.text(r.span) != name;
         let (message, label) = if unwritten_out {

@@ -202,6 +202,32 @@ void main() {
     );
 }
 
+#[test]
+fn built_in_outputs_read_before_they_are_written() {
+    // vtk.js's fragment template with its tags empty: `gl_FragData[0].a` tested before anything
+    // writes it. Written by a helper first, `gl_FragColor` is read after the write.
+    check(
+        r#"precision mediump float;
+varying vec4 v_color;
+void main() {
+  if (gl_FragData[0].a <= 0.0) { discard; }
+  //  ^^^^^^^^^^^^^^^^ warning uninitialised-read
+  gl_FragData[0] = v_color;
+}
+"#,
+    );
+    check(
+        r#"precision mediump float;
+varying vec4 v_color;
+void shade() { gl_FragColor = v_color; }
+void main() {
+  shade();
+  gl_FragColor.rgb *= gl_FragColor.a;
+}
+"#,
+    );
+}
+
 // ----- guards -----
 
 #[test]
