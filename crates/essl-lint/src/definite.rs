@@ -152,7 +152,7 @@ fn full_mask(t: &Type) -> u8 {
     }
 }
 
-/// Tracks the globals of `m` (those [`tracked_global`] says) and the built-in outputs.
+/// Tracks the globals of `m` (those [`tracked_global`] says) and the built-in outputs it uses.
 fn track_globals(m: &hir::Module, full: &mut HashMap<Var, u8>) {
     for (i, g) in m.globals.iter().enumerate() {
         if tracked_global(g) {
@@ -160,7 +160,9 @@ fn track_globals(m: &hir::Module, full: &mut HashMap<Var, u8>) {
         }
     }
     for (b, mask) in BUILTIN_OUTPUTS {
-        full.insert(Var::Builtin(b), mask);
+        if m.used_builtins.contains(&b) {
+            full.insert(Var::Builtin(b), mask);
+        }
     }
 }
 

@@ -2,9 +2,10 @@
 //! in reversed order, or the value and the bounds passed in the wrong order
 //! (`clamp(0.0, 1.0, v)`).
 //!
-//! Both shapes are told apart from the rest without the value analysis ([`suspect`]): a
-//! constant first argument, or two constant bounds in reversed order. `clamp(x, 0.0, 1.0)` is in
-//! nearly every shader, and only these two shapes make the analysis run for this rule.
+//! Both shapes are told apart from the rest without the value analysis ([`suspect`]): two
+//! constants before a value that is not one, or two constant bounds in reversed order.
+//! `clamp(x, 0.0, 1.0)` is in nearly every shader, and only these two shapes make the analysis
+//! run for this rule.
 
 use essl::diagnostic::{Diagnostic, Fix};
 use naga::{Expression as E, Function, Handle, MathFunction as Mf};
@@ -20,7 +21,7 @@ declare_rule! {
     /// Reports `clamp(x, minVal, maxVal)` where `minVal > maxVal` is reached:
     ///
     /// - constant bounds in reversed order (`clamp(x, 1.0, 0.0)`), in any component;
-    /// - a constant value with the bounds after it (`clamp(0.0, 1.0, v)`): the arguments of
+    /// - two constants with the value after them (`clamp(0.0, 1.0, v)`): the arguments of
     ///   `clamp(v, 0.0, 1.0)` in the wrong order. `minVal` is then 1.0 and `maxVal` is `v`,
     ///   reversed for every `v < 1`. It is reported where `v` can be below the constant: a
     ///   varying, a texel, `float(gl_FrontFacing)`, a computed value, a uniform.
@@ -50,7 +51,9 @@ declare_rule! {
     ///
     /// ## What it does not flag
     /// - Bounds that are not both constants when the value is not one (`clamp(x, 0.0, u_max)`,
-    ///   `clamp(x, lo, hi)` of computed bounds): their order is the shader's and the host's.
+    ///   `clamp(x, lo, hi)` of computed bounds): their order is the shader's and the host's. So
+    ///   is a constant clamped between two values (`clamp(0.5, lo, hi)`, dEQP's tests of
+    ///   `clamp`).
     /// - A constant value with bounds that can never be reversed (`clamp(0.5, 0.0, 1.0 + v *
     ///   v)`: `maxVal ≥ 1 > 0`).
     /// - Equal constant bounds (`clamp(x, 0.5, 0.5)`): defined, it is the constant.
@@ -113,8 +116,9 @@ fn reversed(lo: &[f64], hi: &[f64]) -> bool {
     (0..lo.len().max(hi.len())).any(|i| pick(lo, i) > pick(hi, i))
 }
 
-/// Whether a `clamp` is of a shape this rule looks at (a constant value, or constant bounds in
-/// reversed order), read from the IR alone: the rule needs the value analysis only then.
+/// Whether a `clamp` is of a shape this rule looks at (a constant value and a constant lower
+/// bound before a value that is not constant, or constant bounds in reversed order), read from
+/// the IR alone: the rule needs the value analysis only then.
 pub(super) fn suspect(module: &naga::Module, f: &Function, e: &E) -> bool {
     let E::Math {
         fun: Mf::Clamp,
@@ -126,13 +130,16 @@ pub(super) fn suspect(module: &naga::Module, f: &Function, e: &E) -> bool {
     else {
         return false;
     };
-    if constant(module, f, arg).is_some() {
-        return true;
+    match (
+        constant(module, f, arg),
+        constant(module, f, lo),
+        constant(module, f, hi),
+    ) {
+        // `clamp(0.0, 1.0, v)`: the value and a bound, then the value meant.
+        (Some(_), Some(_), None) => true,
+        (_, Some(l), Some(h)) => reversed(&l, &h),
+        _ => false,
     }
-    matches!(
-        (constant(module, f, lo), constant(module, f, hi)),
-        (Some(l), Some(h)) if reversed(&l, &h)
-    )
 }
 
 /// Whether `lo > hi` is reachable in some component of the two values.

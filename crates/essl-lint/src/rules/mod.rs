@@ -81,27 +81,28 @@ pub(crate) fn candidates(
 ) -> (bool, bool, Option<crate::precision::Precisions>) {
     use naga::{BinaryOperator as Bo, Expression as E, MathFunction as Mf};
     let hard = module.functions.iter().any(|(_, f)| {
-        f.expressions.iter().any(|(_, e)| {
-            clamp_bounds::suspect(module, f, e)
-                || matches!(
-                    e,
-                    E::Math {
-                        fun: Mf::Pow
-                            | Mf::Acos
-                            | Mf::Asin
-                            | Mf::SmoothStep
-                            | Mf::Normalize
-                            | Mf::Sqrt
-                            | Mf::InverseSqrt
-                            | Mf::Log
-                            | Mf::Log2
-                            | Mf::Atan2,
-                        ..
-                    } | E::Binary {
-                        op: Bo::Divide | Bo::Modulo,
-                        ..
-                    } | E::ImageLoad { .. }
-                )
+        f.expressions.iter().any(|(_, e)| match e {
+            E::Math {
+                fun:
+                    Mf::Pow
+                    | Mf::Acos
+                    | Mf::Asin
+                    | Mf::SmoothStep
+                    | Mf::Normalize
+                    | Mf::Sqrt
+                    | Mf::InverseSqrt
+                    | Mf::Log
+                    | Mf::Log2
+                    | Mf::Atan2,
+                ..
+            }
+            | E::Binary {
+                op: Bo::Divide | Bo::Modulo,
+                ..
+            }
+            | E::ImageLoad { .. } => true,
+            E::Math { fun: Mf::Clamp, .. } => clamp_bounds::suspect(module, f, e),
+            _ => false,
         })
     });
     if hard {

@@ -442,6 +442,8 @@ const GUARDED: &[(&str, &str)] = &[
     ("clamp-bounds", "  r = clamp(float(gl_FrontFacing), 0.0, 1.0);"),
     // A constant value whose bounds are never reversed: defined, if pointless.
     ("clamp-bounds", "  r = clamp(0.5, 0.0, 1.0 + v_x * v_x);"),
+    // A constant between two values: their order is the shader's.
+    ("clamp-bounds", "  r = clamp(0.5, v_x, u_a);"),
     ("division-by-difference", "  if (u_a != u_b) { r = v_x / (u_a - u_b); }"),
     (
         "division-by-difference",
