@@ -155,107 +155,91 @@ fn can_reverse(lo: &Num, hi: &Num) -> bool {
 }
 
 fn check(cx: &Cx, out: &mut Vec<Diagnostic>) {
-    for (id, f) in cx.functions() {
-        for (h, e) in f.expressions.iter() {
-            if !suspect(cx.module, f, e) {
-                continue;
-            }
-            let E::Math {
-                arg,
-                arg1: Some(a1),
-                arg2: Some(a2),
-                ..
-            } = *e
-            else {
-                continue;
-            };
-            let span = cx.span(f, h);
-            if span.is_empty() {
-                continue;
-            }
-            let (x, lo, hi) = (
-                cx.operand(f, h, arg),
-                cx.operand(f, h, a1),
-                cx.operand(f, h, a2),
-            );
-            let text = |h: Handle<E>| {
-                let s = cx.span(f, h);
-                (!s.is_empty() && s != span).then(|| cx.text(s))
-            };
-            let (cx_, clo, chi) = (
-                constant(cx.module, f, x),
-                constant(cx.module, f, lo),
-                constant(cx.module, f, hi),
-            );
-            let d = match (&clo, &chi) {
-                (Some(l), Some(hv)) if reversed(l, hv) => {
-                    let label = if l.len() == 1 && hv.len() == 1 {
-                        format!("minVal = {}, maxVal = {}", fmt_num(l[0]), fmt_num(hv[0]))
-                    } else {
-                        "minVal > maxVal in some component".to_string()
-                    };
-                    let d = Diagnostic::rule_warning(
+    for c in cx.math_calls(Mf::Clamp) {
+        let (id, f, h, span) = (c.id, c.f, c.call, c.span);
+        let [x, lo, hi] = c.args[..] else {
+            continue;
+        };
+        if !suspect(cx.module, f, &f.expressions[h]) {
+            continue;
+        }
+        let text = |h: Handle<E>| {
+            let s = cx.span(f, h);
+            (!s.is_empty() && s != span).then(|| cx.text(s))
+        };
+        let (cx_, clo, chi) = (
+            constant(cx.module, f, x),
+            constant(cx.module, f, lo),
+            constant(cx.module, f, hi),
+        );
+        let d = match (&clo, &chi) {
+            (Some(l), Some(hv)) if reversed(l, hv) => {
+                let label = if l.len() == 1 && hv.len() == 1 {
+                    format!("minVal = {}, maxVal = {}", fmt_num(l[0]), fmt_num(hv[0]))
+                } else {
+                    "minVal > maxVal in some component".to_string()
+                };
+                let d = Diagnostic::rule_warning(
                         ClampBounds::RULE.id,
                         "`clamp` bounds are in reversed order (minVal > maxVal): undefined, and drivers disagree on the result",
                         span,
                     )
                     .with_label(label)
                     .with_help("swap the bounds: `clamp(x, maxVal, minVal)`");
-                    match (text(x), text(lo), text(hi)) {
-                        (Some(tx), Some(tl), Some(th)) => d.with_fix(Fix::suggested(
-                            "swap the bounds",
-                            span,
-                            format!("clamp({tx}, {th}, {tl})"),
-                        )),
-                        _ => d,
-                    }
+                match (text(x), text(lo), text(hi)) {
+                    (Some(tx), Some(tl), Some(th)) => d.with_fix(Fix::suggested(
+                        "swap the bounds",
+                        span,
+                        format!("clamp({tx}, {th}, {tl})"),
+                    )),
+                    _ => d,
                 }
-                _ if cx_.is_some() => {
-                    let g = cx.guards(f, id, h);
-                    let (Some(vl), Some(vh)) =
-                        (cx.refined(f, id, lo, &g), cx.refined(f, id, hi, &g))
-                    else {
-                        continue;
-                    };
-                    if !can_reverse(&vl, &vh) {
-                        continue;
+            }
+            _ if cx_.is_some() => {
+                let g = cx.guards(f, id, h);
+                let (Some(vl), Some(vh)) = (cx.refined(f, id, lo, &g), cx.refined(f, id, hi, &g))
+                else {
+                    continue;
+                };
+                if !can_reverse(&vl, &vh) {
+                    continue;
+                }
+                let value = cx_.as_deref().unwrap_or(&[]);
+                let low = vh.hull().lo;
+                let label = match clo.as_deref() {
+                    Some([l]) if low.is_finite() => format!(
+                        "minVal is {}, and maxVal can be as low as {}",
+                        fmt_num(*l),
+                        fmt_num(low)
+                    ),
+                    Some([l]) => {
+                        format!("minVal is {}, and maxVal can be below it", fmt_num(*l))
                     }
-                    let value = cx_.as_deref().unwrap_or(&[]);
-                    let low = vh.hull().lo;
-                    let label = match clo.as_deref() {
-                        Some([l]) if low.is_finite() => format!(
-                            "minVal is {}, and maxVal can be as low as {}",
-                            fmt_num(*l),
-                            fmt_num(low)
-                        ),
-                        Some([l]) => {
-                            format!("minVal is {}, and maxVal can be below it", fmt_num(*l))
-                        }
-                        _ => "minVal can exceed maxVal".to_string(),
-                    };
-                    let d = Diagnostic::rule_warning(
+                    _ => "minVal can exceed maxVal".to_string(),
+                };
+                let d = Diagnostic::rule_warning(
                         ClampBounds::RULE.id,
                         "`clamp` of a constant with the value among the bounds: the arguments look swapped, and minVal > maxVal is undefined",
                         span,
                     )
                     .with_label(label)
                     .with_help("`clamp` takes the value first, then the bounds: `clamp(x, minVal, maxVal)`");
-                    // `clamp(c0, c1, v)` with `c0 <= c1`: the call meant is `clamp(v, c0, c1)`.
-                    match (&clo, text(x), text(lo), text(hi)) {
-                        (Some(l), Some(tx), Some(tl), Some(th)) if !reversed(value, l) => d
-                            .with_fix(Fix::suggested(
-                                "put the value first",
-                                span,
-                                format!("clamp({th}, {tx}, {tl})"),
-                            )),
-                        _ => d,
+                // `clamp(c0, c1, v)` with `c0 <= c1`: the call meant is `clamp(v, c0, c1)`.
+                match (&clo, text(x), text(lo), text(hi)) {
+                    (Some(l), Some(tx), Some(tl), Some(th)) if !reversed(value, l) => {
+                        d.with_fix(Fix::suggested(
+                            "put the value first",
+                            span,
+                            format!("clamp({th}, {tx}, {tl})"),
+                        ))
                     }
+                    _ => d,
                 }
-                _ => continue,
-            };
-            out.push(d.with_note(
+            }
+            _ => continue,
+        };
+        out.push(d.with_note(
                 "GLSL ES 3.00 §8.3: clamp returns min(max(x, minVal), maxVal), undefined if minVal > maxVal",
             ));
-        }
     }
 }

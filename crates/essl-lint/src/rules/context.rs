@@ -12,6 +12,20 @@ use crate::interval::Interval;
 use crate::precision::Precisions;
 use crate::symbolic::{self, Sym};
 
+/// A call of a built-in function (see [`Cx::math_calls`]).
+pub struct MathCall<'a> {
+    /// The function's id.
+    pub id: usize,
+    /// The function.
+    pub f: &'a Function,
+    /// The call.
+    pub call: Handle<E>,
+    /// Its span.
+    pub span: Span,
+    /// Its arguments as the user wrote them.
+    pub args: Vec<Handle<E>>,
+}
+
 /// A `pow(x, y)` call (see [`Cx::pow_calls`]).
 pub struct PowCall<'a> {
     /// The function's id.
@@ -110,36 +124,58 @@ impl<'a> Cx<'a> {
             .scalar_kind()
     }
 
-    /// Every `pow(x, y)` call with a span in the source: (function id, function, the call,
-    /// its span, its base, its exponent), base and exponent through [`Cx::operand`].
-    pub fn pow_calls(&self) -> Vec<PowCall<'a>> {
+    /// Every call of the built-in `fun` with a span in the source, its arguments through
+    /// [`Cx::operand`].
+    pub fn math_calls(&self, fun: Mf) -> Vec<MathCall<'a>> {
         let mut out = Vec::new();
         for (id, f) in self.functions() {
             for (h, e) in f.expressions.iter() {
                 let E::Math {
-                    fun: Mf::Pow,
+                    fun: g,
                     arg,
-                    arg1: Some(y),
-                    ..
+                    arg1,
+                    arg2,
+                    arg3,
                 } = *e
                 else {
                     continue;
                 };
                 let span = self.span(f, h);
-                if span.is_empty() {
+                if g != fun || span.is_empty() {
                     continue;
                 }
-                out.push(PowCall {
+                let args = [Some(arg), arg1, arg2, arg3]
+                    .into_iter()
+                    .flatten()
+                    .map(|a| self.operand(f, h, a))
+                    .collect();
+                out.push(MathCall {
                     id,
                     f,
                     call: h,
                     span,
-                    base: self.operand(f, h, arg),
-                    exp: self.operand(f, h, y),
+                    args,
                 });
             }
         }
         out
+    }
+
+    /// Every `pow(x, y)` call with a span in the source: (function id, function, the call,
+    /// its span, its base, its exponent), base and exponent through [`Cx::operand`].
+    pub fn pow_calls(&self) -> Vec<PowCall<'a>> {
+        self.math_calls(Mf::Pow)
+            .into_iter()
+            .filter(|c| c.args.len() == 2)
+            .map(|c| PowCall {
+                id: c.id,
+                f: c.f,
+                call: c.call,
+                span: c.span,
+                base: c.args[0],
+                exp: c.args[1],
+            })
+            .collect()
     }
 
     /// The source span of an expression.

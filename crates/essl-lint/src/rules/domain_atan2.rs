@@ -70,54 +70,42 @@ declare_rule! {
 }
 
 fn check(cx: &Cx, out: &mut Vec<Diagnostic>) {
-    for (id, f) in cx.functions() {
-        for (h, e) in f.expressions.iter() {
-            let E::Math {
-                fun: Mf::Atan2,
-                arg,
-                arg1: Some(x),
-                ..
-            } = *e
-            else {
-                continue;
-            };
-            let span = cx.span(f, h);
-            if span.is_empty() {
-                continue;
-            }
-            let (y, x) = (cx.operand(f, h, arg), cx.operand(f, h, x));
-            let g = cx.guards(f, id, h);
-            let zero = |v: Handle<E>| {
-                cx.refined(f, id, v, &g).is_some_and(|n| {
-                    n.comps().iter().any(|c| c.contains(0.0))
-                        && !n.facts.has(Facts::NZ)
-                        && !cx.nonzero(f, id, v, &g)
-                })
-            };
-            if !zero(y) || !zero(x) || apart(cx, f, id, y, x, &g) {
-                continue;
-            }
-            let axis = components_of_direction(cx, f, id, y, x);
-            if !(axis || cx.flat_at(f, id, y, 0.0) && cx.flat_at(f, id, x, 0.0)) {
-                continue;
-            }
-            let label = if axis {
-                "both are components of one vector: 0 wherever it lies along the third axis"
-            } else {
-                "both can be 0 over a whole region, or for the whole draw"
-            };
-            let d = Diagnostic::rule_warning(
-                DomainAtan2::RULE.id,
-                "`atan(y, x)` with `y` and `x` both 0 for ordinary inputs, where `atan` is undefined",
-                span,
-            )
-            .with_label(label)
-            .with_secondary(cx.span(f, y), "y")
-            .with_secondary(cx.span(f, x), "x")
-            .with_note("GLSL ES 3.00 §8.1: atan(y, x) is undefined if x and y are both 0")
-            .with_help("choose the angle of the zero vector: test `abs(x) + abs(y) > 1e-6` first");
-            out.push(cx.grade(d, &[(id, y), (id, x)]));
+    for c in cx.math_calls(Mf::Atan2) {
+        let (id, f, h, span) = (c.id, c.f, c.call, c.span);
+        let [y, x] = c.args[..] else {
+            continue;
+        };
+        let g = cx.guards(f, id, h);
+        let zero = |v: Handle<E>| {
+            cx.refined(f, id, v, &g).is_some_and(|n| {
+                n.comps().iter().any(|c| c.contains(0.0))
+                    && !n.facts.has(Facts::NZ)
+                    && !cx.nonzero(f, id, v, &g)
+            })
+        };
+        if !zero(y) || !zero(x) || apart(cx, f, id, y, x, &g) {
+            continue;
         }
+        let axis = components_of_direction(cx, f, id, y, x);
+        if !(axis || cx.flat_at(f, id, y, 0.0) && cx.flat_at(f, id, x, 0.0)) {
+            continue;
+        }
+        let label = if axis {
+            "both are components of one vector: 0 wherever it lies along the third axis"
+        } else {
+            "both can be 0 over a whole region, or for the whole draw"
+        };
+        let d = Diagnostic::rule_warning(
+            DomainAtan2::RULE.id,
+            "`atan(y, x)` with `y` and `x` both 0 for ordinary inputs, where `atan` is undefined",
+            span,
+        )
+        .with_label(label)
+        .with_secondary(cx.span(f, y), "y")
+        .with_secondary(cx.span(f, x), "x")
+        .with_note("GLSL ES 3.00 §8.1: atan(y, x) is undefined if x and y are both 0")
+        .with_help("choose the angle of the zero vector: test `abs(x) + abs(y) > 1e-6` first");
+        out.push(cx.grade(d, &[(id, y), (id, x)]));
     }
 }
 

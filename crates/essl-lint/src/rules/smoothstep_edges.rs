@@ -102,34 +102,19 @@ pub(super) struct Call<'a> {
 
 /// Every `smoothstep` call of the user's functions.
 pub(super) fn calls<'a>(cx: &Cx<'a>) -> Vec<Call<'a>> {
-    let mut out = Vec::new();
-    for (id, f) in cx.functions() {
-        for (h, e) in f.expressions.iter() {
-            let E::Math {
-                fun: Mf::SmoothStep,
-                arg,
-                arg1: Some(a1),
-                arg2: Some(a2),
-                ..
-            } = *e
-            else {
-                continue;
-            };
-            let span = cx.span(f, h);
-            if !span.is_empty() {
-                out.push(Call {
-                    id,
-                    f,
-                    call: h,
-                    span,
-                    e0: cx.operand(f, h, arg),
-                    e1: cx.operand(f, h, a1),
-                    x: cx.operand(f, h, a2),
-                });
-            }
-        }
-    }
-    out
+    cx.math_calls(Mf::SmoothStep)
+        .into_iter()
+        .filter(|c| c.args.len() == 3)
+        .map(|c| Call {
+            id: c.id,
+            f: c.f,
+            call: c.call,
+            span: c.span,
+            e0: c.args[0],
+            e1: c.args[1],
+            x: c.args[2],
+        })
+        .collect()
 }
 
 /// The (edge0, edge1) pairs of each component when both edges are constants.
@@ -328,7 +313,6 @@ fn lost_gap(cx: &Cx, c: &Call, gap: f64, low: bool) -> Option<Diagnostic> {
 /// `0.7 + fwidth(c)`): the antialiasing idiom, whose edges meet only where `x` does not change
 /// across the pixel, and there the step is exact.
 fn derivative_width(cx: &Cx, c: &Call) -> bool {
-    let sym = cx.sym(c.id, c.f);
     // `max(0.0, e - w)`: the edge kept in range is the same edge.
     let inner = |h: Handle<E>| match c.f.expressions[h] {
         E::Math {
@@ -356,16 +340,19 @@ fn derivative_width(cx: &Cx, c: &Call) -> bool {
         inner(crate::symbolic::resolve(c.f, cx.sound(), c.id, c.e0)),
         inner(crate::symbolic::resolve(c.f, cx.sound(), c.id, c.e1)),
     );
-    let Some((c0, k, x)) = sym.single_term(e1, e0) else {
-        return false;
-    };
-    // `e + w, e - w` is the mirrored form of the idiom.
-    (c0 >= 0.0 && k > 0.0 || c0 <= 0.0 && k < 0.0)
+    width(cx, c, e0, e1).is_some_and(|w| from_derivative(cx, c.id, c.f, w, 0))
+}
+
+/// The width `w` of edges `e0, e1` that are `e - w, e + w` (or, mirrored, `e + w, e - w`) for a
+/// `w` the analysis keeps non-negative.
+fn width(cx: &Cx, c: &Call, e0: Handle<E>, e1: Handle<E>) -> Option<Handle<E>> {
+    let (c0, k, x) = cx.sym(c.id, c.f).single_term(e1, e0)?;
+    ((c0 >= 0.0 && k > 0.0 || c0 <= 0.0 && k < 0.0)
         && cx
             .sound()
             .num(c.id, x)
-            .is_some_and(|v| v.facts.has(Facts::NN))
-        && from_derivative(cx, c.id, c.f, x, 0)
+            .is_some_and(|v| v.facts.has(Facts::NN)))
+    .then_some(x)
 }
 
 /// Whether the edges are `e ∓ w` (`buff - gamma * scale`, `buff + gamma * scale`) of a
@@ -373,15 +360,7 @@ fn derivative_width(cx: &Cx, c: &Call) -> bool {
 /// ([`zero_only_as_input`]): a width of 0 is then a value out of the input's range, which the
 /// rules leave to the caller, as `sqrt(v_t)`.
 fn input_width(cx: &Cx, c: &Call) -> bool {
-    let Some((c0, k, x)) = cx.sym(c.id, c.f).single_term(c.e1, c.e0) else {
-        return false;
-    };
-    (c0 >= 0.0 && k > 0.0 || c0 <= 0.0 && k < 0.0)
-        && cx
-            .sound()
-            .num(c.id, x)
-            .is_some_and(|v| v.facts.has(Facts::NN))
-        && zero_only_as_input(cx, c.id, c.f, x, 0)
+    width(cx, c, c.e0, c.e1).is_some_and(|w| zero_only_as_input(cx, c.id, c.f, w, 0))
 }
 
 /// Whether `h` is 0 only where an input (an attribute, a varying) or a parameter as such is: one
