@@ -276,14 +276,42 @@ impl Cx<'_> {
         }
     }
 
-    /// Whether the guards say `a < b`.
+    /// Whether the guards say `a < b`: they compare the two, or `a` is a constant of at most 1
+    /// and `b` a quotient `p / q` under `q < p` with `q ≥ 0` (`smoothstep(0.0, r / d, t)` inside
+    /// `if (d < r)`, `d` a length: `r / d > 1`, or +∞ where `d` is 0).
     pub fn ordered(&self, f: &Function, id: usize, a: Handle<E>, b: Handle<E>, g: &Guards) -> bool {
         let same = |x: Handle<E>, y: Handle<E>| self.sound().same(f, id, x, y);
-        g.relations.iter().any(|&(op, l, r)| match op {
-            Bo::Less => same(l, a) && same(r, b),
-            Bo::Greater => same(l, b) && same(r, a),
-            _ => false,
-        })
+        let compared = |a: Handle<E>, b: Handle<E>| {
+            g.relations.iter().any(|&(op, l, r)| match op {
+                Bo::Less => same(l, a) && same(r, b),
+                Bo::Greater => same(l, b) && same(r, a),
+                _ => false,
+            })
+        };
+        if compared(a, b) {
+            return true;
+        }
+        let at_most_one = self
+            .sound()
+            .num(id, a)
+            .and_then(|n| n.hull().as_point())
+            .is_some_and(|c| c <= 1.0);
+        if !at_most_one {
+            return false;
+        }
+        let E::Binary {
+            op: Bo::Divide,
+            left,
+            right,
+        } = f.expressions[symbolic::resolve(f, self.sound(), id, b)]
+        else {
+            return false;
+        };
+        let non_negative = self
+            .sound()
+            .num(id, right)
+            .is_some_and(|n| n.hull().lo >= 0.0);
+        non_negative && compared(right, left)
     }
 
     /// Whether the guards say `x != 0`, or `a != b` for `x = a - b`, or each factor of a

@@ -427,6 +427,11 @@ const GUARDED: &[(&str, &str)] = &[
         "smoothstep-edges",
         "  float w = max(fwidth(v_x), 1e-4);\n  r = smoothstep(0.5 - w, 0.5 + w, v_x);",
     ),
+    // A quotient the guard keeps above 1: `u_a > d >= 0` (a Pixi filter's bulge).
+    (
+        "smoothstep-edges",
+        "  float d = length(v_pos);\n  if (d < u_a) { r = smoothstep(0.0, u_a / d, v_x); }",
+    ),
     // A width that only an input as such makes 0 (MapLibre's `gamma * gamma_scale`).
     (
         "smoothstep-edges",
