@@ -116,28 +116,46 @@ fn reversed(lo: &[f64], hi: &[f64]) -> bool {
     (0..lo.len().max(hi.len())).any(|i| pick(lo, i) > pick(hi, i))
 }
 
+/// The two shapes of `clamp(x, minVal, maxVal)` this rule looks at, read from the IR alone.
+enum Shape {
+    /// Constant bounds, reversed in some component: (minVal, maxVal).
+    Reversed(Vec<f64>, Vec<f64>),
+    /// `clamp(c0, c1, v)`: a constant value and a constant lower bound before a value that is
+    /// not constant, (c0, c1).
+    Swapped(Vec<f64>, Vec<f64>),
+}
+
+/// The shape of `clamp(x, lo, hi)`, if it is one this rule looks at.
+fn shape(
+    module: &naga::Module,
+    f: &Function,
+    x: Handle<E>,
+    lo: Handle<E>,
+    hi: Handle<E>,
+) -> Option<Shape> {
+    match (
+        constant(module, f, x),
+        constant(module, f, lo),
+        constant(module, f, hi),
+    ) {
+        (_, Some(l), Some(h)) => reversed(&l, &h).then_some(Shape::Reversed(l, h)),
+        (Some(c), Some(l), None) => Some(Shape::Swapped(c, l)),
+        _ => None,
+    }
+}
+
 /// Whether a `clamp` is of a shape this rule looks at (a constant value and a constant lower
 /// bound before a value that is not constant, or constant bounds in reversed order), read from
 /// the IR alone: the rule needs the value analysis only then.
 pub(super) fn suspect(module: &naga::Module, f: &Function, e: &E) -> bool {
-    let E::Math {
-        fun: Mf::Clamp,
-        arg,
-        arg1: Some(lo),
-        arg2: Some(hi),
-        ..
-    } = *e
-    else {
-        return false;
-    };
-    match (
-        constant(module, f, arg),
-        constant(module, f, lo),
-        constant(module, f, hi),
-    ) {
-        // `clamp(0.0, 1.0, v)`: the value and a bound, then the value meant.
-        (Some(_), Some(_), None) => true,
-        (_, Some(l), Some(h)) => reversed(&l, &h),
+    match *e {
+        E::Math {
+            fun: Mf::Clamp,
+            arg,
+            arg1: Some(lo),
+            arg2: Some(hi),
+            ..
+        } => shape(module, f, arg, lo, hi).is_some(),
         _ => false,
     }
 }
@@ -160,20 +178,15 @@ fn check(cx: &Cx, out: &mut Vec<Diagnostic>) {
         let [x, lo, hi] = c.args[..] else {
             continue;
         };
-        if !suspect(cx.module, f, &f.expressions[h]) {
+        let Some(shape) = shape(cx.module, f, x, lo, hi) else {
             continue;
-        }
+        };
         let text = |h: Handle<E>| {
             let s = cx.span(f, h);
             (!s.is_empty() && s != span).then(|| cx.text(s))
         };
-        let (cx_, clo, chi) = (
-            constant(cx.module, f, x),
-            constant(cx.module, f, lo),
-            constant(cx.module, f, hi),
-        );
-        let d = match (&clo, &chi) {
-            (Some(l), Some(hv)) if reversed(l, hv) => {
+        let d = match shape {
+            Shape::Reversed(l, hv) => {
                 let label = if l.len() == 1 && hv.len() == 1 {
                     format!("minVal = {}, maxVal = {}", fmt_num(l[0]), fmt_num(hv[0]))
                 } else {
@@ -195,7 +208,7 @@ fn check(cx: &Cx, out: &mut Vec<Diagnostic>) {
                     _ => d,
                 }
             }
-            _ if cx_.is_some() => {
+            Shape::Swapped(value, l) => {
                 let g = cx.guards(f, id, h);
                 let (Some(vl), Some(vh)) = (cx.refined(f, id, lo, &g), cx.refined(f, id, hi, &g))
                 else {
@@ -204,17 +217,14 @@ fn check(cx: &Cx, out: &mut Vec<Diagnostic>) {
                 if !can_reverse(&vl, &vh) {
                     continue;
                 }
-                let value = cx_.as_deref().unwrap_or(&[]);
                 let low = vh.hull().lo;
-                let label = match clo.as_deref() {
-                    Some([l]) if low.is_finite() => format!(
+                let label = match l[..] {
+                    [l] if low.is_finite() => format!(
                         "minVal is {}, and maxVal can be as low as {}",
-                        fmt_num(*l),
+                        fmt_num(l),
                         fmt_num(low)
                     ),
-                    Some([l]) => {
-                        format!("minVal is {}, and maxVal can be below it", fmt_num(*l))
-                    }
+                    [l] => format!("minVal is {}, and maxVal can be below it", fmt_num(l)),
                     _ => "minVal can exceed maxVal".to_string(),
                 };
                 let d = Diagnostic::rule_warning(
@@ -225,8 +235,8 @@ fn check(cx: &Cx, out: &mut Vec<Diagnostic>) {
                     .with_label(label)
                     .with_help("`clamp` takes the value first, then the bounds: `clamp(x, minVal, maxVal)`");
                 // `clamp(c0, c1, v)` with `c0 <= c1`: the call meant is `clamp(v, c0, c1)`.
-                match (&clo, text(x), text(lo), text(hi)) {
-                    (Some(l), Some(tx), Some(tl), Some(th)) if !reversed(value, l) => {
+                match (text(x), text(lo), text(hi)) {
+                    (Some(tx), Some(tl), Some(th)) if !reversed(&value, &l) => {
                         d.with_fix(Fix::suggested(
                             "put the value first",
                             span,
@@ -236,7 +246,6 @@ fn check(cx: &Cx, out: &mut Vec<Diagnostic>) {
                     _ => d,
                 }
             }
-            _ => continue,
         };
         out.push(d.with_note(
                 "GLSL ES 3.00 §8.3: clamp returns min(max(x, minVal), maxVal), undefined if minVal > maxVal",
