@@ -121,6 +121,11 @@ pub(crate) fn is_setting(name: &str) -> bool {
     has(SETTING) && !has(NOT_SETTING)
 }
 
+/// Whether a word of `name` is one of `list` (lower case).
+pub(crate) fn says_any(name: &str, list: &[&str]) -> bool {
+    words(name).iter().any(|w| list.contains(&w.as_str()))
+}
+
 /// What `name` says a value of type `ty` holds: a colour for a float `vec3` or `vec4`, a normal
 /// for a float `vec3`.
 pub(super) fn kind(name: Option<&str>, ty: &TypeInner) -> Option<Kind> {

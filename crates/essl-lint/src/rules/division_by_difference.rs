@@ -5,6 +5,7 @@
 use essl::diagnostic::{Diagnostic, Fix};
 use naga::{BinaryOperator as Bo, Expression as E, ScalarKind};
 
+use super::parameters::caller_divisor;
 use super::rule::declare_rule;
 use super::Cx;
 use crate::analysis::names::is_setting;
@@ -35,7 +36,11 @@ declare_rule! {
     /// gamma (`1.0 / uGamma`, `1.0 / float(directionCount)`, `d / uRadius`), or a multiple of
     /// one (`lengthCap * sqrt(-z)`, through locals and calls) — but not a size,
     /// resolution, ratio or distance the host computes from the canvas or the camera, nor a count
-    /// of the vertices drawn.
+    /// of the vertices drawn. Also as a note, naming them, a function's division by its own
+    /// parameters where its callers pass inputs as such — a library function whose guard is
+    /// left to the caller: lygia's `gaussian(d, s)` dividing by `2.0 * s * s` (a blur of sigma
+    /// 0), `map(v, iMin, iMax)` by `iMax - iMin` (a collapsed range), `perspective` by
+    /// `near - far`, `0.5 / (res - 1.0)` (a texture one texel wide).
     ///
     /// ## Why is this bad?
     /// Two parameters a user sets independently are equal sooner or later — a spot light with the
@@ -71,6 +76,12 @@ declare_rule! {
     ///   under `if (NdotL > 0.0 && NdotV > 0.0)`), and a raw `dot(n, l)`, 0 on a line of pixels only.
     /// - Any other uniform as such (`gl_FragCoord.xy / u_resolution`, `/ u_pixelRatio`): essl-gl's
     ///   validation mode checks divisors at draw time.
+    /// - A parameter's division where a call passes a uniform or a computed value (the value
+    ///   decides, as for any other divisor), or where ordinary non-negative values keep it from 0
+    ///   (`x / (x + 0.155)`); the `w` of a `vec4` (`p.xyz / p.w`, a homogeneous coordinate); a
+    ///   parameter named for a size the host computes, or a multiple of one (`1.0 / texResolution`,
+    ///   `floor(v * res) / res`); one named for what is never 0 (an index of refraction `ior`, a
+    ///   `shutterSpeed`, a number `base`).
     /// - A divisor with a per-pixel part, zero at isolated pixels at most: the depth linearisation
     ///   `far + near - z * (far - near)` (positive for `z` in [-1, 1]), a Fresnel term
     ///   `1.0 - Ems * Favg`, a difference of texels that is 0 only inside their range
@@ -81,7 +92,9 @@ declare_rule! {
     /// end of its range among them; a note, naming
     /// the uniform, when one uniform alone (with constants) does — the hazard then needs that value out
     /// of the range the shader was written for, and essl-gl's validation mode checks it at draw time. (`x / (u_resolution - 1.0)` needs `u_resolution == 1`). A difference of two uniforms
-    /// a user sets independently (`cutOff - outerCutOff`, `far - near`) gives a warning.
+    /// a user sets independently (`cutOff - outerCutOff`, `far - near`) gives a warning. A
+    /// division by parameters whose callers pass inputs as such is a note: the values are the
+    /// callers', which the shader does not show.
     ///
     /// ## References
     /// - Article 001 (webgl2fundamentals, spot lights), the note after the `limitRange` diff.
@@ -131,6 +144,8 @@ fn check(cx: &Cx, out: &mut Vec<Diagnostic>) {
                     out.push(diag);
                 } else if let Some(diag) = setting_divisor(cx, &div) {
                     out.push(diag);
+                } else if let Some(diag) = parameter_divisor(cx, &div) {
+                    out.push(diag);
                 }
                 continue;
             }
@@ -143,7 +158,11 @@ fn check(cx: &Cx, out: &mut Vec<Diagnostic>) {
             // Only a per-pixel difference asks about texels, with the analysis of ordinary
             // values (a second run over the module): after the cheaper tests.
             let texel = per_pixel && zero_at_texel_end(cx, id, d, v.facts);
-            if (per_pixel && !texel) || sym.get_or_insert_with(|| cx.sym(id, f)).nonzero(d) {
+            if per_pixel && !texel {
+                out.extend(parameter_divisor(cx, &div));
+                continue;
+            }
+            if sym.get_or_insert_with(|| cx.sym(id, f)).nonzero(d) {
                 continue;
             }
             let Some(span) = unguarded(cx, &div) else {
@@ -307,6 +326,44 @@ fn setting_factor(
         _ => None,
     }?;
     Some((found.0, false))
+}
+
+/// The note for a divisor `d` of `h` built from the function's parameters alone, where the
+/// callers pass inputs as such ([`parameters::caller_divisor`]): `2.0 * s * s`, `iMax - iMin`.
+fn parameter_divisor(cx: &Cx, div: &Division) -> Option<Diagnostic> {
+    let Division { f, id, d, .. } = *div;
+    let found = caller_divisor(cx, f, id, d)?;
+    let span = unguarded(cx, div)?;
+    let names = &found.names;
+    let list = names
+        .iter()
+        .map(|n| format!("`{n}`"))
+        .collect::<Vec<_>>()
+        .join(", ");
+    let what = cx.what(f, id, d);
+    let (message, label) = match &names[..] {
+        [name] => (
+            format!("division by the parameter `{name}`, which a caller may pass as 0"),
+            format!("{what} is 0 wherever a caller passes `{name}` as 0"),
+        ),
+        [a, b] if found.difference => (
+            format!("division by a difference of the parameters `{a}` and `{b}`, which callers may pass equal"),
+            format!("{what} is 0 wherever a caller passes equal `{a}` and `{b}`"),
+        ),
+        _ => (
+            format!("division by a value of the parameters {list}, which is 0 for some arguments"),
+            format!("{what} is 0 for some values of {list}"),
+        ),
+    };
+    let mut diag = Diagnostic::rule_warning(DivisionByDifference::RULE.id, message, span)
+        .with_label(label)
+        .with_help("guard the divisor: `max(x, 1e-4)`, or keep it from 0 in every caller")
+        .with_fix(floor_fix(cx, span))
+        .with_note(
+            "the callers here pass inputs as such, whose values the shader does not know: the division is the function's, its guard the callers'",
+        );
+    diag.severity = essl::diagnostic::Severity::Note;
+    Some(diag)
 }
 
 /// The finding for a divisor `d` of `h` that is 0 over the unlit side of a surface

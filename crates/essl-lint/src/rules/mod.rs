@@ -9,6 +9,7 @@ mod flat;
 mod gradient;
 mod guards;
 pub(crate) mod origin;
+mod parameters;
 pub(crate) mod rule;
 mod unlit;
 

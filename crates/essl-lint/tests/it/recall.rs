@@ -1,6 +1,6 @@
 //! The recall suite: for each rule, a minimal shader per kind of value that reaches its hazard
 //! — a uniform (or two set independently), a varying, a texel, a value the shader computes,
-//! rounding — each reported at its severity, and guarded twins that are quiet. A kind that
+//! rounding, a library function's parameters — each reported at its severity, and guarded twins that are quiet. A kind that
 //! cannot reach a rule's hazard, or that the rule leaves to the host by design (an input as
 //! such, a per-pixel value that is 0 at isolated points only), has no case; the rules' pages
 //! say which.
@@ -10,9 +10,10 @@ use essl::source::SourceFile;
 use essl::{compile, CompileOptions, Stage};
 use essl_lint::{lint, LintOptions};
 
-/// A fragment shader with `body` in `main`; `n` and `l` are unit vectors from varyings, `t` a
-/// texel read at a varying's coordinates; `v_normal` and `v_color` are named for what they hold.
-fn shader(precision: &str, body: &str) -> String {
+/// A fragment shader with `functions` before `main` and `body` in `main`; `n` and `l` are unit
+/// vectors from varyings, `t` a texel read at a varying's coordinates; `v_normal` and `v_color`
+/// are named for what they hold.
+fn shader_with(precision: &str, functions: &str, body: &str) -> String {
     format!(
         "#version 300 es\nprecision {precision} float;\nprecision highp int;\n\
          uniform bool u_on; uniform bool u_two;\n\
@@ -20,14 +21,19 @@ fn shader(precision: &str, body: &str) -> String {
          uniform sampler2D u_tex; uniform float u_gamma; uniform int u_sampleCount; uniform vec2 u_resolution;\n\
          in vec3 v_n; in vec3 v_h; in vec3 v_pos; in float v_x; in vec2 v_uv;\n\
          in vec3 v_normal; in vec4 v_color;\n\
-         out vec4 o;\nvoid main() {{\n  float r = 0.0;\n  vec3 n = normalize(v_n);\n  \
+         out vec4 o;\n{functions}\nvoid main() {{\n  float r = 0.0;\n  vec3 n = normalize(v_n);\n  \
          vec3 l = normalize(v_h);\n  vec4 t = texture(u_tex, v_uv);\n{body}\n  o = vec4(r);\n}}\n"
     )
 }
 
 /// The findings of `rule` in `body`, notes included: (severity, source line).
 fn found(precision: &str, rule: &str, body: &str) -> Vec<(Severity, String)> {
-    let text = shader(precision, body);
+    found_with(precision, rule, "", body)
+}
+
+/// [`found`] with `functions` declared before `main`.
+fn found_with(precision: &str, rule: &str, functions: &str, body: &str) -> Vec<(Severity, String)> {
+    let text = shader_with(precision, functions, body);
     let s = super::compiled("t.frag", &text);
     lint(&s, &LintOptions::default().notes(true))
         .into_iter()
@@ -634,6 +640,92 @@ fn guarded_twins_are_quiet() {
         let f = found("highp", rule, body);
         if !f.is_empty() {
             failed.push(format!("{rule}: `{body}` has {f:?}"));
+        }
+    }
+    assert!(failed.is_empty(), "{}", failed.join("\n"));
+}
+
+/// A library function's division by what its callers pass (inputs as such here): a note at the
+/// division, naming the parameters; (function, call in `main`, the division's line or `None`
+/// for a twin that is quiet).
+const PARAMETERS: &[(&str, &str, Option<&str>)] = &[
+    (
+        "float g(float d, float s) { return exp(-(d * d) / (2.0 * s * s)); }",
+        "  r = g(v_x, v_uv.x);",
+        Some("float g(float d, float s) { return exp(-(d * d) / (2.0 * s * s)); }"),
+    ),
+    (
+        "float m(float v, float a, float b) {\n  return (v - a) / (b - a);\n}",
+        "  r = m(v_x, v_uv.x, v_uv.y);",
+        Some("return (v - a) / (b - a);"),
+    ),
+    (
+        "float hp(float v, float b) { return max(v - b, 0.0) / (1.0 - b); }",
+        "  r = hp(v_x, v_uv.x);",
+        Some("float hp(float v, float b) { return max(v - b, 0.0) / (1.0 - b); }"),
+    ),
+    (
+        "vec2 near(vec2 st, vec2 res) {\n  return st + 0.5 / (res - 1.0);\n}",
+        "  r = near(v_uv, v_uv * 0.0 + v_x).x;",
+        None,
+    ),
+    (
+        "vec2 near(vec2 st, vec2 res) {\n  return st + 0.5 / (res - 1.0);\n}",
+        "  r = near(v_uv, vec2(v_x)).x;",
+        Some("return st + 0.5 / (res - 1.0);"),
+    ),
+    // Guarded; called with constants; with computed values; a texture's size; the `w` of a
+    // homogeneous coordinate; a sum with a constant that ordinary values keep above 0; an
+    // index of refraction.
+    (
+        "float g(float d, float s) { return exp(-(d * d) / max(2.0 * s * s, 1e-4)); }",
+        "  r = g(v_x, v_uv.x);",
+        None,
+    ),
+    (
+        "float m(float v, float a, float b) { return (v - a) / (b - a); }",
+        "  r = m(v_x, 0.2, 0.8);",
+        None,
+    ),
+    (
+        "float m(float v, float a, float b) { return (v - a) / (b - a); }",
+        "  r = m(v_x, v_uv.x * v_x, v_uv.y + 2.0);",
+        None,
+    ),
+    (
+        "vec2 px(vec2 texResolution) { return 1.0 / texResolution; }",
+        "  r = px(v_uv).x;",
+        None,
+    ),
+    (
+        "vec3 pr(vec4 p) { return p.xyz / p.w; }",
+        "  r = pr(vec4(v_pos, v_x)).x;",
+        None,
+    ),
+    (
+        "float tm(float x) { return x / (x + 0.155); }",
+        "  r = tm(v_x);",
+        None,
+    ),
+    (
+        "float eta(float ior) { return 1.0 / ior; }",
+        "  r = eta(v_x);",
+        None,
+    ),
+];
+
+#[test]
+fn divisions_by_parameters_are_notes() {
+    let rule = "division-by-difference";
+    let mut failed = Vec::new();
+    for (functions, body, at) in PARAMETERS {
+        let f = found_with("highp", rule, functions, body);
+        let ok = match at {
+            Some(line) => f.iter().any(|(s, l)| *s == N && l == line),
+            None => f.is_empty(),
+        };
+        if !ok {
+            failed.push(format!("`{functions}` called as `{body}`: {f:?}"));
         }
     }
     assert!(failed.is_empty(), "{}", failed.join("\n"));

@@ -1,0 +1,172 @@
+//! Divisors a function takes from its callers: a parameter, or a sum, difference or product of
+//! parameters and constants (`2.0 * s * s`, `iMax - iMin`, `1.0 - b`, `tan(fov / 2.0)` is not
+//! one), where the callers pass inputs as such — a library function whose contract is left to
+//! whoever calls it (lygia's `gaussian(d, s)`, `map(v, iMin, iMax)`, `perspective(fov, aspect,
+//! near, far)`).
+//!
+//! The value analysis knows nothing of such a parameter: the rules leave a hazard that needs
+//! particular values of an input to whoever supplies them. A reviewer of the function still
+//! flags the division — a blur of sigma 0, a collapsed input range, a near plane at the far
+//! plane are values callers pass — so `division-by-difference` reports it as a note naming the
+//! parameters. Left out, as a reviewer leaves them: a divisor that is not 0 for ordinary,
+//! non-negative values (`x + 0.155`, `ior + 1.0`), the `w` of a `vec4` (a homogeneous
+//! coordinate, positive in front of the camera), a parameter whose name says what is never 0
+//! (`ior`, `shutterSpeed`, a number `base`), and a lone parameter whose name says it holds
+//! a size the host computes from the canvas or a texture, or a multiple of one
+//! (`1.0 / texResolution`, `floor(v * res) / res`) — but not its difference with a constant
+//! (`0.5 / (res - 1.0)`, 0 for a texture one texel wide).
+
+use naga::{BinaryOperator as Bo, Expression as E, Function, Handle, TypeInner, UnaryOperator};
+
+use super::Cx;
+use crate::value::Facts;
+
+/// How deep [`leaves`] follows an expression's operands.
+const MAX_DEPTH: u32 = 10;
+
+/// Words of a parameter's name that say it holds a size the host computes.
+const HOST_SIZE: &[&str] = &[
+    "resolution",
+    "resolutions",
+    "res",
+    "size",
+    "pixel",
+    "texel",
+    "viewport",
+    "screen",
+    "canvas",
+    "dimensions",
+];
+
+/// A divisor built from a function's parameters.
+pub(super) struct CallerDivisor {
+    /// The parameters, by name, in the order found, each once.
+    pub names: Vec<String>,
+    /// Whether it is a difference of two of them (`iMax - iMin`), 0 where they are equal.
+    pub difference: bool,
+}
+
+/// Words of a parameter's name that say its value is never 0 by what it is: an index of
+/// refraction (at least 1), an exposure time, the base of a number system.
+const NEVER_ZERO: &[&str] = &["ior", "shutter", "base"];
+
+/// The parameters divisor `d` of function `id` is built from, with constants only, where the
+/// callers pass inputs as such and ordinary values make it 0; `None` where it is not such a
+/// divisor.
+pub(super) fn caller_divisor(
+    cx: &Cx,
+    f: &Function,
+    id: usize,
+    d: Handle<E>,
+) -> Option<CallerDivisor> {
+    let v = cx.sound().num(id, d)?;
+    if !v.facts.any(Facts::INPUT) || v.facts.any(Facts::UNIFORM.with(Facts::TEXTURE)) {
+        return None;
+    }
+    let mut params = Vec::new();
+    if !leaves(cx, f, id, d, 0, &mut params) || params.is_empty() {
+        return None;
+    }
+    let typical = cx.typical().num(id, d)?;
+    if !typical.comps().iter().any(|c| c.contains(0.0)) {
+        return None;
+    }
+    let mut names: Vec<String> = Vec::new();
+    for i in params {
+        let name = f.arguments[i as usize]
+            .name
+            .clone()
+            .unwrap_or_else(|| format!("#{i}"));
+        if !names.contains(&name) {
+            names.push(name);
+        }
+    }
+    let top = &f.expressions[crate::symbolic::resolve(f, cx.sound(), id, d)];
+    let sum = matches!(
+        top,
+        E::Binary {
+            op: Bo::Add | Bo::Subtract,
+            ..
+        }
+    );
+    // A size itself, or a multiple of it (`1.0 / res`), is not 0 while anything is drawn; a
+    // difference with a constant (`res - 1.0`) is, for an ordinary size.
+    if let [name] = &names[..] {
+        if !sum && crate::analysis::names::says_any(name, HOST_SIZE) {
+            return None;
+        }
+    }
+    if names
+        .iter()
+        .any(|n| crate::analysis::names::says_any(n, NEVER_ZERO))
+    {
+        return None;
+    }
+    let difference = names.len() == 2
+        && matches!(
+            top,
+            E::Binary {
+                op: Bo::Subtract,
+                ..
+            }
+        );
+    Some(CallerDivisor { names, difference })
+}
+
+/// Whether `h` is built from parameters that every call passes an external value as such
+/// (pushed to `out`) and constants with `+`, `-`, `*`,
+/// negation, swizzles, components, constructors, conversions and locals, leaving out the
+/// `w` of a `vec4`.
+fn leaves(cx: &Cx, f: &Function, id: usize, h: Handle<E>, depth: u32, out: &mut Vec<u32>) -> bool {
+    if depth > MAX_DEPTH {
+        return false;
+    }
+    let go = |x: Handle<E>, out: &mut Vec<u32>| leaves(cx, f, id, x, depth + 1, out);
+    match f.expressions[h] {
+        E::Literal(_) | E::Constant(_) | E::ZeroValue(_) => true,
+        // A parameter every call passes an external value as such.
+        E::FunctionArgument(i) => {
+            out.push(i);
+            cx.sound()
+                .num(id, h)
+                .is_some_and(|v| v.facts.has(Facts::EXT))
+        }
+        E::Binary {
+            op: Bo::Add | Bo::Subtract | Bo::Multiply,
+            left,
+            right,
+        } => go(left, out) && go(right, out),
+        E::Unary {
+            op: UnaryOperator::Negate,
+            expr,
+        } => go(expr, out),
+        E::AccessIndex { base, index } => !(index == 3 && is_vec4(cx, id, base)) && go(base, out),
+        E::Swizzle {
+            vector,
+            pattern,
+            size,
+        } => {
+            let picks_w = pattern[..size as usize].contains(&naga::SwizzleComponent::W);
+            !picks_w && go(vector, out)
+        }
+        E::Splat { value: x, .. } | E::As { expr: x, .. } => go(x, out),
+        E::Compose { ref components, .. } => components.iter().all(|&c| go(c, out)),
+        E::Load { pointer } => {
+            let stored = cx.stored(f, id, pointer);
+            !stored.is_empty() && stored.into_iter().all(|x| go(x, out))
+        }
+        _ => false,
+    }
+}
+
+/// Whether expression `h` of function `id` is a 4-component vector.
+fn is_vec4(cx: &Cx, id: usize, h: Handle<E>) -> bool {
+    let info = crate::analysis::function_info(cx.module, cx.info, id);
+    matches!(
+        info[h].ty.inner_with(&cx.module.types),
+        TypeInner::Vector {
+            size: naga::VectorSize::Quad,
+            ..
+        }
+    )
+}
