@@ -40,7 +40,10 @@ declare_rule! {
     /// parameters where its callers pass inputs as such — a library function whose guard is
     /// left to the caller: lygia's `gaussian(d, s)` dividing by `2.0 * s * s` (a blur of sigma
     /// 0), `map(v, iMin, iMax)` by `iMax - iMin` (a collapsed range), `perspective` by
-    /// `near - far`, `0.5 / (res - 1.0)` (a texture one texel wide).
+    /// `near - far`, `0.5 / (res - 1.0)` (a texture one texel wide). The same, as a note, for a
+    /// vertex shader's division by its attributes as such: a particle's `age / a_life`, a
+    /// skinning weight's `1.0 / (w.x + w.y + w.z + w.w)` — values of the host's vertex data,
+    /// 0 for a vertex that holds 0.
     ///
     /// ## Why is this bad?
     /// Two parameters a user sets independently are equal sooner or later — a spot light with the
@@ -79,6 +82,7 @@ declare_rule! {
     /// - A parameter's division where a call passes a uniform or a computed value (the value
     ///   decides, as for any other divisor), or where ordinary non-negative values keep it from 0
     ///   (`x / (x + 0.155)`); the `w` of a `vec4` (`p.xyz / p.w`, a homogeneous coordinate); a
+    ///   varying as such in a fragment shader (0 on a line of pixels at most); a
     ///   parameter named for a size the host computes, or a multiple of one (`1.0 / texResolution`,
     ///   `floor(v * res) / res`); one named for what is never 0 (an index of refraction `ior`, a
     ///   `shutterSpeed`, a number `base`).
@@ -93,8 +97,8 @@ declare_rule! {
     /// the uniform, when one uniform alone (with constants) does — the hazard then needs that value out
     /// of the range the shader was written for, and essl-gl's validation mode checks it at draw time. (`x / (u_resolution - 1.0)` needs `u_resolution == 1`). A difference of two uniforms
     /// a user sets independently (`cutOff - outerCutOff`, `far - near`) gives a warning. A
-    /// division by parameters whose callers pass inputs as such is a note: the values are the
-    /// callers', which the shader does not show.
+    /// division by parameters whose callers pass inputs as such, or by attributes, is a note:
+    /// the values are the callers' or the host's, which the shader does not show.
     ///
     /// ## References
     /// - Article 001 (webgl2fundamentals, spot lights), the note after the `limitRange` diff.
@@ -342,6 +346,14 @@ fn parameter_divisor(cx: &Cx, div: &Division) -> Option<Diagnostic> {
         .join(", ");
     let what = cx.what(f, id, d);
     let (message, label) = match &names[..] {
+        [name] if found.attribute => (
+            format!("division by the attribute `{name}`, which a vertex may hold as 0"),
+            format!("{what} is 0 for every vertex whose `{name}` is 0"),
+        ),
+        _ if found.attribute => (
+            format!("division by a value of the attributes {list}, which is 0 for some vertices"),
+            format!("{what} is 0 for some values of {list}"),
+        ),
         [name] => (
             format!("division by the parameter `{name}`, which a caller may pass as 0"),
             format!("{what} is 0 wherever a caller passes `{name}` as 0"),

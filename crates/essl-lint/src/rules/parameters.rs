@@ -1,5 +1,6 @@
-//! Divisors a function takes from its callers: a parameter, or a sum, difference or product of
-//! parameters and constants (`2.0 * s * s`, `iMax - iMin`, `1.0 - b`, `tan(fov / 2.0)` is not
+//! Divisors a function takes from its callers or a vertex shader from its vertex data: a
+//! parameter or an attribute, or a sum, difference, product or length of parameters (or of
+//! attributes) and constants (`2.0 * s * s`, `iMax - iMin`, `1.0 - b`, `tan(fov / 2.0)` is not
 //! one), where the callers pass inputs as such — a library function whose contract is left to
 //! whoever calls it (lygia's `gaussian(d, s)`, `map(v, iMin, iMax)`, `perspective(fov, aspect,
 //! near, far)`).
@@ -8,7 +9,9 @@
 //! particular values of an input to whoever supplies them. A reviewer of the function still
 //! flags the division — a blur of sigma 0, a collapsed input range, a near plane at the far
 //! plane are values callers pass — so `division-by-difference` reports it as a note naming the
-//! parameters. Left out, as a reviewer leaves them: a divisor that is not 0 for ordinary,
+//! parameters. A vertex shader's attributes are the host's data in the same way (a particle of
+//! life 0, a vertex whose skinning weights are all 0); a fragment shader's varyings are not:
+//! an interpolated value crosses 0 on a line of pixels at most. Left out, as a reviewer leaves them: a divisor that is not 0 for ordinary,
 //! non-negative values (`x + 0.155`, `ior + 1.0`), the `w` of a `vec4` (a homogeneous
 //! coordinate, positive in front of the camera), a parameter whose name says what is never 0
 //! (`ior`, `shutterSpeed`, a number `base`), and a lone parameter whose name says it holds
@@ -44,6 +47,17 @@ pub(super) struct CallerDivisor {
     pub names: Vec<String>,
     /// Whether it is a difference of two of them (`iMax - iMin`), 0 where they are equal.
     pub difference: bool,
+    /// Whether the names are a vertex shader's attributes rather than parameters.
+    pub attribute: bool,
+}
+
+/// What a divisor is built from.
+#[derive(Clone, Copy)]
+enum Leaf {
+    /// A parameter of the function.
+    Parameter(u32),
+    /// A vertex shader's attribute (the private copy the entry point makes).
+    Attribute(Handle<naga::GlobalVariable>),
 }
 
 /// Words of a parameter's name that say its value is never 0 by what it is: an index of
@@ -67,21 +81,32 @@ pub(super) fn caller_divisor(
     if !leaves(cx, f, id, d, 0, &mut params) || params.is_empty() {
         return None;
     }
+    let attribute = params.iter().all(|l| matches!(l, Leaf::Attribute(_)));
+    if !attribute && params.iter().any(|l| matches!(l, Leaf::Attribute(_))) {
+        return None;
+    }
     let typical = cx.typical().num(id, d)?;
     if !typical.comps().iter().any(|c| c.contains(0.0)) {
         return None;
     }
     let mut names: Vec<String> = Vec::new();
-    for i in params {
-        let name = f.arguments[i as usize]
-            .name
-            .clone()
-            .unwrap_or_else(|| format!("#{i}"));
+    for leaf in params {
+        let name = match leaf {
+            Leaf::Parameter(i) => f.arguments[i as usize].name.clone(),
+            Leaf::Attribute(g) => cx.module.global_variables[g].name.clone(),
+        }
+        .unwrap_or_default();
         if !names.contains(&name) {
             names.push(name);
         }
     }
     let top = &f.expressions[crate::symbolic::resolve(f, cx.sound(), id, d)];
+    // `p.xyz / p.w`: the `w` of a homogeneous coordinate, positive in front of the camera.
+    if let E::AccessIndex { base, index: 3 } = *top {
+        if is_vec4(cx, id, base) {
+            return None;
+        }
+    }
     let sum = matches!(
         top,
         E::Binary {
@@ -102,35 +127,63 @@ pub(super) fn caller_divisor(
     {
         return None;
     }
+    // `iMax - iMin`, `length(b - a)`: 0 where the two are equal.
+    let inner = match *top {
+        E::Math {
+            fun: naga::MathFunction::Length,
+            arg,
+            ..
+        } => &f.expressions[crate::symbolic::resolve(f, cx.sound(), id, arg)],
+        _ => top,
+    };
     let difference = names.len() == 2
         && matches!(
-            top,
+            inner,
             E::Binary {
                 op: Bo::Subtract,
                 ..
             }
         );
-    Some(CallerDivisor { names, difference })
+    Some(CallerDivisor {
+        names,
+        difference,
+        attribute,
+    })
 }
 
-/// Whether `h` is built from parameters that every call passes an external value as such
-/// (pushed to `out`) and constants with `+`, `-`, `*`,
-/// negation, swizzles, components, constructors, conversions and locals, leaving out the
-/// `w` of a `vec4`.
-fn leaves(cx: &Cx, f: &Function, id: usize, h: Handle<E>, depth: u32, out: &mut Vec<u32>) -> bool {
+/// Whether `h` is built from parameters that every call passes an external value as such and
+/// a vertex shader's attributes as such (pushed to `out`), and constants, with `+`, `-`, `*`,
+/// negation, `length`, swizzles, components, constructors, conversions and locals.
+fn leaves(cx: &Cx, f: &Function, id: usize, h: Handle<E>, depth: u32, out: &mut Vec<Leaf>) -> bool {
     if depth > MAX_DEPTH {
         return false;
     }
-    let go = |x: Handle<E>, out: &mut Vec<u32>| leaves(cx, f, id, x, depth + 1, out);
+    let go = |x: Handle<E>, out: &mut Vec<Leaf>| leaves(cx, f, id, x, depth + 1, out);
+    let as_such = |x: Handle<E>| {
+        cx.sound().num(id, x).is_some_and(|v| {
+            v.facts.has(Facts::EXT)
+                && v.facts.any(Facts::INPUT)
+                && !v.facts.any(Facts::UNIFORM.with(Facts::TEXTURE))
+        })
+    };
     match f.expressions[h] {
         E::Literal(_) | E::Constant(_) | E::ZeroValue(_) => true,
         // A parameter every call passes an external value as such.
         E::FunctionArgument(i) => {
-            out.push(i);
+            out.push(Leaf::Parameter(i));
             cx.sound()
                 .num(id, h)
                 .is_some_and(|v| v.facts.has(Facts::EXT))
         }
+        E::Load { pointer } if vertex_input(cx, f, pointer).is_some() => {
+            out.extend(vertex_input(cx, f, pointer).map(Leaf::Attribute));
+            as_such(h)
+        }
+        E::Math {
+            fun: naga::MathFunction::Length,
+            arg,
+            ..
+        } => go(arg, out),
         E::Binary {
             op: Bo::Add | Bo::Subtract | Bo::Multiply,
             left,
@@ -140,16 +193,10 @@ fn leaves(cx: &Cx, f: &Function, id: usize, h: Handle<E>, depth: u32, out: &mut 
             op: UnaryOperator::Negate,
             expr,
         } => go(expr, out),
-        E::AccessIndex { base, index } => !(index == 3 && is_vec4(cx, id, base)) && go(base, out),
-        E::Swizzle {
-            vector,
-            pattern,
-            size,
-        } => {
-            let picks_w = pattern[..size as usize].contains(&naga::SwizzleComponent::W);
-            !picks_w && go(vector, out)
-        }
-        E::Splat { value: x, .. } | E::As { expr: x, .. } => go(x, out),
+        E::AccessIndex { base: x, .. }
+        | E::Swizzle { vector: x, .. }
+        | E::Splat { value: x, .. }
+        | E::As { expr: x, .. } => go(x, out),
         E::Compose { ref components, .. } => components.iter().all(|&c| go(c, out)),
         E::Load { pointer } => {
             let stored = cx.stored(f, id, pointer);
@@ -169,4 +216,24 @@ fn is_vec4(cx: &Cx, id: usize, h: Handle<E>) -> bool {
             ..
         }
     )
+}
+
+/// The attribute a load from `pointer` reads, in a vertex shader: a private global (the entry
+/// point's copy of an input), whole or a component.
+fn vertex_input(cx: &Cx, f: &Function, pointer: Handle<E>) -> Option<Handle<naga::GlobalVariable>> {
+    let ep = cx.module.entry_points.first()?;
+    if ep.stage != naga::ShaderStage::Vertex {
+        return None;
+    }
+    let mut p = pointer;
+    loop {
+        match f.expressions[p] {
+            E::AccessIndex { base, .. } => p = base,
+            E::GlobalVariable(g) => {
+                let var = &cx.module.global_variables[g];
+                return (var.space == naga::AddressSpace::Private).then_some(g);
+            }
+            _ => return None,
+        }
+    }
 }

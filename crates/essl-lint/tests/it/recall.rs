@@ -731,6 +731,45 @@ fn divisions_by_parameters_are_notes() {
     assert!(failed.is_empty(), "{}", failed.join("\n"));
 }
 
+/// A vertex shader's division by its attributes as such: a note (a vertex's data may hold 0);
+/// guarded, and the `w` of a position, quiet.
+#[test]
+fn divisions_by_attributes_are_notes() {
+    let vs = |body: &str| {
+        format!(
+            "#version 300 es\nin vec4 a_pos; in float a_life; in float a_age; in vec4 a_weight;\n\
+             out float v_t;\nvoid main() {{\n{body}\n  gl_Position = a_pos;\n}}\n"
+        )
+    };
+    let notes = |body: &str| -> Vec<String> {
+        let text = vs(body);
+        let s = compile(
+            SourceFile::new("t.vert", text.clone()),
+            Stage::Vertex,
+            &CompileOptions::default(),
+        );
+        assert!(s.ok() && s.naga.is_some(), "{text}\n{:#?}", s.diagnostics);
+        lint(&s, &LintOptions::default().notes(true))
+            .into_iter()
+            .filter(|d| d.code == "division-by-difference" && d.severity == N)
+            .map(|d| d.message)
+            .collect()
+    };
+    for body in [
+        "  v_t = a_age / a_life;",
+        "  v_t = 1.0 / (a_weight.x + a_weight.y + a_weight.z + a_weight.w);",
+    ] {
+        assert_eq!(notes(body).len(), 1, "{body}");
+    }
+    for body in [
+        "  v_t = a_age / max(a_life, 1e-4);",
+        "  v_t = a_pos.x / a_pos.w;",
+        "  v_t = a_age / (a_life + 1.0);",
+    ] {
+        assert!(notes(body).is_empty(), "{body}: {:?}", notes(body));
+    }
+}
+
 #[test]
 fn mediump_overflow_hazards_and_twins() {
     let rule = "mediump-overflow";
