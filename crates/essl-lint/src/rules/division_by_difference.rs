@@ -5,7 +5,7 @@
 use essl::diagnostic::{Diagnostic, Fix};
 use naga::{BinaryOperator as Bo, Expression as E, ScalarKind};
 
-use super::parameters::caller_divisor;
+use super::parameters::caller_value;
 use super::rule::declare_rule;
 use super::Cx;
 use crate::analysis::names::is_setting;
@@ -333,17 +333,13 @@ fn setting_factor(
 }
 
 /// The note for a divisor `d` of `h` built from the function's parameters alone, where the
-/// callers pass inputs as such ([`parameters::caller_divisor`]): `2.0 * s * s`, `iMax - iMin`.
+/// callers pass inputs as such ([`parameters::caller_value`]): `2.0 * s * s`, `iMax - iMin`.
 fn parameter_divisor(cx: &Cx, div: &Division) -> Option<Diagnostic> {
     let Division { f, id, d, .. } = *div;
-    let found = caller_divisor(cx, f, id, d)?;
+    let found = caller_value(cx, f, id, d)?;
     let span = unguarded(cx, div)?;
     let names = &found.names;
-    let list = names
-        .iter()
-        .map(|n| format!("`{n}`"))
-        .collect::<Vec<_>>()
-        .join(", ");
+    let list = found.list();
     let what = cx.what(f, id, d);
     let (message, label) = match &names[..] {
         [name] if found.attribute => (
@@ -371,9 +367,7 @@ fn parameter_divisor(cx: &Cx, div: &Division) -> Option<Diagnostic> {
         .with_label(label)
         .with_help("guard the divisor: `max(x, 1e-4)`, or keep it from 0 in every caller")
         .with_fix(floor_fix(cx, span))
-        .with_note(
-            "the callers here pass inputs as such, whose values the shader does not know: the division is the function's, its guard the callers'",
-        );
+        .with_note(found.why());
     diag.severity = essl::diagnostic::Severity::Note;
     Some(diag)
 }

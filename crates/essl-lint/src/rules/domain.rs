@@ -6,6 +6,7 @@
 use essl::diagnostic::{Diagnostic, Fix};
 use naga::{Expression as E, Function, Handle, MathFunction as Mf};
 
+use super::parameters::caller_value;
 use super::{fmt_num, Cx, Rule};
 use crate::value::Facts;
 
@@ -64,6 +65,9 @@ pub(super) fn check(cx: &Cx, out: &mut Vec<Diagnostic>, domains: &[Domain], rule
             && v.comps().iter().any(|c| c.contains(0.0))
             && (!v.facts.has(Facts::POS) || v.facts.any(Facts::TEXTURE) || per_draw);
         if !negative && !zero {
+            if dom.zero {
+                out.extend(from_callers(cx, f, id, call, x, dom, rule));
+            }
             continue;
         }
         let g = cx.guards(f, id, call);
@@ -152,6 +156,49 @@ fn finding(
         ));
     }
     d
+}
+
+/// The note for an argument built from a function's parameters alone, where its callers pass
+/// inputs as such, or from a vertex shader's attributes ([`caller_value`]): `log(t)` of a
+/// temperature `t` a caller may pass as 0.
+fn from_callers(
+    cx: &Cx,
+    f: &Function,
+    id: usize,
+    call: Handle<E>,
+    x: Handle<E>,
+    dom: &Domain,
+    rule: &Rule,
+) -> Option<Diagnostic> {
+    let found = caller_value(cx, f, id, x)?;
+    let g = cx.guards(f, id, call);
+    if cx.nonzero(f, id, x, &g)
+        || cx
+            .refined(f, id, x, &g)
+            .is_none_or(|v| !v.comps().iter().any(|c| c.contains(0.0)))
+    {
+        return None;
+    }
+    let mut d = finding(cx, f, id, x, dom, rule, false, 0.0);
+    let fun = dom.name;
+    let whose = if found.attribute {
+        "attribute"
+    } else {
+        "parameter"
+    };
+    let names = found.list();
+    d.severity = essl::diagnostic::Severity::Note;
+    d.message = match &found.names[..] {
+        [name] => format!(
+            "`{fun}` of the {whose} `{name}`, which {}, where `{fun}` is undefined (±∞, then NaN)",
+            found.zero_by()
+        ),
+        _ => format!(
+            "`{fun}` of a value of the {whose}s {names}, 0 for some of their values, where `{fun}` is undefined (±∞, then NaN)"
+        ),
+    };
+    d.label = format!("{} is 0 for some values of {names}", cx.what(f, id, x));
+    Some(d.with_note(found.why().to_string()))
 }
 
 /// A note for an argument that is 0 when one uniform is: 0 is an ordinary value of many

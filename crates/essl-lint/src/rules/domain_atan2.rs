@@ -4,6 +4,7 @@ use essl::diagnostic::Diagnostic;
 use naga::{Expression as E, Function, Handle, MathFunction as Mf};
 
 use super::guards::Guards;
+use super::parameters::caller_value;
 use super::rule::declare_rule;
 use super::Cx;
 use crate::analysis::Refinement;
@@ -56,7 +57,10 @@ declare_rule! {
     ///   being both 0 (`abs(y) + abs(x) > 1e-6`, the fix above).
     ///
     /// Severity: a warning when values the shader itself produces reach the hazard; a note, naming
-    /// the uniform, when one uniform alone (with constants) does.
+    /// the uniform, when one uniform alone (with constants) does. A note, naming them, where `y`
+    /// and `x` are built from a function's parameters alone and its callers pass inputs as such
+    /// (or from a vertex shader's attributes): both 0 wherever a caller passes a point at the
+    /// centre it measures the angle around (`atan(uv.y, uv.x)` of `uv = coord - center`).
     ///
     /// ## References
     /// - GLSL ES 3.00 specification, §8.1 Angle and Trigonometry Functions: atan(y, x) "Results
@@ -88,6 +92,7 @@ fn check(cx: &Cx, out: &mut Vec<Diagnostic>) {
         }
         let axis = components_of_direction(cx, f, id, y, x);
         if !(axis || cx.flat_at(f, id, y, 0.0) && cx.flat_at(f, id, x, 0.0)) {
+            out.extend(from_callers(cx, f, id, span, y, x));
             continue;
         }
         let label = if axis {
@@ -111,6 +116,49 @@ fn check(cx: &Cx, out: &mut Vec<Diagnostic>) {
 
 /// Whether a guard keeps `y` and `x` from being both 0: `abs(y) + abs(x)` (either order)
 /// compared so that it is positive where the `atan` runs.
+/// The note for `y` and `x` built from a function's parameters alone, where its callers pass
+/// inputs as such, or from a vertex shader's attributes ([`caller_value`]): `atan(y, x)` of a
+/// vector a caller may pass as the zero vector.
+fn from_callers(
+    cx: &Cx,
+    f: &Function,
+    id: usize,
+    span: essl::source::Span,
+    y: Handle<E>,
+    x: Handle<E>,
+) -> Option<Diagnostic> {
+    let (fy, fx) = (caller_value(cx, f, id, y)?, caller_value(cx, f, id, x)?);
+    if fy.attribute != fx.attribute {
+        return None;
+    }
+    let mut names = fy.names.clone();
+    names.extend(fx.names.iter().filter(|n| !fy.names.contains(n)).cloned());
+    let both = super::parameters::CallerValue {
+        names,
+        difference: false,
+        attribute: fy.attribute,
+    };
+    Some(
+        Diagnostic::rule_note(
+            DomainAtan2::RULE.id,
+            format!(
+                "`atan(y, x)` of {}, both 0 for some of their values, where `atan` is undefined",
+                both.list()
+            ),
+            span,
+        )
+        .with_label(format!(
+            "`y` and `x` are both 0 for some values of {}",
+            both.list()
+        ))
+        .with_secondary(cx.span(f, y), "y")
+        .with_secondary(cx.span(f, x), "x")
+        .with_note("GLSL ES 3.00 §8.1: atan(y, x) is undefined if x and y are both 0")
+        .with_note(both.why())
+        .with_help("choose the angle of the zero vector: test `abs(x) + abs(y) > 1e-6` first"),
+    )
+}
+
 fn apart(cx: &Cx, f: &Function, id: usize, y: Handle<E>, x: Handle<E>, g: &Guards) -> bool {
     let an = cx.sound();
     let abs_of = |h: Handle<E>| match f.expressions[h] {

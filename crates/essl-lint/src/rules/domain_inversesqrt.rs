@@ -42,7 +42,9 @@ declare_rule! {
     ///   non-negative, not non-zero: `inversesqrt(u_x)` is a note naming it.
     ///
     /// Severity: a warning when values the shader itself produces reach the hazard; a note, naming
-    /// the uniform, when one uniform alone (with constants) does.
+    /// the uniform, when one uniform alone (with constants) does. A note, naming them, where the
+    /// argument is built from a function's parameters alone and its callers pass inputs as such,
+    /// or from a vertex shader's attributes, and ordinary values make it 0.
     ///
     /// ## References
     /// - GLSL ES 3.00 specification, §8.2 Exponential Functions: inversesqrt "Results are undefined

@@ -39,13 +39,17 @@ declare_rule! {
     /// - A per-pixel value that reaches 0 only at isolated points (a difference of varyings).
     /// - An argument kept positive: `max(x, 1e-6)`, `x + 1e-4` of a non-negative `x`, `exp(x)`,
     ///   or under a guard (`if (lum > 0.0)`).
-    /// - An input as such: valid values are the caller's business. A uniform is taken to be
+    /// - An input as such: valid values are the caller's business (but see the notes on
+    ///   parameters and attributes below). A uniform is taken to be
     ///   non-negative, not non-zero: `log2(u_x)` is a note, `log2(abs(u_m[1][0]))` too (0, an
     ///   entry of an identity matrix, is an ordinary value).
     ///
     /// Severity: a warning when values the shader itself produces reach the hazard (rounding
     /// included, which says so in the message); a note, naming the uniform, when one uniform alone
-    /// (with constants) does.
+    /// (with constants) does. A note, naming them, where the argument is built from a function's
+    /// parameters alone and its callers pass inputs as such, or from a vertex shader's attributes,
+    /// and ordinary values make it 0: lygia's `k2rgb(t)` takes `log(t)` of a temperature its
+    /// documented range starts at 0.
     ///
     /// ## References
     /// - GLSL ES 3.00 specification, §8.2 Exponential Functions: log and log2 "Results are

@@ -41,8 +41,8 @@ const HOST_SIZE: &[&str] = &[
     "dimensions",
 ];
 
-/// A divisor built from a function's parameters.
-pub(super) struct CallerDivisor {
+/// A value built from a function's parameters or a vertex shader's attributes.
+pub(super) struct CallerValue {
     /// The parameters, by name, in the order found, each once.
     pub names: Vec<String>,
     /// Whether it is a difference of two of them (`iMax - iMin`), 0 where they are equal.
@@ -51,7 +51,33 @@ pub(super) struct CallerDivisor {
     pub attribute: bool,
 }
 
-/// What a divisor is built from.
+impl CallerValue {
+    /// The names, each in backticks, separated by commas.
+    pub fn list(&self) -> String {
+        let quoted: Vec<String> = self.names.iter().map(|n| format!("`{n}`")).collect();
+        quoted.join(", ")
+    }
+
+    /// How a lone name comes to be 0: "a caller may pass as 0", "a vertex may hold as 0".
+    pub fn zero_by(&self) -> &'static str {
+        if self.attribute {
+            "a vertex may hold as 0"
+        } else {
+            "a caller may pass as 0"
+        }
+    }
+
+    /// Why the finding is a note, not a warning.
+    pub fn why(&self) -> &'static str {
+        if self.attribute {
+            "attributes are the host's vertex data, which the shader does not show: keep them from 0 where they are written, or guard here"
+        } else {
+            "the callers here pass inputs as such, whose values the shader does not know: the function's guard, or its callers'"
+        }
+    }
+}
+
+/// What a value is built from.
 #[derive(Clone, Copy)]
 enum Leaf {
     /// A parameter of the function.
@@ -64,15 +90,10 @@ enum Leaf {
 /// refraction (at least 1), an exposure time, the base of a number system.
 const NEVER_ZERO: &[&str] = &["ior", "shutter", "base"];
 
-/// The parameters divisor `d` of function `id` is built from, with constants only, where the
-/// callers pass inputs as such and ordinary values make it 0; `None` where it is not such a
-/// divisor.
-pub(super) fn caller_divisor(
-    cx: &Cx,
-    f: &Function,
-    id: usize,
-    d: Handle<E>,
-) -> Option<CallerDivisor> {
+/// The parameters (or attributes) value `d` of function `id` is built from, with constants
+/// only, where the callers pass inputs as such and ordinary values make it 0; `None` where it is
+/// not such a value.
+pub(super) fn caller_value(cx: &Cx, f: &Function, id: usize, d: Handle<E>) -> Option<CallerValue> {
     let v = cx.sound().num(id, d)?;
     if !v.facts.any(Facts::INPUT) || v.facts.any(Facts::UNIFORM.with(Facts::TEXTURE)) {
         return None;
@@ -144,7 +165,7 @@ pub(super) fn caller_divisor(
                 ..
             }
         );
-    Some(CallerDivisor {
+    Some(CallerValue {
         names,
         difference,
         attribute,

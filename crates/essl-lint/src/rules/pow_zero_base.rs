@@ -4,6 +4,7 @@ use essl::diagnostic::{Diagnostic, Fix};
 use essl::source::Span;
 
 use super::context::PowCall;
+use super::parameters::caller_value;
 use super::rule::declare_rule;
 use super::{describe, Cx};
 use crate::value::Facts;
@@ -49,7 +50,10 @@ declare_rule! {
     /// Severity: a warning when values the shader itself produces reach the hazard; a note, naming
     /// the uniform, when one uniform alone (with constants) does — the hazard then needs that value out
     /// of the range the shader was written for, and essl-gl's validation mode checks it at draw time. (`pow(r, u_power - 1.0)` needs `u_power ≤ 1`).
-    /// An exponent that is a uniform as such is a note too.
+    /// An exponent that is a uniform as such is a note too. So is an exponent never above 0
+    /// (`pow(t, -1.5)`) of a base built from a function's parameters alone, where its callers
+    /// pass inputs as such, or from a vertex shader's attributes, that ordinary values make 0:
+    /// lygia's `k2rgb(t)` for a temperature of 0 K.
     ///
     /// ## References
     /// - GLSL ES 3.00 specification, §8.2 Exponential Functions: "Results are undefined if x = 0 and
@@ -89,6 +93,9 @@ fn check_zero(cx: &Cx, out: &mut Vec<Diagnostic>) {
         let base_zero = bi.contains(0.0) && (!b.facts.has(Facts::POS) || black);
         let exp_nonpositive = xi.lo <= 0.0 && (!x.facts.has(Facts::POS) || at_zero);
         if !base_zero || !exp_nonpositive {
+            if xi.hi <= 0.0 {
+                out.extend(from_callers(cx, f, id, h, base, exp));
+            }
             continue;
         }
         let g = cx.guards(f, id, h);
@@ -152,6 +159,61 @@ fn check_zero(cx: &Cx, out: &mut Vec<Diagnostic>) {
 
 /// Whether an exponent with `facts` is one uniform as such (through copies, swizzles and
 /// conversions, not negation: positive whenever the uniform is), and no per-pixel value.
+/// The note for a base built from a function's parameters alone, where its callers pass inputs
+/// as such, or from a vertex shader's attributes ([`caller_value`]), under an exponent that is
+/// never above 0: `pow(t, -1.5)` of a temperature a caller may pass as 0.
+fn from_callers(
+    cx: &Cx,
+    f: &naga::Function,
+    id: usize,
+    call: naga::Handle<naga::Expression>,
+    base: naga::Handle<naga::Expression>,
+    exp: naga::Handle<naga::Expression>,
+) -> Option<Diagnostic> {
+    let found = caller_value(cx, f, id, base)?;
+    let g = cx.guards(f, id, call);
+    if cx.nonzero(f, id, base, &g)
+        || cx
+            .refined(f, id, base, &g)
+            .is_none_or(|v| !v.comps().iter().any(|c| c.contains(0.0)))
+    {
+        return None;
+    }
+    let bspan = cx.span(f, base);
+    let xi = cx.sound().num(id, exp)?.hull();
+    let message = match &found.names[..] {
+        [name] => format!(
+            "`pow` of the base `{name}`, which {}, with an exponent ≤ 0: undefined",
+            found.zero_by()
+        ),
+        _ => format!(
+            "`pow` of a base built from {}, 0 for some of their values, with an exponent ≤ 0: undefined",
+            found.list()
+        ),
+    };
+    let mut d = Diagnostic::rule_note(PowZeroBase::RULE.id, message, bspan)
+        .with_label(format!(
+            "{} is 0 for some values of {}",
+            cx.what(f, id, base),
+            found.list()
+        ))
+        .with_note("GLSL ES 3.00 §8.2: pow(x, y) is undefined if x = 0 and y <= 0")
+        .with_note(found.why())
+        .with_help("keep the base above 0");
+    let xspan = cx.span(f, exp);
+    if !xspan.is_empty() {
+        d = d.with_secondary(xspan, format!("the exponent is {}", describe(xi)));
+    }
+    if !bspan.is_empty() {
+        d = d.with_fix(Fix::suggested(
+            "wrap the base in `max(…, 1e-4)`",
+            bspan,
+            format!("max({}, 1e-4)", cx.text(bspan)),
+        ));
+    }
+    Some(d)
+}
+
 pub(super) fn as_uniform(facts: Facts) -> bool {
     facts.has(Facts::EXT)
         && facts.has(Facts::POS)

@@ -645,31 +645,36 @@ fn guarded_twins_are_quiet() {
     assert!(failed.is_empty(), "{}", failed.join("\n"));
 }
 
-/// A library function's division by what its callers pass (inputs as such here): a note at the
-/// division, naming the parameters; (function, call in `main`, the division's line or `None`
-/// for a twin that is quiet).
-const PARAMETERS: &[(&str, &str, Option<&str>)] = &[
+/// A library function's division (or `log`, `pow`, `atan`) of what its callers pass (inputs as
+/// such here): a note at the call, naming the parameters; (rule, function, call in `main`, the
+/// line of the note or `None` for a twin that is quiet).
+const PARAMETERS: &[(&str, &str, &str, Option<&str>)] = &[
     (
+        "division-by-difference",
         "float g(float d, float s) { return exp(-(d * d) / (2.0 * s * s)); }",
         "  r = g(v_x, v_uv.x);",
         Some("float g(float d, float s) { return exp(-(d * d) / (2.0 * s * s)); }"),
     ),
     (
+        "division-by-difference",
         "float m(float v, float a, float b) {\n  return (v - a) / (b - a);\n}",
         "  r = m(v_x, v_uv.x, v_uv.y);",
         Some("return (v - a) / (b - a);"),
     ),
     (
+        "division-by-difference",
         "float hp(float v, float b) { return max(v - b, 0.0) / (1.0 - b); }",
         "  r = hp(v_x, v_uv.x);",
         Some("float hp(float v, float b) { return max(v - b, 0.0) / (1.0 - b); }"),
     ),
     (
+        "division-by-difference",
         "vec2 near(vec2 st, vec2 res) {\n  return st + 0.5 / (res - 1.0);\n}",
         "  r = near(v_uv, v_uv * 0.0 + v_x).x;",
         None,
     ),
     (
+        "division-by-difference",
         "vec2 near(vec2 st, vec2 res) {\n  return st + 0.5 / (res - 1.0);\n}",
         "  r = near(v_uv, vec2(v_x)).x;",
         Some("return st + 0.5 / (res - 1.0);"),
@@ -678,36 +683,43 @@ const PARAMETERS: &[(&str, &str, Option<&str>)] = &[
     // homogeneous coordinate; a sum with a constant that ordinary values keep above 0; an
     // index of refraction.
     (
+        "division-by-difference",
         "float g(float d, float s) { return exp(-(d * d) / max(2.0 * s * s, 1e-4)); }",
         "  r = g(v_x, v_uv.x);",
         None,
     ),
     (
+        "division-by-difference",
         "float m(float v, float a, float b) { return (v - a) / (b - a); }",
         "  r = m(v_x, 0.2, 0.8);",
         None,
     ),
     (
+        "division-by-difference",
         "float m(float v, float a, float b) { return (v - a) / (b - a); }",
         "  r = m(v_x, v_uv.x * v_x, v_uv.y + 2.0);",
         None,
     ),
     (
+        "division-by-difference",
         "vec2 px(vec2 texResolution) { return 1.0 / texResolution; }",
         "  r = px(v_uv).x;",
         None,
     ),
     (
+        "division-by-difference",
         "vec3 pr(vec4 p) { return p.xyz / p.w; }",
         "  r = pr(vec4(v_pos, v_x)).x;",
         None,
     ),
     (
+        "division-by-difference",
         "float tm(float x) { return x / (x + 0.155); }",
         "  r = tm(v_x);",
         None,
     ),
     (
+        "division-by-difference",
         "float eta(float ior) { return 1.0 / ior; }",
         "  r = eta(v_x);",
         None,
@@ -715,10 +727,9 @@ const PARAMETERS: &[(&str, &str, Option<&str>)] = &[
 ];
 
 #[test]
-fn divisions_by_parameters_are_notes() {
-    let rule = "division-by-difference";
+fn what_parameters_make_undefined_is_a_note() {
     let mut failed = Vec::new();
-    for (functions, body, at) in PARAMETERS {
+    for (rule, functions, body, at) in PARAMETERS {
         let f = found_with("highp", rule, functions, body);
         let ok = match at {
             Some(line) => f.iter().any(|(s, l)| *s == N && l == line),
