@@ -24,9 +24,14 @@ declare_rule! {
     ///   channel of one texture with weights that sum to 0 (a Sobel or central difference,
     ///   `vec2(r - l, t - b)`), the zero vector wherever the image is flat.
     ///
-    /// Not reported: `normalize` of a uniform, an input or a texel itself (`normalize(v_normal)`; the
-    /// runtime check validates uniform values), of a transformed vector (`normalize(mat3(u_world) *
-    /// a_normal)`), and of per-pixel sums and differences such as `normalize(u_lightPos - v_position)`
+    /// And, as a note, `normalize` in a vertex shader of an attribute that holds a direction — a
+    /// normal, a tangent, a particle's direction — as such or through a transform
+    /// (`normalize(normalMatrix * normal)`, three.js's `normalize(transformedNormal)`): the host's
+    /// vertex data holds the zero vector for a degenerate triangle's computed normal, or where the
+    /// mesh lacks the buffer (read as 0).
+    ///
+    /// Not reported: `normalize` of a uniform, a varying or a texel itself (`normalize(v_normal)`;
+    /// the runtime check validates uniform values), and of per-pixel sums and differences such as `normalize(u_lightPos - v_position)`
     /// or a half vector `normalize(l + v)`: those vanish only at isolated points (the pixel that is at
     /// the light's position), not for a whole draw. A gradient with a constant component
     /// (`normalize(vec3(r - l, t - b, 1.0))`, a normal from a height map) is not zero.
@@ -53,8 +58,9 @@ declare_rule! {
     /// There is no mechanical fix: the degenerate case needs a choice (a fallback axis, or no light).
     ///
     /// ## What it does not flag
-    /// - `normalize` of a uniform, input or texel as such, of a transformed vector (`mat3(u_world) *
-    ///   a_normal`), of a constant non-zero vector, and of per-pixel sums and differences.
+    /// - `normalize` of a uniform, varying or texel as such, of a transformed uniform, of an
+    ///   attribute whose name does not say it holds a direction (`normalize(position)` of a globe's
+    ///   vertex), of a constant non-zero vector, and of per-pixel sums and differences.
     /// - A cross product of vectors built perpendicular to each other (a camera frame), and of a vector
     ///   with an up axis chosen away from it: `up = abs(n.z) < 0.999 ? vec3(0.0, 0.0, 1.0) :
     ///   vec3(1.0, 0.0, 0.0)` (each axis is used only where `n` is not along it).
@@ -68,7 +74,8 @@ declare_rule! {
     ///
     /// Severity: a cross product with a vector fixed for the draw is a warning (a light pointing
     /// straight down is ordinary), as is a gradient (flat regions are in every picture);
-    /// `normalize` of a per-draw difference is a note when one uniform alone reaches it.
+    /// `normalize` of a per-draw difference is a note when one uniform alone reaches it, and of a
+    /// direction attribute always.
     ///
     /// ## References
     /// - GLSL ES 3.00 specification, §8.4 Geometric Functions (normalize: "a vector in the same
@@ -100,6 +107,10 @@ fn check(cx: &Cx, out: &mut Vec<Diagnostic>) {
             let Some(v) = cx.sound().num(id, x) else {
                 continue;
             };
+            if v.n >= 2 && v.facts.has(Facts::NZ) {
+                out.extend(attribute_direction(cx, f, id, h, x));
+                continue;
+            }
             if v.n < 2 || !v.may_be_zero() || v.facts.has(Facts::NZ) {
                 continue;
             }
@@ -340,4 +351,93 @@ fn cross_operands(
         } => Some((arg, b)),
         _ => None,
     }
+}
+
+/// Words of an attribute's name that say it holds a direction: a normal, a tangent.
+const DIRECTION: &[&str] = &[
+    "normal",
+    "normals",
+    "nor",
+    "nrm",
+    "tangent",
+    "tangents",
+    "bitangent",
+    "binormal",
+    "direction",
+    "dir",
+];
+
+/// The note for `normalize(x)` in a vertex shader of a vector not zero unless an attribute that
+/// holds a direction is (a normal through the normal matrix, `(M * vec4(tangent, 0.0)).xyz`):
+/// a vertex whose normal is the zero vector — a degenerate triangle's, a buffer the mesh lacks —
+/// gets NaN. `None` where the origin holds anything else (a position, a texel).
+fn attribute_direction(
+    cx: &Cx,
+    f: &Function,
+    id: usize,
+    call: Handle<E>,
+    x: Handle<E>,
+) -> Option<Diagnostic> {
+    if cx.module.entry_points.first()?.stage != naga::ShaderStage::Vertex {
+        return None;
+    }
+    let o = cx.origin(&[(id, x)]);
+    let direction = |n: &String| crate::analysis::names::says_any(n, DIRECTION);
+    if o.inputs.is_empty() || o.texels || o.unknown || !o.inputs.iter().all(direction) {
+        return None;
+    }
+    let g = cx.guards(f, id, call);
+    // The analysis takes an attribute as such to be non-zero: only a guard that rules out a
+    // zero the unguarded value may be counts.
+    let unguarded = cx.sound().num(id, x)?.may_be_zero();
+    let guarded = cx.refined(f, id, x, &g).is_none_or(|v| !v.may_be_zero());
+    if cx.nonzero(f, id, x, &g) || (unguarded && guarded) || length_guarded(cx, f, id, x, &g) {
+        return None;
+    }
+    let list: Vec<String> = o.inputs.iter().map(|n| format!("`{n}`")).collect();
+    let list = list.join(", ");
+    let span = cx.span(f, x);
+    Some(
+        Diagnostic::rule_note(
+            NormalizeZero::RULE.id,
+            format!("`normalize` of the attribute {list}, which a vertex may hold as the zero vector"),
+            span,
+        )
+        .with_label(format!("{} is the zero vector for a vertex whose {list} is", cx.what(f, id, x)))
+        .with_note("normalize(v) divides by length(v): 0 / 0 for the zero vector")
+        .with_note("attributes are the host's vertex data: a degenerate triangle's normal, or a buffer the mesh lacks (read as 0), is the zero vector")
+        .with_help("test the length first (`dot(v, v) > 1e-12`) and choose a fallback direction"),
+    )
+}
+
+/// Whether a guard bounds `length(x)` or `dot(x, x)` above 0 (`length(n) > 0.0 ? normalize(n)
+/// : …`).
+fn length_guarded(
+    cx: &Cx,
+    f: &Function,
+    id: usize,
+    x: Handle<E>,
+    g: &super::guards::Guards,
+) -> bool {
+    let an = cx.sound();
+    g.facts.iter().any(|&(h, ref r)| {
+        let (crate::analysis::Refinement::Value(i) | crate::analysis::Refinement::Norm(i)) = r;
+        if i.lo <= 0.0 {
+            return false;
+        }
+        match f.expressions[resolve(f, an, id, h)] {
+            E::Math {
+                fun: Mf::Length,
+                arg,
+                ..
+            } => an.same(f, id, arg, x),
+            E::Math {
+                fun: Mf::Dot,
+                arg,
+                arg1: Some(b),
+                ..
+            } => an.same(f, id, arg, x) && an.same(f, id, b, x),
+            _ => an.same(f, id, h, x),
+        }
+    })
 }

@@ -772,6 +772,37 @@ fn divisions_by_attributes_are_notes() {
     ] {
         assert_eq!(notes(body).len(), 1, "{body}");
     }
+    // A normal attribute through a transform: the zero vector for a vertex that holds it.
+    let normalized = |body: &str| -> Vec<String> {
+        let text = format!(
+            "#version 300 es\nuniform mat3 u_nm;\nin vec3 a_normal; in vec3 a_position;\n\
+             out vec3 v_n;\nvoid main() {{\n{body}\n  gl_Position = vec4(a_position, 1.0);\n}}\n"
+        );
+        let s = compile(
+            SourceFile::new("t.vert", text.clone()),
+            Stage::Vertex,
+            &CompileOptions::default(),
+        );
+        assert!(s.ok() && s.naga.is_some(), "{text}\n{:#?}", s.diagnostics);
+        lint(&s, &LintOptions::default().notes(true))
+            .into_iter()
+            .filter(|d| d.code == "normalize-zero" && d.severity == N)
+            .map(|d| d.message)
+            .collect()
+    };
+    for body in [
+        "  v_n = normalize(u_nm * a_normal);",
+        "  v_n = normalize(a_normal) * 0.5 + 0.5;",
+    ] {
+        assert_eq!(normalized(body).len(), 1, "{body}");
+    }
+    for quiet in [
+        "  v_n = normalize(a_position);",
+        "  vec3 n = u_nm * a_normal;\n  v_n = dot(n, n) > 1e-12 ? normalize(n) : vec3(0.0, 0.0, 1.0);",
+        "  v_n = length(a_normal) > 0.0 ? normalize(a_normal) : vec3(0.0, 0.0, 1.0);",
+    ] {
+        assert!(normalized(quiet).is_empty(), "{quiet}");
+    }
     for body in [
         "  v_t = a_age / max(a_life, 1e-4);",
         "  v_t = a_pos.x / a_pos.w;",
