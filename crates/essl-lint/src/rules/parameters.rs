@@ -1,25 +1,32 @@
-//! Divisors a function takes from its callers or a vertex shader from its vertex data: a
-//! parameter or an attribute, or a sum, difference, product or length of parameters (or of
-//! attributes) and constants (`2.0 * s * s`, `iMax - iMin`, `1.0 - b`, `tan(fov / 2.0)` is not
-//! one), where the callers pass inputs as such — a library function whose contract is left to
-//! whoever calls it (lygia's `gaussian(d, s)`, `map(v, iMin, iMax)`, `perspective(fov, aspect,
-//! near, far)`).
+//! Values a function takes from its callers, or a vertex shader from its vertex data: a
+//! parameter or an attribute, or what is 0 wherever they are — sums, differences, products,
+//! quotients by constants, `length`, `abs`, `dot`, `min`, `max`, `tan`, `sin`, the ends of a
+//! `mix` — of parameters (or of attributes) and constants: `2.0 * s * s`, `iMax - iMin`,
+//! `1.0 - b`, `tan(fov / 2.0)`, `dot(b - a, b - a)`. Where the callers pass inputs as such, the
+//! function's contract is left to whoever calls it (lygia's `gaussian(d, s)`, `map(v, iMin,
+//! iMax)`, `perspective(fov, aspect, near, far)`).
 //!
 //! The value analysis knows nothing of such a parameter: the rules leave a hazard that needs
 //! particular values of an input to whoever supplies them. A reviewer of the function still
-//! flags the division — a blur of sigma 0, a collapsed input range, a near plane at the far
-//! plane are values callers pass — so `division-by-difference` reports it as a note naming the
-//! parameters. A vertex shader's attributes are the host's data in the same way (a particle of
-//! life 0, a vertex whose skinning weights are all 0); a fragment shader's varyings are not:
-//! an interpolated value crosses 0 on a line of pixels at most. Left out, as a reviewer leaves them: a divisor that is not 0 for ordinary,
-//! non-negative values (`x + 0.155`, `ior + 1.0`), the `w` of a `vec4` (a homogeneous
+//! flags it — a blur of sigma 0, a collapsed input range, a near plane at the far plane are
+//! values callers pass — so `division-by-difference` reports the division as a note naming the
+//! parameters, and `domain-log`, `domain-inversesqrt`, `pow-zero-base` and `domain-atan2` the
+//! same of their arguments. A vertex shader's attributes are the host's data in the same way
+//! (a particle of life 0, a vertex whose skinning weights are all 0); a fragment shader's
+//! varyings are not: an interpolated value crosses 0 on a line of pixels at most.
+//!
+//! Left out, as a reviewer leaves them: a value that is not 0 for ordinary, non-negative
+//! inputs (`x + 0.155`, `ior + 1.0`), the `w` of a `vec4` as a divisor (a homogeneous
 //! coordinate, positive in front of the camera), a parameter whose name says what is never 0
-//! (`ior`, `shutterSpeed`, a number `base`), and a lone parameter whose name says it holds
-//! a size the host computes from the canvas or a texture, or a multiple of one
+//! (`ior`, `shutterSpeed`, a number `base`), and a lone parameter whose name says it holds a
+//! size the host computes from the canvas or a texture, or a multiple of one
 //! (`1.0 / texResolution`, `floor(v * res) / res`) — but not its difference with a constant
 //! (`0.5 / (res - 1.0)`, 0 for a texture one texel wide).
 
-use naga::{BinaryOperator as Bo, Expression as E, Function, Handle, TypeInner, UnaryOperator};
+use naga::{
+    BinaryOperator as Bo, Expression as E, Function, Handle, MathFunction as Mf, TypeInner,
+    UnaryOperator,
+};
 
 use super::Cx;
 use crate::value::Facts;
@@ -77,6 +84,14 @@ impl CallerValue {
     }
 }
 
+/// What [`leaves`] has found: the leaves, and the locals it has read (a store that reads the
+/// local it writes is not followed again).
+#[derive(Default)]
+struct Walk {
+    leaves: Vec<Leaf>,
+    locals: Vec<Handle<E>>,
+}
+
 /// What a value is built from.
 #[derive(Clone, Copy)]
 enum Leaf {
@@ -95,13 +110,15 @@ const NEVER_ZERO: &[&str] = &["ior", "shutter", "base"];
 /// not such a value.
 pub(super) fn caller_value(cx: &Cx, f: &Function, id: usize, d: Handle<E>) -> Option<CallerValue> {
     let v = cx.sound().num(id, d)?;
-    if !v.facts.any(Facts::INPUT) || v.facts.any(Facts::UNIFORM.with(Facts::TEXTURE)) {
+    // A uniform may reach it only as a `mix` weight, which [`leaves`] leaves out.
+    if !v.facts.any(Facts::INPUT) || v.facts.any(Facts::TEXTURE) {
         return None;
     }
-    let mut params = Vec::new();
-    if !leaves(cx, f, id, d, 0, &mut params) || params.is_empty() {
+    let mut walk = Walk::default();
+    if !leaves(cx, f, id, d, 0, &mut walk) || walk.leaves.is_empty() {
         return None;
     }
+    let params = walk.leaves;
     let attribute = params.iter().all(|l| matches!(l, Leaf::Attribute(_)));
     if !attribute && params.iter().any(|l| matches!(l, Leaf::Attribute(_))) {
         return None;
@@ -151,7 +168,7 @@ pub(super) fn caller_value(cx: &Cx, f: &Function, id: usize, d: Handle<E>) -> Op
     // `iMax - iMin`, `length(b - a)`: 0 where the two are equal.
     let inner = match *top {
         E::Math {
-            fun: naga::MathFunction::Length,
+            fun: Mf::Length,
             arg,
             ..
         } => &f.expressions[crate::symbolic::resolve(f, cx.sound(), id, arg)],
@@ -175,11 +192,11 @@ pub(super) fn caller_value(cx: &Cx, f: &Function, id: usize, d: Handle<E>) -> Op
 /// Whether `h` is built from parameters that every call passes an external value as such and
 /// a vertex shader's attributes as such (pushed to `out`), and constants, with `+`, `-`, `*`,
 /// negation, `length`, swizzles, components, constructors, conversions and locals.
-fn leaves(cx: &Cx, f: &Function, id: usize, h: Handle<E>, depth: u32, out: &mut Vec<Leaf>) -> bool {
+fn leaves(cx: &Cx, f: &Function, id: usize, h: Handle<E>, depth: u32, out: &mut Walk) -> bool {
     if depth > MAX_DEPTH {
         return false;
     }
-    let go = |x: Handle<E>, out: &mut Vec<Leaf>| leaves(cx, f, id, x, depth + 1, out);
+    let go = |x: Handle<E>, out: &mut Walk| leaves(cx, f, id, x, depth + 1, out);
     let as_such = |x: Handle<E>| {
         cx.sound().num(id, x).is_some_and(|v| {
             v.facts.has(Facts::EXT)
@@ -191,20 +208,37 @@ fn leaves(cx: &Cx, f: &Function, id: usize, h: Handle<E>, depth: u32, out: &mut 
         E::Literal(_) | E::Constant(_) | E::ZeroValue(_) => true,
         // A parameter every call passes an external value as such.
         E::FunctionArgument(i) => {
-            out.push(Leaf::Parameter(i));
+            out.leaves.push(Leaf::Parameter(i));
             cx.sound()
                 .num(id, h)
                 .is_some_and(|v| v.facts.has(Facts::EXT))
         }
         E::Load { pointer } if vertex_input(cx, f, pointer).is_some() => {
-            out.extend(vertex_input(cx, f, pointer).map(Leaf::Attribute));
+            out.leaves
+                .extend(vertex_input(cx, f, pointer).map(Leaf::Attribute));
             as_such(h)
         }
+        // 0 where their arguments are (`length`, `abs`, `tan(fov / 2.0)`), or where both are
+        // (`dot(d, d)`, `max(NoL, NoV)`, `min`).
         E::Math {
-            fun: naga::MathFunction::Length,
+            fun: Mf::Length | Mf::Abs | Mf::Tan | Mf::Sin | Mf::Asin | Mf::Atan,
             arg,
+            arg1: None,
             ..
         } => go(arg, out),
+        E::Math {
+            fun: Mf::Dot | Mf::Min | Mf::Max,
+            arg,
+            arg1: Some(b),
+            ..
+        } => go(arg, out) && go(b, out),
+        // `mix(a, b, t)` is 0 where `a` and `b` are, whatever `t` is.
+        E::Math {
+            fun: Mf::Mix,
+            arg,
+            arg1: Some(b),
+            ..
+        } => go(arg, out) && go(b, out),
         E::Binary {
             op: Bo::Add | Bo::Subtract | Bo::Multiply,
             left,
@@ -219,10 +253,20 @@ fn leaves(cx: &Cx, f: &Function, id: usize, h: Handle<E>, depth: u32, out: &mut 
         | E::Splat { value: x, .. }
         | E::As { expr: x, .. } => go(x, out),
         E::Compose { ref components, .. } => components.iter().all(|&c| go(c, out)),
+        // A local's stores; one that reads the local itself (`st = st * 2.0 - 1.0`) adds
+        // nothing the others do not.
+        E::Load { pointer } if out.locals.contains(&pointer) => true,
         E::Load { pointer } => {
+            out.locals.push(pointer);
             let stored = cx.stored(f, id, pointer);
             !stored.is_empty() && stored.into_iter().all(|x| go(x, out))
         }
+        // A quotient by a constant (`fov / 2.0`) is 0 where the dividend is.
+        E::Binary {
+            op: Bo::Divide,
+            left,
+            right,
+        } if matches!(f.expressions[right], E::Literal(_) | E::Constant(_)) => go(left, out),
         _ => false,
     }
 }

@@ -724,6 +724,76 @@ const PARAMETERS: &[(&str, &str, &str, Option<&str>)] = &[
         "  r = eta(v_x);",
         None,
     ),
+    // 0 where the parameter is: `tan` of it over a constant.
+    (
+        "division-by-difference",
+        "float persp(float fov) {\n  return 1.0 / tan(fov / 2.0);\n}",
+        "  r = persp(v_x);",
+        Some("return 1.0 / tan(fov / 2.0);"),
+    ),
+    // `log`, `pow` with an exponent never above 0, and `atan` of what callers pass; guarded,
+    // and kept from 0 by a constant.
+    (
+        "domain-log",
+        "float lg(float t) {\n  return log(t);\n}",
+        "  r = lg(v_x);",
+        Some("return log(t);"),
+    ),
+    (
+        "domain-log",
+        "float lg(float t) { return t > 0.0 ? log(t) : 0.0; }",
+        "  r = lg(v_x);",
+        None,
+    ),
+    (
+        "domain-log",
+        "float lg(float t) { return log(t + 1.0); }",
+        "  r = lg(v_x);",
+        None,
+    ),
+    (
+        "pow-zero-base",
+        "float k(float t) {\n  return pow(t, -1.5);\n}",
+        "  r = k(v_x);",
+        Some("return pow(t, -1.5);"),
+    ),
+    (
+        "pow-zero-base",
+        "float k(float t) { return pow(t, 1.5); }",
+        "  r = k(v_x);",
+        None,
+    ),
+    (
+        "domain-atan2",
+        "float ang(vec2 st, vec2 c) {\n  vec2 d = st - c;\n  return atan(d.y, d.x);\n}",
+        "  r = ang(v_uv, v_pos.xy);",
+        Some("return atan(d.y, d.x);"),
+    ),
+    (
+        "domain-atan2",
+        "float ang(vec2 st, vec2 c) {\n  vec2 d = st - c;\n  return abs(d.x) + abs(d.y) > 1e-6 ? atan(d.y, d.x) : 0.0;\n}",
+        "  r = ang(v_uv, v_pos.xy);",
+        None,
+    ),
+    // Scalars as such, and a parameter written from itself.
+    (
+        "domain-atan2",
+        "float a2(float y, float x) {\n  return atan(y, x);\n}",
+        "  r = a2(v_x, v_uv.x);",
+        Some("return atan(y, x);"),
+    ),
+    (
+        "domain-atan2",
+        "float poly(vec2 st) {\n  st = st * 2.0 - 1.0;\n  return atan(st.x, st.y);\n}",
+        "  r = poly(v_uv);",
+        Some("return atan(st.x, st.y);"),
+    ),
+    (
+        "domain-atan2",
+        "float a2(vec2 d) { vec2 n = normalize(d); return atan(n.y, n.x); }",
+        "  r = a2(v_uv);",
+        None,
+    ),
 ];
 
 #[test]
