@@ -11,9 +11,13 @@
 //! `break` or `continue` taken under non-uniform control flow (until the function ends, or the
 //! loop, whose every iteration then runs for fewer pixels); and in a function called from
 //! non-uniform control flow. Uniforms, constants and loop counters with uniform bounds are the
-//! same for every pixel. Code after `if (…) discard;` is not treated as non-uniform: the
-//! alpha-tested shaders everyone writes rely on the discarded pixels' neighbours still having
-//! their derivatives (GPUs keep discarded pixels of a quad running as helpers).
+//! same for every pixel. Code after `if (…) discard;` with a varying condition is reported
+//! apart ([`Finding::after_discard`], the walk in `discard.rs`): the specification leaves its
+//! derivatives undefined where the discarded pixels of a quad stop, but most GPUs keep them
+//! running as helpers, so alpha-tested shaders work in practice; and a variable written after
+//! it is not taken to vary.
+
+mod discard;
 
 use rustc_hash::{FxHashMap as HashMap, FxHashSet as HashSet};
 
@@ -39,6 +43,9 @@ pub struct Finding {
     pub op: BuiltinFn,
     /// Why the control flow there is non-uniform.
     pub why: Reason,
+    /// Whether it is non-uniform only because a `discard` some pixels of the quad take runs
+    /// before it ([`Reason::what`] says so); under a varying condition otherwise.
+    pub after_discard: bool,
 }
 
 /// Whether a built-in takes derivatives of its arguments: `dFdx`, `dFdy`, `fwidth`, and the
@@ -82,6 +89,7 @@ pub fn divergent_derivatives(m: &hir::Module) -> Vec<Finding> {
     }
     u.record = true;
     u.pass();
+    u.after_discards();
     u.found
 }
 
@@ -240,6 +248,7 @@ impl Uniformity<'_> {
                         span: e.span,
                         op: *op,
                         why,
+                        after_discard: false,
                     });
                 }
             }

@@ -15,8 +15,9 @@ declare_rule! {
     /// `textureProjOffset`; GLSL ES 1.00's `texture2D`, `textureCube`, …) where control flow depends
     /// on values that differ between pixels: inside an `if`, loop, `switch` or `?:` whose condition
     /// reads an input, `gl_FragCoord`, a texel or anything computed from them; after a `break`,
-    /// `continue` or `return` some pixels take; in the right side of `&&`/`||`; and in a function
-    /// called from such a place (the finding names the call).
+    /// `continue` or `return` some pixels take; in the right side of `&&`/`||`; in a function
+    /// called from such a place (the finding names the call); and, as a note, after a `discard`
+    /// some pixels take.
     ///
     /// ## Why is this bad?
     /// GPUs shade pixels in 2×2 quads and take derivatives as differences between neighbours.
@@ -48,11 +49,15 @@ declare_rule! {
     ///   uniform count): every pixel of a draw takes the same path.
     /// - `textureLod`, `textureGrad`, `texelFetch`, `textureSize`, and lookups in vertex shaders (no
     ///   derivatives there).
-    /// - Code after `if (…) discard;`: alpha testing is written that way everywhere, and GPUs keep
-    ///   the discarded pixels of a quad running as helpers, so the neighbours' derivatives stay
-    ///   defined in practice.
+    /// - A variable written after `if (…) discard;` (the pixels still running agree on it), and a
+    ///   function called after it.
     ///
-    /// Severity: a warning.
+    /// Severity: a warning; a note after `if (…) discard;` with a varying condition, which the
+    /// specification leaves undefined in the same way but GPUs keep working in practice: they
+    /// run a quad's discarded pixels on as helpers, so the neighbours' derivatives stay defined
+    /// — on drivers that end them instead (SPIR-V's `OpKill`), lookups after the `discard` take
+    /// the wrong level along its edges. Alpha testing is written that way everywhere; the note
+    /// says where a lookup could move above the `discard`.
     ///
     /// ## References
     /// - GLSL ES 3.00 specification, §8.9 Texture Lookup Functions ("implicit derivatives … are
@@ -94,6 +99,22 @@ fn check(cx: &Cx, out: &mut Vec<Diagnostic>) {
             });
         if !f.why.span.is_empty() {
             d = d.with_secondary(f.why.span, f.why.what);
+        }
+        if f.after_discard {
+            d.severity = essl::diagnostic::Severity::Note;
+            d.message = if derivative {
+                format!(
+                    "`{name}` after a `discard` some pixels take, where derivatives are undefined"
+                )
+            } else {
+                format!("`{name}` takes its mipmap level from derivatives, undefined after a `discard` some pixels take")
+            };
+            d.help = Some(if derivative {
+                "take the derivative before the `discard`".to_string()
+            } else {
+                "do the lookup before the `discard`, or use `textureGrad` with derivatives taken before it (`textureLod` where the level is known)".to_string()
+            });
+            d = d.with_note("most GPUs keep a quad's discarded pixels running as helpers, which keeps the level right in practice; drivers that end them (SPIR-V's `OpKill`) do not");
         }
         out.push(d);
     }

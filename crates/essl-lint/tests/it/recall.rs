@@ -281,6 +281,14 @@ const HAZARDS: &[Hazard] = &[
     ),
     ("non-uniform-derivative", "texture", "  if (t.a > 0.5) { r = dFdx(v_x); }", W),
     ("non-uniform-derivative", "computed", "  if (dot(n, l) > 0.0) { r = fwidth(v_x); }", W),
+    // After a `discard` some pixels take: undefined by the specification, kept working by
+    // GPUs that run discarded pixels on as helpers.
+    (
+        "non-uniform-derivative",
+        "texture",
+        "  if (t.a < 0.5) discard;\n  r = texture(u_tex, v_uv * 2.0).r;",
+        N,
+    ),
     // Near misses of the algebraic shapes the guarded twins below rely on.
     // `c - k μ` with `c < |k|`: negative where μ is near 1.
     ("pow-negative-base", "computed", "  r = pow(1.5776 - 2.0 * dot(n, l), 1.5);", W),
@@ -559,6 +567,15 @@ const GUARDED: &[(&str, &str)] = &[
         "  if (v_x > 0.5) { r = textureLod(u_tex, v_uv, 0.0).r; }",
     ),
     ("non-uniform-derivative", "  if (u_a > 0.5) { r = texture(u_tex, v_uv).r; }"),
+    // A `discard` every pixel of the draw takes or none does; a lookup before the `discard`.
+    (
+        "non-uniform-derivative",
+        "  if (u_on) discard;\n  r = texture(u_tex, v_uv * 2.0).r;",
+    ),
+    (
+        "non-uniform-derivative",
+        "  vec4 c = texture(u_tex, v_uv * 2.0);\n  if (c.a < 0.5) discard;\n  r = c.r;",
+    ),
     // Written on the right of `&&`: wherever the condition, or a local set from it, is true.
     (
         "uninitialised-read",
