@@ -30,8 +30,12 @@ declare_rule! {
     /// vertex data holds the zero vector for a degenerate triangle's computed normal, or where the
     /// mesh lacks the buffer (read as 0).
     ///
-    /// Not reported: `normalize` of a uniform, a varying or a texel itself (`normalize(v_normal)`;
-    /// the runtime check validates uniform values), and of per-pixel sums and differences such as `normalize(u_lightPos - v_position)`
+    /// And `normalize` of a texel as such (`normalize(texture(gNormal, uv).rgb)`): the zero vector
+    /// for every black texel, the background a G-buffer is cleared to.
+    ///
+    /// Not reported: `normalize` of a uniform or a varying itself (`normalize(v_normal)`; the
+    /// runtime check validates uniform values), of a decoded texel (`t.rgb * 2.0 - 1.0`, the
+    /// zero vector only for the middle grey a normal map does not hold), and of per-pixel sums and differences such as `normalize(u_lightPos - v_position)`
     /// or a half vector `normalize(l + v)`: those vanish only at isolated points (the pixel that is at
     /// the light's position), not for a whole draw. A gradient with a constant component
     /// (`normalize(vec3(r - l, t - b, 1.0))`, a normal from a height map) is not zero.
@@ -58,7 +62,7 @@ declare_rule! {
     /// There is no mechanical fix: the degenerate case needs a choice (a fallback axis, or no light).
     ///
     /// ## What it does not flag
-    /// - `normalize` of a uniform, varying or texel as such, of a transformed uniform, of an
+    /// - `normalize` of a uniform or varying as such, of a transformed uniform, of an
     ///   attribute whose name does not say it holds a direction (`normalize(position)` of a globe's
     ///   vertex), of a constant non-zero vector, and of per-pixel sums and differences.
     /// - A cross product of vectors built perpendicular to each other (a camera frame), and of a vector
@@ -73,7 +77,8 @@ declare_rule! {
     /// - Code essl does not lower: an inactive input read by dead code is no zero vector.
     ///
     /// Severity: a cross product with a vector fixed for the draw is a warning (a light pointing
-    /// straight down is ordinary), as is a gradient (flat regions are in every picture);
+    /// straight down is ordinary), as is a gradient (flat regions are in every picture) and a
+    /// texel (black ones are);
     /// `normalize` of a per-draw difference is a note when one uniform alone reaches it, and of a
     /// direction attribute always.
     ///
@@ -109,6 +114,7 @@ fn check(cx: &Cx, out: &mut Vec<Diagnostic>) {
             };
             if v.n >= 2 && v.facts.has(Facts::NZ) {
                 out.extend(attribute_direction(cx, f, id, h, x));
+                out.extend(black_texel(cx, f, id, h, x));
                 continue;
             }
             if v.n < 2 || !v.may_be_zero() || v.facts.has(Facts::NZ) {
@@ -440,4 +446,45 @@ fn length_guarded(
             _ => an.same(f, id, h, x),
         }
     })
+}
+
+/// The finding for `normalize(x)` of a texel as such (`texture(gNormal, uv).rgb`,
+/// `texelFetch(uNormalBuffer, p, 0).xyz`), whose ordinary values reach the zero vector: every
+/// black texel, such as the background a G-buffer is cleared to.
+fn black_texel(
+    cx: &Cx,
+    f: &Function,
+    id: usize,
+    call: Handle<E>,
+    x: Handle<E>,
+) -> Option<Diagnostic> {
+    let v = cx.sound().num(id, x)?;
+    if !v.facts.has(Facts::EXT)
+        || !v.facts.any(Facts::TEXTURE)
+        || v.facts.any(Facts::INPUT.with(Facts::UNIFORM))
+    {
+        return None;
+    }
+    // Texels are in [0, 1] in the typical analysis: the zero vector is an end of the range.
+    let t = cx.typical().num(id, x)?;
+    if !t.comps().iter().all(|c| c.lo == 0.0) || !cx.origin(&[(id, x)]).texels {
+        return None;
+    }
+    let g = cx.guards(f, id, call);
+    if cx.nonzero(f, id, x, &g) || length_guarded(cx, f, id, x, &g) {
+        return None;
+    }
+    Some(
+        Diagnostic::rule_warning(
+            NormalizeZero::RULE.id,
+            "`normalize` of a texel, the zero vector wherever the texture is black",
+            cx.span(f, x),
+        )
+        .with_label(format!(
+            "{} is the zero vector for every black texel (a G-buffer's cleared background)",
+            cx.what(f, id, x)
+        ))
+        .with_note("normalize(v) divides by length(v): 0 / 0 for the zero vector")
+        .with_help("test the length first (`dot(v, v) > 1e-12`), or store normals encoded (`n * 0.5 + 0.5`)"),
+    )
 }

@@ -281,6 +281,8 @@ const HAZARDS: &[Hazard] = &[
     ),
     ("non-uniform-derivative", "texture", "  if (t.a > 0.5) { r = dFdx(v_x); }", W),
     ("non-uniform-derivative", "computed", "  if (dot(n, l) > 0.0) { r = fwidth(v_x); }", W),
+    // A texel as such: the zero vector for a black texel (a G-buffer's background).
+    ("normalize-zero", "texture", "  r = normalize(t.rgb).x;", W),
     // After a `discard` some pixels take: undefined by the specification, kept working by
     // GPUs that run discarded pixels on as helpers.
     (
@@ -567,6 +569,12 @@ const GUARDED: &[(&str, &str)] = &[
         "  if (v_x > 0.5) { r = textureLod(u_tex, v_uv, 0.0).r; }",
     ),
     ("non-uniform-derivative", "  if (u_a > 0.5) { r = texture(u_tex, v_uv).r; }"),
+    // A decoded texel, and a texel whose length is tested first.
+    ("normalize-zero", "  r = normalize(t.rgb * 2.0 - 1.0).x;"),
+    (
+        "normalize-zero",
+        "  r = dot(t.rgb, t.rgb) > 1e-12 ? normalize(t.rgb).x : 0.0;",
+    ),
     // A `discard` every pixel of the draw takes or none does; a lookup before the `discard`.
     (
         "non-uniform-derivative",
