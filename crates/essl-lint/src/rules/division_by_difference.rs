@@ -406,12 +406,7 @@ fn unlit_divisor(cx: &Cx, div: &Division, v: &crate::value::Num) -> Option<Diagn
 /// condition, `abs(d) > 1e-6 ? x / d : 0.0`); `None` where one does, or where `d` has no span.
 fn unguarded(cx: &Cx, div: &Division) -> Option<essl::source::Span> {
     let Division { f, id, h, d } = *div;
-    let g = cx.guards(f, id, h);
-    if cx.nonzero(f, id, d, &g)
-        || cx
-            .refined(f, id, d, &g)
-            .is_none_or(|v| !v.comps().iter().any(|c| c.contains(0.0)))
-    {
+    if cx.kept_from_zero(f, id, d, h) {
         return None;
     }
     let span = cx.span(f, d);

@@ -171,12 +171,7 @@ fn from_callers(
     rule: &Rule,
 ) -> Option<Diagnostic> {
     let found = caller_value(cx, f, id, x)?;
-    let g = cx.guards(f, id, call);
-    if cx.nonzero(f, id, x, &g)
-        || cx
-            .refined(f, id, x, &g)
-            .is_none_or(|v| !v.comps().iter().any(|c| c.contains(0.0)))
-    {
+    if cx.kept_from_zero(f, id, x, call) {
         return None;
     }
     let mut d = finding(cx, f, id, x, dom, rule, false, 0.0);

@@ -171,12 +171,7 @@ fn from_callers(
     exp: naga::Handle<naga::Expression>,
 ) -> Option<Diagnostic> {
     let found = caller_value(cx, f, id, base)?;
-    let g = cx.guards(f, id, call);
-    if cx.nonzero(f, id, base, &g)
-        || cx
-            .refined(f, id, base, &g)
-            .is_none_or(|v| !v.comps().iter().any(|c| c.contains(0.0)))
-    {
+    if cx.kept_from_zero(f, id, base, call) {
         return None;
     }
     let bspan = cx.span(f, base);

@@ -837,29 +837,31 @@ fn what_parameters_make_undefined_is_a_note() {
     assert!(failed.is_empty(), "{}", failed.join("\n"));
 }
 
+/// The notes of `rule` in the vertex shader `text`.
+fn vertex_notes(rule: &str, text: &str) -> Vec<String> {
+    let s = compile(
+        SourceFile::new("t.vert", text.to_string()),
+        Stage::Vertex,
+        &CompileOptions::default(),
+    );
+    assert!(s.ok() && s.naga.is_some(), "{text}\n{:#?}", s.diagnostics);
+    lint(&s, &LintOptions::default().notes(true))
+        .into_iter()
+        .filter(|d| d.code == rule && d.severity == N)
+        .map(|d| d.message)
+        .collect()
+}
+
 /// A vertex shader's division by its attributes as such: a note (a vertex's data may hold 0);
 /// guarded, and the `w` of a position, quiet.
 #[test]
 fn divisions_by_attributes_are_notes() {
-    let vs = |body: &str| {
-        format!(
+    let notes = |body: &str| {
+        let text = format!(
             "#version 300 es\nin vec4 a_pos; in float a_life; in float a_age; in vec4 a_weight;\n\
              out float v_t;\nvoid main() {{\n{body}\n  gl_Position = a_pos;\n}}\n"
-        )
-    };
-    let notes = |body: &str| -> Vec<String> {
-        let text = vs(body);
-        let s = compile(
-            SourceFile::new("t.vert", text.clone()),
-            Stage::Vertex,
-            &CompileOptions::default(),
         );
-        assert!(s.ok() && s.naga.is_some(), "{text}\n{:#?}", s.diagnostics);
-        lint(&s, &LintOptions::default().notes(true))
-            .into_iter()
-            .filter(|d| d.code == "division-by-difference" && d.severity == N)
-            .map(|d| d.message)
-            .collect()
+        vertex_notes("division-by-difference", &text)
     };
     for body in [
         "  v_t = a_age / a_life;",
@@ -867,43 +869,38 @@ fn divisions_by_attributes_are_notes() {
     ] {
         assert_eq!(notes(body).len(), 1, "{body}");
     }
-    // A normal attribute through a transform: the zero vector for a vertex that holds it.
-    let normalized = |body: &str| -> Vec<String> {
-        let text = format!(
-            "#version 300 es\nuniform mat3 u_nm;\nin vec3 a_normal; in vec3 a_position;\n\
-             out vec3 v_n;\nvoid main() {{\n{body}\n  gl_Position = vec4(a_position, 1.0);\n}}\n"
-        );
-        let s = compile(
-            SourceFile::new("t.vert", text.clone()),
-            Stage::Vertex,
-            &CompileOptions::default(),
-        );
-        assert!(s.ok() && s.naga.is_some(), "{text}\n{:#?}", s.diagnostics);
-        lint(&s, &LintOptions::default().notes(true))
-            .into_iter()
-            .filter(|d| d.code == "normalize-zero" && d.severity == N)
-            .map(|d| d.message)
-            .collect()
-    };
-    for body in [
-        "  v_n = normalize(u_nm * a_normal);",
-        "  v_n = normalize(a_normal) * 0.5 + 0.5;",
-    ] {
-        assert_eq!(normalized(body).len(), 1, "{body}");
-    }
-    for quiet in [
-        "  v_n = normalize(a_position);",
-        "  vec3 n = u_nm * a_normal;\n  v_n = dot(n, n) > 1e-12 ? normalize(n) : vec3(0.0, 0.0, 1.0);",
-        "  v_n = length(a_normal) > 0.0 ? normalize(a_normal) : vec3(0.0, 0.0, 1.0);",
-    ] {
-        assert!(normalized(quiet).is_empty(), "{quiet}");
-    }
     for body in [
         "  v_t = a_age / max(a_life, 1e-4);",
         "  v_t = a_pos.x / a_pos.w;",
         "  v_t = a_age / (a_life + 1.0);",
     ] {
         assert!(notes(body).is_empty(), "{body}: {:?}", notes(body));
+    }
+}
+
+/// A direction attribute through a transform: the zero vector for a vertex that holds it; a
+/// position, and a vector whose length is tested first, quiet.
+#[test]
+fn normalized_direction_attributes_are_notes() {
+    let notes = |body: &str| {
+        let text = format!(
+            "#version 300 es\nuniform mat3 u_nm;\nin vec3 a_normal; in vec3 a_position;\n\
+             out vec3 v_n;\nvoid main() {{\n{body}\n  gl_Position = vec4(a_position, 1.0);\n}}\n"
+        );
+        vertex_notes("normalize-zero", &text)
+    };
+    for body in [
+        "  v_n = normalize(u_nm * a_normal);",
+        "  v_n = normalize(a_normal) * 0.5 + 0.5;",
+    ] {
+        assert_eq!(notes(body).len(), 1, "{body}");
+    }
+    for quiet in [
+        "  v_n = normalize(a_position);",
+        "  vec3 n = u_nm * a_normal;\n  v_n = dot(n, n) > 1e-12 ? normalize(n) : vec3(0.0, 0.0, 1.0);",
+        "  v_n = length(a_normal) > 0.0 ? normalize(a_normal) : vec3(0.0, 0.0, 1.0);",
+    ] {
+        assert!(notes(quiet).is_empty(), "{quiet}");
     }
 }
 
