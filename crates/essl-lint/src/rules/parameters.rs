@@ -110,7 +110,7 @@ const NEVER_ZERO: &[&str] = &["ior", "shutter", "base"];
 /// not such a value.
 pub(super) fn caller_value(cx: &Cx, f: &Function, id: usize, d: Handle<E>) -> Option<CallerValue> {
     let v = cx.sound().num(id, d)?;
-    // A uniform may reach it only as a `mix` weight, which [`leaves`] leaves out.
+    // A uniform may reach it only as a `mix` weight, which [`leaves`] does not follow.
     if !v.facts.any(Facts::INPUT) || v.facts.any(Facts::TEXTURE) {
         return None;
     }
@@ -206,12 +206,10 @@ fn leaves(cx: &Cx, f: &Function, id: usize, h: Handle<E>, depth: u32, out: &mut 
     };
     match f.expressions[h] {
         E::Literal(_) | E::Constant(_) | E::ZeroValue(_) => true,
-        // A parameter every call passes an external value as such.
+        // A parameter every call passes an input as such.
         E::FunctionArgument(i) => {
             out.leaves.push(Leaf::Parameter(i));
-            cx.sound()
-                .num(id, h)
-                .is_some_and(|v| v.facts.has(Facts::EXT))
+            as_such(h)
         }
         E::Load { pointer } if vertex_input(cx, f, pointer).is_some() => {
             out.leaves

@@ -725,6 +725,13 @@ const PARAMETERS: &[(&str, &str, &str, Option<&str>)] = &[
         "  r = m(v_x, v_uv.x * v_x, v_uv.y + 2.0);",
         None,
     ),
+    // One end an input, the other a uniform: a per-pixel difference, 0 on a line of pixels.
+    (
+        "division-by-difference",
+        "float m(float v, float a, float b) { return (v - a) / (b - a); }",
+        "  r = m(v_x, v_uv.x, u_a);",
+        None,
+    ),
     (
         "division-by-difference",
         "vec2 px(vec2 texResolution) { return 1.0 / texResolution; }",
