@@ -106,7 +106,7 @@ declare_rule! {
     ///   `/ epsilon`.
     pub(crate) struct DivisionByDifference {
         id: "division-by-difference",
-        summary: "division by a difference of uniforms, a texel or a difference of texels at an end of their range, or a shading term of clamped cosines, that can be zero",
+        summary: "division by a difference of uniforms, a texel or a difference of texels at an end of their range, a shading term of clamped cosines, or what callers or vertex data pass, that can be zero",
         default_level: Level::Warn,
         check: check,
     }

@@ -127,8 +127,6 @@ fn check(cx: &Cx, out: &mut Vec<Diagnostic>) {
     }
 }
 
-/// Whether a guard keeps `y` and `x` from being both 0: `abs(y) + abs(x)` (either order)
-/// compared so that it is positive where the `atan` runs.
 /// The note for `y` and `x` built from a function's parameters alone, where its callers pass
 /// inputs as such, or from a vertex shader's attributes ([`caller_value`]): `atan(y, x)` of a
 /// vector a caller may pass as the zero vector.
@@ -140,17 +138,7 @@ fn from_callers(
     y: Handle<E>,
     x: Handle<E>,
 ) -> Option<Diagnostic> {
-    let (fy, fx) = (caller_value(cx, f, id, y)?, caller_value(cx, f, id, x)?);
-    if fy.attribute != fx.attribute {
-        return None;
-    }
-    let mut names = fy.names.clone();
-    names.extend(fx.names.iter().filter(|n| !fy.names.contains(n)).cloned());
-    let both = super::parameters::CallerValue {
-        names,
-        difference: false,
-        attribute: fy.attribute,
-    };
+    let both = caller_value(cx, f, id, y)?.and(caller_value(cx, f, id, x)?)?;
     Some(
         Diagnostic::rule_note(
             DomainAtan2::RULE.id,
@@ -172,6 +160,8 @@ fn from_callers(
     )
 }
 
+/// Whether a guard keeps `y` and `x` from being both 0: `abs(y) + abs(x)` (either order)
+/// compared so that it is positive where the `atan` runs.
 fn apart(cx: &Cx, f: &Function, id: usize, y: Handle<E>, x: Handle<E>, g: &Guards) -> bool {
     let an = cx.sound();
     let abs_of = |h: Handle<E>| match f.expressions[h] {

@@ -35,9 +35,10 @@ declare_rule! {
     ///
     /// Not reported: `normalize` of a uniform or a varying itself (`normalize(v_normal)`; the
     /// runtime check validates uniform values), of a decoded texel (`t.rgb * 2.0 - 1.0`, the
-    /// zero vector only for the middle grey a normal map does not hold), and of per-pixel sums and differences such as `normalize(u_lightPos - v_position)`
-    /// or a half vector `normalize(l + v)`: those vanish only at isolated points (the pixel that is at
-    /// the light's position), not for a whole draw. A gradient with a constant component
+    /// zero vector only for the middle grey a normal map does not hold), and of per-pixel sums
+    /// and differences such as `normalize(u_lightPos - v_position)` or a half vector
+    /// `normalize(l + v)`: those vanish only at isolated points (the pixel that is at the
+    /// light's position), not for a whole draw. A gradient with a constant component
     /// (`normalize(vec3(r - l, t - b, 1.0))`, a normal from a height map) is not zero.
     ///
     /// ## Why is this bad?
@@ -78,9 +79,8 @@ declare_rule! {
     ///
     /// Severity: a cross product with a vector fixed for the draw is a warning (a light pointing
     /// straight down is ordinary), as is a gradient (flat regions are in every picture) and a
-    /// texel (black ones are);
-    /// `normalize` of a per-draw difference is a note when one uniform alone reaches it, and of a
-    /// direction attribute always.
+    /// texel (black ones are); `normalize` of a per-draw difference is a note when one uniform
+    /// alone reaches it, and of a direction attribute always.
     ///
     /// ## References
     /// - GLSL ES 3.00 specification, §8.4 Geometric Functions (normalize: "a vector in the same
@@ -88,7 +88,7 @@ declare_rule! {
     /// - Article 003 (A-Frame projected-texture spot lights): `left = normalize(cross(up, direction))`.
     pub(crate) struct NormalizeZero {
         id: "normalize-zero",
-        summary: "`normalize(v)` of a cross product, per-draw difference or image gradient that can be the zero vector",
+        summary: "`normalize(v)` of a cross product, per-draw difference, image gradient, texel or direction attribute that can be the zero vector",
         default_level: Level::Warn,
         check: check,
     }

@@ -65,6 +65,21 @@ impl CallerValue {
         quoted.join(", ")
     }
 
+    /// Both values together (`y` and `x` of an `atan`): their names once each; `None` where
+    /// one is built from parameters and the other from attributes.
+    pub fn and(mut self, other: CallerValue) -> Option<CallerValue> {
+        if self.attribute != other.attribute {
+            return None;
+        }
+        for n in other.names {
+            if !self.names.contains(&n) {
+                self.names.push(n);
+            }
+        }
+        self.difference = false;
+        Some(self)
+    }
+
     /// How a lone name comes to be 0: "a caller may pass as 0", "a vertex may hold as 0".
     pub fn zero_by(&self) -> &'static str {
         if self.attribute {
