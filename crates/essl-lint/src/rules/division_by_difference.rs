@@ -406,7 +406,7 @@ fn unlit_divisor(cx: &Cx, div: &Division, v: &crate::value::Num) -> Option<Diagn
 /// condition, `abs(d) > 1e-6 ? x / d : 0.0`); `None` where one does, or where `d` has no span.
 fn unguarded(cx: &Cx, div: &Division) -> Option<essl::source::Span> {
     let Division { f, id, h, d } = *div;
-    if cx.kept_from_zero(f, id, d, h) {
+    if cx.kept_from_zero(f, id, d, &cx.guards(f, id, h)) {
         return None;
     }
     let span = cx.span(f, d);

@@ -171,7 +171,7 @@ fn from_callers(
     rule: &Rule,
 ) -> Option<Diagnostic> {
     let found = caller_value(cx, f, id, x)?;
-    if cx.kept_from_zero(f, id, x, call) {
+    if cx.kept_from_zero(f, id, x, &cx.guards(f, id, call)) {
         return None;
     }
     let mut d = finding(cx, f, id, x, dom, rule, false, 0.0);

@@ -93,12 +93,7 @@ fn check(cx: &Cx, out: &mut Vec<Diagnostic>) {
         if !zero(y) || !zero(x) {
             // The analysis takes an input as such to be non-zero: what callers pass is asked
             // about without that.
-            let may_be_zero = |v: Handle<E>| {
-                cx.refined(f, id, v, &g)
-                    .is_some_and(|n| n.comps().iter().any(|c| c.contains(0.0)))
-                    && !cx.nonzero(f, id, v, &g)
-            };
-            if may_be_zero(y) && may_be_zero(x) {
+            if !cx.kept_from_zero(f, id, y, &g) && !cx.kept_from_zero(f, id, x, &g) {
                 out.extend(from_callers(cx, f, id, span, y, x));
             }
             continue;

@@ -314,13 +314,12 @@ impl Cx<'_> {
         non_negative && compared(right, left)
     }
 
-    /// Whether the conditions around `at` keep `x` from 0: they say it is not 0, or bound it
-    /// away from 0 (`if (x > 1e-6)`, `abs(d) > 1e-6 ? y / d : 0.0`).
-    pub fn kept_from_zero(&self, f: &Function, id: usize, x: Handle<E>, at: Handle<E>) -> bool {
-        let g = self.guards(f, id, at);
-        self.nonzero(f, id, x, &g)
+    /// Whether guards `g` keep `x` from 0: they say it is not 0, or bound it away from 0
+    /// (`if (x > 1e-6)`, `abs(d) > 1e-6 ? y / d : 0.0`).
+    pub fn kept_from_zero(&self, f: &Function, id: usize, x: Handle<E>, g: &Guards) -> bool {
+        self.nonzero(f, id, x, g)
             || self
-                .refined(f, id, x, &g)
+                .refined(f, id, x, g)
                 .is_none_or(|v| !v.comps().iter().any(|c| c.contains(0.0)))
     }
 

@@ -171,7 +171,7 @@ fn from_callers(
     exp: naga::Handle<naga::Expression>,
 ) -> Option<Diagnostic> {
     let found = caller_value(cx, f, id, base)?;
-    if cx.kept_from_zero(f, id, base, call) {
+    if cx.kept_from_zero(f, id, base, &cx.guards(f, id, call)) {
         return None;
     }
     let bspan = cx.span(f, base);
