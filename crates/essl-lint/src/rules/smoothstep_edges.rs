@@ -132,12 +132,14 @@ pub(super) fn constant_edges(cx: &Cx, c: &Call) -> Option<Vec<(f64, f64)>> {
     )
 }
 
-/// Whether the edges are in a fixed reversed order: constants with edge0 > edge1 in every
-/// component, or edges the shader itself puts in that order (`smoothstep(r + w, r - w, d)`
-/// with a constant `w > 0`): a deliberate mirror, `smoothstep-reversed-constant`'s business.
+/// Whether the edges are in a fixed reversed order: constants with edge0 > edge1 in some
+/// component and equal in none (a per-channel mirror: lygia's `smoothstep(vec3(3, 0, 3),
+/// vec3(2, 2, 4), f)`), or edges the shader itself puts in that order (`smoothstep(r + w,
+/// r - w, d)` with a constant `w > 0`): a deliberate mirror, `smoothstep-reversed-constant`'s
+/// business.
 pub(super) fn reversed(cx: &Cx, c: &Call) -> bool {
     match constant_edges(cx, c) {
-        Some(pairs) => pairs.iter().all(|(a, b)| a > b),
+        Some(pairs) => pairs.iter().all(|(a, b)| a != b) && pairs.iter().any(|(a, b)| a > b),
         None => cx.sym(c.id, c.f).diff_lower(Some(c.e0), Some(c.e1)) > 0.0,
     }
 }
@@ -234,7 +236,16 @@ fn equal_constants(c: &Call, pairs: &[(f64, f64)]) -> Diagnostic {
             fmt_num(pairs[0].1)
         )
     } else {
-        "edge0 >= edge1 in some component".to_string()
+        let (i, (a, _)) = pairs
+            .iter()
+            .enumerate()
+            .find(|(_, (a, b))| a == b)
+            .unwrap_or((0, &pairs[0]));
+        format!(
+            "edge0 = edge1 = {} in component `{}`",
+            fmt_num(*a),
+            ["x", "y", "z", "w"][i.min(3)]
+        )
     })
     .with_note("GLSL ES 3.00 §8.3: smoothstep is undefined if edge0 >= edge1")
     .with_help("use `step(edge, x)` for a hard edge, or give the edges a width")

@@ -10,7 +10,8 @@ use crate::Level;
 declare_rule! {
     /// ## What it does
     /// Reports `smoothstep(edge0, edge1, x)` whose edges are in a fixed reversed order: constants
-    /// with `edge0 > edge1` (`smoothstep(0.1, 0.0, d)`), or edges the shader itself puts in that
+    /// with `edge0 > edge1` (`smoothstep(0.1, 0.0, d)`; in some components of a vector and equal
+    /// in none: a per-channel mirror), or edges the shader itself puts in that
     /// order (`smoothstep(r + w, r - w, d)` with a constant `w > 0`). It is a note by default:
     /// `essl lint --show-notes` prints it, an editor shows it.
     ///
@@ -55,10 +56,32 @@ fn check(cx: &Cx, out: &mut Vec<Diagnostic>) {
             continue;
         }
         let (s0, s1, sx) = (cx.span(c.f, c.e0), cx.span(c.f, c.e1), cx.span(c.f, c.x));
-        let label = match constant_edges(cx, &c).as_deref() {
+        let pairs = constant_edges(cx, &c);
+        let label = match pairs.as_deref() {
             Some([(a, b)]) => format!("edge0 = {}, edge1 = {}", fmt_num(*a), fmt_num(*b)),
             _ => "edge0 > edge1".to_string(),
         };
+        // Some components reversed, others in order: mirroring the call would reverse those.
+        let mixed: Vec<&str> = pairs
+            .iter()
+            .flatten()
+            .enumerate()
+            .filter(|(_, (a, b))| a > b)
+            .map(|(i, _)| ["x", "y", "z", "w"][i.min(3)])
+            .collect();
+        if pairs.as_ref().is_some_and(|p| mixed.len() < p.len()) {
+            out.push(
+                Diagnostic::rule_warning(
+                    SmoothstepReversedConstant::RULE.id,
+                    "`smoothstep` edges are in reversed order in some components: undefined by the specification, though drivers compute the mirrored curve there",
+                    c.span,
+                )
+                .with_label(format!("edge0 > edge1 in `{}`", mixed.join("`, `")))
+                .with_note("GLSL ES 3.00 §8.3: smoothstep is undefined if edge0 >= edge1")
+                .with_help("put each component's edges in order and mirror those components with `1.0 - smoothstep(…)`"),
+            );
+            continue;
+        }
         let mut d = Diagnostic::rule_warning(
             SmoothstepReversedConstant::RULE.id,
             "`smoothstep` edges are in reversed order (edge0 > edge1): undefined by the specification, though drivers compute the mirrored curve",

@@ -347,6 +347,24 @@ fn smoothstep_with_equal_constant_edges() {
         "  r = smoothstep(1.0, 0.0, v_x);",
         &["smoothstep(1.0, 0.0, v_x)"],
     );
+    // A vector reversed in some components and equal in none: a per-channel mirror.
+    let mixed = "  r = smoothstep(vec3(3.0, 0.0, 3.0), vec3(2.0, 2.0, 4.0), vec3(v_x)).x;";
+    clean(rule, "highp", "", mixed);
+    notes(
+        "smoothstep-reversed-constant",
+        "highp",
+        "",
+        mixed,
+        &["smoothstep(vec3(3.0, 0.0, 3.0), vec3(2.0, 2.0, 4.0), vec3(v_x))"],
+    );
+    // Equal in one component: that component divides by zero.
+    reports(
+        rule,
+        "highp",
+        "",
+        "  r = smoothstep(vec2(1.0, 2.0), vec2(1.0, 3.0), vec2(v_x)).y;",
+        &["smoothstep(vec2(1.0, 2.0), vec2(1.0, 3.0), vec2(v_x))"],
+    );
 }
 
 #[test]
