@@ -11,6 +11,7 @@ use essl::source::SourceFile;
 use essl::{Shader, Stage};
 
 use crate::assembly::Assembly;
+use crate::chunk::{chunk_prelude, FREE_IN_A_CHUNK};
 use crate::codes::CheckCode;
 use crate::extract::{self, Embedded, Piece};
 use crate::find::{Found, Host, Input};
@@ -445,84 +446,12 @@ pub(crate) fn from_pieces(file: &Arc<SourceFile>, pieces: &[Piece]) -> Assembly 
     a
 }
 
-/// A chunk with what a shader that includes it has before it, where it does not say: the
-/// `#version` of the target (unless the chunk is written in GLSL ES 1.00), a float precision
-/// in a fragment shader, and the macros its module defines for it.
-fn chunk_prelude(
-    source: Assembly,
-    stage: Stage,
-    settings: &Settings,
-    defines: &[(String, String)],
-) -> Assembly {
-    if source.text().trim_start().starts_with("#version") {
-        return source;
-    }
-    let mut prelude = String::new();
-    if settings.compile.target == essl::Target::WebGl2 && !es100_idioms(source.text()) {
-        prelude.push_str("#version 300 es\n");
-    }
-    if stage == Stage::Fragment {
-        prelude.push_str("precision highp float;\n");
-    }
-    for (name, value) in defines {
-        prelude.push_str(&format!("#define {name} {value}\n"));
-    }
-    let Some((f, at)) = source.map_span(essl::source::Span::empty(0)) else {
-        return source;
-    };
-    let mut a = Assembly::default();
-    let own = a.file_index(&source.files()[f as usize]);
-    a.generated(&prelude, own, at.start as usize);
-    a.extend_from(&source, 0..source.text().len());
-    a
-}
-
-/// Whether a chunk is written in GLSL ES 1.00: it uses `attribute`, `varying`, `texture2D`
-/// or `gl_FragColor`, and nothing only GLSL ES 3.00 has (`in`/`out` declarations, `layout`,
-/// `texture(`).
-fn es100_idioms(text: &str) -> bool {
-    let word = |w: &str| {
-        text.match_indices(w).any(|(i, _)| {
-            let before = text[..i].chars().next_back();
-            let after = text[i + w.len()..].chars().next();
-            !before.is_some_and(|c| c.is_alphanumeric() || c == '_')
-                && !after.is_some_and(|c| c.is_alphanumeric() || c == '_')
-        })
-    };
-    let es100 = [
-        "attribute",
-        "varying",
-        "texture2D",
-        "textureCube",
-        "gl_FragColor",
-    ];
-    let declares_300 = text.lines().any(|l| {
-        let l = l.trim_start();
-        ["in ", "out ", "flat ", "layout", "centroid "]
-            .iter()
-            .any(|p| l.starts_with(p))
-    });
-    es100.iter().any(|w| word(w))
-        && !declares_300
-        && !text.contains("texture(")
-        && !text.contains("texelFetch")
-}
-
 /// Whether a diagnostic is the author's to see: a lint finding inside code a library adds
 /// (a luma.gl module, three.js's prelude) is the library's, not reported; an error there is,
 /// since the program does not compile.
 fn shown(a: &Assembly, d: &Diagnostic) -> bool {
     d.is_error() || essl_lint::rule(d.code).is_none() || !a.is_generated(d.span.start)
 }
-
-/// The codes a chunk does not report: what the shader that includes it supplies (the names it
-/// uses and declares elsewhere, `main`).
-const FREE_IN_A_CHUNK: [&str; 4] = [
-    "missing-main",
-    "undeclared-identifier",
-    "undeclared-function",
-    "unknown-type",
-];
 
 /// `source` with its `#include`s in place, where the settings follow them.
 fn includes(

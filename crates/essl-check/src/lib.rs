@@ -24,6 +24,7 @@
 
 mod assembly;
 mod check;
+mod chunk;
 mod codes;
 pub mod config;
 pub mod extract;
