@@ -596,6 +596,25 @@ pub(crate) fn lint(checked: &mut CheckedShader, settings: &Settings, lints: bool
     let mut found: Vec<Diagnostic> = shader.diagnostics[before..].to_vec();
     if shader.ok() {
         found.extend(essl_lint::lint(shader, &settings.rules));
+        if settings.variants > 0 {
+            let assembly = &checked.assembly;
+            // The flags of the author's text: a library's own (three.js's chunks) are its
+            // business.
+            let flags: Vec<_> = essl_lint::variants::flags(shader.file.text(), &settings.compile)
+                .into_iter()
+                .filter(|v| !assembly.is_generated(v.directive.start))
+                .collect();
+            let more = essl_lint::variants::lint(
+                shader,
+                &settings.compile,
+                &settings.rules,
+                &found,
+                &flags,
+                settings.variants,
+            );
+            found.extend(more.into_iter().map(|f| f.diagnostic));
+            essl::diagnostic::sort(&mut found);
+        }
     }
     if found.is_empty() {
         return;

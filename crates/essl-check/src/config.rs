@@ -12,6 +12,9 @@
 //! # A library whose way of assembling shaders to follow: "luma" (luma.gl, deck.gl) or
 //! # "three" (three.js materials).
 //! preset = "luma"
+//! # How many `#ifdef` configurations besides the one the defines select the lints also
+//! # check (each flag's code, and all flags together): 16 by default, 0 for none.
+//! variants = 16
 //! # Files that are chunks — code to put into shaders, checked as a library (no `main`, names
 //! # free for the including shader to declare) — as globs relative to this file's folder.
 //! chunks = ["shaders/chunks/**"]
@@ -115,6 +118,7 @@ struct ConfigFile {
     #[serde(default)]
     chunks: Vec<String>,
     preset: Option<String>,
+    variants: Option<usize>,
     #[serde(default)]
     stages: StagesFile,
 }
@@ -153,6 +157,9 @@ pub struct Config {
     pub chunk_patterns: Vec<String>,
     /// `preset`: the library whose way of assembling shaders to follow.
     pub preset: Option<crate::preset::Preset>,
+    /// `variants`: how many `#ifdef` configurations the lints check besides the one the
+    /// defines select (`None`: not set, [`essl_lint::variants::DEFAULT`]).
+    pub variants: Option<usize>,
     exclude: Option<GlobSet>,
     stages: [Option<GlobSet>; 2],
     chunks: Option<GlobSet>,
@@ -238,6 +245,7 @@ impl Config {
             stage_patterns: [file.stages.vertex, file.stages.fragment],
             chunk_patterns: file.chunks,
             preset,
+            variants: file.variants,
             exclude,
             stages,
             chunks,

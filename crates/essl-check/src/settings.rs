@@ -34,6 +34,8 @@ pub struct Overrides {
     pub stage: Option<Stage>,
     /// The preset, instead of essl.toml's.
     pub preset: Option<crate::preset::Preset>,
+    /// How many `#ifdef` configurations the lints check, instead of essl.toml's `variants`.
+    pub variants: Option<usize>,
 }
 
 impl Overrides {
@@ -61,6 +63,9 @@ pub struct Settings {
     pub include: Option<Vec<PathBuf>>,
     /// The library whose way of assembling shaders a check follows.
     pub preset: Option<crate::preset::Preset>,
+    /// How many `#ifdef` configurations besides the one the defines select the lints check
+    /// ([`essl_lint::variants`]; 0: none).
+    pub variants: usize,
 }
 
 impl Settings {
@@ -90,6 +95,10 @@ impl Settings {
         let include = (overrides.includes || !dirs.is_empty()).then_some(dirs);
         Settings {
             preset: overrides.preset.or(config.preset),
+            variants: overrides
+                .variants
+                .or(config.variants)
+                .unwrap_or(essl_lint::variants::DEFAULT),
             deny_warnings: overrides.deny_warnings || config.deny_warnings,
             config,
             compile,

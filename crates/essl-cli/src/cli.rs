@@ -340,6 +340,13 @@ struct LintArgs {
     /// the prelude, `#include <chunk>`). Overrides essl.toml's `preset`.
     #[arg(long, value_enum, value_name = "LIBRARY")]
     preset: Option<PresetArg>,
+
+    /// How many `#ifdef` configurations besides the one the defines select the lints also
+    /// check — the code of each flag such as `USE_FOG`, then every flag together — reporting
+    /// what they find there with the macros named (16 by default; 0: none). Overrides
+    /// essl.toml's `variants`.
+    #[arg(long, value_name = "N")]
+    variants: Option<usize>,
 }
 
 #[derive(Clone, Copy, Debug, ValueEnum)]
@@ -485,6 +492,7 @@ fn lint(args: LintArgs, matches: &clap::ArgMatches) -> i32 {
             PresetArg::Luma => essl_check::Preset::Luma,
             PresetArg::Three => essl_check::Preset::Three,
         }),
+        variants: args.variants,
         ..essl_check::Overrides::default()
     };
     if let Err(e) = rule_levels(matches, &mut overrides) {

@@ -58,6 +58,8 @@ pub fn describe(config: &Config) -> String {
         .map(|p| p.display().to_string())
         .collect();
     let _ = writeln!(out, "include = {}", list(&include));
+    let variants = config.variants.unwrap_or(essl_lint::variants::DEFAULT);
+    let _ = writeln!(out, "variants = {variants}");
     out.push_str("\n[defines]\n");
     for (name, value) in &config.defines {
         let _ = writeln!(out, "{name} = {value:?}");

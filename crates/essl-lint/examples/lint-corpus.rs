@@ -3,8 +3,10 @@
 //! line, trimmed), then a summary line (`"kind": "summary"`: shaders, compiled, findings per rule
 //! and severity). Notes are included: the corpus counts every level.
 //!
-//! `cargo run --release -p essl-lint --example lint-corpus -- CORPUS_DIR`
-//! (`CORPUS_DIR/manifest.jsonl`, as `scripts/lint-corpus/extract.py` writes it).
+//! `cargo run --release -p essl-lint --example lint-corpus -- CORPUS_DIR [VARIANTS]`
+//! (`CORPUS_DIR/manifest.jsonl`, as `scripts/lint-corpus/extract.py` writes it); `VARIANTS`:
+//! how many `#ifdef` configurations of each shader to lint besides the one compiled
+//! (`essl_lint::variants`; 0 by default), whose findings carry `"variant"`, the macros defined.
 
 use std::collections::BTreeMap;
 
@@ -18,6 +20,9 @@ fn main() {
         .unwrap_or_else(|| "../lint-corpus".to_string());
     let manifest = std::fs::read_to_string(format!("{dir}/manifest.jsonl"))
         .unwrap_or_else(|e| panic!("{dir}/manifest.jsonl: {e}"));
+    let variants: usize = std::env::args()
+        .nth(2)
+        .map_or(0, |n| n.parse().expect("VARIANTS: a number"));
     let options = essl_lint::LintOptions::new().notes(true);
     let (mut shaders, mut compiled) = (0, 0);
     let mut per_rule: BTreeMap<String, usize> = BTreeMap::new();
@@ -44,7 +49,26 @@ fn main() {
         compiled += 1;
         let repo = entry["repo"].as_str().unwrap_or_default().to_string();
         *repos_compiled.entry(repo.clone()).or_default() += 1;
-        for d in essl_lint::lint(&shader, &options) {
+        let compile_options = CompileOptions::default();
+        let mut found: Vec<(essl::diagnostic::Diagnostic, Value)> =
+            essl_lint::lint(&shader, &options)
+                .into_iter()
+                .map(|d| (d, Value::Null))
+                .collect();
+        if variants > 0 {
+            let base: Vec<_> = found.iter().map(|(d, _)| d.clone()).collect();
+            let flags = essl_lint::variants::flags(&text, &compile_options);
+            let more = essl_lint::variants::lint(
+                &shader,
+                &compile_options,
+                &options,
+                &base,
+                &flags,
+                variants,
+            );
+            found.extend(more.into_iter().map(|f| (f.diagnostic, json!(f.defines))));
+        }
+        for (d, variant) in found {
             let lc = shader.file.line_col(d.span.start);
             let source_line = text.lines().nth(lc.line as usize - 1).unwrap_or("").trim();
             *per_rule
@@ -64,6 +88,7 @@ fn main() {
                     "message": d.message,
                     "label": d.label,
                     "text": source_line,
+                    "variant": variant,
                 })
             );
         }

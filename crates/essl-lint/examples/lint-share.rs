@@ -1,4 +1,5 @@
-//! Compiles every `300 es` shader of the dEQP corpus, and lints it with `--lint`: what
+//! Compiles every `300 es` shader of the dEQP corpus, and lints it with `--lint` (its `#ifdef`
+//! configurations too, as a check does by default: `essl_lint::variants`): what
 //! `scripts/bench-lint-share.sh` runs twice to measure the lints' share of the work.
 //! `cargo run --release -p essl-lint --example lint-share -- [--lint] [CORPORA_DIR]`.
 
@@ -38,8 +39,20 @@ fn main() {
                 &CompileOptions::default(),
             );
             compiled += usize::from(shader.naga.is_some());
-            if lint {
-                findings += essl_lint::lint(&shader, &options).len();
+            if lint && shader.naga.is_some() {
+                let found = essl_lint::lint(&shader, &options);
+                let compile_options = CompileOptions::default();
+                let flags = essl_lint::variants::flags(src, &compile_options);
+                findings += found.len()
+                    + essl_lint::variants::lint(
+                        &shader,
+                        &compile_options,
+                        &options,
+                        &found,
+                        &flags,
+                        essl_lint::variants::DEFAULT,
+                    )
+                    .len();
             }
         }
     }

@@ -44,6 +44,7 @@ mod suppress;
 mod symbolic;
 mod uniformity;
 mod value;
+pub mod variants;
 
 use essl::diagnostic::{self, Diagnostic, Severity};
 use essl::Shader;

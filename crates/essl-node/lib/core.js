@@ -8,7 +8,7 @@ const SCRIPT = /\.(m?[jt]sx?|c[jt]s)$/;
 // A script is read only when it may hold a shader: a `glsl` tag or comment (in any case), or
 // `#version`; under a preset, every script (three.js's ShaderMaterial shaders carry neither).
 const MAY_HOLD = /glsl|#version/i;
-const CHECK_KEYS = ['target', 'defines', 'includeDirs', 'preset', 'config', 'rules', 'lints', 'denyWarnings'];
+const CHECK_KEYS = ['target', 'defines', 'includeDirs', 'preset', 'config', 'rules', 'lints', 'denyWarnings', 'variants'];
 
 const PLUGIN_KEYS = new Set([...CHECK_KEYS, 'include', 'exclude', 'failOnWarnings', 'minify', 'load', 'cache']);
 

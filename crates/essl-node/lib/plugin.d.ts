@@ -2,7 +2,7 @@ import type {CheckOptions} from '../index.js';
 
 /** Options of the Vite/Rollup plugin and the webpack loader. */
 export interface EsslPluginOptions
-  extends Pick<CheckOptions, 'target' | 'defines' | 'includeDirs' | 'preset' | 'config' | 'rules' | 'lints' | 'denyWarnings'> {
+  extends Pick<CheckOptions, 'target' | 'defines' | 'includeDirs' | 'preset' | 'config' | 'rules' | 'lints' | 'denyWarnings' | 'variants'> {
   /** Files to check (substrings or RegExps); default every shader file and script. */
   include?: string | RegExp | (string | RegExp)[];
   /** Files to leave (default: those under node_modules). */

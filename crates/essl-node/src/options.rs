@@ -121,7 +121,7 @@ fn parse(json: &str, default_name: &str) -> Result<Options, OptionError> {
             )))
         }
     };
-    const KEYS: [&str; 12] = [
+    const KEYS: [&str; 13] = [
         "filename",
         "stage",
         "target",
@@ -134,6 +134,7 @@ fn parse(json: &str, default_name: &str) -> Result<Options, OptionError> {
         "lints",
         "link",
         "denyWarnings",
+        "variants",
     ];
     if let Some(k) = o.keys().find(|k| !KEYS.contains(&k.as_str())) {
         return Err(OptionError(format!(
@@ -194,6 +195,14 @@ fn parse(json: &str, default_name: &str) -> Result<Options, OptionError> {
         }
         Some(v) => return Err(bad("includeDirs", "an array of folders", v)),
     }
+    overrides.variants = match o.get("variants") {
+        None | Some(Value::Null) => None,
+        Some(Value::Bool(on)) => Some(if *on { essl_lint::variants::DEFAULT } else { 0 }),
+        Some(Value::Number(n)) if n.as_u64().is_some() => {
+            Some(n.as_u64().map_or(0, |n| n.min(u32::MAX as u64) as usize))
+        }
+        Some(v) => return Err(bad("variants", "a boolean or a whole number", v)),
+    };
     overrides.includes = boolean(o, "includes", true)?;
     overrides.deny_warnings = boolean(o, "denyWarnings", false)?;
     match o.get("rules") {

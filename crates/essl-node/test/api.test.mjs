@@ -110,6 +110,20 @@ test('rules, lints, denyWarnings and a config file', () => {
   }
 });
 
+test('variants: the lints check the code an #ifdef flag compiles in', () => {
+  const src = FS.replace('uniform vec4 u_color;', 'uniform vec4 u_color;\nuniform float u_fogStart, u_fogEnd;')
+    .replace('o = u_color;', 'o = u_color;\n#ifdef USE_FOG\n  o *= (u_fogEnd - gl_FragCoord.z) / (u_fogEnd - u_fogStart);\n#endif\n');
+  const found = check(src, {stage: 'fragment'}).diagnostics.filter(d => d.severity === 'warning');
+  assert.equal(found.length, 1, JSON.stringify(found));
+  assert.equal(found[0].range.start.line, 8);
+  assert.ok(found[0].notes.some(n => n.includes('`USE_FOG`')), found[0].notes.join('\n'));
+  assert.equal(check(src, {stage: 'fragment', variants: 0}).warnings, 0);
+  assert.equal(check(src, {stage: 'fragment', variants: false}).warnings, 0);
+  assert.equal(check(src, {stage: 'fragment', variants: true}).warnings, 1);
+  assert.equal(check(src, {stage: 'fragment', defines: {USE_FOG: 1}, variants: 0}).warnings, 1);
+  assert.throws(() => check(src, {stage: 'fragment', variants: -1}), {name: 'TypeError', message: /options.variants must be a boolean or a whole number/});
+});
+
 test('a JS module: its shaders found, ${} constants put in, positions in the module', () => {
   const js = `const N = '4';\nexport const fs = /* glsl */\`${FS.replace('o = u_color;', 'o = u_color * float(${N}) + missing;')}\`;\n`;
   const r = check(js, {filename: 'module.js'});

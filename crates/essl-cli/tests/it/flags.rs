@@ -170,10 +170,38 @@ fn essl_toml_is_found_upward_and_shown_by_essl_config() {
     assert!(shown.contains("\n[defines]\nBROKEN = \"1\"\n"), "{shown}");
     assert!(shown.contains("fragment = [\"*.fs.glsl\"]"), "{shown}");
     assert!(shown.contains("pow-negative-base = \"allow\""), "{shown}");
+    assert!(shown.contains("\nvariants = 16\n"), "{shown}");
     std::fs::write(dir.path().join("essl.toml"), "targt = \"webgl2\"\n").unwrap();
     let o = essl(&["lint", "shaders"], dir.path());
     assert_eq!(o.status.code(), Some(2));
     assert!(err(&o).contains("unknown field `targt`"), "{}", err(&o));
+}
+
+#[test]
+fn variants_lint_the_code_a_flag_compiles_in() {
+    let dir = tempfile::tempdir().unwrap();
+    let text = "#version 300 es\nprecision highp float;\nuniform float u_near, u_far;\nout vec4 c;\n\
+                void main() {\n  c = vec4(1.0);\n#ifdef LINEAR_DEPTH\n  c.x /= u_far - u_near;\n#endif\n}\n";
+    std::fs::write(dir.path().join("a.frag"), text).unwrap();
+    let o = essl(&["lint", "--format", "concise", "a.frag"], dir.path());
+    assert!(
+        out(&o).contains("a.frag:8:10: warning[division-by-difference]"),
+        "{}",
+        out(&o)
+    );
+    let o = essl(&["lint", "a.frag"], dir.path());
+    assert!(
+        out(&o).contains("note: in code compiled only with `LINEAR_DEPTH` defined"),
+        "{}",
+        out(&o)
+    );
+    let o = essl(&["lint", "--variants", "0", "a.frag"], dir.path());
+    assert!(!out(&o).contains("warning["), "{}", out(&o));
+    std::fs::write(dir.path().join("essl.toml"), "variants = 0\n").unwrap();
+    let o = essl(&["lint", "a.frag"], dir.path());
+    assert!(!out(&o).contains("warning["), "{}", out(&o));
+    let o = essl(&["lint", "--variants", "1", "a.frag"], dir.path());
+    assert!(out(&o).contains("warning["), "the flag wins: {}", out(&o));
 }
 
 #[test]

@@ -11,6 +11,7 @@ mod preconditions;
 mod recall;
 mod rules;
 mod seeds;
+mod variants;
 
 /// `text` compiled as the fragment shader `name`, asserting that it compiles and is lowered
 /// to naga IR (what the lints read).

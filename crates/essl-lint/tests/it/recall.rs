@@ -977,7 +977,8 @@ const DROPPED: &[(&str, &str, &str, &str)] = &[
 ];
 
 /// Every finding classified `real`, `rounding` or `input` in a corpus's triage table is still
-/// reported at its source line: a real one as a warning, the others at least as a note (but
+/// reported at its source line (in the shader as compiled or in a configuration of its
+/// `#ifdef`s, as a check lints them by default): a real one as a warning, the others at least as a note (but
 /// for [`DROPPED`]). Runs where `ESSL_LINT_CORPORA` names the corpora (`scripts/test.sh` fetches
 /// the fresh one; the old one needs GitHub, and is checked where present); skipped otherwise
 /// (they live outside the repository).
@@ -1052,7 +1053,21 @@ fn every_classified_true_positive_is_still_reported() {
             if !s.ok() || s.naga.is_none() {
                 continue;
             }
-            for d in lint(&s, &LintOptions::default().notes(true)) {
+            // The configurations its `#ifdef`s select too, as a check lints them by default.
+            let options = LintOptions::default().notes(true);
+            let compile_options = CompileOptions::default();
+            let mut all = lint(&s, &options);
+            let flags = essl_lint::variants::flags(&text, &compile_options);
+            let more = essl_lint::variants::lint(
+                &s,
+                &compile_options,
+                &options,
+                &all,
+                &flags,
+                essl_lint::variants::DEFAULT,
+            );
+            all.extend(more.into_iter().map(|f| f.diagnostic));
+            for d in all {
                 let line = s.file.line_col(d.span.start).line as usize;
                 let source = lines.get(line - 1).cloned().unwrap_or_default();
                 found.push((

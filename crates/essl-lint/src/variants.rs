@@ -1,0 +1,533 @@
+//! The lints on the configurations a shader's `#ifdef`s select: the code a flag such as
+//! `CLIPPLANE`, `ALPHATEST` or `USE_FOG` compiles in is code the application runs whenever it
+//! sets that flag — engines build most shaders from one text that way — but a check with the
+//! defines of one configuration never sees it.
+//!
+//! [`flags`] reads the conditional directives of a text and gives, for each group a flag turns
+//! on, the macros that select it (its own flag and those of the groups around it). [`lint`]
+//! compiles the text once per such configuration, with the macros defined as `1` before the
+//! first line (as `-D NAME` would), lints it, and keeps the findings the configuration checked
+//! already does not have, each with a note naming the macros.
+//!
+//! Written by hand: the directive lines are read with a line scanner, not the preprocessor,
+//! because the groups inside skipped groups matter here and the preprocessor does not
+//! evaluate them; an expression only gives names here, never a value.
+
+use std::collections::{HashMap, HashSet};
+
+use essl::diagnostic::Diagnostic;
+use essl::source::{SourceFile, Span};
+use essl::{CompileOptions, Shader};
+
+use crate::LintOptions;
+
+/// How many configurations of [`flags`] a check lints by default, besides the one it compiled
+/// (and the one with all of them that compile): enough for an engine material's flags (Babylon's
+/// fire material has 17), a bound on the cost of one with hundreds.
+pub const DEFAULT: usize = 16;
+
+/// The most macros one configuration defines: groups nested deeper than that in flags are left
+/// alone.
+const MAX_NAMES: usize = 32;
+
+/// One configuration a group of conditional code needs.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Variant {
+    /// The macros to define, in the order the directives name them.
+    pub defines: Vec<String>,
+    /// The directive that opens its first group.
+    pub directive: Span,
+    /// The code of each group it turns on: from the end of the directive's line to the next
+    /// directive of its block.
+    pub groups: Vec<Span>,
+}
+
+/// A conditional block being read.
+struct Block {
+    /// The macros the block's surroundings need.
+    outer: Vec<String>,
+    /// The macros whose definition turns the block's earlier groups off (for its `#else`).
+    negated: Vec<String>,
+    /// The macros the open group needs, its surroundings' included.
+    current: Vec<String>,
+    /// The open group, if it needs anything: its index in the output.
+    open: Option<usize>,
+}
+
+/// The configurations that turn on each conditional group of `text` the options' defines and
+/// the text's own `#define`s leave undecided, first seen first, each once. Names reserved to
+/// the implementation (`GL_…`, `__…`) and names the text defines itself are never defined.
+pub fn flags(text: &str, options: &CompileOptions) -> Vec<Variant> {
+    // Most shaders have no conditional: a search for `#if` is all they cost.
+    let conditional = text.match_indices('#').any(|(i, _)| {
+        let rest = text[i + 1..].trim_start_matches([' ', '\t']);
+        rest.starts_with("if") || rest.starts_with("el")
+    });
+    if !conditional {
+        return Vec::new();
+    }
+    let lines = directive_lines(text);
+    let defined: HashSet<&str> = lines
+        .iter()
+        .filter(|l| l.name == "define")
+        .filter_map(|l| identifiers(&l.args).next().map(|(w, _)| w))
+        .chain(options.defines.iter().map(|(n, _)| n.as_str()))
+        .collect();
+    let usable = |w: &str| !w.starts_with("GL_") && !w.starts_with("__") && !defined.contains(w);
+    let mut out: Vec<Variant> = Vec::new();
+    let mut seen: HashMap<Vec<String>, usize> = HashMap::new();
+    let mut blocks: Vec<Block> = Vec::new();
+    for l in &lines {
+        // A directive ends the open group of its block.
+        let close = |blocks: &mut Vec<Block>, out: &mut Vec<Variant>| {
+            if let Some(i) = blocks.last_mut().and_then(|b| b.open.take()) {
+                if let Some(g) = out[i].groups.last_mut() {
+                    g.end = l.span.start;
+                }
+            }
+        };
+        let (positive, negative): (Vec<String>, Vec<String>) = match l.name.as_str() {
+            "ifdef" => (first_name(&l.args), Vec::new()),
+            "ifndef" => (Vec::new(), first_name(&l.args)),
+            "if" | "elif" => tested(&l.args),
+            "else" => (Vec::new(), Vec::new()),
+            "endif" => {
+                close(&mut blocks, &mut out);
+                blocks.pop();
+                continue;
+            }
+            _ => continue,
+        };
+        if matches!(l.name.as_str(), "elif" | "else") {
+            close(&mut blocks, &mut out);
+        } else {
+            let outer = blocks.last().map(|b| b.current.clone()).unwrap_or_default();
+            blocks.push(Block {
+                outer,
+                negated: Vec::new(),
+                current: Vec::new(),
+                open: None,
+            });
+        }
+        let Some(block) = blocks.last_mut() else {
+            continue;
+        };
+        let mut needs = block.outer.clone();
+        if l.name == "else" {
+            needs.extend(block.negated.iter().cloned());
+        } else {
+            needs.extend(positive);
+            block.negated.extend(negative);
+        }
+        needs.retain(|w| usable(w));
+        let mut unique: Vec<String> = Vec::new();
+        for w in needs {
+            if !unique.contains(&w) {
+                unique.push(w);
+            }
+        }
+        if unique.len() > MAX_NAMES {
+            // Past any real configuration (and quadratic in nesting a text can make deep).
+            block.current = block.outer.clone();
+            continue;
+        }
+        block.current = unique.clone();
+        let mut key = unique.clone();
+        key.sort();
+        if unique.len() == block.outer.len() {
+            continue;
+        }
+        let group = Span::new(l.next, text.len() as u32);
+        let i = *seen.entry(key).or_insert_with(|| {
+            out.push(Variant {
+                defines: unique,
+                directive: l.span,
+                groups: Vec::new(),
+            });
+            out.len() - 1
+        });
+        out[i].groups.push(group);
+        block.open = Some(i);
+    }
+    out.retain(|v| v.groups.iter().any(|g| hazardous(&text[g.range()])));
+    out
+}
+
+/// The built-in functions whose arguments a rule looks at, and `discard`.
+const HAZARD_WORDS: [&str; 24] = [
+    "pow",
+    "acos",
+    "asin",
+    "atan",
+    "smoothstep",
+    "clamp",
+    "normalize",
+    "sqrt",
+    "inversesqrt",
+    "log",
+    "log2",
+    "mod",
+    "texture",
+    "texture2D",
+    "textureCube",
+    "textureProj",
+    "texture2DProj",
+    "texelFetch",
+    "texelFetchOffset",
+    "textureOffset",
+    "dFdx",
+    "dFdy",
+    "fwidth",
+    "discard",
+];
+
+/// Whether a group's code has something a rule looks at: a division or remainder, a call of
+/// one of [`HAZARD_WORDS`], a local declared without a value. A group with none (declarations,
+/// a constant, a colour) rarely changes a finding elsewhere, and compiling its configuration
+/// would be most of the cost on code without hazards (the dEQP preprocessor tests).
+fn hazardous(text: &str) -> bool {
+    let mut in_comment = false;
+    let code: String = text
+        .lines()
+        .map(|l| strip_comments(l, &mut in_comment) + "\n")
+        .collect();
+    let code = code.as_str();
+    let b = code.as_bytes();
+    let division = (0..b.len()).any(|i| match b[i] {
+        b'%' => true,
+        b'/' => true,
+        _ => false,
+    });
+    division
+        || identifiers(code).any(|(w, _)| HAZARD_WORDS.contains(&w))
+        || code.lines().any(|l| {
+            // `float x;`: a local a path may read unwritten.
+            let t = l.trim();
+            t.ends_with(';')
+                && !t.contains('=')
+                && !t.contains('(')
+                && t.split_whitespace().count() == 2
+                && ["float", "int", "vec", "ivec", "uvec", "bool", "mat", "uint"]
+                    .iter()
+                    .any(|p| t.starts_with(p))
+        })
+}
+
+/// A finding of a configuration the shader as compiled does not have.
+#[derive(Clone, Debug)]
+pub struct Found {
+    /// The finding, with a note naming the configuration.
+    pub diagnostic: Diagnostic,
+    /// The macros the configuration defines.
+    pub defines: Vec<String>,
+}
+
+/// The findings of the first `max` of `variants` (from [`flags`]) that the shader as compiled
+/// does not have (`base`: its findings with the same options), then those of one more
+/// configuration with the macros of every one of them that compiled (flags are set together as
+/// often as alone: a clip plane's `discard` before a diffuse texture's lookup), in source order.
+/// A configuration that does not compile is passed over: its errors are the front end's
+/// business in that configuration, not a lint's.
+pub fn lint(
+    shader: &Shader,
+    compile: &CompileOptions,
+    options: &LintOptions,
+    base: &[Diagnostic],
+    variants: &[Variant],
+    max: usize,
+) -> Vec<Found> {
+    let mut seen: HashSet<(&'static str, Span)> = base.iter().map(|d| (d.code, d.span)).collect();
+    let mut out = Vec::new();
+    let mut together: Vec<String> = Vec::new();
+    let mut compiled = 0;
+    let singles = variants.iter().take(max);
+    for v in singles {
+        if configuration(shader, compile, options, v, false, &mut seen, &mut out) {
+            compiled += 1;
+            for w in &v.defines {
+                if !together.contains(w) {
+                    together.push(w.clone());
+                }
+            }
+        }
+    }
+    if compiled > 1 {
+        let all = Variant {
+            defines: together,
+            directive: Span::default(),
+            groups: variants
+                .iter()
+                .take(max)
+                .flat_map(|v| v.groups.iter().copied())
+                .collect(),
+        };
+        configuration(shader, compile, options, &all, true, &mut seen, &mut out);
+    }
+    out.sort_by_key(|f| (f.diagnostic.span.start, f.diagnostic.span.end));
+    out
+}
+
+/// Compiles and lints one configuration, adding the findings not `seen` yet; whether it
+/// compiled.
+fn configuration(
+    shader: &Shader,
+    compile: &CompileOptions,
+    options: &LintOptions,
+    v: &Variant,
+    together: bool,
+    seen: &mut HashSet<(&'static str, Span)>,
+    out: &mut Vec<Found>,
+) -> bool {
+    let mut with = compile.clone();
+    with.defines
+        .extend(v.defines.iter().map(|n| (n.clone(), "1".to_string())));
+    let file = SourceFile::new(shader.file.name(), shader.file.text());
+    let compiled = essl::compile(file, shader.stage, &with);
+    if !compiled.ok() || compiled.naga.is_none() {
+        return false;
+    }
+    let names = named(&v.defines);
+    for d in crate::lint(&compiled, options) {
+        if !seen.insert((d.code, d.span)) {
+            continue;
+        }
+        let inside = v
+            .groups
+            .iter()
+            .any(|g| g.start <= d.span.start && d.span.end <= g.end);
+        let note = if together {
+            format!(
+                "found by compiling the configuration with every flag that compiles alone \
+                 defined ({names})"
+            )
+        } else if inside {
+            format!(
+                "in code compiled only with {names} defined, which the configuration checked \
+                 leaves out"
+            )
+        } else {
+            format!("found by compiling the configuration with {names} defined")
+        };
+        out.push(Found {
+            diagnostic: d.with_note(note),
+            defines: v.defines.clone(),
+        });
+    }
+    true
+}
+
+/// The macros as a message names them: "`A`", "`A` and `B`", "`A`, `B`, `C`, `D` and 3 more".
+fn named(defines: &[String]) -> String {
+    const NAMED: usize = 4;
+    let quoted: Vec<String> = defines.iter().map(|n| format!("`{n}`")).collect();
+    match quoted.len() {
+        0 => String::new(),
+        1 => quoted[0].clone(),
+        n if n <= NAMED => format!("{} and {}", quoted[..n - 1].join(", "), quoted[n - 1]),
+        n => format!("{} and {} more", quoted[..NAMED].join(", "), n - NAMED),
+    }
+}
+
+/// A directive line: its name (`ifdef`, `define`…), the text after it, its span and where the
+/// next line starts.
+struct Line {
+    name: String,
+    args: String,
+    span: Span,
+    next: u32,
+}
+
+/// The directive lines of `text`, outside block comments; a line continued with `\` is read
+/// up to its first break (conditionals are one-line in practice).
+fn directive_lines(text: &str) -> Vec<Line> {
+    let mut out = Vec::new();
+    let mut in_comment = false;
+    let mut at = 0usize;
+    for raw in text.split_inclusive('\n') {
+        let start = at;
+        at += raw.len();
+        let line = raw.trim_end_matches(['\n', '\r']);
+        let code = strip_comments(line, &mut in_comment);
+        let t = code.trim_start();
+        let Some(rest) = t.strip_prefix('#') else {
+            continue;
+        };
+        let rest = rest.trim_start();
+        let end = rest
+            .find(|c: char| !c.is_ascii_alphanumeric() && c != '_')
+            .unwrap_or(rest.len());
+        out.push(Line {
+            name: rest[..end].to_string(),
+            args: rest[end..].to_string(),
+            span: Span::new(start as u32, (start + line.len()) as u32),
+            next: at as u32,
+        });
+    }
+    out
+}
+
+/// `line` without its comments, tracking whether a block comment stays open past it.
+fn strip_comments<'a>(line: &'a str, in_comment: &mut bool) -> std::borrow::Cow<'a, str> {
+    if !*in_comment && !line.contains("/*") {
+        return match line.find("//") {
+            Some(i) => line[..i].into(),
+            None => line.into(),
+        };
+    }
+    let mut out = String::new();
+    let mut rest = line;
+    loop {
+        if *in_comment {
+            match rest.find("*/") {
+                Some(i) => {
+                    *in_comment = false;
+                    rest = &rest[i + 2..];
+                    out.push(' ');
+                }
+                None => return out.into(),
+            }
+        } else {
+            let block = rest.find("/*");
+            let line_c = rest.find("//");
+            match (block, line_c) {
+                (Some(b), l) if l.is_none_or(|l| b < l) => {
+                    out.push_str(&rest[..b]);
+                    *in_comment = true;
+                    rest = &rest[b + 2..];
+                }
+                (_, Some(l)) => {
+                    out.push_str(&rest[..l]);
+                    return out.into();
+                }
+                _ => {
+                    out.push_str(rest);
+                    return out.into();
+                }
+            }
+        }
+    }
+}
+
+/// The identifiers of a directive's text with whether a `!` applies to each (`!NAME`,
+/// `!defined(NAME)`, `!defined NAME`).
+fn identifiers(args: &str) -> impl Iterator<Item = (&str, bool)> {
+    let bytes = args.as_bytes();
+    let mut i = 0;
+    let mut negated = false;
+    std::iter::from_fn(move || {
+        while i < bytes.len() {
+            let c = bytes[i];
+            if c.is_ascii_alphabetic() || c == b'_' {
+                let start = i;
+                while i < bytes.len() && (bytes[i].is_ascii_alphanumeric() || bytes[i] == b'_') {
+                    i += 1;
+                }
+                let w = &args[start..i];
+                if w == "defined" {
+                    continue;
+                }
+                let n = std::mem::take(&mut negated);
+                return Some((w, n));
+            }
+            if c.is_ascii_digit() {
+                while i < bytes.len() && (bytes[i].is_ascii_alphanumeric() || bytes[i] == b'.') {
+                    i += 1;
+                }
+                negated = false;
+                continue;
+            }
+            match c {
+                b'!' if bytes.get(i + 1) != Some(&b'=') => negated = true,
+                b'(' | b' ' | b'\t' => {}
+                _ => negated = false,
+            }
+            i += 1;
+        }
+        None
+    })
+}
+
+/// The first name of an `#ifdef`/`#ifndef`.
+fn first_name(args: &str) -> Vec<String> {
+    identifiers(args)
+        .next()
+        .map(|(w, _)| vec![w.to_string()])
+        .unwrap_or_default()
+}
+
+/// The names an `#if`/`#elif` tests, split into those whose definition turns the group on and
+/// those whose definition turns it off.
+fn tested(args: &str) -> (Vec<String>, Vec<String>) {
+    let (mut on, mut off) = (Vec::new(), Vec::new());
+    for (w, negated) in identifiers(args) {
+        if negated {
+            off.push(w.to_string());
+        } else {
+            on.push(w.to_string());
+        }
+    }
+    (on, off)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn names(text: &str) -> Vec<Vec<String>> {
+        flags(text, &CompileOptions::default())
+            .into_iter()
+            .map(|v| v.defines)
+            .collect()
+    }
+
+    #[test]
+    fn each_group_a_flag_turns_on() {
+        let text = "#ifdef A\nx/a\n#elif defined(B) && !defined(C)\ny/b\n#else\nz/c\n#endif\n\
+                    #ifndef D\n#else\nw/d\n#endif\n#if E > 0\nfloat e;\n#endif\n#ifdef F\nx = 1.0;\n#endif\n";
+        assert_eq!(
+            names(text),
+            [vec!["A"], vec!["B"], vec!["C"], vec!["D"], vec!["E"]]
+        );
+    }
+
+    #[test]
+    fn nested_groups_need_the_outer_flag() {
+        let text = "#ifdef A\n#ifdef B\nx%2\n#endif\n#endif\n#ifdef A // again\n#endif\n";
+        assert_eq!(names(text), [vec!["A"], vec!["A", "B"]]);
+    }
+
+    #[test]
+    fn leaves_out_what_is_defined_and_reserved_names() {
+        let text = "#define A 1\n#ifdef A\npow\n#endif\n#ifdef GL_ES\npow\n#endif\n\
+                    #ifndef B\n#define B\n#endif\n/*\n#ifdef C\n*/\n#ifdef D\npow\n#endif\n";
+        assert_eq!(names(text), [vec!["D"]]);
+    }
+
+    #[test]
+    fn groups_without_a_hazard_are_left_alone() {
+        let text = "#ifdef A\nuniform float u; // a/b\nc = vec4(1.0); /* x */\n#endif\n\
+                    #ifdef B\nfloat x;\n#endif\n#ifdef C\ny = normalize(d);\n#endif\n";
+        assert_eq!(names(text), [vec!["B"], vec!["C"]]);
+    }
+
+    #[test]
+    fn deep_nesting_is_bounded() {
+        let n = 20_000;
+        let mut text = String::new();
+        for i in 0..n {
+            text.push_str(&format!("#ifdef F{i}\n"));
+        }
+        text.push_str("discard;\n");
+        text.push_str(&"#endif\n".repeat(n));
+        let v = flags(&text, &CompileOptions::default());
+        assert_eq!(v.len(), MAX_NAMES);
+        assert!(v.iter().all(|v| v.defines.len() <= MAX_NAMES));
+    }
+
+    #[test]
+    fn a_group_spans_up_to_the_next_directive() {
+        let text = "#ifdef A\nx / y\n#else\ny\n#endif\n";
+        let v = &flags(text, &CompileOptions::default())[0];
+        assert_eq!(&text[v.groups[0].range()], "x / y\n");
+    }
+}

@@ -1,0 +1,108 @@
+//! The lints on the configurations a shader's `#ifdef`s select (`essl_lint::variants`).
+
+use essl::CompileOptions;
+use essl_lint::variants::{self, Found};
+use essl_lint::{lint, LintOptions};
+
+/// A fragment shader with `body` in `main`, its uniforms and inputs declared.
+fn frag(body: &str) -> String {
+    format!(
+        "#version 300 es\nprecision highp float;\n\
+         uniform float u_fogStart; uniform float u_fogEnd; uniform sampler2D u_tex;\n\
+         in vec2 v_uv; in float v_clip; in float v_depth;\nout vec4 o;\n\
+         void main() {{\n  o = vec4(1.0);\n{body}\n}}\n"
+    )
+}
+
+/// The findings of the variants: (rule, span text, macros, notes).
+fn found(text: &str, max: usize) -> Vec<(&'static str, String, Vec<String>, Vec<String>)> {
+    let shader = super::compiled("t.frag", text);
+    let options = LintOptions::default().notes(true);
+    let base = lint(&shader, &options);
+    let compile = CompileOptions::default();
+    let flags = variants::flags(text, &compile);
+    variants::lint(&shader, &compile, &options, &base, &flags, max)
+        .into_iter()
+        .map(
+            |Found {
+                 diagnostic: d,
+                 defines,
+             }| {
+                (
+                    d.code,
+                    shader.file.slice(d.span).to_string(),
+                    defines,
+                    d.notes,
+                )
+            },
+        )
+        .collect()
+}
+
+#[test]
+fn a_flag_s_code_is_linted_in_its_configuration() {
+    let text = frag("#ifdef FOG\n  o *= (u_fogEnd - v_depth) / (u_fogEnd - u_fogStart);\n#endif");
+    let shader = super::compiled("t.frag", &text);
+    assert!(lint(&shader, &LintOptions::default().notes(true)).is_empty());
+    let f = found(&text, variants::DEFAULT);
+    assert_eq!(f.len(), 1, "{f:#?}");
+    assert_eq!(f[0].0, "division-by-difference");
+    assert_eq!(f[0].1, "(u_fogEnd - u_fogStart)");
+    assert_eq!(f[0].2, ["FOG"]);
+    assert!(
+        f[0].3
+            .iter()
+            .any(|n| n.contains("compiled only with `FOG` defined")),
+        "{:?}",
+        f[0].3
+    );
+    assert!(found(&text, 0).is_empty(), "no configuration at 0");
+}
+
+#[test]
+fn findings_of_the_configuration_checked_are_not_repeated() {
+    let text = frag("  o *= 1.0 / (u_fogEnd - u_fogStart);\n#ifdef FOG\n  o.x += 1.0;\n#endif");
+    let shader = super::compiled("t.frag", &text);
+    assert_eq!(lint(&shader, &LintOptions::default()).len(), 1);
+    assert!(found(&text, variants::DEFAULT).is_empty());
+}
+
+#[test]
+fn a_configuration_that_does_not_compile_is_passed_over() {
+    let text = frag("#ifdef NEEDS_A_HELPER\n  o *= helper(1.0 / (u_fogEnd - u_fogStart));\n#endif");
+    assert!(found(&text, variants::DEFAULT).is_empty());
+}
+
+#[test]
+fn flags_set_together_reach_what_each_alone_does_not() {
+    // A clip plane's discard before a diffuse texture's lookup: each flag alone is clean.
+    let text = frag(
+        "#ifdef CLIPPLANE\n  if (v_clip > 0.0) discard;\n#endif\n\
+         #ifdef DIFFUSE\n  o *= texture(u_tex, v_uv);\n#endif",
+    );
+    let f = found(&text, variants::DEFAULT);
+    assert_eq!(f.len(), 1, "{f:#?}");
+    assert_eq!(f[0].0, "non-uniform-derivative");
+    assert_eq!(f[0].2, ["CLIPPLANE", "DIFFUSE"]);
+    assert!(
+        f[0].3.iter().any(|n| n.contains("every flag")),
+        "{:?}",
+        f[0].3
+    );
+}
+
+#[test]
+fn a_nested_group_is_reached_with_its_outer_flag() {
+    let text = frag(
+        "#ifdef FOG\n#ifdef FOG_LINEAR\n  o *= 1.0 / (u_fogEnd - u_fogStart);\n#endif\n#endif",
+    );
+    let f = found(&text, 1);
+    assert_eq!(
+        f.len(),
+        0,
+        "the first configuration (FOG) alone does not reach it"
+    );
+    let f = found(&text, variants::DEFAULT);
+    assert_eq!(f.len(), 1, "{f:#?}");
+    assert_eq!(f[0].2, ["FOG", "FOG_LINEAR"]);
+}
