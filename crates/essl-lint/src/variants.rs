@@ -192,12 +192,7 @@ fn hazardous(text: &str) -> bool {
         .map(|l| strip_comments(l, &mut in_comment) + "\n")
         .collect();
     let code = code.as_str();
-    let b = code.as_bytes();
-    let division = (0..b.len()).any(|i| match b[i] {
-        b'%' => true,
-        b'/' => true,
-        _ => false,
-    });
+    let division = code.contains(['/', '%']);
     division
         || identifiers(code).any(|(w, _)| HAZARD_WORDS.contains(&w))
         || code.lines().any(|l| {
