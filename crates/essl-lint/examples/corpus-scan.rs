@@ -1,5 +1,6 @@
 //! Runs the lints over the must-pass shaders of the shared corpora and prints every finding with
-//! its source line, then the counts per rule — the figures of `docs/lints/README.md`:
+//! its source line (the configurations its `#ifdef`s select too, as a check lints them), then
+//! the counts per rule — the figures of `docs/lints/README.md`:
 //! `cargo run --release -p essl-lint --example corpus-scan [-- CORPORA_DIR [--all]]`.
 //! `--all` takes every case (must-fail ones too, and glslang's), to check that nothing panics.
 
@@ -104,7 +105,19 @@ fn main() {
         }
         compiled += 1;
         e.1 += 1;
-        let found = essl_lint::lint(&shader, &essl_lint::LintOptions::default());
+        let options = essl_lint::LintOptions::default();
+        let mut found = essl_lint::lint(&shader, &options);
+        // The configurations its `#ifdef`s select, as a check lints them by default.
+        let flags = essl_lint::variants::flags(shader.file.text(), &CompileOptions::default());
+        let more = essl_lint::variants::lint(
+            &shader,
+            &CompileOptions::default(),
+            &options,
+            &found,
+            &flags,
+            essl_lint::variants::DEFAULT,
+        );
+        found.extend(more.into_iter().map(|f| f.diagnostic));
         if !found.is_empty() {
             flagged_shaders += 1;
             e.2 += 1;

@@ -25,7 +25,10 @@ declare_rule! {
     /// holds a colour (`v_color`, a function's `vec3 rgb` its callers pass an input to) counts as
     /// a texel: black and white are ordinary colours. A divisor that is a texel (or such a colour)
     /// itself is reported too: `c.rgb / c.a` un-premultiplies by an alpha that is 0 wherever the
-    /// texture is transparent, `x / t.r` divides by 0 wherever it is black. So is a shading term
+    /// texture is transparent, `x / t.r` divides by 0 wherever it is black; and so is a sum,
+    /// product, `dot` or matrix product of texels (through locals and calls): a luminance
+    /// `dot(c.rgb, w)` a tone mapping divides by, the `X + Y + Z` of a colour's chromaticity, 0
+    /// over every black region of the picture. So is a shading term
     /// that is 0 wherever the surface faces away from the light or the viewer: a product with a
     /// clamped cosine (`max(dot(n, l), 0.0)`, `saturate(dot(n, v))`), or a sum, difference or
     /// `mix` of such products — Cook–Torrance's `4.0 * NdotL * NdotV`, Neubelt's sheen
@@ -77,6 +80,8 @@ declare_rule! {
     ///   (`if (u_a != u_b)`, `abs(d) > 1e-6 ? x / d : 0.0`).
     /// - A shading term the shader keeps from 0 (`4.0 * NdotL * NdotV + 0.0001`, `max(NdotL, 1e-4)`,
     ///   under `if (NdotL > 0.0 && NdotV > 0.0)`), and a raw `dot(n, l)`, 0 on a line of pixels only.
+    /// - A sum of texels with a constant added (`t.r + t.g + 1e-3`), or a clamp or `max` of one;
+    ///   a difference of texels is 0 at an end of their range or not at all (above).
     /// - Any other uniform as such (`gl_FragCoord.xy / u_resolution`, `/ u_pixelRatio`): essl-gl's
     ///   validation mode checks divisors at draw time.
     /// - A parameter's division where a call passes a uniform or a computed value (the value
@@ -106,7 +111,7 @@ declare_rule! {
     ///   `/ epsilon`.
     pub(crate) struct DivisionByDifference {
         id: "division-by-difference",
-        summary: "division by a difference of uniforms, a texel or a difference of texels at an end of their range, a shading term of clamped cosines, or what callers or vertex data pass, that can be zero",
+        summary: "division by a difference of uniforms, a texel (or a sum, product or luminance of texels) or a difference of texels at an end of their range, a shading term of clamped cosines, or what callers or vertex data pass, that can be zero",
         default_level: Level::Warn,
         check: check,
     }
@@ -145,6 +150,8 @@ fn check(cx: &Cx, out: &mut Vec<Diagnostic>) {
             }
             if !v.facts.has(Facts::DIFF) {
                 if let Some(diag) = texel_divisor(cx, &div, v.facts) {
+                    out.push(diag);
+                } else if let Some(diag) = black_divisor(cx, &div, v) {
                     out.push(diag);
                 } else if let Some(diag) = setting_divisor(cx, &div) {
                     out.push(diag);
@@ -398,6 +405,33 @@ fn unlit_divisor(cx: &Cx, div: &Division, v: &crate::value::Num) -> Option<Diagn
             cspan,
             "0 over every pixel where this dot product is negative",
         );
+    }
+    Some(diag)
+}
+
+/// The finding for a divisor that is 0 wherever a texel it reads is black or transparent: a sum,
+/// product or `dot` of texels as such ([`Cx::black_zero`]) — the `X + Y + Z` of a colour's
+/// chromaticity, a luminance a tone mapping divides by.
+fn black_divisor(cx: &Cx, div: &Division, v: &crate::value::Num) -> Option<Diagnostic> {
+    let Division { f, id, d, .. } = *div;
+    if !v.facts.any(Facts::TEXTURE) || !v.comps().iter().any(|c| c.contains(0.0)) {
+        return None;
+    }
+    let (tid, t) = cx.black_zero(f, id, d)?;
+    let span = unguarded(cx, div)?;
+    let what = cx.what(f, id, d);
+    let mut diag = Diagnostic::rule_warning(
+        DivisionByDifference::RULE.id,
+        "division by a sum or product of texels that is 0 wherever the texture is black or transparent",
+        span,
+    )
+    .with_label(format!("{what} is 0 where the texels it reads are"))
+    .with_help("guard the divisor: `max(x, 1e-4)`, or test it first")
+    .with_fix(floor_fix(cx, span));
+    let tspan = cx.span(crate::analysis::function(cx.module, tid), t);
+    let inside = span.start <= tspan.start && tspan.end <= span.end;
+    if !tspan.is_empty() && !inside {
+        diag = diag.with_secondary(tspan, "the texel");
     }
     Some(diag)
 }

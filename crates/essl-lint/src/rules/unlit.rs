@@ -16,6 +16,11 @@
 //! `saturate` or `max(…, 0.0)` (`docs/lints/corpus.md`). A sum is taken to be 0 where each of
 //! its terms is: the terms' regions are the same unlit side in every shader seen, which the
 //! analysis does not prove.
+//!
+//! The same walk finds a value that is 0 wherever a texel it reads is black or transparent: a
+//! sum, product, `dot` or matrix product of texels as such — Cesium's `X + Y + Z` of a colour
+//! converted to XYZ, a luminance `dot(c.rgb, w)` — which a tone mapping or a chromaticity
+//! divides by, and which is 0 over every black region of the picture.
 
 use naga::{BinaryOperator as Bo, Expression as E, Function, Handle, MathFunction as Mf};
 
@@ -32,6 +37,15 @@ const COSINES: &[&str] = &[
     "nol", "nov", "ndotl", "ndotv", "dotnl", "dotnv", "ndl", "ndv",
 ];
 
+/// What makes the value 0 over a region.
+#[derive(Clone, Copy, PartialEq, Eq)]
+enum Zero {
+    /// A clamped cosine: the unlit side of a surface.
+    Unlit,
+    /// A texel as such at the bottom of its range: a black or transparent region.
+    Black,
+}
+
 /// A call the walk went through from its result into the callee: the caller and the call's
 /// arguments.
 struct Call<'a> {
@@ -45,11 +59,19 @@ impl Cx<'_> {
     /// The clamped cosine that makes `h` 0 over the unlit side of a surface, if one does: the
     /// clamp's expression, in function `at.0`.
     pub fn unlit_zero(&self, f: &Function, id: usize, h: Handle<E>) -> Option<(usize, Handle<E>)> {
-        self.unlit(f, id, h, None, 0)
+        self.zero_over(Zero::Unlit, f, id, h, None, 0)
     }
 
-    fn unlit(
+    /// The texel as such that makes `h` 0 wherever it is black or transparent, if one does (a
+    /// sum, product or `dot` of texels, through locals and calls): the texel's expression, in
+    /// function `at.0`.
+    pub fn black_zero(&self, f: &Function, id: usize, h: Handle<E>) -> Option<(usize, Handle<E>)> {
+        self.zero_over(Zero::Black, f, id, h, None, 0)
+    }
+
+    fn zero_over(
         &self,
+        kind: Zero,
         f: &Function,
         id: usize,
         h: Handle<E>,
@@ -59,8 +81,11 @@ impl Cx<'_> {
         if depth > DEPTH {
             return None;
         }
+        if kind == Zero::Black && self.black_texel(id, h) {
+            return Some((id, h));
+        }
         let d = depth + 1;
-        let go = |x: Handle<E>| self.unlit(f, id, x, at, d);
+        let go = |x: Handle<E>| self.zero_over(kind, f, id, x, at, d);
         let constant = |x: Handle<E>| {
             self.sound()
                 .num(id, x)
@@ -75,6 +100,8 @@ impl Cx<'_> {
                 arg2,
                 ..
             } => match (fun, arg1, arg2) {
+                (Mf::Dot, Some(b), _) if kind == Zero::Black => go(arg).or_else(|| go(b)),
+                (Mf::Saturate | Mf::Max | Mf::Clamp, _, _) if kind == Zero::Black => None,
                 (Mf::Saturate, _, _) => self.cosine(f, id, arg).then_some((id, h)),
                 (Mf::Max, Some(b), _) => {
                     let clamps = |x, c: Handle<E>| {
@@ -93,6 +120,9 @@ impl Cx<'_> {
             E::Binary { op, left, right } => match op {
                 Bo::Multiply => go(left).or_else(|| go(right)),
                 Bo::Divide => go(left),
+                // A difference of texels is `division-by-difference`'s own business (0 at an
+                // end of the texels' range, not only where they are black).
+                Bo::Subtract if kind == Zero::Black => None,
                 Bo::Add | Bo::Subtract => go(left).and(go(right)),
                 _ => None,
             },
@@ -119,13 +149,14 @@ impl Cx<'_> {
                 self.flows()
                     .returns(c)
                     .iter()
-                    .find_map(|x| self.unlit(g, c, *x, Some(&call), d))
+                    .find_map(|x| self.zero_over(kind, g, c, *x, Some(&call), d))
             }
             E::FunctionArgument(i) if id < self.module.functions.len() => {
                 let i = i as usize;
-                let named = f.arguments[i].name.as_deref().is_some_and(is_cosine_name);
+                let named = kind == Zero::Unlit
+                    && f.arguments[i].name.as_deref().is_some_and(is_cosine_name);
                 let from = |caller: usize, g: &Function, a: Handle<E>, up: Option<&Call>| {
-                    self.unlit(g, caller, a, up, d)
+                    self.zero_over(kind, g, caller, a, up, d)
                         .or_else(|| (named && self.input_as_such(caller, a)).then_some((id, h)))
                 };
                 if let Some(call) = at {
@@ -138,6 +169,19 @@ impl Cx<'_> {
             }
             _ => None,
         }
+    }
+
+    /// Whether `x` is a texel (or a colour input) as such whose ordinary range ends at 0.
+    fn black_texel(&self, id: usize, x: Handle<E>) -> bool {
+        let Some(n) = self.sound().num(id, x) else {
+            return false;
+        };
+        n.facts.has(Facts::EXT)
+            && n.facts.any(Facts::TEXTURE)
+            && self
+                .typical()
+                .num(id, x)
+                .is_some_and(|t| t.comps().iter().any(|c| c.lo == 0.0 || c.hi == 0.0))
     }
 
     /// Whether `x` is a per-pixel dot product that can be negative (through locals).

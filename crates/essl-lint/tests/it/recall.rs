@@ -112,6 +112,20 @@ const HAZARDS: &[Hazard] = &[
     ),
     ("division-by-difference", "texture", "  r = t.r / (1.0 - t.a);", W),
     ("division-by-difference", "texture", "  r = t.r / t.a;", W),
+    // Sums, products and `dot`s of texels: 0 wherever the texture is black (a luminance, the
+    // X + Y + Z of a chromaticity).
+    (
+        "division-by-difference",
+        "texture",
+        "  float lum = dot(t.rgb, vec3(0.2126, 0.7152, 0.0722));\n  r = lum / (1.0 + lum) / lum;",
+        W,
+    ),
+    (
+        "division-by-difference",
+        "texture",
+        "  vec3 xyz = mat3(0.41, 0.21, 0.02, 0.36, 0.72, 0.12, 0.18, 0.07, 0.95) * t.rgb;\n  r = xyz.r / (xyz.r + xyz.g + xyz.b);",
+        W,
+    ),
     // A uniform as such whose name says a user may set it to 0: a gamma, a count.
     ("division-by-difference", "uniform", "  r = pow(t.r, 1.0 / u_gamma);", N),
     ("division-by-difference", "uniform", "  r = v_x / float(u_sampleCount);", N),
@@ -381,6 +395,14 @@ const GUARDED: &[(&str, &str)] = &[
     // An alpha tested first, or kept above 0.
     ("division-by-difference", "  r = t.a > 0.0 ? t.r / t.a : 0.0;"),
     ("division-by-difference", "  r = t.r / max(t.a, 1e-4);"),
+    (
+        "division-by-difference",
+        "  float lum = dot(t.rgb, vec3(0.2126, 0.7152, 0.0722));\n  r = lum / max(lum, 1e-4) + t.r / (t.r + t.g + 1e-3);",
+    ),
+    (
+        "division-by-difference",
+        "  float s = t.r + t.g + t.b;\n  r = s > 0.0 ? t.r / s : 0.0;",
+    ),
     // A size the host takes from the canvas, and a guarded setting.
     (
         "division-by-difference",
