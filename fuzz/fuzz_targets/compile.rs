@@ -1,5 +1,6 @@
-//! Any bytes, as a vertex and as a fragment shader: the front end and the lints must not panic
-//! (and every diagnostic must point inside the text).
+//! Any bytes, as a vertex and as a fragment shader: the front end and the lints (with two of
+//! the configurations its `#ifdef`s select) must not panic, and every diagnostic must point
+//! inside the text.
 #![no_main]
 
 use essl::source::SourceFile;
@@ -10,13 +11,23 @@ fuzz_target!(|data: &[u8]| {
     let text = String::from_utf8_lossy(data);
     for stage in [Stage::Vertex, Stage::Fragment] {
         // With and without a version line, so that most inputs get past the preprocessor.
-        for src in [text.to_string(), format!("#version 300 es\nprecision mediump float;\n{text}")] {
+        for src in [
+            text.to_string(),
+            format!("#version 300 es\nprecision mediump float;\n{text}"),
+        ] {
             let len = src.len();
             let shader = compile(SourceFile::new("fuzz", src), stage, &Default::default());
             for d in &shader.diagnostics {
                 assert!(d.span.end as usize <= len && d.span.start <= d.span.end);
             }
-            let _ = essl_lint::lint(&shader, &essl_lint::LintOptions::new());
+            let options = essl_lint::LintOptions::new();
+            let found = essl_lint::lint(&shader, &options);
+            let compile_options = essl::CompileOptions::default();
+            for f in essl_lint::variants::lint_text(&shader, &compile_options, &options, &found, 2)
+            {
+                let d = f.diagnostic;
+                assert!(d.span.end as usize <= len && d.span.start <= d.span.end);
+            }
         }
     }
 });

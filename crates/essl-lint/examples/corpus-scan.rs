@@ -108,13 +108,11 @@ fn main() {
         let options = essl_lint::LintOptions::default();
         let mut found = essl_lint::lint(&shader, &options);
         // The configurations its `#ifdef`s select, as a check lints them by default.
-        let flags = essl_lint::variants::flags(shader.file.text(), &CompileOptions::default());
-        let more = essl_lint::variants::lint(
+        let more = essl_lint::variants::lint_text(
             &shader,
             &CompileOptions::default(),
             &options,
             &found,
-            &flags,
             essl_lint::variants::DEFAULT,
         );
         found.extend(more.into_iter().map(|f| f.diagnostic));

@@ -57,13 +57,11 @@ fn main() {
                 .collect();
         if variants > 0 {
             let base: Vec<_> = found.iter().map(|(d, _)| d.clone()).collect();
-            let flags = essl_lint::variants::flags(&text, &compile_options);
-            let more = essl_lint::variants::lint(
+            let more = essl_lint::variants::lint_text(
                 &shader,
                 &compile_options,
                 &options,
                 &base,
-                &flags,
                 variants,
             );
             found.extend(more.into_iter().map(|f| (f.diagnostic, json!(f.defines))));

@@ -42,14 +42,12 @@ fn main() {
             if lint && shader.naga.is_some() {
                 let found = essl_lint::lint(&shader, &options);
                 let compile_options = CompileOptions::default();
-                let flags = essl_lint::variants::flags(src, &compile_options);
                 findings += found.len()
-                    + essl_lint::variants::lint(
+                    + essl_lint::variants::lint_text(
                         &shader,
                         &compile_options,
                         &options,
                         &found,
-                        &flags,
                         essl_lint::variants::DEFAULT,
                     )
                     .len();

@@ -323,6 +323,19 @@ fn named(defines: &[String]) -> String {
     }
 }
 
+/// [`lint`] on the configurations of the shader's own text ([`flags`]): what a caller without
+/// text of its own to leave out (a library's) runs.
+pub fn lint_text(
+    shader: &Shader,
+    compile: &CompileOptions,
+    options: &LintOptions,
+    base: &[Diagnostic],
+    max: usize,
+) -> Vec<Found> {
+    let variants = flags(shader.file.text(), compile);
+    lint(shader, compile, options, base, &variants, max)
+}
+
 /// A directive line: its name (`ifdef`, `define`…), the text after it, its span and where the
 /// next line starts.
 struct Line {

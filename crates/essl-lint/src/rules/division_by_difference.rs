@@ -379,59 +379,76 @@ fn parameter_divisor(cx: &Cx, div: &Division) -> Option<Diagnostic> {
     Some(diag)
 }
 
+/// What a finding for a divisor 0 over a region of the picture says.
+struct Region {
+    message: &'static str,
+    /// Follows the divisor's name.
+    label: &'static str,
+    help: &'static str,
+    /// On the value that makes it 0, where that is elsewhere.
+    secondary: &'static str,
+}
+
 /// The finding for a divisor `d` of `h` that is 0 over the unlit side of a surface
 /// ([`Cx::unlit_zero`]): a visibility term's `4.0 * NdotL * NdotV`, `lambdaV + lambdaL`.
 fn unlit_divisor(cx: &Cx, div: &Division, v: &crate::value::Num) -> Option<Diagnostic> {
-    let Division { f, id, d, .. } = *div;
     if !v.comps().iter().any(|c| c.contains(0.0)) {
         return None;
     }
-    let (cid, c) = cx.unlit_zero(f, id, d)?;
-    let span = unguarded(cx, div)?;
-    let what = cx.what(f, id, d);
-    let mut diag = Diagnostic::rule_warning(
-        DivisionByDifference::RULE.id,
-        "division by a shading term that is 0 wherever the surface faces away from the light or the viewer",
-        span,
+    let zero = cx.unlit_zero(div.f, div.id, div.d)?;
+    region_divisor(
+        cx,
+        div,
+        zero,
+        &Region {
+            message: "division by a shading term that is 0 wherever the surface faces away from the light or the viewer",
+            label: "is 0 wherever the clamped cosine is",
+            help: "guard the divisor: `max(x, 1e-4)`, or test the cosine first",
+            secondary: "0 over every pixel where this dot product is negative",
+        },
     )
-    .with_label(format!("{what} is 0 wherever the clamped cosine is"))
-    .with_help("guard the divisor: `max(x, 1e-4)`, or test the cosine first")
-    .with_fix(floor_fix(cx, span));
-    let cspan = cx.span(crate::analysis::function(cx.module, cid), c);
-    let inside =
-        |a: essl::source::Span, b: essl::source::Span| a.start <= b.start && b.end <= a.end;
-    if !cspan.is_empty() && !inside(cspan, span) && !inside(span, cspan) {
-        diag = diag.with_secondary(
-            cspan,
-            "0 over every pixel where this dot product is negative",
-        );
-    }
-    Some(diag)
 }
 
 /// The finding for a divisor that is 0 wherever a texel it reads is black or transparent: a sum,
 /// product or `dot` of texels as such ([`Cx::black_zero`]) — the `X + Y + Z` of a colour's
 /// chromaticity, a luminance a tone mapping divides by.
 fn black_divisor(cx: &Cx, div: &Division, v: &crate::value::Num) -> Option<Diagnostic> {
-    let Division { f, id, d, .. } = *div;
     if !v.facts.any(Facts::TEXTURE) || !v.comps().iter().any(|c| c.contains(0.0)) {
         return None;
     }
-    let (tid, t) = cx.black_zero(f, id, d)?;
-    let span = unguarded(cx, div)?;
-    let what = cx.what(f, id, d);
-    let mut diag = Diagnostic::rule_warning(
-        DivisionByDifference::RULE.id,
-        "division by a sum or product of texels that is 0 wherever the texture is black or transparent",
-        span,
+    let zero = cx.black_zero(div.f, div.id, div.d)?;
+    region_divisor(
+        cx,
+        div,
+        zero,
+        &Region {
+            message: "division by a sum or product of texels that is 0 wherever the texture is black or transparent",
+            label: "is 0 where the texels it reads are",
+            help: "guard the divisor: `max(x, 1e-4)`, or test it first",
+            secondary: "the texel",
+        },
     )
-    .with_label(format!("{what} is 0 where the texels it reads are"))
-    .with_help("guard the divisor: `max(x, 1e-4)`, or test it first")
-    .with_fix(floor_fix(cx, span));
-    let tspan = cx.span(crate::analysis::function(cx.module, tid), t);
-    let inside = span.start <= tspan.start && tspan.end <= span.end;
-    if !tspan.is_empty() && !inside {
-        diag = diag.with_secondary(tspan, "the texel");
+}
+
+/// The finding for an unguarded divisor that `zero` (an expression of function `zero.0`) makes
+/// 0 over a region of the picture.
+fn region_divisor(
+    cx: &Cx,
+    div: &Division,
+    zero: (usize, naga::Handle<E>),
+    text: &Region,
+) -> Option<Diagnostic> {
+    let span = unguarded(cx, div)?;
+    let what = cx.what(div.f, div.id, div.d);
+    let mut diag = Diagnostic::rule_warning(DivisionByDifference::RULE.id, text.message, span)
+        .with_label(format!("{what} {}", text.label))
+        .with_help(text.help)
+        .with_fix(floor_fix(cx, span));
+    let zspan = cx.span(crate::analysis::function(cx.module, zero.0), zero.1);
+    let inside =
+        |a: essl::source::Span, b: essl::source::Span| a.start <= b.start && b.end <= a.end;
+    if !zspan.is_empty() && !inside(zspan, span) && !inside(span, zspan) {
+        diag = diag.with_secondary(zspan, text.secondary);
     }
     Some(diag)
 }

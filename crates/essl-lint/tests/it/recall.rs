@@ -1079,13 +1079,11 @@ fn every_classified_true_positive_is_still_reported() {
             let options = LintOptions::default().notes(true);
             let compile_options = CompileOptions::default();
             let mut all = lint(&s, &options);
-            let flags = essl_lint::variants::flags(&text, &compile_options);
-            let more = essl_lint::variants::lint(
+            let more = essl_lint::variants::lint_text(
                 &s,
                 &compile_options,
                 &options,
                 &all,
-                &flags,
                 essl_lint::variants::DEFAULT,
             );
             all.extend(more.into_iter().map(|f| f.diagnostic));
