@@ -55,8 +55,10 @@ struct Block {
 }
 
 /// The configurations that turn on each conditional group of `text` the options' defines and
-/// the text's own `#define`s leave undecided, first seen first, each once. Names reserved to
-/// the implementation (`GL_…`, `__…`) and names the text defines itself are never defined.
+/// the text's own `#define`s leave undecided, first seen first, each once, where a group holds
+/// something a rule looks at (a call of a function a rule reads, `discard`, a division, a
+/// local declared without a value). Names reserved to the implementation (`GL_…`, `__…`) and
+/// names the text defines itself are never defined.
 pub fn flags(text: &str, options: &CompileOptions) -> Vec<Variant> {
     // Most shaders have no conditional: a search for `#if` is all they cost.
     let conditional = text.match_indices('#').any(|(i, _)| {
