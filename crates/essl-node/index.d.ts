@@ -109,7 +109,7 @@ export interface CheckOptions {
   /** Every warning counts as an error. */
   denyWarnings?: boolean;
   /** How many `#ifdef` configurations besides the one `defines` selects the lints also check
-   * (each flag's code, then every flag together), as essl.toml's `variants`: 16 by default,
+   * (each flag's code, then every flag together), as essl.toml's `variants`: 64 by default,
    * `false` or 0 for none, `true` for the default. */
   variants?: number | boolean;
 }

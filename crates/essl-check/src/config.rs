@@ -13,8 +13,8 @@
 //! # "three" (three.js materials).
 //! preset = "luma"
 //! # How many `#ifdef` configurations besides the one the defines select the lints also
-//! # check (each flag's code, and all flags together): 16 by default, 0 for none.
-//! variants = 16
+//! # check (each flag's code, and all flags together): 64 by default, 0 for none.
+//! variants = 64
 //! # Files that are chunks — code to put into shaders, checked as a library (no `main`, names
 //! # free for the including shader to declare) — as globs relative to this file's folder.
 //! chunks = ["shaders/chunks/**"]

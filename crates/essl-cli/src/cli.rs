@@ -343,7 +343,7 @@ struct LintArgs {
 
     /// How many `#ifdef` configurations besides the one the defines select the lints also
     /// check — the code of each flag such as `USE_FOG`, then every flag together — reporting
-    /// what they find there with the macros named (16 by default; 0: none). Overrides
+    /// what they find there with the macros named (64 by default; 0: none). Overrides
     /// essl.toml's `variants`.
     #[arg(long, value_name = "N")]
     variants: Option<usize>,

@@ -22,9 +22,10 @@ use essl::{CompileOptions, Shader};
 use crate::LintOptions;
 
 /// How many configurations of [`flags`] a check lints by default, besides the one it compiled
-/// (and the one with all of them that compile): enough for an engine material's flags (Babylon's
-/// fire material has 17), a bound on the cost of one with hundreds.
-pub const DEFAULT: usize = 16;
+/// (and the one with all of them that compile): every group of the corpora's engine materials
+/// (16 left hazards of Babylon's particles and normal material unreached), a bound on the cost
+/// of a text with hundreds.
+pub const DEFAULT: usize = 64;
 
 /// The most macros one configuration defines: groups nested deeper than that in flags are left
 /// alone.
@@ -56,8 +57,8 @@ struct Block {
 
 /// The configurations that turn on each conditional group of `text` the options' defines and
 /// the text's own `#define`s leave undecided, first seen first, each once, where a group holds
-/// something a rule looks at (a call of a function a rule reads, `discard`, a division, a
-/// local declared without a value). Names reserved to the implementation (`GL_…`, `__…`) and
+/// something a rule looks at (a call of a function other than a constructor, `discard`, a
+/// division, a local declared without a value). Names reserved to the implementation (`GL_…`, `__…`) and
 /// names the text defines itself are never defined.
 pub fn flags(text: &str, options: &CompileOptions) -> Vec<Variant> {
     // Most shaders have no conditional: a search for `#if` is all they cost.
@@ -155,6 +156,29 @@ pub fn flags(text: &str, options: &CompileOptions) -> Vec<Variant> {
     out
 }
 
+/// Whether `code` calls a function other than a constructor: a function the text defines
+/// may hold the hazard (Cesium's `czm_nearFarScalar`, called only under
+/// `EYE_DISTANCE_SCALING`), and a built-in one computes a value a finding elsewhere reads.
+fn calls_a_function(code: &str) -> bool {
+    const NOT_CALLS: [&str; 6] = ["if", "for", "while", "switch", "return", "layout"];
+    code.match_indices('(').any(|(i, _)| {
+        let before = code[..i].trim_end();
+        let start = before
+            .rfind(|c: char| !c.is_ascii_alphanumeric() && c != '_')
+            .map_or(0, |j| j + 1);
+        let name = &before[start..];
+        let constructor = ["float", "int", "uint", "bool"].contains(&name)
+            || ["vec", "ivec", "uvec", "bvec", "mat"].iter().any(|p| {
+                name.strip_prefix(p)
+                    .is_some_and(|r| r.len() <= 3 && !r.is_empty())
+            });
+        !name.is_empty()
+            && !name.starts_with(|c: char| c.is_ascii_digit())
+            && !constructor
+            && !NOT_CALLS.contains(&name)
+    })
+}
+
 /// The built-in functions whose arguments a rule looks at, and `discard`.
 const HAZARD_WORDS: [&str; 24] = [
     "pow",
@@ -184,8 +208,9 @@ const HAZARD_WORDS: [&str; 24] = [
 ];
 
 /// Whether a group's code has something a rule looks at: a division or remainder, a call of
-/// one of [`HAZARD_WORDS`], a local declared without a value. A group with none (declarations,
-/// a constant, a colour) rarely changes a finding elsewhere, and compiling its configuration
+/// one of [`HAZARD_WORDS`] or of any function but a constructor, a local declared without a
+/// value. A group with none (declarations, a constant, a colour) rarely changes a finding
+/// elsewhere, and compiling its configuration
 /// would be most of the cost on code without hazards (the dEQP preprocessor tests).
 fn hazardous(text: &str) -> bool {
     let mut in_comment = false;
@@ -197,6 +222,7 @@ fn hazardous(text: &str) -> bool {
     let division = code.contains(['/', '%']);
     division
         || identifiers(code).any(|(w, _)| HAZARD_WORDS.contains(&w))
+        || calls_a_function(code)
         || code.lines().any(|l| {
             // `float x;`: a local a path may read unwritten.
             let t = l.trim();
@@ -516,8 +542,10 @@ mod tests {
     #[test]
     fn groups_without_a_hazard_are_left_alone() {
         let text = "#ifdef A\nuniform float u; // a/b\nc = vec4(1.0); /* x */\n#endif\n\
-                    #ifdef B\nfloat x;\n#endif\n#ifdef C\ny = normalize(d);\n#endif\n";
-        assert_eq!(names(text), [vec!["B"], vec!["C"]]);
+                    #ifdef B\nfloat x;\n#endif\n#ifdef C\ny = normalize(d);\n#endif\n\
+                    #ifdef D\nif (k) { c = mat3x2(1.0)[0].xyxy; }\n#endif\n\
+                    #ifdef E\nc = scale(k);\n#endif\n";
+        assert_eq!(names(text), [vec!["B"], vec!["C"], vec!["E"]]);
     }
 
     #[test]

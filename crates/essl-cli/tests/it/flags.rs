@@ -170,7 +170,7 @@ fn essl_toml_is_found_upward_and_shown_by_essl_config() {
     assert!(shown.contains("\n[defines]\nBROKEN = \"1\"\n"), "{shown}");
     assert!(shown.contains("fragment = [\"*.fs.glsl\"]"), "{shown}");
     assert!(shown.contains("pow-negative-base = \"allow\""), "{shown}");
-    assert!(shown.contains("\nvariants = 16\n"), "{shown}");
+    assert!(shown.contains("\nvariants = 64\n"), "{shown}");
     std::fs::write(dir.path().join("essl.toml"), "targt = \"webgl2\"\n").unwrap();
     let o = essl(&["lint", "shaders"], dir.path());
     assert_eq!(o.status.code(), Some(2));
