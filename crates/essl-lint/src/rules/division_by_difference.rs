@@ -149,7 +149,7 @@ fn check(cx: &Cx, out: &mut Vec<Diagnostic>) {
                 continue;
             }
             if !v.facts.has(Facts::DIFF) {
-                if let Some(diag) = texel_divisor(cx, &div, v.facts) {
+                if let Some(diag) = texel_divisor(cx, &div) {
                     out.push(diag);
                 } else if let Some(diag) = black_divisor(cx, &div, v) {
                     out.push(diag);
@@ -242,9 +242,9 @@ fn zero_at_texel_end(cx: &Cx, id: usize, d: naga::Handle<E>, facts: Facts) -> bo
 /// The finding for a divisor `d` of `h` that is a texel (or a colour input) as such, whose
 /// range ends at 0: `c.rgb / c.a` un-premultiplies by an alpha that is 0 wherever the texture
 /// is transparent, `x / t.r` divides by 0 wherever it is black.
-fn texel_divisor(cx: &Cx, div: &Division, facts: Facts) -> Option<Diagnostic> {
+fn texel_divisor(cx: &Cx, div: &Division) -> Option<Diagnostic> {
     let Division { f, id, d, .. } = *div;
-    if !facts.has(Facts::EXT) || !zero_at_texel_end(cx, id, d, facts) {
+    if !cx.black_texel(id, d) {
         return None;
     }
     let span = unguarded(cx, div)?;

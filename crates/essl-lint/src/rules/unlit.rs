@@ -172,7 +172,7 @@ impl Cx<'_> {
     }
 
     /// Whether `x` is a texel (or a colour input) as such whose ordinary range ends at 0.
-    fn black_texel(&self, id: usize, x: Handle<E>) -> bool {
+    pub(super) fn black_texel(&self, id: usize, x: Handle<E>) -> bool {
         let Some(n) = self.sound().num(id, x) else {
             return false;
         };
