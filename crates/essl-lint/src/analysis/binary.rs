@@ -473,9 +473,18 @@ fn vector_times_matrix(v: &Num, m: &[Val], deps: Facts) -> Option<Val> {
         .collect();
     let invertible = cols.iter().all(|c| c.facts.has(Facts::NZ));
     let nn = non_negative_entries(&cols) && v.facts.has(Facts::NN);
+    // A direction (w = 0) times an invertible affine matrix, `vec4(n, 0.0) * inverseModel`
+    // (the inverse transpose applied to a normal): its xyz is the upper 3×3 block's transpose
+    // times `n`, not zero for a non-zero `n`.
+    let nz3 = invertible
+        && cols.len() == 4
+        && v.n == 4
+        && v.c[3].as_point() == Some(0.0)
+        && v.facts.has(Facts::NZ3);
     Some(Val::Num(Num::from_components(
         &comps,
         deps.set(Facts::NZ, invertible && v.facts.has(Facts::NZ))
+            .set(Facts::NZ3, nz3)
             .set(Facts::NN, nn),
     )))
 }

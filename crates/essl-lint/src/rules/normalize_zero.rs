@@ -28,7 +28,14 @@ declare_rule! {
     /// normal, a tangent, a particle's direction — as such or through a transform
     /// (`normalize(normalMatrix * normal)`, three.js's `normalize(transformedNormal)`): the host's
     /// vertex data holds the zero vector for a degenerate triangle's computed normal, or where the
-    /// mesh lacks the buffer (read as 0).
+    /// mesh lacks the buffer (read as 0). A row vector through the inverse model matrix
+    /// (`(vec4(normal, 0.0) * inverseModel).xyz`, the inverse transpose) counts as such a transform.
+    ///
+    /// And, as a note, `normalize` of a difference of two vertex attributes, or of a function's
+    /// parameters where its callers pass inputs as such, or of a product with one: a line
+    /// renderer's segment direction `normalize((b - a) * scale)`, lygia's `lookAt(eye, target)`
+    /// normalizing `target - eye` — the zero vector where the data repeats a point or a caller
+    /// passes the same point twice.
     ///
     /// And `normalize` of a texel as such (`normalize(texture(gNormal, uv).rgb)`): the zero vector
     /// for every black texel, the background a G-buffer is cleared to.
@@ -80,7 +87,8 @@ declare_rule! {
     /// Severity: a cross product with a vector fixed for the draw is a warning (a light pointing
     /// straight down is ordinary), as is a gradient (flat regions are in every picture) and a
     /// texel (black ones are); `normalize` of a per-draw difference is a note when one uniform
-    /// alone reaches it, and of a direction attribute always.
+    /// alone reaches it, and of a direction attribute or a difference of attributes or parameters
+    /// always.
     ///
     /// ## References
     /// - GLSL ES 3.00 specification, §8.4 Geometric Functions (normalize: "a vector in the same
@@ -130,6 +138,7 @@ fn check(cx: &Cx, out: &mut Vec<Diagnostic>) {
                 && v.facts.any(Facts::INPUT.with(Facts::TEXTURE))
                 && !gradient
             {
+                out.extend(caller_difference(cx, f, id, h, x));
                 continue;
             }
             // `dot(v, v) > 1e-12 ? normalize(v) : fallback`, `if (length(v) > 0.0)`.
@@ -414,6 +423,83 @@ fn attribute_direction(
         .with_note("attributes are the host's vertex data: a degenerate triangle's normal, or a buffer the mesh lacks (read as 0), is the zero vector")
         .with_help("test the length first (`dot(v, v) > 1e-12`) and choose a fallback direction"),
     )
+}
+
+/// The note for `normalize(x)` of a difference of values callers pass as such, or of a vertex
+/// shader's attributes, or a product with one (a product is zero wherever a factor is):
+/// lygia's `lookAt(eye, target)` normalizing `target - eye`, a line renderer's segment direction
+/// `normalize((b - a) * scale)` of two positions a vertex holds — the zero vector where a caller
+/// passes the same point twice, or the data repeats a point.
+fn caller_difference(
+    cx: &Cx,
+    f: &Function,
+    id: usize,
+    call: Handle<E>,
+    x: Handle<E>,
+) -> Option<Diagnostic> {
+    let d = difference_factor(cx, f, id, x, 0)?;
+    let found = super::parameters::caller_value(cx, f, id, d)?;
+    if found.names.len() < 2 {
+        return None;
+    }
+    let g = cx.guards(f, id, call);
+    if cx.refined(f, id, x, &g).is_none_or(|v| !v.may_be_zero())
+        || cx.nonzero(f, id, x, &g)
+        || length_guarded(cx, f, id, x, &g)
+    {
+        return None;
+    }
+    let list = found.list();
+    let (whose, equal) = if found.attribute {
+        ("attributes", "a vertex may hold equal")
+    } else {
+        ("parameters", "callers may pass equal")
+    };
+    let mut d = Diagnostic::rule_warning(
+        NormalizeZero::RULE.id,
+        format!("`normalize` of a difference of the {whose} {list}, which {equal}"),
+        cx.span(f, x),
+    )
+    .with_label(format!(
+        "{} is the zero vector wherever they are equal",
+        cx.what(f, id, x)
+    ))
+    .with_note("normalize(v) divides by length(v): 0 / 0 for the zero vector")
+    .with_note(if found.attribute {
+        "attributes are the host's vertex data: a repeated point, a segment of length 0, makes them equal"
+    } else {
+        found.why()
+    })
+    .with_help("test the length first (`dot(v, v) > 1e-12`) and choose a fallback direction");
+    d.severity = essl::diagnostic::Severity::Note;
+    Some(d)
+}
+
+/// `h` itself where it is a difference, or a factor of a product that is (`diff * scale`);
+/// through locals.
+fn difference_factor(
+    cx: &Cx,
+    f: &Function,
+    id: usize,
+    h: Handle<E>,
+    depth: u32,
+) -> Option<Handle<E>> {
+    if depth > 8 {
+        return None;
+    }
+    match f.expressions[resolve(f, cx.sound(), id, h)] {
+        E::Binary {
+            op: naga::BinaryOperator::Subtract,
+            ..
+        } => Some(h),
+        E::Binary {
+            op: naga::BinaryOperator::Multiply,
+            left,
+            right,
+        } => difference_factor(cx, f, id, left, depth + 1)
+            .or_else(|| difference_factor(cx, f, id, right, depth + 1)),
+        _ => None,
+    }
 }
 
 /// Whether a guard bounds `length(x)` or `dot(x, x)` above 0 (`length(n) > 0.0 ? normalize(n)

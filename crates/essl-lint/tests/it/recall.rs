@@ -848,6 +848,19 @@ const PARAMETERS: &[(&str, &str, &str, Option<&str>)] = &[
         "  r = a2(v_uv);",
         None,
     ),
+    // A difference of two points a caller passes: the zero vector where they are the same.
+    (
+        "normalize-zero",
+        "vec3 look(vec3 eye, vec3 target) { return normalize(target - eye); }",
+        "  r = look(v_pos, v_h).x;",
+        Some("vec3 look(vec3 eye, vec3 target) { return normalize(target - eye); }"),
+    ),
+    (
+        "normalize-zero",
+        "vec3 look(vec3 eye, vec3 target) {\n  vec3 d = target - eye;\n  return dot(d, d) > 1e-12 ? normalize(d) : vec3(0.0, 0.0, 1.0);\n}",
+        "  r = look(v_pos, v_h).x;",
+        None,
+    ),
 ];
 
 #[test]
@@ -913,7 +926,8 @@ fn divisions_by_attributes_are_notes() {
 fn normalized_direction_attributes_are_notes() {
     let notes = |body: &str| {
         let text = format!(
-            "#version 300 es\nuniform mat3 u_nm;\nin vec3 a_normal; in vec3 a_position;\n\
+            "#version 300 es\nuniform mat3 u_nm; uniform mat4 u_inverseModel;\n\
+             in vec3 a_normal; in vec3 a_position; in vec3 a_next;\n\
              out vec3 v_n;\nvoid main() {{\n{body}\n  gl_Position = vec4(a_position, 1.0);\n}}\n"
         );
         vertex_notes("normalize-zero", &text)
@@ -921,6 +935,10 @@ fn normalized_direction_attributes_are_notes() {
     for body in [
         "  v_n = normalize(u_nm * a_normal);",
         "  v_n = normalize(a_normal) * 0.5 + 0.5;",
+        // A row vector times the inverse model matrix: its inverse transpose on the normal.
+        "  v_n = normalize((vec4(a_normal, 0.0) * u_inverseModel).xyz);",
+        // A segment's direction from two positions a vertex holds, scaled.
+        "  v_n = normalize((a_next - a_position) * vec3(2.0));",
     ] {
         assert_eq!(notes(body).len(), 1, "{body}");
     }
