@@ -143,6 +143,20 @@ impl Cx<'_> {
         let E::Binary { op, left, right } = f.expressions[c] else {
             return;
         };
+        // One of two holds (`!(a && b)`, `a || b`): what each alone keeps from 0 is not 0
+        // (`if (… || (det > -EPS && det < EPS)) return;`).
+        if matches!((op, pol), (Bo::LogicalAnd, false) | (Bo::LogicalOr, true)) {
+            let (mut a, mut b) = (Guards::default(), Guards::default());
+            self.relations(f, id, left, pol, &mut a);
+            self.relations(f, id, right, pol, &mut b);
+            let same = |x: Handle<E>, y: Handle<E>| self.sound().same(f, id, x, y);
+            for x in a.nonzero {
+                if b.nonzero.iter().any(|&y| same(x, y)) {
+                    g.nonzero.push(x);
+                }
+            }
+            return;
+        }
         let op = if pol {
             op
         } else {
@@ -331,6 +345,14 @@ impl Cx<'_> {
             return true;
         }
         let r = symbolic::resolve(f, self.sound(), id, x);
+        // A copy the guard did not name: `if (b == 0.0) return; float duration = b; … / duration`.
+        if r != x
+            && g.nonzero
+                .iter()
+                .any(|&y| same(symbolic::resolve(f, self.sound(), id, y), r))
+        {
+            return true;
+        }
         // A product of factors the guards (or constants) keep from 0: `nl * nv` under
         // `nl > 0.0 && nv > 0.0`.
         if let E::Binary {

@@ -112,6 +112,13 @@ const HAZARDS: &[Hazard] = &[
     ),
     ("division-by-difference", "texture", "  r = t.r / (1.0 - t.a);", W),
     ("division-by-difference", "texture", "  r = t.r / t.a;", W),
+    // A disjunction that leaves the divisor free on one side is no guard.
+    (
+        "division-by-difference",
+        "texture",
+        "  float b = t.r;\n  if (v_x > 0.5 || (b > -1e-6 && v_x < 0.2)) { o = vec4(0.0); return; }\n  r = 1.0 / b;",
+        W,
+    ),
     // Sums, products and `dot`s of texels: 0 wherever the texture is black (a luminance, the
     // X + Y + Z of a chromaticity).
     (
@@ -383,6 +390,16 @@ const HAZARDS: &[Hazard] = &[
 
 /// The guarded twins: (rule, body) with no finding of the rule, notes included.
 const GUARDED: &[(&str, &str)] = &[
+    // An early return on either of two conditions, one of them a band around 0; and one on
+    // the divisor's own value, divided through a copy.
+    (
+        "division-by-difference",
+        "  float b = t.r;\n  if (v_x > 0.5 || (b > -1e-6 && b < 1e-6)) { o = vec4(0.0); return; }\n  r = 1.0 / b;",
+    ),
+    (
+        "division-by-difference",
+        "  float b = abs(t.r);\n  if (v_x > 0.5 || b == 0.0) { o = vec4(0.0); return; }\n  float d = b;\n  r = 1.0 / d;",
+    ),
     // A direction not named a normal, and one that varies per pixel through a view ray: the
     // axis at isolated pixels.
     ("domain-atan2", "  vec3 nn = normalize(v_h);\n  r = atan(nn.y, nn.x);"),
