@@ -46,7 +46,9 @@ declare_rule! {
     /// `near - far`, `0.5 / (res - 1.0)` (a texture one texel wide). The same, as a note, for a
     /// vertex shader's division by its attributes as such: a particle's `age / a_life`, a
     /// skinning weight's `1.0 / (w.x + w.y + w.z + w.w)` — values of the host's vertex data,
-    /// 0 for a vertex that holds 0.
+    /// 0 for a vertex that holds 0. And the length of a normal or tangent attribute through a
+    /// transform (`r / length((world * vec4(cross(normal, tangent), 0.0)).xyz)`), 0 for a
+    /// vertex of a mesh without the buffer (read as the zero vector).
     ///
     /// ## Why is this bad?
     /// Two parameters a user sets independently are equal sooner or later — a spot light with the
@@ -156,6 +158,8 @@ fn check(cx: &Cx, out: &mut Vec<Diagnostic>) {
                 } else if let Some(diag) = setting_divisor(cx, &div) {
                     out.push(diag);
                 } else if let Some(diag) = parameter_divisor(cx, &div) {
+                    out.push(diag);
+                } else if let Some(diag) = direction_divisor(cx, &div) {
                     out.push(diag);
                 }
                 continue;
@@ -450,6 +454,42 @@ fn region_divisor(
     if !zspan.is_empty() && !inside(zspan, span) && !inside(span, zspan) {
         diag = diag.with_secondary(zspan, text.secondary);
     }
+    Some(diag)
+}
+
+/// The note for a vertex shader's division by the length of a direction attribute, through
+/// a transform (`r / length((world * vec4(cross(normal, tangent), 0.0)).xyz)`): 0 for a vertex
+/// whose normal or tangent is the zero vector, as a mesh without the buffer reads it.
+fn direction_divisor(cx: &Cx, div: &Division) -> Option<Diagnostic> {
+    let Division { f, id, d, .. } = *div;
+    let E::Math {
+        fun: naga::MathFunction::Length,
+        arg,
+        ..
+    } = f.expressions[crate::symbolic::resolve(f, cx.sound(), id, d)]
+    else {
+        return None;
+    };
+    let list = super::normalize_zero::direction_attributes(cx, id, arg)?;
+    let span = unguarded(cx, div)?;
+    let attribute = if list.contains(", ") {
+        "a vector of the attributes"
+    } else {
+        "the attribute"
+    };
+    let mut diag = Diagnostic::rule_warning(
+        DivisionByDifference::RULE.id,
+        format!("division by the length of {attribute} {list}, which a vertex may hold as the zero vector"),
+        span,
+    )
+    .with_label(format!(
+        "{} is 0 for a vertex that holds {list} as the zero vector",
+        cx.what(f, id, d)
+    ))
+    .with_help("guard the divisor: `max(x, 1e-4)`")
+    .with_fix(floor_fix(cx, span))
+    .with_note("attributes are the host's vertex data: a degenerate triangle's normal, or a buffer the mesh lacks (read as 0), is the zero vector");
+    diag.severity = essl::diagnostic::Severity::Note;
     Some(diag)
 }
 

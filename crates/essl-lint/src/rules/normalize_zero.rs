@@ -382,6 +382,22 @@ const DIRECTION: &[&str] = &[
     "dir",
 ];
 
+/// The attributes, in backticks, of a vertex shader's value `x` built from attributes that
+/// hold a direction (a normal, a tangent) alone, with uniforms and constants; `None` for
+/// anything else (a position, a texel, another stage).
+pub(super) fn direction_attributes(cx: &Cx, id: usize, x: Handle<E>) -> Option<String> {
+    if cx.module.entry_points.first()?.stage != naga::ShaderStage::Vertex {
+        return None;
+    }
+    let o = cx.origin(&[(id, x)]);
+    let direction = |n: &String| crate::analysis::names::says_any(n, DIRECTION);
+    if o.inputs.is_empty() || o.texels || o.unknown || !o.inputs.iter().all(direction) {
+        return None;
+    }
+    let list: Vec<String> = o.inputs.iter().map(|n| format!("`{n}`")).collect();
+    Some(list.join(", "))
+}
+
 /// The note for `normalize(x)` in a vertex shader of a vector not zero unless an attribute that
 /// holds a direction is (a normal through the normal matrix, `(M * vec4(tangent, 0.0)).xyz`):
 /// a vertex whose normal is the zero vector — a degenerate triangle's, a buffer the mesh lacks —
@@ -393,14 +409,7 @@ fn attribute_direction(
     call: Handle<E>,
     x: Handle<E>,
 ) -> Option<Diagnostic> {
-    if cx.module.entry_points.first()?.stage != naga::ShaderStage::Vertex {
-        return None;
-    }
-    let o = cx.origin(&[(id, x)]);
-    let direction = |n: &String| crate::analysis::names::says_any(n, DIRECTION);
-    if o.inputs.is_empty() || o.texels || o.unknown || !o.inputs.iter().all(direction) {
-        return None;
-    }
+    let list = direction_attributes(cx, id, x)?;
     let g = cx.guards(f, id, call);
     // The analysis takes an attribute as such to be non-zero: only a guard that rules out a
     // zero the unguarded value may be counts.
@@ -409,8 +418,6 @@ fn attribute_direction(
     if cx.nonzero(f, id, x, &g) || (unguarded && guarded) || length_guarded(cx, f, id, x, &g) {
         return None;
     }
-    let list: Vec<String> = o.inputs.iter().map(|n| format!("`{n}`")).collect();
-    let list = list.join(", ");
     let span = cx.span(f, x);
     Some(
         Diagnostic::rule_note(

@@ -918,6 +918,7 @@ fn divisions_by_attributes_are_notes() {
     let notes = |body: &str| {
         let text = format!(
             "#version 300 es\nin vec4 a_pos; in float a_life; in float a_age; in vec4 a_weight;\n\
+             in vec3 a_normal; in vec3 a_tangent; uniform mat4 u_world;\n\
              out float v_t;\nvoid main() {{\n{body}\n  gl_Position = a_pos;\n}}\n"
         );
         vertex_notes("division-by-difference", &text)
@@ -925,6 +926,8 @@ fn divisions_by_attributes_are_notes() {
     for body in [
         "  v_t = a_age / a_life;",
         "  v_t = 1.0 / (a_weight.x + a_weight.y + a_weight.z + a_weight.w);",
+        // A direction the normal and tangent make, 0 for a mesh without tangents.
+        "  v_t = 1.0 / length((u_world * vec4(cross(a_normal, a_tangent), 0.0)).xyz);",
     ] {
         assert_eq!(notes(body).len(), 1, "{body}");
     }
@@ -932,6 +935,7 @@ fn divisions_by_attributes_are_notes() {
         "  v_t = a_age / max(a_life, 1e-4);",
         "  v_t = a_pos.x / a_pos.w;",
         "  v_t = a_age / (a_life + 1.0);",
+        "  v_t = 1.0 / max(length((u_world * vec4(cross(a_normal, a_tangent), 0.0)).xyz), 1e-4);",
     ] {
         assert!(notes(body).is_empty(), "{body}: {:?}", notes(body));
     }
