@@ -12,6 +12,7 @@ pub(crate) mod origin;
 mod parameters;
 pub(crate) mod rule;
 mod unlit;
+mod vanishing;
 
 mod acos_domain;
 mod asin_domain;

@@ -29,7 +29,11 @@ declare_rule! {
     /// (`normalize(normalMatrix * normal)`, three.js's `normalize(transformedNormal)`): the host's
     /// vertex data holds the zero vector for a degenerate triangle's computed normal, or where the
     /// mesh lacks the buffer (read as 0). A row vector through the inverse model matrix
-    /// (`(vec4(normal, 0.0) * inverseModel).xyz`, the inverse transpose) counts as such a transform.
+    /// (`(vec4(normal, 0.0) * inverseModel).xyz`, the inverse transpose) counts as such a
+    /// transform, and so does whatever is the zero vector wherever the attribute is — a
+    /// Gram–Schmidt step `T - dot(T, N) * N`, a cross product with another direction — but not
+    /// a vector decoded from the attribute's components (an octahedral encoding's
+    /// `vec3(e, 1.0 - abs(e.x) - abs(e.y))`, never zero).
     ///
     /// And, as a note, `normalize` of a difference of two vertex attributes, or of a function's
     /// parameters where its callers pass inputs as such, or of a product with one: a line
@@ -138,7 +142,18 @@ fn check(cx: &Cx, out: &mut Vec<Diagnostic>) {
                 && v.facts.any(Facts::INPUT.with(Facts::TEXTURE))
                 && !gradient
             {
-                out.extend(caller_difference(cx, f, id, h, x));
+                // A cross product of vectors built perpendicular, or with an axis chosen away
+                // from the other, is not zero (below) whatever attributes it is built from.
+                let kept = v.facts.any(Facts::CROSS)
+                    && (orthogonal_cross(cx, f, id, x)
+                        || axis_chosen_away(cx, f, id, x)
+                        || tilted_axis(cx, f, id, x));
+                if !kept {
+                    out.extend(
+                        attribute_direction(cx, f, id, h, x)
+                            .or_else(|| caller_difference(cx, f, id, h, x)),
+                    );
+                }
                 continue;
             }
             // `dot(v, v) > 1e-12 ? normalize(v) : fallback`, `if (length(v) > 0.0)`.
@@ -410,6 +425,9 @@ fn attribute_direction(
     x: Handle<E>,
 ) -> Option<Diagnostic> {
     let list = direction_attributes(cx, id, x)?;
+    if !super::vanishing::with_attributes(cx, f, id, x) {
+        return None;
+    }
     let g = cx.guards(f, id, call);
     // The analysis takes an attribute as such to be non-zero: only a guard that rules out a
     // zero the unguarded value may be counts.

@@ -298,7 +298,11 @@ fn is_vec4(cx: &Cx, id: usize, h: Handle<E>) -> bool {
 
 /// The attribute a load from `pointer` reads, in a vertex shader: a private global (the entry
 /// point's copy of an input), whole or a component.
-fn vertex_input(cx: &Cx, f: &Function, pointer: Handle<E>) -> Option<Handle<naga::GlobalVariable>> {
+pub(super) fn vertex_input(
+    cx: &Cx,
+    f: &Function,
+    pointer: Handle<E>,
+) -> Option<Handle<naga::GlobalVariable>> {
     let ep = cx.module.entry_points.first()?;
     if ep.stage != naga::ShaderStage::Vertex {
         return None;

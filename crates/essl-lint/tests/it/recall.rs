@@ -948,7 +948,7 @@ fn normalized_direction_attributes_are_notes() {
     let notes = |body: &str| {
         let text = format!(
             "#version 300 es\nuniform mat3 u_nm; uniform mat4 u_inverseModel;\n\
-             in vec3 a_normal; in vec3 a_position; in vec3 a_next;\n\
+             in vec3 a_normal; in vec3 a_position; in vec3 a_next; in vec3 a_tangent;\n\
              out vec3 v_n;\nvoid main() {{\n{body}\n  gl_Position = vec4(a_position, 1.0);\n}}\n"
         );
         vertex_notes("normalize-zero", &text)
@@ -960,11 +960,15 @@ fn normalized_direction_attributes_are_notes() {
         "  v_n = normalize((vec4(a_normal, 0.0) * u_inverseModel).xyz);",
         // A segment's direction from two positions a vertex holds, scaled.
         "  v_n = normalize((a_next - a_position) * vec3(2.0));",
+        // Gram-Schmidt: the zero vector for a zero tangent, or one along the normal.
+        "  v_n = normalize(a_tangent - dot(a_tangent, a_normal) * a_normal);",
     ] {
         assert_eq!(notes(body).len(), 1, "{body}");
     }
     for quiet in [
         "  v_n = normalize(a_position);",
+        // An octahedral decoding is not zero where the attribute is.
+        "  vec2 e = a_normal.xy;\n  v_n = normalize(vec3(e, 1.0 - abs(e.x) - abs(e.y)));",
         "  vec3 n = u_nm * a_normal;\n  v_n = dot(n, n) > 1e-12 ? normalize(n) : vec3(0.0, 0.0, 1.0);",
         "  v_n = length(a_normal) > 0.0 ? normalize(a_normal) : vec3(0.0, 0.0, 1.0);",
     ] {

@@ -1,0 +1,108 @@
+//! Whether a vertex shader's value is degenerate — the zero vector, or NaN — wherever its
+//! attributes are the zero vector: what a mesh without a normal or tangent buffer (read as 0)
+//! makes of it.
+//!
+//! A normal through the normal matrix (`normalMatrix * normal`), a direction with `w = 0`
+//! through an affine one (`(M * vec4(tangent, 0.0)).xyz`), a cross product with one, a
+//! Gram–Schmidt step (`T - dot(T, N) * N`) all vanish with the attribute; a vector decoded from
+//! an octahedral encoding (`vec3(e.x, e.y, 1.0 - abs(e.x) - abs(e.y))`) does not, and neither
+//! does a position (`vec4(p, 1.0)`). The test substitutes 0 for every attribute and follows
+//! the operations that keep a zero: products with anything, sums and differences of zeros,
+//! swizzles, constructors of zeros, either value of a `?:` or `mix`, `cross`, `dot`,
+//! `normalize` (NaN), locals and the arguments of every call.
+
+use naga::{BinaryOperator as Bo, Expression as E, Function, Handle, MathFunction as Mf};
+
+use super::Cx;
+
+/// How deep the test follows operands, locals and calls.
+const MAX_DEPTH: u32 = 24;
+
+/// Whether value `h` of function `id` is the zero vector (or NaN) wherever the attributes it
+/// reads are the zero vector.
+pub(super) fn with_attributes(cx: &Cx, f: &Function, id: usize, h: Handle<E>) -> bool {
+    walk(cx, f, id, h, 0, &mut Vec::new())
+}
+
+fn walk(
+    cx: &Cx,
+    f: &Function,
+    id: usize,
+    h: Handle<E>,
+    depth: u32,
+    seen: &mut Vec<(usize, Handle<E>)>,
+) -> bool {
+    if depth > MAX_DEPTH {
+        return false;
+    }
+    macro_rules! go {
+        ($x:expr) => {
+            walk(cx, f, id, $x, depth + 1, seen)
+        };
+    }
+    match f.expressions[h] {
+        E::Literal(_) | E::Constant(_) | E::ZeroValue(_) => cx
+            .sound()
+            .num(id, h)
+            .is_some_and(|n| n.comps().iter().all(|c| c.as_point() == Some(0.0))),
+        E::Load { pointer } if super::parameters::vertex_input(cx, f, pointer).is_some() => true,
+        E::Load { pointer } => {
+            // A local that reads itself (`t = t - dot(t, n) * n`): its other stores decide.
+            if seen.contains(&(id, pointer)) {
+                return true;
+            }
+            seen.push((id, pointer));
+            let stored = cx.stored(f, id, pointer);
+            !stored.is_empty() && stored.into_iter().all(|x| go!(x))
+        }
+        E::Binary {
+            op: Bo::Multiply,
+            left,
+            right,
+        } => go!(left) || go!(right),
+        E::Binary {
+            op: Bo::Add | Bo::Subtract,
+            left,
+            right,
+        } => go!(left) && go!(right),
+        E::Binary {
+            op: Bo::Divide,
+            left,
+            ..
+        } => go!(left),
+        E::Unary { expr, .. } => go!(expr),
+        E::AccessIndex { base: x, .. }
+        | E::Swizzle { vector: x, .. }
+        | E::Splat { value: x, .. }
+        | E::As { expr: x, .. } => go!(x),
+        E::Compose { ref components, .. } => components.iter().all(|&c| go!(c)),
+        E::Select { accept, reject, .. } => go!(accept) && go!(reject),
+        E::Math {
+            fun: Mf::Mix,
+            arg,
+            arg1: Some(b),
+            ..
+        } => go!(arg) && go!(b),
+        E::Math {
+            fun: Mf::Normalize,
+            arg,
+            ..
+        } => go!(arg),
+        E::Math {
+            fun: Mf::Cross | Mf::Dot,
+            arg,
+            arg1: Some(b),
+            ..
+        } => go!(arg) || go!(b),
+        E::FunctionArgument(i) if id < cx.module.functions.len() => {
+            let calls = cx.flows().callers(id);
+            !calls.is_empty()
+                && calls.iter().all(|(caller, args)| {
+                    let g = crate::analysis::function(cx.module, *caller);
+                    args.get(i as usize)
+                        .is_some_and(|&a| walk(cx, g, *caller, a, depth + 1, seen))
+                })
+        }
+        _ => false,
+    }
+}
