@@ -43,7 +43,7 @@ const NORMAL: &[&str] = &["normal", "normals", "nor", "nrm"];
 
 /// The words of an identifier, lower-cased: split at `_`, digits and lower-to-upper case changes
 /// (`v_normalWorld2` → `v`, `normal`, `world`).
-fn words(name: &str) -> Vec<String> {
+pub(crate) fn words(name: &str) -> Vec<String> {
     let mut out = Vec::new();
     let mut cur = String::new();
     let mut prev_lower = false;

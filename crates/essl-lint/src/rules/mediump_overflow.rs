@@ -31,6 +31,12 @@ declare_rule! {
     /// keeps away from zero with a guard below 6.1e-5 (`max(d, 1e-6)`): in 16 bits the guard itself
     /// flushes to zero.
     ///
+    /// And, as a note, a variable declared `lowp` whose name says it holds a length in pixels or
+    /// world units — a width, a blur, an offset, a height, an atlas rectangle (MapLibre's
+    /// `in lowp vec4 a_pattern_from`, `lowp float floorwidth`): `lowp` need only hold (−2, 2).
+    /// Not a `lowp` colour or opacity, a mix factor named for a length (`u_width_t`), nor what a
+    /// `precision lowp float;` default alone makes `lowp`.
+    ///
     /// ## Why is this bad?
     /// Desktop GPUs run `mediump` at 32 bits, so the shader looks fine where it is written; phones run
     /// it at 16 bits, where anything above 65504 is infinity, and `inf - inf`, `0 * inf` and `inf / inf`
@@ -63,14 +69,16 @@ declare_rule! {
     /// - Powers and exponentials of values the shader keeps at most 1 (`pow(clamp(x, 0.0, 1.0), 1.7)`,
     ///   `pow(max(dot(n, h), 0.0), 32.0)` of unit vectors).
     ///
-    /// The values it computes with are ordinary ones (magnitude 10): its findings are warnings.
+    /// The values it computes with are ordinary ones (magnitude 10): its findings are warnings;
+    /// a `lowp` length is a note (GPUs that run `lowp` as 16-bit floats hold it; those that
+    /// implement the minimum clamp it).
     ///
     /// ## References
     /// - GLSL ES 3.00 specification, §4.5.2 Precision Qualifiers (minimum ranges and precisions).
     /// - IEEE 754 binary16: largest finite value 65504, smallest normal 2^-14.
     pub(crate) struct MediumpOverflow {
         id: "mediump-overflow",
-        summary: "`mediump`/`lowp` arithmetic that overflows 65504 for ordinary values, or a divisor that underflows to 0",
+        summary: "`mediump`/`lowp` arithmetic that overflows 65504 for ordinary values, a divisor that underflows to 0, or a length declared `lowp`",
         default_level: Level::Warn,
         check: check,
     }
@@ -116,6 +124,7 @@ fn amplifies(fun: Mf) -> bool {
 }
 
 fn check(cx: &Cx, out: &mut Vec<Diagnostic>) {
+    super::lowp_range::check(cx, MediumpOverflow::RULE.id, out);
     let literal_args = std::cell::OnceCell::new();
     for (id, f) in cx.functions() {
         let uses = Uses {

@@ -8,6 +8,7 @@ mod domain;
 mod flat;
 mod gradient;
 mod guards;
+mod lowp_range;
 pub(crate) mod origin;
 mod parameters;
 pub(crate) mod rule;

@@ -1000,6 +1000,34 @@ fn mediump_overflow_hazards_and_twins() {
     }
 }
 
+/// A length declared `lowp` (range (-2, 2) at the minimum): a note at the declaration; the
+/// same declared `mediump`, a `lowp` colour, a mix factor named for a length, and a `lowp`
+/// that only the default precision gives, quiet.
+#[test]
+fn lowp_lengths_are_notes() {
+    let notes = |text: &str| vertex_notes("mediump-overflow", text);
+    let shader = |decl: &str| {
+        format!(
+            "#version 300 es\n{decl}\nin vec4 a_pos;\nout float v;\n\
+             void main() {{\n  v = dot(vec4(1.0), vec4(a_x));\n  gl_Position = a_pos;\n}}\n"
+        )
+    };
+    for decl in [
+        "in lowp vec4 a_pattern_from;\n#define a_x a_pattern_from",
+        "in lowp float a_floorwidth;\n#define a_x a_floorwidth",
+    ] {
+        assert_eq!(notes(&shader(decl)).len(), 1, "{decl}");
+    }
+    for decl in [
+        "in mediump vec4 a_pattern_from;\n#define a_x a_pattern_from",
+        "in lowp vec4 a_color;\n#define a_x a_color",
+        "uniform lowp float u_width_t;\n#define a_x u_width_t",
+        "precision lowp float;\nin float a_floorwidth;\n#define a_x a_floorwidth",
+    ] {
+        assert!(notes(&shader(decl)).is_empty(), "{decl}");
+    }
+}
+
 /// Every kind of value the suite covers has at least one hazard per rule that can meet it.
 #[test]
 fn every_rule_has_a_hazard_and_a_twin() {
