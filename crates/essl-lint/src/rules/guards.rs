@@ -14,6 +14,9 @@ use crate::interval::Interval;
 use crate::symbolic;
 use crate::value::Num;
 
+/// How many disjunctions deep [`Cx::guards`] reads a condition.
+const MAX_DISJUNCTIONS: u32 = 4;
+
 /// What the conditions under which an expression runs say: the `if`s around it, the branches
 /// of `c ? a : b` it alone feeds, and the `if (…) return;` before it.
 #[derive(Debug, Default)]
@@ -116,19 +119,38 @@ impl Cx<'_> {
         let mut g = Guards::default();
         for (c, pol) in conds {
             g.facts.extend(self.sound().conditions(f, id, c, pol));
-            self.relations(f, id, c, pol, &mut g);
+            self.relations(f, id, c, pol, &mut g, 0);
         }
         g
     }
 
-    fn relations(&self, f: &Function, id: usize, c: Handle<E>, pol: bool, g: &mut Guards) {
+    /// What condition `c` says when it holds (`pol`) or fails; `depth`: how many disjunctions
+    /// enclose it (each side of one is read on its own, so a shared operand is read once per
+    /// path: the depth bounds the work).
+    fn relations(
+        &self,
+        f: &Function,
+        id: usize,
+        c: Handle<E>,
+        pol: bool,
+        g: &mut Guards,
+        depth: u32,
+    ) {
         crate::analysis::condition_atoms(f, c, pol, &mut |atom, pol| {
-            self.atom_relations(f, id, atom, pol, g)
+            self.atom_relations(f, id, atom, pol, g, depth)
         });
     }
 
     /// What one comparison says when it holds (`pol`) or fails: an ordering, a non-zero value.
-    fn atom_relations(&self, f: &Function, id: usize, c: Handle<E>, pol: bool, g: &mut Guards) {
+    fn atom_relations(
+        &self,
+        f: &Function,
+        id: usize,
+        c: Handle<E>,
+        pol: bool,
+        g: &mut Guards,
+        depth: u32,
+    ) {
         // `all(greaterThanEqual(p, q))` holding: `p >= q` in every component.
         if let E::Relational {
             fun: naga::RelationalFunction::All,
@@ -146,9 +168,12 @@ impl Cx<'_> {
         // One of two holds (`!(a && b)`, `a || b`): what each alone keeps from 0 is not 0
         // (`if (… || (det > -EPS && det < EPS)) return;`).
         if matches!((op, pol), (Bo::LogicalAnd, false) | (Bo::LogicalOr, true)) {
+            if depth >= MAX_DISJUNCTIONS {
+                return;
+            }
             let (mut a, mut b) = (Guards::default(), Guards::default());
-            self.relations(f, id, left, pol, &mut a);
-            self.relations(f, id, right, pol, &mut b);
+            self.relations(f, id, left, pol, &mut a, depth + 1);
+            self.relations(f, id, right, pol, &mut b, depth + 1);
             let same = |x: Handle<E>, y: Handle<E>| self.sound().same(f, id, x, y);
             for x in a.nonzero {
                 if b.nonzero.iter().any(|&y| same(x, y)) {

@@ -12,6 +12,7 @@
 //! `normalize` (NaN), locals and the arguments of every call.
 
 use naga::{BinaryOperator as Bo, Expression as E, Function, Handle, MathFunction as Mf};
+use rustc_hash::FxHashMap as HashMap;
 
 use super::Cx;
 
@@ -21,20 +22,32 @@ const MAX_DEPTH: u32 = 24;
 /// Whether value `h` of function `id` is the zero vector (or NaN) wherever the attributes it
 /// reads are the zero vector.
 pub(super) fn with_attributes(cx: &Cx, f: &Function, id: usize, h: Handle<E>) -> bool {
-    walk(cx, f, id, h, 0, &mut Vec::new())
+    walk(cx, f, id, h, 0, &mut Walk::default())
 }
 
-fn walk(
-    cx: &Cx,
-    f: &Function,
-    id: usize,
-    h: Handle<E>,
-    depth: u32,
-    seen: &mut Vec<(usize, Handle<E>)>,
-) -> bool {
+/// What the test has met: the locals it follows (a store that reads the local itself adds
+/// nothing), and the answer for each expression already asked (a shared operand, `t + t`,
+/// is asked once, so the work is linear in the expressions).
+#[derive(Default)]
+struct Walk {
+    locals: Vec<(usize, Handle<E>)>,
+    known: HashMap<(usize, Handle<E>), bool>,
+}
+
+fn walk(cx: &Cx, f: &Function, id: usize, h: Handle<E>, depth: u32, seen: &mut Walk) -> bool {
     if depth > MAX_DEPTH {
         return false;
     }
+    if let Some(&known) = seen.known.get(&(id, h)) {
+        return known;
+    }
+    let answer = vanishes(cx, f, id, h, depth, seen);
+    seen.known.insert((id, h), answer);
+    answer
+}
+
+/// [`walk`]'s answer for `h`, not yet known.
+fn vanishes(cx: &Cx, f: &Function, id: usize, h: Handle<E>, depth: u32, seen: &mut Walk) -> bool {
     macro_rules! go {
         ($x:expr) => {
             walk(cx, f, id, $x, depth + 1, seen)
@@ -48,10 +61,10 @@ fn walk(
         E::Load { pointer } if super::parameters::vertex_input(cx, f, pointer).is_some() => true,
         E::Load { pointer } => {
             // A local that reads itself (`t = t - dot(t, n) * n`): its other stores decide.
-            if seen.contains(&(id, pointer)) {
+            if seen.locals.contains(&(id, pointer)) {
                 return true;
             }
-            seen.push((id, pointer));
+            seen.locals.push((id, pointer));
             let stored = cx.stored(f, id, pointer);
             !stored.is_empty() && stored.into_iter().all(|x| go!(x))
         }
