@@ -488,7 +488,7 @@ fn direction_divisor(cx: &Cx, div: &Division) -> Option<Diagnostic> {
     ))
     .with_help("guard the divisor: `max(x, 1e-4)`")
     .with_fix(floor_fix(cx, span))
-    .with_note("attributes are the host's vertex data: a degenerate triangle's normal, or a buffer the mesh lacks (read as 0), is the zero vector");
+    .with_note(super::normalize_zero::ZERO_DIRECTION);
     diag.severity = essl::diagnostic::Severity::Note;
     Some(diag)
 }

@@ -397,6 +397,9 @@ const DIRECTION: &[&str] = &[
     "dir",
 ];
 
+/// Why a direction attribute may be the zero vector, the note of the findings that need it.
+pub(super) const ZERO_DIRECTION: &str = "attributes are the host's vertex data: a degenerate triangle's normal, or a buffer the mesh lacks (read as 0), is the zero vector";
+
 /// The attributes, in backticks, of a vertex shader's value `x` built from attributes that
 /// hold a direction (a normal, a tangent) alone, with uniforms and constants; `None` for
 /// anything else (a position, a texel, another stage).
@@ -440,12 +443,17 @@ fn attribute_direction(
     Some(
         Diagnostic::rule_note(
             NormalizeZero::RULE.id,
-            format!("`normalize` of the attribute {list}, which a vertex may hold as the zero vector"),
+            format!(
+                "`normalize` of the attribute {list}, which a vertex may hold as the zero vector"
+            ),
             span,
         )
-        .with_label(format!("{} is the zero vector for a vertex whose {list} is", cx.what(f, id, x)))
+        .with_label(format!(
+            "{} is the zero vector for a vertex whose {list} is",
+            cx.what(f, id, x)
+        ))
         .with_note("normalize(v) divides by length(v): 0 / 0 for the zero vector")
-        .with_note("attributes are the host's vertex data: a degenerate triangle's normal, or a buffer the mesh lacks (read as 0), is the zero vector")
+        .with_note(ZERO_DIRECTION)
         .with_help("test the length first (`dot(v, v) > 1e-12`) and choose a fallback direction"),
     )
 }
