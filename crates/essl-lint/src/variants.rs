@@ -163,9 +163,13 @@ fn calls_a_function(code: &str) -> bool {
     const NOT_CALLS: [&str; 6] = ["if", "for", "while", "switch", "return", "layout"];
     code.match_indices('(').any(|(i, _)| {
         let before = code[..i].trim_end();
+        // After the last character that is not part of a name (any width: the text may
+        // hold U+FFFD where the file was not UTF-8).
         let start = before
-            .rfind(|c: char| !c.is_ascii_alphanumeric() && c != '_')
-            .map_or(0, |j| j + 1);
+            .char_indices()
+            .rev()
+            .find(|&(_, c)| !c.is_ascii_alphanumeric() && c != '_')
+            .map_or(0, |(j, c)| j + c.len_utf8());
         let name = &before[start..];
         let constructor = ["float", "int", "uint", "bool"].contains(&name)
             || ["vec", "ivec", "uvec", "bvec", "mat"].iter().any(|p| {
@@ -524,6 +528,16 @@ mod tests {
             names(text),
             [vec!["A"], vec!["B"], vec!["C"], vec!["D"], vec!["E"]]
         );
+    }
+
+    #[test]
+    fn a_wide_character_before_a_call() {
+        // The text of a file that was not UTF-8 holds U+FFFD, three bytes wide.
+        assert!(calls_a_function("x = \u{fffd}f(1.0);"));
+        assert!(!calls_a_function("x = \u{fffd}vec4(1.0);"));
+        assert!(!calls_a_function("\u{fffd}(1.0)"));
+        let text = "#ifdef A\n  gl_Position = \u{fffd}f(1.0);\n#endif\n";
+        assert_eq!(names(text), [vec!["A"]]);
     }
 
     #[test]

@@ -471,6 +471,9 @@ fn direction_divisor(cx: &Cx, div: &Division) -> Option<Diagnostic> {
         return None;
     };
     let list = super::normalize_zero::direction_attributes(cx, id, arg)?;
+    if !super::vanishing::with_attributes(cx, f, id, arg) {
+        return None;
+    }
     let span = unguarded(cx, div)?;
     let attribute = if list.contains(", ") {
         "a vector of the attributes"

@@ -3,7 +3,7 @@
 //! a line width, a blur, an offset, an atlas rectangle or a building's height leave it.
 //!
 //! GPUs that compute `lowp` as 16-bit floats hold such values; those that implement the
-//! minimum (fixed point, as older PowerVR and Mali parts did) clamp them to 2. The name is the
+//! minimum (10-bit fixed point, as PowerVR's SGX parts did) clamp them to 2. The name is the
 //! only evidence a declaration gives — an attribute's values are the host's — so the words are
 //! those WebGL code gives such measures (MapLibre's `lowp float floorwidth`, `a_pattern_from`,
 //! `halo_width`), and an interpolation factor named after one (`u_width_t`, in [0, 1]) is left
@@ -34,9 +34,11 @@ fn says_length(name: &str) -> bool {
 /// name: a `precision lowp float;` default makes every variable `lowp`, a choice made once
 /// for the whole shader rather than for a value that needs range.
 fn declared_lowp(text: &str, span: Span) -> bool {
-    let end = (span.start as usize).min(text.len());
-    let start = text[..end].rfind(['\n', ';', '{']).map_or(0, |i| i + 1);
-    text[start..end].split_whitespace().any(|w| w == "lowp")
+    let Some(before) = text.get(..span.start as usize) else {
+        return false;
+    };
+    let start = before.rfind(['\n', ';', '{']).map_or(0, |i| i + 1);
+    before[start..].split_whitespace().any(|w| w == "lowp")
 }
 
 /// The notes for every floating-point global or local declared `lowp` whose name says it
