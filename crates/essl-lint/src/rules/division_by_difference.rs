@@ -470,17 +470,14 @@ fn direction_divisor(cx: &Cx, div: &Division) -> Option<Diagnostic> {
     else {
         return None;
     };
-    let list = super::normalize_zero::direction_attributes(cx, id, arg)?;
-    if !super::vanishing::with_attributes(cx, f, id, arg) {
-        return None;
-    }
+    let list = super::normalize_zero::direction_attributes(cx, f, id, arg)?;
     let span = unguarded(cx, div)?;
     let attribute = if list.contains(", ") {
         "a vector of the attributes"
     } else {
         "the attribute"
     };
-    let mut diag = Diagnostic::rule_warning(
+    let diag = Diagnostic::rule_note(
         DivisionByDifference::RULE.id,
         format!("division by the length of {attribute} {list}, which a vertex may hold as the zero vector"),
         span,
@@ -492,7 +489,6 @@ fn direction_divisor(cx: &Cx, div: &Division) -> Option<Diagnostic> {
     .with_help("guard the divisor: `max(x, 1e-4)`")
     .with_fix(floor_fix(cx, span))
     .with_note(super::normalize_zero::ZERO_DIRECTION);
-    diag.severity = essl::diagnostic::Severity::Note;
     Some(diag)
 }
 

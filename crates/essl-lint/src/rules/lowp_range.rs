@@ -9,7 +9,7 @@
 //! `halo_width`), and an interpolation factor named after one (`u_width_t`, in [0, 1]) is left
 //! out.
 
-use essl::diagnostic::{Diagnostic, Severity};
+use essl::diagnostic::Diagnostic;
 use essl::source::Span;
 use essl::types::{Precision, ScalarKind, Type};
 
@@ -64,7 +64,7 @@ pub(super) fn check(cx: &Cx, rule: &'static str, out: &mut Vec<Diagnostic>) {
         if span.is_empty() || !declared_lowp(cx.file.text(), span) {
             continue;
         }
-        let mut d = Diagnostic::rule_warning(
+        let d = Diagnostic::rule_note(
             rule,
             format!("`{name}` is `lowp`, which need only hold values in (-2, 2)"),
             span,
@@ -72,7 +72,6 @@ pub(super) fn check(cx: &Cx, rule: &'static str, out: &mut Vec<Diagnostic>) {
         .with_label("a length in pixels or world units, declared `lowp`")
         .with_note("GLSL ES 3.00 §4.5.2: lowp's minimum range is (-2, 2) with 8 bits of relative precision; GPUs that implement the minimum clamp larger values")
         .with_help("declare it `mediump` (or `highp`)");
-        d.severity = Severity::Note;
         out.push(d);
     }
 }

@@ -401,15 +401,24 @@ const DIRECTION: &[&str] = &[
 pub(super) const ZERO_DIRECTION: &str = "attributes are the host's vertex data: a degenerate triangle's normal, or a buffer the mesh lacks (read as 0), is the zero vector";
 
 /// The attributes, in backticks, of a vertex shader's value `x` built from attributes that
-/// hold a direction (a normal, a tangent) alone, with uniforms and constants; `None` for
-/// anything else (a position, a texel, another stage).
-pub(super) fn direction_attributes(cx: &Cx, id: usize, x: Handle<E>) -> Option<String> {
+/// hold a direction (a normal, a tangent) alone, with uniforms and constants, and that is the
+/// zero vector wherever they are ([`super::vanishing`]); `None` for anything else (a
+/// position, a texel, an octahedral decoding, another stage).
+pub(super) fn direction_attributes(
+    cx: &Cx,
+    f: &Function,
+    id: usize,
+    x: Handle<E>,
+) -> Option<String> {
     if cx.module.entry_points.first()?.stage != naga::ShaderStage::Vertex {
         return None;
     }
     let o = cx.origin(&[(id, x)]);
     let direction = |n: &String| crate::analysis::names::says_any(n, DIRECTION);
     if o.inputs.is_empty() || o.texels || o.unknown || !o.inputs.iter().all(direction) {
+        return None;
+    }
+    if !super::vanishing::with_attributes(cx, f, id, x) {
         return None;
     }
     let list: Vec<String> = o.inputs.iter().map(|n| format!("`{n}`")).collect();
@@ -427,10 +436,7 @@ fn attribute_direction(
     call: Handle<E>,
     x: Handle<E>,
 ) -> Option<Diagnostic> {
-    let list = direction_attributes(cx, id, x)?;
-    if !super::vanishing::with_attributes(cx, f, id, x) {
-        return None;
-    }
+    let list = direction_attributes(cx, f, id, x)?;
     let g = cx.guards(f, id, call);
     // The analysis takes an attribute as such to be non-zero: only a guard that rules out a
     // zero the unguarded value may be counts.
@@ -488,7 +494,7 @@ fn caller_difference(
     } else {
         ("parameters", "callers may pass equal")
     };
-    let mut d = Diagnostic::rule_warning(
+    let d = Diagnostic::rule_note(
         NormalizeZero::RULE.id,
         format!("`normalize` of a difference of the {whose} {list}, which {equal}"),
         cx.span(f, x),
@@ -504,7 +510,6 @@ fn caller_difference(
         found.why()
     })
     .with_help("test the length first (`dot(v, v) > 1e-12`) and choose a fallback direction");
-    d.severity = essl::diagnostic::Severity::Note;
     Some(d)
 }
 
