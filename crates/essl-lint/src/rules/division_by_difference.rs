@@ -5,6 +5,7 @@
 use essl::diagnostic::{Diagnostic, Fix};
 use naga::{BinaryOperator as Bo, Expression as E, ScalarKind};
 
+use super::clip_space::{self, Clip};
 use super::parameters::caller_value;
 use super::rule::declare_rule;
 use super::Cx;
@@ -48,7 +49,12 @@ declare_rule! {
     /// skinning weight's `1.0 / (w.x + w.y + w.z + w.w)` — values of the host's vertex data,
     /// 0 for a vertex that holds 0. And the length of a normal or tangent attribute through a
     /// transform (`r / length((world * vec4(cross(normal, tangent), 0.0)).xyz)`), 0 for a
-    /// vertex of a mesh without the buffer (read as the zero vector).
+    /// vertex of a mesh without the buffer (read as the zero vector). And, as a note, a vertex
+    /// shader's perspective divide by the `w` of `gl_Position` or of a product with a projection
+    /// matrix (`p.xy / p.w`, through locals, calls and parameters): the vertex shader runs before
+    /// clipping, so a vertex on the camera's plane (a line or triangle crossing it) has `w = 0`
+    /// and one behind the camera a negative `w`; likewise, in a fragment shader, a position
+    /// projected by another frame's camera (`prevViewProjection`, a reprojection).
     ///
     /// ## Why is this bad?
     /// Two parameters a user sets independently are equal sooner or later — a spot light with the
@@ -88,7 +94,11 @@ declare_rule! {
     ///   validation mode checks divisors at draw time.
     /// - A parameter's division where a call passes a uniform or a computed value (the value
     ///   decides, as for any other divisor), or where ordinary non-negative values keep it from 0
-    ///   (`x / (x + 0.155)`); the `w` of a `vec4` (`p.xyz / p.w`, a homogeneous coordinate); a
+    ///   (`x / (x + 0.155)`); the `w` of a `vec4` that no projection made (`world.xyz / world.w`
+    ///   of an affine transform, 1), of the camera's own clip position in a fragment shader
+    ///   (positive wherever a pixel is drawn), in a vertex shader that sets `gl_PointSize` (a
+    ///   point on the camera's plane is clipped whole), or whose quotient is only compared,
+    ///   `step`ped or clamped to constant bounds (±∞ gives a defined answer there); a
     ///   varying as such in a fragment shader (0 on a line of pixels at most); a
     ///   parameter named for a size the host computes, or a multiple of one (`1.0 / texResolution`,
     ///   `floor(v * res) / res`); one named for what is never 0 (an index of refraction `ior`, a
@@ -113,7 +123,7 @@ declare_rule! {
     ///   `/ epsilon`.
     pub(crate) struct DivisionByDifference {
         id: "division-by-difference",
-        summary: "division by a difference of uniforms, a texel (or a sum, product or luminance of texels) or a difference of texels at an end of their range, a shading term of clamped cosines, or what callers or vertex data pass, that can be zero",
+        summary: "division by a difference of uniforms, a texel (or a sum, product or luminance of texels) or a difference of texels at an end of their range, a shading term of clamped cosines, what callers or vertex data pass, or a perspective divide before clipping, that can be zero",
         default_level: Level::Warn,
         check: check,
     }
@@ -147,6 +157,10 @@ fn check(cx: &Cx, out: &mut Vec<Diagnostic>) {
             }
             let div = Division { f, id, h, d };
             if let Some(diag) = unlit_divisor(cx, &div, v) {
+                out.push(diag);
+                continue;
+            }
+            if let Some(diag) = clip_divisor(cx, &div) {
                 out.push(diag);
                 continue;
             }
@@ -489,6 +503,44 @@ fn direction_divisor(cx: &Cx, div: &Division) -> Option<Diagnostic> {
     .with_help("guard the divisor: `max(x, 1e-4)`")
     .with_fix(floor_fix(cx, span))
     .with_note(super::normalize_zero::ZERO_DIRECTION);
+    Some(diag)
+}
+
+/// The note for a perspective divide by the `w` of a clip-space position where it can be 0
+/// ([`clip_space::perspective_w`]): a vertex shader's `p.xy / p.w` of `gl_Position` or of a
+/// product with the projection, which sees the vertices on and behind the camera's plane
+/// that clipping removes only afterwards.
+fn clip_divisor(cx: &Cx, div: &Division) -> Option<Diagnostic> {
+    let Division { f, id, d, .. } = *div;
+    let clip = clip_space::perspective_w(cx, f, id, d)?;
+    if clip_space::tolerates_infinity(f, div.h) {
+        return None;
+    }
+    let span = unguarded(cx, div)?;
+    let fragment = cx.module.entry_points.first()?.stage == naga::ShaderStage::Fragment;
+    let what = match &clip {
+        Clip::Position => "`gl_Position`".to_string(),
+        Clip::Projection(name) => format!("a position projected by `{name}`"),
+    };
+    let (note, help) = if fragment {
+        (
+            "another frame's camera: a pixel this frame shows may lie on that camera's plane (w = 0) or behind it",
+            "test `w` first: `if (p.w > 1e-6)`",
+        )
+    } else {
+        (
+            "the vertex shader runs before clipping: a vertex on the camera's plane has w = 0, one behind the camera a negative w",
+            "test `w` first (`if (p.w > 1e-6)`), or divide after clipping, in the fragment shader",
+        )
+    };
+    let diag = Diagnostic::rule_note(
+        DivisionByDifference::RULE.id,
+        format!("perspective divide by the `w` of {what}, which is 0 on the camera's plane"),
+        span,
+    )
+    .with_label("0 for a point on the plane through the camera")
+    .with_help(help)
+    .with_note(note);
     Some(diag)
 }
 

@@ -3,6 +3,7 @@
 //! shader), [`guards`] (what the conditions around an expression say) and [`rule`] (what a
 //! rule is).
 
+mod clip_space;
 mod context;
 mod domain;
 mod flat;

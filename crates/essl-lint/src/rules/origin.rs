@@ -78,6 +78,16 @@ impl Flows {
         Some(&self.calls[callee][at].1)
     }
 
+    /// The values stored whole into local `l` of function `id` (its initialiser aside).
+    pub(crate) fn whole_stores(&self, id: usize, l: usize) -> impl Iterator<Item = Handle<E>> + '_ {
+        let stores = self.locals.get(id).and_then(|m| m.get(&l));
+        stores
+            .into_iter()
+            .flatten()
+            .filter(|(at, _)| at.is_empty())
+            .map(|(_, v)| *v)
+    }
+
     /// The values function `id` returns.
     pub(crate) fn returns(&self, id: usize) -> &[Handle<E>] {
         self.returns.get(id).map_or(&[], Vec::as_slice)

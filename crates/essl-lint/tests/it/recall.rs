@@ -941,6 +941,43 @@ fn divisions_by_attributes_are_notes() {
     }
 }
 
+/// A vertex shader's perspective divide by the `w` of a clip-space position (`gl_Position`, a
+/// product with the projection, through a function's parameter): a note (0 on the camera's
+/// plane, before clipping); an affine transform's `w`, a tested `w`, a comparison or clamp of
+/// the quotient, and a points shader, quiet.
+#[test]
+fn perspective_divides_in_vertex_shaders_are_notes() {
+    let notes = |extra: &str, body: &str| {
+        let text = format!(
+            "#version 300 es\nuniform mat4 u_projection; uniform mat4 u_view; uniform mat4 u_model;\n\
+             in vec3 a_position;\nout vec3 v_ndc;\n\
+             vec2 screen(vec4 p) {{ return p.xy / p.w; }}\n\
+             void main() {{\n  gl_Position = u_projection * u_view * vec4(a_position, 1.0);\n{body}\n{extra}}}\n"
+        );
+        vertex_notes("division-by-difference", &text)
+    };
+    for body in [
+        "  v_ndc = gl_Position.xyz / gl_Position.w;",
+        "  vec4 clip = u_projection * u_view * u_model * vec4(a_position, 1.0);\n  v_ndc = clip.xyz / clip.w;",
+        "  v_ndc = vec3(screen(u_projection * vec4(a_position, 1.0)), 0.0);",
+        // A store into another component keeps `w`.
+        "  vec4 c = u_projection * vec4(a_position, 1.0);\n  c.z = 0.0;\n  v_ndc = vec3(c.z / c.w);",
+    ] {
+        assert_eq!(notes("", body).len(), 1, "{body}");
+    }
+    for body in [
+        "  vec4 world = u_model * vec4(a_position, 1.0);\n  v_ndc = world.xyz / world.w;",
+        "  v_ndc = gl_Position.w > 1e-6 ? gl_Position.xyz / gl_Position.w : vec3(0.0);",
+        "  v_ndc = vec3(step(1.0, gl_Position.z / gl_Position.w));",
+        "  gl_Position.z = clamp(gl_Position.z / gl_Position.w, -1.0, 1.0) * gl_Position.w;",
+    ] {
+        assert!(notes("", body).is_empty(), "{body}: {:?}", notes("", body));
+    }
+    let points = "  gl_PointSize = 4.0;\n";
+    let body = "  v_ndc = gl_Position.xyz / gl_Position.w;";
+    assert!(notes(points, body).is_empty(), "{:?}", notes(points, body));
+}
+
 /// A direction attribute through a transform: the zero vector for a vertex that holds it; a
 /// position, and a vector whose length is tested first, quiet.
 #[test]
