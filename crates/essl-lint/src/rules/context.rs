@@ -369,6 +369,24 @@ pub fn operands(e: &E) -> Vec<Handle<E>> {
     }
 }
 
+/// Whether expression `x` of `f` is `d` or is computed from it (through operands, not locals).
+pub fn computed_from(f: &Function, x: Handle<E>, d: Handle<E>) -> bool {
+    let mut work = vec![x];
+    let mut steps = 0;
+    while let Some(h) = work.pop() {
+        steps += 1;
+        if h == d {
+            return true;
+        }
+        // Operands precede their users: nothing before `d` is computed from it.
+        if h < d || steps > 256 {
+            continue;
+        }
+        work.extend(operands(&f.expressions[h]));
+    }
+    false
+}
+
 /// Who reads each expression of a function.
 pub fn users(f: &Function) -> HashMap<Handle<E>, Vec<User>> {
     let mut map: HashMap<Handle<E>, Vec<User>> = HashMap::default();

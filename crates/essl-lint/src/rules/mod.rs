@@ -37,7 +37,7 @@ mod texel_fetch_range;
 mod uninitialised_read;
 mod unused_allow;
 
-pub(crate) use context::{describe, fmt_num, operands, users, Cx, User};
+pub(crate) use context::{computed_from, describe, fmt_num, operands, users, Cx, User};
 pub(crate) use normalize_zero::orthogonal_cross;
 pub use rule::Rule;
 

@@ -39,7 +39,10 @@ declare_rule! {
     /// parameters where its callers pass inputs as such, or of a product with one: a line
     /// renderer's segment direction `normalize((b - a) * scale)`, lygia's `lookAt(eye, target)`
     /// normalizing `target - eye` — the zero vector where the data repeats a point or a caller
-    /// passes the same point twice.
+    /// passes the same point twice. The same for a vector parameter as such where the callers
+    /// pass inputs as such: lygia's `rotate3d(a, r)` normalizing its axis `a`, `lookAt(forward)`
+    /// — a library function that leaves the zero vector (a cross product of parallel vectors,
+    /// an eye at its target) to its caller.
     ///
     /// And `normalize` of a texel as such (`normalize(texture(gNormal, uv).rgb)`): the zero vector
     /// for every black texel, the background a G-buffer is cleared to.
@@ -91,8 +94,8 @@ declare_rule! {
     /// Severity: a cross product with a vector fixed for the draw is a warning (a light pointing
     /// straight down is ordinary), as is a gradient (flat regions are in every picture) and a
     /// texel (black ones are); `normalize` of a per-draw difference is a note when one uniform
-    /// alone reaches it, and of a direction attribute or a difference of attributes or parameters
-    /// always.
+    /// alone reaches it, and of a direction attribute, a difference of attributes or parameters,
+    /// or a parameter as such always.
     ///
     /// ## References
     /// - GLSL ES 3.00 specification, §8.4 Geometric Functions (normalize: "a vector in the same
@@ -127,6 +130,7 @@ fn check(cx: &Cx, out: &mut Vec<Diagnostic>) {
             if v.n >= 2 && v.facts.has(Facts::NZ) {
                 out.extend(attribute_direction(cx, f, id, h, x));
                 out.extend(black_texel(cx, f, id, h, x));
+                out.extend(caller_vector(cx, f, id, h, x));
                 continue;
             }
             if v.n < 2 || !v.may_be_zero() || v.facts.has(Facts::NZ) {
@@ -511,6 +515,72 @@ fn caller_difference(
     })
     .with_help("test the length first (`dot(v, v) > 1e-12`) and choose a fallback direction");
     Some(d)
+}
+
+/// The note for `normalize(p)` of a function's vector parameter as such (or a multiple of
+/// it) where its callers pass inputs as such: lygia's `rotate3d(axis, angle)` normalizing its
+/// axis, `lookAt(forward)` its forward direction — a library function that leaves the zero
+/// vector (a cross product of parallel vectors, an eye at its target) to the caller.
+fn caller_vector(
+    cx: &Cx,
+    f: &Function,
+    id: usize,
+    call: Handle<E>,
+    x: Handle<E>,
+) -> Option<Diagnostic> {
+    let param = parameter_itself(cx, f, id, call, x)?;
+    let found = super::parameters::caller_value(cx, f, id, param)?;
+    let [name] = &found.names[..] else {
+        return None;
+    };
+    if found.attribute {
+        return None;
+    }
+    // The analysis takes inputs for non-zero vectors: only a test of the length says more.
+    if length_guarded(cx, f, id, x, &cx.guards(f, id, call)) {
+        return None;
+    }
+    let d = Diagnostic::rule_note(
+        NormalizeZero::RULE.id,
+        format!(
+            "`normalize` of the parameter `{name}`, which a caller may pass as the zero vector"
+        ),
+        cx.span(f, x),
+    )
+    .with_label(format!(
+        "NaN wherever a caller passes `{name}` as the zero vector"
+    ))
+    .with_note("normalize(v) divides by length(v): 0 / 0 for the zero vector")
+    .with_note(found.why())
+    .with_help("test the length first (`dot(v, v) > 1e-12`) and choose a fallback direction");
+    Some(d)
+}
+
+/// The parameter (its expression) `x` is as such: the argument, or a local holding it where
+/// every other store into the local is computed from the `normalize` itself (`a =
+/// normalize(a)`, a parameter the function writes).
+fn parameter_itself(
+    cx: &Cx,
+    f: &Function,
+    id: usize,
+    call: Handle<E>,
+    x: Handle<E>,
+) -> Option<Handle<E>> {
+    let top = resolve(f, cx.sound(), id, x);
+    if matches!(f.expressions[top], E::FunctionArgument(_)) {
+        return Some(top);
+    }
+    let E::Load { pointer } = f.expressions[x] else {
+        return None;
+    };
+    let stored = cx.stored(f, id, pointer);
+    let param = *stored
+        .iter()
+        .find(|v| matches!(f.expressions[**v], E::FunctionArgument(_)))?;
+    stored
+        .iter()
+        .all(|&v| v == param || super::computed_from(f, v, call))
+        .then_some(param)
 }
 
 /// `h` itself where it is a difference, or a factor of a product that is (`diff * scale`);

@@ -878,6 +878,32 @@ const PARAMETERS: &[(&str, &str, &str, Option<&str>)] = &[
         "  r = look(v_pos, v_h).x;",
         None,
     ),
+    // A vector a caller passes as such: a rotation axis, a forward direction, written from
+    // itself or not; tested first, or passed a constant, quiet.
+    (
+        "normalize-zero",
+        "mat3 rot(vec3 a, float r) {\n  a = normalize(a);\n  return mat3(a * r, a, a);\n}",
+        "  r = rot(v_pos, v_x)[0].x;",
+        Some("a = normalize(a);"),
+    ),
+    (
+        "normalize-zero",
+        "vec3 fwd(vec3 forward) { return normalize(forward); }",
+        "  r = fwd(v_h).x;",
+        Some("vec3 fwd(vec3 forward) { return normalize(forward); }"),
+    ),
+    (
+        "normalize-zero",
+        "vec3 fwd(vec3 f) {\n  return dot(f, f) > 1e-12 ? normalize(f) : vec3(0.0, 0.0, 1.0);\n}",
+        "  r = fwd(v_h).x;",
+        None,
+    ),
+    (
+        "normalize-zero",
+        "vec3 fwd(vec3 forward) { return normalize(forward); }",
+        "  r = fwd(vec3(0.0, 1.0, 0.0)).x;",
+        None,
+    ),
 ];
 
 #[test]
