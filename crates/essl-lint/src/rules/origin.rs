@@ -88,6 +88,11 @@ impl Flows {
             .map(|(_, v)| *v)
     }
 
+    /// The stores into private global `g`: (function, value).
+    pub(crate) fn global_stores(&self, g: usize) -> &[(usize, Handle<E>)] {
+        self.globals.get(&g).map_or(&[], Vec::as_slice)
+    }
+
     /// The values function `id` returns.
     pub(crate) fn returns(&self, id: usize) -> &[Handle<E>] {
         self.returns.get(id).map_or(&[], Vec::as_slice)

@@ -104,7 +104,16 @@ impl CallerValue {
 #[derive(Default)]
 struct Walk {
     leaves: Vec<Leaf>,
-    locals: Vec<Handle<E>>,
+    locals: Vec<(usize, Handle<E>)>,
+}
+
+/// The function [`leaves`] walks, and where it was called from: a called function's
+/// parameters are the arguments of the call, read in the caller's frame.
+#[derive(Clone, Copy)]
+struct Frame<'a> {
+    f: &'a Function,
+    id: usize,
+    call: Option<(&'a Frame<'a>, &'a [Handle<E>])>,
 }
 
 /// What a value is built from.
@@ -130,7 +139,8 @@ pub(super) fn caller_value(cx: &Cx, f: &Function, id: usize, d: Handle<E>) -> Op
         return None;
     }
     let mut walk = Walk::default();
-    if !leaves(cx, f, id, d, 0, &mut walk) || walk.leaves.is_empty() {
+    let top = Frame { f, id, call: None };
+    if !leaves(cx, &top, d, 0, &mut walk) || walk.leaves.is_empty() {
         return None;
     }
     let params = walk.leaves;
@@ -168,9 +178,11 @@ pub(super) fn caller_value(cx: &Cx, f: &Function, id: usize, d: Handle<E>) -> Op
         }
     );
     // A size itself, or a multiple of it (`1.0 / res`), is not 0 while anything is drawn; a
-    // difference with a constant (`res - 1.0`) is, for an ordinary size.
+    // difference with a constant (`res - 1.0`) is, for an ordinary size. An attribute's size
+    // or ratio is the vertex data's, not the canvas's (MapLibre's `a_pixel_ratio_from`, 0 for
+    // a pattern missing from the atlas).
     if let [name] = &names[..] {
-        if !sum && crate::analysis::names::says_any(name, HOST_SIZE) {
+        if !sum && !attribute && crate::analysis::names::says_any(name, HOST_SIZE) {
             return None;
         }
     }
@@ -207,11 +219,12 @@ pub(super) fn caller_value(cx: &Cx, f: &Function, id: usize, d: Handle<E>) -> Op
 /// Whether `h` is built from parameters that every call passes an external value as such and
 /// a vertex shader's attributes as such (pushed to `out`), and constants, with `+`, `-`, `*`,
 /// negation, `length`, swizzles, components, constructors, conversions and locals.
-fn leaves(cx: &Cx, f: &Function, id: usize, h: Handle<E>, depth: u32, out: &mut Walk) -> bool {
+fn leaves(cx: &Cx, fr: &Frame, h: Handle<E>, depth: u32, out: &mut Walk) -> bool {
+    let (f, id) = (fr.f, fr.id);
     if depth > MAX_DEPTH {
         return false;
     }
-    let go = |x: Handle<E>, out: &mut Walk| leaves(cx, f, id, x, depth + 1, out);
+    let go = |x: Handle<E>, out: &mut Walk| leaves(cx, fr, x, depth + 1, out);
     let as_such = |x: Handle<E>| {
         cx.sound().num(id, x).is_some_and(|v| {
             v.facts.has(Facts::EXT)
@@ -222,9 +235,33 @@ fn leaves(cx: &Cx, f: &Function, id: usize, h: Handle<E>, depth: u32, out: &mut 
     match f.expressions[h] {
         E::Literal(_) | E::Constant(_) | E::ZeroValue(_) => true,
         // A parameter every call passes an input as such.
+        // In a called function, the call's argument (`unpack_mix_vec2(a_floorwidth, t)`).
+        E::FunctionArgument(i) if fr.call.is_some() => {
+            let (caller, args) = fr.call.unwrap();
+            args.get(i as usize)
+                .is_some_and(|&a| leaves(cx, caller, a, depth + 1, out))
+        }
         E::FunctionArgument(i) => {
             out.leaves.push(Leaf::Parameter(i));
             as_such(h)
+        }
+        // What the called function returns, its parameters read as the call's arguments.
+        E::CallResult(callee) => {
+            let callee = callee.index();
+            let Some(args) = cx.flows().arguments(id, h) else {
+                return false;
+            };
+            let g = crate::analysis::function(cx.module, callee);
+            let inner = Frame {
+                f: g,
+                id: callee,
+                call: Some((fr, args)),
+            };
+            let returns = cx.flows().returns(callee);
+            !returns.is_empty()
+                && returns
+                    .iter()
+                    .all(|&r| leaves(cx, &inner, r, depth + 1, out))
         }
         E::Load { pointer } if vertex_input(cx, f, pointer).is_some() => {
             out.leaves
@@ -268,9 +305,25 @@ fn leaves(cx: &Cx, f: &Function, id: usize, h: Handle<E>, depth: u32, out: &mut 
         E::Compose { ref components, .. } => components.iter().all(|&c| go(c, out)),
         // A local's stores; one that reads the local itself (`st = st * 2.0 - 1.0`) adds
         // nothing the others do not.
-        E::Load { pointer } if out.locals.contains(&pointer) => true,
+        // A vertex shader's output (or another private global) written in this function only:
+        // what is stored into it (MapLibre's `floorwidth = unpack_mix_vec2(a_floorwidth, t)`).
+        E::Load { pointer } if matches!(f.expressions[pointer], E::GlobalVariable(_)) => {
+            let E::GlobalVariable(g) = f.expressions[pointer] else {
+                return false;
+            };
+            if cx.module.global_variables[g].space != naga::AddressSpace::Private {
+                return false;
+            }
+            if out.locals.contains(&(id, pointer)) {
+                return true;
+            }
+            out.locals.push((id, pointer));
+            let stores = cx.flows().global_stores(g.index());
+            !stores.is_empty() && stores.iter().all(|&(at, v)| at == id && go(v, out))
+        }
+        E::Load { pointer } if out.locals.contains(&(id, pointer)) => true,
         E::Load { pointer } => {
-            out.locals.push(pointer);
+            out.locals.push((id, pointer));
             let stored = cx.stored(f, id, pointer);
             !stored.is_empty() && stored.into_iter().all(|x| go(x, out))
         }
@@ -296,9 +349,34 @@ fn is_vec4(cx: &Cx, id: usize, h: Handle<E>) -> bool {
     )
 }
 
-/// The attribute a load from `pointer` reads, in a vertex shader: a private global (the entry
-/// point's copy of an input), whole or a component.
-pub(super) fn vertex_input(
+/// Whether private global `g` is the entry point's copy of an input: every store into it is
+/// in the entry point, of one of its arguments (an output the shader computes is not).
+fn input_copy(cx: &Cx, g: Handle<naga::GlobalVariable>) -> bool {
+    let entry = cx.module.functions.len();
+    let Some(ep) = cx.module.entry_points.first() else {
+        return false;
+    };
+    let stores = cx.flows().global_stores(g.index());
+    !stores.is_empty()
+        && stores.iter().all(|&(at, v)| {
+            if at != entry {
+                return false;
+            }
+            // A component of a struct argument, or a conversion (`gl_VertexID`, naga's `u32`).
+            let mut x = v;
+            while let E::AccessIndex { base: inner, .. } | E::As { expr: inner, .. } =
+                ep.function.expressions[x]
+            {
+                x = inner;
+            }
+            matches!(ep.function.expressions[x], E::FunctionArgument(_))
+        })
+}
+
+/// A private global a load from `pointer` reads, whole or a component, in a vertex shader: an
+/// input's copy or a value the shader keeps there (what [`super::vanishing`] takes for vertex
+/// data).
+pub(super) fn vertex_private(
     cx: &Cx,
     f: &Function,
     pointer: Handle<E>,
@@ -308,14 +386,21 @@ pub(super) fn vertex_input(
         return None;
     }
     let mut p = pointer;
-    loop {
-        match f.expressions[p] {
-            E::AccessIndex { base, .. } => p = base,
-            E::GlobalVariable(g) => {
-                let var = &cx.module.global_variables[g];
-                return (var.space == naga::AddressSpace::Private).then_some(g);
-            }
-            _ => return None,
-        }
+    while let E::AccessIndex { base, .. } = f.expressions[p] {
+        p = base;
     }
+    let E::GlobalVariable(g) = f.expressions[p] else {
+        return None;
+    };
+    (cx.module.global_variables[g].space == naga::AddressSpace::Private).then_some(g)
+}
+
+/// The attribute a load from `pointer` reads, in a vertex shader: a private global that is the
+/// entry point's copy of an input, whole or a component.
+pub(super) fn vertex_input(
+    cx: &Cx,
+    f: &Function,
+    pointer: Handle<E>,
+) -> Option<Handle<naga::GlobalVariable>> {
+    vertex_private(cx, f, pointer).filter(|&g| input_copy(cx, g))
 }

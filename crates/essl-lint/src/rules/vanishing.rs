@@ -58,7 +58,7 @@ fn vanishes(cx: &Cx, f: &Function, id: usize, h: Handle<E>, depth: u32, seen: &m
             .sound()
             .num(id, h)
             .is_some_and(|n| n.comps().iter().all(|c| c.as_point() == Some(0.0))),
-        E::Load { pointer } if super::parameters::vertex_input(cx, f, pointer).is_some() => true,
+        E::Load { pointer } if super::parameters::vertex_private(cx, f, pointer).is_some() => true,
         E::Load { pointer } => {
             // A local that reads itself (`t = t - dot(t, n) * n`): its other stores decide.
             if seen.locals.contains(&(id, pointer)) {

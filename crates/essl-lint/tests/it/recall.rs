@@ -945,7 +945,10 @@ fn divisions_by_attributes_are_notes() {
         let text = format!(
             "#version 300 es\nin vec4 a_pos; in float a_life; in float a_age; in vec4 a_weight;\n\
              in vec3 a_normal; in vec3 a_tangent; uniform mat4 u_world;\n\
-             out float v_t;\nvoid main() {{\n{body}\n  gl_Position = a_pos;\n}}\n"
+             in float a_size; in vec2 a_width; uniform float u_width_t;\n\
+             out float v_t; out float width;\n\
+             float unpack_mix(vec2 packed, float t) {{ return mix(packed[0], packed[1], t); }}\n\
+             void main() {{\n{body}\n  gl_Position = a_pos;\n}}\n"
         );
         vertex_notes("division-by-difference", &text)
     };
@@ -954,6 +957,10 @@ fn divisions_by_attributes_are_notes() {
         "  v_t = 1.0 / (a_weight.x + a_weight.y + a_weight.z + a_weight.w);",
         // A direction the normal and tangent make, 0 for a mesh without tangents.
         "  v_t = 1.0 / length((u_world * vec4(cross(a_normal, a_tangent), 0.0)).xyz);",
+        // An attribute's size is the vertex data's, not the canvas's.
+        "  v_t = 0.5 / a_size;",
+        // Through a function that unpacks it, and an output the shader keeps it in.
+        "  width = unpack_mix(a_width, u_width_t);\n  v_t = a_age / width;",
     ] {
         assert_eq!(notes(body).len(), 1, "{body}");
     }
