@@ -69,7 +69,8 @@ pub(crate) fn words(name: &str) -> Vec<String> {
 
 /// Words that name a setting a user may set to 0: a count (of samples, steps, columns, rows,
 /// segments, octaves, iterations…), a length, a radius, a gamma, a falloff (`directionCount`,
-/// `numberOfTilesWidth`, `uTileColumns`, `_Blob_Fade_Length_`, `uRadius`, `uGamma`).
+/// `numberOfTilesWidth`, `uTileColumns`, `_Blob_Fade_Length_`, `uRadius`, `uGamma`), a fade
+/// distance (`Inner_Fade`).
 /// Not sizes, resolutions, ratios or distances, which the host computes from the canvas and the
 /// camera and which are not 0 while anything is drawn (`u_resolution`, `u_pixelRatio`,
 /// `u_camera_to_center_distance`).
@@ -98,6 +99,7 @@ const SETTING: &[&str] = &[
     "bands",
     "cells",
     "tiles",
+    "fade",
 ];
 
 /// Words that say a name with a [`SETTING`] word holds something else: what a draw call draws,
@@ -118,7 +120,10 @@ const NOT_SETTING: &[&str] = &[
 pub(crate) fn is_setting(name: &str) -> bool {
     let ws = words(name);
     let has = |list: &[&str]| ws.iter().any(|w| list.contains(&w.as_str()));
-    has(SETTING) && !has(NOT_SETTING)
+    // A near or far distance is an end of a range the user sets (Babylon's
+    // `proximityFarDistance`), not the camera's distance the host computes.
+    let range_end = has(&["near", "far"]) && has(&["distance"]);
+    (has(SETTING) || range_end) && !has(NOT_SETTING)
 }
 
 /// Whether a word of `name` is one of `list` (lower case).
@@ -195,6 +200,8 @@ mod tests {
             "_Blob_Fade_Length_",
             "uGamma",
             "u_radius",
+            "_Proximity_Far_Distance_",
+            "Inner_Fade",
         ] {
             assert!(is_setting(name), "{name}");
         }
@@ -206,6 +213,8 @@ mod tests {
             "uLengths",
             "numVerts",
             "u_gamma_scale",
+            "u_crossfade_to",
+            "uCameraDistance",
         ] {
             assert!(!is_setting(name), "{name}");
         }
