@@ -27,7 +27,8 @@ declare_rule! {
     /// a texel: black and white are ordinary colours. A divisor that is a texel (or such a colour)
     /// itself is reported too: `c.rgb / c.a` un-premultiplies by an alpha that is 0 wherever the
     /// texture is transparent, `x / t.r` divides by 0 wherever it is black; and so is a sum,
-    /// product, `dot` or matrix product of texels (through locals and calls): a luminance
+    /// product, `dot`, matrix product, `max` or `min` of texels (through locals and calls;
+    /// FSR's `1.0 / (4.0 * mx)` of the largest of a pixel's neighbours): a luminance
     /// `dot(c.rgb, w)` a tone mapping divides by, the `X + Y + Z` of a colour's chromaticity, 0
     /// over every black region of the picture. So is a shading term
     /// that is 0 wherever the surface faces away from the light or the viewer: a product with a

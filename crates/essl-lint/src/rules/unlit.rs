@@ -101,7 +101,12 @@ impl Cx<'_> {
                 ..
             } => match (fun, arg1, arg2) {
                 (Mf::Dot, Some(b), _) if kind == Zero::Black => go(arg).or_else(|| go(b)),
-                (Mf::Saturate | Mf::Max | Mf::Clamp, _, _) if kind == Zero::Black => None,
+                // The largest of texels is 0 where all are black (FSR's `max` of a pixel's
+                // neighbours), the smallest where one is; a `max` with a constant floor is a
+                // guard.
+                (Mf::Max, Some(b), _) if kind == Zero::Black => go(arg).and(go(b)),
+                (Mf::Min, Some(b), _) if kind == Zero::Black => go(arg).or_else(|| go(b)),
+                (Mf::Saturate | Mf::Clamp, _, _) if kind == Zero::Black => None,
                 (Mf::Saturate, _, _) => self.cosine(f, id, arg).then_some((id, h)),
                 (Mf::Max, Some(b), _) => {
                     let clamps = |x, c: Handle<E>| {

@@ -133,6 +133,13 @@ const HAZARDS: &[Hazard] = &[
         "  vec3 xyz = mat3(0.41, 0.21, 0.02, 0.36, 0.72, 0.12, 0.18, 0.07, 0.95) * t.rgb;\n  r = xyz.r / (xyz.r + xyz.g + xyz.b);",
         W,
     ),
+    // The largest of texels: 0 where all are black (FSR's neighbourhood `max`).
+    (
+        "division-by-difference",
+        "texture",
+        "  float mx = max(max(t.r, t.g), t.b);\n  r = 1.0 / (4.0 * mx);",
+        W,
+    ),
     // A uniform as such whose name says a user may set it to 0: a gamma, a count.
     ("division-by-difference", "uniform", "  r = pow(t.r, 1.0 / u_gamma);", N),
     ("division-by-difference", "uniform", "  r = v_x / float(u_sampleCount);", N),
@@ -390,6 +397,11 @@ const HAZARDS: &[Hazard] = &[
 
 /// The guarded twins: (rule, body) with no finding of the rule, notes included.
 const GUARDED: &[(&str, &str)] = &[
+    // A `max` with a constant floor is a guard.
+    (
+        "division-by-difference",
+        "  float mx = max(max(t.r, t.g), 1e-4);\n  r = 1.0 / (4.0 * mx);",
+    ),
     // An early return on either of two conditions, one of them a band around 0; and one on
     // the divisor's own value, divided through a copy.
     (
