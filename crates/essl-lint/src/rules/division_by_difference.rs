@@ -50,9 +50,11 @@ declare_rule! {
     /// vertex shader's division by its attributes as such: a particle's `age / a_life`, a
     /// skinning weight's `1.0 / (w.x + w.y + w.z + w.w)`, a point's `0.5 / a_size` (an
     /// attribute's size or ratio is the vertex data's, not the canvas's), through a function
-    /// that unpacks them and the outputs the shader keeps them in (MapLibre's
+    /// that unpacks them, the outputs the shader keeps them in, a product with a uniform and a
+    /// function's parameter every call passes such a value (MapLibre's
     /// `floorwidth = unpack_mix_vec2(a_floorwidth, t)`, `/ pixel_ratio_from` of a pattern
-    /// missing from the atlas) — values of the host's vertex data, 0 for a vertex that holds 0. And the length of a normal or tangent attribute through a
+    /// missing from the atlas, regl-scatter2d's `1.0 / gl_PointSize` of a point of size 0) —
+    /// values of the host's vertex data, 0 for a vertex that holds 0. And the length of a normal or tangent attribute through a
     /// transform (`r / length((world * vec4(cross(normal, tangent), 0.0)).xyz)`), 0 for a
     /// vertex of a mesh without the buffer (read as the zero vector). And, as a note, a vertex
     /// shader's perspective divide by the `w` of `gl_Position` or of a product with a projection

@@ -232,6 +232,12 @@ fn leaves(cx: &Cx, fr: &Frame, h: Handle<E>, depth: u32, out: &mut Walk) -> bool
                 && !v.facts.any(Facts::UNIFORM.with(Facts::TEXTURE))
         })
     };
+    // Uniforms and constants only: the same for every vertex and pixel of a draw.
+    let per_draw = |x: Handle<E>| {
+        cx.sound().num(id, x).is_some_and(|v| {
+            v.facts.any(Facts::UNIFORM) && !v.facts.any(Facts::INPUT.with(Facts::TEXTURE))
+        })
+    };
     match f.expressions[h] {
         E::Literal(_) | E::Constant(_) | E::ZeroValue(_) => true,
         // A parameter every call passes an input as such.
@@ -241,10 +247,33 @@ fn leaves(cx: &Cx, fr: &Frame, h: Handle<E>, depth: u32, out: &mut Walk) -> bool
             args.get(i as usize)
                 .is_some_and(|&a| leaves(cx, caller, a, depth + 1, out))
         }
-        E::FunctionArgument(i) => {
+        E::FunctionArgument(i) if as_such(h) => {
             out.leaves.push(Leaf::Parameter(i));
-            as_such(h)
+            true
         }
+        // A parameter every call passes a value of a vertex shader's attributes (MapLibre's
+        // `get_pattern_pos(…, display_size, …)` of a pattern's corners): those attributes.
+        E::FunctionArgument(i) if id < cx.module.functions.len() => {
+            let callers = cx.flows().callers(id);
+            !callers.is_empty()
+                && callers.iter().all(|(caller, args)| {
+                    let Some(&a) = args.get(i as usize) else {
+                        return false;
+                    };
+                    let g = crate::analysis::function(cx.module, *caller);
+                    let up = Frame {
+                        f: g,
+                        id: *caller,
+                        call: None,
+                    };
+                    let from = out.leaves.len();
+                    leaves(cx, &up, a, depth + 1, out)
+                        && out.leaves[from..]
+                            .iter()
+                            .all(|l| matches!(l, Leaf::Attribute(_)))
+                })
+        }
+        E::FunctionArgument(_) => false,
         // What the called function returns, its parameters read as the call's arguments.
         E::CallResult(callee) => {
             let callee = callee.index();
@@ -289,6 +318,18 @@ fn leaves(cx: &Cx, fr: &Frame, h: Handle<E>, depth: u32, out: &mut Walk) -> bool
             arg1: Some(b),
             ..
         } => go(arg, out) && go(b, out),
+        // A product with a per-draw value (`u_scale * display_size`) is 0 wherever the other
+        // factor is.
+        E::Binary {
+            op: Bo::Multiply,
+            left,
+            right,
+        } if per_draw(right) => go(left, out),
+        E::Binary {
+            op: Bo::Multiply,
+            left,
+            right,
+        } if per_draw(left) => go(right, out),
         E::Binary {
             op: Bo::Add | Bo::Subtract | Bo::Multiply,
             left,

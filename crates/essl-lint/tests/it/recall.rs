@@ -960,6 +960,7 @@ fn divisions_by_attributes_are_notes() {
              in float a_size; in vec2 a_width; uniform float u_width_t;\n\
              out float v_t; out float width;\n\
              float unpack_mix(vec2 packed, float t) {{ return mix(packed[0], packed[1], t); }}\n\
+             float inv_of(float s) {{ return 1.0 / s; }}\n\
              void main() {{\n{body}\n  gl_Position = a_pos;\n}}\n"
         );
         vertex_notes("division-by-difference", &text)
@@ -973,6 +974,9 @@ fn divisions_by_attributes_are_notes() {
         "  v_t = 0.5 / a_size;",
         // Through a function that unpacks it, and an output the shader keeps it in.
         "  width = unpack_mix(a_width, u_width_t);\n  v_t = a_age / width;",
+        // A product with a uniform, through a built-in output and a function's parameter.
+        "  gl_PointSize = (a_size + a_age) * u_width_t;\n  v_t = 1.0 / gl_PointSize;",
+        "  v_t = inv_of(a_size * u_width_t);",
     ] {
         assert_eq!(notes(body).len(), 1, "{body}");
     }
