@@ -22,8 +22,9 @@ declare_rule! {
     /// divisor the shader guards (`max(limitRange, 1e-4)`) or can order itself (`u_r + 0.1 - u_r`) is
     /// not reported. A difference of texel values is reported where it is 0 at an end of the texels'
     /// range: `1.0 - k` for `k = min(1.0 - c.r, min(1.0 - c.g, 1.0 - c.b))` of a texel's colour `c`
-    /// is 0 for every black texel, `1.0 - c.a` for every opaque one. An input whose name says it
-    /// holds a colour (`v_color`, a function's `vec3 rgb` its callers pass an input to) counts as
+    /// is 0 for every black texel, `1.0 - c.a` for every opaque one, and so is a sum with a
+    /// negative constant (FSR's `4.0 * mn + peakC.y`, `peakC.y == -4.0`, wherever it is
+    /// white). An input whose name says it holds a colour (`v_color`, a function's `vec3 rgb` its callers pass an input to) counts as
     /// a texel: black and white are ordinary colours. A divisor that is a texel (or such a colour)
     /// itself is reported too: `c.rgb / c.a` un-premultiplies by an alpha that is 0 wherever the
     /// texture is transparent, `x / t.r` divides by 0 wherever it is black; and so is a sum,
@@ -171,7 +172,7 @@ fn check(cx: &Cx, out: &mut Vec<Diagnostic>) {
                 out.push(diag);
                 continue;
             }
-            if !v.facts.has(Facts::DIFF) {
+            if !v.facts.has(Facts::DIFF) && !offset_texel(cx, f, id, d, v.facts) {
                 if let Some(diag) = texel_divisor(cx, &div) {
                     out.push(diag);
                 } else if let Some(diag) = black_divisor(cx, &div, v) {
@@ -248,6 +249,27 @@ struct Division<'a> {
     id: usize,
     h: naga::Handle<E>,
     d: naga::Handle<E>,
+}
+
+/// Whether divisor `d` is texels plus a constant that is 0 at an end of their range, a
+/// difference written as a sum: FSR's `4.0 * mn + peakC.y` with `peakC.y == -4.0`, 0 wherever
+/// the four neighbours are white.
+fn offset_texel(cx: &Cx, f: &naga::Function, id: usize, d: naga::Handle<E>, facts: Facts) -> bool {
+    let E::Binary {
+        op: Bo::Add,
+        left,
+        right,
+    } = f.expressions[resolve(f, cx.sound(), id, d)]
+    else {
+        return false;
+    };
+    let constant = |x| {
+        cx.sound()
+            .num(id, x)
+            .and_then(|n| n.hull().as_point())
+            .is_some_and(|c| c < 0.0)
+    };
+    (constant(left) || constant(right)) && zero_at_texel_end(cx, id, d, facts)
 }
 
 /// Whether a difference that reads a texel is 0 where texels sit at an end of their range:

@@ -140,6 +140,13 @@ const HAZARDS: &[Hazard] = &[
         "  float mx = max(max(t.r, t.g), t.b);\n  r = 1.0 / (4.0 * mx);",
         W,
     ),
+    // A difference written as a sum with a negative constant: 0 where the texel is white.
+    (
+        "division-by-difference",
+        "texture",
+        "  vec2 pk = vec2(1.0, -4.0);\n  r = 1.0 / (4.0 * t.r + pk.y);",
+        W,
+    ),
     // A uniform as such whose name says a user may set it to 0: a gamma, a count.
     ("division-by-difference", "uniform", "  r = pow(t.r, 1.0 / u_gamma);", N),
     ("division-by-difference", "uniform", "  r = v_x / float(u_sampleCount);", N),
@@ -397,6 +404,8 @@ const HAZARDS: &[Hazard] = &[
 
 /// The guarded twins: (rule, body) with no finding of the rule, notes included.
 const GUARDED: &[(&str, &str)] = &[
+    // 0 only at a middle value of the texel, not over a region.
+    ("division-by-difference", "  r = 1.0 / (4.0 * t.r + -2.0);"),
     // A `max` with a constant floor is a guard.
     (
         "division-by-difference",
