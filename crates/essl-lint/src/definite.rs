@@ -41,6 +41,9 @@ pub enum Var {
     Global(usize),
     /// A built-in output (in `main` and through the functions it calls).
     Builtin(BuiltinVar),
+    /// The function's result, where control can reach the end of a function that returns a
+    /// value without a `return`: its callers read an undefined value.
+    Result,
 }
 
 impl Var {
@@ -230,8 +233,22 @@ impl<'a> Walk<'a> {
 
     fn run(&mut self, body: &[Stmt], st: &mut State) {
         if let Some(end) = self.stmts(body, st.clone()) {
-            let at = self.m.functions[self.fid].span;
-            self.outs_written(&end, at);
+            let f = &self.m.functions[self.fid];
+            self.outs_written(&end, f.span);
+            // The end reached without `return`: the last statement is where control leaves. A
+            // function without statements is one only declared here (Cesium's
+            // `czm_computePosition();`, defined by the program it is linked into).
+            if let Some(last) = body.last().filter(|_| {
+                self.summary.is_none() && f.ret != Type::Void && self.reported.insert(Var::Result)
+            }) {
+                let span = last.span;
+                self.reads.push(Read {
+                    function: self.fid,
+                    var: Var::Result,
+                    span,
+                    through: None,
+                });
+            }
         }
     }
 

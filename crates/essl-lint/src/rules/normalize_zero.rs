@@ -528,7 +528,7 @@ fn caller_vector(
     call: Handle<E>,
     x: Handle<E>,
 ) -> Option<Diagnostic> {
-    let param = parameter_itself(cx, f, id, call, x)?;
+    let param = super::parameters::parameter_itself(cx, f, id, call, x)?;
     let found = super::parameters::caller_value(cx, f, id, param)?;
     let [name] = &found.names[..] else {
         return None;
@@ -554,33 +554,6 @@ fn caller_vector(
     .with_note(found.why())
     .with_help("test the length first (`dot(v, v) > 1e-12`) and choose a fallback direction");
     Some(d)
-}
-
-/// The parameter (its expression) `x` is as such: the argument, or a local holding it where
-/// every other store into the local is computed from the `normalize` itself (`a =
-/// normalize(a)`, a parameter the function writes).
-fn parameter_itself(
-    cx: &Cx,
-    f: &Function,
-    id: usize,
-    call: Handle<E>,
-    x: Handle<E>,
-) -> Option<Handle<E>> {
-    let top = resolve(f, cx.sound(), id, x);
-    if matches!(f.expressions[top], E::FunctionArgument(_)) {
-        return Some(top);
-    }
-    let E::Load { pointer } = f.expressions[x] else {
-        return None;
-    };
-    let stored = cx.stored(f, id, pointer);
-    let param = *stored
-        .iter()
-        .find(|v| matches!(f.expressions[**v], E::FunctionArgument(_)))?;
-    stored
-        .iter()
-        .all(|&v| v == param || super::computed_from(f, v, call))
-        .then_some(param)
 }
 
 /// `h` itself where it is a difference, or a factor of a product that is (`diff * scale`);

@@ -445,3 +445,30 @@ pub(super) fn vertex_input(
 ) -> Option<Handle<naga::GlobalVariable>> {
     vertex_private(cx, f, pointer).filter(|&g| input_copy(cx, g))
 }
+
+/// The parameter (its expression) `x` is as such where it is used by `call`: the argument, or
+/// a local holding it where every other store into the local is computed from `call` itself
+/// (`a = normalize(a)`, a parameter the function writes).
+pub(super) fn parameter_itself(
+    cx: &Cx,
+    f: &Function,
+    id: usize,
+    call: Handle<E>,
+    x: Handle<E>,
+) -> Option<Handle<E>> {
+    let top = crate::symbolic::resolve(f, cx.sound(), id, x);
+    if matches!(f.expressions[top], E::FunctionArgument(_)) {
+        return Some(top);
+    }
+    let E::Load { pointer } = f.expressions[x] else {
+        return None;
+    };
+    let stored = cx.stored(f, id, pointer);
+    let param = *stored
+        .iter()
+        .find(|v| matches!(f.expressions[**v], E::FunctionArgument(_)))?;
+    stored
+        .iter()
+        .all(|&v| v == param || super::computed_from(f, v, call))
+        .then_some(param)
+}

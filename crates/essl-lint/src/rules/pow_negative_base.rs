@@ -14,6 +14,11 @@ declare_rule! {
     /// Reports `pow(x, y)` where the shader's own arithmetic can make the base `x` negative: a dot
     /// product, a difference, a sine. A base that is only negative when a uniform or an input is
     /// (`pow(u_base, 2.0)`) is not reported: checking uniform values is the runtime check's job.
+    /// As a note, a library function's `pow` of its own scalar parameter where its callers pass
+    /// inputs as such (lygia's easing `quarticIn(t)` returning `pow(t, 4.0)`): a negative
+    /// argument (`sin(time)`, an overshooting `t`) is left to the caller, as the function's
+    /// divisions by its parameters are; a test of the parameter, or a name that says it is a
+    /// distance, length, radius, size or depth, keeps it quiet.
     ///
     /// ## Why is this bad?
     /// GLSL ES 3.00 leaves `pow(x, y)` undefined for `x < 0` (§8.2), whatever `y` is. Many GPUs
@@ -66,6 +71,7 @@ declare_rule! {
     /// Severity: a warning when values the shader itself produces reach the hazard; a note, naming
     /// the uniform, when one uniform alone (with constants) does — the hazard then needs that value out
     /// of the range the shader was written for, and essl-gl's validation mode checks it at draw time.
+    /// A parameter its callers pass as such is a note: the values are the callers'.
     ///
     /// ## References
     /// - GLSL ES 3.00 specification, §8.2 Exponential Functions: "Results are undefined if x < 0."
@@ -91,6 +97,10 @@ fn check_negative(cx: &Cx, out: &mut Vec<Diagnostic>) {
         let Some(b) = cx.sound().num(id, base) else {
             continue;
         };
+        if let Some(d) = caller_base(cx, f, id, h, base, exp) {
+            out.push(d);
+            continue;
+        }
         if b.hull().lo >= 0.0 || b.facts.has(Facts::NN) {
             continue;
         }
@@ -137,6 +147,59 @@ fn check_negative(cx: &Cx, out: &mut Vec<Diagnostic>) {
         out.push(cx.grade(d, &[(id, base)]));
     }
 }
+
+/// The note for `pow(p, y)` of a function's scalar parameter as such where its callers pass
+/// inputs as such: lygia's easing `quarticIn(t)` returning `pow(t, 4.0)` — a library function
+/// that leaves a negative argument (`sin(time)`, a `t` past its range) to the caller, as its
+/// divisions by its parameters do. The analysis takes inputs for positive, so this is decided
+/// before that: a guard on the parameter silences it.
+fn caller_base(
+    cx: &Cx,
+    f: &naga::Function,
+    id: usize,
+    call: naga::Handle<E>,
+    base: naga::Handle<E>,
+    exp: naga::Handle<E>,
+) -> Option<Diagnostic> {
+    let param = super::parameters::parameter_itself(cx, f, id, call, base)?;
+    let found = super::parameters::caller_value(cx, f, id, param)?;
+    let [name] = &found.names[..] else {
+        return None;
+    };
+    // A distance, length or radius is not negative by what it is.
+    if found.attribute || crate::analysis::names::says_any(name, NOT_NEGATIVE) {
+        return None;
+    }
+    // Under a test of the parameter (`t > 0.0 ? pow(t, k) : 0.0`, `if (t < 0.0) return 0.0;`):
+    // the analysis takes the parameter for positive already, so any bound on it is a guard.
+    let g = cx.guards(f, id, call);
+    if g.facts
+        .iter()
+        .any(|(s, _)| cx.sound().same(f, id, *s, base))
+    {
+        return None;
+    }
+    let span = cx.span(f, base);
+    if span.is_empty() {
+        return None;
+    }
+    let d = Diagnostic::rule_note(
+        PowNegativeBase::RULE.id,
+        format!("`pow` of the parameter `{name}`, which a caller may pass negative"),
+        span,
+    )
+    .with_label(format!(
+        "undefined wherever a caller passes `{name}` below 0"
+    ))
+    .with_note("GLSL ES 3.00 §8.2: pow(x, y) is undefined if x < 0")
+    .with_note(found.why());
+    Some(fix_negative(cx, f, id, cx.span(f, call), base, exp, d))
+}
+
+/// Words of a parameter's name that say its value is not negative by what it is.
+const NOT_NEGATIVE: &[&str] = &[
+    "dist", "distance", "length", "len", "radius", "size", "depth",
+];
 
 /// How far below 0 rounding alone takes a base that is not negative in exact arithmetic (the
 /// analysis's slack on dot products and lengths of unit vectors is a few ulps).

@@ -21,7 +21,11 @@ declare_rule! {
     /// functions it calls) a global declared without a value or a shader output — declared (`out
     /// vec4 o`) or built in (`gl_FragColor`, `gl_FragData`, `gl_Position`, `gl_PointSize`,
     /// `gl_FragDepth`) — read before it is written (vtk.js's `if (gl_FragData[0].a <= 0.0)
-    /// discard;` where its template's tags write nothing).
+    /// discard;` where its template's tags write nothing). And a function that returns a value
+    /// whose end control can reach without a `return`, reported at the statement control leaves
+    /// after: lygia's palette lookups `for (int i = 0; i < N; i++) if (i == index) return t[i];`,
+    /// whose caller reads an undefined result for an index outside the table (a function only
+    /// declared here, without a body, is the linked program's business).
     ///
     /// ## Why is this bad?
     /// GLSL ES leaves a variable without an initializer undefined until it is written (GLSL ES 3.00
@@ -79,7 +83,7 @@ declare_rule! {
     /// - WebGL 1.0 specification, §"Initial values for GLSL local and global variables".
     pub(crate) struct UninitialisedRead {
         id: "uninitialised-read",
-        summary: "a variable read before any write to it on some path (undefined in GLSL ES; zero in WebGL, garbage elsewhere)",
+        summary: "a variable read before any write to it on some path, or a function's end reached without a `return` (undefined in GLSL ES; zero in WebGL, garbage elsewhere)",
         default_level: Level::Warn,
         check: check,
     }
@@ -89,6 +93,10 @@ fn check(cx: &Cx, out: &mut Vec<Diagnostic>) {
     let m = cx.hir;
     for r in uninitialised_reads(m) {
         let f = &m.functions[r.function];
+        if r.var == Var::Result {
+            out.push(no_return(f, r.span));
+            continue;
+        }
         let (what, name, decl, ty) = match r.var {
             Var::Local(i) => {
                 let l = &f.locals[i];
@@ -105,6 +113,7 @@ fn check(cx: &Cx, out: &mut Vec<Diagnostic>) {
                 (what, gl.name.as_str(), gl.span, (!output).then_some(&gl.ty))
             }
             Var::Builtin(b) => ("output", b.name(), essl::source::Span::default(), None),
+            Var::Result => continue, // above
         };
         let unwritten_out = matches!(r.var, Var::Param(_)) && cx.text(r.span) != name;
         let (message, label) = if unwritten_out {
@@ -143,6 +152,22 @@ fn check(cx: &Cx, out: &mut Vec<Diagnostic>) {
         }
         out.push(d);
     }
+}
+
+/// The finding for a function that returns a value and whose end control can reach without a
+/// `return` (after a loop that returns from inside, an `if` without `else`): the call's result
+/// is undefined.
+fn no_return(f: &essl::hir::Function, at: essl::source::Span) -> Diagnostic {
+    let name = f.name.as_str();
+    Diagnostic::rule_warning(
+        UninitialisedRead::RULE.id,
+        format!("`{name}` can reach its end without returning a value: the caller reads an undefined result"),
+        at,
+    )
+    .with_label("control can leave the function after this without `return`")
+    .with_secondary(f.span, "returns a value")
+    .with_note("GLSL ES 3.00 §6.1: a function that returns a value must return one on every path; the result is undefined otherwise")
+    .with_help("end the function with a `return` of a fallback value")
 }
 
 /// The zero of a scalar, vector or matrix type, as GLSL.

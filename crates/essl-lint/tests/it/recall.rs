@@ -899,6 +899,26 @@ const PARAMETERS: &[(&str, &str, &str, Option<&str>)] = &[
         "  r = look(v_pos, v_h).x;",
         None,
     ),
+    // A scalar a caller passes as such as a `pow` base: an easing's `t`; tested first, or
+    // named for a distance, quiet.
+    (
+        "pow-negative-base",
+        "float qi(float t) { return pow(t, 4.0); }",
+        "  r = qi(v_x);",
+        Some("float qi(float t) { return pow(t, 4.0); }"),
+    ),
+    (
+        "pow-negative-base",
+        "float qi(float t) { return t > 0.0 ? pow(t, 4.0) : 0.0; }",
+        "  r = qi(v_x);",
+        None,
+    ),
+    (
+        "pow-negative-base",
+        "float att(float dist) { return pow(dist, 2.0); }",
+        "  r = att(v_x);",
+        None,
+    ),
     // A vector a caller passes as such: a rotation axis, a forward direction, written from
     // itself or not; tested first, or passed a constant, quiet.
     (
@@ -926,6 +946,24 @@ const PARAMETERS: &[(&str, &str, &str, Option<&str>)] = &[
         None,
     ),
 ];
+
+/// A function that returns a value and whose end control can reach without `return` (a lookup
+/// that returns from inside its loop): a warning at the statement control leaves after; the
+/// same with a fallback `return`, quiet.
+#[test]
+fn a_function_can_end_without_a_return() {
+    let rule = "uninitialised-read";
+    let lookup =
+        "float pick(int k) {\n  for (int i = 0; i < 4; i++)\n    if (i == k) return float(i);\n}";
+    let f = found_with("highp", rule, lookup, "  r = pick(int(v_x));");
+    assert_eq!(f, [(W, "for (int i = 0; i < 4; i++)".to_string())], "{f:?}");
+    let fallback = "float pick(int k) {\n  for (int i = 0; i < 4; i++)\n    if (i == k) return float(i);\n  return 0.0;\n}";
+    let f = found_with("highp", rule, fallback, "  r = pick(int(v_x));");
+    assert!(f.is_empty(), "{f:?}");
+    let branches = "float sgn(float x) {\n  if (x < 0.0) return -1.0;\n  else return 1.0;\n}";
+    let f = found_with("highp", rule, branches, "  r = sgn(v_x);");
+    assert!(f.is_empty(), "{f:?}");
+}
 
 #[test]
 fn what_parameters_make_undefined_is_a_note() {
