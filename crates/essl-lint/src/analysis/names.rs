@@ -70,7 +70,8 @@ pub(crate) fn words(name: &str) -> Vec<String> {
 /// Words that name a setting a user may set to 0: a count (of samples, steps, columns, rows,
 /// segments, octaves, iterations…), a length, a radius, a gamma, a falloff (`directionCount`,
 /// `numberOfTilesWidth`, `uTileColumns`, `_Blob_Fade_Length_`, `uRadius`, `uGamma`), a fade
-/// distance (`Inner_Fade`).
+/// distance (`Inner_Fade`), the width of a soft edge a user sets to 0 for a hard one
+/// (`feather`, `uSmoothing`, `softness`).
 /// Not sizes, resolutions, ratios or distances, which the host computes from the canvas and the
 /// camera and which are not 0 while anything is drawn (`u_resolution`, `u_pixelRatio`,
 /// `u_camera_to_center_distance`).
@@ -100,6 +101,9 @@ const SETTING: &[&str] = &[
     "cells",
     "tiles",
     "fade",
+    "feather",
+    "smoothing",
+    "softness",
 ];
 
 /// Words that say a name with a [`SETTING`] word holds something else: what a draw call draws,
@@ -202,6 +206,8 @@ mod tests {
             "u_radius",
             "_Proximity_Far_Distance_",
             "Inner_Fade",
+            "uIsolateThresholdFeather.z",
+            "uSmoothing",
         ] {
             assert!(is_setting(name), "{name}");
         }

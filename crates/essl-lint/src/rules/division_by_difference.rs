@@ -39,8 +39,9 @@ declare_rule! {
     /// for such a cosine (`NoL`, `NdotV`, `dotNL`) counts as one where a call passes it an input
     /// as such, as a library function's harness does. And, as a note naming it, a uniform as such
     /// whose name says it holds a setting a user may set to 0 — a count, a length, a radius, a
-    /// gamma, a fade, a near or far distance (`1.0 / uGamma`, `1.0 / float(directionCount)`,
-    /// `d / uRadius`, `d / Proximity_Far_Distance`), or a multiple of
+    /// gamma, a fade, a near or far distance, a soft edge's width (`1.0 / uGamma`,
+    /// `1.0 / float(directionCount)`, `d / uRadius`, `d / Proximity_Far_Distance`,
+    /// `match / feather`), or a multiple of
     /// one (`lengthCap * sqrt(-z)`, through locals and calls) — but not a size,
     /// resolution, ratio or distance the host computes from the canvas or the camera, nor a count
     /// of the vertices drawn. Also as a note, naming them, a function's division by its own
