@@ -1,6 +1,7 @@
 //! `normalize-zero`: `normalize(v)` of a vector that can be zero for ordinary parameters.
 
 use essl::diagnostic::Diagnostic;
+use essl::source::Span;
 use naga::{Expression as E, Function, Handle, MathFunction as Mf};
 
 use super::rule::declare_rule;
@@ -124,13 +125,14 @@ fn check(cx: &Cx, out: &mut Vec<Diagnostic>) {
                 continue;
             }
             let x = cx.operand(f, h, arg);
+            let at = Normalize { f, id, call: h, x };
             let Some(v) = cx.sound().num(id, x) else {
                 continue;
             };
             if v.n >= 2 && v.facts.has(Facts::NZ) {
-                out.extend(attribute_direction(cx, f, id, h, x));
-                out.extend(black_texel(cx, f, id, h, x));
-                out.extend(caller_vector(cx, f, id, h, x));
+                out.extend(attribute_direction(cx, at));
+                out.extend(black_texel(cx, at));
+                out.extend(caller_vector(cx, at));
                 continue;
             }
             if v.n < 2 || !v.may_be_zero() || v.facts.has(Facts::NZ) {
@@ -153,10 +155,7 @@ fn check(cx: &Cx, out: &mut Vec<Diagnostic>) {
                         || axis_chosen_away(cx, f, id, x)
                         || tilted_axis(cx, f, id, x));
                 if !kept {
-                    out.extend(
-                        attribute_direction(cx, f, id, h, x)
-                            .or_else(|| caller_difference(cx, f, id, h, x)),
-                    );
+                    out.extend(attribute_direction(cx, at).or_else(|| caller_difference(cx, at)));
                 }
                 continue;
             }
@@ -429,17 +428,31 @@ pub(super) fn direction_attributes(
     Some(list.join(", "))
 }
 
+/// A `normalize` call: the function it is in (and that function's id), the call, and its
+/// argument.
+#[derive(Clone, Copy)]
+struct Normalize<'a> {
+    f: &'a Function,
+    id: usize,
+    call: Handle<E>,
+    x: Handle<E>,
+}
+
+/// A note on `normalize` of a vector that the values `why` names can make the zero vector.
+fn zero_vector_note(span: Span, message: String, label: String, why: &str) -> Diagnostic {
+    Diagnostic::rule_note(NormalizeZero::RULE.id, message, span)
+        .with_label(label)
+        .with_note("normalize(v) divides by length(v): 0 / 0 for the zero vector")
+        .with_note(why)
+        .with_help("test the length first (`dot(v, v) > 1e-12`) and choose a fallback direction")
+}
+
 /// The note for `normalize(x)` in a vertex shader of a vector not zero unless an attribute that
 /// holds a direction is (a normal through the normal matrix, `(M * vec4(tangent, 0.0)).xyz`):
 /// a vertex whose normal is the zero vector — a degenerate triangle's, a buffer the mesh lacks —
 /// gets NaN. `None` where the origin holds anything else (a position, a texel).
-fn attribute_direction(
-    cx: &Cx,
-    f: &Function,
-    id: usize,
-    call: Handle<E>,
-    x: Handle<E>,
-) -> Option<Diagnostic> {
+fn attribute_direction(cx: &Cx, n: Normalize) -> Option<Diagnostic> {
+    let Normalize { f, id, call, x } = n;
     let list = direction_attributes(cx, f, id, x)?;
     let g = cx.guards(f, id, call);
     // The analysis takes an attribute as such to be non-zero: only a guard that rules out a
@@ -449,23 +462,15 @@ fn attribute_direction(
     if cx.nonzero(f, id, x, &g) || (unguarded && guarded) || length_guarded(cx, f, id, x, &g) {
         return None;
     }
-    let span = cx.span(f, x);
-    Some(
-        Diagnostic::rule_note(
-            NormalizeZero::RULE.id,
-            format!(
-                "`normalize` of the attribute {list}, which a vertex may hold as the zero vector"
-            ),
-            span,
-        )
-        .with_label(format!(
+    Some(zero_vector_note(
+        cx.span(f, x),
+        format!("`normalize` of the attribute {list}, which a vertex may hold as the zero vector"),
+        format!(
             "{} is the zero vector for a vertex whose {list} is",
             cx.what(f, id, x)
-        ))
-        .with_note("normalize(v) divides by length(v): 0 / 0 for the zero vector")
-        .with_note(ZERO_DIRECTION)
-        .with_help("test the length first (`dot(v, v) > 1e-12`) and choose a fallback direction"),
-    )
+        ),
+        ZERO_DIRECTION,
+    ))
 }
 
 /// The note for `normalize(x)` of a difference of values callers pass as such, or of a vertex
@@ -473,13 +478,8 @@ fn attribute_direction(
 /// lygia's `lookAt(eye, target)` normalizing `target - eye`, a line renderer's segment direction
 /// `normalize((b - a) * scale)` of two positions a vertex holds — the zero vector where a caller
 /// passes the same point twice, or the data repeats a point.
-fn caller_difference(
-    cx: &Cx,
-    f: &Function,
-    id: usize,
-    call: Handle<E>,
-    x: Handle<E>,
-) -> Option<Diagnostic> {
+fn caller_difference(cx: &Cx, n: Normalize) -> Option<Diagnostic> {
+    let Normalize { f, id, call, x } = n;
     let d = difference_factor(cx, f, id, x, 0)?;
     let found = super::parameters::caller_value(cx, f, id, d)?;
     if found.names.len() < 2 {
@@ -498,36 +498,27 @@ fn caller_difference(
     } else {
         ("parameters", "callers may pass equal")
     };
-    let d = Diagnostic::rule_note(
-        NormalizeZero::RULE.id,
-        format!("`normalize` of a difference of the {whose} {list}, which {equal}"),
+    Some(zero_vector_note(
         cx.span(f, x),
-    )
-    .with_label(format!(
-        "{} is the zero vector wherever they are equal",
-        cx.what(f, id, x)
+        format!("`normalize` of a difference of the {whose} {list}, which {equal}"),
+        format!(
+            "{} is the zero vector wherever they are equal",
+            cx.what(f, id, x)
+        ),
+        if found.attribute {
+            "attributes are the host's vertex data: a repeated point, a segment of length 0, makes them equal"
+        } else {
+            found.why()
+        },
     ))
-    .with_note("normalize(v) divides by length(v): 0 / 0 for the zero vector")
-    .with_note(if found.attribute {
-        "attributes are the host's vertex data: a repeated point, a segment of length 0, makes them equal"
-    } else {
-        found.why()
-    })
-    .with_help("test the length first (`dot(v, v) > 1e-12`) and choose a fallback direction");
-    Some(d)
 }
 
 /// The note for `normalize(p)` of a function's vector parameter as such (or a multiple of
 /// it) where its callers pass inputs as such: lygia's `rotate3d(axis, angle)` normalizing its
 /// axis, `lookAt(forward)` its forward direction — a library function that leaves the zero
 /// vector (a cross product of parallel vectors, an eye at its target) to the caller.
-fn caller_vector(
-    cx: &Cx,
-    f: &Function,
-    id: usize,
-    call: Handle<E>,
-    x: Handle<E>,
-) -> Option<Diagnostic> {
+fn caller_vector(cx: &Cx, n: Normalize) -> Option<Diagnostic> {
+    let Normalize { f, id, call, x } = n;
     let param = super::parameters::parameter_itself(cx, f, id, call, x)?;
     let found = super::parameters::caller_value(cx, f, id, param)?;
     let [name] = &found.names[..] else {
@@ -540,20 +531,14 @@ fn caller_vector(
     if length_guarded(cx, f, id, x, &cx.guards(f, id, call)) {
         return None;
     }
-    let d = Diagnostic::rule_note(
-        NormalizeZero::RULE.id,
+    Some(zero_vector_note(
+        cx.span(f, x),
         format!(
             "`normalize` of the parameter `{name}`, which a caller may pass as the zero vector"
         ),
-        cx.span(f, x),
-    )
-    .with_label(format!(
-        "NaN wherever a caller passes `{name}` as the zero vector"
+        format!("NaN wherever a caller passes `{name}` as the zero vector"),
+        found.why(),
     ))
-    .with_note("normalize(v) divides by length(v): 0 / 0 for the zero vector")
-    .with_note(found.why())
-    .with_help("test the length first (`dot(v, v) > 1e-12`) and choose a fallback direction");
-    Some(d)
 }
 
 /// `h` itself where it is a difference, or a factor of a product that is (`diff * scale`);
@@ -618,13 +603,8 @@ fn length_guarded(
 /// The finding for `normalize(x)` of a texel as such (`texture(gNormal, uv).rgb`,
 /// `texelFetch(uNormalBuffer, p, 0).xyz`), whose ordinary values reach the zero vector: every
 /// black texel, such as the background a G-buffer is cleared to.
-fn black_texel(
-    cx: &Cx,
-    f: &Function,
-    id: usize,
-    call: Handle<E>,
-    x: Handle<E>,
-) -> Option<Diagnostic> {
+fn black_texel(cx: &Cx, n: Normalize) -> Option<Diagnostic> {
+    let Normalize { f, id, call, x } = n;
     let v = cx.sound().num(id, x)?;
     if !v.facts.has(Facts::EXT)
         || !v.facts.any(Facts::TEXTURE)
