@@ -238,14 +238,12 @@ impl<'a> Walk<'a> {
             // The end reached without `return`: the last statement is where control leaves. A
             // function without statements is one only declared here (Cesium's
             // `czm_computePosition();`, defined by the program it is linked into).
-            if let Some(last) = body.last().filter(|_| {
-                self.summary.is_none() && f.ret != Type::Void && self.reported.insert(Var::Result)
-            }) {
-                let span = last.span;
+            let returns_value = self.summary.is_none() && f.ret != Type::Void;
+            if let Some(last) = body.last().filter(|_| returns_value) {
                 self.reads.push(Read {
                     function: self.fid,
                     var: Var::Result,
-                    span,
+                    span: last.span,
                     through: None,
                 });
             }
@@ -689,7 +687,7 @@ impl<'a> Walk<'a> {
         st: State,
     ) -> Option<State> {
         let mut st = self.stmts(init, st)?;
-        let once = do_while || cond.is_none() || runs_once(init, cond);
+        let once = do_while || cond.is_none() || counters::runs_once(init, cond);
         let mut head = st.clone();
         if !do_while {
             self.cond(cond, &mut head);
@@ -761,49 +759,5 @@ fn meet_opt(a: Option<State>, b: Option<State>) -> Option<State> {
         (Some(a), Some(b)) => Some(meet(&a, &b)),
         (a, None) => a,
         (None, b) => b,
-    }
-}
-
-/// A `for` loop's counter and constant bounds: the comparison, the local it tests, the constant
-/// the initializer gives it and the constant it is compared with (`for (int i = 0; i < 4; …)`).
-fn constant_bounds(init: &[Stmt], cond: Option<&Cond>) -> Option<(BinaryOp, usize, f64, f64)> {
-    let Some(Cond::Expr(Expr {
-        kind: ExprKind::Binary(op, l, r),
-        ..
-    })) = cond
-    else {
-        return None;
-    };
-    let ExprKind::Local(i) = l.kind else {
-        return None;
-    };
-    let bound = r.as_const().and_then(scalar)?;
-    let start = init.iter().find_map(|s| match &s.kind {
-        StmtKind::Local(j, Some(e)) if *j == i => e.as_const().and_then(scalar),
-        _ => None,
-    })?;
-    Some((*op, i, start, bound))
-}
-
-/// Whether a `for` loop's constant bounds let its body run at least once:
-/// `for (int i = 0; i < 4; …)` (an initializer and a comparison with constants).
-fn runs_once(init: &[Stmt], cond: Option<&Cond>) -> bool {
-    let Some((op, _, c, n)) = constant_bounds(init, cond) else {
-        return false;
-    };
-    match op {
-        BinaryOp::Less => c < n,
-        BinaryOp::LessEq => c <= n,
-        BinaryOp::Greater => c > n,
-        BinaryOp::GreaterEq => c >= n,
-        BinaryOp::NotEq => c != n,
-        _ => false,
-    }
-}
-
-fn scalar(c: &hir::ConstValue) -> Option<f64> {
-    match c.scalars()? {
-        [s] => Some(s.as_f64()),
-        _ => None,
     }
 }

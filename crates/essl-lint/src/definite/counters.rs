@@ -5,12 +5,11 @@
 //! its condition compares with a constant, which its step moves towards the bound by a
 //! constant and its body never writes (nor passes to a function's `out` or `inout`
 //! parameter); anything else gives no range, and a write through the index then counts for
-//! every component, as before.
+//! every component, as before. Here too: whether a loop with constant bounds runs its body at
+//! least once.
 
 use essl::hir::visit::{self, Visitor};
-use essl::hir::{self, BinaryOp, Cond, Expr, ExprKind, ParamMode, Stmt};
-
-use super::{constant_bounds, scalar};
+use essl::hir::{self, BinaryOp, Cond, Expr, ExprKind, ParamMode, Stmt, StmtKind};
 
 /// The counter of a loop and the values it takes in the body, inclusive.
 pub(super) fn counter_range(
@@ -106,5 +105,53 @@ impl Visitor for Writes<'_> {
             }
             _ => visit::walk_expr(self, e),
         }
+    }
+}
+
+/// A `for` loop's counter and constant bounds: the comparison, the local it tests, the constant
+/// the initializer gives it and the constant it is compared with (`for (int i = 0; i < 4; …)`).
+pub(super) fn constant_bounds(
+    init: &[Stmt],
+    cond: Option<&Cond>,
+) -> Option<(BinaryOp, usize, f64, f64)> {
+    let Some(Cond::Expr(Expr {
+        kind: ExprKind::Binary(op, l, r),
+        ..
+    })) = cond
+    else {
+        return None;
+    };
+    let ExprKind::Local(i) = l.kind else {
+        return None;
+    };
+    let bound = r.as_const().and_then(scalar)?;
+    let start = init.iter().find_map(|s| match &s.kind {
+        StmtKind::Local(j, Some(e)) if *j == i => e.as_const().and_then(scalar),
+        _ => None,
+    })?;
+    Some((*op, i, start, bound))
+}
+
+/// Whether a `for` loop's constant bounds let its body run at least once:
+/// `for (int i = 0; i < 4; …)` (an initializer and a comparison with constants).
+pub(super) fn runs_once(init: &[Stmt], cond: Option<&Cond>) -> bool {
+    let Some((op, _, c, n)) = constant_bounds(init, cond) else {
+        return false;
+    };
+    match op {
+        BinaryOp::Less => c < n,
+        BinaryOp::LessEq => c <= n,
+        BinaryOp::Greater => c > n,
+        BinaryOp::GreaterEq => c >= n,
+        BinaryOp::NotEq => c != n,
+        _ => false,
+    }
+}
+
+/// The value of a scalar constant.
+pub(super) fn scalar(c: &hir::ConstValue) -> Option<f64> {
+    match c.scalars()? {
+        [s] => Some(s.as_f64()),
+        _ => None,
     }
 }

@@ -240,58 +240,19 @@ fn leaves(cx: &Cx, fr: &Frame, h: Handle<E>, depth: u32, out: &mut Walk) -> bool
     };
     match f.expressions[h] {
         E::Literal(_) | E::Constant(_) | E::ZeroValue(_) => true,
-        // A parameter every call passes an input as such.
         // In a called function, the call's argument (`unpack_mix_vec2(a_floorwidth, t)`).
         E::FunctionArgument(i) if fr.call.is_some() => {
             let (caller, args) = fr.call.unwrap();
             args.get(i as usize)
                 .is_some_and(|&a| leaves(cx, caller, a, depth + 1, out))
         }
+        // A parameter every call passes an input as such.
         E::FunctionArgument(i) if as_such(h) => {
             out.leaves.push(Leaf::Parameter(i));
             true
         }
-        // A parameter every call passes a value of a vertex shader's attributes (MapLibre's
-        // `get_pattern_pos(…, display_size, …)` of a pattern's corners): those attributes.
-        E::FunctionArgument(i) if id < cx.module.functions.len() => {
-            let callers = cx.flows().callers(id);
-            !callers.is_empty()
-                && callers.iter().all(|(caller, args)| {
-                    let Some(&a) = args.get(i as usize) else {
-                        return false;
-                    };
-                    let g = crate::analysis::function(cx.module, *caller);
-                    let up = Frame {
-                        f: g,
-                        id: *caller,
-                        call: None,
-                    };
-                    let from = out.leaves.len();
-                    leaves(cx, &up, a, depth + 1, out)
-                        && out.leaves[from..]
-                            .iter()
-                            .all(|l| matches!(l, Leaf::Attribute(_)))
-                })
-        }
-        E::FunctionArgument(_) => false,
-        // What the called function returns, its parameters read as the call's arguments.
-        E::CallResult(callee) => {
-            let callee = callee.index();
-            let Some(args) = cx.flows().arguments(id, h) else {
-                return false;
-            };
-            let g = crate::analysis::function(cx.module, callee);
-            let inner = Frame {
-                f: g,
-                id: callee,
-                call: Some((fr, args)),
-            };
-            let returns = cx.flows().returns(callee);
-            !returns.is_empty()
-                && returns
-                    .iter()
-                    .all(|&r| leaves(cx, &inner, r, depth + 1, out))
-        }
+        E::FunctionArgument(i) => from_callers(cx, id, i as usize, depth, out),
+        E::CallResult(callee) => returned(cx, fr, h, callee.index(), depth, out),
         E::Load { pointer } if vertex_input(cx, f, pointer).is_some() => {
             out.leaves
                 .extend(vertex_input(cx, f, pointer).map(Leaf::Attribute));
@@ -376,6 +337,50 @@ fn leaves(cx: &Cx, fr: &Frame, h: Handle<E>, depth: u32, out: &mut Walk) -> bool
         } if matches!(f.expressions[right], E::Literal(_) | E::Constant(_)) => go(left, out),
         _ => false,
     }
+}
+
+/// Whether parameter `i` of function `id` is, at every call, a value of a vertex shader's
+/// attributes (MapLibre's `get_pattern_pos(…, display_size, …)` of a pattern's corners):
+/// those attributes join `out`.
+fn from_callers(cx: &Cx, id: usize, i: usize, depth: u32, out: &mut Walk) -> bool {
+    if id >= cx.module.functions.len() {
+        return false;
+    }
+    let callers = cx.flows().callers(id);
+    !callers.is_empty()
+        && callers.iter().all(|(caller, args)| {
+            let Some(&a) = args.get(i) else {
+                return false;
+            };
+            let up = Frame {
+                f: crate::analysis::function(cx.module, *caller),
+                id: *caller,
+                call: None,
+            };
+            let from = out.leaves.len();
+            leaves(cx, &up, a, depth + 1, out)
+                && out.leaves[from..]
+                    .iter()
+                    .all(|l| matches!(l, Leaf::Attribute(_)))
+        })
+}
+
+/// Whether every value function `callee` returns to the call `h` of frame `fr` is built as
+/// [`leaves`] asks, its parameters read as the call's arguments.
+fn returned(cx: &Cx, fr: &Frame, h: Handle<E>, callee: usize, depth: u32, out: &mut Walk) -> bool {
+    let Some(args) = cx.flows().arguments(fr.id, h) else {
+        return false;
+    };
+    let inner = Frame {
+        f: crate::analysis::function(cx.module, callee),
+        id: callee,
+        call: Some((fr, args)),
+    };
+    let returns = cx.flows().returns(callee);
+    !returns.is_empty()
+        && returns
+            .iter()
+            .all(|&r| leaves(cx, &inner, r, depth + 1, out))
 }
 
 /// Whether expression `h` of function `id` is a 4-component vector.
