@@ -91,6 +91,12 @@ impl Facts {
         }
     }
 
+    /// Whether a value with these facts is the same for every vertex and pixel of a draw:
+    /// uniforms reach it, inputs and texels do not.
+    pub fn per_draw(self) -> bool {
+        self.any(Facts::UNIFORM) && !self.any(Facts::INPUT.with(Facts::TEXTURE))
+    }
+
     /// Only the bits of `o`.
     pub fn only(self, o: Facts) -> Facts {
         Facts(self.0 & o.0)

@@ -357,10 +357,7 @@ fn setting_factor(
     if depth > 8 || !n.comps().iter().any(|c| c.contains(0.0)) {
         return None;
     }
-    if n.facts.has(Facts::EXT)
-        && n.facts.any(Facts::UNIFORM)
-        && !n.facts.any(Facts::INPUT.with(Facts::TEXTURE))
-    {
+    if n.facts.has(Facts::EXT) && n.facts.per_draw() {
         let name = cx.origin(&[(id, h)]).single_uniform()?.to_string();
         return is_setting(&name).then_some((name, depth == 0));
     }

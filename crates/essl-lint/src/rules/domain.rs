@@ -59,8 +59,7 @@ pub(super) fn check(cx: &Cx, out: &mut Vec<Diagnostic>, domains: &[Domain], rule
         let negative = v.hull().lo < 0.0 && !v.facts.has(Facts::NN);
         // A per-draw value positive only because its uniforms are taken to be: 0 is an
         // ordinary value of many (a blurriness, a roughness at its default).
-        let per_draw =
-            v.facts.any(Facts::UNIFORM) && !v.facts.any(Facts::INPUT.with(Facts::TEXTURE));
+        let per_draw = v.facts.per_draw();
         let zero = dom.zero
             && v.comps().iter().any(|c| c.contains(0.0))
             && (!v.facts.has(Facts::POS) || v.facts.any(Facts::TEXTURE) || per_draw);

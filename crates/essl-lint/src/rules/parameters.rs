@@ -233,11 +233,7 @@ fn leaves(cx: &Cx, fr: &Frame, h: Handle<E>, depth: u32, out: &mut Walk) -> bool
         })
     };
     // Uniforms and constants only: the same for every vertex and pixel of a draw.
-    let per_draw = |x: Handle<E>| {
-        cx.sound().num(id, x).is_some_and(|v| {
-            v.facts.any(Facts::UNIFORM) && !v.facts.any(Facts::INPUT.with(Facts::TEXTURE))
-        })
-    };
+    let per_draw = |x: Handle<E>| cx.sound().num(id, x).is_some_and(|v| v.facts.per_draw());
     match f.expressions[h] {
         E::Literal(_) | E::Constant(_) | E::ZeroValue(_) => true,
         // In a called function, the call's argument (`unpack_mix_vec2(a_floorwidth, t)`).

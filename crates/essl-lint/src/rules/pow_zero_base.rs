@@ -210,10 +210,7 @@ fn from_callers(
 }
 
 pub(super) fn as_uniform(facts: Facts) -> bool {
-    facts.has(Facts::EXT)
-        && facts.has(Facts::POS)
-        && facts.any(Facts::UNIFORM)
-        && !facts.any(Facts::INPUT.with(Facts::TEXTURE))
+    facts.has(Facts::EXT) && facts.has(Facts::POS) && facts.per_draw()
 }
 
 /// Whether `base` (with `facts`) is a texel as such whose ordinary values start at 0.
