@@ -6,6 +6,7 @@ use essl::diagnostic::{Diagnostic, Fix};
 use naga::{BinaryOperator as Bo, Expression as E, ScalarKind};
 
 use super::clip_space::{self, Clip};
+use super::normalize_zero;
 use super::parameters::caller_value;
 use super::rule::declare_rule;
 use super::Cx;
@@ -58,7 +59,10 @@ declare_rule! {
     /// missing from the atlas, regl-scatter2d's `1.0 / gl_PointSize` of a point of size 0) —
     /// values of the host's vertex data, 0 for a vertex that holds 0. And the length of a normal or tangent attribute through a
     /// transform (`r / length((world * vec4(cross(normal, tangent), 0.0)).xyz)`), 0 for a
-    /// vertex of a mesh without the buffer (read as the zero vector). And, as a note, a vertex
+    /// vertex of a mesh without the buffer (read as the zero vector); more generally, the length
+    /// of any vector `normalize-zero` reports `normalize` of (`d / length(d)`, a normalisation
+    /// by hand; `t / length(b - a)` of an edge of a triangle a caller passes, 0 for a degenerate
+    /// one), at that rule's severity. And, as a note, a vertex
     /// shader's perspective divide by the `w` of `gl_Position` or of a product with a projection
     /// matrix (`p.xy / p.w`, through locals, calls and parameters): the vertex shader runs before
     /// clipping, so a vertex on the camera's plane (a line or triangle crossing it) has `w = 0`
@@ -184,6 +188,8 @@ fn check(cx: &Cx, out: &mut Vec<Diagnostic>) {
                     out.push(diag);
                 } else if let Some(diag) = direction_divisor(cx, &div) {
                     out.push(diag);
+                } else {
+                    out.extend(length_divisor(cx, &div));
                 }
                 continue;
             }
@@ -197,7 +203,7 @@ fn check(cx: &Cx, out: &mut Vec<Diagnostic>) {
             // values (a second run over the module): after the cheaper tests.
             let texel = per_pixel && zero_at_texel_end(cx, id, d, v.facts);
             if per_pixel && !texel {
-                out.extend(parameter_divisor(cx, &div));
+                out.extend(parameter_divisor(cx, &div).or_else(|| length_divisor(cx, &div)));
                 continue;
             }
             if sym.get_or_insert_with(|| cx.sym(id, f)).nonzero(d) {
@@ -530,6 +536,35 @@ fn direction_divisor(cx: &Cx, div: &Division) -> Option<Diagnostic> {
     .with_help("guard the divisor: `max(x, 1e-4)`")
     .with_fix(floor_fix(cx, span))
     .with_note(super::normalize_zero::ZERO_DIRECTION);
+    Some(diag)
+}
+
+/// The finding for a division by `length(x)` where `normalize(x)` would be one
+/// ([`normalize_zero::zero_length`]): a normalisation by hand (`delta / length(delta)`), the
+/// length of a parameter callers pass as such (`/ length(planeNormal)`), of a cross product of
+/// vectors that can be parallel, or of a difference of points a vertex holds.
+fn length_divisor(cx: &Cx, div: &Division) -> Option<Diagnostic> {
+    let Division { f, id, h, d } = *div;
+    let E::Math {
+        fun: naga::MathFunction::Length,
+        arg,
+        ..
+    } = f.expressions[resolve(f, cx.sound(), id, d)]
+    else {
+        return None;
+    };
+    let found = normalize_zero::zero_length(cx, f, id, h, arg)?;
+    let span = unguarded(cx, div)?;
+    let mut diag = Diagnostic::rule_warning(
+        DivisionByDifference::RULE.id,
+        "division by the length of a vector that can be the zero vector",
+        span,
+    )
+    .with_label(found.label)
+    .with_help("guard the divisor: `max(x, 1e-4)`, or test the length first")
+    .with_fix(floor_fix(cx, span));
+    diag.notes = found.notes;
+    diag.severity = found.severity;
     Some(diag)
 }
 

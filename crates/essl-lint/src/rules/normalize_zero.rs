@@ -125,89 +125,106 @@ fn check(cx: &Cx, out: &mut Vec<Diagnostic>) {
                 continue;
             }
             let x = cx.operand(f, h, arg);
-            let at = Normalize { f, id, call: h, x };
-            let Some(v) = cx.sound().num(id, x) else {
-                continue;
-            };
-            if v.n >= 2 && v.facts.has(Facts::NZ) {
-                out.extend(attribute_direction(cx, at));
-                out.extend(black_texel(cx, at));
-                out.extend(caller_vector(cx, at));
-                continue;
-            }
-            if v.n < 2 || !v.may_be_zero() || v.facts.has(Facts::NZ) {
-                continue;
-            }
-            // A per-pixel vector that is not a cross product or an image's gradient is left
-            // alone (below): the guards refine intervals and keep where a value comes from, so
-            // they need not be looked up.
-            let gradient = !v.facts.any(Facts::CROSS)
-                && v.facts.any(Facts::TEXTURE)
-                && super::gradient::texel_gradient(cx, f, id, x);
-            if !v.facts.any(Facts::CROSS)
-                && v.facts.any(Facts::INPUT.with(Facts::TEXTURE))
-                && !gradient
-            {
-                // A cross product of vectors built perpendicular, or with an axis chosen away
-                // from the other, is not zero (below) whatever attributes it is built from.
-                let kept = v.facts.any(Facts::CROSS)
-                    && (orthogonal_cross(cx, f, id, x)
-                        || axis_chosen_away(cx, f, id, x)
-                        || tilted_axis(cx, f, id, x));
-                if !kept {
-                    out.extend(attribute_direction(cx, at).or_else(|| caller_difference(cx, at)));
-                }
-                continue;
-            }
-            // `dot(v, v) > 1e-12 ? normalize(v) : fallback`, `if (length(v) > 0.0)`.
-            let Some(v) = cx.refined(f, id, x, &cx.guards(f, id, h)) else {
-                continue;
-            };
-            if !v.may_be_zero() || v.facts.has(Facts::NZ) {
-                continue;
-            }
-            let cross = v.facts.any(Facts::CROSS);
-            if cross
-                && (orthogonal_cross(cx, f, id, x)
-                    || axis_chosen_away(cx, f, id, x)
-                    || tilted_axis(cx, f, id, x))
-            {
-                continue;
-            }
-            let per_draw = !v.facts.any(Facts::INPUT.with(Facts::TEXTURE));
-            if !cross && !per_draw && !gradient {
-                continue;
-            }
-            let span = cx.span(f, x);
-            let what = cx.what(f, id, x);
-            let label = if cross {
-                format!("{what} is the zero vector when its two vectors are parallel")
-            } else if gradient {
-                format!(
-                    "{what}, a difference of texels, is the zero vector wherever the image is flat"
-                )
-            } else if v.facts.any(Facts::UNIFORM) {
-                format!("{what} is the zero vector for some values of the uniforms, for every pixel of the draw")
-            } else {
-                format!("{what} is the zero vector")
-            };
-            let d = Diagnostic::rule_warning(
-                NormalizeZero::RULE.id,
-                "`normalize` of a vector that can be zero, which gives NaN",
-                span,
-            )
-            .with_label(label)
-            .with_note("normalize(v) divides by length(v): 0 / 0 for the zero vector")
-            .with_help(
-                "test the length first (`dot(v, v) > 1e-12`) and choose a fallback direction",
-            );
-            out.push(if cross || gradient {
-                d
-            } else {
-                cx.grade(d, &[(id, x)])
-            });
+            out.extend(zero_vector(cx, f, id, h, x));
         }
     }
+}
+
+/// The finding for `normalize(x)` at `site` (the call, or for [`zero_length`] the division
+/// by `length(x)`), where `x` can be the zero vector; `None` where it cannot, or is kept from
+/// it.
+fn zero_vector(
+    cx: &Cx,
+    f: &Function,
+    id: usize,
+    site: Handle<E>,
+    x: Handle<E>,
+) -> Option<Diagnostic> {
+    let at = Normalize {
+        f,
+        id,
+        call: site,
+        x,
+    };
+    let v = cx.sound().num(id, x)?;
+    if v.n >= 2 && v.facts.has(Facts::NZ) {
+        return attribute_direction(cx, at)
+            .or_else(|| black_texel(cx, at))
+            .or_else(|| caller_vector(cx, at));
+    }
+    if v.n < 2 || !v.may_be_zero() || v.facts.has(Facts::NZ) {
+        return None;
+    }
+    // A per-pixel vector that is not a cross product or an image's gradient is left alone
+    // (below): the guards refine intervals and keep where a value comes from, so they need
+    // not be looked up.
+    let gradient = !v.facts.any(Facts::CROSS)
+        && v.facts.any(Facts::TEXTURE)
+        && super::gradient::texel_gradient(cx, f, id, x);
+    if !v.facts.any(Facts::CROSS) && v.facts.any(Facts::INPUT.with(Facts::TEXTURE)) && !gradient {
+        return attribute_direction(cx, at).or_else(|| caller_difference(cx, at));
+    }
+    // `dot(v, v) > 1e-12 ? normalize(v) : fallback`, `if (length(v) > 0.0)`.
+    let v = cx.refined(f, id, x, &cx.guards(f, id, site))?;
+    if !v.may_be_zero() || v.facts.has(Facts::NZ) {
+        return None;
+    }
+    let cross = v.facts.any(Facts::CROSS);
+    if cross
+        && (orthogonal_cross(cx, f, id, x)
+            || axis_chosen_away(cx, f, id, x)
+            || tilted_axis(cx, f, id, x))
+    {
+        return None;
+    }
+    let per_draw = !v.facts.any(Facts::INPUT.with(Facts::TEXTURE));
+    if !cross && !per_draw && !gradient {
+        return None;
+    }
+    let what = cx.what(f, id, x);
+    let label = if cross {
+        format!("{what} is the zero vector when its two vectors are parallel")
+    } else if gradient {
+        format!("{what}, a difference of texels, is the zero vector wherever the image is flat")
+    } else if v.facts.any(Facts::UNIFORM) {
+        format!(
+            "{what} is the zero vector for some values of the uniforms, for every pixel of the draw"
+        )
+    } else {
+        format!("{what} is the zero vector")
+    };
+    let d = Diagnostic::rule_warning(
+        NormalizeZero::RULE.id,
+        "`normalize` of a vector that can be zero, which gives NaN",
+        cx.span(f, x),
+    )
+    .with_label(label)
+    .with_note(NORMALIZE_DIVIDES)
+    .with_help("test the length first (`dot(v, v) > 1e-12`) and choose a fallback direction");
+    Some(if cross || gradient {
+        d
+    } else {
+        cx.grade(d, &[(id, x)])
+    })
+}
+
+/// The note every finding of `normalize` of a zero vector carries.
+const NORMALIZE_DIVIDES: &str = "normalize(v) divides by length(v): 0 / 0 for the zero vector";
+
+/// What [`zero_vector`] finds for `normalize(x)`, for a division `site` by `length(x)`: the
+/// same zero vector makes the divisor 0 (`v / length(v)`, a normalisation by hand;
+/// `d / length(planeNormal)`). Its label, notes (but the one on `normalize`) and severity, for
+/// the division's finding to carry.
+pub(super) fn zero_length(
+    cx: &Cx,
+    f: &Function,
+    id: usize,
+    site: Handle<E>,
+    x: Handle<E>,
+) -> Option<Diagnostic> {
+    let mut d = zero_vector(cx, f, id, site, x)?;
+    d.notes.retain(|n| n != NORMALIZE_DIVIDES);
+    Some(d)
 }
 
 /// Whether `h` is `cross(a, b)` of non-zero vectors where every value `a` (or `b`) can hold is
@@ -442,7 +459,7 @@ struct Normalize<'a> {
 fn zero_vector_note(span: Span, message: String, label: String, why: &str) -> Diagnostic {
     Diagnostic::rule_note(NormalizeZero::RULE.id, message, span)
         .with_label(label)
-        .with_note("normalize(v) divides by length(v): 0 / 0 for the zero vector")
+        .with_note(NORMALIZE_DIVIDES)
         .with_note(why)
         .with_help("test the length first (`dot(v, v) > 1e-12`) and choose a fallback direction")
 }
@@ -631,7 +648,7 @@ fn black_texel(cx: &Cx, n: Normalize) -> Option<Diagnostic> {
             "{} is the zero vector for every black texel (a G-buffer's cleared background)",
             cx.what(f, id, x)
         ))
-        .with_note("normalize(v) divides by length(v): 0 / 0 for the zero vector")
+        .with_note(NORMALIZE_DIVIDES)
         .with_help("test the length first (`dot(v, v) > 1e-12`), or store normals encoded (`n * 0.5 + 0.5`)"),
     )
 }

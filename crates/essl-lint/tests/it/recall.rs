@@ -899,6 +899,20 @@ const PARAMETERS: &[(&str, &str, &str, Option<&str>)] = &[
         "  r = look(v_pos, v_h).x;",
         None,
     ),
+    // A division by the length of that difference: a normalisation by hand, the same zero
+    // vector; the length tested first, quiet.
+    (
+        "division-by-difference",
+        "vec3 dir(vec3 a, vec3 b) {\n  vec3 d = b - a;\n  return d / length(d);\n}",
+        "  r = dir(v_pos, v_h).x;",
+        Some("return d / length(d);"),
+    ),
+    (
+        "division-by-difference",
+        "vec3 dir(vec3 a, vec3 b) {\n  vec3 d = b - a;\n  float l = length(d);\n  return l > 1e-6 ? d / l : vec3(0.0);\n}",
+        "  r = dir(v_pos, v_h).x;",
+        None,
+    ),
     // A scalar a caller passes as such as a `pow` base: an easing's `t`; tested first, or
     // named for a distance, quiet.
     (
