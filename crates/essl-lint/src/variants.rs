@@ -7,7 +7,9 @@
 //! on, the macros that select it (its own flag and those of the groups around it). [`lint`]
 //! compiles the text once per such configuration, with the macros defined as `1` before the
 //! first line (as `-D NAME` would), lints it, and keeps the findings the configuration checked
-//! already does not have, each with a note naming the macros.
+//! already does not have, each with a note naming the macros. A configuration whose only
+//! errors are names spelled as macros that nothing declares (Cesium's `SDF_EDGE`, which the
+//! host defines with `SDF`) is compiled once more with those defined as `1.0`.
 //!
 //! Written by hand: the directive lines are read with a line scanner, not the preprocessor,
 //! because the groups inside skipped groups matter here and the preprocessor does not
@@ -308,12 +310,30 @@ fn configuration(
     let mut with = compile.clone();
     with.defines
         .extend(v.defines.iter().map(|n| (n.clone(), "1".to_string())));
-    let file = SourceFile::new(shader.file.name(), shader.file.text());
-    let compiled = essl::compile(file, shader.stage, &with);
+    let file = || SourceFile::new(shader.file.name(), shader.file.text());
+    let mut compiled = essl::compile(file(), shader.stage, &with);
+    let mut constants = Vec::new();
+    if !compiled.ok() {
+        // A group that uses constants the host defines with its flag (Cesium's `SDF_EDGE`
+        // with `SDF`): once more with them defined as `1.0`.
+        constants = host_constants(&compiled.diagnostics);
+        if constants.is_empty() {
+            return false;
+        }
+        with.defines
+            .extend(constants.iter().map(|n| (n.clone(), "1.0".to_string())));
+        compiled = essl::compile(file(), shader.stage, &with);
+    }
     if !compiled.ok() || compiled.naga.is_none() {
         return false;
     }
-    let names = named(&v.defines);
+    let mut names = named(&v.defines);
+    if !constants.is_empty() {
+        names = format!(
+            "{names} (and {}, which the text uses without defining, as 1.0)",
+            named(&constants)
+        );
+    }
     for d in crate::lint(&compiled, options) {
         if !seen.insert((d.code, d.span)) {
             continue;
@@ -341,6 +361,36 @@ fn configuration(
         });
     }
     true
+}
+
+/// The names a configuration's errors say are not declared, where every error is one and each
+/// is spelled as a macro is (`SDF_EDGE`: capitals, digits and `_`, not `GL_…` or `__…`); empty
+/// otherwise.
+fn host_constants(diagnostics: &[Diagnostic]) -> Vec<String> {
+    let mut out: Vec<String> = Vec::new();
+    for d in diagnostics.iter().filter(|d| d.is_error()) {
+        let name = d
+            .message
+            .strip_suffix("` is not declared")
+            .and_then(|m| m.strip_prefix('`'));
+        let macro_like = name.is_some_and(|n| {
+            n.len() > 1
+                && !n.starts_with("GL_")
+                && !n.starts_with("__")
+                && n.bytes().any(|b| b.is_ascii_uppercase())
+                && n.bytes()
+                    .all(|b| b.is_ascii_uppercase() || b.is_ascii_digit() || b == b'_')
+        });
+        match name {
+            Some(n) if d.code == "undeclared-identifier" && macro_like => {
+                if !out.iter().any(|o| o == n) {
+                    out.push(n.to_string());
+                }
+            }
+            _ => return Vec::new(),
+        }
+    }
+    out
 }
 
 /// The macros as a message names them: "`A`", "`A` and `B`", "`A`, `B`, `C`, `D` and 3 more".

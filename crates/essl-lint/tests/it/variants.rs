@@ -106,3 +106,26 @@ fn a_nested_group_is_reached_with_its_outer_flag() {
     assert_eq!(f.len(), 1, "{f:#?}");
     assert_eq!(f[0].2, ["FOG", "FOG_LINEAR"]);
 }
+
+#[test]
+fn a_flag_s_group_may_use_constants_the_host_defines_with_it() {
+    // Cesium defines `SDF_EDGE` with `SDF`: the group compiles with it as 1.0.
+    let text = frag(
+        "#ifdef SDF\n  o *= (u_fogEnd - v_depth) / (u_fogEnd - u_fogStart) * SDF_EDGE;\n#endif",
+    );
+    let f = found(&text, variants::DEFAULT);
+    assert_eq!(f.len(), 1, "{f:#?}");
+    assert_eq!(f[0].2, ["SDF"]);
+    assert!(
+        f[0].3
+            .iter()
+            .any(|n| n.contains("`SDF_EDGE`, which the text uses without defining")),
+        "{:?}",
+        f[0].3
+    );
+    // Any other error leaves the configuration out.
+    let text = frag(
+        "#ifdef SDF\n  o *= (u_fogEnd - v_depth) / (u_fogEnd - u_fogStart) * sdfEdge;\n#endif",
+    );
+    assert!(found(&text, variants::DEFAULT).is_empty());
+}
