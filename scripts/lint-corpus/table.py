@@ -18,7 +18,9 @@ file, line and rule) and exits 1 if there is any.
 
 With --hazards HAZARDS.tsv (hazards found by reading shaders, in the triage table's columns),
 also prints how many of them FINDINGS reports (same rule, repository and source line), per
-rule and in all, and lists the others.
+rule and in all, and lists the others. A `smoothstep-edges` hazard is reported by a
+`smoothstep-reversed-constant` finding too: that rule takes the case of constant edges in
+reversed order, which the readers' list of rules does not name.
 
 Usage: table.py FINDINGS.jsonl TRIAGE.tsv [--before BEFORE.jsonl] [--hazards HAZARDS.tsv]
 """
@@ -28,6 +30,9 @@ import json
 import sys
 
 CLASSES = ["real", "rounding", "input", "spec", "fp"]
+
+# The rules whose findings also report a hand-found hazard of another rule's id.
+ALIASES = {"smoothstep-edges": ["smoothstep-reversed-constant"]}
 
 
 def key(rule, repo, text):
@@ -125,8 +130,8 @@ def main():
             if not line.strip() or line.startswith("#"):
                 continue
             rule, repo, at, text, cls, *_ = line.rstrip("\n").split("\t")
-            k = key(rule, repo, text)
-            hit = any(r[:3] == k and (at == "*" or r[3] == at) for r in reported)
+            ks = [key(r, repo, text) for r in [rule] + ALIASES.get(rule, [])]
+            hit = any(r[:3] in ks and (at == "*" or r[3] == at) for r in reported)
             per_rule[rule][0] += hit
             per_rule[rule][1] += 1
             per_class[cls][0] += hit
