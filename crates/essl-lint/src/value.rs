@@ -54,10 +54,13 @@ impl Facts {
     /// Depends on a texel, or on an input whose name says it holds a colour or a normal: a value
     /// that holds over whole regions of the picture.
     pub const TEXTURE: Facts = Facts(1024);
+    /// Depends on a fragment's window coordinates (`gl_FragCoord`), which are pixels: an
+    /// ordinary value of hundreds or thousands, not the modest magnitude of other inputs.
+    pub const WINDOW: Facts = Facts(8192);
     /// The dependency bits.
-    pub const DEPS: Facts = Facts(256 | 512 | 1024);
+    pub const DEPS: Facts = Facts(256 | 512 | 1024 | 8192);
     /// The facts that are united on joins.
-    pub const ALL_OR: Facts = Facts(128 | 256 | 512 | 1024);
+    pub const ALL_OR: Facts = Facts(128 | 256 | 512 | 1024 | 8192);
 
     /// No facts.
     pub const NONE: Facts = Facts(0);

@@ -147,8 +147,15 @@ impl Analysis {
                     let name = s.f.arguments[*i as usize].name.as_deref();
                     let kind = names::kind(name, ty);
                     if entry {
+                        let binding = s.f.arguments[*i as usize].binding.as_ref();
                         match kind {
                             Some(k) => self.named(module, ty, k),
+                            None if frag_coord(module, binding) => match self.mode {
+                                Mode::Typical => frag_coord_value(),
+                                Mode::Sound => {
+                                    self.external(module, ty, Facts::INPUT.with(Facts::WINDOW))
+                                }
+                            },
                             None => self.external(module, ty, Facts::INPUT),
                         }
                     } else {
@@ -169,8 +176,23 @@ impl Analysis {
             {
                 return Some((Val::Any, self.access_place(s, e)));
             }
-            // The entry point only moves data between the pipeline and private variables.
-            _ if entry => self.external(module, ty, Facts::INPUT),
+            // The entry point only moves data between the pipeline and private variables
+            // (`gl_FragCoord` with its `y` flipped, composed again).
+            _ if entry => {
+                let parts: Vec<Handle<E>> = match e {
+                    E::Compose { components, .. } => components.clone(),
+                    E::Binary { left, right, .. } => vec![*left, *right],
+                    E::AccessIndex { base, .. } => vec![*base],
+                    _ => Vec::new(),
+                };
+                let window = self.deps_of(id, &parts).only(Facts::WINDOW);
+                match self.mode {
+                    Mode::Typical if window.has(Facts::WINDOW) && parts.len() == 4 => {
+                        frag_coord_value()
+                    }
+                    _ => self.external(module, ty, Facts::INPUT.with(window)),
+                }
+            }
             _ => return None,
         };
         Some((val, None))
@@ -509,4 +531,31 @@ fn within_type(v: Val, ty: &TypeInner) -> Val {
 fn not_computed(s: Site, h: Handle<E>, ty: &TypeInner) -> bool {
     let integer = matches!(ty.scalar_kind(), Some(ScalarKind::Sint | ScalarKind::Uint));
     !integer && s.f.expressions.get_span(h) == naga::Span::default()
+}
+
+/// The largest ordinary window coordinate in [`Mode::Typical`]: a canvas of 2048 pixels.
+pub(crate) const WINDOW: f64 = 2048.0;
+
+/// Whether an entry point's argument with `binding` is a fragment shader's `gl_FragCoord`.
+fn frag_coord(module: &naga::Module, binding: Option<&naga::Binding>) -> bool {
+    matches!(
+        binding,
+        Some(naga::Binding::BuiltIn(naga::BuiltIn::Position { .. }))
+    ) && module
+        .entry_points
+        .first()
+        .is_some_and(|e| e.stage == naga::ShaderStage::Fragment)
+}
+
+/// `gl_FragCoord` in [`Mode::Typical`]: window coordinates are pixels, not the modest
+/// magnitudes of other inputs (`dot(c, c)` of `c = gl_FragCoord.xy` is past `mediump`'s 65504
+/// for every pixel 256 from the corner); depth in `[0, 1]`, `1/w` positive.
+fn frag_coord_value() -> Val {
+    let xy = Interval::new(0.0, WINDOW);
+    let c = [xy, xy, Interval::UNIT, Interval::new(0.0, super::TYPICAL)];
+    let facts = Facts::NN
+        .with(Facts::EXT)
+        .with(Facts::INPUT)
+        .with(Facts::WINDOW);
+    Val::Num(Num::from_components(&c, facts))
 }

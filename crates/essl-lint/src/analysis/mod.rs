@@ -56,6 +56,7 @@ use crate::value::{Num, Val};
 
 pub(crate) use conditions::condition_atoms;
 pub use conditions::{integral, refine_num, relation, Refinement};
+pub(crate) use eval::WINDOW;
 pub(crate) use flow::root_global;
 pub use memory::{const_value, literal};
 pub(crate) use statements::{diverges, each_statement};

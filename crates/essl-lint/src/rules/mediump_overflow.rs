@@ -21,7 +21,9 @@ declare_rule! {
     /// of one value (`x * x`, `pow(x, 150.0)`, the sum of squares inside `length` and `normalize`), an
     /// exponential (`exp(x)` beyond 11), a scaling by a constant, a division by a small value.
     /// "Ordinary" means uniforms and inputs of magnitude up to 10 with the signs the formulas expect
-    /// (distances, densities, exponents positive), matrix entries and texels up to 1; the analysis
+    /// (distances, densities, exponents positive), matrix entries and texels up to 1, and window
+    /// coordinates (`gl_FragCoord.xy`) up to 2048 pixels, which are pixels whatever the scene
+    /// (`dot(c, c)` of `c = gl_FragCoord.xy` overflows 256 pixels from the corner); the analysis
     /// follows the shader's own arithmetic from there. What overflows only for larger parameters, or
     /// through a product of *different* parameters, depends on values the runtime check sees. An
     /// overflow whose only use saturates it (`clamp(x / eps, 0.0, 1.0)`, `min(x, 1.0)`, a
@@ -193,12 +195,30 @@ fn check(cx: &Cx, out: &mut Vec<Diagnostic>) {
             let peak = if up { r.hi } else { r.lo };
             let p = cx.prec.at(span).map(|p| p.name()).unwrap_or("mediump");
             let d = Diagnostic::rule_warning(MediumpOverflow::RULE.id, format!("`{p}` result can overflow 65504 for ordinary values"), span)
-                .with_label(format!("computed in `{p}`: reaches {} with inputs of magnitude {}", fmt_num(peak), fmt_num(TYPICAL)))
+                .with_label(format!("computed in `{p}`: reaches {} with {}", fmt_num(peak), ordinary(cx, id, &ops)))
                 .with_note("mediump and lowp are 16-bit floats on many mobile GPUs: the largest finite value is 65504")
                 .with_help("compute it in `highp`, or rescale the operands");
             // Ordinary values reach it: the rule computes with them (no note for one uniform).
             out.push(d);
         }
+    }
+}
+
+/// What the ordinary values a finding computes with are: window coordinates where an operand
+/// reads `gl_FragCoord`, inputs of magnitude [`TYPICAL`] otherwise.
+fn ordinary(cx: &Cx, id: usize, ops: &[Handle<E>]) -> String {
+    let window = ops.iter().any(|o| {
+        cx.sound()
+            .num(id, *o)
+            .is_some_and(|n| n.facts.any(crate::value::Facts::WINDOW))
+    });
+    if window {
+        format!(
+            "window coordinates up to {} pixels",
+            fmt_num(crate::analysis::WINDOW)
+        )
+    } else {
+        format!("inputs of magnitude {}", fmt_num(TYPICAL))
     }
 }
 
@@ -328,7 +348,13 @@ fn bounded_cheaply(cx: &Cx, id: usize, e: &E, ops: &[Handle<E>]) -> bool {
         if n.comps().iter().all(|c| c.as_point().is_some()) {
             Some((n.hull(), n.n))
         } else if n.facts.has(crate::value::Facts::EXT) {
-            Some((Interval::new(-TYPICAL, TYPICAL), n.n))
+            // Window coordinates are pixels (`gl_FragCoord.xy`), other inputs modest.
+            let m = if n.facts.any(crate::value::Facts::WINDOW) {
+                crate::analysis::WINDOW
+            } else {
+                TYPICAL
+            };
+            Some((Interval::new(-m, m), n.n))
         } else {
             None
         }

@@ -1130,6 +1130,8 @@ fn mediump_overflow_hazards_and_twins() {
         "  float x = u_a * 1000.0;\n  r = x * x;",
         "  r = length(v_pos * 100.0);",
         "  r = exp(t.r * 20.0);",
+        // Window coordinates are pixels: squared past 65504 256 pixels from the corner.
+        "  vec2 c = gl_FragCoord.xy;\n  r = dot(c, c);",
     ] {
         let f = found("mediump", rule, body);
         assert!(f.iter().any(|(s, _)| *s == W), "{body}: {f:?}");
@@ -1137,6 +1139,7 @@ fn mediump_overflow_hazards_and_twins() {
     for body in [
         "  float x = clamp(u_a, -100.0, 100.0);\n  r = x * x;",
         "  r = length(v_pos * 100.0);",
+        "  vec2 c = gl_FragCoord.xy / 4096.0;\n  r = dot(c, c);",
     ] {
         let p = if body.contains("length") {
             "highp"
