@@ -6,8 +6,8 @@
 //! minimum (10-bit fixed point, as PowerVR's SGX parts did) clamp them to 2. The name is the
 //! only evidence a declaration gives — an attribute's values are the host's — so the words are
 //! those WebGL code gives such measures (MapLibre's `lowp float floorwidth`, `a_pattern_from`,
-//! `halo_width`), and an interpolation factor named after one (`u_width_t`, in [0, 1]) is left
-//! out.
+//! `halo_width`, and a sprite's `pixel_ratio_from`, 2 for an `@2x` image), and an
+//! interpolation factor named after one (`u_width_t`, in [0, 1]) is left out.
 
 use essl::diagnostic::Diagnostic;
 use essl::source::Span;
@@ -21,13 +21,15 @@ const LENGTH: &[&str] = &[
 ];
 
 /// Whether `name` says its value is a length: one of its words ends with a [`LENGTH`] word,
-/// and its last word is not `t` (a factor that mixes two of them).
+/// and its last word is not `t` (a factor that mixes two of them); or a pixel ratio (a sprite's
+/// or the screen's: 2 or 3 on high-density displays, which (−2, 2) leaves out).
 fn says_length(name: &str) -> bool {
     let words = crate::analysis::names::words(name);
     if words.last().is_some_and(|w| w == "t") {
         return false;
     }
-    words.iter().any(|w| LENGTH.iter().any(|l| w.ends_with(l)))
+    let has = |x: &str| words.iter().any(|w| w == x);
+    words.iter().any(|w| LENGTH.iter().any(|l| w.ends_with(l))) || (has("pixel") && has("ratio"))
 }
 
 /// Whether the declaration of the name at `span` says `lowp` itself, on its line before the
@@ -89,6 +91,7 @@ mod tests {
             "antialiasblur",
             "u_lineatlas_width",
             "a_height",
+            "pixel_ratio_from",
         ] {
             assert!(says_length(n), "{n}");
         }
@@ -97,7 +100,7 @@ mod tests {
             "opacity",
             "color",
             "u_blur_t",
-            "pixel_ratio_from",
+            "u_pixel_ratio_from_t",
             "v_gamma_scale",
         ] {
             assert!(!says_length(n), "{n}");
