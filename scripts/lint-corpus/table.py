@@ -20,19 +20,42 @@ With --hazards HAZARDS.tsv (hazards found by reading shaders, in the triage tabl
 also prints how many of them FINDINGS reports (same rule, repository and source line), per
 rule and in all, and lists the others. A `smoothstep-edges` hazard is reported by a
 `smoothstep-reversed-constant` finding too: that rule takes the case of constant edges in
-reversed order, which the readers' list of rules does not name.
+reversed order, which the readers' list of rules does not name. And a `mediump-overflow`
+hazard on a line that stores or reads a variable is reported by that rule's note on the
+variable's `lowp` declaration in the same file (the row's "why" begins with the file's path):
+the hazard is the variable's precision, and readers name the line where a length enters it.
 
 Usage: table.py FINDINGS.jsonl TRIAGE.tsv [--before BEFORE.jsonl] [--hazards HAZARDS.tsv]
 """
 
 import collections
 import json
+import re
 import sys
 
 CLASSES = ["real", "rounding", "input", "spec", "fp"]
 
 # The rules whose findings also report a hand-found hazard of another rule's id.
 ALIASES = {"smoothstep-edges": ["smoothstep-reversed-constant"]}
+
+# The message of a note on a variable declared `lowp` (essl-lint's lowp_range.rs).
+LOWP = re.compile(r"^`(\w+)` is `lowp`, which need only hold")
+
+
+def lowp_variables(findings):
+    """(repository, file path, variable) of every note on a `lowp` declaration."""
+    out = set()
+    for f in findings:
+        m = LOWP.match(f.get("message", ""))
+        if f["rule"] == "mediump-overflow" and m and f.get("path"):
+            out.add((f["repo"], f["path"], m.group(1)))
+    return out
+
+
+def lowp_hit(lowp, repo, text, why):
+    """Whether a hand-found row's line stores or reads a variable a `lowp` note names."""
+    return any(r == repo and why.startswith(path) and re.search(rf"\b{name}\b", text)
+               for r, path, name in lowp)
 
 
 def key(rule, repo, text):
@@ -123,15 +146,17 @@ def main():
         print(f"False positives: {total['fp']} of {n} findings ({100.0 * total['fp'] / n:.1f} %).")
     if hazards:
         reported = {key(f["rule"], f["repo"], f["text"]) + (str(f["line"]),) for f in findings}
+        lowp = lowp_variables(findings)
         per_rule = collections.defaultdict(lambda: [0, 0])
         per_class = collections.defaultdict(lambda: [0, 0])
         missed = []
         for line in open(hazards, encoding="utf-8"):
             if not line.strip() or line.startswith("#"):
                 continue
-            rule, repo, at, text, cls, *_ = line.rstrip("\n").split("\t")
+            rule, repo, at, text, cls, why, *_ = line.rstrip("\n").split("\t") + [""]
             ks = [key(r, repo, text) for r in [rule] + ALIASES.get(rule, [])]
             hit = any(r[:3] in ks and (at == "*" or r[3] == at) for r in reported)
+            hit = hit or (rule == "mediump-overflow" and lowp_hit(lowp, repo, text, why))
             per_rule[rule][0] += hit
             per_rule[rule][1] += 1
             per_class[cls][0] += hit
