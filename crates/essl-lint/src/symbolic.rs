@@ -102,14 +102,19 @@ pub struct Sym<'a> {
     seen: std::cell::RefCell<Vec<Handle<E>>>,
 }
 
-/// The operand `h` stands for: through loads of locals stored once, and splats.
+/// The operand `h` stands for: through loads of locals stored once, or whose last store on
+/// every path to the load is known, and splats.
 pub fn resolve(f: &Function, an: &Analysis, id: usize, mut h: Handle<E>) -> Handle<E> {
     let single: &HashMap<usize, Handle<E>> = &an.functions[id].single_store;
     for _ in 0..16 {
         match f.expressions[h] {
             E::Load { pointer } => match f.expressions[pointer] {
-                E::LocalVariable(l) => match single.get(&l.index()) {
-                    Some(v) => h = *v,
+                E::LocalVariable(l) => match single
+                    .get(&l.index())
+                    .copied()
+                    .or_else(|| an.reaching_store(id, h))
+                {
+                    Some(v) => h = v,
                     None => return h,
                 },
                 _ => return h,

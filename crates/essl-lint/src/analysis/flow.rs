@@ -189,6 +189,24 @@ impl Analysis {
         v
     }
 
+    /// Records that the version [`Analysis::assign`] just gave `place` holds `value`, where
+    /// the store wrote a whole local.
+    pub(super) fn note_store(&mut self, place: &Place, value: Handle<E>) {
+        if matches!(place.root, Root::Local(..)) && place.path.is_empty() {
+            self.version_stores.insert(self.version_counter, value);
+        }
+    }
+
+    /// The value the store that load `h` of function `id` reads wrote: the last whole store
+    /// into the local on every path to the load (`l` in `float l = length(t); t /= l;` where
+    /// `l` is written again later).
+    pub fn reaching_store(&self, id: usize, h: Handle<E>) -> Option<Handle<E>> {
+        let version = *self.functions.get(id)?.load_version.get(h.index())?;
+        (version != 0)
+            .then(|| self.version_stores.get(&version).copied())
+            .flatten()
+    }
+
     fn fresh_version(&mut self) -> u32 {
         self.version_counter += 1;
         self.version_counter

@@ -156,6 +156,8 @@ pub struct Analysis {
     global_writes: Vec<rustc_hash::FxHashSet<usize>>,
     /// The last version [`flow`] gave a variable.
     version_counter: u32,
+    /// The value a whole store into a local gave it, by the version the store made.
+    version_stores: HashMap<u32, Handle<E>>,
     /// The results of calls from their own arguments ([`calls`]).
     calls: calls::Calls,
     /// The functions walked at their only call ([`calls`]).
@@ -255,6 +257,7 @@ impl Analysis {
             current: flow::Current::default(),
             global_writes: flow::global_writes(module),
             version_counter: 0,
+            version_stores: HashMap::default(),
             calls: calls::Calls::default(),
             at_call: calls::AtCall::new(module),
             reads: Default::default(),

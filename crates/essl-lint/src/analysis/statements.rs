@@ -55,6 +55,7 @@ impl Analysis {
                 };
                 self.store(module, &place, &v);
                 self.assign(module, &place, &v);
+                self.note_store(&place, init);
             }
         }
         self.block(s, &f.body);
@@ -114,6 +115,7 @@ impl Analysis {
                         };
                         self.store_within(s.module, &p, &v, bound.as_deref());
                         self.assign(s.module, &p, &v);
+                        self.note_store(&p, *value);
                     }
                 }
                 Statement::Call {

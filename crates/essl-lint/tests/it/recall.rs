@@ -913,6 +913,20 @@ const PARAMETERS: &[(&str, &str, &str, Option<&str>)] = &[
         "  r = dir(v_pos, v_h).x;",
         None,
     ),
+    // The same where the locals are written again afterwards: the store that reaches the
+    // division is the one that counts (lygia's `arrowSDF`).
+    (
+        "division-by-difference",
+        "float arrow(vec3 v, vec3 a, vec3 b, float h) {\n  vec3 t = b - a;\n  float l = length(t);\n  t /= l;\n  l = max(l, h);\n  return dot(v, t) * l;\n}",
+        "  r = arrow(v_h, v_pos, v_h, v_x);",
+        Some("t /= l;"),
+    ),
+    (
+        "division-by-difference",
+        "float arrow(vec3 v, vec3 a, vec3 b, float h) {\n  vec3 t = b - a;\n  float l = length(t);\n  l = max(l, 1e-4);\n  t /= l;\n  return dot(v, t) * max(l, h);\n}",
+        "  r = arrow(v_h, v_pos, v_h, v_x);",
+        None,
+    ),
     // A scalar a caller passes as such as a `pow` base: an easing's `t`; tested first, or
     // named for a distance, quiet.
     (
