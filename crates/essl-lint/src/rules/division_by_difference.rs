@@ -52,7 +52,9 @@ declare_rule! {
     /// `near - far`, `0.5 / (res - 1.0)` (a texture one texel wide). The same, as a note, for a
     /// vertex shader's division by its attributes as such: a particle's `age / a_life`, a
     /// skinning weight's `1.0 / (w.x + w.y + w.z + w.w)`, a point's `0.5 / a_size` (an
-    /// attribute's size or ratio is the vertex data's, not the canvas's), through a function
+    /// attribute's size or ratio is the vertex data's, not the canvas's), the last of four
+    /// values packed in an attribute that is no position (MapLibre's `dasharray_from.w`, a
+    /// dash pattern's length, 0 for a dash array `[0, 0]`), through a function
     /// that unpacks them, the outputs the shader keeps them in, a product with a uniform and a
     /// function's parameter every call passes such a value (MapLibre's
     /// `floorwidth = unpack_mix_vec2(a_floorwidth, t)`, `/ pixel_ratio_from` of a pattern

@@ -129,6 +129,10 @@ enum Leaf {
 /// refraction (at least 1), an exposure time, the base of a number system.
 const NEVER_ZERO: &[&str] = &["ior", "shutter", "base"];
 
+/// Words of an attribute's name that say its `vec4` is a position, whose `w` is a homogeneous
+/// coordinate.
+const POSITION: &[&str] = &["position", "pos", "vertex", "clip", "homogeneous", "world"];
+
 /// The parameters (or attributes) value `d` of function `id` is built from, with constants
 /// only, where the callers pass inputs as such and ordinary values make it 0; `None` where it is
 /// not such a value.
@@ -164,9 +168,15 @@ pub(super) fn caller_value(cx: &Cx, f: &Function, id: usize, d: Handle<E>) -> Op
         }
     }
     let top = &f.expressions[crate::symbolic::resolve(f, cx.sound(), id, d)];
-    // `p.xyz / p.w`: the `w` of a homogeneous coordinate, positive in front of the camera.
+    // `p.xyz / p.w`: the `w` of a homogeneous coordinate, positive in front of the camera;
+    // but not the last of four values a vertex packs in an attribute that is no position
+    // (MapLibre's `a_dasharray_from.w`, a dash pattern's length).
     if let E::AccessIndex { base, index: 3 } = *top {
-        if is_vec4(cx, id, base) {
+        let packed = attribute
+            && !names
+                .iter()
+                .any(|n| crate::analysis::names::says_any(n, POSITION));
+        if is_vec4(cx, id, base) && !packed {
             return None;
         }
     }

@@ -1052,6 +1052,8 @@ fn divisions_by_attributes_are_notes() {
         // A product with a uniform, through a built-in output and a function's parameter.
         "  gl_PointSize = (a_size + a_age) * u_width_t;\n  v_t = 1.0 / gl_PointSize;",
         "  v_t = inv_of(a_size * u_width_t);",
+        // The last of four values packed in an attribute that is no position.
+        "  v_t = a_age / a_weight.w;",
     ] {
         assert_eq!(notes(body).len(), 1, "{body}");
     }
