@@ -541,25 +541,32 @@ fn direction_divisor(cx: &Cx, div: &Division) -> Option<Diagnostic> {
     Some(diag)
 }
 
-/// The finding for a division by `length(x)` where `normalize(x)` would be one
+/// The finding for a division by `length(x)` or `dot(x, x)` where `normalize(x)` would be one
 /// ([`normalize_zero::zero_length`]): a normalisation by hand (`delta / length(delta)`), the
 /// length of a parameter callers pass as such (`/ length(planeNormal)`), of a cross product of
 /// vectors that can be parallel, or of a difference of points a vertex holds.
 fn length_divisor(cx: &Cx, div: &Division) -> Option<Diagnostic> {
     let Division { f, id, h, d } = *div;
-    let E::Math {
-        fun: naga::MathFunction::Length,
-        arg,
-        ..
-    } = f.expressions[resolve(f, cx.sound(), id, d)]
-    else {
-        return None;
+    // `length(x)`, or its square `dot(x, x)` (a projection onto a segment: `/ dot(ba, ba)`).
+    let (arg, what) = match f.expressions[resolve(f, cx.sound(), id, d)] {
+        E::Math {
+            fun: naga::MathFunction::Length,
+            arg,
+            ..
+        } => (arg, "length"),
+        E::Math {
+            fun: naga::MathFunction::Dot,
+            arg,
+            arg1: Some(b),
+            ..
+        } if cx.sound().same(f, id, arg, b) => (arg, "squared length"),
+        _ => return None,
     };
     let found = normalize_zero::zero_length(cx, f, id, h, arg)?;
     let span = unguarded(cx, div)?;
     let mut diag = Diagnostic::rule_warning(
         DivisionByDifference::RULE.id,
-        "division by the length of a vector that can be the zero vector",
+        format!("division by the {what} of a vector that can be the zero vector"),
         span,
     )
     .with_label(found.label)

@@ -104,6 +104,13 @@ const HAZARDS: &[Hazard] = &[
     ("clamp-bounds", "uniform", "  r = clamp(0.3, 1.0, 1.05 - u_a * 0.5);", W),
     ("division-by-difference", "uniform", "  r = v_x / (u_a - u_b);", W),
     ("division-by-difference", "uniform", "  r = v_x / (u_a - 1.0);", N),
+    // The squared length of a cross product of two directions a user sets: 0 when parallel.
+    (
+        "division-by-difference",
+        "uniform",
+        "  vec3 c = cross(u_up, u_dir);\n  r = dot(v_pos, c) / dot(c, c);",
+        W,
+    ),
     (
         "division-by-difference",
         "texture",
@@ -404,6 +411,10 @@ const HAZARDS: &[Hazard] = &[
 
 /// The guarded twins: (rule, body) with no finding of the rule, notes included.
 const GUARDED: &[(&str, &str)] = &[
+    (
+        "division-by-difference",
+        "  vec3 c = cross(u_up, u_dir);\n  float c2 = dot(c, c);\n  r = c2 > 1e-8 ? dot(v_pos, c) / c2 : 0.0;",
+    ),
     // 0 only at a middle value of the texel, not over a region.
     ("division-by-difference", "  r = 1.0 / (4.0 * t.r + -2.0);"),
     // A `max` with a constant floor is a guard.
