@@ -62,7 +62,8 @@ declare_rule! {
     /// values of the host's vertex data, 0 for a vertex that holds 0. And the length of a normal or tangent attribute through a
     /// transform (`r / length((world * vec4(cross(normal, tangent), 0.0)).xyz)`), 0 for a
     /// vertex of a mesh without the buffer (read as the zero vector); more generally, the length
-    /// of any vector `normalize-zero` reports `normalize` of (`d / length(d)`, a normalisation
+    /// (or its square, `dot(x, x)`) of any vector `normalize-zero` reports `normalize` of
+    /// (`d / length(d)`, a normalisation
     /// by hand; `t / length(b - a)` of an edge of a triangle a caller passes, 0 for a degenerate
     /// one), at that rule's severity. And, as a note, a vertex
     /// shader's perspective divide by the `w` of `gl_Position` or of a product with a projection
