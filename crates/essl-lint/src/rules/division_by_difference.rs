@@ -48,7 +48,9 @@ declare_rule! {
     /// of the vertices drawn. Also as a note, naming them, a function's division by its own
     /// parameters where its callers pass inputs as such — a library function whose guard is
     /// left to the caller: lygia's `gaussian(d, s)` dividing by `2.0 * s * s` (a blur of sigma
-    /// 0), `map(v, iMin, iMax)` by `iMax - iMin` (a collapsed range), `perspective` by
+    /// 0), an attenuation by `pow(dist, 2.0)` and an ellipsoid's distance by
+    /// `length(p / (r * r))` (0 where the power's base or the quotient's dividend is),
+    /// `map(v, iMin, iMax)` by `iMax - iMin` (a collapsed range), `perspective` by
     /// `near - far`, `0.5 / (res - 1.0)` (a texture one texel wide). The same, as a note, for a
     /// vertex shader's division by its attributes as such: a particle's `age / a_life`, a
     /// skinning weight's `1.0 / (w.x + w.y + w.z + w.w)`, a point's `0.5 / a_size` (an

@@ -340,12 +340,25 @@ fn leaves(cx: &Cx, fr: &Frame, h: Handle<E>, depth: u32, out: &mut Walk) -> bool
             let stored = cx.stored(f, id, pointer);
             !stored.is_empty() && stored.into_iter().all(|x| go(x, out))
         }
-        // A quotient by a constant (`fov / 2.0`) is 0 where the dividend is.
+        // A quotient (`fov / 2.0`, `p / (r * r)`) is 0 where the dividend is, and a positive
+        // power (`pow(dist, 2.0)`) where its base is.
         E::Binary {
             op: Bo::Divide,
             left,
-            right,
-        } if matches!(f.expressions[right], E::Literal(_) | E::Constant(_)) => go(left, out),
+            ..
+        } => go(left, out),
+        E::Math {
+            fun: Mf::Pow,
+            arg,
+            arg1: Some(e),
+            ..
+        } if cx
+            .sound()
+            .num(id, e)
+            .is_some_and(|n| n.comps().iter().all(|c| c.lo > 0.0)) =>
+        {
+            go(arg, out)
+        }
         _ => false,
     }
 }

@@ -938,6 +938,25 @@ const PARAMETERS: &[(&str, &str, &str, Option<&str>)] = &[
         "  r = arrow(v_h, v_pos, v_h, v_x);",
         None,
     ),
+    // A positive power and a quotient are 0 where their base and dividend are.
+    (
+        "division-by-difference",
+        "float inv2(float d) { return 1.0 / pow(d, 2.0); }",
+        "  r = inv2(v_x);",
+        Some("float inv2(float d) { return 1.0 / pow(d, 2.0); }"),
+    ),
+    (
+        "division-by-difference",
+        "float ell(vec3 p, vec3 r) { return 1.0 / length(p / (r * r)); }",
+        "  r = ell(v_pos, v_h);",
+        Some("float ell(vec3 p, vec3 r) { return 1.0 / length(p / (r * r)); }"),
+    ),
+    (
+        "division-by-difference",
+        "float inv2(float d) { return 1.0 / max(pow(d, 2.0), 1e-4); }",
+        "  r = inv2(v_x);",
+        None,
+    ),
     // A scalar a caller passes as such as a `pow` base: an easing's `t`; tested first, or
     // named for a distance, quiet.
     (
