@@ -63,7 +63,8 @@ declare_rule! {
     ///
     /// The antialiasing idiom, edges `e ∓ w` of a width computed from a derivative (`0.7 -
     /// fwidth(c), 0.7 + fwidth(c)`, in either order, an edge also kept in range by a constant:
-    /// `max(0.0, r - w), r`), is a note: the edges are equal wherever the value differentiated is
+    /// `max(0.0, r - w), r`; the width also a parameter every call passes one, Cesium's
+    /// `getSDFColor(…, fwidth(distance))`), is a note: the edges are equal wherever the value differentiated is
     /// the same across the 2×2 pixel quad — whole flat faces under a directional light in
     /// three.js's toon shading, flat stretches of a field — where the specification leaves
     /// `smoothstep` undefined. Drivers that compute the formula give the exact step there, and NaN
@@ -430,13 +431,23 @@ fn zero_only_as_input(cx: &Cx, id: usize, f: &Function, h: Handle<E>, depth: u32
 }
 
 /// Whether `h` is computed from a `dFdx`, `dFdy` or `fwidth` (through locals whose every value,
-/// initializer and stores, is: [`Cx::stored`]).
+/// initializer and stores, is: [`Cx::stored`]; and parameters every call passes one: Cesium's
+/// `getSDFColor(…, smoothing)` of `smoothing = fwidth(distance)`).
 fn from_derivative(cx: &Cx, id: usize, f: &Function, h: Handle<E>, depth: u32) -> bool {
     if depth > 8 {
         return false;
     }
     match &f.expressions[h] {
         E::Derivative { .. } => true,
+        E::FunctionArgument(i) if id < cx.module.functions.len() => {
+            let callers = cx.flows().callers(id);
+            !callers.is_empty()
+                && callers.iter().all(|(caller, args)| {
+                    let g = crate::analysis::function(cx.module, *caller);
+                    args.get(*i as usize)
+                        .is_some_and(|&a| from_derivative(cx, *caller, g, a, depth + 1))
+                })
+        }
         E::Load { pointer } => {
             let values = cx.stored(f, id, *pointer);
             !values.is_empty()

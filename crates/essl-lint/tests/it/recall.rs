@@ -938,6 +938,19 @@ const PARAMETERS: &[(&str, &str, &str, Option<&str>)] = &[
         "  r = arrow(v_h, v_pos, v_h, v_x);",
         None,
     ),
+    // The antialiasing idiom with the width a parameter every call passes a derivative.
+    (
+        "smoothstep-edges",
+        "float aa(float d, float w) { return smoothstep(0.5 - w, 0.5 + w, d); }",
+        "  r = aa(v_x, fwidth(v_x));",
+        Some("float aa(float d, float w) { return smoothstep(0.5 - w, 0.5 + w, d); }"),
+    ),
+    (
+        "smoothstep-edges",
+        "float aa(float d, float w) { return smoothstep(0.5 - w, 0.5 + w, d); }",
+        "  r = aa(v_x, max(fwidth(v_x), 1e-4));",
+        None,
+    ),
     // A positive power and a quotient are 0 where their base and dividend are.
     (
         "division-by-difference",
