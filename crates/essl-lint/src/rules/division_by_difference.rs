@@ -64,7 +64,8 @@ declare_rule! {
     /// values of the host's vertex data, 0 for a vertex that holds 0. And the length of a normal or tangent attribute through a
     /// transform (`r / length((world * vec4(cross(normal, tangent), 0.0)).xyz)`), 0 for a
     /// vertex of a mesh without the buffer (read as the zero vector); more generally, the length
-    /// (or its square, `dot(x, x)`) of any vector `normalize-zero` reports `normalize` of
+    /// (or its square, `dot(x, x)`; a multiple of either, or what a function returns that is
+    /// one: lygia's `area(tri)`) of any vector `normalize-zero` reports `normalize` of
     /// (`d / length(d)`, a normalisation
     /// by hand; `t / length(b - a)` of an edge of a triangle a caller passes, 0 for a degenerate
     /// one), at that rule's severity. And, as a note, a vertex
@@ -550,22 +551,11 @@ fn direction_divisor(cx: &Cx, div: &Division) -> Option<Diagnostic> {
 /// vectors that can be parallel, or of a difference of points a vertex holds.
 fn length_divisor(cx: &Cx, div: &Division) -> Option<Diagnostic> {
     let Division { f, id, h, d } = *div;
-    // `length(x)`, or its square `dot(x, x)` (a projection onto a segment: `/ dot(ba, ba)`).
-    let (arg, what) = match f.expressions[resolve(f, cx.sound(), id, d)] {
-        E::Math {
-            fun: naga::MathFunction::Length,
-            arg,
-            ..
-        } => (arg, "length"),
-        E::Math {
-            fun: naga::MathFunction::Dot,
-            arg,
-            arg1: Some(b),
-            ..
-        } if cx.sound().same(f, id, arg, b) => (arg, "squared length"),
-        _ => return None,
-    };
-    let found = normalize_zero::zero_length(cx, f, id, h, arg)?;
+    let (g, gid, at, arg, what) = length_of(cx, f, id, d, 0)?;
+    // Guards are looked up at the division where the length is its function's own, at the
+    // `length` call in a function that returns it.
+    let site = if gid == id { h } else { at };
+    let found = normalize_zero::zero_length(cx, g, gid, site, arg)?;
     let span = unguarded(cx, div)?;
     let mut diag = Diagnostic::rule_warning(
         DivisionByDifference::RULE.id,
@@ -575,9 +565,73 @@ fn length_divisor(cx: &Cx, div: &Division) -> Option<Diagnostic> {
     .with_label(found.label)
     .with_help("guard the divisor: `max(x, 1e-4)`, or test the length first")
     .with_fix(floor_fix(cx, span));
+    if found.span != span && !found.span.is_empty() {
+        diag = diag.with_secondary(found.span, "the vector");
+    }
     diag.notes = found.notes;
     diag.severity = found.severity;
     Some(diag)
+}
+
+/// The function (and its id), the `length` call, its argument and what it measures, where `h`
+/// of function `id` is `length(x)` or its square `dot(x, x)` (a projection onto a segment: `/
+/// dot(ba, ba)`), a multiple of one by a constant, or what a function returns that is
+/// (lygia's `area(tri)`, `length(cross(b - a, c - a)) * 0.5`).
+#[allow(clippy::type_complexity)]
+fn length_of<'a>(
+    cx: &Cx<'a>,
+    f: &'a naga::Function,
+    id: usize,
+    h: naga::Handle<E>,
+    depth: u32,
+) -> Option<(
+    &'a naga::Function,
+    usize,
+    naga::Handle<E>,
+    naga::Handle<E>,
+    &'static str,
+)> {
+    if depth > 4 {
+        return None;
+    }
+    let top = resolve(f, cx.sound(), id, h);
+    let constant = |x: naga::Handle<E>| {
+        cx.sound()
+            .num(id, x)
+            .and_then(|n| n.hull().as_point())
+            .is_some_and(|c| c != 0.0)
+    };
+    match f.expressions[top] {
+        E::Math {
+            fun: naga::MathFunction::Length,
+            arg,
+            ..
+        } => Some((f, id, top, arg, "length")),
+        E::Math {
+            fun: naga::MathFunction::Dot,
+            arg,
+            arg1: Some(b),
+            ..
+        } if cx.sound().same(f, id, arg, b) => Some((f, id, top, arg, "squared length")),
+        E::Binary {
+            op: Bo::Multiply,
+            left,
+            right,
+        } if constant(right) => length_of(cx, f, id, left, depth + 1),
+        E::Binary {
+            op: Bo::Multiply,
+            left,
+            right,
+        } if constant(left) => length_of(cx, f, id, right, depth + 1),
+        E::CallResult(callee) if callee.index() < cx.module.functions.len() => {
+            let [r] = cx.flows().returns(callee.index())[..] else {
+                return None;
+            };
+            let g = crate::analysis::function(cx.module, callee.index());
+            length_of(cx, g, callee.index(), r, depth + 1)
+        }
+        _ => None,
+    }
 }
 
 /// The note for a perspective divide by the `w` of a clip-space position where it can be 0

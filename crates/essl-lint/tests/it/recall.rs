@@ -713,6 +713,32 @@ const GUARDED: &[(&str, &str)] = &[
     ),
 ];
 
+/// A division by what a function returns that is a length, scaled (a triangle's area): the
+/// vector's zero is the divisor's; with the length kept from 0 inside, quiet.
+#[test]
+fn a_length_a_function_returns() {
+    let area = "float area(vec3 a, vec3 b) { return length(cross(a, b)) * 0.5; }";
+    let f = found_with(
+        "highp",
+        "division-by-difference",
+        area,
+        "  r = v_x / area(u_up, u_dir);",
+    );
+    assert!(
+        f.iter()
+            .any(|(s, l)| *s == W && l == "r = v_x / area(u_up, u_dir);"),
+        "{f:?}"
+    );
+    let kept = "float area(vec3 a, vec3 b) { return max(length(cross(a, b)), 1e-6) * 0.5; }";
+    let f = found_with(
+        "highp",
+        "division-by-difference",
+        kept,
+        "  r = v_x / area(u_up, u_dir);",
+    );
+    assert!(f.is_empty(), "{f:?}");
+}
+
 #[test]
 fn every_hazard_is_reported_at_its_severity() {
     let mut failed = Vec::new();
