@@ -551,15 +551,18 @@ fn direction_divisor(cx: &Cx, div: &Division) -> Option<Diagnostic> {
 /// vectors that can be parallel, or of a difference of points a vertex holds.
 fn length_divisor(cx: &Cx, div: &Division) -> Option<Diagnostic> {
     let Division { f, id, h, d } = *div;
-    let (g, gid, at, arg, what) = length_of(cx, f, id, d, 0)?;
+    let l = length_of(cx, f, id, d, 0)?;
     // Guards are looked up at the division where the length is its function's own, at the
     // `length` call in a function that returns it.
-    let site = if gid == id { h } else { at };
-    let found = normalize_zero::zero_length(cx, g, gid, site, arg)?;
+    let site = if l.id == id { h } else { l.call };
+    let found = normalize_zero::zero_length(cx, l.f, l.id, site, l.arg)?;
     let span = unguarded(cx, div)?;
     let mut diag = Diagnostic::rule_warning(
         DivisionByDifference::RULE.id,
-        format!("division by the {what} of a vector that can be the zero vector"),
+        format!(
+            "division by the {} of a vector that can be the zero vector",
+            l.what
+        ),
         span,
     )
     .with_label(found.label)
@@ -573,24 +576,26 @@ fn length_divisor(cx: &Cx, div: &Division) -> Option<Diagnostic> {
     Some(diag)
 }
 
-/// The function (and its id), the `length` call, its argument and what it measures, where `h`
-/// of function `id` is `length(x)` or its square `dot(x, x)` (a projection onto a segment: `/
-/// dot(ba, ba)`), a multiple of one by a constant, or what a function returns that is
-/// (lygia's `area(tri)`, `length(cross(b - a, c - a)) * 0.5`).
-#[allow(clippy::type_complexity)]
+/// A `length(x)` (or `dot(x, x)`) call: the function it is in (and that function's id), the
+/// call, its argument and what it measures.
+struct Length<'a> {
+    f: &'a naga::Function,
+    id: usize,
+    call: naga::Handle<E>,
+    arg: naga::Handle<E>,
+    what: &'static str,
+}
+
+/// The [`Length`] that `h` of function `id` is: `length(x)` or its square `dot(x, x)` (a
+/// projection onto a segment: `/ dot(ba, ba)`), a multiple of one by a constant, or what a
+/// function returns that is one (lygia's `area(tri)`, `length(cross(b - a, c - a)) * 0.5`).
 fn length_of<'a>(
     cx: &Cx<'a>,
     f: &'a naga::Function,
     id: usize,
     h: naga::Handle<E>,
     depth: u32,
-) -> Option<(
-    &'a naga::Function,
-    usize,
-    naga::Handle<E>,
-    naga::Handle<E>,
-    &'static str,
-)> {
+) -> Option<Length<'a>> {
     if depth > 4 {
         return None;
     }
@@ -601,18 +606,27 @@ fn length_of<'a>(
             .and_then(|n| n.hull().as_point())
             .is_some_and(|c| c != 0.0)
     };
+    let here = |arg, what| {
+        Some(Length {
+            f,
+            id,
+            call: top,
+            arg,
+            what,
+        })
+    };
     match f.expressions[top] {
         E::Math {
             fun: naga::MathFunction::Length,
             arg,
             ..
-        } => Some((f, id, top, arg, "length")),
+        } => here(arg, "length"),
         E::Math {
             fun: naga::MathFunction::Dot,
             arg,
             arg1: Some(b),
             ..
-        } if cx.sound().same(f, id, arg, b) => Some((f, id, top, arg, "squared length")),
+        } if cx.sound().same(f, id, arg, b) => here(arg, "squared length"),
         E::Binary {
             op: Bo::Multiply,
             left,

@@ -204,13 +204,23 @@ fn check(cx: &Cx, out: &mut Vec<Diagnostic>) {
     }
 }
 
+/// The ordinary magnitude of an external value with `facts`: window coordinates are pixels
+/// (`gl_FragCoord.xy`, [`crate::analysis::WINDOW`]), other inputs modest ([`TYPICAL`]).
+fn magnitude(facts: crate::value::Facts) -> f64 {
+    if facts.any(crate::value::Facts::WINDOW) {
+        crate::analysis::WINDOW
+    } else {
+        TYPICAL
+    }
+}
+
 /// What the ordinary values a finding computes with are: window coordinates where an operand
 /// reads `gl_FragCoord`, inputs of magnitude [`TYPICAL`] otherwise.
 fn ordinary(cx: &Cx, id: usize, ops: &[Handle<E>]) -> String {
     let window = ops.iter().any(|o| {
         cx.sound()
             .num(id, *o)
-            .is_some_and(|n| n.facts.any(crate::value::Facts::WINDOW))
+            .is_some_and(|n| magnitude(n.facts) != TYPICAL)
     });
     if window {
         format!(
@@ -348,12 +358,7 @@ fn bounded_cheaply(cx: &Cx, id: usize, e: &E, ops: &[Handle<E>]) -> bool {
         if n.comps().iter().all(|c| c.as_point().is_some()) {
             Some((n.hull(), n.n))
         } else if n.facts.has(crate::value::Facts::EXT) {
-            // Window coordinates are pixels (`gl_FragCoord.xy`), other inputs modest.
-            let m = if n.facts.any(crate::value::Facts::WINDOW) {
-                crate::analysis::WINDOW
-            } else {
-                TYPICAL
-            };
+            let m = magnitude(n.facts);
             Some((Interval::new(-m, m), n.n))
         } else {
             None

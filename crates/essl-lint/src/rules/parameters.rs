@@ -330,12 +330,12 @@ fn leaves(cx: &Cx, fr: &Frame, h: Handle<E>, depth: u32, out: &mut Walk) -> bool
             !stores.is_empty() && stores.iter().all(|&(at, v)| at == id && go(v, out))
         }
         E::Load { pointer } if out.locals.contains(&(id, pointer)) => true,
-        // The store that reaches this load on every path, where the walk knows it (`t` in
-        // `vec3 t = b - a; float l = length(t); t /= l;`).
-        E::Load { .. } if cx.sound().reaching_store(id, h).is_some() => {
-            cx.sound().reaching_store(id, h).is_some_and(|v| go(v, out))
-        }
         E::Load { pointer } => {
+            // The store that reaches this load on every path, where the walk knows it (`t`
+            // in `vec3 t = b - a; float l = length(t); t /= l;`).
+            if let Some(v) = cx.sound().reaching_store(id, h) {
+                return go(v, out);
+            }
             out.locals.push((id, pointer));
             let stored = cx.stored(f, id, pointer);
             !stored.is_empty() && stored.into_iter().all(|x| go(x, out))
