@@ -406,6 +406,10 @@ fn parameter_divisor(cx: &Cx, div: &Division) -> Option<Diagnostic> {
     let list = found.list();
     let what = cx.what(f, id, d);
     let (message, label) = match &names[..] {
+        [name] if found.offset => (
+            format!("division by {}", found.lone(name)),
+            format!("{what} is 0 for some values of `{name}`"),
+        ),
         [name] if found.attribute => (
             format!("division by the attribute `{name}`, which a vertex may hold as 0"),
             format!("{what} is 0 for every vertex whose `{name}` is 0"),

@@ -184,8 +184,8 @@ fn from_callers(
     d.severity = essl::diagnostic::Severity::Note;
     d.message = match &found.names[..] {
         [name] => format!(
-            "`{fun}` of the {whose} `{name}`, which {}, where `{fun}` is undefined (±∞, then NaN)",
-            found.zero_by()
+            "`{fun}` of {}, where `{fun}` is undefined (±∞, then NaN)",
+            found.lone(name)
         ),
         _ => format!(
             "`{fun}` of a value of the {whose}s {names}, 0 for some of their values, where `{fun}` is undefined (±∞, then NaN)"

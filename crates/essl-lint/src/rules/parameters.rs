@@ -56,6 +56,8 @@ pub(super) struct CallerValue {
     pub difference: bool,
     /// Whether the names are a vertex shader's attributes rather than parameters.
     pub attribute: bool,
+    /// Whether it is 0 where they take some value other than 0 (a sum with a constant).
+    pub offset: bool,
 }
 
 impl CallerValue {
@@ -77,15 +79,20 @@ impl CallerValue {
             }
         }
         self.difference = false;
+        self.offset |= other.offset;
         Some(self)
     }
 
-    /// How a lone name comes to be 0: "a caller may pass as 0", "a vertex may hold as 0".
-    pub fn zero_by(&self) -> &'static str {
-        if self.attribute {
-            "a vertex may hold as 0"
-        } else {
-            "a caller may pass as 0"
+    /// A lone name as a message names what is 0: "the parameter `t`, which a caller may pass
+    /// as 0", "the attribute `a_size`, which a vertex may hold as 0"; "a value of the
+    /// parameter `mu`, 0 for some arguments" where a sum with a constant makes it 0 at
+    /// another value.
+    pub fn lone(&self, name: &str) -> String {
+        match (self.attribute, self.offset) {
+            (true, false) => format!("the attribute `{name}`, which a vertex may hold as 0"),
+            (false, false) => format!("the parameter `{name}`, which a caller may pass as 0"),
+            (true, true) => format!("a value of the attribute `{name}`, 0 for some vertices"),
+            (false, true) => format!("a value of the parameter `{name}`, 0 for some arguments"),
         }
     }
 
@@ -105,6 +112,9 @@ impl CallerValue {
 struct Walk {
     leaves: Vec<Leaf>,
     locals: Vec<(usize, Handle<E>)>,
+    /// Whether a sum or difference with a non-zero constant was crossed: the value is 0
+    /// where the leaves take some value, not necessarily 0 (`1.0 + g * g - 2.0 * g * mu`).
+    offset: bool,
 }
 
 /// The function [`leaves`] walks, and where it was called from: a called function's
@@ -147,6 +157,7 @@ pub(super) fn caller_value(cx: &Cx, f: &Function, id: usize, d: Handle<E>) -> Op
     if !leaves(cx, &top, d, 0, &mut walk) || walk.leaves.is_empty() {
         return None;
     }
+    let offset = walk.offset;
     let params = walk.leaves;
     let attribute = params.iter().all(|l| matches!(l, Leaf::Attribute(_)));
     if !attribute && params.iter().any(|l| matches!(l, Leaf::Attribute(_))) {
@@ -223,6 +234,7 @@ pub(super) fn caller_value(cx: &Cx, f: &Function, id: usize, d: Handle<E>) -> Op
         names,
         difference,
         attribute,
+        offset,
     })
 }
 
@@ -298,10 +310,21 @@ fn leaves(cx: &Cx, fr: &Frame, h: Handle<E>, depth: u32, out: &mut Walk) -> bool
             right,
         } if per_draw(left) => go(right, out),
         E::Binary {
-            op: Bo::Add | Bo::Subtract | Bo::Multiply,
+            op: op @ (Bo::Add | Bo::Subtract | Bo::Multiply),
             left,
             right,
-        } => go(left, out) && go(right, out),
+        } => {
+            let constant = |x: Handle<E>| {
+                cx.sound()
+                    .num(id, x)
+                    .and_then(|n| n.hull().as_point())
+                    .is_some_and(|c| c != 0.0)
+            };
+            if op != Bo::Multiply && (constant(left) || constant(right)) {
+                out.offset = true;
+            }
+            go(left, out) && go(right, out)
+        }
         E::Unary {
             op: UnaryOperator::Negate,
             expr,

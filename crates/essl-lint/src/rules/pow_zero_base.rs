@@ -177,9 +177,13 @@ fn from_callers(
     let bspan = cx.span(f, base);
     let xi = cx.sound().num(id, exp)?.hull();
     let message = match &found.names[..] {
-        [name] => format!(
+        [name] if !found.offset => format!(
             "`pow` of the base `{name}`, which {}, with an exponent ≤ 0: undefined",
-            found.zero_by()
+            if found.attribute {
+                "a vertex may hold as 0"
+            } else {
+                "a caller may pass as 0"
+            }
         ),
         _ => format!(
             "`pow` of a base built from {}, 0 for some of their values, with an exponent ≤ 0: undefined",

@@ -713,6 +713,34 @@ const GUARDED: &[(&str, &str)] = &[
     ),
 ];
 
+/// A parameter's note says where it is 0: at 0 for the parameter itself, at some other value
+/// for a sum with a constant (`1.0 - b` is 0 at `b == 1`).
+#[test]
+fn a_parameter_s_note_says_where_it_is_zero() {
+    let message = |functions: &str, body: &str| {
+        let text = shader_with("highp", functions, body);
+        let s = super::compiled("t.frag", &text);
+        lint(&s, &LintOptions::default().notes(true))
+            .into_iter()
+            .find(|d| d.code == "division-by-difference")
+            .map(|d| d.message)
+            .unwrap_or_default()
+    };
+    let itself = message("float inv(float b) { return 1.0 / b; }", "  r = inv(v_x);");
+    assert!(
+        itself.contains("the parameter `b`, which a caller may pass as 0"),
+        "{itself}"
+    );
+    let offset = message(
+        "float hp(float b) { return 1.0 / (1.0 - b); }",
+        "  r = hp(v_x);",
+    );
+    assert!(
+        offset.contains("a value of the parameter `b`, 0 for some arguments"),
+        "{offset}"
+    );
+}
+
 /// A division by what a function returns that is a length, scaled (a triangle's area): the
 /// vector's zero is the divisor's; with the length kept from 0 inside, quiet.
 #[test]
