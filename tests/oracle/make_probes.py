@@ -463,6 +463,29 @@ probe("s-uniform-float-134217728", frag=fs("uniform float u[134217728];\n", "  o
 probe("s-total-private-262-locals", frag=fs("", "".join("  vec4 a%d[4000];\n" % i for i in range(262)) + "  o = vec4(1.0);\n"))
 probe("s-total-private-263-locals", frag=fs("", "".join("  vec4 a%d[4000];\n" % i for i in range(263)) + "  o = vec4(1.0);\n"))
 
+# ---------------------------------------------------------------- constant folding of undefined results
+# ANGLE folds a division by zero (and `%` of a negative operand, `inf / inf`, an overflowing
+# quotient) to a value, with a warning, and compiles. Each probe also tests the value: the array
+# `a` has size 1 when it is what ANGLE's folding gives and -1 (an error) otherwise.
+def folded(decl, test):
+    return fs(decl + "\n", "  float a[%s ? 1 : -1];\n  a[0] = 1.0;\n  o = vec4(a[0]);\n" % test)
+probe("f-int-div-zero", frag=folded("const int k = 1 / 0;", "k == 2147483647"))
+probe("f-int-mod-zero-vector", frag=folded("const ivec2 c = ivec2(7) % ivec2(0, 2);", "c == ivec2(2147483647, 1)"))
+probe("f-uint-div-zero", frag=folded("const uint u = 1u / (2u - 2u);", "u == 4294967295u"))
+probe("f-int-min-div-minus-one", frag=folded("const int k = (-2147483647 - 1) / -1;", "k == 2147483647"))
+probe("f-int-neg-mod", frag=folded("const int m = -7 % 3;", "m == 0"))
+probe("f-int-mod-neg", frag=folded("const int m = 7 % -3;", "m == 0"))
+probe("f-float-div-zero", frag=folded("const float f = 1.0 / 0.0;", "f > 3.4e38"))
+probe("f-float-neg-div-zero", frag=folded("const float f = -2.0 / 0.0;", "f < -3.4e38"))
+probe("f-float-div-neg-zero", frag=folded("const float f = 2.0 / -0.0;", "f < -3.4e38"))
+probe("f-float-zero-by-zero", frag=folded("const float n = 0.0 / 0.0;", "n != n"))
+probe("f-float-inf-by-inf", frag=folded("const float n = (1.0 / 0.0) / (1.0 / 0.0);", "n != n"))
+probe("f-float-overflow", frag=folded("const float f = 1e38 / 1e-5;", "f > 3.4e38"))
+probe("f-vector-div-zero", frag=folded("const vec2 w = vec2(1.0, 0.0) / vec2(0.0);", "w.x > 3.4e38 && w.y != w.y"))
+probe("f-global-int-div-zero", frag=fs("int g = 1 / 0;\n", "  o = vec4(float(g));\n"))
+probe("f-local-int-div-zero", frag=fs("", "  int x = 5 / (6 % 0);\n  o = vec4(float(x));\n"))
+probe("f-es100-div-zero", frag="precision mediump float;\nconst float f = 1.0 / 0.0;\nconst int k = 3 / 0;\nvoid main() {\n  float a[k == 2147483647 ? 1 : -1];\n  a[0] = f;\n  gl_FragColor = vec4(a[0]);\n}\n")
+
 def main():
     os.chdir(ROOT)
     if os.path.isdir(DIR):

@@ -153,7 +153,8 @@ codes! {
     /// integers only.
     NonIntegerInExpression = "non-integer-in-expression",
     /// Division or remainder by zero in a `#if` expression, or in a constant expression of the
-    /// shader (a warning there).
+    /// shader (a warning there: the result is undefined, and Chromium compiles the shader with
+    /// the value ANGLE folds, the type's largest integer, ±∞, or NaN for `0.0 / 0.0`).
     DivisionByZero = "division-by-zero",
     /// A shift in a `#if` expression by a negative amount or by 32 or more.
     InvalidShift = "invalid-shift",
@@ -377,6 +378,13 @@ codes! {
     InvalidOperand = "invalid-operand",
     /// A binary operator applied to types it does not take together (`vec2 + vec3`).
     InvalidOperands = "invalid-operands",
+    /// A warning: a constant expression whose division gives a value that is not finite from
+    /// operands that do not all divide by zero: `∞ / ∞` (NaN), or a quotient of finite floats past
+    /// the largest float (`1e38 / 1e-5`, ±∞). Chromium compiles the shader with that value.
+    NonFiniteConstant = "non-finite-constant",
+    /// A warning: `%` of a negative operand in a constant expression (`-7 % 3`): the result is
+    /// undefined in GLSL ES, and Chromium compiles the shader with 0, the value ANGLE folds.
+    NegativeModulus = "negative-modulus",
     /// An assignment to something that cannot be written: a uniform, an input, a constant,
     /// a swizzle with a repeated component, or a value that is not an l-value.
     NotAssignable = "not-assignable",

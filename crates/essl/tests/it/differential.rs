@@ -12,11 +12,8 @@ use essl::{compile, Stage};
 /// Where essl still answers differently from Chromium.
 const KNOWN_DIFFERENCES: &[&str] = &[
     "comma-expression-assignment.vert",
-    "const-int-division-by-zero.frag",
     "fragment-output-dynamic-component-index.frag",
-    "global-int-division-by-zero.vert",
     "infinite-loop-while-true.frag",
-    "int-division-by-zero-in-expression.frag",
     "switch-last-case-if-false.frag",
     "unary-plus-inout-argument.frag",
     "unpackhalf2x16.vert",

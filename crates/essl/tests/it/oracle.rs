@@ -189,6 +189,59 @@ fn probes_agree_with_webgl2() {
     }
 }
 
+/// The constant-folding probes (`f-*`): besides compiling as Chromium does (and folding to
+/// ANGLE's values, which each probe tests through an array size), essl warns where Chromium's
+/// log does, on the same lines, as many times: Chromium's messages map to `division-by-zero`
+/// ("Divide by zero", "Zero divided by zero"), `non-finite-constant` ("Infinity divided by
+/// infinity", "overflowed to infinity") and `negative-modulus`.
+#[test]
+fn folding_warnings_agree_with_chromium() {
+    let data: Value = serde_json::from_str(
+        &std::fs::read_to_string(repo().join("tests/oracle/probes.json")).unwrap(),
+    )
+    .unwrap();
+    let code_of = |message: &str| {
+        if message.contains("Negative modulus") {
+            "negative-modulus"
+        } else if message.contains("Infinity divided") || message.contains("overflowed") {
+            "non-finite-constant"
+        } else if message.contains("ivide") {
+            "division-by-zero"
+        } else {
+            "other"
+        }
+    };
+    let mut seen = 0;
+    for (file, expect) in data["compile"].as_object().unwrap() {
+        if !file.contains("/f-") || !file.ends_with(".frag") {
+            continue;
+        }
+        seen += 1;
+        let mut chromium: Vec<(u32, &str)> = expect["log"]
+            .as_str()
+            .unwrap()
+            .lines()
+            .filter_map(|l| l.strip_prefix("WARNING: 0:"))
+            .map(|l| {
+                let (line, rest) = l.split_once(':').unwrap();
+                (line.parse().unwrap(), code_of(rest))
+            })
+            .collect();
+        let src = std::fs::read_to_string(repo().join(file)).unwrap();
+        let sh = compile_str(file, &src, Stage::Fragment);
+        let mut essl: Vec<(u32, &str)> = sh
+            .diagnostics
+            .iter()
+            .filter(|d| !d.is_error())
+            .map(|d| (sh.file.line_col(d.span.start).line, d.code))
+            .collect();
+        chromium.sort();
+        essl.sort();
+        assert_eq!(essl, chromium, "{file}: essl's warnings against Chromium's");
+    }
+    assert!(seen >= 15, "the folding probes are in tests/oracle/probes.json");
+}
+
 /// The GLSL ES 1.00 and WebGL-limit probes (`tests/oracle/ES100.md`), each answer file with the
 /// options of the context that gave it: WebGL 1 with no extension, WebGL 1 with the four
 /// extensions enabled, WebGL 2.

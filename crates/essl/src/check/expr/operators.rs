@@ -338,19 +338,12 @@ impl Checker<'_> {
             }
         };
         if let (Some(x), Some(y)) = (a.as_const(), b.as_const()) {
-            match fold::binary(op, x, &a.ty, y, &b.ty, &ty) {
-                Ok(v) => return constant(v, ty, span),
-                Err(fold::FoldError::DivideByZero) => {
-                    let d = self.warning(
-                        Code::DivisionByZero,
-                        span,
-                        "division by zero in a constant expression",
-                    );
-                    d.label = "the divisor is zero".into();
-                    d.token = "/".into();
-                    d.notes.push("the result is undefined".into());
+            let mut warnings = Vec::new();
+            if let Ok(v) = fold::binary(op, x, &a.ty, y, &b.ty, &ty, &mut warnings) {
+                for w in warnings {
+                    self.fold_warning(w, op.as_str(), span);
                 }
-                Err(fold::FoldError::Unsupported) => {}
+                return constant(v, ty, span);
             }
         }
         Expr {
@@ -358,6 +351,54 @@ impl Checker<'_> {
             ty,
             span,
         }
+    }
+
+    /// The warning for a result a constant fold gave a value although it is undefined or not
+    /// finite, where Chromium warns and compiles (its value, ANGLE's, in the note).
+    fn fold_warning(&mut self, w: fold::FoldWarning, token: &str, span: Span) {
+        use fold::FoldWarning as W;
+        let (code, message, label, note) = match w {
+            W::IntegerDivideByZero => (
+                Code::DivisionByZero,
+                "division by zero in a constant expression",
+                "the divisor is zero",
+                "the result is undefined; WebGL implementations built on ANGLE (Chromium) fold it to the largest value of the type",
+            ),
+            W::FloatDivideByZero => (
+                Code::DivisionByZero,
+                "division by zero in a constant expression",
+                "the divisor is zero",
+                "the result is undefined; WebGL implementations built on ANGLE (Chromium) fold it to infinity",
+            ),
+            W::ZeroByZero => (
+                Code::DivisionByZero,
+                "zero divided by zero in a constant expression",
+                "both operands are zero",
+                "the result is undefined; WebGL implementations built on ANGLE (Chromium) fold it to NaN",
+            ),
+            W::InfinityByInfinity => (
+                Code::NonFiniteConstant,
+                "infinity divided by infinity in a constant expression",
+                "both operands are infinite",
+                "the result is NaN",
+            ),
+            W::Overflow => (
+                Code::NonFiniteConstant,
+                "a constant division overflows to infinity",
+                "the quotient is past the largest float",
+                "the result is infinity, past the range of every precision",
+            ),
+            W::NegativeModulus => (
+                Code::NegativeModulus,
+                "`%` of a negative operand in a constant expression",
+                "an operand is negative",
+                "the result is undefined in GLSL ES; WebGL implementations built on ANGLE (Chromium) fold it to 0",
+            ),
+        };
+        let d = self.warning(code, span, message);
+        d.label = label.into();
+        d.token = token.into();
+        d.notes.push(note.into());
     }
 
     pub(super) fn assign(

@@ -13,10 +13,26 @@ pub use functions::builtin;
 #[derive(Debug, PartialEq, Eq)]
 #[non_exhaustive]
 pub enum FoldError {
-    /// Integer division or remainder by zero (the result is undefined).
-    DivideByZero,
     /// Not foldable (left to run time).
     Unsupported,
+}
+
+/// An undefined or non-finite result a fold gave a value anyway, as ANGLE's folding does
+/// (`TIntermConstantUnion::foldBinary`), which Chromium reports as a warning and compiles.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum FoldWarning {
+    /// An integer `/` or `%` by 0: folded to the type's largest value.
+    IntegerDivideByZero,
+    /// A non-zero float divided by 0: folded to ±∞.
+    FloatDivideByZero,
+    /// `0.0 / 0.0`: folded to NaN.
+    ZeroByZero,
+    /// ±∞ divided by ±∞: folded to NaN.
+    InfinityByInfinity,
+    /// A division of finite floats whose quotient is past the largest float: ±∞.
+    Overflow,
+    /// An integer `%` with a negative operand: folded to 0.
+    NegativeModulus,
 }
 
 fn basic(c: &ConstValue) -> Option<&[Scalar]> {
@@ -50,24 +66,42 @@ pub fn unary(op: UnaryOp, c: &ConstValue) -> Option<ConstValue> {
     Some(ConstValue::Basic(out))
 }
 
-fn scalar_op(op: BinaryOp, a: Scalar, b: Scalar) -> Result<Scalar, FoldError> {
+fn scalar_op(
+    op: BinaryOp,
+    a: Scalar,
+    b: Scalar,
+    warnings: &mut Vec<FoldWarning>,
+) -> Result<Scalar, FoldError> {
     use BinaryOp::*;
     use Scalar::*;
+    let mut warn = |w| {
+        if !warnings.contains(&w) {
+            warnings.push(w);
+        }
+    };
     Ok(match (a, b) {
         (F(x), F(y)) => match op {
             Add => F(x + y),
             Sub => F(x - y),
             Mul => F(x * y),
-            Div => F(x / y),
+            Div => F(float_div(x, y, &mut warn)),
             _ => return Err(FoldError::Unsupported),
         },
         (I(x), I(y)) => match op {
             Add => I(x.wrapping_add(y)),
             Sub => I(x.wrapping_sub(y)),
             Mul => I(x.wrapping_mul(y)),
-            Div | Mod if y == 0 => return Err(FoldError::DivideByZero),
-            Div => I(x.wrapping_div(y)),
-            Mod => I(x.wrapping_rem(y)),
+            Div | Mod if y == 0 => {
+                warn(FoldWarning::IntegerDivideByZero);
+                I(i32::MAX)
+            }
+            Div if x == i32::MIN && y == -1 => I(i32::MAX),
+            Div => I(x / y),
+            Mod if x < 0 || y < 0 => {
+                warn(FoldWarning::NegativeModulus);
+                I(0)
+            }
+            Mod => I(x % y),
             BitAnd => I(x & y),
             BitOr => I(x | y),
             BitXor => I(x ^ y),
@@ -77,7 +111,10 @@ fn scalar_op(op: BinaryOp, a: Scalar, b: Scalar) -> Result<Scalar, FoldError> {
             Add => U(x.wrapping_add(y)),
             Sub => U(x.wrapping_sub(y)),
             Mul => U(x.wrapping_mul(y)),
-            Div | Mod if y == 0 => return Err(FoldError::DivideByZero),
+            Div | Mod if y == 0 => {
+                warn(FoldWarning::IntegerDivideByZero);
+                U(u32::MAX)
+            }
             Div => U(x / y),
             Mod => U(x % y),
             BitAnd => U(x & y),
@@ -87,6 +124,32 @@ fn scalar_op(op: BinaryOp, a: Scalar, b: Scalar) -> Result<Scalar, FoldError> {
         },
         _ => return Err(FoldError::Unsupported),
     })
+}
+
+/// A float quotient as ANGLE folds it: `x / 0` is ±∞ by the signs (even for a NaN `x`), `0 / 0`
+/// and `∞ / ∞` NaN, each with its warning, as is a finite quotient that overflows.
+fn float_div(x: f32, y: f32, warn: &mut impl FnMut(FoldWarning)) -> f32 {
+    if y == 0.0 {
+        if x == 0.0 {
+            warn(FoldWarning::ZeroByZero);
+            return f32::NAN;
+        }
+        warn(FoldWarning::FloatDivideByZero);
+        return if x.is_sign_negative() != y.is_sign_negative() {
+            f32::NEG_INFINITY
+        } else {
+            f32::INFINITY
+        };
+    }
+    if x.is_infinite() && y.is_infinite() {
+        warn(FoldWarning::InfinityByInfinity);
+        return f32::NAN;
+    }
+    let q = x / y;
+    if !x.is_infinite() && q.is_infinite() {
+        warn(FoldWarning::Overflow);
+    }
+    q
 }
 
 /// A constant shift. An amount outside 0..32 is undefined in GLSL; Chromium folds it with a
@@ -106,7 +169,8 @@ fn shift(op: BinaryOp, a: Scalar, b: Scalar) -> Result<Scalar, FoldError> {
     })
 }
 
-/// Folds a binary operation whose result type is `rt`.
+/// Folds a binary operation whose result type is `rt`; each kind of undefined or non-finite
+/// result it gave a value (ANGLE's) is added to `warnings` once.
 pub fn binary(
     op: BinaryOp,
     a: &ConstValue,
@@ -114,6 +178,7 @@ pub fn binary(
     b: &ConstValue,
     bt: &Type,
     rt: &Type,
+    warnings: &mut Vec<FoldWarning>,
 ) -> Result<ConstValue, FoldError> {
     use BinaryOp::*;
     match op {
@@ -200,7 +265,7 @@ pub fn binary(
         let (p, q) = (get(x, i), get(y, i));
         out.push(match op {
             Shl | Shr => shift(op, p, q)?,
-            _ => scalar_op(op, p, q)?,
+            _ => scalar_op(op, p, q, warnings)?,
         });
     }
     Ok(ConstValue::Basic(out))
@@ -371,6 +436,7 @@ mod tests {
             &v,
             &Type::Vector(ScalarKind::Float, 2),
             &Type::Vector(ScalarKind::Float, 2),
+            &mut Vec::new(),
         )
         .unwrap();
         assert_eq!(r, c(&[4.0, 6.0]));
@@ -396,20 +462,132 @@ mod tests {
         }
     }
 
+    /// Folds `a op b` of scalars, with the warnings.
+    fn fold(op: BinaryOp, a: Scalar, b: Scalar, ty: &Type) -> (Scalar, Vec<FoldWarning>) {
+        let mut w = Vec::new();
+        let (x, y) = (ConstValue::Basic(vec![a]), ConstValue::Basic(vec![b]));
+        let v = binary(op, &x, ty, &y, ty, ty, &mut w).expect("folds");
+        (basic(&v).expect("a scalar")[0], w)
+    }
+
     #[test]
-    fn integer_division_by_zero_is_reported() {
-        let one = ConstValue::Basic(vec![Scalar::I(1)]);
-        let zero = ConstValue::Basic(vec![Scalar::I(0)]);
-        assert_eq!(
-            binary(
-                BinaryOp::Div,
-                &one,
-                &Type::INT,
-                &zero,
-                &Type::INT,
-                &Type::INT
+    fn divisions_by_zero_fold_as_angle_does() {
+        use FoldWarning::*;
+        let (i, u, fl) = (&Type::INT, &Type::UINT, &Type::FLOAT);
+        let div = BinaryOp::Div;
+        let cases = [
+            (
+                div,
+                Scalar::I(1),
+                Scalar::I(0),
+                i,
+                Scalar::I(i32::MAX),
+                Some(IntegerDivideByZero),
             ),
-            Err(FoldError::DivideByZero)
-        );
+            (
+                BinaryOp::Mod,
+                Scalar::I(7),
+                Scalar::I(0),
+                i,
+                Scalar::I(i32::MAX),
+                Some(IntegerDivideByZero),
+            ),
+            (
+                div,
+                Scalar::U(1),
+                Scalar::U(0),
+                u,
+                Scalar::U(u32::MAX),
+                Some(IntegerDivideByZero),
+            ),
+            (
+                div,
+                Scalar::I(i32::MIN),
+                Scalar::I(-1),
+                i,
+                Scalar::I(i32::MAX),
+                None,
+            ),
+            (
+                BinaryOp::Mod,
+                Scalar::I(-7),
+                Scalar::I(3),
+                i,
+                Scalar::I(0),
+                Some(NegativeModulus),
+            ),
+            (
+                BinaryOp::Mod,
+                Scalar::I(7),
+                Scalar::I(-3),
+                i,
+                Scalar::I(0),
+                Some(NegativeModulus),
+            ),
+            (
+                BinaryOp::Mod,
+                Scalar::I(7),
+                Scalar::I(3),
+                i,
+                Scalar::I(1),
+                None,
+            ),
+            (
+                div,
+                Scalar::F(1.0),
+                Scalar::F(0.0),
+                fl,
+                Scalar::F(f32::INFINITY),
+                Some(FloatDivideByZero),
+            ),
+            (
+                div,
+                Scalar::F(-2.0),
+                Scalar::F(0.0),
+                fl,
+                Scalar::F(f32::NEG_INFINITY),
+                Some(FloatDivideByZero),
+            ),
+            (
+                div,
+                Scalar::F(2.0),
+                Scalar::F(-0.0),
+                fl,
+                Scalar::F(f32::NEG_INFINITY),
+                Some(FloatDivideByZero),
+            ),
+            (
+                div,
+                Scalar::F(1e38),
+                Scalar::F(1e-5),
+                fl,
+                Scalar::F(f32::INFINITY),
+                Some(Overflow),
+            ),
+            (
+                div,
+                Scalar::F(6.0),
+                Scalar::F(3.0),
+                fl,
+                Scalar::F(2.0),
+                None,
+            ),
+        ];
+        for (op, a, b, ty, want, warning) in cases {
+            let (got, w) = fold(op, a, b, ty);
+            assert_eq!(
+                (got, w),
+                (want, warning.into_iter().collect::<Vec<_>>()),
+                "{a:?} {op:?} {b:?}"
+            );
+        }
+        for (a, b, warning) in [
+            (0.0, 0.0, ZeroByZero),
+            (f32::INFINITY, f32::NEG_INFINITY, InfinityByInfinity),
+        ] {
+            let (got, w) = fold(div, Scalar::F(a), Scalar::F(b), fl);
+            assert!(matches!(got, Scalar::F(v) if v.is_nan()), "{a} / {b}");
+            assert_eq!(w, vec![warning]);
+        }
     }
 }
