@@ -239,7 +239,10 @@ fn folding_warnings_agree_with_chromium() {
         essl.sort();
         assert_eq!(essl, chromium, "{file}: essl's warnings against Chromium's");
     }
-    assert!(seen >= 15, "the folding probes are in tests/oracle/probes.json");
+    assert!(
+        seen >= 15,
+        "the folding probes are in tests/oracle/probes.json"
+    );
 }
 
 /// The GLSL ES 1.00 and WebGL-limit probes (`tests/oracle/ES100.md`), each answer file with the
