@@ -9,7 +9,11 @@
 //! first line (as `-D NAME` would), lints it, and keeps the findings the configuration checked
 //! already does not have, each with a note naming the macros. A configuration whose only
 //! errors are names spelled as macros that nothing declares (Cesium's `SDF_EDGE`, which the
-//! host defines with `SDF`) is compiled once more with those defined as `1.0`.
+//! host defines with `SDF`) is compiled once more with those defined as `1.0`. So is, with the
+//! macro defined as 1, a count the text lets its includer set (`#ifndef RAYMARCH_AO_SAMPLES`,
+//! `#define RAYMARCH_AO_SAMPLES 5`, a loop's bound): one iteration is the fewest a user can ask
+//! for, and where `1.0 / float(RAYMARCH_AO_SAMPLES - 1)` divides by zero; the front end's
+//! warning of that folded division is a finding of `division-by-difference` there.
 //!
 //! Written by hand: the directive lines are read with a line scanner, not the preprocessor,
 //! because the groups inside skipped groups matter here and the preprocessor does not
@@ -43,6 +47,9 @@ pub struct Variant {
     /// The code of each group it turns on: from the end of the directive's line to the next
     /// directive of its block.
     pub groups: Vec<Span>,
+    /// For a count rather than a flag ([`counts`]): the value the text gives it unless it is
+    /// defined before; the configuration defines it as 1.
+    pub count: Option<String>,
 }
 
 /// A conditional block being read.
@@ -148,6 +155,7 @@ pub fn flags(text: &str, options: &CompileOptions) -> Vec<Variant> {
                 defines: unique,
                 directive: l.span,
                 groups: Vec::new(),
+                count: None,
             });
             out.len() - 1
         });
@@ -155,7 +163,60 @@ pub fn flags(text: &str, options: &CompileOptions) -> Vec<Variant> {
         block.open = Some(i);
     }
     out.retain(|v| v.groups.iter().any(|g| hazardous(&text[g.range()])));
+    out.extend(counts(text, &lines, options));
     out
+}
+
+/// The counts a text lets its includer set, each as a configuration that sets it to 1: a macro
+/// the text defines as an integer above 1 right under `#ifndef` of the same name, and compares
+/// a loop variable with (`i < RAYMARCH_AO_SAMPLES`, `< float(N)`). One iteration is the
+/// fewest a count can ask for, and the value where `1.0 / float(N - 1)` divides by zero.
+fn counts(text: &str, lines: &[Line], options: &CompileOptions) -> Vec<Variant> {
+    let mut out = Vec::new();
+    for w in lines.windows(3) {
+        let [open, define, close] = w else { continue };
+        if open.name != "ifndef" || define.name != "define" || close.name != "endif" {
+            continue;
+        }
+        let mut words = define.args.split_whitespace();
+        let (Some(name), Some(value), None) = (words.next(), words.next(), words.next()) else {
+            continue;
+        };
+        let above_one = value.len() < 10
+            && value.bytes().all(|b| b.is_ascii_digit())
+            && value.parse::<u32>().is_ok_and(|v| v > 1);
+        if !above_one
+            || first_name(&open.args) != [name]
+            || options.defines.iter().any(|(n, _)| n == name)
+            || !bounds_a_loop(text, name)
+        {
+            continue;
+        }
+        out.push(Variant {
+            defines: vec![name.to_string()],
+            directive: open.span,
+            groups: Vec::new(),
+            count: Some(value.to_string()),
+        });
+    }
+    out
+}
+
+/// Whether `text` compares something with `name` as a loop's bound does: `< name`, `<= name`,
+/// `< float(name)`.
+fn bounds_a_loop(text: &str, name: &str) -> bool {
+    text.match_indices(name).any(|(i, _)| {
+        let after = text[i + name.len()..].chars().next();
+        if after.is_some_and(|c| c.is_ascii_alphanumeric() || c == '_') {
+            return false;
+        }
+        let before = text[..i].trim_end();
+        let before = before
+            .strip_suffix('(')
+            .map(|b| b.trim_end().trim_end_matches("float").trim_end())
+            .unwrap_or(before);
+        before.ends_with('<') || before.ends_with("<=")
+    })
 }
 
 /// Whether `code` calls a function other than a constructor: a function the text defines
@@ -271,7 +332,9 @@ pub fn lint(
     let mut compiled = 0;
     let singles = variants.iter().take(max);
     for v in singles {
-        if configuration(shader, compile, options, v, false, &mut seen, &mut out) {
+        if configuration(shader, compile, options, v, false, &mut seen, &mut out)
+            && v.count.is_none()
+        {
             compiled += 1;
             for w in &v.defines {
                 if !together.contains(w) {
@@ -289,6 +352,7 @@ pub fn lint(
                 .take(max)
                 .flat_map(|v| v.groups.iter().copied())
                 .collect(),
+            count: None,
         };
         configuration(shader, compile, options, &all, true, &mut seen, &mut out);
     }
@@ -334,7 +398,14 @@ fn configuration(
             named(&constants)
         );
     }
-    for d in crate::lint(&compiled, options) {
+    let found = crate::lint(&compiled, options);
+    let folded = folded_divisions(shader, &compiled, options, v.count.is_some());
+    for d in found.into_iter().chain(folded) {
+        // A constant the host defines is 1.0 here for want of its value: a divisor it makes
+        // always 0 says nothing of the shader.
+        if !constants.is_empty() && d.message == crate::rules::ZERO_DIVISOR {
+            continue;
+        }
         if !seen.insert((d.code, d.span)) {
             continue;
         }
@@ -342,7 +413,12 @@ fn configuration(
             .groups
             .iter()
             .any(|g| g.start <= d.span.start && d.span.end <= g.end);
-        let note = if together {
+        let note = if let Some(value) = &v.count {
+            format!(
+                "found by compiling the configuration with {names} defined as 1, a count the \
+                 text sets to {value} unless its includer defines it"
+            )
+        } else if together {
             format!(
                 "found by compiling the configuration with every flag that compiles alone \
                  defined ({names})"
@@ -361,6 +437,59 @@ fn configuration(
         });
     }
     true
+}
+
+/// The front end's warnings of a division by zero in a constant expression that the shader as
+/// compiled does not have, as findings of `division-by-difference` (its severity and
+/// suppressions; a note for a count set to 1): a configuration's constants make the divisor 0
+/// (`1.0 / float(RAYMARCH_AO_SAMPLES - 1)`), and the fold leaves no division for a rule to
+/// see.
+fn folded_divisions(
+    shader: &Shader,
+    compiled: &Shader,
+    options: &LintOptions,
+    count: bool,
+) -> Vec<Diagnostic> {
+    const CODE: &str = "division-by-zero";
+    let Some(rule) = crate::rule("division-by-difference") else {
+        return Vec::new();
+    };
+    let base = |d: &Diagnostic| {
+        shader
+            .diagnostics
+            .iter()
+            .any(|b| b.code == CODE && b.span == d.span)
+    };
+    let new: Vec<&Diagnostic> = compiled
+        .diagnostics
+        .iter()
+        .filter(|d| d.code == CODE && !d.is_error() && !base(d))
+        .collect();
+    if new.is_empty() {
+        return Vec::new();
+    }
+    let allowed = crate::suppress::Allowed::scan(&compiled.file);
+    let mut out = Vec::new();
+    for d in new {
+        if allowed.silences(&compiled.file, d.span, rule.id) {
+            continue;
+        }
+        let mut f = Diagnostic::rule_warning(rule.id, d.message.clone(), d.span)
+            .with_label(d.label.clone())
+            .with_help("the quotient is undefined: keep the divisor from 0 in this configuration");
+        if count {
+            f.severity = essl::diagnostic::Severity::Note;
+        }
+        match options.level(rule).severity(f.severity) {
+            Some(essl::diagnostic::Severity::Note) if !options.shows_notes() => {}
+            Some(s) => {
+                f.severity = s;
+                out.push(f);
+            }
+            None => {}
+        }
+    }
+    out
 }
 
 /// The names a configuration's errors say are not declared, where every error is one and each

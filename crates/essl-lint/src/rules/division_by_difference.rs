@@ -73,7 +73,11 @@ declare_rule! {
     /// matrix (`p.xy / p.w`, through locals, calls and parameters): the vertex shader runs before
     /// clipping, so a vertex on the camera's plane (a line or triangle crossing it) has `w = 0`
     /// and one behind the camera a negative `w`; likewise, in a fragment shader, a position
-    /// projected by another frame's camera (`prevViewProjection`, a reprojection).
+    /// projected by another frame's camera (`prevViewProjection`, a reprojection). And a divisor
+    /// that is 0 whatever the inputs: `i / (m - 1.0)` for `m = float(LAYERS)` in the
+    /// configuration where the flag `LAYERS` is 1, or, as a note, a constant division by zero in
+    /// the configuration where a count the text defines under `#ifndef` is 1
+    /// (`1.0 / float(RAYMARCH_AO_SAMPLES - 1)`: one sample, the fewest its loop can take).
     ///
     /// ## Why is this bad?
     /// Two parameters a user sets independently are equal sooner or later — a spot light with the
@@ -175,6 +179,10 @@ fn check(cx: &Cx, out: &mut Vec<Diagnostic>) {
                 continue;
             }
             let div = Division { f, id, h, d };
+            if let Some(diag) = zero_divisor(cx, &div, v) {
+                out.push(diag);
+                continue;
+            }
             if let Some(diag) = unlit_divisor(cx, &div, v) {
                 out.push(diag);
                 continue;
@@ -467,6 +475,34 @@ fn unlit_divisor(cx: &Cx, div: &Division, v: &crate::value::Num) -> Option<Diagn
             help: "guard the divisor: `max(x, 1e-4)`, or test the cosine first",
             secondary: "0 over every pixel where this dot product is negative",
         },
+    )
+}
+
+/// The message of [`zero_divisor`]'s findings.
+pub(crate) const ZERO_DIVISOR: &str = "division by a value that is always zero";
+
+/// The finding for a divisor that is 0 whatever the inputs (a component of it, for a vector):
+/// `i / (m - 1.0)` for `m = float(LAYERS)` where the count `LAYERS` is 1 — most often in a
+/// configuration of the text's `#define`s (`variants`).
+fn zero_divisor(cx: &Cx, div: &Division, v: &crate::value::Num) -> Option<Diagnostic> {
+    if !v.comps().iter().any(|c| c.as_point() == Some(0.0)) {
+        return None;
+    }
+    let span = unguarded(cx, div)?;
+    // A texture function of a sampler the entry point never reads is lowered to 0 (its code
+    // never runs, or its value is never used).
+    if cx.text(span).contains("texture") {
+        return None;
+    }
+    let what = cx.what(div.f, div.id, div.d);
+    Some(
+        Diagnostic::rule_warning(
+            DivisionByDifference::RULE.id,
+            ZERO_DIVISOR,
+            span,
+        )
+        .with_label(format!("{what} is 0 whatever the inputs"))
+        .with_help("the quotient is ±∞, or NaN where the dividend is 0 too: check the constants it is computed from"),
     )
 }
 

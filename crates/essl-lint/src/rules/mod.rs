@@ -38,6 +38,7 @@ mod uninitialised_read;
 mod unused_allow;
 
 pub(crate) use context::{computed_from, describe, fmt_num, operands, users, Cx, User};
+pub(crate) use division_by_difference::ZERO_DIVISOR;
 pub(crate) use normalize_zero::orthogonal_cross;
 pub use rule::Rule;
 

@@ -55,6 +55,13 @@ const N: Severity = Severity::Note;
 type Hazard = (&'static str, &'static str, &'static str, Severity);
 
 const HAZARDS: &[Hazard] = &[
+    // A divisor that constants make 0: a count of 1 layer.
+    (
+        "division-by-difference",
+        "constant",
+        "  float m = float(1);\n  r = v_x / (m - 1.0);",
+        W,
+    ),
     ("pow-negative-base", "computed", "  r = pow(dot(n, l), u_k);", W),
     ("pow-negative-base", "varying", "  r = pow(v_x - 0.5, 2.2);", W),
     ("pow-negative-base", "texture", "  r = pow(t.r - 0.5, 2.2);", W),
@@ -411,6 +418,11 @@ const HAZARDS: &[Hazard] = &[
 
 /// The guarded twins: (rule, body) with no finding of the rule, notes included.
 const GUARDED: &[(&str, &str)] = &[
+    // The branch that would divide by the constant 0 is never taken.
+    (
+        "division-by-difference",
+        "  const int k = 1;\n  if (k > 1) {\n    r = v_x / float(k - 1);\n  }",
+    ),
     (
         "division-by-difference",
         "  vec3 c = cross(u_up, u_dir);\n  float c2 = dot(c, c);\n  r = c2 > 1e-8 ? dot(v_pos, c) / c2 : 0.0;",

@@ -129,3 +129,49 @@ fn a_flag_s_group_may_use_constants_the_host_defines_with_it() {
     );
     assert!(found(&text, variants::DEFAULT).is_empty());
 }
+
+#[test]
+fn a_count_the_includer_may_set_is_linted_at_1() {
+    // lygia's `raymarchAO`: `RAYMARCH_AO_SAMPLES` defined as 1 divides by 0 in a constant.
+    let text = frag(
+        "#ifndef SAMPLES\n#define SAMPLES 5\n#endif\n  const float f = 1.0 / float(SAMPLES - 1);\n  \
+         for (int i = 0; i < SAMPLES; i++) {\n    o.x += float(i) * f;\n  }",
+    );
+    let f = found(&text, variants::DEFAULT);
+    assert_eq!(f.len(), 1, "{f:#?}");
+    assert_eq!(f[0].0, "division-by-difference");
+    assert_eq!(f[0].1, "1.0 / float(SAMPLES - 1)");
+    assert_eq!(f[0].2, ["SAMPLES"]);
+    assert!(
+        f[0].3
+            .iter()
+            .any(|n| n.contains("`SAMPLES` defined as 1, a count the text sets to 5")),
+        "{:?}",
+        f[0].3
+    );
+    // Not a loop's bound, already 1, or defined by the options: no configuration.
+    for text in [
+        frag("#ifndef SAMPLES\n#define SAMPLES 5\n#endif\n  o.x /= float(SAMPLES - 1);"),
+        frag("#ifndef SAMPLES\n#define SAMPLES 1\n#endif\n  for (int i = 0; i < SAMPLES; i++) {\n    o.x /= float(SAMPLES);\n  }"),
+    ] {
+        assert!(found(&text, variants::DEFAULT).is_empty(), "{text}");
+    }
+}
+
+#[test]
+fn a_flag_s_group_divides_by_a_constant_0() {
+    // lygia's stars: `m = float(ATMOSPHERE_STARS_LAYERS)` is 1 with the flag defined as 1.
+    let text = frag(
+        "#ifdef LAYERS\n  const float m = float(LAYERS);\n  \
+         for (float i = 0.0; i < m; i++) {\n    o.x += i / (m - 1.0);\n  }\n#endif",
+    );
+    let f = found(&text, variants::DEFAULT);
+    assert_eq!(f.len(), 1, "{f:#?}");
+    assert_eq!(
+        (f[0].0, f[0].1.as_str()),
+        ("division-by-difference", "(m - 1.0)")
+    );
+    // With a constant the host defines, 1.0 for want of its value: nothing said.
+    let text = frag("#ifdef SDF\n  o.x /= v_clip / (SDF_EDGE - 1.0);\n#endif");
+    assert!(found(&text, variants::DEFAULT).is_empty());
+}
