@@ -482,6 +482,32 @@ probe("f-float-zero-by-zero", frag=folded("const float n = 0.0 / 0.0;", "n != n"
 probe("f-float-inf-by-inf", frag=folded("const float n = (1.0 / 0.0) / (1.0 / 0.0);", "n != n"))
 probe("f-float-overflow", frag=folded("const float f = 1e38 / 1e-5;", "f > 3.4e38"))
 probe("f-vector-div-zero", frag=folded("const vec2 w = vec2(1.0, 0.0) / vec2(0.0);", "w.x > 3.4e38 && w.y != w.y"))
+# Built-in functions of constants: ANGLE folds a result GLSL ES leaves undefined to 0, and
+# `round` with `roundf` (halves away from 0), `log2` as `logf(x) / logf(2.0f)`.
+for name, call, test in [
+    ("round-half", "round(0.5)", "x == 1.0"),
+    ("round-minus-half", "round(-0.5)", "x == -1.0"),
+    ("round-even", "roundEven(2.5)", "x == 2.0"),
+    ("log2-exact", "log2(8.0)", "x == 3.0"),
+    ("smoothstep-reversed", "smoothstep(1.0, 0.0, 0.25)", "x == 0.0"),
+    ("smoothstep-equal", "smoothstep(0.5, 0.5, 0.7)", "x == 0.0"),
+    ("clamp-reversed", "clamp(0.5, 1.0, 0.0)", "x == 0.0"),
+    ("clamp-int-reversed", "float(clamp(5, 3, 1))", "x == 0.0"),
+    ("normalize-zero", "normalize(vec3(0.0)).y", "x == 0.0"),
+    ("pow-negative", "pow(-2.0, 2.0)", "x == 0.0"),
+    ("pow-zero-zero", "pow(0.0, 0.0)", "x == 0.0"),
+    ("atan-zero", "atan(0.0, 0.0)", "x == 0.0"),
+    ("log-negative", "log(-1.0)", "x == 0.0"),
+    ("log2-zero", "log2(0.0)", "x == 0.0"),
+    ("sqrt-negative", "sqrt(-1.0)", "x == 0.0"),
+    ("inversesqrt-zero", "inversesqrt(0.0)", "x == 0.0"),
+    ("acos-outside", "acos(1.5)", "x == 0.0"),
+    ("asin-one", "asin(1.0)", "x > 1.57"),
+    ("atanh-one", "atanh(-1.0)", "x == 0.0"),
+    ("acosh-below", "acosh(0.5)", "x == 0.0"),
+    ("vector-partly-undefined", "sqrt(vec2(4.0, -4.0)).x + sqrt(vec2(4.0, -4.0)).y", "x == 2.0"),
+]:
+    probe("f-builtin-" + name, frag=folded("const float x = %s;" % call, test))
 probe("f-global-int-div-zero", frag=fs("int g = 1 / 0;\n", "  o = vec4(float(g));\n"))
 probe("f-local-int-div-zero", frag=fs("", "  int x = 5 / (6 % 0);\n  o = vec4(float(x));\n"))
 probe("f-es100-div-zero", frag="precision mediump float;\nconst float f = 1.0 / 0.0;\nconst int k = 3 / 0;\nvoid main() {\n  float a[k == 2147483647 ? 1 : -1];\n  a[0] = f;\n  gl_FragColor = vec4(a[0]);\n}\n")

@@ -385,6 +385,11 @@ codes! {
     /// A warning: `%` of a negative operand in a constant expression (`-7 % 3`): the result is
     /// undefined in GLSL ES, and Chromium compiles the shader with 0, the value ANGLE folds.
     NegativeModulus = "negative-modulus",
+    /// A warning: a built-in function called with constant arguments for which GLSL ES leaves
+    /// its result undefined (`sqrt(-1.0)`, `pow(-2.0, 2.0)`, `smoothstep(1.0, 0.0, 0.25)`,
+    /// `normalize(vec3(0.0))`). Chromium compiles the shader with 0 for each such component,
+    /// the value ANGLE folds.
+    UndefinedConstantCall = "undefined-constant-call",
     /// An assignment to something that cannot be written: a uniform, an input, a constant,
     /// a swizzle with a repeated component, or a value that is not an l-value.
     NotAssignable = "not-assignable",

@@ -350,7 +350,11 @@ impl Checker<'_> {
             let consts: Option<Vec<&ConstValue>> = args.iter().map(|a| a.as_const()).collect();
             if let Some(cs) = consts {
                 let tys: Vec<&Type> = args.iter().map(|a| &a.ty).collect();
-                if let Some(v) = fold::builtin(sig.op, &cs, &tys, &ty) {
+                let mut warnings = Vec::new();
+                if let Some(v) = fold::builtin(sig.op, &cs, &tys, &ty, &mut warnings) {
+                    for w in warnings {
+                        self.fold_warning(w, sig.op.name(), span);
+                    }
                     return constant(v, ty, span);
                 }
             }

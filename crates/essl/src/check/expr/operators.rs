@@ -355,7 +355,7 @@ impl Checker<'_> {
 
     /// The warning for a result a constant fold gave a value although it is undefined or not
     /// finite, where Chromium warns and compiles (its value, ANGLE's, in the note).
-    fn fold_warning(&mut self, w: fold::FoldWarning, token: &str, span: Span) {
+    pub(super) fn fold_warning(&mut self, w: fold::FoldWarning, token: &str, span: Span) {
         use fold::FoldWarning as W;
         let (code, message, label, note) = match w {
             W::IntegerDivideByZero => (
@@ -394,6 +394,20 @@ impl Checker<'_> {
                 "an operand is negative",
                 "the result is undefined in GLSL ES; WebGL implementations built on ANGLE (Chromium) fold it to 0",
             ),
+            W::UndefinedCall => {
+                let d = self.warning(
+                    Code::UndefinedConstantCall,
+                    span,
+                    format!("`{token}` is undefined for these constant arguments"),
+                );
+                d.label = "undefined for these values".into();
+                d.token = token.into();
+                d.notes.push(
+                    "WebGL implementations built on ANGLE (Chromium) fold the undefined components to 0"
+                        .into(),
+                );
+                return;
+            }
         };
         let d = self.warning(code, span, message);
         d.label = label.into();

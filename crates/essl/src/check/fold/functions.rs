@@ -1,7 +1,9 @@
 //! Folding of built-in function calls, one function per family of built-ins, and the numeric
 //! helpers they share (per-component mapping, matrix determinant and inverse, half floats).
 
-use super::{basic, f};
+use std::cell::Cell;
+
+use super::{basic, f, FoldWarning};
 use crate::builtins::BuiltinFn;
 use crate::hir::{ConstValue, Scalar};
 use crate::types::{ScalarKind, Type};
@@ -140,7 +142,11 @@ pub(super) fn f32_to_half(v: f32) -> u16 {
     (half + round) as u16
 }
 
-/// Folds a built-in function call (not texture functions or derivatives).
+/// Folds a built-in function call (not texture functions or derivatives). A component whose
+/// result GLSL ES leaves undefined for its arguments (`sqrt(-1.0)`, `smoothstep(1.0, 0.0, x)`,
+/// `normalize` of the zero vector) is 0, as ANGLE folds it
+/// (`TIntermConstantUnion::foldUnaryComponentWise`, `FoldAggregateBuiltIn`), and
+/// [`FoldWarning::UndefinedCall`] is added to `warnings`.
 ///
 /// Each family of built-ins has its own function; an operation belongs to one family only, so
 /// the first family that folds it gives the value.
@@ -149,20 +155,62 @@ pub fn builtin(
     args: &[&ConstValue],
     tys: &[&Type],
     ret: &Type,
+    warnings: &mut Vec<FoldWarning>,
 ) -> Option<ConstValue> {
     let n = ret.component_count().unwrap_or(1) as usize;
     let n0 = tys.first().and_then(|t| t.component_count()).unwrap_or(1) as usize;
     let kind0 = tys.first().and_then(|t| t.scalar_kind());
-    angle_exponential(op, args, n)
-        .or_else(|| common(op, args, tys, n, kind0))
+    let undefined = Cell::new(false);
+    let u = Undefined(&undefined);
+    let v = angle_exponential(op, args, n, u)
+        .or_else(|| common(op, args, tys, n, kind0, u))
         .or_else(|| packing(op, args))
-        .or_else(|| geometric(op, args, n0))
+        .or_else(|| geometric(op, args, n0, u))
         .or_else(|| matrix(op, args, tys, n))
-        .or_else(|| vector_relational(op, args, n))
+        .or_else(|| vector_relational(op, args, n))?;
+    if undefined.get() {
+        warnings.push(FoldWarning::UndefinedCall);
+    }
+    Some(v)
+}
+
+/// Where a fold records that a component's result is undefined.
+#[derive(Clone, Copy)]
+struct Undefined<'a>(&'a Cell<bool>);
+
+impl Undefined<'_> {
+    /// `value()`, or 0 when `bad` (noted).
+    fn or(self, bad: bool, value: impl FnOnce() -> f32) -> f32 {
+        if bad {
+            self.0.set(true);
+            0.0
+        } else {
+            value()
+        }
+    }
+
+    /// `value`, or a zero of its kind when `bad` (noted).
+    fn or_scalar(self, bad: bool, value: Scalar) -> Scalar {
+        if !bad {
+            return value;
+        }
+        self.0.set(true);
+        match value {
+            Scalar::I(_) => Scalar::I(0),
+            Scalar::U(_) => Scalar::U(0),
+            Scalar::B(_) => Scalar::B(false),
+            Scalar::F(_) => Scalar::F(0.0),
+        }
+    }
 }
 
 /// Folds angle, trigonometry and exponential functions: `radians` … `inversesqrt`.
-fn angle_exponential(op: BuiltinFn, args: &[&ConstValue], n: usize) -> Option<ConstValue> {
+fn angle_exponential(
+    op: BuiltinFn,
+    args: &[&ConstValue],
+    n: usize,
+    u: Undefined,
+) -> Option<ConstValue> {
     use BuiltinFn::*;
     Some(match op {
         Radians => map_f(args, n, |x| x[0].to_radians())?,
@@ -170,23 +218,29 @@ fn angle_exponential(op: BuiltinFn, args: &[&ConstValue], n: usize) -> Option<Co
         Sin => map_f(args, n, |x| x[0].sin())?,
         Cos => map_f(args, n, |x| x[0].cos())?,
         Tan => map_f(args, n, |x| x[0].tan())?,
-        Asin => map_f(args, n, |x| x[0].asin())?,
-        Acos => map_f(args, n, |x| x[0].acos())?,
-        Atan if args.len() == 2 => map_f(args, n, |x| x[0].atan2(x[1]))?,
+        Asin => map_f(args, n, |x| u.or(x[0].abs() > 1.0, || x[0].asin()))?,
+        Acos => map_f(args, n, |x| u.or(x[0].abs() > 1.0, || x[0].acos()))?,
+        Atan if args.len() == 2 => map_f(args, n, |x| {
+            u.or(x[0] == 0.0 && x[1] == 0.0, || x[0].atan2(x[1]))
+        })?,
         Atan => map_f(args, n, |x| x[0].atan())?,
         Sinh => map_f(args, n, |x| x[0].sinh())?,
         Cosh => map_f(args, n, |x| x[0].cosh())?,
         Tanh => map_f(args, n, |x| x[0].tanh())?,
         Asinh => map_f(args, n, |x| x[0].asinh())?,
-        Acosh => map_f(args, n, |x| x[0].acosh())?,
-        Atanh => map_f(args, n, |x| x[0].atanh())?,
-        Pow => map_f(args, n, |x| x[0].powf(x[1]))?,
+        Acosh => map_f(args, n, |x| u.or(x[0] < 1.0, || x[0].acosh()))?,
+        Atanh => map_f(args, n, |x| u.or(x[0].abs() >= 1.0, || x[0].atanh()))?,
+        Pow => map_f(args, n, |x| {
+            let bad = x[0] < 0.0 || (x[0] == 0.0 && x[1] <= 0.0);
+            u.or(bad, || x[0].powf(x[1]))
+        })?,
         Exp => map_f(args, n, |x| x[0].exp())?,
-        Log => map_f(args, n, |x| x[0].ln())?,
+        Log => map_f(args, n, |x| u.or(x[0] <= 0.0, || x[0].ln()))?,
         Exp2 => map_f(args, n, |x| x[0].exp2())?,
-        Log2 => map_f(args, n, |x| x[0].log2())?,
-        Sqrt => map_f(args, n, |x| x[0].sqrt())?,
-        InverseSqrt => map_f(args, n, |x| 1.0 / x[0].sqrt())?,
+        // ANGLE's `logf(x) / logf(2.0f)`, not a log2: the roundings differ.
+        Log2 => map_f(args, n, |x| u.or(x[0] <= 0.0, || x[0].ln() / 2f32.ln()))?,
+        Sqrt => map_f(args, n, |x| u.or(x[0] < 0.0, || x[0].sqrt()))?,
+        InverseSqrt => map_f(args, n, |x| u.or(x[0] <= 0.0, || 1.0 / x[0].sqrt()))?,
         _ => return None,
     })
 }
@@ -198,12 +252,15 @@ fn common(
     tys: &[&Type],
     n: usize,
     kind0: Option<ScalarKind>,
+    u: Undefined,
 ) -> Option<ConstValue> {
     use BuiltinFn::*;
     Some(match op {
         Floor => map_f(args, n, |x| x[0].floor())?,
         Trunc => map_f(args, n, |x| x[0].trunc())?,
-        Round | RoundEven => map_f(args, n, |x| x[0].round_ties_even())?,
+        // ANGLE's `roundf`: halves away from 0.
+        Round => map_f(args, n, |x| x[0].round())?,
+        RoundEven => map_f(args, n, |x| x[0].round_ties_even())?,
         Ceil => map_f(args, n, |x| x[0].ceil())?,
         Fract => map_f(args, n, |x| x[0] - x[0].floor())?,
         Mod => map_f(args, n, |x| x[0] - x[1] * (x[0] / x[1]).floor())?,
@@ -230,10 +287,10 @@ fn common(
                     },
                     _ => match (x[0], x[1], x[2]) {
                         (Scalar::I(a), Scalar::I(lo), Scalar::I(hi)) => {
-                            Scalar::I(a.max(lo).min(hi))
+                            u.or_scalar(lo > hi, Scalar::I(a.max(lo).min(hi)))
                         }
                         (Scalar::U(a), Scalar::U(lo), Scalar::U(hi)) => {
-                            Scalar::U(a.max(lo).min(hi))
+                            u.or_scalar(lo > hi, Scalar::U(a.max(lo).min(hi)))
                         }
                         _ => return None,
                     },
@@ -252,7 +309,7 @@ fn common(
         })?,
         Min => map_f(args, n, |x| x[0].min(x[1]))?,
         Max => map_f(args, n, |x| x[0].max(x[1]))?,
-        Clamp => map_f(args, n, |x| x[0].max(x[1]).min(x[2]))?,
+        Clamp => map_f(args, n, |x| u.or(x[1] > x[2], || x[0].max(x[1]).min(x[2])))?,
         Mix if tys[2].scalar_kind() == Some(ScalarKind::Bool) => map_scalars(args, n, |x| {
             Some(if matches!(x[2], Scalar::B(true)) {
                 x[1]
@@ -263,8 +320,10 @@ fn common(
         Mix => map_f(args, n, |x| x[0] * (1.0 - x[2]) + x[1] * x[2])?,
         Step => map_f(args, n, |x| if x[1] < x[0] { 0.0 } else { 1.0 })?,
         SmoothStep => map_f(args, n, |x| {
-            let t = ((x[2] - x[0]) / (x[1] - x[0])).clamp(0.0, 1.0);
-            t * t * (3.0 - 2.0 * t)
+            u.or(x[0] >= x[1], || {
+                let t = ((x[2] - x[0]) / (x[1] - x[0])).clamp(0.0, 1.0);
+                t * t * (3.0 - 2.0 * t)
+            })
         })?,
         IsNan => map_scalars(args, n, |x| Some(Scalar::B(f(x[0]).is_nan())))?,
         IsInf => map_scalars(args, n, |x| Some(Scalar::B(f(x[0]).is_infinite())))?,
@@ -316,7 +375,7 @@ fn packing(op: BuiltinFn, args: &[&ConstValue]) -> Option<ConstValue> {
 }
 
 /// Folds geometric functions: `length` … `refract`; `n0` is the first argument's size.
-fn geometric(op: BuiltinFn, args: &[&ConstValue], n0: usize) -> Option<ConstValue> {
+fn geometric(op: BuiltinFn, args: &[&ConstValue], n0: usize, u: Undefined) -> Option<ConstValue> {
     use BuiltinFn::*;
     Some(match op {
         Length => fvec(vec![dot(&floats(args[0])?, &floats(args[0])?).sqrt()]),
@@ -337,7 +396,7 @@ fn geometric(op: BuiltinFn, args: &[&ConstValue], n0: usize) -> Option<ConstValu
         Normalize => {
             let a = floats(args[0])?;
             let l = dot(&a, &a).sqrt();
-            fvec(a.iter().map(|x| x / l).collect())
+            fvec(a.iter().map(|x| u.or(l == 0.0, || x / l)).collect())
         }
         FaceForward => {
             let (nn, i, nref) = (floats(args[0])?, floats(args[1])?, floats(args[2])?);

@@ -33,6 +33,9 @@ pub enum FoldWarning {
     Overflow,
     /// An integer `%` with a negative operand: folded to 0.
     NegativeModulus,
+    /// A built-in function whose result is undefined for its arguments (`sqrt(-1.0)`): the
+    /// components concerned folded to 0.
+    UndefinedCall,
 }
 
 fn basic(c: &ConstValue) -> Option<&[Scalar]> {

@@ -1,0 +1,9 @@
+#version 300 es
+precision mediump float;
+out vec4 o;
+const float x = inversesqrt(0.0);
+void main() {
+  float a[x == 0.0 ? 1 : -1];
+  a[0] = 1.0;
+  o = vec4(a[0]);
+}
