@@ -508,6 +508,10 @@ for name, call, test in [
     ("vector-partly-undefined", "sqrt(vec2(4.0, -4.0)).x + sqrt(vec2(4.0, -4.0)).y", "x == 2.0"),
 ]:
     probe("f-builtin-" + name, frag=folded("const float x = %s;" % call, test))
+probe("f-mul-overflow", frag=folded("const float f = 1e38 * 10.0;", "f > 3.4e38"))
+probe("f-add-overflow", frag=folded("const float f = 1e38 + 3e38;", "f > 3.4e38"))
+probe("f-sub-inf-inf", frag=folded("const float n = (1.0 / 0.0) - (1.0 / 0.0);", "n != n"))
+probe("f-mul-inf-zero", frag=folded("const float n = (1.0 / 0.0) * 0.0;", "n != n"))
 probe("f-global-int-div-zero", frag=fs("int g = 1 / 0;\n", "  o = vec4(float(g));\n"))
 probe("f-local-int-div-zero", frag=fs("", "  int x = 5 / (6 % 0);\n  o = vec4(float(x));\n"))
 probe("f-es100-div-zero", frag="precision mediump float;\nconst float f = 1.0 / 0.0;\nconst int k = 3 / 0;\nvoid main() {\n  float a[k == 2147483647 ? 1 : -1];\n  a[0] = f;\n  gl_FragColor = vec4(a[0]);\n}\n")

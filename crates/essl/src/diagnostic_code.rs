@@ -378,9 +378,10 @@ codes! {
     InvalidOperand = "invalid-operand",
     /// A binary operator applied to types it does not take together (`vec2 + vec3`).
     InvalidOperands = "invalid-operands",
-    /// A warning: a constant expression whose division gives a value that is not finite from
-    /// operands that do not all divide by zero: `∞ / ∞` (NaN), or a quotient of finite floats past
-    /// the largest float (`1e38 / 1e-5`, ±∞). Chromium compiles the shader with that value.
+    /// A warning: a constant expression whose arithmetic gives a value that is not finite from
+    /// operands that are: a result past the largest float (`1e38 * 10.0`, `1e38 / 1e-5`: ±∞),
+    /// or NaN from infinities (`∞ / ∞`, `∞ - ∞`, `∞ * 0`). Chromium compiles the shader with
+    /// that value.
     NonFiniteConstant = "non-finite-constant",
     /// A warning: `%` of a negative operand in a constant expression (`-7 % 3`): the result is
     /// undefined in GLSL ES, and Chromium compiles the shader with 0, the value ANGLE folds.

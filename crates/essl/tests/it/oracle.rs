@@ -194,7 +194,7 @@ fn probes_agree_with_webgl2() {
 /// log does, on the same lines, with the same kinds (Chromium repeats a warning for each
 /// component of a vector, essl says it once): Chromium's messages map to `division-by-zero`
 /// ("Divide by zero", "Zero divided by zero"), `non-finite-constant` ("Infinity divided by
-/// infinity", "overflowed to infinity"), `negative-modulus` and `undefined-constant-call`
+/// infinity", "overflowed to infinity", "undefined … generated NaN"), `negative-modulus` and `undefined-constant-call`
 /// ("operation result is undefined").
 #[test]
 fn folding_warnings_agree_with_chromium() {
@@ -207,7 +207,10 @@ fn folding_warnings_agree_with_chromium() {
             "undefined-constant-call"
         } else if message.contains("Negative modulus") {
             "negative-modulus"
-        } else if message.contains("Infinity divided") || message.contains("overflowed") {
+        } else if message.contains("Infinity divided")
+            || message.contains("overflowed")
+            || message.contains("generated NaN") && !message.contains("Zero divided")
+        {
             "non-finite-constant"
         } else if message.contains("ivide") {
             "division-by-zero"

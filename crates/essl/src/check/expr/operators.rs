@@ -376,18 +376,32 @@ impl Checker<'_> {
                 "both operands are zero",
                 "the result is undefined; WebGL implementations built on ANGLE (Chromium) fold it to NaN",
             ),
-            W::InfinityByInfinity => (
-                Code::NonFiniteConstant,
-                "infinity divided by infinity in a constant expression",
-                "both operands are infinite",
-                "the result is NaN",
-            ),
-            W::Overflow => (
-                Code::NonFiniteConstant,
-                "a constant division overflows to infinity",
-                "the quotient is past the largest float",
-                "the result is infinity, past the range of every precision",
-            ),
+            W::NotANumber | W::Overflow => {
+                let operation = match token {
+                    "+" => "addition",
+                    "-" => "subtraction",
+                    "*" => "multiplication",
+                    _ => "division",
+                };
+                let (message, label, note) = if w == W::NotANumber {
+                    (
+                        format!("a constant {operation} gives NaN"),
+                        "NaN",
+                        "the result is NaN (`∞ - ∞`, `∞ * 0` and `∞ / ∞` are undefined)",
+                    )
+                } else {
+                    (
+                        format!("a constant {operation} overflows to infinity"),
+                        "past the largest float",
+                        "the result is infinity, past the range of every precision",
+                    )
+                };
+                let d = self.warning(Code::NonFiniteConstant, span, message);
+                d.label = label.into();
+                d.token = token.into();
+                d.notes.push(note.into());
+                return;
+            }
             W::NegativeModulus => (
                 Code::NegativeModulus,
                 "`%` of a negative operand in a constant expression",

@@ -27,9 +27,10 @@ pub enum FoldWarning {
     FloatDivideByZero,
     /// `0.0 / 0.0`: folded to NaN.
     ZeroByZero,
-    /// ±∞ divided by ±∞: folded to NaN.
-    InfinityByInfinity,
-    /// A division of finite floats whose quotient is past the largest float: ±∞.
+    /// An operation of infinities whose result is NaN: `∞ / ∞`, `∞ - ∞`, `∞ * 0`.
+    NotANumber,
+    /// An addition, subtraction, multiplication or division of finite floats whose result is
+    /// past the largest float: ±∞.
     Overflow,
     /// An integer `%` with a negative operand: folded to 0.
     NegativeModulus,
@@ -84,9 +85,9 @@ fn scalar_op(
     };
     Ok(match (a, b) {
         (F(x), F(y)) => match op {
-            Add => F(x + y),
-            Sub => F(x - y),
-            Mul => F(x * y),
+            Add => F(checked(x + y, x, y, &mut warn)),
+            Sub => F(checked(x - y, x, y, &mut warn)),
+            Mul => F(checked(x * y, x, y, &mut warn)),
             Div => F(float_div(x, y, &mut warn)),
             _ => return Err(FoldError::Unsupported),
         },
@@ -145,7 +146,7 @@ fn float_div(x: f32, y: f32, warn: &mut impl FnMut(FoldWarning)) -> f32 {
         };
     }
     if x.is_infinite() && y.is_infinite() {
-        warn(FoldWarning::InfinityByInfinity);
+        warn(FoldWarning::NotANumber);
         return f32::NAN;
     }
     let q = x / y;
@@ -153,6 +154,17 @@ fn float_div(x: f32, y: f32, warn: &mut impl FnMut(FoldWarning)) -> f32 {
         warn(FoldWarning::Overflow);
     }
     q
+}
+
+/// The result `r` of `x + y`, `x - y` or `x * y`, warned of as ANGLE's `CheckedSum`,
+/// `CheckedDiff` and `CheckedMul` do: NaN from numbers, ±∞ from finite numbers.
+fn checked(r: f32, x: f32, y: f32, warn: &mut impl FnMut(FoldWarning)) -> f32 {
+    if r.is_nan() && !x.is_nan() && !y.is_nan() {
+        warn(FoldWarning::NotANumber);
+    } else if r.is_infinite() && !x.is_infinite() && !y.is_infinite() {
+        warn(FoldWarning::Overflow);
+    }
+    r
 }
 
 /// A constant shift. An amount outside 0..32 is undefined in GLSL; Chromium folds it with a
@@ -575,6 +587,30 @@ mod tests {
                 Scalar::F(2.0),
                 None,
             ),
+            (
+                BinaryOp::Mul,
+                Scalar::F(1e38),
+                Scalar::F(10.0),
+                fl,
+                Scalar::F(f32::INFINITY),
+                Some(Overflow),
+            ),
+            (
+                BinaryOp::Add,
+                Scalar::F(3e38),
+                Scalar::F(3e38),
+                fl,
+                Scalar::F(f32::INFINITY),
+                Some(Overflow),
+            ),
+            (
+                BinaryOp::Add,
+                Scalar::F(f32::INFINITY),
+                Scalar::F(1.0),
+                fl,
+                Scalar::F(f32::INFINITY),
+                None,
+            ),
         ];
         for (op, a, b, ty, want, warning) in cases {
             let (got, w) = fold(op, a, b, ty);
@@ -584,11 +620,13 @@ mod tests {
                 "{a:?} {op:?} {b:?}"
             );
         }
-        for (a, b, warning) in [
-            (0.0, 0.0, ZeroByZero),
-            (f32::INFINITY, f32::NEG_INFINITY, InfinityByInfinity),
+        for (op, a, b, warning) in [
+            (div, 0.0, 0.0, ZeroByZero),
+            (div, f32::INFINITY, f32::NEG_INFINITY, NotANumber),
+            (BinaryOp::Sub, f32::INFINITY, f32::INFINITY, NotANumber),
+            (BinaryOp::Mul, f32::INFINITY, 0.0, NotANumber),
         ] {
-            let (got, w) = fold(div, Scalar::F(a), Scalar::F(b), fl);
+            let (got, w) = fold(op, Scalar::F(a), Scalar::F(b), fl);
             assert!(matches!(got, Scalar::F(v) if v.is_nan()), "{a} / {b}");
             assert_eq!(w, vec![warning]);
         }
