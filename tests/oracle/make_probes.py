@@ -512,6 +512,8 @@ probe("f-mul-overflow", frag=folded("const float f = 1e38 * 10.0;", "f > 3.4e38"
 probe("f-add-overflow", frag=folded("const float f = 1e38 + 3e38;", "f > 3.4e38"))
 probe("f-sub-inf-inf", frag=folded("const float n = (1.0 / 0.0) - (1.0 / 0.0);", "n != n"))
 probe("f-mul-inf-zero", frag=folded("const float n = (1.0 / 0.0) * 0.0;", "n != n"))
+probe("f-negative-to-uint", frag=folded("const uint u = uint(-1.0);", "u == 4294967295u"))
+probe("f-negative-to-uvec", frag=folded("const uvec2 u = uvec2(vec3(-2.0, 1.0, -1.0));", "u == uvec2(4294967294u, 1u)"))
 probe("f-global-int-div-zero", frag=fs("int g = 1 / 0;\n", "  o = vec4(float(g));\n"))
 probe("f-local-int-div-zero", frag=fs("", "  int x = 5 / (6 % 0);\n  o = vec4(float(x));\n"))
 probe("f-es100-div-zero", frag="precision mediump float;\nconst float f = 1.0 / 0.0;\nconst int k = 3 / 0;\nvoid main() {\n  float a[k == 2147483647 ? 1 : -1];\n  a[0] = f;\n  gl_FragColor = vec4(a[0]);\n}\n")

@@ -391,6 +391,10 @@ codes! {
     /// `normalize(vec3(0.0))`). Chromium compiles the shader with 0 for each such component,
     /// the value ANGLE folds.
     UndefinedConstantCall = "undefined-constant-call",
+    /// A warning: a negative float constant converted to `uint` (`uint(-1.0)`), which GLSL ES
+    /// leaves undefined. Chromium compiles the shader with the value converted through `int`
+    /// (4294967295 for -1.0).
+    NegativeToUint = "negative-to-uint",
     /// An assignment to something that cannot be written: a uniform, an input, a constant,
     /// a swizzle with a repeated component, or a value that is not an l-value.
     NotAssignable = "not-assignable",

@@ -194,8 +194,8 @@ fn probes_agree_with_webgl2() {
 /// log does, on the same lines, with the same kinds (Chromium repeats a warning for each
 /// component of a vector, essl says it once): Chromium's messages map to `division-by-zero`
 /// ("Divide by zero", "Zero divided by zero"), `non-finite-constant` ("Infinity divided by
-/// infinity", "overflowed to infinity", "undefined … generated NaN"), `negative-modulus` and `undefined-constant-call`
-/// ("operation result is undefined").
+/// infinity", "overflowed to infinity", "undefined … generated NaN"), `negative-modulus`, `undefined-constant-call`
+/// ("operation result is undefined") and `negative-to-uint`.
 #[test]
 fn folding_warnings_agree_with_chromium() {
     let data: Value = serde_json::from_str(
@@ -203,7 +203,9 @@ fn folding_warnings_agree_with_chromium() {
     )
     .unwrap();
     let code_of = |message: &str| {
-        if message.contains("operation result is undefined") {
+        if message.contains("negative float to uint") {
+            "negative-to-uint"
+        } else if message.contains("operation result is undefined") {
             "undefined-constant-call"
         } else if message.contains("Negative modulus") {
             "negative-modulus"

@@ -48,7 +48,12 @@ impl Checker<'_> {
         let consts: Option<Vec<&ConstValue>> = args.iter().map(|a| a.as_const()).collect();
         if let Some(cs) = consts {
             let tys: Vec<&Type> = args.iter().map(|a| &a.ty).collect();
-            if let Some(v) = fold::construct(&ty, &cs, &tys) {
+            let mut warnings = Vec::new();
+            if let Some(v) = fold::construct(&ty, &cs, &tys, &mut warnings) {
+                let token = self.file.slice(type_span).to_string();
+                for w in warnings {
+                    self.fold_warning(w, &token, span);
+                }
                 return constant(v, ty, span);
             }
         }

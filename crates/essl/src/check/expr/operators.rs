@@ -408,6 +408,12 @@ impl Checker<'_> {
                 "an operand is negative",
                 "the result is undefined in GLSL ES; WebGL implementations built on ANGLE (Chromium) fold it to 0",
             ),
+            W::NegativeToUint => (
+                Code::NegativeToUint,
+                "a negative constant converted to `uint`",
+                "a negative float",
+                "the result is undefined; WebGL implementations built on ANGLE (Chromium) convert through `int` (`uint(-1.0)` is 4294967295)",
+            ),
             W::UndefinedCall => {
                 let d = self.warning(
                     Code::UndefinedConstantCall,

@@ -37,6 +37,8 @@ pub enum FoldWarning {
     /// A built-in function whose result is undefined for its arguments (`sqrt(-1.0)`): the
     /// components concerned folded to 0.
     UndefinedCall,
+    /// A negative float converted to `uint` (`uint(-1.0)`): folded through `int`, 4294967295.
+    NegativeToUint,
 }
 
 fn basic(c: &ConstValue) -> Option<&[Scalar]> {
@@ -360,8 +362,23 @@ fn float_to_u32(v: f32) -> u32 {
     }
 }
 
-/// Folds a constructor.
-pub fn construct(ty: &Type, args: &[&ConstValue], arg_tys: &[&Type]) -> Option<ConstValue> {
+/// Folds a constructor; a negative float converted to `uint` adds
+/// [`FoldWarning::NegativeToUint`] to `warnings`, as ANGLE warns of it.
+pub fn construct(
+    ty: &Type,
+    args: &[&ConstValue],
+    arg_tys: &[&Type],
+    warnings: &mut Vec<FoldWarning>,
+) -> Option<ConstValue> {
+    let mut convert = |s: Scalar, k: ScalarKind| {
+        if k == ScalarKind::Uint
+            && matches!(s, Scalar::F(v) if v < 0.0)
+            && !warnings.contains(&FoldWarning::NegativeToUint)
+        {
+            warnings.push(FoldWarning::NegativeToUint);
+        }
+        convert(s, k)
+    };
     match ty {
         Type::Array(..) | Type::Struct(_) => Some(ConstValue::Composite(
             args.iter().map(|a| (*a).clone()).collect(),
