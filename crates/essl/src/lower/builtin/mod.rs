@@ -572,6 +572,20 @@ impl FnCx<'_, '_> {
         self.compose(&Type::Vector(ScalarKind::Float, 2), vec![x, y], span)
     }
 
+    /// The float whose bits are `bits`, at run time (an infinity or NaN, which no naga
+    /// literal holds).
+    fn f32_from_bits(&mut self, bits: u32, span: Span) -> Handle<Expression> {
+        let bits = self.lit(Literal::U32(bits));
+        self.add(
+            Expression::As {
+                expr: bits,
+                kind: naga::ScalarKind::Float,
+                convert: None,
+            },
+            span,
+        )
+    }
+
     fn f16_bits_to_f32(&mut self, h: Handle<Expression>, span: Span) -> Handle<Expression> {
         use naga::BinaryOperator as B;
         let c = |fx: &mut Self, v: u32| fx.lit(Literal::U32(v));
@@ -610,8 +624,9 @@ impl FnCx<'_, '_> {
             span,
         );
         let is_special = self.binop(B::Equal, e, m31, span);
-        let inf = self.lit(Literal::F32(f32::INFINITY));
-        let nan = self.lit(Literal::F32(f32::NAN));
+        // naga's literals are finite: the two are built from their bits.
+        let inf = self.f32_from_bits(f32::INFINITY.to_bits(), span);
+        let nan = self.f32_from_bits(f32::NAN.to_bits(), span);
         let mant_zero = self.binop(B::Equal, mant, zero_u, span);
         let special = self.add(
             Expression::Select {
