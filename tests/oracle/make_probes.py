@@ -463,6 +463,19 @@ probe("s-uniform-float-134217728", frag=fs("uniform float u[134217728];\n", "  o
 probe("s-total-private-262-locals", frag=fs("", "".join("  vec4 a%d[4000];\n" % i for i in range(262)) + "  o = vec4(1.0);\n"))
 probe("s-total-private-263-locals", frag=fs("", "".join("  vec4 a%d[4000];\n" % i for i in range(263)) + "  o = vec4(1.0);\n"))
 
+# What follows the last label of a `switch`: ANGLE removes `if (false) S` (no `else`) as it
+# parses it, so a `switch` whose last label is followed only by such statements has none.
+for i, stmt in enumerate([
+    "if (false) break;", ";", "{}", "if (true) {}", "if (false) {} else {}",
+    "{ if (false) break; }", "float x;", "if (false) o = vec4(2.0);", "if (1 > 2) break;",
+    "if (u > 2) break;", "while (false) {}", "o;", "if (true) break;",
+    "const bool k = false;\n      if (k) break;", "if (false) break;\n      if (false) break;",
+]):
+    probe("c-switch-last-label-then-%d" % i, frag=fs(
+        "uniform int u;\n",
+        "  o = vec4(0.0);\n  switch (u) {\n    case 0:\n      o = vec4(1.0);\n      break;\n"
+        "    default:\n      %s\n  }\n" % stmt))
+
 # ---------------------------------------------------------------- constant folding of undefined results
 # ANGLE folds a division by zero (and `%` of a negative operand, `inf / inf`, an overflowing
 # quotient) to a value, with a warning, and compiles. Each probe also tests the value: the array

@@ -309,9 +309,14 @@ impl Checker<'_> {
         let mut cases: Vec<hir::SwitchCase> = Vec::new();
         let mut seen: Vec<(i64, crate::source::Span)> = Vec::new();
         let mut seen_default: Option<crate::source::Span> = None;
+        // Whether a statement that ANGLE keeps follows the latest label: it removes an `if`
+        // whose condition is the constant `false` and that has no `else` as it parses it,
+        // before it looks for a statement after the last label.
+        let mut kept_after_label = false;
         for s in &body.stmts {
             match &s.kind {
                 ast::StmtKind::Case(e) => {
+                    kept_after_label = false;
                     let value = self.case_label(e, s.span, &sel_ty, &mut seen);
                     open_case(&mut cases, Some(value.unwrap_or(i64::MIN)), s.span);
                 }
@@ -329,11 +334,13 @@ impl Checker<'_> {
                         });
                     }
                     seen_default = Some(s.span);
+                    kept_after_label = false;
                     open_case(&mut cases, None, s.span);
                 }
                 _ => {
                     let mut stmts = Vec::new();
                     self.stmt_into(s, &mut stmts);
+                    kept_after_label |= !removed_if(s, &stmts);
                     match cases.last_mut() {
                         Some(c) => c.body.extend(stmts),
                         None => {
@@ -352,7 +359,7 @@ impl Checker<'_> {
         }
         self.fctx_mut().switches -= 1;
         self.pop_scope();
-        self.check_label_at_end(body);
+        self.check_label_at_end(body, kept_after_label);
         if let Some(last) = cases.last_mut() {
             last.fall_through = false;
         }
@@ -413,13 +420,14 @@ impl Checker<'_> {
         value
     }
 
-    /// The last label of a `switch` must be followed by a statement.
-    fn check_label_at_end(&mut self, body: &ast::Block) {
-        let last_stmt_is_label = body
-            .stmts
-            .last()
-            .is_some_and(|s| matches!(s.kind, ast::StmtKind::Case(_) | ast::StmtKind::Default));
-        if last_stmt_is_label {
+    /// The last label of a `switch` must be followed by a statement (`kept`: one that ANGLE
+    /// does not remove as it parses it).
+    fn check_label_at_end(&mut self, body: &ast::Block, kept: bool) {
+        let is_label =
+            |s: &ast::Stmt| matches!(s.kind, ast::StmtKind::Case(_) | ast::StmtKind::Default);
+        let last_stmt_is_label = body.stmts.last().is_some_and(is_label);
+        let only_removed = !kept && body.stmts.iter().any(is_label);
+        if last_stmt_is_label || only_removed {
             let end = body.span.end.saturating_sub(1);
             let d = self.error(
                 Code::LabelAtEndOfSwitch,
@@ -428,6 +436,14 @@ impl Checker<'_> {
             );
             d.label = "a statement is needed before `}`".into();
             d.token = "switch".into();
+            if !last_stmt_is_label {
+                d.notes.push(
+                    "an `if` whose condition is the constant `false` and that has no `else` is \
+                     not a statement here: WebGL implementations built on ANGLE (Chromium) \
+                     remove it before this check"
+                        .into(),
+                );
+            }
             d.fix = Some(Fix::certain(
                 "add `break;`",
                 crate::source::Span::empty(end),
@@ -435,6 +451,19 @@ impl Checker<'_> {
             ));
         }
     }
+}
+
+/// Whether `s` (checked into `stmts`) is an `if` without `else` whose condition is the
+/// constant `false`: a statement ANGLE removes as it parses it.
+fn removed_if(s: &ast::Stmt, stmts: &[hir::Stmt]) -> bool {
+    let ast::StmtKind::If(_, _, None) = s.kind else {
+        return false;
+    };
+    matches!(
+        stmts,
+        [hir::Stmt { kind: StmtKind::If(c, _, _), .. }]
+            if c.as_const() == Some(&hir::ConstValue::Basic(vec![hir::Scalar::B(false)]))
+    )
 }
 
 /// Whether a statement list ends in `break`, `continue`, `return` or `discard`.

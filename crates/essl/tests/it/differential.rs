@@ -14,9 +14,7 @@ const KNOWN_DIFFERENCES: &[&str] = &[
     "comma-expression-assignment.vert",
     "fragment-output-dynamic-component-index.frag",
     "infinite-loop-while-true.frag",
-    "switch-last-case-if-false.frag",
     "unary-plus-inout-argument.frag",
-    "unpackhalf2x16.vert",
 ];
 
 #[test]
