@@ -476,6 +476,21 @@ for i, stmt in enumerate([
         "  o = vec4(0.0);\n  switch (u) {\n    case 0:\n      o = vec4(1.0);\n      break;\n"
         "    default:\n      %s\n  }\n" % stmt))
 
+# A run-time index into a fragment output: Chromium refuses it into the output itself (an
+# array or a vector), not into an element of an output array or a swizzle.
+for name, decl, body in [
+    ("vector", "", "  o = vec4(0.0);\n  o[u] = 1.0;\n"),
+    ("vector-read", "", "  o = vec4(0.0);\n  float x = o[u];\n  o.x = x;\n"),
+    ("loop-index", "", "  o = vec4(0.0);\n  for (int k = 0; k < 4; k++) o[k] = 1.0;\n"),
+    ("const-index", "", "  o = vec4(0.0);\n  const int k = 2;\n  o[k] = 1.0;\n"),
+    ("local-copy", "", "  vec4 t = vec4(0.0);\n  t[u] = 1.0;\n  o = t;\n"),
+    ("swizzle", "", "  o = vec4(0.0);\n  o.xy[u] = 1.0;\n"),
+]:
+    probe("c-output-index-" + name, frag=FS_HEAD + "uniform int u;\n" + decl + "void main() {\n" + body + "}\n")
+ARRAY_FS = V + "precision mediump float;\nuniform int u;\nlayout(location = 0) out vec4 o[2];\n"
+probe("c-output-index-array", frag=ARRAY_FS + "void main() {\n  o[u] = vec4(1.0);\n}\n")
+probe("c-output-index-array-element", frag=ARRAY_FS + "void main() {\n  o[0] = vec4(0.0);\n  o[1] = vec4(0.0);\n  o[1][u] = 1.0;\n}\n")
+
 # ---------------------------------------------------------------- constant folding of undefined results
 # ANGLE folds a division by zero (and `%` of a negative operand, `inf / inf`, an overflowing
 # quotient) to a value, with a warning, and compiles. Each probe also tests the value: the array

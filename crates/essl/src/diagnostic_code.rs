@@ -411,6 +411,11 @@ codes! {
     /// An array of samplers indexed with an expression that is not constant: GLSL ES 3.00
     /// does not allow selecting a sampler at run time.
     DynamicSamplerIndex = "dynamic-sampler-index",
+    /// A fragment shader's output indexed with an expression that is not constant (`o[i]`): an
+    /// array of outputs, or one output's vector components. GLSL ES 3.00 requires constant
+    /// indices into output arrays, and Chromium refuses a run-time index into an output vector
+    /// too.
+    DynamicOutputIndex = "dynamic-output-index",
     /// In a GLSL ES 1.00 shader for WebGL, an index that is not a constant-index-expression
     /// (constants and loop indices, Appendix A §5): only a vertex shader's uniforms may be
     /// indexed with anything else.

@@ -17,10 +17,11 @@
 use super::Checker;
 use crate::builtins::BuiltinVar;
 use crate::diagnostic_code::Code;
-use crate::hir::{Expr, ExprKind};
+use crate::hir::{Expr, ExprKind, GlobalKind};
 use crate::source::Span;
 use crate::target::{Extension, Target};
 use crate::types::Type;
+use crate::Stage;
 
 /// The deepest nesting of structs WebGL allows: a struct's fields are at level 1.
 pub const MAX_STRUCT_NESTING: u32 = 4;
@@ -142,6 +143,39 @@ impl Checker<'_> {
         d.label = "not 0".into();
         d.token = "[]".into();
         d.help = Some(help);
+        true
+    }
+
+    /// A fragment output indexed with an expression that is not constant (`o[i]`, an array of
+    /// outputs or one output's vector components alike): Chromium refuses it (ANGLE's
+    /// `addIndexExpression`). An index into an element of an output array (`o[1][i]`) or into a
+    /// swizzle is not one. Whether it was reported.
+    pub(super) fn check_output_index(&mut self, base: &Expr, index: &Expr) -> bool {
+        if self.stage != Stage::Fragment || index.as_const().is_some() {
+            return false;
+        }
+        let ExprKind::Global(g) = base.kind else {
+            return false;
+        };
+        if self.globals[g].kind != GlobalKind::Output {
+            return false;
+        }
+        let d = self.error(
+            Code::DynamicOutputIndex,
+            index.span,
+            "a fragment output can only be indexed with a constant integral expression",
+        );
+        d.label = "not a constant expression".into();
+        d.token = "[".into();
+        d.notes.push(
+            "WebGL implementations built on ANGLE (Chromium) refuse a run-time index into a \
+             fragment output, an array of outputs or one output's components"
+                .into(),
+        );
+        d.help = Some(
+            "compute the value in a local and assign the output once, or use a constant index"
+                .into(),
+        );
         true
     }
 }

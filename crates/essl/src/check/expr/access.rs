@@ -69,7 +69,10 @@ impl Checker<'_> {
             d.token = "[".into();
             return error_expr(span);
         }
-        if self.es100_check_index(&b, &i) || self.check_frag_data_index(&b, &i) {
+        if self.es100_check_index(&b, &i)
+            || self.check_frag_data_index(&b, &i)
+            || self.check_output_index(&b, &i)
+        {
             return error_expr(span);
         }
         let bound = b.ty.index_bound().unwrap_or(0);
