@@ -491,6 +491,27 @@ ARRAY_FS = V + "precision mediump float;\nuniform int u;\nlayout(location = 0) o
 probe("c-output-index-array", frag=ARRAY_FS + "void main() {\n  o[u] = vec4(1.0);\n}\n")
 probe("c-output-index-array-element", frag=ARRAY_FS + "void main() {\n  o[0] = vec4(0.0);\n  o[1] = vec4(0.0);\n  o[1][u] = 1.0;\n}\n")
 
+# Loops that cannot end (ANGLE's PruneInfiniteLoops, refused in WebGL): a `while` or `for`
+# whose condition is missing or always true, with no `break` of it and no `return` inside.
+for i, (decl, body) in enumerate([
+    ("", "while (true) {}"), ("", "for (;;) {}"), ("", "while (true) { if (u > 0) break; }"),
+    ("", "do {} while (true);"), ("", "for (;;) { discard; }"), ("", "while (true) { return; }"),
+    ("", "while (1 > 0) {}"), ("", "for (int i = 0; i >= 0; i++) {}"),
+    ("", "while (true) { for (int k = 0; k < 2; k++) { break; } }"),
+    ("", "while (true) { switch (u) { default: break; } }"),
+    ("", "const bool t = true; while (t) {}"), ("", "while (true) { continue; }"),
+    ("", "while (false) {}"), ("uniform bool b;\n", "while (b) {}"),
+    ("", "bool v = true; while (v) {}"), ("", "bool v = true; while (v) { v = false; }"),
+    ("", "bool v = true; while (v) { o += vec4(1.0); } o.x = float(v);"),
+    ("", "bool v = true; v = true; while (v) {}"), ("", "bool v = u > 0; while (v) {}"),
+    ("bool g = true;\n", "while (g) {}"), ("", "bool v = true; for (int i = 0; v; v = false) {}"),
+    ("void f(inout bool p) { p = false; }\n", "bool v = true; while (v) { f(v); }"),
+    ("void g(bool p) { while (p) {} }\n", "g(true);"),
+    ("void f() { while (true) {} }\n", ""),
+    ("", "bool v = true; while (!v) {}"),
+]):
+    probe("c-infinite-loop-%d" % i, frag=fs("uniform int u;\n" + decl, "  o = vec4(0.0);\n  %s\n" % body))
+
 # ---------------------------------------------------------------- constant folding of undefined results
 # ANGLE folds a division by zero (and `%` of a negative operand, `inf / inf`, an overflowing
 # quotient) to a value, with a warning, and compiles. Each probe also tests the value: the array

@@ -416,6 +416,10 @@ codes! {
     /// indices into output arrays, and Chromium refuses a run-time index into an output vector
     /// too.
     DynamicOutputIndex = "dynamic-output-index",
+    /// A `while` or `for` loop that can never end: its condition is missing or always true (a
+    /// constant, or a variable initialized to `true` that nothing writes) and nothing in it
+    /// `break`s out of it or `return`s. Chromium refuses such a shader.
+    InfiniteLoop = "infinite-loop",
     /// In a GLSL ES 1.00 shader for WebGL, an index that is not a constant-index-expression
     /// (constants and loop indices, Appendix A §5): only a vertex shader's uniforms may be
     /// indexed with anything else.

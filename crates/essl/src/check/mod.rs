@@ -11,6 +11,7 @@ mod es100;
 mod expr;
 pub mod fold;
 mod limits;
+mod loops;
 mod stmt;
 mod types;
 mod webgl;
@@ -466,6 +467,7 @@ impl<'a> Checker<'a> {
         self.check_call_depth();
         self.check_fragment_outputs();
         self.check_frag_color_and_data();
+        self.check_infinite_loops();
     }
 
     fn check_recursion(&mut self) {

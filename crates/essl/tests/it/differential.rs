@@ -12,7 +12,6 @@ use essl::{compile, Stage};
 /// Where essl still answers differently from Chromium.
 const KNOWN_DIFFERENCES: &[&str] = &[
     "comma-expression-assignment.vert",
-    "infinite-loop-while-true.frag",
     "unary-plus-inout-argument.frag",
 ];
 

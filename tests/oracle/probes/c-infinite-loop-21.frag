@@ -1,0 +1,9 @@
+#version 300 es
+precision mediump float;
+out vec4 o;
+uniform int u;
+void f(inout bool p) { p = false; }
+void main() {
+  o = vec4(0.0);
+  bool v = true; while (v) { f(v); }
+}

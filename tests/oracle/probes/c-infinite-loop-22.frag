@@ -1,0 +1,9 @@
+#version 300 es
+precision mediump float;
+out vec4 o;
+uniform int u;
+void g(bool p) { while (p) {} }
+void main() {
+  o = vec4(0.0);
+  g(true);
+}
