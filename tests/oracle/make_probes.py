@@ -512,6 +512,16 @@ for i, (decl, body) in enumerate([
 ]):
     probe("c-infinite-loop-%d" % i, frag=fs("uniform int u;\n" + decl, "  o = vec4(0.0);\n  %s\n" % body))
 
+# `+x` is a value: not assignable, not an `out` or `inout` argument.
+for name, decl, body in [
+    ("assign", "", "  int i = 1;\n  +i = 2;\n  o = vec4(i);\n"),
+    ("increment", "", "  int i = 1;\n  (+i)++;\n  o = vec4(i);\n"),
+    ("inout", "void f(inout int p) { p += 1; }\n", "  int i = 1;\n  f(+i);\n  o = vec4(i);\n"),
+    ("in", "void f(int p) { o = vec4(p); }\n", "  int i = 1;\n  f(+i);\n"),
+    ("read", "", "  int i = 1;\n  i = +i;\n  o = vec4(i);\n"),
+]:
+    probe("c-unary-plus-" + name, frag=fs(decl, body))
+
 # ---------------------------------------------------------------- constant folding of undefined results
 # ANGLE folds a division by zero (and `%` of a negative operand, `inf / inf`, an overflowing
 # quotient) to a value, with a warning, and compiles. Each probe also tests the value: the array

@@ -10,10 +10,7 @@ use essl::source::SourceFile;
 use essl::{compile, Stage};
 
 /// Where essl still answers differently from Chromium.
-const KNOWN_DIFFERENCES: &[&str] = &[
-    "comma-expression-assignment.vert",
-    "unary-plus-inout-argument.frag",
-];
+const KNOWN_DIFFERENCES: &[&str] = &["comma-expression-assignment.vert"];
 
 #[test]
 fn minimised_differential_cases_agree_with_chromium() {

@@ -524,6 +524,19 @@ impl Checker<'_> {
     }
 
     fn lvalue_problem(&self, e: &Expr) -> Option<(String, Span)> {
+        // `+x` is checked as `x` itself (the operator does nothing), but its value is not a
+        // variable: the text tells it apart, as no variable's text starts with `+`.
+        let text = self.file.slice(e.span);
+        if !matches!(e.kind, ExprKind::Error)
+            && text
+                .trim_start_matches(|c: char| c == '(' || c.is_whitespace())
+                .starts_with('+')
+        {
+            return Some((
+                "`+x` is a value, not a variable: it cannot be assigned".into(),
+                e.span,
+            ));
+        }
         match &e.kind {
             ExprKind::Local(_) => None,
             ExprKind::Param(i) => {

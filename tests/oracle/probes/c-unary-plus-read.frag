@@ -1,0 +1,8 @@
+#version 300 es
+precision mediump float;
+out vec4 o;
+void main() {
+  int i = 1;
+  i = +i;
+  o = vec4(i);
+}
