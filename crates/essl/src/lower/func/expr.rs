@@ -157,7 +157,7 @@ impl<'c, 'a> FnCx<'c, 'a> {
             ExprKind::Index(b, i) => {
                 let base_is_var = self.is_unlowered_variable(b);
                 if base_is_var {
-                    return Ok(self.zero(&e.ty));
+                    return Ok(self.dead_value(&e.ty, span));
                 }
                 let bv = self.expr(b)?;
                 if let Some(k) = i.as_const().and_then(|c| c.as_int()) {
@@ -181,7 +181,7 @@ impl<'c, 'a> FnCx<'c, 'a> {
             }
             ExprKind::Member(b, m) => {
                 if self.is_unlowered_variable(b) {
-                    return Ok(self.zero(&e.ty));
+                    return Ok(self.dead_value(&e.ty, span));
                 }
                 let bv = self.expr(b)?;
                 if let ExprKind::BuiltinVar(BuiltinVar::DepthRange) = b.kind {
@@ -202,8 +202,20 @@ impl<'c, 'a> FnCx<'c, 'a> {
                 ]);
                 Ok(self.constant(&c, &e.ty, span))
             }
+            ExprKind::Global(_) if self.is_unlowered_variable(e) => {
+                Ok(self.dead_value(&e.ty, span))
+            }
             _ => Ok(self.zero(&e.ty)),
         }
+    }
+
+    /// The value of a variable the lowering left out (an inactive uniform, read only by code
+    /// whose value nothing uses): 0, loaded from a local, so that naga does not evaluate an
+    /// expression of it as a constant (`7u % inactive` would be a division by zero there).
+    fn dead_value(&mut self, ty: &Type, span: Span) -> Handle<Expression> {
+        let tmp = self.new_local("_essl_inactive", ty);
+        let pointer = self.add(Expression::LocalVariable(tmp), span);
+        self.add(Expression::Load { pointer }, span)
     }
 
     /// Whether an expression is (part of) a variable the lowering left out.

@@ -222,6 +222,18 @@ impl<'c, 'a> FnCx<'c, 'a> {
         acc.unwrap_or_else(|| self.lit(Literal::Bool(true)))
     }
 
+    /// Whether expression `h` is a constant naga evaluates with a zero integer in it: a zero
+    /// literal, a zero value, or a splat or composition of one.
+    fn zero_in_constant(&self, h: Handle<Expression>) -> bool {
+        match &self.f.expressions[h] {
+            Expression::Constant(c) => {
+                let m = &self.cx.module;
+                zero_in(&m.global_expressions, m.constants[*c].init)
+            }
+            _ => zero_in(&self.f.expressions, h),
+        }
+    }
+
     /// Arithmetic and bitwise operators with GLSL's scalar/vector/matrix mixing; `rt` is the
     /// result's type.
     pub(crate) fn arith(
@@ -234,6 +246,19 @@ impl<'c, 'a> FnCx<'c, 'a> {
     ) -> Result<Handle<Expression>, LowerError> {
         use naga::BinaryOperator as Bo;
         let (Operand { value: a, ty: at }, Operand { value: b, ty: bt }) = (a, b);
+        // An integer divisor naga can evaluate to 0 (the value of `(i = 0)`, an inactive
+        // uniform's): it rejects the division outright, while GLSL only leaves the result
+        // undefined (Chromium compiles it). Through a local, the divisor is a run-time value.
+        let b = if matches!(op, BinaryOp::Div | BinaryOp::Mod)
+            && matches!(bt.scalar_kind(), Some(ScalarKind::Int | ScalarKind::Uint))
+            && self.zero_in_constant(b)
+        {
+            let tmp = self.new_local("_essl_divisor", bt);
+            let pointer = self.store_local(tmp, b, span);
+            self.add(Expression::Load { pointer }, span)
+        } else {
+            b
+        };
         let nop = match op {
             BinaryOp::Add => Bo::Add,
             BinaryOp::Sub => Bo::Subtract,
@@ -320,5 +345,17 @@ impl<'c, 'a> FnCx<'c, 'a> {
             }
             _ => Ok(self.binop(nop, a, b, span)),
         }
+    }
+}
+
+/// Whether expression `h` of `arena` is a zero integer, a zero value, or a splat or
+/// composition with one (not a load, which naga does not evaluate).
+fn zero_in(arena: &naga::Arena<Expression>, h: Handle<Expression>) -> bool {
+    match &arena[h] {
+        Expression::Literal(naga::Literal::I32(0) | naga::Literal::U32(0))
+        | Expression::ZeroValue(_) => true,
+        Expression::Splat { value, .. } => zero_in(arena, *value),
+        Expression::Compose { components, .. } => components.iter().any(|c| zero_in(arena, *c)),
+        _ => false,
     }
 }

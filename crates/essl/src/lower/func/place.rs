@@ -228,6 +228,11 @@ impl<'c, 'a> FnCx<'c, 'a> {
     }
 
     pub(super) fn lvalue(&mut self, e: &Expr) -> Result<LValue, LowerError> {
+        // `(a, v) = x` of an `a` without effects, which Chromium accepts: `v` is written.
+        if let ExprKind::Comma(a, b) = &e.kind {
+            self.effect(a)?;
+            return self.lvalue(b);
+        }
         if let ExprKind::Swizzle(b, comps) = &e.kind {
             let Some(base) = self.place(b)? else {
                 return Ok(LValue::Nowhere);
