@@ -470,6 +470,8 @@ for i, stmt in enumerate([
     "{ if (false) break; }", "float x;", "if (false) o = vec4(2.0);", "if (1 > 2) break;",
     "if (u > 2) break;", "while (false) {}", "o;", "if (true) break;",
     "const bool k = false;\n      if (k) break;", "if (false) break;\n      if (false) break;",
+    "if (isinf(10.0)) break;", "if (false ? u > 0 : false) break;", "if (!true) break;",
+    "if (false && u > 0) break;", "if ((u, false)) break;", "if (bool(0)) break;",
 ]):
     probe("c-switch-last-label-then-%d" % i, frag=fs(
         "uniform int u;\n",

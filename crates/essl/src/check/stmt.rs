@@ -456,14 +456,33 @@ impl Checker<'_> {
 /// Whether `s` (checked into `stmts`) is an `if` without `else` whose condition is the
 /// constant `false`: a statement ANGLE removes as it parses it.
 fn removed_if(s: &ast::Stmt, stmts: &[hir::Stmt]) -> bool {
-    let ast::StmtKind::If(_, _, None) = s.kind else {
+    let ast::StmtKind::If(cond, _, None) = &s.kind else {
         return false;
     };
+    // ANGLE folds a `?:` or `,` later than it prunes the `if` (`false ? u > 0 : false`,
+    // `(u, false)` keep it), where essl's checker folds them at once.
+    if has_ternary_or_comma(cond) {
+        return false;
+    }
     matches!(
         stmts,
         [hir::Stmt { kind: StmtKind::If(c, _, _), .. }]
             if c.as_const() == Some(&hir::ConstValue::Basic(vec![hir::Scalar::B(false)]))
     )
+}
+
+/// Whether an expression holds a `?:` or a `,`.
+fn has_ternary_or_comma(e: &ast::Expr) -> bool {
+    use ast::ExprKind as K;
+    match &e.kind {
+        K::Ternary(..) | K::Comma(..) => true,
+        K::Unary(_, a) | K::Field(a, _) => has_ternary_or_comma(a),
+        K::Binary(_, a, b) | K::Assign(_, a, b) | K::Index(a, b) => {
+            has_ternary_or_comma(a) || has_ternary_or_comma(b)
+        }
+        K::Call(_, args) => args.iter().any(has_ternary_or_comma),
+        _ => false,
+    }
 }
 
 /// Whether a statement list ends in `break`, `continue`, `return` or `discard`.
