@@ -10,7 +10,7 @@ use essl::source::SourceFile;
 use essl::{compile, Stage};
 
 /// Where essl still answers differently from Chromium.
-const KNOWN_DIFFERENCES: &[&str] = &["comma-expression-assignment.vert"];
+const KNOWN_DIFFERENCES: &[&str] = &[];
 
 #[test]
 fn minimised_differential_cases_agree_with_chromium() {

@@ -574,6 +574,9 @@ impl Checker<'_> {
                 Some(("cannot assign to a uniform block member".into(), e.span))
             }
             ExprKind::Index(b, _) | ExprKind::Member(b, _) => self.lvalue_problem(b),
+            // `(a, v) = x` writes `v` where `a` does nothing (ANGLE keeps only `v` of such a
+            // comma expression); `(w += 1.0, v)` is a value.
+            ExprKind::Comma(a, b) if !a.has_effects() => self.lvalue_problem(b),
             ExprKind::Swizzle(b, comps) => {
                 for (i, c) in comps.iter().enumerate() {
                     if comps[..i].contains(c) {
