@@ -524,6 +524,19 @@ for name, decl, body in [
 ]:
     probe("c-unary-plus-" + name, frag=fs(decl, body))
 
+# A comma expression as an l-value: ANGLE keeps the right operand of one whose left operand
+# has no effect, which is then assignable if it is a local or a part of a variable, not a
+# global or a parameter as such.
+for i, body in enumerate([
+    "(v, v) = 1.0;", "(g, g) = 1.0;", "(v, g) = 1.0;", "(g, v) = 1.0;", "(o, v) = 1.0;",
+    "(v, o.x) = 1.0;", "(1.0, v) = 2.0;", "(w, v)++;", "(w += 1.0, v) = 3.0;", "(w, 1.0) = 2.0;",
+    "f(v);", "f((w, v));",
+]):
+    probe("c-comma-lvalue-%d" % i, frag=fs(
+        "float g = 0.0;\nvoid f(inout float p) {\n  (p, p) = 1.0;\n}\n" if body == "f(v);" else
+        "float g = 0.0;\nvoid f(out float p) {\n  p = 2.0;\n}\n",
+        "  float v = 0.0;\n  float w = 1.0;\n  %s\n  o = vec4(v, w, g, 1.0);\n" % body))
+
 # ---------------------------------------------------------------- constant folding of undefined results
 # ANGLE folds a division by zero (and `%` of a negative operand, `inf / inf`, an overflowing
 # quotient) to a value, with a warning, and compiles. Each probe also tests the value: the array

@@ -156,10 +156,9 @@ Where essl still answers differently from a WebGL browser, beyond the cases abov
 - **Limits that depend on the device** are those of the reference implementation (Chromium
   156, ANGLE on SwiftShader: `tests/oracle/ES100.md`); past WebGL's guaranteed minimums a
   shader gets a warning, not an error, as it links there.
-- **One shader found by differential testing** (`tests/differential/essl-wrong/`, the
-  `KNOWN_DIFFERENCES` of `crates/essl/tests/it/differential.rs`, which fails when it starts to
-  agree): essl rejects `(v, v) = 1.0` (a comma expression as an l-value), which Chromium
-  compiles. See [differential testing](differential.md#where-essl-differs-from-chromium).
+- **Differential testing** (`tests/differential/essl-wrong/`, run by
+  `crates/essl/tests/it/differential.rs`): every minimised case where essl answered otherwise
+  than Chromium agrees with it. See [differential testing](differential.md#where-essl-differs-from-chromium).
 
 Rendering has its own list: [what essl-gl does not do](rendering.md#what-differs-from-webgl2).
 ";

@@ -340,7 +340,7 @@ impl Checker<'_> {
                 _ => {
                     let mut stmts = Vec::new();
                     self.stmt_into(s, &mut stmts);
-                    kept_after_label |= !removed_if(s, &stmts);
+                    kept_after_label |= !self.removed_if(s, &stmts);
                     match cases.last_mut() {
                         Some(c) => c.body.extend(stmts),
                         None => {
@@ -420,6 +420,56 @@ impl Checker<'_> {
         value
     }
 
+    /// Whether `s` (checked into `stmts`) is an `if` without `else` whose condition ANGLE
+    /// finds is the constant `false` as it parses it, and removes.
+    fn removed_if(&self, s: &ast::Stmt, stmts: &[hir::Stmt]) -> bool {
+        let ast::StmtKind::If(cond, _, None) = &s.kind else {
+            return false;
+        };
+        self.folded_at_parse(cond)
+            && matches!(
+                stmts,
+                [hir::Stmt { kind: StmtKind::If(c, _, _), .. }]
+                    if c.as_const() == Some(&hir::ConstValue::Basic(vec![hir::Scalar::B(false)]))
+            )
+    }
+
+    /// Whether ANGLE folds `e` to a constant as it parses it: literals and constant variables,
+    /// and operators, built-in calls, constructors, indices and fields of such (a `?:` only when
+    /// its three operands are; a `,` never, in GLSL ES 3.00). Where essl's checker folds more
+    /// (`false ? u > 0 : false`), ANGLE keeps the `if` it would remove.
+    fn folded_at_parse(&self, e: &ast::Expr) -> bool {
+        use ast::ExprKind as K;
+        match &e.kind {
+            K::Int(..) | K::Float(_) | K::Bool(_) => true,
+            K::Ident(id) => match self.lookup(&id.name) {
+                Some(super::Sym::Var(super::Var::Local(l))) => self
+                    .fctx
+                    .as_ref()
+                    .and_then(|f| f.locals.get(*l))
+                    .is_some_and(|l| l.constant.is_some()),
+                Some(super::Sym::Var(super::Var::Global(g))) => {
+                    self.globals[*g].kind == hir::GlobalKind::Const
+                }
+                _ => false,
+            },
+            K::Unary(_, a) | K::Field(a, _) => self.folded_at_parse(a),
+            K::Binary(_, a, b) | K::Index(a, b) => {
+                self.folded_at_parse(a) && self.folded_at_parse(b)
+            }
+            K::Ternary(c, a, b) => {
+                self.folded_at_parse(c) && self.folded_at_parse(a) && self.folded_at_parse(b)
+            }
+            K::Call(ast::Callee::Type(_), args) => args.iter().all(|a| self.folded_at_parse(a)),
+            K::Call(ast::Callee::Name(n), args) => {
+                // A user function's value is not a constant; a built-in's or a struct's is.
+                !matches!(self.lookup(&n.name), Some(super::Sym::Funcs(_)))
+                    && args.iter().all(|a| self.folded_at_parse(a))
+            }
+            _ => false,
+        }
+    }
+
     /// The last label of a `switch` must be followed by a statement (`kept`: one that ANGLE
     /// does not remove as it parses it).
     fn check_label_at_end(&mut self, body: &ast::Block, kept: bool) {
@@ -450,38 +500,6 @@ impl Checker<'_> {
                 "break; ",
             ));
         }
-    }
-}
-
-/// Whether `s` (checked into `stmts`) is an `if` without `else` whose condition is the
-/// constant `false`: a statement ANGLE removes as it parses it.
-fn removed_if(s: &ast::Stmt, stmts: &[hir::Stmt]) -> bool {
-    let ast::StmtKind::If(cond, _, None) = &s.kind else {
-        return false;
-    };
-    // ANGLE folds a `?:` or `,` later than it prunes the `if` (`false ? u > 0 : false`,
-    // `(u, false)` keep it), where essl's checker folds them at once.
-    if has_ternary_or_comma(cond) {
-        return false;
-    }
-    matches!(
-        stmts,
-        [hir::Stmt { kind: StmtKind::If(c, _, _), .. }]
-            if c.as_const() == Some(&hir::ConstValue::Basic(vec![hir::Scalar::B(false)]))
-    )
-}
-
-/// Whether an expression holds a `?:` or a `,`.
-fn has_ternary_or_comma(e: &ast::Expr) -> bool {
-    use ast::ExprKind as K;
-    match &e.kind {
-        K::Ternary(..) | K::Comma(..) => true,
-        K::Unary(_, a) | K::Field(a, _) => has_ternary_or_comma(a),
-        K::Binary(_, a, b) | K::Assign(_, a, b) | K::Index(a, b) => {
-            has_ternary_or_comma(a) || has_ternary_or_comma(b)
-        }
-        K::Call(_, args) => args.iter().any(has_ternary_or_comma),
-        _ => false,
     }
 }
 

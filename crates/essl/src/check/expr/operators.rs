@@ -575,8 +575,15 @@ impl Checker<'_> {
             }
             ExprKind::Index(b, _) | ExprKind::Member(b, _) => self.lvalue_problem(b),
             // `(a, v) = x` writes `v` where `a` does nothing (ANGLE keeps only `v` of such a
-            // comma expression); `(w += 1.0, v)` is a value.
-            ExprKind::Comma(a, b) if !a.has_effects() => self.lvalue_problem(b),
+            // comma expression), unless `v` is a global or a parameter as such (`(a, g)`,
+            // `(a, out)`, `(a, p)`, which Chromium refuses while it takes `(a, out.x)`);
+            // `(w += 1.0, v)` is a value.
+            ExprKind::Comma(a, b)
+                if !a.has_effects()
+                    && !matches!(b.kind, ExprKind::Global(_) | ExprKind::Param(_)) =>
+            {
+                self.lvalue_problem(b)
+            }
             ExprKind::Swizzle(b, comps) => {
                 for (i, c) in comps.iter().enumerate() {
                     if comps[..i].contains(c) {
