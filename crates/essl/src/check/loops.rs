@@ -94,33 +94,30 @@ fn escapes(stmts: &[Stmt], nested: bool) -> bool {
     })
 }
 
-/// The loops of one function that cannot end.
-struct Endless<'a> {
-    writes: &'a Writes<'a>,
-    /// Globals whose constant initializer is `true` and that nothing writes.
-    true_globals: &'a HashSet<GlobalId>,
-    found: Vec<crate::source::Span>,
+/// A loop that cannot end unless its condition is a variable that something writes.
+struct Candidate {
+    span: crate::source::Span,
+    /// The condition's variable, when it is one (a local of the function, or a global).
+    var: Option<Cond0>,
+    /// The function it is in.
+    func: usize,
 }
 
-impl Endless<'_> {
-    fn always_true(&self, cond: Option<&Cond>) -> bool {
-        let Some(cond) = cond else {
-            return true;
-        };
-        let Cond::Expr(e) = cond else {
-            return false;
-        };
-        match e.kind {
-            ExprKind::Local(l) => {
-                self.writes.true_locals.contains(&l) && !self.writes.locals.contains(&l)
-            }
-            ExprKind::Global(g) => self.true_globals.contains(&g),
-            _ => is_true(e),
-        }
-    }
+/// A loop condition that is a variable as such.
+#[derive(Clone, Copy)]
+enum Cond0 {
+    Local(LocalId),
+    Global(GlobalId),
 }
 
-impl Visitor for Endless<'_> {
+/// The loops of one function whose condition is missing, the constant `true` or a variable as
+/// such, and that nothing leaves. Statements only: an expression holds no loop.
+struct Endless {
+    func: usize,
+    found: Vec<Candidate>,
+}
+
+impl Visitor for Endless {
     fn visit_stmt(&mut self, s: &Stmt) {
         if let StmtKind::Loop {
             cond,
@@ -129,12 +126,29 @@ impl Visitor for Endless<'_> {
             ..
         } = &s.kind
         {
-            if self.always_true(cond.as_deref()) && !escapes(body, false) {
-                self.found.push(s.span);
+            let var = match cond.as_deref() {
+                None => Some(None),
+                Some(Cond::Expr(e)) => match e.kind {
+                    ExprKind::Local(l) => Some(Some(Cond0::Local(l))),
+                    ExprKind::Global(g) => Some(Some(Cond0::Global(g))),
+                    _ => is_true(e).then_some(None),
+                },
+                Some(Cond::Decl(..)) => None,
+            };
+            if let Some(var) = var {
+                if !escapes(body, false) {
+                    self.found.push(Candidate {
+                        span: s.span,
+                        var,
+                        func: self.func,
+                    });
+                }
             }
         }
         visit::walk_stmt(self, s);
     }
+
+    fn visit_expr(&mut self, _: &Expr) {}
 }
 
 impl Checker<'_> {
@@ -145,44 +159,45 @@ impl Checker<'_> {
         if self.diags.iter().any(|d| d.is_error()) {
             return;
         }
+        let mut candidates = Vec::new();
+        for (func, f) in self.functions.iter().enumerate() {
+            let mut endless = Endless {
+                func,
+                found: Vec::new(),
+            };
+            endless.visit_stmts(&f.body);
+            candidates.extend(endless.found);
+        }
+        if candidates.is_empty() {
+            return;
+        }
+        // A variable as the condition: always true when its constant initializer is `true` and
+        // nothing writes it (the rarer case, so the writes are looked for only then).
         let modes: Vec<Vec<ParamMode>> = self
             .functions
             .iter()
             .map(|f| f.params.iter().map(|p| p.mode).collect())
             .collect();
-        let mut global_writes: HashSet<GlobalId> = HashSet::new();
-        let mut per_function = Vec::new();
-        for f in &self.functions {
-            let mut w = Writes {
-                modes: &modes,
-                ..Writes::default()
-            };
-            w.visit_stmts(&f.body);
-            global_writes.extend(w.globals.iter().copied());
-            per_function.push(w);
-        }
-        let true_globals: HashSet<GlobalId> = self
-            .globals
-            .iter()
-            .enumerate()
-            .filter(|(g, global)| {
-                global.kind == GlobalKind::Private
-                    && matches!(&global.init, Some(Init::Const(c))
-                        if *c == ConstValue::Basic(vec![Scalar::B(true)]))
-                    && !global_writes.contains(g)
+        let writes = if candidates.iter().any(|c| c.var.is_some()) {
+            Some(self.writes(&modes))
+        } else {
+            None
+        };
+        let found: Vec<crate::source::Span> = candidates
+            .into_iter()
+            .filter(|c| match (c.var, &writes) {
+                (None, _) => true,
+                (Some(v), Some((per_function, true_globals))) => match v {
+                    Cond0::Local(l) => {
+                        let w = &per_function[c.func];
+                        w.true_locals.contains(&l) && !w.locals.contains(&l)
+                    }
+                    Cond0::Global(g) => true_globals.contains(&g),
+                },
+                (Some(_), None) => false,
             })
-            .map(|(g, _)| g)
+            .map(|c| c.span)
             .collect();
-        let mut found = Vec::new();
-        for (f, writes) in self.functions.iter().zip(&per_function) {
-            let mut endless = Endless {
-                writes,
-                true_globals: &true_globals,
-                found: Vec::new(),
-            };
-            endless.visit_stmts(&f.body);
-            found.extend(endless.found);
-        }
         for span in found {
             // The loop's header: up to its body's `{` or the end of its first line.
             let text = self.file.slice(span);
@@ -205,5 +220,34 @@ impl Checker<'_> {
                     .into(),
             );
         }
+    }
+
+    /// The writes of each function (`modes`: each function's parameter modes), and the globals
+    /// whose constant initializer is `true` and that nothing writes.
+    fn writes<'m>(&self, modes: &'m [Vec<ParamMode>]) -> (Vec<Writes<'m>>, HashSet<GlobalId>) {
+        let mut global_writes: HashSet<GlobalId> = HashSet::new();
+        let mut per_function = Vec::new();
+        for f in &self.functions {
+            let mut w = Writes {
+                modes,
+                ..Writes::default()
+            };
+            w.visit_stmts(&f.body);
+            global_writes.extend(w.globals.iter().copied());
+            per_function.push(w);
+        }
+        let true_globals = self
+            .globals
+            .iter()
+            .enumerate()
+            .filter(|(g, global)| {
+                global.kind == GlobalKind::Private
+                    && matches!(&global.init, Some(Init::Const(c))
+                        if *c == ConstValue::Basic(vec![Scalar::B(true)]))
+                    && !global_writes.contains(g)
+            })
+            .map(|(g, _)| g)
+            .collect();
+        (per_function, true_globals)
     }
 }
