@@ -572,20 +572,6 @@ impl FnCx<'_, '_> {
         self.compose(&Type::Vector(ScalarKind::Float, 2), vec![x, y], span)
     }
 
-    /// The float whose bits are `bits`, at run time (an infinity or NaN, which no naga
-    /// literal holds).
-    fn f32_from_bits(&mut self, bits: u32, span: Span) -> Handle<Expression> {
-        let bits = self.lit(Literal::U32(bits));
-        self.add(
-            Expression::As {
-                expr: bits,
-                kind: naga::ScalarKind::Float,
-                convert: None,
-            },
-            span,
-        )
-    }
-
     fn f16_bits_to_f32(&mut self, h: Handle<Expression>, span: Span) -> Handle<Expression> {
         use naga::BinaryOperator as B;
         let c = |fx: &mut Self, v: u32| fx.lit(Literal::U32(v));

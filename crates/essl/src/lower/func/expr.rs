@@ -251,22 +251,26 @@ impl<'c, 'a> FnCx<'c, 'a> {
         }
     }
 
+    /// The float whose bits are `bits`, at run time (an infinity or NaN, which no naga
+    /// literal holds).
+    pub(crate) fn f32_from_bits(&mut self, bits: u32, span: Span) -> Handle<Expression> {
+        let bits = self.lit(Literal::U32(bits));
+        self.add(
+            Expression::As {
+                expr: bits,
+                kind: naga::ScalarKind::Float,
+                convert: None,
+            },
+            span,
+        )
+    }
+
     /// A constant holding an infinity or NaN, which naga literals cannot: built at run time
     /// from the float's bits.
     fn runtime_constant(&mut self, c: &ConstValue, ty: &Type, span: Span) -> Handle<Expression> {
         match (c, ty) {
             (ConstValue::Basic(v), Type::Scalar(_)) => match v[0] {
-                Scalar::F(f) if !f.is_finite() => {
-                    let bits = self.lit(Literal::U32(f.to_bits()));
-                    self.add(
-                        Expression::As {
-                            expr: bits,
-                            kind: naga::ScalarKind::Float,
-                            convert: None,
-                        },
-                        span,
-                    )
-                }
+                Scalar::F(f) if !f.is_finite() => self.f32_from_bits(f.to_bits(), span),
                 s => self.add(Expression::Literal(literal(s)), span),
             },
             (ConstValue::Basic(v), Type::Vector(k, _)) => {
