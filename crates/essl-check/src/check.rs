@@ -446,11 +446,11 @@ pub(crate) fn from_pieces(file: &Arc<SourceFile>, pieces: &[Piece]) -> Assembly 
     a
 }
 
-/// Whether a diagnostic is the author's to see: a lint finding inside code a library adds
-/// (a luma.gl module, three.js's prelude) is the library's, not reported; an error there is,
-/// since the program does not compile.
+/// Whether a diagnostic is the author's to see: a warning or lint finding inside code a
+/// library adds (a luma.gl module's `1.0 / 0.0`, three.js's prelude) is the library's, not
+/// reported; an error there is, since the program does not compile.
 fn shown(a: &Assembly, d: &Diagnostic) -> bool {
-    d.is_error() || essl_lint::rule(d.code).is_none() || !a.is_generated(d.span.start)
+    d.is_error() || !a.is_generated(d.span.start)
 }
 
 /// `source` with its `#include`s in place, where the settings follow them.
