@@ -357,82 +357,67 @@ impl Checker<'_> {
     /// finite, where Chromium warns and compiles (its value, ANGLE's, in the note).
     pub(super) fn fold_warning(&mut self, w: fold::FoldWarning, token: &str, span: Span) {
         use fold::FoldWarning as W;
+        const ANGLE: &str = "WebGL implementations built on ANGLE (Chromium)";
+        let operation = match token {
+            "+" => "addition",
+            "-" => "subtraction",
+            "*" => "multiplication",
+            _ => "division",
+        };
         let (code, message, label, note) = match w {
-            W::IntegerDivideByZero => (
+            W::IntegerDivideByZero | W::FloatDivideByZero => (
                 Code::DivisionByZero,
-                "division by zero in a constant expression",
+                "division by zero in a constant expression".to_string(),
                 "the divisor is zero",
-                "the result is undefined; WebGL implementations built on ANGLE (Chromium) fold it to the largest value of the type",
-            ),
-            W::FloatDivideByZero => (
-                Code::DivisionByZero,
-                "division by zero in a constant expression",
-                "the divisor is zero",
-                "the result is undefined; WebGL implementations built on ANGLE (Chromium) fold it to infinity",
+                if w == W::IntegerDivideByZero {
+                    format!("the result is undefined; {ANGLE} fold it to the largest value of the type")
+                } else {
+                    format!("the result is undefined; {ANGLE} fold it to infinity")
+                },
             ),
             W::ZeroByZero => (
                 Code::DivisionByZero,
-                "zero divided by zero in a constant expression",
+                "zero divided by zero in a constant expression".to_string(),
                 "both operands are zero",
-                "the result is undefined; WebGL implementations built on ANGLE (Chromium) fold it to NaN",
+                format!("the result is undefined; {ANGLE} fold it to NaN"),
             ),
-            W::NotANumber | W::Overflow => {
-                let operation = match token {
-                    "+" => "addition",
-                    "-" => "subtraction",
-                    "*" => "multiplication",
-                    _ => "division",
-                };
-                let (message, label, note) = if w == W::NotANumber {
-                    (
-                        format!("a constant {operation} gives NaN"),
-                        "NaN",
-                        "the result is NaN (`∞ - ∞`, `∞ * 0` and `∞ / ∞` are undefined)",
-                    )
-                } else {
-                    (
-                        format!("a constant {operation} overflows to infinity"),
-                        "past the largest float",
-                        "the result is infinity, past the range of every precision",
-                    )
-                };
-                let d = self.warning(Code::NonFiniteConstant, span, message);
-                d.label = label.into();
-                d.token = token.into();
-                d.notes.push(note.into());
-                return;
-            }
+            W::NotANumber => (
+                Code::NonFiniteConstant,
+                format!("a constant {operation} gives NaN"),
+                "NaN",
+                "the result is NaN (`∞ - ∞`, `∞ * 0` and `∞ / ∞` are undefined)".to_string(),
+            ),
+            W::Overflow => (
+                Code::NonFiniteConstant,
+                format!("a constant {operation} overflows to infinity"),
+                "past the largest float",
+                "the result is infinity, past the range of every precision".to_string(),
+            ),
             W::NegativeModulus => (
                 Code::NegativeModulus,
-                "`%` of a negative operand in a constant expression",
+                "`%` of a negative operand in a constant expression".to_string(),
                 "an operand is negative",
-                "the result is undefined in GLSL ES; WebGL implementations built on ANGLE (Chromium) fold it to 0",
+                format!("the result is undefined in GLSL ES; {ANGLE} fold it to 0"),
             ),
             W::NegativeToUint => (
                 Code::NegativeToUint,
-                "a negative constant converted to `uint`",
+                "a negative constant converted to `uint`".to_string(),
                 "a negative float",
-                "the result is undefined; WebGL implementations built on ANGLE (Chromium) convert through `int` (`uint(-1.0)` is 4294967295)",
+                format!(
+                    "the result is undefined; {ANGLE} convert through `int` (`uint(-1.0)` is 4294967295)"
+                ),
             ),
-            W::UndefinedCall => {
-                let d = self.warning(
-                    Code::UndefinedConstantCall,
-                    span,
-                    format!("`{token}` is undefined for these constant arguments"),
-                );
-                d.label = "undefined for these values".into();
-                d.token = token.into();
-                d.notes.push(
-                    "WebGL implementations built on ANGLE (Chromium) fold the undefined components to 0"
-                        .into(),
-                );
-                return;
-            }
+            W::UndefinedCall => (
+                Code::UndefinedConstantCall,
+                format!("`{token}` is undefined for these constant arguments"),
+                "undefined for these values",
+                format!("{ANGLE} fold the undefined components to 0"),
+            ),
         };
         let d = self.warning(code, span, message);
         d.label = label.into();
         d.token = token.into();
-        d.notes.push(note.into());
+        d.notes.push(note);
     }
 
     pub(super) fn assign(
