@@ -61,9 +61,9 @@ impl Visitor for Writes<'_> {
         match &e.kind {
             ExprKind::Assign(_, target, _) | ExprKind::IncDec(_, _, target) => self.write(target),
             ExprKind::Call(f, args) => {
-                let modes = self.modes.get(*f).cloned().unwrap_or_default();
+                let modes = self.modes.get(*f).map_or(&[][..], Vec::as_slice);
                 for (a, m) in args.iter().zip(modes) {
-                    if m != ParamMode::In {
+                    if *m != ParamMode::In {
                         self.write(a);
                     }
                 }
@@ -173,16 +173,16 @@ impl Checker<'_> {
         }
         // A variable as the condition: always true when its constant initializer is `true` and
         // nothing writes it (the rarer case, so the writes are looked for only then).
-        let modes: Vec<Vec<ParamMode>> = self
-            .functions
-            .iter()
-            .map(|f| f.params.iter().map(|p| p.mode).collect())
-            .collect();
-        let writes = if candidates.iter().any(|c| c.var.is_some()) {
-            Some(self.writes(&modes))
+        let needs_writes = candidates.iter().any(|c| c.var.is_some());
+        let modes: Vec<Vec<ParamMode>> = if needs_writes {
+            self.functions
+                .iter()
+                .map(|f| f.params.iter().map(|p| p.mode).collect())
+                .collect()
         } else {
-            None
+            Vec::new()
         };
+        let writes = needs_writes.then(|| self.writes(&modes));
         let found: Vec<crate::source::Span> = candidates
             .into_iter()
             .filter(|c| match (c.var, &writes) {
