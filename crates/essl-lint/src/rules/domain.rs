@@ -81,6 +81,11 @@ pub(super) fn check(cx: &Cx, out: &mut Vec<Diagnostic>, domains: &[Domain], rule
             && !cx.nonzero(f, id, x, &g)
             && cx.flat_at(f, id, x, 0.0);
         if !negative && !zero {
+            // 0 at isolated points only for inputs in general, but what the callers pass may
+            // make it 0 (`log(dot(st, st))` of `st - 0.5`, at the centre).
+            if dom.zero && !negative {
+                out.extend(from_callers(cx, f, id, call, x, dom, rule));
+            }
             continue;
         }
         let d = finding(cx, f, id, x, dom, rule, negative, lo);
