@@ -108,7 +108,7 @@ impl CallerValue {
 
 /// What [`leaves`] has found: the leaves, and the locals it has read (a store that reads the
 /// local it writes is not followed again).
-#[derive(Default)]
+#[derive(Default, Clone)]
 struct Walk {
     leaves: Vec<Leaf>,
     locals: Vec<(usize, Handle<E>)>,
@@ -309,8 +309,31 @@ fn leaves(cx: &Cx, fr: &Frame, h: Handle<E>, depth: u32, out: &mut Walk) -> bool
             left,
             right,
         } if per_draw(left) => go(right, out),
+        // Any other product is 0 wherever one factor is, whatever the other is: `pow(l, 0.5)
+        // * t` of a weight `t` a caller passes. Not for vertex data: a position's depth
+        // (`scale / -mvPosition.z`) is as positive as a homogeneous `w`; nor for a factor
+        // 0 only where its parameters take some value other than 0 (`0.31 - temp * k`), which
+        // the rest of the product may keep out of reach (lygia's white balance).
         E::Binary {
-            op: op @ (Bo::Add | Bo::Subtract | Bo::Multiply),
+            op: Bo::Multiply,
+            left,
+            right,
+        } => {
+            let saved = out.clone();
+            if go(left, out) && go(right, out) {
+                return true;
+            }
+            [left, right].into_iter().any(|side| {
+                *out = saved.clone();
+                go(side, out)
+                    && !out.offset
+                    && out.leaves[saved.leaves.len()..]
+                        .iter()
+                        .all(|l| matches!(l, Leaf::Parameter(_)))
+            })
+        }
+        E::Binary {
+            op: Bo::Add | Bo::Subtract,
             left,
             right,
         } => {
@@ -320,7 +343,7 @@ fn leaves(cx: &Cx, fr: &Frame, h: Handle<E>, depth: u32, out: &mut Walk) -> bool
                     .and_then(|n| n.hull().as_point())
                     .is_some_and(|c| c != 0.0)
             };
-            if op != Bo::Multiply && (constant(left) || constant(right)) {
+            if constant(left) || constant(right) {
                 out.offset = true;
             }
             go(left, out) && go(right, out)
