@@ -42,7 +42,8 @@ pub(super) const MAX_CONTEXT_TOKENS: usize = 10_000;
 /// A token on its way through the expander.
 #[derive(Clone, Debug)]
 pub(super) struct Tok {
-    /// The token as the parser will see it (span: the outermost macro invocation, if any).
+    /// The token as the parser will see it (span: the outermost macro invocation, if any, or
+    /// for an argument's token where the argument is written).
     pub t: PpToken,
     /// Where the token "is" for `__LINE__`: its own offset, or, for a token from an expansion,
     /// that of the invocation's name (object-like) or closing parenthesis (function-like).
@@ -484,7 +485,9 @@ impl Pp<'_> {
                 } => {
                     for (k, a) in args[*index].iter().enumerate() {
                         let mut a = a.clone();
-                        a.t.span = span;
+                        // An argument keeps where it is written (or the span of the
+                        // invocation in the text it comes from): a diagnostic of
+                        // `normalize(v - p)` inside `saturate(…)` points at `v - p`.
                         a.t.from_macro = true;
                         a.loc = close.loc;
                         if k == 0 {

@@ -4,7 +4,9 @@
 //! `Eof`), each with a span into the original text; a token produced by a macro expansion
 //! carries the span of the macro's invocation (its name, or the whole `NAME(args)`; for nested
 //! expansions the outermost invocation in the text) and `from_macro = true`. Arguments
-//! substituted into a replacement list take the invocation's span too.
+//! substituted into a replacement list keep their own spans, where they are written in the
+//! text (an argument written inside another macro's replacement list has that macro's
+//! invocation span): an expression inside `saturate(…)` is reported where it is written.
 //!
 //! Rules follow the GLSL ES 3.00 specification (section 3.4) as WebGL2 implementations
 //! (ANGLE) apply them and as the dEQP and WebGL conformance tests check them:

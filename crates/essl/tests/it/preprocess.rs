@@ -254,14 +254,49 @@ fn expanded_tokens_carry_the_invocation_span() {
     }
     assert_eq!(&*toks[5].text, ";");
     assert!(!toks[5].from_macro);
-    // Function-like: the whole call, arguments included, across lines.
-    for t in &toks[6..9] {
-        assert!(t.from_macro);
-        assert_eq!(f.slice(t.span), "F(y,\n  2.0)");
-    }
+    // Function-like: the replacement list's tokens span the whole call, across lines; the
+    // arguments' tokens where they are written.
+    assert!(toks[6..9].iter().all(|t| t.from_macro));
+    assert_eq!(
+        toks[6..9]
+            .iter()
+            .map(|t| f.slice(t.span))
+            .collect::<Vec<_>>(),
+        ["y", "F(y,\n  2.0)", "2.0"]
+    );
     assert_eq!(
         toks[6..9].iter().map(|t| &*t.text).collect::<Vec<_>>(),
         ["y", "*", "2.0"]
+    );
+}
+
+#[test]
+fn an_argument_from_another_expansion_takes_that_invocation_span() {
+    // `x` is written in `A`'s replacement list, `v` in the text, `B` is expanded in `F`'s
+    // argument.
+    let src = v("#define B 2.0\n#define F(a) (a)\n#define A(x) F(x + 1.0)\nA(v); F(B);");
+    let (f, p) = run(&src);
+    assert!(errors(&p).is_empty());
+    let spans: Vec<_> = p
+        .tokens
+        .iter()
+        .filter(|t| t.kind != PpKind::Eof)
+        .map(|t| (&*t.text, f.slice(t.span)))
+        .collect();
+    assert_eq!(
+        spans,
+        [
+            ("(", "A(v)"),
+            ("v", "v"),
+            ("+", "A(v)"),
+            ("1.0", "A(v)"),
+            (")", "A(v)"),
+            (";", ";"),
+            ("(", "F(B)"),
+            ("2.0", "B"),
+            (")", "F(B)"),
+            (";", ";"),
+        ]
     );
 }
 
