@@ -432,6 +432,52 @@ GL_TYPES = {
 }
 
 
+# Components of the batch-table attributes Cesium defines other than with a
+# `new GeometryInstanceAttribute({…})` (their own classes).
+BATCH_TABLE_SIZES = {"color": 4, "pickColor": 4, "show": 1, "distanceDisplayCondition": 2, "depthFailColor": 4, "offset": 3, "width": 1}
+
+
+def batch_table_sizes(src):
+    """The number of components of each per-instance attribute the package defines."""
+    sizes = dict(BATCH_TABLE_SIZES)
+    for path in walk(src, (".js",)):
+        text = read(path) or ""
+        for m in re.finditer(r"(\w+)\s*[:=]\s*new GeometryInstanceAttribute\(\{(.*?)\}\)", text, re.S):
+            c = re.search(r"componentsPerAttribute:\s*(\d)", m.group(2))
+            if c:
+                sizes.setdefault(m.group(1), int(c.group(1)))
+    return sizes
+
+
+def batch_table(names, sizes):
+    """The batch-table functions `BatchTable.js` generates for the attributes `names` (a float
+    texture one texel high, as WebGL2 has), so that a shader calling them compiles."""
+    out = [
+        "uniform highp sampler2D batchTexture;",
+        "uniform vec4 batchTextureStep;",
+        "vec2 computeSt(float batchId) {",
+        "    float stepX = batchTextureStep.x;",
+        "    float centerX = batchTextureStep.y;",
+        f"    float numberOfAttributes = float({len(names)});",
+        "    return vec2(centerX + (batchId * numberOfAttributes * stepX), 0.5);",
+        "}",
+    ]
+    for i, name in enumerate(names):
+        n = sizes.get(name, 4)
+        ty = "float" if n == 1 else f"vec{n}"
+        swizzle = ".xyzw"[: n + 1]
+        out += [
+            f"{ty} czm_batchTable_{name}(float batchId) {{",
+            "    vec2 st = computeSt(batchId);",
+            f"    st.x += batchTextureStep.x * float({i});",
+            "    vec4 textureValue = texture(batchTexture, st);",
+            f"    {ty} value = textureValue{swizzle};",
+            "    return value;",
+            "}",
+        ]
+    return "\n".join(out)
+
+
 def cesium_shaders(root):
     src = os.path.join(root, "Source")
     builtin = os.path.join(src, "Shaders", "Builtin")
@@ -446,6 +492,8 @@ def cesium_shaders(root):
         if m.group(3) in GL_TYPES:
             size = int(m.group(2))
             uniforms[m.group(1)] = GL_TYPES[m.group(3)] + ("" if size == 1 else f"[{size}]")
+
+    sizes = batch_table_sizes(src)
 
     def needed(text, order, seen):
         code = re.sub(r"/\*.*?\*/|//[^\n]*", "", text, flags=re.S)
@@ -474,6 +522,11 @@ def cesium_shaders(root):
         parts = [lib[n][1] for n in order if lib[n][0] == "Structs"]
         parts += [lib[n][1] for n in order if lib[n][0] == "Constants"]
         parts += [lib[n][1] for n in order if lib[n][0] == "Functions"]
+        # The per-instance attributes a primitive's batch table holds (`czm_batchTable_color`).
+        code = re.sub(r"/\*.*?\*/|//[^\n]*", "", text, flags=re.S)
+        batched = sorted(set(re.findall(r"\bczm_batchTable_(\w+)\s*\(", code)))
+        if batched:
+            parts.append(batch_table(batched, sizes))
         yield rel, stage, "shader", "\n".join(head) + "\n" + "\n".join(parts) + "\n" + text
 
 
