@@ -11,7 +11,7 @@
 //! `gl_PointSize` draws points, which are clipped whole; another frame's projection
 //! (a reprojection into the previous frame's camera for motion blur) has no such guarantee.
 
-use naga::{BinaryOperator as Bo, Expression as E, Function, Handle, ShaderStage, TypeInner};
+use naga::{BinaryOperator as Bo, Expression as E, Function, Handle, ShaderStage};
 
 use super::Cx;
 
@@ -140,7 +140,7 @@ fn clip_space(cx: &Cx, f: &Function, id: usize, h: Handle<E>, depth: u32) -> Opt
             op: Bo::Multiply,
             left,
             right,
-        } if is_matrix(cx, id, left) && !is_matrix(cx, id, right) => {
+        } if cx.is_matrix(id, left) && !cx.is_matrix(id, right) => {
             projection(cx, f, id, left, depth + 1).map(Clip::Projection)
         }
         E::CallResult(callee) => returned(cx, callee.index(), depth + 1),
@@ -164,15 +164,6 @@ fn returned(cx: &Cx, callee: usize, depth: u32) -> Option<Clip> {
         .returns(callee)
         .iter()
         .find_map(|r| clip_space(cx, g, callee, *r, depth))
-}
-
-/// Whether expression `h` of function `id` is a matrix.
-fn is_matrix(cx: &Cx, id: usize, h: Handle<E>) -> bool {
-    let info = crate::analysis::function_info(cx.module, cx.info, id);
-    matches!(
-        info[h].ty.inner_with(&cx.module.types),
-        TypeInner::Matrix { .. }
-    )
 }
 
 /// The WebGL name of the projection matrix `h` is or begins with (the leftmost factor of a

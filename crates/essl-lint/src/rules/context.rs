@@ -124,6 +124,16 @@ impl<'a> Cx<'a> {
             .scalar_kind()
     }
 
+    /// Whether expression `h` of function `id` is a matrix.
+    pub fn is_matrix(&self, id: usize, h: Handle<E>) -> bool {
+        matches!(
+            analysis::function_info(self.module, self.info, id)[h]
+                .ty
+                .inner_with(&self.module.types),
+            naga::TypeInner::Matrix { .. }
+        )
+    }
+
     /// Every call of the built-in `fun` with a span in the source, its arguments through
     /// [`Cx::operand`].
     pub fn math_calls(&self, fun: Mf) -> Vec<MathCall<'a>> {

@@ -2,7 +2,7 @@
 
 use essl::diagnostic::Diagnostic;
 use essl::source::Span;
-use naga::{Expression as E, Function, Handle, MathFunction as Mf};
+use naga::{BinaryOperator as Bo, Expression as E, Function, Handle, MathFunction as Mf};
 
 use super::rule::declare_rule;
 use super::Cx;
@@ -45,8 +45,12 @@ declare_rule! {
     /// — a library function that leaves the zero vector (a cross product of parallel vectors,
     /// an eye at its target) to its caller.
     ///
-    /// And `normalize` of a texel as such (`normalize(texture(gNormal, uv).rgb)`): the zero vector
-    /// for every black texel, the background a G-buffer is cleared to.
+    /// And `normalize` of a texel as such (`normalize(texture(gNormal, uv).rgb)`), or of one
+    /// through a matrix (`czm_normal * texel`): the zero vector for every black texel, the
+    /// background a G-buffer is cleared to, or a per-instance vector a data texture holds as 0.
+    /// A difference of a point and the point it was offset from (`(n * e + sw) - sw`) is the
+    /// offset: Cesium's `length(southEastCorner - southWestCorner)` of a batch table's east
+    /// vector.
     ///
     /// Not reported: `normalize` of a uniform or a varying itself (`normalize(v_normal)`; the
     /// runtime check validates uniform values), of a decoded texel (`t.rgb * 2.0 - 1.0`, the
@@ -140,6 +144,7 @@ fn zero_vector(
     site: Handle<E>,
     x: Handle<E>,
 ) -> Option<Diagnostic> {
+    let x = cancelled(cx, f, id, x);
     let at = Normalize {
         f,
         id,
@@ -162,7 +167,9 @@ fn zero_vector(
         && v.facts.any(Facts::TEXTURE)
         && super::gradient::texel_gradient(cx, f, id, x);
     if !v.facts.any(Facts::CROSS) && v.facts.any(Facts::INPUT.with(Facts::TEXTURE)) && !gradient {
-        return attribute_direction(cx, at).or_else(|| caller_difference(cx, at));
+        return attribute_direction(cx, at)
+            .or_else(|| caller_difference(cx, at))
+            .or_else(|| black_texel(cx, at));
     }
     // `dot(v, v) > 1e-12 ? normalize(v) : fallback`, `if (length(v) > 0.0)`.
     let v = cx.refined(f, id, x, &cx.guards(f, id, site))?;
@@ -206,6 +213,58 @@ fn zero_vector(
     } else {
         cx.grade(d, &[(id, x)])
     })
+}
+
+/// `p` for `(p + q) - q` or `(q + p) - q`, else `x`: the difference of a point and the point
+/// it was offset from is the offset (Cesium's `eastWard = southEastCorner - southWestCorner`
+/// of `southEastCorner = czm_normal * eastward + southWestCorner`), which the interval
+/// arithmetic of the two points cannot tell.
+fn cancelled(cx: &Cx, f: &Function, id: usize, x: Handle<E>) -> Handle<E> {
+    let an = cx.sound();
+    let resolve = |h| crate::symbolic::resolve(f, an, id, h);
+    let E::Binary {
+        op: Bo::Subtract,
+        left,
+        right,
+    } = f.expressions[resolve(x)]
+    else {
+        return x;
+    };
+    let E::Binary {
+        op: Bo::Add,
+        left: p,
+        right: q,
+    } = f.expressions[resolve(left)]
+    else {
+        return x;
+    };
+    let same = |a: Handle<E>, b: Handle<E>| an.same(f, id, resolve(a), resolve(b));
+    if same(q, right) {
+        p
+    } else if same(p, right) {
+        q
+    } else {
+        x
+    }
+}
+
+/// `v` for `M * v` of a matrix `M`, else `x`: a linear map of the zero vector is the zero
+/// vector.
+fn linear_operand(cx: &Cx, f: &Function, id: usize, x: Handle<E>) -> Handle<E> {
+    let an = cx.sound();
+    let E::Binary {
+        op: Bo::Multiply,
+        left,
+        right,
+    } = f.expressions[crate::symbolic::resolve(f, an, id, x)]
+    else {
+        return x;
+    };
+    if cx.is_matrix(id, left) {
+        right
+    } else {
+        x
+    }
 }
 
 /// The note every finding of `normalize` of a zero vector carries.
@@ -621,12 +680,14 @@ fn length_guarded(
 /// `texelFetch(uNormalBuffer, p, 0).xyz`), whose ordinary values reach the zero vector: every
 /// black texel, such as the background a G-buffer is cleared to.
 fn black_texel(cx: &Cx, n: Normalize) -> Option<Diagnostic> {
-    let Normalize { f, id, call, x } = n;
+    let Normalize { f, id, call, x: at } = n;
+    // A texel through a matrix (`czm_normal * texel`) is the zero vector wherever the texel
+    // is.
+    let x = linear_operand(cx, f, id, at);
     let v = cx.sound().num(id, x)?;
-    if !v.facts.has(Facts::EXT)
-        || !v.facts.any(Facts::TEXTURE)
-        || v.facts.any(Facts::INPUT.with(Facts::UNIFORM))
-    {
+    // A texel as such: a uniform it depends on is in its coordinates (Cesium's batch table,
+    // `texture(batchTexture, computeSt(batchId))`).
+    if !v.facts.has(Facts::EXT) || !v.facts.any(Facts::TEXTURE) || v.facts.any(Facts::INPUT) {
         return None;
     }
     // Texels are in [0, 1] in the typical analysis: the zero vector is an end of the range.
@@ -642,11 +703,11 @@ fn black_texel(cx: &Cx, n: Normalize) -> Option<Diagnostic> {
         Diagnostic::rule_warning(
             NormalizeZero::RULE.id,
             "`normalize` of a texel, the zero vector wherever the texture is black",
-            cx.span(f, x),
+            cx.span(f, at),
         )
         .with_label(format!(
             "{} is the zero vector for every black texel (a G-buffer's cleared background)",
-            cx.what(f, id, x)
+            cx.what(f, id, at)
         ))
         .with_note(NORMALIZE_DIVIDES)
         .with_help("test the length first (`dot(v, v) > 1e-12`), or store normals encoded (`n * 0.5 + 0.5`)"),

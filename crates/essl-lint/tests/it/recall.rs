@@ -332,6 +332,15 @@ const HAZARDS: &[Hazard] = &[
     ("non-uniform-derivative", "computed", "  if (dot(n, l) > 0.0) { r = fwidth(v_x); }", W),
     // A texel as such: the zero vector for a black texel (a G-buffer's background).
     ("normalize-zero", "texture", "  r = normalize(t.rgb).x;", W),
+    // Through a matrix: the zero vector wherever the texel is.
+    ("normalize-zero", "texture", "  r = normalize(mat3(u_a) * t.rgb).x;", W),
+    // A point minus the point it was offset from is the offset, a texel through a matrix.
+    (
+        "division-by-difference",
+        "texture",
+        "  vec3 sw = v_pos;\n  vec3 se = mat3(u_a) * t.rgb + sw;\n  r = v_x / length(se - sw);",
+        W,
+    ),
     // After a `discard` some pixels take: undefined by the specification, kept working by
     // GPUs that run discarded pixels on as helpers.
     (
@@ -811,6 +820,20 @@ fn guarded_twins_are_quiet() {
 /// such here): a note at the call, naming the parameters; (rule, function, call in `main`, the
 /// line of the note or `None` for a twin that is quiet).
 const PARAMETERS: &[(&str, &str, &str, Option<&str>)] = &[
+    // A weighted sum: 0 where the caller passes every weight as 0, whatever the colours are.
+    (
+        "division-by-difference",
+        "float mixed(float a, float b, float t1, float t2) {\n  float w = pow(sqrt(a) * t1, 2.0) + pow(sqrt(b) * t2, 2.0);\n  return (a * t1 + b * t2) / w;\n}",
+        "  r = mixed(v_pos.x, v_pos.y, v_x, v_uv.x);",
+        Some("return (a * t1 + b * t2) / w;"),
+    ),
+    // 0 at one point of the caller's values (a spiral's centre), not over a region.
+    (
+        "domain-log",
+        "float spiral(vec2 st) {\n  st -= 0.5;\n  float q = dot(st, st);\n  return log(q);\n}",
+        "  r = spiral(v_uv);",
+        Some("return log(q);"),
+    ),
     (
         "division-by-difference",
         "float g(float d, float s) { return exp(-(d * d) / (2.0 * s * s)); }",
