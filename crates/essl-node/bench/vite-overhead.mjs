@@ -4,7 +4,8 @@
 // each (default 7); prints the median wall-clock and CPU time of each and the change in per
 // cent: the plugin with the lints and with `lints: false`, both without its cache (every module
 // checked), and with the lints and a cache the untimed build filled (every module unchanged
-// since). Two projects: the shaders alone, and an app that also bundles three.js (the copy
+// since), and the median of each round's change against that round's build without the plugin.
+// Two projects: the shaders alone, and an app that also bundles three.js (the copy
 // scripts/fetch-js-libs.sh installs in tests/js) and makes a RawShaderMaterial of each shader.
 //
 //   node --expose-gc bench/vite-overhead.mjs   (from crates/essl-node, after `npm run build`)
@@ -111,5 +112,15 @@ for (const withThree of [false, ...(existsSync(three) ? [true] : [])]) {
     });
     const label = what === 'wall' ? 'wall-clock' : 'CPU (all threads)';
     console.log(`${withThree ? 'with three.js' : 'shaders alone'}, ${label}: ${parts.join(', ')}`);
+    // Each round's builds ran one after another: the median of each round's change against
+    // that round's build without the plugin follows the machine's drift between rounds,
+    // which the medians above mix into the change.
+    const paired = Object.entries(times)
+      .filter(([name]) => name !== 'without')
+      .map(([name, t]) => {
+        const m = median(t.map((x, i) => x[what] / times.without[i][what] - 1));
+        return `${name} ${m >= 0 ? '+' : ''}${(m * 100).toFixed(1)} %`;
+      });
+    console.log(`${withThree ? 'with three.js' : 'shaders alone'}, ${label}, per round: ${paired.join(', ')}`);
   }
 }
