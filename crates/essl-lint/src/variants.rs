@@ -13,7 +13,10 @@
 //! macro defined as 1, a count the text lets its includer set (`#ifndef RAYMARCH_AO_SAMPLES`,
 //! `#define RAYMARCH_AO_SAMPLES 5`, a loop's bound): one iteration is the fewest a user can ask
 //! for, and where `1.0 / float(RAYMARCH_AO_SAMPLES - 1)` divides by zero; the front end's
-//! warning of that folded division is a finding of `division-by-difference` there.
+//! warning of that folded division is a finding of `division-by-difference` there. And a
+//! choice between functions (`#ifndef DIFFUSE_FNC`, `#define DIFFUSE_FNC diffuseLambert` under
+//! one flag and `diffuseOrenNayar` under another) is compiled with each of them: the function
+//! the flags' configurations leave uncalled is code an includer runs by choosing it.
 //!
 //! Written by hand: the directive lines are read with a line scanner, not the preprocessor,
 //! because the groups inside skipped groups matter here and the preprocessor does not
@@ -50,6 +53,9 @@ pub struct Variant {
     /// For a count rather than a flag ([`counts`]): the value the text gives it unless it is
     /// defined before; the configuration defines it as 1.
     pub count: Option<String>,
+    /// For a choice rather than a flag ([`choices`]): the value the configuration defines the
+    /// macro as, one of those the text chooses between.
+    pub choice: Option<String>,
 }
 
 /// A conditional block being read.
@@ -156,6 +162,7 @@ pub fn flags(text: &str, options: &CompileOptions) -> Vec<Variant> {
                 directive: l.span,
                 groups: Vec::new(),
                 count: None,
+                choice: None,
             });
             out.len() - 1
         });
@@ -164,7 +171,82 @@ pub fn flags(text: &str, options: &CompileOptions) -> Vec<Variant> {
     }
     out.retain(|v| v.groups.iter().any(|g| hazardous(&text[g.range()])));
     out.extend(counts(text, &lines, options));
+    out.extend(choices(text, &lines, options));
     out
+}
+
+/// The choices a text lets its includer make, each value as a configuration of its own: a
+/// macro the text defines under `#ifndef` of the same name as one of several functions it
+/// defines, depending on other flags (lygia's `DIFFUSE_FNC`, `diffuseLambert` on WebGL and
+/// `diffuseOrenNayar` elsewhere). The function one configuration leaves uncalled is code the
+/// includer runs by defining the macro.
+fn choices(text: &str, lines: &[Line], options: &CompileOptions) -> Vec<Variant> {
+    let mut out: Vec<Variant> = Vec::new();
+    for (i, open) in lines.iter().enumerate() {
+        let name = match &first_name(&open.args)[..] {
+            [n] if open.name == "ifndef" => n.clone(),
+            _ => continue,
+        };
+        if options.defines.iter().any(|(n, _)| *n == name) {
+            continue;
+        }
+        let mut depth = 0usize;
+        let mut values: Vec<String> = Vec::new();
+        for l in &lines[i + 1..] {
+            match l.name.as_str() {
+                "if" | "ifdef" | "ifndef" => depth += 1,
+                "endif" if depth == 0 => break,
+                "endif" => depth -= 1,
+                "define" => {
+                    let mut words = l.args.split_whitespace();
+                    let (Some(n), Some(v), None) = (words.next(), words.next(), words.next())
+                    else {
+                        continue;
+                    };
+                    let function = v.bytes().all(|b| b.is_ascii_alphanumeric() || b == b'_')
+                        && !v.as_bytes()[0].is_ascii_digit()
+                        && defines_function(text, v);
+                    if n == name && function && !values.iter().any(|x| x == v) {
+                        values.push(v.to_string());
+                    }
+                }
+                _ => {}
+            }
+        }
+        if values.len() < 2 {
+            continue;
+        }
+        for v in values {
+            out.push(Variant {
+                defines: vec![name.clone()],
+                directive: open.span,
+                groups: Vec::new(),
+                count: None,
+                choice: Some(v),
+            });
+        }
+    }
+    out
+}
+
+/// Whether `text` defines or declares a function named `name`: `name(` right after a type's
+/// name (`float diffuseOrenNayar(`), not after an operator, a comma or `return`.
+fn defines_function(text: &str, name: &str) -> bool {
+    let word = |c: char| c.is_ascii_alphanumeric() || c == '_';
+    text.match_indices(name).any(|(i, _)| {
+        let after = text[i + name.len()..].trim_start_matches([' ', '\t']);
+        let before = &text[..i];
+        let ty = before
+            .trim_end_matches([' ', '\t'])
+            .rsplit(|c: char| !word(c))
+            .next()
+            .unwrap_or("");
+        after.starts_with('(')
+            && before.ends_with([' ', '\t'])
+            && !ty.is_empty()
+            && ty != "return"
+            && !ty.as_bytes()[0].is_ascii_digit()
+    })
 }
 
 /// The counts a text lets its includer set, each as a configuration that sets it to 1: a macro
@@ -197,6 +279,7 @@ fn counts(text: &str, lines: &[Line], options: &CompileOptions) -> Vec<Variant> 
             directive: open.span,
             groups: Vec::new(),
             count: Some(value.to_string()),
+            choice: None,
         });
     }
     out
@@ -334,6 +417,7 @@ pub fn lint(
     for v in singles {
         if configuration(shader, compile, options, v, false, &mut seen, &mut out)
             && v.count.is_none()
+            && v.choice.is_none()
         {
             compiled += 1;
             for w in &v.defines {
@@ -353,6 +437,7 @@ pub fn lint(
                 .flat_map(|v| v.groups.iter().copied())
                 .collect(),
             count: None,
+            choice: None,
         };
         configuration(shader, compile, options, &all, true, &mut seen, &mut out);
     }
@@ -372,8 +457,9 @@ fn configuration(
     out: &mut Vec<Found>,
 ) -> bool {
     let mut with = compile.clone();
+    let value = v.choice.clone().unwrap_or_else(|| "1".to_string());
     with.defines
-        .extend(v.defines.iter().map(|n| (n.clone(), "1".to_string())));
+        .extend(v.defines.iter().map(|n| (n.clone(), value.clone())));
     let file = || SourceFile::new(shader.file.name(), shader.file.text());
     let mut compiled = essl::compile(file(), shader.stage, &with);
     let mut constants = Vec::new();
@@ -413,7 +499,12 @@ fn configuration(
             .groups
             .iter()
             .any(|g| g.start <= d.span.start && d.span.end <= g.end);
-        let note = if let Some(value) = &v.count {
+        let note = if let Some(choice) = &v.choice {
+            format!(
+                "found by compiling the configuration with {names} defined as `{choice}`, one of \
+                 the functions the text chooses between unless its includer defines it"
+            )
+        } else if let Some(value) = &v.count {
             format!(
                 "found by compiling the configuration with {names} defined as 1, a count the \
                  text sets to {value} unless its includer defines it"

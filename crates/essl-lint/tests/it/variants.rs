@@ -175,3 +175,29 @@ fn a_flag_s_group_divides_by_a_constant_0() {
     let text = frag("#ifdef SDF\n  o.x /= v_clip / (SDF_EDGE - 1.0);\n#endif");
     assert!(found(&text, variants::DEFAULT).is_empty());
 }
+
+#[test]
+fn each_function_a_text_chooses_between_is_linted() {
+    // lygia's `DIFFUSE_FNC`: `diffuseLambert` on WebGL, `diffuseOrenNayar` elsewhere.
+    let text =
+        "#version 300 es\n#define WEBGL\nprecision highp float;\nin float v_a; in float v_b;\n\
+                out vec4 o;\nfloat lambert(float a, float b) { return max(a, 0.0); }\n\
+                float oren(float a, float b) { return a / b; }\n\
+                #ifndef DIFFUSE_FNC\n#ifdef WEBGL\n#define DIFFUSE_FNC lambert\n#else\n\
+                #define DIFFUSE_FNC oren\n#endif\n#endif\n\
+                void main() { o = vec4(DIFFUSE_FNC(v_a, v_b)); }\n";
+    let f = found(text, variants::DEFAULT);
+    assert_eq!(f.len(), 1, "{f:#?}");
+    assert_eq!((f[0].0, f[0].1.as_str()), ("division-by-difference", "b"));
+    assert_eq!(f[0].2, ["DIFFUSE_FNC"]);
+    assert!(
+        f[0].3
+            .iter()
+            .any(|n| n.contains("`DIFFUSE_FNC` defined as `oren`")),
+        "{:?}",
+        f[0].3
+    );
+    // One value only: no configuration.
+    let single = text.replace("#define DIFFUSE_FNC oren", "#define DIFFUSE_FNC lambert");
+    assert!(found(&single, variants::DEFAULT).is_empty(), "{single}");
+}
