@@ -181,45 +181,63 @@ pub fn flags(text: &str, options: &CompileOptions) -> Vec<Variant> {
 /// `diffuseOrenNayar` elsewhere). The function one configuration leaves uncalled is code the
 /// includer runs by defining the macro.
 fn choices(text: &str, lines: &[Line], options: &CompileOptions) -> Vec<Variant> {
-    let mut out: Vec<Variant> = Vec::new();
-    for (i, open) in lines.iter().enumerate() {
-        let name = match &first_name(&open.args)[..] {
-            [n] if open.name == "ifndef" => n.clone(),
-            _ => continue,
-        };
-        if options.defines.iter().any(|(n, _)| *n == name) {
-            continue;
-        }
-        let mut depth = 0usize;
-        let mut values: Vec<String> = Vec::new();
-        for l in &lines[i + 1..] {
-            match l.name.as_str() {
-                "if" | "ifdef" | "ifndef" => depth += 1,
-                "endif" if depth == 0 => break,
-                "endif" => depth -= 1,
-                "define" => {
-                    let mut words = l.args.split_whitespace();
-                    let (Some(n), Some(v), None) = (words.next(), words.next(), words.next())
-                    else {
-                        continue;
-                    };
-                    let function = v.bytes().all(|b| b.is_ascii_alphanumeric() || b == b'_')
-                        && !v.as_bytes()[0].is_ascii_digit()
-                        && defines_function(text, v);
-                    if n == name && function && !values.iter().any(|x| x == v) {
-                        values.push(v.to_string());
+    // The open conditionals, innermost last: for an `#ifndef NAME`, its index in `blocks`.
+    let mut open: Vec<Option<usize>> = Vec::new();
+    // Each `#ifndef NAME`: the name, the directive, the functions defined as the name inside.
+    let mut blocks: Vec<(String, Span, Vec<String>)> = Vec::new();
+    for l in lines {
+        match l.name.as_str() {
+            "ifndef" => {
+                let block = match &first_name(&l.args)[..] {
+                    [n] if !options.defines.iter().any(|(d, _)| d == n) => {
+                        blocks.push((n.clone(), l.span, Vec::new()));
+                        Some(blocks.len() - 1)
                     }
-                }
-                _ => {}
+                    _ => None,
+                };
+                open.push(block);
             }
+            "if" | "ifdef" => open.push(None),
+            "endif" => {
+                open.pop();
+            }
+            "define" => {
+                let mut words = l.args.split_whitespace();
+                let (Some(n), Some(v), None) = (words.next(), words.next(), words.next()) else {
+                    continue;
+                };
+                // The `#ifndef` of the same name among the few innermost conditionals (the
+                // choice sits under the flags that make it).
+                let Some(b) = open
+                    .iter()
+                    .rev()
+                    .take(4)
+                    .flatten()
+                    .copied()
+                    .find(|&b| blocks[b].0 == n)
+                else {
+                    continue;
+                };
+                let function = v.bytes().all(|b| b.is_ascii_alphanumeric() || b == b'_')
+                    && !v.as_bytes()[0].is_ascii_digit()
+                    && !blocks[b].2.iter().any(|x| x == v)
+                    && defines_function(text, v);
+                if function {
+                    blocks[b].2.push(v.to_string());
+                }
+            }
+            _ => {}
         }
+    }
+    let mut out = Vec::new();
+    for (name, directive, values) in blocks {
         if values.len() < 2 {
             continue;
         }
         for v in values {
             out.push(Variant {
                 defines: vec![name.clone()],
-                directive: open.span,
+                directive,
                 groups: Vec::new(),
                 count: None,
                 choice: Some(v),

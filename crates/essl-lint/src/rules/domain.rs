@@ -83,7 +83,7 @@ pub(super) fn check(cx: &Cx, out: &mut Vec<Diagnostic>, domains: &[Domain], rule
         if !negative && !zero {
             // 0 at isolated points only for inputs in general, but what the callers pass may
             // make it 0 (`log(dot(st, st))` of `st - 0.5`, at the centre).
-            if dom.zero && !negative {
+            if dom.zero {
                 out.extend(from_callers(cx, f, id, call, x, dom, rule));
             }
             continue;

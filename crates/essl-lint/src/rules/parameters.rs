@@ -319,18 +319,35 @@ fn leaves(cx: &Cx, fr: &Frame, h: Handle<E>, depth: u32, out: &mut Walk) -> bool
             left,
             right,
         } => {
-            let saved = out.clone();
-            if go(left, out) && go(right, out) {
-                return true;
-            }
-            [left, right].into_iter().any(|side| {
-                *out = saved.clone();
-                go(side, out)
-                    && !out.offset
-                    && out.leaves[saved.leaves.len()..]
+            // Each factor walked once, from what was found before it.
+            let mut l = out.clone();
+            let mut r = out.clone();
+            let (lo, ro) = (go(left, &mut l), go(right, &mut r));
+            let before = out.leaves.len();
+            let alone = |w: &Walk| {
+                !w.offset
+                    && w.leaves[before..]
                         .iter()
                         .all(|l| matches!(l, Leaf::Parameter(_)))
-            })
+            };
+            match (lo, ro) {
+                (true, true) => {
+                    l.leaves.extend_from_slice(&r.leaves[before..]);
+                    l.locals.extend(r.locals.into_iter().skip(out.locals.len()));
+                    l.offset |= r.offset;
+                    *out = l;
+                    true
+                }
+                (true, false) if alone(&l) => {
+                    *out = l;
+                    true
+                }
+                (false, true) if alone(&r) => {
+                    *out = r;
+                    true
+                }
+                _ => false,
+            }
         }
         E::Binary {
             op: Bo::Add | Bo::Subtract,
