@@ -108,7 +108,8 @@ for (const withThree of [false, ...(existsSync(three) ? [true] : [])]) {
     const base = median(times.without.map(t => t[what]));
     const parts = Object.entries(times).map(([name, t]) => {
       const m = median(t.map(x => x[what]));
-      return name === 'without' ? `without essl ${m.toFixed(0)} ms` : `${name} ${m.toFixed(0)} ms (+${(((m - base) / base) * 100).toFixed(1)} %)`;
+      const change = ((m - base) / base) * 100;
+      return name === 'without' ? `without essl ${m.toFixed(0)} ms` : `${name} ${m.toFixed(0)} ms (${change >= 0 ? '+' : ''}${change.toFixed(1)} %)`;
     });
     const label = what === 'wall' ? 'wall-clock' : 'CPU (all threads)';
     console.log(`${withThree ? 'with three.js' : 'shaders alone'}, ${label}: ${parts.join(', ')}`);
