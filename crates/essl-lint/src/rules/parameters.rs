@@ -309,46 +309,12 @@ fn leaves(cx: &Cx, fr: &Frame, h: Handle<E>, depth: u32, out: &mut Walk) -> bool
             left,
             right,
         } if per_draw(left) => go(right, out),
-        // Any other product is 0 wherever one factor is, whatever the other is: `pow(l, 0.5)
-        // * t` of a weight `t` a caller passes. Not for vertex data: a position's depth
-        // (`scale / -mvPosition.z`) is as positive as a homogeneous `w`; nor for a factor
-        // 0 only where its parameters take some value other than 0 (`0.31 - temp * k`), which
-        // the rest of the product may keep out of reach (lygia's white balance).
+        // Any other product is 0 wherever one factor is.
         E::Binary {
             op: Bo::Multiply,
             left,
             right,
-        } => {
-            // Each factor walked once, from what was found before it.
-            let mut l = out.clone();
-            let mut r = out.clone();
-            let (lo, ro) = (go(left, &mut l), go(right, &mut r));
-            let before = out.leaves.len();
-            let alone = |w: &Walk| {
-                !w.offset
-                    && w.leaves[before..]
-                        .iter()
-                        .all(|l| matches!(l, Leaf::Parameter(_)))
-            };
-            match (lo, ro) {
-                (true, true) => {
-                    l.leaves.extend_from_slice(&r.leaves[before..]);
-                    l.locals.extend(r.locals.into_iter().skip(out.locals.len()));
-                    l.offset |= r.offset;
-                    *out = l;
-                    true
-                }
-                (true, false) if alone(&l) => {
-                    *out = l;
-                    true
-                }
-                (false, true) if alone(&r) => {
-                    *out = r;
-                    true
-                }
-                _ => false,
-            }
-        }
+        } => product(cx, fr, left, right, depth, out),
         E::Binary {
             op: Bo::Add | Bo::Subtract,
             left,
@@ -421,6 +387,51 @@ fn leaves(cx: &Cx, fr: &Frame, h: Handle<E>, depth: u32, out: &mut Walk) -> bool
             .is_some_and(|n| n.comps().iter().all(|c| c.lo > 0.0)) =>
         {
             go(arg, out)
+        }
+        _ => false,
+    }
+}
+
+/// Whether a product of `left` and `right` is built as [`leaves`] asks: both factors, or one,
+/// 0 wherever it is, whatever the other is (`pow(l, 0.5) * t` of a weight `t` a caller passes).
+/// One factor alone is not vertex data (a position's depth, `scale / -mvPosition.z`, is as
+/// positive as a homogeneous `w`), nor 0 only where its parameters take some value other than
+/// 0 (`0.31 - temp * k`), which the other factor may keep out of reach (lygia's white
+/// balance). Each factor is walked once, from what was found before it.
+fn product(
+    cx: &Cx,
+    fr: &Frame,
+    left: Handle<E>,
+    right: Handle<E>,
+    depth: u32,
+    out: &mut Walk,
+) -> bool {
+    let mut l = out.clone();
+    let mut r = out.clone();
+    let lo = leaves(cx, fr, left, depth + 1, &mut l);
+    let ro = leaves(cx, fr, right, depth + 1, &mut r);
+    let before = out.leaves.len();
+    let alone = |w: &Walk| {
+        !w.offset
+            && w.leaves[before..]
+                .iter()
+                .all(|l| matches!(l, Leaf::Parameter(_)))
+    };
+    match (lo, ro) {
+        (true, true) => {
+            l.leaves.extend_from_slice(&r.leaves[before..]);
+            l.locals.extend(r.locals.into_iter().skip(out.locals.len()));
+            l.offset |= r.offset;
+            *out = l;
+            true
+        }
+        (true, false) if alone(&l) => {
+            *out = l;
+            true
+        }
+        (false, true) if alone(&r) => {
+            *out = r;
+            true
         }
         _ => false,
     }
