@@ -152,6 +152,8 @@ fn front_end_here(file: SourceFile, stage: Stage, options: &CompileOptions) -> S
     );
     let lang = Language::of(&pp, target, &options.extensions);
     let mut diagnostics = std::mem::take(&mut pp.diagnostics);
+    // The preprocessor's own diagnostics of a macro say where in it they are.
+    let after_preprocessing = diagnostics.len();
     let tokens = crate::token::classify_as(pp.tokens, &lang, &mut diagnostics);
     let (unit, parse_diags) = crate::parse::parse_as(&file, tokens, stage, &lang);
     diagnostics.extend(parse_diags);
@@ -160,6 +162,7 @@ fn front_end_here(file: SourceFile, stage: Stage, options: &CompileOptions) -> S
     // The syntax tree is not needed past this point: free it before lowering.
     drop(unit);
     diagnostics.extend(check_diags);
+    expanded_from(&mut diagnostics[after_preprocessing..], &pp.expansions);
     diagnostic::sort(&mut diagnostics);
     cap_diagnostics(&mut diagnostics);
     Shader {
@@ -170,6 +173,33 @@ fn front_end_here(file: SourceFile, stage: Stage, options: &CompileOptions) -> S
         diagnostics,
         module,
         naga: None,
+    }
+}
+
+/// Labels the `#define` of a macro whose invocation a diagnostic underlines whole: the code at
+/// fault is in its replacement list, whose tokens carry the invocation's span (an argument's
+/// keep their own, and a diagnostic of one underlines it).
+fn expanded_from(diagnostics: &mut [Diagnostic], expansions: &[preprocess::Expansion]) {
+    if expansions.is_empty() {
+        return;
+    }
+    let by_span: std::collections::HashMap<(u32, u32), &preprocess::Expansion> = expansions
+        .iter()
+        .rev()
+        .map(|e| ((e.invocation.start, e.invocation.end), e))
+        .collect();
+    for d in diagnostics {
+        let Some(e) = by_span.get(&(d.span.start, d.span.end)) else {
+            continue;
+        };
+        if e.defined.is_empty() || d.secondary.iter().any(|l| l.span == e.defined) {
+            continue;
+        }
+        let label = format!("in this expansion of `{}`, defined here", e.name);
+        d.secondary.push(diagnostic::Label {
+            span: e.defined,
+            message: label,
+        });
     }
 }
 

@@ -351,6 +351,15 @@ impl Pp<'_> {
                     }
                 }
             };
+            if !t.t.from_macro && m.origin == Origin::Shader {
+                // The replacement list's tokens carry the invocation's span, the union of all.
+                let invocation = toks.iter().fold(t.t.span, |a, x| a.to(x.t.span));
+                self.expansions.push(super::Expansion {
+                    invocation,
+                    name: m.name.clone(),
+                    defined: m.span,
+                });
+            }
             self.expanded += toks.len();
             if self.expanded > self.budget && !self.budget_reported {
                 self.report_budget(&m, &t);

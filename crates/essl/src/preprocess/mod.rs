@@ -194,6 +194,20 @@ pub struct Preprocessed {
     pub line_directives: Vec<LineDirective>,
     /// Errors and warnings (the lexer's included), sorted by position.
     pub diagnostics: Vec<Diagnostic>,
+    /// The invocations in the text of macros the shader defines, in order.
+    pub expansions: Vec<Expansion>,
+}
+
+/// An invocation in the text of a macro the shader defines: its tokens' span (the replacement
+/// list's tokens carry it) and where the macro is defined.
+#[derive(Clone, Debug)]
+pub struct Expansion {
+    /// The invocation: the name, or the whole `NAME(args)`.
+    pub invocation: Span,
+    /// The macro's name.
+    pub name: Name,
+    /// The name in its `#define`.
+    pub defined: Span,
 }
 
 impl Preprocessed {
@@ -288,6 +302,8 @@ pub(super) struct Pp<'a> {
     extensions: Vec<(String, ExtensionBehavior, Span)>,
     invariant_all_span: Option<Span>,
     line_directives: Vec<LineDirective>,
+    /// The invocations in the text of the shader's macros.
+    expansions: Vec<Expansion>,
     /// Tokens produced by macro expansions so far, and the limit.
     expanded: usize,
     budget: usize,
@@ -328,6 +344,7 @@ impl<'a> Pp<'a> {
             extensions: Vec::new(),
             invariant_all_span: None,
             line_directives: Vec::new(),
+            expansions: Vec::new(),
             expanded: 0,
             budget,
             budget_reported: false,
@@ -504,6 +521,7 @@ impl<'a> Pp<'a> {
             invariant_all_span: self.invariant_all_span,
             line_directives: std::mem::take(&mut self.line_directives),
             diagnostics,
+            expansions: std::mem::take(&mut self.expansions),
         }
     }
 

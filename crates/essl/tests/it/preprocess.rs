@@ -1425,3 +1425,34 @@ fn macro_expansions_in_progress_are_bounded_as_in_angle() {
         }
     }
 }
+
+#[test]
+fn a_diagnostic_in_a_replacement_list_labels_the_macro() {
+    let src = "#version 300 es\nprecision highp float;\n\
+               #define SHADE(c) vec4(c * undefinedGain, 1.0)\n\
+               #define saturate(x) clamp(x, 0.0, 1.0)\nout vec4 o;\n\
+               void main() {\n  o = SHADE(vec3(0.5));\n  float q = saturate(1.0 + missingName);\n}\n";
+    let file = SourceFile::new("m.frag", src.to_string());
+    let shader = essl::compile(file, Stage::Fragment, &essl::CompileOptions::default());
+    let undeclared: Vec<&Diagnostic> = shader
+        .diagnostics
+        .iter()
+        .filter(|d| d.code == "undeclared-identifier")
+        .collect();
+    assert_eq!(undeclared.len(), 2, "{undeclared:#?}");
+    // In the replacement list: the whole call, and the `#define` labelled.
+    let f = &shader.file;
+    assert_eq!(f.slice(undeclared[0].span), "SHADE(vec3(0.5))");
+    let labels: Vec<(&str, &str)> = undeclared[0]
+        .secondary
+        .iter()
+        .map(|l| (f.slice(l.span), l.message.as_str()))
+        .collect();
+    assert_eq!(
+        labels,
+        [("SHADE", "in this expansion of `SHADE`, defined here")]
+    );
+    // In an argument: the argument itself, and no label.
+    assert_eq!(f.slice(undeclared[1].span), "missingName");
+    assert!(undeclared[1].secondary.is_empty());
+}
