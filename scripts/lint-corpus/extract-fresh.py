@@ -16,8 +16,9 @@ Per package (NPM/<name>-<version>/package):
   re-flowed one statement a line so that findings have lines to point at.
 - @cesium/engine: every `Source/Shaders/**/*.glsl` with a `main`, with the `czm_` functions,
   constants and structs it uses (recursively) and the automatic uniforms it reads declared
-  (types from `Source/Renderer/AutomaticUniforms.js`), `out vec4 out_FragColor` for fragment
-  shaders, as `#version 300 es`.
+  (types from `Source/Renderer/AutomaticUniforms.js`), the `czm_batchTable_*` functions
+  `BatchTable.js` generates for the per-instance attributes it calls, `out vec4 out_FragColor`
+  for fragment shaders, as `#version 300 es`.
 - maplibre-gl: every `src/shaders/glsl/*.glsl` pair, prelude and Mercator projection prelude
   first, `#pragma maplibre` expanded to the attribute-driven variant (as `shaders.ts` does).
 - Any other package: every JavaScript string literal (template, or quoted with `\\n` escapes,
