@@ -112,6 +112,7 @@ fn checked(parsed: &[Parsed]) -> Vec<Shader> {
                 diagnostics,
                 module,
                 naga: None,
+                expansions: Vec::new(),
             }
         })
         .collect()

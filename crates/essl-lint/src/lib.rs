@@ -244,6 +244,7 @@ pub fn lint(shader: &Shader, options: &LintOptions) -> Vec<Diagnostic> {
         return Vec::new();
     }
     out.extend(unused_allows(&allowed, options, &reported));
+    shader.label_expansions(&mut out);
     out.dedup_by(|a, b| a.code == b.code && a.span == b.span);
     diagnostic::sort(&mut out);
     let mut seen = std::collections::HashSet::new();

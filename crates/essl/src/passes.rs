@@ -24,7 +24,7 @@ pub use crate::check::{check, check_as};
 pub use crate::lex::{lex, Lexed, PpKind, PpToken, Punct};
 pub use crate::parse::{parse, parse_as, MAX_NESTING};
 pub use crate::preprocess::{
-    preprocess, ExtensionBehavior, LineDirective, PreprocessOptions, Preprocessed,
+    preprocess, Expansion, ExtensionBehavior, LineDirective, PreprocessOptions, Preprocessed,
     MAX_EXPANDED_TOKENS,
 };
 pub use crate::target::Language;

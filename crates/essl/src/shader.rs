@@ -58,9 +58,19 @@ pub struct Shader {
     pub module: hir::Module,
     /// The shader lowered on its own to a validated naga module (when it compiled).
     pub naga: Option<(naga::Module, naga::valid::ModuleInfo)>,
+    /// The invocations in the text of the shader's own macros: a diagnostic that underlines
+    /// one whole is labelled with the macro's `#define` ([`Shader::label_expansions`]).
+    pub expansions: Vec<preprocess::Expansion>,
 }
 
 impl Shader {
+    /// Labels the `#define` of a macro whose invocation a diagnostic of this shader underlines
+    /// whole (a lint's finding, as the front end's own are): the code at fault is in the
+    /// macro's replacement list.
+    pub fn label_expansions(&self, diagnostics: &mut [Diagnostic]) {
+        expanded_from(diagnostics, &self.expansions);
+    }
+
     /// Whether WebGL2 would compile it: no errors.
     pub fn ok(&self) -> bool {
         !self.diagnostics.iter().any(|d| d.is_error())
@@ -173,6 +183,7 @@ fn front_end_here(file: SourceFile, stage: Stage, options: &CompileOptions) -> S
         diagnostics,
         module,
         naga: None,
+        expansions: pp.expansions,
     }
 }
 

@@ -1529,3 +1529,28 @@ fn parameters_named_for_a_colour_or_a_normal() {
         ["acos-domain"]
     );
 }
+
+/// A finding in a macro's replacement list underlines the invocation and labels the macro's
+/// `#define`, as the front end's errors there do.
+#[test]
+fn a_finding_in_a_macro_labels_its_define() {
+    let text = "#version 300 es\nprecision highp float;\nuniform sampler2D iTex;\nin vec2 v_uv;\n\
+                out vec4 o;\n#define T texture(iTex, v_uv).x\n\
+                void main() {\n  float f = 0.0;\n  if (v_uv.x > 0.5) { f = T; }\n  o = vec4(f);\n}\n";
+    let s = super::compiled("t.frag", text);
+    let found = lint(&s, &LintOptions::default().notes(true));
+    let d = found
+        .iter()
+        .find(|d| d.code == "non-uniform-derivative")
+        .expect("the lookup under a per-pixel branch");
+    assert_eq!(s.file.slice(d.span), "T");
+    let labels: Vec<(&str, &str)> = d
+        .secondary
+        .iter()
+        .map(|l| (s.file.slice(l.span), l.message.as_str()))
+        .collect();
+    assert!(
+        labels.contains(&("T", "in this expansion of `T`, defined here")),
+        "{labels:?}"
+    );
+}
