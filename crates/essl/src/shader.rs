@@ -191,7 +191,7 @@ fn front_end_here(file: SourceFile, stage: Stage, options: &CompileOptions) -> S
 /// fault is in its replacement list, whose tokens carry the invocation's span (an argument's
 /// keep their own, and a diagnostic of one underlines it).
 fn expanded_from(diagnostics: &mut [Diagnostic], expansions: &[preprocess::Expansion]) {
-    if expansions.is_empty() {
+    if expansions.is_empty() || diagnostics.is_empty() {
         return;
     }
     let by_span: std::collections::HashMap<(u32, u32), &preprocess::Expansion> = expansions
