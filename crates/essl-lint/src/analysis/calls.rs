@@ -98,6 +98,15 @@ pub(super) fn with_arguments(module: &naga::Module) -> bool {
         .any(|(_, f)| !f.arguments.is_empty())
 }
 
+/// Whether function `f` has a call statement.
+pub(super) fn calls_any(f: &naga::Function) -> bool {
+    let mut any = false;
+    each_statement(&f.body, &mut |s| {
+        any |= matches!(s, naga::Statement::Call { .. });
+    });
+    any
+}
+
 impl Analysis {
     /// The result of calling function `c` with `arguments` (of the caller at `s`), walked with
     /// those arguments; `None` where the join of every call's result stands.
