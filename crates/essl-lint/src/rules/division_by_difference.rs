@@ -25,7 +25,10 @@ declare_rule! {
     /// range: `1.0 - k` for `k = min(1.0 - c.r, min(1.0 - c.g, 1.0 - c.b))` of a texel's colour `c`
     /// is 0 for every black texel, `1.0 - c.a` for every opaque one, and so is a sum with a
     /// negative constant (FSR's `4.0 * mn + peakC.y`, `peakC.y == -4.0`, wherever it is
-    /// white). An input whose name says it holds a colour (`v_color`, a function's `vec3 rgb` its callers pass an input to) counts as
+    /// white), and one whose end is 0 to within a `float`'s rounding: `1.0 - Y` of a luminance
+    /// `Y = dot(c, vec3(0.299, 0.587, 0.114))`, whose weights sum to 1 − 1.3e-8 as `float`s, is 0
+    /// or 6e-8 for a white texel, and an epsilon added before the subtraction
+    /// (`1e-10 + 1.0 - Y`) folds into the 1.0. An input whose name says it holds a colour (`v_color`, a function's `vec3 rgb` its callers pass an input to) counts as
     /// a texel: black and white are ordinary colours. A divisor that is a texel (or such a colour)
     /// itself is reported too: `c.rgb / c.a` un-premultiplies by an alpha that is 0 wherever the
     /// texture is transparent, `x / t.r` divides by 0 wherever it is black; and so is a sum,
@@ -297,15 +300,22 @@ fn offset_texel(cx: &Cx, f: &naga::Function, id: usize, d: naga::Handle<E>, fact
 /// with texels in `[0, 1]` (and other external values ordinary), 0 is an end of the
 /// difference's range (`1.0 - k` for `k = min(1.0 - rgb)` of a texel's colour, `1.0 - t.a`).
 /// Black, white and transparent texels cover whole regions of a picture, where a varying
-/// crosses a value at isolated pixels only.
+/// crosses a value at isolated pixels only. An end within rounding of 0 counts: `1.0 - Y` for
+/// a luminance `Y = dot(rgb, vec3(0.299, 0.587, 0.114))`, whose weights sum to 1 − 1.3e-8 as
+/// `float`s, is 0 or 6e-8 for a white texel, as the GPU rounds the dot product.
 fn zero_at_texel_end(cx: &Cx, id: usize, d: naga::Handle<E>, facts: Facts) -> bool {
     if !facts.any(Facts::TEXTURE) {
         return false;
     }
+    let near = |x: f64| x.abs() <= ROUNDING;
     cx.typical()
         .num(id, d)
-        .is_some_and(|t| t.comps().iter().any(|c| c.lo == 0.0 || c.hi == 0.0))
+        .is_some_and(|t| t.comps().iter().any(|c| near(c.lo) || near(c.hi)))
 }
+
+/// How far from 0 an end of a texel difference's range may be and still be 0 after the GPU's
+/// rounding: a few units in the last place of a `float` near 1 (1.2e-7 each).
+const ROUNDING: f64 = 1e-6;
 
 /// The finding for a divisor `d` of `h` that is a texel (or a colour input) as such, whose
 /// range ends at 0: `c.rgb / c.a` un-premultiplies by an alpha that is 0 wherever the texture

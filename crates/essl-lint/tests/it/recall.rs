@@ -154,6 +154,14 @@ const HAZARDS: &[Hazard] = &[
         "  float mx = max(max(t.r, t.g), t.b);\n  r = 1.0 / (4.0 * mx);",
         W,
     ),
+    // One minus a luminance whose weights sum to 1 as `float`s to within rounding: 0 (or
+    // 6e-8) where the texture is white, with an epsilon below a `float`'s resolution at 1.
+    (
+        "division-by-difference",
+        "texture",
+        "  float y = dot(t.rgb, vec3(0.299, 0.587, 0.114));\n  r = (1.0 - t.r) / (1e-10 + 1.0 - y);",
+        W,
+    ),
     // A difference written as a sum with a negative constant: 0 where the texel is white.
     (
         "division-by-difference",
@@ -561,6 +569,15 @@ const GUARDED: &[(&str, &str)] = &[
     (
         "division-by-difference",
         "  float k = min(1.0 - t.r, min(1.0 - t.g, 1.0 - t.b));\n  r = (1.0 - t.r - k) / max(1.0 - k, 1e-4);",
+    ),
+    // An epsilon added after the difference keeps it from 0; one above the rounding, before.
+    (
+        "division-by-difference",
+        "  float y = dot(t.rgb, vec3(0.299, 0.587, 0.114));\n  r = (1.0 - t.r) / (1.0 - y + 1e-10);",
+    ),
+    (
+        "division-by-difference",
+        "  float y = dot(t.rgb, vec3(0.299, 0.587, 0.114));\n  r = (1.0 - t.r) / (1e-4 + 1.0 - y);",
     ),
     // Differences of texels 0 inside their range only: at isolated values, not at black or white.
     ("division-by-difference", "  r = v_x / (t.r - t.g);"),
