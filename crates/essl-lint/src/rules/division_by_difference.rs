@@ -71,7 +71,8 @@ declare_rule! {
     /// one: lygia's `area(tri)`) of any vector `normalize-zero` reports `normalize` of
     /// (`d / length(d)`, a normalisation
     /// by hand; `t / length(b - a)` of an edge of a triangle a caller passes, 0 for a degenerate
-    /// one), at that rule's severity. And, as a note, a vertex
+    /// one; `delta / length(delta)` of `delta = xy - clamp(xy, 0.0, 1.0)`, 0 for every `xy`
+    /// inside the bounds), at that rule's severity. And, as a note, a vertex
     /// shader's perspective divide by the `w` of `gl_Position` or of a product with a projection
     /// matrix (`p.xy / p.w`, through locals, calls and parameters): the vertex shader runs before
     /// clipping, so a vertex on the camera's plane (a line or triangle crossing it) has `w = 0`

@@ -12,6 +12,7 @@ mod guards;
 mod lowp_range;
 pub(crate) mod origin;
 mod parameters;
+mod residual;
 pub(crate) mod rule;
 mod unlit;
 mod vanishing;

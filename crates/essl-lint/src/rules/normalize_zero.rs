@@ -52,6 +52,13 @@ declare_rule! {
     /// offset: Cesium's `length(southEastCorner - southWestCorner)` of a batch table's east
     /// vector.
     ///
+    /// And `normalize` of what is left of a value outside a box, `p - clamp(p, lo, hi)` (times
+    /// constants), where `p`'s ordinary values reach inside the bounds: the zero vector for every
+    /// pixel or vertex whose `p` is inside — a whole region, such as the middle of a plane whose
+    /// corners a vertex shader rounds (Babylon's `delta = 2.0 * (xy - clamp(xy, 0.0, 1.0))`
+    /// divided by its length). Bounds from uniforms (`clamp(p, -u_size, u_size)`) are left out:
+    /// the box is empty for a size of 0.
+    ///
     /// Not reported: `normalize` of a uniform or a varying itself (`normalize(v_normal)`; the
     /// runtime check validates uniform values), of a decoded texel (`t.rgb * 2.0 - 1.0`, the
     /// zero vector only for the middle grey a normal map does not hold), and of per-pixel sums
@@ -98,7 +105,7 @@ declare_rule! {
     ///
     /// Severity: a cross product with a vector fixed for the draw is a warning (a light pointing
     /// straight down is ordinary), as is a gradient (flat regions are in every picture) and a
-    /// texel (black ones are); `normalize` of a per-draw difference is a note when one uniform
+    /// texel (black ones are) and a value outside a box; `normalize` of a per-draw difference is a note when one uniform
     /// alone reaches it, and of a direction attribute, a difference of attributes or parameters,
     /// or a parameter as such always.
     ///
@@ -169,7 +176,8 @@ fn zero_vector(
     if !v.facts.any(Facts::CROSS) && v.facts.any(Facts::INPUT.with(Facts::TEXTURE)) && !gradient {
         return attribute_direction(cx, at)
             .or_else(|| caller_difference(cx, at))
-            .or_else(|| black_texel(cx, at));
+            .or_else(|| black_texel(cx, at))
+            .or_else(|| inside_box(cx, at));
     }
     // `dot(v, v) > 1e-12 ? normalize(v) : fallback`, `if (length(v) > 0.0)`.
     let v = cx.refined(f, id, x, &cx.guards(f, id, site))?;
@@ -712,4 +720,32 @@ fn black_texel(cx: &Cx, n: Normalize) -> Option<Diagnostic> {
         .with_note(NORMALIZE_DIVIDES)
         .with_help("test the length first (`dot(v, v) > 1e-12`), or store normals encoded (`n * 0.5 + 0.5`)"),
     )
+}
+
+/// The finding for `normalize(x)` of what is left of a value outside a box,
+/// `p - clamp(p, lo, hi)` ([`residual::clamp_residual`]): the zero vector for every pixel or
+/// vertex whose `p` is inside.
+fn inside_box(cx: &Cx, n: Normalize) -> Option<Diagnostic> {
+    let Normalize { f, id, call, x } = n;
+    let clamp = super::residual::clamp_residual(cx, f, id, x)?;
+    let g = cx.guards(f, id, call);
+    if cx.nonzero(f, id, x, &g) || length_guarded(cx, f, id, x, &g) {
+        return None;
+    }
+    let mut d = Diagnostic::rule_warning(
+        NormalizeZero::RULE.id,
+        "`normalize` of a value's distance outside a box, the zero vector everywhere inside it",
+        cx.span(f, x),
+    )
+    .with_label(format!(
+        "{} is the zero vector wherever the clamped value is inside the clamp's bounds",
+        cx.what(f, id, x)
+    ))
+    .with_note(NORMALIZE_DIVIDES)
+    .with_help("test the length first (`dot(v, v) > 1e-12`) and choose a fallback direction");
+    let (span, whole) = (cx.span(f, clamp), cx.span(f, x));
+    if !span.is_empty() && !(whole.start <= span.start && span.end <= whole.end) {
+        d = d.with_secondary(span, "equal to its argument inside the bounds");
+    }
+    Some(d)
 }

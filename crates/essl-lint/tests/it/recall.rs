@@ -154,11 +154,24 @@ const HAZARDS: &[Hazard] = &[
         "  float mx = max(max(t.r, t.g), t.b);\n  r = 1.0 / (4.0 * mx);",
         W,
     ),
+    // What is left of a varying outside a box: the zero vector for every pixel inside it.
+    (
+        "normalize-zero",
+        "varying",
+        "  vec3 p = vec3(v_uv, v_x) * 2.0;\n  r = normalize(p - clamp(p, -1.0, 1.0)).x;",
+        W,
+    ),
+    (
+        "division-by-difference",
+        "varying",
+        "  vec2 xy = 2.0 * v_uv - vec2(0.5);\n  vec2 delta = 2.0 * (xy - clamp(xy, 0.0, 1.0));\n  r = delta.x / length(delta);",
+        W,
+    ),
     // One minus a luminance whose weights sum to 1 as `float`s to within rounding: 0 (or
     // 6e-8) where the texture is white, with an epsilon below a `float`'s resolution at 1.
     (
         "division-by-difference",
-        "texture",
+        "rounding",
         "  float y = dot(t.rgb, vec3(0.299, 0.587, 0.114));\n  r = (1.0 - t.r) / (1e-10 + 1.0 - y);",
         W,
     ),
@@ -569,6 +582,15 @@ const GUARDED: &[(&str, &str)] = &[
     (
         "division-by-difference",
         "  float k = min(1.0 - t.r, min(1.0 - t.g, 1.0 - t.b));\n  r = (1.0 - t.r - k) / max(1.0 - k, 1e-4);",
+    ),
+    // A value outside a box tested first, and a box whose size a uniform sets (empty at 0).
+    (
+        "normalize-zero",
+        "  vec3 p = vec3(v_uv, v_x) * 2.0;\n  vec3 q = p - clamp(p, -1.0, 1.0);\n  r = dot(q, q) > 1e-12 ? normalize(q).x : 0.0;",
+    ),
+    (
+        "normalize-zero",
+        "  vec3 p = vec3(v_uv, v_x) * 2.0;\n  r = normalize(p - clamp(p, -u_a, u_a)).x;",
     ),
     // An epsilon added after the difference keeps it from 0; one above the rounding, before.
     (
