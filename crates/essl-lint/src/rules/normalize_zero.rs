@@ -744,7 +744,8 @@ fn inside_box(cx: &Cx, n: Normalize) -> Option<Diagnostic> {
     .with_note(NORMALIZE_DIVIDES)
     .with_help("test the length first (`dot(v, v) > 1e-12`) and choose a fallback direction");
     let (span, whole) = (cx.span(f, clamp), cx.span(f, x));
-    if !span.is_empty() && !(whole.start <= span.start && span.end <= whole.end) {
+    let inside = whole.start <= span.start && span.end <= whole.end;
+    if !span.is_empty() && !inside {
         d = d.with_secondary(span, "equal to its argument inside the bounds");
     }
     Some(d)

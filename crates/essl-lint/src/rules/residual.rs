@@ -16,12 +16,7 @@ use crate::symbolic::resolve;
 /// The `clamp` of `x = k * (p - clamp(p, lo, hi))` in function `id`, where every component of
 /// `p`'s ordinary values overlaps `[lo, hi]` over a range (not at a point): `x` is then the
 /// zero vector over a region of the inputs.
-pub(super) fn clamp_residual(
-    cx: &Cx,
-    f: &Function,
-    id: usize,
-    x: Handle<E>,
-) -> Option<Handle<E>> {
+pub(super) fn clamp_residual(cx: &Cx, f: &Function, id: usize, x: Handle<E>) -> Option<Handle<E>> {
     let an = cx.sound();
     let mut h = resolve(f, an, id, x);
     // Constant factors: `2.0 * (xy - center)`.
