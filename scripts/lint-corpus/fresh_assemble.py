@@ -415,8 +415,14 @@ def babylon_webgl2(text, stage):
         ("gl_FragColor", "glFragColor"),
     ):
         text = re.sub(rf"\b{old}\b", new, text)
-    head = "#version 300 es\n#define WEBGL2\n#define NUM_BONE_INFLUENCERS 0\n"
-    head += "#define BonesPerMesh 0\n#define NUM_MORPH_INFLUENCERS 0\nprecision highp float;\n"
+    # The counts the engine sets with a mesh's skeleton and morph targets: no bones unless the
+    # includer says (a default the lints' variants raise to reach the skinning), an array of
+    # bones wherever there are, and targets wherever MORPHTARGETS is set.
+    head = "#version 300 es\n#define WEBGL2\n"
+    head += "#ifndef NUM_BONE_INFLUENCERS\n#define NUM_BONE_INFLUENCERS 0\n#endif\n"
+    head += "#if NUM_BONE_INFLUENCERS > 0\n#define BonesPerMesh 64\n#else\n#define BonesPerMesh 0\n#endif\n"
+    head += "#ifdef MORPHTARGETS\n#define NUM_MORPH_INFLUENCERS 4\n#else\n#define NUM_MORPH_INFLUENCERS 0\n#endif\n"
+    head += "precision highp float;\n"
     if stage == "fragment" and "glFragColor" in text:
         head += "out vec4 glFragColor;\n"
     return head + text

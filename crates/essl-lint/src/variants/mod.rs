@@ -55,12 +55,15 @@ pub struct Variant {
     /// The code of each group it turns on: from the end of the directive's line to the next
     /// directive of its block.
     pub groups: Vec<Span>,
-    /// For a count rather than a flag ([`counts`]): the value the text gives it unless it is
+    /// For a count rather than a flag ([`settings::counts`]): the value the text gives it unless it is
     /// defined before; the configuration defines it as 1.
     pub count: Option<String>,
-    /// For a choice rather than a flag ([`choices`]): the value the configuration defines the
+    /// For a choice rather than a flag ([`settings::choices`]): the value the configuration defines the
     /// macro as, one of those the text chooses between.
     pub choice: Option<String>,
+    /// For a level rather than a flag ([`settings::levels`]): the value the configuration defines the
+    /// macro as, and the value the text gives it unless it is defined before.
+    pub level: Option<(String, String)>,
 }
 
 /// A conditional block being read.
@@ -168,6 +171,7 @@ pub fn flags(text: &str, options: &CompileOptions) -> Vec<Variant> {
                 groups: Vec::new(),
                 count: None,
                 choice: None,
+                level: None,
             });
             out.len() - 1
         });
@@ -175,6 +179,9 @@ pub fn flags(text: &str, options: &CompileOptions) -> Vec<Variant> {
         block.open = Some(i);
     }
     out.retain(|v| v.groups.iter().any(|g| hazardous(&text[g.range()])));
+    // A level first: the flags' configurations that need it set it too, and what its own
+    // groups hold is then found with it alone.
+    out.splice(0..0, settings::levels(&lines, options));
     out.extend(settings::counts(text, &lines, options));
     out.extend(settings::choices(text, &lines, options));
     out
@@ -291,12 +298,23 @@ pub fn lint(
     let mut out = Vec::new();
     let mut together: Vec<String> = Vec::new();
     let mut compiled = 0;
+    // A flag's group may use what a level's declares (Babylon's baked vertex animation reads
+    // the bone attributes `NUM_BONE_INFLUENCERS > 0` declares).
+    let levels: Vec<(String, String)> = variants
+        .iter()
+        .filter_map(|v| Some((v.defines.first()?.clone(), v.level.as_ref()?.0.clone())))
+        .collect();
     let singles = variants.iter().take(max);
     for v in singles {
-        if configuration(shader, compile, options, v, false, &mut seen, &mut out)
-            && v.count.is_none()
-            && v.choice.is_none()
-        {
+        let flag = v.count.is_none() && v.choice.is_none() && v.level.is_none();
+        let levels = if flag { &levels[..] } else { &[] };
+        let cx = Context {
+            shader,
+            compile,
+            options,
+            levels,
+        };
+        if configuration(&cx, v, false, &mut seen, &mut out) && flag {
             compiled += 1;
             for w in &v.defines {
                 if !together.contains(w) {
@@ -316,26 +334,49 @@ pub fn lint(
                 .collect(),
             count: None,
             choice: None,
+            level: None,
         };
-        configuration(shader, compile, options, &all, true, &mut seen, &mut out);
+        let cx = Context {
+            shader,
+            compile,
+            options,
+            levels: &[],
+        };
+        configuration(&cx, &all, true, &mut seen, &mut out);
     }
     out.sort_by_key(|f| (f.diagnostic.span.start, f.diagnostic.span.end));
     out
 }
 
+/// What every configuration of one shader is compiled and linted with.
+struct Context<'a> {
+    shader: &'a Shader,
+    compile: &'a CompileOptions,
+    options: &'a LintOptions,
+    /// The levels to set, each (name, value), where the configuration does not compile
+    /// without.
+    levels: &'a [(String, String)],
+}
+
 /// Compiles and lints one configuration, adding the findings not `seen` yet; whether it
 /// compiled.
 fn configuration(
-    shader: &Shader,
-    compile: &CompileOptions,
-    options: &LintOptions,
+    cx: &Context,
     v: &Variant,
     together: bool,
     seen: &mut HashSet<(&'static str, Span)>,
     out: &mut Vec<Found>,
 ) -> bool {
+    let Context {
+        shader,
+        compile,
+        options,
+        levels,
+    } = *cx;
     let mut with = compile.clone();
-    let value = v.choice.clone().unwrap_or_else(|| "1".to_string());
+    let value = (v.choice.clone())
+        .or_else(|| v.level.as_ref().map(|l| l.0.clone()))
+        .unwrap_or_else(|| "1".to_string());
     with.defines
         .extend(v.defines.iter().map(|n| (n.clone(), value.clone())));
     let file = || SourceFile::new(shader.file.name(), shader.file.text());
@@ -345,12 +386,17 @@ fn configuration(
         // A group that uses constants the host defines with its flag (Cesium's `SDF_EDGE`
         // with `SDF`): once more with them defined as `1.0`.
         constants = host_constants(&compiled.diagnostics);
-        if constants.is_empty() {
-            return false;
-        }
         with.defines
             .extend(constants.iter().map(|n| (n.clone(), "1.0".to_string())));
+        if !constants.is_empty() {
+            compiled = essl::compile(file(), shader.stage, &with);
+        }
+    }
+    let mut leveled = false;
+    if !compiled.ok() && !levels.is_empty() {
+        with.defines.extend(levels.iter().cloned());
         compiled = essl::compile(file(), shader.stage, &with);
+        leveled = true;
     }
     if !compiled.ok() || compiled.naga.is_none() {
         return false;
@@ -362,6 +408,18 @@ fn configuration(
             named(&constants)
         );
     }
+    let also = if leveled {
+        let set: Vec<String> = levels
+            .iter()
+            .map(|(n, x)| format!("`{n}` set to {x}"))
+            .collect();
+        format!(
+            "; {} as well, for the groups that compare it declare what this code uses",
+            set.join(", ")
+        )
+    } else {
+        String::new()
+    };
     let found = crate::lint(&compiled, options);
     let folded = folded_divisions(shader, &compiled, options, v.count.is_some());
     for d in found.into_iter().chain(folded) {
@@ -382,6 +440,12 @@ fn configuration(
                 "found by compiling the configuration with {names} defined as `{choice}`, one of \
                  the functions the text chooses between unless its includer defines it"
             )
+        } else if let Some((value, default)) = &v.level {
+            format!(
+                "found by compiling the configuration with {names} defined as {value}, a level \
+                 the text sets to {default} unless its includer defines it, which turns on every \
+                 group that compares it"
+            )
         } else if let Some(value) = &v.count {
             format!(
                 "found by compiling the configuration with {names} defined as 1, a count the \
@@ -401,7 +465,7 @@ fn configuration(
             format!("found by compiling the configuration with {names} defined")
         };
         out.push(Found {
-            diagnostic: d.with_note(note),
+            diagnostic: d.with_note(note + &also),
             defines: v.defines.clone(),
         });
     }

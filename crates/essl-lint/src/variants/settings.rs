@@ -1,5 +1,6 @@
 //! The settings a text lets its includer make, each compiled as a configuration of its own:
-//! a choice between functions ([`choices`]) and a count ([`counts`]).
+//! a choice between functions ([`choices`]), a count ([`counts`]) and a level the
+//! conditionals compare ([`levels`]).
 
 use essl::source::Span;
 use essl::CompileOptions;
@@ -73,6 +74,7 @@ pub(super) fn choices(text: &str, lines: &[Line], options: &CompileOptions) -> V
                 groups: Vec::new(),
                 count: None,
                 choice: Some(v),
+                level: None,
             });
         }
     }
@@ -130,6 +132,7 @@ pub(super) fn counts(text: &str, lines: &[Line], options: &CompileOptions) -> Ve
             groups: Vec::new(),
             count: Some(value.to_string()),
             choice: None,
+            level: None,
         });
     }
     out
@@ -150,4 +153,112 @@ fn bounds_a_loop(text: &str, name: &str) -> bool {
             .unwrap_or(before);
         before.ends_with('<') || before.ends_with("<=")
     })
+}
+
+/// The levels a text lets its includer set, each as a configuration that sets it to the least
+/// value turning on every group that compares it: a macro the text defines as an integer right
+/// under `#ifndef` of the same name (Babylon's `NUM_BONE_INFLUENCERS 0`, a mesh without bones)
+/// and compares with integers in `#if` and `#elif` (`NUM_BONE_INFLUENCERS > 0`, `> 4`, `>= 2`,
+/// `== 3`). The code under those groups (skinning, morph targets) runs for every mesh that has
+/// them, and no flag turns it on.
+pub(super) fn levels(lines: &[Line], options: &CompileOptions) -> Vec<Variant> {
+    let mut out = Vec::new();
+    for w in lines.windows(3) {
+        let [open, define, close] = w else { continue };
+        if open.name != "ifndef" || define.name != "define" || close.name != "endif" {
+            continue;
+        }
+        let mut words = define.args.split_whitespace();
+        let (Some(name), Some(value), None) = (words.next(), words.next(), words.next()) else {
+            continue;
+        };
+        let Ok(default) = value.parse::<u32>() else {
+            continue;
+        };
+        if first_name(&open.args) != [name] || options.defines.iter().any(|(n, _)| n == name) {
+            continue;
+        }
+        let need = lines
+            .iter()
+            .filter(|l| l.name == "if" || l.name == "elif")
+            .filter_map(|l| least_turning_on(&l.args, name))
+            .max();
+        let Some(need) = need.filter(|&n| n > default) else {
+            continue;
+        };
+        out.push(Variant {
+            defines: vec![name.to_string()],
+            directive: open.span,
+            groups: Vec::new(),
+            count: None,
+            choice: None,
+            level: Some((need.to_string(), value.to_string())),
+        });
+    }
+    out
+}
+
+/// The least value of `name` that makes the comparisons of it in an `#if`'s expression
+/// `args` with integers hold (`name > 4` needs 5, `name >= 2` and `name == 2` need 2, `4 < name`
+/// needs 5); `None` where it is compared with none.
+fn least_turning_on(args: &str, name: &str) -> Option<u32> {
+    let word = |c: char| c.is_ascii_alphanumeric() || c == '_';
+    let mut need: Option<u32> = None;
+    for (i, _) in args.match_indices(name) {
+        let before = &args[..i];
+        let after = &args[i + name.len()..];
+        if before.ends_with(word) || after.starts_with(word) {
+            continue;
+        }
+        let number = |s: &str| -> Option<u32> {
+            let digits: String = s
+                .trim_start()
+                .chars()
+                .take_while(|c| c.is_ascii_digit())
+                .collect();
+            digits.parse().ok()
+        };
+        let right = after.trim_start();
+        let found = [(">=", 0), (">", 1), ("==", 0)]
+            .iter()
+            .find_map(|&(op, plus)| number(right.strip_prefix(op)?)?.checked_add(plus))
+            .or_else(|| {
+                // `4 < name`, `2 <= name`.
+                let left = before.trim_end();
+                let (rest, plus) = match left.strip_suffix("<=") {
+                    Some(r) => (r, 0),
+                    None => (left.strip_suffix('<')?, 1),
+                };
+                let digits: String = rest
+                    .trim_end()
+                    .chars()
+                    .rev()
+                    .take_while(|c| c.is_ascii_digit())
+                    .collect();
+                let n: u32 = digits.chars().rev().collect::<String>().parse().ok()?;
+                n.checked_add(plus)
+            });
+        if let Some(n) = found {
+            need = Some(need.map_or(n, |m| m.max(n)));
+        }
+    }
+    need
+}
+
+#[cfg(test)]
+mod tests {
+    use super::least_turning_on;
+
+    #[test]
+    fn the_least_value_each_comparison_needs() {
+        let n = |a: &str| least_turning_on(a, "N");
+        assert_eq!(n(" N > 4"), Some(5));
+        assert_eq!(n(" N>0 && defined(X)"), Some(1));
+        assert_eq!(n(" N >= 2 || N == 7"), Some(7));
+        assert_eq!(n(" 4 < N"), Some(5));
+        assert_eq!(n(" 2 <= N"), Some(2));
+        assert_eq!(n(" NN > 4 || M_N > 2"), None);
+        assert_eq!(n(" defined(N)"), None);
+        assert_eq!(n(" N > 4294967295"), None);
+    }
 }

@@ -201,3 +201,46 @@ fn each_function_a_text_chooses_between_is_linted() {
     let single = text.replace("#define DIFFUSE_FNC oren", "#define DIFFUSE_FNC lambert");
     assert!(found(&single, variants::DEFAULT).is_empty(), "{single}");
 }
+
+#[test]
+fn a_level_the_conditionals_compare_is_linted_where_it_turns_every_group_on() {
+    // Babylon's `NUM_BONE_INFLUENCERS`: the skinning under `> 0` and `> 1` runs for every mesh
+    // with bones, and the baked vertex animation reads the bone attributes `> 0` declares.
+    let text = "#version 300 es\n#ifndef BONES\n#define BONES 0\n#endif\nprecision highp float;\n\
+                uniform vec4 u_vat; uniform float u_time; uniform float u_a; uniform float u_b;\n\
+                #if BONES > 0\nin vec4 v_w;\n#endif\nout vec4 o;\nvoid main() {\n  o = vec4(1.0);\n\
+                #if BONES > 1\n  o.x /= u_a - u_b;\n#endif\n\
+                #ifdef VAT\n  float frames = u_vat.y - u_vat.x;\n  o.y = mod(u_time, frames) * v_w.x;\n#endif\n}\n";
+    let f = found(text, variants::DEFAULT);
+    let at = |s: &str| {
+        f.iter()
+            .find(|x| x.1 == s)
+            .unwrap_or_else(|| panic!("{s}: {f:#?}"))
+    };
+    let (_, _, defines, notes) = at("u_a - u_b");
+    assert_eq!(defines, &["BONES"]);
+    assert!(
+        notes
+            .iter()
+            .any(|n| n.contains("`BONES` defined as 2, a level the text sets to 0")),
+        "{notes:?}"
+    );
+    let (_, _, defines, notes) = at("frames");
+    assert_eq!(defines, &["VAT"]);
+    assert!(
+        notes.iter().any(|n| n.contains("`BONES` set to 2 as well")),
+        "{notes:?}"
+    );
+    // Defined by the options, or never compared: no configuration.
+    let mut compile = CompileOptions::default();
+    compile.defines.push(("BONES".into(), "0".into()));
+    assert!(variants::flags(text, &compile)
+        .iter()
+        .all(|v| v.level.is_none()));
+    let plain = text
+        .replace("#if BONES > 1", "#ifdef SKIN")
+        .replace("#if BONES > 0", "#ifdef SKIN");
+    assert!(variants::flags(&plain, &CompileOptions::default())
+        .iter()
+        .all(|v| v.level.is_none()));
+}
