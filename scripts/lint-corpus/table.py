@@ -145,7 +145,10 @@ def main():
         print()
         print(f"False positives: {total['fp']} of {n} findings ({100.0 * total['fp'] / n:.1f} %).")
     if hazards:
+        # A finding inside a macro's expansion reports the hazard on the `#define` it labels too.
         reported = {key(f["rule"], f["repo"], f["text"]) + (str(f["line"]),) for f in findings}
+        reported |= {key(f["rule"], f["repo"], d["text"]) + (str(d["line"]),)
+                     for f in findings for d in f.get("defined") or []}
         lowp = lowp_variables(findings)
         per_rule = collections.defaultdict(lambda: [0, 0])
         per_class = collections.defaultdict(lambda: [0, 0])

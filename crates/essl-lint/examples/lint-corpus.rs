@@ -1,6 +1,7 @@
 //! Lints the real-world corpus that `scripts/lint-corpus/fetch.sh` builds and prints one JSON
 //! line per finding (`file`, `repo`, `path`, `rule`, `severity`, `line`, `text`: the source
-//! line, trimmed), then a summary line (`"kind": "summary"`: shaders, compiled, findings per rule
+//! line, trimmed; `defined`: the line and text of the `#define` a finding inside a macro's
+//! expansion labels), then a summary line (`"kind": "summary"`: shaders, compiled, findings per rule
 //! and severity). Notes are included: the corpus counts every level.
 //!
 //! `cargo run --release -p essl-lint --example lint-corpus -- CORPUS_DIR [VARIANTS]`
@@ -69,6 +70,18 @@ fn main() {
         for (d, variant) in found {
             let lc = shader.file.line_col(d.span.start);
             let source_line = text.lines().nth(lc.line as usize - 1).unwrap_or("").trim();
+            // The `#define` a finding inside a macro's replacement list labels: the line a
+            // reader finds the hazard on.
+            let defined: Vec<Value> = d
+                .secondary
+                .iter()
+                .filter(|l| l.message.starts_with("in this expansion of"))
+                .map(|l| {
+                    let at = shader.file.line_col(l.span.start).line;
+                    let t = text.lines().nth(at as usize - 1).unwrap_or("").trim();
+                    json!({ "line": at, "text": t })
+                })
+                .collect();
             *per_rule
                 .entry(format!("{} {}", d.code, d.severity.as_str()))
                 .or_default() += 1;
@@ -87,6 +100,7 @@ fn main() {
                     "label": d.label,
                     "text": source_line,
                     "variant": variant,
+                    "defined": defined,
                 })
             );
         }
