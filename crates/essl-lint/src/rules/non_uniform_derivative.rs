@@ -17,7 +17,8 @@ declare_rule! {
     /// reads an input, `gl_FragCoord`, a texel or anything computed from them; after a `break`,
     /// `continue` or `return` some pixels take; in the right side of `&&`/`||`; in a function
     /// called from such a place (the finding names the call); and, as a note, after a `discard`
-    /// some pixels take.
+    /// some pixels take, there and in the functions called after it (Cesium's billboard reads its
+    /// SDF atlas in `getDistance`, called after its depth test's `discard`).
     ///
     /// ## Why is this bad?
     /// GPUs shade pixels in 2×2 quads and take derivatives as differences between neighbours.
@@ -49,8 +50,8 @@ declare_rule! {
     ///   uniform count): every pixel of a draw takes the same path.
     /// - `textureLod`, `textureGrad`, `texelFetch`, `textureSize`, and lookups in vertex shaders (no
     ///   derivatives there).
-    /// - A variable written after `if (…) discard;` (the pixels still running agree on it), and a
-    ///   function called after it.
+    /// - Control flow on a variable written after `if (…) discard;`: the pixels still running
+    ///   agree on it.
     ///
     /// Severity: a warning; a note after `if (…) discard;` with a varying condition, which the
     /// specification leaves undefined in the same way but GPUs keep working in practice: they

@@ -7,7 +7,9 @@
 //!
 //! The walk follows each function's statements in order; a `discard` under a condition that
 //! varies (or in a loop or `switch` that does) marks what follows it in its block and in the
-//! blocks around it. A `discard` in a called function marks the rest of that function only.
+//! blocks around it, and the functions called there (and those they call): Cesium's billboard
+//! shader reads its SDF atlas in `getDistance`, called after `doDepthTest`'s `discard`. A
+//! `discard` in a called function marks the rest of that function only.
 
 use essl::hir::visit::{self, Visitor};
 use essl::hir::{Cond, Expr, ExprKind, Stmt, StmtKind};
@@ -77,11 +79,42 @@ impl Uniformity<'_> {
         }
     }
 
-    /// Records every derivative and implicit-LOD lookup in `s` not already found.
+    /// Records every derivative and implicit-LOD lookup in `s`, and in the functions it calls
+    /// (each once, `why` then the first call), not already found.
     fn record_derivatives(&mut self, s: &Stmt, why: Reason) {
-        let mut calls = Calls(Vec::new());
+        let mut calls = Calls::default();
         calls.visit_stmt(s);
-        for (span, op) in calls.0 {
+        let mut walked: Vec<usize> = Vec::new();
+        let mut pending: Vec<(usize, Reason)> = calls
+            .functions
+            .iter()
+            .map(|&(f, span)| (f, Self::called_after(span)))
+            .collect();
+        self.record(&calls.builtins, why);
+        while let Some((f, why)) = pending.pop() {
+            if walked.contains(&f) {
+                continue;
+            }
+            walked.push(f);
+            let mut inner = Calls::default();
+            for s in &self.m.functions[f].body {
+                inner.visit_stmt(s);
+            }
+            self.record(&inner.builtins, why);
+            pending.extend(inner.functions.iter().map(|&(g, _)| (g, why)));
+        }
+    }
+
+    /// The reason for what a function called after a `discard` runs: the call.
+    fn called_after(span: essl::source::Span) -> Reason {
+        Reason {
+            span,
+            what: "called here after a `discard` some pixels take",
+        }
+    }
+
+    fn record(&mut self, builtins: &[(essl::source::Span, essl::hir::BuiltinFn)], why: Reason) {
+        for &(span, op) in builtins {
             if self.found.iter().any(|f| f.span == span) {
                 continue;
             }
@@ -95,15 +128,22 @@ impl Uniformity<'_> {
     }
 }
 
-/// The built-ins that take derivatives, with their spans, in source order.
-struct Calls(Vec<(essl::source::Span, essl::hir::BuiltinFn)>);
+/// The built-ins that take derivatives, with their spans, and the user functions called, with
+/// the calls' spans, in source order.
+#[derive(Default)]
+struct Calls {
+    builtins: Vec<(essl::source::Span, essl::hir::BuiltinFn)>,
+    functions: Vec<(usize, essl::source::Span)>,
+}
 
 impl Visitor for Calls {
     fn visit_expr(&mut self, e: &Expr) {
-        if let ExprKind::Builtin(op, _) = &e.kind {
-            if takes_derivatives(*op) {
-                self.0.push((e.span, *op));
+        match &e.kind {
+            ExprKind::Builtin(op, _) if takes_derivatives(*op) => {
+                self.builtins.push((e.span, *op));
             }
+            ExprKind::Call(f, _) => self.functions.push((*f, e.span)),
+            _ => {}
         }
         visit::walk_expr(self, e);
     }

@@ -1593,3 +1593,34 @@ fn a_finding_in_a_macro_labels_its_define() {
         "{labels:?}"
     );
 }
+
+#[test]
+fn a_lookup_in_a_function_called_after_a_discard_is_a_note() {
+    // Cesium's billboard reads its SDF atlas in `getDistance`, called after the depth test's
+    // `discard`; the lookup in a function the helper calls is reached too.
+    let functions = "float atlas(vec2 p) { return texture(u_tex, p).r; }\n\
+                     float dist(vec2 p) { return atlas(p * 2.0); }";
+    let notes = found_with(
+        "highp",
+        "non-uniform-derivative",
+        functions,
+        "  if (t.a < 0.5) discard;\n  r = dist(v_uv);",
+    );
+    assert_eq!(
+        notes,
+        [(
+            N,
+            "float atlas(vec2 p) { return texture(u_tex, p).r; }".to_string()
+        )]
+    );
+    // Called before the `discard`, or after one every pixel of the draw takes: nothing.
+    for body in [
+        "  r = dist(v_uv);\n  if (t.a < 0.5) discard;",
+        "  if (u_on) discard;\n  r = dist(v_uv);",
+    ] {
+        assert!(
+            found_with("highp", "non-uniform-derivative", functions, body).is_empty(),
+            "{body}"
+        );
+    }
+}
