@@ -6,9 +6,11 @@
 //! shader's outputs, declared or built-in (`gl_FragColor`, `gl_FragData`, `gl_Position`,
 //! `gl_PointSize`, `gl_FragDepth`). A vector's components are tracked one by one (`v.xy = …; v.z = …;`
 //! writes all of a `vec3`; `v[i] = …` in a loop whose counter `i` takes 0..=2 writes `v.xyz`,
-//! [`counters`], and through any other dynamic index every component); an array, matrix or
-//! struct counts as written once any part of it is (dynamic indices make anything finer
-//! guesswork). The state at a point is the set of
+//! [`counters`], and through any other dynamic index every component), and so are a struct's
+//! members (up to 8; a read of the whole struct needs the members some path has written
+//! before it written on every path); an array, matrix or larger struct counts
+//! as written once any part of it is (dynamic indices make anything finer guesswork). The
+//! state at a point is the set of
 //! variables written on *every* path to it: branches intersect, a branch that returns,
 //! discards, breaks or continues adds nothing, a loop body may run zero times unless its bounds
 //! are constant and let it run once (`for (int i = 0; i < 4; i++)`), the right side of `&&` and
@@ -141,16 +143,27 @@ struct Walk<'a> {
     /// The counters of the enclosing loops and the values they take there
     /// ([`counters::counter_range`]).
     counters: Vec<(usize, i64, i64)>,
+    /// For a struct variable tracked member by member: the members written so far on any
+    /// path. A read needs those written on every path; a member no path has written yet
+    /// counts as written once another is, as a struct did before members were tracked (a
+    /// struct an engine fills per configuration, passed whole to a function that reads the
+    /// members that configuration set).
+    ever: HashMap<Var, u8>,
 }
 
 /// A uniform a condition tests, with the value it requires: a loose uniform, or a member of a
 /// uniform block.
 type Key = (usize, usize, bool);
 
-/// The mask of all of a variable of type `t`: one bit per vector component, one otherwise.
-fn full_mask(t: &Type) -> u8 {
+/// The mask of all of a variable of type `t`: one bit per vector component or per member of a
+/// struct of at most 8, one otherwise.
+fn full_mask(m: &hir::Module, t: &Type) -> u8 {
     match t {
         Type::Vector(_, n) => (1u8 << n) - 1,
+        Type::Struct(id) => match m.structs.get(id.0 as usize).map(|s| s.members.len()) {
+            Some(n @ 1..=8) => ((1u16 << n) - 1) as u8,
+            _ => 1,
+        },
         _ => 1,
     }
 }
@@ -159,7 +172,7 @@ fn full_mask(t: &Type) -> u8 {
 fn track_globals(m: &hir::Module, full: &mut HashMap<Var, u8>) {
     for (i, g) in m.globals.iter().enumerate() {
         if tracked_global(g) {
-            full.insert(Var::Global(i), full_mask(&g.ty));
+            full.insert(Var::Global(i), full_mask(m, &g.ty));
         }
     }
     for (b, mask) in BUILTIN_OUTPUTS {
@@ -189,12 +202,12 @@ impl<'a> Walk<'a> {
         let mut full = HashMap::default();
         for (i, p) in f.params.iter().enumerate() {
             if p.mode == ParamMode::Out {
-                full.insert(Var::Param(i), full_mask(&p.ty));
+                full.insert(Var::Param(i), full_mask(m, &p.ty));
             }
         }
         for (i, l) in f.locals.iter().enumerate() {
             if l.constant.is_none() {
-                full.insert(Var::Local(i), full_mask(&l.ty));
+                full.insert(Var::Local(i), full_mask(m, &l.ty));
             }
         }
         if main {
@@ -216,6 +229,7 @@ impl<'a> Walk<'a> {
             truth: HashMap::default(),
             nest: 0,
             counters: Vec::new(),
+            ever: HashMap::default(),
         }
     }
 
@@ -276,10 +290,31 @@ impl<'a> Walk<'a> {
     }
 
     fn written(&self, st: &State, v: Var, bits: u8) -> bool {
-        match self.full.get(&v) {
-            None => true,
-            Some(_) => st.get(&v).copied().unwrap_or(0) & bits == bits,
+        let Some(&all) = self.full.get(&v) else {
+            return true;
+        };
+        let have = st.get(&v).copied().unwrap_or(0);
+        if all != 1 && self.is_struct(v) {
+            let needed = bits & self.ever.get(&v).copied().unwrap_or(0);
+            return if needed == 0 {
+                have & bits != 0
+            } else {
+                have & needed == needed
+            };
         }
+        have & bits == bits
+    }
+
+    /// Whether `v` is of a struct type (tracked member by member where [`full_mask`] says).
+    fn is_struct(&self, v: Var) -> bool {
+        let f = &self.m.functions[self.fid];
+        let ty = match v {
+            Var::Local(i) => f.locals.get(i).map(|l| &l.ty),
+            Var::Param(i) => f.params.get(i).map(|p| &p.ty),
+            Var::Global(g) => self.m.globals.get(g).map(|g| &g.ty),
+            Var::Builtin(_) | Var::Result => None,
+        };
+        matches!(ty, Some(Type::Struct(_)))
     }
 
     fn read(&mut self, st: &State, v: Var, bits: u8, span: Span) {
@@ -311,6 +346,7 @@ impl<'a> Walk<'a> {
         }
         if self.full.contains_key(&v) {
             *st.entry(v).or_insert(0) |= bits;
+            *self.ever.entry(v).or_insert(0) |= bits;
         }
     }
 
@@ -335,14 +371,19 @@ impl<'a> Walk<'a> {
         match &e.kind {
             ExprKind::Swizzle(base, comps) => {
                 let (v, all) = self.place(base, st)?;
-                if all == 1 {
-                    return Some((v, 1));
+                // Components of a struct's member: the member's bit.
+                if all.count_ones() == 1 || self.var_of(base).is_none() {
+                    return Some((v, all));
                 }
                 Some((v, comps.iter().fold(0u8, |m, c| m | (1 << c)) & all))
             }
             ExprKind::Index(base, index) => {
                 self.expr(index, st);
                 let (v, all) = self.place(base, st)?;
+                // An element of a struct's member: the member's bit.
+                if self.var_of(base).is_none() {
+                    return Some((v, all));
+                }
                 let bit = match (all, index.as_const().and_then(|c| c.as_int())) {
                     (1, _) => 1,
                     (_, Some(i)) if (0..8).contains(&i) => (1u8 << i) & all,
@@ -350,9 +391,16 @@ impl<'a> Walk<'a> {
                 };
                 Some((v, bit))
             }
-            ExprKind::Member(base, _) => {
-                let (v, _) = self.place(base, st)?;
-                Some((v, 1))
+            ExprKind::Member(base, i) => {
+                let (v, all) = self.place(base, st)?;
+                // A member of the struct variable itself has its bit; deeper, the bits of the
+                // outermost member.
+                let bit = if self.var_of(base).is_some() && all != 1 {
+                    (1u8 << (*i).min(7)) & all
+                } else {
+                    all
+                };
+                Some((v, bit))
             }
             // A variable the walk does not track.
             ExprKind::Local(_)
@@ -506,7 +554,7 @@ impl<'a> Walk<'a> {
         let m = self.m;
         let mut w = Walk::new(m, f, false, self.summaries);
         let v = Var::Param(i);
-        w.full.insert(v, full_mask(&m.functions[f].params[i].ty));
+        w.full.insert(v, full_mask(m, &m.functions[f].params[i].ty));
         let mut st = w.start();
         let _ = w.stmts(&m.functions[f].body, st.clone());
         st.clear();

@@ -14,7 +14,10 @@ declare_rule! {
     /// Reports a read of a variable that some path reaches before any write to it: a local declared
     /// without a value (`float d;`) and assigned only in some branches, only in a loop that may not
     /// run, only in some components (`v.xy = …` before reading all of `v`; `v[i] = …` in a loop
-    /// whose counter stops short of a component, `for (int i = 0; i < 3; i++)` then `v.a`), or
+    /// whose counter stops short of a component, `for (int i = 0; i < 3; i++)` then `v.a`; a
+    /// struct's member written under an `if` only, then the struct read whole — p5's
+    /// `if (uSpecular) lr.specular = …; lr.diffuse = …; return lr;` — or a member read that no
+    /// path writes), or
     /// passed as an `inout` argument to a function that reads the parameter before writing it; an
     /// `out` parameter read before the function writes it, or left unwritten on some path through
     /// a `void` function (the caller's variable is then undefined); and in `main` (and the
@@ -60,9 +63,14 @@ declare_rule! {
     ///   `switch` with a `default`, the body of a loop whose constant bounds make it run
     ///   (`for (int i = 0; i < 4; i++)`), an `out` argument of a call, all components of a vector
     ///   written one by one.
-    /// - An array, matrix or struct once any part of it is written (which parts a dynamic index
-    ///   writes is not followed), and every component of a vector written through a dynamic
-    ///   index other than a loop counter with constant bounds (`v[k] = …` for a uniform `k`).
+    /// - An array or matrix once any part of it is written (which parts a dynamic index writes
+    ///   is not followed), and every component of a vector written through a dynamic index other
+    ///   than a loop counter with constant bounds (`v[k] = …` for a uniform `k`).
+    /// - A struct read whole (passed, copied, returned) with members no path has written yet,
+    ///   once another member is: an engine fills the members its configuration uses (three.js's
+    ///   `PhysicalMaterial` under `USE_CLEARCOAT`, `USE_SHEEN`) and passes the struct to
+    ///   functions that read those only. Structs of more than 8 members count as written once
+    ///   any part is.
     /// - An `inout` argument the callee writes before reading, and an `out` parameter left unset by a
     ///   function that returns a value (`bool hit(…, out float t)`): the result says whether it is
     ///   set.

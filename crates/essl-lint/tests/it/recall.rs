@@ -1624,3 +1624,45 @@ fn a_lookup_in_a_function_called_after_a_discard_is_a_note() {
         );
     }
 }
+
+#[test]
+fn a_struct_member_written_on_some_paths_only() {
+    // p5's `light()`: the specular term is written only where `uSpecular` is set, and the
+    // caller reads it.
+    let functions = "struct Light { float specular; float diffuse; };\n\
+                     Light light(vec3 l) {\n  Light lr;\n  if (u_on) lr.specular = max(l.z, 0.0);\n  \
+                     lr.diffuse = max(l.x, 0.0);\n  return lr;\n}";
+    let found = found_with(
+        "highp",
+        "uninitialised-read",
+        functions,
+        "  Light x = light(n);\n  r = x.specular + x.diffuse;",
+    );
+    assert_eq!(found, [(W, "return lr;".to_string())]);
+    // A member no path writes, read by itself.
+    let found = found_with(
+        "highp",
+        "uninitialised-read",
+        "struct Light { float specular; float diffuse; };",
+        "  Light x;\n  x.diffuse = 1.0;\n  r = x.specular;",
+    );
+    assert_eq!(found, [(W, "r = x.specular;".to_string())]);
+    // Written on every path; and a struct filled in part, passed whole (three.js's materials).
+    for (functions, body) in [
+        (
+            "struct Light { float specular; float diffuse; };",
+            "  Light x;\n  x.specular = 0.0;\n  if (u_on) x.specular = 1.0;\n  x.diffuse = 1.0;\n  \
+             Light y = x;\n  r = y.specular;",
+        ),
+        (
+            "struct Light { float specular; float diffuse; };\n\
+             float use(Light m) { return m.diffuse; }",
+            "  Light x;\n  x.diffuse = 1.0;\n  r = use(x);",
+        ),
+    ] {
+        assert!(
+            found_with("highp", "uninitialised-read", functions, body).is_empty(),
+            "{body}"
+        );
+    }
+}
