@@ -101,29 +101,40 @@ fn defines_function(text: &str, name: &str) -> bool {
     })
 }
 
+/// The macros a text defines with a value right under `#ifndef` of the same name, which the
+/// options do not define: each `#ifndef`, the name and the value (`#ifndef N` / `#define N 5` /
+/// `#endif`).
+fn defaults<'a>(
+    lines: &'a [Line],
+    options: &'a CompileOptions,
+) -> impl Iterator<Item = (&'a Line, &'a str, &'a str)> {
+    lines.windows(3).filter_map(|w| {
+        let [open, define, close] = w else {
+            return None;
+        };
+        if open.name != "ifndef" || define.name != "define" || close.name != "endif" {
+            return None;
+        }
+        let mut words = define.args.split_whitespace();
+        let (Some(name), Some(value), None) = (words.next(), words.next(), words.next()) else {
+            return None;
+        };
+        let given = options.defines.iter().any(|(n, _)| n == name);
+        (first_name(&open.args) == [name] && !given).then_some((open, name, value))
+    })
+}
+
 /// The counts a text lets its includer set, each as a configuration that sets it to 1: a macro
 /// the text defines as an integer above 1 right under `#ifndef` of the same name, and compares
 /// a loop variable with (`i < RAYMARCH_AO_SAMPLES`, `< float(N)`). One iteration is the
 /// fewest a count can ask for, and the value where `1.0 / float(N - 1)` divides by zero.
 pub(super) fn counts(text: &str, lines: &[Line], options: &CompileOptions) -> Vec<Variant> {
     let mut out = Vec::new();
-    for w in lines.windows(3) {
-        let [open, define, close] = w else { continue };
-        if open.name != "ifndef" || define.name != "define" || close.name != "endif" {
-            continue;
-        }
-        let mut words = define.args.split_whitespace();
-        let (Some(name), Some(value), None) = (words.next(), words.next(), words.next()) else {
-            continue;
-        };
+    for (open, name, value) in defaults(lines, options) {
         let above_one = value.len() < 10
             && value.bytes().all(|b| b.is_ascii_digit())
             && value.parse::<u32>().is_ok_and(|v| v > 1);
-        if !above_one
-            || first_name(&open.args) != [name]
-            || options.defines.iter().any(|(n, _)| n == name)
-            || !bounds_a_loop(text, name)
-        {
+        if !above_one || !bounds_a_loop(text, name) {
             continue;
         }
         out.push(Variant {
@@ -163,21 +174,10 @@ fn bounds_a_loop(text: &str, name: &str) -> bool {
 /// them, and no flag turns it on.
 pub(super) fn levels(lines: &[Line], options: &CompileOptions) -> Vec<Variant> {
     let mut out = Vec::new();
-    for w in lines.windows(3) {
-        let [open, define, close] = w else { continue };
-        if open.name != "ifndef" || define.name != "define" || close.name != "endif" {
-            continue;
-        }
-        let mut words = define.args.split_whitespace();
-        let (Some(name), Some(value), None) = (words.next(), words.next(), words.next()) else {
-            continue;
-        };
+    for (open, name, value) in defaults(lines, options) {
         let Ok(default) = value.parse::<u32>() else {
             continue;
         };
-        if first_name(&open.args) != [name] || options.defines.iter().any(|(n, _)| n == name) {
-            continue;
-        }
         let need = lines
             .iter()
             .filter(|l| l.name == "if" || l.name == "elif")
