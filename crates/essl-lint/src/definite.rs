@@ -31,6 +31,9 @@ use essl::types::Type;
 
 mod conditions;
 mod counters;
+mod places;
+
+use places::full_mask;
 
 /// A variable the analysis tracks.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
@@ -75,6 +78,9 @@ pub struct Read {
     pub span: Span,
     /// For a global read in a called function: the call in `main` it is reached through.
     pub through: Option<Span>,
+    /// For a struct read whole: the members some path leaves unwritten (empty where no member
+    /// is written).
+    pub members: Vec<String>,
 }
 
 /// Every read of a tracked variable that may come before any write, one per variable and
@@ -154,19 +160,6 @@ struct Walk<'a> {
 /// A uniform a condition tests, with the value it requires: a loose uniform, or a member of a
 /// uniform block.
 type Key = (usize, usize, bool);
-
-/// The mask of all of a variable of type `t`: one bit per vector component or per member of a
-/// struct of at most 8, one otherwise.
-fn full_mask(m: &hir::Module, t: &Type) -> u8 {
-    match t {
-        Type::Vector(_, n) => (1u8 << n) - 1,
-        Type::Struct(id) => match m.structs.get(id.0 as usize).map(|s| s.members.len()) {
-            Some(n @ 1..=8) => ((1u16 << n) - 1) as u8,
-            _ => 1,
-        },
-        _ => 1,
-    }
-}
 
 /// Tracks the globals of `m` (those [`tracked_global`] says) and the built-in outputs it uses.
 fn track_globals(m: &hir::Module, full: &mut HashMap<Var, u8>) {
@@ -259,6 +252,7 @@ impl<'a> Walk<'a> {
                     var: Var::Result,
                     span: last.span,
                     through: None,
+                    members: Vec::new(),
                 });
             }
         }
@@ -284,37 +278,10 @@ impl<'a> Walk<'a> {
                     var: v,
                     span: at,
                     through: None,
+                    members: Vec::new(),
                 });
             }
         }
-    }
-
-    fn written(&self, st: &State, v: Var, bits: u8) -> bool {
-        let Some(&all) = self.full.get(&v) else {
-            return true;
-        };
-        let have = st.get(&v).copied().unwrap_or(0);
-        if all != 1 && self.is_struct(v) {
-            let needed = bits & self.ever.get(&v).copied().unwrap_or(0);
-            return if needed == 0 {
-                have & bits != 0
-            } else {
-                have & needed == needed
-            };
-        }
-        have & bits == bits
-    }
-
-    /// Whether `v` is of a struct type (tracked member by member where [`full_mask`] says).
-    fn is_struct(&self, v: Var) -> bool {
-        let f = &self.m.functions[self.fid];
-        let ty = match v {
-            Var::Local(i) => f.locals.get(i).map(|l| &l.ty),
-            Var::Param(i) => f.params.get(i).map(|p| &p.ty),
-            Var::Global(g) => self.m.globals.get(g).map(|g| &g.ty),
-            Var::Builtin(_) | Var::Result => None,
-        };
-        matches!(ty, Some(Type::Struct(_)))
     }
 
     fn read(&mut self, st: &State, v: Var, bits: u8, span: Span) {
@@ -328,11 +295,13 @@ impl<'a> Walk<'a> {
             return;
         }
         if self.reported.insert(v) {
+            let members = self.unwritten_members(st, v, bits);
             self.reads.push(Read {
                 function: self.fid,
                 var: v,
                 span,
                 through: None,
+                members,
             });
         }
     }
@@ -348,81 +317,6 @@ impl<'a> Walk<'a> {
             *st.entry(v).or_insert(0) |= bits;
             *self.ever.entry(v).or_insert(0) |= bits;
         }
-    }
-
-    /// The variable an expression names, if it is one the walk knows.
-    fn var_of(&self, e: &Expr) -> Option<Var> {
-        let v = match e.kind {
-            ExprKind::Local(i) => Var::Local(i),
-            ExprKind::Param(i) => Var::Param(i),
-            ExprKind::Global(g) => Var::Global(g),
-            ExprKind::BuiltinVar(b) => Var::Builtin(b),
-            _ => return None,
-        };
-        self.full.contains_key(&v).then_some(v)
-    }
-
-    /// The variable and the bits a place expression (`v`, `v.xz`, `v[1]`, `a[i].m`) selects;
-    /// the index expressions inside it are read.
-    fn place(&mut self, e: &Expr, st: &mut State) -> Option<(Var, u8)> {
-        if let Some(v) = self.var_of(e) {
-            return Some((v, self.full[&v]));
-        }
-        match &e.kind {
-            ExprKind::Swizzle(base, comps) => {
-                let (v, all) = self.place(base, st)?;
-                // Components of a struct's member: the member's bit.
-                if all.count_ones() == 1 || self.var_of(base).is_none() {
-                    return Some((v, all));
-                }
-                Some((v, comps.iter().fold(0u8, |m, c| m | (1 << c)) & all))
-            }
-            ExprKind::Index(base, index) => {
-                self.expr(index, st);
-                let (v, all) = self.place(base, st)?;
-                // An element of a struct's member: the member's bit.
-                if self.var_of(base).is_none() {
-                    return Some((v, all));
-                }
-                let bit = match (all, index.as_const().and_then(|c| c.as_int())) {
-                    (1, _) => 1,
-                    (_, Some(i)) if (0..8).contains(&i) => (1u8 << i) & all,
-                    _ => self.counter_bits(index).map_or(all, |b| b & all),
-                };
-                Some((v, bit))
-            }
-            ExprKind::Member(base, i) => {
-                let (v, all) = self.place(base, st)?;
-                // A member of the struct variable itself has its bit; deeper, the bits of the
-                // outermost member.
-                let bit = if self.var_of(base).is_some() && all != 1 {
-                    (1u8 << (*i).min(7)) & all
-                } else {
-                    all
-                };
-                Some((v, bit))
-            }
-            // A variable the walk does not track.
-            ExprKind::Local(_)
-            | ExprKind::Param(_)
-            | ExprKind::Global(_)
-            | ExprKind::BuiltinVar(_) => None,
-            _ => {
-                self.expr(e, st);
-                None
-            }
-        }
-    }
-
-    /// The components an index that is an enclosing loop's counter selects, one bit per
-    /// value the counter takes there (`None`: not a counter, or a value past a vector's end).
-    fn counter_bits(&self, index: &Expr) -> Option<u8> {
-        let ExprKind::Local(i) = index.kind else {
-            return None;
-        };
-        let &(_, lo, hi) = self.counters.iter().rev().find(|c| c.0 == i)?;
-        ((0..8).contains(&lo) && (0..8).contains(&hi))
-            .then(|| (lo..=hi).fold(0u8, |m, k| m | (1 << k)))
     }
 
     fn expr(&mut self, e: &Expr, st: &mut State) {
@@ -530,6 +424,7 @@ impl<'a> Walk<'a> {
                                 var: v,
                                 span: *at,
                                 through: Some(span),
+                                members: Vec::new(),
                             });
                         }
                     }

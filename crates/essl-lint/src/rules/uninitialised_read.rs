@@ -129,6 +129,15 @@ fn check(cx: &Cx, out: &mut Vec<Diagnostic>) {
                 format!("`out` parameter `{name}` is not written on some path: the caller's variable is left undefined"),
                 "some path reaches this exit without writing it",
             )
+        } else if !r.members.is_empty() {
+            let list: Vec<String> = r.members.iter().map(|m| format!("`{name}.{m}`")).collect();
+            (
+                format!(
+                    "{what} `{name}` is read whole before {} is written on some path",
+                    list.join(" and ")
+                ),
+                "read here: some path reaches it without writing that member",
+            )
         } else {
             (
                 format!("{what} `{name}` is read before it is written on some path"),
@@ -155,6 +164,13 @@ fn check(cx: &Cx, out: &mut Vec<Diagnostic>) {
                         decl,
                         format!("{name} = {zero}"),
                     ));
+            }
+            _ if !r.members.is_empty() => {
+                let list: Vec<String> = r.members.iter().map(|m| format!("`{name}.{m}`")).collect();
+                d = d.with_help(format!(
+                    "write {} on every path before the read (an `else` for the `if` that writes it), or initialise `{name}`",
+                    list.join(" and ")
+                ));
             }
             _ => d = d.with_help("write it on every path before the read, or initialise it"),
         }

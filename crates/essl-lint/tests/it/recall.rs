@@ -1639,6 +1639,20 @@ fn a_struct_member_written_on_some_paths_only() {
         "  Light x = light(n);\n  r = x.specular + x.diffuse;",
     );
     assert_eq!(found, [(W, "return lr;".to_string())]);
+    let text = shader_with(
+        "highp",
+        functions,
+        "  Light x = light(n);\n  r = x.specular;",
+    );
+    let messages: Vec<String> = lint(&super::compiled("t.frag", &text), &LintOptions::default())
+        .into_iter()
+        .filter(|d| d.code == "uninitialised-read")
+        .map(|d| d.message)
+        .collect();
+    assert_eq!(
+        messages,
+        ["variable `lr` is read whole before `lr.specular` is written on some path"]
+    );
     // A member no path writes, read by itself.
     let found = found_with(
         "highp",
