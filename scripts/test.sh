@@ -13,7 +13,9 @@ cd "$(dirname "$0")/.."
 # The fresh lint corpus (npm packages pinned by integrity; docs/lints/corpus.md) beside the
 # checkout: the test that every classified true positive is still reported reads it.
 export ESSL_LINT_CORPORA="${ESSL_LINT_CORPORA:-$(cd .. && pwd)/lint-corpus}"
-if [ ! -f "$ESSL_LINT_CORPORA/fresh/manifest.jsonl" ]; then
+# A corpus assembled by older scripts (its stamp differs) is assembled again.
+if [ ! -f "$ESSL_LINT_CORPORA/fresh/manifest.jsonl" ] \
+    || [ "$(cat "$ESSL_LINT_CORPORA/fresh/assembly.stamp" 2>/dev/null)" != "$(./scripts/lint-corpus/fresh-stamp.sh)" ]; then
     ./scripts/lint-corpus/fetch-fresh.sh "$ESSL_LINT_CORPORA/fresh" "$ESSL_LINT_CORPORA/old"
 fi
 export XDG_RUNTIME_DIR="${XDG_RUNTIME_DIR:-$(mktemp -d)}"

@@ -40,4 +40,5 @@ done
 
 rm -rf "$out/shaders" "$out/manifest.jsonl"
 python3 "$here/extract-fresh.py" --npm "$npm_dir" --out "$out" --old "$old"
+"$here/fresh-stamp.sh" > "$out/assembly.stamp"
 echo "corpus: $(wc -l < "$out/manifest.jsonl") shaders in $out"
