@@ -16,7 +16,11 @@
 //! warning of that folded division is a finding of `division-by-difference` there. And a
 //! choice between functions (`#ifndef DIFFUSE_FNC`, `#define DIFFUSE_FNC diffuseLambert` under
 //! one flag and `diffuseOrenNayar` under another) is compiled with each of them: the function
-//! the flags' configurations leave uncalled is code an includer runs by choosing it.
+//! the flags' configurations leave uncalled is code an includer runs by choosing it. And a
+//! level the conditionals compare (`#ifndef NUM_BONE_INFLUENCERS`, `#define
+//! NUM_BONE_INFLUENCERS 0`, `#if NUM_BONE_INFLUENCERS > 0`) is compiled at the least value that
+//! turns every such group on, and with it any flag's configuration that does not compile
+//! without (the groups that compare it declare what the flag's code uses).
 //!
 //! Written by hand: the directive lines are read with a line scanner, not the preprocessor,
 //! because the groups inside skipped groups matter here and the preprocessor does not
@@ -55,14 +59,14 @@ pub struct Variant {
     /// The code of each group it turns on: from the end of the directive's line to the next
     /// directive of its block.
     pub groups: Vec<Span>,
-    /// For a count rather than a flag ([`settings::counts`]): the value the text gives it unless it is
-    /// defined before; the configuration defines it as 1.
+    /// For a count rather than a flag (`settings::counts`): the value the text gives it unless
+    /// it is defined before; the configuration defines it as 1.
     pub count: Option<String>,
-    /// For a choice rather than a flag ([`settings::choices`]): the value the configuration defines the
-    /// macro as, one of those the text chooses between.
+    /// For a choice rather than a flag (`settings::choices`): the value the configuration
+    /// defines the macro as, one of those the text chooses between.
     pub choice: Option<String>,
-    /// For a level rather than a flag ([`settings::levels`]): the value the configuration defines the
-    /// macro as, and the value the text gives it unless it is defined before.
+    /// For a level rather than a flag (`settings::levels`): the value the configuration defines
+    /// the macro as, and the value the text gives it unless it is defined before.
     pub level: Option<(String, String)>,
 }
 
