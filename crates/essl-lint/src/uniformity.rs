@@ -79,6 +79,7 @@ pub fn divergent_derivatives(m: &hir::Module) -> Vec<Finding> {
         record: false,
         found: Vec::new(),
         fid: 0,
+        walked_after: HashSet::default(),
     };
     for _ in 0..16 {
         u.changed = false;
@@ -121,6 +122,8 @@ struct Uniformity<'a> {
     record: bool,
     found: Vec<Finding>,
     fid: usize,
+    /// The functions whose lookups a call after a `discard` has recorded (each once).
+    walked_after: HashSet<usize>,
 }
 
 impl Uniformity<'_> {

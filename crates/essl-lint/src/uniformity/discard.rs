@@ -80,11 +80,10 @@ impl Uniformity<'_> {
     }
 
     /// Records every derivative and implicit-LOD lookup in `s`, and in the functions it calls
-    /// (each once, `why` then the first call), not already found.
+    /// (each function once in the whole walk, `why` then its first call), not already found.
     fn record_derivatives(&mut self, s: &Stmt, why: Reason) {
         let mut calls = Calls::default();
         calls.visit_stmt(s);
-        let mut walked: Vec<usize> = Vec::new();
         let mut pending: Vec<(usize, Reason)> = calls
             .functions
             .iter()
@@ -92,10 +91,9 @@ impl Uniformity<'_> {
             .collect();
         self.record(&calls.builtins, why);
         while let Some((f, why)) = pending.pop() {
-            if walked.contains(&f) {
+            if f >= self.m.functions.len() || !self.walked_after.insert(f) {
                 continue;
             }
-            walked.push(f);
             let mut inner = Calls::default();
             for s in &self.m.functions[f].body {
                 inner.visit_stmt(s);
