@@ -688,7 +688,7 @@ fn length_guarded(
 /// `texelFetch(uNormalBuffer, p, 0).xyz`), whose ordinary values reach the zero vector: every
 /// black texel, such as the background a G-buffer is cleared to.
 fn black_texel(cx: &Cx, n: Normalize) -> Option<Diagnostic> {
-    let Normalize { f, id, call, x: at } = n;
+    let Normalize { f, id, x: at, .. } = n;
     // A texel through a matrix (`czm_normal * texel`) is the zero vector wherever the texel
     // is.
     let x = linear_operand(cx, f, id, at);
@@ -703,8 +703,7 @@ fn black_texel(cx: &Cx, n: Normalize) -> Option<Diagnostic> {
     if !t.comps().iter().all(|c| c.lo == 0.0) || !cx.origin(&[(id, x)]).texels {
         return None;
     }
-    let g = cx.guards(f, id, call);
-    if cx.nonzero(f, id, x, &g) || length_guarded(cx, f, id, x, &g) {
+    if kept_from_zero(cx, n, x) {
         return None;
     }
     Some(
@@ -723,13 +722,12 @@ fn black_texel(cx: &Cx, n: Normalize) -> Option<Diagnostic> {
 }
 
 /// The finding for `normalize(x)` of what is left of a value outside a box,
-/// `p - clamp(p, lo, hi)` ([`residual::clamp_residual`]): the zero vector for every pixel or
-/// vertex whose `p` is inside.
+/// `p - clamp(p, lo, hi)` ([`super::residual::clamp_residual`]): the zero vector for every
+/// pixel or vertex whose `p` is inside.
 fn inside_box(cx: &Cx, n: Normalize) -> Option<Diagnostic> {
-    let Normalize { f, id, call, x } = n;
+    let Normalize { f, id, x, .. } = n;
     let clamp = super::residual::clamp_residual(cx, f, id, x)?;
-    let g = cx.guards(f, id, call);
-    if cx.nonzero(f, id, x, &g) || length_guarded(cx, f, id, x, &g) {
+    if kept_from_zero(cx, n, x) {
         return None;
     }
     let mut d = Diagnostic::rule_warning(
@@ -749,4 +747,12 @@ fn inside_box(cx: &Cx, n: Normalize) -> Option<Diagnostic> {
         d = d.with_secondary(span, "equal to its argument inside the bounds");
     }
     Some(d)
+}
+
+/// Whether the guards at `normalize`'s call keep vector `x` from the zero vector: a test of
+/// the vector or of its length (`dot(c, c) > 1e-12 ? normalize(c) : …`).
+fn kept_from_zero(cx: &Cx, n: Normalize, x: Handle<E>) -> bool {
+    let Normalize { f, id, call, .. } = n;
+    let g = cx.guards(f, id, call);
+    cx.nonzero(f, id, x, &g) || length_guarded(cx, f, id, x, &g)
 }
