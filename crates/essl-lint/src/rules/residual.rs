@@ -66,11 +66,12 @@ pub(super) fn clamp_residual(cx: &Cx, f: &Function, id: usize, x: Handle<E>) -> 
         typical.num(id, lo)?,
         typical.num(id, hi)?,
     );
-    let at = |n: &crate::value::Num, i: usize| n.comps()[i.min(n.comps().len() - 1)];
-    let overlaps = (0..p.comps().len()).all(|i| {
-        let (v, a, b) = (at(p, i), at(lo, i), at(hi, i));
+    // A scalar bound applies to every component.
+    let at = |n: &crate::value::Num, i: usize| n.comps().get(i).or(n.comps().last()).copied();
+    let overlaps = (0..p.comps().len()).all(|i| match (at(p, i), at(lo, i), at(hi, i)) {
         // The bounds' values that hold for every choice: the box is at least [a.hi, b.lo].
-        v.lo.max(a.hi) < v.hi.min(b.lo)
+        (Some(v), Some(a), Some(b)) => v.lo.max(a.hi) < v.hi.min(b.lo),
+        _ => false,
     });
-    overlaps.then_some(c)
+    (overlaps && !p.comps().is_empty()).then_some(c)
 }
