@@ -20,6 +20,9 @@ pub(super) fn full_mask(m: &hir::Module, t: &Type) -> u8 {
 }
 
 impl<'a> Walk<'a> {
+    /// Whether `st` has the `bits` of `v` written on every path: for a struct, those of its
+    /// members some path has written before, or any member where none has been; a variable the
+    /// walk does not track always is.
     pub(super) fn written(&self, st: &State, v: Var, bits: u8) -> bool {
         let Some(&all) = self.full.get(&v) else {
             return true;
