@@ -18,8 +18,8 @@
 //! one flag and `diffuseOrenNayar` under another) is compiled with each of them: the function
 //! the flags' configurations leave uncalled is code an includer runs by choosing it. And a
 //! level the conditionals compare (`#ifndef NUM_BONE_INFLUENCERS`, `#define
-//! NUM_BONE_INFLUENCERS 0`, `#if NUM_BONE_INFLUENCERS > 0`) is compiled at the least value that
-//! turns every such group on, and with it any flag's configuration that does not compile
+//! NUM_BONE_INFLUENCERS 0`, `#if NUM_BONE_INFLUENCERS > 0`) is compiled at the largest value one
+//! comparison needs (which turns every `>` and `>=` group on), and with it any flag's configuration that does not compile
 //! without (the groups that compare it declare what the flag's code uses).
 //!
 //! Written by hand: the directive lines are read with a line scanner, not the preprocessor,

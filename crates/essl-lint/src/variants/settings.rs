@@ -166,8 +166,9 @@ fn bounds_a_loop(text: &str, name: &str) -> bool {
     })
 }
 
-/// The levels a text lets its includer set, each as a configuration that sets it to the least
-/// value turning on every group that compares it: a macro the text defines as an integer right
+/// The levels a text lets its includer set, each as a configuration that sets it to the largest
+/// value one comparison of it needs (every `>` and `>=` group on; of several `==`, the
+/// largest): a macro the text defines as an integer right
 /// under `#ifndef` of the same name (Babylon's `NUM_BONE_INFLUENCERS 0`, a mesh without bones)
 /// and compares with integers in `#if` and `#elif` (`NUM_BONE_INFLUENCERS > 0`, `> 4`, `>= 2`,
 /// `== 3`). The code under those groups (skinning, morph targets) runs for every mesh that has
