@@ -2,6 +2,8 @@
 //! a choice between functions ([`choices`]), a count ([`counts`]) and a level the
 //! conditionals compare ([`levels`]).
 
+use std::collections::{HashMap, HashSet};
+
 use essl::source::Span;
 use essl::CompileOptions;
 
@@ -18,6 +20,8 @@ pub(super) fn choices(text: &str, lines: &[Line], options: &CompileOptions) -> V
     let mut open: Vec<Option<usize>> = Vec::new();
     // Each `#ifndef NAME`: the name, the directive, the functions defined as the name inside.
     let mut blocks: Vec<(String, Span, Vec<String>)> = Vec::new();
+    // The functions the text defines, read once where a choice needs them.
+    let functions = std::cell::OnceCell::new();
     for l in lines {
         match l.name.as_str() {
             "ifndef" => {
@@ -54,7 +58,9 @@ pub(super) fn choices(text: &str, lines: &[Line], options: &CompileOptions) -> V
                 let function = v.bytes().all(|b| b.is_ascii_alphanumeric() || b == b'_')
                     && !v.as_bytes()[0].is_ascii_digit()
                     && !blocks[b].2.iter().any(|x| x == v)
-                    && defines_function(text, v);
+                    && functions
+                        .get_or_init(|| defined_functions(text))
+                        .contains(v);
                 if function {
                     blocks[b].2.push(v.to_string());
                 }
@@ -81,23 +87,54 @@ pub(super) fn choices(text: &str, lines: &[Line], options: &CompileOptions) -> V
     out
 }
 
-/// Whether `text` defines or declares a function named `name`: `name(` right after a type's
-/// name (`float diffuseOrenNayar(`), not after an operator, a comma or `return`.
-fn defines_function(text: &str, name: &str) -> bool {
-    let word = |c: char| c.is_ascii_alphanumeric() || c == '_';
-    text.match_indices(name).any(|(i, _)| {
-        let after = text[i + name.len()..].trim_start_matches([' ', '\t']);
-        let before = &text[..i];
-        let ty = before
-            .trim_end_matches([' ', '\t'])
-            .rsplit(|c: char| !word(c))
-            .next()
-            .unwrap_or("");
-        after.starts_with('(')
+/// The names of the functions `text` defines or declares: `name(` right after a type's name
+/// (`float diffuseOrenNayar(`), not after an operator, a comma or `return`. One pass over the
+/// text's parentheses, whatever the number of names asked about.
+fn defined_functions(text: &str) -> HashSet<&str> {
+    let mut out = HashSet::new();
+    for (j, _) in text.match_indices('(') {
+        let head = text[..j].trim_end_matches([' ', '\t']);
+        let name = &head[word_start(head)..];
+        let before = &head[..head.len() - name.len()];
+        let ty = before.trim_end_matches([' ', '\t']);
+        let ty = &ty[word_start(ty)..];
+        if !name.is_empty()
             && before.ends_with([' ', '\t'])
             && !ty.is_empty()
             && ty != "return"
             && !ty.as_bytes()[0].is_ascii_digit()
+        {
+            out.insert(name);
+        }
+    }
+    out
+}
+
+/// Where the name `text` ends with begins (its length where it ends with none).
+fn word_start(text: &str) -> usize {
+    text.rfind(|c: char| !is_word(c)).map_or(0, |k| {
+        k + text[k..].chars().next().map_or(1, char::len_utf8)
+    })
+}
+
+/// Whether `c` can be part of a name.
+fn is_word(c: char) -> bool {
+    c.is_ascii_alphanumeric() || c == '_'
+}
+
+/// Each name of `text` (a maximal run of name characters) with where it starts.
+fn words(text: &str) -> impl Iterator<Item = (usize, &str)> {
+    let bytes = text.as_bytes();
+    let mut i = 0;
+    std::iter::from_fn(move || {
+        while i < bytes.len() && !is_word(bytes[i] as char) {
+            i += 1;
+        }
+        let start = i;
+        while i < bytes.len() && is_word(bytes[i] as char) {
+            i += 1;
+        }
+        (i > start).then(|| (start, &text[start..i]))
     })
 }
 
@@ -130,11 +167,13 @@ fn defaults<'a>(
 /// fewest a count can ask for, and the value where `1.0 / float(N - 1)` divides by zero.
 pub(super) fn counts(text: &str, lines: &[Line], options: &CompileOptions) -> Vec<Variant> {
     let mut out = Vec::new();
+    // The names the text compares a loop variable with, read once where a count needs them.
+    let bounds = std::cell::OnceCell::new();
     for (open, name, value) in defaults(lines, options) {
         let above_one = value.len() < 10
             && value.bytes().all(|b| b.is_ascii_digit())
             && value.parse::<u32>().is_ok_and(|v| v > 1);
-        if !above_one || !bounds_a_loop(text, name) {
+        if !above_one || !bounds.get_or_init(|| loop_bounds(text)).contains(name) {
             continue;
         }
         out.push(Variant {
@@ -149,21 +188,20 @@ pub(super) fn counts(text: &str, lines: &[Line], options: &CompileOptions) -> Ve
     out
 }
 
-/// Whether `text` compares something with `name` as a loop's bound does: `< name`, `<= name`,
-/// `< float(name)`.
-fn bounds_a_loop(text: &str, name: &str) -> bool {
-    text.match_indices(name).any(|(i, _)| {
-        let after = text[i + name.len()..].chars().next();
-        if after.is_some_and(|c| c.is_ascii_alphanumeric() || c == '_') {
-            return false;
-        }
-        let before = text[..i].trim_end();
-        let before = before
-            .strip_suffix('(')
-            .map(|b| b.trim_end().trim_end_matches("float").trim_end())
-            .unwrap_or(before);
-        before.ends_with('<') || before.ends_with("<=")
-    })
+/// The names `text` compares something with as a loop's bound does: `< name`, `<= name`,
+/// `< float(name)`. One pass over the text's names.
+fn loop_bounds(text: &str) -> HashSet<&str> {
+    words(text)
+        .filter(|&(i, _)| {
+            let before = text[..i].trim_end();
+            let before = before
+                .strip_suffix('(')
+                .map(|b| b.trim_end().trim_end_matches("float").trim_end())
+                .unwrap_or(before);
+            before.ends_with('<') || before.ends_with("<=")
+        })
+        .map(|(_, w)| w)
+        .collect()
 }
 
 /// The levels a text lets its includer set, each as a configuration that sets it to the largest
@@ -175,16 +213,19 @@ fn bounds_a_loop(text: &str, name: &str) -> bool {
 /// them, and no flag turns it on.
 pub(super) fn levels(lines: &[Line], options: &CompileOptions) -> Vec<Variant> {
     let mut out = Vec::new();
+    // The value each name compared with integers needs, over every `#if` and `#elif`.
+    let mut needs: HashMap<&str, u32> = HashMap::new();
+    for l in lines.iter().filter(|l| l.name == "if" || l.name == "elif") {
+        for (name, n) in turning_on(&l.args) {
+            let need = needs.entry(name).or_insert(n);
+            *need = (*need).max(n);
+        }
+    }
     for (open, name, value) in defaults(lines, options) {
         let Ok(default) = value.parse::<u32>() else {
             continue;
         };
-        let need = lines
-            .iter()
-            .filter(|l| l.name == "if" || l.name == "elif")
-            .filter_map(|l| least_turning_on(&l.args, name))
-            .max();
-        let Some(need) = need.filter(|&n| n > default) else {
+        let Some(&need) = needs.get(name).filter(|&&n| n > default) else {
             continue;
         };
         out.push(Variant {
@@ -199,27 +240,21 @@ pub(super) fn levels(lines: &[Line], options: &CompileOptions) -> Vec<Variant> {
     out
 }
 
-/// The least value of `name` that makes the comparisons of it in an `#if`'s expression
-/// `args` with integers hold (`name > 4` needs 5, `name >= 2` and `name == 2` need 2, `4 < name`
-/// needs 5); `None` where it is compared with none.
-fn least_turning_on(args: &str, name: &str) -> Option<u32> {
-    let word = |c: char| c.is_ascii_alphanumeric() || c == '_';
-    let mut need: Option<u32> = None;
-    for (i, _) in args.match_indices(name) {
+/// Each name an `#if`'s expression `args` compares with an integer, with the least value that
+/// makes that comparison hold (`N > 4` needs 5, `N >= 2` and `N == 2` need 2, `4 < N` needs 5).
+fn turning_on(args: &str) -> Vec<(&str, u32)> {
+    let number = |s: &str| -> Option<u32> {
+        let digits: String = s
+            .trim_start()
+            .chars()
+            .take_while(|c| c.is_ascii_digit())
+            .collect();
+        digits.parse().ok()
+    };
+    let mut out = Vec::new();
+    for (i, name) in words(args) {
         let before = &args[..i];
-        let after = &args[i + name.len()..];
-        if before.ends_with(word) || after.starts_with(word) {
-            continue;
-        }
-        let number = |s: &str| -> Option<u32> {
-            let digits: String = s
-                .trim_start()
-                .chars()
-                .take_while(|c| c.is_ascii_digit())
-                .collect();
-            digits.parse().ok()
-        };
-        let right = after.trim_start();
+        let right = args[i + name.len()..].trim_start();
         let found = [(">=", 0), (">", 1), ("==", 0)]
             .iter()
             .find_map(|&(op, plus)| number(right.strip_prefix(op)?)?.checked_add(plus))
@@ -240,19 +275,25 @@ fn least_turning_on(args: &str, name: &str) -> Option<u32> {
                 n.checked_add(plus)
             });
         if let Some(n) = found {
-            need = Some(need.map_or(n, |m| m.max(n)));
+            out.push((name, n));
         }
     }
-    need
+    out
 }
 
 #[cfg(test)]
 mod tests {
-    use super::least_turning_on;
+    use super::{defined_functions, loop_bounds, turning_on};
 
     #[test]
     fn the_least_value_each_comparison_needs() {
-        let n = |a: &str| least_turning_on(a, "N");
+        let n = |a: &str| {
+            turning_on(a)
+                .into_iter()
+                .filter(|&(w, _)| w == "N")
+                .map(|(_, v)| v)
+                .max()
+        };
         assert_eq!(n(" N > 4"), Some(5));
         assert_eq!(n(" N>0 && defined(X)"), Some(1));
         assert_eq!(n(" N >= 2 || N == 7"), Some(7));
@@ -261,5 +302,28 @@ mod tests {
         assert_eq!(n(" NN > 4 || M_N > 2"), None);
         assert_eq!(n(" defined(N)"), None);
         assert_eq!(n(" N > 4294967295"), None);
+    }
+
+    #[test]
+    fn functions_a_text_defines() {
+        let f = defined_functions(
+            "float orenNayar(float a) { return lambert(a); }\nvec3 c = mix(a, b, t);\n\
+             vec3 xlambert (vec3 n);",
+        );
+        let mut names: Vec<&str> = f.into_iter().collect();
+        names.sort();
+        assert_eq!(names, ["orenNayar", "xlambert"]);
+    }
+
+    #[test]
+    fn names_a_loop_is_bounded_by() {
+        let b = loop_bounds(
+            "for (int i = 0; i < N; i++) {}\nfor (float j = 0.0; j <= float( M ); j++) {}\n\
+             x = K + 1; y = y<NN ? 1 : 0;",
+        );
+        for name in ["M", "N", "NN"] {
+            assert!(b.contains(name), "{name}");
+        }
+        assert!(!b.contains("K") && !b.contains("x") && !b.contains("i"));
     }
 }
