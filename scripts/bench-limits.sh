@@ -35,6 +35,10 @@ w('60k-globals', hdr + ''.join(f'float g{i};\n' for i in range(60000)) + 'void m
 w('30k-structs', hdr + ''.join(f'struct S{i} {{ float a; }};\n' for i in range(30000)) + 'void main() { o = vec4(1.0); }\n')
 w('25k-functions', hdr + ''.join(f'float f{i}(float x) {{ return x; }}\n' for i in range(25000)) + 'void main() { o = vec4(f0(1.0)); }\n')
 w('60k-defines', hdr + ''.join(f'#define M{i} {i}\n' for i in range(60000)) + 'void main() { o = vec4(1.0); }\n')
+# Settings a text lets its includer make (the lints' configurations read each kind once).
+w('22k-ifndef-choices', hdr + ''.join(f'#ifndef N{i}\n#define N{i} f{i}\n#endif\n' for i in range(22000)) + 'void main() { o = vec4(1.0); }\n')
+w('25k-ifndef-counts', hdr + ''.join(f'#ifndef C{i}\n#define C{i} 5\n#endif\n' for i in range(25000)) + 'void main() { o = vec4(1.0); }\n')
+w('16k-ifndef-levels', hdr + ''.join(f'#ifndef L{i}\n#define L{i} 0\n#endif\n#if L{i} > 2\n#endif\n' for i in range(16000)) + 'void main() { o = vec4(1.0); }\n')
 w('1-MiB-identifier', hdr + 'void main() { float ' + 'a' * (MB - 200) + ' = 1.0; o = vec4(1.0); }\n')
 w('1-MiB-comment-line', hdr + '// ' + 'x' * (MB - 200) + '\nvoid main() { o = vec4(1.0); }\n')
 w('nested-parentheses', hdr + 'void main() { o = vec4(' + '(' * (MB // 2 - 100) + '1.0' + ')' * (MB // 2 - 100) + '); }\n')
