@@ -128,7 +128,9 @@ export interface CheckResult {
 /** Checks a shader, or every shader of a JS/TS or HTML file, as a browser compiles them. */
 export function check(source: string, options?: CheckOptions): CheckResult;
 
-/** `check` on a thread of Node's pool (bundlers check many modules at once). */
+/** `check` off the JavaScript thread, for a bundler's many modules: the checks asked for while
+ * others run go to the addon together, on threads of Node's pool (one per core but one, at
+ * most 4, at least 1). */
 export function checkAsync(source: string, options?: CheckOptions): Promise<CheckResult>;
 
 /** Options of `minify`: those of `check`, and whether local names are shortened. */

@@ -52,6 +52,22 @@ test('checkAsync gives what check gives, many at once', async () => {
   await assert.rejects(checkAsync(null), TypeError);
 });
 
+test('checkAsync settles each check of a batch on its own', async () => {
+  // Asked for in one turn of the event loop, these go to the addon together.
+  const settled = await Promise.allSettled([
+    checkAsync(FS, {stage: 'fragment'}),
+    checkAsync(FS, {stage: 'fragment', rules: {nope: 'deny'}}),
+    checkAsync('#version 300 es\nvoid main() { gl_Position = vec4(0.0); }\n', {filename: 'bad.frag'}),
+    checkAsync(VS, {stage: 'vertex'}),
+  ]);
+  assert.deepEqual(settled.map(s => s.status), ['fulfilled', 'rejected', 'fulfilled', 'fulfilled']);
+  assert.ok(settled[1].reason instanceof TypeError);
+  assert.match(settled[1].reason.message, /^essl\.checkAsync: .*nope/);
+  assert.equal(settled[0].value.errors, 0);
+  assert.ok(settled[2].value.errors > 0);
+  assert.deepEqual(settled[3].value, check(VS, {stage: 'vertex'}));
+});
+
 test('every error in one call, and secondary ranges', () => {
   const r = check(FS.replace('o = u_color;', 'float a = b; int c = 1.0; o = u_color;'), {stage: 'fragment'});
   assert.deepEqual(r.diagnostics.map(d => d.code), ['undeclared-identifier', 'type-mismatch']);
