@@ -84,6 +84,7 @@ const SETTING: &[&str] = &[
     "steps",
     "length",
     "radius",
+    "wavelength",
     "gamma",
     "falloff",
     "columns",

@@ -9,8 +9,8 @@ use super::clip_space::{self, Clip};
 use super::normalize_zero;
 use super::parameters::caller_value;
 use super::rule::declare_rule;
+use super::settings::settings_of;
 use super::Cx;
-use crate::analysis::names::is_setting;
 use crate::symbolic::resolve;
 use crate::value::Facts;
 use crate::Level;
@@ -45,8 +45,10 @@ declare_rule! {
     /// whose name says it holds a setting a user may set to 0 — a count, a length, a radius, a
     /// gamma, a fade, a near or far distance, a soft edge's width (`1.0 / uGamma`,
     /// `1.0 / float(directionCount)`, `d / uRadius`, `d / Proximity_Far_Distance`,
-    /// `match / feather`), or a multiple of
-    /// one (`lengthCap * sqrt(-z)`, through locals and calls) — but not a size,
+    /// `match / feather`, `x / uWavelength`), a multiple of
+    /// one (`lengthCap * sqrt(-z)`, through locals and calls), or a blend of several, 0 for
+    /// the whole draw once each is whatever the weights (`mix(fadeA, fadeB, c.g)`,
+    /// `(w.y - w.x) * k + w.x`, through `out` parameters too) — but not a size,
     /// resolution, ratio or distance the host computes from the canvas or the camera, nor a count
     /// of the vertices drawn. Also as a note, naming them, a function's division by its own
     /// parameters where its callers pass inputs as such — a library function whose guard is
@@ -221,7 +223,11 @@ fn check(cx: &Cx, out: &mut Vec<Diagnostic>) {
             // values (a second run over the module): after the cheaper tests.
             let texel = per_pixel && zero_at_texel_end(cx, id, d, v.facts);
             if per_pixel && !texel {
-                out.extend(parameter_divisor(cx, &div).or_else(|| length_divisor(cx, &div)));
+                out.extend(
+                    parameter_divisor(cx, &div)
+                        .or_else(|| length_divisor(cx, &div))
+                        .or_else(|| setting_divisor(cx, &div)),
+                );
                 continue;
             }
             if sym.get_or_insert_with(|| cx.sym(id, f)).nonzero(d) {
@@ -344,75 +350,49 @@ fn texel_divisor(cx: &Cx, div: &Division) -> Option<Diagnostic> {
 
 /// The finding for a divisor `d` of `h` that is a uniform as such whose name says it holds a
 /// setting a user may set to 0 (a count, a length, a radius, a gamma: `1.0 / uGamma`,
-/// `1.0 / float(directionCount)`), or a multiple of one (`lengthCap * sqrt(-z)`): a note
-/// naming it.
+/// `1.0 / float(directionCount)`), or a multiple or blend of such ([`settings_of`]:
+/// `lengthCap * sqrt(-z)`, `mix(fadeA, fadeB, t)`): a note naming them.
 fn setting_divisor(cx: &Cx, div: &Division) -> Option<Diagnostic> {
     let Division { f, id, d, .. } = *div;
-    let (name, itself) = setting_factor(cx, f, id, d, 0)?;
+    let found = settings_of(cx, f, id, d)?;
     let span = unguarded(cx, div)?;
-    let (message, label) = if itself {
-        (
+    let what = cx.what(f, id, d);
+    let (message, label) = match &found.names[..] {
+        [name] if found.itself => (
             format!("division by the setting `{name}`, which a user may set to 0"),
             format!("0 when `{name}` is"),
-        )
-    } else {
-        (
+        ),
+        [name] => (
             format!("division by a multiple of the setting `{name}`, which a user may set to 0"),
-            format!("{} is 0 wherever `{name}` is", cx.what(f, id, d)),
-        )
+            format!("{what} is 0 wherever `{name}` is"),
+        ),
+        names => {
+            let list = names
+                .iter()
+                .map(|n| format!("`{n}`"))
+                .collect::<Vec<_>>()
+                .join(" and ");
+            (
+                format!("division by a blend of the settings {list}, which a user may set to 0"),
+                format!("{what} is 0 wherever {list} are"),
+            )
+        }
     };
     let mut diag = Diagnostic::rule_warning(DivisionByDifference::RULE.id, message, span)
         .with_label(label)
         .with_help("guard the divisor: `max(x, 1e-4)`, or keep the setting above 0 where it is set")
         .with_fix(floor_fix(cx, span));
-    if itself {
+    if found.itself {
         return Some(cx.grade(diag, &[(id, d)]));
     }
     diag.severity = essl::diagnostic::Severity::Note;
+    let settings = match &found.names[..] {
+        [name] => format!("`{name}` at 0 makes"),
+        _ => "the settings at 0 make".to_string(),
+    };
     Some(diag.with_note(format!(
-        "`{name}` at 0 makes the divisor 0 for the whole draw: essl-gl's validation mode checks the value at each draw"
+        "{settings} the divisor 0 for the whole draw: essl-gl's validation mode checks the value at each draw"
     )))
-}
-
-/// The setting (a uniform as such that [`is_setting`]) expression `h` of function `id` is, or is
-/// a multiple of, through locals, conversions and the arguments of calls; and whether `h` is the
-/// setting itself.
-fn setting_factor(
-    cx: &Cx,
-    f: &naga::Function,
-    id: usize,
-    h: naga::Handle<E>,
-    depth: u32,
-) -> Option<(String, bool)> {
-    let n = cx.sound().num(id, h)?;
-    if depth > 8 || !n.comps().iter().any(|c| c.contains(0.0)) {
-        return None;
-    }
-    if n.facts.has(Facts::EXT) && n.facts.per_draw() {
-        let name = cx.origin(&[(id, h)]).single_uniform()?.to_string();
-        return is_setting(&name).then_some((name, depth == 0));
-    }
-    let go = |x: naga::Handle<E>| setting_factor(cx, f, id, x, depth + 1);
-    let found = match f.expressions[h] {
-        E::Binary {
-            op: Bo::Multiply,
-            left,
-            right,
-        } => go(left).or_else(|| go(right)),
-        E::Splat { value: x, .. }
-        | E::Swizzle { vector: x, .. }
-        | E::AccessIndex { base: x, .. }
-        | E::As { expr: x, .. } => go(x),
-        E::Load { pointer } => cx.stored(f, id, pointer).into_iter().find_map(go),
-        E::FunctionArgument(i) if id < cx.module.functions.len() => {
-            cx.flows().callers(id).iter().find_map(|(caller, args)| {
-                let g = crate::analysis::function(cx.module, *caller);
-                setting_factor(cx, g, *caller, *args.get(i as usize)?, depth + 1)
-            })
-        }
-        _ => None,
-    }?;
-    Some((found.0, false))
 }
 
 /// The note for a divisor `d` of `h` built from the function's parameters alone, where the

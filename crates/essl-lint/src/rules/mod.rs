@@ -14,6 +14,7 @@ pub(crate) mod origin;
 mod parameters;
 mod residual;
 pub(crate) mod rule;
+mod settings;
 mod unlit;
 mod vanishing;
 

@@ -192,6 +192,20 @@ const HAZARDS: &[Hazard] = &[
         "  float w = u_gamma * sqrt(abs(v_x));\n  r = v_x / w;",
         N,
     ),
+    // A blend of settings: 0 for the whole draw once each setting in it is, whatever the
+    // weights (Babylon's two blob fades mixed by a vertex colour, a wavelength pair per row).
+    (
+        "division-by-difference",
+        "uniform",
+        "  float w = mix(u_gamma, float(u_sampleCount), v_x);\n  r = v_x / w;",
+        N,
+    ),
+    (
+        "division-by-difference",
+        "uniform",
+        "  float w = (float(u_sampleCount) - u_gamma) * v_x + u_gamma;\n  r = 1.0 / w;",
+        N,
+    ),
     // A visibility term's denominator, 0 wherever the surface faces away from the light.
     (
         "division-by-difference",
@@ -493,6 +507,11 @@ const GUARDED: &[(&str, &str)] = &[
     (
         "division-by-difference",
         "  float s = t.r + t.g + t.b;\n  r = s > 0.0 ? t.r / s : 0.0;",
+    ),
+    // A blend of settings kept above 0, and one with a uniform that names no setting.
+    (
+        "division-by-difference",
+        "  float w = mix(u_gamma, float(u_sampleCount), v_x);\n  r = v_x / max(w, 1e-4) + v_x / mix(u_gamma, u_a, v_x);",
     ),
     // A size the host takes from the canvas, and a guarded setting.
     (

@@ -1,0 +1,191 @@
+//! Values that are 0 whenever the settings they are made of are: a setting uniform as such
+//! ([`is_setting`]: a count, a length, a radius, a fade), a multiple or quotient of one, and a
+//! blend of several — `mix(fadeA, fadeB, t)`, `(w.y - w.x) * k + w.x`, `a * (1.0 - t) + b *
+//! t` — which is 0 for every pixel or vertex once each setting in it is. A user who sets a
+//! fade or a wavelength to 0 reaches that; the division by it is then undefined for the whole
+//! draw, whatever the weights.
+
+use naga::{BinaryOperator as Bo, Expression as E, MathFunction as Mf};
+
+use super::Cx;
+use crate::analysis::each_statement;
+use crate::analysis::names::is_setting;
+
+/// The settings an expression vanishes with, by name (each once, in the order met), and whether
+/// the expression is the one setting itself.
+pub(super) struct Settings {
+    /// The settings' names.
+    pub names: Vec<String>,
+    /// Whether the expression is the setting as such.
+    pub itself: bool,
+}
+
+/// How deep [`settings_of`] follows operands, locals and arguments.
+const MAX_DEPTH: u32 = 8;
+
+/// The settings expression `h` of function `id` is 0 with: a setting itself, a multiple or
+/// quotient of one, or a sum, difference or `mix` whose parts each vanish with settings —
+/// through locals, conversions and the arguments of calls.
+pub(super) fn settings_of(
+    cx: &Cx,
+    f: &naga::Function,
+    id: usize,
+    h: naga::Handle<E>,
+) -> Option<Settings> {
+    let mut names = Vec::new();
+    walk(cx, f, id, h, 0, &mut names)?;
+    Some(Settings {
+        itself: names.len() == 1 && is_uniform(cx, id, h),
+        names,
+    })
+}
+
+/// Whether `h` is a per-draw external value (a uniform as such).
+fn is_uniform(cx: &Cx, id: usize, h: naga::Handle<E>) -> bool {
+    cx.sound()
+        .num(id, h)
+        .is_some_and(|n| n.facts.has(crate::value::Facts::EXT) && n.facts.per_draw())
+}
+
+/// Adds the settings `h` vanishes with to `names`; `None` where it does not vanish with
+/// settings alone.
+fn walk(
+    cx: &Cx,
+    f: &naga::Function,
+    id: usize,
+    h: naga::Handle<E>,
+    depth: u32,
+    names: &mut Vec<String>,
+) -> Option<()> {
+    let n = cx.sound().num(id, h)?;
+    if depth > MAX_DEPTH || !n.comps().iter().any(|c| c.contains(0.0)) {
+        return None;
+    }
+    if is_uniform(cx, id, h) {
+        let name = cx.origin(&[(id, h)]).single_uniform()?.to_string();
+        if !is_setting(&name) {
+            return None;
+        }
+        if !names.contains(&name) {
+            names.push(name);
+        }
+        return Some(());
+    }
+    let go = |x: naga::Handle<E>, names: &mut Vec<String>| walk(cx, f, id, x, depth + 1, names);
+    match f.expressions[h] {
+        E::Binary {
+            op: Bo::Multiply,
+            left,
+            right,
+        } => {
+            // Either factor: try the left one on a copy, so that a miss adds no name.
+            let mut mine = names.clone();
+            if go(left, &mut mine).is_some() {
+                *names = mine;
+                Some(())
+            } else {
+                go(right, names)
+            }
+        }
+        E::Binary {
+            op: Bo::Divide,
+            left,
+            ..
+        } => go(left, names),
+        E::Binary {
+            op: Bo::Add | Bo::Subtract,
+            left,
+            right,
+        } => {
+            go(left, names)?;
+            go(right, names)
+        }
+        E::Math {
+            fun: Mf::Mix,
+            arg,
+            arg1: Some(b),
+            ..
+        } => {
+            go(arg, names)?;
+            go(b, names)
+        }
+        E::Splat { value: x, .. }
+        | E::Swizzle { vector: x, .. }
+        | E::AccessIndex { base: x, .. }
+        | E::As { expr: x, .. } => go(x, names),
+        E::Load { pointer } => {
+            // What calls write through it replaces a start value (`float x;` starts at 0).
+            let by_calls = written_by_calls(cx, f, pointer);
+            let start = |x: &naga::Handle<E>| {
+                matches!(
+                    f.expressions[*x],
+                    E::Literal(_) | E::ZeroValue(_) | E::Constant(_)
+                )
+            };
+            let keep_start = by_calls.is_empty();
+            let stored = cx.stored(f, id, pointer).into_iter();
+            let own = stored
+                .filter(|x| keep_start || !start(x))
+                .map(|x| (id, f, x));
+            own.chain(by_calls).find_map(|(at, g, x)| {
+                let mut mine = names.clone();
+                walk(cx, g, at, x, depth + 1, &mut mine)?;
+                *names = mine;
+                Some(())
+            })
+        }
+        E::FunctionArgument(i) if id < cx.module.functions.len() => {
+            cx.flows().callers(id).iter().find_map(|(caller, args)| {
+                let g = crate::analysis::function(cx.module, *caller);
+                let mut mine = names.clone();
+                walk(cx, g, *caller, *args.get(i as usize)?, depth + 1, &mut mine)?;
+                *names = mine;
+                Some(())
+            })
+        }
+        _ => None,
+    }
+}
+
+/// The values the functions that function `f` calls with the local `pointer` as an argument
+/// store through it (an `out` parameter: Babylon's generated blocks return their results so),
+/// each with its function's id and the function.
+fn written_by_calls<'a>(
+    cx: &Cx<'a>,
+    f: &naga::Function,
+    pointer: naga::Handle<E>,
+) -> Vec<(usize, &'a naga::Function, naga::Handle<E>)> {
+    let mut out = Vec::new();
+    let E::LocalVariable(local) = f.expressions[pointer] else {
+        return out;
+    };
+    each_statement(&f.body, &mut |st| {
+        let naga::Statement::Call {
+            function,
+            arguments,
+            ..
+        } = st
+        else {
+            return;
+        };
+        let c = function.index();
+        let Some(i) = arguments
+            .iter()
+            .position(|a| matches!(f.expressions[*a], E::LocalVariable(l) if l == local))
+        else {
+            return;
+        };
+        if c >= cx.module.functions.len() {
+            return;
+        }
+        let g = crate::analysis::function(cx.module, c);
+        each_statement(&g.body, &mut |s| {
+            if let naga::Statement::Store { pointer: p, value } = s {
+                if matches!(g.expressions[*p], E::FunctionArgument(j) if j as usize == i) {
+                    out.push((c, g, *value));
+                }
+            }
+        });
+    });
+    out
+}
