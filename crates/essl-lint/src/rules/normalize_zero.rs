@@ -12,7 +12,7 @@ use crate::value::Facts;
 use crate::Level;
 
 mod callers;
-use callers::{caller_difference, caller_vector};
+use callers::{caller_cross, caller_difference, caller_vector};
 
 declare_rule! {
     /// ## What it does
@@ -46,7 +46,10 @@ declare_rule! {
     /// passes the same point twice. The same for a vector parameter as such where the callers
     /// pass inputs as such: lygia's `rotate3d(a, r)` normalizing its axis `a`, `lookAt(forward)`
     /// — a library function that leaves the zero vector (a cross product of parallel vectors,
-    /// an eye at its target) to its caller.
+    /// an eye at its target) to its caller; and for a cross product of two such parameters,
+    /// lygia's Ward specular `normalize(cross(N, fiber))` and `tbn(n, up)`'s
+    /// `normalize(cross(up, n))`, the zero vector where a caller passes them parallel (but not
+    /// two that name a mesh's frame, a normal and a tangent).
     ///
     /// And `normalize` of a texel as such (`normalize(texture(gNormal, uv).rgb)`), or of one
     /// through a matrix (`czm_normal * texel`): the zero vector for every black texel, the
@@ -179,6 +182,7 @@ fn zero_vector(
     if !v.facts.any(Facts::CROSS) && v.facts.any(Facts::INPUT.with(Facts::TEXTURE)) && !gradient {
         return attribute_direction(cx, at)
             .or_else(|| caller_difference(cx, at))
+            .or_else(|| caller_cross(cx, at))
             .or_else(|| black_texel(cx, at))
             .or_else(|| inside_box(cx, at));
     }

@@ -1137,6 +1137,27 @@ const PARAMETERS: &[(&str, &str, &str, Option<&str>)] = &[
         "  r = att(v_x);",
         None,
     ),
+    // A cross product of two vectors a caller passes as such: the zero vector where they are
+    // parallel (a fibre along the normal); tested first, or a normal and a tangent (a mesh's
+    // frame, as two per-pixel vectors are taken to be), quiet.
+    (
+        "normalize-zero",
+        "vec3 perp(vec3 n, vec3 fiber) { return normalize(cross(n, fiber)); }",
+        "  r = perp(v_pos, v_h).x;",
+        Some("vec3 perp(vec3 n, vec3 fiber) { return normalize(cross(n, fiber)); }"),
+    ),
+    (
+        "normalize-zero",
+        "vec3 perp(vec3 n, vec3 fiber) {\n  vec3 c = cross(n, fiber);\n  return dot(c, c) > 1e-12 ? normalize(c) : vec3(1.0, 0.0, 0.0);\n}",
+        "  r = perp(v_pos, v_h).x;",
+        None,
+    ),
+    (
+        "normalize-zero",
+        "vec3 bitangent(vec3 normal, vec3 tangent) { return normalize(cross(normal, tangent)); }",
+        "  r = bitangent(v_pos, v_h).x;",
+        None,
+    ),
     // A vector a caller passes as such: a rotation axis, a forward direction, written from
     // itself or not; tested first, or passed a constant, quiet.
     (

@@ -1,12 +1,12 @@
 //! The notes for `normalize` of what a function's callers pass as such: a difference of two
-//! points, a vector parameter itself — the zero vector for some arguments, which a library
-//! function leaves to its callers.
+//! points, a vector parameter itself, a cross product of two — the zero vector for some
+//! arguments, which a library function leaves to its callers.
 
 use essl::diagnostic::Diagnostic;
 use naga::{Expression as E, Function, Handle};
 
 use super::super::{parameters, Cx};
-use super::{length_guarded, zero_vector_note, Normalize};
+use super::{cross_operands, length_guarded, zero_vector_note, Normalize};
 use crate::symbolic::resolve;
 
 /// The note for `normalize(x)` of a difference of values callers pass as such, or of a vertex
@@ -102,4 +102,61 @@ fn difference_factor(
             .or_else(|| difference_factor(cx, f, id, right, depth + 1)),
         _ => None,
     }
+}
+
+/// Words of a parameter's name that say it holds a vector of a mesh's frame: two such
+/// parameters (a normal and a tangent) are taken to be a valid frame, as two per-pixel
+/// vectors are.
+const FRAME: &[&str] = &[
+    "n",
+    "normal",
+    "nor",
+    "nrm",
+    "t",
+    "tangent",
+    "b",
+    "bitangent",
+    "binormal",
+];
+
+/// The note for `normalize(cross(a, b))` of two vector parameters as such where the callers
+/// pass inputs as such: lygia's Ward specular `normalize(cross(N, fiber))`, the zero vector
+/// wherever a caller passes a fibre direction along the normal (an upward fibre on a floor) —
+/// a library function that leaves parallel vectors to its callers. Two parameters that name a
+/// mesh's frame (a normal and a tangent) are left alone, as per-pixel vectors are.
+pub(super) fn caller_cross(cx: &Cx, n: Normalize) -> Option<Diagnostic> {
+    let Normalize { f, id, call, x } = n;
+    let (a, b) = cross_operands(cx, f, id, x)?;
+    let mut names = Vec::new();
+    let mut why = "";
+    for v in [a, b] {
+        let param = parameters::parameter_itself(cx, f, id, call, v)?;
+        let found = parameters::caller_value(cx, f, id, param)?;
+        let [name] = &found.names[..] else {
+            return None;
+        };
+        if found.attribute || names.contains(name) {
+            return None;
+        }
+        names.push(name.clone());
+        why = found.why();
+    }
+    let frame = |n: &String| crate::analysis::names::says_any(n, FRAME);
+    if names.iter().all(frame) || length_guarded(cx, f, id, x, &cx.guards(f, id, call)) {
+        return None;
+    }
+    let [p, q] = &names[..] else {
+        return None;
+    };
+    Some(zero_vector_note(
+        cx.span(f, x),
+        format!(
+            "`normalize` of a cross product of the parameters `{p}` and `{q}`, which callers may pass parallel"
+        ),
+        format!(
+            "{} is the zero vector wherever they are parallel",
+            cx.what(f, id, x)
+        ),
+        why,
+    ))
 }
