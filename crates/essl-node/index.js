@@ -138,10 +138,10 @@ export function check(source, options) {
 
 // `checkAsync`'s queue. The checks asked for while others run go to the addon together, a
 // batch at a time on each of LANES threads of Node's pool: one trip through the pool per batch
-// rather than per check, the checker's code warm in the cache from one check to the next, and
-// the pool's other threads (and a core) left to the program's own work. A bundler transforms
-// its modules a few at a time: 200 shaders checked one call each cost a `vite build` on two
-// cores about three times the CPU time of the same checks one after another.
+// rather than per check, and the pool's other threads (and a core) left to the program's own
+// work — a bundler's reads and writes, which wait behind whatever the pool holds. A bundler
+// transforms its modules a few at a time, and each batch takes those that arrived while the
+// last one ran (docs/performance.md, "What the Vite plugin adds to a build").
 const LANES = Math.max(1, Math.min(4, (os.availableParallelism?.() ?? os.cpus().length) - 1));
 const waiting = [];
 let running = 0;

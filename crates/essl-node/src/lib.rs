@@ -161,8 +161,7 @@ pub fn check_json(source: String, options: String) -> napi::Result<Answered> {
 /// its index, one after another on one thread of Node's pool; a promise of their answers, a
 /// [`Failed`] where one throws. A bundler's modules arrive a few at a time: checked in batches
 /// (`checkAsync` queues them in `index.js`), they cost one trip through the pool each rather than
-/// one per module, run with the checker's code and tables warm in the cache, and leave the pool's
-/// other threads to the bundler's own reads and writes.
+/// one per module, and leave the pool's other threads to the bundler's own reads and writes.
 #[napi(js_name = "checkJsonBatchAsync")]
 pub fn check_json_batch_async(sources: Vec<String>, options: Vec<String>) -> AsyncTask<BatchTask> {
     AsyncTask::new(BatchTask {
