@@ -35,9 +35,12 @@ declare_rule! {
     /// mesh lacks the buffer (read as 0). A row vector through the inverse model matrix
     /// (`(vec4(normal, 0.0) * inverseModel).xyz`, the inverse transpose) counts as such a
     /// transform, and so does whatever is the zero vector wherever the attribute is — a
-    /// Gram–Schmidt step `T - dot(T, N) * N`, a cross product with another direction — but not
-    /// a vector decoded from the attribute's components (an octahedral encoding's
-    /// `vec3(e, 1.0 - abs(e.x) - abs(e.y))`, never zero).
+    /// Gram–Schmidt step `T - dot(T, N) * N`, a cross product with another direction, offsets
+    /// from the normal by factors of the position (Babylon's fur, `(n.y, -n.x, 0) * J + (-n.z, 0,
+    /// n.x) * K`), whatever the other attributes hold — but not a vector decoded from the
+    /// attribute's components (an octahedral encoding's `vec3(e, 1.0 - abs(e.x) - abs(e.y))`,
+    /// never zero), and, where other attributes take part, not the NaN of a normalised
+    /// direction carried on (reported where it is normalised).
     ///
     /// And, as a note, `normalize` of a difference of two vertex attributes, or of a function's
     /// parameters where its callers pass inputs as such, or of a product with one: a line
@@ -508,14 +511,28 @@ pub(super) fn direction_attributes(
         return None;
     }
     let o = cx.origin(&[(id, x)]);
-    let direction = |n: &String| crate::analysis::names::says_any(n, DIRECTION);
-    if o.inputs.is_empty() || o.texels || o.unknown || !o.inputs.iter().all(direction) {
+    let direction = |n: &str| crate::analysis::names::says_any(n, DIRECTION);
+    if o.texels || o.unknown || !o.inputs.iter().any(|n| direction(n)) {
         return None;
     }
-    if !super::vanishing::with_attributes(cx, f, id, x) {
+    // Zero where the direction attributes are, whatever the others (a position) hold; with
+    // others, a `normalize` of them on the way is reported by itself.
+    let zero = |g: Handle<naga::GlobalVariable>| {
+        cx.module.global_variables[g]
+            .name
+            .as_deref()
+            .is_some_and(direction)
+    };
+    let mixed = !o.inputs.iter().all(|n| direction(n));
+    if !super::vanishing::with_attributes(cx, f, id, x, &zero, !mixed) {
         return None;
     }
-    let list: Vec<String> = o.inputs.iter().map(|n| format!("`{n}`")).collect();
+    let list: Vec<String> = o
+        .inputs
+        .iter()
+        .filter(|n| direction(n))
+        .map(|n| format!("`{n}`"))
+        .collect();
     Some(list.join(", "))
 }
 

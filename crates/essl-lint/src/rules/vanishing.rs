@@ -9,7 +9,10 @@
 //! does a position (`vec4(p, 1.0)`). The test substitutes 0 for every attribute and follows
 //! the operations that keep a zero: products with anything, sums and differences of zeros,
 //! swizzles, constructors of zeros, either value of a `?:` or `mix`, `cross`, `dot`,
-//! `normalize` (NaN), locals and the arguments of every call.
+//! `normalize` (NaN), locals and the arguments of every call. The attributes taken as 0 are
+//! the caller's choice: those that hold a direction, for a vector that also reads a position
+//! (Babylon's fur offsets its tangent by random factors of the position) — and then only the
+//! zero vector counts, not the NaN of a `normalize` of it, which is reported where it is made.
 
 use naga::{BinaryOperator as Bo, Expression as E, Function, Handle, MathFunction as Mf};
 use rustc_hash::FxHashMap as HashMap;
@@ -19,22 +22,38 @@ use super::Cx;
 /// How deep the test follows operands, locals and calls.
 const MAX_DEPTH: u32 = 24;
 
-/// Whether value `h` of function `id` is the zero vector (or NaN) wherever the attributes it
-/// reads are the zero vector.
-pub(super) fn with_attributes(cx: &Cx, f: &Function, id: usize, h: Handle<E>) -> bool {
-    walk(cx, f, id, h, 0, &mut Walk::default())
+/// Whether value `h` of function `id` is the zero vector (or NaN) wherever the attributes
+/// `zero` picks are the zero vector, whatever the others hold; with `nan`, a `normalize` of
+/// such a vector counts (NaN), else only the zero vector does.
+pub(super) fn with_attributes(
+    cx: &Cx,
+    f: &Function,
+    id: usize,
+    h: Handle<E>,
+    zero: &dyn Fn(Handle<naga::GlobalVariable>) -> bool,
+    nan: bool,
+) -> bool {
+    let mut seen = Walk {
+        locals: Vec::new(),
+        known: HashMap::default(),
+        zero,
+        nan,
+    };
+    walk(cx, f, id, h, 0, &mut seen)
 }
 
 /// What the test has met: the locals it follows (a store that reads the local itself adds
 /// nothing), and the answer for each expression already asked (a shared operand, `t + t`,
-/// is asked once, so the work is linear in the expressions).
-#[derive(Default)]
-struct Walk {
+/// is asked once, so the work is linear in the expressions); which attributes are 0, and
+/// whether NaN counts.
+struct Walk<'z> {
     locals: Vec<(usize, Handle<E>)>,
     known: HashMap<(usize, Handle<E>), bool>,
+    zero: &'z dyn Fn(Handle<naga::GlobalVariable>) -> bool,
+    nan: bool,
 }
 
-fn walk(cx: &Cx, f: &Function, id: usize, h: Handle<E>, depth: u32, seen: &mut Walk) -> bool {
+fn walk(cx: &Cx, f: &Function, id: usize, h: Handle<E>, depth: u32, seen: &mut Walk<'_>) -> bool {
     if depth > MAX_DEPTH {
         return false;
     }
@@ -47,7 +66,14 @@ fn walk(cx: &Cx, f: &Function, id: usize, h: Handle<E>, depth: u32, seen: &mut W
 }
 
 /// [`walk`]'s answer for `h`, not yet known.
-fn vanishes(cx: &Cx, f: &Function, id: usize, h: Handle<E>, depth: u32, seen: &mut Walk) -> bool {
+fn vanishes(
+    cx: &Cx,
+    f: &Function,
+    id: usize,
+    h: Handle<E>,
+    depth: u32,
+    seen: &mut Walk<'_>,
+) -> bool {
     macro_rules! go {
         ($x:expr) => {
             walk(cx, f, id, $x, depth + 1, seen)
@@ -58,8 +84,10 @@ fn vanishes(cx: &Cx, f: &Function, id: usize, h: Handle<E>, depth: u32, seen: &m
             .sound()
             .num(id, h)
             .is_some_and(|n| n.comps().iter().all(|c| c.as_point() == Some(0.0))),
-        E::Load { pointer } if super::parameters::vertex_private(cx, f, pointer).is_some() => true,
         E::Load { pointer } => {
+            if let Some(g) = super::parameters::vertex_private(cx, f, pointer) {
+                return (seen.zero)(g);
+            }
             // A local that reads itself (`t = t - dot(t, n) * n`): its other stores decide.
             if seen.locals.contains(&(id, pointer)) {
                 return true;
@@ -100,7 +128,13 @@ fn vanishes(cx: &Cx, f: &Function, id: usize, h: Handle<E>, depth: u32, seen: &m
             fun: Mf::Normalize,
             arg,
             ..
-        } => go!(arg),
+        } => {
+            // Without NaN, only a local normalised in place (`t = normalize(t)`), which its
+            // other stores decide.
+            let in_place = matches!(f.expressions[arg], E::Load { pointer }
+                if seen.locals.contains(&(id, pointer)));
+            (seen.nan || in_place) && go!(arg)
+        }
         E::Math {
             fun: Mf::Cross | Mf::Dot,
             arg,

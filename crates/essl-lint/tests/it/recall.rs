@@ -1336,15 +1336,23 @@ fn normalized_direction_attributes_are_notes() {
         "  v_n = normalize((a_next - a_position) * vec3(2.0));",
         // Gram-Schmidt: the zero vector for a zero tangent, or one along the normal.
         "  v_n = normalize(a_tangent - dot(a_tangent, a_normal) * a_normal);",
+        // Offsets from the normal by factors of the position (Babylon's fur), normalised in
+        // place: the zero vector wherever the normal is, whatever the position.
+        "  vec3 t = vec3(a_normal.y, -a_normal.x, 0.0) * (2.0 + fract(a_position.x)) + vec3(-a_normal.z, 0.0, a_normal.x) * a_position.y;\n  t = normalize(t);\n  v_n = t;",
     ] {
         assert_eq!(notes(body).len(), 1, "{body}");
     }
+    // NaN from the normalised normal carried on: reported where it is made, once.
+    let chain = "  vec3 n = normalize(a_normal);\n  v_n = normalize(cross(n, a_position));";
+    assert_eq!(notes(chain).len(), 1, "{chain}: {:?}", notes(chain));
     for quiet in [
         "  v_n = normalize(a_position);",
         // An octahedral decoding is not zero where the attribute is.
         "  vec2 e = a_normal.xy;\n  v_n = normalize(vec3(e, 1.0 - abs(e.x) - abs(e.y)));",
         "  vec3 n = u_nm * a_normal;\n  v_n = dot(n, n) > 1e-12 ? normalize(n) : vec3(0.0, 0.0, 1.0);",
         "  v_n = length(a_normal) > 0.0 ? normalize(a_normal) : vec3(0.0, 0.0, 1.0);",
+        // A sum with a position is not zero where the normal is.
+        "  v_n = normalize(a_normal * 0.1 + a_position);",
     ] {
         assert!(notes(quiet).is_empty(), "{quiet}");
     }
