@@ -6,6 +6,7 @@ use naga::Expression as E;
 use super::context::PowCall;
 use super::rule::declare_rule;
 use super::Cx;
+use crate::analysis::Refinement;
 use crate::value::Facts;
 use crate::Level;
 
@@ -17,8 +18,10 @@ declare_rule! {
     /// As a note, a library function's `pow` of its own scalar parameter where its callers pass
     /// inputs as such (lygia's easing `quarticIn(t)` returning `pow(t, 4.0)`): a negative
     /// argument (`sin(time)`, an overshooting `t`) is left to the caller, as the function's
-    /// divisions by its parameters are; a test of the parameter, or a name that says it is a
-    /// distance, length, radius, size or depth, keeps it quiet.
+    /// divisions by its parameters are; a test that keeps the parameter from below 0 (`t > 0.0 ?
+    /// pow(t, k) : 0.0`, but not an easing's `t < 0.5 ? 8.0 * pow(t, 4.0) : …`, which takes
+    /// every negative `t`), or a name that says it is a distance, length, radius, size or depth,
+    /// keeps it quiet.
     ///
     /// ## Why is this bad?
     /// GLSL ES 3.00 leaves `pow(x, y)` undefined for `x < 0` (§8.2), whatever `y` is. Many GPUs
@@ -170,13 +173,14 @@ fn caller_base(
     if found.attribute || crate::analysis::names::says_any(name, NOT_NEGATIVE) {
         return None;
     }
-    // Under a test of the parameter (`t > 0.0 ? pow(t, k) : 0.0`, `if (t < 0.0) return 0.0;`):
-    // the analysis takes the parameter for positive already, so any bound on it is a guard.
+    // Under a test of the parameter that keeps it from below 0 (`t > 0.0 ? pow(t, k) : 0.0`,
+    // `if (t < 0.0) return 0.0;`): the analysis takes the parameter for positive already, so
+    // the test's own bound says whether it guards; `t < 0.5 ? 8.0 * pow(t, 4.0) : …` (an
+    // easing's first half) does not.
     let g = cx.guards(f, id, call);
-    if g.facts
-        .iter()
-        .any(|(s, _)| cx.sound().same(f, id, *s, base))
-    {
+    if g.facts.iter().any(|(s, r)| {
+        matches!(r, Refinement::Value(iv) if iv.lo >= 0.0) && cx.sound().same(f, id, *s, base)
+    }) {
         return None;
     }
     let span = cx.span(f, base);

@@ -1117,13 +1117,26 @@ const PARAMETERS: &[(&str, &str, &str, Option<&str>)] = &[
         "  r = inv2(v_x);",
         None,
     ),
-    // A scalar a caller passes as such as a `pow` base: an easing's `t`; tested first, or
-    // named for a distance, quiet.
+    // A scalar a caller passes as such as a `pow` base: an easing's `t`, also on an easing's
+    // first half (`t < 0.5` takes every negative `t`); tested against 0 first, or named for a
+    // distance, quiet.
     (
         "pow-negative-base",
         "float qi(float t) { return pow(t, 4.0); }",
         "  r = qi(v_x);",
         Some("float qi(float t) { return pow(t, 4.0); }"),
+    ),
+    (
+        "pow-negative-base",
+        "float qio(float t) {\n  return t < 0.5\n    ? 8.0 * pow(t, 4.0)\n    : 1.0 - 8.0 * (1.0 - t) * (1.0 - t) * (1.0 - t) * (1.0 - t);\n}",
+        "  r = qio(v_x);",
+        Some("? 8.0 * pow(t, 4.0)"),
+    ),
+    (
+        "pow-negative-base",
+        "float qio(float t) {\n  if (t < 0.0) return 0.0;\n  return t < 0.5 ? 8.0 * pow(t, 4.0) : 1.0;\n}",
+        "  r = qio(v_x);",
+        None,
     ),
     (
         "pow-negative-base",
