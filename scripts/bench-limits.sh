@@ -38,6 +38,9 @@ w('60k-defines', hdr + ''.join(f'#define M{i} {i}\n' for i in range(60000)) + 'v
 # Settings a text lets its includer make (the lints' configurations read each kind once).
 w('22k-ifndef-choices', hdr + ''.join(f'#ifndef N{i}\n#define N{i} f{i}\n#endif\n' for i in range(22000)) + 'void main() { o = vec4(1.0); }\n')
 w('25k-ifndef-counts', hdr + ''.join(f'#ifndef C{i}\n#define C{i} 5\n#endif\n' for i in range(25000)) + 'void main() { o = vec4(1.0); }\n')
+# Choices whose families share a prefix: each family's other functions are looked up in the
+# sorted names, a bounded run of them.
+w('8k-choice-families', hdr + ''.join(f'float famX{i}(float a) {{ return a; }}\n' for i in range(8000)) + ''.join(f'#ifndef N{i}\n#ifdef W\n#define N{i} famX{i}\n#else\n#define N{i} famX{i + 1}\n#endif\n#endif\n' for i in range(8000)) + 'void main() { o = vec4(1.0); }\n')
 w('16k-ifndef-levels', hdr + ''.join(f'#ifndef L{i}\n#define L{i} 0\n#endif\n#if L{i} > 2\n#endif\n' for i in range(16000)) + 'void main() { o = vec4(1.0); }\n')
 w('1-MiB-identifier', hdr + 'void main() { float ' + 'a' * (MB - 200) + ' = 1.0; o = vec4(1.0); }\n')
 w('1-MiB-comment-line', hdr + '// ' + 'x' * (MB - 200) + '\nvoid main() { o = vec4(1.0); }\n')

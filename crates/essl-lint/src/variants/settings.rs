@@ -13,8 +13,10 @@ use super::Variant;
 /// The choices a text lets its includer make, each value as a configuration of its own: a
 /// macro the text defines under `#ifndef` of the same name as one of several functions it
 /// defines, depending on other flags (lygia's `DIFFUSE_FNC`, `diffuseLambert` on WebGL and
-/// `diffuseOrenNayar` elsewhere). The function one configuration leaves uncalled is code the
-/// includer runs by defining the macro.
+/// `diffuseOrenNayar` elsewhere), and the other functions of their family the text defines
+/// ([`siblings`]: lygia's `specularGaussian` and `specularBeckmann`, which its `SPECULAR_FNC`
+/// never defaults to). The function one configuration leaves uncalled is code the includer runs
+/// by defining the macro.
 pub(super) fn choices(text: &str, lines: &[Line], options: &CompileOptions) -> Vec<Variant> {
     // The open conditionals, innermost last: for an `#ifndef NAME`, its index in `blocks`.
     let mut open: Vec<Option<usize>> = Vec::new();
@@ -68,20 +70,26 @@ pub(super) fn choices(text: &str, lines: &[Line], options: &CompileOptions) -> V
             _ => {}
         }
     }
-    let mut out = Vec::new();
-    for (name, directive, values) in blocks {
-        if values.len() < 2 {
-            continue;
-        }
-        for v in values {
-            out.push(Variant {
-                defines: vec![name.clone()],
-                directive,
-                groups: Vec::new(),
-                count: None,
-                choice: Some(v),
-                level: None,
-            });
+    let choice = |name: &str, directive, v: &str| Variant {
+        defines: vec![name.to_string()],
+        directive,
+        groups: Vec::new(),
+        count: None,
+        choice: Some(v.to_string()),
+        level: None,
+    };
+    let blocks: Vec<_> = blocks.into_iter().filter(|b| b.2.len() >= 2).collect();
+    let mut out: Vec<Variant> = blocks
+        .iter()
+        .flat_map(|(name, directive, values)| values.iter().map(|v| choice(name, *directive, v)))
+        .collect();
+    // The values the text names first, then the rest of each family: a configuration budget
+    // that ends among the families leaves out no value the text names.
+    if let Some(defined) = functions.get().filter(|_| !blocks.is_empty()) {
+        let mut sorted: Vec<&str> = defined.iter().copied().collect();
+        sorted.sort_unstable();
+        for (name, directive, values) in &blocks {
+            out.extend(siblings(values, &sorted).map(|v| choice(name, *directive, v)));
         }
     }
     out
@@ -108,6 +116,51 @@ fn defined_functions(text: &str) -> HashSet<&str> {
         }
     }
     out
+}
+
+/// How many other functions of a family [`siblings`] offers (of at most eight times as many
+/// names it reads with the family's prefix: bounded work for each `#ifndef`).
+const MAX_SIBLINGS: usize = 8;
+
+/// The functions of `sorted` (the text's, in order) whose names extend the longest prefix
+/// `values` share, at a word's boundary (`specular` of `specularCookTorrance` and
+/// `specularBlinnPhongRoughness`, then `specularGaussian`, `specularBeckmann`): the other
+/// choices a library offers for the macro, which no configuration of the text defines it as;
+/// at most [`MAX_SIBLINGS`]. One that takes other arguments than the macro's uses is a
+/// configuration that does not compile, and is left out.
+fn siblings<'a, 't>(
+    values: &'a [String],
+    sorted: &'a [&'t str],
+) -> impl Iterator<Item = &'t str> + 'a {
+    let first = values[0].as_str();
+    let mut len = values.iter().fold(first.len(), |n, v| {
+        first
+            .bytes()
+            .zip(v.bytes())
+            .take(n)
+            .take_while(|(a, b)| a == b)
+            .count()
+    });
+    // Back to a word's boundary: the prefix ends before an upper-case letter or an underscore.
+    let boundary =
+        |v: &str, n: usize| v[n..].starts_with(|c: char| c.is_ascii_uppercase() || c == '_');
+    while len > 0 && !values.iter().all(|v| boundary(v, len)) {
+        len -= 1;
+    }
+    let prefix = &first[..len];
+    // The names with the prefix are one run of the sorted names.
+    let from = if len < 4 {
+        sorted.len()
+    } else {
+        sorted.partition_point(|d| *d < prefix)
+    };
+    sorted[from..]
+        .iter()
+        .copied()
+        .take_while(move |d| d.starts_with(prefix))
+        .take(MAX_SIBLINGS * 8)
+        .filter(move |d| d.len() > len && boundary(d, len) && !values.iter().any(|v| v == d))
+        .take(MAX_SIBLINGS)
 }
 
 /// Where the name `text` ends with begins (its length where it ends with none).
@@ -283,7 +336,7 @@ fn turning_on(args: &str) -> Vec<(&str, u32)> {
 
 #[cfg(test)]
 mod tests {
-    use super::{defined_functions, loop_bounds, turning_on};
+    use super::{defined_functions, loop_bounds, siblings, turning_on};
 
     #[test]
     fn the_least_value_each_comparison_needs() {
@@ -313,6 +366,31 @@ mod tests {
         let mut names: Vec<&str> = f.into_iter().collect();
         names.sort();
         assert_eq!(names, ["orenNayar", "xlambert"]);
+    }
+
+    /// The other functions of a choice's family: past the values' common prefix at a word's
+    /// boundary.
+    #[test]
+    fn the_other_choices_of_a_family() {
+        let defined = defined_functions(
+            "float specularCookTorrance(S s) { return 1.0; }\n\
+             float specularBlinnPhong(S s) { return 1.0; }\n\
+             float specularGaussian(float r) { return 1.0; }\n\
+             float specularGaussian(S s) { return specularGaussian(s.r); }\n\
+             float specularity(S s) { return 1.0; }\n\
+             vec3 specular(S s) { return vec3(SPECULAR_FNC(s)); }\n\
+             float diffuseLambert(S s) { return 1.0; }",
+        );
+        let values = [
+            "specularCookTorrance".to_string(),
+            "specularBlinnPhong".to_string(),
+        ];
+        let mut sorted: Vec<&str> = defined.into_iter().collect();
+        sorted.sort_unstable();
+        let found: Vec<&str> = siblings(&values, &sorted).collect();
+        assert_eq!(found, ["specularGaussian"]);
+        let short = ["fooA".to_string(), "fooB".to_string()];
+        assert_eq!(siblings(&short, &sorted).count(), 0);
     }
 
     #[test]

@@ -203,6 +203,31 @@ fn each_function_a_text_chooses_between_is_linted() {
 }
 
 #[test]
+fn the_other_functions_of_a_choice_s_family_are_linted() {
+    // lygia's `SPECULAR_FNC` defaults to `specularBlinnPhong` or `specularCookTorrance`; its
+    // `specularGaussian` runs only where the includer defines the macro as it. A function of
+    // the family with other arguments is a configuration that does not compile.
+    let text = "#version 300 es\n#define WEBGL\nprecision highp float;\nin float v_a; in float v_b;\n\
+                out vec4 o;\nfloat specularBlinnPhong(float a, float b) { return max(a, 0.0); }\n\
+                float specularCookTorrance(float a, float b) { return max(b, 0.0); }\n\
+                float specularGaussian(float a, float b) { return a / b; }\n\
+                float specularHelper(vec3 a) { return 1.0 / a.x; }\n\
+                #ifndef SPECULAR_FNC\n#ifdef WEBGL\n#define SPECULAR_FNC specularBlinnPhong\n#else\n\
+                #define SPECULAR_FNC specularCookTorrance\n#endif\n#endif\n\
+                void main() { o = vec4(SPECULAR_FNC(v_a, v_b)); }\n";
+    let f = found(text, variants::DEFAULT);
+    assert_eq!(f.len(), 1, "{f:#?}");
+    assert_eq!((f[0].0, f[0].1.as_str()), ("division-by-difference", "b"));
+    assert!(
+        f[0].3
+            .iter()
+            .any(|n| n.contains("`SPECULAR_FNC` defined as `specularGaussian`")),
+        "{:?}",
+        f[0].3
+    );
+}
+
+#[test]
 fn a_level_the_conditionals_compare_is_linted_where_it_turns_every_group_on() {
     // Babylon's `NUM_BONE_INFLUENCERS`: the skinning under `> 0` and `> 1` runs for every mesh
     // with bones, and the baked vertex animation reads the bone attributes `> 0` declares.
