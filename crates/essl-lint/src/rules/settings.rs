@@ -23,6 +23,10 @@ pub(super) struct Settings {
 /// How deep [`settings_of`] follows operands, locals and arguments.
 const MAX_DEPTH: u32 = 8;
 
+/// How many expressions one [`settings_of`] visits at most: stores, callers and both sides of
+/// sums branch, and the depth alone would bound the walk only exponentially.
+const MAX_STEPS: u32 = 256;
+
 /// The settings expression `h` of function `id` is 0 with: a setting itself, a multiple or
 /// quotient of one, or a sum, difference or `mix` whose parts each vanish with settings —
 /// through locals, conversions and the arguments of calls.
@@ -33,7 +37,8 @@ pub(super) fn settings_of(
     h: naga::Handle<E>,
 ) -> Option<Settings> {
     let mut names = Vec::new();
-    walk(cx, f, id, h, 0, &mut names)?;
+    let steps = std::cell::Cell::new(MAX_STEPS);
+    walk(cx, f, id, h, 0, &mut names, &steps)?;
     Some(Settings {
         itself: names.len() == 1 && is_uniform(cx, id, h),
         names,
@@ -56,9 +61,14 @@ fn walk(
     h: naga::Handle<E>,
     depth: u32,
     names: &mut Vec<String>,
+    steps: &std::cell::Cell<u32>,
 ) -> Option<()> {
+    if depth > MAX_DEPTH || steps.get() == 0 {
+        return None;
+    }
+    steps.set(steps.get() - 1);
     let n = cx.sound().num(id, h)?;
-    if depth > MAX_DEPTH || !n.comps().iter().any(|c| c.contains(0.0)) {
+    if !n.comps().iter().any(|c| c.contains(0.0)) {
         return None;
     }
     if is_uniform(cx, id, h) {
@@ -71,7 +81,8 @@ fn walk(
         }
         return Some(());
     }
-    let go = |x: naga::Handle<E>, names: &mut Vec<String>| walk(cx, f, id, x, depth + 1, names);
+    let go =
+        |x: naga::Handle<E>, names: &mut Vec<String>| walk(cx, f, id, x, depth + 1, names, steps);
     match f.expressions[h] {
         E::Binary {
             op: Bo::Multiply,
@@ -129,7 +140,7 @@ fn walk(
                 .map(|x| (id, f, x));
             own.chain(by_calls).find_map(|(at, g, x)| {
                 let mut mine = names.clone();
-                walk(cx, g, at, x, depth + 1, &mut mine)?;
+                walk(cx, g, at, x, depth + 1, &mut mine, steps)?;
                 *names = mine;
                 Some(())
             })
@@ -138,7 +149,15 @@ fn walk(
             cx.flows().callers(id).iter().find_map(|(caller, args)| {
                 let g = crate::analysis::function(cx.module, *caller);
                 let mut mine = names.clone();
-                walk(cx, g, *caller, *args.get(i as usize)?, depth + 1, &mut mine)?;
+                walk(
+                    cx,
+                    g,
+                    *caller,
+                    *args.get(i as usize)?,
+                    depth + 1,
+                    &mut mine,
+                    steps,
+                )?;
                 *names = mine;
                 Some(())
             })
