@@ -64,6 +64,10 @@ pub struct Flows {
     locals: Vec<HashMap<usize, Vec<PartStore>>>,
     /// Per private global: (function, value) of every store into it, whole or in part.
     globals: HashMap<usize, Vec<(usize, Handle<E>)>>,
+    /// Per function: the values stored whole through each pointer parameter (an `out` one).
+    outs: Vec<HashMap<u32, Vec<Handle<E>>>>,
+    /// Per (function, local): (callee, argument) of every call that passes the local's pointer.
+    passed: HashMap<(usize, usize), Vec<(usize, u32)>>,
 }
 
 impl Flows {
@@ -93,6 +97,20 @@ impl Flows {
         self.globals.get(&g).map_or(&[], Vec::as_slice)
     }
 
+    /// What the calls of function `id` that pass local `l`'s pointer store through it:
+    /// (callee, value), an `out` parameter's values.
+    pub(crate) fn written_through(
+        &self,
+        id: usize,
+        l: usize,
+    ) -> impl Iterator<Item = (usize, Handle<E>)> + '_ {
+        let calls = self.passed.get(&(id, l));
+        calls.into_iter().flatten().flat_map(move |&(callee, j)| {
+            let values = self.outs.get(callee).and_then(|m| m.get(&j));
+            values.into_iter().flatten().map(move |v| (callee, *v))
+        })
+    }
+
     /// The values function `id` returns.
     pub(crate) fn returns(&self, id: usize) -> &[Handle<E>] {
         self.returns.get(id).map_or(&[], Vec::as_slice)
@@ -107,6 +125,8 @@ impl Flows {
             returns: vec![Vec::new(); count],
             locals: vec![HashMap::default(); count],
             globals: HashMap::default(),
+            outs: vec![HashMap::default(); count],
+            passed: HashMap::default(),
         };
         for id in 0..count {
             let f = analysis::function(module, id);
@@ -126,7 +146,12 @@ impl Flows {
                     Some(Root::Global(g)) => {
                         self.globals.entry(g).or_default().push((id, *value));
                     }
-                    None => {}
+                    None => {
+                        // Whole through a pointer parameter: an `out` parameter's value.
+                        if let E::FunctionArgument(j) = f.expressions[*pointer] {
+                            self.outs[id].entry(j).or_default().push(*value);
+                        }
+                    }
                 },
                 Statement::Call {
                     function,
@@ -134,6 +159,12 @@ impl Flows {
                     result,
                 } => {
                     let callee = function.index();
+                    for (j, a) in arguments.iter().enumerate() {
+                        if let E::LocalVariable(l) = f.expressions[*a] {
+                            let at = self.passed.entry((id, l.index())).or_default();
+                            at.push((callee, j as u32));
+                        }
+                    }
                     if let Some(c) = self.calls.get_mut(callee) {
                         if let Some(r) = result {
                             self.results.insert((id, *r), (callee, c.len()));

@@ -8,7 +8,6 @@
 use naga::{BinaryOperator as Bo, Expression as E, MathFunction as Mf};
 
 use super::Cx;
-use crate::analysis::each_statement;
 use crate::analysis::names::is_setting;
 
 /// The settings an expression vanishes with, by name (each once, in the order met), and whether
@@ -126,7 +125,7 @@ fn walk(
         | E::As { expr: x, .. } => go(x, names),
         E::Load { pointer } => {
             // What calls write through it replaces a start value (`float x;` starts at 0).
-            let by_calls = written_by_calls(cx, f, pointer);
+            let by_calls = written_by_calls(cx, f, id, pointer);
             let start = |x: &naga::Handle<E>| {
                 matches!(
                     f.expressions[*x],
@@ -166,45 +165,21 @@ fn walk(
     }
 }
 
-/// The values the functions that function `f` calls with the local `pointer` as an argument
-/// store through it (an `out` parameter: Babylon's generated blocks return their results so),
-/// each with its function's id and the function.
+/// The values the functions that function `id` (`f`) calls with the local `pointer` as an
+/// argument store through it (an `out` parameter: Babylon's generated blocks return their
+/// results so), each with its function's id and the function.
 fn written_by_calls<'a>(
     cx: &Cx<'a>,
     f: &naga::Function,
+    id: usize,
     pointer: naga::Handle<E>,
 ) -> Vec<(usize, &'a naga::Function, naga::Handle<E>)> {
-    let mut out = Vec::new();
     let E::LocalVariable(local) = f.expressions[pointer] else {
-        return out;
+        return Vec::new();
     };
-    each_statement(&f.body, &mut |st| {
-        let naga::Statement::Call {
-            function,
-            arguments,
-            ..
-        } = st
-        else {
-            return;
-        };
-        let c = function.index();
-        let Some(i) = arguments
-            .iter()
-            .position(|a| matches!(f.expressions[*a], E::LocalVariable(l) if l == local))
-        else {
-            return;
-        };
-        if c >= cx.module.functions.len() {
-            return;
-        }
-        let g = crate::analysis::function(cx.module, c);
-        each_statement(&g.body, &mut |s| {
-            if let naga::Statement::Store { pointer: p, value } = s {
-                if matches!(g.expressions[*p], E::FunctionArgument(j) if j as usize == i) {
-                    out.push((c, g, *value));
-                }
-            }
-        });
-    });
-    out
+    cx.flows()
+        .written_through(id, local.index())
+        .filter(|&(c, _)| c < cx.module.functions.len())
+        .map(|(c, v)| (c, crate::analysis::function(cx.module, c), v))
+        .collect()
 }

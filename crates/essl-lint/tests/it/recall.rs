@@ -1150,6 +1150,14 @@ const PARAMETERS: &[(&str, &str, &str, Option<&str>)] = &[
         "  r = att(v_x);",
         None,
     ),
+    // A blend of settings a function returns through an `out` parameter (Babylon's generated
+    // blocks): 0 once both settings are.
+    (
+        "division-by-difference",
+        "void choose(float a, float b, float c, out float fade) { fade = a * (1.0 - c) + c * b; }",
+        "  float q;\n  choose(u_gamma, float(u_sampleCount), v_x, q);\n  r = v_x / q;",
+        Some("r = v_x / q;"),
+    ),
     // A cross product of two vectors a caller passes as such: the zero vector where they are
     // parallel (a fibre along the normal); tested first, or a normal and a tangent (a mesh's
     // frame, as two per-pixel vectors are taken to be), quiet.
