@@ -1,10 +1,11 @@
-//! Any bytes, as a vertex and as a fragment shader: the front end and the lints (with two of
+//! Any bytes, as a vertex and as a fragment shader: the front end, the lowering (typed, as the
+//! lints read it, and validated by naga, as a translation takes it) and the lints (with two of
 //! the configurations its `#ifdef`s select) must not panic, and every diagnostic must point
 //! inside the text.
 #![no_main]
 
 use essl::source::SourceFile;
-use essl::{compile, Stage};
+use essl::{compile_front_end, Stage};
 use libfuzzer_sys::fuzz_target;
 
 fuzz_target!(|data: &[u8]| {
@@ -16,7 +17,12 @@ fuzz_target!(|data: &[u8]| {
             format!("#version 300 es\nprecision mediump float;\n{text}"),
         ] {
             let len = src.len();
-            let shader = compile(SourceFile::new("fuzz", src), stage, &Default::default());
+            let mut shader =
+                compile_front_end(SourceFile::new("fuzz", src), stage, &Default::default());
+            if shader.ok() {
+                let _ = essl::lower::lower_shader(&shader, &Default::default());
+            }
+            shader.lower_typed();
             for d in &shader.diagnostics {
                 assert!(d.span.end as usize <= len && d.span.start <= d.span.end);
             }

@@ -519,7 +519,8 @@ fn fix_rounds(
     unreachable!("the last round returns")
 }
 
-/// Compiles one part (nothing where its includes failed), lowered to naga IR when `lower`.
+/// Compiles one part (nothing where its includes failed), lowered to naga IR when `lower`
+/// (typed, not validated: the lints read it, nothing translates it).
 fn compile(part: &Part, settings: &Settings, lower: bool) -> Option<Shader> {
     let assembly = part.assembly.as_ref().ok()?;
     let name = assembly
@@ -527,11 +528,11 @@ fn compile(part: &Part, settings: &Settings, lower: bool) -> Option<Shader> {
         .first()
         .map_or(String::new(), |f| f.name().to_string());
     let file = SourceFile::new(name, assembly.text());
-    Some(if lower {
-        essl::compile(file, part.stage, &settings.compile)
-    } else {
-        essl::compile_front_end(file, part.stage, &settings.compile)
-    })
+    let mut shader = essl::compile_front_end(file, part.stage, &settings.compile);
+    if lower {
+        shader.lower_typed();
+    }
+    Some(shader)
 }
 
 /// Lints the compiled parts and moves their diagnostics onto their files.
@@ -592,7 +593,7 @@ pub(crate) fn lint(checked: &mut CheckedShader, settings: &Settings, lints: bool
         return;
     };
     let before = shader.diagnostics.len();
-    shader.lower();
+    shader.lower_typed();
     let mut found: Vec<Diagnostic> = shader.diagnostics[before..].to_vec();
     if shader.ok() {
         found.extend(essl_lint::lint(shader, &settings.rules));

@@ -182,12 +182,14 @@ fn bench_stages(c: &mut Criterion) {
     });
 
     for s in &mut shaders {
-        s.naga = essl::lower::lower_shader(s, &options).ok();
+        s.naga = essl::lower::lower_shader(s, &options)
+            .ok()
+            .map(|(m, info)| essl::lower::Lowered::validated(m, info));
     }
     group.bench_function("5 naga validation alone", |b| {
         b.iter(|| {
             for s in &shaders {
-                if let Some((module, _)) = &s.naga {
+                if let Some(essl::lower::Lowered { module, .. }) = &s.naga {
                     let mut v = naga::valid::Validator::new(
                         naga::valid::ValidationFlags::all(),
                         naga::valid::Capabilities::default(),

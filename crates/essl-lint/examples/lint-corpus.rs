@@ -12,7 +12,7 @@
 use std::collections::BTreeMap;
 
 use essl::source::SourceFile;
-use essl::{compile, CompileOptions, Stage};
+use essl::{compile_front_end, CompileOptions, Stage};
 use serde_json::{json, Value};
 
 fn main() {
@@ -39,11 +39,13 @@ fn main() {
             continue;
         };
         shaders += 1;
-        let shader = compile(
+        // Lowered as `essl lint` lowers for the lints: typed, not validated.
+        let mut shader = compile_front_end(
             SourceFile::new(file, text.as_str()),
             stage,
             &CompileOptions::default(),
         );
+        shader.lower_typed();
         if !shader.ok() || shader.naga.is_none() {
             continue;
         }

@@ -196,7 +196,7 @@ pub fn lint(shader: &Shader, options: &LintOptions) -> Vec<Diagnostic> {
     if !RULES.iter().any(|r| reported(r)) {
         return Vec::new();
     }
-    let Some((module, _)) = shader.naga.as_ref() else {
+    let Some(module) = shader.naga.as_ref().map(|l| &l.module) else {
         return Vec::new();
     };
     let allowed = suppress::Allowed::scan(&shader.file);

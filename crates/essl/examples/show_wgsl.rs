@@ -11,12 +11,13 @@ fn main() {
     for d in &sh.diagnostics {
         eprintln!("{}: {}", d.code, d.message);
     }
-    let (m, info) = sh.naga.expect("lowered");
-    let out = naga::back::wgsl::write_string(&m, &info, naga::back::wgsl::WriterFlags::empty());
+    let lowered = sh.naga.expect("lowered");
+    let (m, info) = (&lowered.module, lowered.info().expect("validated"));
+    let out = naga::back::wgsl::write_string(m, info, naga::back::wgsl::WriterFlags::empty());
     match out {
         Ok(s) => println!("{s}"),
         Err(e) => println!("wgsl-out error: {e:?}"),
     }
-    let spv = naga::back::spv::write_vec(&m, &info, &Default::default(), None);
+    let spv = naga::back::spv::write_vec(m, info, &Default::default(), None);
     println!("// spv: {:?}", spv.map(|v| v.len()));
 }

@@ -56,8 +56,9 @@ pub struct Shader {
     pub diagnostics: Vec<Diagnostic>,
     /// The checked module (present even when there are errors, for reflection of what parsed).
     pub module: hir::Module,
-    /// The shader lowered on its own to a validated naga module (when it compiled).
-    pub naga: Option<(naga::Module, naga::valid::ModuleInfo)>,
+    /// The shader lowered on its own to naga IR (when it compiled): validated by [`compile`]
+    /// and [`Shader::lower`], typed alone by [`Shader::lower_typed`].
+    pub naga: Option<crate::lower::Lowered>,
     /// The invocations in the text of the shader's own macros: a diagnostic that underlines
     /// one whole is labelled with the macro's `#define` ([`Shader::label_expansions`]).
     pub expansions: Vec<preprocess::Expansion>,
@@ -132,11 +133,29 @@ impl Shader {
         with_stack(|| self.lower_here())
     }
 
+    /// [`Shader::lower`] without validation, for tools that read the IR without translating
+    /// it (the lints): the module and the type of each expression ([`crate::lower::Lowered`]).
+    /// Validation checks essl's lowering, which the front end's verdict does not depend on.
+    pub fn lower_typed(&mut self) {
+        with_stack(|| self.lower_with(true))
+    }
+
     fn lower_here(&mut self) {
+        self.lower_with(false)
+    }
+
+    fn lower_with(&mut self, typed: bool) {
         if !self.ok() || self.naga.is_some() {
             return;
         }
-        match crate::lower::lower_shader(self, &crate::program::LowerOptions::default()) {
+        let options = crate::program::LowerOptions::default();
+        let lowered = if typed {
+            crate::lower::lower_shader_typed(self, &options)
+        } else {
+            crate::lower::lower_shader(self, &options)
+                .map(|(m, info)| crate::lower::Lowered::validated(m, info))
+        };
+        match lowered {
             Ok(m) => self.naga = Some(m),
             Err(e) => {
                 self.diagnostics.push(lowering_diagnostic(&e));

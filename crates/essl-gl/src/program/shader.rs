@@ -119,9 +119,14 @@ impl Context {
             return Some(String::new());
         };
         let compiled = compile(&self.linker.shaders, stage_of(s.ty), source);
-        let text = compiled.naga.as_ref().and_then(|(module, info)| {
-            naga::back::wgsl::write_string(module, info, naga::back::wgsl::WriterFlags::empty())
-                .ok()
+        let text = compiled.naga.as_ref().and_then(|lowered| {
+            let info = lowered.info()?;
+            naga::back::wgsl::write_string(
+                &lowered.module,
+                info,
+                naga::back::wgsl::WriterFlags::empty(),
+            )
+            .ok()
         });
         Some(text.unwrap_or_default())
     }

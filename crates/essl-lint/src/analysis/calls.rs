@@ -204,8 +204,8 @@ mod tests {
             Stage::Fragment,
             &CompileOptions::default(),
         );
-        let (module, info) = s.naga.as_ref().expect("compiles");
-        Analysis::run_for(module, info, Mode::Sound, true).rounds
+        let lowered = s.naga.as_ref().expect("compiles");
+        Analysis::run_for(lowered, Mode::Sound, true).rounds
     }
 
     #[test]

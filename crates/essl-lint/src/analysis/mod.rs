@@ -51,6 +51,7 @@ mod statements;
 use rustc_hash::FxHashMap as HashMap;
 
 use naga::{Expression as E, Function, Handle};
+use essl::lower::{FunctionTypes, Lowered};
 
 use crate::value::{Num, Val};
 
@@ -188,26 +189,9 @@ struct Reads {
 
 /// The function with index `id` (module functions first, then entry points).
 pub fn function(module: &naga::Module, id: usize) -> &Function {
-    match function_handle(module, id) {
-        Some(h) => &module.functions[h],
+    match module.functions.iter().nth(id) {
+        Some((_, f)) => f,
         None => &module.entry_points[id - module.functions.len()].function,
-    }
-}
-
-/// The handle of function `id` when it is a module function (`None` for an entry point).
-fn function_handle(module: &naga::Module, id: usize) -> Option<naga::Handle<Function>> {
-    module.functions.iter().nth(id).map(|(h, _)| h)
-}
-
-/// The validator's information about function `id`.
-pub fn function_info<'a>(
-    module: &naga::Module,
-    info: &'a naga::valid::ModuleInfo,
-    id: usize,
-) -> &'a naga::valid::FunctionInfo {
-    match function_handle(module, id) {
-        Some(h) => &info[h],
-        None => info.get_entry_point(id - module.functions.len()),
     }
 }
 
@@ -217,10 +201,10 @@ pub fn function_info<'a>(
 struct Site<'a> {
     /// The module.
     module: &'a naga::Module,
-    /// The validator's information about the module.
-    info: &'a naga::valid::ModuleInfo,
-    /// The validator's information about the function (expression types).
-    finfo: &'a naga::valid::FunctionInfo,
+    /// The module lowered, with its expressions' types.
+    info: &'a Lowered,
+    /// The types of the function's expressions.
+    types: FunctionTypes<'a>,
     /// The function.
     f: &'a Function,
     /// Its index (module functions first, then entry points).
@@ -230,7 +214,7 @@ struct Site<'a> {
 impl<'a> Site<'a> {
     /// The type of expression `h`.
     fn ty(&self, h: Handle<E>) -> &'a naga::TypeInner {
-        self.finfo[h].ty.inner_with(&self.module.types)
+        self.types.ty(h)
     }
 }
 
@@ -239,11 +223,11 @@ impl Analysis {
     /// result of its own arguments (what signs and ranges of results need; magnitudes of
     /// ordinary values do not).
     pub fn run_for(
-        module: &naga::Module,
-        info: &naga::valid::ModuleInfo,
+        info: &Lowered,
         mode: Mode,
         per_call: bool,
     ) -> Analysis {
+        let module = &info.module;
         let count = module.functions.len() + module.entry_points.len();
         let mut a = Analysis {
             mode,

@@ -10,7 +10,7 @@ use naga::{Block, Expression as E, Function, Handle, Statement};
 use super::flow;
 use super::memory::pointee;
 use super::series;
-use super::{function, function_info, Analysis, Place, Root, Site};
+use super::{function, Analysis, Place, Root, Site};
 use crate::value::Val;
 
 impl Analysis {
@@ -19,7 +19,7 @@ impl Analysis {
     pub(super) fn run_function(
         &mut self,
         module: &naga::Module,
-        info: &naga::valid::ModuleInfo,
+        info: &essl::lower::Lowered,
         id: usize,
     ) {
         let f = function(module, id);
@@ -36,7 +36,7 @@ impl Analysis {
         let s = Site {
             module,
             info,
-            finfo: function_info(module, info, id),
+            types: info.function(id),
             f,
             id,
         };

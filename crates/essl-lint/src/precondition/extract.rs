@@ -72,9 +72,7 @@ impl<'a> Extractor<'a> {
     }
 
     fn inner(&self, id: usize, h: Handle<E>) -> &'a TypeInner {
-        analysis::function_info(self.module, self.cx.info, id)[h]
-            .ty
-            .inner_with(&self.module.types)
+        self.cx.info.ty(id, h)
     }
 
     fn is_pointer(&self, id: usize, h: Handle<E>) -> bool {

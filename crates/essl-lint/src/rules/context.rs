@@ -50,8 +50,8 @@ pub struct Cx<'a> {
     pub module: &'a naga::Module,
     /// The checked module the IR was lowered from (statements as the user wrote them).
     pub hir: &'a essl::hir::Module,
-    /// naga's validation information (expression types).
-    pub info: &'a naga::valid::ModuleInfo,
+    /// The IR with its expressions' types.
+    pub info: &'a essl::lower::Lowered,
     /// The analysis with any external value: computed on first use ([`Cx::sound`]).
     sound: std::cell::OnceCell<Analysis>,
     /// The analysis with ordinary external values: computed on first use ([`Cx::typical`]),
@@ -76,7 +76,8 @@ impl<'a> Cx<'a> {
     /// [`Cx::new`] with the precisions already looked up; `per_call`: whether the sound
     /// analysis gives each call its own result.
     pub fn with_precisions(shader: &'a Shader, prec: Precisions, per_call: bool) -> Option<Cx<'a>> {
-        let (module, info) = shader.naga.as_ref()?;
+        let info = shader.naga.as_ref()?;
+        let module = &info.module;
         let mut written = HashSet::default();
         for (_, f) in module.functions.iter() {
             collect_written(f, &f.body, &mut written);
@@ -100,14 +101,14 @@ impl<'a> Cx<'a> {
     /// that reads signs and ranges has something to look at).
     pub fn sound(&self) -> &Analysis {
         self.sound
-            .get_or_init(|| Analysis::run_for(self.module, self.info, Mode::Sound, self.per_call))
+            .get_or_init(|| Analysis::run_for(self.info, Mode::Sound, self.per_call))
     }
 
     /// The analysis with ordinary external values (`[0, TYPICAL]`, matrix entries and texels in
     /// `[0, 1]`).
     pub fn typical(&self) -> &Analysis {
         self.typical
-            .get_or_init(|| Analysis::run_for(self.module, self.info, Mode::Typical, false))
+            .get_or_init(|| Analysis::run_for(self.info, Mode::Typical, false))
     }
 
     /// The user's functions (not the entry-point wrapper): (index, function).
@@ -118,18 +119,14 @@ impl<'a> Cx<'a> {
 
     /// The scalar kind of an expression of function `id`.
     pub fn kind(&self, id: usize, h: Handle<E>) -> Option<naga::ScalarKind> {
-        analysis::function_info(self.module, self.info, id)[h]
-            .ty
-            .inner_with(&self.module.types)
+        self.info.ty(id, h)
             .scalar_kind()
     }
 
     /// Whether expression `h` of function `id` is a matrix.
     pub fn is_matrix(&self, id: usize, h: Handle<E>) -> bool {
         matches!(
-            analysis::function_info(self.module, self.info, id)[h]
-                .ty
-                .inner_with(&self.module.types),
+            self.info.ty(id, h),
             naga::TypeInner::Matrix { .. }
         )
     }

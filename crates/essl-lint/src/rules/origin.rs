@@ -351,9 +351,7 @@ impl Cx<'_> {
     }
 
     fn type_of(&self, id: usize, h: Handle<E>) -> &TypeInner {
-        analysis::function_info(self.module, self.info, id)[h]
-            .ty
-            .inner_with(&self.module.types)
+        self.info.ty(id, h)
     }
 
     fn is_scalar(&self, id: usize, h: Handle<E>) -> bool {

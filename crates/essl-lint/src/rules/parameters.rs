@@ -483,9 +483,8 @@ fn returned(cx: &Cx, fr: &Frame, h: Handle<E>, callee: usize, depth: u32, out: &
 
 /// Whether expression `h` of function `id` is a 4-component vector.
 fn is_vec4(cx: &Cx, id: usize, h: Handle<E>) -> bool {
-    let info = crate::analysis::function_info(cx.module, cx.info, id);
     matches!(
-        info[h].ty.inner_with(&cx.module.types),
+        cx.info.ty(id, h),
         TypeInner::Vector {
             size: naga::VectorSize::Quad,
             ..

@@ -384,7 +384,13 @@ fn configuration(
     with.defines
         .extend(v.defines.iter().map(|n| (n.clone(), value.clone())));
     let file = || SourceFile::new(shader.file.name(), shader.file.text());
-    let mut compiled = essl::compile(file(), shader.stage, &with);
+    // Typed, not validated: the lints read the IR (as the configuration as written has it).
+    let typed = |with: &essl::CompileOptions| {
+        let mut s = essl::compile_front_end(file(), shader.stage, with);
+        s.lower_typed();
+        s
+    };
+    let mut compiled = typed(&with);
     let mut constants = Vec::new();
     if !compiled.ok() {
         // A group that uses constants the host defines with its flag (Cesium's `SDF_EDGE`
@@ -393,13 +399,13 @@ fn configuration(
         with.defines
             .extend(constants.iter().map(|n| (n.clone(), "1.0".to_string())));
         if !constants.is_empty() {
-            compiled = essl::compile(file(), shader.stage, &with);
+            compiled = typed(&with);
         }
     }
     let mut leveled = false;
     if !compiled.ok() && !levels.is_empty() {
         with.defines.extend(levels.iter().cloned());
-        compiled = essl::compile(file(), shader.stage, &with);
+        compiled = typed(&with);
         leveled = true;
     }
     if !compiled.ok() || compiled.naga.is_none() {

@@ -22,6 +22,7 @@ mod func;
 pub mod layout;
 mod plan;
 mod stage;
+mod typed;
 
 use rustc_hash::FxHashMap as HashMap;
 
@@ -37,6 +38,7 @@ use crate::source::Span;
 use crate::Stage;
 use layout::{Repr, Types};
 pub use plan::sampler_paths;
+pub use typed::{FunctionTypes, Lowered};
 use plan::ProgramPlanner;
 pub(crate) use stage::sampler_types;
 
@@ -176,6 +178,18 @@ pub fn lower_shader<S: AsRef<hir::Module> + ?Sized>(
     let module = stage::lower_stage(m, &plan, &pplan, options)?;
     let info = validate(&module, m.stage)?;
     Ok((module, info))
+}
+
+/// [`lower_shader`] without validation: the module typed by naga's typifier, for tools that
+/// read it without translating it ([`Lowered::typified`]).
+pub fn lower_shader_typed<S: AsRef<hir::Module> + ?Sized>(
+    shader: &S,
+    options: &LowerOptions,
+) -> Result<Lowered, LowerError> {
+    let m = shader.as_ref();
+    let (plan, pplan) = plan::shader_plan(m, options);
+    let module = stage::lower_stage(m, &plan, &pplan, options)?;
+    Lowered::typified(module, m.stage)
 }
 
 /// The naga capabilities lowered modules use and are validated with: naga's defaults (what

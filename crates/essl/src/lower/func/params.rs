@@ -87,7 +87,7 @@ mod tests {
             Stage::Fragment,
             &CompileOptions::default(),
         );
-        let (m, _) = s.naga.as_ref().expect("compiles");
+        let m = &s.naga.as_ref().expect("compiles").module;
         let (_, f) = m
             .functions
             .iter()
