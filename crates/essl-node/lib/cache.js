@@ -9,7 +9,7 @@
 //
 // Written by hand: the caches on npm (flat-cache, file-entry-cache, find-cache-dir) key on a
 // file's metadata and know nothing of what a check read besides the file itself.
-import {createHash} from 'node:crypto';
+import * as crypto from 'node:crypto';
 import {existsSync, mkdirSync, readFileSync, renameSync, statSync, writeFileSync} from 'node:fs';
 import {dirname, join} from 'node:path';
 import {fileURLToPath} from 'node:url';
@@ -20,7 +20,11 @@ const FORMAT = 1;
 const MAX_ENTRIES = 10000;
 const here = dirname(fileURLToPath(import.meta.url));
 
-const sha = text => createHash('sha256').update(text).digest('base64url');
+// Node's one-shot `hash` (20.12, 21.7) where it has one: half `createHash`'s time on a
+// shader's text.
+const sha = crypto.hash
+  ? text => crypto.hash('sha256', text, 'base64url')
+  : text => crypto.createHash('sha256').update(text).digest('base64url');
 
 /** What makes results of one essl differ from another's: the package's version and, where
  * the addon was built beside it (this repository), the addon file's size and time. */

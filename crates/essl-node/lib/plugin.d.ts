@@ -31,6 +31,12 @@ export default function essl(options?: EsslPluginOptions): {
   buildEnd(): void;
   /** Waits for the checks a one-shot build did not wait for; fails the build on an error. */
   generateBundle(): Promise<void>;
-  load(id: string): string | null;
-  transform(code: string, id: string): Promise<{code: string; map: null} | null>;
+  /** A bare shader import's module; `filter`: the ids the bundler calls it for (Rollup
+   * 4.38, Vite 6.3; older bundlers call it for every module). */
+  load: {filter: {id: RegExp}; handler(id: string): string | null};
+  /** Checks a shader file or a script; `filter` as `load`'s. */
+  transform: {
+    filter: {id: RegExp};
+    handler(code: string, id: string): Promise<{code: string; map: null} | null>;
+  };
 };

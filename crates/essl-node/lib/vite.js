@@ -6,7 +6,7 @@
 // true`, that text (and a `?raw` import's) minified.
 import {readFileSync} from 'node:fs';
 import {CheckCache, cacheDir} from './cache.js';
-import {SHADER, buildError, checkModule, file, optionsError, wanted} from './core.js';
+import {MAYBE_WANTED, SHADER, buildError, checkModule, file, optionsError, wanted} from './core.js';
 
 export default function essl(options = {}) {
   if (options === null || typeof options !== 'object' || Array.isArray(options)) {
@@ -69,39 +69,50 @@ export default function essl(options = {}) {
         if (failed.size && SHADER.test(added)) reload();
       });
     },
-    load(id) {
-      // `?raw` and other queries are Vite's; a bare shader import is this plugin's.
-      if (!load || id.includes('?') || id.startsWith('\0') || !SHADER.test(id) || !wanted(id, options)) return null;
-      return `export default ${JSON.stringify(readFileSync(id, 'utf8'))};`;
+    // Each hook's `filter` (Rollup 4.38, Vite 6.3) spares the bundler calling it for modules it
+    // would return at once (in Vite, two wrappers a call: about 2 ms a build of 200 shaders);
+    // older bundlers ignore it and the hook tests the module itself.
+    load: {
+      filter: {id: SHADER},
+      handler(id) {
+        // `?raw` and other queries are Vite's; a bare shader import is this plugin's.
+        if (!load || id.includes('?') || id.startsWith('\0') || !SHADER.test(id) || !wanted(id, options)) return null;
+        return `export default ${JSON.stringify(readFileSync(id, 'utf8'))};`;
+      },
     },
-    async transform(code, id) {
-      if (!wanted(id, options)) return null;
-      // Under `minify` (which a `preset` turns off), a `?raw` import's code is replaced too:
-      // its text minified.
-      const raw = options.minify === true && !options.preset && /\?raw$/.test(id) && SHADER.test(file(id));
-      const replaces = (load && !id.includes('?') && SHADER.test(id)) || raw;
-      if (!replaces && !serving && !this.meta?.watchMode) {
-        pending.push(checkModule(id, code, options, false, cache).then(checked => ({checked}), thrown => ({thrown})));
-        return null;
-      }
-      // `vite dev` has one build start for the server's life: an included file may have
-      // changed since the last check.
-      if (serving) cache?.forgetDisk();
-      const checked = await checkModule(id, code, options, false, cache);
-      if (!checked) return null;
-      for (const f of checked.files) if (f !== file(id)) this.addWatchFile(f);
-      for (const w of checked.warnings) this.warn(w.rendered);
-      if (checked.errors.length) {
-        failed.add(file(id));
-        for (const f of checked.files) failed.add(f);
-        for (const e of checked.errors) if (e.file) failed.add(e.file);
-        this.error(buildError(checked.errors));
-      }
-      // The module's text: a bare import's, or under `minify` a `?raw` import's too.
-      if (replaces && checked.text !== null) {
-        return {code: `export default ${JSON.stringify(checked.text)};`, map: null};
-      }
-      return null;
+    transform: {
+      filter: {id: MAYBE_WANTED},
+      handler: transform,
     },
   };
+
+  async function transform(code, id) {
+    if (!wanted(id, options)) return null;
+    // Under `minify` (which a `preset` turns off), a `?raw` import's code is replaced too:
+    // its text minified.
+    const raw = options.minify === true && !options.preset && /\?raw$/.test(id) && SHADER.test(file(id));
+    const replaces = (load && !id.includes('?') && SHADER.test(id)) || raw;
+    if (!replaces && !serving && !this.meta?.watchMode) {
+      pending.push(checkModule(id, code, options, false, cache).then(checked => ({checked}), thrown => ({thrown})));
+      return null;
+    }
+    // `vite dev` has one build start for the server's life: an included file may have
+    // changed since the last check.
+    if (serving) cache?.forgetDisk();
+    const checked = await checkModule(id, code, options, false, cache);
+    if (!checked) return null;
+    for (const f of checked.files) if (f !== file(id)) this.addWatchFile(f);
+    for (const w of checked.warnings) this.warn(w.rendered);
+    if (checked.errors.length) {
+      failed.add(file(id));
+      for (const f of checked.files) failed.add(f);
+      for (const e of checked.errors) if (e.file) failed.add(e.file);
+      this.error(buildError(checked.errors));
+    }
+    // The module's text: a bare import's, or under `minify` a `?raw` import's too.
+    if (replaces && checked.text !== null) {
+      return {code: `export default ${JSON.stringify(checked.text)};`, map: null};
+    }
+    return null;
+  }
 }

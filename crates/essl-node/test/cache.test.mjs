@@ -142,7 +142,7 @@ test('in vite dev, a check sees an included file changed since the last one', {s
   plugin.configResolved({command: 'serve', root: dir});
   plugin.buildStart();
   const id = join(dir, 'src', 'light.frag');
-  const code = plugin.load(id);
+  const code = plugin.load.handler(id);
   const context = {
     warnings: [],
     meta: {},
@@ -155,12 +155,12 @@ test('in vite dev, a check sees an included file changed since the last one', {s
     },
   };
   try {
-    const first = await plugin.transform.call(context, code, id);
+    const first = await plugin.transform.handler.call(context, code, id);
     assert.match(first.code, /clamp\(\(d - u_outer\)/);
     writeFileSync(join(dir, 'src', 'ramp.glsl'), RAMP.replace('clamp', 'clamb'));
-    await assert.rejects(plugin.transform.call(context, code, id), /clamb/);
+    await assert.rejects(plugin.transform.handler.call(context, code, id), /clamb/);
     writeFileSync(join(dir, 'src', 'ramp.glsl'), RAMP);
-    const fixed = await plugin.transform.call(context, code, id);
+    const fixed = await plugin.transform.handler.call(context, code, id);
     assert.equal(fixed.code, first.code);
   } finally {
     rmSync(dir, {recursive: true, force: true});

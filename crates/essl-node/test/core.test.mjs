@@ -5,7 +5,7 @@ import assert from 'node:assert/strict';
 import {existsSync, mkdtempSync, readFileSync, rmSync, writeFileSync} from 'node:fs';
 import {tmpdir} from 'node:os';
 import {join} from 'node:path';
-import {checkModule, file, wanted} from '../lib/core.js';
+import {MAYBE_WANTED, SHADER, checkModule, file, wanted} from '../lib/core.js';
 
 const FRAG = '#version 300 es\nprecision mediump float;\nuniform vec4 u_c;\nout vec4 o;\nvoid main() { o = u_c; }\n';
 
@@ -72,9 +72,9 @@ test("the plugin's load leaves excluded shader files to other plugins", async ()
   try {
     const f = join(dir, 'light.frag');
     writeFileSync(f, FRAG);
-    assert.equal(essl().load(f), `export default ${JSON.stringify(FRAG)};`);
-    assert.equal(essl({exclude: 'light'}).load(f), null);
-    assert.equal(essl({include: /\.vert$/}).load(f), null);
+    assert.equal(essl().load.handler(f), `export default ${JSON.stringify(FRAG)};`);
+    assert.equal(essl({exclude: 'light'}).load.handler(f), null);
+    assert.equal(essl({include: /\.vert$/}).load.handler(f), null);
   } finally {
     rmSync(dir, {recursive: true, force: true});
   }
@@ -117,7 +117,7 @@ test('vite dev: creating the #include a failing shader missed reloads the page',
     plugin.configResolved({command: 'serve'});
     plugin.configureServer({watcher, ws: {send: m => sent.push(m)}});
     const ctx = {addWatchFile() {}, warn() {}, error(e) { throw e; }, meta: {}};
-    await assert.rejects(plugin.transform.call(ctx, `export default ${JSON.stringify(readFileSync(f, 'utf8'))};`, f));
+    await assert.rejects(plugin.transform.handler.call(ctx, `export default ${JSON.stringify(readFileSync(f, 'utf8'))};`, f));
     watcher.emit('add', join(dir, 'other.js'));
     assert.deepEqual(sent, []);
     writeFileSync(join(dir, 'common.glsl'), 'float half(float x) { return x * 0.5; }\n');
@@ -126,4 +126,19 @@ test('vite dev: creating the #include a failing shader missed reloads the page',
   } finally {
     rmSync(dir, {recursive: true, force: true});
   }
+});
+
+test("the hooks' filters let through every module the hooks act on", async () => {
+  const {default: essl} = await import('../lib/vite.js');
+  const plugin = essl();
+  const ids = ['/p/light.frag', '/p/light.frag?raw', '/p/a.glsl?import&raw', '/p/main.ts', '/p/main.js?v=3', '/p/App.tsx',
+    '/p/x.cjs', '/p/index.html?html-proxy&index=0.js', '/p/style.css', '/p/data.json', '/p/img.png?url', '\0virtual.frag'];
+  for (const id of ids) {
+    if (wanted(id)) assert.ok(plugin.transform.filter.id.test(id), id);
+  }
+  assert.equal(plugin.transform.filter.id, MAYBE_WANTED);
+  assert.deepEqual(['/p/style.css', '/p/data.json', '/p/img.png?url'].map(id => MAYBE_WANTED.test(id)), [false, false, false]);
+  // A `?raw` import is Vite's to load: the bundler need not call the plugin's `load`.
+  assert.equal(plugin.load.filter.id, SHADER);
+  assert.deepEqual(['/p/light.frag', '/p/light.frag?raw'].map(id => SHADER.test(id)), [true, false]);
 });
