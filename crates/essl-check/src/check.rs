@@ -519,8 +519,9 @@ fn fix_rounds(
     unreachable!("the last round returns")
 }
 
-/// Compiles one part (nothing where its includes failed), lowered to naga IR when `lower`
-/// (typed, not validated: the lints read it, nothing translates it).
+/// Compiles one part (nothing where its includes failed), lowered to naga IR when `lower` and a
+/// lint on the IR has something to look at (typed, not validated: the lints read it, nothing
+/// translates it).
 fn compile(part: &Part, settings: &Settings, lower: bool) -> Option<Shader> {
     let assembly = part.assembly.as_ref().ok()?;
     let name = assembly
@@ -529,7 +530,7 @@ fn compile(part: &Part, settings: &Settings, lower: bool) -> Option<Shader> {
         .map_or(String::new(), |f| f.name().to_string());
     let file = SourceFile::new(name, assembly.text());
     let mut shader = essl::compile_front_end(file, part.stage, &settings.compile);
-    if lower {
+    if lower && essl_lint::needs_ir(&shader) {
         shader.lower_typed();
     }
     Some(shader)
@@ -582,8 +583,9 @@ fn finish_parts(
         .collect()
 }
 
-/// Lowers a shader checked by its front end alone and runs the lints (when `lints`: a check
-/// without them is left unlowered), adding their findings on their files.
+/// Lowers a shader checked by its front end alone where a lint on naga IR has something to look
+/// at, and runs the lints (when `lints`: a check without them is left unlowered), adding their
+/// findings on their files.
 pub(crate) fn lint(checked: &mut CheckedShader, settings: &Settings, lints: bool) {
     if checked.linted {
         return;
@@ -593,7 +595,9 @@ pub(crate) fn lint(checked: &mut CheckedShader, settings: &Settings, lints: bool
         return;
     };
     let before = shader.diagnostics.len();
-    shader.lower_typed();
+    if essl_lint::needs_ir(shader) {
+        shader.lower_typed();
+    }
     let mut found: Vec<Diagnostic> = shader.diagnostics[before..].to_vec();
     if shader.ok() {
         found.extend(essl_lint::lint(shader, &settings.rules));

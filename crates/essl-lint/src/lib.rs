@@ -38,6 +38,7 @@ mod definite;
 mod interval;
 mod precision;
 pub mod precondition;
+mod prescreen;
 mod rules;
 pub mod sarif;
 mod suppress;
@@ -50,6 +51,7 @@ use essl::diagnostic::{self, Diagnostic, Severity};
 use essl::Shader;
 
 pub use precondition::{preconditions, Condition, Precondition, Term, UniformRef};
+pub use prescreen::needs_ir;
 pub use rules::{rule, Rule, RULES};
 
 /// What to do with a rule's findings.
@@ -185,7 +187,9 @@ impl LintOptions {
 /// with the severity its rule's level gives it ([`Level::severity`]); notes only when
 /// [`LintOptions::notes`] asks for them.
 ///
-/// A shader that did not compile (no naga IR) has no findings: its errors come first.
+/// A shader that did not compile has no findings: its errors come first. The rules on naga IR
+/// read the shader lowered ([`Shader::lower_typed`], where [`needs_ir`] says they have something
+/// to look at); on a shader not lowered only the rules on its checked module run.
 pub fn lint(shader: &Shader, options: &LintOptions) -> Vec<Diagnostic> {
     // The analysis is most of the cost: skip it when no rule would look at it.
     let reported = |r: &Rule| match options.level(r) {
@@ -196,27 +200,30 @@ pub fn lint(shader: &Shader, options: &LintOptions) -> Vec<Diagnostic> {
     if !RULES.iter().any(|r| reported(r)) {
         return Vec::new();
     }
-    let Some(module) = shader.naga.as_ref().map(|l| &l.module) else {
+    if !shader.ok() {
         return Vec::new();
-    };
+    }
     let allowed = suppress::Allowed::scan(&shader.file);
     let mut out = Vec::new();
-    let (worth_it, signs, prec) = rules::candidates(shader, module);
+    let (worth_it, signs, prec) = match shader.naga.as_ref() {
+        Some(lowered) => rules::candidates(shader, &lowered.module),
+        None => (false, false, None),
+    };
+    debug_assert!(
+        !worth_it || needs_ir(shader),
+        "the screen missed a candidate"
+    );
     // The rules on the checked module run on every shader; the others only where the value
     // analysis has something to look at.
     let runs = |r: &Rule| reported(r) && (worth_it || rules::HIR_RULES.contains(&r.id));
-    let cx = RULES
-        .iter()
-        .any(|r| runs(r))
-        .then(|| {
-            let prec = match (worth_it, prec) {
-                (_, Some(p)) => p,
-                (true, None) => precision::Precisions::of(&shader.module),
-                (false, None) => precision::Precisions::default(),
-            };
-            rules::Cx::with_precisions(shader, prec, signs)
-        })
-        .flatten();
+    let cx = RULES.iter().any(|r| runs(r)).then(|| {
+        let prec = match (worth_it, prec) {
+            (_, Some(p)) => p,
+            (true, None) => precision::Precisions::of(&shader.module),
+            (false, None) => precision::Precisions::default(),
+        };
+        rules::Cx::with_precisions(shader, prec, signs)
+    });
     if let Some(cx) = &cx {
         for r in RULES {
             if !runs(r) {
@@ -240,7 +247,7 @@ pub fn lint(shader: &Shader, options: &LintOptions) -> Vec<Diagnostic> {
             }
         }
     } else if worth_it {
-        // The analysis could not be set up: nothing was looked at, so nothing is unused.
+        // No rule ran: nothing was looked at, so nothing is unused.
         return Vec::new();
     }
     out.extend(unused_allows(&allowed, options, &reported));

@@ -50,8 +50,8 @@ mod statements;
 
 use rustc_hash::FxHashMap as HashMap;
 
-use naga::{Expression as E, Function, Handle};
 use essl::lower::{FunctionTypes, Lowered};
+use naga::{Expression as E, Function, Handle};
 
 use crate::value::{Num, Val};
 
@@ -222,11 +222,7 @@ impl Analysis {
     /// Analyses a validated module; `per_call`: with the last round that gives each call the
     /// result of its own arguments (what signs and ranges of results need; magnitudes of
     /// ordinary values do not).
-    pub fn run_for(
-        info: &Lowered,
-        mode: Mode,
-        per_call: bool,
-    ) -> Analysis {
+    pub fn run_for(info: &Lowered, mode: Mode, per_call: bool) -> Analysis {
         let module = &info.module;
         let count = module.functions.len() + module.entry_points.len();
         let mut a = Analysis {

@@ -67,22 +67,38 @@ pub struct Cx<'a> {
     per_call: bool,
 }
 
+/// What a shader not lowered is read through: an empty module, which only the rules on the
+/// checked module are run with ([`crate::needs_ir`] found nothing for the others).
+fn unlowered() -> &'static essl::lower::Lowered {
+    static EMPTY: std::sync::OnceLock<essl::lower::Lowered> = std::sync::OnceLock::new();
+    EMPTY.get_or_init(|| {
+        essl::lower::Lowered::typified(naga::Module::default(), essl::Stage::Fragment)
+            .expect("an empty module has no expression to type")
+    })
+}
+
 impl<'a> Cx<'a> {
     /// Analyses a shader that compiled; `None` when it has no naga IR.
     pub fn new(shader: &'a Shader) -> Option<Cx<'a>> {
-        Cx::with_precisions(shader, Precisions::of(&shader.module), true)
+        shader.naga.as_ref()?;
+        Some(Cx::with_precisions(
+            shader,
+            Precisions::of(&shader.module),
+            true,
+        ))
     }
 
     /// [`Cx::new`] with the precisions already looked up; `per_call`: whether the sound
-    /// analysis gives each call its own result.
-    pub fn with_precisions(shader: &'a Shader, prec: Precisions, per_call: bool) -> Option<Cx<'a>> {
-        let info = shader.naga.as_ref()?;
+    /// analysis gives each call its own result. A shader not lowered is read through an empty
+    /// module: only the rules on the checked module may be run with it.
+    pub fn with_precisions(shader: &'a Shader, prec: Precisions, per_call: bool) -> Cx<'a> {
+        let info = shader.naga.as_ref().unwrap_or_else(|| unlowered());
         let module = &info.module;
         let mut written = HashSet::default();
         for (_, f) in module.functions.iter() {
             collect_written(f, &f.body, &mut written);
         }
-        Some(Cx {
+        Cx {
             file: &shader.file,
             module,
             hir: &shader.module,
@@ -93,7 +109,7 @@ impl<'a> Cx<'a> {
             written,
             flows: std::cell::OnceCell::new(),
             per_call,
-        })
+        }
     }
 
     /// The analysis with any external value, which every rule reads (`mediump-overflow` for
@@ -119,16 +135,12 @@ impl<'a> Cx<'a> {
 
     /// The scalar kind of an expression of function `id`.
     pub fn kind(&self, id: usize, h: Handle<E>) -> Option<naga::ScalarKind> {
-        self.info.ty(id, h)
-            .scalar_kind()
+        self.info.ty(id, h).scalar_kind()
     }
 
     /// Whether expression `h` of function `id` is a matrix.
     pub fn is_matrix(&self, id: usize, h: Handle<E>) -> bool {
-        matches!(
-            self.info.ty(id, h),
-            naga::TypeInner::Matrix { .. }
-        )
+        matches!(self.info.ty(id, h), naga::TypeInner::Matrix { .. })
     }
 
     /// Every call of the built-in `fun` with a span in the source, its arguments through

@@ -384,10 +384,13 @@ fn configuration(
     with.defines
         .extend(v.defines.iter().map(|n| (n.clone(), value.clone())));
     let file = || SourceFile::new(shader.file.name(), shader.file.text());
-    // Typed, not validated: the lints read the IR (as the configuration as written has it).
+    // Lowered (typed, not validated) where a lint on the IR has something to look at, as
+    // `essl lint` lowers the configuration as written.
     let typed = |with: &essl::CompileOptions| {
         let mut s = essl::compile_front_end(file(), shader.stage, with);
-        s.lower_typed();
+        if crate::needs_ir(&s) {
+            s.lower_typed();
+        }
         s
     };
     let mut compiled = typed(&with);
@@ -408,7 +411,7 @@ fn configuration(
         compiled = typed(&with);
         leveled = true;
     }
-    if !compiled.ok() || compiled.naga.is_none() {
+    if !compiled.ok() {
         return false;
     }
     let mut names = named(&v.defines);

@@ -38,9 +38,9 @@ use crate::source::Span;
 use crate::Stage;
 use layout::{Repr, Types};
 pub use plan::sampler_paths;
-pub use typed::{FunctionTypes, Lowered};
 use plan::ProgramPlanner;
 pub(crate) use stage::sampler_types;
+pub use typed::{FunctionTypes, Lowered};
 
 /// Why lowering failed: a construct essl cannot express in naga IR (a limitation of essl,
 /// not an error in the shader), or naga's validator rejecting what essl produced (a bug).

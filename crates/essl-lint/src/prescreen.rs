@@ -1,0 +1,91 @@
+//! Whether a shader needs lowering for the lints: the rules on naga IR look only at a few kinds
+//! of operation ([`crate::rules::candidates`] finds them in the IR), and a shader whose checked
+//! module has none of them, nor any built-in whose lowering makes one, is linted on its checked
+//! module alone (`uninitialised-read`, `non-uniform-derivative`), without lowering it. On the
+//! Vite bench's 200 shaders, 113 have none; lowering was 10.2 M of the 76.0 M instructions of
+//! `essl lint` on them.
+//!
+//! The screen errs towards lowering: any call of a built-in that lowers to a division, a
+//! square root, a power or a texel load, any `clamp` (whose constant bounds the IR rule
+//! judges), and in a shader that names a low precision any product, quotient or built-in call
+//! (`mediump-overflow` looks at those where the precision is low). [`crate::lint`] checks in
+//! debug builds that nothing the IR screen finds was missed here.
+
+use essl::hir::visit::{self, Visitor};
+use essl::hir::{BinaryOp, BuiltinFn, Expr, ExprKind, Init};
+use essl::types::{ScalarKind, Type};
+use essl::Shader;
+
+/// Whether any rule on naga IR may have something to look at in `shader` (a shader that did
+/// not compile has nothing).
+pub fn needs_ir(shader: &Shader) -> bool {
+    if !shader.ok() {
+        return false;
+    }
+    let text = shader.file.text();
+    let low = ["mediump", "lowp", "gl_PointCoord"]
+        .iter()
+        .any(|w| text.contains(w));
+    let mut screen = Screen { low, found: false };
+    let m = &shader.module;
+    for g in &m.globals {
+        if let Some(Init::Expr(e)) = &g.init {
+            screen.visit_expr(e);
+        }
+    }
+    for f in &m.functions {
+        screen.visit_stmts(&f.body);
+    }
+    screen.found
+}
+
+struct Screen {
+    /// The text names a low precision.
+    low: bool,
+    found: bool,
+}
+
+impl Visitor for Screen {
+    fn visit_expr(&mut self, e: &Expr) {
+        if self.found {
+            return;
+        }
+        self.found = match &e.kind {
+            ExprKind::Binary(op, ..) | ExprKind::Assign(Some(op), ..) => {
+                matches!(op, BinaryOp::Div | BinaryOp::Mod)
+                    || self.low && matches!(op, BinaryOp::Mul)
+            }
+            ExprKind::Builtin(f, args) => self.low || lowers_to_candidate(*f, args),
+            _ => false,
+        };
+        visit::walk_expr(self, e);
+    }
+}
+
+/// Whether a call of built-in `f` lowers to something the IR rules look at.
+fn lowers_to_candidate(f: BuiltinFn, args: &[Expr]) -> bool {
+    use BuiltinFn::*;
+    match f {
+        Pow | Acos | Asin | SmoothStep | Normalize | Sqrt | InverseSqrt | Log | Log2 | Mod
+        | Refract | UnpackHalf2x16 | Clamp | TexelFetch | TexelFetchOffset => true,
+        Atan => args.len() == 2,
+        _ if f.is_texture() => {
+            // A projective lookup divides by the last coordinate; an integer texture is read
+            // with a texel load.
+            let integer = args.first().is_some_and(
+                |s| matches!(&s.ty, Type::Sampler(st) if st.kind != ScalarKind::Float),
+            );
+            let projective = matches!(
+                f,
+                TextureProj
+                    | TextureProjOffset
+                    | TextureProjLod
+                    | TextureProjLodOffset
+                    | TextureProjGrad
+                    | TextureProjGradOffset
+            );
+            integer || projective
+        }
+        _ => false,
+    }
+}
