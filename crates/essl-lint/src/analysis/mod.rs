@@ -219,9 +219,9 @@ impl<'a> Site<'a> {
 }
 
 impl Analysis {
-    /// Analyses a validated module; `per_call`: with the last round that gives each call the
-    /// result of its own arguments (what signs and ranges of results need; magnitudes of
-    /// ordinary values do not).
+    /// Analyses a lowered module (validated or typed); `per_call`: with the last round that
+    /// gives each call the result of its own arguments (what signs and ranges of results need;
+    /// magnitudes of ordinary values do not).
     pub fn run_for(info: &Lowered, mode: Mode, per_call: bool) -> Analysis {
         let module = &info.module;
         let count = module.functions.len() + module.entry_points.len();

@@ -3,7 +3,7 @@
 //! naga's validator computes every expression's type as it checks the module, and that is
 //! all a tool reading the IR without translating it (the lints) needs of it; the checking is
 //! most of the validator's cost (on the Vite bench's 200 shaders, validation was 9.6 M of
-//! `essl lint`'s 82.1 M instructions, the types alone about 1.1 M). A module lowered for such
+//! `essl lint`'s 82.1 M instructions; typing them with the typifier, 2.9 M). A module lowered for such
 //! a tool is typed by naga's typifier instead ([`Lowered::typified`]); one lowered for a GPU
 //! or a translation is validated ([`Lowered::validated`]). Validation checks essl's lowering,
 //! not the user's shader: the front end has said whether the shader is valid WebGL.
@@ -54,6 +54,8 @@ impl Lowered {
                 );
                 let mut typifier = naga::front::Typifier::new();
                 if let Some((last, _)) = f.expressions.iter().last() {
+                    // naga's handles only name expressions appended before them, so each
+                    // operand is typed before the expression that reads it.
                     typifier
                         .grow(last, &f.expressions, &ctx)
                         .map_err(|e| LowerError::Invalid {
