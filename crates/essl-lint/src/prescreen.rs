@@ -75,16 +75,7 @@ fn lowers_to_candidate(f: BuiltinFn, args: &[Expr]) -> bool {
             let integer = args.first().is_some_and(
                 |s| matches!(&s.ty, Type::Sampler(st) if st.kind != ScalarKind::Float),
             );
-            let projective = matches!(
-                f,
-                TextureProj
-                    | TextureProjOffset
-                    | TextureProjLod
-                    | TextureProjLodOffset
-                    | TextureProjGrad
-                    | TextureProjGradOffset
-            );
-            integer || projective
+            integer || f.is_projective()
         }
         _ => false,
     }

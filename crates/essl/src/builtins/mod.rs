@@ -321,6 +321,21 @@ impl BuiltinFn {
         )
     }
 
+    /// Whether this is a projective lookup, which divides the coordinates by their last
+    /// component (`textureProj` and its variants).
+    pub fn is_projective(self) -> bool {
+        use BuiltinFn::*;
+        matches!(
+            self,
+            TextureProj
+                | TextureProjOffset
+                | TextureProjLod
+                | TextureProjLodOffset
+                | TextureProjGrad
+                | TextureProjGradOffset
+        )
+    }
+
     /// Whether the function takes a constant `offset` argument (the last, or second to last
     /// before a bias).
     pub fn has_offset(self) -> bool {

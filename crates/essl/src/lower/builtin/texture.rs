@@ -29,20 +29,6 @@ struct TexelAddress {
     depth_ref: Option<Handle<Expression>>,
 }
 
-/// The lookups that divide the coordinates by their last component.
-fn is_projective(op: BuiltinFn) -> bool {
-    use BuiltinFn::*;
-    matches!(
-        op,
-        TextureProj
-            | TextureProjOffset
-            | TextureProjLod
-            | TextureProjLodOffset
-            | TextureProjGrad
-            | TextureProjGradOffset
-    )
-}
-
 impl FnCx<'_, '_> {
     /// Lowers a texture built-in (`ret`: the call's type).
     pub(super) fn texture(
@@ -85,7 +71,7 @@ impl FnCx<'_, '_> {
             TextureGrad | TextureGradOffset | TextureProjGrad | TextureProjGradOffset
         );
         let extra = lookup_args(&vals, lod, grad, op.has_offset());
-        let addr = self.texel_address(st, is_projective(op), vals[0], &args[1].ty, span);
+        let addr = self.texel_address(st, op.is_projective(), vals[0], &args[1].ty, span);
         if st.kind != ScalarKind::Float && st.dim == SamplerDim::Cube {
             if self.cx.options.integer_cube_as_array {
                 return Ok(self.integer_cube_load(image, addr.coords, extra.level, span));
