@@ -1,14 +1,20 @@
 //! Compiles every `300 es` shader of the dEQP corpus, and lints it with `--lint` (its `#ifdef`
 //! configurations too, as a check does by default: `essl_lint::variants`): what
 //! `scripts/bench-lint-share.sh` runs twice to measure the lints' share of the work.
-//! `cargo run --release -p essl-lint --example lint-share -- [--lint] [CORPORA_DIR]`.
+//! `cargo run --release -p essl-lint --example lint-share -- [--lint] [--pipeline] [CORPORA_DIR]`.
+//!
+//! By default every shader is compiled with `essl::compile` (front end, lowering, naga's
+//! validation) either way. With `--pipeline`, as `essl lint` does it: the front end alone, and
+//! with `--lint` the shader lowered (typed, not validated) where a rule on the IR has something
+//! to look at, then linted; the lowering is then the lints' cost.
 
 use essl::source::SourceFile;
-use essl::{compile, CompileOptions, Stage};
+use essl::{compile, compile_front_end, CompileOptions, Stage};
 
 fn main() {
     let args: Vec<String> = std::env::args().skip(1).collect();
     let lint = args.iter().any(|a| a == "--lint");
+    let pipeline = args.iter().any(|a| a == "--pipeline");
     let dir = args
         .iter()
         .find(|a| !a.starts_with("--"))
@@ -33,13 +39,22 @@ fn main() {
                 continue;
             };
             shaders += 1;
-            let shader = compile(
-                SourceFile::new("deqp", src),
-                stage,
-                &CompileOptions::default(),
-            );
-            compiled += usize::from(shader.naga.is_some());
-            if lint && shader.naga.is_some() {
+            let file = SourceFile::new("deqp", src);
+            let mut shader = if pipeline {
+                compile_front_end(file, stage, &CompileOptions::default())
+            } else {
+                compile(file, stage, &CompileOptions::default())
+            };
+            if pipeline && lint && essl_lint::needs_ir(&shader) {
+                shader.lower_typed();
+            }
+            let ok = if pipeline {
+                shader.ok()
+            } else {
+                shader.naga.is_some()
+            };
+            compiled += usize::from(ok);
+            if lint && ok {
                 let found = essl_lint::lint(&shader, &options);
                 let compile_options = CompileOptions::default();
                 findings += found.len()
@@ -54,5 +69,6 @@ fn main() {
             }
         }
     }
-    println!("{shaders} shaders, {compiled} lowered, {findings} findings");
+    let what = if pipeline { "compiled" } else { "lowered" };
+    println!("{shaders} shaders, {compiled} {what}, {findings} findings");
 }

@@ -7,14 +7,17 @@
 //!
 //! The screen errs towards lowering: any call of a built-in that lowers to a division, a
 //! square root, a power or a texel load, any `clamp` (whose constant bounds the IR rule
-//! judges), and in a shader that names a low precision any product, quotient or built-in call
-//! (`mediump-overflow` looks at those where the precision is low). [`crate::lint`] checks in
-//! debug builds that nothing the IR screen finds was missed here.
+//! judges), and in a shader that names a low precision any product or built-in call carried out
+//! in low precision (`mediump-overflow` looks at those; the IR's expressions carry the spans of
+//! the checked module's, by which [`Precisions`] are looked up). [`crate::lint`] checks in debug
+//! builds that nothing the IR screen finds was missed here.
 
 use essl::hir::visit::{self, Visitor};
 use essl::hir::{BinaryOp, BuiltinFn, Expr, ExprKind, Init};
 use essl::types::{ScalarKind, Type};
 use essl::Shader;
+
+use crate::precision::Precisions;
 
 /// Whether any rule on naga IR may have something to look at in `shader` (a shader that did
 /// not compile has nothing).
@@ -23,11 +26,13 @@ pub fn needs_ir(shader: &Shader) -> bool {
         return false;
     }
     let text = shader.file.text();
+    let m = &shader.module;
+    // As `rules::candidates`: without these words every float is highp.
     let low = ["mediump", "lowp", "gl_PointCoord"]
         .iter()
-        .any(|w| text.contains(w));
+        .any(|w| text.contains(w))
+        .then(|| Precisions::of(m));
     let mut screen = Screen { low, found: false };
-    let m = &shader.module;
     for g in &m.globals {
         if let Some(Init::Expr(e)) = &g.init {
             screen.visit_expr(e);
@@ -40,9 +45,16 @@ pub fn needs_ir(shader: &Shader) -> bool {
 }
 
 struct Screen {
-    /// The text names a low precision.
-    low: bool,
+    /// The precisions, where the text names a low one.
+    low: Option<Precisions>,
     found: bool,
+}
+
+impl Screen {
+    /// Whether `e` is carried out in low precision.
+    fn is_low(&self, e: &Expr) -> bool {
+        self.low.as_ref().is_some_and(|p| p.is_low(e.span))
+    }
 }
 
 impl Visitor for Screen {
@@ -53,9 +65,9 @@ impl Visitor for Screen {
         self.found = match &e.kind {
             ExprKind::Binary(op, ..) | ExprKind::Assign(Some(op), ..) => {
                 matches!(op, BinaryOp::Div | BinaryOp::Mod)
-                    || self.low && matches!(op, BinaryOp::Mul)
+                    || matches!(op, BinaryOp::Mul) && self.is_low(e)
             }
-            ExprKind::Builtin(f, args) => self.low || lowers_to_candidate(*f, args),
+            ExprKind::Builtin(f, args) => self.is_low(e) || lowers_to_candidate(*f, args),
             _ => false,
         };
         visit::walk_expr(self, e);
