@@ -3,10 +3,12 @@
 import {readFileSync} from 'node:fs';
 import {checkAsync, format, minifyAsync} from '../index.js';
 
-export const SHADER = /\.(glsl|vert|frag|vs|fs|vsh|fsh)$/;
-const SCRIPT = /\.(m?[jt]sx?|c[jt]s)$/;
+const SHADER_EXT = 'glsl|vert|frag|vs|fs|vsh|fsh';
+const SCRIPT_EXT = 'm?[jt]sx?|c[jt]s';
+export const SHADER = new RegExp(`\\.(${SHADER_EXT})$`);
+const SCRIPT = new RegExp(`\\.(${SCRIPT_EXT})$`);
 /** A module id that may name a shader or a script (its query aside): a bundler's hook filter. */
-export const MAYBE_WANTED = /\.(glsl|vert|frag|vs|fs|vsh|fsh|m?[jt]sx?|c[jt]s)(\?.*)?$/;
+export const MAYBE_WANTED = new RegExp(`\\.(${SHADER_EXT}|${SCRIPT_EXT})(\\?.*)?$`);
 // A script is read only when it may hold a shader: a `glsl` tag or comment (in any case), or
 // `#version`; under a preset, every script (three.js's ShaderMaterial shaders carry neither).
 const MAY_HOLD = /glsl|#version/i;
