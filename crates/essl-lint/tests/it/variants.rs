@@ -39,6 +39,11 @@ fn found(text: &str, max: usize) -> Vec<(&'static str, String, Vec<String>, Vec<
         .collect()
 }
 
+/// Asserts that one of a finding's notes says `text`.
+fn assert_note(notes: &[String], text: &str) {
+    assert!(notes.iter().any(|n| n.contains(text)), "{notes:?}");
+}
+
 #[test]
 fn a_flag_s_code_is_linted_in_its_configuration() {
     let text = frag("#ifdef FOG\n  o *= (u_fogEnd - v_depth) / (u_fogEnd - u_fogStart);\n#endif");
@@ -49,13 +54,7 @@ fn a_flag_s_code_is_linted_in_its_configuration() {
     assert_eq!(f[0].0, "division-by-difference");
     assert_eq!(f[0].1, "(u_fogEnd - u_fogStart)");
     assert_eq!(f[0].2, ["FOG"]);
-    assert!(
-        f[0].3
-            .iter()
-            .any(|n| n.contains("compiled only with `FOG` defined")),
-        "{:?}",
-        f[0].3
-    );
+    assert_note(&f[0].3, "compiled only with `FOG` defined");
     assert!(found(&text, 0).is_empty(), "no configuration at 0");
 }
 
@@ -84,11 +83,7 @@ fn flags_set_together_reach_what_each_alone_does_not() {
     assert_eq!(f.len(), 1, "{f:#?}");
     assert_eq!(f[0].0, "non-uniform-derivative");
     assert_eq!(f[0].2, ["CLIPPLANE", "DIFFUSE"]);
-    assert!(
-        f[0].3.iter().any(|n| n.contains("every flag")),
-        "{:?}",
-        f[0].3
-    );
+    assert_note(&f[0].3, "every flag");
 }
 
 #[test]
@@ -116,13 +111,7 @@ fn a_flag_s_group_may_use_constants_the_host_defines_with_it() {
     let f = found(&text, variants::DEFAULT);
     assert_eq!(f.len(), 1, "{f:#?}");
     assert_eq!(f[0].2, ["SDF"]);
-    assert!(
-        f[0].3
-            .iter()
-            .any(|n| n.contains("`SDF_EDGE`, which the text uses without defining")),
-        "{:?}",
-        f[0].3
-    );
+    assert_note(&f[0].3, "`SDF_EDGE`, which the text uses without defining");
     // Any other error leaves the configuration out.
     let text = frag(
         "#ifdef SDF\n  o *= (u_fogEnd - v_depth) / (u_fogEnd - u_fogStart) * sdfEdge;\n#endif",
@@ -142,12 +131,9 @@ fn a_count_the_includer_may_set_is_linted_at_1() {
     assert_eq!(f[0].0, "division-by-difference");
     assert_eq!(f[0].1, "1.0 / float(SAMPLES - 1)");
     assert_eq!(f[0].2, ["SAMPLES"]);
-    assert!(
-        f[0].3
-            .iter()
-            .any(|n| n.contains("`SAMPLES` defined as 1, a count the text sets to 5")),
-        "{:?}",
-        f[0].3
+    assert_note(
+        &f[0].3,
+        "`SAMPLES` defined as 1, a count the text sets to 5",
     );
     // Not a loop's bound, already 1, or defined by the options: no configuration.
     for text in [
@@ -190,13 +176,7 @@ fn each_function_a_text_chooses_between_is_linted() {
     assert_eq!(f.len(), 1, "{f:#?}");
     assert_eq!((f[0].0, f[0].1.as_str()), ("division-by-difference", "b"));
     assert_eq!(f[0].2, ["DIFFUSE_FNC"]);
-    assert!(
-        f[0].3
-            .iter()
-            .any(|n| n.contains("`DIFFUSE_FNC` defined as `oren`")),
-        "{:?}",
-        f[0].3
-    );
+    assert_note(&f[0].3, "`DIFFUSE_FNC` defined as `oren`");
     // One value only: no configuration.
     let single = text.replace("#define DIFFUSE_FNC oren", "#define DIFFUSE_FNC lambert");
     assert!(found(&single, variants::DEFAULT).is_empty(), "{single}");
@@ -218,13 +198,7 @@ fn the_other_functions_of_a_choice_s_family_are_linted() {
     let f = found(text, variants::DEFAULT);
     assert_eq!(f.len(), 1, "{f:#?}");
     assert_eq!((f[0].0, f[0].1.as_str()), ("division-by-difference", "b"));
-    assert!(
-        f[0].3
-            .iter()
-            .any(|n| n.contains("`SPECULAR_FNC` defined as `specularGaussian`")),
-        "{:?}",
-        f[0].3
-    );
+    assert_note(&f[0].3, "`SPECULAR_FNC` defined as `specularGaussian`");
 }
 
 #[test]
@@ -244,18 +218,10 @@ fn a_level_the_conditionals_compare_is_linted_where_it_turns_every_group_on() {
     };
     let (_, _, defines, notes) = at("u_a - u_b");
     assert_eq!(defines, &["BONES"]);
-    assert!(
-        notes
-            .iter()
-            .any(|n| n.contains("`BONES` defined as 2, a level the text sets to 0")),
-        "{notes:?}"
-    );
+    assert_note(notes, "`BONES` defined as 2, a level the text sets to 0");
     let (_, _, defines, notes) = at("frames");
     assert_eq!(defines, &["VAT"]);
-    assert!(
-        notes.iter().any(|n| n.contains("`BONES` set to 2 as well")),
-        "{notes:?}"
-    );
+    assert_note(notes, "`BONES` set to 2 as well");
     // Defined by the options, or never compared: no configuration.
     let mut compile = CompileOptions::default();
     compile.defines.push(("BONES".into(), "0".into()));
