@@ -32,8 +32,10 @@ use essl::types::Type;
 mod conditions;
 mod counters;
 mod places;
+mod state;
 
 use places::full_mask;
+use state::{Layout, State};
 
 /// A variable the analysis tracks.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
@@ -109,9 +111,6 @@ struct Summary {
     writes: HashSet<Var>,
 }
 
-/// The bits of a variable written on every path so far.
-type State = HashMap<Var, u8>;
-
 /// Where `break` and `continue` go.
 struct Target {
     is_loop: bool,
@@ -123,8 +122,10 @@ struct Walk<'a> {
     m: &'a hir::Module,
     fid: usize,
     main: bool,
-    /// Tracked variables: their full mask.
-    full: HashMap<Var, u8>,
+    /// Where each variable has its slot in a [`State`].
+    layout: Layout,
+    /// By slot, the full mask of each tracked variable; 0 for one not tracked.
+    full: Vec<u8>,
     targets: Vec<Target>,
     reported: HashSet<Var>,
     reads: Vec<Read>,
@@ -134,7 +135,7 @@ struct Walk<'a> {
     /// Writes made under a condition on uniforms (`if (u_isText) { c = …; }`), by the
     /// condition's uniforms: a later `if` on the same uniforms (`u_isText && u_isHalo`) runs
     /// only where they were made.
-    guarded: Vec<(Vec<Key>, Var, u8)>,
+    guarded: Vec<(Vec<Key>, usize, u8)>,
     /// The uniforms the enclosing `if`s on uniforms require.
     context: Vec<Key>,
     /// How many enclosing statements are not `if`s on uniforms (loops, switches, other `if`s):
@@ -149,31 +150,17 @@ struct Walk<'a> {
     /// The counters of the enclosing loops and the values they take there
     /// ([`counters::counter_range`]).
     counters: Vec<(usize, i64, i64)>,
-    /// For a struct variable tracked member by member: the members written so far on any
-    /// path. A read needs those written on every path; a member no path has written yet
+    /// For a struct variable tracked member by member, by slot: the members written so far on
+    /// any path. A read needs those written on every path; a member no path has written yet
     /// counts as written once another is, as a struct did before members were tracked (a
     /// struct an engine fills per configuration, passed whole to a function that reads the
     /// members that configuration set).
-    ever: HashMap<Var, u8>,
+    ever: Vec<u8>,
 }
 
 /// A uniform a condition tests, with the value it requires: a loose uniform, or a member of a
 /// uniform block.
 type Key = (usize, usize, bool);
-
-/// Tracks the globals of `m` (those [`tracked_global`] says) and the built-in outputs it uses.
-fn track_globals(m: &hir::Module, full: &mut HashMap<Var, u8>) {
-    for (i, g) in m.globals.iter().enumerate() {
-        if tracked_global(g) {
-            full.insert(Var::Global(i), full_mask(m, &g.ty));
-        }
-    }
-    for (b, mask) in BUILTIN_OUTPUTS {
-        if m.used_builtins.contains(&b) {
-            full.insert(Var::Builtin(b), mask);
-        }
-    }
-}
 
 /// Whether a global is tracked: a plain global without an initializer, or an output.
 fn tracked_global(g: &hir::Global) -> bool {
@@ -192,25 +179,13 @@ impl<'a> Walk<'a> {
         summaries: &'a mut HashMap<usize, Summary>,
     ) -> Walk<'a> {
         let f = &m.functions[fid];
-        let mut full = HashMap::default();
-        for (i, p) in f.params.iter().enumerate() {
-            if p.mode == ParamMode::Out {
-                full.insert(Var::Param(i), full_mask(m, &p.ty));
-            }
-        }
-        for (i, l) in f.locals.iter().enumerate() {
-            if l.constant.is_none() {
-                full.insert(Var::Local(i), full_mask(m, &l.ty));
-            }
-        }
-        if main {
-            track_globals(m, &mut full);
-        }
-        Walk {
+        let layout = Layout::new(f.locals.len(), f.params.len(), m.globals.len());
+        let mut w = Walk {
             m,
             fid,
             main,
-            full,
+            layout,
+            full: vec![0; layout.len()],
             targets: Vec::new(),
             reported: HashSet::default(),
             reads: Vec::new(),
@@ -222,20 +197,56 @@ impl<'a> Walk<'a> {
             truth: HashMap::default(),
             nest: 0,
             counters: Vec::new(),
-            ever: HashMap::default(),
+            ever: vec![0; layout.len()],
+        };
+        for (i, p) in f.params.iter().enumerate() {
+            if p.mode == ParamMode::Out {
+                w.track(Var::Param(i), full_mask(m, &p.ty));
+            }
         }
+        for (i, l) in f.locals.iter().enumerate() {
+            if l.constant.is_none() {
+                w.track(Var::Local(i), full_mask(m, &l.ty));
+            }
+        }
+        if main {
+            w.track_globals();
+        }
+        w
+    }
+
+    /// Tracks `v`, whose full mask is `mask`.
+    fn track(&mut self, v: Var, mask: u8) {
+        if let Some(i) = self.layout.slot(v) {
+            self.full[i] = mask;
+        }
+    }
+
+    /// Tracks the globals [`tracked_global`] says, and the built-in outputs the module uses.
+    fn track_globals(&mut self) {
+        let m = self.m;
+        for (i, g) in m.globals.iter().enumerate() {
+            if tracked_global(g) {
+                self.track(Var::Global(i), full_mask(m, &g.ty));
+            }
+        }
+        for (b, mask) in BUILTIN_OUTPUTS {
+            if m.used_builtins.contains(&b) {
+                self.track(Var::Builtin(b), mask);
+            }
+        }
+    }
+
+    /// The full mask of `v` where the walk tracks it.
+    fn mask(&self, v: Var) -> Option<u8> {
+        let i = self.layout.slot(v)?;
+        Some(self.full[i]).filter(|&b| b != 0)
     }
 
     /// The state at the function's start: parameters other than `out` ones are written; locals
     /// are written at their declaration.
     fn start(&self) -> State {
-        let mut st = State::default();
-        for (v, _) in self.full.iter() {
-            if let Var::Local(_) = v {
-                st.insert(*v, 0);
-            }
-        }
-        st
+        State::new(self.layout.len())
     }
 
     fn run(&mut self, body: &[Stmt], st: &mut State) {
@@ -270,7 +281,7 @@ impl<'a> Walk<'a> {
         for (i, p) in f.params.iter().enumerate() {
             let v = Var::Param(i);
             if p.mode == ParamMode::Out
-                && !self.written(st, v, self.full[&v])
+                && !self.written(st, v, self.mask(v).unwrap_or(1))
                 && self.reported.insert(v)
             {
                 self.reads.push(Read {
@@ -313,9 +324,9 @@ impl<'a> Walk<'a> {
         if let Var::Local(l) = v {
             self.truth.remove(&l);
         }
-        if self.full.contains_key(&v) {
-            *st.entry(v).or_insert(0) |= bits;
-            *self.ever.entry(v).or_insert(0) |= bits;
+        if let (Some(i), Some(_)) = (self.layout.slot(v), self.mask(v)) {
+            st.add(i, bits);
+            self.ever[i] |= bits;
         }
     }
 
@@ -353,7 +364,7 @@ impl<'a> Walk<'a> {
                 self.expr(a, &mut sa);
                 let mut sb = st.clone();
                 self.expr(b, &mut sb);
-                *st = meet(&sa, &sb);
+                *st = sa.meet(&sb);
             }
             ExprKind::Binary(op, a, b) => {
                 self.expr(a, st);
@@ -408,7 +419,7 @@ impl<'a> Walk<'a> {
             let s = self.summary_of(callee);
             for (g, at, in_fn) in &s.reads {
                 let v = *g;
-                if self.written(st, v, self.full.get(&v).copied().unwrap_or(1)) {
+                if self.written(st, v, self.mask(v).unwrap_or(1)) {
                     continue;
                 }
                 match &mut self.summary {
@@ -432,7 +443,7 @@ impl<'a> Walk<'a> {
             }
             for g in &s.writes {
                 let v = *g;
-                if let Some(all) = self.full.get(&v).copied() {
+                if let Some(all) = self.mask(v) {
                     self.write(st, v, all);
                 }
             }
@@ -449,10 +460,9 @@ impl<'a> Walk<'a> {
         let m = self.m;
         let mut w = Walk::new(m, f, false, self.summaries);
         let v = Var::Param(i);
-        w.full.insert(v, full_mask(m, &m.functions[f].params[i].ty));
-        let mut st = w.start();
-        let _ = w.stmts(&m.functions[f].body, st.clone());
-        st.clear();
+        w.track(v, full_mask(m, &m.functions[f].params[i].ty));
+        let st = w.start();
+        let _ = w.stmts(&m.functions[f].body, st);
         w.reads.iter().any(|r| r.var == v)
     }
 
@@ -463,7 +473,7 @@ impl<'a> Walk<'a> {
         }
         let m = self.m;
         let mut w = Walk::new(m, f, false, self.summaries);
-        track_globals(m, &mut w.full);
+        w.track_globals();
         w.summary = Some(Summary::default());
         let mut st = w.start();
         w.run(&m.functions[f].body, &mut st);
@@ -496,7 +506,9 @@ impl<'a> Walk<'a> {
             StmtKind::Expr(e) => {
                 let set = match &e.kind {
                     ExprKind::Assign(None, lhs, rhs) if self.nest == 0 => match lhs.kind {
-                        ExprKind::Local(l) => Some((l, self.when_true(rhs, &st))),
+                        ExprKind::Local(l) if self.says_more(rhs) => {
+                            Some((l, self.when_true(rhs, &st)))
+                        }
                         _ => None,
                     },
                     _ => None,
@@ -510,14 +522,14 @@ impl<'a> Walk<'a> {
                 let v = Var::Local(*id);
                 match init {
                     Some(e) => {
-                        let t = if self.nest == 0 {
+                        let t = if self.nest == 0 && self.says_more(e) {
                             self.when_true(e, &st)
                         } else {
                             None
                         };
                         self.expr(e, &mut st);
-                        if let Some(all) = self.full.get(&v).copied() {
-                            st.insert(v, all);
+                        if let (Some(i), Some(all)) = (self.layout.slot(v), self.mask(v)) {
+                            st.set(i, all);
                         }
                         self.truth.remove(id);
                         if let Some(t) = t {
@@ -525,13 +537,19 @@ impl<'a> Walk<'a> {
                         }
                     }
                     None => {
-                        st.insert(v, 0);
+                        if let Some(i) = self.layout.slot(v) {
+                            st.set(i, 0);
+                        }
                     }
                 }
             }
             StmtKind::Block(b) => return self.stmts(b, st),
             StmtKind::If(c, a, b) => {
-                let when = self.when_true(c, &st);
+                let when = if self.says_more(c) {
+                    self.when_true(c, &st)
+                } else {
+                    None
+                };
                 self.expr(c, &mut st);
                 let (yes, no) = (self.keys(c, true), self.keys(c, false));
                 let sa = self.branch(a, when.as_ref().unwrap_or(&st), &yes);
@@ -543,10 +561,10 @@ impl<'a> Walk<'a> {
                     {
                         let mut need = self.context.clone();
                         need.extend(keys);
-                        for (v, bits) in branch {
-                            let extra = bits & !out.get(v).copied().unwrap_or(0);
+                        for (i, bits) in branch.iter() {
+                            let extra = bits & !out.get(i);
                             if extra != 0 {
-                                self.guarded.push((need.clone(), *v, extra));
+                                self.guarded.push((need.clone(), i, extra));
                             }
                         }
                     }
@@ -676,8 +694,9 @@ impl<'a> Walk<'a> {
             Some(Cond::Expr(e)) => self.expr(e, st),
             Some(Cond::Decl(id, e)) => {
                 self.expr(e, st);
-                if let Some(all) = self.full.get(&Var::Local(*id)).copied() {
-                    st.insert(Var::Local(*id), all);
+                let v = Var::Local(*id);
+                if let (Some(i), Some(all)) = (self.layout.slot(v), self.mask(v)) {
+                    st.set(i, all);
                 }
             }
             None => {}
@@ -685,21 +704,9 @@ impl<'a> Walk<'a> {
     }
 }
 
-/// The variables written on both paths.
-fn meet(a: &State, b: &State) -> State {
-    let mut out = State::default();
-    for (v, x) in a {
-        out.insert(*v, x & b.get(v).copied().unwrap_or(0));
-    }
-    for v in b.keys() {
-        out.entry(*v).or_insert(0);
-    }
-    out
-}
-
 fn meet_opt(a: Option<State>, b: Option<State>) -> Option<State> {
     match (a, b) {
-        (Some(a), Some(b)) => Some(meet(&a, &b)),
+        (Some(a), Some(b)) => Some(a.meet(&b)),
         (a, None) => a,
         (None, b) => b,
     }

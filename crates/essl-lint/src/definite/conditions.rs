@@ -25,12 +25,23 @@ impl Walk<'_> {
                 let mut s = st.clone();
                 self.expr(e, &mut s);
                 if let ExprKind::Local(l) = e.kind {
-                    for (v, bits) in self.truth.get(&l).into_iter().flatten() {
-                        *s.entry(*v).or_insert(0) |= bits;
+                    if let Some(t) = self.truth.get(&l) {
+                        s.join(t);
                     }
                 }
                 Some(s)
             }
+        }
+    }
+
+    /// Whether [`Walk::when_true`] can know more of `e` than the state after it: only for
+    /// `&&`, `||` and a local with a recorded truth. Elsewhere it is that state, and the walk
+    /// skips it rather than walk `e` twice.
+    pub(super) fn says_more(&self, e: &Expr) -> bool {
+        match e.kind {
+            ExprKind::Binary(BinaryOp::And | BinaryOp::Or, ..) => true,
+            ExprKind::Local(l) => self.truth.contains_key(&l),
+            _ => false,
         }
     }
 
@@ -80,9 +91,9 @@ impl Walk<'_> {
         let depth = self.context.len();
         self.context.extend_from_slice(keys);
         let mut start = st.clone();
-        for (need, v, bits) in &self.guarded {
+        for (need, i, bits) in &self.guarded {
             if need.iter().all(|k| self.context.contains(k)) {
-                *start.entry(*v).or_insert(0) |= bits;
+                start.add(*i, *bits);
             }
         }
         let out = self.stmts(ss, start);

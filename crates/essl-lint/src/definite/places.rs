@@ -24,12 +24,12 @@ impl<'a> Walk<'a> {
     /// members some path has written before, or any member where none has been; a variable the
     /// walk does not track always is.
     pub(super) fn written(&self, st: &State, v: Var, bits: u8) -> bool {
-        let Some(&all) = self.full.get(&v) else {
+        let (Some(i), Some(all)) = (self.layout.slot(v), self.mask(v)) else {
             return true;
         };
-        let have = st.get(&v).copied().unwrap_or(0);
+        let have = st.get(i);
         if all != 1 && self.is_struct(v) {
-            let needed = bits & self.ever.get(&v).copied().unwrap_or(0);
+            let needed = bits & self.ever[i];
             return if needed == 0 {
                 have & bits != 0
             } else {
@@ -48,8 +48,10 @@ impl<'a> Walk<'a> {
         let Some(def) = self.m.structs.get(id.0 as usize) else {
             return Vec::new();
         };
-        let missing =
-            bits & self.ever.get(&v).copied().unwrap_or(0) & !st.get(&v).copied().unwrap_or(0);
+        let Some(i) = self.layout.slot(v) else {
+            return Vec::new();
+        };
+        let missing = bits & self.ever[i] & !st.get(i);
         (0..def.members.len().min(8))
             .filter(|&i| missing & (1 << i) != 0)
             .map(|i| def.members[i].name.clone())
@@ -82,14 +84,14 @@ impl<'a> Walk<'a> {
             ExprKind::BuiltinVar(b) => Var::Builtin(b),
             _ => return None,
         };
-        self.full.contains_key(&v).then_some(v)
+        self.mask(v).map(|_| v)
     }
 
     /// The variable and the bits a place expression (`v`, `v.xz`, `v[1]`, `a[i].m`) selects;
     /// the index expressions inside it are read.
     pub(super) fn place(&mut self, e: &Expr, st: &mut State) -> Option<(Var, u8)> {
         if let Some(v) = self.var_of(e) {
-            return Some((v, self.full[&v]));
+            return Some((v, self.mask(v)?));
         }
         match &e.kind {
             ExprKind::Swizzle(base, comps) => {
