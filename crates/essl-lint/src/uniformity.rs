@@ -21,6 +21,7 @@ mod discard;
 
 use rustc_hash::{FxHashMap as HashMap, FxHashSet as HashSet};
 
+use essl::hir::visit::{self, Visitor};
 use essl::hir::{self, BinaryOp, BuiltinFn, BuiltinVar, Cond, Expr, ExprKind, GlobalKind};
 use essl::hir::{ParamMode, Stmt, StmtKind};
 use essl::source::Span;
@@ -66,7 +67,7 @@ pub fn takes_derivatives(op: BuiltinFn) -> bool {
 /// Every derivative and implicit-LOD lookup of a fragment shader under non-uniform control
 /// flow.
 pub fn divergent_derivatives(m: &hir::Module) -> Vec<Finding> {
-    if m.stage != essl::Stage::Fragment {
+    if m.stage != essl::Stage::Fragment || !may_diverge(m) {
         return Vec::new();
     }
     let mut u = Uniformity {
@@ -92,6 +93,48 @@ pub fn divergent_derivatives(m: &hir::Module) -> Vec<Finding> {
     u.pass();
     u.after_discards();
     u.found
+}
+
+/// Whether the used functions of `m` hold both a built-in that takes derivatives and a
+/// statement or operator whose control flow could vary (`if`, loop, `switch`, `?:`, `&&`,
+/// `||`, `discard`): without either, nothing can be found, and the passes are skipped.
+fn may_diverge(m: &hir::Module) -> bool {
+    let mut shape = Shape::default();
+    for f in m.functions.iter().filter(|f| f.used) {
+        shape.visit_stmts(&f.body);
+        if shape.derivative && shape.branch {
+            return true;
+        }
+    }
+    false
+}
+
+/// What [`may_diverge`] looks for.
+#[derive(Default)]
+struct Shape {
+    derivative: bool,
+    branch: bool,
+}
+
+impl Visitor for Shape {
+    fn visit_stmt(&mut self, s: &Stmt) {
+        self.branch |= matches!(
+            s.kind,
+            StmtKind::If(..) | StmtKind::Loop { .. } | StmtKind::Switch(..) | StmtKind::Discard
+        );
+        visit::walk_stmt(self, s);
+    }
+
+    fn visit_expr(&mut self, e: &Expr) {
+        match &e.kind {
+            ExprKind::Builtin(op, _) => self.derivative |= takes_derivatives(*op),
+            ExprKind::Select(..) | ExprKind::Binary(BinaryOp::And | BinaryOp::Or, ..) => {
+                self.branch = true
+            }
+            _ => {}
+        }
+        visit::walk_expr(self, e);
+    }
 }
 
 /// A variable: a local or parameter of a function, or a global.
