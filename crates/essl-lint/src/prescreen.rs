@@ -7,13 +7,15 @@
 //!
 //! The screen errs towards lowering: any call of a built-in that lowers to a division, a
 //! square root, a power or a texel load, any `clamp` (whose constant bounds the IR rule
-//! judges), and in a shader that names a low precision any product or built-in call carried out
-//! in low precision (`mediump-overflow` looks at those; the IR's expressions carry the spans of
-//! the checked module's, by which [`Precisions`] are looked up). [`crate::lint`] checks in debug
+//! judges), and in a shader that names a low precision any product, or call of a built-in that
+//! lowers to one or can amplify or underflow its argument, carried out in low precision
+//! (`mediump-overflow` looks at those; the IR's expressions carry the spans of the checked
+//! module's, by which [`Precisions`] are looked up). [`crate::lint`] checks in debug
 //! builds that nothing the IR screen finds was missed here.
 
 use essl::hir::visit::{self, Visitor};
 use essl::hir::{BinaryOp, BuiltinFn, Expr, ExprKind, Init};
+use essl::source::Span;
 use essl::types::{ScalarKind, Type};
 use essl::Shader;
 
@@ -30,9 +32,12 @@ pub fn needs_ir(shader: &Shader) -> bool {
     // As `rules::candidates`: without these words every float is highp.
     let low = ["mediump", "lowp", "gl_PointCoord"]
         .iter()
-        .any(|w| text.contains(w))
-        .then(|| Precisions::of(m));
-    let mut screen = Screen { low, found: false };
+        .any(|w| text.contains(w));
+    let mut screen = Screen {
+        low,
+        products: Vec::new(),
+        found: false,
+    };
     for g in &m.globals {
         if let Some(Init::Expr(e)) = &g.init {
             screen.visit_expr(e);
@@ -41,20 +46,23 @@ pub fn needs_ir(shader: &Shader) -> bool {
     for f in &m.functions {
         screen.visit_stmts(&f.body);
     }
-    screen.found
+    // The precisions only where a product could be in low precision: most shaders that name
+    // `mediump` have none that is not already a candidate.
+    screen.found || {
+        !screen.products.is_empty() && {
+            let prec = Precisions::of(m);
+            screen.products.iter().any(|s| prec.is_low(*s))
+        }
+    }
 }
 
 struct Screen {
-    /// The precisions, where the text names a low one.
-    low: Option<Precisions>,
+    /// Whether the text names a low precision.
+    low: bool,
+    /// Where it does: the products and built-in calls that `mediump-overflow` looks at in low
+    /// precision ([`low_product`]).
+    products: Vec<Span>,
     found: bool,
-}
-
-impl Screen {
-    /// Whether `e` is carried out in low precision.
-    fn is_low(&self, e: &Expr) -> bool {
-        self.low.as_ref().is_some_and(|p| p.is_low(e.span))
-    }
 }
 
 impl Visitor for Screen {
@@ -62,16 +70,49 @@ impl Visitor for Screen {
         if self.found {
             return;
         }
-        self.found = match &e.kind {
+        let product = match &e.kind {
             ExprKind::Binary(op, ..) | ExprKind::Assign(Some(op), ..) => {
-                matches!(op, BinaryOp::Div | BinaryOp::Mod)
-                    || matches!(op, BinaryOp::Mul) && self.is_low(e)
+                self.found = matches!(op, BinaryOp::Div | BinaryOp::Mod);
+                matches!(op, BinaryOp::Mul)
             }
-            ExprKind::Builtin(f, args) => self.is_low(e) || lowers_to_candidate(*f, args),
+            ExprKind::Builtin(f, args) => {
+                self.found = lowers_to_candidate(*f, args);
+                low_product(*f)
+            }
             _ => false,
         };
+        if product && self.low {
+            self.products.push(e.span);
+        }
         visit::walk_expr(self, e);
     }
+}
+
+/// Whether a call of built-in `f` lowers to what `mediump-overflow` looks at where it is carried
+/// out in low precision: a product, or a function that can amplify its argument or underflow it
+/// to 0 (a `texture` lookup, a `mix`, a `sin` does neither).
+fn low_product(f: BuiltinFn) -> bool {
+    use BuiltinFn::*;
+    matches!(
+        f,
+        Pow | Exp
+            | Exp2
+            | Dot
+            | Length
+            | Distance
+            | Normalize
+            | Cosh
+            | Sinh
+            | InverseSqrt
+            | Log
+            | Log2
+            | Mod
+            | FaceForward
+            | Reflect
+            | Refract
+            | MatrixCompMult
+            | OuterProduct
+    )
 }
 
 /// Whether a call of built-in `f` lowers to something the IR rules look at.
