@@ -103,3 +103,46 @@ impl State {
         State(self.0.iter().zip(&other.0).map(|(a, b)| a & b).collect())
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn each_variable_has_a_slot_of_its_own() {
+        let layout = Layout::new(2, 1, 3);
+        let vars = [
+            Var::Local(0),
+            Var::Local(1),
+            Var::Param(0),
+            Var::Global(0),
+            Var::Global(2),
+            Var::Builtin(BuiltinVar::FragColor),
+            Var::Builtin(BuiltinVar::PointSize),
+        ];
+        let mut slots: Vec<usize> = vars.iter().filter_map(|v| layout.slot(*v)).collect();
+        assert_eq!(slots.len(), vars.len());
+        assert!(slots.iter().all(|&s| s < layout.len()));
+        slots.sort_unstable();
+        slots.dedup();
+        assert_eq!(slots.len(), vars.len());
+        // Past the function's or the module's variables, and the result: no slot.
+        for v in [Var::Local(2), Var::Param(1), Var::Global(3), Var::Result] {
+            assert_eq!(layout.slot(v), None, "{v:?}");
+        }
+    }
+
+    #[test]
+    fn a_join_of_paths_keeps_what_both_wrote() {
+        let mut a = State::new(3);
+        let mut b = State::new(3);
+        a.add(0, 0b011);
+        a.set(1, 1);
+        b.add(0, 0b110);
+        b.add(2, 1);
+        let m = a.meet(&b);
+        assert_eq!((m.get(0), m.get(1), m.get(2)), (0b010, 0, 0));
+        a.join(&b);
+        assert_eq!(a.iter().collect::<Vec<_>>(), [(0, 0b111), (1, 1), (2, 1)]);
+    }
+}

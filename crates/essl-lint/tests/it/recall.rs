@@ -1664,6 +1664,30 @@ fn a_finding_in_a_macro_labels_its_define() {
 }
 
 #[test]
+fn a_lookup_in_a_straight_function_called_under_a_varying_branch() {
+    // The only lookup is in a function without a branch, the only branch in `main`: the check
+    // that skips shaders lacking either looks at the whole module.
+    let shader = |body: &str| {
+        format!(
+            "#version 300 es\nprecision highp float;\nuniform sampler2D u_tex;\nin vec2 v_uv;\n\
+             out vec4 o;\nfloat atlas(vec2 p) {{ return texture(u_tex, p).r; }}\n\
+             void main() {{\n  float r = 0.0;\n{body}\n  o = vec4(r);\n}}\n"
+        )
+    };
+    let codes = |body: &str| -> Vec<(Severity, u32)> {
+        let s = super::compiled("t.frag", &shader(body));
+        lint(&s, &LintOptions::default().notes(true))
+            .into_iter()
+            .filter(|d| d.code == "non-uniform-derivative")
+            .map(|d| (d.severity, s.file.line_col(d.span.start).line))
+            .collect()
+    };
+    assert_eq!(codes("  if (v_uv.x > 0.5) { r = atlas(v_uv); }"), [(W, 6)]);
+    // The same call outside the branch: nothing.
+    assert!(codes("  r = atlas(v_uv);\n  if (v_uv.x > 0.5) { r = 0.0; }").is_empty());
+}
+
+#[test]
 fn a_lookup_in_a_function_called_after_a_discard_is_a_note() {
     // Cesium's billboard reads its SDF atlas in `getDistance`, called after the depth test's
     // `discard`; the lookup in a function the helper calls is reached too.
