@@ -481,7 +481,7 @@ fn fix_rounds(
 ) -> (Arc<SourceFile>, Vec<Compiled>, usize) {
     let mut current = file;
     let mut applied = 0;
-    let lower = options.phase == Phase::Full && options.lints;
+    let lower = options.phase == Phase::Full && options.lints && settings.rules.reads_ir();
     for round in 0..=MAX_FIX_ROUNDS {
         let compiled: Vec<Compiled> = make(&current)
             .into_iter()
@@ -595,7 +595,7 @@ pub(crate) fn lint(checked: &mut CheckedShader, settings: &Settings, lints: bool
         return;
     };
     let before = shader.diagnostics.len();
-    if essl_lint::needs_ir(shader) {
+    if settings.rules.reads_ir() && essl_lint::needs_ir(shader) {
         shader.lower_typed();
     }
     let mut found: Vec<Diagnostic> = shader.diagnostics[before..].to_vec();

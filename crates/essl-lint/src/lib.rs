@@ -172,6 +172,25 @@ impl LintOptions {
         self
     }
 
+    /// Whether a rule that reads the shader's naga IR is reported under these options: where
+    /// none is (`--allow all`), a shader is not lowered for the lints, whatever [`needs_ir`]
+    /// says.
+    pub fn reads_ir(&self) -> bool {
+        RULES
+            .iter()
+            .any(|r| !rules::HIR_RULES.contains(&r.id) && self.reports(r))
+    }
+
+    /// Whether a rule's findings are reported: it is not allowed, and it is not at the level
+    /// of notes while notes are left out.
+    fn reports(&self, r: &Rule) -> bool {
+        match self.level(r) {
+            Level::Allow => false,
+            Level::Note => self.notes,
+            _ => true,
+        }
+    }
+
     /// The level of a rule under these options.
     pub fn level(&self, r: &Rule) -> Level {
         self.overrides
@@ -192,11 +211,7 @@ impl LintOptions {
 /// to look at); on a shader not lowered only the rules on its checked module run.
 pub fn lint(shader: &Shader, options: &LintOptions) -> Vec<Diagnostic> {
     // The analysis is most of the cost: skip it when no rule would look at it.
-    let reported = |r: &Rule| match options.level(r) {
-        Level::Allow => false,
-        Level::Note => options.notes,
-        _ => true,
-    };
+    let reported = |r: &Rule| options.reports(r);
     if !RULES.iter().any(|r| reported(r)) {
         return Vec::new();
     }

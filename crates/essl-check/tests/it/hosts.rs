@@ -166,7 +166,7 @@ fn a_chunk_is_checked_as_a_library() {
 /// shaders are not lowered to naga IR (which only the lints and the translators read). With
 /// the lints a shader is lowered where a lint on the IR has something to look at (the fragment
 /// shader's division, not the vertex shader's constant position), and the lints' findings land
-/// on the file.
+/// on the file; with every rule allowed (`--allow all`), nothing is lowered.
 #[test]
 fn only_a_check_with_lints_lowers() {
     let dir = tempfile::tempdir().unwrap();
@@ -185,15 +185,24 @@ fn only_a_check_with_lints_lowers() {
         lints: false,
         ..CheckOptions::default()
     };
-    for (options, lowered, found) in [
-        (without, [false, false], Vec::<String>::new()),
+    let mut allowed = Overrides::default();
+    allowed.rule("all", essl_lint::Level::Allow).unwrap();
+    for (overrides, options, lowered, found) in [
         (
+            Overrides::default(),
+            without,
+            [false, false],
+            Vec::<String>::new(),
+        ),
+        (
+            Overrides::default(),
             CheckOptions::default(),
             [false, true],
             vec!["a.frag:5:30 division-by-difference".to_string()],
         ),
+        (allowed, CheckOptions::default(), [false, false], Vec::new()),
     ] {
-        let run = check(dir.path(), Overrides::default(), options);
+        let run = check(dir.path(), overrides, options);
         let unit = &run.results[0];
         assert_eq!(unit.programs.len(), 1, "the pair is linked either way");
         assert_eq!(unit.shaders.len(), 2);
