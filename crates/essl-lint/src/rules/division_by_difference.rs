@@ -6,13 +6,14 @@ use essl::diagnostic::{Diagnostic, Fix};
 use naga::{BinaryOperator as Bo, Expression as E, ScalarKind};
 
 use super::clip_space::{self, Clip};
+use super::derivatives;
 use super::normalize_zero;
 use super::parameters::caller_value;
 use super::rule::declare_rule;
 use super::settings::settings_of;
 use super::Cx;
 use crate::symbolic::resolve;
-use crate::value::Facts;
+use crate::value::{Facts, Num};
 use crate::Level;
 
 declare_rule! {
@@ -84,6 +85,14 @@ declare_rule! {
     /// configuration where the flag `LAYERS` is 1, or, as a note, a constant division by zero in
     /// the configuration where a count the text defines under `#ifndef` is 1
     /// (`1.0 / float(RAYMARCH_AO_SAMPLES - 1)`: one sample, the fewest its loop can take).
+    /// And a division by a derivative's width (`d / fwidth(d)`, a grid line's distance over
+    /// `length(vec2(dFdx(x), dFdy(x)))`, through locals and parameters): 0 wherever the value
+    /// differentiated is the same across the 2×2 pixel quad — the coordinate along a face's
+    /// normal, a flat stretch of a distance field —, where the quotient is ±∞ on IEEE hardware
+    /// (GLSL ES 3.00 does not require it) and NaN where the dividend is 0 too: a warning where the
+    /// dividend is computed from inputs and can be 0 (Babylon's grid on a ground plane at
+    /// `y = 0`), a note otherwise (a distance texture's `d / fwidth(d)`, ±∞ over its saturated
+    /// stretches, which a clamp turns into the right coverage).
     ///
     /// ## Why is this bad?
     /// Two parameters a user sets independently are equal sooner or later — a spot light with the
@@ -132,6 +141,8 @@ declare_rule! {
     ///   parameter named for a size the host computes, or a multiple of one (`1.0 / texResolution`,
     ///   `floor(v * res) / res`); one named for what is never 0 (an index of refraction `ior`, a
     ///   `shutterSpeed`, a number `base`).
+    /// - The length of a vector's derivative (`1.0 / length(dFdx(p))` of a position): 0 only where
+    ///   all of `p` is the same across the quad, which a surface's position never is.
     /// - A divisor with a per-pixel part, zero at isolated pixels at most: the depth linearisation
     ///   `far + near - z * (far - near)` (positive for `z` in [-1, 1]), a Fresnel term
     ///   `1.0 - Ems * Favg`, a difference of texels that is 0 only inside their range
@@ -185,6 +196,10 @@ fn check(cx: &Cx, out: &mut Vec<Diagnostic>) {
                 continue;
             }
             let div = Division { f, id, h, d };
+            if let Some(diag) = derivative_divisor(cx, &div, v) {
+                out.push(diag);
+                continue;
+            }
             if let Some(diag) = zero_divisor(cx, &div, v) {
                 out.push(diag);
                 continue;
@@ -272,6 +287,34 @@ fn check(cx: &Cx, out: &mut Vec<Diagnostic>) {
             out.push(cx.grade(diag.with_fix(floor_fix(cx, span)), &[(id, d)]));
         }
     }
+}
+
+/// A division by a derivative's width that the shader does not keep from 0
+/// ([`derivatives::divisor_finding`]); a warning where the dividend is computed from inputs
+/// and can be 0 too.
+fn derivative_divisor(cx: &Cx, div: &Division, v: &Num) -> Option<Diagnostic> {
+    let Division { f, id, h, d } = *div;
+    if !v.comps().iter().any(|c| c.contains(0.0)) || !derivatives::derivative_width(cx, id, f, d) {
+        return None;
+    }
+    let span = unguarded(cx, div)?;
+    let E::Binary { left, .. } = f.expressions[h] else {
+        return None;
+    };
+    let nan = cx.sound().num(id, left).is_some_and(|n| {
+        n.facts.has(Facts::INPUT)
+            && !n.facts.any(Facts::TEXTURE)
+            && n.comps().iter().any(|c| c.contains(0.0))
+    });
+    let what = cx.what(f, id, d);
+    Some(derivatives::divisor_finding(
+        DivisionByDifference::RULE.id,
+        cx,
+        &what,
+        v,
+        nan,
+        span,
+    ))
 }
 
 /// A division: its function, the function's id, the division and its divisor.

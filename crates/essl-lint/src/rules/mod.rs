@@ -5,6 +5,7 @@
 
 mod clip_space;
 mod context;
+mod derivatives;
 mod domain;
 mod flat;
 mod gradient;

@@ -4,6 +4,7 @@ use essl::diagnostic::{Diagnostic, Fix};
 use essl::source::Span;
 use naga::{Expression as E, Function, Handle, MathFunction as Mf};
 
+use super::derivatives::from_derivative;
 use super::rule::declare_rule;
 use super::{fmt_num, Cx};
 use crate::value::{Facts, Num};
@@ -352,7 +353,7 @@ fn derivative_width(cx: &Cx, c: &Call) -> bool {
         inner(crate::symbolic::resolve(c.f, cx.sound(), c.id, c.e0)),
         inner(crate::symbolic::resolve(c.f, cx.sound(), c.id, c.e1)),
     );
-    width(cx, c, e0, e1).is_some_and(|w| from_derivative(cx, c.id, c.f, w, 0))
+    width(cx, c, e0, e1).is_some_and(|w| from_derivative(cx, c.id, c.f, w))
 }
 
 /// The width `w` of edges `e0, e1` that are `e - w, e + w` (or, mirrored, `e + w, e - w`) for a
@@ -427,37 +428,6 @@ fn zero_only_as_input(cx: &Cx, id: usize, f: &Function, h: Handle<E>, depth: u32
             fun: Mf::Abs, arg, ..
         } => go(arg),
         _ => false,
-    }
-}
-
-/// Whether `h` is computed from a `dFdx`, `dFdy` or `fwidth` (through locals whose every value,
-/// initializer and stores, is: [`Cx::stored`]; and parameters every call passes one: Cesium's
-/// `getSDFColor(…, smoothing)` of `smoothing = fwidth(distance)`).
-fn from_derivative(cx: &Cx, id: usize, f: &Function, h: Handle<E>, depth: u32) -> bool {
-    if depth > 8 {
-        return false;
-    }
-    match &f.expressions[h] {
-        E::Derivative { .. } => true,
-        E::FunctionArgument(i) if id < cx.module.functions.len() => {
-            let callers = cx.flows().callers(id);
-            !callers.is_empty()
-                && callers.iter().all(|(caller, args)| {
-                    let g = crate::analysis::function(cx.module, *caller);
-                    args.get(*i as usize)
-                        .is_some_and(|&a| from_derivative(cx, *caller, g, a, depth + 1))
-                })
-        }
-        E::Load { pointer } => {
-            let values = cx.stored(f, id, *pointer);
-            !values.is_empty()
-                && values
-                    .iter()
-                    .all(|v| from_derivative(cx, id, f, *v, depth + 1))
-        }
-        e => super::operands(e)
-            .into_iter()
-            .any(|o| from_derivative(cx, id, f, o, depth + 1)),
     }
 }
 

@@ -376,6 +376,28 @@ const HAZARDS: &[Hazard] = &[
         "  vec3 sw = v_pos;\n  vec3 se = mat3(u_a) * t.rgb + sw;\n  r = v_x / length(se - sw);",
         W,
     ),
+    // A derivative's width as a divisor: 0 wherever the value is the same across the quad (a
+    // grid coordinate along a face's normal, whose distance to a line is 0 there too: NaN),
+    // also through a local a guard on a uniform floors only sometimes; over a texel's flat
+    // stretches (±∞, which a clamp makes the right coverage), a note.
+    (
+        "division-by-difference",
+        "derivative",
+        "  r = abs(fract(v_x) - 0.5) / fwidth(v_x);",
+        W,
+    ),
+    (
+        "division-by-difference",
+        "derivative",
+        "  float w = length(vec2(dFdx(v_x), dFdy(v_x)));\n  if (u_a > 0.0) { w = max(w, u_a); }\n  r = (v_x - floor(v_x)) / (w * u_b);",
+        W,
+    ),
+    (
+        "division-by-difference",
+        "texture",
+        "  float d = t.r - 0.5;\n  r = clamp(d / fwidth(d) + 0.5, 0.0, 1.0);",
+        N,
+    ),
     // After a `discard` some pixels take: undefined by the specification, kept working by
     // GPUs that run discarded pixels on as helpers.
     (
@@ -462,6 +484,16 @@ const HAZARDS: &[Hazard] = &[
 
 /// The guarded twins: (rule, body) with no finding of the rule, notes included.
 const GUARDED: &[(&str, &str)] = &[
+    // A derivative's width kept from 0, and the length of a position's derivative (0 only where
+    // the whole position is the same across the quad, which a surface's never is).
+    (
+        "division-by-difference",
+        "  r = abs(fract(v_x) - 0.5) / max(fwidth(v_x), 1e-4);",
+    ),
+    (
+        "division-by-difference",
+        "  r = 1.0 / max(length(dFdx(v_pos)), length(dFdy(v_pos)));",
+    ),
     // The branch that would divide by the constant 0 is never taken.
     (
         "division-by-difference",
