@@ -22,11 +22,11 @@ pub(super) fn from_derivative(cx: &Cx, id: usize, f: &Function, h: Handle<E>) ->
 }
 
 /// Whether `h` is 0 wherever a derivative it is made of is: `fwidth(x)`, `dFdx(x)`, a component
-/// of one, `length(vec2(dFdx(x), dFdy(x)))`, `abs(dFdx(x)) + abs(dFdy(x))`, the larger or smaller
-/// of one and another value, any of them times or over another value (through locals and parameters, as
-/// [`from_derivative`]). Not the length of a vector's derivative (`length(dFdx(p))`, 0 only
-/// where all of `p` is the same across the quad: a position on a surface never is), nor a value
-/// only computed from a derivative (`fract(log2(w))`).
+/// of one, `length(vec2(dFdx(x), dFdy(x)))`, `abs(dFdx(x)) + abs(dFdy(x))`, the larger or
+/// smaller of one and another value, any of them times or over another value (through locals
+/// and parameters, as [`from_derivative`]). Not the length of a vector's derivative
+/// (`length(dFdx(p))`, 0 only where all of `p` is the same across the quad: a position on a
+/// surface never is), nor a value only computed from a derivative (`fract(log2(w))`).
 pub(super) fn derivative_width(cx: &Cx, id: usize, f: &Function, h: Handle<E>) -> bool {
     derived(cx, id, f, h, &mut Walk::new(true)) == Derived::Yes
 }
