@@ -481,7 +481,7 @@ fn fix_rounds(
 ) -> (Arc<SourceFile>, Vec<Compiled>, usize) {
     let mut current = file;
     let mut applied = 0;
-    let lower = options.phase == Phase::Full && options.lints && settings.rules.reads_ir();
+    let lower = options.phase == Phase::Full && options.lints;
     for round in 0..=MAX_FIX_ROUNDS {
         let compiled: Vec<Compiled> = make(&current)
             .into_iter()
@@ -520,8 +520,7 @@ fn fix_rounds(
 }
 
 /// Compiles one part (nothing where its includes failed), lowered to naga IR when `lower` and a
-/// lint on the IR has something to look at (typed, not validated: the lints read it, nothing
-/// translates it).
+/// lint on the IR has something to look at ([`essl_lint::lower_for_lints`]).
 fn compile(part: &Part, settings: &Settings, lower: bool) -> Option<Shader> {
     let assembly = part.assembly.as_ref().ok()?;
     let name = assembly
@@ -530,8 +529,8 @@ fn compile(part: &Part, settings: &Settings, lower: bool) -> Option<Shader> {
         .map_or(String::new(), |f| f.name().to_string());
     let file = SourceFile::new(name, assembly.text());
     let mut shader = essl::compile_front_end(file, part.stage, &settings.compile);
-    if lower && essl_lint::needs_ir(&shader) {
-        shader.lower_typed();
+    if lower {
+        essl_lint::lower_for_lints(&mut shader, &settings.rules);
     }
     Some(shader)
 }
@@ -595,9 +594,7 @@ pub(crate) fn lint(checked: &mut CheckedShader, settings: &Settings, lints: bool
         return;
     };
     let before = shader.diagnostics.len();
-    if settings.rules.reads_ir() && essl_lint::needs_ir(shader) {
-        shader.lower_typed();
-    }
+    essl_lint::lower_for_lints(shader, &settings.rules);
     let mut found: Vec<Diagnostic> = shader.diagnostics[before..].to_vec();
     if shader.ok() {
         found.extend(essl_lint::lint(shader, &settings.rules));

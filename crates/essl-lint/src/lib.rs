@@ -202,6 +202,15 @@ impl LintOptions {
     }
 }
 
+/// Lowers `shader` to naga IR (typed, not validated) where a rule on the IR that `options`
+/// reports has something to look at ([`LintOptions::reads_ir`], [`needs_ir`]): what a check does
+/// before [`lint`].
+pub fn lower_for_lints(shader: &mut Shader, options: &LintOptions) {
+    if options.reads_ir() && needs_ir(shader) {
+        shader.lower_typed();
+    }
+}
+
 /// Lints a compiled shader: every finding of every rule that is not allowed, in source order,
 /// with the severity its rule's level gives it ([`Level::severity`]); notes only when
 /// [`LintOptions::notes`] asks for them.

@@ -55,6 +55,14 @@ struct Walker<'a> {
     out: &'a mut HashMap<(u32, u32), Precision>,
 }
 
+/// Whether a shader's text may compute anything below `highp`: it names `mediump` or `lowp`,
+/// or reads `gl_PointCoord` (itself `mediump`). Without these words every float is `highp`.
+pub(crate) fn names_low_precision(text: &str) -> bool {
+    ["mediump", "lowp", "gl_PointCoord"]
+        .iter()
+        .any(|w| text.contains(w))
+}
+
 fn highest(a: Option<Precision>, b: Option<Precision>) -> Option<Precision> {
     match (a, b) {
         (Some(x), Some(y)) => Some(x.max(y)),

@@ -19,7 +19,7 @@ use essl::source::Span;
 use essl::types::{ScalarKind, Type};
 use essl::Shader;
 
-use crate::precision::Precisions;
+use crate::precision::{names_low_precision, Precisions};
 
 /// Whether any rule on naga IR may have something to look at in `shader` (a shader that did
 /// not compile has nothing).
@@ -29,10 +29,7 @@ pub fn needs_ir(shader: &Shader) -> bool {
     }
     let text = shader.file.text();
     let m = &shader.module;
-    // As `rules::candidates`: without these words every float is highp.
-    let low = ["mediump", "lowp", "gl_PointCoord"]
-        .iter()
-        .any(|w| text.contains(w));
+    let low = names_low_precision(text);
     let mut screen = Screen {
         low,
         products: Vec::new(),

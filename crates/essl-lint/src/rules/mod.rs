@@ -116,12 +116,7 @@ pub(crate) fn candidates(
     if hard {
         return (true, true, None);
     }
-    // Without these words (or `gl_PointCoord`, mediump itself), every float is highp.
-    let text = shader.file.text();
-    if !["mediump", "lowp", "gl_PointCoord"]
-        .iter()
-        .any(|w| text.contains(w))
-    {
+    if !crate::precision::names_low_precision(shader.file.text()) {
         return (false, false, None);
     }
     // The precisions only where the low-precision rule has something to look at (every dEQP
