@@ -57,10 +57,17 @@ impl Facts {
     /// Depends on a fragment's window coordinates (`gl_FragCoord`), which are pixels: an
     /// ordinary value of hundreds or thousands, not the modest magnitude of other inputs.
     pub const WINDOW: Facts = Facts(8192);
+    /// Depends on an input or uniform whose name says it holds a position in a scene's space
+    /// (`vViewPosition`, `u_globe_position`): hundreds or thousands of units in scenes measured
+    /// in pixels or metres, not the modest magnitude of other inputs.
+    pub const SCENE: Facts = Facts(16384);
+    /// The bits that say an ordinary value is larger than a modest one (what a unit vector,
+    /// `normalize`'s result, no longer carries).
+    pub const MAGNITUDE: Facts = Facts(8192 | 16384);
     /// The dependency bits.
-    pub const DEPS: Facts = Facts(256 | 512 | 1024 | 8192);
+    pub const DEPS: Facts = Facts(256 | 512 | 1024 | 8192 | 16384);
     /// The facts that are united on joins.
-    pub const ALL_OR: Facts = Facts(128 | 256 | 512 | 1024 | 8192);
+    pub const ALL_OR: Facts = Facts(128 | 256 | 512 | 1024 | 8192 | 16384);
 
     /// No facts.
     pub const NONE: Facts = Facts(0);

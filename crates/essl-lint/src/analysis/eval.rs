@@ -103,8 +103,9 @@ impl Analysis {
     /// reads. Not the coordinate's inputs: the texel is constant over whole regions of the
     /// picture (where the texture is), not a value that varies per pixel as the inputs do.
     fn texel_deps(&self, id: usize, coordinate: Handle<E>) -> Facts {
+        // A texel's magnitude is the texture's, not its coordinates' (window coordinates).
         self.deps_of(id, &[coordinate])
-            .without(Facts::INPUT)
+            .without(Facts::INPUT.with(Facts::MAGNITUDE))
             .with(Facts::TEXTURE)
     }
 
@@ -149,7 +150,7 @@ impl Analysis {
                     if entry {
                         let binding = s.f.arguments[*i as usize].binding.as_ref();
                         match kind {
-                            Some(k) => self.named(module, ty, k),
+                            Some(k) => self.named(module, ty, k, Facts::INPUT),
                             None if frag_coord(module, binding) => match self.mode {
                                 Mode::Typical => frag_coord_value(),
                                 Mode::Sound => {
@@ -162,7 +163,12 @@ impl Analysis {
                         self.reads.borrow_mut().args.insert(id);
                         let v = self.args[id].get(*i as usize).cloned().unwrap_or(Val::Any);
                         match kind {
-                            Some(k) if names::as_such(&v) => self.named(module, ty, k),
+                            // What the callers pass already says its magnitude (window
+                            // coordinates): the name adds nothing.
+                            Some(names::Kind::Position) if v.facts().any(Facts::MAGNITUDE) => v,
+                            Some(k) if names::as_such(&v) => {
+                                self.named(module, ty, k, Facts::INPUT)
+                            }
                             _ => v,
                         }
                     }

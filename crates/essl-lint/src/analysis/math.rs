@@ -557,6 +557,8 @@ impl Call<'_> {
                 ))
             }
             Mf::Normalize => {
+                // A unit vector: however large the ordinary values it was computed from.
+                let deps = deps.without(Facts::MAGNITUDE);
                 let one = Interval::new(1.0 - EPS, 1.0 + EPS);
                 let points: Vec<f64> = x.comps().iter().filter_map(|c| c.as_point()).collect();
                 let len = points.iter().map(|p| p * p).sum::<f64>().sqrt();

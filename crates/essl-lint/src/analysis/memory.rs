@@ -230,8 +230,21 @@ impl Analysis {
                 .nth(g)
                 .map(|(h, _)| h)
                 .expect("global");
-            if module.global_variables[h].space != naga::AddressSpace::Private {
-                return self.external(module, ty, Facts::UNIFORM);
+            let global = &module.global_variables[h];
+            if global.space != naga::AddressSpace::Private {
+                // A uniform whose name (a block's member's) says it holds a position.
+                let name = match (&module.types[global.ty].inner, place.path.first()) {
+                    (TypeInner::Struct { members, .. }, Some(&m)) => {
+                        members.get(m as usize).and_then(|m| m.name.as_deref())
+                    }
+                    _ => global.name.as_deref(),
+                };
+                return match super::names::kind(name, ty) {
+                    Some(k @ super::names::Kind::Position) => {
+                        self.named(module, ty, k, Facts::UNIFORM)
+                    }
+                    _ => self.external(module, ty, Facts::UNIFORM),
+                };
             }
         }
         self.note_read(place.root);

@@ -60,6 +60,7 @@ pub use conditions::{integral, refine_num, relation, Refinement};
 pub(crate) use eval::WINDOW;
 pub(crate) use flow::root_global;
 pub use memory::{const_value, literal};
+pub(crate) use names::SCENE;
 pub(crate) use statements::{diverges, each_statement};
 
 use memory::write;

@@ -32,7 +32,15 @@ pub(super) enum Kind {
     Colour,
     /// A unit normal, the same over every flat face.
     Normal,
+    /// A position in a scene's space (view, world, eye, a light's): in [`Mode::Typical`],
+    /// components up to [`SCENE`] rather than [`super::TYPICAL`].
+    Position,
 }
+
+/// The largest ordinary component of a position in [`Mode::Typical`]: scenes measured in pixels
+/// (p5's camera stands about 700 units from its origin; MapLibre's globe is in pixels) or in
+/// metres span hundreds or thousands of units.
+pub(crate) const SCENE: f64 = 1000.0;
 
 /// Words that name a colour.
 const COLOUR: &[&str] = &[
@@ -40,6 +48,31 @@ const COLOUR: &[&str] = &[
 ];
 /// Words that name a normal.
 const NORMAL: &[&str] = &["normal", "normals", "nor", "nrm"];
+/// Words that name a position.
+const POSITION: &[&str] = &["position", "pos", "location"];
+/// Words that say a position is in a space of modest extent: texture coordinates, the screen's
+/// or clip space's normalised coordinates, a cell of a grid, an object's own (unit) space.
+const NOT_SCENE: &[&str] = &[
+    "uv",
+    "st",
+    "tex",
+    "texture",
+    "texel",
+    "coord",
+    "coords",
+    "screen",
+    "ndc",
+    "clip",
+    "norm",
+    "normalized",
+    "normalised",
+    "unit",
+    "local",
+    "cell",
+    "grid",
+    "relative",
+    "rel",
+];
 
 /// The words of an identifier, lower-cased: split at `_`, digits and lower-to-upper case changes
 /// (`v_normalWorld2` → `v`, `normal`, `world`).
@@ -137,7 +170,8 @@ pub(crate) fn says_any(name: &str, list: &[&str]) -> bool {
 }
 
 /// What `name` says a value of type `ty` holds: a colour for a float `vec3` or `vec4`, a normal
-/// for a float `vec3`.
+/// for a float `vec3`, a position in a scene for a float vector (not one in texture, screen or
+/// clip space: [`NOT_SCENE`]).
 pub(super) fn kind(name: Option<&str>, ty: &TypeInner) -> Option<Kind> {
     let TypeInner::Vector { size, scalar } = ty else {
         return None;
@@ -152,6 +186,8 @@ pub(super) fn kind(name: Option<&str>, ty: &TypeInner) -> Option<Kind> {
         Some(Kind::Normal)
     } else if n >= 3 && has(COLOUR) {
         Some(Kind::Colour)
+    } else if has(POSITION) && !has(NOT_SCENE) && !has(NORMAL) && !has(COLOUR) {
+        Some(Kind::Position)
     } else {
         None
     }
@@ -167,9 +203,26 @@ pub(super) fn as_such(v: &Val) -> bool {
 }
 
 impl Analysis {
-    /// The value of an input of type `ty` that holds what `kind` says.
-    pub(super) fn named(&self, module: &naga::Module, ty: &TypeInner, kind: Kind) -> Val {
+    /// The value of an input (`deps`: [`Facts::INPUT`] or [`Facts::UNIFORM`]) of type `ty` that
+    /// holds what `kind` says.
+    pub(super) fn named(
+        &self,
+        module: &naga::Module,
+        ty: &TypeInner,
+        kind: Kind,
+        deps: Facts,
+    ) -> Val {
         match kind {
+            Kind::Position if self.mode == Mode::Typical => {
+                match self.external(module, ty, deps.with(Facts::SCENE)) {
+                    Val::Num(n) => {
+                        let c = [Interval::new(0.0, SCENE); 4];
+                        Val::Num(Num::from_components(&c[..n.n as usize], n.facts))
+                    }
+                    other => other,
+                }
+            }
+            Kind::Position => self.external(module, ty, deps.with(Facts::SCENE)),
             Kind::Colour => self.texel(module, ty, Facts::TEXTURE),
             // The typical analysis keeps external values non-negative, the signs formulas
             // expect (`mediump-overflow` asks about magnitudes), for normals too.
@@ -247,5 +300,38 @@ mod tests {
         assert_eq!(kind(Some("vNormal"), &vec(4)), None);
         assert_eq!(kind(Some("dir"), &vec(3)), None);
         assert_eq!(kind(None, &vec(3)), None);
+    }
+
+    #[test]
+    fn positions_in_a_scene_not_in_texture_or_screen_space() {
+        let vec = |n| TypeInner::Vector {
+            size: match n {
+                2 => naga::VectorSize::Bi,
+                _ => naga::VectorSize::Tri,
+            },
+            scalar: naga::Scalar::F32,
+        };
+        for name in [
+            "vViewPosition",
+            "FragPos",
+            "u_globe_position",
+            "uPointLightLocation",
+        ] {
+            assert_eq!(kind(Some(name), &vec(3)), Some(Kind::Position), "{name}");
+        }
+        assert_eq!(kind(Some("v_pos"), &vec(2)), Some(Kind::Position));
+        for name in [
+            "vUvPos",
+            "screenPosition",
+            "texPos",
+            "v_clip_pos",
+            "cellPos",
+            "localPosition",
+        ] {
+            assert_eq!(kind(Some(name), &vec(3)), None, "{name}");
+        }
+        // Not a word of its own.
+        assert_eq!(kind(Some("compose"), &vec(3)), None);
+        assert_eq!(kind(Some("positive"), &vec(3)), None);
     }
 }

@@ -10,8 +10,9 @@ use naga::{
 
 use super::rule::declare_rule;
 use super::{fmt_num, operands, users, Cx, User};
-use crate::analysis::{literal, TYPICAL};
+use crate::analysis::{literal, SCENE, TYPICAL};
 use crate::interval::Interval;
+use crate::value::Facts;
 use crate::Level;
 
 declare_rule! {
@@ -24,7 +25,15 @@ declare_rule! {
     /// (distances, densities, exponents positive), matrix entries and texels up to 1, and window
     /// coordinates (`gl_FragCoord.xy`) up to 2048 pixels, which are pixels whatever the scene
     /// (`dot(c, c)` of `c = gl_FragCoord.xy` overflows 256 pixels from the corner); the analysis
-    /// follows the shader's own arithmetic from there. What overflows only for larger parameters, or
+    /// follows the shader's own arithmetic from there.
+    ///
+    /// A varying, uniform or parameter whose name says it holds a position in the scene
+    /// (`vViewPosition`, `FragPos`, `u_lightPosition`, `uPointLightLocation` — not one in texture,
+    /// screen or clip space: `vUvPos`, `screenPosition`) is taken up to 1000 units from the origin:
+    /// a scene measured in pixels (p5, MapLibre) or metres. `normalize(viewPos - FragPos)` then
+    /// squares a length past 256, and 65504 with it. Whether a scene is that large is the
+    /// program's to know, so what only such positions reach is a note; what positions a hundred
+    /// times smaller reach too stays a warning. What overflows only for larger parameters, or
     /// through a product of *different* parameters, depends on values the runtime check sees. An
     /// overflow whose only use saturates it (`clamp(x / eps, 0.0, 1.0)`, `min(x, 1.0)`, a
     /// comparison) is not reported.
@@ -72,7 +81,8 @@ declare_rule! {
     ///   `pow(max(dot(n, h), 0.0), 32.0)` of unit vectors).
     ///
     /// The values it computes with are ordinary ones (magnitude 10): its findings are warnings;
-    /// a `lowp` length is a note (GPUs that run `lowp` as 16-bit floats hold it; those that
+    /// one that only positions hundreds of units from the origin reach is a note, and so is
+    /// a `lowp` length (GPUs that run `lowp` as 16-bit floats hold it; those that
     /// implement the minimum clamp it).
     ///
     /// ## References
@@ -176,59 +186,148 @@ fn check(cx: &Cx, out: &mut Vec<Diagnostic>) {
                 .iter()
                 .filter_map(|o| cx.typical().num(id, *o).map(|n| n.hull()))
                 .collect();
-            if typ.len() != ops.len() || typ.iter().any(|i| i.mag() > LIMIT) {
+            if typ.len() != ops.len() {
                 continue;
             }
-            let Some(r) = amplified(cx, f, id, e, &typ) else {
+            let Some((r, values)) = overflow(cx, f, id, e, &ops, &typ) else {
                 continue;
             };
             if guarded_operand(cx, f, h, e).is_some_and(|x| underflows(cx, id, f, x).is_some()) {
                 continue; // the underflowing divisor is the finding
             }
             let (up, down) = (r.hi > LIMIT, r.lo < -LIMIT);
-            if !up && !down {
-                continue;
-            }
             if uses.saturated(h, up, down, 0) {
                 continue;
             }
-            let peak = if up { r.hi } else { r.lo };
             let p = cx.prec.at(span).map(|p| p.name()).unwrap_or("mediump");
-            let d = Diagnostic::rule_warning(MediumpOverflow::RULE.id, format!("`{p}` result can overflow 65504 for ordinary values"), span)
-                .with_label(format!("computed in `{p}`: reaches {} with {}", fmt_num(peak), ordinary(cx, id, &ops)))
+            let peak = fmt_num(if up { r.hi } else { r.lo });
+            // Ordinary values reach it: the rule computes with them (no note for one uniform).
+            // A scene's scale is the program's: positions of hundreds of units are ordinary in
+            // one measured in pixels and never reached in one of a few metres (a note).
+            let d = if values == Values::Scene {
+                let message =
+                    format!("`{p}` result can overflow 65504 in a scene hundreds of units across");
+                Diagnostic::rule_note(MediumpOverflow::RULE.id, message, span)
+            } else {
+                let message = format!("`{p}` result can overflow 65504 for ordinary values");
+                Diagnostic::rule_warning(MediumpOverflow::RULE.id, message, span)
+            };
+            let d = d
+                .with_label(format!("computed in `{p}`: reaches {peak} with {}", values.text()))
                 .with_note("mediump and lowp are 16-bit floats on many mobile GPUs: the largest finite value is 65504")
                 .with_help("compute it in `highp`, or rescale the operands");
-            // Ordinary values reach it: the rule computes with them (no note for one uniform).
             out.push(d);
         }
     }
 }
 
+/// The ordinary values an overflow is found with.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Values {
+    /// Inputs of magnitude [`TYPICAL`].
+    Modest,
+    /// Window coordinates (`gl_FragCoord`), up to [`crate::analysis::WINDOW`] pixels.
+    Window,
+    /// Positions a name says are in a scene, up to [`SCENE`] units from the origin.
+    Scene,
+}
+
+impl Values {
+    /// The values, for the finding's label.
+    fn text(self) -> String {
+        match self {
+            Values::Modest => format!("inputs of magnitude {}", fmt_num(TYPICAL)),
+            Values::Window => format!(
+                "window coordinates up to {} pixels",
+                fmt_num(crate::analysis::WINDOW)
+            ),
+            Values::Scene => format!(
+                "positions up to {} units from the origin (a scene in pixels or metres)",
+                fmt_num(SCENE)
+            ),
+        }
+    }
+}
+
 /// The ordinary magnitude of an external value with `facts`: window coordinates are pixels
-/// (`gl_FragCoord.xy`, [`crate::analysis::WINDOW`]), other inputs modest ([`TYPICAL`]).
-fn magnitude(facts: crate::value::Facts) -> f64 {
-    if facts.any(crate::value::Facts::WINDOW) {
+/// (`gl_FragCoord.xy`, [`crate::analysis::WINDOW`]), a position named as such is in a scene's
+/// units ([`SCENE`]), other inputs are modest ([`TYPICAL`]).
+fn magnitude(facts: Facts) -> f64 {
+    if facts.any(Facts::WINDOW) {
         crate::analysis::WINDOW
+    } else if facts.any(Facts::SCENE) {
+        SCENE
     } else {
         TYPICAL
     }
 }
 
-/// What the ordinary values a finding computes with are: window coordinates where an operand
-/// reads `gl_FragCoord`, inputs of magnitude [`TYPICAL`] otherwise.
-fn ordinary(cx: &Cx, id: usize, ops: &[Handle<E>]) -> String {
-    let window = ops.iter().any(|o| {
+/// The values the largest operand of `ops` is ordinarily computed from.
+fn ordinary(cx: &Cx, id: usize, ops: &[Handle<E>]) -> Values {
+    let largest = ops
+        .iter()
+        .filter_map(|o| cx.sound().num(id, *o))
+        .map(|n| magnitude(n.facts))
+        .fold(TYPICAL, f64::max);
+    if largest == crate::analysis::WINDOW {
+        Values::Window
+    } else if largest == SCENE {
+        Values::Scene
+    } else {
+        Values::Modest
+    }
+}
+
+/// Whether `r` passes 65504 either way.
+fn past(r: Interval) -> bool {
+    r.hi > LIMIT || r.lo < -LIMIT
+}
+
+/// What `e` reaches past 65504 for ordinary values of its operands (`typ`: their ordinary
+/// ranges), and with which values. An operand past 65504 already is its own finding — unless
+/// only a scene's scale takes it there, and `e` overflows for modest positions too. A finding
+/// that only positions of a scene's scale reach is [`Values::Scene`]; where positions a hundred
+/// times smaller reach it too, it is [`Values::Modest`].
+fn overflow(
+    cx: &Cx,
+    f: &Function,
+    id: usize,
+    e: &E,
+    ops: &[Handle<E>],
+    typ: &[Interval],
+) -> Option<(Interval, Values)> {
+    let shrink = TYPICAL / SCENE;
+    let scene = |o: &Handle<E>| {
         cx.sound()
             .num(id, *o)
-            .is_some_and(|n| magnitude(n.facts) != TYPICAL)
-    });
-    if window {
-        format!(
-            "window coordinates up to {} pixels",
-            fmt_num(crate::analysis::WINDOW)
-        )
-    } else {
-        format!("inputs of magnitude {}", fmt_num(TYPICAL))
+            .is_some_and(|n| n.facts.any(Facts::SCENE))
+    };
+    let small: Vec<Interval> = ops
+        .iter()
+        .zip(typ)
+        .map(|(o, t)| {
+            if scene(o) {
+                t.mul(Interval::point(shrink))
+            } else {
+                *t
+            }
+        })
+        .collect();
+    let modest = || {
+        amplified_with(cx, f, id, e, &small, shrink)
+            .filter(|m| past(*m))
+            .map(|m| (m, Values::Modest))
+    };
+    if typ.iter().any(|i| i.mag() > LIMIT) {
+        if !ops.iter().any(scene) || small.iter().any(|i| i.mag() > LIMIT) {
+            return None;
+        }
+        return modest();
+    }
+    let r = amplified(cx, f, id, e, typ).filter(|r| past(*r))?;
+    match ordinary(cx, id, ops) {
+        Values::Scene => Some(modest().unwrap_or((r, Values::Scene))),
+        values => Some((r, values)),
     }
 }
 
@@ -415,17 +514,35 @@ fn bounded_cheaply(cx: &Cx, id: usize, e: &E, ops: &[Handle<E>]) -> bool {
 /// different parameters is not an amplification: its scale is the parameters' (the runtime
 /// check sees their values).
 fn amplified(cx: &Cx, f: &Function, id: usize, e: &E, typ: &[Interval]) -> Option<Interval> {
+    amplified_with(cx, f, id, e, typ, 1.0)
+}
+
+/// [`amplified`], the components of operands that read a position named as such multiplied by
+/// `shrink` (what the vector functions read; `typ` is the caller's to scale).
+fn amplified_with(
+    cx: &Cx,
+    f: &Function,
+    id: usize,
+    e: &E,
+    typ: &[Interval],
+    shrink: f64,
+) -> Option<Interval> {
     let constant = |h: Handle<E>| {
         cx.sound()
             .num(id, h)
             .is_some_and(|n| n.comps().iter().all(|c| c.as_point().is_some()))
     };
+    let comps = |h: Handle<E>| -> Option<Vec<Interval>> {
+        let n = cx.typical().num(id, h)?;
+        let scene = cx
+            .sound()
+            .num(id, h)
+            .is_some_and(|s| s.facts.any(Facts::SCENE));
+        let k = Interval::point(if scene { shrink } else { 1.0 });
+        Some(n.comps().iter().map(|c| c.mul(k)).collect())
+    };
     let squares = |h: Handle<E>| {
-        cx.typical().num(id, h).map(|n| {
-            n.comps()
-                .iter()
-                .fold(Interval::point(0.0), |s, c| s.add(c.sqr()))
-        })
+        comps(h).map(|cs| cs.iter().fold(Interval::point(0.0), |s, c| s.add(c.sqr())))
     };
     match *e {
         E::Binary {
@@ -476,11 +593,11 @@ fn amplified(cx: &Cx, f: &Function, id: usize, e: &E, typ: &[Interval]) -> Optio
             arg1: Some(b),
             ..
         } => {
-            let (x, y) = (cx.typical().num(id, arg)?, cx.typical().num(id, b)?);
+            let (x, y) = (comps(arg)?, comps(b)?);
             Some(
-                x.zip(y, Interval::sub)
-                    .iter()
-                    .fold(Interval::point(0.0), |s, c| s.add(c.sqr())),
+                x.iter()
+                    .zip(&y)
+                    .fold(Interval::point(0.0), |s, (a, b)| s.add(a.sub(*b).sqr())),
             )
         }
         E::Math {
