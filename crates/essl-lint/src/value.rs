@@ -61,13 +61,16 @@ impl Facts {
     /// (`vViewPosition`, `u_globe_position`): hundreds or thousands of units in scenes measured
     /// in pixels or metres, not the modest magnitude of other inputs.
     pub const SCENE: Facts = Facts(16384);
+    /// Depends on a uniform whose name says it holds the time since the animation started
+    /// (`iTime`, `u_time`): thousands of seconds once a page has been open an hour.
+    pub const TIME: Facts = Facts(32768);
     /// The bits that say an ordinary value is larger than a modest one (what a unit vector,
     /// `normalize`'s result, no longer carries).
-    pub const MAGNITUDE: Facts = Facts(8192 | 16384);
+    pub const MAGNITUDE: Facts = Facts(8192 | 16384 | 32768);
     /// The dependency bits.
-    pub const DEPS: Facts = Facts(256 | 512 | 1024 | 8192 | 16384);
+    pub const DEPS: Facts = Facts(256 | 512 | 1024 | 8192 | 16384 | 32768);
     /// The facts that are united on joins.
-    pub const ALL_OR: Facts = Facts(128 | 256 | 512 | 1024 | 8192 | 16384);
+    pub const ALL_OR: Facts = Facts(128 | 256 | 512 | 1024 | 8192 | 16384 | 32768);
 
     /// No facts.
     pub const NONE: Facts = Facts(0);

@@ -165,7 +165,11 @@ impl Analysis {
                         match kind {
                             // What the callers pass already says its magnitude (window
                             // coordinates): the name adds nothing.
-                            Some(names::Kind::Position) if v.facts().any(Facts::MAGNITUDE) => v,
+                            Some(names::Kind::Position | names::Kind::Time)
+                                if v.facts().any(Facts::MAGNITUDE) =>
+                            {
+                                v
+                            }
                             Some(k) if names::as_such(&v) => {
                                 self.named(module, ty, k, Facts::INPUT)
                             }

@@ -232,7 +232,7 @@ impl Analysis {
                 .expect("global");
             let global = &module.global_variables[h];
             if global.space != naga::AddressSpace::Private {
-                // A uniform whose name (a block's member's) says it holds a position.
+                // A uniform whose name (a block's member's) says it holds a position or a time.
                 let name = match (&module.types[global.ty].inner, place.path.first()) {
                     (TypeInner::Struct { members, .. }, Some(&m)) => {
                         members.get(m as usize).and_then(|m| m.name.as_deref())
@@ -240,7 +240,7 @@ impl Analysis {
                     _ => global.name.as_deref(),
                 };
                 return match super::names::kind(name, ty) {
-                    Some(k @ super::names::Kind::Position) => {
+                    Some(k @ (super::names::Kind::Position | super::names::Kind::Time)) => {
                         self.named(module, ty, k, Facts::UNIFORM)
                     }
                     _ => self.external(module, ty, Facts::UNIFORM),

@@ -60,7 +60,7 @@ pub use conditions::{integral, refine_num, relation, Refinement};
 pub(crate) use eval::WINDOW;
 pub(crate) use flow::root_global;
 pub use memory::{const_value, literal};
-pub(crate) use names::SCENE;
+pub(crate) use names::{SCENE, TIME};
 pub(crate) use statements::{diverges, each_statement};
 
 use memory::write;
@@ -178,6 +178,9 @@ pub struct Analysis {
     rounds: usize,
     /// The ratio each series' bound last used, by function and accumulator ([`series`]).
     series_ratio: HashMap<(usize, usize), Option<crate::interval::Interval>>,
+    /// Whether, in [`Mode::Typical`], a name gives a position or a time its larger magnitude
+    /// ([`names`]).
+    named_magnitudes: bool,
 }
 
 /// What user functions read in one round of the walk.
@@ -224,6 +227,17 @@ impl Analysis {
     /// gives each call the result of its own arguments (what signs and ranges of results need;
     /// magnitudes of ordinary values do not).
     pub fn run_for(info: &Lowered, mode: Mode, per_call: bool) -> Analysis {
+        Analysis::run_with(info, mode, per_call, true)
+    }
+
+    /// [`Mode::Typical`] with every external value of modest magnitude, whatever its name says
+    /// (a position, a time): what an overflow that names reach needs of them.
+    pub fn run_modest(info: &Lowered) -> Analysis {
+        Analysis::run_with(info, Mode::Typical, false, false)
+    }
+
+    /// [`Analysis::run_for`]; `named_magnitudes`: whether names give magnitudes.
+    fn run_with(info: &Lowered, mode: Mode, per_call: bool, named_magnitudes: bool) -> Analysis {
         let module = &info.module;
         let count = module.functions.len() + module.entry_points.len();
         let mut a = Analysis {
@@ -249,6 +263,7 @@ impl Analysis {
             walking_entry: false,
             rounds: 0,
             series_ratio: HashMap::default(),
+            named_magnitudes,
         };
         for id in 0..count {
             let f = function(module, id);

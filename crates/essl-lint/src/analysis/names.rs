@@ -35,7 +35,13 @@ pub(super) enum Kind {
     /// A position in a scene's space (view, world, eye, a light's): in [`Mode::Typical`],
     /// components up to [`SCENE`] rather than [`super::TYPICAL`].
     Position,
+    /// The time since an animation started, in seconds: in [`Mode::Typical`], up to [`TIME`].
+    Time,
 }
+
+/// The largest ordinary time in seconds in [`Mode::Typical`]: an hour (a page left open, an
+/// animated background).
+pub(crate) const TIME: f64 = 3600.0;
 
 /// The largest ordinary component of a position in [`Mode::Typical`]: scenes measured in pixels
 /// (p5's camera stands about 700 units from its origin; MapLibre's globe is in pixels) or in
@@ -48,6 +54,21 @@ const COLOUR: &[&str] = &[
 ];
 /// Words that name a normal.
 const NORMAL: &[&str] = &["normal", "normals", "nor", "nrm"];
+/// Words that may stand beside `time` in the name of the time since an animation started
+/// (`iGlobalTime`, `u_elapsedTime`); any other word makes it something else (`deltaTime`,
+/// `timeScale`, `fadeTime`).
+const TIME_WORDS: &[&str] = &[
+    "u",
+    "i",
+    "g",
+    "global",
+    "current",
+    "elapsed",
+    "total",
+    "anim",
+    "animation",
+    "shader",
+];
 /// Words that name a position.
 const POSITION: &[&str] = &["position", "pos", "location"];
 /// Words that say a position is in a space of modest extent: texture coordinates, the screen's
@@ -173,6 +194,14 @@ pub(crate) fn says_any(name: &str, list: &[&str]) -> bool {
 /// for a float `vec3`, a position in a scene for a float vector (not one in texture, screen or
 /// clip space: [`NOT_SCENE`]).
 pub(super) fn kind(name: Option<&str>, ty: &TypeInner) -> Option<Kind> {
+    if let TypeInner::Scalar(s) = ty {
+        let ws = words(name?);
+        let time = ws.iter().any(|w| w == "time")
+            && ws
+                .iter()
+                .all(|w| w == "time" || TIME_WORDS.contains(&w.as_str()));
+        return (s.kind == ScalarKind::Float && time).then_some(Kind::Time);
+    }
     let TypeInner::Vector { size, scalar } = ty else {
         return None;
     };
@@ -213,16 +242,19 @@ impl Analysis {
         deps: Facts,
     ) -> Val {
         match kind {
-            Kind::Position if self.mode == Mode::Typical => {
-                match self.external(module, ty, deps.with(Facts::SCENE)) {
-                    Val::Num(n) => {
-                        let c = [Interval::new(0.0, SCENE); 4];
+            Kind::Position | Kind::Time => {
+                let (bit, largest) = match kind {
+                    Kind::Position => (Facts::SCENE, SCENE),
+                    _ => (Facts::TIME, TIME),
+                };
+                match self.external(module, ty, deps.with(bit)) {
+                    Val::Num(n) if self.mode == Mode::Typical && self.named_magnitudes => {
+                        let c = [Interval::new(0.0, largest); 4];
                         Val::Num(Num::from_components(&c[..n.n as usize], n.facts))
                     }
                     other => other,
                 }
             }
-            Kind::Position => self.external(module, ty, deps.with(Facts::SCENE)),
             Kind::Colour => self.texel(module, ty, Facts::TEXTURE),
             // The typical analysis keeps external values non-negative, the signs formulas
             // expect (`mediump-overflow` asks about magnitudes), for normals too.
@@ -303,7 +335,7 @@ mod tests {
     }
 
     #[test]
-    fn positions_in_a_scene_not_in_texture_or_screen_space() {
+    fn positions_in_a_scene_and_the_animation_s_time() {
         let vec = |n| TypeInner::Vector {
             size: match n {
                 2 => naga::VectorSize::Bi,
@@ -332,6 +364,20 @@ mod tests {
         }
         // Not a word of its own.
         assert_eq!(kind(Some("compose"), &vec(3)), None);
+        let float = TypeInner::Scalar(naga::Scalar::F32);
+        for name in ["iTime", "u_time", "time", "iGlobalTime", "uElapsedTime"] {
+            assert_eq!(kind(Some(name), &float), Some(Kind::Time), "{name}");
+        }
+        for name in [
+            "deltaTime",
+            "u_timeScale",
+            "fadeTime",
+            "timeOffset",
+            "lifetime",
+        ] {
+            assert_eq!(kind(Some(name), &float), None, "{name}");
+        }
+        assert_eq!(kind(Some("iTime"), &vec(2)), None);
         assert_eq!(kind(Some("positive"), &vec(3)), None);
     }
 }

@@ -57,6 +57,9 @@ pub struct Cx<'a> {
     /// The analysis with ordinary external values: computed on first use ([`Cx::typical`]),
     /// since only low-precision arithmetic asks for it.
     typical: std::cell::OnceCell<Analysis>,
+    /// [`Cx::typical`] without the magnitudes names give: computed on first use
+    /// ([`Cx::modest`]).
+    modest: std::cell::OnceCell<Analysis>,
     /// Precisions by span.
     pub prec: Precisions,
     /// Private globals that user functions write.
@@ -105,6 +108,7 @@ impl<'a> Cx<'a> {
             info,
             sound: std::cell::OnceCell::new(),
             typical: std::cell::OnceCell::new(),
+            modest: std::cell::OnceCell::new(),
             prec,
             written,
             flows: std::cell::OnceCell::new(),
@@ -125,6 +129,12 @@ impl<'a> Cx<'a> {
     pub fn typical(&self) -> &Analysis {
         self.typical
             .get_or_init(|| Analysis::run_for(self.info, Mode::Typical, false))
+    }
+
+    /// The analysis with ordinary external values all of modest magnitude, positions and times
+    /// included ([`Analysis::run_modest`]).
+    pub fn modest(&self) -> &Analysis {
+        self.modest.get_or_init(|| Analysis::run_modest(self.info))
     }
 
     /// The user's functions (not the entry-point wrapper): (index, function).

@@ -10,7 +10,7 @@ use naga::{
 
 use super::rule::declare_rule;
 use super::{fmt_num, operands, users, Cx, User};
-use crate::analysis::{literal, SCENE, TYPICAL};
+use crate::analysis::{literal, SCENE, TIME, TYPICAL};
 use crate::interval::Interval;
 use crate::value::Facts;
 use crate::Level;
@@ -31,9 +31,12 @@ declare_rule! {
     /// (`vViewPosition`, `FragPos`, `u_lightPosition`, `uPointLightLocation` — not one in texture,
     /// screen or clip space: `vUvPos`, `screenPosition`) is taken up to 1000 units from the origin:
     /// a scene measured in pixels (p5, MapLibre) or metres. `normalize(viewPos - FragPos)` then
-    /// squares a length past 256, and 65504 with it. Whether a scene is that large is the
-    /// program's to know, so what only such positions reach is a note; what positions a hundred
-    /// times smaller reach too stays a warning. What overflows only for larger parameters, or
+    /// squares a length past 256, and 65504 with it. A `float` uniform whose name says it holds the
+    /// animation's time (`iTime`, `u_time`; not `deltaTime` or `timeScale`) is taken up to 3600
+    /// seconds: `iTime * 30.0` passes 65504 once a page has been open an hour. Whether a scene is
+    /// that large, or a page open that long, is the program's to know, so what only such values
+    /// reach is a note; what modest ones reach too stays a warning. A factor the shader alone
+    /// bounds (a loop's counter, `float(j)` for `j < 20`) counts as a constant. What overflows only for larger parameters, or
     /// through a product of *different* parameters, depends on values the runtime check sees. An
     /// overflow whose only use saturates it (`clamp(x / eps, 0.0, 1.0)`, `min(x, 1.0)`, a
     /// comparison) is not reported.
@@ -81,7 +84,8 @@ declare_rule! {
     ///   `pow(max(dot(n, h), 0.0), 32.0)` of unit vectors).
     ///
     /// The values it computes with are ordinary ones (magnitude 10): its findings are warnings;
-    /// one that only positions hundreds of units from the origin reach is a note, and so is
+    /// one that only positions hundreds of units from the origin or an hour's time reach is a
+    /// note, and so is
     /// a `lowp` length (GPUs that run `lowp` as 16-bit floats hold it; those that
     /// implement the minimum clamp it).
     ///
@@ -204,13 +208,10 @@ fn check(cx: &Cx, out: &mut Vec<Diagnostic>) {
             // Ordinary values reach it: the rule computes with them (no note for one uniform).
             // A scene's scale is the program's: positions of hundreds of units are ordinary in
             // one measured in pixels and never reached in one of a few metres (a note).
-            let d = if values == Values::Scene {
-                let message =
-                    format!("`{p}` result can overflow 65504 in a scene hundreds of units across");
-                Diagnostic::rule_note(MediumpOverflow::RULE.id, message, span)
+            let d = if values.program() {
+                Diagnostic::rule_note(MediumpOverflow::RULE.id, values.message(p), span)
             } else {
-                let message = format!("`{p}` result can overflow 65504 for ordinary values");
-                Diagnostic::rule_warning(MediumpOverflow::RULE.id, message, span)
+                Diagnostic::rule_warning(MediumpOverflow::RULE.id, values.message(p), span)
             };
             let d = d
                 .with_label(format!("computed in `{p}`: reaches {peak} with {}", values.text()))
@@ -230,6 +231,8 @@ enum Values {
     Window,
     /// Positions a name says are in a scene, up to [`SCENE`] units from the origin.
     Scene,
+    /// A time a name says is the animation's, up to [`TIME`] seconds.
+    Time,
 }
 
 impl Values {
@@ -245,34 +248,71 @@ impl Values {
                 "positions up to {} units from the origin (a scene in pixels or metres)",
                 fmt_num(SCENE)
             ),
+            Values::Time => format!(
+                "a time of up to {} seconds (an animation an hour old)",
+                fmt_num(TIME)
+            ),
         }
     }
-}
 
-/// The ordinary magnitude of an external value with `facts`: window coordinates are pixels
-/// (`gl_FragCoord.xy`, [`crate::analysis::WINDOW`]), a position named as such is in a scene's
-/// units ([`SCENE`]), other inputs are modest ([`TYPICAL`]).
-fn magnitude(facts: Facts) -> f64 {
-    if facts.any(Facts::WINDOW) {
-        crate::analysis::WINDOW
-    } else if facts.any(Facts::SCENE) {
-        SCENE
-    } else {
-        TYPICAL
+    /// The finding's message, for a result in precision `p`.
+    fn message(self, p: &str) -> String {
+        match self {
+            Values::Scene => {
+                format!("`{p}` result can overflow 65504 in a scene hundreds of units across")
+            }
+            Values::Time => {
+                format!("`{p}` result can overflow 65504 once the animation has run an hour")
+            }
+            _ => format!("`{p}` result can overflow 65504 for ordinary values"),
+        }
+    }
+
+    /// Whether the values are the program's to know (a note): a scene's scale, how long a page
+    /// stays open.
+    fn program(self) -> bool {
+        matches!(self, Values::Scene | Values::Time)
     }
 }
 
-/// The values the largest operand of `ops` is ordinarily computed from.
-fn ordinary(cx: &Cx, id: usize, ops: &[Handle<E>]) -> Values {
-    let largest = ops
-        .iter()
-        .filter_map(|o| cx.sound().num(id, *o))
-        .map(|n| magnitude(n.facts))
-        .fold(TYPICAL, f64::max);
-    if largest == crate::analysis::WINDOW {
+/// The ordinary magnitude of an external value with `facts` (a generous bound): window
+/// coordinates are pixels (`gl_FragCoord.xy`, [`crate::analysis::WINDOW`]), a time named as
+/// such is up to an hour ([`TIME`]), a position named as such is in a scene's units
+/// ([`SCENE`]), other inputs are modest ([`TYPICAL`]).
+fn magnitude(facts: Facts) -> f64 {
+    let named = match named(facts) {
+        Some(Values::Time) => TIME,
+        Some(_) => SCENE,
+        None => TYPICAL,
+    };
+    if facts.any(Facts::WINDOW) {
+        named.max(crate::analysis::WINDOW)
+    } else {
+        named
+    }
+}
+
+/// The values a name gives a magnitude that `facts` depend on: a time before a position.
+fn named(facts: Facts) -> Option<Values> {
+    if facts.any(Facts::TIME) {
+        Some(Values::Time)
+    } else if facts.any(Facts::SCENE) {
+        Some(Values::Scene)
+    } else {
+        None
+    }
+}
+
+/// The values an overflow of `ops` that modest values reach is found with: window
+/// coordinates where an operand reads `gl_FragCoord`, modest inputs otherwise.
+fn unnamed(cx: &Cx, id: usize, ops: &[Handle<E>]) -> Values {
+    let window = ops.iter().any(|o| {
+        cx.sound()
+            .num(id, *o)
+            .is_some_and(|n| n.facts.any(Facts::WINDOW))
+    });
+    if window {
         Values::Window
-    } else if largest == SCENE {
-        Values::Scene
     } else {
         Values::Modest
     }
@@ -285,9 +325,10 @@ fn past(r: Interval) -> bool {
 
 /// What `e` reaches past 65504 for ordinary values of its operands (`typ`: their ordinary
 /// ranges), and with which values. An operand past 65504 already is its own finding — unless
-/// only a scene's scale takes it there, and `e` overflows for modest positions too. A finding
-/// that only positions of a scene's scale reach is [`Values::Scene`]; where positions a hundred
-/// times smaller reach it too, it is [`Values::Modest`].
+/// only an hour's time or a scene's scale takes it there, and `e` overflows with modest values
+/// of those too ([`Cx::modest`]). A finding that only those reach is [`Values::Time`] or
+/// [`Values::Scene`]; where modest ones reach it too, it is [`Values::Modest`] or
+/// [`Values::Window`].
 fn overflow(
     cx: &Cx,
     f: &Function,
@@ -296,38 +337,30 @@ fn overflow(
     ops: &[Handle<E>],
     typ: &[Interval],
 ) -> Option<(Interval, Values)> {
-    let shrink = TYPICAL / SCENE;
-    let scene = |o: &Handle<E>| {
-        cx.sound()
-            .num(id, *o)
-            .is_some_and(|n| n.facts.any(Facts::SCENE))
-    };
-    let small: Vec<Interval> = ops
+    let names = ops
         .iter()
-        .zip(typ)
-        .map(|(o, t)| {
-            if scene(o) {
-                t.mul(Interval::point(shrink))
-            } else {
-                *t
-            }
-        })
-        .collect();
+        .filter_map(|o| cx.sound().num(id, *o).and_then(|n| named(n.facts)))
+        .max_by_key(|v| *v == Values::Time);
     let modest = || {
-        amplified_with(cx, f, id, e, &small, shrink)
-            .filter(|m| past(*m))
-            .map(|m| (m, Values::Modest))
-    };
-    if typ.iter().any(|i| i.mag() > LIMIT) {
-        if !ops.iter().any(scene) || small.iter().any(|i| i.mag() > LIMIT) {
+        let an = cx.modest();
+        let typ: Vec<Interval> = ops
+            .iter()
+            .filter_map(|o| an.num(id, *o).map(|n| n.hull()))
+            .collect();
+        if typ.len() != ops.len() || typ.iter().any(|i| i.mag() > LIMIT) {
             return None;
         }
-        return modest();
+        amplified_in(cx, an, f, id, e, &typ)
+            .filter(|m| past(*m))
+            .map(|m| (m, unnamed(cx, id, ops)))
+    };
+    if typ.iter().any(|i| i.mag() > LIMIT) {
+        return names.and_then(|_| modest());
     }
     let r = amplified(cx, f, id, e, typ).filter(|r| past(*r))?;
-    match ordinary(cx, id, ops) {
-        Values::Scene => Some(modest().unwrap_or((r, Values::Scene))),
-        values => Some((r, values)),
+    match names {
+        Some(values) => Some(modest().unwrap_or((r, values))),
+        None => Some((r, unnamed(cx, id, ops))),
     }
 }
 
@@ -351,7 +384,10 @@ fn could_amplify(cx: &Cx, f: &Function, id: usize, e: &E) -> bool {
             arg: left,
             arg1: Some(right),
             ..
-        } => cx.sound().same(f, id, left, right) || constant(left) || constant(right),
+        } => {
+            let fixed = |h| constant(h) || fixed(cx, id, h);
+            cx.sound().same(f, id, left, right) || fixed(left) || fixed(right)
+        }
         E::Math {
             fun: Mf::Dot,
             arg,
@@ -360,6 +396,14 @@ fn could_amplify(cx: &Cx, f: &Function, id: usize, e: &E) -> bool {
         } => cx.sound().same(f, id, arg, b),
         _ => true,
     }
+}
+
+/// Whether `h` is a value the shader alone bounds, whatever its inputs (a loop's counter,
+/// `float(j)` for `j < 20`): a factor as fixed as a constant.
+fn fixed(cx: &Cx, id: usize, h: Handle<E>) -> bool {
+    cx.sound()
+        .num(id, h)
+        .is_some_and(|n| !n.facts.any(Facts::DEPS) && n.comps().iter().all(|c| c.mag().is_finite()))
 }
 
 /// Whether `h` is, in the source, a literal of magnitude at most 1 (`0.5`), or a parameter of a
@@ -514,33 +558,26 @@ fn bounded_cheaply(cx: &Cx, id: usize, e: &E, ops: &[Handle<E>]) -> bool {
 /// different parameters is not an amplification: its scale is the parameters' (the runtime
 /// check sees their values).
 fn amplified(cx: &Cx, f: &Function, id: usize, e: &E, typ: &[Interval]) -> Option<Interval> {
-    amplified_with(cx, f, id, e, typ, 1.0)
+    amplified_in(cx, cx.typical(), f, id, e, typ)
 }
 
-/// [`amplified`], the components of operands that read a position named as such multiplied by
-/// `shrink` (what the vector functions read; `typ` is the caller's to scale).
-fn amplified_with(
+/// [`amplified`], the vector functions reading their operands' components from `an` (the
+/// ordinary values [`Cx::typical`] or the modest ones [`Cx::modest`], as `typ` is).
+fn amplified_in(
     cx: &Cx,
+    an: &crate::analysis::Analysis,
     f: &Function,
     id: usize,
     e: &E,
     typ: &[Interval],
-    shrink: f64,
 ) -> Option<Interval> {
     let constant = |h: Handle<E>| {
         cx.sound()
             .num(id, h)
             .is_some_and(|n| n.comps().iter().all(|c| c.as_point().is_some()))
     };
-    let comps = |h: Handle<E>| -> Option<Vec<Interval>> {
-        let n = cx.typical().num(id, h)?;
-        let scene = cx
-            .sound()
-            .num(id, h)
-            .is_some_and(|s| s.facts.any(Facts::SCENE));
-        let k = Interval::point(if scene { shrink } else { 1.0 });
-        Some(n.comps().iter().map(|c| c.mul(k)).collect())
-    };
+    let fixed = |h: Handle<E>| constant(h) || fixed(cx, id, h);
+    let comps = |h: Handle<E>| -> Option<Vec<Interval>> { Some(an.num(id, h)?.comps().to_vec()) };
     let squares = |h: Handle<E>| {
         comps(h).map(|cs| cs.iter().fold(Interval::point(0.0), |s, c| s.add(c.sqr())))
     };
@@ -549,7 +586,7 @@ fn amplified_with(
             op: Bo::Multiply,
             left,
             right,
-        } => (cx.sound().same(f, id, left, right) || constant(left) || constant(right))
+        } => (cx.sound().same(f, id, left, right) || fixed(left) || fixed(right))
             .then(|| typ[0].mul(typ[1])),
         E::Binary {
             op: Bo::Divide,

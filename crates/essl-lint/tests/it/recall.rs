@@ -1478,6 +1478,38 @@ fn scene_positions_in_mediump_are_notes() {
     }
 }
 
+/// A time a name says is the animation's (`iTime`, `u_time`) reaches thousands of seconds on a
+/// page left open an hour: what only that reaches in `mediump` is a note (how long a page stays
+/// open is the program's to know); a time wrapped by the shader, a time scale, and `highp`, quiet.
+#[test]
+fn an_hour_of_animation_time_in_mediump_is_a_note() {
+    let rule = "mediump-overflow";
+    let functions = "uniform float iTime; uniform float u_timeScale;";
+    let at = |precision: &str, body: &str| found_with(precision, rule, functions, body);
+    for body in [
+        "  r = iTime * 30.0;",
+        "  for (mediump int j = 0; j < 20; j++) {\n    r += sin(float(j) * iTime * 0.05);\n  }",
+    ] {
+        let f = at("mediump", body);
+        assert!(
+            !f.is_empty() && f.iter().all(|(s, _)| *s == N),
+            "{body}: {f:?}"
+        );
+        assert!(at("highp", body).is_empty(), "{body}");
+    }
+    for body in [
+        "  r = fract(iTime) * 30.0;",
+        "  r = u_timeScale * 30.0;",
+        "  r = mod(iTime, 60.0) * 30.0;",
+    ] {
+        assert!(
+            at("mediump", body).is_empty(),
+            "{body}: {:?}",
+            at("mediump", body)
+        );
+    }
+}
+
 /// A length declared `lowp` (range (-2, 2) at the minimum): a note at the declaration; the
 /// same declared `mediump`, a `lowp` colour, a mix factor named for a length, and a `lowp`
 /// that only the default precision gives, quiet.
@@ -1662,13 +1694,15 @@ fn every_classified_true_positive_is_still_reported() {
         }
         for r in &rows {
             checked += 1;
-            let ok = found.iter().any(|(rule, repo, line, source, severity, scale)| {
-                *rule == r[0]
-                    && *repo == r[1]
-                    && *source == r[3]
-                    && (r[2] == "*" || r[2] == line.to_string())
-                    && (r[4] != "real" || *severity == Severity::Warning || *scale)
-            });
+            let ok = found
+                .iter()
+                .any(|(rule, repo, line, source, severity, scale)| {
+                    *rule == r[0]
+                        && *repo == r[1]
+                        && *source == r[3]
+                        && (r[2] == "*" || r[2] == line.to_string())
+                        && (r[4] != "real" || *severity == Severity::Warning || *scale)
+                });
             if !ok {
                 missing.push(format!("{corpus}: {} {} `{}` ({})", r[0], r[1], r[3], r[4]));
             }
