@@ -145,8 +145,9 @@ impl Analysis {
                 ) {
                     return at(Root::Arg(id, *i as usize));
                 } else {
-                    let name = s.f.arguments[*i as usize].name.as_deref();
-                    let kind = names::kind(name, ty);
+                    let kind = self.arg_names[id]
+                        .get(*i as usize)
+                        .and_then(|said| said.kind(ty));
                     if entry {
                         let binding = s.f.arguments[*i as usize].binding.as_ref();
                         match kind {

@@ -233,13 +233,12 @@ impl Analysis {
             let global = &module.global_variables[h];
             if global.space != naga::AddressSpace::Private {
                 // A uniform whose name (a block's member's) says it holds a position or a time.
-                let name = match (&module.types[global.ty].inner, place.path.first()) {
-                    (TypeInner::Struct { members, .. }, Some(&m)) => {
-                        members.get(m as usize).and_then(|m| m.name.as_deref())
-                    }
-                    _ => global.name.as_deref(),
+                let said = &self.uniform_names[g];
+                let said = match (&module.types[global.ty].inner, place.path.first()) {
+                    (TypeInner::Struct { .. }, Some(&m)) => said.get(m as usize + 1),
+                    _ => said.first(),
                 };
-                return match super::names::kind(name, ty) {
+                return match said.and_then(|s| s.kind(ty)) {
                     Some(k @ (super::names::Kind::Position | super::names::Kind::Time)) => {
                         self.named(module, ty, k, Facts::UNIFORM)
                     }

@@ -181,6 +181,11 @@ pub struct Analysis {
     /// Whether, in [`Mode::Typical`], a name gives a position or a time its larger magnitude
     /// ([`names`]).
     named_magnitudes: bool,
+    /// What the name of each global says, then those of its members where it is a block
+    /// (empty for private globals).
+    uniform_names: Vec<Vec<names::Said>>,
+    /// What the name of each parameter of each function says.
+    arg_names: Vec<Vec<names::Said>>,
 }
 
 /// What user functions read in one round of the walk.
@@ -264,6 +269,32 @@ impl Analysis {
             rounds: 0,
             series_ratio: HashMap::default(),
             named_magnitudes,
+            uniform_names: module
+                .global_variables
+                .iter()
+                .map(|(_, g)| match (g.space, &module.types[g.ty].inner) {
+                    (naga::AddressSpace::Private, _) => Vec::new(),
+                    (_, naga::TypeInner::Struct { members, .. }) => {
+                        std::iter::once(names::Said::default())
+                            .chain(
+                                members
+                                    .iter()
+                                    .map(|m| names::said(module, m.name.as_deref(), m.ty)),
+                            )
+                            .collect()
+                    }
+                    _ => vec![names::said(module, g.name.as_deref(), g.ty)],
+                })
+                .collect(),
+            arg_names: (0..count)
+                .map(|id| {
+                    let f = function(module, id);
+                    f.arguments
+                        .iter()
+                        .map(|a| names::said(module, a.name.as_deref(), a.ty))
+                        .collect()
+                })
+                .collect(),
         };
         for id in 0..count {
             let f = function(module, id);

@@ -19,7 +19,7 @@
 //! checked on the lint corpora (`docs/lints/corpus.md`): no finding there comes from a name that
 //! meant something else.
 
-use naga::{ScalarKind, TypeInner};
+use naga::{Handle, ScalarKind, TypeInner};
 
 use super::{Analysis, Mode, EPS};
 use crate::interval::Interval;
@@ -121,6 +121,30 @@ pub(crate) fn words(name: &str) -> Vec<String> {
     out
 }
 
+/// The words of an identifier as [`words`] splits them, as slices of it in their own case:
+/// without allocating, for names read once per analysis.
+fn word_slices(name: &str) -> impl Iterator<Item = &str> {
+    let b = name.as_bytes();
+    let mut i = 0;
+    std::iter::from_fn(move || {
+        while i < b.len() && !b[i].is_ascii_alphabetic() {
+            i += 1;
+        }
+        if i == b.len() {
+            return None;
+        }
+        let start = i;
+        i += 1;
+        while i < b.len()
+            && b[i].is_ascii_alphabetic()
+            && !(b[i].is_ascii_uppercase() && b[i - 1].is_ascii_lowercase())
+        {
+            i += 1;
+        }
+        Some(&name[start..i])
+    })
+}
+
 /// Words that name a setting a user may set to 0: a count (of samples, steps, columns, rows,
 /// segments, octaves, iterations…), a length, a radius, a gamma, a falloff (`directionCount`,
 /// `numberOfTilesWidth`, `uTileColumns`, `_Blob_Fade_Length_`, `uRadius`, `uGamma`), a fade
@@ -190,36 +214,74 @@ pub(crate) fn says_any(name: &str, list: &[&str]) -> bool {
     words(name).iter().any(|w| list.contains(&w.as_str()))
 }
 
-/// What `name` says a value of type `ty` holds: a colour for a float `vec3` or `vec4`, a normal
-/// for a float `vec3`, a position in a scene for a float vector (not one in texture, screen or
-/// clip space: [`NOT_SCENE`]).
-pub(super) fn kind(name: Option<&str>, ty: &TypeInner) -> Option<Kind> {
-    if let TypeInner::Scalar(s) = ty {
-        let ws = words(name?);
-        let time = ws.iter().any(|w| w == "time")
-            && ws
-                .iter()
-                .all(|w| w == "time" || TIME_WORDS.contains(&w.as_str()));
-        return (s.kind == ScalarKind::Float && time).then_some(Kind::Time);
-    }
-    let TypeInner::Vector { size, scalar } = ty else {
-        return None;
+/// What a name's words say, whatever the type of the value: read once per name
+/// ([`said`]), then matched with a type ([`Said::kind`]).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub(super) struct Said {
+    normal: bool,
+    colour: bool,
+    position: bool,
+    time: bool,
+}
+
+/// What the words of `name` say ([`Said`]) of a value of type `ty` (or of its elements): nothing
+/// unless it holds floats, as scalars or vectors.
+pub(super) fn said(module: &naga::Module, name: Option<&str>, ty: Handle<naga::Type>) -> Said {
+    let inner = match module.types[ty].inner {
+        TypeInner::Array { base, .. } => &module.types[base].inner,
+        ref inner => inner,
     };
-    if scalar.kind != ScalarKind::Float {
-        return None;
+    let float = match *inner {
+        TypeInner::Scalar(s) | TypeInner::Vector { scalar: s, .. } => s.kind == ScalarKind::Float,
+        _ => false,
+    };
+    match name {
+        Some(name) if float => said_of(name),
+        _ => Said::default(),
     }
-    let n = *size as u8;
-    let ws = words(name?);
-    let has = |list: &[&str]| ws.iter().any(|w| list.contains(&w.as_str()));
-    if n == 3 && has(NORMAL) {
-        Some(Kind::Normal)
-    } else if n >= 3 && has(COLOUR) {
-        Some(Kind::Colour)
-    } else if has(POSITION) && !has(NOT_SCENE) && !has(NORMAL) && !has(COLOUR) {
-        Some(Kind::Position)
-    } else {
-        None
+}
+
+/// What the words of `name` say ([`Said`]), whatever the type.
+fn said_of(name: &str) -> Said {
+    let is = |w: &str, list: &[&str]| list.iter().any(|l| l.eq_ignore_ascii_case(w));
+    let has = |list: &[&str]| word_slices(name).any(|w| is(w, list));
+    let (normal, colour) = (has(NORMAL), has(COLOUR));
+    Said {
+        normal,
+        colour,
+        position: has(POSITION) && !has(NOT_SCENE) && !normal && !colour,
+        time: has(&["time"]) && word_slices(name).all(|w| is(w, &["time"]) || is(w, TIME_WORDS)),
     }
+}
+
+impl Said {
+    /// What a value of type `ty` so named holds: a colour for a float `vec3` or `vec4`, a
+    /// normal for a float `vec3`, a position in a scene for a float vector (not one in texture,
+    /// screen or clip space: [`NOT_SCENE`]), the animation's time for a `float`.
+    pub(super) fn kind(self, ty: &TypeInner) -> Option<Kind> {
+        match *ty {
+            TypeInner::Scalar(s) if s.kind == ScalarKind::Float && self.time => Some(Kind::Time),
+            TypeInner::Vector { size, scalar } if scalar.kind == ScalarKind::Float => {
+                let n = size as u8;
+                if n == 3 && self.normal {
+                    Some(Kind::Normal)
+                } else if n >= 3 && self.colour {
+                    Some(Kind::Colour)
+                } else if self.position {
+                    Some(Kind::Position)
+                } else {
+                    None
+                }
+            }
+            _ => None,
+        }
+    }
+}
+
+/// What `name` says a value of type `ty` holds ([`Said::kind`]).
+#[cfg(test)]
+fn kind(name: Option<&str>, ty: &TypeInner) -> Option<Kind> {
+    said_of(name?).kind(ty)
 }
 
 /// Whether `v` is an input as such: an external value from the shader's inputs (and texels),
@@ -280,6 +342,21 @@ mod tests {
         assert_eq!(words("vRGB"), ["v", "rgb"]);
         assert_eq!(words("normalMC"), ["normal", "mc"]);
         assert_eq!(words("lh_vec3"), ["lh", "vec"]);
+    }
+
+    #[test]
+    fn word_slices_split_as_words_do() {
+        for name in [
+            "v_normalWorld2",
+            "vRGB",
+            "normalMC",
+            "lh_vec3",
+            "uPointLightLocation",
+            "_x_",
+        ] {
+            let slices: Vec<String> = word_slices(name).map(|w| w.to_ascii_lowercase()).collect();
+            assert_eq!(slices, words(name), "{name}");
+        }
     }
 
     #[test]

@@ -498,7 +498,7 @@ fn bounded_cheaply(cx: &Cx, id: usize, e: &E, ops: &[Handle<E>]) -> bool {
     }
     let bound = |h: Handle<E>| {
         let n = cx.sound().num(id, h)?;
-        if n.comps().iter().all(|c| c.as_point().is_some()) {
+        if n.comps().iter().all(|c| c.as_point().is_some()) || fixed(cx, id, h) {
             Some((n.hull(), n.n))
         } else if n.facts.has(crate::value::Facts::EXT) {
             let m = magnitude(n.facts);
