@@ -1,5 +1,6 @@
-//! What an input's name says it holds: a colour or a normal; and what a uniform's name says: a
-//! setting a user may set to 0.
+//! What an input's name says it holds: a colour or a normal; what an input's or a uniform's name
+//! says of its magnitude: a position in the scene, the animation's time; and what a uniform's name
+//! says: a setting a user may set to 0.
 //!
 //! An input as such — a varying or attribute, or the parameter of a function whose callers pass
 //! one unchanged — is unknown to the analysis, and a rule leaves a hazard that needs particular
@@ -15,9 +16,17 @@
 //! Only inputs as such take a name's word: a value the caller computes (a position, arithmetic, a
 //! uniform) keeps what the analysis knows of it, whatever the parameter is called.
 //!
-//! The word lists are written by hand, from the names WebGL code gives colours and normals, and
-//! checked on the lint corpora (`docs/lints/corpus.md`): no finding there comes from a name that
-//! meant something else.
+//! Magnitudes are for [`Mode::Typical`], whose external values are otherwise of magnitude 10: a
+//! float vector input or uniform whose name says *position* (`vViewPosition`, `FragPos`,
+//! `u_globe_position`, `uPointLightLocation`; not `vUvPos` or `screenPosition`) has components
+//! up to [`SCENE`], a scene in pixels or metres; a `float` uniform whose name says it is the
+//! animation's time (`iTime`, `u_time`; not `deltaTime`) reaches [`TIME`], an hour. They carry
+//! [`Facts::SCENE`] and [`Facts::TIME`], so that `mediump-overflow` can tell what only such
+//! values reach (a note) from what modest ones reach too.
+//!
+//! The word lists are written by hand, from the names WebGL code gives colours, normals,
+//! positions and times, and checked on the lint corpora (`docs/lints/corpus.md`), which list
+//! the findings a misleading name makes (a vignette's centre in [0, 1] named `position`).
 
 use naga::{Handle, ScalarKind, TypeInner};
 
