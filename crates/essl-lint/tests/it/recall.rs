@@ -1438,22 +1438,13 @@ fn mediump_overflow_hazards_and_twins() {
     }
 }
 
-/// A position a name says is one (`v_pos`, a uniform `u_lightPosition`) is hundreds of units from
-/// the origin in a scene measured in pixels or metres: its length in `mediump` is a note (the
-/// scene's scale is the program's); one that overflows for modest positions too stays a warning,
-/// and a position passed window coordinates keeps their magnitude (a warning); the same in
-/// `highp`, and a position the name puts in texture or screen space, quiet.
-#[test]
-fn scene_positions_in_mediump_are_notes() {
-    let rule = "mediump-overflow";
-    let functions = "uniform vec3 u_lightPosition; uniform vec2 u_screenPos;\n\
-                     float sq(vec2 pixel_position) { return dot(pixel_position, pixel_position); }";
-    let at = |precision: &str, body: &str| found_with(precision, rule, functions, body);
-    for body in [
-        "  r = length(v_pos);",
-        "  vec3 d = normalize(u_lightPosition - v_pos);\n  r = d.x;",
-        "  float d = distance(u_lightPosition, v_pos);\n  r = d;",
-    ] {
+/// `mediump-overflow` in bodies with `functions` declared before `main`: each of `notes` is
+/// reported in `mediump`, as notes only, and not in `highp`; each of `quiet` is not reported in
+/// `mediump`.
+fn overflow_notes(functions: &str, notes: &[&str], quiet: &[&str]) {
+    let at =
+        |precision: &str, body: &str| found_with(precision, "mediump-overflow", functions, body);
+    for body in notes {
         let f = at("mediump", body);
         assert!(
             !f.is_empty() && f.iter().all(|(s, _)| *s == N),
@@ -1461,20 +1452,41 @@ fn scene_positions_in_mediump_are_notes() {
         );
         assert!(at("highp", body).is_empty(), "{body}");
     }
+    for body in quiet {
+        let f = at("mediump", body);
+        assert!(f.is_empty(), "{body}: {f:?}");
+    }
+}
+
+/// A position a name says is one (`v_pos`, a uniform `u_lightPosition`) is hundreds of units from
+/// the origin in a scene measured in pixels or metres: its length in `mediump` is a note (the
+/// scene's scale is the program's); one that overflows for modest positions too stays a warning,
+/// and a position passed window coordinates keeps their magnitude (a warning); the same in
+/// `highp`, and a position the name puts in texture or screen space, quiet.
+#[test]
+fn scene_positions_in_mediump_are_notes() {
+    let functions = "uniform vec3 u_lightPosition; uniform vec2 u_screenPos;\n\
+                     float sq(vec2 pixel_position) { return dot(pixel_position, pixel_position); }";
+    overflow_notes(
+        functions,
+        &[
+            "  r = length(v_pos);",
+            "  vec3 d = normalize(u_lightPosition - v_pos);\n  r = d.x;",
+            "  float d = distance(u_lightPosition, v_pos);\n  r = d;",
+        ],
+        &[
+            "  r = length(u_screenPos - v_uv);",
+            "  r = length(v_pos * 0.001);",
+        ],
+    );
     for body in [
         "  r = length(v_pos * 100.0);",
         "  r = sq(gl_FragCoord.xy);",
         // A direction from a position carries no scene's scale: the overflow is the factor's.
         "  vec3 d = normalize(v_pos * 0.001);\n  r = length(d * 1000.0);",
     ] {
-        let f = at("mediump", body);
+        let f = found_with("mediump", "mediump-overflow", functions, body);
         assert!(f.iter().any(|(s, _)| *s == W), "{body}: {f:?}");
-    }
-    for body in [
-        "  r = length(u_screenPos - v_uv);",
-        "  r = length(v_pos * 0.001);",
-    ] {
-        assert!(at("mediump", body).is_empty(), "{body}");
     }
 }
 
@@ -1483,31 +1495,18 @@ fn scene_positions_in_mediump_are_notes() {
 /// open is the program's to know); a time wrapped by the shader, a time scale, and `highp`, quiet.
 #[test]
 fn an_hour_of_animation_time_in_mediump_is_a_note() {
-    let rule = "mediump-overflow";
-    let functions = "uniform float iTime; uniform float u_timeScale;";
-    let at = |precision: &str, body: &str| found_with(precision, rule, functions, body);
-    for body in [
-        "  r = iTime * 30.0;",
-        "  for (mediump int j = 0; j < 20; j++) {\n    r += sin(float(j) * iTime * 0.05);\n  }",
-    ] {
-        let f = at("mediump", body);
-        assert!(
-            !f.is_empty() && f.iter().all(|(s, _)| *s == N),
-            "{body}: {f:?}"
-        );
-        assert!(at("highp", body).is_empty(), "{body}");
-    }
-    for body in [
-        "  r = fract(iTime) * 30.0;",
-        "  r = u_timeScale * 30.0;",
-        "  r = mod(iTime, 60.0) * 30.0;",
-    ] {
-        assert!(
-            at("mediump", body).is_empty(),
-            "{body}: {:?}",
-            at("mediump", body)
-        );
-    }
+    overflow_notes(
+        "uniform float iTime; uniform float u_timeScale;",
+        &[
+            "  r = iTime * 30.0;",
+            "  for (mediump int j = 0; j < 20; j++) {\n    r += sin(float(j) * iTime * 0.05);\n  }",
+        ],
+        &[
+            "  r = fract(iTime) * 30.0;",
+            "  r = u_timeScale * 30.0;",
+            "  r = mod(iTime, 60.0) * 30.0;",
+        ],
+    );
 }
 
 /// A length declared `lowp` (range (-2, 2) at the minimum): a note at the declaration; the
