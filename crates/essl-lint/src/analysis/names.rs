@@ -250,6 +250,12 @@ pub(super) fn said(module: &naga::Module, name: Option<&str>, ty: Handle<naga::T
     }
 }
 
+/// Whether `name` says it holds the time since an animation started (`iTime`, `u_time`; not
+/// `deltaTime` or `timeScale`).
+pub(crate) fn says_time(name: &str) -> bool {
+    said_of(name).time
+}
+
 /// What the words of `name` say ([`Said`]), whatever the type.
 fn said_of(name: &str) -> Said {
     let is = |w: &str, list: &[&str]| list.iter().any(|l| l.eq_ignore_ascii_case(w));

@@ -30,6 +30,7 @@ mod domain_log;
 mod domain_sqrt;
 mod inverse_trig;
 mod mediump_overflow;
+mod mediump_time;
 mod non_uniform_derivative;
 mod normalize_zero;
 mod pow_negative_base;
@@ -62,6 +63,7 @@ pub static RULES: &[&Rule] = &[
     &domain_atan2::DomainAtan2::RULE,
     &domain_integer_division::DomainIntegerDivision::RULE,
     &mediump_overflow::MediumpOverflow::RULE,
+    &mediump_time::MediumpTime::RULE,
     &texel_fetch_range::TexelFetchRange::RULE,
     &uninitialised_read::UninitialisedRead::RULE,
     &non_uniform_derivative::NonUniformDerivative::RULE,
@@ -70,7 +72,11 @@ pub static RULES: &[&Rule] = &[
 
 /// The rules that read the checked module (HIR) only: they run on every shader, whether or not
 /// the value analysis has anything to look at.
-pub(crate) const HIR_RULES: &[&str] = &["uninitialised-read", "non-uniform-derivative"];
+pub(crate) const HIR_RULES: &[&str] = &[
+    "uninitialised-read",
+    "non-uniform-derivative",
+    "mediump-time",
+];
 
 /// The id of the rule that reports suppressions silencing nothing.
 pub(crate) const UNUSED_ALLOW: &str = "unused-essl-allow";

@@ -93,6 +93,13 @@ const SETTINGS: &[Setting] = &[
         sink: "falloff",
     },
     Setting {
+        rule: "mediump-time",
+        globals: "precision mediump float;\nin vec2 uv;",
+        before: "",
+        instead_needs: "",
+        sink: "wave",
+    },
+    Setting {
         rule: "non-uniform-derivative",
         globals: "uniform sampler2D u_detail;\nin vec2 v_uv;",
         before: "vec4 color = vec4(0.0);",
