@@ -35,11 +35,12 @@ declare_rule! {
     /// animation's time (`iTime`, `u_time`; not `deltaTime` or `timeScale`) is taken up to 3600
     /// seconds: `iTime * 30.0` passes 65504 once a page has been open an hour. Whether a scene is
     /// that large, or a page open that long, is the program's to know, so what only such values
-    /// reach is a note; what modest ones reach too stays a warning. A factor the shader alone
-    /// bounds (a loop's counter, `float(j)` for `j < 20`) counts as a constant. What overflows only for larger parameters, or
-    /// through a product of *different* parameters, depends on values the runtime check sees. An
-    /// overflow whose only use saturates it (`clamp(x / eps, 0.0, 1.0)`, `min(x, 1.0)`, a
-    /// comparison) is not reported.
+    /// reach is a note; what modest ones reach too stays a warning.
+    ///
+    /// A factor the shader alone bounds (a loop's counter, `float(j)` for `j < 20`) counts as a
+    /// constant. What overflows only for larger parameters, or through a product of *different*
+    /// parameters, depends on values the runtime check sees. An overflow whose only use
+    /// saturates it (`clamp(x / eps, 0.0, 1.0)`, `min(x, 1.0)`, a comparison) is not reported.
     ///
     /// It also reports a `mediump`/`lowp` divisor (or argument of `inversesqrt`/`log`) that the shader
     /// keeps away from zero with a guard below 6.1e-5 (`max(d, 1e-6)`): in 16 bits the guard itself
