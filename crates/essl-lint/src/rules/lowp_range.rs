@@ -36,11 +36,15 @@ fn says_length(name: &str) -> bool {
 /// name: a `precision lowp float;` default makes every variable `lowp`, a choice made once
 /// for the whole shader rather than for a value that needs range.
 fn declared_lowp(text: &str, span: Span) -> bool {
-    let Some(before) = text.get(..span.start as usize) else {
-        return false;
-    };
+    declaration_before(text, span).is_some_and(|(_, d)| d.split_whitespace().any(|w| w == "lowp"))
+}
+
+/// The declaration of the name at `span`, on its line before the name (from the line's start or
+/// the last `;` or `{` on it), with the offset where it starts; `None` past the text's end.
+pub(super) fn declaration_before(text: &str, span: Span) -> Option<(usize, &str)> {
+    let before = text.get(..span.start as usize)?;
     let start = before.rfind(['\n', ';', '{']).map_or(0, |i| i + 1);
-    before[start..].split_whitespace().any(|w| w == "lowp")
+    Some((start, &before[start..]))
 }
 
 /// The notes for every floating-point global or local declared `lowp` whose name says it

@@ -129,9 +129,7 @@ fn find_word(text: &str, w: &str) -> Option<usize> {
 /// replaced, or `highp ` inserted before `float` where the default precision made it `p`.
 /// `None` where the declaration is not `[qualifiers] [precision] float name` on one line.
 fn highp_fix(text: &str, span: Span, p: &str) -> Option<Fix> {
-    let before = text.get(..span.start as usize)?;
-    let start = before.rfind(['\n', ';', '{']).map_or(0, |i| i + 1);
-    let decl = &before[start..];
+    let (start, decl) = super::lowp_range::declaration_before(text, span)?;
     let at = |i: usize, len: usize| Span::new((start + i) as u32, (start + i + len) as u32);
     if let Some(i) = find_word(decl, p) {
         return Some(Fix::suggested(
