@@ -5,9 +5,12 @@
 //! holds the join of every value ever stored into it, and a load reads that join. Calls are
 //! context-insensitive: a function's parameters hold the join of the arguments of every call,
 //! its result the join of every `return`, and a pointer parameter shares its cell with the
-//! variables callers pass. The whole module is iterated to a fixpoint, with widening after a
-//! few rounds so that loops terminate. A function called from one place is walked at that
-//! call, so most modules take one round (2,134 of the 2,214 analyses of dEQP's shaders).
+//! variables callers pass. The whole module is iterated to a fixpoint, with widening of the
+//! variables' cells after a few rounds so that loops terminate. Parameters and results join
+//! without widening: GLSL ES has no recursion, so every cycle of the fixpoint passes through a
+//! variable, and a result widened on its own would stay infinite when the loop that computes it
+//! is bounded (a ray march's distance, [`growth`]). A function called from one place is walked
+//! at that call, so most modules take one round (2,134 of the 2,214 analyses of dEQP's shaders).
 //!
 //! External values are unknown: uniforms, the entry point's inputs and texels are `(−∞, ∞)`
 //! in [`Mode::Sound`]. [`Mode::Typical`] runs the same analysis with external values of
@@ -33,6 +36,8 @@
 //!   squares);
 //! - `math`: the built-in functions, by family;
 //! - `names`: what an input's name says it holds (a colour, a normal).
+//! - `series` and `growth`: bounds widening cannot find, for the sum of a geometric series and
+//!   for a variable loops with a fixed count of iterations grow.
 
 mod algebra;
 mod binary;
@@ -40,6 +45,7 @@ mod calls;
 mod conditions;
 mod eval;
 mod flow;
+mod growth;
 mod math;
 mod memory;
 pub(crate) mod names;
@@ -138,6 +144,8 @@ pub struct FnFacts {
     pub load_version: Vec<u32>,
     /// The accumulators of geometric series, by local index ([`series`]).
     series: HashMap<usize, series::Series>,
+    /// The accumulators loops with bounded iteration counts grow, by local index ([`growth`]).
+    growth: HashMap<usize, growth::Growth>,
 }
 
 /// The analysis of a whole module.
@@ -178,6 +186,9 @@ pub struct Analysis {
     rounds: usize,
     /// The ratio each series' bound last used, by function and accumulator ([`series`]).
     series_ratio: HashMap<(usize, usize), Option<crate::interval::Interval>>,
+    /// The step bound each accumulator's bound last used, by function and accumulator
+    /// ([`growth`]).
+    growth_step: HashMap<(usize, usize), Option<(f64, f64)>>,
     /// Whether, in [`Mode::Typical`], a name gives a position or a time its larger magnitude
     /// ([`names`]).
     named_magnitudes: bool,
@@ -268,6 +279,7 @@ impl Analysis {
             walking_entry: false,
             rounds: 0,
             series_ratio: HashMap::default(),
+            growth_step: HashMap::default(),
             named_magnitudes,
             uniform_names: module
                 .global_variables
@@ -302,6 +314,7 @@ impl Analysis {
             a.functions[id].single_store = single;
             a.functions[id].stores = stores;
             a.functions[id].series = series::find(f);
+            a.functions[id].growth = growth::find(f);
             a.functions[id].entry = id >= module.functions.len();
         }
         // Private globals start with their initialiser.

@@ -52,35 +52,40 @@ pub(crate) struct Series {
 }
 
 /// A whole store of a local, where it is.
-struct Store {
-    local: usize,
-    value: Handle<E>,
+pub(super) struct Store {
+    pub(super) local: usize,
+    pub(super) value: Handle<E>,
     /// The innermost loop around it (its order in the walk), if any.
-    innermost: Option<usize>,
+    pub(super) innermost: Option<usize>,
     /// Directly in that loop's body or continuing block.
-    direct: bool,
+    pub(super) direct: bool,
     /// In the continuing block.
-    continuing: bool,
+    pub(super) continuing: bool,
     /// Its order in the walk.
-    order: usize,
+    pub(super) order: usize,
 }
 
-/// A loop: whether another loop encloses it, whether its body continues, where it starts.
-struct LoopInfo {
-    nested: bool,
+/// A loop: whether another loop encloses it, whether its body continues, its blocks.
+pub(super) struct LoopInfo<'f> {
+    pub(super) nested: bool,
     continues: bool,
+    pub(super) body: &'f Block,
+    /// Its order in the walk.
+    pub(super) order: usize,
 }
 
+/// The whole stores of a function's locals and its loops, in the order of its statements.
 #[derive(Default)]
-struct Walk {
-    stores: Vec<Store>,
-    spoiled: HashSet<usize>,
-    loops: Vec<LoopInfo>,
+pub(super) struct Walk<'f> {
+    pub(super) stores: Vec<Store>,
+    /// Locals stored in part or passed by pointer.
+    pub(super) spoiled: HashSet<usize>,
+    pub(super) loops: Vec<LoopInfo<'f>>,
     order: usize,
 }
 
 /// Whether expression `h` loads the whole local `l`.
-fn loads(f: &Function, h: Handle<E>, l: usize) -> bool {
+pub(super) fn loads(f: &Function, h: Handle<E>, l: usize) -> bool {
     matches!(f.expressions[h], E::Load { pointer } if root_local(f, pointer) == Some((l, true)))
 }
 
@@ -95,9 +100,16 @@ fn continues(b: &Block) -> bool {
     })
 }
 
-impl Walk {
+impl<'f> Walk<'f> {
+    /// The walk of function `f`.
+    pub(super) fn of(f: &'f Function) -> Self {
+        let mut w = Walk::default();
+        w.block(f, &f.body, None);
+        w
+    }
+
     /// `around`: the innermost loop and whether `b` is directly its body or continuing block.
-    fn block(&mut self, f: &Function, b: &Block, around: Option<(usize, bool, bool)>) {
+    fn block(&mut self, f: &Function, b: &'f Block, around: Option<(usize, bool, bool)>) {
         let inner = around.map(|(l, _, c)| (l, false, c));
         for s in b.iter() {
             self.order += 1;
@@ -119,6 +131,8 @@ impl Walk {
                     self.loops.push(LoopInfo {
                         nested: around.is_some(),
                         continues: continues(body),
+                        body,
+                        order: self.order,
                     });
                     self.block(f, body, Some((id, true, false)));
                     self.block(f, continuing, Some((id, true, true)));
@@ -155,8 +169,7 @@ pub(super) fn find(f: &Function) -> HashMap<usize, Series> {
     if !has_loop(&f.body) {
         return HashMap::default();
     }
-    let mut w = Walk::default();
-    w.block(f, &f.body, None);
+    let w = Walk::of(f);
     let mut by_local: HashMap<usize, Vec<&Store>> = HashMap::default();
     for s in &w.stores {
         by_local.entry(s.local).or_default().push(s);
@@ -236,7 +249,7 @@ fn other_operand(f: &Function, h: Handle<E>, op: Op, l: usize) -> Option<Handle<
 }
 
 /// Whether a block holds a loop.
-fn has_loop(b: &Block) -> bool {
+pub(super) fn has_loop(b: &Block) -> bool {
     b.iter().any(|s| match s {
         Statement::Loop { .. } => true,
         Statement::Block(b) => has_loop(b),

@@ -98,7 +98,7 @@ impl Analysis {
                         Some(r) => r,
                         None => &mut self.results[s.id],
                     };
-                    Self::join_into(slot, &val, self.widening, &mut changed);
+                    Self::join_into(slot, &val, false, &mut changed);
                     if !self.calls.walking() {
                         self.changed |= changed;
                         self.stale |= changed && self.reads.borrow().results.contains(&s.id);
@@ -108,7 +108,9 @@ impl Analysis {
                 Statement::Store { pointer, value } => {
                     if let Some(p) = self.functions[s.id].places[pointer.index()].clone() {
                         let v = self.functions[s.id].values[value.index()].clone();
-                        let bound = self.series_bound(s, &p, *value);
+                        let bound = self
+                            .series_bound(s, &p, *value)
+                            .or_else(|| self.growth_bound(s, &p, *value));
                         let v = match &bound {
                             Some(b) => series::clamp(&v, b),
                             None => v,
@@ -224,7 +226,7 @@ impl Analysis {
                 let v = self.functions[id].values[a.index()].clone();
                 let mut changed = false;
                 if let Some(slot) = self.args[c].get_mut(i) {
-                    Self::join_into(slot, &v, self.widening, &mut changed);
+                    Self::join_into(slot, &v, false, &mut changed);
                 }
                 self.changed |= changed;
                 self.stale |= changed && self.reads.borrow().args.contains(&c);

@@ -1509,6 +1509,41 @@ fn an_hour_of_animation_time_in_mediump_is_a_note() {
     );
 }
 
+/// A ray march's distance grows by a step proportional to it for a fixed number of iterations
+/// (`t += max(0.075, 0.02 * t)`, 115 steps: `t` < 33): bounded, a lattice index 113 times a
+/// position along the ray overflows `mediump` for ordinary values — in `main` and through a
+/// function's parameter and result; the same march to a distance that stays small (fewer
+/// iterations, a smaller index factor) and a loop whose count a uniform sets (unbounded, not
+/// reported), quiet.
+#[test]
+fn a_ray_march_with_a_fixed_count_of_steps_is_bounded() {
+    let functions = "uniform int u_steps;\n\
+        float lattice(vec3 p) { return floor(p.x) + floor(p.y) * 57.0 + FACTOR * floor(p.z); }\n\
+        float march(vec3 rd) { float t = 0.0;\n\
+          for (int i = 0; i < 80; i++) { if (t > 900.0) break; t += max(0.075, 0.02 * t); }\n\
+          for (int i = 0; i < 35; i++) { t += max(0.075, 0.02 * t); }\n\
+          return t; }\n";
+    let march = |factor: &str, body: &str| {
+        let functions = functions.replace("FACTOR", factor);
+        found_with("mediump", "mediump-overflow", &functions, body)
+    };
+    for body in [
+        "  r = lattice(v_n + march(v_n) * normalize(v_n));",
+        "  float d = 1.0;\n  for (int k = 0; k < 115; k++) { d = d + 0.02 * d + 0.075; }\n  r = d * 2000.0;",
+    ] {
+        let f = march("2000.0", body);
+        assert!(f.iter().any(|(s, _)| *s == W), "{body}: {f:?}");
+    }
+    for body in [
+        "  r = lattice(v_n + march(v_n) * normalize(v_n));",
+        "  float d = 1.0;\n  for (int k = 0; k < 20; k++) { d += max(0.075, 0.02 * d); }\n  r = d * 2000.0;",
+        "  float d = 1.0;\n  for (int k = 0; k < 1000; k++) { if (k >= u_steps) break; d += max(0.075, 0.02 * d); }\n  r = d;",
+    ] {
+        let f = march("1.0", body);
+        assert!(f.is_empty(), "{body}: {f:?}");
+    }
+}
+
 /// The animation's time in a `mediump` uniform (by the default or declared), in a block too: a
 /// note with a fix to `highp`; `highp`, a vertex shader's default, another quantity's name
 /// (`deltaTime`) and a time the shader never reads, quiet.
