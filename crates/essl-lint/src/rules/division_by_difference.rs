@@ -75,7 +75,8 @@ declare_rule! {
     /// (`d / length(d)`, a normalisation
     /// by hand; `t / length(b - a)` of an edge of a triangle a caller passes, 0 for a degenerate
     /// one; `delta / length(delta)` of `delta = xy - clamp(xy, 0.0, 1.0)`, 0 for every `xy`
-    /// inside the bounds), at that rule's severity. And, as a note, a vertex
+    /// inside the bounds; `uRadius / length(coord)` of a pixel's offset from a centre uniform,
+    /// 0 at the pixel on the centre), at that rule's severity. And, as a note, a vertex
     /// shader's perspective divide by the `w` of `gl_Position` or of a product with a projection
     /// matrix (`p.xy / p.w`, through locals, calls and parameters): the vertex shader runs before
     /// clipping, so a vertex on the camera's plane (a line or triangle crossing it) has `w = 0`
@@ -143,7 +144,8 @@ declare_rule! {
     ///   `shutterSpeed`, a number `base`).
     /// - The length of a vector's derivative (`1.0 / length(dFdx(p))` of a position): 0 only where
     ///   all of `p` is the same across the quad, which a surface's position never is.
-    /// - A divisor with a per-pixel part, zero at isolated pixels at most: the depth linearisation
+    /// - A divisor with a per-pixel part, zero at isolated pixels at most (but for the length
+    ///   of a pixel's offset from a centre, above): the depth linearisation
     ///   `far + near - z * (far - near)` (positive for `z` in [-1, 1]), a Fresnel term
     ///   `1.0 - Ems * Favg`, a difference of texels that is 0 only inside their range
     ///   (`c.r - c.g`, `c.r * 2.0 - 1.0`: an exact mid value, where black, white and transparent

@@ -12,6 +12,7 @@ use crate::value::Facts;
 use crate::Level;
 
 mod callers;
+mod centre;
 use callers::{caller_cross, caller_difference, caller_vector};
 
 declare_rule! {
@@ -68,6 +69,14 @@ declare_rule! {
     /// divided by its length). Bounds from uniforms (`clamp(p, -u_size, u_size)`) are left out:
     /// the box is empty for a size of 0.
     ///
+    /// And `normalize` in a fragment shader of a pixel's offset from a centre the
+    /// host sets — a texture or screen coordinate (`v_uv`, `vTextureCoord * size`,
+    /// `gl_FragCoord.xy`) minus a uniform named `center` or `centre` (scaled by uniforms), or a
+    /// texture coordinate minus the middle `0.5` — and a division by its length: a bulge's
+    /// `uRadius / length(coord)`, a chromatic aberration's direction. A per-pixel difference is 0
+    /// between pixel centres at most, but the usual centre, (0.5, 0.5), is exactly the middle
+    /// pixel's coordinate on a target of odd size, which gets NaN every frame.
+    ///
     /// Not reported: `normalize` of a uniform or a varying itself (`normalize(v_normal)`; the
     /// runtime check validates uniform values), of a decoded texel (`t.rgb * 2.0 - 1.0`, the
     /// zero vector only for the middle grey a normal map does not hold), and of per-pixel sums
@@ -100,7 +109,8 @@ declare_rule! {
     /// ## What it does not flag
     /// - `normalize` of a uniform or varying as such, of a transformed uniform, of an
     ///   attribute whose name does not say it holds a direction (`normalize(position)` of a globe's
-    ///   vertex), of a constant non-zero vector, and of per-pixel sums and differences.
+    ///   vertex), of a constant non-zero vector, and of per-pixel sums and differences other
+    ///   than a pixel's offset from a centre.
     /// - A cross product of vectors built perpendicular to each other (a camera frame), and of a vector
     ///   with an up axis chosen away from it: `up = abs(n.z) < 0.999 ? vec3(0.0, 0.0, 1.0) :
     ///   vec3(1.0, 0.0, 0.0)` (each axis is used only where `n` is not along it).
@@ -114,7 +124,8 @@ declare_rule! {
     ///
     /// Severity: a cross product with a vector fixed for the draw is a warning (a light pointing
     /// straight down is ordinary), as is a gradient (flat regions are in every picture) and a
-    /// texel (black ones are) and a value outside a box; `normalize` of a per-draw difference is a note when one uniform
+    /// texel (black ones are), a value outside a box and a pixel's offset from a centre (the
+    /// middle of the target is an ordinary centre); `normalize` of a per-draw difference is a note when one uniform
     /// alone reaches it, and of a direction attribute, a difference of attributes or parameters,
     /// or a parameter as such always.
     ///
@@ -124,7 +135,7 @@ declare_rule! {
     /// - Article 003 (A-Frame projected-texture spot lights): `left = normalize(cross(up, direction))`.
     pub(crate) struct NormalizeZero {
         id: "normalize-zero",
-        summary: "`normalize(v)` of a cross product, per-draw difference, image gradient, texel or direction attribute that can be the zero vector",
+        summary: "`normalize(v)` of a cross product, per-draw difference, image gradient, texel, direction attribute or pixel offset from a centre that can be the zero vector",
         default_level: Level::Warn,
         check: check,
     }
@@ -187,7 +198,8 @@ fn zero_vector(
             .or_else(|| caller_difference(cx, at))
             .or_else(|| caller_cross(cx, at))
             .or_else(|| black_texel(cx, at))
-            .or_else(|| inside_box(cx, at));
+            .or_else(|| inside_box(cx, at))
+            .or_else(|| centre::centre_pixel(cx, at));
     }
     // `dot(v, v) > 1e-12 ? normalize(v) : fallback`, `if (length(v) > 0.0)`.
     let v = cx.refined(f, id, x, &cx.guards(f, id, site))?;

@@ -1544,6 +1544,50 @@ fn a_ray_march_with_a_fixed_count_of_steps_is_bounded() {
     }
 }
 
+/// A pixel's offset from a centre the host sets (`v_uv - u_center`, scaled by a size, written
+/// component by component, or from the middle `0.5`) is the zero vector at the pixel on the
+/// centre — exactly, for (0.5, 0.5) on a target of odd size: a warning on `normalize` and on a
+/// division by its length. An offset from a uniform not named as a centre, a position's offset,
+/// and a guarded offset, quiet.
+#[test]
+fn a_pixel_offset_from_a_centre_is_a_note() {
+    let functions = "uniform vec2 u_center; uniform vec2 u_offset; uniform vec2 u_size;";
+    let at = |rule: &str, body: &str| found_with("highp", rule, functions, body);
+    for (rule, body) in [
+        ("normalize-zero", "  r = normalize(v_uv - u_center).x;"),
+        (
+            "normalize-zero",
+            "  vec2 d = vec2(v_uv.x - u_center.x, v_uv.y - u_center.y);\n  r = normalize(d).y;",
+        ),
+        ("normalize-zero", "  r = normalize(v_uv - 0.5).x;"),
+        (
+            "division-by-difference",
+            "  vec2 c = v_uv * u_size;\n  c -= u_center * u_size;\n  float d = length(c);\n  r = u_a / d;",
+        ),
+    ] {
+        let f = at(rule, body);
+        assert!(
+            !f.is_empty() && f.iter().all(|(s, _)| *s == W),
+            "{body}: {f:?}"
+        );
+    }
+    for (rule, body) in [
+        ("normalize-zero", "  r = normalize(v_uv - u_offset).x;"),
+        ("normalize-zero", "  r = normalize(v_pos.xy - u_center).x;"),
+        (
+            "normalize-zero",
+            "  vec2 d = v_uv - u_center;\n  r = dot(d, d) > 1e-12 ? normalize(d).x : 0.0;",
+        ),
+        (
+            "division-by-difference",
+            "  float d = length(v_uv - u_center);\n  r = u_a / max(d, 1e-4);",
+        ),
+    ] {
+        let f = at(rule, body);
+        assert!(f.is_empty(), "{body}: {f:?}");
+    }
+}
+
 /// The animation's time in a `mediump` uniform (by the default or declared), in a block too: a
 /// note with a fix to `highp`; `highp`, a vertex shader's default, another quantity's name
 /// (`deltaTime`) and a time the shader never reads, quiet.

@@ -1,0 +1,110 @@
+//! The warning for `normalize` of a pixel's offset from a centre the host sets: a bulge, a
+//! zoom blur or a chromatic aberration around `uCenter` computes `vUv - uCenter` (or
+//! `vTextureCoord * size - uCenter * size`) and normalises it, or divides by its length.
+//!
+//! A per-pixel difference is 0 at isolated pixels at most, which `normalize-zero` otherwise
+//! leaves alone: a varying crosses a value between pixel centres. A centre is different: the
+//! effect is placed on the picture, and its usual value is the middle of the target, (0.5, 0.5)
+//! in texture coordinates, which lies exactly on the centre of the middle pixel of a target of
+//! odd size (`(i + 0.5) / w == 0.5` for `i = (w - 1) / 2`). That pixel gets NaN (or ±∞ from a
+//! division) every frame, and so does every pixel a click puts the centre on. The pixel
+//! coordinate must be a fragment shader's varying named for a texture or screen coordinate
+//! (`uv`, `st`, `coord`, `texcoord`) or `gl_FragCoord`, possibly scaled by uniforms; the centre
+//! a uniform named `center` or `centre`, possibly scaled by uniforms; nothing else reaches
+//! either. A warning: the centre's ordinary value reaches the hazard.
+
+use essl::diagnostic::{Diagnostic, Severity};
+use naga::{BinaryOperator as Bo, Expression as E, Function, Handle};
+
+use super::super::Cx;
+use super::{kept_from_zero, zero_vector_note, Normalize};
+use crate::analysis::names;
+use crate::symbolic::resolve;
+
+/// Words naming a texture or screen coordinate.
+const PIXEL_WORDS: &[&str] = &[
+    "uv",
+    "uvs",
+    "st",
+    "coord",
+    "coords",
+    "texcoord",
+    "texcoords",
+];
+/// Words naming a centre.
+const CENTRE_WORDS: &[&str] = &["center", "centre"];
+
+/// The warning for `normalize(x)` of a fragment's coordinate minus a centre uniform (see the
+/// module's documentation).
+pub(super) fn centre_pixel(cx: &Cx, n: Normalize) -> Option<Diagnostic> {
+    let Normalize { f, id, x, .. } = n;
+    if cx.module.entry_points.first()?.stage != naga::ShaderStage::Fragment {
+        return None;
+    }
+    let centre = centre_offset(cx, f, id, x)?;
+    if kept_from_zero(cx, n, x) {
+        return None;
+    }
+    let mut d = zero_vector_note(
+        cx.span(f, x),
+        format!("`normalize` of a pixel's offset from the centre `{centre}`, the zero vector at the pixel on the centre"),
+        format!(
+            "{} is the zero vector at the pixel whose coordinate is `{centre}`",
+            cx.what(f, id, x)
+        ),
+        "a centre in the middle of the target, (0.5, 0.5), is exactly the middle pixel's coordinate on a target of odd size: that pixel gets NaN every frame",
+    );
+    d.severity = Severity::Warning;
+    Some(d)
+}
+
+/// The centre uniform's name where `x` is a pixel's coordinate minus it (either order), or a
+/// vector made of such differences component by component
+/// (`vec2(vUV.x - center.x, vUV.y - center.y)`).
+fn centre_offset(cx: &Cx, f: &Function, id: usize, x: Handle<E>) -> Option<String> {
+    match f.expressions[resolve(f, cx.sound(), id, x)] {
+        E::Binary {
+            op: Bo::Subtract,
+            left,
+            right,
+        } => centre_of(cx, id, left, right).or_else(|| centre_of(cx, id, right, left)),
+        E::Compose { ref components, .. } if components.len() >= 2 => {
+            let names: Option<Vec<String>> = components
+                .iter()
+                .map(|&c| centre_offset(cx, f, id, c))
+                .collect();
+            names?.into_iter().next()
+        }
+        _ => None,
+    }
+}
+
+/// The centre uniform's name where `pixel` is a fragment's coordinate (scaled by uniforms at
+/// most) and `centre` a centre uniform (scaled by uniforms at most).
+fn centre_of(cx: &Cx, id: usize, pixel: Handle<E>, centre: Handle<E>) -> Option<String> {
+    let p = cx.origin(&[(id, pixel)]);
+    let c = cx.origin(&[(id, centre)]);
+    if p.unknown || c.unknown || p.texels || c.texels || !c.inputs.is_empty() {
+        return None;
+    }
+    let coordinate = |name: &String| name == "gl_FragCoord" || names::says_any(name, PIXEL_WORDS);
+    if p.inputs.is_empty() || !p.inputs.iter().all(coordinate) {
+        return None;
+    }
+    if c.uniforms.is_empty()
+        && !p.inputs.iter().any(|n| n == "gl_FragCoord")
+        && cx
+            .sound()
+            .num(id, centre)
+            .is_some_and(|n| n.comps().iter().all(|i| i.as_point() == Some(0.5)))
+    {
+        return Some("0.5".to_string());
+    }
+    c.uniforms
+        .iter()
+        .find(|u| names::says_any(u, CENTRE_WORDS))
+        .map(|u| match u.rsplit_once('.') {
+            Some((base, part)) if part.chars().all(|c| "xyzwrgba".contains(c)) => base.to_string(),
+            _ => u.clone(),
+        })
+}
