@@ -6,9 +6,10 @@
 //! (`for (int i = 0; i < 20; i++)`). Widening sends `t` to infinity after a few rounds, and with
 //! it every position along the ray, so a `mediump` overflow the march reaches with ordinary
 //! values (a noise lattice index `113.0 * p.z`) goes unreported. The distance is in fact bounded:
-//! a store of a value `v` with `|v| ≤ a·|t| + b`, made at most `n` times, leaves
-//! `|t| ≤ aⁿ·|t₀| + b·(aⁿ − 1)/(a − 1)` (`|t₀| + n·b` for `a = 1`), where `|·|` is the largest
-//! magnitude of any component.
+//! a store of a value `v` with `|v| ≤ a·|t| + b`, made at most `n` times, leaves `|t|` below
+//! the larger of `|t₀|` and `aⁿ·|t₀| + b·(aⁿ − 1)/(a − 1)` (`|t₀| + n·b` for `a = 1`; the
+//! sequence is monotone, so its largest term is its first or its last), where `|·|` is the
+//! largest magnitude of any component.
 //!
 //! [`find`] recognises the shape syntactically, per function; what it requires makes the bound
 //! sound:
@@ -45,8 +46,14 @@ use crate::interval::Interval;
 
 /// Deepest step expression [`Analysis::step_bound`] follows.
 const MAX_DEPTH: usize = 12;
+/// How many times a variable's bound may change before it is dropped.
+const MAX_CHANGES: u8 = 3;
 /// Largest bound kept: past it the bound tells nothing widening does not.
 const MAX_BOUND: f64 = 1e30;
+
+/// The step bound `(a, b)` an accumulator's bound last used (`None`: none), and how many times
+/// it changed.
+pub(super) type Steps = (Option<(f64, f64)>, u8);
 
 /// An accumulator that loops with bounded iteration counts grow, found by [`find`].
 #[derive(Clone, Debug)]
@@ -313,21 +320,35 @@ impl Analysis {
             }
         }
         // The bound uses the steps' values as they are now; one that changed asks for a round.
+        // A bound that keeps changing (a step that grows with the bound itself, through a
+        // function's result) is dropped: the variable then widens as any other.
         let now = known.then_some((a, b));
-        let before = self.growth_step.insert((id, local), now);
-        if before.is_some_and(|x| x != now) && !self.calls.walking() {
+        let (before, changes) = self
+            .growth_step
+            .get(&(id, local))
+            .copied()
+            .unwrap_or((now, 0));
+        if changes > MAX_CHANGES {
+            return None;
+        }
+        if before != now && !self.calls.walking() {
             self.changed = true;
             self.stale = true;
+            self.growth_step.insert((id, local), (now, changes + 1));
+        } else {
+            self.growth_step.insert((id, local), (now, changes));
         }
         let (a, b) = now?;
-        // n steps of x ↦ a·x + b from t₀.
+        // Up to n steps of x ↦ a·x + b from t₀: the sequence is monotone (the map is), so its
+        // largest term is its first or its last.
         let n = g.count as f64;
-        let bound = if a == 1.0 {
+        let last = if a == 1.0 {
             t0 + n * b
         } else {
             let an = a.powf(n);
             an * t0 + b * (an - 1.0) / (a - 1.0)
         };
+        let bound = last.max(t0);
         (bound.is_finite() && bound <= MAX_BOUND && t0.is_finite())
             .then(|| vec![Interval::new(-bound, bound)])
     }

@@ -186,9 +186,9 @@ pub struct Analysis {
     rounds: usize,
     /// The ratio each series' bound last used, by function and accumulator ([`series`]).
     series_ratio: HashMap<(usize, usize), Option<crate::interval::Interval>>,
-    /// The step bound each accumulator's bound last used, by function and accumulator
-    /// ([`growth`]).
-    growth_step: HashMap<(usize, usize), Option<(f64, f64)>>,
+    /// The step bound each accumulator's bound last used, by function and accumulator, and how
+    /// many times it changed ([`growth`]).
+    growth_step: HashMap<(usize, usize), growth::Steps>,
     /// Whether, in [`Mode::Typical`], a name gives a position or a time its larger magnitude
     /// ([`names`]).
     named_magnitudes: bool,

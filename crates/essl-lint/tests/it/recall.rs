@@ -1530,6 +1530,8 @@ fn a_ray_march_with_a_fixed_count_of_steps_is_bounded() {
     for body in [
         "  r = lattice(v_n + march(v_n) * normalize(v_n));",
         "  float d = 1.0;\n  for (int k = 0; k < 115; k++) { d = d + 0.02 * d + 0.075; }\n  r = d * 2000.0;",
+        // A weight that shrinks starts at its largest.
+        "  float z = 100.0;\n  for (int k = 0; k < 5; k++) { r += z * 1000.0; z *= 0.5; }",
     ] {
         let f = march("2000.0", body);
         assert!(f.iter().any(|(s, _)| *s == W), "{body}: {f:?}");
