@@ -39,9 +39,9 @@ use naga::{
     Statement, UnaryOperator,
 };
 
-use super::series::{has_loop, loads, Walk};
+use super::series::{has_loop, loads, whole_local, Walk};
 use super::statements::root_local;
-use super::{Analysis, Place, Root, Site};
+use super::{Analysis, Place, Site};
 use crate::interval::Interval;
 
 /// Deepest step expression [`Analysis::step_bound`] follows.
@@ -295,12 +295,7 @@ impl Analysis {
         place: &Place,
         value: Handle<E>,
     ) -> Option<Vec<Interval>> {
-        let Root::Local(id, local) = place.root else {
-            return None;
-        };
-        if !place.path.is_empty() || id != s.id {
-            return None;
-        }
+        let (id, local) = whole_local(s, place)?;
         let g = self.functions[id].growth.get(&local)?;
         if !g.steps.contains(&value) {
             return None;

@@ -307,6 +307,14 @@ pub(super) fn clamp(v: &Val, bound: &[Interval]) -> Val {
     Val::Num(r.settle())
 }
 
+/// The function and local of `place` where it is a whole local of the function `s` walks.
+pub(super) fn whole_local(s: Site, place: &Place) -> Option<(usize, usize)> {
+    match place.root {
+        Root::Local(id, local) if place.path.is_empty() && id == s.id => Some((id, local)),
+        _ => None,
+    }
+}
+
 impl Analysis {
     /// The bound, per component, on what the store of `value` into `place` may leave in the
     /// variable, when it adds a term of a geometric series or updates its weight.
@@ -316,12 +324,7 @@ impl Analysis {
         place: &Place,
         value: Handle<E>,
     ) -> Option<Vec<Interval>> {
-        let Root::Local(id, local) = place.root else {
-            return None;
-        };
-        if !place.path.is_empty() || id != s.id {
-            return None;
-        }
+        let (id, local) = whole_local(s, place)?;
         let series = &self.functions[id].series;
         if let Some((&acc, update)) = series.iter().find(|(_, x)| x.update == value) {
             // The bound uses the ratio of the last update; one that changed asks for a round.
