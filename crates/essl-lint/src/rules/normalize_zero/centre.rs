@@ -41,7 +41,7 @@ pub(super) fn centre_pixel(cx: &Cx, n: Normalize) -> Option<Diagnostic> {
     if cx.module.entry_points.first()?.stage != naga::ShaderStage::Fragment {
         return None;
     }
-    let centre = centre_offset(cx, f, id, x)?;
+    let centre = centre_offset(cx, f, id, x, names_centre(cx.module))?;
     if kept_from_zero(cx, n, x) {
         return None;
     }
@@ -61,17 +61,21 @@ pub(super) fn centre_pixel(cx: &Cx, n: Normalize) -> Option<Diagnostic> {
 /// The centre uniform's name where `x` is a pixel's coordinate minus it (either order), or a
 /// vector made of such differences component by component
 /// (`vec2(vUV.x - center.x, vUV.y - center.y)`).
-fn centre_offset(cx: &Cx, f: &Function, id: usize, x: Handle<E>) -> Option<String> {
+/// `named`: whether the module has a uniform named as a centre (otherwise only `0.5` can be
+/// one, and the walks to the uniforms are skipped).
+fn centre_offset(cx: &Cx, f: &Function, id: usize, x: Handle<E>, named: bool) -> Option<String> {
     match f.expressions[resolve(f, cx.sound(), id, x)] {
         E::Binary {
             op: Bo::Subtract,
             left,
             right,
-        } => centre_of(cx, id, left, right).or_else(|| centre_of(cx, id, right, left)),
+        } => {
+            centre_of(cx, id, left, right, named).or_else(|| centre_of(cx, id, right, left, named))
+        }
         E::Compose { ref components, .. } if components.len() >= 2 => {
             let names: Option<Vec<String>> = components
                 .iter()
-                .map(|&c| centre_offset(cx, f, id, c))
+                .map(|&c| centre_offset(cx, f, id, c, named))
                 .collect();
             names?.into_iter().next()
         }
@@ -79,9 +83,46 @@ fn centre_offset(cx: &Cx, f: &Function, id: usize, x: Handle<E>) -> Option<Strin
     }
 }
 
+/// Whether a uniform of `module` (a block's member too) is named as a centre.
+fn names_centre(module: &naga::Module) -> bool {
+    module.global_variables.iter().any(|(_, g)| {
+        if !matches!(
+            g.space,
+            naga::AddressSpace::Uniform | naga::AddressSpace::Handle
+        ) {
+            return false;
+        }
+        let member = match &module.types[g.ty].inner {
+            naga::TypeInner::Struct { members, .. } => members.iter().any(|m| {
+                m.name
+                    .as_deref()
+                    .is_some_and(|n| names::says_any(n, CENTRE_WORDS))
+            }),
+            _ => false,
+        };
+        member
+            || g.name
+                .as_deref()
+                .is_some_and(|n| names::says_any(n, CENTRE_WORDS))
+    })
+}
+
 /// The centre uniform's name where `pixel` is a fragment's coordinate (scaled by uniforms at
 /// most) and `centre` a centre uniform (scaled by uniforms at most).
-fn centre_of(cx: &Cx, id: usize, pixel: Handle<E>, centre: Handle<E>) -> Option<String> {
+fn centre_of(
+    cx: &Cx,
+    id: usize,
+    pixel: Handle<E>,
+    centre: Handle<E>,
+    named: bool,
+) -> Option<String> {
+    let middle = cx
+        .sound()
+        .num(id, centre)
+        .is_some_and(|n| n.comps().iter().all(|i| i.as_point() == Some(0.5)));
+    if !named && !middle {
+        return None;
+    }
     let p = cx.origin(&[(id, pixel)]);
     let c = cx.origin(&[(id, centre)]);
     if p.unknown || c.unknown || p.texels || c.texels || !c.inputs.is_empty() {
@@ -91,13 +132,7 @@ fn centre_of(cx: &Cx, id: usize, pixel: Handle<E>, centre: Handle<E>) -> Option<
     if p.inputs.is_empty() || !p.inputs.iter().all(coordinate) {
         return None;
     }
-    if c.uniforms.is_empty()
-        && !p.inputs.iter().any(|n| n == "gl_FragCoord")
-        && cx
-            .sound()
-            .num(id, centre)
-            .is_some_and(|n| n.comps().iter().all(|i| i.as_point() == Some(0.5)))
-    {
+    if middle && c.uniforms.is_empty() && !p.inputs.iter().any(|n| n == "gl_FragCoord") {
         return Some("0.5".to_string());
     }
     c.uniforms
