@@ -14,6 +14,7 @@ use crate::Level;
 mod callers;
 mod centre;
 use callers::{caller_cross, caller_difference, caller_vector};
+pub(super) use centre::centre_length;
 
 declare_rule! {
     /// ## What it does

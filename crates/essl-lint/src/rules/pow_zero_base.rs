@@ -18,7 +18,9 @@ declare_rule! {
     /// the user sets it to 0, the value a shininess slider starts at; with a base that is 0 over a
     /// whole region (the side facing away from the highlight, a texel wherever the texture is
     /// black: `pow(texture(uAmbient, uv).r, uOcclusionStrength)`) that is a note naming the
-    /// uniform.
+    /// uniform; so is a base that is the length of a pixel's offset from a centre the host sets
+    /// (`pow(length(vUV - centerPosition), radialIntensity)`), 0 at the middle pixel of a target
+    /// of odd size for the usual centre (0.5, 0.5) — see `normalize-zero`.
     /// three.js keeps this from happening in JavaScript: its Phong material passes
     /// `Math.max(shininess, 1e-4)`, "to prevent pow( 0.0, 0.0 )".
     ///
@@ -42,7 +44,8 @@ declare_rule! {
     ///
     /// ## What it does not flag
     /// - An exponent positive by construction (`max(u_shininess, 1e-4)`, `u_k + 1.0`), or a uniform
-    ///   exponent whose base is 0 at isolated pixels only (`pow(abs(v_x - 0.5), u_k)`).
+    ///   exponent whose base is 0 at isolated pixels only (`pow(abs(v_x - 0.5), u_k)`) other than
+    ///   the pixel on a centre.
     /// - A base the shader keeps above 0 (`max(x, 1e-4)`, `exp(x)`, `x * x + 1.0`) or a guard says is
     ///   not 0 (`if (x > 0.0)`, `x != 0.0 ? pow(x, y) : 0.0`).
     /// - A base that can be negative: `pow-negative-base` reports it.
@@ -114,7 +117,11 @@ fn check_zero(cx: &Cx, out: &mut Vec<Diagnostic>) {
         let uniform = at_zero
             .then(|| cx.origin(&[(id, exp)]).single_uniform().map(str::to_string))
             .flatten();
-        if at_zero && (uniform.is_none() || !cx.flat_at(f, id, base, 0.0)) {
+        // Or at the pixel on a centre the host sets, which the usual centre hits exactly.
+        let centre = (at_zero && uniform.is_some() && !cx.flat_at(f, id, base, 0.0))
+            .then(|| super::normalize_zero::centre_length(cx, f, id, base))
+            .flatten();
+        if at_zero && (uniform.is_none() || (!cx.flat_at(f, id, base, 0.0) && centre.is_none())) {
             continue;
         }
         let bspan = cx.span(f, base);
@@ -129,7 +136,13 @@ fn check_zero(cx: &Cx, out: &mut Vec<Diagnostic>) {
                 "{} is 0 wherever the texture is black",
                 cx.what(f, id, base)
             ),
-            Some(_) => format!("{} is 0 over a whole region", cx.what(f, id, base)),
+            Some(_) => match &centre {
+                Some(c) => format!(
+                    "{} is 0 at the pixel on the centre `{c}`",
+                    cx.what(f, id, base)
+                ),
+                None => format!("{} is 0 over a whole region", cx.what(f, id, base)),
+            },
             None => format!("{} can be 0", cx.what(f, id, base)),
         })
         .with_note("GLSL ES 3.00 §8.2: pow(x, y) is undefined if x = 0 and y <= 0")
@@ -151,7 +164,7 @@ fn check_zero(cx: &Cx, out: &mut Vec<Diagnostic>) {
             ));
         }
         out.push(match uniform {
-            Some(name) => at_zero_uniform(cx, d, &name, xspan),
+            Some(name) => at_zero_uniform(cx, d, &name, xspan, centre.is_some()),
             None => cx.grade(d, &[(id, exp)]),
         });
     }
@@ -228,14 +241,26 @@ fn texel_from_zero(cx: &Cx, id: usize, base: naga::Handle<naga::Expression>, fac
             .is_some_and(|t| t.comps().iter().any(|c| c.lo == 0.0))
 }
 
-/// The note for a base that is 0 over a region raised to a uniform exponent `uniform`, which is
+/// The note for a base that is 0 over a region (or, `centre`, at the pixel on a centre the
+/// host sets) raised to a uniform exponent `uniform`, which is
 /// 0 when the uniform is: three.js's Phong material passes `max(shininess, 1e-4)` "to prevent
 /// pow(0.0, 0.0)". Its fix keeps the exponent above 0, which changes no result for the values the uniform is
 /// meant to take.
-fn at_zero_uniform(cx: &Cx, mut d: Diagnostic, uniform: &str, xspan: Span) -> Diagnostic {
+fn at_zero_uniform(
+    cx: &Cx,
+    mut d: Diagnostic,
+    uniform: &str,
+    xspan: Span,
+    centre: bool,
+) -> Diagnostic {
     d.severity = essl::diagnostic::Severity::Note;
+    let zero = if centre {
+        "at the pixel on a centre"
+    } else {
+        "over a region"
+    };
     d.message = format!(
-        "`pow` of a base that is 0 over a region, with the exponent `{uniform}`: undefined (NaN) when `{uniform}` is 0"
+        "`pow` of a base that is 0 {zero}, with the exponent `{uniform}`: undefined (NaN) when `{uniform}` is 0"
     );
     d.help = Some("keep the exponent above 0 (or the base)".to_string());
     if !xspan.is_empty() {

@@ -1549,7 +1549,7 @@ fn a_ray_march_with_a_fixed_count_of_steps_is_bounded() {
 /// A pixel's offset from a centre the host sets (`v_uv - u_center`, scaled by a size, written
 /// component by component, or from the middle `0.5`) is the zero vector at the pixel on the
 /// centre — exactly, for (0.5, 0.5) on a target of odd size: a warning on `normalize` and on a
-/// division by its length. An offset from a uniform not named as a centre, a position's offset,
+/// division by its length, a note on `pow` of its length with a uniform exponent. An offset from a uniform not named as a centre, a position's offset,
 /// and a guarded offset, quiet.
 #[test]
 fn a_pixel_offset_from_a_centre_is_a_note() {
@@ -1586,6 +1586,25 @@ fn a_pixel_offset_from_a_centre_is_a_note() {
         ),
     ] {
         let f = at(rule, body);
+        assert!(f.is_empty(), "{body}: {f:?}");
+    }
+    // `pow` of its length with a uniform exponent: a note naming the uniform, as for a base 0
+    // over a region.
+    for body in [
+        "  r = pow(length(v_uv - u_center), u_a);",
+        "  vec2 c = vec2(v_uv.x - u_center.x, v_uv.y - u_center.y);\n  float d = sqrt(c.x * c.x + c.y * c.y);\n  r = pow(d, u_a);",
+    ] {
+        let f = at("pow-zero-base", body);
+        assert!(
+            !f.is_empty() && f.iter().all(|(s, _)| *s == N),
+            "{body}: {f:?}"
+        );
+    }
+    for body in [
+        "  r = pow(length(v_uv - u_offset), u_a);",
+        "  r = pow(max(length(v_uv - u_center), 1e-4), u_a);",
+    ] {
+        let f = at("pow-zero-base", body);
         assert!(f.is_empty(), "{body}: {f:?}");
     }
 }
@@ -1726,12 +1745,17 @@ fn notes_only(rule: &str) -> bool {
 /// since the shader does not say whether its scene is measured in pixels or in metres.
 const SCALE_NOTE: &str = "in a scene hundreds of units across";
 
+/// The message of a `pow-zero-base` note on an exponent that is a uniform as such, undefined when
+/// the uniform is 0: a note, since whether the host's default is 0 is the program's to know.
+const UNIFORM_ZERO_NOTE: &str = "undefined (NaN) when `";
+
 /// Every finding classified `real`, `rounding` or `input` in a corpus's triage table is still
 /// reported at its source line (in the shader as compiled or in a configuration of its
 /// `#ifdef`s, as a check lints them by default): a real one as a warning, the others at least as a note (but
 /// for [`DROPPED`]). A real one may be a note where the rule says the scale that reaches it is the
-/// program's to know ([`SCALE_NOTE`]: positions in a scene measured in pixels), or where the
-/// rule's findings are all notes ([`notes_only`]). Runs where `ESSL_LINT_CORPORA` names the corpora (`scripts/test.sh` fetches
+/// program's to know ([`SCALE_NOTE`]: positions in a scene measured in pixels; [`UNIFORM_ZERO_NOTE`]:
+/// a uniform exponent whose default is 0), or where the rule's findings are all notes
+/// ([`notes_only`]). Runs where `ESSL_LINT_CORPORA` names the corpora (`scripts/test.sh` fetches
 /// the fresh one; the old one needs GitHub, and is checked where present); skipped otherwise
 /// (they live outside the repository).
 #[test]
@@ -1826,7 +1850,7 @@ fn every_classified_true_positive_is_still_reported() {
                     line,
                     source,
                     d.severity,
-                    d.message.contains(SCALE_NOTE),
+                    d.message.contains(SCALE_NOTE) || d.message.contains(UNIFORM_ZERO_NOTE),
                 ));
             }
         }

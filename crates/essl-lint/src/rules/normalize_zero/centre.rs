@@ -14,7 +14,7 @@
 //! either. A warning: the centre's ordinary value reaches the hazard.
 
 use essl::diagnostic::{Diagnostic, Severity};
-use naga::{BinaryOperator as Bo, Expression as E, Function, Handle};
+use naga::{BinaryOperator as Bo, Expression as E, Function, Handle, MathFunction as Mf};
 
 use super::super::Cx;
 use super::{kept_from_zero, zero_vector_note, Normalize};
@@ -142,4 +142,73 @@ fn centre_of(
             Some((base, part)) if part.chars().all(|c| "xyzwrgba".contains(c)) => base.to_string(),
             _ => u.clone(),
         })
+}
+
+/// The centre uniform's name where `h` is the length of a pixel's offset from it: `length(c)`,
+/// `distance(p, centre)`, `sqrt(dot(c, c))` or `sqrt(c.x * c.x + c.y * c.y)` — 0 at the pixel
+/// on the centre (`pow(radius, u_k)` there is `pow(0.0, u_k)`).
+pub(crate) fn centre_length(cx: &Cx, f: &Function, id: usize, h: Handle<E>) -> Option<String> {
+    let named = names_centre(cx.module);
+    let an = cx.sound();
+    match f.expressions[resolve(f, an, id, h)] {
+        E::Math {
+            fun: Mf::Length,
+            arg,
+            ..
+        } => centre_offset(cx, f, id, arg, named),
+        E::Math {
+            fun: Mf::Distance,
+            arg,
+            arg1: Some(b),
+            ..
+        } => centre_of(cx, id, arg, b, named).or_else(|| centre_of(cx, id, b, arg, named)),
+        E::Math {
+            fun: Mf::Sqrt, arg, ..
+        } => match f.expressions[resolve(f, an, id, arg)] {
+            E::Math {
+                fun: Mf::Dot,
+                arg: a,
+                arg1: Some(b),
+                ..
+            } if an.same(f, id, a, b) => centre_offset(cx, f, id, a, named),
+            E::Binary {
+                op: Bo::Add,
+                left,
+                right,
+            } => {
+                let v = square_of_component(cx, f, id, left, 0)?;
+                let w = square_of_component(cx, f, id, right, 1)?;
+                an.same(f, id, v, w)
+                    .then(|| centre_offset(cx, f, id, v, named))
+                    .flatten()
+            }
+            _ => None,
+        },
+        _ => None,
+    }
+}
+
+/// The vector `v` where `h` is `v[k] * v[k]`.
+fn square_of_component(
+    cx: &Cx,
+    f: &Function,
+    id: usize,
+    h: Handle<E>,
+    k: u32,
+) -> Option<Handle<E>> {
+    let an = cx.sound();
+    let E::Binary {
+        op: Bo::Multiply,
+        left,
+        right,
+    } = f.expressions[resolve(f, an, id, h)]
+    else {
+        return None;
+    };
+    let component = |x: Handle<E>| match f.expressions[x] {
+        E::AccessIndex { base, index } if index == k => Some(base),
+        _ => None,
+    };
+    let (a, b) = (component(left)?, component(right)?);
+    an.same(f, id, a, b).then_some(a)
 }
