@@ -29,7 +29,8 @@
 //! The analysis meets what each such store stores with the bound
 //! ([`Analysis::growth_bound`]), computed from the values the analysis has for the parts that
 //! do not read `t`; a change in them after the bound used them asks for another round, so the
-//! fixpoint is sound. The bound is the count's: a march that leaves its loop early stays below
+//! fixpoint is sound, and a bound that changes more than [`MAX_CHANGES`] times is dropped (the
+//! variable then widens as any other). The bound is the count's: a march that leaves its loop early stays below
 //! it, and one that misses every surface reaches it.
 
 use rustc_hash::FxHashMap as HashMap;
