@@ -118,12 +118,15 @@ fn check_zero(cx: &Cx, out: &mut Vec<Diagnostic>) {
             .then(|| cx.origin(&[(id, exp)]).single_uniform().map(str::to_string))
             .flatten();
         // Or at the pixel on a centre the host sets, which the usual centre hits exactly.
-        let centre = (at_zero && uniform.is_some() && !cx.flat_at(f, id, base, 0.0))
-            .then(|| super::normalize_zero::centre_length(cx, f, id, base))
-            .flatten();
-        if at_zero && (uniform.is_none() || (!cx.flat_at(f, id, base, 0.0) && centre.is_none())) {
-            continue;
-        }
+        let centre = match (at_zero, &uniform) {
+            (false, _) => None,
+            (true, None) => continue,
+            (true, Some(_)) if cx.flat_at(f, id, base, 0.0) => None,
+            (true, Some(_)) => match super::normalize_zero::centre_length(cx, f, id, base) {
+                Some(c) => Some(c),
+                None => continue,
+            },
+        };
         let bspan = cx.span(f, base);
         let xspan = cx.span(f, exp);
         let mut d = Diagnostic::rule_warning(
