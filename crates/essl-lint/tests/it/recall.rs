@@ -1555,21 +1555,31 @@ fn a_ray_march_with_a_fixed_count_of_steps_is_bounded() {
 fn a_pixel_offset_from_a_centre_is_a_note() {
     let functions = "uniform vec2 u_center; uniform vec2 u_offset; uniform vec2 u_size;";
     let at = |rule: &str, body: &str| found_with("highp", rule, functions, body);
-    for (rule, body) in [
-        ("normalize-zero", "  r = normalize(v_uv - u_center).x;"),
+    // `pow` of its length with a uniform exponent is a note naming the uniform, as for a base
+    // 0 over a region.
+    for (rule, body, severity) in [
+        ("normalize-zero", "  r = normalize(v_uv - u_center).x;", W),
         (
             "normalize-zero",
             "  vec2 d = vec2(v_uv.x - u_center.x, v_uv.y - u_center.y);\n  r = normalize(d).y;",
+            W,
         ),
-        ("normalize-zero", "  r = normalize(v_uv - 0.5).x;"),
+        ("normalize-zero", "  r = normalize(v_uv - 0.5).x;", W),
         (
             "division-by-difference",
             "  vec2 c = v_uv * u_size;\n  c -= u_center * u_size;\n  float d = length(c);\n  r = u_a / d;",
+            W,
+        ),
+        ("pow-zero-base", "  r = pow(length(v_uv - u_center), u_a);", N),
+        (
+            "pow-zero-base",
+            "  vec2 c = vec2(v_uv.x - u_center.x, v_uv.y - u_center.y);\n  float d = sqrt(c.x * c.x + c.y * c.y);\n  r = pow(d, u_a);",
+            N,
         ),
     ] {
         let f = at(rule, body);
         assert!(
-            !f.is_empty() && f.iter().all(|(s, _)| *s == W),
+            !f.is_empty() && f.iter().all(|(s, _)| *s == severity),
             "{body}: {f:?}"
         );
     }
@@ -1584,27 +1594,13 @@ fn a_pixel_offset_from_a_centre_is_a_note() {
             "division-by-difference",
             "  float d = length(v_uv - u_center);\n  r = u_a / max(d, 1e-4);",
         ),
+        ("pow-zero-base", "  r = pow(length(v_uv - u_offset), u_a);"),
+        (
+            "pow-zero-base",
+            "  r = pow(max(length(v_uv - u_center), 1e-4), u_a);",
+        ),
     ] {
         let f = at(rule, body);
-        assert!(f.is_empty(), "{body}: {f:?}");
-    }
-    // `pow` of its length with a uniform exponent: a note naming the uniform, as for a base 0
-    // over a region.
-    for body in [
-        "  r = pow(length(v_uv - u_center), u_a);",
-        "  vec2 c = vec2(v_uv.x - u_center.x, v_uv.y - u_center.y);\n  float d = sqrt(c.x * c.x + c.y * c.y);\n  r = pow(d, u_a);",
-    ] {
-        let f = at("pow-zero-base", body);
-        assert!(
-            !f.is_empty() && f.iter().all(|(s, _)| *s == N),
-            "{body}: {f:?}"
-        );
-    }
-    for body in [
-        "  r = pow(length(v_uv - u_offset), u_a);",
-        "  r = pow(max(length(v_uv - u_center), 1e-4), u_a);",
-    ] {
-        let f = at("pow-zero-base", body);
         assert!(f.is_empty(), "{body}: {f:?}");
     }
 }
