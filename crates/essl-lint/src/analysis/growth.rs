@@ -40,13 +40,15 @@ use naga::{
     Statement, UnaryOperator,
 };
 
-use super::series::{has_loop, loads, whole_local, Walk};
-use super::statements::root_local;
+use super::series::{loads, whole_local, Walk};
+use super::statements::{operands, root_local};
 use super::{Analysis, Place, Site};
 use crate::interval::Interval;
 
 /// Deepest step expression [`Analysis::step_bound`] follows.
 const MAX_DEPTH: usize = 12;
+/// Most expressions [`reads`] looks at before it takes an expression to read the variable.
+const MAX_STEPS: usize = 256;
 /// How many times a variable's bound may change before it is dropped.
 const MAX_CHANGES: u8 = 3;
 /// Largest bound kept: past it the bound tells nothing widening does not.
@@ -67,13 +69,9 @@ pub(crate) struct Growth {
     count: u64,
 }
 
-/// The accumulators of function `f` that loops with bounded iteration counts grow, by local
-/// index.
-pub(super) fn find(f: &Function) -> HashMap<usize, Growth> {
-    if !has_loop(&f.body) {
-        return HashMap::default();
-    }
-    let w = Walk::of(f);
+/// The accumulators of function `f` (`w`: its [`Walk`]) that loops with bounded iteration
+/// counts grow, by local index.
+pub(super) fn find(f: &Function, w: &Walk) -> HashMap<usize, Growth> {
     let mut out = HashMap::default();
     let mut by_local: HashMap<usize, Vec<usize>> = HashMap::default();
     for (k, s) in w.stores.iter().enumerate() {
@@ -107,7 +105,7 @@ pub(super) fn find(f: &Function) -> HashMap<usize, Growth> {
             let lp = &w.loops[l];
             let n = *counts
                 .entry(l)
-                .or_insert_with(|| (!lp.nested).then(|| iterations(f, &w, l)).flatten());
+                .or_insert_with(|| (!lp.nested).then(|| iterations(f, w, l)).flatten());
             let Some(n) = n else {
                 continue 'locals;
             };
@@ -128,7 +126,7 @@ fn int_literal(f: &Function, h: Handle<E>) -> Option<i64> {
     }
 }
 
-/// How many times loop `lp` runs its body at most, when its exit test compares a counter with
+/// How many times loop `l` of the walk runs its body at most, when its exit test compares a counter with
 /// a literal (see the module's documentation).
 fn iterations(f: &Function, w: &Walk, l: usize) -> Option<u64> {
     let first = w.loops[l]
@@ -239,7 +237,7 @@ fn breaks_on(f: &Function, b: &naga::Block, i: usize, first: bool) -> bool {
             reject,
         } => {
             let leaves = |b: &naga::Block| b.iter().any(|s| matches!(s, Statement::Break));
-            (reads(f, *condition, i, 0) && (leaves(accept) || leaves(reject)))
+            (reads(f, *condition, i) && (leaves(accept) || leaves(reject)))
                 || breaks_on(f, accept, i, false)
                 || breaks_on(f, reject, i, false)
         }
@@ -248,42 +246,24 @@ fn breaks_on(f: &Function, b: &naga::Block, i: usize, first: bool) -> bool {
     })
 }
 
-/// Whether expression `h` may read local `t` (unknown shapes may).
-fn reads(f: &Function, h: Handle<E>, t: usize, depth: usize) -> bool {
-    if depth > MAX_DEPTH {
-        return true;
+/// Whether expression `h` may read local `t`: a load of it among what `h` is computed from
+/// ([`operands`]), or a chain too long to follow.
+fn reads(f: &Function, h: Handle<E>, t: usize) -> bool {
+    let mut work = vec![h];
+    let mut steps = 0;
+    while let Some(x) = work.pop() {
+        steps += 1;
+        if steps > MAX_STEPS {
+            return true;
+        }
+        if let E::Load { pointer } = f.expressions[x] {
+            if root_local(f, pointer).is_some_and(|(l, _)| l == t) {
+                return true;
+            }
+        }
+        work.extend(operands(&f.expressions[x]));
     }
-    let r = |x: Handle<E>| reads(f, x, t, depth + 1);
-    match f.expressions[h] {
-        E::Literal(_)
-        | E::Constant(_)
-        | E::ZeroValue(_)
-        | E::FunctionArgument(_)
-        | E::GlobalVariable(_)
-        | E::LocalVariable(_)
-        | E::CallResult(_) => false,
-        E::Load { pointer } => root_local(f, pointer).is_some_and(|(l, _)| l == t) || r(pointer),
-        E::Access { base, index } => r(base) || r(index),
-        E::AccessIndex { base, .. } => r(base),
-        E::Splat { value, .. } => r(value),
-        E::Swizzle { vector, .. } => r(vector),
-        E::Compose { ref components, .. } => components.iter().any(|&c| r(c)),
-        E::Unary { expr, .. } | E::As { expr, .. } => r(expr),
-        E::Binary { left, right, .. } => r(left) || r(right),
-        E::Select {
-            condition,
-            accept,
-            reject,
-        } => r(condition) || r(accept) || r(reject),
-        E::Math {
-            arg,
-            arg1,
-            arg2,
-            arg3,
-            ..
-        } => r(arg) || [arg1, arg2, arg3].into_iter().flatten().any(r),
-        _ => true,
-    }
+    false
 }
 
 impl Analysis {
@@ -371,7 +351,7 @@ impl Analysis {
                 .map(|n| n.comps().iter().map(|c| c.mag()).fold(0.0, f64::max))
                 .filter(|m| m.is_finite())
         };
-        if !reads(f, d, t, 0) {
+        if !reads(f, d, t) {
             return Some((0.0, mag(d)?));
         }
         let sub = |h: Handle<E>| self.step_bound(id, f, h, t, depth + 1);
@@ -388,7 +368,7 @@ impl Analysis {
                 left,
                 right,
             } => {
-                let (x, m) = if reads(f, left, t, 0) {
+                let (x, m) = if reads(f, left, t) {
                     (left, mag(right)?)
                 } else {
                     (right, mag(left)?)
@@ -400,7 +380,7 @@ impl Analysis {
                 op: Op::Divide,
                 left,
                 right,
-            } if !reads(f, right, t, 0) => {
+            } if !reads(f, right, t) => {
                 let (a, b) = sub(left)?;
                 let n = self.functions[id].values[right.index()].num()?;
                 let least = n
@@ -435,7 +415,7 @@ impl Analysis {
                 arg1: Some(lo),
                 arg2: Some(hi),
                 ..
-            } if !reads(f, lo, t, 0) && !reads(f, hi, t, 0) => Some((0.0, mag(lo)?.max(mag(hi)?))),
+            } if !reads(f, lo, t) && !reads(f, hi, t) => Some((0.0, mag(lo)?.max(mag(hi)?))),
             _ => None,
         }
     }

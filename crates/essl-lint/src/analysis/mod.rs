@@ -67,7 +67,7 @@ pub(crate) use eval::WINDOW;
 pub(crate) use flow::root_global;
 pub use memory::{const_value, literal};
 pub(crate) use names::{SCENE, TIME};
-pub(crate) use statements::{diverges, each_statement};
+pub(crate) use statements::{diverges, each_statement, operands};
 
 use memory::write;
 use statements::single_stores;
@@ -313,8 +313,12 @@ impl Analysis {
             let (single, stores) = single_stores(f);
             a.functions[id].single_store = single;
             a.functions[id].stores = stores;
-            a.functions[id].series = series::find(f);
-            a.functions[id].growth = growth::find(f);
+            // The stores and loops both bounds read: walked once, where there is a loop.
+            if series::has_loop(&f.body) {
+                let w = series::Walk::of(f);
+                a.functions[id].series = series::find(f, &w);
+                a.functions[id].growth = growth::find(f, &w);
+            }
             a.functions[id].entry = id >= module.functions.len();
         }
         // Private globals start with their initialiser.

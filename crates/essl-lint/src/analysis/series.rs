@@ -164,12 +164,8 @@ impl<'f> Walk<'f> {
     }
 }
 
-/// The accumulators of geometric series in function `f`, by local index.
-pub(super) fn find(f: &Function) -> HashMap<usize, Series> {
-    if !has_loop(&f.body) {
-        return HashMap::default();
-    }
-    let w = Walk::of(f);
+/// The accumulators of geometric series in function `f` (`w`: its [`Walk`]), by local index.
+pub(super) fn find(f: &Function, w: &Walk) -> HashMap<usize, Series> {
     let mut by_local: HashMap<usize, Vec<&Store>> = HashMap::default();
     for s in &w.stores {
         by_local.entry(s.local).or_default().push(s);

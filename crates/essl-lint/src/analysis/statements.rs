@@ -436,3 +436,43 @@ pub(super) fn writes(
         _ => false,
     })
 }
+
+/// The expressions an expression reads.
+pub(crate) fn operands(e: &E) -> Vec<Handle<E>> {
+    match e {
+        E::Compose { components, .. } => components.clone(),
+        E::Access { base, index } => vec![*base, *index],
+        E::AccessIndex { base, .. } => vec![*base],
+        E::Splat { value, .. } => vec![*value],
+        E::Swizzle { vector, .. } => vec![*vector],
+        E::Load { pointer } => vec![*pointer],
+        E::Unary { expr, .. } | E::Derivative { expr, .. } | E::As { expr, .. } => vec![*expr],
+        E::Binary { left, right, .. } => vec![*left, *right],
+        E::Select {
+            condition,
+            accept,
+            reject,
+        } => vec![*condition, *accept, *reject],
+        E::Relational { argument, .. } => vec![*argument],
+        E::Math {
+            arg,
+            arg1,
+            arg2,
+            arg3,
+            ..
+        } => [Some(*arg), *arg1, *arg2, *arg3]
+            .into_iter()
+            .flatten()
+            .collect(),
+        E::ImageSample {
+            coordinate,
+            depth_ref,
+            ..
+        } => [Some(*coordinate), *depth_ref]
+            .into_iter()
+            .flatten()
+            .collect(),
+        E::ImageLoad { coordinate, .. } => vec![*coordinate],
+        _ => Vec::new(),
+    }
+}

@@ -7,6 +7,7 @@ use essl::source::{SourceFile, Span};
 use essl::Shader;
 use naga::{Block, Expression as E, Function, Handle, MathFunction as Mf, Statement};
 
+pub(crate) use crate::analysis::operands;
 use crate::analysis::{self, Analysis, Mode};
 use crate::interval::Interval;
 use crate::precision::Precisions;
@@ -356,46 +357,6 @@ pub enum User {
     Expr(Handle<E>),
     /// A statement.
     Stmt,
-}
-
-/// The expressions an expression reads.
-pub fn operands(e: &E) -> Vec<Handle<E>> {
-    match e {
-        E::Compose { components, .. } => components.clone(),
-        E::Access { base, index } => vec![*base, *index],
-        E::AccessIndex { base, .. } => vec![*base],
-        E::Splat { value, .. } => vec![*value],
-        E::Swizzle { vector, .. } => vec![*vector],
-        E::Load { pointer } => vec![*pointer],
-        E::Unary { expr, .. } | E::Derivative { expr, .. } | E::As { expr, .. } => vec![*expr],
-        E::Binary { left, right, .. } => vec![*left, *right],
-        E::Select {
-            condition,
-            accept,
-            reject,
-        } => vec![*condition, *accept, *reject],
-        E::Relational { argument, .. } => vec![*argument],
-        E::Math {
-            arg,
-            arg1,
-            arg2,
-            arg3,
-            ..
-        } => [Some(*arg), *arg1, *arg2, *arg3]
-            .into_iter()
-            .flatten()
-            .collect(),
-        E::ImageSample {
-            coordinate,
-            depth_ref,
-            ..
-        } => [Some(*coordinate), *depth_ref]
-            .into_iter()
-            .flatten()
-            .collect(),
-        E::ImageLoad { coordinate, .. } => vec![*coordinate],
-        _ => Vec::new(),
-    }
 }
 
 /// Whether expression `x` of `f` is `d` or is computed from it (through operands, not locals).
