@@ -5,7 +5,9 @@
 // `NAME.vert` + `NAME.frag` pair, the `essl.toml` the options name) and the nearest
 // `essl.toml` are unchanged. Results with
 // errors are never kept, so a fix is always checked; what is kept is what the plugin uses
-// (the warnings' text, the shader text, the files read), one JSON file for the folder.
+// (the warnings' text, the shader text where it is not the module's own, the files read), one
+// JSON file for the folder, read once a build: its size is most of what a build that checks
+// nothing new pays.
 //
 // Written by hand: the caches on npm (flat-cache, file-entry-cache, find-cache-dir) key on a
 // file's metadata and know nothing of what a check read besides the file itself.
@@ -15,7 +17,9 @@ import {dirname, join} from 'node:path';
 import {fileURLToPath} from 'node:url';
 import {LOCAL_ADDON} from './native.js';
 
-const FORMAT = 1;
+const FORMAT = 2;
+/** An entry's `text` when it is the text checked. */
+const SAME = 1;
 /** Entries kept in the file (the most recently used). */
 const MAX_ENTRIES = 10000;
 const here = dirname(fileURLToPath(import.meta.url));
@@ -115,8 +119,9 @@ export class CheckCache {
     return found;
   }
 
-  /** The kept check for `key` when nothing it read has changed, else undefined. */
-  get(key, f) {
+  /** The kept check for `key` when nothing it read has changed, else undefined; `source` is
+   * the text the key was made of, which an entry does not repeat. */
+  get(key, f, source) {
     const entry = this.entries.get(key);
     if (!entry) return undefined;
     const same =
@@ -127,20 +132,28 @@ export class CheckCache {
     // that checks nothing new writes nothing).
     this.entries.delete(key);
     this.entries.set(key, entry);
-    return entry.checked;
+    const {text, files, warnings} = entry.checked;
+    return {
+      errors: [],
+      warnings,
+      text: text === SAME ? source : text,
+      files: files ?? [f],
+    };
   }
 
-  /** Keeps a check that found no error, with the files it read (besides `f` itself). */
-  set(key, f, checked, read) {
+  /** Keeps a check of `source` that found no error, with the files it read (besides `f`
+   * itself). The text WebGL is given is kept only where it is not `source` (an `#include`
+   * put in place, a minified text), and the files only where they are not `[f]`: a build
+   * reads the whole file before it checks anything. */
+  set(key, f, checked, read, source) {
     if (checked.errors.length) return;
     const deps = [...new Set(read)].filter(p => p && p !== f).map(p => [p, this.fileHash(p)]);
     if (deps.some(([, h]) => h === null)) return;
     const plain = {
-      errors: [],
-      warnings: checked.warnings.map(w => JSON.parse(JSON.stringify(w))),
-      text: checked.text,
-      files: checked.files,
+      warnings: checked.warnings.map(w => ({severity: w.severity, rendered: w.rendered})),
+      text: checked.text === source ? SAME : checked.text,
     };
+    if (!(checked.files.length === 1 && checked.files[0] === f)) plain.files = checked.files;
     this.entries.delete(key);
     this.entries.set(key, {config: this.config(dirname(f)), deps, checked: plain});
     this.changed = true;

@@ -80,7 +80,7 @@ export async function checkModule(id, code, options = {}, given = false, cache =
   // A preset's checks read the library the project has installed: those are not kept.
   const key = cache && !options.preset ? cache.key(f, source, [o, minify, !!options.failOnWarnings]) : null;
   if (key) {
-    const kept = cache.get(key, f);
+    const kept = cache.get(key, f, source);
     if (kept) return kept;
   }
   const checked = await checkSource(source, o, f, isShader, minify, options);
@@ -88,7 +88,7 @@ export async function checkModule(id, code, options = {}, given = false, cache =
     // An `essl.toml` the options name is read too (the nearest one the cache finds itself).
     const files = read(checked.result);
     if (o.config) files.push(o.config);
-    cache.set(key, f, checked, files);
+    cache.set(key, f, checked, files, source);
   }
   return checked;
 }

@@ -74,6 +74,25 @@ test('a second build takes an unchanged check from the cache', {skip}, async () 
   }
 });
 
+test('a module that includes nothing is kept without its text and exported whole', {skip}, async () => {
+  const dir = project();
+  const cache = join(dir, 'cache');
+  try {
+    writeFileSync(join(dir, 'src', 'light.frag'), FRAG.replace('#include "ramp.glsl"', RAMP));
+    const first = await build(dir, {cache});
+    const [[, entry]] = kept(cache).entries;
+    assert.equal(typeof entry.checked.text, 'number', 'the text is the module\'s own');
+    assert.equal(entry.checked.files, undefined, 'the module read no other file');
+    mark(cache);
+    const second = await build(dir, {cache});
+    assert.ok(second.warnings.some(w => w.includes('KEPT warning[division-by-difference]')), second.warnings.join('\n'));
+    assert.equal(second.code, first.code);
+    assert.ok(second.code.includes('u_inner - u_outer'), second.code);
+  } finally {
+    rmSync(dir, {recursive: true, force: true});
+  }
+});
+
 test('a change to an included file, the module or essl.toml checks it again', {skip}, async () => {
   const dir = project();
   const cache = join(dir, 'cache');
