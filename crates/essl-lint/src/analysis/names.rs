@@ -138,7 +138,9 @@ fn word_slices(name: &str) -> impl Iterator<Item = &str> {
 /// segments, octaves, iterations…), a length, a radius, a gamma, a falloff (`directionCount`,
 /// `numberOfTilesWidth`, `uTileColumns`, `_Blob_Fade_Length_`, `uRadius`, `uGamma`), a fade
 /// distance (`Inner_Fade`), the width of a soft edge a user sets to 0 for a hard one
-/// (`feather`, `uSmoothing`, `softness`).
+/// (`feather`, `uSmoothing`, `softness`), a tone mapping's white point (`white`), a fraction
+/// (`_Glow_Fraction_`), a stroke's or a filter's size (`strokeSize`, `filterSize`: a size the
+/// user sets, not one the host takes from the canvas).
 /// Not sizes, resolutions, ratios or distances, which the host computes from the canvas and the
 /// camera and which are not 0 while anything is drawn (`u_resolution`, `u_pixelRatio`,
 /// `u_camera_to_center_distance`).
@@ -172,6 +174,10 @@ const SETTING: &[&str] = &[
     "feather",
     "smoothing",
     "softness",
+    "white",
+    "fraction",
+    "stroke",
+    "filter",
 ];
 
 /// Words that say a name with a [`SETTING`] word holds something else: what a draw call draws,
@@ -357,6 +363,10 @@ mod tests {
             "Inner_Fade",
             "uIsolateThresholdFeather.z",
             "uSmoothing",
+            "white",
+            "_Glow_Fraction_",
+            "strokeSize",
+            "filterSize",
         ] {
             assert!(is_setting(name), "{name}");
         }

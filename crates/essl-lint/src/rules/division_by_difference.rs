@@ -44,9 +44,12 @@ declare_rule! {
     /// for such a cosine (`NoL`, `NdotV`, `dotNL`) counts as one where a call passes it an input
     /// as such, as a library function's harness does. And, as a note naming it, a uniform as such
     /// whose name says it holds a setting a user may set to 0 — a count, a length, a radius, a
-    /// gamma, a fade, a near or far distance, a soft edge's width (`1.0 / uGamma`,
+    /// gamma, a fade, a near or far distance, a soft edge's width, a tone mapping's white point,
+    /// a fraction, a stroke's or a filter's size (`1.0 / uGamma`,
     /// `1.0 / float(directionCount)`, `d / uRadius`, `d / Proximity_Far_Distance`,
-    /// `match / feather`, `x / uWavelength`), a multiple of
+    /// `match / feather`, `x / uWavelength`, `color / white`, `x / Glow_Fraction`,
+    /// `d / strokeSize`, a Gaussian's `2.0 * sigma * sigma` for `sigma = float(filterSize)`),
+    /// a multiple of
     /// one (`lengthCap * sqrt(-z)`, through locals and calls), or a blend of several, 0 for
     /// the whole draw once each is whatever the weights (`mix(fadeA, fadeB, c.g)`,
     /// `(w.y - w.x) * k + w.x`, through `out` parameters too) — but not a size,
@@ -124,7 +127,8 @@ declare_rule! {
     /// ## What it does not flag
     /// - A divisor the shader keeps away from 0: `max(d, 1e-4)`, `d + 0.1` of a non-negative `d`, a
     ///   difference it orders itself (`u_r + 0.1 - u_r`), or one an enclosing condition says is not 0
-    ///   (`if (u_a != u_b)`, `abs(d) > 1e-6 ? x / d : 0.0`).
+    ///   (`if (u_a != u_b)`, `abs(d) > 1e-6 ? x / d : 0.0`), also an integer's conversion after
+    ///   `if (n == 0) return;` (`x / float(n)`).
     /// - A shading term the shader keeps from 0 (`4.0 * NdotL * NdotV + 0.0001`, `max(NdotL, 1e-4)`,
     ///   under `if (NdotL > 0.0 && NdotV > 0.0)`), and a raw `dot(n, l)`, 0 on a line of pixels only.
     /// - A sum of texels with a constant added (`t.r + t.g + 1e-3`), or a clamp or `max` of one;

@@ -378,6 +378,20 @@ impl Cx<'_> {
         {
             return true;
         }
+        // An integer the guards keep from 0, converted: `float(n)` after `if (n == 0) return;`
+        // (a float converted to an integer can truncate to 0, so only this way).
+        if let E::As {
+            expr,
+            kind: naga::ScalarKind::Float,
+            ..
+        } = f.expressions[r]
+        {
+            let integer = matches!(
+                self.kind(id, expr),
+                Some(naga::ScalarKind::Sint | naga::ScalarKind::Uint)
+            );
+            return integer && self.nonzero(f, id, expr, g);
+        }
         // A product of factors the guards (or constants) keep from 0: `nl * nv` under
         // `nl > 0.0 && nv > 0.0`.
         if let E::Binary {

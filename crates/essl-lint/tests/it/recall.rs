@@ -1546,6 +1546,34 @@ fn a_ray_march_with_a_fixed_count_of_steps_is_bounded() {
     }
 }
 
+/// A white point, a filter's size, a stroke's size and a fraction a user sets are settings a
+/// user may set to 0: a division by one (or by a multiple of one) is a note naming it. The same
+/// divisions after `if (n == 0) return;`, or by a size the host sets, are quiet.
+#[test]
+fn white_points_filter_sizes_strokes_and_fractions_are_settings() {
+    let functions = "uniform float u_white; uniform int u_filterSize; uniform float u_strokeSize;\n\
+        uniform float _Glow_Fraction_; uniform float u_viewportSize;\n";
+    let division = |body: &str| found_with("highp", "division-by-difference", functions, body);
+    for body in [
+        "  r = t.r * (1.0 + t.r / u_white);",
+        "  float sigma = float(u_filterSize);\n  r = exp(-v_x / (2.0 * sigma * sigma));",
+        "  r = v_x / u_strokeSize;",
+        "  r = clamp((1.0 - v_x) / _Glow_Fraction_, 0.0, 1.0);",
+    ] {
+        let f = division(body);
+        assert_eq!(f.len(), 1, "{body}: {f:?}");
+        assert_eq!(f[0].0, N, "{body}: {f:?}");
+    }
+    for body in [
+        "  if (u_filterSize == 0) { o = t; return; }\n  r = v_x / float(u_filterSize);",
+        "  if (u_filterSize != 0) { r = v_x / float(u_filterSize); }",
+        "  r = v_x / u_viewportSize;",
+    ] {
+        let f = division(body);
+        assert!(f.is_empty(), "{body}: {f:?}");
+    }
+}
+
 /// A pixel's offset from a centre the host sets (`v_uv - u_center`, scaled by a size, written
 /// component by component, or from the middle `0.5`) is the zero vector at the pixel on the
 /// centre — exactly, for (0.5, 0.5) on a target of odd size: a warning on `normalize` and on a
