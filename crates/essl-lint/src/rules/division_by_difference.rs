@@ -10,7 +10,7 @@ use super::derivatives;
 use super::normalize_zero;
 use super::parameters::caller_value;
 use super::rule::declare_rule;
-use super::settings::settings_of;
+use super::settings::{grid_step, settings_of};
 use super::Cx;
 use crate::symbolic::resolve;
 use crate::value::{Facts, Num};
@@ -49,7 +49,8 @@ declare_rule! {
     /// `1.0 / float(directionCount)`, `d / uRadius`, `d / Proximity_Far_Distance`,
     /// `match / feather`, `x / uWavelength`, `color / white`, `x / Glow_Fraction`,
     /// `d / strokeSize`, a Gaussian's `2.0 * sigma * sigma` for `sigma = float(filterSize)`),
-    /// a multiple of
+    /// or whatever its name the step of a grid the quotient snaps to (a pixelation's
+    /// `floor(coord / uSize) * uSize`; not `mod`), a multiple of
     /// one (`lengthCap * sqrt(-z)`, through locals and calls), or a blend of several, 0 for
     /// the whole draw once each is whatever the weights (`mix(fadeA, fadeB, c.g)`,
     /// `(w.y - w.x) * k + w.x`, through `out` parameters too) — but not a size,
@@ -224,6 +225,8 @@ fn check(cx: &Cx, out: &mut Vec<Diagnostic>) {
                 } else if let Some(diag) = black_divisor(cx, &div, v) {
                     out.push(diag);
                 } else if let Some(diag) = setting_divisor(cx, &div) {
+                    out.push(diag);
+                } else if let Some(diag) = grid_divisor(cx, &div) {
                     out.push(diag);
                 } else if let Some(diag) = parameter_divisor(cx, &div) {
                     out.push(diag);
@@ -442,6 +445,23 @@ fn setting_divisor(cx: &Cx, div: &Division) -> Option<Diagnostic> {
     Some(diag.with_note(format!(
         "{settings} the divisor 0 for the whole draw: essl-gl's validation mode checks the value at each draw"
     )))
+}
+
+/// The finding for a divisor `d` of `h` that is the step of a grid `h` snaps to
+/// ([`grid_step`]: `floor(x / uSize) * uSize`): a note naming the uniform.
+fn grid_divisor(cx: &Cx, div: &Division) -> Option<Diagnostic> {
+    let Division { f, id, h, d } = *div;
+    let name = grid_step(cx, f, id, h, d)?;
+    let span = unguarded(cx, div)?;
+    let diag = Diagnostic::rule_warning(
+        DivisionByDifference::RULE.id,
+        format!("division by the grid step `{name}`, which a user may set to 0"),
+        span,
+    )
+    .with_label(format!("0 when `{name}` is"))
+    .with_help("guard the divisor: `max(x, 1e-4)`, or keep the step above 0 where it is set")
+    .with_fix(floor_fix(cx, span));
+    Some(cx.grade(diag, &[(id, d)]))
 }
 
 /// The note for a divisor `d` of `h` built from the function's parameters alone, where the

@@ -183,3 +183,41 @@ fn written_by_calls<'a>(
         .map(|(c, v)| (c, crate::analysis::function(cx.module, c), v))
         .collect()
 }
+
+/// The uniform `d` is when the division `h` (`x / d`) snaps to a grid of step `d`:
+/// `floor(x / d) * d` (or `ceil`, `round`, `trunc`; a pixelation's cell size, a posterisation's
+/// step). Whatever its name, such a step is a setting a user may set to 0 — pixi's pixelate
+/// size, Phaser's blocky size — and the quotient is then ±∞ or NaN for the whole draw.
+pub(super) fn grid_step(
+    cx: &Cx,
+    f: &naga::Function,
+    id: usize,
+    h: naga::Handle<E>,
+    d: naga::Handle<E>,
+) -> Option<String> {
+    if !is_uniform(cx, id, d) {
+        return None;
+    }
+    let name = cx.origin(&[(id, d)]).single_uniform()?.to_string();
+    // Written so: `mod(x, d)`, which is `x - d * floor(x / d)` in the module, has its
+    // operations at the span of the call, and is not a grid's step.
+    let snapped = f.expressions.iter().find_map(|(r, e)| match *e {
+        E::Math {
+            fun: Mf::Floor | Mf::Ceil | Mf::Round | Mf::Trunc,
+            arg,
+            ..
+        } if arg == h => Some(r),
+        _ => None,
+    })?;
+    if cx.span(f, snapped) == cx.span(f, h) {
+        return None;
+    }
+    let same = |x: naga::Handle<E>| cx.sound().same(f, id, x, d);
+    f.expressions
+        .iter()
+        .any(|(_, e)| {
+            matches!(*e, E::Binary { op: Bo::Multiply, left, right }
+            if (left == snapped && same(right)) || (right == snapped && same(left)))
+        })
+        .then_some(name)
+}

@@ -1546,19 +1546,23 @@ fn a_ray_march_with_a_fixed_count_of_steps_is_bounded() {
     }
 }
 
-/// A white point, a filter's size, a stroke's size and a fraction a user sets are settings a
-/// user may set to 0: a division by one (or by a multiple of one) is a note naming it. The same
-/// divisions after `if (n == 0) return;`, or by a size the host sets, are quiet.
+/// A white point, a filter's size, a stroke's size, a fraction and a grid's step
+/// (`floor(x / s) * s`) are settings a user may set to 0: a division by one (or by a multiple
+/// of one) is a note naming it. The same divisions after `if (n == 0) return;`, by a size the
+/// host sets, `mod` and a quotient snapped to another step are quiet.
 #[test]
-fn white_points_filter_sizes_strokes_and_fractions_are_settings() {
-    let functions = "uniform float u_white; uniform int u_filterSize; uniform float u_strokeSize;\n\
-        uniform float _Glow_Fraction_; uniform float u_viewportSize;\n";
+fn white_points_sizes_fractions_and_grid_steps_are_settings() {
+    let functions =
+        "uniform float u_white; uniform int u_filterSize; uniform float u_strokeSize;\n\
+        uniform float _Glow_Fraction_; uniform float u_viewportSize; uniform float u_cell;\n";
     let division = |body: &str| found_with("highp", "division-by-difference", functions, body);
     for body in [
         "  r = t.r * (1.0 + t.r / u_white);",
         "  float sigma = float(u_filterSize);\n  r = exp(-v_x / (2.0 * sigma * sigma));",
         "  r = v_x / u_strokeSize;",
         "  r = clamp((1.0 - v_x) / _Glow_Fraction_, 0.0, 1.0);",
+        // A grid's step, whatever its name: a pixelation's cell.
+        "  r = floor(v_x / u_cell) * u_cell;",
     ] {
         let f = division(body);
         assert_eq!(f.len(), 1, "{body}: {f:?}");
@@ -1568,6 +1572,8 @@ fn white_points_filter_sizes_strokes_and_fractions_are_settings() {
         "  if (u_filterSize == 0) { o = t; return; }\n  r = v_x / float(u_filterSize);",
         "  if (u_filterSize != 0) { r = v_x / float(u_filterSize); }",
         "  r = v_x / u_viewportSize;",
+        "  r = mod(v_x, u_cell) + floor(v_x / u_cell) * u_viewportSize;",
+        "  r = floor(v_x / max(u_cell, 1e-4)) * u_cell;",
     ] {
         let f = division(body);
         assert!(f.is_empty(), "{body}: {f:?}");
