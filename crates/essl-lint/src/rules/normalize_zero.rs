@@ -73,7 +73,9 @@ declare_rule! {
     /// And `normalize` in a fragment shader of a pixel's offset from a centre the
     /// host sets — a texture or screen coordinate (`v_uv`, `vTextureCoord * size`,
     /// `gl_FragCoord.xy`) minus a uniform named `center` or `centre` (scaled by uniforms), or a
-    /// texture coordinate minus the middle `0.5` — and a division by its length: a bulge's
+    /// texture coordinate minus the middle `0.5` (a flipped one too), the offset scaled by
+    /// uniforms or constants or widened with zeros (Cesium's lens flare normalises
+    /// `vec3((vec2(0.5) - texcoord) * ghostDispersal, 0.0)`) — and a division by its length: a bulge's
     /// `uRadius / length(coord)`, a chromatic aberration's direction. A per-pixel difference is 0
     /// between pixel centres at most, but the usual centre, (0.5, 0.5), is exactly the middle
     /// pixel's coordinate on a target of odd size, which gets NaN every frame.

@@ -1599,6 +1599,13 @@ fn a_pixel_offset_from_a_centre_is_a_note() {
             W,
         ),
         ("normalize-zero", "  r = normalize(v_uv - 0.5).x;", W),
+        // From the middle, flipped, scaled by a uniform, in a wider vector with a zero
+        // (Cesium's lens flare).
+        (
+            "normalize-zero",
+            "  vec2 fl = vec2(1.0) - v_uv;\n  vec2 g = (vec2(0.5) - fl) * u_a;\n  r = normalize(vec3(g, 0.0)).x + normalize(g).y;",
+            W,
+        ),
         (
             "division-by-difference",
             "  vec2 c = v_uv * u_size;\n  c -= u_center * u_size;\n  float d = length(c);\n  r = u_a / d;",
@@ -1620,6 +1627,12 @@ fn a_pixel_offset_from_a_centre_is_a_note() {
     for (rule, body) in [
         ("normalize-zero", "  r = normalize(v_uv - u_offset).x;"),
         ("normalize-zero", "  r = normalize(v_pos.xy - u_center).x;"),
+        // One component of the offset is 0 on a line of pixels, and a vector scaled per pixel
+        // is another vector.
+        (
+            "normalize-zero",
+            "  vec2 g = vec2(0.5) - v_uv;\n  r = normalize(vec3(g.x, 0.0, 0.0)).x + normalize(g * v_x).y;",
+        ),
         (
             "normalize-zero",
             "  vec2 d = v_uv - u_center;\n  r = dot(d, d) > 1e-12 ? normalize(d).x : 0.0;",

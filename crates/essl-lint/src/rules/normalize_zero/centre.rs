@@ -11,7 +11,9 @@
 //! coordinate must be a fragment shader's varying named for a texture or screen coordinate
 //! (`uv`, `st`, `coord`, `texcoord`) or `gl_FragCoord`, possibly scaled by uniforms; the centre
 //! a uniform named `center` or `centre`, possibly scaled by uniforms; nothing else reaches
-//! either. A warning: the centre's ordinary value reaches the hazard.
+//! either. The offset may be scaled by values the same for every pixel and widened with zeros
+//! (`vec3(offset * k, 0.0)`): still the zero vector on the centre. A warning: the centre's
+//! ordinary value reaches the hazard.
 
 use essl::diagnostic::{Diagnostic, Severity};
 use naga::{BinaryOperator as Bo, Expression as E, Function, Handle, MathFunction as Mf};
@@ -28,6 +30,8 @@ const PIXEL_WORDS: &[&str] = &[
     "st",
     "coord",
     "coords",
+    "coordinate",
+    "coordinates",
     "texcoord",
     "texcoords",
 ];
@@ -58,9 +62,10 @@ pub(super) fn centre_pixel(cx: &Cx, n: Normalize) -> Option<Diagnostic> {
     Some(d)
 }
 
-/// The centre uniform's name where `x` is a pixel's coordinate minus it (either order), or a
-/// vector made of such differences component by component
-/// (`vec2(vUV.x - center.x, vUV.y - center.y)`).
+/// The centre uniform's name where `x` is a pixel's coordinate minus it (either order), such
+/// a difference scaled by per-draw values (`(vec2(0.5) - uv) * ghostDispersal`), or a vector
+/// made of such differences component by component, constant zeros aside
+/// (`vec2(vUV.x - center.x, vUV.y - center.y)`, `vec3(offset, 0.0)`).
 /// `named`: whether the module has a uniform named as a centre (otherwise only `0.5` can be
 /// one, and the walks to the uniforms are skipped).
 fn centre_offset(cx: &Cx, f: &Function, id: usize, x: Handle<E>, named: bool) -> Option<String> {
@@ -72,8 +77,51 @@ fn centre_offset(cx: &Cx, f: &Function, id: usize, x: Handle<E>, named: bool) ->
         } => {
             centre_of(cx, id, left, right, named).or_else(|| centre_of(cx, id, right, left, named))
         }
+        E::Binary {
+            op: Bo::Multiply,
+            left,
+            right,
+        } => {
+            // Uniforms and constants: the same for every pixel.
+            let per_draw = |h: Handle<E>| {
+                cx.sound().num(id, h).is_some_and(|n| {
+                    !n.facts
+                        .any(crate::value::Facts::INPUT.with(crate::value::Facts::TEXTURE))
+                })
+            };
+            if per_draw(right) {
+                centre_offset(cx, f, id, left, named)
+            } else if per_draw(left) {
+                centre_offset(cx, f, id, right, named)
+            } else {
+                None
+            }
+        }
         E::Compose { ref components, .. } if components.len() >= 2 => {
-            let names: Option<Vec<String>> = components
+            let zero = |h: Handle<E>| {
+                cx.sound()
+                    .num(id, h)
+                    .is_some_and(|n| n.comps().iter().all(|c| c.as_point() == Some(0.0)))
+            };
+            let parts: Vec<Handle<E>> = components.iter().copied().filter(|&c| !zero(c)).collect();
+            // Every component of one vector, in order: `vec3(offset, 0.0)` holds
+            // `offset.x, offset.y, 0.0`.
+            let whole = parts.first().and_then(|&c| match f.expressions[c] {
+                E::AccessIndex { base, index: 0 } => Some(base),
+                _ => None,
+            });
+            if let Some(base) = whole {
+                let size = cx.sound().num(id, base).map_or(0, |n| n.n as usize);
+                let every = size == parts.len()
+                    && parts.iter().enumerate().all(|(k, &c)| {
+                        matches!(f.expressions[c], E::AccessIndex { base: b, index }
+                            if b == base && index as usize == k)
+                    });
+                if every {
+                    return centre_offset(cx, f, id, base, named);
+                }
+            }
+            let names: Option<Vec<String>> = parts
                 .iter()
                 .map(|&c| centre_offset(cx, f, id, c, named))
                 .collect();
