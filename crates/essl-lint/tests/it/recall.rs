@@ -1650,6 +1650,11 @@ fn a_pixel_offset_from_a_centre_is_a_note() {
         let f = at(rule, body);
         assert!(f.is_empty(), "{body}: {f:?}");
     }
+    // A vertex on the centre is one vertex, not a pixel of every frame.
+    let vertex = "#version 300 es\nuniform vec2 u_center; uniform float u_a;\nin vec2 a_uv;\nout float v_k;\n\
+        void main() { v_k = pow(length(a_uv - u_center), u_a) + pow(length(a_uv - 0.5), u_a); gl_Position = vec4(a_uv, 0.0, 1.0); }\n";
+    let f = vertex_notes("pow-zero-base", vertex);
+    assert!(f.is_empty(), "{f:?}");
 }
 
 /// The animation's time in a `mediump` uniform (by the default or declared), in a block too: a

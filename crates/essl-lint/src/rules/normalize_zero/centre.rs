@@ -196,6 +196,10 @@ fn centre_of(
 /// `distance(p, centre)`, `sqrt(dot(c, c))` or `sqrt(c.x * c.x + c.y * c.y)` — 0 at the pixel
 /// on the centre (`pow(radius, u_k)` there is `pow(0.0, u_k)`).
 pub(crate) fn centre_length(cx: &Cx, f: &Function, id: usize, h: Handle<E>) -> Option<String> {
+    // A vertex's coordinate on the centre is one vertex, not a pixel every frame.
+    if cx.module.entry_points.first()?.stage != naga::ShaderStage::Fragment {
+        return None;
+    }
     let named = names_centre(cx.module);
     let an = cx.sound();
     match f.expressions[resolve(f, an, id, h)] {
