@@ -4,7 +4,7 @@
 //! The static rules take a uniform's value to be valid — `normalize(u_lightDirection)`,
 //! `pow(…, u_shininess)` and `acos(u_coneCos)` are not reported, and
 //! `smoothstep(u_outerLimit, u_innerLimit, d)` is reported but cannot be decided. For each such
-//! expression [`preconditions`] runs the same analysis ([`crate::analysis`], the guards and
+//! expression [`preconditions`] runs the same analysis (`crate::analysis`, the guards and
 //! the symbolic facts the rules use) and, where the value at risk is computed from uniforms and
 //! constants only, exports it as a [`Term`] over the uniforms it reads, in a [`Condition`]:
 //!
