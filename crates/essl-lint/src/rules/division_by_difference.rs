@@ -226,8 +226,6 @@ fn check(cx: &Cx, out: &mut Vec<Diagnostic>) {
                     out.push(diag);
                 } else if let Some(diag) = setting_divisor(cx, &div) {
                     out.push(diag);
-                } else if let Some(diag) = grid_divisor(cx, &div) {
-                    out.push(diag);
                 } else if let Some(diag) = parameter_divisor(cx, &div) {
                     out.push(diag);
                 } else if let Some(diag) = direction_divisor(cx, &div) {
@@ -403,15 +401,19 @@ fn texel_divisor(cx: &Cx, div: &Division) -> Option<Diagnostic> {
 /// The finding for a divisor `d` of `h` that is a uniform as such whose name says it holds a
 /// setting a user may set to 0 (a count, a length, a radius, a gamma: `1.0 / uGamma`,
 /// `1.0 / float(directionCount)`), or a multiple or blend of such ([`settings_of`]:
-/// `lengthCap * sqrt(-z)`, `mix(fadeA, fadeB, t)`): a note naming them.
+/// `lengthCap * sqrt(-z)`, `mix(fadeA, fadeB, t)`), or the step of a grid ([`grid_step`]:
+/// `floor(x / uSize) * uSize`): a note naming them.
 fn setting_divisor(cx: &Cx, div: &Division) -> Option<Diagnostic> {
-    let Division { f, id, d, .. } = *div;
-    let found = settings_of(cx, f, id, d)?;
+    let Division { f, id, h, d } = *div;
+    let (found, kind) = match settings_of(cx, f, id, d) {
+        Some(found) => (found, "setting"),
+        None => (grid_step(cx, f, id, h, d)?, "grid step"),
+    };
     let span = unguarded(cx, div)?;
     let what = cx.what(f, id, d);
     let (message, label) = match &found.names[..] {
         [name] if found.itself => (
-            format!("division by the setting `{name}`, which a user may set to 0"),
+            format!("division by the {kind} `{name}`, which a user may set to 0"),
             format!("0 when `{name}` is"),
         ),
         [name] => (
@@ -445,23 +447,6 @@ fn setting_divisor(cx: &Cx, div: &Division) -> Option<Diagnostic> {
     Some(diag.with_note(format!(
         "{settings} the divisor 0 for the whole draw: essl-gl's validation mode checks the value at each draw"
     )))
-}
-
-/// The finding for a divisor `d` of `h` that is the step of a grid `h` snaps to
-/// ([`grid_step`]: `floor(x / uSize) * uSize`): a note naming the uniform.
-fn grid_divisor(cx: &Cx, div: &Division) -> Option<Diagnostic> {
-    let Division { f, id, h, d } = *div;
-    let name = grid_step(cx, f, id, h, d)?;
-    let span = unguarded(cx, div)?;
-    let diag = Diagnostic::rule_warning(
-        DivisionByDifference::RULE.id,
-        format!("division by the grid step `{name}`, which a user may set to 0"),
-        span,
-    )
-    .with_label(format!("0 when `{name}` is"))
-    .with_help("guard the divisor: `max(x, 1e-4)`, or keep the step above 0 where it is set")
-    .with_fix(floor_fix(cx, span));
-    Some(cx.grade(diag, &[(id, d)]))
 }
 
 /// The note for a divisor `d` of `h` built from the function's parameters alone, where the

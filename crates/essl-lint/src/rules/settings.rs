@@ -184,7 +184,8 @@ fn written_by_calls<'a>(
         .collect()
 }
 
-/// The uniform `d` is when the division `h` (`x / d`) snaps to a grid of step `d`:
+/// The uniform `d` is (as [`Settings`] of it alone) when the division `h` (`x / d`) snaps to
+/// a grid of step `d`:
 /// `floor(x / d) * d` (or `ceil`, `round`, `trunc`; a pixelation's cell size, a posterisation's
 /// step). Whatever its name, such a step is a setting a user may set to 0 — pixi's pixelate
 /// size, Phaser's blocky size — and the quotient is then ±∞ or NaN for the whole draw.
@@ -194,7 +195,7 @@ pub(super) fn grid_step(
     id: usize,
     h: naga::Handle<E>,
     d: naga::Handle<E>,
-) -> Option<String> {
+) -> Option<Settings> {
     if !is_uniform(cx, id, d) {
         return None;
     }
@@ -219,5 +220,8 @@ pub(super) fn grid_step(
             matches!(*e, E::Binary { op: Bo::Multiply, left, right }
             if (left == snapped && same(right)) || (right == snapped && same(left)))
         })
-        .then_some(name)
+        .then(|| Settings {
+            names: vec![name],
+            itself: true,
+        })
 }
