@@ -184,10 +184,9 @@ fn written_by_calls<'a>(
         .collect()
 }
 
-/// The uniform `d` is (as [`Settings`] of it alone) when the division `h` (`x / d`) snaps to
-/// a grid of step `d`:
-/// `floor(x / d) * d` (or `ceil`, `round`, `trunc`; a pixelation's cell size, a posterisation's
-/// step). Whatever its name, such a step is a setting a user may set to 0 — pixi's pixelate
+/// The uniform `d`, as the one setting of [`Settings`], where the division `h` (`x / d`) snaps
+/// to a grid of step `d`: `floor(x / d) * d` (or `ceil`, `round`, `trunc`; a pixelation's cell
+/// size, a posterisation's step). Whatever its name, such a step is a setting a user may set to 0 — pixi's pixelate
 /// size, Phaser's blocky size — and the quotient is then ±∞ or NaN for the whole draw.
 pub(super) fn grid_step(
     cx: &Cx,
