@@ -139,8 +139,8 @@ fn word_slices(name: &str) -> impl Iterator<Item = &str> {
 /// `numberOfTilesWidth`, `uTileColumns`, `_Blob_Fade_Length_`, `uRadius`, `uGamma`), a fade
 /// distance (`Inner_Fade`), the width of a soft edge a user sets to 0 for a hard one
 /// (`feather`, `uSmoothing`, `softness`), a tone mapping's white point (`white`), a fraction
-/// (`_Glow_Fraction_`), a stroke's or a filter's size (`strokeSize`, `filterSize`: a size the
-/// user sets, not one the host takes from the canvas).
+/// (`_Glow_Fraction_`), a grid cell's, a stroke's or a filter's size (`cellSize`, `strokeSize`,
+/// `filterSize`: a size the user sets, not one the host takes from the canvas).
 /// Not sizes, resolutions, ratios or distances, which the host computes from the canvas and the
 /// camera and which are not 0 while anything is drawn (`u_resolution`, `u_pixelRatio`,
 /// `u_camera_to_center_distance`).
@@ -174,6 +174,7 @@ const SETTING: &[&str] = &[
     "feather",
     "smoothing",
     "softness",
+    "cell",
     "white",
     "fraction",
     "stroke",
@@ -367,6 +368,7 @@ mod tests {
             "_Glow_Fraction_",
             "strokeSize",
             "filterSize",
+            "cellSize",
         ] {
             assert!(is_setting(name), "{name}");
         }

@@ -145,7 +145,7 @@ declare_rule! {
     ///   `step`ped or clamped to constant bounds (±∞ gives a defined answer there); a
     ///   varying as such in a fragment shader (0 on a line of pixels at most); a
     ///   parameter named for a size the host computes, or a multiple of one (`1.0 / texResolution`,
-    ///   `floor(v * res) / res`); one named for what is never 0 (an index of refraction `ior`, a
+    ///   `floor(v * res) / res`; not a size a setting's word qualifies, `cellSize`); one named for what is never 0 (an index of refraction `ior`, a
     ///   `shutterSpeed`, a number `base`).
     /// - The length of a vector's derivative (`1.0 / length(dFdx(p))` of a position): 0 only where
     ///   all of `p` is the same across the quad, which a surface's position never is.

@@ -203,7 +203,9 @@ pub(super) fn caller_value(cx: &Cx, f: &Function, id: usize, d: Handle<E>) -> Op
     // or ratio is the vertex data's, not the canvas's (MapLibre's `a_pixel_ratio_from`, 0 for
     // a pattern missing from the atlas).
     if let [name] = &names[..] {
-        if !sum && !attribute && crate::analysis::names::says_any(name, HOST_SIZE) {
+        let host = crate::analysis::names::says_any(name, HOST_SIZE)
+            && !crate::analysis::names::is_setting(name);
+        if !sum && !attribute && host {
             return None;
         }
     }

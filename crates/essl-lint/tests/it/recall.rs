@@ -910,6 +910,19 @@ fn guarded_twins_are_quiet() {
 /// such here): a note at the call, naming the parameters; (rule, function, call in `main`, the
 /// line of the note or `None` for a twin that is quiet).
 const PARAMETERS: &[(&str, &str, &str, Option<&str>)] = &[
+    // A size the caller chooses (a grid's cell) is a setting; a texture's size is the host's.
+    (
+        "division-by-difference",
+        "float cells(vec2 resolution, float cellSize) {\n  return resolution.x / cellSize;\n}",
+        "  r = cells(v_uv, v_x);",
+        Some("return resolution.x / cellSize;"),
+    ),
+    (
+        "division-by-difference",
+        "float texels(float x, float texSize) {\n  return x / texSize;\n}",
+        "  r = texels(v_uv.x, v_x);",
+        None,
+    ),
     // A weighted sum: 0 where the caller passes every weight as 0, whatever the colours are.
     (
         "division-by-difference",
@@ -1554,7 +1567,7 @@ fn a_ray_march_with_a_fixed_count_of_steps_is_bounded() {
 fn white_points_sizes_fractions_and_grid_steps_are_settings() {
     let functions =
         "uniform float u_white; uniform int u_filterSize; uniform float u_strokeSize;\n\
-        uniform float _Glow_Fraction_; uniform float u_viewportSize; uniform float u_cell;\n";
+        uniform float _Glow_Fraction_; uniform float u_viewportSize; uniform float u_pitch;\n";
     let division = |body: &str| found_with("highp", "division-by-difference", functions, body);
     for body in [
         "  r = t.r * (1.0 + t.r / u_white);",
@@ -1562,7 +1575,7 @@ fn white_points_sizes_fractions_and_grid_steps_are_settings() {
         "  r = v_x / u_strokeSize;",
         "  r = clamp((1.0 - v_x) / _Glow_Fraction_, 0.0, 1.0);",
         // A grid's step, whatever its name: a pixelation's cell.
-        "  r = floor(v_x / u_cell) * u_cell;",
+        "  r = floor(v_x / u_pitch) * u_pitch;",
     ] {
         let f = division(body);
         assert_eq!(f.len(), 1, "{body}: {f:?}");
@@ -1572,8 +1585,8 @@ fn white_points_sizes_fractions_and_grid_steps_are_settings() {
         "  if (u_filterSize == 0) { o = t; return; }\n  r = v_x / float(u_filterSize);",
         "  if (u_filterSize != 0) { r = v_x / float(u_filterSize); }",
         "  r = v_x / u_viewportSize;",
-        "  r = mod(v_x, u_cell) + floor(v_x / u_cell) * u_viewportSize;",
-        "  r = floor(v_x / max(u_cell, 1e-4)) * u_cell;",
+        "  r = mod(v_x, u_pitch) + floor(v_x / u_pitch) * u_viewportSize;",
+        "  r = floor(v_x / max(u_pitch, 1e-4)) * u_pitch;",
     ] {
         let f = division(body);
         assert!(f.is_empty(), "{body}: {f:?}");
